@@ -1,0 +1,81 @@
+//! `stancf`: run space-time ANCF cable simulations from scenario files.
+//!
+//! Exit codes (docs/interface.md): 0 success, 2 invalid input, 3 the solver
+//! failed (results up to the last converged step are kept), 1 anything else.
+
+mod commands;
+mod output;
+mod scenario;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "stancf",
+    version,
+    about = "Flexible cables with space-time ANCF elements (SAC-2, SAC-3) and the P2 variational step"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run one scenario and write its results.
+    Run {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Output folder (default: out/<scenario file stem>/).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Validate a scenario and print derived figures (DOFs, wave speed,
+    /// Courant number, stable step); runs nothing.
+    Check {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+    },
+}
+
+/// How a command ended.
+pub enum Failure {
+    /// Invalid input (exit 2).
+    Input(String),
+    /// The solver failed (exit 3).
+    Solver(String),
+    /// Anything else, e.g. a file that cannot be written (exit 1).
+    Other(String),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let result = match cli.command {
+        Command::Run { scenario, out } => commands::run(&scenario, out),
+        Command::Check { scenario } => commands::check(&scenario),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Input(m)) => {
+            eprintln!("error: {m}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Solver(m)) => {
+            eprintln!("error: {m}");
+            ExitCode::from(3)
+        }
+        Err(Failure::Other(m)) => {
+            eprintln!("error: {m}");
+            ExitCode::from(1)
+        }
+    }
+}

@@ -1,0 +1,645 @@
+//! Scenario files (TOML, docs/interface.md): parsing and validation.
+//!
+//! Every problem is reported as `<file>: <key>: <what is wrong>`, before
+//! anything is written. Unknown keys are errors at every level.
+
+use serde::Deserialize;
+use stancf::{AxialStrain, Curvature, ElementType, Load, Material, Measures, ModelOptions};
+use std::path::Path;
+
+/// An invalid scenario: the message names the file and the key.
+#[derive(Debug)]
+pub struct ScenarioError(pub String);
+
+impl std::fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+type Vector = Vec<f64>;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScenario {
+    title: Option<String>,
+    cable: Option<RawCable>,
+    material: Option<RawMaterial>,
+    #[serde(default)]
+    constraints: Vec<toml::Table>,
+    #[serde(default)]
+    loads: Vec<toml::Table>,
+    #[serde(default)]
+    initial_velocity: Vec<RawInitialVelocity>,
+    analysis: Option<RawAnalysis>,
+    output: Option<RawOutput>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCable {
+    length: Option<f64>,
+    elements: Option<i64>,
+    element: Option<String>,
+    origin: Option<Vector>,
+    direction: Option<Vector>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMaterial {
+    youngs_modulus: Option<f64>,
+    density: Option<f64>,
+    area: Option<f64>,
+    second_moment: Option<f64>,
+    diameter: Option<f64>,
+}
+
+#[derive(Deserialize, Clone)]
+#[serde(untagged)]
+enum RawNode {
+    Name(String),
+    Index(i64),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawInitialVelocity {
+    node: Option<RawNode>,
+    velocity: Option<Vector>,
+    angular_velocity: Option<Vector>,
+    center: Option<Vector>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawAnalysis {
+    #[serde(rename = "type")]
+    kind: Option<String>,
+    time_step: Option<f64>,
+    duration: Option<f64>,
+    time_layers: Option<i64>,
+    quadrature: Option<Vec<i64>>,
+    solver: Option<String>,
+    time_scheme: Option<String>,
+    tolerance: Option<f64>,
+    max_iterations: Option<i64>,
+    load_steps: Option<i64>,
+    curvature: Option<String>,
+    axial_strain: Option<String>,
+    constraint_method: Option<String>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawOutput {
+    every: Option<i64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGravity {
+    #[serde(rename = "type")]
+    _kind: String,
+    acceleration: Option<Vector>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPointForce {
+    #[serde(rename = "type")]
+    _kind: String,
+    node: Option<RawNode>,
+    force: Option<Vector>,
+}
+
+/// Which nodes an initial velocity applies to.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NodeSet {
+    One(usize),
+    All,
+}
+
+/// One `[[initial_velocity]]` entry, validated.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InitialVelocity {
+    pub nodes: NodeSet,
+    pub velocity: [f64; 3],
+    pub angular_velocity: Option<[f64; 3]>,
+    pub center: [f64; 3],
+}
+
+/// The analysis settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Analysis {
+    pub time_step: f64,
+    pub duration: f64,
+    pub time_layers: usize,
+    /// Spatial Gauss points (None: the element's default).
+    pub space_points: Option<stancf::SpacePoints>,
+    pub time_points: usize,
+    pub tolerance: f64,
+    pub max_iterations: usize,
+}
+
+/// A validated scenario.
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    pub title: String,
+    pub cable: stancf::Cable,
+    pub material: Material,
+    pub diameter: f64,
+    pub options: ModelOptions,
+    pub loads: Vec<Load>,
+    pub initial_velocity: Vec<InitialVelocity>,
+    pub analysis: Analysis,
+    pub output_every: usize,
+}
+
+/// Collects errors with the file name in front.
+struct Ctx<'a> {
+    file: &'a str,
+}
+
+impl Ctx<'_> {
+    fn err(&self, key: &str, msg: impl std::fmt::Display) -> ScenarioError {
+        ScenarioError(format!("{}: {}: {}", self.file, key, msg))
+    }
+
+    fn required<T>(&self, key: &str, v: Option<T>) -> Result<T, ScenarioError> {
+        v.ok_or_else(|| self.err(key, "required key is missing"))
+    }
+
+    fn finite(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(self.err(key, format!("must be a finite number, got {v}")))
+        }
+    }
+
+    fn positive(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
+        let v = self.finite(key, v)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.err(key, format!("must be > 0, got {v}")))
+        }
+    }
+
+    fn count(&self, key: &str, v: i64, min: i64, max: i64) -> Result<usize, ScenarioError> {
+        if v < min || v > max {
+            if max == i64::MAX {
+                return Err(self.err(key, format!("must be at least {min}, got {v}")));
+            }
+            return Err(self.err(key, format!("must be between {min} and {max}, got {v}")));
+        }
+        Ok(v as usize)
+    }
+
+    fn vector(&self, key: &str, v: &[f64]) -> Result<[f64; 3], ScenarioError> {
+        if v.len() != 3 {
+            return Err(self.err(
+                key,
+                format!(
+                    "a vector needs exactly 3 components [x, y, z], got {}",
+                    v.len()
+                ),
+            ));
+        }
+        for (i, c) in v.iter().enumerate() {
+            if !c.is_finite() {
+                return Err(self.err(key, format!("component {i} is not a finite number ({c})")));
+            }
+        }
+        Ok([v[0], v[1], v[2]])
+    }
+
+    fn choice<'s>(
+        &self,
+        key: &str,
+        v: Option<&'s str>,
+        default: &'s str,
+        allowed: &[&str],
+    ) -> Result<&'s str, ScenarioError> {
+        let v = v.unwrap_or(default);
+        if allowed.contains(&v) {
+            Ok(v)
+        } else {
+            let list: Vec<String> = allowed.iter().map(|a| format!("\"{a}\"")).collect();
+            Err(self.err(
+                key,
+                format!("unknown value \"{v}\" (expected {})", list.join(" or ")),
+            ))
+        }
+    }
+
+    fn node(
+        &self,
+        key: &str,
+        node: &RawNode,
+        elements: usize,
+        allow_all: bool,
+    ) -> Result<NodeSet, ScenarioError> {
+        match node {
+            RawNode::Name(s) if s == "A" => Ok(NodeSet::One(0)),
+            RawNode::Name(s) if s == "B" => Ok(NodeSet::One(elements)),
+            RawNode::Name(s) if s == "all" && allow_all => Ok(NodeSet::All),
+            RawNode::Name(s) => Err(self.err(
+                key,
+                format!(
+                    "unknown node \"{s}\" (expected \"A\", \"B\"{}, or an index 0..={elements})",
+                    if allow_all { ", \"all\"" } else { "" }
+                ),
+            )),
+            RawNode::Index(i) if *i >= 0 && (*i as usize) <= elements => {
+                Ok(NodeSet::One(*i as usize))
+            }
+            RawNode::Index(i) => Err(self.err(
+                key,
+                format!("node index {i} is out of range (the mesh has nodes 0..={elements})"),
+            )),
+        }
+    }
+}
+
+/// Reads and validates a scenario file.
+pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| ScenarioError(format!("{file}: cannot read the file: {e}")))?;
+    parse(&text, &file, path)
+}
+
+/// Parses and validates scenario text; `file` names it in messages.
+pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioError> {
+    let ctx = Ctx { file };
+    let raw: RawScenario = toml::from_str(text)
+        .map_err(|e| ScenarioError(format!("{file}: {}", e.to_string().trim_end())))?;
+    let title = raw.title.unwrap_or_else(|| {
+        path.file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    });
+
+    let rc = ctx.required("cable", raw.cable)?;
+    let length = ctx.positive("cable.length", ctx.required("cable.length", rc.length)?)?;
+    let elements = ctx.count(
+        "cable.elements",
+        ctx.required("cable.elements", rc.elements)?,
+        1,
+        1_000_000,
+    )?;
+    let element = match ctx.choice(
+        "cable.element",
+        rc.element.as_deref(),
+        "SAC-2",
+        &["SAC-2", "SAC-3"],
+    )? {
+        "SAC-3" => ElementType::Sac3,
+        _ => ElementType::Sac2,
+    };
+    let origin = match &rc.origin {
+        Some(v) => ctx.vector("cable.origin", v)?,
+        None => [0.0; 3],
+    };
+    let direction = match &rc.direction {
+        Some(v) => ctx.vector("cable.direction", v)?,
+        None => [1.0, 0.0, 0.0],
+    };
+    if direction.iter().all(|&c| c == 0.0) {
+        return Err(ctx.err("cable.direction", "must not be the zero vector"));
+    }
+
+    let rm = ctx.required("material", raw.material)?;
+    let material = Material {
+        youngs_modulus: ctx.positive(
+            "material.youngs_modulus",
+            ctx.required("material.youngs_modulus", rm.youngs_modulus)?,
+        )?,
+        density: ctx.positive(
+            "material.density",
+            ctx.required("material.density", rm.density)?,
+        )?,
+        area: ctx.positive("material.area", ctx.required("material.area", rm.area)?)?,
+        second_moment: ctx.positive(
+            "material.second_moment",
+            ctx.required("material.second_moment", rm.second_moment)?,
+        )?,
+    };
+    let diameter = match rm.diameter {
+        Some(d) => ctx.positive("material.diameter", d)?,
+        None => (4.0 * material.area / std::f64::consts::PI).sqrt(),
+    };
+
+    if !raw.constraints.is_empty() {
+        return Err(ctx.err(
+            "constraints",
+            "constraints are not available in this version of stancf (free cables only)",
+        ));
+    }
+
+    let mut loads = Vec::new();
+    for (i, table) in raw.loads.iter().enumerate() {
+        let key = format!("loads[{i}]");
+        let kind = match table.get("type") {
+            Some(toml::Value::String(s)) => s.clone(),
+            Some(_) => return Err(ctx.err(&format!("{key}.type"), "must be a string")),
+            None => return Err(ctx.err(&format!("{key}.type"), "required key is missing")),
+        };
+        let value = toml::Value::Table(table.clone());
+        let de_err = |e: toml::de::Error| ctx.err(&key, e.message().trim_end());
+        match kind.as_str() {
+            "gravity" => {
+                let g: RawGravity = value.try_into().map_err(de_err)?;
+                let a = ctx.required(&format!("{key}.acceleration"), g.acceleration)?;
+                loads.push(Load::Gravity {
+                    acceleration: ctx.vector(&format!("{key}.acceleration"), &a)?,
+                });
+            }
+            "point-force" => {
+                let p: RawPointForce = value.try_into().map_err(de_err)?;
+                let nk = format!("{key}.node");
+                let node = match ctx.node(&nk, &ctx.required(&nk, p.node)?, elements, false)? {
+                    NodeSet::One(n) => n,
+                    NodeSet::All => unreachable!("\"all\" is not accepted here"),
+                };
+                let f = ctx.required(&format!("{key}.force"), p.force)?;
+                loads.push(Load::PointForce {
+                    node,
+                    force: ctx.vector(&format!("{key}.force"), &f)?,
+                });
+            }
+            "end-moment" | "air-drag" => {
+                return Err(ctx.err(
+                    &format!("{key}.type"),
+                    format!("load type \"{kind}\" is not available in this version of stancf"),
+                ))
+            }
+            other => {
+                return Err(ctx.err(
+                    &format!("{key}.type"),
+                    format!(
+                        "unknown load type \"{other}\" (expected \"gravity\" or \"point-force\")"
+                    ),
+                ))
+            }
+        }
+    }
+
+    let mut initial_velocity = Vec::new();
+    for (i, iv) in raw.initial_velocity.iter().enumerate() {
+        let key = format!("initial_velocity[{i}]");
+        let nk = format!("{key}.node");
+        let nodes = ctx.node(&nk, &ctx.required(&nk, iv.node.clone())?, elements, true)?;
+        let angular_velocity = match &iv.angular_velocity {
+            Some(w) => Some(ctx.vector(&format!("{key}.angular_velocity"), w)?),
+            None => None,
+        };
+        let center = match &iv.center {
+            Some(c) => ctx.vector(&format!("{key}.center"), c)?,
+            None => [0.0; 3],
+        };
+        if nodes != NodeSet::All {
+            if angular_velocity.is_some() {
+                return Err(ctx.err(
+                    &format!("{key}.angular_velocity"),
+                    "a rigid rotation needs node = \"all\"",
+                ));
+            }
+            if iv.center.is_some() {
+                return Err(ctx.err(
+                    &format!("{key}.center"),
+                    "a rotation centre needs node = \"all\"",
+                ));
+            }
+        }
+        let velocity = match (&iv.velocity, angular_velocity) {
+            (Some(v), _) => ctx.vector(&format!("{key}.velocity"), v)?,
+            (None, Some(_)) => [0.0; 3],
+            (None, None) => {
+                return Err(ctx.err(&format!("{key}.velocity"), "required key is missing"))
+            }
+        };
+        initial_velocity.push(InitialVelocity {
+            nodes,
+            velocity,
+            angular_velocity,
+            center,
+        });
+    }
+
+    let ra = raw.analysis.unwrap_or_default();
+    match ctx.choice(
+        "analysis.type",
+        ra.kind.as_deref(),
+        "dynamic",
+        &["dynamic", "static"],
+    )? {
+        "static" => {
+            return Err(ctx.err(
+                "analysis.type",
+                "static analysis is not available in this version of stancf (it needs constraints)",
+            ))
+        }
+        _ => {}
+    }
+    let time_step = ctx.positive(
+        "analysis.time_step",
+        ctx.required("analysis.time_step", ra.time_step)?,
+    )?;
+    let duration = ctx.positive(
+        "analysis.duration",
+        ctx.required("analysis.duration", ra.duration)?,
+    )?;
+    if time_step > duration {
+        return Err(ctx.err(
+            "analysis.time_step",
+            format!("the step ({time_step:e} s) is longer than the duration ({duration:e} s)"),
+        ));
+    }
+    let time_layers = match ra.time_layers {
+        Some(n) => ctx.count("analysis.time_layers", n, 1, 16)?,
+        None => 1,
+    };
+    let qmax = stancf::quadrature::MAX_POINTS as i64;
+    let qkey = "analysis.quadrature";
+    let (space_points, time_points) = match ra.quadrature.as_deref() {
+        None => (None, 3),
+        Some([s, t]) => {
+            let s = ctx.count(qkey, *s, 1, qmax)?;
+            let points = stancf::SpacePoints {
+                axial: s,
+                bending: s,
+            };
+            (Some(points), ctx.count(qkey, *t, 1, qmax)?)
+        }
+        Some([a, b, t]) => {
+            let points = stancf::SpacePoints {
+                axial: ctx.count(qkey, *a, 1, qmax)?,
+                bending: ctx.count(qkey, *b, 1, qmax)?,
+            };
+            (Some(points), ctx.count(qkey, *t, 1, qmax)?)
+        }
+        Some(q) => {
+            return Err(ctx.err(
+                qkey,
+                format!(
+                    "expected [space, time] or [axial, bending, time] Gauss points, got {} numbers",
+                    q.len()
+                ),
+            ))
+        }
+    };
+    ctx.choice(
+        "analysis.solver",
+        ra.solver.as_deref(),
+        "newton",
+        &["newton", "broyden"],
+    )
+    .and_then(|s| match s {
+        "broyden" => Err(ctx.err(
+            "analysis.solver",
+            "\"broyden\" is not available in this version of stancf (use \"newton\")",
+        )),
+        _ => Ok(()),
+    })?;
+    ctx.choice(
+        "analysis.time_scheme",
+        ra.time_scheme.as_deref(),
+        "p2",
+        &["p2", "galerkin"],
+    )
+    .and_then(|s| match s {
+        "galerkin" => Err(ctx.err(
+            "analysis.time_scheme",
+            "\"galerkin\" is not available in this version of stancf (use \"p2\")",
+        )),
+        _ => Ok(()),
+    })?;
+    let tolerance = match ra.tolerance {
+        Some(t) => ctx.positive("analysis.tolerance", t)?,
+        None => 1e-10,
+    };
+    let max_iterations = match ra.max_iterations {
+        Some(n) => ctx.count("analysis.max_iterations", n, 1, 10_000)?,
+        None => 50,
+    };
+    if let Some(n) = ra.load_steps {
+        ctx.count("analysis.load_steps", n, 1, 1_000_000)?;
+    }
+    let curvature = match ctx.choice(
+        "analysis.curvature",
+        ra.curvature.as_deref(),
+        "paper",
+        &["paper", "exact"],
+    )? {
+        "exact" => Curvature::Exact,
+        _ => Curvature::Paper,
+    };
+    let axial_strain = match ctx.choice(
+        "analysis.axial_strain",
+        ra.axial_strain.as_deref(),
+        "green",
+        &["green", "engineering"],
+    )? {
+        "engineering" => AxialStrain::Engineering,
+        _ => AxialStrain::Green,
+    };
+    ctx.choice(
+        "analysis.constraint_method",
+        ra.constraint_method.as_deref(),
+        "multiplier",
+        &["multiplier", "elimination"],
+    )?;
+    let ro = raw.output.unwrap_or_default();
+    let output_every = match ro.every {
+        Some(n) => ctx.count("output.every", n, 1, i64::MAX)?,
+        None => 1,
+    };
+
+    Ok(Scenario {
+        title,
+        cable: stancf::Cable {
+            length,
+            elements,
+            element_type: element,
+            origin,
+            direction,
+        },
+        material,
+        diameter,
+        options: ModelOptions {
+            measures: Measures {
+                axial_strain,
+                curvature,
+            },
+            space_points,
+        },
+        loads,
+        initial_velocity,
+        analysis: Analysis {
+            time_step,
+            duration,
+            time_layers,
+            space_points,
+            time_points,
+            tolerance,
+            max_iterations,
+        },
+        output_every,
+    })
+}
+
+impl Scenario {
+    /// The library model.
+    pub fn model(&self) -> Result<stancf::Model, stancf::ModelError> {
+        stancf::Model::new(
+            self.cable,
+            self.material,
+            self.options.clone(),
+            self.loads.clone(),
+        )
+    }
+
+    /// The initial state: the straight reference shape with the initial
+    /// velocities applied in file order (a later entry overrides an earlier
+    /// one on the same node; a rigid rotation adds to the velocity set by
+    /// the same entry).
+    pub fn initial_state(&self, model: &stancf::Model) -> stancf::State {
+        let mut s = model.initial_state();
+        for iv in &self.initial_velocity {
+            match iv.nodes {
+                NodeSet::One(n) => model.set_node_velocity(&mut s, n, iv.velocity),
+                NodeSet::All => {
+                    for n in 0..model.nodes() {
+                        model.set_node_velocity(&mut s, n, iv.velocity);
+                    }
+                    if let Some(w) = iv.angular_velocity {
+                        // Gradients' velocities come only from the rotation.
+                        let dpn = model.dofs_per_node();
+                        for n in 0..model.nodes() {
+                            let o = model.node_offset(n);
+                            s.v[o + 3..o + dpn].fill(0.0);
+                        }
+                        model.add_rigid_rotation(&mut s, w, iv.center);
+                    }
+                }
+            }
+        }
+        s
+    }
+
+    /// The step settings for the library.
+    pub fn step_settings(&self) -> stancf::StepSettings {
+        stancf::StepSettings {
+            time_step: self.analysis.time_step,
+            time_layers: self.analysis.time_layers,
+            time_points: self.analysis.time_points,
+            newton: stancf::NewtonSettings {
+                tolerance: self.analysis.tolerance,
+                max_iterations: self.analysis.max_iterations,
+            },
+        }
+    }
+}

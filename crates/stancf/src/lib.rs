@@ -1,0 +1,47 @@
+//! # stancf: space-time ANCF cable elements
+//!
+//! A library for the dynamics of flexible cables with the space-time
+//! absolute nodal coordinate formulation of Chen, Li, Lu and Lan (Machines
+//! 2023, 11, 433): cable elements SAC-2 (cubic Hermite in space) and SAC-3
+//! (quintic), each a tensor product with a cubic Hermite in time, so nodal
+//! positions *and* velocities are unknowns; the action integrated by Gauss
+//! quadrature in space and time; Hamilton's law of varying action with the
+//! P2 formula, one slab per step, optionally several element layers in
+//! time per step.
+//!
+//! The modules follow the method from the bottom up:
+//!
+//! | module | what it implements |
+//! |---|---|
+//! | [`shape`] | Hermite bases in space (eqs. 4, 5) and time (eq. 6) |
+//! | [`quadrature`] | Gauss-Legendre rules, 1 to 10 points |
+//! | [`element`] | the SAC-2/SAC-3 kernel: energy densities, slab action, gradient, exact Hessian |
+//! | [`model`] | cable, material, loads, mesh and DOF numbering |
+//! | [`assembly`] | the P2 equations of a step (eq. 22) with time layers |
+//! | [`band`] | band LU with partial pivoting, the global linear solver |
+//! | [`solver`] | Newton-Raphson (eq. 25, 26) |
+//! | [`integrator`] | the P2 step, runs with an energy watchdog |
+//! | [`observe`] | energies, momentum, stress |
+//! | [`stability`] | P2's stable step for the actual mesh |
+//!
+//! The physics never touches files, terminals or the clock; the `stancf`
+//! command-line tool (crate `stancf-cli`) does.
+
+pub mod assembly;
+pub mod band;
+pub mod element;
+pub mod error;
+pub mod integrator;
+pub mod model;
+pub mod observe;
+pub mod quadrature;
+pub mod shape;
+pub mod solver;
+pub mod stability;
+
+pub use element::{AxialStrain, Curvature, Measures};
+pub use error::{FailureKind, ModelError, SolverError};
+pub use integrator::{run, Simulation, StepReport, StepSettings};
+pub use model::{Cable, ElementType, Load, Material, Model, ModelOptions, SpacePoints, State};
+pub use observe::{energies, Energies};
+pub use solver::NewtonSettings;

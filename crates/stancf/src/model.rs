@@ -1,0 +1,501 @@
+//! The cable model: geometry, material, mesh, loads and DOF numbering.
+//!
+//! Global coordinates are numbered node by node: node j owns
+//! `e[j * dpn .. (j + 1) * dpn]` = `[r, r_x]` (SAC-2, dpn = 6) or
+//! `[r, r_x, r_xx]` (SAC-3, dpn = 9). Element k spans nodes k and k + 1, so
+//! its coordinates are the contiguous slice starting at `k * dpn`, in the
+//! element's own order.
+
+use crate::element::{CableElement, Measures, Section, SpaceRules};
+use crate::error::ModelError;
+use crate::quadrature::GaussRule;
+use crate::shape::{cubic_hermite, quintic_hermite};
+
+/// The two space-time elements of the paper (Table 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ElementType {
+    /// Cubic Hermite in space (eq. 4): nodal r, r_x.
+    Sac2,
+    /// Quintic Hermite in space (eq. 5): nodal r, r_x, r_xx.
+    Sac3,
+}
+
+impl ElementType {
+    /// Vector coordinates per node (2 or 3).
+    pub fn vectors_per_node(self) -> usize {
+        match self {
+            ElementType::Sac2 => 2,
+            ElementType::Sac3 => 3,
+        }
+    }
+
+    /// Scalar coordinates per node (6 or 9).
+    pub fn dofs_per_node(self) -> usize {
+        3 * self.vectors_per_node()
+    }
+
+    /// Gauss points in space (axial, bending) used when none are given:
+    /// the paper's choices, 3 for SAC-2 ("3 x 3") and 5 for SAC-3
+    /// ("5 x 3", Table 5).
+    pub fn default_space_points(self) -> SpacePoints {
+        match self {
+            ElementType::Sac2 => SpacePoints {
+                axial: 3,
+                bending: 3,
+            },
+            ElementType::Sac3 => SpacePoints {
+                axial: 5,
+                bending: 5,
+            },
+        }
+    }
+
+    /// The fewest Gauss points that leave no spurious zero-energy mode in
+    /// any element (continuity can suppress such a mode in a mesh, so
+    /// fewer points are not always singular).
+    /// With NS shape functions the linearized axial strain u' is a
+    /// polynomial of degree NS - 2 in each element and the curvature
+    /// (r_xx) one of degree NS - 3; n points annihilate a nonzero
+    /// polynomial of degree d only if n <= d, so the rank needs NS - 1
+    /// axial and NS - 2 bending points (SAC-2: 3 and 2; SAC-3: 5 and 4).
+    pub fn minimal_space_points(self) -> SpacePoints {
+        let ns = 2 * self.vectors_per_node();
+        SpacePoints {
+            axial: ns - 1,
+            bending: ns - 2,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            ElementType::Sac2 => "SAC-2",
+            ElementType::Sac3 => "SAC-3",
+        }
+    }
+}
+
+/// Material and cross-section (Tables 2 and 9).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// E (Pa).
+    pub youngs_modulus: f64,
+    /// rho (kg/m^3).
+    pub density: f64,
+    /// A (m^2).
+    pub area: f64,
+    /// I (m^4).
+    pub second_moment: f64,
+}
+
+impl Material {
+    pub fn section(&self) -> Section {
+        Section {
+            ea: self.youngs_modulus * self.area,
+            ei: self.youngs_modulus * self.second_moment,
+            rho_a: self.density * self.area,
+        }
+    }
+
+    /// Longitudinal wave speed c = sqrt(E / rho).
+    pub fn wave_speed(&self) -> f64 {
+        (self.youngs_modulus / self.density).sqrt()
+    }
+}
+
+/// A straight cable in its stress-free reference state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cable {
+    pub length: f64,
+    pub elements: usize,
+    pub element_type: ElementType,
+    /// Position of end A (x = 0).
+    pub origin: [f64; 3],
+    /// Unit tangent of the reference shape (normalized on construction).
+    pub direction: [f64; 3],
+}
+
+impl Cable {
+    /// A cable along +x from the origin.
+    pub fn straight(length: f64, elements: usize, element_type: ElementType) -> Self {
+        Cable {
+            length,
+            elements,
+            element_type,
+            origin: [0.0; 3],
+            direction: [1.0, 0.0, 0.0],
+        }
+    }
+
+    pub fn with_origin(mut self, origin: [f64; 3]) -> Self {
+        self.origin = origin;
+        self
+    }
+
+    pub fn with_direction(mut self, direction: [f64; 3]) -> Self {
+        self.direction = direction;
+        self
+    }
+}
+
+/// A load on the cable.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Load {
+    /// Distributed weight rho A g, eq. (13).
+    Gravity { acceleration: [f64; 3] },
+    /// Constant force on the position of a node, eq. (14).
+    PointForce { node: usize, force: [f64; 3] },
+}
+
+/// Gauss points per element in space for the axial and the bending
+/// energy (the paper uses one rule for both).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SpacePoints {
+    pub axial: usize,
+    pub bending: usize,
+}
+
+/// How the strain energy is computed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ModelOptions {
+    pub measures: Measures,
+    /// Spatial quadrature; `None` takes the element's default
+    /// ([`ElementType::default_space_points`]).
+    pub space_points: Option<SpacePoints>,
+}
+
+/// The elements of the mesh, one variant per element type so that the
+/// generic kernel is monomorphized for SAC-2 and SAC-3.
+#[derive(Clone, Debug)]
+pub enum Mesh {
+    Sac2(Vec<CableElement<4, 12>>),
+    Sac3(Vec<CableElement<6, 18>>),
+}
+
+/// Runs `$body` with `$els` bound to the element slice of either type.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! with_elements {
+    ($mesh:expr, $els:ident => $body:expr) => {
+        match $mesh {
+            $crate::model::Mesh::Sac2($els) => $body,
+            $crate::model::Mesh::Sac3($els) => $body,
+        }
+    };
+}
+
+/// A cable model ready to simulate.
+#[derive(Clone, Debug)]
+pub struct Model {
+    pub cable: Cable,
+    pub material: Material,
+    pub options: ModelOptions,
+    pub loads: Vec<Load>,
+    pub mesh: Mesh,
+    /// Sum of the gravity loads.
+    pub gravity: [f64; 3],
+}
+
+/// Positions e and velocities v of all coordinates at time t.
+#[derive(Clone, Debug, PartialEq)]
+pub struct State {
+    pub t: f64,
+    pub e: Vec<f64>,
+    pub v: Vec<f64>,
+}
+
+fn check_positive(key: &str, value: f64) -> Result<(), ModelError> {
+    if !value.is_finite() {
+        return Err(ModelError::invalid(
+            key,
+            format!("must be a finite number, got {value}"),
+        ));
+    }
+    if value <= 0.0 {
+        return Err(ModelError::invalid(
+            key,
+            format!("must be > 0, got {value}"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_vector(key: &str, v: &[f64; 3]) -> Result<(), ModelError> {
+    if v.iter().any(|x| !x.is_finite()) {
+        return Err(ModelError::invalid(
+            key,
+            format!("must have finite components, got {v:?}"),
+        ));
+    }
+    Ok(())
+}
+
+impl Model {
+    /// Validates the data and builds the mesh.
+    pub fn new(
+        cable: Cable,
+        material: Material,
+        options: ModelOptions,
+        loads: Vec<Load>,
+    ) -> Result<Self, ModelError> {
+        check_positive("cable.length", cable.length)?;
+        if cable.elements == 0 {
+            return Err(ModelError::invalid(
+                "cable.elements",
+                "must be at least 1, got 0",
+            ));
+        }
+        check_vector("cable.origin", &cable.origin)?;
+        check_vector("cable.direction", &cable.direction)?;
+        let norm = crate::element::dot(&cable.direction, &cable.direction).sqrt();
+        if norm == 0.0 {
+            return Err(ModelError::invalid(
+                "cable.direction",
+                "must not be the zero vector",
+            ));
+        }
+        let mut cable = cable;
+        cable.direction = cable.direction.map(|c| c / norm);
+        check_positive("material.youngs_modulus", material.youngs_modulus)?;
+        check_positive("material.density", material.density)?;
+        check_positive("material.area", material.area)?;
+        check_positive("material.second_moment", material.second_moment)?;
+        let points = options
+            .space_points
+            .unwrap_or_else(|| cable.element_type.default_space_points());
+        let rules = SpaceRules {
+            axial: GaussRule::new(points.axial)
+                .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?,
+            bending: GaussRule::new(points.bending)
+                .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?,
+        };
+        let mut gravity = [0.0; 3];
+        for (i, load) in loads.iter().enumerate() {
+            match load {
+                Load::Gravity { acceleration } => {
+                    check_vector(&format!("loads[{i}].acceleration"), acceleration)?;
+                    for c in 0..3 {
+                        gravity[c] += acceleration[c];
+                    }
+                }
+                Load::PointForce { node, force } => {
+                    check_vector(&format!("loads[{i}].force"), force)?;
+                    if *node > cable.elements {
+                        return Err(ModelError::invalid(
+                            format!("loads[{i}].node"),
+                            format!(
+                                "node {node} does not exist (nodes are 0..={})",
+                                cable.elements
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        let l = cable.length / cable.elements as f64;
+        let section = material.section();
+        let measures = options.measures;
+        let mesh = match cable.element_type {
+            ElementType::Sac2 => Mesh::Sac2(
+                (0..cable.elements)
+                    .map(|_| CableElement::new(cubic_hermite, l, section, measures, &rules))
+                    .collect(),
+            ),
+            ElementType::Sac3 => Mesh::Sac3(
+                (0..cable.elements)
+                    .map(|_| CableElement::new(quintic_hermite, l, section, measures, &rules))
+                    .collect(),
+            ),
+        };
+        Ok(Model {
+            cable,
+            material,
+            options,
+            loads,
+            mesh,
+            gravity,
+        })
+    }
+
+    pub fn element_type(&self) -> ElementType {
+        self.cable.element_type
+    }
+
+    /// The spatial quadrature in use.
+    pub fn space_points(&self) -> SpacePoints {
+        self.options
+            .space_points
+            .unwrap_or_else(|| self.cable.element_type.default_space_points())
+    }
+
+    /// Warnings about the model that do not make it invalid: a spatial
+    /// quadrature too coarse to give every element's stiffness full rank
+    /// (the mesh may then have spurious zero-energy modes that drift
+    /// without bound).
+    pub fn warnings(&self) -> Vec<String> {
+        let p = self.space_points();
+        let min = self.cable.element_type.minimal_space_points();
+        let mut w = Vec::new();
+        let name = self.cable.element_type.name();
+        if p.axial < min.axial {
+            w.push(format!(
+                "{} Gauss points for the axial energy of {name} may leave spurious zero-energy modes \
+                 ({} or more avoid them)",
+                p.axial, min.axial
+            ));
+        }
+        if p.bending < min.bending {
+            w.push(format!(
+                "{} Gauss points for the bending energy of {name} may leave spurious zero-energy modes \
+                 ({} or more avoid them)",
+                p.bending, min.bending
+            ));
+        }
+        w
+    }
+
+    /// Spatial nodes (elements + 1).
+    pub fn nodes(&self) -> usize {
+        self.cable.elements + 1
+    }
+
+    /// Scalar coordinates per node.
+    pub fn dofs_per_node(&self) -> usize {
+        self.cable.element_type.dofs_per_node()
+    }
+
+    /// Scalar coordinates of the mesh.
+    pub fn dofs(&self) -> usize {
+        self.nodes() * self.dofs_per_node()
+    }
+
+    /// Element length l.
+    pub fn element_length(&self) -> f64 {
+        self.cable.length / self.cable.elements as f64
+    }
+
+    /// Material coordinate of node j.
+    pub fn node_coordinate(&self, node: usize) -> f64 {
+        node as f64 * self.element_length()
+    }
+
+    /// Index of the first coordinate of node j.
+    pub fn node_offset(&self, node: usize) -> usize {
+        node * self.dofs_per_node()
+    }
+
+    /// Position r of node j in state e.
+    pub fn node_position(&self, e: &[f64], node: usize) -> [f64; 3] {
+        let o = self.node_offset(node);
+        [e[o], e[o + 1], e[o + 2]]
+    }
+
+    /// The straight reference shape at rest, at t = 0:
+    /// r_j = origin + x_j d, r_x = d, r_xx = 0.
+    pub fn initial_state(&self) -> State {
+        let n = self.dofs();
+        let mut e = vec![0.0; n];
+        let d = self.cable.direction;
+        for j in 0..self.nodes() {
+            let o = self.node_offset(j);
+            let x = self.node_coordinate(j);
+            for i in 0..3 {
+                e[o + i] = self.cable.origin[i] + x * d[i];
+                e[o + 3 + i] = d[i];
+            }
+        }
+        State {
+            t: 0.0,
+            e,
+            v: vec![0.0; n],
+        }
+    }
+
+    /// Sets the velocity of the position r of node j (its gradients keep
+    /// their velocity).
+    pub fn set_node_velocity(&self, state: &mut State, node: usize, velocity: [f64; 3]) {
+        let o = self.node_offset(node);
+        state.v[o..o + 3].copy_from_slice(&velocity);
+    }
+
+    /// Adds a rigid rotation w x (r - center) to every node's r velocity and
+    /// w x r_x (w x r_xx) to its gradients' velocities.
+    pub fn add_rigid_rotation(&self, state: &mut State, omega: [f64; 3], center: [f64; 3]) {
+        let vpn = self.cable.element_type.vectors_per_node();
+        for j in 0..self.nodes() {
+            let o = self.node_offset(j);
+            for k in 0..vpn {
+                let b = o + 3 * k;
+                let mut arm = [state.e[b], state.e[b + 1], state.e[b + 2]];
+                if k == 0 {
+                    for i in 0..3 {
+                        arm[i] -= center[i];
+                    }
+                }
+                let w = crate::element::cross(&omega, &arm);
+                for i in 0..3 {
+                    state.v[b + i] += w[i];
+                }
+            }
+        }
+    }
+
+    /// Point forces acting on node j (summed).
+    pub fn point_forces(&self) -> impl Iterator<Item = (usize, [f64; 3])> + '_ {
+        self.loads.iter().filter_map(|l| match l {
+            Load::PointForce { node, force } => Some((*node, *force)),
+            _ => None,
+        })
+    }
+
+    /// y = M x with the global consistent mass matrix.
+    pub fn mass_times(&self, x: &[f64], y: &mut [f64]) {
+        y.fill(0.0);
+        let dpn = self.dofs_per_node();
+        crate::with_elements!(&self.mesh, els => {
+            for (k, el) in els.iter().enumerate() {
+                let o = k * dpn;
+                let mq = el.mass_times(&gather(x, o));
+                for (d, v) in mq.iter().enumerate() {
+                    y[o + d] += v;
+                }
+            }
+        });
+    }
+
+    /// Diagonal of the global mass matrix.
+    pub fn mass_diagonal(&self) -> Vec<f64> {
+        let dpn = self.dofs_per_node();
+        let mut diag = vec![0.0; self.dofs()];
+        crate::with_elements!(&self.mesh, els => {
+            for (k, el) in els.iter().enumerate() {
+                let o = k * dpn;
+                for (s, row) in el.mass.iter().enumerate() {
+                    for i in 0..3 {
+                        diag[o + 3 * s + i] += row[s];
+                    }
+                }
+            }
+        });
+        diag
+    }
+
+    /// Length scale of each coordinate kind within a node: a change of r
+    /// by 1 m, of r_x by 1/l or of r_xx by 1/l^2 moves the centre line by
+    /// about 1 m inside an element of length l.
+    pub fn coordinate_length_scale(&self, dof_in_node: usize) -> f64 {
+        let l = self.element_length();
+        match dof_in_node / 3 {
+            0 => 1.0,
+            1 => l,
+            _ => l * l,
+        }
+    }
+}
+
+/// The `N` consecutive entries of `x` starting at `offset`.
+#[inline]
+pub(crate) fn gather<const N: usize>(x: &[f64], offset: usize) -> [f64; N] {
+    let mut out = [0.0; N];
+    out.copy_from_slice(&x[offset..offset + N]);
+    out
+}

@@ -1,0 +1,159 @@
+//! What can be observed of a state: energies, momentum, centre of mass,
+//! axial stress and curvature along the cable.
+
+use crate::element::{axial_strain, curvature, CableElement};
+use crate::model::{gather, Model, State};
+use crate::shape::{cubic_hermite, quintic_hermite, SpatialShape};
+
+/// Energies of a state (J).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Energies {
+    /// T = 1/2 v^T M v (eq. 11).
+    pub kinetic: f64,
+    /// U of eq. (12), with the model's spatial quadrature.
+    pub strain: f64,
+    /// Gravitational potential -int rho A g . r dx (eq. 13).
+    pub gravity: f64,
+    /// Potential of the constant point forces, -sum F . r (eq. 14).
+    pub load_potential: f64,
+}
+
+impl Energies {
+    /// kinetic + strain + gravity (the `total` column of history.csv).
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.strain + self.gravity
+    }
+
+    /// Total mechanical energy including the point-force potential: the
+    /// conserved quantity of a free cable under constant loads.
+    pub fn mechanical(&self) -> f64 {
+        self.total() + self.load_potential
+    }
+
+    /// A magnitude to compare energy changes with.
+    pub fn magnitude(&self) -> f64 {
+        self.kinetic.abs() + self.strain.abs() + self.gravity.abs() + self.load_potential.abs()
+    }
+}
+
+fn element_energies<const NS: usize, const ND: usize>(
+    els: &[CableElement<NS, ND>],
+    dpn: usize,
+    state: &State,
+    g: &[f64; 3],
+) -> Energies {
+    let mut en = Energies::default();
+    for (k, el) in els.iter().enumerate() {
+        let q: [f64; ND] = gather(&state.e, k * dpn);
+        let qd: [f64; ND] = gather(&state.v, k * dpn);
+        let mq = el.mass_times(&qd);
+        en.kinetic += 0.5 * qd.iter().zip(mq.iter()).map(|(a, b)| a * b).sum::<f64>();
+        en.strain += el.strain_energy(&q);
+        let fg = el.gravity_load(g);
+        en.gravity -= fg.iter().zip(q.iter()).map(|(a, b)| a * b).sum::<f64>();
+    }
+    en
+}
+
+/// Energies of a state.
+pub fn energies(model: &Model, state: &State) -> Energies {
+    let dpn = model.dofs_per_node();
+    let mut en = crate::with_elements!(&model.mesh, els => {
+        element_energies(els, dpn, state, &model.gravity)
+    });
+    for (node, f) in model.point_forces() {
+        let r = model.node_position(&state.e, node);
+        en.load_potential -= f[0] * r[0] + f[1] * r[1] + f[2] * r[2];
+    }
+    en
+}
+
+/// Total mass, linear momentum int rho A rdot dx and first mass moment
+/// int rho A r dx.
+pub fn momentum(model: &Model, state: &State) -> (f64, [f64; 3], [f64; 3]) {
+    let dpn = model.dofs_per_node();
+    let vpn = model.element_type().vectors_per_node();
+    let mut mass = 0.0;
+    let mut p = [0.0; 3];
+    let mut s = [0.0; 3];
+    crate::with_elements!(&model.mesh, els => {
+        for (k, el) in els.iter().enumerate() {
+            for (a, w) in el.weight_integrals.iter().enumerate() {
+                let o = (k + a / vpn) * dpn + 3 * (a % vpn);
+                if a % vpn == 0 {
+                    mass += w;
+                }
+                for i in 0..3 {
+                    p[i] += w * state.v[o + i];
+                    s[i] += w * state.e[o + i];
+                }
+            }
+        }
+    });
+    (mass, p, s)
+}
+
+/// Centre of mass.
+pub fn center_of_mass(model: &Model, state: &State) -> [f64; 3] {
+    let (m, _, s) = momentum(model, state);
+    s.map(|c| c / m)
+}
+
+/// One sample of the axial stress and curvature.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StressSample {
+    pub element: usize,
+    /// Material coordinate (0 at end A).
+    pub s: f64,
+    /// E eps.
+    pub axial_stress: f64,
+    pub curvature: f64,
+}
+
+/// Axial stress E eps and curvature at `per_element` evenly spaced points
+/// of every element, both ends included (so interior nodes appear twice,
+/// once per element: SAC-2 stress is discontinuous there).
+pub fn stress_samples(
+    model: &Model,
+    state: &State,
+    per_element: usize,
+    out: &mut Vec<StressSample>,
+) {
+    out.clear();
+    let l = model.element_length();
+    let dpn = model.dofs_per_node();
+    let e_mod = model.material.youngs_modulus;
+    let m = model.options.measures;
+    let n = per_element.max(2);
+    for k in 0..model.cable.elements {
+        for p in 0..n {
+            let xi = p as f64 / (n - 1) as f64;
+            let (rx, rxx) = match model.element_type() {
+                crate::model::ElementType::Sac2 => {
+                    point_gradients(&cubic_hermite(xi, l), &state.e[k * dpn..])
+                }
+                crate::model::ElementType::Sac3 => {
+                    point_gradients(&quintic_hermite(xi, l), &state.e[k * dpn..])
+                }
+            };
+            out.push(StressSample {
+                element: k,
+                s: (k as f64 + xi) * l,
+                axial_stress: e_mod * axial_strain(m.axial_strain, &rx),
+                curvature: curvature(m.curvature, &rx, &rxx),
+            });
+        }
+    }
+}
+
+fn point_gradients<const NS: usize>(shape: &SpatialShape<NS>, q: &[f64]) -> ([f64; 3], [f64; 3]) {
+    let mut rx = [0.0; 3];
+    let mut rxx = [0.0; 3];
+    for k in 0..NS {
+        for i in 0..3 {
+            rx[i] += shape.n_x[k] * q[3 * k + i];
+            rxx[i] += shape.n_xx[k] * q[3 * k + i];
+        }
+    }
+    (rx, rxx)
+}

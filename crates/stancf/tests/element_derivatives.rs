@@ -1,0 +1,245 @@
+//! Every derivative of the element kernel against central finite
+//! differences of the level below it (energy density -> gradient ->
+//! Hessian; slab action -> slab gradient -> slab Hessian), at random
+//! states, for SAC-2 and SAC-3, both strain measures, both curvature forms
+//! and several quadrature orders.
+//!
+//! Tolerance: central differences with step h have truncation error
+//! O(h^2 f''') and round-off O(eps f / h); with h = 1e-5 on O(1) states
+//! both are ~1e-10 relative, so 1e-6 leaves four orders of margin and still
+//! catches any wrong term (a wrong term is an O(1) relative error).
+
+mod common;
+
+use common::*;
+use stancf::element::{
+    axial_energy_density, bending_energy_density, CableElement, SlabDerivatives, TimeSlab,
+};
+use stancf::{AxialStrain, Curvature};
+
+const H: f64 = 1e-5;
+const TOL: f64 = 1e-6;
+
+#[test]
+fn energy_densities_match_finite_differences() {
+    let mut rng = Rng(0x1234_5678_9abc_def1);
+    for _ in 0..20 {
+        let rx = [1.0 + 0.3 * rng.next(), 0.4 * rng.next(), 0.4 * rng.next()];
+        let rxx = [rng.next(), rng.next(), rng.next()];
+        for measure in [AxialStrain::Green, AxialStrain::Engineering] {
+            let (_, g, h) = axial_energy_density(measure, 2.5, &rx);
+            let mut g_fd = [0.0; 3];
+            let mut h_fd = vec![0.0; 9];
+            for j in 0..3 {
+                let mut p = rx;
+                let mut m = rx;
+                p[j] += H;
+                m[j] -= H;
+                let (ep, gp, _) = axial_energy_density(measure, 2.5, &p);
+                let (em, gm, _) = axial_energy_density(measure, 2.5, &m);
+                g_fd[j] = (ep - em) / (2.0 * H);
+                for i in 0..3 {
+                    h_fd[3 * i + j] = (gp[i] - gm[i]) / (2.0 * H);
+                }
+            }
+            assert!(rel_diff(&g, &g_fd) < TOL, "{measure:?} gradient");
+            let hv: Vec<f64> = h.iter().flatten().copied().collect();
+            assert!(rel_diff(&hv, &h_fd) < TOL, "{measure:?} Hessian");
+        }
+        for form in [Curvature::Paper, Curvature::Exact] {
+            let z: Vec<f64> = rx.iter().chain(rxx.iter()).copied().collect();
+            let eval = |z: &[f64]| {
+                bending_energy_density(form, 0.7, &[z[0], z[1], z[2]], &[z[3], z[4], z[5]])
+            };
+            let (_, g, h) = eval(&z);
+            let mut g_fd = [0.0; 6];
+            let mut h_fd = vec![0.0; 36];
+            for j in 0..6 {
+                let mut p = z.clone();
+                let mut m = z.clone();
+                p[j] += H;
+                m[j] -= H;
+                let (ep, gp, _) = eval(&p);
+                let (em, gm, _) = eval(&m);
+                g_fd[j] = (ep - em) / (2.0 * H);
+                for i in 0..6 {
+                    h_fd[6 * i + j] = (gp[i] - gm[i]) / (2.0 * H);
+                }
+            }
+            assert!(rel_diff(&g, &g_fd) < TOL, "{form:?} gradient");
+            let hv: Vec<f64> = h.iter().flatten().copied().collect();
+            assert!(rel_diff(&hv, &h_fd) < TOL, "{form:?} Hessian");
+            for i in 0..6 {
+                for j in 0..6 {
+                    assert_eq!(h[i][j], h[j][i], "bending Hessian symmetric");
+                }
+            }
+        }
+    }
+}
+
+/// Checks the slab gradient against differences of the slab action and
+/// each Hessian block against differences of the gradient.
+fn check_slab<const NS: usize, const ND: usize>(
+    el: &CableElement<NS, ND>,
+    slab: &TimeSlab,
+    y: &[[f64; ND]; 4],
+    g: &[f64; 3],
+    label: &str,
+) {
+    let mut d = SlabDerivatives::<ND>::default();
+    el.slab_derivatives(slab, y, g, true, &mut d);
+    let a0 = el.slab_action(slab, y, g);
+    assert!(
+        (d.action - a0).abs() <= 1e-12 * a0.abs().max(1.0),
+        "{label}: action"
+    );
+    let mut grad_fd = vec![0.0; 4 * ND];
+    let mut hess_fd = vec![vec![0.0; 4 * ND]; 4 * ND];
+    let mut dp = SlabDerivatives::<ND>::default();
+    let mut dm = SlabDerivatives::<ND>::default();
+    for n in 0..4 {
+        for b in 0..ND {
+            let mut yp = *y;
+            let mut ym = *y;
+            yp[n][b] += H;
+            ym[n][b] -= H;
+            grad_fd[n * ND + b] =
+                (el.slab_action(slab, &yp, g) - el.slab_action(slab, &ym, g)) / (2.0 * H);
+            el.slab_derivatives(slab, &yp, g, false, &mut dp);
+            el.slab_derivatives(slab, &ym, g, false, &mut dm);
+            for m in 0..4 {
+                for a in 0..ND {
+                    hess_fd[m * ND + a][n * ND + b] = (dp.grad[m][a] - dm.grad[m][a]) / (2.0 * H);
+                }
+            }
+        }
+    }
+    let grad: Vec<f64> = d.grad.iter().flatten().copied().collect();
+    let e = rel_diff(&grad, &grad_fd);
+    assert!(e < TOL, "{label}: gradient rel. error {e:e}");
+    let mut hess = vec![0.0; 16 * ND * ND];
+    let mut fd = vec![0.0; 16 * ND * ND];
+    let mut block = [[0.0; ND]; ND];
+    for m in 0..4 {
+        for n in 0..4 {
+            el.slab_hessian_block(slab, &d, m, n, &mut block);
+            for a in 0..ND {
+                for b in 0..ND {
+                    let k = ((m * 4 + n) * ND + a) * ND + b;
+                    hess[k] = block[a][b];
+                    fd[k] = hess_fd[m * ND + a][n * ND + b];
+                }
+            }
+        }
+    }
+    let e = rel_diff(&hess, &fd);
+    assert!(e < TOL, "{label}: Hessian rel. error {e:e}");
+}
+
+#[test]
+fn sac2_slab_gradient_and_hessian_match_finite_differences() {
+    let mut rng = Rng(0xdead_beef_0042_1111);
+    let g = [0.3, -9.81, 0.1];
+    for m in ALL_MEASURES {
+        for (na, nb, nt) in [(3, 3, 3), (5, 3, 2), (2, 4, 4)] {
+            let r = rules(na, nb);
+            let el = sac2(0.45, m, &r);
+            let s = slab(0.08, nt);
+            for _ in 0..2 {
+                let y = random_slab_state::<4, 12>(&mut rng, 0.45, 0.2);
+                check_slab(&el, &s, &y, &g, &format!("SAC-2 {m:?} {na}/{nb}x{nt}"));
+            }
+        }
+    }
+}
+
+#[test]
+fn sac3_slab_gradient_and_hessian_match_finite_differences() {
+    let mut rng = Rng(0x0bad_cafe_7777_3333);
+    let g = [0.0, -9.81, 0.0];
+    for m in ALL_MEASURES {
+        for (na, nb, nt) in [(5, 5, 3), (3, 6, 2), (6, 3, 5)] {
+            let r = rules(na, nb);
+            let el = sac3(0.3, m, &r);
+            let s = slab(0.05, nt);
+            for _ in 0..2 {
+                let y = random_slab_state::<6, 18>(&mut rng, 0.3, 0.2);
+                check_slab(&el, &s, &y, &g, &format!("SAC-3 {m:?} {na}/{nb}x{nt}"));
+            }
+        }
+    }
+}
+
+/// The invariants every kernel must satisfy (after VirtualBow's
+/// `check_system_invariants`): the mass matrix is symmetric positive
+/// definite, the kinetic energy of the slab action is 1/2 qdot^T M qdot,
+/// the strain-energy Hessian is symmetric, and gravity's work is f_g . q.
+#[test]
+fn kernel_invariants() {
+    let mut rng = Rng(0x5555_aaaa_1234_0001);
+    let r = rules(3, 3);
+    let el2 = sac2(0.4, ALL_MEASURES[0], &r);
+    let el3 = sac3(0.4, ALL_MEASURES[0], &r);
+    fn invariants<const NS: usize, const ND: usize>(el: &CableElement<NS, ND>, rng: &mut Rng) {
+        // Symmetric, and positive definite (Cholesky succeeds).
+        let m = el.mass;
+        let mut l = [[0.0; NS]; NS];
+        for i in 0..NS {
+            for j in 0..NS {
+                assert!((m[i][j] - m[j][i]).abs() < 1e-15);
+            }
+            for j in 0..=i {
+                let s: f64 = (0..j).map(|k| l[i][k] * l[j][k]).sum();
+                if i == j {
+                    let d = m[i][i] - s;
+                    assert!(d > 0.0, "mass matrix not positive definite");
+                    l[i][j] = d.sqrt();
+                } else {
+                    l[i][j] = (m[i][j] - s) / l[j][j];
+                }
+            }
+        }
+        // Total mass = rho A l; rigid translation u: M u . u = rho A l |u|^2.
+        let mut u = [0.0; ND];
+        for a in (0..NS).step_by(NS / 2) {
+            u[3 * a] = 1.0;
+        }
+        let mu = el.mass_times(&u);
+        let mass: f64 = mu.iter().zip(u.iter()).map(|(a, b)| a * b).sum();
+        let expect = el.section.rho_a * el.length;
+        assert!((mass - expect).abs() < 1e-14 * expect);
+        // Strain-energy Hessian symmetric at a random state.
+        let y = random_slab_state::<NS, ND>(rng, el.length, 0.2);
+        let mut g = [0.0; ND];
+        let mut h = [[0.0; ND]; ND];
+        el.strain_energy_derivatives(&y[0], &mut g, Some(&mut h));
+        for a in 0..ND {
+            for b in 0..ND {
+                assert!((h[a][b] - h[b][a]).abs() <= 1e-13 * (h[a][b].abs() + 1.0));
+            }
+        }
+        // Work of gravity = f_g . q = rho A g . int r dx.
+        let gvec = [0.1, -9.81, 0.2];
+        let fg = el.gravity_load(&gvec);
+        let wg: f64 = fg.iter().zip(y[0].iter()).map(|(a, b)| a * b).sum();
+        let rule = stancf::quadrature::GaussRule::new(6).unwrap();
+        let mut direct = 0.0;
+        for (xi, w) in rule.iter() {
+            let s = if NS == 4 {
+                let c = stancf::shape::cubic_hermite(xi, el.length);
+                c.n.to_vec()
+            } else {
+                stancf::shape::quintic_hermite(xi, el.length).n.to_vec()
+            };
+            for k in 0..NS {
+                for i in 0..3 {
+                    direct += w * el.length * el.section.rho_a * s[k] * y[0][3 * k + i] * gvec[i];
+                }
+            }
+        }
+        assert!((wg - direct).abs() < 1e-13 * direct.abs().max(1.0));
+    }
+    invariants(&el2, &mut rng);
+    invariants(&el3, &mut rng);
+}
