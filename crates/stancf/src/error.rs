@@ -68,8 +68,12 @@ impl fmt::Display for SolverError {
         };
         write!(
             f,
-            "{what} at t = {:.6e} s (step {}, {} iterations, scaled residual {:.3e})",
-            self.time, self.step, self.iterations, self.residual
+            "{what} at t = {:.6e} s (step {}, {} iteration{}, scaled residual {:.3e})",
+            self.time,
+            self.step,
+            self.iterations,
+            if self.iterations == 1 { "" } else { "s" },
+            self.residual
         )?;
         if !self.detail.is_empty() {
             write!(f, ": {}", self.detail)?;

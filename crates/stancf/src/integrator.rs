@@ -92,6 +92,10 @@ pub struct Simulation {
     slab: TimeSlab,
     scales: Scales,
     state: State,
+    /// The state before the last step and its acceleration estimate, so
+    /// that a step can be undone.
+    previous: State,
+    previous_acceleration: Vec<f64>,
     /// Acceleration estimate from the last step, for the predictor.
     acceleration: Vec<f64>,
     start: StepStart,
@@ -169,6 +173,8 @@ impl Simulation {
         Ok(Simulation {
             x: vec![0.0; layout.size()],
             acceleration: vec![0.0; n],
+            previous: initial.clone(),
+            previous_acceleration: vec![0.0; n],
             model,
             settings,
             time_rule,
@@ -245,6 +251,19 @@ impl Simulation {
         }
     }
 
+    /// Returns to the state before the last converged step (once).
+    pub fn undo_last_step(&mut self) {
+        if self.steps == 0 || self.previous.t == self.state.t {
+            return;
+        }
+        self.state.clone_from(&self.previous);
+        self.acceleration.copy_from_slice(&self.previous_acceleration);
+        self.steps -= 1;
+        self.start.e.copy_from_slice(&self.state.e);
+        self.start.v.copy_from_slice(&self.state.v);
+        self.model.mass_times(&self.start.v, &mut self.start.mass_v);
+    }
+
     /// Advances the state by one step. On failure the state is left at the
     /// last converged step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
@@ -279,6 +298,8 @@ impl Simulation {
         };
         let last = self.layout.layers;
         let dpn = self.layout.dpn;
+        self.previous.clone_from(&self.state);
+        self.previous_acceleration.copy_from_slice(&self.acceleration);
         for node in 0..self.layout.nodes {
             let ue = self
                 .layout
@@ -361,8 +382,9 @@ pub fn step_count(duration: f64, dt: f64) -> usize {
 /// Steps `sim` until `duration` is covered (the last step is shortened to
 /// land on it), calling `observer` after every converged step; the
 /// observer may stop the run early with `ControlFlow::Break` (the result
-/// is then `Ok(false)`). Stops at the first failure; the states already
-/// observed stay valid.
+/// is then `Ok(false)`). Stops at the first failure and leaves `sim` at
+/// the last good state (a step that converged but made the energy grow is
+/// undone); the states already observed stay valid.
 pub fn run<F>(sim: &mut Simulation, duration: f64, mut observer: F) -> Result<bool, SolverError>
 where
     F: FnMut(&Simulation, &StepReport, &Energies) -> ControlFlow<()>,
@@ -381,9 +403,10 @@ where
         let report = sim.step()?;
         let en = energies(&sim.model, &sim.state);
         if !en.mechanical().is_finite() {
+            sim.undo_last_step();
             return Err(SolverError {
                 kind: FailureKind::NonFinite,
-                time: sim.state.t - h,
+                time: sim.state.t,
                 step: report.step,
                 residual: report.newton.residual,
                 iterations: report.newton.iterations,
@@ -391,9 +414,10 @@ where
             });
         }
         if let Err(drift) = watch.check(&en) {
+            sim.undo_last_step();
             return Err(SolverError {
                 kind: FailureKind::EnergyGrowth,
-                time: sim.state.t - h,
+                time: sim.state.t,
                 step: report.step,
                 residual: report.newton.residual,
                 iterations: report.newton.iterations,

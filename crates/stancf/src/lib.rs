@@ -45,3 +45,8 @@ pub use integrator::{run, Simulation, StepReport, StepSettings};
 pub use model::{Cable, ElementType, Load, Material, Model, ModelOptions, SpacePoints, State};
 pub use observe::{energies, Energies};
 pub use solver::NewtonSettings;
+
+/// The README's Rust example, compiled and run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

@@ -1,0 +1,504 @@
+//! The command line as docs/interface.md specifies it: `run` and `check`,
+//! result files, exit codes, and one test per class of bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_stancf");
+
+/// A scratch folder per test, removed at the start.
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("stancf-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn repo_file(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(rel)
+}
+
+fn stancf(args: &[&str]) -> Output {
+    Command::new(BIN).args(args).output().expect("run stancf")
+}
+
+fn text(o: &Output) -> (String, String) {
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// A small valid scenario: the transverse impact, shortened.
+const BASE: &str = r#"
+title = "test"
+[cable]
+length = 4.0
+elements = 8
+element = "SAC-2"
+origin = [-2.0, 0.0, 0.0]
+direction = [1.0, 0.0, 0.0]
+[material]
+youngs_modulus = 3.4e9
+density = 1380.0
+area = 3.0e-6
+second_moment = 1.25e-13
+[[loads]]
+type = "gravity"
+acceleration = [0.0, -9.81, 0.0]
+[[initial_velocity]]
+node = "A"
+velocity = [0.0, 10.0, 0.0]
+[[initial_velocity]]
+node = 8
+velocity = [0.0, -10.0, 0.0]
+[analysis]
+type = "dynamic"
+time_step = 5.0e-5
+duration = 2.0e-3
+quadrature = [3, 3]
+[output]
+every = 4
+"#;
+
+fn write_scenario(dir: &Path, name: &str, contents: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, contents).unwrap();
+    p
+}
+
+/// Parses a CSV file: header and rows of numbers; fails on any non-finite
+/// or non-numeric field.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let s = std::fs::read_to_string(path).unwrap();
+    let mut lines = s.lines();
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|f| {
+                    let v: f64 = f.parse().unwrap_or_else(|_| panic!("{path:?}: bad field {f:?}"));
+                    assert!(v.is_finite(), "{path:?}: non-finite {f}");
+                    v
+                })
+                .collect()
+        })
+        .collect();
+    for r in &rows {
+        assert_eq!(r.len(), header.len(), "{path:?}: ragged row");
+    }
+    (header, rows)
+}
+
+#[test]
+fn run_writes_the_contract_files() {
+    let d = scratch("run");
+    let sc = write_scenario(&d, "impact.toml", BASE);
+    let out = d.join("results");
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{so}\n{se}");
+    assert!(so.contains("40 steps"), "{so}");
+
+    let (h, hist) = read_csv(&out.join("history.csv"));
+    assert_eq!(
+        h[..7],
+        ["t", "kinetic", "strain", "gravity", "total", "iterations", "residual"]
+    );
+    assert_eq!(hist[0][0], 0.0, "first row at t = 0");
+    // Every 4th of 40 steps plus t = 0.
+    assert_eq!(hist.len(), 11);
+    assert!((hist.last().unwrap()[0] - 2e-3).abs() < 1e-15);
+    for r in &hist {
+        assert!((r[1] + r[2] + r[3] - r[4]).abs() <= 1e-12 * r[4].abs().max(1e-300));
+    }
+    let (h, nodes) = read_csv(&out.join("nodes.csv"));
+    assert_eq!(h, ["t", "node", "x", "y", "z"]);
+    assert_eq!(nodes.len(), 11 * 9);
+    assert_eq!(nodes[0][1..], [0.0, -2.0, 0.0, 0.0]);
+    let (h, stress) = read_csv(&out.join("stress.csv"));
+    assert_eq!(h[..4], ["t", "s", "axial_stress", "curvature"]);
+    // At least 5 points per element, both ends included.
+    let first: Vec<&Vec<f64>> = stress.iter().filter(|r| r[0] == 0.0).collect();
+    assert!(first.len() >= 5 * 8);
+    assert_eq!(first.first().unwrap()[1], 0.0);
+    assert_eq!(first.last().unwrap()[1], 4.0);
+
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    for key in [
+        "title",
+        "analysis",
+        "element",
+        "elements",
+        "dofs",
+        "steps",
+        "time",
+        "converged",
+        "wall_time_s",
+        "iterations",
+        "energy",
+        "tip",
+        "nodes_final",
+    ] {
+        assert!(summary.get(key).is_some(), "summary.json lacks {key}");
+    }
+    assert_eq!(summary["converged"], true);
+    assert_eq!(summary["steps"], 40);
+    assert_eq!(summary["dofs"], 54);
+    assert_eq!(summary["element"], "SAC-2");
+    assert_eq!(summary["nodes_final"].as_array().unwrap().len(), 9);
+    for k in ["total", "mean_per_step", "max_per_step"] {
+        assert!(summary["iterations"][k].is_number());
+    }
+    for k in ["initial", "final", "max_abs_drift", "max_rel_drift"] {
+        assert!(summary["energy"][k].is_number());
+    }
+    // The final nodes of summary.json are the last rows of nodes.csv.
+    let tip = summary["tip"].as_array().unwrap();
+    let last = nodes.last().unwrap();
+    for i in 0..3 {
+        assert_eq!(tip[i].as_f64().unwrap(), last[2 + i]);
+    }
+    // Nothing half-written is left behind.
+    for e in std::fs::read_dir(&out).unwrap() {
+        let name = e.unwrap().file_name().into_string().unwrap();
+        assert!(!name.ends_with(".partial"), "{name}");
+    }
+}
+
+#[test]
+fn default_output_folder_is_out_slash_stem() {
+    let d = scratch("default-out");
+    write_scenario(&d, "short.toml", BASE);
+    let o = Command::new(BIN)
+        .args(["run", "short.toml"])
+        .current_dir(&d)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    assert!(d.join("out/short/summary.json").exists());
+}
+
+#[test]
+fn check_prints_the_derived_figures() {
+    let o = stancf(&["check", repo_file("examples/impact-transverse.toml").to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    for needle in [
+        "DOFs                        54",
+        "unknowns per step           108",
+        "wave speed sqrt(E/rho)      1569.6",
+        "Courant number c dt/dx      0.1569",
+        "stable step (P2)            1.0547",
+        "steps                       36000",
+        "warnings                    none",
+    ] {
+        assert!(so.contains(needle), "missing {needle:?} in\n{so}");
+    }
+}
+
+#[test]
+fn version_and_help() {
+    let o = stancf(&["--version"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(text(&o).0.contains(env!("CARGO_PKG_VERSION")));
+    let o = stancf(&["--help"]);
+    let (so, _) = text(&o);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(so.contains("run") && so.contains("check"));
+}
+
+/// A step above P2's stable limit is warned about by `check` and `run`; a
+/// blow-up ends with exit code 3, a message naming the time, the step and
+/// the energy, and valid result files up to the last good step.
+#[test]
+fn unstable_step_is_warned_and_a_blow_up_exits_with_code_3() {
+    let d = scratch("blowup");
+    let sc = write_scenario(
+        &d,
+        "unstable.toml",
+        &BASE
+            .replace("time_step = 5.0e-5", "time_step = 3.0e-4")
+            .replace("duration = 2.0e-3", "duration = 0.05")
+            .replace("every = 4", "every = 1"),
+    );
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    let (so, _) = text(&o);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(so.contains("warning: analysis.time_step"), "{so}");
+    assert!(so.contains("exceeds the stable step"), "{so}");
+
+    let out = d.join("res");
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(3), "{se}");
+    assert!(se.contains("warning: analysis.time_step"), "{se}");
+    assert!(se.contains("energy grows without a source"), "{se}");
+    assert!(se.contains("t = ") && se.contains("step ") && se.contains("residual"), "{se}");
+    assert!(se.contains(" J above the initial"), "{se}");
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    let (_, nodes) = read_csv(&out.join("nodes.csv"));
+    read_csv(&out.join("stress.csv"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["converged"], false);
+    assert!(summary["error"].as_str().unwrap().contains("energy grows"));
+    let steps = summary["steps"].as_u64().unwrap() as usize;
+    assert!(steps >= 1 && steps < 166, "stopped early: {steps}");
+    // Rows for t = 0 and every converged, accepted step; nodes match.
+    assert_eq!(hist.len(), steps + 1);
+    assert_eq!(nodes.len(), (steps + 1) * 9);
+    // The energies written are those of good steps: within the watchdog's
+    // 10 % of the initial energy.
+    let e0 = hist[0][4];
+    for r in &hist {
+        assert!((r[4] - e0).abs() < 0.1 * e0, "bad state written: {r:?}");
+    }
+}
+
+/// Runs `stancf run` on a scenario and checks the exit code 2, that the
+/// message names the file and `needles`, and that no output is written.
+fn expect_input_error(name: &str, scenario: &str, needles: &[&str]) {
+    let d = scratch(name);
+    let sc = write_scenario(&d, "bad.toml", scenario);
+    let out = d.join("never");
+    for cmd in ["run", "check"] {
+        let mut args = vec![cmd, sc.to_str().unwrap()];
+        if cmd == "run" {
+            args.extend(["--out", out.to_str().unwrap()]);
+        }
+        let o = stancf(&args);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{name} ({cmd}): {se}");
+        assert!(se.contains("bad.toml"), "{name}: file not named: {se}");
+        for n in needles {
+            assert!(se.contains(n), "{name}: {n:?} not in: {se}");
+        }
+    }
+    assert!(!out.exists(), "{name}: an output folder was created");
+}
+
+#[test]
+fn bad_input_malformed_toml() {
+    expect_input_error("malformed", &BASE.replace("length = 4.0", "length = = 4.0"), &["line 4"]);
+}
+
+#[test]
+fn bad_input_unknown_key_at_any_level() {
+    expect_input_error("unknown-top", &format!("colour = 1\n{BASE}"), &["colour"]);
+    expect_input_error("unknown-cable", &BASE.replace("length = 4.0", "lenght = 4.0"), &["lenght"]);
+    expect_input_error(
+        "unknown-analysis",
+        &BASE.replace("type = \"dynamic\"", "type = \"dynamic\"\ntimestep = 1"),
+        &["timestep"],
+    );
+    expect_input_error(
+        "unknown-load",
+        &BASE.replace("type = \"gravity\"", "type = \"gravity\"\nstrength = 2"),
+        &["loads[0]", "strength"],
+    );
+    expect_input_error(
+        "unknown-iv",
+        &BASE.replace("node = \"A\"", "node = \"A\"\nspeed = 1"),
+        &["speed"],
+    );
+    expect_input_error("unknown-output", &BASE.replace("every = 4", "evry = 4"), &["evry"]);
+}
+
+#[test]
+fn bad_input_missing_required_key() {
+    expect_input_error(
+        "missing-length",
+        &BASE.replace("length = 4.0\n", ""),
+        &["cable.length", "missing"],
+    );
+    expect_input_error(
+        "missing-density",
+        &BASE.replace("density = 1380.0\n", ""),
+        &["material.density", "missing"],
+    );
+    expect_input_error(
+        "missing-step",
+        &BASE.replace("time_step = 5.0e-5\n", ""),
+        &["analysis.time_step", "missing"],
+    );
+    expect_input_error(
+        "missing-force",
+        &BASE.replace("acceleration = [0.0, -9.81, 0.0]\n", ""),
+        &["loads[0].acceleration", "missing"],
+    );
+}
+
+#[test]
+fn bad_input_zero_or_negative_quantities() {
+    for (from, to, key) in [
+        ("length = 4.0", "length = 0.0", "cable.length"),
+        ("length = 4.0", "length = -4.0", "cable.length"),
+        ("elements = 8", "elements = 0", "cable.elements"),
+        ("elements = 8", "elements = -3", "cable.elements"),
+        ("youngs_modulus = 3.4e9", "youngs_modulus = -1.0", "material.youngs_modulus"),
+        ("density = 1380.0", "density = 0", "material.density"),
+        ("area = 3.0e-6", "area = -3.0e-6", "material.area"),
+        ("second_moment = 1.25e-13", "second_moment = 0.0", "material.second_moment"),
+        ("time_step = 5.0e-5", "time_step = 0.0", "analysis.time_step"),
+        ("time_step = 5.0e-5", "time_step = -1e-5", "analysis.time_step"),
+        ("duration = 2.0e-3", "duration = -2.0e-3", "analysis.duration"),
+    ] {
+        expect_input_error(&format!("nonpositive-{key}-{to}"), &BASE.replace(from, to), &[key]);
+    }
+}
+
+#[test]
+fn bad_input_step_longer_than_duration() {
+    expect_input_error(
+        "step-longer",
+        &BASE.replace("time_step = 5.0e-5", "time_step = 5.0e-3"),
+        &["analysis.time_step", "longer than the duration"],
+    );
+}
+
+#[test]
+fn bad_input_non_finite_number() {
+    expect_input_error("nan", &BASE.replace("length = 4.0", "length = nan"), &["cable.length", "finite"]);
+    expect_input_error(
+        "inf",
+        &BASE.replace("origin = [-2.0, 0.0, 0.0]", "origin = [-2.0, inf, 0.0]"),
+        &["cable.origin", "finite"],
+    );
+    expect_input_error(
+        "inf-velocity",
+        &BASE.replace("velocity = [0.0, 10.0, 0.0]", "velocity = [0.0, -inf, 0.0]"),
+        &["initial_velocity[0].velocity", "finite"],
+    );
+}
+
+#[test]
+fn bad_input_unknown_choices() {
+    expect_input_error(
+        "element",
+        &BASE.replace("element = \"SAC-2\"", "element = \"SAC-4\""),
+        &["cable.element", "SAC-4"],
+    );
+    expect_input_error(
+        "strain",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\naxial_strain = \"log\""),
+        &["analysis.axial_strain", "log"],
+    );
+    expect_input_error(
+        "curvature",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\ncurvature = \"approx\""),
+        &["analysis.curvature", "approx"],
+    );
+    expect_input_error(
+        "load-type",
+        &BASE.replace("type = \"gravity\"", "type = \"magnet\""),
+        &["loads[0].type", "magnet"],
+    );
+}
+
+#[test]
+fn bad_input_node_index_out_of_range() {
+    expect_input_error(
+        "node-range",
+        &BASE.replace("node = 8", "node = 9"),
+        &["initial_velocity[1].node", "out of range"],
+    );
+    expect_input_error(
+        "node-name",
+        &BASE.replace("node = \"A\"", "node = \"C\""),
+        &["initial_velocity[0].node", "\"C\""],
+    );
+    expect_input_error(
+        "force-node",
+        &BASE.replace(
+            "[[initial_velocity]]\nnode = \"A\"",
+            "[[loads]]\ntype = \"point-force\"\nnode = 12\nforce = [1.0, 0.0, 0.0]\n[[initial_velocity]]\nnode = \"A\"",
+        ),
+        &["loads[1].node", "out of range"],
+    );
+}
+
+#[test]
+fn bad_input_zero_direction_vector() {
+    expect_input_error(
+        "zero-dir",
+        &BASE.replace("direction = [1.0, 0.0, 0.0]", "direction = [0.0, 0.0, 0.0]"),
+        &["cable.direction", "zero vector"],
+    );
+}
+
+#[test]
+fn bad_input_vector_without_three_components() {
+    expect_input_error(
+        "two-comp",
+        &BASE.replace("origin = [-2.0, 0.0, 0.0]", "origin = [-2.0, 0.0]"),
+        &["cable.origin", "3 components"],
+    );
+    expect_input_error(
+        "four-comp",
+        &BASE.replace("velocity = [0.0, 10.0, 0.0]", "velocity = [0.0, 10.0, 0.0, 1.0]"),
+        &["initial_velocity[0].velocity", "3 components"],
+    );
+}
+
+#[test]
+fn bad_input_quadrature_points() {
+    expect_input_error(
+        "zero-points",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [0, 3]"),
+        &["analysis.quadrature", "between 1 and 10"],
+    );
+    expect_input_error(
+        "eleven-points",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 11]"),
+        &["analysis.quadrature", "between 1 and 10"],
+    );
+    expect_input_error(
+        "one-number",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3]"),
+        &["analysis.quadrature"],
+    );
+}
+
+#[test]
+fn bad_input_zero_time_layers() {
+    expect_input_error(
+        "layers",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\ntime_layers = 0"),
+        &["analysis.time_layers", "between 1 and 16"],
+    );
+}
+
+#[test]
+fn unreadable_file_is_an_input_error() {
+    let o = stancf(&["run", "/nonexistent/scenario.toml"]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(se.contains("/nonexistent/scenario.toml"), "{se}");
+}
+
+/// Newton that cannot converge (one iteration allowed, tolerance below
+/// what one iteration reaches) ends with exit code 3 and a message naming
+/// the time, the step and the residual; the files hold the valid start.
+#[test]
+fn newton_failure_exits_with_code_3_and_keeps_valid_files() {
+    let d = scratch("newton-fail");
+    let sc = write_scenario(
+        &d,
+        "fail.toml",
+        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\nmax_iterations = 1\ntolerance = 1e-20"),
+    );
+    let out = d.join("res");
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(3), "{se}");
+    assert!(se.contains("Newton did not converge"), "{se}");
+    assert!(se.contains("t = 0") && se.contains("step 1") && se.contains("scaled residual"), "{se}");
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    assert_eq!(hist.len(), 1);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["converged"], false);
+    assert_eq!(summary["steps"], 0);
+}
