@@ -430,19 +430,17 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
     }
 
     let ra = raw.analysis.unwrap_or_default();
-    match ctx.choice(
+    let kind = ctx.choice(
         "analysis.type",
         ra.kind.as_deref(),
         "dynamic",
         &["dynamic", "static"],
-    )? {
-        "static" => {
-            return Err(ctx.err(
-                "analysis.type",
-                "static analysis is not available in this version of stancf (it needs constraints)",
-            ))
-        }
-        _ => {}
+    )?;
+    if kind == "static" {
+        return Err(ctx.err(
+            "analysis.type",
+            "static analysis is not available in this version of stancf (it needs constraints)",
+        ));
     }
     let time_step = ctx.positive(
         "analysis.time_step",

@@ -15,7 +15,9 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn repo_file(rel: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(rel)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(rel)
 }
 
 fn stancf(args: &[&str]) -> Output {
@@ -77,7 +79,9 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
         .map(|l| {
             l.split(',')
                 .map(|f| {
-                    let v: f64 = f.parse().unwrap_or_else(|_| panic!("{path:?}: bad field {f:?}"));
+                    let v: f64 = f
+                        .parse()
+                        .unwrap_or_else(|_| panic!("{path:?}: bad field {f:?}"));
                     assert!(v.is_finite(), "{path:?}: non-finite {f}");
                     v
                 })
@@ -103,7 +107,15 @@ fn run_writes_the_contract_files() {
     let (h, hist) = read_csv(&out.join("history.csv"));
     assert_eq!(
         h[..7],
-        ["t", "kinetic", "strain", "gravity", "total", "iterations", "residual"]
+        [
+            "t",
+            "kinetic",
+            "strain",
+            "gravity",
+            "total",
+            "iterations",
+            "residual"
+        ]
     );
     assert_eq!(hist[0][0], 0.0, "first row at t = 0");
     // Every 4th of 40 steps plus t = 0.
@@ -182,7 +194,12 @@ fn default_output_folder_is_out_slash_stem() {
 
 #[test]
 fn check_prints_the_derived_figures() {
-    let o = stancf(&["check", repo_file("examples/impact-transverse.toml").to_str().unwrap()]);
+    let o = stancf(&[
+        "check",
+        repo_file("examples/impact-transverse.toml")
+            .to_str()
+            .unwrap(),
+    ]);
     let (so, se) = text(&o);
     assert_eq!(o.status.code(), Some(0), "{se}");
     for needle in [
@@ -235,7 +252,10 @@ fn unstable_step_is_warned_and_a_blow_up_exits_with_code_3() {
     assert_eq!(o.status.code(), Some(3), "{se}");
     assert!(se.contains("warning: analysis.time_step"), "{se}");
     assert!(se.contains("energy grows without a source"), "{se}");
-    assert!(se.contains("t = ") && se.contains("step ") && se.contains("residual"), "{se}");
+    assert!(
+        se.contains("t = ") && se.contains("step ") && se.contains("residual"),
+        "{se}"
+    );
     assert!(se.contains(" J above the initial"), "{se}");
     let (_, hist) = read_csv(&out.join("history.csv"));
     let (_, nodes) = read_csv(&out.join("nodes.csv"));
@@ -245,7 +265,7 @@ fn unstable_step_is_warned_and_a_blow_up_exits_with_code_3() {
     assert_eq!(summary["converged"], false);
     assert!(summary["error"].as_str().unwrap().contains("energy grows"));
     let steps = summary["steps"].as_u64().unwrap() as usize;
-    assert!(steps >= 1 && steps < 166, "stopped early: {steps}");
+    assert!((1..166).contains(&steps), "stopped early: {steps}");
     // Rows for t = 0 and every converged, accepted step; nodes match.
     assert_eq!(hist.len(), steps + 1);
     assert_eq!(nodes.len(), (steps + 1) * 9);
@@ -281,13 +301,21 @@ fn expect_input_error(name: &str, scenario: &str, needles: &[&str]) {
 
 #[test]
 fn bad_input_malformed_toml() {
-    expect_input_error("malformed", &BASE.replace("length = 4.0", "length = = 4.0"), &["line 4"]);
+    expect_input_error(
+        "malformed",
+        &BASE.replace("length = 4.0", "length = = 4.0"),
+        &["line 4"],
+    );
 }
 
 #[test]
 fn bad_input_unknown_key_at_any_level() {
     expect_input_error("unknown-top", &format!("colour = 1\n{BASE}"), &["colour"]);
-    expect_input_error("unknown-cable", &BASE.replace("length = 4.0", "lenght = 4.0"), &["lenght"]);
+    expect_input_error(
+        "unknown-cable",
+        &BASE.replace("length = 4.0", "lenght = 4.0"),
+        &["lenght"],
+    );
     expect_input_error(
         "unknown-analysis",
         &BASE.replace("type = \"dynamic\"", "type = \"dynamic\"\ntimestep = 1"),
@@ -303,7 +331,11 @@ fn bad_input_unknown_key_at_any_level() {
         &BASE.replace("node = \"A\"", "node = \"A\"\nspeed = 1"),
         &["speed"],
     );
-    expect_input_error("unknown-output", &BASE.replace("every = 4", "evry = 4"), &["evry"]);
+    expect_input_error(
+        "unknown-output",
+        &BASE.replace("every = 4", "evry = 4"),
+        &["evry"],
+    );
 }
 
 #[test]
@@ -337,15 +369,39 @@ fn bad_input_zero_or_negative_quantities() {
         ("length = 4.0", "length = -4.0", "cable.length"),
         ("elements = 8", "elements = 0", "cable.elements"),
         ("elements = 8", "elements = -3", "cable.elements"),
-        ("youngs_modulus = 3.4e9", "youngs_modulus = -1.0", "material.youngs_modulus"),
+        (
+            "youngs_modulus = 3.4e9",
+            "youngs_modulus = -1.0",
+            "material.youngs_modulus",
+        ),
         ("density = 1380.0", "density = 0", "material.density"),
         ("area = 3.0e-6", "area = -3.0e-6", "material.area"),
-        ("second_moment = 1.25e-13", "second_moment = 0.0", "material.second_moment"),
-        ("time_step = 5.0e-5", "time_step = 0.0", "analysis.time_step"),
-        ("time_step = 5.0e-5", "time_step = -1e-5", "analysis.time_step"),
-        ("duration = 2.0e-3", "duration = -2.0e-3", "analysis.duration"),
+        (
+            "second_moment = 1.25e-13",
+            "second_moment = 0.0",
+            "material.second_moment",
+        ),
+        (
+            "time_step = 5.0e-5",
+            "time_step = 0.0",
+            "analysis.time_step",
+        ),
+        (
+            "time_step = 5.0e-5",
+            "time_step = -1e-5",
+            "analysis.time_step",
+        ),
+        (
+            "duration = 2.0e-3",
+            "duration = -2.0e-3",
+            "analysis.duration",
+        ),
     ] {
-        expect_input_error(&format!("nonpositive-{key}-{to}"), &BASE.replace(from, to), &[key]);
+        expect_input_error(
+            &format!("nonpositive-{key}-{to}"),
+            &BASE.replace(from, to),
+            &[key],
+        );
     }
 }
 
@@ -360,7 +416,11 @@ fn bad_input_step_longer_than_duration() {
 
 #[test]
 fn bad_input_non_finite_number() {
-    expect_input_error("nan", &BASE.replace("length = 4.0", "length = nan"), &["cable.length", "finite"]);
+    expect_input_error(
+        "nan",
+        &BASE.replace("length = 4.0", "length = nan"),
+        &["cable.length", "finite"],
+    );
     expect_input_error(
         "inf",
         &BASE.replace("origin = [-2.0, 0.0, 0.0]", "origin = [-2.0, inf, 0.0]"),
@@ -382,12 +442,18 @@ fn bad_input_unknown_choices() {
     );
     expect_input_error(
         "strain",
-        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\naxial_strain = \"log\""),
+        &BASE.replace(
+            "quadrature = [3, 3]",
+            "quadrature = [3, 3]\naxial_strain = \"log\"",
+        ),
         &["analysis.axial_strain", "log"],
     );
     expect_input_error(
         "curvature",
-        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\ncurvature = \"approx\""),
+        &BASE.replace(
+            "quadrature = [3, 3]",
+            "quadrature = [3, 3]\ncurvature = \"approx\"",
+        ),
         &["analysis.curvature", "approx"],
     );
     expect_input_error(
@@ -437,7 +503,10 @@ fn bad_input_vector_without_three_components() {
     );
     expect_input_error(
         "four-comp",
-        &BASE.replace("velocity = [0.0, 10.0, 0.0]", "velocity = [0.0, 10.0, 0.0, 1.0]"),
+        &BASE.replace(
+            "velocity = [0.0, 10.0, 0.0]",
+            "velocity = [0.0, 10.0, 0.0, 1.0]",
+        ),
         &["initial_velocity[0].velocity", "3 components"],
     );
 }
@@ -465,7 +534,10 @@ fn bad_input_quadrature_points() {
 fn bad_input_zero_time_layers() {
     expect_input_error(
         "layers",
-        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\ntime_layers = 0"),
+        &BASE.replace(
+            "quadrature = [3, 3]",
+            "quadrature = [3, 3]\ntime_layers = 0",
+        ),
         &["analysis.time_layers", "between 1 and 16"],
     );
 }
@@ -487,18 +559,57 @@ fn newton_failure_exits_with_code_3_and_keeps_valid_files() {
     let sc = write_scenario(
         &d,
         "fail.toml",
-        &BASE.replace("quadrature = [3, 3]", "quadrature = [3, 3]\nmax_iterations = 1\ntolerance = 1e-20"),
+        &BASE.replace(
+            "quadrature = [3, 3]",
+            "quadrature = [3, 3]\nmax_iterations = 1\ntolerance = 1e-20",
+        ),
     );
     let out = d.join("res");
     let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
     let (_, se) = text(&o);
     assert_eq!(o.status.code(), Some(3), "{se}");
     assert!(se.contains("Newton did not converge"), "{se}");
-    assert!(se.contains("t = 0") && se.contains("step 1") && se.contains("scaled residual"), "{se}");
+    assert!(
+        se.contains("t = 0") && se.contains("step 1") && se.contains("scaled residual"),
+        "{se}"
+    );
     let (_, hist) = read_csv(&out.join("history.csv"));
     assert_eq!(hist.len(), 1);
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["converged"], false);
     assert_eq!(summary["steps"], 0);
+}
+
+/// `node = "all"` with `angular_velocity` and `center`: the rigid rotation
+/// reaches the initial state; a cable spinning about its centre has
+/// T = 1/2 (rho A L) (L^2 / 12) w^2 exactly (the velocity field is linear).
+#[test]
+fn initial_rigid_rotation_from_the_scenario() {
+    let d = scratch("spin");
+    let sc = write_scenario(
+        &d,
+        "spin.toml",
+        &BASE
+            .replace(
+                "[[initial_velocity]]\nnode = \"A\"\nvelocity = [0.0, 10.0, 0.0]\n[[initial_velocity]]\nnode = 8\nvelocity = [0.0, -10.0, 0.0]",
+                "[[initial_velocity]]\nnode = \"all\"\nangular_velocity = [0.0, 0.0, 2.0]\ncenter = [0.0, 0.0, 0.0]",
+            )
+            .replace("[[loads]]\ntype = \"gravity\"\nacceleration = [0.0, -9.81, 0.0]\n", ""),
+    );
+    let out = d.join("res");
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    let m = 1380.0 * 3.0e-6 * 4.0;
+    let exact = 0.5 * m * 16.0 / 12.0 * 4.0;
+    assert!(
+        (hist[0][1] / exact - 1.0).abs() < 1e-13,
+        "{} vs {exact}",
+        hist[0][1]
+    );
+    // The spinning cable turned: end B moved along +y.
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["tip"][1].as_f64().unwrap() > 0.0);
 }

@@ -8,7 +8,10 @@ use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criteri
 use stancf::element::{CableElement, SlabDerivatives, SpaceRules, TimeSlab};
 use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite};
-use stancf::{stability, Cable, ElementType, Material, Measures, Model, ModelOptions, Simulation, StepSettings};
+use stancf::{
+    stability, Cable, ElementType, Material, Measures, Model, ModelOptions, Simulation,
+    StepSettings,
+};
 
 fn pvc() -> Material {
     Material {
@@ -28,8 +31,18 @@ fn slab_state<const NS: usize, const ND: usize>(l: f64) -> [[f64; ND]; 4] {
             let node = (a / vpn) as f64;
             let kind = a % vpn;
             let phase = 0.1 * (t as f64 + 1.0);
-            y[t][3 * a] = if kind == 0 { node * l } else if kind == 1 { 1.001 } else { 0.02 };
-            y[t][3 * a + 1] = if kind == 0 { 0.01 * phase } else { 0.05 * phase };
+            y[t][3 * a] = if kind == 0 {
+                node * l
+            } else if kind == 1 {
+                1.001
+            } else {
+                0.02
+            };
+            y[t][3 * a + 1] = if kind == 0 {
+                0.01 * phase
+            } else {
+                0.05 * phase
+            };
             y[t][3 * a + 2] = 0.003 * node;
         }
     }
@@ -97,7 +110,8 @@ fn whole_step(c: &mut Criterion) {
         let mut s = model.initial_state();
         model.set_node_velocity(&mut s, 0, [0.0, 10.0, 0.0]);
         model.set_node_velocity(&mut s, n, [0.0, -10.0, 0.0]);
-        let dt = 0.3 * stability::stable_step(&model, &s.e, &GaussRule::new(3).unwrap(), 1).unwrap();
+        let dt =
+            0.3 * stability::stable_step(&model, &s.e, &GaussRule::new(3).unwrap(), 1).unwrap();
         let settings = StepSettings {
             time_step: dt,
             ..StepSettings::default()

@@ -166,17 +166,26 @@ const SLOTS: [(usize, Kind); 4] = [
     (1, Kind::Velocity),
 ];
 
+/// The equations of one step: the model, their numbering, the time slab of
+/// one layer (dt / L) and the known start.
+#[derive(Clone, Copy)]
+pub struct StepProblem<'a> {
+    pub model: &'a Model,
+    pub layout: &'a SlabLayout,
+    pub slab: &'a TimeSlab,
+    pub start: &'a StepStart,
+}
+
 fn assemble_elements<const NS: usize, const ND: usize>(
+    p: &StepProblem,
     elements: &[CableElement<NS, ND>],
     derivs: &mut SlabDerivatives<ND>,
-    layout: &SlabLayout,
-    slab: &TimeSlab,
-    gravity: &[f64; 3],
-    start: &StepStart,
     x: &[f64],
     residual: &mut [f64],
     mut jacobian: Option<&mut BandMatrix>,
 ) {
+    let (layout, slab, start) = (p.layout, p.slab, p.start);
+    let gravity = &p.model.gravity;
     let dpn = layout.dpn;
     let mut block = [[0.0; ND]; ND];
     for j in 0..layout.layers {
@@ -234,46 +243,40 @@ fn assemble_elements<const NS: usize, const ND: usize>(
     }
 }
 
-/// Residual R(x) of the step's equations and, if asked, the Jacobian dR/dx.
-/// `slab` describes one layer (dt / L). Both outputs are overwritten.
-pub fn assemble_step(
-    model: &Model,
-    layout: &SlabLayout,
-    slab: &TimeSlab,
-    start: &StepStart,
+impl StepProblem<'_> {
+    /// Residual R(x) of the step's equations and, if asked, the Jacobian
+    /// dR/dx. Both outputs are overwritten.
+    pub fn assemble(
+        &self,
+        x: &[f64],
+        residual: &mut [f64],
+        jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        assemble_step(self, x, residual, jacobian, scratch)
+    }
+}
+
+fn assemble_step(
+    p: &StepProblem,
     x: &[f64],
     residual: &mut [f64],
     mut jacobian: Option<&mut BandMatrix>,
     scratch: &mut AssemblyScratch,
 ) {
+    let (model, layout, slab, start) = (p.model, p.layout, p.slab, p.start);
     residual.fill(0.0);
     if let Some(j) = jacobian.as_deref_mut() {
         j.clear();
     }
-    let g = model.gravity;
+    let jac = jacobian.as_deref_mut();
     match &model.mesh {
-        crate::model::Mesh::Sac2(els) => assemble_elements(
-            els,
-            &mut scratch.derivs2,
-            layout,
-            slab,
-            &g,
-            start,
-            x,
-            residual,
-            jacobian.as_deref_mut(),
-        ),
-        crate::model::Mesh::Sac3(els) => assemble_elements(
-            els,
-            &mut scratch.derivs3,
-            layout,
-            slab,
-            &g,
-            start,
-            x,
-            residual,
-            jacobian.as_deref_mut(),
-        ),
+        crate::model::Mesh::Sac2(els) => {
+            assemble_elements(p, els, &mut scratch.derivs2, x, residual, jac)
+        }
+        crate::model::Mesh::Sac3(els) => {
+            assemble_elements(p, els, &mut scratch.derivs3, x, residual, jac)
+        }
     }
     let dpn = layout.dpn;
     let last = layout.layers;

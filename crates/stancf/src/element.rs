@@ -289,29 +289,16 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// r_x and r_xx at a point from the element coordinates.
-    fn gradients(shape: &SpatialShape<NS>, q: &[f64; ND]) -> ([f64; 3], [f64; 3]) {
-        let mut rx = [0.0; 3];
-        let mut rxx = [0.0; 3];
-        for k in 0..NS {
-            for i in 0..3 {
-                rx[i] += shape.n_x[k] * q[3 * k + i];
-                rxx[i] += shape.n_xx[k] * q[3 * k + i];
-            }
-        }
-        (rx, rxx)
-    }
-
     /// Strain energy U of eq. (12) at element coordinates q.
     pub fn strain_energy(&self, q: &[f64; ND]) -> f64 {
         let mut u = 0.0;
         for p in &self.axial_points {
-            let (rx, _) = Self::gradients(&p.shape, q);
+            let (rx, _) = p.shape.gradients(q);
             let eps = axial_strain(self.measures.axial_strain, &rx);
             u += p.wl * 0.5 * self.section.ea * eps * eps;
         }
         for p in &self.bending_points {
-            let (rx, rxx) = Self::gradients(&p.shape, q);
+            let (rx, rxx) = p.shape.gradients(q);
             let k = curvature(self.measures.curvature, &rx, &rxx);
             u += p.wl * 0.5 * self.section.ei * k * k;
         }
@@ -336,7 +323,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         let mut u = 0.0;
         for p in &self.axial_points {
-            let (rx, _) = Self::gradients(&p.shape, q);
+            let (rx, _) = p.shape.gradients(q);
             let (e, g, h) = axial_energy_density(self.measures.axial_strain, self.section.ea, &rx);
             u += p.wl * e;
             let a = &p.shape.n_x;
@@ -359,7 +346,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             }
         }
         for p in &self.bending_points {
-            let (rx, rxx) = Self::gradients(&p.shape, q);
+            let (rx, rxx) = p.shape.gradients(q);
             let (e, g, h) =
                 bending_energy_density(self.measures.curvature, self.section.ei, &rx, &rxx);
             u += p.wl * e;

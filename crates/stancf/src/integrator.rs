@@ -7,7 +7,7 @@
 //! energy grow without a source (method notes: P2 is only conditionally
 //! stable, and an unstable step must end the run, not write garbage).
 
-use crate::assembly::{assemble_step, AssemblyScratch, Kind, Scales, SlabLayout, StepStart};
+use crate::assembly::{AssemblyScratch, Kind, Scales, SlabLayout, StepProblem, StepStart};
 use crate::band::BandMatrix;
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, SolverError};
@@ -53,26 +53,14 @@ pub struct StepReport {
 
 /// The system of one step as seen by Newton.
 struct StepSystem<'a> {
-    model: &'a Model,
-    layout: &'a SlabLayout,
-    slab: &'a TimeSlab,
-    start: &'a StepStart,
+    problem: StepProblem<'a>,
     scales: &'a Scales,
     scratch: &'a mut AssemblyScratch,
 }
 
 impl NonlinearSystem for StepSystem<'_> {
     fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
-        assemble_step(
-            self.model,
-            self.layout,
-            self.slab,
-            self.start,
-            x,
-            residual,
-            jacobian,
-            self.scratch,
-        );
+        self.problem.assemble(x, residual, jacobian, self.scratch);
     }
     fn residual_norm(&self, r: &[f64]) -> f64 {
         Scales::norm(&self.scales.equation, r)
@@ -257,7 +245,8 @@ impl Simulation {
             return;
         }
         self.state.clone_from(&self.previous);
-        self.acceleration.copy_from_slice(&self.previous_acceleration);
+        self.acceleration
+            .copy_from_slice(&self.previous_acceleration);
         self.steps -= 1;
         self.start.e.copy_from_slice(&self.state.e);
         self.start.v.copy_from_slice(&self.state.v);
@@ -270,10 +259,12 @@ impl Simulation {
         let dt = self.settings.time_step;
         self.predict();
         let mut system = StepSystem {
-            model: &self.model,
-            layout: &self.layout,
-            slab: &self.slab,
-            start: &self.start,
+            problem: StepProblem {
+                model: &self.model,
+                layout: &self.layout,
+                slab: &self.slab,
+                start: &self.start,
+            },
             scales: &self.scales,
             scratch: &mut self.scratch,
         };
@@ -299,7 +290,8 @@ impl Simulation {
         let last = self.layout.layers;
         let dpn = self.layout.dpn;
         self.previous.clone_from(&self.state);
-        self.previous_acceleration.copy_from_slice(&self.acceleration);
+        self.previous_acceleration
+            .copy_from_slice(&self.acceleration);
         for node in 0..self.layout.nodes {
             let ue = self
                 .layout

@@ -196,11 +196,28 @@ pub struct Model {
 }
 
 /// Positions e and velocities v of all coordinates at time t.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub struct State {
     pub t: f64,
     pub e: Vec<f64>,
     pub v: Vec<f64>,
+}
+
+impl Clone for State {
+    fn clone(&self) -> Self {
+        State {
+            t: self.t,
+            e: self.e.clone(),
+            v: self.v.clone(),
+        }
+    }
+
+    /// Reuses the buffers (the derived `clone_from` would allocate).
+    fn clone_from(&mut self, source: &Self) {
+        self.t = source.t;
+        self.e.clone_from(&source.e);
+        self.v.clone_from(&source.v);
+    }
 }
 
 fn check_positive(key: &str, value: f64) -> Result<(), ModelError> {

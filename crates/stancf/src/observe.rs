@@ -3,7 +3,7 @@
 
 use crate::element::{axial_strain, curvature, CableElement};
 use crate::model::{gather, Model, State};
-use crate::shape::{cubic_hermite, quintic_hermite, SpatialShape};
+use crate::shape::{cubic_hermite, quintic_hermite};
 
 /// Energies of a state (J).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -130,10 +130,10 @@ pub fn stress_samples(
             let xi = p as f64 / (n - 1) as f64;
             let (rx, rxx) = match model.element_type() {
                 crate::model::ElementType::Sac2 => {
-                    point_gradients(&cubic_hermite(xi, l), &state.e[k * dpn..])
+                    cubic_hermite(xi, l).gradients(&state.e[k * dpn..])
                 }
                 crate::model::ElementType::Sac3 => {
-                    point_gradients(&quintic_hermite(xi, l), &state.e[k * dpn..])
+                    quintic_hermite(xi, l).gradients(&state.e[k * dpn..])
                 }
             };
             out.push(StressSample {
@@ -144,16 +144,4 @@ pub fn stress_samples(
             });
         }
     }
-}
-
-fn point_gradients<const NS: usize>(shape: &SpatialShape<NS>, q: &[f64]) -> ([f64; 3], [f64; 3]) {
-    let mut rx = [0.0; 3];
-    let mut rxx = [0.0; 3];
-    for k in 0..NS {
-        for i in 0..3 {
-            rx[i] += shape.n_x[k] * q[3 * k + i];
-            rxx[i] += shape.n_xx[k] * q[3 * k + i];
-        }
-    }
-    (rx, rxx)
 }

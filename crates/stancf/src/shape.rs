@@ -23,6 +23,22 @@ pub struct SpatialShape<const NS: usize> {
     pub n_xx: [f64; NS],
 }
 
+impl<const NS: usize> SpatialShape<NS> {
+    /// r_x and r_xx at this point from the element coordinates q (entry
+    /// 3 k + i is component i of the coordinate of shape function k).
+    pub fn gradients(&self, q: &[f64]) -> ([f64; 3], [f64; 3]) {
+        let mut rx = [0.0; 3];
+        let mut rxx = [0.0; 3];
+        for k in 0..NS {
+            for i in 0..3 {
+                rx[i] += self.n_x[k] * q[3 * k + i];
+                rxx[i] += self.n_xx[k] * q[3 * k + i];
+            }
+        }
+        (rx, rxx)
+    }
+}
+
 /// Cubic Hermite interpolation in space, eq. (4): coordinates
 /// `[r(0), r_x(0), r(l), r_x(l)]` (SAC-2).
 pub fn cubic_hermite(xi: f64, l: f64) -> SpatialShape<4> {

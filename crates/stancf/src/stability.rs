@@ -18,7 +18,7 @@
 //! matrix of the actual mesh, by Lanczos iteration.
 
 use crate::assembly::stiffness_and_mass;
-use crate::band::{BandLu, BandMatrix};
+use crate::band::BandLu;
 use crate::element::TimeSlab;
 use crate::model::Model;
 use crate::quadrature::GaussRule;

@@ -144,7 +144,9 @@ fn oblique_translation_is_exact_after_1000_steps() {
     }
 }
 
-fn transverse_impact(kind: ElementType) -> (Model, State) {
+/// The paper's Table 4: a free 4 m PVC cable on 8 elements whose end A
+/// moves at `v_a` and end B at `-v_a`, everything else at rest.
+fn table4_impact(kind: ElementType, v_a: [f64; 3]) -> (Model, State) {
     let model = Model::new(
         Cable::straight(4.0, 8, kind).with_origin([-2.0, 0.0, 0.0]),
         pvc(),
@@ -153,9 +155,13 @@ fn transverse_impact(kind: ElementType) -> (Model, State) {
     )
     .unwrap();
     let mut s = model.initial_state();
-    model.set_node_velocity(&mut s, 0, [0.0, 10.0, 0.0]);
-    model.set_node_velocity(&mut s, 8, [0.0, -10.0, 0.0]);
+    model.set_node_velocity(&mut s, 0, v_a);
+    model.set_node_velocity(&mut s, 8, v_a.map(|c| -c));
     (model, s)
+}
+
+fn transverse_impact(kind: ElementType) -> (Model, State) {
+    table4_impact(kind, [0.0, 10.0, 0.0])
 }
 
 /// Largest relative energy deviation over [0, duration] at step dt, and
@@ -413,16 +419,7 @@ fn time_layers_converge_at_order_four() {
 #[test]
 fn chen2023_example1_axial_wave_speed_and_peak_stress() {
     for (kind, dt) in [(ElementType::Sac2, 1e-5), (ElementType::Sac3, 5e-6)] {
-        let model = Model::new(
-            Cable::straight(4.0, 8, kind).with_origin([-2.0, 0.0, 0.0]),
-            pvc(),
-            ModelOptions::default(),
-            vec![],
-        )
-        .unwrap();
-        let mut s = model.initial_state();
-        model.set_node_velocity(&mut s, 0, [10.0, 0.0, 0.0]);
-        model.set_node_velocity(&mut s, 8, [-10.0, 0.0, 0.0]);
+        let (model, s) = table4_impact(kind, [10.0, 0.0, 0.0]);
         let c = model.material.wave_speed();
         let stable = stability::stable_step(&model, &s.e, &GaussRule::new(3).unwrap(), 1).unwrap();
         assert!(dt < stable);
@@ -558,4 +555,36 @@ fn axial_impact_peak_stress_converges_to_rho_c_v0() {
     );
     assert!((peak.1 - 2.0).abs() < 1e-9);
     assert!((peak.2 - 2.0 / c).abs() < 2.0 * dt, "peak time {}", peak.2);
+}
+
+/// The rigid rotation of the initial conditions: w x (r - c) on positions,
+/// w x r_x on slopes. The velocity field of a straight cable spinning about
+/// its centre is linear in x, which the Hermite field represents exactly,
+/// so T = 1/2 (rho A L) (L^2 / 12) w^2 exactly, and the linear momentum is
+/// zero.
+#[test]
+fn rigid_rotation_initial_condition_has_the_exact_kinetic_energy() {
+    for kind in [ElementType::Sac2, ElementType::Sac3] {
+        let dir = [0.6, 0.0, -0.8];
+        let model = Model::new(
+            Cable::straight(2.0, 5, kind)
+                .with_origin([1.0, 1.0, 1.0])
+                .with_direction(dir),
+            pvc(),
+            ModelOptions::default(),
+            vec![],
+        )
+        .unwrap();
+        let mut s = model.initial_state();
+        // Centre of the cable; w perpendicular to it.
+        let c = [1.0 + 0.6, 1.0, 1.0 - 0.8];
+        let w = [0.8 * 3.0, 0.0, 0.6 * 3.0];
+        model.add_rigid_rotation(&mut s, w, c);
+        let t = energies(&model, &s).kinetic;
+        let m = model.material.density * model.material.area * 2.0;
+        let exact = 0.5 * m * 4.0 / 12.0 * 9.0;
+        assert!((t / exact - 1.0).abs() < 1e-13, "{kind:?}: {t} vs {exact}");
+        let (_, p, _) = momentum(&model, &s);
+        assert!(p.iter().all(|v| v.abs() < 1e-15), "{p:?}");
+    }
 }

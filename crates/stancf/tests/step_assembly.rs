@@ -5,7 +5,7 @@
 mod common;
 
 use common::*;
-use stancf::assembly::{assemble_step, AssemblyScratch, Kind, SlabLayout, StepStart};
+use stancf::assembly::{AssemblyScratch, Kind, SlabLayout, StepProblem, StepStart};
 use stancf::band::BandMatrix;
 use stancf::element::TimeSlab;
 use stancf::quadrature::GaussRule;
@@ -71,27 +71,21 @@ fn step_jacobian_matches_finite_differences() {
             let mut jac = BandMatrix::new(n, kl, ku);
             let mut r = vec![0.0; n];
             let mut scratch = AssemblyScratch::new(&m);
-            assemble_step(
-                &m,
-                &layout,
-                &slab,
-                &start,
-                &x,
-                &mut r,
-                Some(&mut jac),
-                &mut scratch,
-            );
+            StepProblem {
+                model: &m,
+                layout: &layout,
+                slab: &slab,
+                start: &start,
+            }
+            .assemble(&x, &mut r, Some(&mut jac), &mut scratch);
             let mut r_only = vec![0.0; n];
-            assemble_step(
-                &m,
-                &layout,
-                &slab,
-                &start,
-                &x,
-                &mut r_only,
-                None,
-                &mut scratch,
-            );
+            StepProblem {
+                model: &m,
+                layout: &layout,
+                slab: &slab,
+                start: &start,
+            }
+            .assemble(&x, &mut r_only, None, &mut scratch);
             assert_eq!(r, r_only, "residual must not depend on whether J is built");
             let h = 1e-6;
             let mut analytic = Vec::with_capacity(n * n);
@@ -103,8 +97,20 @@ fn step_jacobian_matches_finite_differences() {
                 let mut xm = x.clone();
                 xp[c] += h;
                 xm[c] -= h;
-                assemble_step(&m, &layout, &slab, &start, &xp, &mut rp, None, &mut scratch);
-                assemble_step(&m, &layout, &slab, &start, &xm, &mut rm, None, &mut scratch);
+                StepProblem {
+                    model: &m,
+                    layout: &layout,
+                    slab: &slab,
+                    start: &start,
+                }
+                .assemble(&xp, &mut rp, None, &mut scratch);
+                StepProblem {
+                    model: &m,
+                    layout: &layout,
+                    slab: &slab,
+                    start: &start,
+                }
+                .assemble(&xm, &mut rm, None, &mut scratch);
                 for row in 0..n {
                     fd.push((rp[row] - rm[row]) / (2.0 * h));
                     analytic.push(jac.get(row, c));
@@ -155,7 +161,13 @@ fn rigid_translation_satisfies_the_p2_rows() {
             }
             let mut r = vec![0.0; layout.size()];
             let mut scratch = AssemblyScratch::new(&m);
-            assemble_step(&m, &layout, &slab, &start, &x, &mut r, None, &mut scratch);
+            StepProblem {
+                model: &m,
+                layout: &layout,
+                slab: &slab,
+                start: &start,
+            }
+            .assemble(&x, &mut r, None, &mut scratch);
             let scale: f64 = start.mass_v.iter().fold(0.0, |a, b| a.max(b.abs()));
             let worst = r.iter().fold(0.0f64, |a, b| a.max(b.abs()));
             assert!(

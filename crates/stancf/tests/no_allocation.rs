@@ -1,0 +1,79 @@
+//! No heap allocation inside the Newton loop: after the first step (which
+//! sizes the scratch buffers), stepping allocates nothing. Counted with a
+//! global allocator wrapper; this test binary holds nothing else, so no
+//! other thread allocates while it counts.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, Simulation, StepSettings};
+
+#[test]
+fn stepping_allocates_nothing() {
+    let material = Material {
+        youngs_modulus: 3.4e9,
+        density: 1380.0,
+        area: 3.0e-6,
+        second_moment: 1.25e-13,
+    };
+    for (kind, layers) in [(ElementType::Sac2, 1), (ElementType::Sac3, 2)] {
+        let model = Model::new(
+            Cable::straight(4.0, 8, kind),
+            material,
+            ModelOptions::default(),
+            vec![
+                Load::Gravity {
+                    acceleration: [0.0, -9.81, 0.0],
+                },
+                Load::PointForce {
+                    node: 8,
+                    force: [0.0, 0.0, 0.1],
+                },
+            ],
+        )
+        .unwrap();
+        let mut s = model.initial_state();
+        model.set_node_velocity(&mut s, 0, [0.0, 10.0, 0.0]);
+        let settings = StepSettings {
+            time_step: 2e-5,
+            time_layers: layers,
+            ..StepSettings::default()
+        };
+        let mut sim = Simulation::new(model, s, settings).unwrap();
+        sim.step().unwrap();
+        let before = ALLOCATIONS.load(Ordering::SeqCst);
+        let mut iterations = 0;
+        for _ in 0..50 {
+            iterations += sim.step().unwrap().newton.iterations;
+        }
+        let after = ALLOCATIONS.load(Ordering::SeqCst);
+        assert!(iterations >= 50, "the steps did iterate");
+        assert_eq!(
+            after - before,
+            0,
+            "{kind:?}: {} allocations in 50 steps",
+            after - before
+        );
+    }
+}
