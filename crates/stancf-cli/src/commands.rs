@@ -1,12 +1,13 @@
 //! The `run` and `check` commands.
 
 use crate::output::{json_num, write_atomic, AtomicFile, Num};
-use crate::scenario::{self, Scenario};
+use crate::scenario::{self, AnalysisKind, Scenario};
 use crate::Failure;
+use serde_json::{json, Value};
 use stancf::integrator::step_count;
 use stancf::observe::{momentum, stress_samples, Energies, StressSample};
 use stancf::quadrature::GaussRule;
-use stancf::{energies, stability, Model, Simulation, State};
+use stancf::{energies, stability, Model, Simulation, State, StaticSolver};
 use std::io::Write;
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
@@ -15,10 +16,8 @@ use std::time::Instant;
 /// Stress samples per element in stress.csv (ends included).
 const STRESS_POINTS_PER_ELEMENT: usize = 5;
 
-/// Figures derived from a scenario before running it.
+/// Figures derived from a dynamic scenario before running it.
 struct Derived {
-    dofs: usize,
-    unknowns_per_step: usize,
     element_length: f64,
     wave_speed: f64,
     courant: f64,
@@ -26,7 +25,6 @@ struct Derived {
     critical_w_dt: Option<f64>,
     stable_step: Option<f64>,
     steps: usize,
-    warnings: Vec<String>,
 }
 
 fn load(path: &Path) -> Result<(Scenario, Model, State), Failure> {
@@ -43,37 +41,40 @@ fn derive(sc: &Scenario, model: &Model, state: &State) -> Derived {
     let rule = GaussRule::new(a.time_points).expect("validated");
     let w_max = stability::highest_frequency(model, &state.e);
     let critical_w_dt = stability::p2_critical_w_dt(&rule, a.time_layers);
-    let stable_step = critical_w_dt.map(|w| w / w_max);
     let wave_speed = model.material.wave_speed();
     let element_length = model.element_length();
-    let mut warnings = model.warnings();
-    if let Some(s) = stable_step {
-        if a.time_step > s {
-            warnings.push(format!(
-                "analysis.time_step = {:e} s exceeds the stable step estimate of P2, {:.4e} s \
-                 (w_max dt = {:.3} > {:.3}): the run may blow up; reduce the step",
-                a.time_step,
-                s,
-                w_max * a.time_step,
-                critical_w_dt.unwrap_or(f64::NAN)
-            ));
-        }
-    }
     Derived {
-        dofs: model.dofs(),
-        unknowns_per_step: model.dofs() * 2 * a.time_layers,
         element_length,
         wave_speed,
         courant: wave_speed * a.time_step / element_length,
         w_max,
         critical_w_dt,
-        stable_step,
+        stable_step: critical_w_dt.map(|w| w / w_max),
         steps: step_count(a.duration, a.time_step),
-        warnings,
     }
 }
 
-fn describe(sc: &Scenario, model: &Model, d: &Derived) -> String {
+/// Warnings about a scenario: the model's own (quadrature), the scenario's
+/// notes, and a step above P2's stable limit.
+fn warnings(sc: &Scenario, model: &Model, d: Option<&Derived>) -> Vec<String> {
+    let mut w = model.warnings();
+    w.extend(sc.notes.iter().cloned());
+    if let Some(d) = d {
+        if let Some(s) = d.stable_step.filter(|&s| sc.analysis.time_step > s) {
+            w.push(format!(
+                "analysis.time_step = {:e} s exceeds the stable step estimate of P2, {:.4e} s \
+                 (w_max dt = {:.3} > {:.3}): the run may blow up; reduce the step",
+                sc.analysis.time_step,
+                s,
+                d.w_max * sc.analysis.time_step,
+                d.critical_w_dt.unwrap_or(f64::NAN)
+            ));
+        }
+    }
+    w
+}
+
+fn describe(sc: &Scenario, model: &Model, d: Option<&Derived>) -> String {
     let a = &sc.analysis;
     let mut s = String::new();
     let mut line = |k: &str, v: String| s.push_str(&format!("{k:<28}{v}\n"));
@@ -84,20 +85,57 @@ fn describe(sc: &Scenario, model: &Model, d: &Derived) -> String {
             "{} x {}, element length {} m",
             sc.cable.elements,
             model.element_type().name(),
-            d.element_length
+            model.element_length()
         ),
     );
-    line("DOFs", d.dofs.to_string());
+    line("DOFs", model.dofs().to_string());
+    let constrained = (0..model.dofs())
+        .filter(|&g| model.constraints.is_constrained(g))
+        .count();
+    line(
+        "constraints",
+        format!(
+            "{} ({} constrained coordinates, {:?})",
+            model.constraints.list.len(),
+            constrained,
+            a.constraint_method
+        ),
+    );
+    let sp = model.space_points();
+    let Some(d) = d else {
+        line("analysis", format!("static, {} load steps", a.load_steps));
+        line(
+            "unknowns",
+            stancf::assembly::SlabLayout::new(
+                model,
+                stancf::assembly::Scheme::Static,
+                a.constraint_method,
+            )
+            .size()
+            .to_string(),
+        );
+        line(
+            "quadrature",
+            format!("space {} (axial) / {} (bending)", sp.axial, sp.bending),
+        );
+        return s;
+    };
+    let layout = stancf::assembly::SlabLayout::new(
+        model,
+        stancf::assembly::Scheme::P2 {
+            layers: a.time_layers,
+        },
+        a.constraint_method,
+    );
     line(
         "unknowns per step",
         format!(
             "{} ({} time layer{})",
-            d.unknowns_per_step,
+            layout.size(),
             a.time_layers,
             if a.time_layers == 1 { "" } else { "s" }
         ),
     );
-    let sp = model.space_points();
     line(
         "quadrature",
         format!(
@@ -137,12 +175,17 @@ fn describe(sc: &Scenario, model: &Model, d: &Derived) -> String {
 
 pub fn check(path: &Path) -> Result<(), Failure> {
     let (sc, model, state) = load(path)?;
-    let d = derive(&sc, &model, &state);
-    print!("{}", describe(&sc, &model, &d));
-    if d.warnings.is_empty() {
+    let d = (sc.analysis.kind == AnalysisKind::Dynamic).then(|| derive(&sc, &model, &state));
+    print!("{}", describe(&sc, &model, d.as_ref()));
+    if sc.analysis.kind == AnalysisKind::Static {
+        stancf::StaticSolver::new(model.clone(), sc.static_settings())
+            .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+    }
+    let w = warnings(&sc, &model, d.as_ref());
+    if w.is_empty() {
         println!("{:<28}none", "warnings");
     }
-    for w in &d.warnings {
+    for w in &w {
         println!("warning: {w}");
     }
     Ok(())
@@ -153,15 +196,32 @@ struct Writers {
     history: AtomicFile,
     nodes: AtomicFile,
     stress: AtomicFile,
+    reactions: Option<AtomicFile>,
     samples: Vec<StressSample>,
 }
 
+/// One written state with what the solver says about it.
+struct Row<'a> {
+    state: &'a State,
+    energies: &'a Energies,
+    iterations: usize,
+    residual: f64,
+    increment: f64,
+    /// Reactions to write with this row (none at t = 0 of a dynamic run).
+    reactions: Option<&'a [(usize, [f64; 3])]>,
+}
+
 impl Writers {
-    fn create(dir: &Path) -> std::io::Result<Self> {
+    fn create(dir: &Path, with_reactions: bool) -> std::io::Result<Self> {
         let mut w = Writers {
             history: AtomicFile::create(dir, "history.csv")?,
             nodes: AtomicFile::create(dir, "nodes.csv")?,
             stress: AtomicFile::create(dir, "stress.csv")?,
+            reactions: if with_reactions {
+                Some(AtomicFile::create(dir, "reactions.csv")?)
+            } else {
+                None
+            },
             samples: Vec::new(),
         };
         writeln!(
@@ -170,19 +230,15 @@ impl Writers {
         )?;
         writeln!(w.nodes.writer(), "t,node,x,y,z")?;
         writeln!(w.stress.writer(), "t,s,axial_stress,curvature,element")?;
+        if let Some(r) = w.reactions.as_mut() {
+            writeln!(r.writer(), "t,node,fx,fy,fz")?;
+        }
         Ok(w)
     }
 
     /// One written step. Refuses non-finite values (none may reach a file).
-    fn write(
-        &mut self,
-        model: &Model,
-        state: &State,
-        en: &Energies,
-        iterations: usize,
-        residual: f64,
-        increment: f64,
-    ) -> std::io::Result<()> {
+    fn write(&mut self, model: &Model, row: &Row) -> std::io::Result<()> {
+        let (state, en) = (row.state, row.energies);
         stress_samples(model, state, STRESS_POINTS_PER_ELEMENT, &mut self.samples);
         let finite = state.e.iter().all(|v| v.is_finite())
             && [
@@ -190,15 +246,20 @@ impl Writers {
                 en.strain,
                 en.gravity,
                 en.load_potential,
-                residual,
-                increment,
+                row.residual,
+                row.increment,
             ]
             .iter()
             .all(|v| v.is_finite())
             && self
                 .samples
                 .iter()
-                .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite());
+                .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite())
+            && row
+                .reactions
+                .unwrap_or(&[])
+                .iter()
+                .all(|(_, f)| f.iter().all(|v| v.is_finite()));
         if !finite {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::InvalidData,
@@ -208,13 +269,14 @@ impl Writers {
         let t = Num(state.t);
         writeln!(
             self.history.writer(),
-            "{t},{},{},{},{},{iterations},{},{},{}",
+            "{t},{},{},{},{},{},{},{},{}",
             Num(en.kinetic),
             Num(en.strain),
             Num(en.gravity),
             Num(en.total()),
-            Num(residual),
-            Num(increment),
+            row.iterations,
+            Num(row.residual),
+            Num(row.increment),
             Num(en.load_potential)
         )?;
         let w = self.nodes.writer();
@@ -233,20 +295,29 @@ impl Writers {
                 s.element
             )?;
         }
+        if let (Some(file), Some(reactions)) = (self.reactions.as_mut(), row.reactions) {
+            let w = file.writer();
+            for (node, f) in reactions {
+                writeln!(w, "{t},{node},{},{},{}", Num(f[0]), Num(f[1]), Num(f[2]))?;
+            }
+        }
         Ok(())
     }
 
     fn commit(self) -> std::io::Result<()> {
         self.history.commit()?;
         self.nodes.commit()?;
-        self.stress.commit()
+        self.stress.commit()?;
+        if let Some(r) = self.reactions {
+            r.commit()?;
+        }
+        Ok(())
     }
 }
 
 /// Running figures of a run for summary.json.
 #[derive(Default)]
 struct Tally {
-    steps: usize,
     iterations: usize,
     factorizations: usize,
     max_iterations: usize,
@@ -265,32 +336,114 @@ impl Tally {
             }
         }
     }
+
+    fn iterations_json(&self, steps: usize) -> Value {
+        json!({
+            "total": self.iterations,
+            "mean_per_step": json_num(if steps > 0 { self.iterations as f64 / steps as f64 } else { 0.0 }),
+            "max_per_step": self.max_iterations,
+            "factorizations": self.factorizations,
+        })
+    }
+
+    fn stress_json(&self) -> Value {
+        json!({
+            "axial_stress": json_num(self.stress_peak.0),
+            "s": json_num(self.stress_peak.1),
+            "t": json_num(self.stress_peak.2),
+        })
+    }
 }
 
 fn io_err(dir: &Path) -> impl Fn(std::io::Error) -> Failure + '_ {
     move |e| Failure::Other(format!("{}: cannot write results: {e}", dir.display()))
 }
 
-pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
-    let (sc, model, state) = load(path)?;
-    let d = derive(&sc, &model, &state);
-    for w in &d.warnings {
-        eprintln!("warning: {w}");
-    }
-    let settings = sc.step_settings();
-    let mut sim = Simulation::new(model, state, settings)
-        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
-    let dir = out.unwrap_or_else(|| {
+fn vec3(v: [f64; 3]) -> Value {
+    json!([json_num(v[0]), json_num(v[1]), json_num(v[2])])
+}
+
+fn reactions_json(reactions: &[(usize, [f64; 3])]) -> Value {
+    Value::Array(
+        reactions
+            .iter()
+            .map(|(n, f)| json!({"node": n, "force": vec3(*f)}))
+            .collect(),
+    )
+}
+
+/// The fields of summary.json every analysis writes.
+fn common_summary(
+    sc: &Scenario,
+    model: &Model,
+    state: &State,
+    wall: f64,
+) -> serde_json::Map<String, Value> {
+    let nodes_final: Vec<Value> = (0..model.nodes())
+        .map(|j| vec3(model.node_position(&state.e, j)))
+        .collect();
+    let tip = model.node_position(&state.e, model.nodes() - 1);
+    let mut m = serde_json::Map::new();
+    m.insert("title".into(), json!(sc.title));
+    m.insert(
+        "analysis".into(),
+        json!(match sc.analysis.kind {
+            AnalysisKind::Dynamic => "dynamic",
+            AnalysisKind::Static => "static",
+        }),
+    );
+    m.insert("element".into(), json!(model.element_type().name()));
+    m.insert("elements".into(), json!(sc.cable.elements));
+    m.insert("dofs".into(), json!(model.dofs()));
+    m.insert("wall_time_s".into(), json_num(wall));
+    m.insert("tip".into(), vec3(tip));
+    m.insert("nodes_final".into(), Value::Array(nodes_final));
+    m
+}
+
+fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
+    out.unwrap_or_else(|| {
         let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned());
         PathBuf::from("out").join(stem.unwrap_or_else(|| "run".into()))
-    });
-    std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
-    let mut writers = Writers::create(&dir).map_err(io_err(&dir))?;
+    })
+}
 
-    let e0 = energies(sim.model(), sim.state());
-    writers
-        .write(sim.model(), sim.state(), &e0, 0, 0.0, 0.0)
-        .map_err(io_err(&dir))?;
+pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
+    let (sc, model, state) = load(path)?;
+    match sc.analysis.kind {
+        AnalysisKind::Dynamic => run_dynamic(path, out, sc, model, state),
+        AnalysisKind::Static => run_static(path, out, sc, model),
+    }
+}
+
+fn run_dynamic(
+    path: &Path,
+    out: Option<PathBuf>,
+    sc: Scenario,
+    model: Model,
+    state: State,
+) -> Result<(), Failure> {
+    let d = derive(&sc, &model, &state);
+    for w in warnings(&sc, &model, Some(&d)) {
+        eprintln!("warning: {w}");
+    }
+    let mut sim = Simulation::new(model, state, sc.step_settings())
+        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+    let dir = output_dir(path, out);
+    std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
+    let constrained = !sim.model().constraints.is_empty();
+    let mut writers = Writers::create(&dir, constrained).map_err(io_err(&dir))?;
+
+    let e0 = sim.energies();
+    let first = Row {
+        state: sim.state(),
+        energies: &e0,
+        iterations: 0,
+        residual: 0.0,
+        increment: 0.0,
+        reactions: None,
+    };
+    writers.write(sim.model(), &first).map_err(io_err(&dir))?;
     let mut tally = Tally {
         energy_scale: e0.kinetic.abs() + e0.strain.abs(),
         ..Tally::default()
@@ -302,11 +455,19 @@ pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
     let every = sc.output_every;
     let clock = Instant::now();
     let result = stancf::run(&mut sim, sc.analysis.duration, |sim, rep, en| {
-        tally.steps = rep.step;
         tally.iterations += rep.newton.iterations;
         tally.factorizations += rep.newton.factorizations;
         tally.max_iterations = tally.max_iterations.max(rep.newton.iterations);
         tally.max_residual = tally.max_residual.max(rep.newton.residual);
+        let work = sim.constraint_work();
+        let potential_change =
+            (en.gravity - e0.gravity).abs() + (en.load_potential - e0.load_potential).abs();
+        tally.energy_scale = tally
+            .energy_scale
+            .max(en.kinetic.abs() + en.strain.abs() + potential_change + work.abs());
+        tally.energy_max_abs_drift = tally
+            .energy_max_abs_drift
+            .max((en.mechanical() - e0.mechanical() - work).abs());
         stress_samples(
             sim.model(),
             sim.state(),
@@ -314,24 +475,16 @@ pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
             &mut peak_samples,
         );
         tally.record_stress(rep.t, &peak_samples);
-        let potential_change =
-            (en.gravity - e0.gravity).abs() + (en.load_potential - e0.load_potential).abs();
-        tally.energy_scale = tally
-            .energy_scale
-            .max(en.kinetic.abs() + en.strain.abs() + potential_change);
-        tally.energy_max_abs_drift = tally
-            .energy_max_abs_drift
-            .max((en.mechanical() - e0.mechanical()).abs());
         if rep.step % every == 0 {
-            let w = writers.write(
-                sim.model(),
-                sim.state(),
-                en,
-                rep.newton.iterations,
-                rep.newton.residual,
-                rep.newton.increment,
-            );
-            match w {
+            let row = Row {
+                state: sim.state(),
+                energies: en,
+                iterations: rep.newton.iterations,
+                residual: rep.newton.residual,
+                increment: rep.newton.increment,
+                reactions: Some(sim.reactions()),
+            };
+            match writers.write(sim.model(), &row) {
                 Ok(()) => last_written = rep.step,
                 Err(e) => {
                     io_failure = Some(e);
@@ -347,82 +500,62 @@ pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
     }
     let failure = result.as_ref().err().cloned();
     if failure.is_none() && last_written != sim.steps() {
-        let en = energies(sim.model(), sim.state());
-        let hist = sim.residual_history();
-        let residual = hist.last().copied().unwrap_or(0.0);
-        writers
-            .write(sim.model(), sim.state(), &en, 0, residual, 0.0)
-            .map_err(io_err(&dir))?;
+        let en = sim.energies();
+        let residual = sim.residual_history().last().copied().unwrap_or(0.0);
+        let row = Row {
+            state: sim.state(),
+            energies: &en,
+            iterations: 0,
+            residual,
+            increment: 0.0,
+            reactions: Some(sim.reactions()),
+        };
+        writers.write(sim.model(), &row).map_err(io_err(&dir))?;
     }
     writers.commit().map_err(io_err(&dir))?;
 
     let state = sim.state();
     let model = sim.model();
-    let en = energies(model, state);
+    let en = sim.energies();
     let (mass, p, first_moment) = momentum(model, state);
-    let nodes_final: Vec<serde_json::Value> = (0..model.nodes())
-        .map(|j| {
-            let r = model.node_position(&state.e, j);
-            serde_json::json!([json_num(r[0]), json_num(r[1]), json_num(r[2])])
-        })
-        .collect();
-    let tip = model.node_position(&state.e, model.nodes() - 1);
     let steps = sim.steps();
-    let mean = if steps > 0 {
-        tally.iterations as f64 / steps as f64
+    let rel = if tally.energy_scale > 0.0 {
+        tally.energy_max_abs_drift / tally.energy_scale
     } else {
         0.0
     };
-    let summary = serde_json::json!({
-        "title": sc.title,
-        "analysis": "dynamic",
-        "element": model.element_type().name(),
-        "elements": sc.cable.elements,
-        "dofs": model.dofs(),
-        "steps": steps,
-        "time": json_num(state.t),
-        "converged": failure.is_none(),
-        "wall_time_s": json_num(wall),
-        "iterations": {
-            "total": tally.iterations,
-            "mean_per_step": json_num(mean),
-            "max_per_step": tally.max_iterations,
-            "factorizations": tally.factorizations,
-        },
-        "energy": {
+    let mut summary = common_summary(&sc, model, state, wall);
+    summary.insert("steps".into(), json!(steps));
+    summary.insert("time".into(), json_num(state.t));
+    summary.insert("converged".into(), json!(failure.is_none()));
+    summary.insert("iterations".into(), tally.iterations_json(steps));
+    summary.insert(
+        "energy".into(),
+        json!({
             "initial": json_num(e0.mechanical()),
             "final": json_num(en.mechanical()),
             "max_abs_drift": json_num(tally.energy_max_abs_drift),
-            "max_rel_drift": json_num(if tally.energy_scale > 0.0 {
-                tally.energy_max_abs_drift / tally.energy_scale
-            } else {
-                0.0
-            }),
+            "max_rel_drift": json_num(rel),
             "scale": json_num(tally.energy_scale),
-        },
-        "tip": [json_num(tip[0]), json_num(tip[1]), json_num(tip[2])],
-        "nodes_final": nodes_final,
+            "constraint_work": json_num(sim.constraint_work()),
+        }),
+    );
+    let extra = json!({
         "time_step": json_num(sc.analysis.time_step),
         "time_layers": sc.analysis.time_layers,
-        "unknowns_per_step": d.unknowns_per_step,
+        "unknowns_per_step": sim.unknowns_per_step(),
         "max_residual": json_num(tally.max_residual),
         "courant_number": json_num(d.courant),
         "highest_frequency": json_num(d.w_max),
-        "stable_time_step": d.stable_step.map(json_num).unwrap_or(serde_json::Value::Null),
-        "stress_peak": {
-            "axial_stress": json_num(tally.stress_peak.0),
-            "s": json_num(tally.stress_peak.1),
-            "t": json_num(tally.stress_peak.2),
-        },
-        "linear_momentum": [json_num(p[0]), json_num(p[1]), json_num(p[2])],
-        "center_of_mass": [
-            json_num(first_moment[0] / mass),
-            json_num(first_moment[1] / mass),
-            json_num(first_moment[2] / mass)
-        ],
+        "stable_time_step": d.stable_step.map(json_num).unwrap_or(Value::Null),
+        "stress_peak": tally.stress_json(),
+        "linear_momentum": vec3(p),
+        "center_of_mass": vec3(first_moment.map(|c| c / mass)),
+        "reactions": reactions_json(sim.reactions()),
         "error": failure.as_ref().map(|f| f.to_string()),
     });
-    let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
+    summary.extend(extra.as_object().expect("object").clone());
+    let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
     write_atomic(&dir, "summary.json", text.as_bytes()).map_err(io_err(&dir))?;
 
     if let Some(f) = failure {
@@ -436,23 +569,157 @@ pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
     }
     println!(
         "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} Newton iterations per step",
-        sc.title, steps, state.t, wall, mean
+        sc.title,
+        steps,
+        state.t,
+        wall,
+        tally.iterations as f64 / steps.max(1) as f64
     );
     println!(
         "energy: initial {:.9e} J, final {:.9e} J, max drift {:.3e} J ({:.3e} of the energy scale)",
         e0.mechanical(),
         en.mechanical(),
         tally.energy_max_abs_drift,
-        if tally.energy_scale > 0.0 {
-            tally.energy_max_abs_drift / tally.energy_scale
-        } else {
-            0.0
-        }
+        rel
     );
     println!(
         "peak axial stress: {:.6e} Pa at s = {} m, t = {:.6e} s",
         tally.stress_peak.0, tally.stress_peak.1, tally.stress_peak.2
     );
+    let tip = model.node_position(&state.e, model.nodes() - 1);
+    println!(
+        "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
+        tip[0],
+        tip[1],
+        tip[2],
+        dir.display()
+    );
+    Ok(())
+}
+
+/// Energies of a static state at load factor lambda: the potentials of the
+/// applied loads (lambda times the full ones), no kinetic energy.
+fn static_energies(model: &Model, state: &State) -> Energies {
+    let mut en = energies(model, state);
+    en.gravity *= state.t;
+    en.load_potential *= state.t;
+    en
+}
+
+fn run_static(
+    path: &Path,
+    out: Option<PathBuf>,
+    sc: Scenario,
+    model: Model,
+) -> Result<(), Failure> {
+    for w in warnings(&sc, &model, None) {
+        eprintln!("warning: {w}");
+    }
+    let mut solver = StaticSolver::new(model, sc.static_settings())
+        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+    let dir = output_dir(path, out);
+    std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, true).map_err(io_err(&dir))?;
+    let e0 = static_energies(solver.model(), solver.state());
+    let first = Row {
+        state: solver.state(),
+        energies: &e0,
+        iterations: 0,
+        residual: 0.0,
+        increment: 0.0,
+        reactions: Some(solver.reactions()),
+    };
+    writers
+        .write(solver.model(), &first)
+        .map_err(io_err(&dir))?;
+    let mut tally = Tally::default();
+    let mut increments = 0;
+    let mut cuts = 0;
+    let mut io_failure = None;
+    let clock = Instant::now();
+    let result = solver.solve(|s, inc| {
+        increments = inc.step;
+        cuts += inc.cuts;
+        tally.iterations += inc.iterations;
+        tally.factorizations += inc.iterations;
+        tally.max_iterations = tally.max_iterations.max(inc.iterations);
+        tally.max_residual = tally.max_residual.max(inc.residual);
+        let en = static_energies(s.model(), s.state());
+        let row = Row {
+            state: s.state(),
+            energies: &en,
+            iterations: inc.iterations,
+            residual: inc.residual,
+            increment: inc.increment,
+            reactions: Some(s.reactions()),
+        };
+        match writers.write(s.model(), &row) {
+            Ok(()) => {
+                tally.record_stress(s.state().t, &writers.samples);
+                ControlFlow::Continue(())
+            }
+            Err(e) => {
+                io_failure = Some(e);
+                ControlFlow::Break(())
+            }
+        }
+    });
+    let wall = clock.elapsed().as_secs_f64();
+    if let Some(e) = io_failure {
+        return Err(io_err(&dir)(e));
+    }
+    writers.commit().map_err(io_err(&dir))?;
+    let failure = result.as_ref().err().cloned();
+    let state = solver.state();
+    let model = solver.model();
+    let en = static_energies(model, state);
+    let mut summary = common_summary(&sc, model, state, wall);
+    summary.insert("steps".into(), json!(increments));
+    summary.insert("time".into(), json_num(state.t));
+    summary.insert("converged".into(), json!(failure.is_none()));
+    summary.insert("iterations".into(), tally.iterations_json(increments));
+    summary.insert(
+        "energy".into(),
+        json!({
+            "initial": json_num(e0.strain),
+            "final": json_num(en.strain),
+            "strain": json_num(en.strain),
+        }),
+    );
+    let extra = json!({
+        "load_steps": sc.analysis.load_steps,
+        "increment_cuts": cuts,
+        "unknowns": solver.unknowns(),
+        "max_residual": json_num(tally.max_residual),
+        "stress_peak": tally.stress_json(),
+        "reactions": reactions_json(solver.reactions()),
+        "error": failure.as_ref().map(|f| f.to_string()),
+    });
+    summary.extend(extra.as_object().expect("object").clone());
+    let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
+    write_atomic(&dir, "summary.json", text.as_bytes()).map_err(io_err(&dir))?;
+    if let Some(f) = failure {
+        return Err(Failure::Solver(format!(
+            "{}: {f}; results up to load factor {} are in {}",
+            path.display(),
+            state.t,
+            dir.display()
+        )));
+    }
+    let tip = model.node_position(&state.e, model.nodes() - 1);
+    println!(
+        "{}: static, {increments} load increments ({cuts} cuts) in {:.3} s wall time, {:.2} Newton iterations per increment",
+        sc.title,
+        wall,
+        tally.iterations as f64 / increments.max(1) as f64
+    );
+    println!("strain energy: {:.9e} J", en.strain);
+    for (node, f) in solver.reactions() {
+        println!(
+            "reaction at node {node}: [{:.9e}, {:.9e}, {:.9e}] N",
+            f[0], f[1], f[2]
+        );
+    }
     println!(
         "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
         tip[0],

@@ -5,6 +5,7 @@
 
 mod commands;
 mod output;
+mod reproduce;
 mod scenario;
 
 use clap::{Parser, Subcommand};
@@ -38,6 +39,15 @@ enum Command {
         /// Scenario file (TOML).
         scenario: PathBuf,
     },
+    /// Reproduce one of the paper's studies (or `all`): tables as CSV and
+    /// Markdown in DIR/<study>/.
+    Reproduce {
+        /// circle-bending | all
+        study: String,
+        /// Output folder (default: out/reproduce).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 /// How a command ended.
@@ -62,6 +72,10 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Run { scenario, out } => commands::run(&scenario, out),
         Command::Check { scenario } => commands::check(&scenario),
+        Command::Reproduce { study, out } => reproduce::reproduce(
+            &study,
+            &out.unwrap_or_else(|| PathBuf::from("out").join("reproduce")),
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

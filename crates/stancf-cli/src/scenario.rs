@@ -113,6 +113,44 @@ struct RawPointForce {
     force: Option<Vector>,
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawEndMoment {
+    #[serde(rename = "type")]
+    _kind: String,
+    node: Option<RawNode>,
+    moment: Option<Vector>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawClamped {
+    #[serde(rename = "type")]
+    _kind: String,
+    node: Option<RawNode>,
+    fix_curvature: Option<bool>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPinned {
+    #[serde(rename = "type")]
+    _kind: String,
+    node: Option<RawNode>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPrescribed {
+    #[serde(rename = "type")]
+    _kind: String,
+    node: Option<RawNode>,
+    velocity: Option<Vector>,
+    amplitude: Option<Vector>,
+    frequency: Option<f64>,
+    phase: Option<f64>,
+}
+
 /// Which nodes an initial velocity applies to.
 #[derive(Clone, Debug, PartialEq)]
 pub enum NodeSet {
@@ -129,9 +167,18 @@ pub struct InitialVelocity {
     pub center: [f64; 3],
 }
 
+/// Dynamic (P2 steps in time) or static (load steps).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AnalysisKind {
+    Dynamic,
+    Static,
+}
+
 /// The analysis settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Analysis {
+    pub kind: AnalysisKind,
+    /// Dynamic only (0 for a static analysis).
     pub time_step: f64,
     pub duration: f64,
     pub time_layers: usize,
@@ -140,6 +187,8 @@ pub struct Analysis {
     pub time_points: usize,
     pub tolerance: f64,
     pub max_iterations: usize,
+    pub load_steps: usize,
+    pub constraint_method: stancf::ConstraintMethod,
 }
 
 /// A validated scenario.
@@ -151,9 +200,12 @@ pub struct Scenario {
     pub diameter: f64,
     pub options: ModelOptions,
     pub loads: Vec<Load>,
+    pub constraints: Vec<stancf::Constraint>,
     pub initial_velocity: Vec<InitialVelocity>,
     pub analysis: Analysis,
     pub output_every: usize,
+    /// Things worth saying that do not make the scenario invalid.
+    pub notes: Vec<String>,
 }
 
 /// Collects errors with the file name in front.
@@ -332,21 +384,84 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         None => (4.0 * material.area / std::f64::consts::PI).sqrt(),
     };
 
-    if !raw.constraints.is_empty() {
-        return Err(ctx.err(
-            "constraints",
-            "constraints are not available in this version of stancf (free cables only)",
-        ));
+    let mut constraints = Vec::new();
+    for (i, table) in raw.constraints.iter().enumerate() {
+        let key = format!("constraints[{i}]");
+        let kind = type_of(&ctx, &key, table)?;
+        let value = toml::Value::Table(table.clone());
+        let de_err = |e: toml::de::Error| ctx.err(&key, e.message().trim_end());
+        let nk = format!("{key}.node");
+        let one_node = |n: Option<RawNode>| -> Result<usize, ScenarioError> {
+            match ctx.node(&nk, &ctx.required(&nk, n)?, elements, false)? {
+                NodeSet::One(n) => Ok(n),
+                NodeSet::All => unreachable!("\"all\" is not accepted here"),
+            }
+        };
+        let optional_vector = |name: &str, v: &Option<Vector>| -> Result<[f64; 3], ScenarioError> {
+            match v {
+                Some(v) => ctx.vector(&format!("{key}.{name}"), v),
+                None => Ok([0.0; 3]),
+            }
+        };
+        let c = match kind.as_str() {
+            "clamped" => {
+                let c: RawClamped = value.try_into().map_err(de_err)?;
+                stancf::Constraint {
+                    node: one_node(c.node)?,
+                    kind: stancf::ConstraintKind::Clamped {
+                        fix_curvature: c.fix_curvature.unwrap_or(false),
+                    },
+                }
+            }
+            "pinned" => {
+                let c: RawPinned = value.try_into().map_err(de_err)?;
+                stancf::Constraint {
+                    node: one_node(c.node)?,
+                    kind: stancf::ConstraintKind::Pinned,
+                }
+            }
+            "prescribed" => {
+                let c: RawPrescribed = value.try_into().map_err(de_err)?;
+                let frequency = match c.frequency {
+                    Some(f) => {
+                        let f = ctx.finite(&format!("{key}.frequency"), f)?;
+                        if f < 0.0 {
+                            return Err(ctx.err(&format!("{key}.frequency"), format!("must be >= 0, got {f}")));
+                        }
+                        f
+                    }
+                    None => 0.0,
+                };
+                let phase = match c.phase {
+                    Some(p) => ctx.finite(&format!("{key}.phase"), p)?,
+                    None => 0.0,
+                };
+                stancf::Constraint {
+                    node: one_node(c.node)?,
+                    kind: stancf::ConstraintKind::Prescribed {
+                        velocity: optional_vector("velocity", &c.velocity)?,
+                        amplitude: optional_vector("amplitude", &c.amplitude)?,
+                        frequency,
+                        phase,
+                    },
+                }
+            }
+            other => {
+                return Err(ctx.err(
+                    &format!("{key}.type"),
+                    format!(
+                        "unknown constraint type \"{other}\" (expected \"clamped\", \"pinned\" or \"prescribed\")"
+                    ),
+                ))
+            }
+        };
+        constraints.push(c);
     }
 
     let mut loads = Vec::new();
     for (i, table) in raw.loads.iter().enumerate() {
         let key = format!("loads[{i}]");
-        let kind = match table.get("type") {
-            Some(toml::Value::String(s)) => s.clone(),
-            Some(_) => return Err(ctx.err(&format!("{key}.type"), "must be a string")),
-            None => return Err(ctx.err(&format!("{key}.type"), "required key is missing")),
-        };
+        let kind = type_of(&ctx, &key, table)?;
         let value = toml::Value::Table(table.clone());
         let de_err = |e: toml::de::Error| ctx.err(&key, e.message().trim_end());
         match kind.as_str() {
@@ -370,7 +485,20 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                     force: ctx.vector(&format!("{key}.force"), &f)?,
                 });
             }
-            "end-moment" | "air-drag" => {
+            "end-moment" => {
+                let p: RawEndMoment = value.try_into().map_err(de_err)?;
+                let nk = format!("{key}.node");
+                let node = match ctx.node(&nk, &ctx.required(&nk, p.node)?, elements, false)? {
+                    NodeSet::One(n) => n,
+                    NodeSet::All => unreachable!("\"all\" is not accepted here"),
+                };
+                let m = ctx.required(&format!("{key}.moment"), p.moment)?;
+                loads.push(Load::EndMoment {
+                    node,
+                    moment: ctx.vector(&format!("{key}.moment"), &m)?,
+                });
+            }
+            "air-drag" => {
                 return Err(ctx.err(
                     &format!("{key}.type"),
                     format!("load type \"{kind}\" is not available in this version of stancf"),
@@ -380,7 +508,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 return Err(ctx.err(
                     &format!("{key}.type"),
                     format!(
-                        "unknown load type \"{other}\" (expected \"gravity\" or \"point-force\")"
+                        "unknown load type \"{other}\" (expected \"gravity\", \"point-force\" or \"end-moment\")"
                     ),
                 ))
             }
@@ -430,32 +558,54 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
     }
 
     let ra = raw.analysis.unwrap_or_default();
-    let kind = ctx.choice(
+    let kind = match ctx.choice(
         "analysis.type",
         ra.kind.as_deref(),
         "dynamic",
         &["dynamic", "static"],
-    )?;
-    if kind == "static" {
-        return Err(ctx.err(
-            "analysis.type",
-            "static analysis is not available in this version of stancf (it needs constraints)",
-        ));
-    }
-    let time_step = ctx.positive(
-        "analysis.time_step",
-        ctx.required("analysis.time_step", ra.time_step)?,
-    )?;
-    let duration = ctx.positive(
-        "analysis.duration",
-        ctx.required("analysis.duration", ra.duration)?,
-    )?;
-    if time_step > duration {
-        return Err(ctx.err(
-            "analysis.time_step",
-            format!("the step ({time_step:e} s) is longer than the duration ({duration:e} s)"),
-        ));
-    }
+    )? {
+        "static" => AnalysisKind::Static,
+        _ => AnalysisKind::Dynamic,
+    };
+    let mut notes = Vec::new();
+    let (time_step, duration) = match kind {
+        AnalysisKind::Dynamic => {
+            let time_step = ctx.positive(
+                "analysis.time_step",
+                ctx.required("analysis.time_step", ra.time_step)?,
+            )?;
+            let duration = ctx.positive(
+                "analysis.duration",
+                ctx.required("analysis.duration", ra.duration)?,
+            )?;
+            if time_step > duration {
+                return Err(ctx.err(
+                    "analysis.time_step",
+                    format!(
+                        "the step ({time_step:e} s) is longer than the duration ({duration:e} s)"
+                    ),
+                ));
+            }
+            (time_step, duration)
+        }
+        AnalysisKind::Static => {
+            for (name, v) in [("time_step", ra.time_step), ("duration", ra.duration)] {
+                if v.is_some() {
+                    notes.push(format!("analysis.{name} is not used by a static analysis"));
+                }
+            }
+            if !raw.initial_velocity.is_empty() {
+                return Err(ctx.err("initial_velocity", "a static analysis has no velocities"));
+            }
+            if constraints.is_empty() {
+                return Err(ctx.err(
+                    "constraints",
+                    "a static analysis needs constraints that remove the rigid motions; there are none",
+                ));
+            }
+            (0.0, 0.0)
+        }
+    };
     let time_layers = match ra.time_layers {
         Some(n) => ctx.count("analysis.time_layers", n, 1, 16)?,
         None => 1,
@@ -523,9 +673,10 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         Some(n) => ctx.count("analysis.max_iterations", n, 1, 10_000)?,
         None => 50,
     };
-    if let Some(n) = ra.load_steps {
-        ctx.count("analysis.load_steps", n, 1, 1_000_000)?;
-    }
+    let load_steps = match ra.load_steps {
+        Some(n) => ctx.count("analysis.load_steps", n, 1, 1_000_000)?,
+        None => 20,
+    };
     let curvature = match ctx.choice(
         "analysis.curvature",
         ra.curvature.as_deref(),
@@ -544,12 +695,16 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         "engineering" => AxialStrain::Engineering,
         _ => AxialStrain::Green,
     };
-    ctx.choice(
+    let constraint_method = match ctx.choice(
         "analysis.constraint_method",
         ra.constraint_method.as_deref(),
         "multiplier",
         &["multiplier", "elimination"],
-    )?;
+    )? {
+        "elimination" => stancf::ConstraintMethod::Elimination,
+        _ => stancf::ConstraintMethod::Multiplier,
+    };
+    check_initial_velocities(&ctx, &initial_velocity, &constraints)?;
     let ro = raw.output.unwrap_or_default();
     let output_every = match ro.every {
         Some(n) => ctx.count("output.every", n, 1, i64::MAX)?,
@@ -575,8 +730,10 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             space_points,
         },
         loads,
+        constraints,
         initial_velocity,
         analysis: Analysis {
+            kind,
             time_step,
             duration,
             time_layers,
@@ -584,9 +741,62 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             time_points,
             tolerance,
             max_iterations,
+            load_steps,
+            constraint_method,
         },
         output_every,
+        notes,
     })
+}
+
+/// The `type` of a `[[loads]]` or `[[constraints]]` entry.
+fn type_of(ctx: &Ctx, key: &str, table: &toml::Table) -> Result<String, ScenarioError> {
+    match table.get("type") {
+        Some(toml::Value::String(s)) => Ok(s.clone()),
+        Some(_) => Err(ctx.err(&format!("{key}.type"), "must be a string")),
+        None => Err(ctx.err(&format!("{key}.type"), "required key is missing")),
+    }
+}
+
+/// An initial velocity given for one node must agree with a constraint on
+/// that node (with node = "all", constrained coordinates keep the velocity
+/// their constraint gives them).
+fn check_initial_velocities(
+    ctx: &Ctx,
+    initial: &[InitialVelocity],
+    constraints: &[stancf::Constraint],
+) -> Result<(), ScenarioError> {
+    for (i, iv) in initial.iter().enumerate() {
+        let NodeSet::One(node) = iv.nodes else {
+            continue;
+        };
+        for c in constraints.iter().filter(|c| c.node == node) {
+            let (name, rate) = match c.kind {
+                stancf::ConstraintKind::Clamped { .. } => ("clamped", [0.0; 3]),
+                stancf::ConstraintKind::Pinned => ("pinned", [0.0; 3]),
+                stancf::ConstraintKind::Prescribed {
+                    velocity,
+                    amplitude,
+                    frequency,
+                    phase,
+                } => {
+                    let w = 2.0 * std::f64::consts::PI * frequency;
+                    let rate = [0, 1, 2].map(|k| velocity[k] + amplitude[k] * w * phase.cos());
+                    ("prescribed", rate)
+                }
+            };
+            if (0..3).any(|k| (iv.velocity[k] - rate[k]).abs() > 1e-12 * (1.0 + rate[k].abs())) {
+                return Err(ctx.err(
+                    &format!("initial_velocity[{i}].velocity"),
+                    format!(
+                        "node {node} is {name}: its velocity at t = 0 is {rate:?}, set by the constraint, not {:?}",
+                        iv.velocity
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 impl Scenario {
@@ -597,7 +807,8 @@ impl Scenario {
             self.material,
             self.options.clone(),
             self.loads.clone(),
-        )
+        )?
+        .with_constraints(self.constraints.clone())
     }
 
     /// The initial state: the straight reference shape with the initial
@@ -625,6 +836,7 @@ impl Scenario {
                 }
             }
         }
+        model.apply_constraints(&mut s);
         s
     }
 
@@ -638,6 +850,20 @@ impl Scenario {
                 tolerance: self.analysis.tolerance,
                 max_iterations: self.analysis.max_iterations,
             },
+            constraint_method: self.analysis.constraint_method,
+        }
+    }
+}
+
+impl Scenario {
+    /// The static solve settings for the library.
+    pub fn static_settings(&self) -> stancf::StaticSettings {
+        stancf::StaticSettings {
+            load_steps: self.analysis.load_steps,
+            tolerance: self.analysis.tolerance,
+            max_iterations: self.analysis.max_iterations,
+            constraint_method: self.analysis.constraint_method,
+            ..stancf::StaticSettings::default()
         }
     }
 }

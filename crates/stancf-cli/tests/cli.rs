@@ -613,3 +613,152 @@ fn initial_rigid_rotation_from_the_scenario() {
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert!(summary["tip"][1].as_f64().unwrap() > 0.0);
 }
+
+#[test]
+fn bad_input_constraints() {
+    let pin = |extra: &str| {
+        BASE.replace(
+            "[[loads]]\ntype = \"gravity\"",
+            &format!("{extra}\n[[loads]]\ntype = \"gravity\""),
+        )
+        .replace(
+            "[[initial_velocity]]\nnode = \"A\"\nvelocity = [0.0, 10.0, 0.0]\n",
+            "",
+        )
+    };
+    expect_input_error(
+        "constraint-node",
+        &pin("[[constraints]]\ntype = \"pinned\"\nnode = 11"),
+        &["constraints[0].node", "out of range"],
+    );
+    expect_input_error(
+        "constraint-type",
+        &pin("[[constraints]]\ntype = \"welded\"\nnode = \"A\""),
+        &["constraints[0].type", "welded"],
+    );
+    expect_input_error(
+        "constraint-conflict",
+        &pin("[[constraints]]\ntype = \"clamped\"\nnode = \"A\"\n[[constraints]]\ntype = \"pinned\"\nnode = 0"),
+        &["constraints[1]", "conflicts with constraints[0]", "node 0"],
+    );
+    expect_input_error(
+        "constraint-unknown-key",
+        &pin("[[constraints]]\ntype = \"pinned\"\nnode = \"A\"\nstiffness = 3"),
+        &["constraints[0]", "stiffness"],
+    );
+    expect_input_error(
+        "fix-curvature-sac2",
+        &pin("[[constraints]]\ntype = \"clamped\"\nnode = \"A\"\nfix_curvature = true"),
+        &["constraints[0].fix_curvature", "SAC-3"],
+    );
+    // An initial velocity on a pinned node contradicts the pin.
+    expect_input_error(
+        "velocity-vs-pin",
+        &pin("[[constraints]]\ntype = \"pinned\"\nnode = \"B\""),
+        &["initial_velocity[0].velocity", "pinned"],
+    );
+}
+
+#[test]
+fn bad_input_static_without_constraints_against_rigid_motions() {
+    let statik = BASE
+        .replace("type = \"dynamic\"", "type = \"static\"")
+        .replace(
+            "[[initial_velocity]]\nnode = \"A\"\nvelocity = [0.0, 10.0, 0.0]\n[[initial_velocity]]\nnode = 8\nvelocity = [0.0, -10.0, 0.0]\n",
+            "",
+        );
+    expect_input_error("static-free", &statik, &["constraints", "rigid motions"]);
+    let one_pin = statik.replace(
+        "[[loads]]\ntype = \"gravity\"",
+        "[[constraints]]\ntype = \"pinned\"\nnode = 4\n[[loads]]\ntype = \"gravity\"",
+    );
+    expect_input_error(
+        "static-one-pin",
+        &one_pin,
+        &["constraints", "rigid motions"],
+    );
+}
+
+/// The pendulum example: reactions.csv holds the pin force at every
+/// written step after t = 0, and the pin holds.
+#[test]
+fn pendulum_example_writes_reactions() {
+    let d = scratch("pendulum");
+    let out = d.join("res");
+    let ex = repo_file("examples/pendulum.toml");
+    let o = stancf(&["run", ex.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    let (h, reactions) = read_csv(&out.join("reactions.csv"));
+    assert_eq!(h, ["t", "node", "fx", "fy", "fz"]);
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    assert_eq!(reactions.len(), hist.len() - 1);
+    assert!(reactions.iter().all(|r| r[1] == 0.0));
+    let (_, nodes) = read_csv(&out.join("nodes.csv"));
+    for r in nodes.iter().filter(|r| r[1] == 0.0) {
+        assert!(r[2].abs() + r[3].abs() + r[4].abs() < 1e-12);
+    }
+    // Energy conserved to the scheme's accuracy (measured ~1e-10).
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert!(s["energy"]["max_rel_drift"].as_f64().unwrap() < 1e-8);
+}
+
+/// The static example: summary.json of a static analysis (steps = load
+/// steps, time = load factor 1, energy = strain energy), and the full
+/// circle closing to the paper's SAC-2 accuracy.
+#[test]
+fn circle_bending_example_is_a_static_run() {
+    let d = scratch("circle");
+    let out = d.join("res");
+    let ex = repo_file("examples/circle-bending.toml");
+    let o = stancf(&["run", ex.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["analysis"], "static");
+    assert_eq!(s["time"], 1.0);
+    assert_eq!(s["steps"], 20);
+    // Analytic strain energy of the circle: M^2 L / (2 EI) = 2 pi^2 EI / L.
+    // Ten SAC-2 elements close the circle to 18 mm of 1 m; the energy is
+    // 3.3 % low (measured), of the same order as that geometric error.
+    let ei = 3.4e9 * 1.25e-13;
+    let u = s["energy"]["final"].as_f64().unwrap();
+    assert!(
+        (u / (2.0 * std::f64::consts::PI.powi(2) * ei) - 1.0).abs() < 0.05,
+        "{u}"
+    );
+    let tip_x = s["tip"][0].as_f64().unwrap();
+    assert!((tip_x * 1e3 + 18.2972).abs() < 1e-3, "{tip_x}");
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    assert_eq!(hist.len(), 21);
+    assert_eq!(hist.last().unwrap()[0], 1.0);
+    read_csv(&out.join("reactions.csv"));
+}
+
+/// `stancf reproduce circle-bending`: its tables exist, and the SAC-3
+/// 10-element full circle closes within 1e-3 mm.
+#[test]
+fn reproduce_circle_bending() {
+    let d = scratch("reproduce");
+    let o = stancf(&["reproduce", "circle-bending", "--out", d.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    let dir = d.join("circle-bending");
+    let md = std::fs::read_to_string(dir.join("table3.md")).unwrap();
+    assert!(md.contains("Table 3") && md.contains("65.31"));
+    let csv = std::fs::read_to_string(dir.join("table3.csv")).unwrap();
+    let mut found = false;
+    for line in csv.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        // element, ..., fix_curvature, curvature, elements, lambda, tip_x_mm
+        if f[1] == "SAC-3" && f[4] == "false" && f[5] == "paper" && f[6] == "10" && f[7] == "2" {
+            let err: f64 = f[8].parse().unwrap();
+            assert!(err.abs() < 1e-3, "{err}");
+            found = true;
+        }
+    }
+    assert!(found);
+    let conv = std::fs::read_to_string(dir.join("convergence.csv")).unwrap();
+    assert_eq!(conv.lines().count(), 1 + 2 * 2 * 4);
+    let o = stancf(&["reproduce", "no-such-study"]);
+    assert_eq!(o.status.code(), Some(2));
+}

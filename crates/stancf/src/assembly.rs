@@ -1,8 +1,9 @@
-//! Assembly of the P2 equations of one time step, eq. (22), with any number
-//! of element layers in time (the paper's "time direction assembly").
+//! Assembly of the equations of one time step, eq. (22), with any number
+//! of element layers in time (the paper's "time direction assembly"), and
+//! of a static solve (the time-invariant slab of the method notes).
 //!
-//! A step [t_a, t_b] holds L layers with time nodes t_0 = t_a, ..., t_L = t_b.
-//! The unknowns are e_i, v_i at t_1 .. t_L; the equations are
+//! A P2 step [t_a, t_b] holds L layers with time nodes t_0 = t_a, ...,
+//! t_L = t_b. The unknowns are e_i, v_i at t_1 .. t_L; the rows are
 //!
 //! ```text
 //!   dA/de_0 + M v_0 = 0                      (P2 row at the input node)
@@ -10,18 +11,29 @@
 //!   dA/de_L - M v_L = 0                      (P2 row at the output node)
 //! ```
 //!
-//! with A the action of all space-time elements of the step. Both are
-//! numbered spatial node by spatial node, so the Jacobian is a band matrix
-//! (see [`crate::band`]): node n owns the block `[n B, (n + 1) B)` of
-//! unknowns and of equations, B = 2 L dpn.
+//! with A the action of all space-time elements of the step and the
+//! virtual work of the nodal loads. A static solve has one unknown e and
+//! one row per coordinate, dU/de - dW/de = 0 (A = dt (W - U) for a
+//! time-invariant slab).
+//!
+//! A constrained coordinate (see [`crate::constraints`]) has prescribed
+//! values at the time nodes and its rows are freed: with elimination they
+//! and its unknowns leave the system (the rows' values are kept as the
+//! reaction); with multipliers every freed row gets a multiplier unknown
+//! and every fixed value a constraint equation.
+//!
+//! Unknowns and rows are numbered spatial node by spatial node, so the
+//! Jacobian is a band matrix (see [`crate::band`]):
 //!
 //! ```text
-//!   unknowns of node n:  [e_1, v_1, e_2, v_2, ..., e_L, v_L]
-//!   equations of node n: [row e_0, row e_1, row v_1, ..., row e_L]
+//!   unknowns of node n:  [slot 1: free coords, slot 2: ..., multipliers]
+//!   rows of node n:      [slot 1: free coords, slot 2: ..., constraint eqs]
 //! ```
 
 use crate::band::BandMatrix;
+use crate::constraints::ConstraintMethod;
 use crate::element::{CableElement, SlabDerivatives, TimeSlab};
+use crate::loads::EndMoment;
 use crate::model::{gather, Model};
 
 /// Position (e) or velocity (v) coordinates of a time node.
@@ -31,74 +43,262 @@ pub enum Kind {
     Velocity,
 }
 
-/// Numbering of the unknowns and equations of one step.
+/// What is solved for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scheme {
+    /// A P2 step with `layers` element layers in time.
+    P2 { layers: usize },
+    /// A static solve.
+    Static,
+}
+
+const NONE: usize = usize::MAX;
+
+/// Numbering of the unknowns and rows of one step or static solve.
+#[derive(Clone, Debug, PartialEq)]
 pub struct SlabLayout {
     pub nodes: usize,
     /// Scalar coordinates per spatial node.
     pub dpn: usize,
-    /// Element layers in time per step.
-    pub layers: usize,
+    pub scheme: Scheme,
+    pub method: ConstraintMethod,
+    /// (time node, kind) of each unknown slot and each row slot.
+    pub unknown_slots: Vec<(usize, Kind)>,
+    pub row_slots: Vec<(usize, Kind)>,
+    /// Indexed [(node * slots + slot) * dpn + dof]; NONE where absent.
+    unknowns: Vec<usize>,
+    rows: Vec<usize>,
+    /// Multiplier unknown of a freed row, same indexing as `rows`.
+    multipliers: Vec<usize>,
+    /// Constraint equation of a fixed unknown, same indexing as `unknowns`.
+    constraint_rows: Vec<usize>,
+    /// First index of each node's block, and the total.
+    block_start: Vec<usize>,
+    kl: usize,
+    ku: usize,
 }
 
 impl SlabLayout {
-    pub fn new(model: &Model, layers: usize) -> Self {
-        SlabLayout {
-            nodes: model.nodes(),
-            dpn: model.dofs_per_node(),
-            layers,
-        }
-    }
-
-    /// Unknowns (= equations) per spatial node.
-    pub fn block(&self) -> usize {
-        2 * self.layers * self.dpn
-    }
-
-    /// Unknowns of the step.
-    pub fn size(&self) -> usize {
-        self.nodes * self.block()
-    }
-
-    /// Index of the first unknown of (time node i, kind) at spatial node n;
-    /// the node's dpn coordinates follow contiguously. None for i = 0 (known).
-    pub fn unknown(&self, i: usize, kind: Kind, node: usize) -> Option<usize> {
-        if i == 0 || i > self.layers {
-            return None;
-        }
-        let k = match kind {
-            Kind::Position => 0,
-            Kind::Velocity => 1,
+    pub fn new(model: &Model, scheme: Scheme, method: ConstraintMethod) -> Self {
+        let (unknown_slots, row_slots) = match scheme {
+            Scheme::P2 { layers } => {
+                let u: Vec<(usize, Kind)> = (1..=layers)
+                    .flat_map(|i| [(i, Kind::Position), (i, Kind::Velocity)])
+                    .collect();
+                let mut r = vec![(0, Kind::Position)];
+                for i in 1..layers {
+                    r.push((i, Kind::Position));
+                    r.push((i, Kind::Velocity));
+                }
+                r.push((layers, Kind::Position));
+                (u, r)
+            }
+            Scheme::Static => (vec![(0, Kind::Position)], vec![(0, Kind::Position)]),
         };
-        Some(node * self.block() + (2 * (i - 1) + k) * self.dpn)
-    }
-
-    /// Index of the first equation of (time node i, kind) at spatial node
-    /// n, or None where eq. (22) has no such row (v at t_0 and t_L).
-    pub fn equation(&self, i: usize, kind: Kind, node: usize) -> Option<usize> {
-        let base = node * self.block();
-        match kind {
-            Kind::Position if i == 0 => Some(base),
-            Kind::Position if i <= self.layers => Some(base + (2 * i - 1) * self.dpn),
-            Kind::Velocity if i > 0 && i < self.layers => Some(base + 2 * i * self.dpn),
-            _ => None,
+        let nodes = model.nodes();
+        let dpn = model.dofs_per_node();
+        let nu = unknown_slots.len();
+        let nr = row_slots.len();
+        let mut unknowns = vec![NONE; nodes * nu * dpn];
+        let mut rows = vec![NONE; nodes * nr * dpn];
+        let mut multipliers = vec![NONE; nodes * nr * dpn];
+        let mut constraint_rows = vec![NONE; nodes * nu * dpn];
+        let mut block_start = Vec::with_capacity(nodes + 1);
+        let mut next = 0;
+        for n in 0..nodes {
+            block_start.push(next);
+            let constrained = |d: usize| model.constraints.is_constrained(n * dpn + d);
+            let eliminated = |d: usize| method == ConstraintMethod::Elimination && constrained(d);
+            // Unknowns and rows share the same count per node; number both.
+            let mut u = next;
+            let mut r = next;
+            for s in 0..nu {
+                for d in 0..dpn {
+                    if !eliminated(d) {
+                        unknowns[(n * nu + s) * dpn + d] = u;
+                        u += 1;
+                    }
+                }
+            }
+            for s in 0..nr {
+                for d in 0..dpn {
+                    if !eliminated(d) {
+                        rows[(n * nr + s) * dpn + d] = r;
+                        r += 1;
+                    }
+                }
+            }
+            if method == ConstraintMethod::Multiplier {
+                for s in 0..nr {
+                    for d in (0..dpn).filter(|&d| constrained(d)) {
+                        multipliers[(n * nr + s) * dpn + d] = u;
+                        u += 1;
+                    }
+                }
+                for s in 0..nu {
+                    for d in (0..dpn).filter(|&d| constrained(d)) {
+                        constraint_rows[(n * nu + s) * dpn + d] = r;
+                        r += 1;
+                    }
+                }
+            }
+            debug_assert_eq!(u, r, "square blocks");
+            next = u;
+        }
+        block_start.push(next);
+        // A row of node n couples with unknowns of nodes n - 1 ..= n + 1.
+        let mut kl = 0;
+        let mut ku = 0;
+        for n in 0..nodes {
+            let lo = block_start[n.saturating_sub(1)];
+            let hi = block_start[(n + 2).min(nodes)];
+            if block_start[n + 1] > block_start[n] {
+                kl = kl.max(block_start[n + 1] - 1 - lo);
+                ku = ku.max(hi.saturating_sub(1) - block_start[n]);
+            }
+        }
+        SlabLayout {
+            nodes,
+            dpn,
+            scheme,
+            method,
+            unknown_slots,
+            row_slots,
+            unknowns,
+            rows,
+            multipliers,
+            constraint_rows,
+            block_start,
+            kl,
+            ku,
         }
     }
 
-    /// Lower and upper bandwidth of the Jacobian: a row of node n couples
-    /// with unknowns of nodes n - 1 ..= n + 1.
+    /// Element layers per step (0 for a static solve).
+    pub fn layers(&self) -> usize {
+        match self.scheme {
+            Scheme::P2 { layers } => layers,
+            Scheme::Static => 0,
+        }
+    }
+
+    /// Time nodes 0..=L (a static solve has one).
+    pub fn time_nodes(&self) -> usize {
+        self.layers() + 1
+    }
+
+    /// Unknowns (= rows) of the system.
+    pub fn size(&self) -> usize {
+        *self.block_start.last().expect("nodes")
+    }
+
+    /// Lower and upper bandwidth of the Jacobian.
     pub fn bandwidths(&self) -> (usize, usize) {
-        let b = self.block();
-        (2 * b - 1, 2 * b - 1)
+        (self.kl, self.ku)
+    }
+
+    pub fn unknown_slot(&self, i: usize, kind: Kind) -> Option<usize> {
+        self.unknown_slots.iter().position(|&s| s == (i, kind))
+    }
+
+    pub fn row_slot(&self, i: usize, kind: Kind) -> Option<usize> {
+        self.row_slots.iter().position(|&s| s == (i, kind))
+    }
+
+    #[inline]
+    fn at(table: &[usize], slots: usize, dpn: usize, slot: usize, g: usize) -> Option<usize> {
+        let (n, d) = (g / dpn, g % dpn);
+        let v = table[(n * slots + slot) * dpn + d];
+        (v != NONE).then_some(v)
+    }
+
+    /// Index of the unknown of global coordinate g in unknown slot s.
+    pub fn unknown_at(&self, slot: usize, g: usize) -> Option<usize> {
+        Self::at(&self.unknowns, self.unknown_slots.len(), self.dpn, slot, g)
+    }
+
+    /// Index of the row of global coordinate g in row slot s.
+    pub fn row_at(&self, slot: usize, g: usize) -> Option<usize> {
+        Self::at(&self.rows, self.row_slots.len(), self.dpn, slot, g)
+    }
+
+    /// Multiplier of the freed row (slot s, coordinate g).
+    pub fn multiplier_at(&self, slot: usize, g: usize) -> Option<usize> {
+        Self::at(&self.multipliers, self.row_slots.len(), self.dpn, slot, g)
+    }
+
+    /// Constraint equation fixing the unknown (slot s, coordinate g).
+    pub fn constraint_row_at(&self, slot: usize, g: usize) -> Option<usize> {
+        Self::at(
+            &self.constraint_rows,
+            self.unknown_slots.len(),
+            self.dpn,
+            slot,
+            g,
+        )
+    }
+
+    /// Index of the unknown (time node i, kind, coordinate g), if any.
+    pub fn unknown(&self, i: usize, kind: Kind, g: usize) -> Option<usize> {
+        self.unknown_slot(i, kind)
+            .and_then(|s| self.unknown_at(s, g))
+    }
+
+    /// Index of the row (time node i, kind, coordinate g), if any.
+    pub fn equation(&self, i: usize, kind: Kind, g: usize) -> Option<usize> {
+        self.row_slot(i, kind).and_then(|s| self.row_at(s, g))
     }
 }
 
-/// The step's start, t_a, with the constant term M v_a of the first P2 row.
+/// The known data of a step: its start (t_a, e_a, v_a and M v_a), and
+/// the prescribed values of constrained coordinates at every time node.
 #[derive(Clone, Debug)]
 pub struct StepStart {
+    pub t: f64,
     pub e: Vec<f64>,
     pub v: Vec<f64>,
     pub mass_v: Vec<f64>,
+    /// Prescribed e and v at time node i: `[i * dofs + g]` (only the
+    /// constrained coordinates are read).
+    pub fixed_e: Vec<f64>,
+    pub fixed_v: Vec<f64>,
+    /// Factor on every load (load stepping in statics; 1 in dynamics).
+    pub load_factor: f64,
+}
+
+impl StepStart {
+    pub fn new(model: &Model, time_nodes: usize) -> Self {
+        let n = model.dofs();
+        StepStart {
+            t: 0.0,
+            e: vec![0.0; n],
+            v: vec![0.0; n],
+            mass_v: vec![0.0; n],
+            fixed_e: vec![0.0; time_nodes * n],
+            fixed_v: vec![0.0; time_nodes * n],
+            load_factor: 1.0,
+        }
+    }
+
+    /// Sets the start to `(t, e, v)` and the prescribed values at the time
+    /// nodes t + i h.
+    pub fn set(&mut self, model: &Model, t: f64, e: &[f64], v: &[f64], h: f64) {
+        self.t = t;
+        self.e.copy_from_slice(e);
+        self.v.copy_from_slice(v);
+        model.mass_times(&self.v, &mut self.mass_v);
+        let n = model.dofs();
+        let nodes = self.fixed_e.len() / n;
+        for (g, m) in model.constraints.motion.iter().enumerate() {
+            if let Some(m) = m {
+                for i in 0..nodes {
+                    let ti = t + i as f64 * h;
+                    self.fixed_e[i * n + g] = m.value(ti);
+                    self.fixed_v[i * n + g] = m.rate_at(ti);
+                }
+            }
+        }
+    }
 }
 
 /// Scratch for the assembly, allocated once.
@@ -106,68 +306,34 @@ pub struct StepStart {
 pub struct AssemblyScratch {
     derivs2: SlabDerivatives<12>,
     derivs3: SlabDerivatives<18>,
-    /// v_L gathered as a global vector, and M v_L.
-    v_end: Vec<f64>,
+    /// e and v at every time node, `[i * dofs + g]`, from the unknowns and
+    /// the prescribed values.
+    pub node_e: Vec<f64>,
+    pub node_v: Vec<f64>,
+    /// M v_L.
     mass_v_end: Vec<f64>,
+    /// Values of the eliminated rows, `[slot * dofs + g]`: the generalized
+    /// reactions (elimination route).
+    pub reaction_rows: Vec<f64>,
 }
 
 impl AssemblyScratch {
-    pub fn new(model: &Model) -> Self {
+    pub fn new(model: &Model, layout: &SlabLayout) -> Self {
+        let n = model.dofs();
         AssemblyScratch {
             derivs2: SlabDerivatives::default(),
             derivs3: SlabDerivatives::default(),
-            v_end: vec![0.0; model.dofs()],
-            mass_v_end: vec![0.0; model.dofs()],
+            node_e: vec![0.0; layout.time_nodes() * n],
+            node_v: vec![0.0; layout.time_nodes() * n],
+            mass_v_end: vec![0.0; n],
+            reaction_rows: vec![0.0; layout.row_slots.len() * n],
         }
     }
 }
 
-/// Coordinates of (time node i, kind) of element k: from the known start
-/// for i = 0, from the unknowns otherwise.
-fn element_values<const ND: usize>(
-    layout: &SlabLayout,
-    start: &StepStart,
-    x: &[f64],
-    i: usize,
-    kind: Kind,
-    k: usize,
-) -> [f64; ND] {
-    let dpn = layout.dpn;
-    match layout.unknown(i, kind, k) {
-        None => match kind {
-            Kind::Position => gather(&start.e, k * dpn),
-            Kind::Velocity => gather(&start.v, k * dpn),
-        },
-        Some(u0) => {
-            let u1 = layout.unknown(i, kind, k + 1).expect("neighbour node");
-            let mut out = [0.0; ND];
-            out[..dpn].copy_from_slice(&x[u0..u0 + dpn]);
-            out[dpn..].copy_from_slice(&x[u1..u1 + dpn]);
-            out
-        }
-    }
-}
-
-/// Global index of element entry d at time node i of kind, through `map`
-/// (equation or unknown numbering).
-#[inline]
-fn local_to_global(first: [Option<usize>; 2], dpn: usize, d: usize) -> Option<usize> {
-    if d < dpn {
-        first[0].map(|b| b + d)
-    } else {
-        first[1].map(|b| b + d - dpn)
-    }
-}
-
-const SLOTS: [(usize, Kind); 4] = [
-    (0, Kind::Position),
-    (0, Kind::Velocity),
-    (1, Kind::Position),
-    (1, Kind::Velocity),
-];
-
-/// The equations of one step: the model, their numbering, the time slab of
-/// one layer (dt / L) and the known start.
+/// The equations of one step (or static solve): the model, their
+/// numbering, the time slab of one layer (dt / L; unused in statics) and
+/// the known data.
 #[derive(Clone, Copy)]
 pub struct StepProblem<'a> {
     pub model: &'a Model,
@@ -176,64 +342,181 @@ pub struct StepProblem<'a> {
     pub start: &'a StepStart,
 }
 
-fn assemble_elements<const NS: usize, const ND: usize>(
-    p: &StepProblem,
-    elements: &[CableElement<NS, ND>],
-    derivs: &mut SlabDerivatives<ND>,
-    x: &[f64],
-    residual: &mut [f64],
-    mut jacobian: Option<&mut BandMatrix>,
-) {
-    let (layout, slab, start) = (p.layout, p.slab, p.start);
-    let gravity = &p.model.gravity;
-    let dpn = layout.dpn;
-    let mut block = [[0.0; ND]; ND];
-    for j in 0..layout.layers {
-        for (k, el) in elements.iter().enumerate() {
-            let mut y = [[0.0; ND]; 4];
-            for (m, &(di, kind)) in SLOTS.iter().enumerate() {
-                y[m] = element_values(layout, start, x, j + di, kind, k);
+/// Where the rows of one element slot go: a row index, or the reaction
+/// buffer for an eliminated constrained coordinate, or nowhere.
+#[derive(Clone, Copy)]
+enum Target {
+    Row(usize),
+    Reaction(usize),
+    Nothing,
+}
+
+impl StepProblem<'_> {
+    fn target(&self, slot: Option<usize>, g: usize) -> Target {
+        let Some(s) = slot else {
+            return Target::Nothing;
+        };
+        match self.layout.row_at(s, g) {
+            Some(r) => Target::Row(r),
+            None if self.model.constraints.is_constrained(g) => {
+                Target::Reaction(s * self.model.dofs() + g)
             }
-            el.slab_derivatives(slab, &y, gravity, jacobian.is_some(), derivs);
-            let rows: [[Option<usize>; 2]; 4] = SLOTS.map(|(di, kind)| {
-                [
-                    layout.equation(j + di, kind, k),
-                    layout.equation(j + di, kind, k + 1),
-                ]
-            });
-            let cols: [[Option<usize>; 2]; 4] = SLOTS.map(|(di, kind)| {
-                [
-                    layout.unknown(j + di, kind, k),
-                    layout.unknown(j + di, kind, k + 1),
-                ]
-            });
-            for m in 0..4 {
-                if rows[m][0].is_none() {
-                    continue;
-                }
-                for d in 0..ND {
-                    let r = local_to_global(rows[m], dpn, d).expect("row");
-                    residual[r] += derivs.grad[m][d];
-                }
+            None => Target::Nothing,
+        }
+    }
+
+    /// Fills the time-node values from the unknowns and the prescribed
+    /// values.
+    pub fn expand(&self, x: &[f64], scratch: &mut AssemblyScratch) {
+        let n = self.model.dofs();
+        let start = self.start;
+        for i in 0..self.layout.time_nodes() {
+            for g in 0..n {
+                let k = i * n + g;
+                let (e, v) = match self.layout.scheme {
+                    Scheme::P2 { .. } if i == 0 => (start.e[g], start.v[g]),
+                    _ => {
+                        let e = match self.layout.unknown(i, Kind::Position, g) {
+                            Some(u) => x[u],
+                            None => start.fixed_e[k],
+                        };
+                        let v = match self.layout.scheme {
+                            Scheme::Static => 0.0,
+                            _ => match self.layout.unknown(i, Kind::Velocity, g) {
+                                Some(u) => x[u],
+                                None => start.fixed_v[k],
+                            },
+                        };
+                        (e, v)
+                    }
+                };
+                scratch.node_e[k] = e;
+                scratch.node_v[k] = v;
             }
-            let Some(jac) = jacobian.as_deref_mut() else {
-                continue;
-            };
-            for m in 0..4 {
-                if rows[m][0].is_none() {
-                    continue;
+        }
+    }
+
+    /// Residual R(x) of the rows and, if asked, the Jacobian dR/dx; the
+    /// values of eliminated rows go to `scratch.reaction_rows`. All
+    /// outputs are overwritten.
+    pub fn assemble(
+        &self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        residual.fill(0.0);
+        scratch.reaction_rows.fill(0.0);
+        if let Some(j) = jacobian.as_deref_mut() {
+            j.clear();
+        }
+        self.expand(x, scratch);
+        let jac = jacobian.as_deref_mut();
+        let mut derivs2 = std::mem::take(&mut scratch.derivs2);
+        let mut derivs3 = std::mem::take(&mut scratch.derivs3);
+        match &self.model.mesh {
+            crate::model::Mesh::Sac2(els) => match self.layout.scheme {
+                Scheme::P2 { .. } => self.slab_elements(els, &mut derivs2, residual, jac, scratch),
+                Scheme::Static => self.static_elements(els, residual, jac, scratch),
+            },
+            crate::model::Mesh::Sac3(els) => match self.layout.scheme {
+                Scheme::P2 { .. } => self.slab_elements(els, &mut derivs3, residual, jac, scratch),
+                Scheme::Static => self.static_elements(els, residual, jac, scratch),
+            },
+        }
+        scratch.derivs2 = derivs2;
+        scratch.derivs3 = derivs3;
+        self.nodal_loads(residual, jacobian.as_deref_mut(), scratch);
+        if let Scheme::P2 { .. } = self.layout.scheme {
+            self.momentum_terms(residual, jacobian.as_deref_mut(), scratch);
+        }
+        self.constraint_terms(x, residual, jacobian);
+    }
+
+    fn add(&self, t: Target, v: f64, residual: &mut [f64], scratch: &mut AssemblyScratch) {
+        match t {
+            Target::Row(r) => residual[r] += v,
+            Target::Reaction(k) => scratch.reaction_rows[k] += v,
+            Target::Nothing => {}
+        }
+    }
+
+    /// Element actions of every layer, eq. (10).
+    fn slab_elements<const NS: usize, const ND: usize>(
+        &self,
+        elements: &[CableElement<NS, ND>],
+        derivs: &mut SlabDerivatives<ND>,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let dpn = layout.dpn;
+        let g = &self.model.gravity;
+        let gravity = g.map(|c| c * self.start.load_factor);
+        let mut block = [[0.0; ND]; ND];
+        for j in 0..layout.layers() {
+            let slots: [(usize, Kind); 4] = [
+                (j, Kind::Position),
+                (j, Kind::Velocity),
+                (j + 1, Kind::Position),
+                (j + 1, Kind::Velocity),
+            ];
+            let row_slots = slots.map(|(i, k)| layout.row_slot(i, k));
+            let col_slots = slots.map(|(i, k)| layout.unknown_slot(i, k));
+            for (k, el) in elements.iter().enumerate() {
+                let o = k * dpn;
+                let mut y = [[0.0; ND]; 4];
+                for (m, &(i, kind)) in slots.iter().enumerate() {
+                    let src = match kind {
+                        Kind::Position => &scratch.node_e,
+                        Kind::Velocity => &scratch.node_v,
+                    };
+                    y[m] = gather(src, i * n + o);
                 }
-                for n in 0..4 {
-                    if cols[n][0].is_none() {
+                el.slab_derivatives(self.slab, &y, &gravity, jacobian.is_some(), derivs);
+                for m in 0..4 {
+                    for d in 0..ND {
+                        let t = self.target(row_slots[m], o + d);
+                        self.add(t, derivs.grad[m][d], residual, scratch);
+                    }
+                }
+                let Some(jac) = jacobian.as_deref_mut() else {
+                    continue;
+                };
+                // Global rows and columns of the element's entries, per slot.
+                let index = |slot: Option<usize>, f: &dyn Fn(usize, usize) -> Option<usize>| {
+                    let mut out = [NONE; ND];
+                    if let Some(s) = slot {
+                        for (d, v) in out.iter_mut().enumerate() {
+                            *v = f(s, o + d).unwrap_or(NONE);
+                        }
+                    }
+                    out
+                };
+                let rows = row_slots.map(|rs| index(rs, &|s, g| layout.row_at(s, g)));
+                let cols = col_slots.map(|cs| index(cs, &|s, g| layout.unknown_at(s, g)));
+                for m in 0..4 {
+                    if row_slots[m].is_none() {
                         continue;
                     }
-                    el.slab_hessian_block(slab, derivs, m, n, &mut block);
-                    for (a, brow) in block.iter().enumerate() {
-                        let r = local_to_global(rows[m], dpn, a).expect("row");
-                        for (b, &val) in brow.iter().enumerate() {
-                            if val != 0.0 {
-                                let c = local_to_global(cols[n], dpn, b).expect("col");
-                                jac.add(r, c, val);
+                    for nn in 0..4 {
+                        if col_slots[nn].is_none() {
+                            continue;
+                        }
+                        el.slab_hessian_block(self.slab, derivs, m, nn, &mut block);
+                        for (a, brow) in block.iter().enumerate() {
+                            let r = rows[m][a];
+                            if r == NONE {
+                                continue;
+                            }
+                            for (b, &val) in brow.iter().enumerate() {
+                                let c = cols[nn][b];
+                                if c != NONE && val != 0.0 {
+                                    jac.add(r, c, val);
+                                }
                             }
                         }
                     }
@@ -241,105 +524,263 @@ fn assemble_elements<const NS: usize, const ND: usize>(
             }
         }
     }
-}
 
-impl StepProblem<'_> {
-    /// Residual R(x) of the step's equations and, if asked, the Jacobian
-    /// dR/dx. Both outputs are overwritten.
-    pub fn assemble(
+    /// Static rows dU/de - f_g (the load factor scales the loads).
+    fn static_elements<const NS: usize, const ND: usize>(
         &self,
-        x: &[f64],
+        elements: &[CableElement<NS, ND>],
         residual: &mut [f64],
-        jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut BandMatrix>,
         scratch: &mut AssemblyScratch,
     ) {
-        assemble_step(self, x, residual, jacobian, scratch)
-    }
-}
-
-fn assemble_step(
-    p: &StepProblem,
-    x: &[f64],
-    residual: &mut [f64],
-    mut jacobian: Option<&mut BandMatrix>,
-    scratch: &mut AssemblyScratch,
-) {
-    let (model, layout, slab, start) = (p.model, p.layout, p.slab, p.start);
-    residual.fill(0.0);
-    if let Some(j) = jacobian.as_deref_mut() {
-        j.clear();
-    }
-    let jac = jacobian.as_deref_mut();
-    match &model.mesh {
-        crate::model::Mesh::Sac2(els) => {
-            assemble_elements(p, els, &mut scratch.derivs2, x, residual, jac)
-        }
-        crate::model::Mesh::Sac3(els) => {
-            assemble_elements(p, els, &mut scratch.derivs3, x, residual, jac)
-        }
-    }
-    let dpn = layout.dpn;
-    let last = layout.layers;
-    // Point forces, eq. (14): work sum_m b_m F . r_m on every layer.
-    for (node, force) in model.point_forces() {
-        for j in 0..layout.layers {
-            for (m, &(di, kind)) in SLOTS.iter().enumerate() {
-                if let Some(r) = layout.equation(j + di, kind, node) {
-                    for c in 0..3 {
-                        residual[r + c] += slab.load[m] * force[c];
+        let layout = self.layout;
+        let dpn = layout.dpn;
+        let gravity = self.model.gravity.map(|c| c * self.start.load_factor);
+        let mut grad = [0.0; ND];
+        let mut hess = [[0.0; ND]; ND];
+        for (k, el) in elements.iter().enumerate() {
+            let o = k * dpn;
+            let q: [f64; ND] = gather(&scratch.node_e, o);
+            let want = jacobian.is_some();
+            el.strain_energy_derivatives(&q, &mut grad, if want { Some(&mut hess) } else { None });
+            let fg = el.gravity_load(&gravity);
+            for d in 0..ND {
+                let t = self.target(Some(0), o + d);
+                self.add(t, grad[d] - fg[d], residual, scratch);
+            }
+            if let Some(jac) = jacobian.as_deref_mut() {
+                for a in 0..ND {
+                    let Some(r) = layout.row_at(0, o + a) else {
+                        continue;
+                    };
+                    for b in 0..ND {
+                        if let Some(c) = layout.unknown_at(0, o + b) {
+                            jac.add(r, c, hess[a][b]);
+                        }
                     }
                 }
             }
         }
     }
-    // P2 momentum terms: + M v_0 on row e_0, - M v_L on row e_L.
-    for node in 0..layout.nodes {
-        let r0 = layout.equation(0, Kind::Position, node).expect("row e_0");
-        let u = layout.unknown(last, Kind::Velocity, node).expect("v_L");
-        for c in 0..dpn {
-            residual[r0 + c] += start.mass_v[node * dpn + c];
-            scratch.v_end[node * dpn + c] = x[u + c];
+
+    /// Point forces (eq. 14) and end moments (eqs. 15-16): in a P2 step
+    /// their work over each layer, sum_g w_g dt F(q(t_g)) . q(t_g); in
+    /// statics minus the force.
+    fn nodal_loads(
+        &self,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let dpn = layout.dpn;
+        let lf = self.start.load_factor;
+        let is_static = layout.scheme == Scheme::Static;
+        for (node, f) in self.model.point_forces() {
+            let f = f.map(|c| c * lf);
+            for c in 0..3 {
+                let g = node * dpn + c;
+                if is_static {
+                    let t = self.target(Some(0), g);
+                    self.add(t, -f[c], residual, scratch);
+                    continue;
+                }
+                for j in 0..layout.layers() {
+                    for (m, (di, kind)) in [
+                        (0, Kind::Position),
+                        (0, Kind::Velocity),
+                        (1, Kind::Position),
+                        (1, Kind::Velocity),
+                    ]
+                    .into_iter()
+                    .enumerate()
+                    {
+                        let t = self.target(layout.row_slot(j + di, kind), g);
+                        self.add(t, self.slab.load[m] * f[c], residual, scratch);
+                    }
+                }
+            }
+        }
+        for (node, mv) in self.model.end_moments() {
+            let Some(moment) = EndMoment::from_vector(&mv.map(|c| c * lf)) else {
+                continue;
+            };
+            let g0 = node * dpn + 3;
+            if is_static {
+                let rx = [
+                    scratch.node_e[g0],
+                    scratch.node_e[g0 + 1],
+                    scratch.node_e[g0 + 2],
+                ];
+                let (q, dq) = moment.generalized_force(&rx);
+                for a in 0..3 {
+                    let t = self.target(Some(0), g0 + a);
+                    self.add(t, -q[a], residual, scratch);
+                    if let (Some(jac), Some(r)) =
+                        (jacobian.as_deref_mut(), layout.row_at(0, g0 + a))
+                    {
+                        for b in 0..3 {
+                            if let Some(c) = layout.unknown_at(0, g0 + b) {
+                                jac.add(r, c, -dq[a][b]);
+                            }
+                        }
+                    }
+                }
+                continue;
+            }
+            for j in 0..layout.layers() {
+                let slots = [
+                    (j, Kind::Position),
+                    (j, Kind::Velocity),
+                    (j + 1, Kind::Position),
+                    (j + 1, Kind::Velocity),
+                ];
+                for tp in &self.slab.points {
+                    let mut rx = [0.0; 3];
+                    for (m, &(i, kind)) in slots.iter().enumerate() {
+                        let src = match kind {
+                            Kind::Position => &scratch.node_e,
+                            Kind::Velocity => &scratch.node_v,
+                        };
+                        for a in 0..3 {
+                            rx[a] += tp.shape.t[m] * src[i * n + g0 + a];
+                        }
+                    }
+                    let (q, dq) = moment.generalized_force(&rx);
+                    for (m, &(i, kind)) in slots.iter().enumerate() {
+                        let rs = layout.row_slot(i, kind);
+                        let wm = tp.w_dt * tp.shape.t[m];
+                        for a in 0..3 {
+                            let t = self.target(rs, g0 + a);
+                            self.add(t, wm * q[a], residual, scratch);
+                        }
+                        let (Some(jac), Some(rs)) = (jacobian.as_deref_mut(), rs) else {
+                            continue;
+                        };
+                        for (nn, &(i2, kind2)) in slots.iter().enumerate() {
+                            let Some(cs) = layout.unknown_slot(i2, kind2) else {
+                                continue;
+                            };
+                            let w = wm * tp.shape.t[nn];
+                            for a in 0..3 {
+                                let Some(r) = layout.row_at(rs, g0 + a) else {
+                                    continue;
+                                };
+                                for b in 0..3 {
+                                    if let Some(c) = layout.unknown_at(cs, g0 + b) {
+                                        jac.add(r, c, w * dq[a][b]);
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
         }
     }
-    model.mass_times(&scratch.v_end, &mut scratch.mass_v_end);
-    for node in 0..layout.nodes {
-        let rl = layout
-            .equation(last, Kind::Position, node)
-            .expect("row e_L");
-        for c in 0..dpn {
-            residual[rl + c] -= scratch.mass_v_end[node * dpn + c];
+
+    /// P2 momentum terms: + M v_0 on row e_0, - M v_L on row e_L.
+    fn momentum_terms(
+        &self,
+        residual: &mut [f64],
+        jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let last = layout.layers();
+        let first_slot = layout.row_slot(0, Kind::Position);
+        let last_slot = layout.row_slot(last, Kind::Position);
+        for g in 0..n {
+            let t = self.target(first_slot, g);
+            self.add(t, self.start.mass_v[g], residual, scratch);
         }
-    }
-    if let Some(jac) = jacobian {
-        crate::with_elements!(&model.mesh, els => {
+        let vl = &scratch.node_v[last * n..(last + 1) * n];
+        self.model.mass_times(vl, &mut scratch.mass_v_end);
+        for g in 0..n {
+            let t = self.target(last_slot, g);
+            let v = -scratch.mass_v_end[g];
+            self.add(t, v, residual, scratch);
+        }
+        let Some(jac) = jacobian else { return };
+        let (Some(rs), Some(cs)) = (last_slot, layout.unknown_slot(last, Kind::Velocity)) else {
+            return;
+        };
+        let dpn = layout.dpn;
+        crate::with_elements!(&self.model.mesh, els => {
             for (k, el) in els.iter().enumerate() {
                 for (a, mrow) in el.mass.iter().enumerate() {
                     for (b, &mab) in mrow.iter().enumerate() {
-                        // shape function a of element k lives on node k + a / vpn
-                        let na = k + (3 * a) / dpn;
-                        let ca = (3 * a) % dpn;
-                        let nb = k + (3 * b) / dpn;
-                        let cb = (3 * b) % dpn;
-                        let r = layout.equation(last, Kind::Position, na).expect("row") + ca;
-                        let c = layout.unknown(last, Kind::Velocity, nb).expect("col") + cb;
                         for i in 0..3 {
-                            jac.add(r + i, c + i, -mab);
+                            let ga = k * dpn + 3 * a + i;
+                            let gb = k * dpn + 3 * b + i;
+                            if let (Some(r), Some(c)) = (layout.row_at(rs, ga), layout.unknown_at(cs, gb)) {
+                                jac.add(r, c, -mab);
+                            }
                         }
                     }
                 }
             }
         });
     }
+
+    /// Multipliers in the freed rows (+ in P2 rows, which are generalized
+    /// impulses; - in static rows dU/de - f, so that a multiplier is the
+    /// reaction on the cable either way) and the constraint equations
+    /// x_c - c(t_i) = 0.
+    fn constraint_terms(
+        &self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+    ) {
+        let layout = self.layout;
+        if layout.method != ConstraintMethod::Multiplier || self.model.constraints.is_empty() {
+            return;
+        }
+        let n = self.model.dofs();
+        let sign = if layout.scheme == Scheme::Static {
+            -1.0
+        } else {
+            1.0
+        };
+        for g in (0..n).filter(|&g| self.model.constraints.is_constrained(g)) {
+            for s in 0..layout.row_slots.len() {
+                if let (Some(r), Some(m)) = (layout.row_at(s, g), layout.multiplier_at(s, g)) {
+                    residual[r] += sign * x[m];
+                    if let Some(jac) = jacobian.as_deref_mut() {
+                        jac.add(r, m, sign);
+                    }
+                }
+            }
+            for (s, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+                if let (Some(r), Some(u)) =
+                    (layout.constraint_row_at(s, g), layout.unknown_at(s, g))
+                {
+                    let target = match kind {
+                        Kind::Position => self.start.fixed_e[i * n + g],
+                        Kind::Velocity => self.start.fixed_v[i * n + g],
+                    };
+                    residual[r] = x[u] - target;
+                    if let Some(jac) = jacobian.as_deref_mut() {
+                        jac.add(r, u, 1.0);
+                    }
+                }
+            }
+        }
+    }
 }
 
-/// Scales that turn increments and residuals into fractions of the cable
-/// length (method notes, "Residual scaling"):
+/// Scales that turn increments and residuals of a P2 step into fractions
+/// of the cable length (method notes, "Residual scaling"):
 ///
 /// - an unknown e of kind r, r_x, r_xx is weighted by 1, l, l^2 (its effect
 ///   on the centre line inside an element), a velocity unknown also by h = dt/L;
 /// - a row dA/de of coordinate c is weighted by h s_c / m_c, m_c the
 ///   diagonal of the mass matrix (kinetic part of the Jacobian ~ M / h),
-///   a row dA/dv by s_c / m_c;
+///   a row dA/dv by s_c / m_c; a multiplier like its row, a constraint
+///   equation like its unknown;
 ///
 /// and everything is divided by the cable length.
 #[derive(Clone, Debug)]
@@ -350,29 +791,37 @@ pub struct Scales {
 
 impl Scales {
     pub fn new(model: &Model, layout: &SlabLayout, layer_dt: f64) -> Self {
-        let n = layout.size();
-        let mut unknown = vec![0.0; n];
-        let mut equation = vec![0.0; n];
+        let size = layout.size();
+        let mut unknown = vec![0.0; size];
+        let mut equation = vec![0.0; size];
         let mass = model.mass_diagonal();
         let len = model.cable.length;
         let dpn = layout.dpn;
-        for node in 0..layout.nodes {
-            for c in 0..dpn {
-                let s = model.coordinate_length_scale(c) / len;
-                let m = mass[node * dpn + c];
-                for i in 0..=layout.layers {
-                    if let Some(u) = layout.unknown(i, Kind::Position, node) {
-                        unknown[u + c] = s;
-                    }
-                    if let Some(u) = layout.unknown(i, Kind::Velocity, node) {
-                        unknown[u + c] = s * layer_dt;
-                    }
-                    if let Some(r) = layout.equation(i, Kind::Position, node) {
-                        equation[r + c] = s * layer_dt / m;
-                    }
-                    if let Some(r) = layout.equation(i, Kind::Velocity, node) {
-                        equation[r + c] = s / m;
-                    }
+        for g in 0..model.dofs() {
+            let s = model.coordinate_length_scale(g % dpn) / len;
+            let m = mass[g];
+            for (slot, &(_, kind)) in layout.unknown_slots.iter().enumerate() {
+                let w = match kind {
+                    Kind::Position => s,
+                    Kind::Velocity => s * layer_dt,
+                };
+                if let Some(u) = layout.unknown_at(slot, g) {
+                    unknown[u] = w;
+                }
+                if let Some(r) = layout.constraint_row_at(slot, g) {
+                    equation[r] = w;
+                }
+            }
+            for (slot, &(_, kind)) in layout.row_slots.iter().enumerate() {
+                let w = match kind {
+                    Kind::Position => s * layer_dt / m,
+                    Kind::Velocity => s / m,
+                };
+                if let Some(r) = layout.row_at(slot, g) {
+                    equation[r] = w;
+                }
+                if let Some(u) = layout.multiplier_at(slot, g) {
+                    unknown[u] = w;
                 }
             }
         }

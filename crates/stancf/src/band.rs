@@ -50,6 +50,12 @@ impl BandMatrix {
         self.ku
     }
 
+    /// Copies the entries of a matrix of the same shape.
+    pub fn copy_from(&mut self, other: &BandMatrix) {
+        assert_eq!((self.n, self.kl, self.ku), (other.n, other.kl, other.ku));
+        self.data.copy_from_slice(&other.data);
+    }
+
     /// Sets every entry (and the fill area) to zero.
     pub fn clear(&mut self) {
         self.data.fill(0.0);

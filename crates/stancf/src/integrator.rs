@@ -7,10 +7,12 @@
 //! energy grow without a source (method notes: P2 is only conditionally
 //! stable, and an unstable step must end the run, not write garbage).
 
-use crate::assembly::{AssemblyScratch, Kind, Scales, SlabLayout, StepProblem, StepStart};
+use crate::assembly::{AssemblyScratch, Kind, Scales, Scheme, SlabLayout, StepProblem, StepStart};
 use crate::band::BandMatrix;
+use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, SolverError};
+use crate::loads::{EndMoment, MomentAngle};
 use crate::model::{Model, State};
 use crate::observe::{energies, Energies};
 use crate::quadrature::GaussRule;
@@ -28,6 +30,8 @@ pub struct StepSettings {
     /// Gauss points in time per layer.
     pub time_points: usize,
     pub newton: NewtonSettings,
+    /// How constraints are enforced.
+    pub constraint_method: ConstraintMethod,
 }
 
 impl Default for StepSettings {
@@ -37,6 +41,7 @@ impl Default for StepSettings {
             time_layers: 1,
             time_points: 3,
             newton: NewtonSettings::default(),
+            constraint_method: ConstraintMethod::default(),
         }
     }
 }
@@ -80,10 +85,6 @@ pub struct Simulation {
     slab: TimeSlab,
     scales: Scales,
     state: State,
-    /// The state before the last step and its acceleration estimate, so
-    /// that a step can be undone.
-    previous: State,
-    previous_acceleration: Vec<f64>,
     /// Acceleration estimate from the last step, for the predictor.
     acceleration: Vec<f64>,
     start: StepStart,
@@ -91,11 +92,30 @@ pub struct Simulation {
     workspace: NewtonWorkspace,
     scratch: AssemblyScratch,
     steps: usize,
+    /// Mean force of each position constraint over the last step:
+    /// (node, force on the cable).
+    reactions: Vec<(usize, [f64; 3])>,
+    /// Work done on the cable by the constraints (prescribed motion).
+    constraint_work: f64,
+    /// Unwrapped angles of the end moments.
+    moment_angles: Vec<MomentAngle>,
+    /// What is needed to undo the last step.
+    previous: Undo,
+}
+
+#[derive(Clone, Debug)]
+struct Undo {
+    state: State,
+    acceleration: Vec<f64>,
+    constraint_work: f64,
+    moment_angles: Vec<MomentAngle>,
+    reactions: Vec<(usize, [f64; 3])>,
 }
 
 impl Simulation {
     /// Prepares a simulation from `initial` (which must have the model's
-    /// size).
+    /// size; its constrained coordinates are set to their prescribed values
+    /// and rates at `initial.t`).
     pub fn new(model: Model, initial: State, settings: StepSettings) -> Result<Self, ModelError> {
         let dt = settings.time_step;
         if !dt.is_finite() || dt <= 0.0 {
@@ -145,24 +165,51 @@ impl Simulation {
         {
             return Err(ModelError::invalid("initial_state", "must be finite"));
         }
-        let layout = SlabLayout::new(&model, settings.time_layers);
-        let h = dt / settings.time_layers as f64;
+        let mut initial = initial;
+        model.apply_constraints(&mut initial);
+        let layers = settings.time_layers;
+        let layout = SlabLayout::new(&model, Scheme::P2 { layers }, settings.constraint_method);
+        let h = dt / layers as f64;
         let slab = TimeSlab::new(h, &time_rule);
         let scales = Scales::new(&model, &layout, h);
         let (kl, ku) = layout.bandwidths();
         let workspace = NewtonWorkspace::new(layout.size(), kl, ku, settings.newton.max_iterations);
-        let scratch = AssemblyScratch::new(&model);
-        let mut start = StepStart {
-            e: initial.e.clone(),
-            v: initial.v.clone(),
-            mass_v: vec![0.0; n],
+        let scratch = AssemblyScratch::new(&model, &layout);
+        let mut start = StepStart::new(&model, layout.time_nodes());
+        start.set(&model, initial.t, &initial.e, &initial.v, h);
+        let reference = model.reference_coordinates();
+        let mut moment_angles = Vec::new();
+        for (i, (node, m)) in model.end_moments().enumerate() {
+            let Some(moment) = EndMoment::from_vector(&m) else {
+                continue;
+            };
+            let o = model.node_offset(node) + 3;
+            let r0 = [reference[o], reference[o + 1], reference[o + 2]];
+            let rx = [initial.e[o], initial.e[o + 1], initial.e[o + 2]];
+            if !moment.acts_on(&rx) {
+                return Err(ModelError::invalid(
+                    format!("loads[{i}].moment"),
+                    "the moment is about the cable's own tangent (a torsion, which a cable cannot carry)",
+                ));
+            }
+            moment_angles.push(MomentAngle::new(moment, node, r0, &rx));
+        }
+        let reactions: Vec<(usize, [f64; 3])> = model
+            .constraints
+            .position_nodes
+            .iter()
+            .map(|&nd| (nd, [0.0; 3]))
+            .collect();
+        let previous = Undo {
+            state: initial.clone(),
+            acceleration: vec![0.0; n],
+            constraint_work: 0.0,
+            moment_angles: moment_angles.clone(),
+            reactions: reactions.clone(),
         };
-        model.mass_times(&start.v, &mut start.mass_v);
         Ok(Simulation {
             x: vec![0.0; layout.size()],
             acceleration: vec![0.0; n],
-            previous: initial.clone(),
-            previous_acceleration: vec![0.0; n],
             model,
             settings,
             time_rule,
@@ -174,6 +221,10 @@ impl Simulation {
             workspace,
             scratch,
             steps: 0,
+            reactions,
+            constraint_work: 0.0,
+            moment_angles,
+            previous,
         })
     }
 
@@ -208,6 +259,33 @@ impl Simulation {
         &self.workspace.residual_history
     }
 
+    /// The force each position constraint exerted on the cable, averaged
+    /// over the last step: its impulse (the multipliers of the freed P2
+    /// rows of r, or the values of the eliminated rows) divided by dt.
+    /// With it the discrete momentum balance is exact:
+    /// P_b - P_a = (m g + sum of reactions) dt.
+    pub fn reactions(&self) -> &[(usize, [f64; 3])] {
+        &self.reactions
+    }
+
+    /// Work done on the cable by the constraints so far (zero unless a
+    /// constraint moves): sum over steps of reaction . displacement.
+    pub fn constraint_work(&self) -> f64 {
+        self.constraint_work
+    }
+
+    /// Energies of the current state; `load_potential` includes -M theta
+    /// of the end moments with theta followed continuously.
+    pub fn energies(&self) -> Energies {
+        let mut en = energies(&self.model, &self.state);
+        en.load_potential += self
+            .moment_angles
+            .iter()
+            .map(|a| a.potential())
+            .sum::<f64>();
+        en
+    }
+
     /// Changes the step length (e.g. to land exactly on the final time).
     pub fn set_time_step(&mut self, dt: f64) {
         if dt == self.settings.time_step {
@@ -220,43 +298,59 @@ impl Simulation {
     }
 
     /// Predictor: Taylor expansion with the last step's acceleration,
-    /// e(t_i) = e_a + tau v_a + tau^2 a / 2, v(t_i) = v_a + tau a.
+    /// e(t_i) = e_a + tau v_a + tau^2 a / 2, v(t_i) = v_a + tau a; the
+    /// prescribed values for constrained coordinates; the multipliers keep
+    /// their last values.
     fn predict(&mut self) {
         let h = self.slab.dt;
-        let dpn = self.layout.dpn;
-        for node in 0..self.layout.nodes {
-            for i in 1..=self.layout.layers {
-                let tau = h * i as f64;
-                let ue = self.layout.unknown(i, Kind::Position, node).expect("e_i");
-                let uv = self.layout.unknown(i, Kind::Velocity, node).expect("v_i");
-                for c in 0..dpn {
-                    let g = node * dpn + c;
+        let n = self.model.dofs();
+        for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
+            let tau = h * i as f64;
+            for g in 0..n {
+                let Some(u) = self.layout.unknown_at(slot, g) else {
+                    continue;
+                };
+                self.x[u] = if self.model.constraints.is_constrained(g) {
+                    match kind {
+                        Kind::Position => self.start.fixed_e[i * n + g],
+                        Kind::Velocity => self.start.fixed_v[i * n + g],
+                    }
+                } else {
                     let (e, v, a) = (self.state.e[g], self.state.v[g], self.acceleration[g]);
-                    self.x[ue + c] = e + tau * v + 0.5 * tau * tau * a;
-                    self.x[uv + c] = v + tau * a;
-                }
+                    match kind {
+                        Kind::Position => e + tau * v + 0.5 * tau * tau * a,
+                        Kind::Velocity => v + tau * a,
+                    }
+                };
             }
         }
     }
 
     /// Returns to the state before the last converged step (once).
     pub fn undo_last_step(&mut self) {
-        if self.steps == 0 || self.previous.t == self.state.t {
+        if self.steps == 0 || self.previous.state.t == self.state.t {
             return;
         }
-        self.state.clone_from(&self.previous);
+        self.state.clone_from(&self.previous.state);
         self.acceleration
-            .copy_from_slice(&self.previous_acceleration);
+            .copy_from_slice(&self.previous.acceleration);
+        self.constraint_work = self.previous.constraint_work;
+        self.moment_angles
+            .copy_from_slice(&self.previous.moment_angles);
+        self.reactions.copy_from_slice(&self.previous.reactions);
         self.steps -= 1;
-        self.start.e.copy_from_slice(&self.state.e);
-        self.start.v.copy_from_slice(&self.state.v);
-        self.model.mass_times(&self.start.v, &mut self.start.mass_v);
+        let h = self.slab.dt;
+        self.start
+            .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
     }
 
     /// Advances the state by one step. On failure the state is left at the
     /// last converged step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
         let dt = self.settings.time_step;
+        let h = self.slab.dt;
+        self.start
+            .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
         self.predict();
         let mut system = StepSystem {
             problem: StepProblem {
@@ -287,48 +381,88 @@ impl Simulation {
                 })
             }
         };
-        let last = self.layout.layers;
-        let dpn = self.layout.dpn;
-        self.previous.clone_from(&self.state);
-        self.previous_acceleration
+        self.previous.state.clone_from(&self.state);
+        self.previous
+            .acceleration
             .copy_from_slice(&self.acceleration);
-        for node in 0..self.layout.nodes {
-            let ue = self
-                .layout
-                .unknown(last, Kind::Position, node)
-                .expect("e_L");
-            let uv = self
-                .layout
-                .unknown(last, Kind::Velocity, node)
-                .expect("v_L");
-            for c in 0..dpn {
-                let g = node * dpn + c;
-                let v_new = self.x[uv + c];
-                self.acceleration[g] = (v_new - self.state.v[g]) / dt;
-                self.state.e[g] = self.x[ue + c];
-                self.state.v[g] = v_new;
-            }
+        self.previous.constraint_work = self.constraint_work;
+        self.previous
+            .moment_angles
+            .copy_from_slice(&self.moment_angles);
+        self.previous.reactions.copy_from_slice(&self.reactions);
+        // The time-node values at the solution (and, for eliminated
+        // constraints, the freed rows: the reactions).
+        let problem = StepProblem {
+            model: &self.model,
+            layout: &self.layout,
+            slab: &self.slab,
+            start: &self.start,
+        };
+        if self.layout.method == ConstraintMethod::Elimination && !self.model.constraints.is_empty()
+        {
+            problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);
+        } else {
+            problem.expand(&self.x, &mut self.scratch);
+        }
+        self.collect_reactions(dt);
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        for g in 0..n {
+            let e_new = self.scratch.node_e[last * n + g];
+            let v_new = self.scratch.node_v[last * n + g];
+            self.acceleration[g] = (v_new - self.state.v[g]) / dt;
+            self.state.e[g] = e_new;
+            self.state.v[g] = v_new;
         }
         self.state.t += dt;
         self.steps += 1;
-        self.start.e.copy_from_slice(&self.state.e);
-        self.start.v.copy_from_slice(&self.state.v);
-        self.model.mass_times(&self.start.v, &mut self.start.mass_v);
+        for a in &mut self.moment_angles {
+            let o = a.node * self.layout.dpn + 3;
+            a.update(&[self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]]);
+        }
         Ok(StepReport {
             step: self.steps,
             t: self.state.t,
             newton: report,
         })
     }
+
+    /// Reaction impulses of the step from the multipliers (or eliminated
+    /// rows) of the position rows e_0, e_i, e_L, and the work of moving
+    /// constraints.
+    fn collect_reactions(&mut self, dt: f64) {
+        let n = self.model.dofs();
+        let dpn = self.layout.dpn;
+        let last = self.layout.layers();
+        for (node, force) in self.reactions.iter_mut() {
+            for c in 0..3 {
+                let g = *node * dpn + c;
+                let mut impulse = 0.0;
+                for (s, &(_, kind)) in self.layout.row_slots.iter().enumerate() {
+                    if kind != Kind::Position {
+                        continue;
+                    }
+                    impulse += match self.layout.multiplier_at(s, g) {
+                        Some(m) => self.x[m],
+                        None => -self.scratch.reaction_rows[s * n + g],
+                    };
+                }
+                force[c] = impulse / dt;
+                let moved = self.scratch.node_e[last * n + g] - self.state.e[g];
+                self.constraint_work += force[c] * moved;
+            }
+        }
+    }
 }
 
 /// Watches the mechanical energy of a run for growth without a source.
 ///
-/// The cable under gravity and constant point forces conserves
-/// E = T + U + V_g + V_F; P2 keeps it within a bounded oscillation when the
-/// step is stable. A change of E by more than `ratio` times the energy
-/// scale of the motion so far (the largest T + U seen, plus the largest
-/// change of the potentials) can only come from an unstable step.
+/// The cable under gravity, constant point forces and end moments
+/// conserves E = T + U + V_g + V_F; P2 keeps it within a bounded
+/// oscillation when the step is stable. Moving constraints add their work
+/// W. A change of E - W by more than `ratio` times the energy scale of the
+/// motion so far (the largest T + U seen, plus the largest change of the
+/// potentials and the largest |W|) can only come from an unstable step.
 #[derive(Clone, Debug)]
 pub struct EnergyWatch {
     pub ratio: f64,
@@ -345,15 +479,23 @@ impl EnergyWatch {
         }
     }
 
-    /// Records a state's energies; Err(drift) if they grew without a source.
-    pub fn check(&mut self, en: &Energies) -> Result<(), f64> {
+    /// The energy scale of the motion so far.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Records a state's energies and the work of the constraints so far;
+    /// Err(drift) if the energy grew without a source.
+    pub fn check(&mut self, en: &Energies, constraint_work: f64) -> Result<(), f64> {
         let potential_change = (en.gravity - self.initial.gravity).abs()
             + (en.load_potential - self.initial.load_potential).abs();
         self.scale = self
             .scale
-            .max(en.kinetic.abs() + en.strain.abs() + potential_change);
-        let drift = en.mechanical() - self.initial.mechanical();
-        let floor = 1e3 * f64::EPSILON * (en.magnitude() + self.initial.magnitude());
+            .max(en.kinetic.abs() + en.strain.abs() + potential_change + constraint_work.abs());
+        let drift = en.mechanical() - self.initial.mechanical() - constraint_work;
+        let floor = 1e3
+            * f64::EPSILON
+            * (en.magnitude() + self.initial.magnitude() + constraint_work.abs());
         if drift > self.ratio * self.scale && drift > floor {
             Err(drift)
         } else {
@@ -384,7 +526,7 @@ where
     let dt = sim.settings.time_step;
     let t0 = sim.state.t;
     let n_steps = step_count(duration, dt);
-    let mut watch = EnergyWatch::new(energies(&sim.model, &sim.state), ENERGY_GROWTH_RATIO);
+    let mut watch = EnergyWatch::new(sim.energies(), ENERGY_GROWTH_RATIO);
     for k in 1..=n_steps {
         let h = if k == n_steps {
             t0 + duration - sim.state.t
@@ -393,33 +535,32 @@ where
         };
         sim.set_time_step(h);
         let report = sim.step()?;
-        let en = energies(&sim.model, &sim.state);
+        let en = sim.energies();
+        let failure = |kind, detail: String, sim: &Simulation| SolverError {
+            kind,
+            time: sim.state.t,
+            step: report.step,
+            residual: report.newton.residual,
+            iterations: report.newton.iterations,
+            detail,
+        };
         if !en.mechanical().is_finite() {
             sim.undo_last_step();
-            return Err(SolverError {
-                kind: FailureKind::NonFinite,
-                time: sim.state.t,
-                step: report.step,
-                residual: report.newton.residual,
-                iterations: report.newton.iterations,
-                detail: "the energy is not finite".into(),
-            });
+            return Err(failure(
+                FailureKind::NonFinite,
+                "the energy is not finite".into(),
+                sim,
+            ));
         }
-        if let Err(drift) = watch.check(&en) {
+        if let Err(drift) = watch.check(&en, sim.constraint_work) {
             sim.undo_last_step();
-            return Err(SolverError {
-                kind: FailureKind::EnergyGrowth,
-                time: sim.state.t,
-                step: report.step,
-                residual: report.newton.residual,
-                iterations: report.newton.iterations,
-                detail: format!(
-                    "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
-                    en.mechanical(),
-                    drift,
-                    watch.initial.mechanical()
-                ),
-            });
+            let detail = format!(
+                "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
+                en.mechanical() - sim.constraint_work,
+                drift,
+                watch.initial.mechanical()
+            );
+            return Err(failure(FailureKind::EnergyGrowth, detail, sim));
         }
         if observer(sim, &report, &en).is_break() {
             return Ok(false);

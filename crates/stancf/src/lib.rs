@@ -29,22 +29,27 @@
 
 pub mod assembly;
 pub mod band;
+pub mod constraints;
 pub mod element;
 pub mod error;
 pub mod integrator;
+pub mod loads;
 pub mod model;
 pub mod observe;
 pub mod quadrature;
 pub mod shape;
 pub mod solver;
 pub mod stability;
+pub mod statics;
 
+pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};
 pub use element::{AxialStrain, Curvature, Measures};
 pub use error::{FailureKind, ModelError, SolverError};
 pub use integrator::{run, Simulation, StepReport, StepSettings};
 pub use model::{Cable, ElementType, Load, Material, Model, ModelOptions, SpacePoints, State};
 pub use observe::{energies, Energies};
 pub use solver::NewtonSettings;
+pub use statics::{StaticSettings, StaticSolver};
 
 /// The README's Rust example, compiled and run as a doc test.
 #[cfg(doctest)]

@@ -6,6 +6,7 @@
 //! its coordinates are the contiguous slice starting at `k * dpn`, in the
 //! element's own order.
 
+use crate::constraints::{Constraint, Constraints};
 use crate::element::{CableElement, Measures, Section, SpaceRules};
 use crate::error::ModelError;
 use crate::quadrature::GaussRule;
@@ -144,6 +145,9 @@ pub enum Load {
     Gravity { acceleration: [f64; 3] },
     /// Constant force on the position of a node, eq. (14).
     PointForce { node: usize, force: [f64; 3] },
+    /// Moment vector M n (N m) on the tangent r_x of a node, eqs. (15)-(16):
+    /// work M theta, theta the rotation of r_x about n (see [`crate::loads`]).
+    EndMoment { node: usize, moment: [f64; 3] },
 }
 
 /// Gauss points per element in space for the axial and the bending
@@ -193,6 +197,8 @@ pub struct Model {
     pub mesh: Mesh,
     /// Sum of the gravity loads.
     pub gravity: [f64; 3],
+    /// Constraints, resolved to coordinates (none for a free cable).
+    pub constraints: Constraints,
 }
 
 /// Positions e and velocities v of all coordinates at time t.
@@ -294,8 +300,12 @@ impl Model {
                         gravity[c] += acceleration[c];
                     }
                 }
-                Load::PointForce { node, force } => {
-                    check_vector(&format!("loads[{i}].force"), force)?;
+                Load::PointForce { node, force: v } | Load::EndMoment { node, moment: v } => {
+                    let name = match load {
+                        Load::PointForce { .. } => "force",
+                        _ => "moment",
+                    };
+                    check_vector(&format!("loads[{i}].{name}"), v)?;
                     if *node > cable.elements {
                         return Err(ModelError::invalid(
                             format!("loads[{i}].node"),
@@ -323,6 +333,7 @@ impl Model {
                     .collect(),
             ),
         };
+        let nodes = cable.elements + 1;
         Ok(Model {
             cable,
             material,
@@ -330,7 +341,34 @@ impl Model {
             loads,
             mesh,
             gravity,
+            constraints: Constraints {
+                motion: vec![None; nodes * cable.element_type.dofs_per_node()],
+                ..Constraints::default()
+            },
         })
+    }
+
+    /// The model with these constraints (replacing any before).
+    pub fn with_constraints(mut self, list: Vec<Constraint>) -> Result<Self, ModelError> {
+        let reference = self.reference_coordinates();
+        self.constraints = Constraints::new(list, self.element_type(), self.nodes(), &reference)?;
+        Ok(self)
+    }
+
+    /// Coordinates of the straight, stress-free reference shape:
+    /// r_j = origin + x_j d, r_x = d, r_xx = 0.
+    pub fn reference_coordinates(&self) -> Vec<f64> {
+        let mut e = vec![0.0; self.dofs()];
+        let d = self.cable.direction;
+        for j in 0..self.nodes() {
+            let o = self.node_offset(j);
+            let x = self.node_coordinate(j);
+            for i in 0..3 {
+                e[o + i] = self.cable.origin[i] + x * d[i];
+                e[o + 3 + i] = d[i];
+            }
+        }
+        e
     }
 
     pub fn element_type(&self) -> ElementType {
@@ -406,25 +444,36 @@ impl Model {
         [e[o], e[o + 1], e[o + 2]]
     }
 
-    /// The straight reference shape at rest, at t = 0:
-    /// r_j = origin + x_j d, r_x = d, r_xx = 0.
+    /// The straight reference shape at rest at t = 0, with constrained
+    /// coordinates at their prescribed values and rates.
     pub fn initial_state(&self) -> State {
         let n = self.dofs();
-        let mut e = vec![0.0; n];
-        let d = self.cable.direction;
-        for j in 0..self.nodes() {
-            let o = self.node_offset(j);
-            let x = self.node_coordinate(j);
-            for i in 0..3 {
-                e[o + i] = self.cable.origin[i] + x * d[i];
-                e[o + 3 + i] = d[i];
+        let mut s = State {
+            t: 0.0,
+            e: self.reference_coordinates(),
+            v: vec![0.0; n],
+        };
+        self.apply_constraints(&mut s);
+        s
+    }
+
+    /// Sets every constrained coordinate of `state` to its prescribed value
+    /// and rate at `state.t`.
+    pub fn apply_constraints(&self, state: &mut State) {
+        for (g, m) in self.constraints.motion.iter().enumerate() {
+            if let Some(m) = m {
+                state.e[g] = m.value(state.t);
+                state.v[g] = m.rate_at(state.t);
             }
         }
-        State {
-            t: 0.0,
-            e,
-            v: vec![0.0; n],
-        }
+    }
+
+    /// End moments: (node, moment vector).
+    pub fn end_moments(&self) -> impl Iterator<Item = (usize, [f64; 3])> + '_ {
+        self.loads.iter().filter_map(|l| match l {
+            Load::EndMoment { node, moment } => Some((*node, *moment)),
+            _ => None,
+        })
     }
 
     /// Sets the velocity of the position r of node j (its gradients keep

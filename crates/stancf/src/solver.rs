@@ -62,6 +62,9 @@ pub struct NewtonWorkspace {
     pub lu: BandLu,
     residual: Vec<f64>,
     dx: Vec<f64>,
+    /// A residual-sized buffer for the caller (e.g. a last evaluation at
+    /// the solution); Newton does not touch it.
+    pub spare: Vec<f64>,
     /// Scaled residual norm of every evaluation of the last solve.
     pub residual_history: Vec<f64>,
 }
@@ -72,6 +75,7 @@ impl NewtonWorkspace {
             lu: BandLu::new(n, kl, ku),
             residual: vec![0.0; n],
             dx: vec![0.0; n],
+            spare: vec![0.0; n],
             residual_history: Vec::with_capacity(2 * max_iterations + 2),
         }
     }

@@ -41,6 +41,7 @@ fn settings(dt: f64, layers: usize, time_points: usize, tol: f64) -> StepSetting
             tolerance: tol,
             max_iterations: 50,
         },
+        ..StepSettings::default()
     }
 }
 

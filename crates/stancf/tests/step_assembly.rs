@@ -1,17 +1,25 @@
-//! The assembled P2 system of a step (eq. 22, with time layers) against
-//! finite differences of its residual, and its rows against their
-//! definition.
+//! The assembled systems (a P2 step with time layers, eq. 22, and a static
+//! solve) against finite differences of their residuals, with every kind
+//! of load and constraint, by both constraint routes.
 
 mod common;
 
 use common::*;
-use stancf::assembly::{AssemblyScratch, Kind, SlabLayout, StepProblem, StepStart};
+use stancf::assembly::{AssemblyScratch, Kind, Scheme, SlabLayout, StepProblem, StepStart};
 use stancf::band::BandMatrix;
 use stancf::element::TimeSlab;
 use stancf::quadrature::GaussRule;
-use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions};
+use stancf::{
+    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
+    ModelOptions,
+};
 
-fn model(kind: ElementType, elements: usize, loads: Vec<Load>) -> Model {
+fn model(
+    kind: ElementType,
+    elements: usize,
+    loads: Vec<Load>,
+    constraints: Vec<Constraint>,
+) -> Model {
     let material = Material {
         youngs_modulus: 2.0e3,
         density: 900.0,
@@ -21,105 +29,178 @@ fn model(kind: ElementType, elements: usize, loads: Vec<Load>) -> Model {
     let cable = Cable::straight(1.2, elements, kind)
         .with_origin([0.1, -0.2, 0.3])
         .with_direction([1.0, 0.5, -0.25]);
-    Model::new(cable, material, ModelOptions::default(), loads).unwrap()
+    Model::new(cable, material, ModelOptions::default(), loads)
+        .unwrap()
+        .with_constraints(constraints)
+        .unwrap()
 }
 
-/// dR/dx of the assembled step against central differences of R, for
-/// 1, 2 and 3 layers, SAC-2 and SAC-3, with gravity and a point force.
+fn all_loads() -> Vec<Load> {
+    vec![
+        Load::Gravity {
+            acceleration: [0.0, -9.81, 0.0],
+        },
+        Load::PointForce {
+            node: 2,
+            force: [0.3, 0.1, -0.2],
+        },
+        Load::EndMoment {
+            node: 3,
+            moment: [0.01, 0.02, 0.05],
+        },
+    ]
+}
+
+fn some_constraints(kind: ElementType) -> Vec<Constraint> {
+    vec![
+        Constraint {
+            node: 0,
+            kind: ConstraintKind::Clamped {
+                fix_curvature: kind == ElementType::Sac3,
+            },
+        },
+        Constraint {
+            node: 2,
+            kind: ConstraintKind::Prescribed {
+                velocity: [0.1, 0.0, -0.2],
+                amplitude: [0.0, 0.02, 0.01],
+                frequency: 3.0,
+                phase: 0.4,
+            },
+        },
+    ]
+}
+
+/// dR/dx against central differences of R at a random iterate near `start`.
+fn check_jacobian(
+    m: &Model,
+    layout: &SlabLayout,
+    slab: &TimeSlab,
+    start: &StepStart,
+    rng: &mut Rng,
+    label: &str,
+) {
+    let n = layout.size();
+    let mut x = vec![0.0; n];
+    for (slot, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+        for g in 0..m.dofs() {
+            if let Some(u) = layout.unknown_at(slot, g) {
+                x[u] = match kind {
+                    Kind::Position => start.e[g] + 0.03 * rng.next() * (i as f64 + 0.5),
+                    Kind::Velocity => start.v[g] + 0.3 * rng.next(),
+                };
+            }
+        }
+        for g in 0..m.dofs() {
+            if let Some(r) = layout.constraint_row_at(slot, g) {
+                let _ = r;
+            }
+        }
+    }
+    for s in 0..layout.row_slots.len() {
+        for g in 0..m.dofs() {
+            if let Some(u) = layout.multiplier_at(s, g) {
+                x[u] = rng.next();
+            }
+        }
+    }
+    let p = StepProblem {
+        model: m,
+        layout,
+        slab,
+        start,
+    };
+    let (kl, ku) = layout.bandwidths();
+    let mut jac = BandMatrix::new(n, kl, ku);
+    let mut r = vec![0.0; n];
+    let mut scratch = AssemblyScratch::new(m, layout);
+    p.assemble(&x, &mut r, Some(&mut jac), &mut scratch);
+    let mut r_only = vec![0.0; n];
+    p.assemble(&x, &mut r_only, None, &mut scratch);
+    assert_eq!(
+        r, r_only,
+        "{label}: residual must not depend on whether J is built"
+    );
+    let h = 1e-6;
+    let mut analytic = Vec::with_capacity(n * n);
+    let mut fd = Vec::with_capacity(n * n);
+    let mut rp = vec![0.0; n];
+    let mut rm = vec![0.0; n];
+    for c in 0..n {
+        let mut xp = x.clone();
+        let mut xm = x.clone();
+        xp[c] += h;
+        xm[c] -= h;
+        p.assemble(&xp, &mut rp, None, &mut scratch);
+        p.assemble(&xm, &mut rm, None, &mut scratch);
+        for row in 0..n {
+            fd.push((rp[row] - rm[row]) / (2.0 * h));
+            analytic.push(jac.get(row, c));
+        }
+    }
+    let e = rel_diff(&analytic, &fd);
+    assert!(e < 1e-6, "{label}: Jacobian rel. error {e:e}");
+}
+
+fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> StepStart {
+    let s0 = m.initial_state();
+    let e: Vec<f64> = s0.e.iter().map(|v| v + 0.05 * rng.next()).collect();
+    let v: Vec<f64> = s0.v.iter().map(|_| 0.5 * rng.next()).collect();
+    let mut start = StepStart::new(m, layout.time_nodes());
+    start.set(m, 0.37, &e, &v, h);
+    start
+}
+
+/// P2 steps with 1 to 3 layers, SAC-2 and SAC-3, gravity, a point force
+/// and an end moment, free and constrained (clamp, prescribed motion) by
+/// both routes.
 #[test]
 fn step_jacobian_matches_finite_differences() {
     let mut rng = Rng(0x7777_1234_abcd_0099);
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for layers in 1..=3 {
-            let m = model(
-                kind,
-                3,
-                vec![
-                    Load::Gravity {
-                        acceleration: [0.0, -9.81, 0.0],
-                    },
-                    Load::PointForce {
-                        node: 2,
-                        force: [0.3, 0.1, -0.2],
-                    },
-                ],
-            );
-            let layout = SlabLayout::new(&m, layers);
-            let slab = TimeSlab::new(0.02 / layers as f64, &GaussRule::new(3).unwrap());
-            let s0 = m.initial_state();
-            let mut start = StepStart {
-                e: s0.e.iter().map(|v| v + 0.05 * rng.next()).collect(),
-                v: s0.v.iter().map(|_| 0.5 * rng.next()).collect(),
-                mass_v: vec![0.0; m.dofs()],
-            };
-            m.mass_times(&start.v.clone(), &mut start.mass_v);
-            let n = layout.size();
-            // A guess near the start.
-            let mut x = vec![0.0; n];
-            for node in 0..layout.nodes {
-                for i in 1..=layers {
-                    let ue = layout.unknown(i, Kind::Position, node).unwrap();
-                    let uv = layout.unknown(i, Kind::Velocity, node).unwrap();
-                    for c in 0..layout.dpn {
-                        let g = node * layout.dpn + c;
-                        x[ue + c] = start.e[g] + 0.03 * rng.next();
-                        x[uv + c] = start.v[g] + 0.3 * rng.next();
-                    }
-                }
+            for (constrained, method) in [
+                (false, ConstraintMethod::Multiplier),
+                (true, ConstraintMethod::Multiplier),
+                (true, ConstraintMethod::Elimination),
+            ] {
+                let cons = if constrained {
+                    some_constraints(kind)
+                } else {
+                    vec![]
+                };
+                let m = model(kind, 3, all_loads(), cons);
+                let layout = SlabLayout::new(&m, Scheme::P2 { layers }, method);
+                let h = 0.02 / layers as f64;
+                let slab = TimeSlab::new(h, &GaussRule::new(3).unwrap());
+                let start = random_start(&m, &layout, h, &mut rng);
+                let label =
+                    format!("{kind:?} {layers} layers, constrained {constrained} {method:?}");
+                check_jacobian(&m, &layout, &slab, &start, &mut rng, &label);
             }
-            let (kl, ku) = layout.bandwidths();
-            let mut jac = BandMatrix::new(n, kl, ku);
-            let mut r = vec![0.0; n];
-            let mut scratch = AssemblyScratch::new(&m);
-            StepProblem {
-                model: &m,
-                layout: &layout,
-                slab: &slab,
-                start: &start,
-            }
-            .assemble(&x, &mut r, Some(&mut jac), &mut scratch);
-            let mut r_only = vec![0.0; n];
-            StepProblem {
-                model: &m,
-                layout: &layout,
-                slab: &slab,
-                start: &start,
-            }
-            .assemble(&x, &mut r_only, None, &mut scratch);
-            assert_eq!(r, r_only, "residual must not depend on whether J is built");
-            let h = 1e-6;
-            let mut analytic = Vec::with_capacity(n * n);
-            let mut fd = Vec::with_capacity(n * n);
-            let mut rp = vec![0.0; n];
-            let mut rm = vec![0.0; n];
-            for c in 0..n {
-                let mut xp = x.clone();
-                let mut xm = x.clone();
-                xp[c] += h;
-                xm[c] -= h;
-                StepProblem {
-                    model: &m,
-                    layout: &layout,
-                    slab: &slab,
-                    start: &start,
-                }
-                .assemble(&xp, &mut rp, None, &mut scratch);
-                StepProblem {
-                    model: &m,
-                    layout: &layout,
-                    slab: &slab,
-                    start: &start,
-                }
-                .assemble(&xm, &mut rm, None, &mut scratch);
-                for row in 0..n {
-                    fd.push((rp[row] - rm[row]) / (2.0 * h));
-                    analytic.push(jac.get(row, c));
-                }
-            }
-            let e = rel_diff(&analytic, &fd);
-            assert!(
-                e < 1e-6,
-                "{kind:?}, {layers} layers: Jacobian rel. error {e:e}"
+        }
+    }
+}
+
+/// The static system dU/de - f = 0 with load factor, moment and
+/// constraints by both routes.
+#[test]
+fn static_jacobian_matches_finite_differences() {
+    let mut rng = Rng(0x1111_2222_3333_4444);
+    for kind in [ElementType::Sac2, ElementType::Sac3] {
+        for method in [ConstraintMethod::Multiplier, ConstraintMethod::Elimination] {
+            let m = model(kind, 3, all_loads(), some_constraints(kind));
+            let layout = SlabLayout::new(&m, Scheme::Static, method);
+            let slab = TimeSlab::new(1.0, &GaussRule::new(1).unwrap());
+            let mut start = random_start(&m, &layout, 0.0, &mut rng);
+            start.load_factor = 0.7;
+            check_jacobian(
+                &m,
+                &layout,
+                &slab,
+                &start,
+                &mut rng,
+                &format!("static {kind:?} {method:?}"),
             );
         }
     }
@@ -132,8 +213,8 @@ fn step_jacobian_matches_finite_differences() {
 fn rigid_translation_satisfies_the_p2_rows() {
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for layers in 1..=3 {
-            let m = model(kind, 4, vec![]);
-            let layout = SlabLayout::new(&m, layers);
+            let m = model(kind, 4, vec![], vec![]);
+            let layout = SlabLayout::new(&m, Scheme::P2 { layers }, ConstraintMethod::Multiplier);
             let dt = 0.01;
             let h = dt / layers as f64;
             let slab = TimeSlab::new(h, &GaussRule::new(3).unwrap());
@@ -141,39 +222,52 @@ fn rigid_translation_satisfies_the_p2_rows() {
             for node in 0..m.nodes() {
                 m.set_node_velocity(&mut s, node, [0.3, -1.1, 0.7]);
             }
-            let mut start = StepStart {
-                e: s.e.clone(),
-                v: s.v.clone(),
-                mass_v: vec![0.0; m.dofs()],
-            };
-            m.mass_times(&s.v, &mut start.mass_v);
+            let mut start = StepStart::new(&m, layout.time_nodes());
+            start.set(&m, 0.0, &s.e, &s.v, h);
             let mut x = vec![0.0; layout.size()];
-            for node in 0..layout.nodes {
-                for i in 1..=layers {
-                    let ue = layout.unknown(i, Kind::Position, node).unwrap();
-                    let uv = layout.unknown(i, Kind::Velocity, node).unwrap();
-                    for c in 0..layout.dpn {
-                        let g = node * layout.dpn + c;
-                        x[ue + c] = s.e[g] + i as f64 * h * s.v[g];
-                        x[uv + c] = s.v[g];
-                    }
+            for (slot, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+                for g in 0..m.dofs() {
+                    let u = layout.unknown_at(slot, g).unwrap();
+                    x[u] = match kind {
+                        Kind::Position => s.e[g] + i as f64 * h * s.v[g],
+                        Kind::Velocity => s.v[g],
+                    };
                 }
             }
             let mut r = vec![0.0; layout.size()];
-            let mut scratch = AssemblyScratch::new(&m);
-            StepProblem {
+            let mut scratch = AssemblyScratch::new(&m, &layout);
+            let p = StepProblem {
                 model: &m,
                 layout: &layout,
                 slab: &slab,
                 start: &start,
-            }
-            .assemble(&x, &mut r, None, &mut scratch);
+            };
+            p.assemble(&x, &mut r, None, &mut scratch);
             let scale: f64 = start.mass_v.iter().fold(0.0, |a, b| a.max(b.abs()));
             let worst = r.iter().fold(0.0f64, |a, b| a.max(b.abs()));
             assert!(
                 worst < 1e-13 * scale,
                 "{kind:?} {layers}: residual {worst:e}"
             );
+        }
+    }
+}
+
+/// The layouts are square, banded as declared, and the two routes differ
+/// by exactly the multipliers and constraint equations.
+#[test]
+fn layouts_count_unknowns_and_rows() {
+    for kind in [ElementType::Sac2, ElementType::Sac3] {
+        let m = model(kind, 4, vec![], some_constraints(kind));
+        let fixed = (0..m.dofs())
+            .filter(|&g| m.constraints.is_constrained(g))
+            .count();
+        for layers in 1..=2 {
+            let mult = SlabLayout::new(&m, Scheme::P2 { layers }, ConstraintMethod::Multiplier);
+            let elim = SlabLayout::new(&m, Scheme::P2 { layers }, ConstraintMethod::Elimination);
+            let free = m.dofs() * 2 * layers;
+            assert_eq!(mult.size(), free + 2 * layers * fixed);
+            assert_eq!(elim.size(), free - 2 * layers * fixed);
         }
     }
 }

@@ -1,0 +1,242 @@
+//! Constraints on nodal coordinates (paper section 3; method notes,
+//! "Constraints").
+//!
+//! A constraint fixes coordinates of a node for all t: `clamped` fixes r
+//! and r_x (and r_xx on request, SAC-3 only), `pinned` fixes r, and
+//! `prescribed` moves r along
+//!
+//! ```text
+//!   r(t) = r0 + u t + a sin(2 pi f t + phi)
+//! ```
+//!
+//! In a step, a constrained coordinate's values at the time nodes after
+//! t_a are known (e_j(t_i) = c_j(t_i), v_j(t_i) = c_j'(t_i)) and the rows
+//! of eq. (22) it would have carried are freed: they hold the unknown
+//! reaction. Two routes enforce this ([`ConstraintMethod`]): Lagrange
+//! multipliers (the paper's supplementary constraints, eqs. 19 and 24,
+//! after its "constraint conversion": one multiplier per freed row, one
+//! constraint equation per fixed value, so no P2 row becomes singular) and
+//! direct elimination of the fixed coordinates and their rows. Both give
+//! the same motion to round-off.
+
+use crate::error::ModelError;
+use crate::model::ElementType;
+
+/// What a constraint fixes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConstraintKind {
+    /// r and r_x fixed; r_xx too when `fix_curvature` (SAC-3 only; the
+    /// paper's Table 3 "with r_xx constraint" row, wrong for a bent
+    /// cantilever).
+    Clamped { fix_curvature: bool },
+    /// r fixed.
+    Pinned,
+    /// r(t) = r0 + velocity t + amplitude sin(2 pi frequency t + phase),
+    /// r0 the node's reference position.
+    Prescribed {
+        velocity: [f64; 3],
+        amplitude: [f64; 3],
+        frequency: f64,
+        phase: f64,
+    },
+}
+
+/// A constraint on one node.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Constraint {
+    pub node: usize,
+    pub kind: ConstraintKind,
+}
+
+/// How constraints are enforced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ConstraintMethod {
+    /// Lagrange multipliers (the paper's supplementary constraints).
+    #[default]
+    Multiplier,
+    /// Direct elimination of the constrained coordinates.
+    Elimination,
+}
+
+/// The prescribed history of one coordinate,
+/// c(t) = base + rate t + amplitude sin(omega t + phase).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoordinateMotion {
+    pub base: f64,
+    pub rate: f64,
+    pub amplitude: f64,
+    pub omega: f64,
+    pub phase: f64,
+}
+
+impl CoordinateMotion {
+    /// A coordinate held at `value`.
+    pub fn fixed(value: f64) -> Self {
+        CoordinateMotion {
+            base: value,
+            rate: 0.0,
+            amplitude: 0.0,
+            omega: 0.0,
+            phase: 0.0,
+        }
+    }
+
+    pub fn value(&self, t: f64) -> f64 {
+        self.base + self.rate * t + self.amplitude * (self.omega * t + self.phase).sin()
+    }
+
+    pub fn rate_at(&self, t: f64) -> f64 {
+        self.rate + self.amplitude * self.omega * (self.omega * t + self.phase).cos()
+    }
+}
+
+/// All constraints of a model, resolved to coordinates.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Constraints {
+    /// As given.
+    pub list: Vec<Constraint>,
+    /// Per global coordinate: its prescribed motion, if constrained.
+    pub motion: Vec<Option<CoordinateMotion>>,
+    /// Nodes whose position r is constrained (their reactions are
+    /// reported), ascending.
+    pub position_nodes: Vec<usize>,
+}
+
+impl Constraints {
+    /// Resolves `list` for a mesh; `reference` holds the coordinates of the
+    /// reference shape (clamped and pinned coordinates keep these values).
+    pub fn new(
+        list: Vec<Constraint>,
+        element: ElementType,
+        nodes: usize,
+        reference: &[f64],
+    ) -> Result<Self, ModelError> {
+        let dpn = element.dofs_per_node();
+        let mut motion: Vec<Option<CoordinateMotion>> = vec![None; nodes * dpn];
+        let mut owner: Vec<Option<usize>> = vec![None; nodes * dpn];
+        let mut position_nodes = Vec::new();
+        for (ci, c) in list.iter().enumerate() {
+            let key = format!("constraints[{ci}]");
+            if c.node >= nodes {
+                return Err(ModelError::invalid(
+                    format!("{key}.node"),
+                    format!(
+                        "node {} does not exist (nodes are 0..={})",
+                        c.node,
+                        nodes - 1
+                    ),
+                ));
+            }
+            let o = c.node * dpn;
+            let coords: Vec<(usize, CoordinateMotion)> = match c.kind {
+                ConstraintKind::Clamped { fix_curvature } => {
+                    if fix_curvature && element != ElementType::Sac3 {
+                        return Err(ModelError::invalid(
+                            format!("{key}.fix_curvature"),
+                            "only SAC-3 elements have an r_xx coordinate to fix",
+                        ));
+                    }
+                    let n = if fix_curvature { 9 } else { 6 };
+                    (0..n)
+                        .map(|d| (d, CoordinateMotion::fixed(reference[o + d])))
+                        .collect()
+                }
+                ConstraintKind::Pinned => (0..3)
+                    .map(|d| (d, CoordinateMotion::fixed(reference[o + d])))
+                    .collect(),
+                ConstraintKind::Prescribed {
+                    velocity,
+                    amplitude,
+                    frequency,
+                    phase,
+                } => {
+                    for (name, v) in [("velocity", &velocity), ("amplitude", &amplitude)] {
+                        if v.iter().any(|x| !x.is_finite()) {
+                            return Err(ModelError::invalid(
+                                format!("{key}.{name}"),
+                                format!("must have finite components, got {v:?}"),
+                            ));
+                        }
+                    }
+                    if !frequency.is_finite() || frequency < 0.0 {
+                        return Err(ModelError::invalid(
+                            format!("{key}.frequency"),
+                            format!("must be a finite number >= 0, got {frequency}"),
+                        ));
+                    }
+                    if !phase.is_finite() {
+                        return Err(ModelError::invalid(
+                            format!("{key}.phase"),
+                            format!("must be a finite number, got {phase}"),
+                        ));
+                    }
+                    (0..3)
+                        .map(|d| {
+                            (
+                                d,
+                                CoordinateMotion {
+                                    base: reference[o + d],
+                                    rate: velocity[d],
+                                    amplitude: amplitude[d],
+                                    omega: 2.0 * std::f64::consts::PI * frequency,
+                                    phase,
+                                },
+                            )
+                        })
+                        .collect()
+                }
+            };
+            for (d, m) in coords {
+                if let Some(other) = owner[o + d] {
+                    let names = ["r", "r_x", "r_xx"];
+                    return Err(ModelError::invalid(
+                        key,
+                        format!(
+                            "conflicts with constraints[{other}]: both constrain {} of node {}",
+                            names[d / 3],
+                            c.node
+                        ),
+                    ));
+                }
+                owner[o + d] = Some(ci);
+                motion[o + d] = Some(m);
+            }
+            position_nodes.push(c.node);
+        }
+        position_nodes.sort_unstable();
+        Ok(Constraints {
+            list,
+            motion,
+            position_nodes,
+        })
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+
+    pub fn is_constrained(&self, g: usize) -> bool {
+        self.motion[g].is_some()
+    }
+
+    /// True if some constraint moves (prescribed motion does work).
+    pub fn moves(&self) -> bool {
+        self.motion
+            .iter()
+            .flatten()
+            .any(|m| m.rate != 0.0 || (m.amplitude != 0.0 && m.omega != 0.0))
+    }
+
+    /// Whether the constraints remove the rigid motions of a static
+    /// problem: some node's position must be held (translations), and a
+    /// clamp or a second held position must stop the rotations.
+    pub fn remove_rigid_motions(&self) -> bool {
+        let clamped = self
+            .list
+            .iter()
+            .any(|c| matches!(c.kind, ConstraintKind::Clamped { .. }));
+        let mut nodes = self.position_nodes.clone();
+        nodes.dedup();
+        !nodes.is_empty() && (clamped || nodes.len() >= 2)
+    }
+}
