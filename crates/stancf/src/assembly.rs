@@ -212,6 +212,20 @@ impl SlabLayout {
         (v != NONE).then_some(v)
     }
 
+    /// Index of the unknown of coordinate d of node n in unknown slot s.
+    #[inline]
+    pub fn unknown_of_node(&self, slot: usize, node: usize, d: usize) -> Option<usize> {
+        let v = self.unknowns[(node * self.unknown_slots.len() + slot) * self.dpn + d];
+        (v != NONE).then_some(v)
+    }
+
+    /// Index of the row of coordinate d of node n in row slot s.
+    #[inline]
+    pub fn row_of_node(&self, slot: usize, node: usize, d: usize) -> Option<usize> {
+        let v = self.rows[(node * self.row_slots.len() + slot) * self.dpn + d];
+        (v != NONE).then_some(v)
+    }
+
     /// Index of the unknown of global coordinate g in unknown slot s.
     pub fn unknown_at(&self, slot: usize, g: usize) -> Option<usize> {
         Self::at(&self.unknowns, self.unknown_slots.len(), self.dpn, slot, g)
@@ -368,30 +382,42 @@ impl StepProblem<'_> {
     /// Fills the time-node values from the unknowns and the prescribed
     /// values.
     pub fn expand(&self, x: &[f64], scratch: &mut AssemblyScratch) {
+        let layout = self.layout;
         let n = self.model.dofs();
+        let dpn = layout.dpn;
+        let nu = layout.unknown_slots.len();
         let start = self.start;
-        for i in 0..self.layout.time_nodes() {
-            for g in 0..n {
-                let k = i * n + g;
-                let (e, v) = match self.layout.scheme {
-                    Scheme::P2 { .. } if i == 0 => (start.e[g], start.v[g]),
-                    _ => {
-                        let e = match self.layout.unknown(i, Kind::Position, g) {
-                            Some(u) => x[u],
-                            None => start.fixed_e[k],
-                        };
-                        let v = match self.layout.scheme {
-                            Scheme::Static => 0.0,
-                            _ => match self.layout.unknown(i, Kind::Velocity, g) {
-                                Some(u) => x[u],
-                                None => start.fixed_v[k],
-                            },
-                        };
-                        (e, v)
-                    }
-                };
-                scratch.node_e[k] = e;
-                scratch.node_v[k] = v;
+        for i in 0..layout.time_nodes() {
+            let (e_out, v_out) = (
+                &mut scratch.node_e[i * n..(i + 1) * n],
+                &mut scratch.node_v[i * n..(i + 1) * n],
+            );
+            if i == 0 && layout.scheme != Scheme::Static {
+                e_out.copy_from_slice(&start.e);
+                v_out.copy_from_slice(&start.v);
+                continue;
+            }
+            let se = layout.unknown_slot(i, Kind::Position);
+            let sv = layout.unknown_slot(i, Kind::Velocity);
+            let fixed_e = &start.fixed_e[i * n..(i + 1) * n];
+            let fixed_v = &start.fixed_v[i * n..(i + 1) * n];
+            for node in 0..layout.nodes {
+                for d in 0..dpn {
+                    let g = node * dpn + d;
+                    let pick = |slot: Option<usize>, fixed: f64| match slot {
+                        Some(s) => match layout.unknowns[(node * nu + s) * dpn + d] {
+                            NONE => fixed,
+                            u => x[u],
+                        },
+                        None => fixed,
+                    };
+                    e_out[g] = pick(se, fixed_e[g]);
+                    v_out[g] = if sv.is_some() {
+                        pick(sv, fixed_v[g])
+                    } else {
+                        0.0
+                    };
+                }
             }
         }
     }
@@ -477,27 +503,49 @@ impl StepProblem<'_> {
                     y[m] = gather(src, i * n + o);
                 }
                 el.slab_derivatives(self.slab, &y, &gravity, jacobian.is_some(), derivs);
+                // Where each entry of the element's gradient goes, per slot.
+                let targets = row_slots.map(|rs| {
+                    let mut out = [Target::Nothing; ND];
+                    if let Some(s) = rs {
+                        for (d, t) in out.iter_mut().enumerate() {
+                            let (node, dd) = if d < dpn { (k, d) } else { (k + 1, d - dpn) };
+                            *t = match layout.row_of_node(s, node, dd) {
+                                Some(r) => Target::Row(r),
+                                None if self.model.constraints.is_constrained(o + d) => {
+                                    Target::Reaction(s * n + o + d)
+                                }
+                                None => Target::Nothing,
+                            };
+                        }
+                    }
+                    out
+                });
                 for m in 0..4 {
                     for d in 0..ND {
-                        let t = self.target(row_slots[m], o + d);
-                        self.add(t, derivs.grad[m][d], residual, scratch);
+                        self.add(targets[m][d], derivs.grad[m][d], residual, scratch);
                     }
                 }
                 let Some(jac) = jacobian.as_deref_mut() else {
                     continue;
                 };
                 // Global rows and columns of the element's entries, per slot.
-                let index = |slot: Option<usize>, f: &dyn Fn(usize, usize) -> Option<usize>| {
+                let index = |slot: Option<usize>| {
                     let mut out = [NONE; ND];
                     if let Some(s) = slot {
                         for (d, v) in out.iter_mut().enumerate() {
-                            *v = f(s, o + d).unwrap_or(NONE);
+                            let (node, dd) = if d < dpn { (k, d) } else { (k + 1, d - dpn) };
+                            *v = layout.unknown_of_node(s, node, dd).unwrap_or(NONE);
                         }
                     }
                     out
                 };
-                let rows = row_slots.map(|rs| index(rs, &|s, g| layout.row_at(s, g)));
-                let cols = col_slots.map(|cs| index(cs, &|s, g| layout.unknown_at(s, g)));
+                let rows = targets.map(|t| {
+                    t.map(|t| match t {
+                        Target::Row(r) => r,
+                        _ => NONE,
+                    })
+                });
+                let cols = col_slots.map(index);
                 for m in 0..4 {
                     if row_slots[m].is_none() {
                         continue;

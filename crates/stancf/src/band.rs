@@ -173,17 +173,23 @@ impl BandLu {
             }
             let pivot = data[col];
             let inv = 1.0 / pivot;
-            for i in 1..=km {
-                data[col + i] *= inv;
+            // Column j's multipliers, then the rank-one update of rows
+            // j+1..=j+km in columns j+1..=ju: columns are contiguous and
+            // disjoint, so both sides are plain slices (no bounds checks in
+            // the inner loop, which vectorizes).
+            let (left, right) = data.split_at_mut((j + 1) * ld);
+            let l = &mut left[col + 1..col + 1 + km];
+            for v in l.iter_mut() {
+                *v *= inv;
             }
-            // Rank-one update of rows j+1..=j+km, columns j+1..=ju.
+            let l = &*l;
             for c in (j + 1)..=ju {
-                let base = c * ld + diag - c;
-                let a = data[base + j];
+                let base = (c - j - 1) * ld + diag - c + j;
+                let a = right[base];
                 if a != 0.0 {
-                    for i in 1..=km {
-                        let l = data[col + i];
-                        data[base + j + i] -= l * a;
+                    let target = &mut right[base + 1..base + 1 + km];
+                    for (t, &li) in target.iter_mut().zip(l) {
+                        *t -= li * a;
                     }
                 }
             }
@@ -209,8 +215,11 @@ impl BandLu {
             let bj = b[j];
             if bj != 0.0 {
                 let col = j * ld + diag;
-                for i in 1..=km {
-                    b[j + i] -= data[col + i] * bj;
+                for (bi, &l) in b[j + 1..j + 1 + km]
+                    .iter_mut()
+                    .zip(&data[col + 1..col + 1 + km])
+                {
+                    *bi -= l * bj;
                 }
             }
         }
@@ -221,8 +230,8 @@ impl BandLu {
             let bj = b[j];
             if bj != 0.0 {
                 let lo = j.saturating_sub(kl + ku);
-                for i in lo..j {
-                    b[i] -= data[base + i] * bj;
+                for (bi, &u) in b[lo..j].iter_mut().zip(&data[base + lo..base + j]) {
+                    *bi -= u * bj;
                 }
             }
         }

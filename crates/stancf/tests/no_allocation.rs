@@ -27,7 +27,10 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
-use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, Simulation, StepSettings};
+use stancf::{
+    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
+    ModelOptions, Simulation, StepSettings,
+};
 
 #[test]
 fn stepping_allocates_nothing() {
@@ -37,7 +40,33 @@ fn stepping_allocates_nothing() {
         area: 3.0e-6,
         second_moment: 1.25e-13,
     };
-    for (kind, layers) in [(ElementType::Sac2, 1), (ElementType::Sac3, 2)] {
+    for (kind, layers, constrained, method) in [
+        (ElementType::Sac2, 1, false, ConstraintMethod::Multiplier),
+        (ElementType::Sac3, 2, false, ConstraintMethod::Multiplier),
+        (ElementType::Sac2, 1, true, ConstraintMethod::Multiplier),
+        (ElementType::Sac3, 2, true, ConstraintMethod::Elimination),
+    ] {
+        let constraints = if constrained {
+            vec![
+                Constraint {
+                    node: 0,
+                    kind: ConstraintKind::Clamped {
+                        fix_curvature: false,
+                    },
+                },
+                Constraint {
+                    node: 4,
+                    kind: ConstraintKind::Prescribed {
+                        velocity: [0.0, 0.1, 0.0],
+                        amplitude: [0.01, 0.0, 0.0],
+                        frequency: 3.0,
+                        phase: 0.0,
+                    },
+                },
+            ]
+        } else {
+            vec![]
+        };
         let model = Model::new(
             Cable::straight(4.0, 8, kind),
             material,
@@ -50,14 +79,21 @@ fn stepping_allocates_nothing() {
                     node: 8,
                     force: [0.0, 0.0, 0.1],
                 },
+                Load::EndMoment {
+                    node: 8,
+                    moment: [0.0, 0.0, 1e-4],
+                },
             ],
         )
+        .unwrap()
+        .with_constraints(constraints)
         .unwrap();
         let mut s = model.initial_state();
         model.set_node_velocity(&mut s, 0, [0.0, 10.0, 0.0]);
         let settings = StepSettings {
             time_step: 2e-5,
             time_layers: layers,
+            constraint_method: method,
             ..StepSettings::default()
         };
         let mut sim = Simulation::new(model, s, settings).unwrap();
@@ -66,6 +102,8 @@ fn stepping_allocates_nothing() {
         let mut iterations = 0;
         for _ in 0..50 {
             iterations += sim.step().unwrap().newton.iterations;
+            std::hint::black_box(sim.energies());
+            std::hint::black_box(sim.reactions());
         }
         let after = ALLOCATIONS.load(Ordering::SeqCst);
         assert!(iterations >= 50, "the steps did iterate");

@@ -338,3 +338,45 @@ fn static_analysis_needs_constraints_against_rigid_motions() {
         }
     }
 }
+
+/// The full circle in a single load increment does not converge; the
+/// increment is cut and retried until it does, and the answer is the one
+/// of 20 increments.
+#[test]
+fn failed_increments_are_cut_and_retried() {
+    let ei = 3.4e9 * 1.25e-13;
+    let circle = || {
+        cantilever(
+            ElementType::Sac2,
+            10,
+            None,
+            false,
+            Load::EndMoment {
+                node: 10,
+                moment: [0.0, 0.0, 2.0 * std::f64::consts::PI * ei],
+            },
+        )
+    };
+    let mut s = StaticSolver::new(
+        circle(),
+        StaticSettings {
+            load_steps: 1,
+            ..StaticSettings::default()
+        },
+    )
+    .unwrap();
+    let mut cuts = 0;
+    s.solve(|_, inc| {
+        cuts += inc.cuts;
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    let (r, ..) = solve(circle(), StaticSettings::default());
+    let a = s.model().node_position(&s.state().e, 10);
+    let b = r.model().node_position(&r.state().e, 10);
+    assert!(cuts > 0, "the single increment needed no cut");
+    assert!(
+        (a[0] - b[0]).abs() < 1e-10 && (a[1] - b[1]).abs() < 1e-10,
+        "{a:?} {b:?}"
+    );
+}
