@@ -401,6 +401,31 @@ fn common_summary(
     m
 }
 
+/// Writes summary.json: the common fields followed by `extra`'s.
+fn write_summary(
+    dir: &Path,
+    mut summary: serde_json::Map<String, Value>,
+    extra: Value,
+) -> Result<(), Failure> {
+    if let Value::Object(extra) = extra {
+        summary.extend(extra);
+    }
+    let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
+    write_atomic(dir, "summary.json", text.as_bytes()).map_err(io_err(dir))
+}
+
+/// The closing line of a run: the tip and where the results are.
+fn print_tip(model: &Model, state: &State, dir: &Path) {
+    let tip = model.node_position(&state.e, model.nodes() - 1);
+    println!(
+        "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
+        tip[0],
+        tip[1],
+        tip[2],
+        dir.display()
+    );
+}
+
 fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
     out.unwrap_or_else(|| {
         let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned());
@@ -554,9 +579,7 @@ fn run_dynamic(
         "reactions": reactions_json(sim.reactions()),
         "error": failure.as_ref().map(|f| f.to_string()),
     });
-    summary.extend(extra.as_object().expect("object").clone());
-    let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
-    write_atomic(&dir, "summary.json", text.as_bytes()).map_err(io_err(&dir))?;
+    write_summary(&dir, summary, extra)?;
 
     if let Some(f) = failure {
         return Err(Failure::Solver(format!(
@@ -586,14 +609,7 @@ fn run_dynamic(
         "peak axial stress: {:.6e} Pa at s = {} m, t = {:.6e} s",
         tally.stress_peak.0, tally.stress_peak.1, tally.stress_peak.2
     );
-    let tip = model.node_position(&state.e, model.nodes() - 1);
-    println!(
-        "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
-        tip[0],
-        tip[1],
-        tip[2],
-        dir.display()
-    );
+    print_tip(model, state, &dir);
     Ok(())
 }
 
@@ -695,9 +711,7 @@ fn run_static(
         "reactions": reactions_json(solver.reactions()),
         "error": failure.as_ref().map(|f| f.to_string()),
     });
-    summary.extend(extra.as_object().expect("object").clone());
-    let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
-    write_atomic(&dir, "summary.json", text.as_bytes()).map_err(io_err(&dir))?;
+    write_summary(&dir, summary, extra)?;
     if let Some(f) = failure {
         return Err(Failure::Solver(format!(
             "{}: {f}; results up to load factor {} are in {}",

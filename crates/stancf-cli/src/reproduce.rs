@@ -52,16 +52,6 @@ pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
     Ok(())
 }
 
-/// PVC, Table 2.
-fn pvc() -> Material {
-    Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    }
-}
-
 /// One circle-bending configuration.
 #[derive(Clone, Copy)]
 struct Bending {
@@ -76,7 +66,7 @@ struct Bending {
 /// The tip of the 1 m PVC cantilever clamped at A under the moment
 /// lambda pi E I / L at B, and the Newton iterations it took.
 fn bend(c: &Bending) -> Result<([f64; 3], usize), Failure> {
-    let m = pvc();
+    let m = Material::chen2023_pvc();
     let moment = c.lambda * std::f64::consts::PI * m.youngs_modulus * m.second_moment / 1.0;
     let model = Model::new(
         Cable::straight(1.0, c.elements, c.element),

@@ -14,12 +14,7 @@ use stancf::{
 };
 
 fn pvc() -> Material {
-    Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    }
+    Material::chen2023_pvc()
 }
 
 /// A bent, stretched, moving element state.

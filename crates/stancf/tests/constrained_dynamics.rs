@@ -10,12 +10,7 @@ use stancf::{
 use std::ops::ControlFlow;
 
 fn gutta_percha() -> Material {
-    Material {
-        youngs_modulus: 0.91e6,
-        density: 1202.0,
-        area: 1.075e-5,
-        second_moment: 9.15e-12,
-    }
+    Material::chen2023_gutta_percha()
 }
 
 const G: [f64; 3] = [0.0, -9.81, 0.0];
@@ -228,12 +223,7 @@ fn prescribed_support_motion() {
 /// (a wrap error would jump it by 2 pi M).
 #[test]
 fn end_moment_in_dynamics_conserves_energy_through_full_turns() {
-    let pvc = Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    };
+    let pvc = Material::chen2023_pvc();
     let (length, n) = (0.2, 8);
     let m = 1.5 * std::f64::consts::PI * pvc.youngs_modulus * pvc.second_moment / length;
     let model = Model::new(

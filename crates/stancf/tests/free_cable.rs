@@ -15,21 +15,11 @@ use stancf::{
 use std::ops::ControlFlow;
 
 fn pvc() -> Material {
-    Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    }
+    Material::chen2023_pvc()
 }
 
 fn gutta_percha() -> Material {
-    Material {
-        youngs_modulus: 0.91e6,
-        density: 1202.0,
-        area: 1.075e-5,
-        second_moment: 9.15e-12,
-    }
+    Material::chen2023_gutta_percha()
 }
 
 fn settings(dt: f64, layers: usize, time_points: usize, tol: f64) -> StepSettings {

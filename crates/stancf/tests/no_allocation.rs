@@ -34,12 +34,7 @@ use stancf::{
 
 #[test]
 fn stepping_allocates_nothing() {
-    let material = Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    };
+    let material = Material::chen2023_pvc();
     for (kind, layers, constrained, method) in [
         (ElementType::Sac2, 1, false, ConstraintMethod::Multiplier),
         (ElementType::Sac3, 2, false, ConstraintMethod::Multiplier),

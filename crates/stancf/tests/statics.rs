@@ -195,12 +195,7 @@ fn cantilever(
 }
 
 fn pvc() -> Material {
-    Material {
-        youngs_modulus: 3.4e9,
-        density: 1380.0,
-        area: 3.0e-6,
-        second_moment: 1.25e-13,
-    }
+    Material::chen2023_pvc()
 }
 
 /// A small tip load P on the 1 m PVC cantilever: the tip deflection of
