@@ -197,7 +197,28 @@ struct Writers {
     nodes: AtomicFile,
     stress: AtomicFile,
     reactions: Option<AtomicFile>,
+    /// Per-step solver diagnostics and residual histories (dynamic runs).
+    solver: Option<(AtomicFile, AtomicFile)>,
     samples: Vec<StressSample>,
+}
+
+/// The wall clock the library's Part A / Part B split is timed with.
+struct WallClock(Instant);
+
+impl stancf::Clock for WallClock {
+    fn seconds(&self) -> f64 {
+        self.0.elapsed().as_secs_f64()
+    }
+}
+
+/// One step's solver diagnostics (solver.csv, convergence.csv).
+struct SolverRow<'a> {
+    t: f64,
+    step: usize,
+    report: &'a stancf::solver::NewtonReport,
+    residuals: &'a [f64],
+    part_a: f64,
+    part_b: f64,
 }
 
 /// One written state with what the solver says about it.
@@ -209,10 +230,13 @@ struct Row<'a> {
     increment: f64,
     /// Reactions to write with this row (none at t = 0 of a dynamic run).
     reactions: Option<&'a [(usize, [f64; 3])]>,
+    /// Work of moving constraints and of drag so far.
+    constraint_work: f64,
+    drag_work: f64,
 }
 
 impl Writers {
-    fn create(dir: &Path, with_reactions: bool) -> std::io::Result<Self> {
+    fn create(dir: &Path, with_reactions: bool, with_solver: bool) -> std::io::Result<Self> {
         let mut w = Writers {
             history: AtomicFile::create(dir, "history.csv")?,
             nodes: AtomicFile::create(dir, "nodes.csv")?,
@@ -222,12 +246,27 @@ impl Writers {
             } else {
                 None
             },
+            solver: if with_solver {
+                Some((
+                    AtomicFile::create(dir, "solver.csv")?,
+                    AtomicFile::create(dir, "convergence.csv")?,
+                ))
+            } else {
+                None
+            },
             samples: Vec::new(),
         };
         writeln!(
             w.history.writer(),
-            "t,kinetic,strain,gravity,total,iterations,residual,increment,load_potential"
+            "t,kinetic,strain,gravity,total,iterations,residual,increment,load_potential,constraint_work,drag_work"
         )?;
+        if let Some((solver, conv)) = w.solver.as_mut() {
+            writeln!(
+                solver.writer(),
+                "t,step,iterations,factorizations,residual,increment,convergence_rate,part_a_s,part_b_s"
+            )?;
+            writeln!(conv.writer(), "t,step,evaluation,residual")?;
+        }
         writeln!(w.nodes.writer(), "t,node,x,y,z")?;
         writeln!(w.stress.writer(), "t,s,axial_stress,curvature,element")?;
         if let Some(r) = w.reactions.as_mut() {
@@ -269,7 +308,7 @@ impl Writers {
         let t = Num(state.t);
         writeln!(
             self.history.writer(),
-            "{t},{},{},{},{},{},{},{},{}",
+            "{t},{},{},{},{},{},{},{},{},{},{}",
             Num(en.kinetic),
             Num(en.strain),
             Num(en.gravity),
@@ -277,7 +316,9 @@ impl Writers {
             row.iterations,
             Num(row.residual),
             Num(row.increment),
-            Num(en.load_potential)
+            Num(en.load_potential),
+            Num(row.constraint_work),
+            Num(row.drag_work)
         )?;
         let w = self.nodes.writer();
         for j in 0..model.nodes() {
@@ -304,7 +345,44 @@ impl Writers {
         Ok(())
     }
 
+    /// One step's solver diagnostics.
+    fn write_solver(&mut self, row: &SolverRow) -> std::io::Result<()> {
+        let Some((solver, conv)) = self.solver.as_mut() else {
+            return Ok(());
+        };
+        let rate = stancf::convergence_rate(row.residuals)
+            .map(|r| Num(r).to_string())
+            .unwrap_or_default();
+        let t = Num(row.t);
+        let (r, inc) = (row.report.residual, row.report.increment);
+        writeln!(
+            solver.writer(),
+            "{t},{},{},{},{},{},{rate},{},{}",
+            row.step,
+            row.report.iterations,
+            row.report.factorizations,
+            Num(if r.is_finite() { r } else { 0.0 }),
+            Num(if inc.is_finite() { inc } else { 0.0 }),
+            Num(row.part_a),
+            Num(row.part_b)
+        )?;
+        let w = conv.writer();
+        for (k, r) in row
+            .residuals
+            .iter()
+            .enumerate()
+            .filter(|(_, r)| r.is_finite())
+        {
+            writeln!(w, "{t},{},{k},{}", row.step, Num(*r))?;
+        }
+        Ok(())
+    }
+
     fn commit(self) -> std::io::Result<()> {
+        if let Some((solver, conv)) = self.solver {
+            solver.commit()?;
+            conv.commit()?;
+        }
         self.history.commit()?;
         self.nodes.commit()?;
         self.stress.commit()?;
@@ -326,6 +404,9 @@ struct Tally {
     energy_scale: f64,
     /// Largest |axial stress| over all samples and steps: (value, s, t).
     stress_peak: (f64, f64, f64),
+    /// Sum and count of the per-step convergence-rate estimates.
+    rate_sum: f64,
+    rate_steps: usize,
 }
 
 impl Tally {
@@ -454,10 +535,11 @@ fn run_dynamic(
     }
     let mut sim = Simulation::new(model, state, sc.step_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+    sim.set_clock(Box::new(WallClock(Instant::now())));
     let dir = output_dir(path, out);
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
     let constrained = !sim.model().constraints.is_empty();
-    let mut writers = Writers::create(&dir, constrained).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, constrained, true).map_err(io_err(&dir))?;
 
     let e0 = sim.energies();
     let first = Row {
@@ -467,6 +549,8 @@ fn run_dynamic(
         residual: 0.0,
         increment: 0.0,
         reactions: None,
+        constraint_work: 0.0,
+        drag_work: 0.0,
     };
     writers.write(sim.model(), &first).map_err(io_err(&dir))?;
     let mut tally = Tally {
@@ -479,12 +563,31 @@ fn run_dynamic(
     let mut io_failure: Option<std::io::Error> = None;
     let every = sc.output_every;
     let clock = Instant::now();
+    let mut last_timing = stancf::Timing::default();
     let result = stancf::run(&mut sim, sc.analysis.duration, |sim, rep, en| {
+        let timing = sim.timing();
+        let solver_row = SolverRow {
+            t: rep.t,
+            step: rep.step,
+            report: &rep.newton,
+            residuals: sim.residual_history(),
+            part_a: timing.part_a - last_timing.part_a,
+            part_b: timing.part_b - last_timing.part_b,
+        };
+        last_timing = timing;
+        if let Some(r) = stancf::convergence_rate(sim.residual_history()) {
+            tally.rate_sum += r;
+            tally.rate_steps += 1;
+        }
+        if let Err(e) = writers.write_solver(&solver_row) {
+            io_failure = Some(e);
+            return ControlFlow::Break(());
+        }
         tally.iterations += rep.newton.iterations;
         tally.factorizations += rep.newton.factorizations;
         tally.max_iterations = tally.max_iterations.max(rep.newton.iterations);
         tally.max_residual = tally.max_residual.max(rep.newton.residual);
-        let work = sim.constraint_work();
+        let work = sim.constraint_work() + sim.drag_work();
         let potential_change =
             (en.gravity - e0.gravity).abs() + (en.load_potential - e0.load_potential).abs();
         tally.energy_scale = tally
@@ -508,6 +611,8 @@ fn run_dynamic(
                 residual: rep.newton.residual,
                 increment: rep.newton.increment,
                 reactions: Some(sim.reactions()),
+                constraint_work: sim.constraint_work(),
+                drag_work: sim.drag_work(),
             };
             match writers.write(sim.model(), &row) {
                 Ok(()) => last_written = rep.step,
@@ -534,6 +639,8 @@ fn run_dynamic(
             residual,
             increment: 0.0,
             reactions: Some(sim.reactions()),
+            constraint_work: sim.constraint_work(),
+            drag_work: sim.drag_work(),
         };
         writers.write(sim.model(), &row).map_err(io_err(&dir))?;
     }
@@ -563,6 +670,26 @@ fn run_dynamic(
             "max_rel_drift": json_num(rel),
             "scale": json_num(tally.energy_scale),
             "constraint_work": json_num(sim.constraint_work()),
+            "drag_work": json_num(sim.drag_work()),
+        }),
+    );
+    let timing = sim.timing();
+    summary.insert(
+        "solver".into(),
+        json!({
+            "method": match sc.analysis.solver {
+                stancf::SolverMethod::Newton => "newton",
+                stancf::SolverMethod::Broyden => "broyden",
+            },
+            "factorizations": tally.factorizations,
+            "convergence_rate": if tally.rate_steps > 0 {
+                json_num(tally.rate_sum / tally.rate_steps as f64)
+            } else {
+                Value::Null
+            },
+            "convergence_rate_steps": tally.rate_steps,
+            "part_a_s": json_num(timing.part_a),
+            "part_b_s": json_num(timing.part_b),
         }),
     );
     let extra = json!({
@@ -591,12 +718,17 @@ fn run_dynamic(
         )));
     }
     println!(
-        "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} Newton iterations per step",
+        "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} {} iterations per step, {} factorizations",
         sc.title,
         steps,
         state.t,
         wall,
-        tally.iterations as f64 / steps.max(1) as f64
+        tally.iterations as f64 / steps.max(1) as f64,
+        match sc.analysis.solver {
+            stancf::SolverMethod::Newton => "Newton",
+            stancf::SolverMethod::Broyden => "Broyden",
+        },
+        tally.factorizations
     );
     println!(
         "energy: initial {:.9e} J, final {:.9e} J, max drift {:.3e} J ({:.3e} of the energy scale)",
@@ -635,7 +767,7 @@ fn run_static(
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     let dir = output_dir(path, out);
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
-    let mut writers = Writers::create(&dir, true).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, true, false).map_err(io_err(&dir))?;
     let e0 = static_energies(solver.model(), solver.state());
     let first = Row {
         state: solver.state(),
@@ -644,6 +776,8 @@ fn run_static(
         residual: 0.0,
         increment: 0.0,
         reactions: Some(solver.reactions()),
+        constraint_work: 0.0,
+        drag_work: 0.0,
     };
     writers
         .write(solver.model(), &first)
@@ -668,6 +802,8 @@ fn run_static(
             residual: inc.residual,
             increment: inc.increment,
             reactions: Some(s.reactions()),
+            constraint_work: 0.0,
+            drag_work: 0.0,
         };
         match writers.write(s.model(), &row) {
             Ok(()) => {

@@ -115,6 +115,19 @@ struct RawPointForce {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
+struct RawAirDrag {
+    #[serde(rename = "type")]
+    _kind: String,
+    drag_coefficient: Option<f64>,
+    fluid_density: Option<f64>,
+    diameter: Option<f64>,
+    fluid_velocity: Option<Vector>,
+    model: Option<String>,
+    tangential_coefficient: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawEndMoment {
     #[serde(rename = "type")]
     _kind: String,
@@ -187,6 +200,7 @@ pub struct Analysis {
     pub time_points: usize,
     pub tolerance: f64,
     pub max_iterations: usize,
+    pub solver: stancf::SolverMethod,
     pub load_steps: usize,
     pub constraint_method: stancf::ConstraintMethod,
 }
@@ -499,16 +513,61 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 });
             }
             "air-drag" => {
-                return Err(ctx.err(
-                    &format!("{key}.type"),
-                    format!("load type \"{kind}\" is not available in this version of stancf"),
-                ))
+                let d: RawAirDrag = value.try_into().map_err(de_err)?;
+                let nonneg = |name: &str, v: f64| -> Result<f64, ScenarioError> {
+                    let v = ctx.finite(&format!("{key}.{name}"), v)?;
+                    if v < 0.0 {
+                        return Err(ctx.err(&format!("{key}.{name}"), format!("must be >= 0, got {v}")));
+                    }
+                    Ok(v)
+                };
+                let c = nonneg(
+                    "drag_coefficient",
+                    ctx.required(&format!("{key}.drag_coefficient"), d.drag_coefficient)?,
+                )?;
+                let rho = nonneg(
+                    "fluid_density",
+                    ctx.required(&format!("{key}.fluid_density"), d.fluid_density)?,
+                )?;
+                let diameter = match d.diameter {
+                    Some(v) => ctx.positive(&format!("{key}.diameter"), v)?,
+                    None => diameter,
+                };
+                let fluid_velocity = match &d.fluid_velocity {
+                    Some(v) => ctx.vector(&format!("{key}.fluid_velocity"), v)?,
+                    None => [0.0; 3],
+                };
+                let model_name = ctx.choice(&format!("{key}.model"), d.model.as_deref(), "full", &["full", "normal"])?;
+                let model = match model_name {
+                    "normal" => stancf::loads::DragModel::Normal {
+                        tangential_coefficient: match d.tangential_coefficient {
+                            Some(v) => nonneg("tangential_coefficient", v)?,
+                            None => 0.0,
+                        },
+                    },
+                    _ => {
+                        if d.tangential_coefficient.is_some() {
+                            return Err(ctx.err(
+                                &format!("{key}.tangential_coefficient"),
+                                "only the \"normal\" drag model has a tangential coefficient",
+                            ));
+                        }
+                        stancf::loads::DragModel::Full
+                    }
+                };
+                loads.push(Load::AirDrag(stancf::loads::AirDrag {
+                    drag_coefficient: c,
+                    fluid_density: rho,
+                    diameter,
+                    fluid_velocity,
+                    model,
+                }));
             }
             other => {
                 return Err(ctx.err(
                     &format!("{key}.type"),
                     format!(
-                        "unknown load type \"{other}\" (expected \"gravity\", \"point-force\" or \"end-moment\")"
+                        "unknown load type \"{other}\" (expected \"gravity\", \"point-force\", \"end-moment\" or \"air-drag\")"
                     ),
                 ))
             }
@@ -639,19 +698,15 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             ))
         }
     };
-    ctx.choice(
+    let solver = match ctx.choice(
         "analysis.solver",
         ra.solver.as_deref(),
         "newton",
         &["newton", "broyden"],
-    )
-    .and_then(|s| match s {
-        "broyden" => Err(ctx.err(
-            "analysis.solver",
-            "\"broyden\" is not available in this version of stancf (use \"newton\")",
-        )),
-        _ => Ok(()),
-    })?;
+    )? {
+        "broyden" => stancf::SolverMethod::Broyden,
+        _ => stancf::SolverMethod::Newton,
+    };
     ctx.choice(
         "analysis.time_scheme",
         ra.time_scheme.as_deref(),
@@ -741,6 +796,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             time_points,
             tolerance,
             max_iterations,
+            solver,
             load_steps,
             constraint_method,
         },
@@ -849,6 +905,7 @@ impl Scenario {
             newton: stancf::NewtonSettings {
                 tolerance: self.analysis.tolerance,
                 max_iterations: self.analysis.max_iterations,
+                method: self.analysis.solver,
             },
             constraint_method: self.analysis.constraint_method,
         }

@@ -5,7 +5,7 @@
 //! cargo bench -p stancf --bench kernels
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use stancf::element::{CableElement, SlabDerivatives, SpaceRules, TimeSlab};
+use stancf::element::{CableElement, SlabDerivatives, SlabLoads, SpaceRules, TimeSlab};
 use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite};
 use stancf::{
@@ -61,7 +61,7 @@ fn element_kernel<const NS: usize, const ND: usize>(
     let mut block = [[0.0; ND]; ND];
     c.bench_function(name, |b| {
         b.iter(|| {
-            el.slab_derivatives(slab, black_box(&y), &g, true, &mut d);
+            el.slab_derivatives(slab, black_box(&y), &SlabLoads::gravity(g), true, &mut d);
             // The four blocks of a one-layer P2 step: rows e_a, e_b; columns e_b, v_b.
             for m in [0, 2] {
                 for n in [2, 3] {

@@ -32,7 +32,7 @@
 
 use crate::band::BandMatrix;
 use crate::constraints::ConstraintMethod;
-use crate::element::{CableElement, SlabDerivatives, TimeSlab};
+use crate::element::{CableElement, SlabDerivatives, SlabLoads, TimeSlab};
 use crate::loads::EndMoment;
 use crate::model::{gather, Model};
 
@@ -329,6 +329,8 @@ pub struct AssemblyScratch {
     /// Values of the eliminated rows, `[slot * dofs + g]`: the generalized
     /// reactions (elimination route).
     pub reaction_rows: Vec<f64>,
+    /// Work of the drag loads over the step (int int f . r_dot dx dt).
+    pub drag_work: f64,
 }
 
 impl AssemblyScratch {
@@ -341,6 +343,7 @@ impl AssemblyScratch {
             node_v: vec![0.0; layout.time_nodes() * n],
             mass_v_end: vec![0.0; n],
             reaction_rows: vec![0.0; layout.row_slots.len() * n],
+            drag_work: 0.0,
         }
     }
 }
@@ -434,6 +437,7 @@ impl StepProblem<'_> {
     ) {
         residual.fill(0.0);
         scratch.reaction_rows.fill(0.0);
+        scratch.drag_work = 0.0;
         if let Some(j) = jacobian.as_deref_mut() {
             j.clear();
         }
@@ -481,7 +485,10 @@ impl StepProblem<'_> {
         let n = self.model.dofs();
         let dpn = layout.dpn;
         let g = &self.model.gravity;
-        let gravity = g.map(|c| c * self.start.load_factor);
+        let loads = SlabLoads {
+            gravity: g.map(|c| c * self.start.load_factor),
+            drag: &self.model.drag,
+        };
         let mut block = [[0.0; ND]; ND];
         for j in 0..layout.layers() {
             let slots: [(usize, Kind); 4] = [
@@ -502,7 +509,8 @@ impl StepProblem<'_> {
                     };
                     y[m] = gather(src, i * n + o);
                 }
-                el.slab_derivatives(self.slab, &y, &gravity, jacobian.is_some(), derivs);
+                el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
+                scratch.drag_work += derivs.drag_work;
                 // Where each entry of the element's gradient goes, per slot.
                 let targets = row_slots.map(|rs| {
                     let mut out = [Target::Nothing; ND];
@@ -591,6 +599,16 @@ impl StepProblem<'_> {
             let q: [f64; ND] = gather(&scratch.node_e, o);
             let want = jacobian.is_some();
             el.strain_energy_derivatives(&q, &mut grad, if want { Some(&mut hess) } else { None });
+            // A cable at rest in a moving fluid: drag f(0, r_x) is a load.
+            for drag in &self.model.drag {
+                el.add_static_drag(
+                    drag,
+                    self.start.load_factor,
+                    &q,
+                    &mut grad,
+                    want.then_some(&mut hess),
+                );
+            }
             let fg = el.gravity_load(&gravity);
             for d in 0..ND {
                 let t = self.target(Some(0), o + d);

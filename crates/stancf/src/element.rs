@@ -391,6 +391,41 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         u
     }
 
+    /// Static drag (a cable at rest in a moving fluid): subtracts the
+    /// generalized force int N^T f(0, r_x) dx, times `factor`, from
+    /// `grad` (= dU/dq) and its derivative from `hess`.
+    pub fn add_static_drag(
+        &self,
+        drag: &crate::loads::AirDrag,
+        factor: f64,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) {
+        let mut hess = hess;
+        for p in &self.axial_points {
+            let (rx, _) = p.shape.gradients(q);
+            let (f, _, dx) = drag.force(&[0.0; 3], &rx);
+            for k in 0..NS {
+                for i in 0..3 {
+                    grad[3 * k + i] -= factor * p.wl * p.shape.n[k] * f[i];
+                }
+            }
+            if let Some(h) = hess.as_deref_mut() {
+                for k in 0..NS {
+                    for l in 0..NS {
+                        let b = factor * p.wl * p.shape.n[k] * p.shape.n_x[l];
+                        for i in 0..3 {
+                            for j in 0..3 {
+                                h[3 * k + i][3 * l + j] -= b * dx[i][j];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// `M q` for element coordinates (the mass matrix is M (x) I_3).
     pub fn mass_times(&self, q: &[f64; ND]) -> [f64; ND] {
         let mut out = [0.0; ND];
@@ -431,22 +466,38 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         action
     }
 
-    /// Gradient of the slab action with respect to `y` and, if
-    /// `with_hessian`, the strain-energy Hessians at the time points from
-    /// which every Hessian block follows (see [`SlabDerivatives`]).
+    /// Gradient of the slab action with respect to `y` (plus the virtual
+    /// work of the drag loads, eq. 17) and, if `with_hessian`, the
+    /// matrices at the time points from which every block of its Jacobian
+    /// follows (see [`SlabDerivatives`] and [`Self::slab_hessian_block`]).
+    ///
+    /// Drag, per unit length f(r_dot, r_x), integrated with the axial rule:
+    ///
+    /// ```text
+    ///   dW/dy_m   = sum_g w_g dt phi_m sum_s w_s l N_k f
+    ///   C_g = sum_s w_s l N_k N_l df/dr_dot,   G_g = sum_s w_s l N_k N_x,l df/dr_x
+    ///   block_mn += sum_g w_g dt phi_m (phidot_n C_g + phi_n G_g)
+    /// ```
     pub fn slab_derivatives(
         &self,
         slab: &TimeSlab,
         y: &[[f64; ND]; 4],
-        g: &[f64; 3],
+        loads: &SlabLoads,
         with_hessian: bool,
         out: &mut SlabDerivatives<ND>,
     ) {
-        let fg = self.gravity_load(g);
+        let fg = self.gravity_load(&loads.gravity);
         out.grad = [[0.0; ND]; 4];
         out.action = 0.0;
-        if out.k_at_points.len() < slab.points.len() {
-            out.k_at_points.resize(slab.points.len(), [[0.0; ND]; ND]);
+        out.drag_work = 0.0;
+        out.has_drag = !loads.drag.is_empty();
+        let np = slab.points.len();
+        if out.k_at_points.len() < np {
+            out.k_at_points.resize(np, [[0.0; ND]; ND]);
+        }
+        if out.has_drag && with_hessian && out.c_at_points.len() < np {
+            out.c_at_points.resize(np, [[0.0; ND]; ND]);
+            out.g_at_points.resize(np, [[0.0; ND]; ND]);
         }
         let mut du = [0.0; ND];
         for (gi, tp) in slab.points.iter().enumerate() {
@@ -459,11 +510,53 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             };
             let strain = self.strain_energy_derivatives(&q, &mut du, hess);
             out.action += tp.w_dt * (0.5 * dot_n(&qdot, &mq) - strain + dot_n(&fg, &q));
+            // Generalized drag force on q at this time point: f_q = sum N_k f.
+            let mut fq = [0.0; ND];
+            if out.has_drag {
+                if with_hessian {
+                    out.c_at_points[gi] = [[0.0; ND]; ND];
+                    out.g_at_points[gi] = [[0.0; ND]; ND];
+                }
+                for drag in loads.drag {
+                    for p in &self.axial_points {
+                        let (rx, _) = p.shape.gradients(&q);
+                        let mut rdot = [0.0; 3];
+                        for k in 0..NS {
+                            for i in 0..3 {
+                                rdot[i] += p.shape.n[k] * qdot[3 * k + i];
+                            }
+                        }
+                        let (f, dv, dx) = drag.force(&rdot, &rx);
+                        out.drag_work +=
+                            tp.w_dt * p.wl * (f[0] * rdot[0] + f[1] * rdot[1] + f[2] * rdot[2]);
+                        for k in 0..NS {
+                            for i in 0..3 {
+                                fq[3 * k + i] += p.wl * p.shape.n[k] * f[i];
+                            }
+                        }
+                        if with_hessian {
+                            let (c, g) = (&mut out.c_at_points[gi], &mut out.g_at_points[gi]);
+                            for k in 0..NS {
+                                for l in 0..NS {
+                                    let a = p.wl * p.shape.n[k] * p.shape.n[l];
+                                    let b = p.wl * p.shape.n[k] * p.shape.n_x[l];
+                                    for i in 0..3 {
+                                        for j in 0..3 {
+                                            c[3 * k + i][3 * l + j] += a * dv[i][j];
+                                            g[3 * k + i][3 * l + j] += b * dx[i][j];
+                                        }
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
             for m in 0..4 {
                 let a = tp.w_dt * tp.shape.t_dot[m];
                 let b = tp.w_dt * tp.shape.t[m];
                 for d in 0..ND {
-                    out.grad[m][d] += a * mq[d] - b * (du[d] - fg[d]);
+                    out.grad[m][d] += a * mq[d] - b * (du[d] - fg[d] - fq[d]);
                 }
             }
         }
@@ -499,6 +592,18 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 }
             }
         }
+        if derivs.has_drag {
+            for (gi, tp) in slab.points.iter().enumerate() {
+                let a = tp.w_dt * tp.shape.t[m] * tp.shape.t_dot[n];
+                let b = tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
+                let (c, g) = (&derivs.c_at_points[gi], &derivs.g_at_points[gi]);
+                for (orow, (crow, grow)) in out.iter_mut().zip(c.iter().zip(g.iter())) {
+                    for (o, (cv, gv)) in orow.iter_mut().zip(crow.iter().zip(grow.iter())) {
+                        *o += a * cv + b * gv;
+                    }
+                }
+            }
+        }
     }
 }
 
@@ -506,12 +611,18 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
 /// quadrature points, for one element and one slab.
 #[derive(Clone, Debug)]
 pub struct SlabDerivatives<const ND: usize> {
-    /// A^e (for diagnostics and tests).
+    /// A^e without the drag (for diagnostics and tests).
     pub action: f64,
-    /// dA^e/dy_m for m = e_a, v_a, e_b, v_b.
+    /// dA^e/dy_m (with the drag's virtual work) for m = e_a, v_a, e_b, v_b.
     pub grad: [[f64; ND]; 4],
     /// d2U/dq2 at q(t_g), one per time Gauss point.
     pub k_at_points: Vec<[[f64; ND]; ND]>,
+    /// Drag: whether there is any, int f . r_dot over the slab (its work,
+    /// negative in still air), and the matrices C_g, G_g per time point.
+    pub has_drag: bool,
+    pub drag_work: f64,
+    pub c_at_points: Vec<[[f64; ND]; ND]>,
+    pub g_at_points: Vec<[[f64; ND]; ND]>,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -520,6 +631,28 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             action: 0.0,
             grad: [[0.0; ND]; 4],
             k_at_points: Vec::new(),
+            has_drag: false,
+            drag_work: 0.0,
+            c_at_points: Vec::new(),
+            g_at_points: Vec::new(),
+        }
+    }
+}
+
+/// The distributed loads an element sees in a slab: gravity (eq. 13) and
+/// air drag (eq. 17).
+#[derive(Clone, Copy, Debug)]
+pub struct SlabLoads<'a> {
+    pub gravity: [f64; 3],
+    pub drag: &'a [crate::loads::AirDrag],
+}
+
+impl SlabLoads<'_> {
+    /// Gravity only.
+    pub fn gravity(g: [f64; 3]) -> SlabLoads<'static> {
+        SlabLoads {
+            gravity: g,
+            drag: &[],
         }
     }
 }

@@ -18,7 +18,9 @@ use crate::observe::{energies, Energies};
 use crate::quadrature::GaussRule;
 use std::ops::ControlFlow;
 
-use crate::solver::{newton, NewtonReport, NewtonSettings, NewtonWorkspace, NonlinearSystem};
+use crate::solver::{
+    solve, Clock, NewtonReport, NewtonSettings, NewtonWorkspace, NonlinearSystem, Timing,
+};
 
 /// How a step is taken.
 #[derive(Clone, Debug, PartialEq)]
@@ -97,10 +99,14 @@ pub struct Simulation {
     reactions: Vec<(usize, [f64; 3])>,
     /// Work done on the cable by the constraints (prescribed motion).
     constraint_work: f64,
+    /// Work done on the cable by the drag loads (negative in still air).
+    drag_work: f64,
     /// Unwrapped angles of the end moments.
     moment_angles: Vec<MomentAngle>,
     /// What is needed to undo the last step.
     previous: Undo,
+    /// Wall clock for the Part A / Part B split of eq. (32), if given.
+    clock: Option<Box<dyn Clock>>,
 }
 
 #[derive(Clone, Debug)]
@@ -108,6 +114,7 @@ struct Undo {
     state: State,
     acceleration: Vec<f64>,
     constraint_work: f64,
+    drag_work: f64,
     moment_angles: Vec<MomentAngle>,
     reactions: Vec<(usize, [f64; 3])>,
 }
@@ -204,6 +211,7 @@ impl Simulation {
             state: initial.clone(),
             acceleration: vec![0.0; n],
             constraint_work: 0.0,
+            drag_work: 0.0,
             moment_angles: moment_angles.clone(),
             reactions: reactions.clone(),
         };
@@ -223,9 +231,22 @@ impl Simulation {
             steps: 0,
             reactions,
             constraint_work: 0.0,
+            drag_work: 0.0,
             moment_angles,
             previous,
+            clock: None,
         })
+    }
+
+    /// Times Part A (element evaluation and assembly) and Part B (linear
+    /// algebra) of every step with this clock (eq. 32).
+    pub fn set_clock(&mut self, clock: Box<dyn Clock>) {
+        self.clock = Some(clock);
+    }
+
+    /// Accumulated Part A / Part B times (zero without a clock).
+    pub fn timing(&self) -> Timing {
+        self.workspace.timing
     }
 
     pub fn model(&self) -> &Model {
@@ -274,6 +295,12 @@ impl Simulation {
         self.constraint_work
     }
 
+    /// Work done on the cable by the drag loads so far: the slab integral
+    /// of f . r_dot over every step (negative in still air).
+    pub fn drag_work(&self) -> f64 {
+        self.drag_work
+    }
+
     /// Energies of the current state; `load_potential` includes -M theta
     /// of the end moments with theta followed continuously.
     pub fn energies(&self) -> Energies {
@@ -295,6 +322,7 @@ impl Simulation {
         let h = dt / self.settings.time_layers as f64;
         self.slab = TimeSlab::new(h, &self.time_rule);
         self.scales = Scales::new(&self.model, &self.layout, h);
+        self.workspace.factors_valid = false;
     }
 
     /// Predictor: Taylor expansion with the last step's acceleration,
@@ -335,6 +363,7 @@ impl Simulation {
         self.acceleration
             .copy_from_slice(&self.previous.acceleration);
         self.constraint_work = self.previous.constraint_work;
+        self.drag_work = self.previous.drag_work;
         self.moment_angles
             .copy_from_slice(&self.previous.moment_angles);
         self.reactions.copy_from_slice(&self.previous.reactions);
@@ -362,11 +391,12 @@ impl Simulation {
             scales: &self.scales,
             scratch: &mut self.scratch,
         };
-        let result = newton(
+        let result = solve(
             &mut system,
             &mut self.x,
             &self.settings.newton,
             &mut self.workspace,
+            self.clock.as_deref(),
         );
         let report = match result {
             Ok(r) => r,
@@ -386,6 +416,7 @@ impl Simulation {
             .acceleration
             .copy_from_slice(&self.acceleration);
         self.previous.constraint_work = self.constraint_work;
+        self.previous.drag_work = self.drag_work;
         self.previous
             .moment_angles
             .copy_from_slice(&self.moment_angles);
@@ -398,9 +429,11 @@ impl Simulation {
             slab: &self.slab,
             start: &self.start,
         };
-        if self.layout.method == ConstraintMethod::Elimination && !self.model.constraints.is_empty()
-        {
+        let eliminated = self.layout.method == ConstraintMethod::Elimination
+            && !self.model.constraints.is_empty();
+        if eliminated || !self.model.drag.is_empty() {
             problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);
+            self.drag_work += self.scratch.drag_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);
         }
@@ -459,10 +492,11 @@ impl Simulation {
 ///
 /// The cable under gravity, constant point forces and end moments
 /// conserves E = T + U + V_g + V_F; P2 keeps it within a bounded
-/// oscillation when the step is stable. Moving constraints add their work
-/// W. A change of E - W by more than `ratio` times the energy scale of the
-/// motion so far (the largest T + U seen, plus the largest change of the
-/// potentials and the largest |W|) can only come from an unstable step.
+/// oscillation when the step is stable. Moving constraints and drag add
+/// their work W. A rise of E - W by more than `ratio` times the energy
+/// scale of the motion so far (the largest T + U seen, plus the largest
+/// change of the potentials and the largest |W|) can only come from an
+/// unstable step.
 #[derive(Clone, Debug)]
 pub struct EnergyWatch {
     pub ratio: f64,
@@ -484,18 +518,17 @@ impl EnergyWatch {
         self.scale
     }
 
-    /// Records a state's energies and the work of the constraints so far;
-    /// Err(drift) if the energy grew without a source.
-    pub fn check(&mut self, en: &Energies, constraint_work: f64) -> Result<(), f64> {
+    /// Records a state's energies and the work of the constraints and the
+    /// drag so far; Err(drift) if the energy grew without a source.
+    pub fn check(&mut self, en: &Energies, external_work: f64) -> Result<(), f64> {
         let potential_change = (en.gravity - self.initial.gravity).abs()
             + (en.load_potential - self.initial.load_potential).abs();
         self.scale = self
             .scale
-            .max(en.kinetic.abs() + en.strain.abs() + potential_change + constraint_work.abs());
-        let drift = en.mechanical() - self.initial.mechanical() - constraint_work;
-        let floor = 1e3
-            * f64::EPSILON
-            * (en.magnitude() + self.initial.magnitude() + constraint_work.abs());
+            .max(en.kinetic.abs() + en.strain.abs() + potential_change + external_work.abs());
+        let drift = en.mechanical() - self.initial.mechanical() - external_work;
+        let floor =
+            1e3 * f64::EPSILON * (en.magnitude() + self.initial.magnitude() + external_work.abs());
         if drift > self.ratio * self.scale && drift > floor {
             Err(drift)
         } else {
@@ -552,11 +585,11 @@ where
                 sim,
             ));
         }
-        if let Err(drift) = watch.check(&en, sim.constraint_work) {
+        if let Err(drift) = watch.check(&en, sim.constraint_work + sim.drag_work) {
             sim.undo_last_step();
             let detail = format!(
                 "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
-                en.mechanical() - sim.constraint_work,
+                en.mechanical() - sim.constraint_work - sim.drag_work,
                 drift,
                 watch.initial.mechanical()
             );

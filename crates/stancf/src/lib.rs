@@ -48,7 +48,7 @@ pub use error::{FailureKind, ModelError, SolverError};
 pub use integrator::{run, Simulation, StepReport, StepSettings};
 pub use model::{Cable, ElementType, Load, Material, Model, ModelOptions, SpacePoints, State};
 pub use observe::{energies, Energies};
-pub use solver::NewtonSettings;
+pub use solver::{convergence_rate, Clock, NewtonSettings, SolverMethod, Timing};
 pub use statics::{StaticSettings, StaticSolver};
 
 /// The README's Rust example, compiled and run as a doc test.

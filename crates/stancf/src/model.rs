@@ -170,6 +170,8 @@ pub enum Load {
     /// Moment vector M n (N m) on the tangent r_x of a node, eqs. (15)-(16):
     /// work M theta, theta the rotation of r_x about n (see [`crate::loads`]).
     EndMoment { node: usize, moment: [f64; 3] },
+    /// Air drag along the whole cable, eq. (17) (see [`crate::loads::AirDrag`]).
+    AirDrag(crate::loads::AirDrag),
 }
 
 /// Gauss points per element in space for the axial and the bending
@@ -219,6 +221,8 @@ pub struct Model {
     pub mesh: Mesh,
     /// Sum of the gravity loads.
     pub gravity: [f64; 3],
+    /// The drag loads.
+    pub drag: Vec<crate::loads::AirDrag>,
     /// Constraints, resolved to coordinates (none for a free cable).
     pub constraints: Constraints,
 }
@@ -314,8 +318,33 @@ impl Model {
                 .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?,
         };
         let mut gravity = [0.0; 3];
+        let mut drag = Vec::new();
         for (i, load) in loads.iter().enumerate() {
             match load {
+                Load::AirDrag(d) => {
+                    let k = format!("loads[{i}]");
+                    let nonneg = |name: &str, v: f64| -> Result<(), ModelError> {
+                        if v.is_finite() && v >= 0.0 {
+                            Ok(())
+                        } else {
+                            Err(ModelError::invalid(
+                                format!("{k}.{name}"),
+                                format!("must be a finite number >= 0, got {v}"),
+                            ))
+                        }
+                    };
+                    nonneg("drag_coefficient", d.drag_coefficient)?;
+                    nonneg("fluid_density", d.fluid_density)?;
+                    check_positive(&format!("{k}.diameter"), d.diameter)?;
+                    check_vector(&format!("{k}.fluid_velocity"), &d.fluid_velocity)?;
+                    if let crate::loads::DragModel::Normal {
+                        tangential_coefficient,
+                    } = d.model
+                    {
+                        nonneg("tangential_coefficient", tangential_coefficient)?;
+                    }
+                    drag.push(*d);
+                }
                 Load::Gravity { acceleration } => {
                     check_vector(&format!("loads[{i}].acceleration"), acceleration)?;
                     for c in 0..3 {
@@ -363,6 +392,7 @@ impl Model {
             loads,
             mesh,
             gravity,
+            drag,
             constraints: Constraints {
                 motion: vec![None; nodes * cable.element_type.dofs_per_node()],
                 ..Constraints::default()

@@ -1,11 +1,27 @@
-//! Newton-Raphson on a banded nonlinear system, eq. (25), with the exact
-//! Jacobian, and the convergence test of eq. (26) plus a residual test.
+//! Nonlinear solvers on a banded system: Newton-Raphson with the exact
+//! Jacobian, eq. (25), and Broyden's rank-one method, eq. (27), with the
+//! convergence test of eq. (26) plus a residual test.
 //!
 //! Convergence (both norms scaled, see [`crate::assembly::Scales`]): the
 //! scaled residual is at most `tolerance`, and so is the last increment.
 //! When the residual is already small but the last Newton increment was
 //! not, one chord step with the factors in hand (a back-substitution, no
 //! new Jacobian) confirms the increment. Nothing here allocates.
+//!
+//! Broyden (eq. 27 is garbled in the paper; method notes: the "good"
+//! update of the inverse). With B ~ J^-1, s the step and y the change of
+//! residual,
+//!
+//! ```text
+//!   B+ = B + (s - B y) s^T B / (s^T B y) = (I + a s^T) B,   a = (s - B y) / (s^T B y)
+//! ```
+//!
+//! so B_k = (I + a_{k-1} s_{k-1}^T) ... (I + a_0 s_0^T) J0^-1 is applied as a
+//! back-substitution with the band LU of J0 followed by k rank-one
+//! corrections; no dense inverse is formed. J0 is the exact Jacobian, kept
+//! across steps while the iteration contracts (each residual at most half
+//! the previous one); when it stops contracting, the Jacobian is rebuilt
+//! and factorized at the current iterate and the corrections dropped.
 
 use crate::band::{BandLu, BandMatrix};
 use crate::error::FailureKind;
@@ -20,11 +36,22 @@ pub trait NonlinearSystem {
     fn increment_norm(&self, dx: &[f64]) -> f64;
 }
 
-/// Tolerance and iteration limit.
+/// Which nonlinear solver a step uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum SolverMethod {
+    /// Newton-Raphson with the exact Jacobian, eq. (25).
+    #[default]
+    Newton,
+    /// Broyden rank one, eq. (27) (the "good" update of the inverse).
+    Broyden,
+}
+
+/// Tolerance, iteration limit and method.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NewtonSettings {
     pub tolerance: f64,
     pub max_iterations: usize,
+    pub method: SolverMethod,
 }
 
 impl Default for NewtonSettings {
@@ -32,8 +59,24 @@ impl Default for NewtonSettings {
         NewtonSettings {
             tolerance: 1e-10,
             max_iterations: 50,
+            method: SolverMethod::Newton,
         }
     }
+}
+
+/// A source of wall-clock time in seconds, injected by the caller: the
+/// library itself never reads the clock.
+pub trait Clock {
+    fn seconds(&self) -> f64;
+}
+
+/// Time spent in the two parts of eq. (32): Part A evaluates the elements
+/// and assembles residual and Jacobian, Part B factorizes and solves (and
+/// applies Broyden's corrections).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Timing {
+    pub part_a: f64,
+    pub part_b: f64,
 }
 
 /// How one solve went.
@@ -56,17 +99,29 @@ pub struct NewtonFailure {
     pub report: NewtonReport,
 }
 
-/// Buffers of a Newton solve, sized once for a system.
+/// Buffers of a Newton or Broyden solve, sized once for a system.
 #[derive(Clone, Debug)]
 pub struct NewtonWorkspace {
     pub lu: BandLu,
     residual: Vec<f64>,
     dx: Vec<f64>,
     /// A residual-sized buffer for the caller (e.g. a last evaluation at
-    /// the solution); Newton does not touch it.
+    /// the solution); the solvers do not touch it.
     pub spare: Vec<f64>,
     /// Scaled residual norm of every evaluation of the last solve.
     pub residual_history: Vec<f64>,
+    /// Whether `lu` holds factors Broyden may start from (the caller
+    /// clears it when the system changes, e.g. with the step length).
+    pub factors_valid: bool,
+    /// Broyden: previous residual, y, B y, and the rank-one factors (a, s).
+    previous: Vec<f64>,
+    y: Vec<f64>,
+    by: Vec<f64>,
+    updates_a: Vec<Vec<f64>>,
+    updates_s: Vec<Vec<f64>>,
+    updates: usize,
+    /// Accumulated Part A / Part B times (with a clock).
+    pub timing: Timing,
 }
 
 impl NewtonWorkspace {
@@ -77,23 +132,226 @@ impl NewtonWorkspace {
             dx: vec![0.0; n],
             spare: vec![0.0; n],
             residual_history: Vec::with_capacity(2 * max_iterations + 2),
+            factors_valid: false,
+            previous: Vec::new(),
+            y: Vec::new(),
+            by: Vec::new(),
+            updates_a: Vec::new(),
+            updates_s: Vec::new(),
+            updates: 0,
+            timing: Timing::default(),
+        }
+    }
+
+    /// Allocates Broyden's buffers (once).
+    fn prepare_broyden(&mut self, max_iterations: usize) {
+        let n = self.residual.len();
+        if self.updates_a.len() < max_iterations {
+            self.previous = vec![0.0; n];
+            self.y = vec![0.0; n];
+            self.by = vec![0.0; n];
+            self.updates_a = vec![vec![0.0; n]; max_iterations];
+            self.updates_s = vec![vec![0.0; n]; max_iterations];
+        }
+    }
+
+    /// v <- B v: back-substitution with J0, then the rank-one factors.
+    fn apply_inverse(lu: &BandLu, a: &[Vec<f64>], s: &[Vec<f64>], k: usize, v: &mut [f64]) {
+        lu.solve(v);
+        for i in 0..k {
+            let c: f64 = s[i].iter().zip(v.iter()).map(|(p, q)| p * q).sum();
+            if c != 0.0 {
+                for (vj, aj) in v.iter_mut().zip(a[i].iter()) {
+                    *vj += c * aj;
+                }
+            }
         }
     }
 }
 
-/// Solves R(x) = 0 from the guess in `x`.
+/// The convergence-rate estimate of the paper's Table 7 (method notes),
+/// log(r_{k+1} / r_k) / log(r_k / r_{k-1}), from the last three residual
+/// norms of an iteration: about 2 for Newton's quadratic convergence, 1 for
+/// linear, in between for Broyden's superlinear. None with fewer than three
+/// residuals, a zero residual, or a stalled one (r_k = r_{k-1}).
+pub fn convergence_rate(residuals: &[f64]) -> Option<f64> {
+    let n = residuals.len();
+    if n < 3 {
+        return None;
+    }
+    let (a, b, c) = (residuals[n - 3], residuals[n - 2], residuals[n - 1]);
+    if !(a > 0.0 && b > 0.0 && c > 0.0) || a == b {
+        return None;
+    }
+    let rate = (c / b).ln() / (b / a).ln();
+    rate.is_finite().then_some(rate)
+}
+
+/// Seconds from an optional clock (0 without one).
+fn now(clock: Option<&dyn Clock>) -> f64 {
+    clock.map_or(0.0, |c| c.seconds())
+}
+
+/// Solves R(x) = 0 by the method of `settings`, timing Parts A and B with
+/// `clock` if given.
+pub fn solve<S: NonlinearSystem>(
+    system: &mut S,
+    x: &mut [f64],
+    settings: &NewtonSettings,
+    ws: &mut NewtonWorkspace,
+    clock: Option<&dyn Clock>,
+) -> Result<NewtonReport, NewtonFailure> {
+    match settings.method {
+        SolverMethod::Newton => newton(system, x, settings, ws, clock),
+        SolverMethod::Broyden => broyden(system, x, settings, ws, clock),
+    }
+}
+
+/// Broyden's rank-one method (see the module documentation).
+pub fn broyden<S: NonlinearSystem>(
+    system: &mut S,
+    x: &mut [f64],
+    settings: &NewtonSettings,
+    ws: &mut NewtonWorkspace,
+    clock: Option<&dyn Clock>,
+) -> Result<NewtonReport, NewtonFailure> {
+    let tol = settings.tolerance;
+    let mut report = NewtonReport::default();
+    ws.prepare_broyden(settings.max_iterations);
+    ws.residual_history.clear();
+    ws.updates = 0;
+    let fail = |kind, report| Err(NewtonFailure { kind, report });
+    let t0 = now(clock);
+    system.evaluate(x, &mut ws.residual, None);
+    ws.timing.part_a += now(clock) - t0;
+    let mut r = system.residual_norm(&ws.residual);
+    report.residual = r;
+    ws.residual_history.push(r);
+    if !r.is_finite() {
+        return fail(FailureKind::NonFinite, report);
+    }
+    if r <= tol {
+        return Ok(report);
+    }
+    let mut refactorize = !ws.factors_valid;
+    loop {
+        if refactorize {
+            if report.factorizations >= settings.max_iterations {
+                return fail(FailureKind::NotConverged, report);
+            }
+            let t0 = now(clock);
+            system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
+            let t1 = now(clock);
+            ws.timing.part_a += t1 - t0;
+            report.factorizations += 1;
+            ws.updates = 0;
+            let ok = ws.lu.factorize().is_ok();
+            ws.timing.part_b += now(clock) - t1;
+            if !ok {
+                ws.factors_valid = false;
+                return fail(FailureKind::SingularJacobian, report);
+            }
+            ws.factors_valid = true;
+            refactorize = false;
+        }
+        if report.iterations >= settings.max_iterations {
+            return fail(FailureKind::NotConverged, report);
+        }
+        // dx = B R; x <- x - dx; s = -dx.
+        let t0 = now(clock);
+        ws.dx.copy_from_slice(&ws.residual);
+        NewtonWorkspace::apply_inverse(
+            &ws.lu,
+            &ws.updates_a,
+            &ws.updates_s,
+            ws.updates,
+            &mut ws.dx,
+        );
+        for (xi, d) in x.iter_mut().zip(ws.dx.iter()) {
+            *xi -= d;
+        }
+        ws.timing.part_b += now(clock) - t0;
+        report.iterations += 1;
+        report.increment = system.increment_norm(&ws.dx);
+        ws.previous.copy_from_slice(&ws.residual);
+        let t0 = now(clock);
+        system.evaluate(x, &mut ws.residual, None);
+        ws.timing.part_a += now(clock) - t0;
+        let r_new = system.residual_norm(&ws.residual);
+        report.residual = r_new;
+        if ws.residual_history.len() < ws.residual_history.capacity() {
+            ws.residual_history.push(r_new);
+        }
+        if !r_new.is_finite() || !report.increment.is_finite() {
+            ws.factors_valid = false;
+            return fail(FailureKind::NonFinite, report);
+        }
+        if r_new <= tol && report.increment <= tol {
+            return Ok(report);
+        }
+        if r_new > 0.5 * r || ws.updates == ws.updates_a.len() {
+            // Not contracting (or out of room): a fresh Jacobian here.
+            refactorize = true;
+            r = r_new;
+            continue;
+        }
+        // y = R_new - R_old; B y; a = (s - B y) / (s . B y) with s = -dx.
+        let t0 = now(clock);
+        for ((y, rn), ro) in
+            ws.y.iter_mut()
+                .zip(ws.residual.iter())
+                .zip(ws.previous.iter())
+        {
+            *y = rn - ro;
+        }
+        ws.by.copy_from_slice(&ws.y);
+        NewtonWorkspace::apply_inverse(
+            &ws.lu,
+            &ws.updates_a,
+            &ws.updates_s,
+            ws.updates,
+            &mut ws.by,
+        );
+        let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
+        let k = ws.updates;
+        if denom.abs() <= f64::EPSILON * 1e3 {
+            refactorize = true;
+        } else {
+            for (((a, s), d), b) in ws.updates_a[k]
+                .iter_mut()
+                .zip(ws.updates_s[k].iter_mut())
+                .zip(ws.dx.iter())
+                .zip(ws.by.iter())
+            {
+                *s = -d;
+                *a = (-d - b) / denom;
+            }
+            ws.updates += 1;
+        }
+        ws.timing.part_b += now(clock) - t0;
+        r = r_new;
+    }
+}
+
+/// Newton's method from the guess in `x` (see the module documentation).
 pub fn newton<S: NonlinearSystem>(
     system: &mut S,
     x: &mut [f64],
     settings: &NewtonSettings,
     ws: &mut NewtonWorkspace,
+    clock: Option<&dyn Clock>,
 ) -> Result<NewtonReport, NewtonFailure> {
     let tol = settings.tolerance;
     let mut report = NewtonReport::default();
     ws.residual_history.clear();
+    // Newton's factors are of the last iterate's Jacobian, not a Broyden
+    // start for the next solve.
+    ws.factors_valid = false;
     let fail = |kind, report| Err(NewtonFailure { kind, report });
     loop {
+        let t0 = now(clock);
         system.evaluate(x, &mut ws.residual, None);
+        ws.timing.part_a += now(clock) - t0;
         let r = system.residual_norm(&ws.residual);
         report.residual = r;
         if ws.residual_history.len() < ws.residual_history.capacity() {
@@ -107,11 +365,13 @@ pub fn newton<S: NonlinearSystem>(
                 return Ok(report);
             }
             // Confirm with a chord step on the factors in hand.
+            let t0 = now(clock);
             ws.dx.copy_from_slice(&ws.residual);
             ws.lu.solve(&mut ws.dx);
             for (xi, d) in x.iter_mut().zip(ws.dx.iter()) {
                 *xi -= d;
             }
+            ws.timing.part_b += now(clock) - t0;
             report.iterations += 1;
             report.increment = system.increment_norm(&ws.dx);
             if report.increment <= tol {
@@ -122,7 +382,10 @@ pub fn newton<S: NonlinearSystem>(
         if report.factorizations >= settings.max_iterations {
             return fail(FailureKind::NotConverged, report);
         }
+        let t0 = now(clock);
         system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
+        let t1 = now(clock);
+        ws.timing.part_a += t1 - t0;
         report.factorizations += 1;
         if ws.lu.factorize().is_err() {
             return fail(FailureKind::SingularJacobian, report);
@@ -132,6 +395,7 @@ pub fn newton<S: NonlinearSystem>(
         for (xi, d) in x.iter_mut().zip(ws.dx.iter()) {
             *xi -= d;
         }
+        ws.timing.part_b += now(clock) - t1;
         report.iterations += 1;
         report.increment = system.increment_norm(&ws.dx);
         if !report.increment.is_finite() {
@@ -186,7 +450,7 @@ mod tests {
         };
         let mut x = vec![0.0; n];
         let mut ws = NewtonWorkspace::new(n, 1, 1, 50);
-        let rep = newton(&mut sys, &mut x, &NewtonSettings::default(), &mut ws).unwrap();
+        let rep = newton(&mut sys, &mut x, &NewtonSettings::default(), &mut ws, None).unwrap();
         let mut r = vec![0.0; n];
         sys.evaluate(&x, &mut r, None);
         assert!(sys.residual_norm(&r) < 1e-12);
@@ -200,6 +464,51 @@ mod tests {
         }
     }
 
+    /// Broyden converges to the same root, superlinearly, with fewer
+    /// factorizations than Newton, and reuses its factors for a nearby
+    /// system.
+    #[test]
+    fn broyden_finds_the_same_root_with_fewer_factorizations() {
+        let n = 20;
+        let c: Vec<f64> = (0..n).map(|i| 1.0 + 0.1 * i as f64).collect();
+        let settings = NewtonSettings {
+            tolerance: 1e-12,
+            max_iterations: 50,
+            method: SolverMethod::Broyden,
+        };
+        let mut sys = Cubic { c: c.clone() };
+        let mut xb = vec![0.8; n];
+        let mut ws = NewtonWorkspace::new(n, 1, 1, 50);
+        let rb = broyden(&mut sys, &mut xb, &settings, &mut ws, None).unwrap();
+        let mut xn = vec![0.8; n];
+        let mut wn = NewtonWorkspace::new(n, 1, 1, 50);
+        let rn = newton(&mut sys, &mut xn, &NewtonSettings::default(), &mut wn, None).unwrap();
+        let diff = xb
+            .iter()
+            .zip(&xn)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(diff < 1e-11, "{diff}");
+        assert!(rb.factorizations < rn.factorizations, "{rb:?} vs {rn:?}");
+        // A nearby system starts from the factors in hand.
+        sys.c.iter_mut().for_each(|v| *v += 1e-4);
+        let rb2 = broyden(&mut sys, &mut xb, &settings, &mut ws, None).unwrap();
+        assert!(rb2.factorizations <= 1, "{rb2:?}");
+        let mut r = vec![0.0; n];
+        sys.evaluate(&xb, &mut r, None);
+        assert!(sys.residual_norm(&r) < 1e-12);
+    }
+
+    #[test]
+    fn convergence_rate_of_model_sequences() {
+        let quadratic = [1e-1, 1e-2, 1e-4, 1e-8];
+        assert!((convergence_rate(&quadratic).unwrap() - 2.0).abs() < 1e-12);
+        let linear = [1.0, 0.5, 0.25];
+        assert!((convergence_rate(&linear).unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(convergence_rate(&[1.0, 0.1]), None);
+        assert_eq!(convergence_rate(&[1.0, 0.1, 0.0]), None);
+    }
+
     #[test]
     fn reports_non_convergence() {
         let n = 3;
@@ -209,8 +518,9 @@ mod tests {
         let s = NewtonSettings {
             tolerance: 1e-12,
             max_iterations: 3,
+            ..NewtonSettings::default()
         };
-        let err = newton(&mut sys, &mut x, &s, &mut ws).unwrap_err();
+        let err = newton(&mut sys, &mut x, &s, &mut ws, None).unwrap_err();
         assert_eq!(err.kind, FailureKind::NotConverged);
         assert_eq!(err.report.factorizations, 3);
     }

@@ -37,6 +37,7 @@ fn settings(dt: f64, method: ConstraintMethod, tol: f64) -> StepSettings {
         newton: NewtonSettings {
             tolerance: tol,
             max_iterations: 50,
+            ..NewtonSettings::default()
         },
         ..StepSettings::default()
     }

@@ -30,6 +30,7 @@ fn settings(dt: f64, layers: usize, time_points: usize, tol: f64) -> StepSetting
         newton: NewtonSettings {
             tolerance: tol,
             max_iterations: 50,
+            ..NewtonSettings::default()
         },
         ..StepSettings::default()
     }

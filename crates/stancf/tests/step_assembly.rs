@@ -48,6 +48,22 @@ fn all_loads() -> Vec<Load> {
             node: 3,
             moment: [0.01, 0.02, 0.05],
         },
+        Load::AirDrag(stancf::loads::AirDrag {
+            drag_coefficient: 1.3,
+            fluid_density: 1.2,
+            diameter: 0.02,
+            fluid_velocity: [0.5, 0.2, -0.3],
+            model: stancf::loads::DragModel::Normal {
+                tangential_coefficient: 0.1,
+            },
+        }),
+        Load::AirDrag(stancf::loads::AirDrag {
+            drag_coefficient: 0.8,
+            fluid_density: 1.2,
+            diameter: 0.02,
+            fluid_velocity: [0.0; 3],
+            model: stancf::loads::DragModel::Full,
+        }),
     ]
 }
 
@@ -151,8 +167,9 @@ fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> StepSt
     start
 }
 
-/// P2 steps with 1 to 3 layers, SAC-2 and SAC-3, gravity, a point force
-/// and an end moment, free and constrained (clamp, prescribed motion) by
+/// P2 steps with 1 to 3 layers, SAC-2 and SAC-3, gravity, a point force,
+/// an end moment and air drag (full and cross-flow, in wind), free and
+/// constrained (clamp, prescribed motion) by
 /// both routes.
 #[test]
 fn step_jacobian_matches_finite_differences() {
@@ -182,8 +199,8 @@ fn step_jacobian_matches_finite_differences() {
     }
 }
 
-/// The static system dU/de - f = 0 with load factor, moment and
-/// constraints by both routes.
+/// The static system dU/de - f = 0 with load factor, moment, wind load
+/// (drag on a cable at rest) and constraints by both routes.
 #[test]
 fn static_jacobian_matches_finite_differences() {
     let mut rng = Rng(0x1111_2222_3333_4444);
