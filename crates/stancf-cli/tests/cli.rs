@@ -762,3 +762,33 @@ fn reproduce_circle_bending() {
     let o = stancf(&["reproduce", "no-such-study"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// `stancf reproduce pendulum`: 16 SAC-3 elements with engineering strain
+/// (the reference's measure) stay within 0.05 mm of the Exudyn reference
+/// tip at the six report times, with and without drag; the study reports
+/// the same for 4 SAC-2 elements.
+#[test]
+fn reproduce_pendulum_matches_the_exudyn_reference() {
+    let d = scratch("reproduce-pendulum");
+    let o = stancf(&["reproduce", "pendulum", "--out", d.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
+    let dir = d.join("pendulum");
+    let csv = std::fs::read_to_string(dir.join("tip_at_image_times.csv")).unwrap();
+    let mut checked = 0;
+    for line in csv.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        // element,elements,axial_strain,drag_coefficient,t,x,y,ex,ey,distance
+        let t: f64 = f[4].parse().unwrap();
+        if f[0] == "SAC-3" && f[1] == "16" && f[2] == "engineering" && t > 0.1 {
+            let dist: f64 = f[9].parse().unwrap();
+            assert!(dist < 0.05, "{line}");
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 12, "six times, with and without drag");
+    let md = std::fs::read_to_string(dir.join("pendulum.md")).unwrap();
+    assert!(md.contains("not public") && md.contains("4 SAC-2 (the paper's mesh)"));
+    for f in ["shapes_068.csv", "tip_trajectory.csv"] {
+        assert!(std::fs::metadata(dir.join(f)).unwrap().len() > 1000);
+    }
+}

@@ -145,3 +145,31 @@ pub fn stress_samples(
         }
     }
 }
+
+/// Points of the centre line: `per_element` evenly spaced points in every
+/// element (both ends; shared nodes once), as (material coordinate, r).
+pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64, [f64; 3])> {
+    let l = model.element_length();
+    let dpn = model.dofs_per_node();
+    let n = per_element.max(2);
+    let mut out = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
+    for k in 0..model.cable.elements {
+        let first = if k == 0 { 0 } else { 1 };
+        for p in first..n {
+            let xi = p as f64 / (n - 1) as f64;
+            let q = &state.e[k * dpn..];
+            let shape: Vec<f64> = match model.element_type() {
+                crate::model::ElementType::Sac2 => cubic_hermite(xi, l).n.to_vec(),
+                crate::model::ElementType::Sac3 => quintic_hermite(xi, l).n.to_vec(),
+            };
+            let mut r = [0.0; 3];
+            for (a, na) in shape.iter().enumerate() {
+                for i in 0..3 {
+                    r[i] += na * q[3 * a + i];
+                }
+            }
+            out.push(((k as f64 + xi) * l, r));
+        }
+    }
+    out
+}

@@ -1,7 +1,7 @@
-//! `stancf reproduce <study>`: the paper's studies, each writing its tables
-//! as CSV and Markdown into its own folder.
+//! `reproduce circle-bending`: the paper's Table 3 (section 4.1).
 
-use crate::output::{write_atomic, Num};
+use super::{md_num, write_files};
+use crate::output::Num;
 use crate::Failure;
 use stancf::{
     Cable, Constraint, ConstraintKind, Curvature, ElementType, Load, Material, Measures, Model,
@@ -10,47 +10,6 @@ use stancf::{
 use std::fmt::Write as _;
 use std::ops::ControlFlow;
 use std::path::Path;
-
-/// The studies of docs/interface.md that this version provides.
-pub const STUDIES: [&str; 1] = ["circle-bending"];
-
-/// The studies interface.md names that are not provided yet.
-const PLANNED: [&str; 5] = [
-    "impact-axial",
-    "impact-transverse",
-    "efficiency",
-    "grid-refinement",
-    "pendulum",
-];
-
-pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
-    let list: Vec<&str> = match study {
-        "all" => STUDIES.to_vec(),
-        s if STUDIES.contains(&s) => vec![s],
-        s if PLANNED.contains(&s) => {
-            return Err(Failure::Input(format!(
-                "study \"{s}\" is not available in this version of stancf (available: {})",
-                STUDIES.join(", ")
-            )))
-        }
-        s => {
-            return Err(Failure::Input(format!(
-                "unknown study \"{s}\" (available: {}, all)",
-                STUDIES.join(", ")
-            )))
-        }
-    };
-    for s in list {
-        let dir = out.join(s);
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
-        match s {
-            "circle-bending" => circle_bending(&dir)?,
-            _ => unreachable!("listed in STUDIES"),
-        }
-    }
-    Ok(())
-}
 
 /// One circle-bending configuration.
 #[derive(Clone, Copy)]
@@ -171,19 +130,9 @@ fn curvature_name(c: Curvature) -> &'static str {
     }
 }
 
-fn md_num(x: f64) -> String {
-    if x == 0.0 {
-        "0".into()
-    } else if x.abs() >= 0.01 && x.abs() < 1e4 {
-        format!("{x:.4}")
-    } else {
-        format!("{x:.3e}")
-    }
-}
-
 /// Table 3 analogue and the convergence of the tip error (docs/interface.md,
 /// `reproduce circle-bending`).
-fn circle_bending(dir: &Path) -> Result<(), Failure> {
+pub fn circle_bending(dir: &Path) -> Result<(), Failure> {
     let mut csv = String::from(
         "row,element,axial_points,bending_points,fix_curvature,curvature,elements,lambda,tip_x_mm,tip_y_mm,paper_mm,iterations\n",
     );
@@ -385,13 +334,13 @@ fn circle_bending(dir: &Path) -> Result<(), Failure> {
          the level of the solver tolerance and round-off; their ratios mean nothing."
     )
     .ok();
-    let w = |name: &str, text: &str| {
-        write_atomic(dir, name, text.as_bytes())
-            .map_err(|e| Failure::Other(format!("{}: {e}", dir.join(name).display())))
-    };
-    w("table3.csv", &csv)?;
-    w("convergence.csv", &conv_csv)?;
-    w("table3.md", &md)?;
-    println!("circle-bending: tables in {}", dir.display());
+    write_files(
+        dir,
+        &[
+            ("table3.csv", &csv),
+            ("convergence.csv", &conv_csv),
+            ("table3.md", &md),
+        ],
+    )?;
     Ok(())
 }

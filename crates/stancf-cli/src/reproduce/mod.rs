@@ -1,0 +1,71 @@
+//! `stancf reproduce <study>`: the paper's studies, each writing its tables
+//! as CSV and Markdown into its own folder.
+
+mod circle;
+mod pendulum;
+
+use crate::output::write_atomic;
+use crate::Failure;
+use std::path::Path;
+
+/// The studies of docs/interface.md that this version provides.
+pub const STUDIES: [&str; 2] = ["circle-bending", "pendulum"];
+
+/// The studies interface.md names that are not provided yet.
+const PLANNED: [&str; 4] = [
+    "impact-axial",
+    "impact-transverse",
+    "efficiency",
+    "grid-refinement",
+];
+
+pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
+    let list: Vec<&str> = match study {
+        "all" => STUDIES.to_vec(),
+        s if STUDIES.contains(&s) => vec![s],
+        s if PLANNED.contains(&s) => {
+            return Err(Failure::Input(format!(
+                "study \"{s}\" is not available in this version of stancf (available: {})",
+                STUDIES.join(", ")
+            )))
+        }
+        s => {
+            return Err(Failure::Input(format!(
+                "unknown study \"{s}\" (available: {}, all)",
+                STUDIES.join(", ")
+            )))
+        }
+    };
+    for s in list {
+        let dir = out.join(s);
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
+        match s {
+            "circle-bending" => circle::circle_bending(&dir)?,
+            "pendulum" => pendulum::pendulum(&dir)?,
+            _ => unreachable!("listed in STUDIES"),
+        }
+        println!("{s}: tables in {}", dir.display());
+    }
+    Ok(())
+}
+
+/// Writes a study's files atomically.
+fn write_files(dir: &Path, files: &[(&str, &str)]) -> Result<(), Failure> {
+    for (name, text) in files {
+        write_atomic(dir, name, text.as_bytes())
+            .map_err(|e| Failure::Other(format!("{}: {e}", dir.join(name).display())))?;
+    }
+    Ok(())
+}
+
+/// Markdown number: fixed for moderate magnitudes, exponent otherwise.
+fn md_num(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else if x.abs() >= 0.01 && x.abs() < 1e4 {
+        format!("{x:.4}")
+    } else {
+        format!("{x:.3e}")
+    }
+}
