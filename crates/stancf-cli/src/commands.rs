@@ -219,6 +219,8 @@ struct SolverRow<'a> {
     residuals: &'a [f64],
     part_a: f64,
     part_b: f64,
+    /// Residuals below this are round-off for the rate estimate.
+    rate_floor: f64,
 }
 
 /// One written state with what the solver says about it.
@@ -350,7 +352,7 @@ impl Writers {
         let Some((solver, conv)) = self.solver.as_mut() else {
             return Ok(());
         };
-        let rate = stancf::convergence_rate(row.residuals)
+        let rate = stancf::convergence_rate(row.residuals, row.rate_floor)
             .map(|r| Num(r).to_string())
             .unwrap_or_default();
         let t = Num(row.t);
@@ -564,6 +566,7 @@ fn run_dynamic(
     let every = sc.output_every;
     let clock = Instant::now();
     let mut last_timing = stancf::Timing::default();
+    let rate_floor = sc.analysis.tolerance;
     let result = stancf::run(&mut sim, sc.analysis.duration, |sim, rep, en| {
         let timing = sim.timing();
         let solver_row = SolverRow {
@@ -573,9 +576,10 @@ fn run_dynamic(
             residuals: sim.residual_history(),
             part_a: timing.part_a - last_timing.part_a,
             part_b: timing.part_b - last_timing.part_b,
+            rate_floor,
         };
         last_timing = timing;
-        if let Some(r) = stancf::convergence_rate(sim.residual_history()) {
+        if let Some(r) = stancf::convergence_rate(sim.residual_history(), rate_floor) {
             tally.rate_sum += r;
             tally.rate_steps += 1;
         }

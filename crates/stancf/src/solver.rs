@@ -171,16 +171,18 @@ impl NewtonWorkspace {
 
 /// The convergence-rate estimate of the paper's Table 7 (method notes),
 /// log(r_{k+1} / r_k) / log(r_k / r_{k-1}), from the last three residual
-/// norms of an iteration: about 2 for Newton's quadratic convergence, 1 for
-/// linear, in between for Broyden's superlinear. None with fewer than three
-/// residuals, a zero residual, or a stalled one (r_k = r_{k-1}).
-pub fn convergence_rate(residuals: &[f64]) -> Option<f64> {
-    let n = residuals.len();
-    if n < 3 {
+/// norms of an iteration above `floor`: about 2 for Newton's quadratic
+/// convergence, 1 for linear, in between for Broyden's superlinear.
+/// Residuals at or below the floor are left out: take the tolerance, since
+/// a converged residual is often at the round-off level, where its ratios
+/// mean nothing. None with fewer than three residuals
+/// above the floor, or a stalled one (r_k = r_{k-1}).
+pub fn convergence_rate(residuals: &[f64], floor: f64) -> Option<f64> {
+    let mut it = residuals.iter().rev().filter(|&&r| r > floor);
+    let (Some(&c), Some(&b), Some(&a)) = (it.next(), it.next(), it.next()) else {
         return None;
-    }
-    let (a, b, c) = (residuals[n - 3], residuals[n - 2], residuals[n - 1]);
-    if !(a > 0.0 && b > 0.0 && c > 0.0) || a == b {
+    };
+    if a == b {
         return None;
     }
     let rate = (c / b).ln() / (b / a).ln();
@@ -502,11 +504,13 @@ mod tests {
     #[test]
     fn convergence_rate_of_model_sequences() {
         let quadratic = [1e-1, 1e-2, 1e-4, 1e-8];
-        assert!((convergence_rate(&quadratic).unwrap() - 2.0).abs() < 1e-12);
+        assert!((convergence_rate(&quadratic, 0.0).unwrap() - 2.0).abs() < 1e-12);
         let linear = [1.0, 0.5, 0.25];
-        assert!((convergence_rate(&linear).unwrap() - 1.0).abs() < 1e-12);
-        assert_eq!(convergence_rate(&[1.0, 0.1]), None);
-        assert_eq!(convergence_rate(&[1.0, 0.1, 0.0]), None);
+        assert!((convergence_rate(&linear, 0.0).unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(convergence_rate(&[1.0, 0.1], 0.0), None);
+        // A round-off plateau below the floor is left out.
+        let plateau = [1e-2, 1e-4, 1e-8, 3e-17, 2e-17];
+        assert!((convergence_rate(&plateau, 1e-15).unwrap() - 2.0).abs() < 1e-12);
     }
 
     #[test]

@@ -2,33 +2,28 @@
 //! as CSV and Markdown into its own folder.
 
 mod circle;
+mod efficiency;
+mod impact;
 mod pendulum;
 
 use crate::output::write_atomic;
 use crate::Failure;
 use std::path::Path;
 
-/// The studies of docs/interface.md that this version provides.
-pub const STUDIES: [&str; 2] = ["circle-bending", "pendulum"];
-
-/// The studies interface.md names that are not provided yet.
-const PLANNED: [&str; 4] = [
+/// The studies of docs/interface.md.
+pub const STUDIES: [&str; 6] = [
+    "circle-bending",
     "impact-axial",
     "impact-transverse",
     "efficiency",
     "grid-refinement",
+    "pendulum",
 ];
 
 pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
     let list: Vec<&str> = match study {
         "all" => STUDIES.to_vec(),
         s if STUDIES.contains(&s) => vec![s],
-        s if PLANNED.contains(&s) => {
-            return Err(Failure::Input(format!(
-                "study \"{s}\" is not available in this version of stancf (available: {})",
-                STUDIES.join(", ")
-            )))
-        }
         s => {
             return Err(Failure::Input(format!(
                 "unknown study \"{s}\" (available: {}, all)",
@@ -43,6 +38,10 @@ pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
         match s {
             "circle-bending" => circle::circle_bending(&dir)?,
             "pendulum" => pendulum::pendulum(&dir)?,
+            "impact-axial" => impact::axial(&dir)?,
+            "impact-transverse" => impact::transverse(&dir)?,
+            "efficiency" => efficiency::efficiency(&dir)?,
+            "grid-refinement" => efficiency::grid_refinement(&dir)?,
             _ => unreachable!("listed in STUDIES"),
         }
         println!("{s}: tables in {}", dir.display());

@@ -222,10 +222,13 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
             strain_name(c.strain),
             Num(c.drag)
         );
-        let reference = match c.drag {
-            d if d == 0.0 => Some(EXUDYN_TIP_NODRAG),
-            d if d == 1.5 => Some(EXUDYN_TIP_DRAG),
-            _ => None,
+        // The reference exists for C = 0 and C = 1.5.
+        let reference = if c.drag == 0.0 {
+            Some(EXUDYN_TIP_NODRAG)
+        } else if c.drag == 1.5 {
+            Some(EXUDYN_TIP_DRAG)
+        } else {
+            None
         };
         for &(t, r) in &o.tip_at {
             let t_exact = IMAGE_TIMES
