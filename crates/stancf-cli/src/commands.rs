@@ -59,7 +59,8 @@ fn derive(sc: &Scenario, model: &Model, state: &State) -> Derived {
 fn warnings(sc: &Scenario, model: &Model, d: Option<&Derived>) -> Vec<String> {
     let mut w = model.warnings();
     w.extend(sc.notes.iter().cloned());
-    if let Some(d) = d {
+    let p2 = sc.analysis.time_scheme == stancf::TimeScheme::P2;
+    if let Some(d) = d.filter(|_| p2) {
         if let Some(s) = d.stable_step.filter(|&s| sc.analysis.time_step > s) {
             w.push(format!(
                 "analysis.time_step = {:e} s exceeds the stable step estimate of P2, {:.4e} s \
@@ -154,8 +155,16 @@ fn describe(sc: &Scenario, model: &Model, d: Option<&Derived>) -> String {
             d.w_max * d.element_length / d.wave_speed
         ),
     );
-    match (d.stable_step, d.critical_w_dt) {
-        (Some(st), Some(wc)) => line(
+    match (a.time_scheme, d.stable_step, d.critical_w_dt) {
+        (stancf::TimeScheme::Galerkin, ..) => line(
+            "time scheme",
+            format!(
+                "Galerkin (unconditionally stable); w_max dt = {:.4}: modes with w dt above ~1 \
+                 are carried without damping but with a wrong phase",
+                d.w_max * a.time_step
+            ),
+        ),
+        (_, Some(st), Some(wc)) => line(
             "stable step (P2)",
             format!(
                 "{st:.6e} s (w_max dt < {wc:.4}); this step: w_max dt = {:.4}",
@@ -704,6 +713,11 @@ fn run_dynamic(
         "courant_number": json_num(d.courant),
         "highest_frequency": json_num(d.w_max),
         "stable_time_step": d.stable_step.map(json_num).unwrap_or(Value::Null),
+        "time_scheme": match sc.analysis.time_scheme {
+            stancf::TimeScheme::P2 => "p2",
+            stancf::TimeScheme::Galerkin => "galerkin",
+        },
+        "w_max_dt": json_num(d.w_max * sc.analysis.time_step),
         "stress_peak": tally.stress_json(),
         "linear_momentum": vec3(p),
         "center_of_mass": vec3(first_moment.map(|c| c / mass)),

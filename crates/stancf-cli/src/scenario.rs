@@ -201,6 +201,7 @@ pub struct Analysis {
     pub tolerance: f64,
     pub max_iterations: usize,
     pub solver: stancf::SolverMethod,
+    pub time_scheme: stancf::TimeScheme,
     pub load_steps: usize,
     pub constraint_method: stancf::ConstraintMethod,
 }
@@ -707,19 +708,24 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         "broyden" => stancf::SolverMethod::Broyden,
         _ => stancf::SolverMethod::Newton,
     };
-    ctx.choice(
+    let time_scheme = match ctx.choice(
         "analysis.time_scheme",
         ra.time_scheme.as_deref(),
         "p2",
         &["p2", "galerkin"],
-    )
-    .and_then(|s| match s {
-        "galerkin" => Err(ctx.err(
-            "analysis.time_scheme",
-            "\"galerkin\" is not available in this version of stancf (use \"p2\")",
-        )),
-        _ => Ok(()),
-    })?;
+    )? {
+        "galerkin" => stancf::TimeScheme::Galerkin,
+        _ => stancf::TimeScheme::P2,
+    };
+    if time_scheme == stancf::TimeScheme::Galerkin && time_layers > 1 {
+        return Err(ctx.err(
+            "analysis.time_layers",
+            format!(
+                "the Galerkin step takes one layer per step (got {time_layers}): joining layers \
+                 by C1 interior nodes inside a Galerkin step is unstable"
+            ),
+        ));
+    }
     let tolerance = match ra.tolerance {
         Some(t) => ctx.positive("analysis.tolerance", t)?,
         None => 1e-10,
@@ -797,6 +803,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             tolerance,
             max_iterations,
             solver,
+            time_scheme,
             load_steps,
             constraint_method,
         },
@@ -908,6 +915,7 @@ impl Scenario {
                 method: self.analysis.solver,
             },
             constraint_method: self.analysis.constraint_method,
+            time_scheme: self.analysis.time_scheme,
         }
     }
 }

@@ -938,3 +938,48 @@ fn bad_input_drag() {
         &["analysis.solver", "secant"],
     );
 }
+
+/// `time_scheme = "galerkin"`: `check` reports no stability limit but the
+/// mesh's w_max dt; a run at ten times P2's limit neither warns nor blows
+/// up; more than one time layer is an input error that says why.
+#[test]
+fn galerkin_from_a_scenario() {
+    let d = scratch("galerkin");
+    let text_g = BASE
+        .replace(
+            "quadrature = [3, 3]",
+            "quadrature = [3, 3]\ntime_scheme = \"galerkin\"",
+        )
+        .replace("time_step = 5.0e-5", "time_step = 1.0e-3")
+        .replace("duration = 2.0e-3", "duration = 0.05")
+        .replace("every = 4", "every = 1");
+    let sc = write_scenario(&d, "g.toml", &text_g);
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    let (so, _) = text(&o);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(
+        so.contains("Galerkin (unconditionally stable); w_max dt = 29.98"),
+        "{so}"
+    );
+    assert!(so.contains("warnings                    none"), "{so}");
+    let out = d.join("res");
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(!se.contains("warning"), "{se}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["time_scheme"], "galerkin");
+    // Linear momentum exact: the weight impulse m g t.
+    let m = 1380.0 * 3.0e-6 * 4.0;
+    let py = s["linear_momentum"][1].as_f64().unwrap();
+    assert!((py + m * 9.81 * 0.05).abs() < 1e-14, "{py}");
+    expect_input_error(
+        "galerkin-layers",
+        &text_g.replace(
+            "time_scheme = \"galerkin\"",
+            "time_scheme = \"galerkin\"\ntime_layers = 2",
+        ),
+        &["analysis.time_layers", "one layer per step"],
+    );
+}

@@ -12,9 +12,17 @@
 //! ```
 //!
 //! with A the action of all space-time elements of the step and the
-//! virtual work of the nodal loads. A static solve has one unknown e and
-//! one row per coordinate, dU/de - dW/de = 0 (A = dt (W - U) for a
-//! time-invariant slab).
+//! virtual work of the nodal loads. The Galerkin step (method notes, "The
+//! Galerkin step") uses the same slab action with the end slopes w_a, w_b
+//! as unknowns in place of the velocities and carries the momentum p:
+//!
+//! ```text
+//!   dA/de_a + p_a = 0,   dA/dw_a = 0,   dA/dw_b = 0      (unknowns w_a, e_b, w_b)
+//!   p_b = dA/de_b,       v_b = M^-1 p_b                    (after convergence)
+//! ```
+//!
+//! A static solve has one unknown e and one row per coordinate,
+//! dU/de - dW/de = 0 (A = dt (W - U) for a time-invariant slab).
 //!
 //! A constrained coordinate (see [`crate::constraints`]) has prescribed
 //! values at the time nodes and its rows are freed: with elimination they
@@ -48,6 +56,8 @@ pub enum Kind {
 pub enum Scheme {
     /// A P2 step with `layers` element layers in time.
     P2 { layers: usize },
+    /// A Galerkin step (all four variations of the slab action).
+    Galerkin,
     /// A static solve.
     Static,
 }
@@ -93,6 +103,18 @@ impl SlabLayout {
                 r.push((layers, Kind::Position));
                 (u, r)
             }
+            Scheme::Galerkin => (
+                vec![
+                    (0, Kind::Velocity),
+                    (1, Kind::Position),
+                    (1, Kind::Velocity),
+                ],
+                vec![
+                    (0, Kind::Position),
+                    (0, Kind::Velocity),
+                    (1, Kind::Velocity),
+                ],
+            ),
             Scheme::Static => (vec![(0, Kind::Position)], vec![(0, Kind::Position)]),
         };
         let nodes = model.nodes();
@@ -178,6 +200,7 @@ impl SlabLayout {
     pub fn layers(&self) -> usize {
         match self.scheme {
             Scheme::P2 { layers } => layers,
+            Scheme::Galerkin => 1,
             Scheme::Static => 0,
         }
     }
@@ -331,6 +354,8 @@ pub struct AssemblyScratch {
     pub reaction_rows: Vec<f64>,
     /// Work of the drag loads over the step (int int f . r_dot dx dt).
     pub drag_work: f64,
+    /// Galerkin: dA/de_b, the momentum at the end of the step.
+    pub end_momentum: Vec<f64>,
 }
 
 impl AssemblyScratch {
@@ -344,6 +369,7 @@ impl AssemblyScratch {
             mass_v_end: vec![0.0; n],
             reaction_rows: vec![0.0; layout.row_slots.len() * n],
             drag_work: 0.0,
+            end_momentum: vec![0.0; n],
         }
     }
 }
@@ -365,10 +391,20 @@ pub struct StepProblem<'a> {
 enum Target {
     Row(usize),
     Reaction(usize),
+    /// Galerkin: a term of dA/de_b (the end momentum) of coordinate g.
+    Momentum(usize),
     Nothing,
 }
 
 impl StepProblem<'_> {
+    /// Where the gradient entry of (time node i, kind, coordinate g) goes.
+    fn target_at(&self, i: usize, kind: Kind, g: usize) -> Target {
+        if self.layout.scheme == Scheme::Galerkin && (i, kind) == (1, Kind::Position) {
+            return Target::Momentum(g);
+        }
+        self.target(self.layout.row_slot(i, kind), g)
+    }
+
     fn target(&self, slot: Option<usize>, g: usize) -> Target {
         let Some(s) = slot else {
             return Target::Nothing;
@@ -396,8 +432,19 @@ impl StepProblem<'_> {
                 &mut scratch.node_v[i * n..(i + 1) * n],
             );
             if i == 0 && layout.scheme != Scheme::Static {
+                // e_a is known; P2's v_a too, Galerkin's w_a is an unknown
+                // (prescribed, i.e. the start's rate, where constrained).
                 e_out.copy_from_slice(&start.e);
-                v_out.copy_from_slice(&start.v);
+                let sv = layout.unknown_slot(0, Kind::Velocity);
+                for node in 0..layout.nodes {
+                    for d in 0..dpn {
+                        let g = node * dpn + d;
+                        v_out[g] = match sv.map(|s| layout.unknowns[(node * nu + s) * dpn + d]) {
+                            Some(u) if u != NONE => x[u],
+                            _ => start.v[g],
+                        };
+                    }
+                }
                 continue;
             }
             let se = layout.unknown_slot(i, Kind::Position);
@@ -437,6 +484,7 @@ impl StepProblem<'_> {
     ) {
         residual.fill(0.0);
         scratch.reaction_rows.fill(0.0);
+        scratch.end_momentum.fill(0.0);
         scratch.drag_work = 0.0;
         if let Some(j) = jacobian.as_deref_mut() {
             j.clear();
@@ -447,18 +495,18 @@ impl StepProblem<'_> {
         let mut derivs3 = std::mem::take(&mut scratch.derivs3);
         match &self.model.mesh {
             crate::model::Mesh::Sac2(els) => match self.layout.scheme {
-                Scheme::P2 { .. } => self.slab_elements(els, &mut derivs2, residual, jac, scratch),
                 Scheme::Static => self.static_elements(els, residual, jac, scratch),
+                _ => self.slab_elements(els, &mut derivs2, residual, jac, scratch),
             },
             crate::model::Mesh::Sac3(els) => match self.layout.scheme {
-                Scheme::P2 { .. } => self.slab_elements(els, &mut derivs3, residual, jac, scratch),
                 Scheme::Static => self.static_elements(els, residual, jac, scratch),
+                _ => self.slab_elements(els, &mut derivs3, residual, jac, scratch),
             },
         }
         scratch.derivs2 = derivs2;
         scratch.derivs3 = derivs3;
         self.nodal_loads(residual, jacobian.as_deref_mut(), scratch);
-        if let Scheme::P2 { .. } = self.layout.scheme {
+        if self.layout.scheme != Scheme::Static {
             self.momentum_terms(residual, jacobian.as_deref_mut(), scratch);
         }
         self.constraint_terms(x, residual, jacobian);
@@ -468,6 +516,7 @@ impl StepProblem<'_> {
         match t {
             Target::Row(r) => residual[r] += v,
             Target::Reaction(k) => scratch.reaction_rows[k] += v,
+            Target::Momentum(g) => scratch.end_momentum[g] += v,
             Target::Nothing => {}
         }
     }
@@ -490,6 +539,7 @@ impl StepProblem<'_> {
             drag: &self.model.drag,
         };
         let mut block = [[0.0; ND]; ND];
+        let galerkin = layout.scheme == Scheme::Galerkin;
         for j in 0..layout.layers() {
             let slots: [(usize, Kind); 4] = [
                 (j, Kind::Position),
@@ -512,7 +562,7 @@ impl StepProblem<'_> {
                 el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
                 scratch.drag_work += derivs.drag_work;
                 // Where each entry of the element's gradient goes, per slot.
-                let targets = row_slots.map(|rs| {
+                let mut targets = row_slots.map(|rs| {
                     let mut out = [Target::Nothing; ND];
                     if let Some(s) = rs {
                         for (d, t) in out.iter_mut().enumerate() {
@@ -528,6 +578,12 @@ impl StepProblem<'_> {
                     }
                     out
                 });
+                if galerkin {
+                    // Slot 2 is e_b: its gradient is the end momentum.
+                    for (d, t) in targets[2].iter_mut().enumerate() {
+                        *t = Target::Momentum(o + d);
+                    }
+                }
                 for m in 0..4 {
                     for d in 0..ND {
                         self.add(targets[m][d], derivs.grad[m][d], residual, scratch);
@@ -662,7 +718,7 @@ impl StepProblem<'_> {
                     .into_iter()
                     .enumerate()
                     {
-                        let t = self.target(layout.row_slot(j + di, kind), g);
+                        let t = self.target_at(j + di, kind, g);
                         self.add(t, self.slab.load[m] * f[c], residual, scratch);
                     }
                 }
@@ -718,7 +774,7 @@ impl StepProblem<'_> {
                         let rs = layout.row_slot(i, kind);
                         let wm = tp.w_dt * tp.shape.t[m];
                         for a in 0..3 {
-                            let t = self.target(rs, g0 + a);
+                            let t = self.target_at(i, kind, g0 + a);
                             self.add(t, wm * q[a], residual, scratch);
                         }
                         let (Some(jac), Some(rs)) = (jacobian.as_deref_mut(), rs) else {
@@ -746,7 +802,8 @@ impl StepProblem<'_> {
         }
     }
 
-    /// P2 momentum terms: + M v_0 on row e_0, - M v_L on row e_L.
+    /// Momentum terms: + p_a (= M v_a) on row e_0; P2 also - M v_L on row
+    /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead).
     fn momentum_terms(
         &self,
         residual: &mut [f64],
@@ -761,6 +818,9 @@ impl StepProblem<'_> {
         for g in 0..n {
             let t = self.target(first_slot, g);
             self.add(t, self.start.mass_v[g], residual, scratch);
+        }
+        if layout.scheme == Scheme::Galerkin {
+            return;
         }
         let vl = &scratch.node_v[last * n..(last + 1) * n];
         self.model.mass_times(vl, &mut scratch.mass_v_end);

@@ -8,7 +8,7 @@
 //! stable, and an unstable step must end the run, not write garbage).
 
 use crate::assembly::{AssemblyScratch, Kind, Scales, Scheme, SlabLayout, StepProblem, StepStart};
-use crate::band::BandMatrix;
+use crate::band::{BandLu, BandMatrix};
 use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, SolverError};
@@ -34,6 +34,21 @@ pub struct StepSettings {
     pub newton: NewtonSettings,
     /// How constraints are enforced.
     pub constraint_method: ConstraintMethod,
+    /// P2 (the paper's, eq. 22) or the Galerkin step (all four variations).
+    pub time_scheme: TimeScheme,
+}
+
+/// Which equations a step solves (method notes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum TimeScheme {
+    /// Hamilton's law with the P2 formula, eq. (22): conditionally stable,
+    /// fourth order.
+    #[default]
+    P2,
+    /// The Galerkin variational integrator on the cubic slab: with 3 Gauss
+    /// points in time the 3-stage Gauss-Legendre method, unconditionally
+    /// stable, sixth order, symplectic; one layer per step.
+    Galerkin,
 }
 
 impl Default for StepSettings {
@@ -44,6 +59,7 @@ impl Default for StepSettings {
             time_points: 3,
             newton: NewtonSettings::default(),
             constraint_method: ConstraintMethod::default(),
+            time_scheme: TimeScheme::default(),
         }
     }
 }
@@ -107,11 +123,20 @@ pub struct Simulation {
     previous: Undo,
     /// Wall clock for the Part A / Part B split of eq. (32), if given.
     clock: Option<Box<dyn Clock>>,
+    /// Galerkin: the momentum p carried from step to step, and the factors
+    /// of the mass matrix with the rows of constrained coordinates replaced
+    /// by identity rows (v_b = M^-1 p_b with prescribed constrained rates).
+    momentum: Vec<f64>,
+    mass_lu: Option<BandLu>,
+    /// v_b and M v_b (Galerkin scratch).
+    rhs: Vec<f64>,
+    mass_v: Vec<f64>,
 }
 
 #[derive(Clone, Debug)]
 struct Undo {
     state: State,
+    momentum: Vec<f64>,
     acceleration: Vec<f64>,
     constraint_work: f64,
     drag_work: f64,
@@ -175,7 +200,23 @@ impl Simulation {
         let mut initial = initial;
         model.apply_constraints(&mut initial);
         let layers = settings.time_layers;
-        let layout = SlabLayout::new(&model, Scheme::P2 { layers }, settings.constraint_method);
+        let scheme = match settings.time_scheme {
+            TimeScheme::P2 => Scheme::P2 { layers },
+            TimeScheme::Galerkin => {
+                if layers != 1 {
+                    return Err(ModelError::invalid(
+                        "analysis.time_layers",
+                        format!(
+                            "the Galerkin step takes one layer per step (got {layers}): joining \
+                             layers by C1 interior nodes inside a Galerkin step is unstable \
+                             (method notes)"
+                        ),
+                    ));
+                }
+                Scheme::Galerkin
+            }
+        };
+        let layout = SlabLayout::new(&model, scheme, settings.constraint_method);
         let h = dt / layers as f64;
         let slab = TimeSlab::new(h, &time_rule);
         let scales = Scales::new(&model, &layout, h);
@@ -207,7 +248,30 @@ impl Simulation {
             .iter()
             .map(|&nd| (nd, [0.0; 3]))
             .collect();
+        let mut momentum = vec![0.0; n];
+        model.mass_times(&initial.v, &mut momentum);
+        let mass_lu = if scheme == Scheme::Galerkin {
+            let (_, mass) = crate::assembly::stiffness_and_mass(&model, &initial.e);
+            let (kl, ku) = (mass.lower_bandwidth(), mass.upper_bandwidth());
+            let mut lu = BandLu::new(n, kl, ku);
+            let a = lu.matrix_mut();
+            for i in 0..n {
+                if model.constraints.is_constrained(i) {
+                    a.add(i, i, 1.0);
+                    continue;
+                }
+                for j in i.saturating_sub(kl)..=(i + ku).min(n - 1) {
+                    a.add(i, j, mass.get(i, j));
+                }
+            }
+            lu.factorize()
+                .map_err(|_| ModelError::invalid("material", "the mass matrix is singular"))?;
+            Some(lu)
+        } else {
+            None
+        };
         let previous = Undo {
+            momentum: vec![0.0; n],
             state: initial.clone(),
             acceleration: vec![0.0; n],
             constraint_work: 0.0,
@@ -235,6 +299,10 @@ impl Simulation {
             moment_angles,
             previous,
             clock: None,
+            momentum,
+            mass_lu,
+            rhs: vec![0.0; n],
+            mass_v: vec![0.0; n],
         })
     }
 
@@ -412,6 +480,7 @@ impl Simulation {
             }
         };
         self.previous.state.clone_from(&self.state);
+        self.previous.momentum.copy_from_slice(&self.momentum);
         self.previous
             .acceleration
             .copy_from_slice(&self.acceleration);
@@ -431,21 +500,44 @@ impl Simulation {
         };
         let eliminated = self.layout.method == ConstraintMethod::Elimination
             && !self.model.constraints.is_empty();
-        if eliminated || !self.model.drag.is_empty() {
+        let galerkin = self.mass_lu.is_some();
+        if eliminated || galerkin || !self.model.drag.is_empty() {
             problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);
             self.drag_work += self.scratch.drag_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);
         }
-        self.collect_reactions(dt);
         let n = self.model.dofs();
         let last = self.layout.layers();
+        if let Some(lu) = &self.mass_lu {
+            // p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates.
+            for g in 0..n {
+                self.rhs[g] = if self.model.constraints.is_constrained(g) {
+                    self.start.fixed_v[n + g]
+                } else {
+                    self.scratch.end_momentum[g]
+                };
+            }
+            lu.solve(&mut self.rhs);
+            self.model.mass_times(&self.rhs, &mut self.mass_v);
+            for g in 0..n {
+                self.scratch.node_v[last * n + g] = self.rhs[g];
+            }
+        }
+        self.collect_reactions(dt);
         for g in 0..n {
             let e_new = self.scratch.node_e[last * n + g];
             let v_new = self.scratch.node_v[last * n + g];
             self.acceleration[g] = (v_new - self.state.v[g]) / dt;
             self.state.e[g] = e_new;
             self.state.v[g] = v_new;
+            if galerkin {
+                self.momentum[g] = if self.model.constraints.is_constrained(g) {
+                    self.mass_v[g]
+                } else {
+                    self.scratch.end_momentum[g]
+                };
+            }
         }
         self.state.t += dt;
         self.steps += 1;
@@ -479,6 +571,10 @@ impl Simulation {
                         Some(m) => self.x[m],
                         None => -self.scratch.reaction_rows[s * n + g],
                     };
+                }
+                if self.mass_lu.is_some() {
+                    // Galerkin: the end part, p_b - dA/de_b with p_b = M v_b.
+                    impulse += self.mass_v[g] - self.scratch.end_momentum[g];
                 }
                 force[c] = impulse / dt;
                 let moved = self.scratch.node_e[last * n + g] - self.state.e[g];
