@@ -693,8 +693,10 @@ fn run_dynamic(
             "method": match sc.analysis.solver {
                 stancf::SolverMethod::Newton => "newton",
                 stancf::SolverMethod::Broyden => "broyden",
+                stancf::SolverMethod::ModifiedNewton => "modified-newton",
             },
             "factorizations": tally.factorizations,
+            "tangents_per_step": json_num(tally.factorizations as f64 / steps.max(1) as f64),
             "convergence_rate": if tally.rate_steps > 0 {
                 json_num(tally.rate_sum / tally.rate_steps as f64)
             } else {
@@ -745,6 +747,7 @@ fn run_dynamic(
         match sc.analysis.solver {
             stancf::SolverMethod::Newton => "Newton",
             stancf::SolverMethod::Broyden => "Broyden",
+            stancf::SolverMethod::ModifiedNewton => "modified Newton",
         },
         tally.factorizations
     );

@@ -703,9 +703,10 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         "analysis.solver",
         ra.solver.as_deref(),
         "newton",
-        &["newton", "broyden"],
+        &["newton", "broyden", "modified-newton"],
     )? {
         "broyden" => stancf::SolverMethod::Broyden,
+        "modified-newton" => stancf::SolverMethod::ModifiedNewton,
         _ => stancf::SolverMethod::Newton,
     };
     let time_scheme = match ctx.choice(

@@ -73,7 +73,68 @@ fn element_kernel<const NS: usize, const ND: usize>(
     });
 }
 
+/// Floating-point operations of one call of the kernel as benchmarked
+/// (`slab_derivatives` with the tangent, then `blocks` Hessian blocks),
+/// counted from its loops (FMA = 2):
+///
+/// per time point: q and qdot (2 x 4 ND FMA), M qdot (3 NS^2 FMA),
+/// per axial point: r_x, r_xx (2 x 3 NS FMA), density (~30), gradient
+/// (3 NS x 3), Hessian (NS (NS+1)/2 pairs x (2 + 9 x 2));
+/// per bending point: r_x, r_xx (2 x 3 NS FMA), density (~250), gradient
+/// (3 NS x 5), Hessian (pairs x (8 + 9 x 4 x 2)); time spread of the
+/// gradient (4 ND x 5); per block: time points x ND^2 FMA + 4 NS^2.
+fn kernel_flops(ns: usize, axial: usize, bending: usize, time: usize, blocks: usize) -> f64 {
+    let nd = 3 * ns;
+    let pairs = ns * (ns + 1) / 2;
+    let per_axial = 12 * ns + 30 + 9 * ns + pairs * 20;
+    let per_bending = 12 * ns + 250 + 15 * ns + pairs * 80;
+    let per_time = 16 * nd + 6 * ns * ns + axial * per_axial + bending * per_bending + 20 * nd;
+    let per_block = 2 * time * nd * nd + 4 * ns * ns;
+    (time * per_time + blocks * per_block) as f64
+}
+
+/// One core's peak: 8 independent chains of 4-wide fused multiply-adds
+/// (AVX2 + FMA; Zen 4 runs AVX-512 at the same rate), when the CPU has
+/// them, else 2-wide SSE2 multiplies and adds.
+fn peak(c: &mut Criterion) {
+    const N: usize = 1 << 16;
+    #[cfg(target_arch = "x86_64")]
+    {
+        if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
+            #[target_feature(enable = "avx2,fma")]
+            unsafe fn fma_chains(x: f64) -> f64 {
+                use std::arch::x86_64::*;
+                let a = _mm256_set1_pd(1.0 - 1e-9);
+                let b = _mm256_set1_pd(1e-9);
+                let mut acc = [_mm256_set1_pd(x); 8];
+                for _ in 0..N {
+                    for v in acc.iter_mut() {
+                        *v = _mm256_fmadd_pd(*v, a, b);
+                    }
+                }
+                let mut s = [0.0; 4];
+                let mut t = acc[0];
+                for v in &acc[1..] {
+                    t = _mm256_add_pd(t, *v);
+                }
+                _mm256_storeu_pd(s.as_mut_ptr(), t);
+                s.iter().sum()
+            }
+            let flops = (N * 8 * 4 * 2) as f64;
+            c.bench_function(&format!("peak: AVX2 FMA, {flops:e} flops"), |bch| {
+                bch.iter(|| unsafe { fma_chains(black_box(1.0)) })
+            });
+        }
+    }
+}
+
 fn kernels(c: &mut Criterion) {
+    for (name, ns, a, b, t) in [("SAC-2 3x3", 4, 3, 3, 3), ("SAC-3 5x3", 6, 5, 5, 3)] {
+        eprintln!(
+            "flops per kernel call, {name}: {:.0}",
+            kernel_flops(ns, a, b, t, 4)
+        );
+    }
     let section = pvc().section();
     let slab = TimeSlab::new(5e-5, &GaussRule::new(3).unwrap());
     let r3 = SpaceRules {
@@ -126,6 +187,6 @@ fn whole_step(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).measurement_time(std::time::Duration::from_secs(3));
-    targets = kernels, whole_step
+    targets = peak, kernels, whole_step
 }
 criterion_main!(benches);

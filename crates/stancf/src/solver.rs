@@ -44,6 +44,10 @@ pub enum SolverMethod {
     Newton,
     /// Broyden rank one, eq. (27) (the "good" update of the inverse).
     Broyden,
+    /// Modified Newton: the factorized exact Jacobian kept across
+    /// iterations and steps (chord steps), rebuilt where the residual stops
+    /// halving; Broyden without the rank-one corrections.
+    ModifiedNewton,
 }
 
 /// Tolerance, iteration limit and method.
@@ -205,11 +209,14 @@ pub fn solve<S: NonlinearSystem>(
 ) -> Result<NewtonReport, NewtonFailure> {
     match settings.method {
         SolverMethod::Newton => newton(system, x, settings, ws, clock),
-        SolverMethod::Broyden => broyden(system, x, settings, ws, clock),
+        SolverMethod::Broyden | SolverMethod::ModifiedNewton => {
+            broyden(system, x, settings, ws, clock)
+        }
     }
 }
 
-/// Broyden's rank-one method (see the module documentation).
+/// Broyden's rank-one method (see the module documentation), or modified
+/// Newton when `settings.method` says so (no rank-one corrections).
 pub fn broyden<S: NonlinearSystem>(
     system: &mut S,
     x: &mut [f64],
@@ -294,6 +301,10 @@ pub fn broyden<S: NonlinearSystem>(
         if r_new > 0.5 * r || ws.updates == ws.updates_a.len() {
             // Not contracting (or out of room): a fresh Jacobian here.
             refactorize = true;
+            r = r_new;
+            continue;
+        }
+        if settings.method == SolverMethod::ModifiedNewton {
             r = r_new;
             continue;
         }

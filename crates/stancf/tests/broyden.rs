@@ -53,18 +53,20 @@ fn solve_from(
 
 fn compare(label: &str, model: impl Fn() -> Model, dt: f64, duration: f64) {
     let (en, fn_, itn, steps) = solve(model(), dt, duration, SolverMethod::Newton);
-    let (eb, fb, itb, _) = solve(model(), dt, duration, SolverMethod::Broyden);
-    let diff = en
-        .iter()
-        .zip(&eb)
-        .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max);
-    eprintln!(
-        "{label}: {steps} steps; Newton {fn_} factorizations, {itn} iterations; Broyden {fb} \
-         factorizations, {itb} iterations; coordinates differ by {diff:.2e}"
-    );
-    assert!(diff < 1e-8, "{label}: {diff}");
-    assert!(fb < steps, "{label}: {fb} factorizations for {steps} steps");
+    for method in [SolverMethod::Broyden, SolverMethod::ModifiedNewton] {
+        let (eb, fb, itb, _) = solve(model(), dt, duration, method);
+        let diff = en
+            .iter()
+            .zip(&eb)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        eprintln!(
+            "{label}: {steps} steps; Newton {fn_} factorizations, {itn} iterations; {method:?} \
+             {fb} factorizations, {itb} iterations; coordinates differ by {diff:.2e}"
+        );
+        assert!(diff < 1e-8, "{label}: {diff}");
+        assert!(fb < steps, "{label}: {fb} factorizations for {steps} steps");
+    }
 }
 
 #[test]

@@ -62,6 +62,7 @@ fn method_name(m: SolverMethod) -> &'static str {
     match m {
         SolverMethod::Newton => "N-R",
         SolverMethod::Broyden => "BR1",
+        SolverMethod::ModifiedNewton => "mN-R",
     }
 }
 

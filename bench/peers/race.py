@@ -1,0 +1,271 @@
+"""The race: stancf (P2 and Galerkin, SAC-2 and SAC-3) against Exudyn's
+ANCFCable2D on the paper's pendulum and transverse impact, all on this
+machine in one run. Writes out/work_precision.{csv,md,png}.
+
+Run through ./run.sh (it makes the virtual environment and builds stancf).
+
+Errors:
+- pendulum (no drag, 0.8 s): the largest distance of the tip from the
+  Exudyn reference that stancf ships (data/reference/, 64 elements,
+  dt = 1e-5, converged to ~0.005 mm) at the six report times;
+- transverse impact (PVC, 10 m/s, 0.3 s): the distance of the tip at
+  0.3 s from a converged run (stancf Galerkin, 64 SAC-3, dt = 1e-5,
+  checked here against 128 SAC-3 and against Exudyn's finest run).
+Wall times: Exudyn's SolveDynamic, stancf's stepping loop (summary.json
+wall_time_s); both write the tip every 10 ms. Engineering strain for
+both (Exudyn's only axial strain).
+"""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import exudyn_models as em
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+STANCF = os.path.join(ROOT, "target", "release", "stancf")
+OUT = os.path.join(HERE, "out")
+REPORT_TIMES = [0.19, 0.30, 0.42, 0.53, 0.67, 0.79]
+QUICK = "--quick" in sys.argv
+
+
+def reference_pendulum():
+    ref = {}
+    with open(os.path.join(ROOT, "data", "reference", "pendulum", "exudyn_nodrag_tip.csv")) as f:
+        for row in csv.reader(f):
+            if row[0].startswith("t"):
+                continue
+            ref[round(float(row[0]), 6)] = (float(row[1]), float(row[2]))
+    return ref
+
+
+PENDULUM = """
+[cable]
+length = 0.5
+elements = {n}
+element = "{element}"
+[material]
+youngs_modulus = 0.91e6
+density = 1202.0
+area = 1.075e-5
+second_moment = 9.15e-12
+[[constraints]]
+type = "pinned"
+node = "A"
+[[loads]]
+type = "gravity"
+acceleration = [0.0, -9.81, 0.0]
+[analysis]
+time_step = {dt}
+duration = 0.8
+axial_strain = "engineering"
+time_scheme = "{scheme}"
+solver = "{solver}"
+[output]
+every = {every}
+"""
+
+IMPACT = """
+[cable]
+length = 4.0
+elements = {n}
+element = "{element}"
+origin = [-2.0, 0.0, 0.0]
+[material]
+youngs_modulus = 3.4e9
+density = 1380.0
+area = 3.0e-6
+second_moment = 1.25e-13
+[[initial_velocity]]
+node = "A"
+velocity = [0.0, 10.0, 0.0]
+[[initial_velocity]]
+node = "B"
+velocity = [0.0, -10.0, 0.0]
+[analysis]
+time_step = {dt}
+duration = 0.3
+axial_strain = "engineering"
+time_scheme = "{scheme}"
+solver = "{solver}"
+[output]
+every = {every}
+"""
+
+
+def run_stancf(template, n, element, dt, scheme, solver="newton"):
+    """(wall time, {t: tip}, summary) of a stancf run, or None if it failed."""
+    every = max(1, int(round(0.01 / dt)))
+    text = template.format(n=n, element=element, dt=repr(dt), scheme=scheme, solver=solver, every=every)
+    with tempfile.TemporaryDirectory() as d:
+        sc = os.path.join(d, "s.toml")
+        with open(sc, "w") as f:
+            f.write(text)
+        out = os.path.join(d, "out")
+        p = subprocess.run([STANCF, "run", sc, "--out", out], capture_output=True, text=True)
+        if p.returncode != 0:
+            return None
+        with open(os.path.join(out, "summary.json")) as f:
+            s = json.load(f)
+        tips = {}
+        with open(os.path.join(out, "nodes.csv")) as f:
+            for row in csv.DictReader(f):
+                if int(row["node"]) == n:
+                    tips[round(float(row["t"]), 6)] = (float(row["x"]), float(row["y"]))
+    return s["wall_time_s"], tips, s
+
+
+def pendulum_error(tips, ref):
+    try:
+        return max(math.dist(tips[t], ref[t]) for t in REPORT_TIMES) * 1e3
+    except KeyError:
+        return float("nan")
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    rows = []
+    ref = reference_pendulum()
+
+    def record(problem, code, scheme, element, n, dt, wall, error, extra=""):
+        rows.append(dict(problem=problem, code=code, scheme=scheme, element=element, elements=n,
+                         dt=dt, wall_s=wall, error_mm=error, note=extra))
+        print("%-9s %-7s %-9s %-6s %3d %-8g %8.3f s  error %10.4g mm %s"
+              % (problem, code, scheme, element, n, dt, wall, error, extra), flush=True)
+
+    # ---- pendulum ----
+    steps_exu = [1e-3, 5e-4, 2e-4, 1e-4, 5e-5]
+    meshes_exu = [8, 16, 32, 64]
+    if QUICK:
+        steps_exu, meshes_exu = [5e-4, 1e-4], [16]
+    for n in meshes_exu:
+        for dt in steps_exu:
+            wall, data = em.pendulum(n, dt)
+            tips = {round(r[0], 6): (r[1], r[2]) for r in data}
+            record("pendulum", "exudyn", "gen-alpha", "cable2d", n, dt, wall, pendulum_error(tips, ref))
+    stancf_sets = [
+        ("p2", "SAC-2", [4, 8, 16, 32], [1e-3, 5e-4, 2.5e-4, 1.25e-4]),
+        ("p2", "SAC-3", [4, 8, 16], [5e-4, 2.5e-4, 1.25e-4, 6.25e-5]),
+        ("galerkin", "SAC-2", [4, 8, 16, 32], [5e-3, 2.5e-3, 1e-3, 5e-4, 2.5e-4]),
+        ("galerkin", "SAC-3", [4, 8, 16], [5e-3, 2.5e-3, 1e-3, 5e-4, 2.5e-4]),
+    ]
+    if QUICK:
+        stancf_sets = [("galerkin", "SAC-3", [8], [1e-3])]
+    for scheme, element, meshes, steps in stancf_sets:
+        for n in meshes:
+            for dt in steps:
+                r = run_stancf(PENDULUM, n, element, dt, scheme)
+                if r is None:
+                    record("pendulum", "stancf", scheme, element, n, dt, float("nan"), float("nan"), "unstable")
+                    continue
+                wall, tips, s = r
+                record("pendulum", "stancf", scheme, element, n, dt, wall, pendulum_error(tips, ref),
+                       "%.2f it/step, %d tangents" % (s["iterations"]["mean_per_step"], s["iterations"]["factorizations"]))
+
+    # ---- transverse impact ----
+    ref_runs = [(64, 1e-5)] if not QUICK else [(16, 2e-5)]
+    r = run_stancf(IMPACT, ref_runs[0][0], "SAC-3", ref_runs[0][1], "galerkin")
+    ref_tip = r[1][0.3]
+    check = run_stancf(IMPACT, 2 * ref_runs[0][0], "SAC-3", ref_runs[0][1], "galerkin") if not QUICK else None
+    if check:
+        print("impact reference: 64 SAC-3 vs 128 SAC-3: %.4g mm" % (math.dist(check[1][0.3], ref_tip) * 1e3))
+    steps_exu = [1e-4, 5e-5, 2e-5, 1e-5]
+    meshes_exu = [8, 16, 32, 64]
+    if QUICK:
+        steps_exu, meshes_exu = [5e-5], [16]
+    for n in meshes_exu:
+        for dt in steps_exu:
+            wall, data = em.impact(n, dt)
+            tip = data[-1]
+            record("impact", "exudyn", "gen-alpha", "cable2d", n, dt, wall, math.dist((tip[1], tip[2]), ref_tip) * 1e3)
+    stancf_sets = [
+        ("p2", "SAC-2", [8, 16, 32, 64], [5e-5, 2.5e-5, 1.25e-5]),
+        ("p2", "SAC-3", [8, 16, 32], [2.5e-5, 1.25e-5, 6.25e-6]),
+        ("galerkin", "SAC-2", [8, 16, 32, 64], [2e-4, 1e-4, 5e-5, 2.5e-5]),
+        ("galerkin", "SAC-3", [8, 16, 32], [2e-4, 1e-4, 5e-5, 2.5e-5]),
+    ]
+    if QUICK:
+        stancf_sets = [("galerkin", "SAC-3", [16], [5e-5])]
+    for scheme, element, meshes, steps in stancf_sets:
+        for n in meshes:
+            for dt in steps:
+                r = run_stancf(IMPACT, n, element, dt, scheme)
+                if r is None:
+                    record("impact", "stancf", scheme, element, n, dt, float("nan"), float("nan"), "unstable")
+                    continue
+                wall, tips, s = r
+                record("impact", "stancf", scheme, element, n, dt, wall, math.dist(tips[0.3], ref_tip) * 1e3,
+                       "energy drift %.1e" % s["energy"]["max_rel_drift"])
+
+    write_outputs(rows)
+
+
+def write_outputs(rows):
+    with open(os.path.join(OUT, "work_precision.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["# The race: work-precision (this machine, one run)", ""]
+    for problem in ["pendulum", "impact"]:
+        lines.append("## %s" % problem)
+        lines.append("")
+        lines.append("| accuracy | Exudyn cheapest (s) | run | stancf cheapest (s) | run | Exudyn / stancf |")
+        lines.append("|---|---|---|---|---|---|")
+        for acc in [0.1, 0.01]:
+            best = {}
+            for code in ["exudyn", "stancf"]:
+                ok = [r for r in rows if r["problem"] == problem and r["code"] == code
+                      and r["error_mm"] == r["error_mm"] and r["error_mm"] <= acc]
+                best[code] = min(ok, key=lambda r: r["wall_s"]) if ok else None
+            def desc(r):
+                return "%s %s %d el, dt %g (%.3g mm)" % (r["scheme"], r["element"], r["elements"], r["dt"], r["error_mm"]) if r else "not reached"
+            e, s = best["exudyn"], best["stancf"]
+            ratio = "%.2f" % (e["wall_s"] / s["wall_s"]) if e and s else "-"
+            lines.append("| %g mm | %s | %s | %s | %s | %s |" % (
+                acc, "%.3f" % e["wall_s"] if e else "-", desc(e), "%.3f" % s["wall_s"] if s else "-", desc(s), ratio))
+        lines.append("")
+    with open(os.path.join(OUT, "work_precision.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+        for ax, problem in zip(axes, ["pendulum", "impact"]):
+            series = {}
+            for r in rows:
+                if r["problem"] != problem or not (r["error_mm"] == r["error_mm"]):
+                    continue
+                key = "Exudyn ANCFCable2D (gen.-alpha), %d el" % r["elements"] if r["code"] == "exudyn" \
+                    else "stancf %s %s, %d el" % (r["scheme"], r["element"], r["elements"])
+                series.setdefault(key, []).append((r["wall_s"], max(r["error_mm"], 1e-6)))
+            for key, pts in sorted(series.items()):
+                pts.sort()
+                style = "o--" if key.startswith("Exudyn") else ("s-" if "galerkin" in key else "^-")
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, ms=4, lw=1, label=key)
+            for acc in [0.1, 0.01]:
+                ax.axhline(acc, color="grey", lw=0.8, ls=":")
+            ax.set_xlabel("wall time (s)")
+            ax.set_ylabel("tip error (mm)")
+            ax.set_title({"pendulum": "Pendulum, 0.8 s: largest tip error at the report times",
+                          "impact": "Transverse impact, 0.3 s: tip error at 0.3 s"}[problem], fontsize=10)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=6, ncol=2)
+        fig.tight_layout()
+        fig.savefig(os.path.join(OUT, "work_precision.png"), dpi=130)
+    except ImportError:
+        print("matplotlib not installed: no plot")
+
+
+if __name__ == "__main__":
+    t0 = time.perf_counter()
+    main()
+    print("race took %.0f s" % (time.perf_counter() - t0))

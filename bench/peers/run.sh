@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The race against Exudyn (issue 6): builds stancf, makes a virtual
+# environment with Exudyn, numpy and matplotlib from PyPI, and runs the
+# sweeps. Up to ~20 minutes on a 2-core machine; `./run.sh --quick` runs a
+# few points only (a smoke test). Results: bench/peers/out/.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+(cd "$root" && cargo build --release -p stancf-cli)
+venv="$here/.venv"
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet exudyn numpy matplotlib
+fi
+cd "$here"
+PYTHONWARNINGS=ignore "$venv/bin/python" race.py "$@"
