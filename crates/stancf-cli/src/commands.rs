@@ -714,7 +714,12 @@ fn run_dynamic(
         "max_residual": json_num(tally.max_residual),
         "courant_number": json_num(d.courant),
         "highest_frequency": json_num(d.w_max),
-        "stable_time_step": d.stable_step.map(json_num).unwrap_or(Value::Null),
+        // P2's limit; the Galerkin step has none.
+        "stable_time_step": d
+            .stable_step
+            .filter(|_| sc.analysis.time_scheme == stancf::TimeScheme::P2)
+            .map(json_num)
+            .unwrap_or(Value::Null),
         "time_scheme": match sc.analysis.time_scheme {
             stancf::TimeScheme::P2 => "p2",
             stancf::TimeScheme::Galerkin => "galerkin",

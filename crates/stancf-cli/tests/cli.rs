@@ -970,10 +970,52 @@ fn galerkin_from_a_scenario() {
     let s: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(s["time_scheme"], "galerkin");
+    assert!(s["stable_time_step"].is_null(), "{s}");
+    let w_dt = s["w_max_dt"].as_f64().unwrap();
+    assert!((w_dt - 29.98).abs() < 0.01, "{w_dt}");
+    // Newton builds one tangent per iteration.
+    let tangents = s["solver"]["tangents_per_step"].as_f64().unwrap();
+    let iterations = s["iterations"]["mean_per_step"].as_f64().unwrap();
+    assert!(
+        tangents >= 1.0 && tangents <= iterations,
+        "{tangents} {iterations}"
+    );
     // Linear momentum exact: the weight impulse m g t.
     let m = 1380.0 * 3.0e-6 * 4.0;
     let py = s["linear_momentum"][1].as_f64().unwrap();
     assert!((py + m * 9.81 * 0.05).abs() < 1e-14, "{py}");
+    // Modified Newton from the scenario: the same motion with the factors
+    // kept across steps (fewer tangents than steps).
+    let sc_m = write_scenario(
+        &d,
+        "gm.toml",
+        &text_g.replace("time_scheme", "solver = \"modified-newton\"\ntime_scheme"),
+    );
+    let out_m = d.join("res-m");
+    let o = stancf(&[
+        "run",
+        sc_m.to_str().unwrap(),
+        "--out",
+        out_m.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let sm: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out_m.join("summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(sm["solver"]["method"], "modified-newton");
+    assert!(
+        sm["solver"]["tangents_per_step"].as_f64().unwrap() < 1.0,
+        "{sm}"
+    );
+    // Both converge to 1e-10 of the length (4 m): the ends agree to that
+    // order, amplified at most by the few steps.
+    for k in 0..3 {
+        let (a, b) = (
+            s["tip"][k].as_f64().unwrap(),
+            sm["tip"][k].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() < 1e-8, "{a} {b}");
+    }
     expect_input_error(
         "galerkin-layers",
         &text_g.replace(

