@@ -711,6 +711,7 @@ fn run_dynamic(
         "time_step": json_num(sc.analysis.time_step),
         "time_layers": sc.analysis.time_layers,
         "unknowns_per_step": sim.unknowns_per_step(),
+        "planar": sim.is_planar(),
         "max_residual": json_num(tally.max_residual),
         "courant_number": json_num(d.courant),
         "highest_frequency": json_num(d.w_max),

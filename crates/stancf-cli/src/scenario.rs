@@ -88,6 +88,7 @@ struct RawAnalysis {
     curvature: Option<String>,
     axial_strain: Option<String>,
     constraint_method: Option<String>,
+    planar_reduction: Option<bool>,
 }
 
 #[derive(Deserialize, Default)]
@@ -204,6 +205,8 @@ pub struct Analysis {
     pub time_scheme: stancf::TimeScheme,
     pub load_steps: usize,
     pub constraint_method: stancf::ConstraintMethod,
+    /// Eliminate the out-of-plane coordinates of a planar motion.
+    pub planar_reduction: bool,
 }
 
 /// A validated scenario.
@@ -654,6 +657,9 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                     notes.push(format!("analysis.{name} is not used by a static analysis"));
                 }
             }
+            if ra.planar_reduction.is_some() {
+                notes.push("analysis.planar_reduction is not used by a static analysis".into());
+            }
             if !raw.initial_velocity.is_empty() {
                 return Err(ctx.err("initial_velocity", "a static analysis has no velocities"));
             }
@@ -807,6 +813,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
             time_scheme,
             load_steps,
             constraint_method,
+            planar_reduction: ra.planar_reduction.unwrap_or(true),
         },
         output_every,
         notes,
@@ -917,6 +924,7 @@ impl Scenario {
             },
             constraint_method: self.analysis.constraint_method,
             time_scheme: self.analysis.time_scheme,
+            planar_reduction: self.analysis.planar_reduction,
         }
     }
 }

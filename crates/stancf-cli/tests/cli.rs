@@ -1025,3 +1025,53 @@ fn galerkin_from_a_scenario() {
         &["analysis.time_layers", "one layer per step"],
     );
 }
+
+/// `planar_reduction`: on by default, the planar impact is solved without
+/// its z coordinates (two thirds of the unknowns) and moves as the full
+/// solve does; `false` keeps the full 3-D solve; a wrong type is an input
+/// error naming the key.
+#[test]
+fn planar_reduction_from_a_scenario() {
+    let d = scratch("planar");
+    let summary = |name: &str, scenario: &str| -> serde_json::Value {
+        let sc = write_scenario(&d, &format!("{name}.toml"), scenario);
+        let out = d.join(name);
+        let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap()
+    };
+    let reduced = summary("reduced", BASE);
+    let full = summary(
+        "full",
+        &BASE.replace("[analysis]", "[analysis]\nplanar_reduction = false"),
+    );
+    assert_eq!(reduced["planar"], true);
+    assert_eq!(full["planar"], false);
+    let (nr, nf) = (
+        reduced["unknowns_per_step"].as_u64().unwrap(),
+        full["unknowns_per_step"].as_u64().unwrap(),
+    );
+    assert_eq!(3 * nr, 2 * nf, "{nr} of {nf}");
+    // Both converge to 1e-10 of the 4 m length per step (40 steps).
+    for k in 0..3 {
+        let (a, b) = (
+            reduced["tip"][k].as_f64().unwrap(),
+            full["tip"][k].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() < 2.0 * 40.0 * 4e-10, "{a} {b}");
+    }
+    // Out of the plane: gravity with a z component keeps the full solve.
+    let tilted = summary(
+        "tilted",
+        &BASE.replace(
+            "acceleration = [0.0, -9.81, 0.0]",
+            "acceleration = [0.0, -9.81, 0.1]",
+        ),
+    );
+    assert_eq!(tilted["planar"], false);
+    expect_input_error(
+        "planar-type",
+        &BASE.replace("[analysis]", "[analysis]\nplanar_reduction = \"yes\""),
+        &["planar_reduction"],
+    );
+}

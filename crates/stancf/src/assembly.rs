@@ -129,8 +129,14 @@ impl SlabLayout {
         let mut next = 0;
         for n in 0..nodes {
             block_start.push(next);
-            let constrained = |d: usize| model.constraints.is_constrained(n * dpn + d);
-            let eliminated = |d: usize| method == ConstraintMethod::Elimination && constrained(d);
+            // Coordinates held by the planar reduction are always
+            // eliminated; constraints by the chosen method.
+            let inactive = |d: usize| model.constraints.is_inactive(n * dpn + d);
+            let constrained =
+                |d: usize| model.constraints.is_constrained(n * dpn + d) && !inactive(d);
+            let eliminated = |d: usize| {
+                inactive(d) || (method == ConstraintMethod::Elimination && constrained(d))
+            };
             // Unknowns and rows share the same count per node; number both.
             let mut u = next;
             let mut r = next;

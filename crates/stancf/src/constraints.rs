@@ -100,6 +100,11 @@ pub struct Constraints {
     /// Nodes whose position r is constrained (their reactions are
     /// reported), ascending.
     pub position_nodes: Vec<usize>,
+    /// Per global coordinate: held because the motion stays in a plane
+    /// (see [`crate::Model::reduce_to_plane`]), not by a constraint. Such a
+    /// coordinate has a fixed `motion` and is always eliminated, never
+    /// given a multiplier. Empty when no coordinate is held so.
+    pub inactive: Vec<bool>,
 }
 
 impl Constraints {
@@ -208,6 +213,7 @@ impl Constraints {
             list,
             motion,
             position_nodes,
+            inactive: Vec::new(),
         })
     }
 
@@ -215,8 +221,32 @@ impl Constraints {
         self.list.is_empty()
     }
 
+    /// True if the coordinate's values are prescribed: by a constraint, or
+    /// because it is held by the planar reduction.
     pub fn is_constrained(&self, g: usize) -> bool {
         self.motion[g].is_some()
+    }
+
+    /// True if the coordinate is held by the planar reduction.
+    pub fn is_inactive(&self, g: usize) -> bool {
+        self.inactive.get(g).copied().unwrap_or(false)
+    }
+
+    /// True if some coordinate is held by the planar reduction.
+    pub fn has_inactive(&self) -> bool {
+        self.inactive.iter().any(|&b| b)
+    }
+
+    /// Holds coordinate g at `value` for all t (planar reduction). A
+    /// coordinate a constraint already holds keeps its motion.
+    pub fn hold_inactive(&mut self, g: usize, value: f64) {
+        if self.inactive.len() < self.motion.len() {
+            self.inactive.resize(self.motion.len(), false);
+        }
+        if self.motion[g].is_none() {
+            self.motion[g] = Some(CoordinateMotion::fixed(value));
+        }
+        self.inactive[g] = true;
     }
 
     /// True if some constraint moves (prescribed motion does work).

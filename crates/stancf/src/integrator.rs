@@ -36,6 +36,10 @@ pub struct StepSettings {
     pub constraint_method: ConstraintMethod,
     /// P2 (the paper's, eq. 22) or the Galerkin step (all four variations).
     pub time_scheme: TimeScheme,
+    /// Eliminate the out-of-plane coordinates when the motion is planar
+    /// ([`Model::reduce_to_plane`]): the same motion, a third fewer
+    /// unknowns.
+    pub planar_reduction: bool,
 }
 
 /// Which equations a step solves (method notes).
@@ -60,6 +64,7 @@ impl Default for StepSettings {
             newton: NewtonSettings::default(),
             constraint_method: ConstraintMethod::default(),
             time_scheme: TimeScheme::default(),
+            planar_reduction: true,
         }
     }
 }
@@ -154,6 +159,7 @@ impl Simulation {
     /// size; its constrained coordinates are set to their prescribed values
     /// and rates at `initial.t`).
     pub fn new(model: Model, initial: State, settings: StepSettings) -> Result<Self, ModelError> {
+        let mut model = model;
         let dt = settings.time_step;
         if !dt.is_finite() || dt <= 0.0 {
             return Err(ModelError::invalid(
@@ -204,6 +210,9 @@ impl Simulation {
         }
         let mut initial = initial;
         model.apply_constraints(&mut initial);
+        if settings.planar_reduction {
+            model.reduce_to_plane(&initial);
+        }
         let layers = settings.time_layers;
         let scheme = match settings.time_scheme {
             TimeScheme::P2 => Scheme::P2 { layers },
@@ -346,6 +355,12 @@ impl Simulation {
     }
 
     /// Unknowns solved for in every step.
+    /// Whether the out-of-plane coordinates are eliminated (planar motion,
+    /// [`StepSettings::planar_reduction`]).
+    pub fn is_planar(&self) -> bool {
+        self.model.constraints.has_inactive()
+    }
+
     pub fn unknowns_per_step(&self) -> usize {
         self.layout.size()
     }
@@ -538,8 +553,9 @@ impl Simulation {
             slab: &self.slab,
             start: &self.start,
         };
-        let eliminated = self.layout.method == ConstraintMethod::Elimination
-            && !self.model.constraints.is_empty();
+        let eliminated = !self.model.constraints.is_empty()
+            && (self.layout.method == ConstraintMethod::Elimination
+                || self.model.constraints.has_inactive());
         let galerkin = self.mass_lu.is_some();
         if eliminated || galerkin || !self.model.drag.is_empty() {
             problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);

@@ -509,6 +509,61 @@ impl Model {
         s
     }
 
+    /// The out-of-plane coordinates (the z components of r, r_x, r_xx at
+    /// every node) if the motion from `state` stays in the plane z = z0:
+    /// every node at z0 with r_x, r_xx and all rates in the plane; gravity,
+    /// point forces and the fluid velocity of drag in the plane; end
+    /// moments about z; constraints that do not move out of it. Then, by
+    /// the mirror symmetry about the plane, the z equations hold for
+    /// z = z0 and zero slopes at every step, and their Jacobian does not
+    /// couple them to the in-plane ones at such states (every coupling
+    /// term carries an out-of-plane component), so eliminating them gives
+    /// the same motion with a third fewer unknowns. `None` otherwise.
+    pub fn planar_coordinates(&self, state: &State) -> Option<Vec<usize>> {
+        let dpn = self.dofs_per_node();
+        let n = self.dofs();
+        if state.e.len() != n || state.v.len() != n {
+            return None;
+        }
+        let z0 = state.e[2];
+        let mut out = Vec::with_capacity(n / 3);
+        for g in (2..n).step_by(3) {
+            let value = if g % dpn == 2 { z0 } else { 0.0 };
+            if state.e[g] != value || state.v[g] != 0.0 {
+                return None;
+            }
+            if let Some(m) = &self.constraints.motion[g] {
+                let still = m.rate == 0.0 && (m.amplitude == 0.0 || m.omega == 0.0);
+                if !still || m.value(0.0) != value {
+                    return None;
+                }
+            }
+            out.push(g);
+        }
+        let in_plane = self.loads.iter().all(|l| match l {
+            Load::Gravity { acceleration } => acceleration[2] == 0.0,
+            Load::PointForce { force, .. } => force[2] == 0.0,
+            Load::EndMoment { moment, .. } => moment[0] == 0.0 && moment[1] == 0.0,
+            Load::AirDrag(d) => d.fluid_velocity[2] == 0.0,
+        });
+        in_plane.then_some(out)
+    }
+
+    /// Holds the out-of-plane coordinates at their values when the motion
+    /// from `state` is planar (see [`Self::planar_coordinates`]); returns
+    /// whether it did.
+    pub fn reduce_to_plane(&mut self, state: &State) -> bool {
+        match self.planar_coordinates(state) {
+            Some(dofs) => {
+                for g in dofs {
+                    self.constraints.hold_inactive(g, state.e[g]);
+                }
+                true
+            }
+            None => false,
+        }
+    }
+
     /// Sets every constrained coordinate of `state` to its prescribed value
     /// and rate at `state.t`.
     pub fn apply_constraints(&self, state: &mut State) {
