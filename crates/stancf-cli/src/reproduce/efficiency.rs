@@ -316,8 +316,8 @@ pub fn efficiency(dir: &Path) -> Result<(), Failure> {
          iterations are cheaper residual-only evaluations. Time-direction assembly halves the \
          steps but doubles the unknowns per step and does not lengthen P2's stable step (method \
          notes). Newton's rate estimate is only defined on steps with three residuals; most \
-         steps converge after one update: the predictor (Taylor with the last step's \
-         acceleration) leaves a scaled residual of ~1e-6 and one Newton update brings it to the \
+         steps converge after one update: the predictor (the last step's cubic in time, \
+         extrapolated) leaves a small scaled residual and one Newton update brings it to the \
          round-off level, so three residuals above the tolerance rarely exist (\"-\": none). \
          Broyden's first update gains fewer orders (its Jacobian is from an earlier step) and \
          it iterates more, with far fewer factorizations."
