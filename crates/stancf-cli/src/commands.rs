@@ -278,7 +278,7 @@ impl Writers {
             )?;
             writeln!(conv.writer(), "t,step,evaluation,residual")?;
         }
-        writeln!(w.nodes.writer(), "t,node,x,y,z")?;
+        writeln!(w.nodes.writer(), "t,node,x,y,z,dx_ds,dy_ds,dz_ds")?;
         writeln!(w.stress.writer(), "t,s,axial_stress,curvature,element")?;
         if let Some(r) = w.reactions.as_mut() {
             writeln!(r.writer(), "t,node,fx,fy,fz")?;
@@ -332,9 +332,20 @@ impl Writers {
             Num(row.drag_work)
         )?;
         let w = self.nodes.writer();
+        let dpn = model.dofs_per_node();
         for j in 0..model.nodes() {
             let r = model.node_position(&state.e, j);
-            writeln!(w, "{t},{j},{},{},{}", Num(r[0]), Num(r[1]), Num(r[2]))?;
+            let d = &state.e[j * dpn + 3..j * dpn + 6];
+            writeln!(
+                w,
+                "{t},{j},{},{},{},{},{},{}",
+                Num(r[0]),
+                Num(r[1]),
+                Num(r[2]),
+                Num(d[0]),
+                Num(d[1]),
+                Num(d[2])
+            )?;
         }
         let w = self.stress.writer();
         for s in &self.samples {
@@ -486,6 +497,7 @@ fn common_summary(
     );
     m.insert("element".into(), json!(model.element_type().name()));
     m.insert("elements".into(), json!(sc.cable.elements));
+    m.insert("length".into(), json_num(sc.cable.length));
     m.insert("dofs".into(), json!(model.dofs()));
     m.insert("wall_time_s".into(), json_num(wall));
     m.insert("tip".into(), vec3(tip));
@@ -525,17 +537,55 @@ fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
     })
 }
 
-pub fn run(path: &Path, out: Option<PathBuf>) -> Result<(), Failure> {
+/// What `stancf run` writes besides the result files.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// Output folder (default: out/<scenario file stem>/).
+    pub out: Option<PathBuf>,
+    /// Also draw the run's figures (PNG and SVG) next to its results.
+    pub plot: bool,
+}
+
+pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
     let (sc, model, state) = load(path)?;
-    match sc.analysis.kind {
-        AnalysisKind::Dynamic => run_dynamic(path, out, sc, model, state),
-        AnalysisKind::Static => run_static(path, out, sc, model),
+    let dir = output_dir(path, opts.out.clone());
+    let result = match sc.analysis.kind {
+        AnalysisKind::Dynamic => run_dynamic(path, &dir, sc, model, state),
+        AnalysisKind::Static => run_static(path, &dir, sc, model),
+    };
+    // The figures are drawn from the files on disk, also those of a run
+    // that stopped early (they hold every converged step).
+    if opts.plot && dir.join("summary.json").exists() {
+        let names = crate::figures::plot_results(&dir).map_err(io_err(&dir))?;
+        println!(
+            "figures: {} (PNG and SVG) in {}",
+            names.join(", "),
+            dir.display()
+        );
     }
+    result
+}
+
+/// `stancf plot DIR`: the figures of the results already in DIR.
+pub fn plot(dir: &Path) -> Result<(), Failure> {
+    if !dir.join("summary.json").exists() {
+        return Err(Failure::Input(format!(
+            "{}: no summary.json here: not a folder of stancf results",
+            dir.display()
+        )));
+    }
+    let names = crate::figures::plot_results(dir).map_err(|e| Failure::Input(e.to_string()))?;
+    println!(
+        "figures: {} (PNG and SVG) in {}",
+        names.join(", "),
+        dir.display()
+    );
+    Ok(())
 }
 
 fn run_dynamic(
     path: &Path,
-    out: Option<PathBuf>,
+    dir: &Path,
     sc: Scenario,
     model: Model,
     state: State,
@@ -547,7 +597,7 @@ fn run_dynamic(
     let mut sim = Simulation::new(model, state, sc.step_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     sim.set_clock(Box::new(WallClock(Instant::now())));
-    let dir = output_dir(path, out);
+    let dir = dir.to_path_buf();
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
     let constrained = !sim.model().constraints.is_empty();
     let mut writers = Writers::create(&dir, constrained, true).map_err(io_err(&dir))?;
@@ -781,18 +831,13 @@ fn static_energies(model: &Model, state: &State) -> Energies {
     en
 }
 
-fn run_static(
-    path: &Path,
-    out: Option<PathBuf>,
-    sc: Scenario,
-    model: Model,
-) -> Result<(), Failure> {
+fn run_static(path: &Path, dir: &Path, sc: Scenario, model: Model) -> Result<(), Failure> {
     for w in warnings(&sc, &model, None) {
         eprintln!("warning: {w}");
     }
     let mut solver = StaticSolver::new(model, sc.static_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
-    let dir = output_dir(path, out);
+    let dir = dir.to_path_buf();
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
     let mut writers = Writers::create(&dir, true, false).map_err(io_err(&dir))?;
     let e0 = static_energies(solver.model(), solver.state());

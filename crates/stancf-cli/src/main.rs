@@ -4,8 +4,11 @@
 //! failed (results up to the last converged step are kept), 1 anything else.
 
 mod commands;
+mod figures;
 mod output;
+mod plot;
 mod reproduce;
+mod results;
 mod scenario;
 
 use clap::{Parser, Subcommand};
@@ -32,6 +35,14 @@ enum Command {
         /// Output folder (default: out/<scenario file stem>/).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Also draw the figures (PNG and SVG) next to the results.
+        #[arg(long)]
+        plot: bool,
+    },
+    /// Draw the figures (PNG and SVG) of results already in DIR.
+    Plot {
+        /// A folder written by `stancf run`.
+        dir: PathBuf,
     },
     /// Validate a scenario and print derived figures (DOFs, wave speed,
     /// Courant number, stable step); runs nothing.
@@ -70,7 +81,12 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        Command::Run { scenario, out } => commands::run(&scenario, out),
+        Command::Run {
+            scenario,
+            out,
+            plot,
+        } => commands::run(&scenario, commands::RunOptions { out, plot }),
+        Command::Plot { dir } => commands::plot(&dir),
         Command::Check { scenario } => commands::check(&scenario),
         Command::Reproduce { study, out } => reproduce::reproduce(
             &study,

@@ -1075,3 +1075,86 @@ fn planar_reduction_from_a_scenario() {
         &["planar_reduction"],
     );
 }
+
+/// A PNG file: signature, IHDR size, and a size a real figure has.
+fn check_png(path: &Path) {
+    let b = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{}", path.display());
+    assert_eq!(&b[12..16], b"IHDR", "{}", path.display());
+    let w = u32::from_be_bytes(b[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(b[20..24].try_into().unwrap());
+    assert!(
+        (600..=2000).contains(&w) && (400..=1500).contains(&h),
+        "{w} x {h}"
+    );
+    assert!(
+        b.len() > 10_000 && b.len() < 5_000_000,
+        "{}: {} bytes",
+        path.display(),
+        b.len()
+    );
+}
+
+/// An SVG file that a browser would draw, with its title in it.
+fn check_svg(path: &Path, title: &str) {
+    let s = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(s.starts_with("<svg"), "{}", path.display());
+    assert!(s.trim_end().ends_with("</svg>"), "{}", path.display());
+    assert!(s.contains(title), "{}: no title {title:?}", path.display());
+    assert!(
+        s.len() > 2_000 && s.len() < 10_000_000,
+        "{}: {} bytes",
+        path.display(),
+        s.len()
+    );
+}
+
+/// `run --plot` draws the run's figures next to its results, `plot DIR`
+/// redraws them from the files; a folder without results is an input
+/// error.
+#[test]
+fn run_plot_and_plot_dir_write_valid_figures() {
+    let d = scratch("plots");
+    let sc = write_scenario(
+        &d,
+        "p.toml",
+        &BASE.replace("title = \"test\"", "title = \"plot test\""),
+    );
+    let out = d.join("res");
+    let o = stancf(&[
+        "run",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--plot",
+    ]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        so.contains("figures: shapes, energy, stress_map, convergence"),
+        "{so}"
+    );
+    let figures = [
+        ("shapes", "plot test: shapes"),
+        ("energy", "plot test: energies"),
+        ("stress_map", "plot test: axial stress"),
+        ("convergence", "plot test: residuals"),
+    ];
+    for (name, title) in figures {
+        check_png(&out.join(format!("{name}.png")));
+        check_svg(&out.join(format!("{name}.svg")), title);
+    }
+    // Redrawn from the files alone.
+    for (name, _) in figures {
+        std::fs::remove_file(out.join(format!("{name}.png"))).unwrap();
+    }
+    let o = stancf(&["plot", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    for (name, _) in figures {
+        check_png(&out.join(format!("{name}.png")));
+    }
+    let o = stancf(&["plot", d.to_str().unwrap()]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    assert!(se.contains("no summary.json"), "{se}");
+}

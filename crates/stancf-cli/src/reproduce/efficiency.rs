@@ -323,6 +323,29 @@ pub fn efficiency(dir: &Path) -> Result<(), Failure> {
          it iterates more, with far fewer factorizations."
     )
     .ok();
+    // Fig. 6: the same ratios as bars.
+    let ratio = |f: &dyn Fn(&Measured, &Setup) -> f64| -> Vec<f64> {
+        let b = f(&base, &cases[0]);
+        results
+            .iter()
+            .zip(&cases)
+            .map(|(m, c)| f(m, c) / b)
+            .collect()
+    };
+    let bars = crate::plot::Bars {
+        title: "Fig. 6: cost of the cases of Table 5, as ratios to case 1".into(),
+        y_label: "ratio to case 1".into(),
+        categories: (1..=cases.len()).map(|k| format!("case {k}")).collect(),
+        series: vec![
+            ("Part A (elements)".into(), ratio(&|m, _| m.part_a)),
+            ("Part B (linear algebra)".into(), ratio(&|m, _| m.part_b)),
+            ("total time".into(), ratio(&|m, _| m.part_a + m.part_b)),
+            ("iterations".into(), ratio(&|m, _| m.iterations as f64)),
+        ],
+    };
+    crate::plot::save(&bars, dir, "fig6_efficiency")
+        .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
+    writeln!(md, "\n![Fig. 6](fig6_efficiency.png)").ok();
     write_files(dir, &[("efficiency.csv", &csv), ("efficiency.md", &md)])
 }
 

@@ -1,0 +1,432 @@
+//! The figures of one run, drawn from its result files: cable shapes over
+//! time (the paper's Figs. 3, 5a, 8, 10), energies against time (Fig. 5b),
+//! the space-time map of axial stress (Fig. 4) and the residual against the
+//! iteration (Fig. 7).
+
+use crate::plot::{sequential, ColorMap, Lines, Series, PALETTE};
+use crate::results::{by_time, spread, Table};
+use std::io;
+use std::path::Path;
+
+/// What `summary.json` says that the figures need.
+#[derive(Clone, Debug)]
+pub struct RunInfo {
+    pub title: String,
+    pub dynamic: bool,
+    /// Element length in the reference (unstretched) configuration.
+    pub element_length: Option<f64>,
+}
+
+impl RunInfo {
+    pub fn read(dir: &Path) -> io::Result<RunInfo> {
+        let path = dir.join("summary.json");
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let s: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
+            io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("{}: {e}", path.display()),
+            )
+        })?;
+        let element_length = match (s["length"].as_f64(), s["elements"].as_f64()) {
+            (Some(l), Some(n)) if n > 0.0 => Some(l / n),
+            _ => None,
+        };
+        Ok(RunInfo {
+            title: s["title"].as_str().unwrap_or("stancf run").to_string(),
+            dynamic: s["analysis"].as_str() != Some("static"),
+            element_length,
+        })
+    }
+}
+
+/// The two coordinate axes (0 = x, 1 = y, 2 = z) along which the cable
+/// moves most, in ascending order: the plane of the shape plots.
+pub fn plane_of_motion(points: impl Iterator<Item = [f64; 3]>) -> (usize, usize) {
+    let mut lo = [f64::MAX; 3];
+    let mut hi = [f64::MIN; 3];
+    for p in points {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    let extent: Vec<f64> = (0..3).map(|c| (hi[c] - lo[c]).max(0.0)).collect();
+    // Drop the axis with the smallest extent (z on ties: planar problems).
+    let drop = (0..3)
+        .rev()
+        .min_by(|&a, &b| extent[a].partial_cmp(&extent[b]).expect("finite"))
+        .unwrap_or(2);
+    let mut axes = (0..3).filter(|&c| c != drop);
+    (axes.next().unwrap_or(0), axes.next().unwrap_or(1))
+}
+
+/// A node as written: position and (if the file has it) slope r_x.
+#[derive(Clone, Copy, Debug)]
+pub struct NodeRow {
+    pub r: [f64; 3],
+    pub slope: Option<[f64; 3]>,
+}
+
+/// The nodes of every written step of `nodes.csv`: (t, nodes).
+pub fn read_nodes(dir: &Path) -> io::Result<Vec<(f64, Vec<NodeRow>)>> {
+    let table = Table::read(&dir.join("nodes.csv"))?;
+    let f = "nodes.csv";
+    let c = [
+        table.need("x", f)?,
+        table.need("y", f)?,
+        table.need("z", f)?,
+    ];
+    let d = [table.col("dx_ds"), table.col("dy_ds"), table.col("dz_ds")];
+    Ok(by_time(&table)
+        .into_iter()
+        .map(|(t, rows)| {
+            let nodes = rows
+                .iter()
+                .map(|row| NodeRow {
+                    r: [row[c[0]], row[c[1]], row[c[2]]],
+                    slope: match d {
+                        [Some(a), Some(b), Some(e)] => Some([row[a], row[b], row[e]]),
+                        _ => None,
+                    },
+                })
+                .collect();
+            (t, nodes)
+        })
+        .collect())
+}
+
+/// The centre line through the nodes: the cubic Hermite interpolation of
+/// positions and slopes over each element (eq. 4; exact for SAC-2, the
+/// cubic part of SAC-3), `per_element` points per element; straight
+/// segments without slopes.
+pub fn centre_line(
+    nodes: &[NodeRow],
+    element_length: Option<f64>,
+    per_element: usize,
+) -> Vec<[f64; 3]> {
+    let mut out = Vec::new();
+    for (k, pair) in nodes.windows(2).enumerate() {
+        let (a, b) = (&pair[0], &pair[1]);
+        let (Some(da), Some(db), Some(l)) = (a.slope, b.slope, element_length) else {
+            if k == 0 {
+                out.push(a.r);
+            }
+            out.push(b.r);
+            continue;
+        };
+        let first = if k == 0 { 0 } else { 1 };
+        for i in first..=per_element {
+            let x = i as f64 / per_element as f64;
+            let (x2, x3) = (x * x, x * x * x);
+            let h = [
+                2.0 * x3 - 3.0 * x2 + 1.0,
+                l * (x3 - 2.0 * x2 + x),
+                -2.0 * x3 + 3.0 * x2,
+                l * (x3 - x2),
+            ];
+            out.push(std::array::from_fn(|c| {
+                h[0] * a.r[c] + h[1] * da[c] + h[2] * b.r[c] + h[3] * db[c]
+            }));
+        }
+    }
+    out
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// Shapes at up to `count` written times, in the plane of motion.
+pub fn shapes_figure(
+    steps: &[(f64, Vec<NodeRow>)],
+    info: &RunInfo,
+    count: usize,
+    time_label: &str,
+) -> Lines {
+    let (a, b) = plane_of_motion(steps.iter().flat_map(|(_, n)| n.iter().map(|r| r.r)));
+    let mut fig = Lines::new(
+        format!("{}: shapes", info.title),
+        format!("{} (m)", AXES[a]),
+        format!("{} (m)", AXES[b]),
+    );
+    fig.equal_axes = true;
+    let picks = spread(steps.len(), count);
+    for (k, &i) in picks.iter().enumerate() {
+        let (t, nodes) = &steps[i];
+        let line = centre_line(nodes, info.element_length, 12);
+        fig.series.push(Series::line(
+            format!("{time_label} = {}", crate::plot::tick(*t)),
+            line.iter().map(|p| (p[a], p[b])).collect(),
+            sequential(k, picks.len()),
+        ));
+    }
+    fig
+}
+
+/// Energies against time from `history.csv`.
+pub fn energy_figure(history: &Table, info: &RunInfo) -> io::Result<Lines> {
+    let f = "history.csv";
+    let t = history.column(0);
+    let mut fig = Lines::new(
+        format!("{}: energies", info.title),
+        if info.dynamic { "t (s)" } else { "load factor" },
+        "energy (J)",
+    );
+    let names: &[(&str, &str)] = if info.dynamic {
+        &[
+            ("kinetic", "kinetic"),
+            ("strain", "strain"),
+            ("gravity", "gravity potential"),
+            ("total", "total"),
+        ]
+    } else {
+        &[("strain", "strain"), ("gravity", "gravity potential")]
+    };
+    for (k, (col, label)) in names.iter().enumerate() {
+        let c = history.need(col, f)?;
+        let v = history.column(c);
+        if *col == "gravity" && v.iter().all(|x| *x == 0.0) {
+            continue;
+        }
+        let mut s = Series::line(*label, t.iter().copied().zip(v).collect(), PALETTE[k]);
+        if *col == "total" {
+            s.color = PALETTE[6];
+            s = s.dashed();
+        }
+        fig.series.push(s);
+    }
+    Ok(fig)
+}
+
+/// The space-time map of axial stress from `stress.csv` (columns: written
+/// times, at most `max_columns` of them; rows: the sampled points, where
+/// the two samples of an interior node are averaged).
+pub fn stress_figure(stress: &Table, info: &RunInfo, max_columns: usize) -> io::Result<ColorMap> {
+    let f = "stress.csv";
+    let (cs, cv) = (stress.need("s", f)?, stress.need("axial_stress", f)?);
+    let steps = by_time(stress);
+    let picks = spread(steps.len(), max_columns);
+    // Material points: the distinct s of the first step.
+    let mut s_values: Vec<f64> = steps
+        .first()
+        .map(|(_, rows)| rows.iter().map(|r| r[cs]).collect())
+        .unwrap_or_default();
+    s_values.sort_by(|a, b| a.partial_cmp(b).expect("finite"));
+    s_values.dedup();
+    let y_edges = edges(&s_values);
+    let times: Vec<f64> = picks.iter().map(|&i| steps[i].0).collect();
+    let x_edges = edges(&times);
+    let values = picks
+        .iter()
+        .map(|&i| {
+            let mut sum = vec![0.0; s_values.len()];
+            let mut n = vec![0usize; s_values.len()];
+            for r in &steps[i].1 {
+                if let Ok(j) = s_values.binary_search_by(|v| v.partial_cmp(&r[cs]).expect("finite"))
+                {
+                    sum[j] += r[cv];
+                    n[j] += 1;
+                }
+            }
+            sum.iter()
+                .zip(n.iter())
+                .map(|(s, &k)| if k > 0 { s / k as f64 * 1e-6 } else { f64::NAN })
+                .collect()
+        })
+        .collect();
+    Ok(ColorMap {
+        title: format!("{}: axial stress", info.title),
+        x_label: if info.dynamic { "t (s)" } else { "load factor" }.into(),
+        y_label: "material coordinate s (m)".into(),
+        value_label: "axial stress E eps (MPa)".into(),
+        x_edges,
+        y_edges,
+        values,
+        diverging: true,
+        clip_quantile: Some(0.99),
+    })
+}
+
+/// Cell edges around sorted centres: midpoints, and half a gap beyond
+/// the ends.
+pub fn edges(centres: &[f64]) -> Vec<f64> {
+    match centres.len() {
+        0 => vec![0.0, 1.0],
+        1 => vec![centres[0] - 0.5, centres[0] + 0.5],
+        n => {
+            let mut e = Vec::with_capacity(n + 1);
+            e.push(centres[0] - 0.5 * (centres[1] - centres[0]));
+            for w in centres.windows(2) {
+                e.push(0.5 * (w[0] + w[1]));
+            }
+            e.push(centres[n - 1] + 0.5 * (centres[n - 1] - centres[n - 2]));
+            e
+        }
+    }
+}
+
+/// The scaled residual of every evaluation of up to `count` steps spread
+/// over the run, from `convergence.csv`.
+pub fn convergence_figure(conv: &Table, info: &RunInfo, count: usize) -> io::Result<Lines> {
+    let f = "convergence.csv";
+    let (cstep, ceval, cres) = (
+        conv.need("step", f)?,
+        conv.need("evaluation", f)?,
+        conv.need("residual", f)?,
+    );
+    // (step, t, (evaluation, residual) of each evaluation)
+    type StepResiduals = (f64, f64, Vec<(f64, f64)>);
+    let mut steps: Vec<StepResiduals> = Vec::new();
+    for row in &conv.rows {
+        match steps.last_mut() {
+            Some((step, _, pts)) if *step == row[cstep] => pts.push((row[ceval], row[cres])),
+            _ => steps.push((row[cstep], row[0], vec![(row[ceval], row[cres])])),
+        }
+    }
+    let mut fig = Lines::new(
+        format!("{}: residuals", info.title),
+        "evaluation",
+        "scaled residual",
+    );
+    fig.log_y = true;
+    fig.integer_x = true;
+    let picks = spread(steps.len(), count);
+    for (k, &i) in picks.iter().enumerate() {
+        let (step, t, pts) = &steps[i];
+        // Exact zeros cannot be drawn on a log axis: shown at 1e-18.
+        let pts = pts.iter().map(|&(x, y)| (x, y.max(1e-18))).collect();
+        fig.series.push(
+            Series::line(
+                format!("step {} (t = {})", *step as usize, crate::plot::tick(*t)),
+                pts,
+                sequential(k, picks.len()),
+            )
+            .with_markers(),
+        );
+    }
+    Ok(fig)
+}
+
+/// Writes the figures of the run whose results are in `dir` next to them;
+/// returns their names (without extension).
+pub fn plot_results(dir: &Path) -> io::Result<Vec<String>> {
+    let info = RunInfo::read(dir)?;
+    let mut written = Vec::new();
+    let mut put = |fig: &dyn Fn(&Path, &str) -> io::Result<()>, name: &str| -> io::Result<()> {
+        fig(dir, name)?;
+        written.push(name.to_string());
+        Ok(())
+    };
+    let steps = read_nodes(dir)?;
+    let time_label = if info.dynamic { "t" } else { "load" };
+    let shapes = shapes_figure(&steps, &info, 9, time_label);
+    put(&|d, n| crate::plot::save(&shapes, d, n), "shapes")?;
+    let history = Table::read(&dir.join("history.csv"))?;
+    let energy = energy_figure(&history, &info)?;
+    put(&|d, n| crate::plot::save(&energy, d, n), "energy")?;
+    let stress = Table::read(&dir.join("stress.csv"))?;
+    let map = stress_figure(&stress, &info, 400)?;
+    put(&|d, n| crate::plot::save(&map, d, n), "stress_map")?;
+    if dir.join("convergence.csv").exists() {
+        let conv = Table::read(&dir.join("convergence.csv"))?;
+        let fig = convergence_figure(&conv, &info, 8)?;
+        put(&|d, n| crate::plot::save(&fig, d, n), "convergence")?;
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hermite_centre_line_passes_through_the_nodes_and_bends_with_the_slopes() {
+        // A quarter circle of radius 1 in one element: r(0) = (1, 0),
+        // r(l) = (0, 1), unit tangents, l = pi / 2.
+        let l = std::f64::consts::FRAC_PI_2;
+        let nodes = [
+            NodeRow {
+                r: [1.0, 0.0, 0.0],
+                slope: Some([0.0, 1.0, 0.0]),
+            },
+            NodeRow {
+                r: [0.0, 1.0, 0.0],
+                slope: Some([-1.0, 0.0, 0.0]),
+            },
+        ];
+        let line = centre_line(&nodes, Some(l), 8);
+        assert_eq!(line.len(), 9);
+        assert_eq!(line[0], [1.0, 0.0, 0.0]);
+        assert_eq!(line[8], [0.0, 1.0, 0.0]);
+        // A cubic Hermite with arc-length tangents (|r_x| = 1, as SAC-2
+        // nodes carry them) stays inside the circle, 1.52 % short of the
+        // radius at mid-element (computed from the basis: 0.98479).
+        for p in &line[1..8] {
+            let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+            assert!(r < 1.0 && r > 0.9847, "{r}");
+        }
+    }
+
+    /// The figures show the numbers of the files, not a recomputation.
+    #[test]
+    fn figures_take_their_data_from_the_result_files() {
+        let dir = std::env::temp_dir().join(format!("stancf-fig-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let w = |name: &str, text: &str| std::fs::write(dir.join(name), text).unwrap();
+        w(
+            "summary.json",
+            r#"{"title": "synthetic", "analysis": "dynamic", "length": 2.0, "elements": 2}"#,
+        );
+        w(
+            "nodes.csv",
+            "t,node,x,y,z,dx_ds,dy_ds,dz_ds\n\
+             0,0,0,0,0,1,0,0\n0,1,1,0,0,1,0,0\n0,2,2,0,0,1,0,0\n\
+             0.5,0,0,0,0,1,0,0\n0.5,1,0.9,-0.3,0,1,0,0\n0.5,2,1.7,-0.9,0,0.6,-0.8,0\n",
+        );
+        w(
+            "history.csv",
+            "t,kinetic,strain,gravity,total,iterations\n0,1.5,0,0,1.5,0\n0.5,1.25,0.25,0,1.5,2\n",
+        );
+        w(
+            "stress.csv",
+            "t,s,axial_stress,curvature,element\n0,0,1e6,0,0\n0,1,3e6,0,0\n0,1,5e6,0,1\n0,2,-2e6,0,1\n\
+             0.5,0,0,0,0\n0.5,1,1e6,0,0\n0.5,1,1e6,0,1\n0.5,2,7e6,0,1\n",
+        );
+        let info = RunInfo::read(&dir).unwrap();
+        assert_eq!(info.element_length, Some(1.0));
+        let steps = read_nodes(&dir).unwrap();
+        let shapes = shapes_figure(&steps, &info, 9, "t");
+        assert_eq!(shapes.series.len(), 2);
+        let last = &shapes.series[1].points;
+        // Through the nodes of the file: s = 0, l, 2 l.
+        assert_eq!(last[0], (0.0, 0.0));
+        assert_eq!(last[12], (0.9, -0.3));
+        assert_eq!(*last.last().unwrap(), (1.7, -0.9));
+        let history = Table::read(&dir.join("history.csv")).unwrap();
+        let energy = energy_figure(&history, &info).unwrap();
+        let labels: Vec<&str> = energy.series.iter().map(|s| s.label.as_str()).collect();
+        assert_eq!(
+            labels,
+            ["kinetic", "strain", "total"],
+            "zero gravity left out"
+        );
+        assert_eq!(energy.series[0].points, vec![(0.0, 1.5), (0.5, 1.25)]);
+        assert_eq!(energy.series[1].points, vec![(0.0, 0.0), (0.5, 0.25)]);
+        let stress = Table::read(&dir.join("stress.csv")).unwrap();
+        let map = stress_figure(&stress, &info, 400).unwrap();
+        // MPa; the two samples of the interior node averaged.
+        assert_eq!(map.values, vec![vec![1.0, 4.0, -2.0], vec![0.0, 1.0, 7.0]]);
+        assert_eq!(map.y_edges, vec![-0.5, 0.5, 1.5, 2.5]);
+        assert_eq!(map.x_edges, vec![-0.25, 0.25, 0.75]);
+        let written = plot_results(&dir).unwrap();
+        assert_eq!(written, ["shapes", "energy", "stress_map"]);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn plane_of_motion_drops_the_still_axis() {
+        let pts = [[0.0, 0.0, 0.3], [1.0, -2.0, 0.3], [0.5, 1.0, 0.3]];
+        assert_eq!(plane_of_motion(pts.into_iter()), (0, 1));
+        let pts = [[0.0, 0.0, 0.0], [0.0, 1.0, 2.0]];
+        assert_eq!(plane_of_motion(pts.into_iter()), (1, 2));
+    }
+}

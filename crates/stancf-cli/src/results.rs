@@ -1,0 +1,123 @@
+//! Reading result files back (docs/interface.md): the plots and the
+//! report are drawn from what is on disk.
+
+use std::io;
+use std::path::Path;
+
+/// A CSV result file: its header and rows of numbers (an empty field, as
+/// in `solver.csv`'s undefined rates, reads as NaN).
+#[derive(Clone, Debug)]
+pub struct Table {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<f64>>,
+}
+
+impl Table {
+    pub fn read(path: &Path) -> io::Result<Table> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let mut lines = text.lines();
+        let header: Vec<String> = lines
+            .next()
+            .unwrap_or("")
+            .split(',')
+            .map(|s| s.trim().to_string())
+            .collect();
+        let mut rows = Vec::new();
+        for (i, line) in lines.enumerate() {
+            if line.trim().is_empty() {
+                continue;
+            }
+            let row: Result<Vec<f64>, _> = line
+                .split(',')
+                .map(|f| {
+                    let f = f.trim();
+                    if f.is_empty() {
+                        Ok(f64::NAN)
+                    } else {
+                        f.parse::<f64>()
+                    }
+                })
+                .collect();
+            let row = row.map_err(|e| {
+                io::Error::new(
+                    io::ErrorKind::InvalidData,
+                    format!("{} line {}: {e}", path.display(), i + 2),
+                )
+            })?;
+            if row.len() != header.len() {
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidData,
+                    format!(
+                        "{} line {}: {} fields, the header has {}",
+                        path.display(),
+                        i + 2,
+                        row.len(),
+                        header.len()
+                    ),
+                ));
+            }
+            rows.push(row);
+        }
+        Ok(Table { header, rows })
+    }
+
+    /// Index of a column.
+    pub fn col(&self, name: &str) -> Option<usize> {
+        self.header.iter().position(|h| h == name)
+    }
+
+    /// Index of a column that must exist.
+    pub fn need(&self, name: &str, file: &str) -> io::Result<usize> {
+        self.col(name).ok_or_else(|| {
+            io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("{file}: no column {name:?}"),
+            )
+        })
+    }
+
+    /// The values of a column.
+    pub fn column(&self, c: usize) -> Vec<f64> {
+        self.rows.iter().map(|r| r[c]).collect()
+    }
+}
+
+/// The rows of a table grouped by their first column (t), in file order.
+pub fn by_time(table: &Table) -> Vec<(f64, Vec<&Vec<f64>>)> {
+    let mut out: Vec<(f64, Vec<&Vec<f64>>)> = Vec::new();
+    for row in &table.rows {
+        match out.last_mut() {
+            Some((t, rows)) if *t == row[0] => rows.push(row),
+            _ => out.push((row[0], vec![row])),
+        }
+    }
+    out
+}
+
+/// `n` indices spread evenly over 0..len, first and last included.
+pub fn spread(len: usize, n: usize) -> Vec<usize> {
+    if len == 0 {
+        return Vec::new();
+    }
+    if len <= n {
+        return (0..len).collect();
+    }
+    let mut v: Vec<usize> = (0..n)
+        .map(|k| ((k as f64) * (len - 1) as f64 / (n - 1) as f64).round() as usize)
+        .collect();
+    v.dedup();
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spread_keeps_the_ends() {
+        assert_eq!(spread(5, 9), vec![0, 1, 2, 3, 4]);
+        assert_eq!(spread(101, 5), vec![0, 25, 50, 75, 100]);
+        assert!(spread(0, 3).is_empty());
+    }
+}
