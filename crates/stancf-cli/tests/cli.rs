@@ -125,9 +125,10 @@ fn run_writes_the_contract_files() {
         assert!((r[1] + r[2] + r[3] - r[4]).abs() <= 1e-12 * r[4].abs().max(1e-300));
     }
     let (h, nodes) = read_csv(&out.join("nodes.csv"));
-    assert_eq!(h, ["t", "node", "x", "y", "z"]);
+    // The contract's columns, then the slope r_x (interface.md extension).
+    assert_eq!(h, ["t", "node", "x", "y", "z", "dx_ds", "dy_ds", "dz_ds"]);
     assert_eq!(nodes.len(), 11 * 9);
-    assert_eq!(nodes[0][1..], [0.0, -2.0, 0.0, 0.0]);
+    assert_eq!(nodes[0][1..], [0.0, -2.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
     let (h, stress) = read_csv(&out.join("stress.csv"));
     assert_eq!(h[..4], ["t", "s", "axial_stress", "curvature"]);
     // At least 5 points per element, both ends included.
