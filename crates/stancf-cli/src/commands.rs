@@ -208,6 +208,8 @@ struct Writers {
     reactions: Option<AtomicFile>,
     /// Per-step solver diagnostics and residual histories (dynamic runs).
     solver: Option<(AtomicFile, AtomicFile)>,
+    /// ParaView files (`--vtk`).
+    vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
 }
 
@@ -247,7 +249,12 @@ struct Row<'a> {
 }
 
 impl Writers {
-    fn create(dir: &Path, with_reactions: bool, with_solver: bool) -> std::io::Result<Self> {
+    fn create(
+        dir: &Path,
+        with_reactions: bool,
+        with_solver: bool,
+        with_vtk: bool,
+    ) -> std::io::Result<Self> {
         let mut w = Writers {
             history: AtomicFile::create(dir, "history.csv")?,
             nodes: AtomicFile::create(dir, "nodes.csv")?,
@@ -262,6 +269,11 @@ impl Writers {
                     AtomicFile::create(dir, "solver.csv")?,
                     AtomicFile::create(dir, "convergence.csv")?,
                 ))
+            } else {
+                None
+            },
+            vtk: if with_vtk {
+                Some(crate::vtk::VtkWriter::create(dir)?)
             } else {
                 None
             },
@@ -358,6 +370,9 @@ impl Writers {
                 s.element
             )?;
         }
+        if let Some(vtk) = self.vtk.as_mut() {
+            vtk.write(model, state)?;
+        }
         if let (Some(file), Some(reactions)) = (self.reactions.as_mut(), row.reactions) {
             let w = file.writer();
             for (node, f) in reactions {
@@ -410,6 +425,9 @@ impl Writers {
         self.stress.commit()?;
         if let Some(r) = self.reactions {
             r.commit()?;
+        }
+        if let Some(v) = self.vtk {
+            v.commit()?;
         }
         Ok(())
     }
@@ -544,14 +562,19 @@ pub struct RunOptions {
     pub out: Option<PathBuf>,
     /// Also draw the run's figures (PNG and SVG) next to its results.
     pub plot: bool,
+    /// Also write ParaView files (one .vtp per written step, cable.pvd).
+    pub vtk: bool,
+    /// No progress bar and no summary on standard output (errors and
+    /// warnings still go to standard error).
+    pub quiet: bool,
 }
 
 pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
     let (sc, model, state) = load(path)?;
     let dir = output_dir(path, opts.out.clone());
     let result = match sc.analysis.kind {
-        AnalysisKind::Dynamic => run_dynamic(path, &dir, sc, model, state),
-        AnalysisKind::Static => run_static(path, &dir, sc, model),
+        AnalysisKind::Dynamic => run_dynamic(path, &dir, &opts, sc, model, state),
+        AnalysisKind::Static => run_static(path, &dir, &opts, sc, model),
     };
     // The figures are drawn from the files on disk, also those of a run
     // that stopped early (they hold every converged step).
@@ -586,6 +609,7 @@ pub fn plot(dir: &Path) -> Result<(), Failure> {
 fn run_dynamic(
     path: &Path,
     dir: &Path,
+    opts: &RunOptions,
     sc: Scenario,
     model: Model,
     state: State,
@@ -600,7 +624,7 @@ fn run_dynamic(
     let dir = dir.to_path_buf();
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
     let constrained = !sim.model().constraints.is_empty();
-    let mut writers = Writers::create(&dir, constrained, true).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, constrained, true, opts.vtk).map_err(io_err(&dir))?;
 
     let e0 = sim.energies();
     let first = Row {
@@ -626,6 +650,7 @@ fn run_dynamic(
     let clock = Instant::now();
     let mut last_timing = stancf::Timing::default();
     let rate_floor = sc.analysis.tolerance;
+    let mut progress = crate::progress::Progress::new(d.steps, !opts.quiet);
     let result = stancf::run(&mut sim, sc.analysis.duration, |sim, rep, en| {
         let timing = sim.timing();
         let solver_row = SolverRow {
@@ -647,6 +672,7 @@ fn run_dynamic(
             return ControlFlow::Break(());
         }
         tally.iterations += rep.newton.iterations;
+        progress.update(rep.step, rep.t, tally.iterations);
         tally.factorizations += rep.newton.factorizations;
         tally.max_iterations = tally.max_iterations.max(rep.newton.iterations);
         tally.max_residual = tally.max_residual.max(rep.newton.residual);
@@ -687,6 +713,7 @@ fn run_dynamic(
         }
         ControlFlow::Continue(())
     });
+    progress.finish();
     let wall = clock.elapsed().as_secs_f64();
     if let Some(e) = io_failure {
         return Err(io_err(&dir)(e));
@@ -793,6 +820,9 @@ fn run_dynamic(
             dir.display()
         )));
     }
+    if opts.quiet {
+        return Ok(());
+    }
     println!(
         "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} {} iterations per step, {} factorizations",
         sc.title,
@@ -831,7 +861,13 @@ fn static_energies(model: &Model, state: &State) -> Energies {
     en
 }
 
-fn run_static(path: &Path, dir: &Path, sc: Scenario, model: Model) -> Result<(), Failure> {
+fn run_static(
+    path: &Path,
+    dir: &Path,
+    opts: &RunOptions,
+    sc: Scenario,
+    model: Model,
+) -> Result<(), Failure> {
     for w in warnings(&sc, &model, None) {
         eprintln!("warning: {w}");
     }
@@ -839,7 +875,7 @@ fn run_static(path: &Path, dir: &Path, sc: Scenario, model: Model) -> Result<(),
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     let dir = dir.to_path_buf();
     std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
-    let mut writers = Writers::create(&dir, true, false).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, true, false, opts.vtk).map_err(io_err(&dir))?;
     let e0 = static_energies(solver.model(), solver.state());
     let first = Row {
         state: solver.state(),
@@ -927,6 +963,9 @@ fn run_static(path: &Path, dir: &Path, sc: Scenario, model: Model) -> Result<(),
             state.t,
             dir.display()
         )));
+    }
+    if opts.quiet {
+        return Ok(());
     }
     let tip = model.node_position(&state.e, model.nodes() - 1);
     println!(

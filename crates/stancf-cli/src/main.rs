@@ -7,9 +7,11 @@ mod commands;
 mod figures;
 mod output;
 mod plot;
+mod progress;
 mod reproduce;
 mod results;
 mod scenario;
+mod vtk;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -38,6 +40,13 @@ enum Command {
         /// Also draw the figures (PNG and SVG) next to the results.
         #[arg(long)]
         plot: bool,
+        /// Also write ParaView files: vtk/cable_<k>.vtp per written step
+        /// and the collection cable.pvd.
+        #[arg(long)]
+        vtk: bool,
+        /// No progress bar and no summary on standard output.
+        #[arg(long, short)]
+        quiet: bool,
     },
     /// Draw the figures (PNG and SVG) of results already in DIR.
     Plot {
@@ -85,7 +94,17 @@ fn main() -> ExitCode {
             scenario,
             out,
             plot,
-        } => commands::run(&scenario, commands::RunOptions { out, plot }),
+            vtk,
+            quiet,
+        } => commands::run(
+            &scenario,
+            commands::RunOptions {
+                out,
+                plot,
+                vtk,
+                quiet,
+            },
+        ),
         Command::Plot { dir } => commands::plot(&dir),
         Command::Check { scenario } => commands::check(&scenario),
         Command::Reproduce { study, out } => reproduce::reproduce(

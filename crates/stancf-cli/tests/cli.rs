@@ -1159,3 +1159,131 @@ fn run_plot_and_plot_dir_write_valid_figures() {
     assert_eq!(o.status.code(), Some(2), "{se}");
     assert!(se.contains("no summary.json"), "{se}");
 }
+
+/// The values of a `<DataArray ... Name="name" ...>` of a VTK XML file.
+fn vtk_array(xml: &str, name: &str) -> Vec<f64> {
+    let tag = format!("Name=\"{name}\"");
+    let start = xml.find(&tag).unwrap_or_else(|| panic!("no array {name}"));
+    let open = start + xml[start..].find('>').unwrap() + 1;
+    let close = open + xml[open..].find("</DataArray>").unwrap();
+    xml[open..close]
+        .split_whitespace()
+        .map(|v| v.parse::<f64>().unwrap())
+        .collect()
+}
+
+/// `run --vtk`: one PolyData file per written step and the collection with
+/// the times; read back, the polyline passes through the nodes of
+/// nodes.csv and its arrays have the right sizes and values.
+#[test]
+fn vtk_files_read_back() {
+    let d = scratch("vtk");
+    let sc = write_scenario(&d, "v.toml", BASE);
+    let out = d.join("res");
+    let o = stancf(&[
+        "run",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--vtk",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (_, hist) = read_csv(&out.join("history.csv"));
+    let (_, nodes) = read_csv(&out.join("nodes.csv"));
+    let (_, stress) = read_csv(&out.join("stress.csv"));
+    let pvd = std::fs::read_to_string(out.join("cable.pvd")).unwrap();
+    assert!(pvd.contains("type=\"Collection\""));
+    let entries: Vec<(f64, String)> = pvd
+        .lines()
+        .filter(|l| l.starts_with("<DataSet"))
+        .map(|l| {
+            let attr = |a: &str| {
+                let k = l.find(&format!("{a}=\"")).unwrap() + a.len() + 2;
+                l[k..k + l[k..].find('"').unwrap()].to_string()
+            };
+            (attr("timestep").parse().unwrap(), attr("file"))
+        })
+        .collect();
+    assert_eq!(entries.len(), hist.len(), "one file per written step");
+    let per_element = 16;
+    let n_points = 8 * (per_element - 1) + 1;
+    for (k, (t, file)) in entries.iter().enumerate() {
+        assert_eq!(*t, hist[k][0], "time of {file}");
+        let xml = std::fs::read_to_string(out.join(file)).unwrap();
+        assert!(
+            xml.contains(&format!("NumberOfPoints=\"{n_points}\"")),
+            "{file}"
+        );
+        let pos = vtk_array(&xml, "position");
+        assert_eq!(pos.len(), 3 * n_points);
+        // Through every node of nodes.csv at this time.
+        let at_t: Vec<&Vec<f64>> = nodes.iter().filter(|r| r[0] == *t).collect();
+        assert_eq!(at_t.len(), 9);
+        for (j, node) in at_t.iter().enumerate() {
+            let p = j * (per_element - 1);
+            for c in 0..3 {
+                assert!(
+                    (pos[3 * p + c] - node[2 + c]).abs() < 1e-12,
+                    "{file}: node {j}: {} vs {}",
+                    pos[3 * p + c],
+                    node[2 + c]
+                );
+            }
+        }
+        assert_eq!(vtk_array(&xml, "velocity").len(), 3 * n_points);
+        let s = vtk_array(&xml, "s");
+        assert_eq!(s.len(), n_points);
+        assert_eq!(s[0], 0.0);
+        assert!((s[n_points - 1] - 4.0).abs() < 1e-12);
+        let sigma = vtk_array(&xml, "axial_stress");
+        assert_eq!(sigma.len(), n_points);
+        assert_eq!(vtk_array(&xml, "curvature").len(), n_points);
+        // The free end's stress is the one stress.csv has there.
+        let end = stress.iter().find(|r| r[0] == *t && r[1] == 0.0).unwrap();
+        assert!(
+            (sigma[0] - end[2]).abs() <= 1e-9 * end[2].abs().max(1.0),
+            "{file}"
+        );
+        let conn = vtk_array(&xml, "connectivity");
+        assert_eq!(conn, (0..n_points).map(|i| i as f64).collect::<Vec<_>>());
+        assert_eq!(vtk_array(&xml, "offsets"), vec![n_points as f64]);
+    }
+    // The initial velocities of the struck ends.
+    let xml = std::fs::read_to_string(out.join(&entries[0].1)).unwrap();
+    let v = vtk_array(&xml, "velocity");
+    assert_eq!(v[1], 10.0);
+    assert_eq!(v[3 * (n_points - 1) + 1], -10.0);
+}
+
+/// The progress bar never reaches a pipe (standard error is not a
+/// terminal here, and the run lasts more than the bar's one-second delay),
+/// and `--quiet` leaves standard output empty.
+#[test]
+fn no_progress_bar_in_a_pipe_and_quiet_is_quiet() {
+    let d = scratch("progress");
+    let long = BASE.replace("duration = 2.0e-3", "duration = 1.5");
+    let sc = write_scenario(&d, "long.toml", &long);
+    let out = d.join("res");
+    let started = std::time::Instant::now();
+    let o = stancf(&["run", sc.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        started.elapsed().as_secs_f64() > 1.0,
+        "the run must outlast the delay"
+    );
+    assert!(!se.contains('\r') && !se.contains("it/step"), "{se:?}");
+    assert!(so.contains("steps to t = 1.5 s"), "{so}");
+    let sc = write_scenario(&d, "short.toml", BASE);
+    let o = stancf(&[
+        "run",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(so.is_empty(), "{so}");
+    assert!(out.join("summary.json").exists());
+}

@@ -173,3 +173,107 @@ pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64
     }
     out
 }
+
+/// The state along the cable at one point of the centre line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CablePoint {
+    /// Material coordinate (m).
+    pub s: f64,
+    pub r: [f64; 3],
+    /// Velocity r_dot (the same interpolation of the nodal rates).
+    pub v: [f64; 3],
+    /// E eps at this point; at a shared node, the mean of the two
+    /// elements' values (SAC-2 strain jumps there).
+    pub axial_stress: f64,
+    pub curvature: f64,
+}
+
+/// The centre line with velocity, axial stress and curvature at
+/// `per_element` evenly spaced points of every element (both ends; a node
+/// shared by two elements once): for drawing and for ParaView.
+pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<CablePoint> {
+    let l = model.element_length();
+    let dpn = model.dofs_per_node();
+    let n = per_element.max(2);
+    let e_mod = model.material.youngs_modulus;
+    let m = model.options.measures;
+    let mut out: Vec<CablePoint> = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
+    for k in 0..model.cable.elements {
+        let (q, qd) = (&state.e[k * dpn..], &state.v[k * dpn..]);
+        for p in 0..n {
+            let xi = p as f64 / (n - 1) as f64;
+            let (shape, (rx, rxx)): (Vec<f64>, _) = match model.element_type() {
+                crate::model::ElementType::Sac2 => {
+                    let sh = cubic_hermite(xi, l);
+                    (sh.n.to_vec(), sh.gradients(q))
+                }
+                crate::model::ElementType::Sac3 => {
+                    let sh = quintic_hermite(xi, l);
+                    (sh.n.to_vec(), sh.gradients(q))
+                }
+            };
+            let mut r = [0.0; 3];
+            let mut v = [0.0; 3];
+            for (a, na) in shape.iter().enumerate() {
+                for i in 0..3 {
+                    r[i] += na * q[3 * a + i];
+                    v[i] += na * qd[3 * a + i];
+                }
+            }
+            let point = CablePoint {
+                s: (k as f64 + xi) * l,
+                r,
+                v,
+                axial_stress: e_mod * axial_strain(m.axial_strain, &rx),
+                curvature: curvature(m.curvature, &rx, &rxx),
+            };
+            if p == 0 && k > 0 {
+                // The node shared with the previous element.
+                let last = out.last_mut().expect("previous element");
+                last.axial_stress = 0.5 * (last.axial_stress + point.axial_stress);
+                last.curvature = 0.5 * (last.curvature + point.curvature);
+                continue;
+            }
+            out.push(point);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Cable, ElementType, Material, ModelOptions};
+
+    /// The sampled centre line passes through the nodes with their
+    /// velocities, at the right material coordinates, for both elements.
+    #[test]
+    fn cable_points_pass_through_the_nodes() {
+        for kind in [ElementType::Sac2, ElementType::Sac3] {
+            let model = Model::new(
+                Cable::straight(3.0, 3, kind).with_direction([0.6, 0.8, 0.0]),
+                Material::chen2023_pvc(),
+                ModelOptions::default(),
+                vec![],
+            )
+            .unwrap();
+            let mut state = model.initial_state();
+            for j in 0..model.nodes() {
+                model.set_node_velocity(&mut state, j, [j as f64, -1.0, 0.5]);
+            }
+            let pts = cable_points(&model, &state, 6);
+            assert_eq!(pts.len(), 3 * 5 + 1);
+            for j in 0..model.nodes() {
+                let p = &pts[5 * j];
+                assert!((p.s - j as f64).abs() < 1e-15);
+                let r = model.node_position(&state.e, j);
+                for c in 0..3 {
+                    assert!((p.r[c] - r[c]).abs() < 1e-15, "{kind:?} node {j}");
+                }
+                assert!((p.v[0] - j as f64).abs() < 1e-15 && p.v[1] == -1.0 && p.v[2] == 0.5);
+                // Straight and unstretched: no stress, no curvature.
+                assert!(p.axial_stress.abs() < 1e-3 && p.curvature.abs() < 1e-12);
+            }
+        }
+    }
+}

@@ -1,0 +1,133 @@
+//! ParaView output (`stancf run --vtk`): one VTK XML PolyData file per
+//! written step, `vtk/cable_<k>.vtp`, with the cable as a polyline sampled
+//! at [`POINTS_PER_ELEMENT`] points per element and velocity, axial stress,
+//! curvature and the material coordinate as point data; and `cable.pvd`,
+//! the collection that gives each file its time. ASCII, so that any tool
+//! (and a test) can read it back. Each file is written atomically; the
+//! collection last, when the run ends.
+
+use crate::output::{write_atomic, Num};
+use stancf::observe::cable_points;
+use stancf::{Model, State};
+use std::fmt::Write as _;
+use std::io;
+use std::path::{Path, PathBuf};
+
+/// Points per element of the polyline: 16 follow a bend of the curvature a
+/// SAC-3 element can carry to a fraction of a per cent of its radius.
+pub const POINTS_PER_ELEMENT: usize = 16;
+
+/// Writes the step files as the run goes and the collection at the end.
+pub struct VtkWriter {
+    dir: PathBuf,
+    /// (t, file name relative to the output folder) of every step written.
+    entries: Vec<(f64, String)>,
+}
+
+impl VtkWriter {
+    pub fn create(dir: &Path) -> io::Result<Self> {
+        std::fs::create_dir_all(dir.join("vtk"))?;
+        Ok(VtkWriter {
+            dir: dir.to_path_buf(),
+            entries: Vec::new(),
+        })
+    }
+
+    /// One written step.
+    pub fn write(&mut self, model: &Model, state: &State) -> io::Result<()> {
+        let points = cable_points(model, state, POINTS_PER_ELEMENT);
+        let finite = points.iter().all(|p| {
+            p.r.iter().chain(p.v.iter()).all(|x| x.is_finite())
+                && p.axial_stress.is_finite()
+                && p.curvature.is_finite()
+        });
+        if !finite {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("non-finite result at t = {}", state.t),
+            ));
+        }
+        let n = points.len();
+        let mut x = String::with_capacity(200 * n);
+        x.push_str("<?xml version=\"1.0\"?>\n");
+        x.push_str(
+            "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
+        );
+        writeln!(
+            x,
+            "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"1\" \
+             NumberOfStrips=\"0\" NumberOfPolys=\"0\">"
+        )
+        .ok();
+        writeln!(x, "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n</FieldData>", Num(state.t)).ok();
+        x.push_str("<PointData Scalars=\"axial_stress\" Vectors=\"velocity\">\n");
+        array3(&mut x, "velocity", points.iter().map(|p| p.v));
+        array1(
+            &mut x,
+            "axial_stress",
+            points.iter().map(|p| p.axial_stress),
+        );
+        array1(&mut x, "curvature", points.iter().map(|p| p.curvature));
+        array1(&mut x, "s", points.iter().map(|p| p.s));
+        x.push_str("</PointData>\n<Points>\n");
+        array3(&mut x, "position", points.iter().map(|p| p.r));
+        x.push_str("</Points>\n<Lines>\n");
+        x.push_str("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        for i in 0..n {
+            write!(x, "{i} ").ok();
+        }
+        x.push_str("\n</DataArray>\n");
+        writeln!(
+            x,
+            "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">{n}</DataArray>"
+        )
+        .ok();
+        x.push_str("</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
+        let name = format!("cable_{:06}.vtp", self.entries.len());
+        write_atomic(&self.dir.join("vtk"), &name, x.as_bytes())?;
+        self.entries.push((state.t, format!("vtk/{name}")));
+        Ok(())
+    }
+
+    /// The collection `cable.pvd`.
+    pub fn commit(self) -> io::Result<()> {
+        let mut x = String::from("<?xml version=\"1.0\"?>\n");
+        x.push_str(
+            "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n",
+        );
+        for (t, file) in &self.entries {
+            writeln!(
+                x,
+                "<DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{file}\"/>",
+                Num(*t)
+            )
+            .ok();
+        }
+        x.push_str("</Collection>\n</VTKFile>\n");
+        write_atomic(&self.dir, "cable.pvd", x.as_bytes())
+    }
+}
+
+fn array1(x: &mut String, name: &str, values: impl Iterator<Item = f64>) {
+    writeln!(
+        x,
+        "<DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">"
+    )
+    .ok();
+    for v in values {
+        write!(x, "{} ", Num(v)).ok();
+    }
+    x.push_str("\n</DataArray>\n");
+}
+
+fn array3(x: &mut String, name: &str, values: impl Iterator<Item = [f64; 3]>) {
+    writeln!(
+        x,
+        "<DataArray type=\"Float64\" Name=\"{name}\" NumberOfComponents=\"3\" format=\"ascii\">"
+    )
+    .ok();
+    for v in values {
+        writeln!(x, "{} {} {}", Num(v[0]), Num(v[1]), Num(v[2])).ok();
+    }
+    x.push_str("</DataArray>\n");
+}
