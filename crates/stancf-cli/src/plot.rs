@@ -335,7 +335,11 @@ where
     Y: Ranged<ValueType = f64>,
 {
     let color = s.color;
-    let style = ShapeStyle::from(&color).stroke_width(s.width);
+    // Thick polylines get miter joints that overshoot at sharp turns: a
+    // dense, jagged series (energies of an impact) is drawn one pixel wide
+    // so that no spike appears that is not in the data.
+    let width = if pts.len() > 300 { 1 } else { s.width };
+    let style = ShapeStyle::from(&color).stroke_width(width);
     let label_style = style;
     if s.markers {
         let anno = chart

@@ -83,6 +83,59 @@ impl Table {
     }
 }
 
+/// A CSV file with text columns (e.g. the element name): fields as text.
+#[derive(Clone, Debug)]
+pub struct TextTable {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+impl TextTable {
+    pub fn read(path: &Path) -> io::Result<TextTable> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+        let split = |l: &str| {
+            l.split(',')
+                .map(|f| f.trim().to_string())
+                .collect::<Vec<_>>()
+        };
+        let header = split(lines.next().unwrap_or(""));
+        let rows: Vec<Vec<String>> = lines.map(split).collect();
+        if let Some((i, r)) = rows
+            .iter()
+            .enumerate()
+            .find(|(_, r)| r.len() != header.len())
+        {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!(
+                    "{} row {}: {} fields, the header has {}",
+                    path.display(),
+                    i + 2,
+                    r.len(),
+                    header.len()
+                ),
+            ));
+        }
+        Ok(TextTable { header, rows })
+    }
+
+    pub fn need(&self, name: &str, file: &str) -> io::Result<usize> {
+        self.header.iter().position(|h| h == name).ok_or_else(|| {
+            io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("{file}: no column {name:?}"),
+            )
+        })
+    }
+
+    /// A field as a number (NaN if it is not one).
+    pub fn num(row: &[String], col: usize) -> f64 {
+        row[col].parse().unwrap_or(f64::NAN)
+    }
+}
+
 /// The rows of a table grouped by their first column (t), in file order.
 pub fn by_time(table: &Table) -> Vec<(f64, Vec<&Vec<f64>>)> {
     let mut out: Vec<(f64, Vec<&Vec<f64>>)> = Vec::new();

@@ -1287,3 +1287,67 @@ fn no_progress_bar_in_a_pipe_and_quiet_is_quiet() {
     assert!(so.is_empty(), "{so}");
     assert!(out.join("summary.json").exists());
 }
+
+/// `stancf reproduce all`: REPORT.md with a section per study headed by the
+/// paper's table and figure numbers, every figure embedded by a relative
+/// link to a valid PNG (with its SVG twin), the paper's values and the
+/// differences beside ours, and a verdict per study.
+#[test]
+fn reproduce_all_writes_the_report() {
+    let d = scratch("report");
+    let o = stancf(&["reproduce", "all", "--out", d.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(so.contains("report: "), "{so}");
+    let report = std::fs::read_to_string(d.join("REPORT.md")).unwrap();
+    for heading in [
+        "## Table 3 and Fig. 3: circle bending",
+        "## Fig. 4: double-ended axial impact",
+        "## Fig. 5: double-ended transverse impact",
+        "## Tables 5, 7, 8 and Figs. 6, 7: efficiency",
+        "## Table 6: grid refinement",
+        "## Figs. 8, 10 and Table 10: free pendulum with air drag",
+        "### Table 8 as measured",
+        "### Table 10 times",
+    ] {
+        assert!(report.contains(heading), "no {heading:?}");
+    }
+    assert_eq!(
+        report.matches("**What agrees and what does not.**").count(),
+        6
+    );
+    assert!(
+        report.contains("(paper 65.3100, difference +0.0317)"),
+        "Table 3 difference"
+    );
+    let links: Vec<&str> = report
+        .lines()
+        .filter_map(|l| l.strip_prefix("!["))
+        .map(|l| {
+            let start = l.find("](").unwrap() + 2;
+            &l[start..l.len() - 1]
+        })
+        .collect();
+    for f in [
+        "circle-bending/fig3_shapes.png",
+        "impact-axial/fig4_stress_sac2.png",
+        "impact-axial/fig4_stress_sac3.png",
+        "impact-transverse/fig5a_midpoint.png",
+        "impact-transverse/fig5b_energy.png",
+        "efficiency/fig6_efficiency.png",
+        "efficiency/fig7_residuals.png",
+        "pendulum/fig8_shapes.png",
+        "pendulum/fig10_tip_path_drag.png",
+        "pendulum/fig10_tip_path_nodrag.png",
+    ] {
+        assert!(links.contains(&f), "{f} not embedded: {links:?}");
+    }
+    for link in &links {
+        check_png(&d.join(link));
+        let svg = d.join(link).with_extension("svg");
+        assert!(svg.exists(), "{}", svg.display());
+    }
+    // The pendulum's tip path is drawn against the reference it ships.
+    let svg = std::fs::read_to_string(d.join("pendulum/fig10_tip_path_drag.svg")).unwrap();
+    assert!(svg.contains("Exudyn 1.13 reference"));
+}

@@ -67,7 +67,8 @@ fn method_name(m: SolverMethod) -> &'static str {
 }
 
 /// Runs example 1 (the axial impact: ends at +-10 m/s) with this setup.
-pub fn measure(s: &Setup) -> Result<Measured, Failure> {
+/// Example 1 set up as `s` says, at t = 0.
+fn simulation(s: &Setup) -> Result<Simulation, Failure> {
     let model = Model::new(
         Cable::straight(4.0, s.elements, s.element).with_origin([-2.0, 0.0, 0.0]),
         Material::chen2023_pvc(),
@@ -95,8 +96,24 @@ pub fn measure(s: &Setup) -> Result<Measured, Failure> {
         },
         ..StepSettings::default()
     };
-    let mut sim =
-        Simulation::new(model, state, settings).map_err(|e| Failure::Other(e.to_string()))?;
+    Simulation::new(model, state, settings).map_err(|e| Failure::Other(e.to_string()))
+}
+
+/// The scaled residual of every evaluation of the first `steps` steps of
+/// example 1 set up as `s` says (Fig. 7).
+pub fn residual_histories(s: &Setup, steps: usize) -> Result<Vec<Vec<f64>>, Failure> {
+    let mut sim = simulation(s)?;
+    let mut out = Vec::with_capacity(steps);
+    for _ in 0..steps {
+        sim.step()
+            .map_err(|e| Failure::Solver(format!("efficiency {s:?}: {e}")))?;
+        out.push(sim.residual_history().to_vec());
+    }
+    Ok(out)
+}
+
+pub fn measure(s: &Setup) -> Result<Measured, Failure> {
+    let mut sim = simulation(s)?;
     let start = Instant::now();
     sim.set_clock(Box::new(WallClock(start)));
     let e0 = sim.energies().mechanical();
@@ -346,7 +363,33 @@ pub fn efficiency(dir: &Path) -> Result<(), Failure> {
     crate::plot::save(&bars, dir, "fig6_efficiency")
         .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
     writeln!(md, "\n![Fig. 6](fig6_efficiency.png)").ok();
-    write_files(dir, &[("efficiency.csv", &csv), ("efficiency.md", &md)])
+    // Fig. 7: residual against evaluation, first 5 steps of every case.
+    let mut fig7 = String::from("case,solver,element,step,evaluation,residual\n");
+    for k in 0..cases.len() {
+        let c = &cases[k];
+        for (step, hist) in residual_histories(c, 5)?.iter().enumerate() {
+            for (e, r) in hist.iter().enumerate() {
+                writeln!(
+                    fig7,
+                    "{},{},{},{},{e},{}",
+                    k + 1,
+                    method_name(c.method),
+                    c.element.name(),
+                    step + 1,
+                    Num(*r)
+                )
+                .ok();
+            }
+        }
+    }
+    write_files(
+        dir,
+        &[
+            ("efficiency.csv", &csv),
+            ("fig7_residuals.csv", &fig7),
+            ("efficiency.md", &md),
+        ],
+    )
 }
 
 /// The paper's Table 6 (L1 energy error; "TEs" x "SEs").

@@ -5,6 +5,7 @@ mod circle;
 mod efficiency;
 mod impact;
 mod pendulum;
+mod report;
 
 use crate::output::write_atomic;
 use crate::Failure;
@@ -31,7 +32,8 @@ pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
             )))
         }
     };
-    for s in list {
+    let mut sections = Vec::new();
+    for s in list.iter().copied() {
         let dir = out.join(s);
         std::fs::create_dir_all(&dir)
             .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
@@ -44,7 +46,21 @@ pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
             "grid-refinement" => efficiency::grid_refinement(&dir)?,
             _ => unreachable!("listed in STUDIES"),
         }
-        println!("{s}: tables in {}", dir.display());
+        let figures = report::study_figures(s, &dir)?;
+        println!(
+            "{s}: tables{} in {}",
+            if figures.is_empty() {
+                ""
+            } else {
+                " and figures"
+            },
+            dir.display()
+        );
+        sections.push((s, figures));
+    }
+    if study == "all" {
+        report::write_report(out, &sections)?;
+        println!("report: {}", out.join("REPORT.md").display());
     }
     Ok(())
 }

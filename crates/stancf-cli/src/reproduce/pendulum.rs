@@ -317,7 +317,7 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
     }
     writeln!(
         md,
-        "\nAs in the paper's Fig. 8, more drag holds the pendulum higher at 0.68 s.\n"
+        "\nAs in the paper's Fig. 8, more drag leaves the pendulum lower at 0.68 s (it swings up less far).\n"
     )
     .ok();
 
@@ -403,6 +403,9 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
             ("tip_at_image_times.csv", &tips),
             ("shapes_068.csv", &shapes),
             ("tip_trajectory.csv", &paths),
+            // The reference, next to our results, for the figures.
+            ("exudyn_drag_tip.csv", EXUDYN_TIP_DRAG),
+            ("exudyn_nodrag_tip.csv", EXUDYN_TIP_NODRAG),
             ("pendulum.md", &md),
         ],
     )
