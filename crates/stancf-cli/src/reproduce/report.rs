@@ -222,7 +222,8 @@ fn efficiency(dir: &Path) -> io::Result<Vec<StudyFigure>> {
     lines.log_y = true;
     lines.integer_x = true;
     // (case, step) -> points, in file order.
-    let mut series: Vec<((String, String), String, Vec<(f64, f64)>)> = Vec::new();
+    type StepLine = ((String, String), String, Vec<(f64, f64)>);
+    let mut series: Vec<StepLine> = Vec::new();
     for r in &t.rows {
         let key = (r[cc].clone(), r[cs].clone());
         let point = (TextTable::num(r, ce), TextTable::num(r, cr).max(1e-18));
