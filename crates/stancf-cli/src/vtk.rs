@@ -53,13 +53,20 @@ impl VtkWriter {
         x.push_str(
             "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
         );
+        // The time, as field data of the data set (read by VTK as TimeValue).
+        writeln!(
+            x,
+            "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
+             format=\"ascii\">{}</DataArray>\n</FieldData>",
+            Num(state.t)
+        )
+        .ok();
         writeln!(
             x,
             "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"1\" \
              NumberOfStrips=\"0\" NumberOfPolys=\"0\">"
         )
         .ok();
-        writeln!(x, "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n</FieldData>", Num(state.t)).ok();
         x.push_str("<PointData Scalars=\"axial_stress\" Vectors=\"velocity\">\n");
         array3(&mut x, "velocity", points.iter().map(|p| p.v));
         array1(
