@@ -11,6 +11,7 @@ mod progress;
 mod reproduce;
 mod results;
 mod scenario;
+mod sweep;
 mod vtk;
 
 use clap::{Parser, Subcommand};
@@ -47,6 +48,22 @@ enum Command {
         /// No progress bar and no summary on standard output.
         #[arg(long, short)]
         quiet: bool,
+    },
+    /// Run a scenario over a grid of key values: `--set key=v1,v2` (dotted
+    /// keys, list entries by index: `loads.1.drag_coefficient`), one folder
+    /// per run and DIR/sweep.csv with the summary figures of all.
+    Sweep {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// key=v1,v2,... (repeat for a grid).
+        #[arg(long = "set", required = true)]
+        sets: Vec<String>,
+        /// Runs at a time (default: the number of cores).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Output folder (default: out/<scenario file stem>-sweep/).
+        #[arg(long)]
+        out: Option<PathBuf>,
     },
     /// Draw the figures (PNG and SVG) of results already in DIR.
     Plot {
@@ -106,6 +123,12 @@ fn main() -> ExitCode {
             },
         ),
         Command::Plot { dir } => commands::plot(&dir),
+        Command::Sweep {
+            scenario,
+            sets,
+            jobs,
+            out,
+        } => sweep::sweep(&scenario, &sets, jobs, out),
         Command::Check { scenario } => commands::check(&scenario),
         Command::Reproduce { study, out } => reproduce::reproduce(
             &study,

@@ -1351,3 +1351,93 @@ fn reproduce_all_writes_the_report() {
     let svg = std::fs::read_to_string(d.join("pendulum/fig10_tip_path_drag.svg")).unwrap();
     assert!(svg.contains("Exudyn 1.13 reference"));
 }
+
+/// `stancf sweep`: the grid of two `--set` runs in parallel, one folder per
+/// run; sweep.csv has one row per point with the varied values and the
+/// summary figures, equal to separate runs of the same scenarios; a run
+/// that fails is reported, the others are kept; a bad key stops the sweep
+/// before anything runs.
+#[test]
+fn sweep_runs_the_grid_and_reports_failures() {
+    let d = scratch("sweep");
+    let sc = write_scenario(&d, "s.toml", BASE);
+    let out = d.join("res");
+    let o = stancf(&[
+        "sweep",
+        sc.to_str().unwrap(),
+        "--set",
+        "analysis.time_step=5e-5,2.5e-5",
+        "--set",
+        "initial_velocity.1.velocity=[0,-10,0],[0,-5,0],[0,0,0]",
+        "--jobs",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(so.contains("6 runs (2 at a time), 0 failed"), "{so}");
+    let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = table.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(
+        rows[0][..4],
+        [
+            "run",
+            "analysis.time_step",
+            "initial_velocity.1.velocity",
+            "status"
+        ]
+    );
+    assert_eq!(rows.len(), 7);
+    let col = |name: &str| rows[0].iter().position(|h| *h == name).unwrap();
+    for (k, row) in rows[1..].iter().enumerate() {
+        assert_eq!(row[col("status")], "ok");
+        // The same scenario run alone gives the same tip, to the bit.
+        let alone = d.join(format!("alone{k}"));
+        let run_sc = out.join(format!("run_{k:04}")).join("scenario.toml");
+        let o = stancf(&[
+            "run",
+            run_sc.to_str().unwrap(),
+            "--out",
+            alone.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0));
+        let s: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(alone.join("summary.json")).unwrap())
+                .unwrap();
+        let tip_y: f64 = row[col("tip_y")].parse().unwrap();
+        assert_eq!(tip_y, s["tip"][1].as_f64().unwrap(), "run {k}");
+    }
+    assert_eq!(rows[1][1], "5e-5");
+    assert_eq!(rows[6][2], "[0; 0; 0]");
+    // A step far beyond P2's limit fails that run only.
+    let o = stancf(&[
+        "sweep",
+        sc.to_str().unwrap(),
+        "--set",
+        "analysis.time_step=5e-5,1e-3",
+        "--set",
+        "analysis.duration=0.05",
+        "--out",
+        d.join("res2").to_str().unwrap(),
+    ]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(3), "{so} {se}");
+    assert!(se.contains("runs 1 failed"), "{se}");
+    let table = std::fs::read_to_string(d.join("res2").join("sweep.csv")).unwrap();
+    assert!(table.lines().nth(1).unwrap().contains(",ok,"));
+    assert!(table.lines().nth(2).unwrap().contains(",failed,"));
+    // A misspelt key: exit 2 naming it, nothing run.
+    let o = stancf(&[
+        "sweep",
+        sc.to_str().unwrap(),
+        "--set",
+        "analysis.time_stepp=1e-5",
+        "--out",
+        d.join("res3").to_str().unwrap(),
+    ]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    assert!(se.contains("time_stepp"), "{se}");
+    assert!(!d.join("res3").exists());
+}
