@@ -555,6 +555,17 @@ fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
     })
 }
 
+/// A request to stop a run, polled after every step (the Python layer
+/// answers it from Ctrl-C).
+#[derive(Clone)]
+pub struct Cancel(pub std::sync::Arc<dyn Fn() -> bool + Send + Sync>);
+
+impl std::fmt::Debug for Cancel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Cancel")
+    }
+}
+
 /// What `stancf run` writes besides the result files.
 #[derive(Clone, Debug, Default)]
 pub struct RunOptions {
@@ -567,6 +578,8 @@ pub struct RunOptions {
     /// No progress bar and no summary on standard output (errors and
     /// warnings still go to standard error).
     pub quiet: bool,
+    /// Stop when this says so (checked after every step).
+    pub cancel: Option<Cancel>,
 }
 
 pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
@@ -651,7 +664,12 @@ fn run_dynamic(
     let mut last_timing = stancf::Timing::default();
     let rate_floor = sc.analysis.tolerance;
     let mut progress = crate::progress::Progress::new(d.steps, !opts.quiet);
+    let mut interrupted = false;
     let result = stancf::run(&mut sim, sc.analysis.duration, |sim, rep, en| {
+        if opts.cancel.as_ref().is_some_and(|c| (c.0)()) {
+            interrupted = true;
+            return ControlFlow::Break(());
+        }
         let timing = sim.timing();
         let solver_row = SolverRow {
             t: rep.t,
@@ -807,10 +825,31 @@ fn run_dynamic(
         "linear_momentum": vec3(p),
         "center_of_mass": vec3(first_moment.map(|c| c / mass)),
         "reactions": reactions_json(sim.reactions()),
-        "error": failure.as_ref().map(|f| f.to_string()),
+        "error": if interrupted {
+            Some("interrupted".to_string())
+        } else {
+            failure.as_ref().map(|f| f.to_string())
+        },
+        // Where the solver failed: the step it could not take.
+        "failure": failure.as_ref().map(|f| json!({
+            "time": json_num(f.time),
+            "step": f.step,
+            "residual": json_num(f.residual),
+            "iterations": f.iterations,
+        })),
+        "interrupted": interrupted,
     });
     write_summary(&dir, summary, extra)?;
 
+    if interrupted {
+        return Err(Failure::Interrupted(format!(
+            "{}: interrupted; results up to t = {} s (step {}) are in {}",
+            path.display(),
+            state.t,
+            steps,
+            dir.display()
+        )));
+    }
     if let Some(f) = failure {
         return Err(Failure::Solver(format!(
             "{}: {f}; results up to t = {} s (step {}) are in {}",

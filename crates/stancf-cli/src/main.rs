@@ -3,18 +3,8 @@
 //! Exit codes (docs/interface.md): 0 success, 2 invalid input, 3 the solver
 //! failed (results up to the last converged step are kept), 1 anything else.
 
-mod commands;
-mod figures;
-mod output;
-mod plot;
-mod progress;
-mod reproduce;
-mod results;
-mod scenario;
-mod sweep;
-mod vtk;
-
 use clap::{Parser, Subcommand};
+use stancf_cli::{commands, reproduce, sweep, Failure};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -87,16 +77,6 @@ enum Command {
     },
 }
 
-/// How a command ended.
-pub enum Failure {
-    /// Invalid input (exit 2).
-    Input(String),
-    /// The solver failed (exit 3).
-    Solver(String),
-    /// Anything else, e.g. a file that cannot be written (exit 1).
-    Other(String),
-}
-
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -120,6 +100,7 @@ fn main() -> ExitCode {
                 plot,
                 vtk,
                 quiet,
+                cancel: None,
             },
         ),
         Command::Plot { dir } => commands::plot(&dir),
@@ -148,6 +129,10 @@ fn main() -> ExitCode {
         Err(Failure::Other(m)) => {
             eprintln!("error: {m}");
             ExitCode::from(1)
+        }
+        Err(Failure::Interrupted(m)) => {
+            eprintln!("error: {m}");
+            ExitCode::from(130)
         }
     }
 }

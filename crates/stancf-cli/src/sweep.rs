@@ -271,7 +271,7 @@ pub fn sweep(
                 );
                 let error = match result {
                     Ok(()) => String::new(),
-                    Err(Failure::Input(m) | Failure::Solver(m) | Failure::Other(m)) => m,
+                    Err(e) => e.to_string(),
                 };
                 outcomes.lock().expect("no run panics holding it")[k] = Some(error);
             });

@@ -1,0 +1,40 @@
+//! The `stancf` command line as a library: scenario files (parsing and
+//! validation), result files, figures, ParaView output, sweeps and the
+//! paper's studies. The `stancf` binary and the Python package are thin
+//! layers over it, so that both read and write exactly the same files.
+
+pub mod commands;
+pub mod figures;
+pub mod output;
+pub mod plot;
+pub mod progress;
+pub mod reproduce;
+pub mod results;
+pub mod scenario;
+pub mod sweep;
+pub mod vtk;
+
+/// How a command ended.
+#[derive(Debug)]
+pub enum Failure {
+    /// Invalid input (exit 2).
+    Input(String),
+    /// The solver failed (exit 3).
+    Solver(String),
+    /// Anything else, e.g. a file that cannot be written (exit 1).
+    Other(String),
+    /// Stopped on request (Ctrl-C in Python; exit 130); the results up to
+    /// the last step are kept.
+    Interrupted(String),
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Failure::Input(m)
+            | Failure::Solver(m)
+            | Failure::Other(m)
+            | Failure::Interrupted(m) => f.write_str(m),
+        }
+    }
+}

@@ -1,0 +1,307 @@
+"""stancf from Python: flexible cables with space-time ANCF elements.
+
+A thin layer over the Rust library and command line (the same scenario
+validation, the same solver, the same result files)::
+
+    import stancf
+    sc = stancf.Scenario.from_file("examples/pendulum.toml")
+    res = stancf.run(sc.with_values({"analysis.time_step": 5e-5}))
+    res.t, res.nodes[-1], res.energy["total"], res.summary["energy"]["max_rel_drift"]
+
+    table = stancf.sweep(sc, {"loads.1.drag_coefficient": [0, 0.5, 1.5]}, out="sweep")
+
+Results are numpy arrays read from the files a run writes
+(docs/interface.md), so they are the command line's numbers to the bit.
+"""
+
+import csv
+import itertools
+import json
+import os
+import shutil
+import tempfile
+import time as _time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+from . import _stancf
+from ._stancf import ScenarioError
+
+__version__ = _stancf.__version__
+__all__ = ["Scenario", "Result", "ScenarioError", "SolverError", "run", "sweep"]
+
+
+class Scenario:
+    """A validated scenario (the TOML contract of docs/interface.md)."""
+
+    def __init__(self, text, name="scenario"):
+        _stancf.validate(text, name)
+        self._text = text
+        self.name = name
+
+    @classmethod
+    def from_file(cls, path):
+        """Reads and validates a scenario file. Its title defaults to the
+        file's stem, as on the command line."""
+        path = Path(path)
+        text = path.read_text()
+        name = str(path)
+        _stancf.validate(text, name)
+        if not any(line.split("=")[0].strip() == "title" for line in text.splitlines()
+                   if not line.lstrip().startswith("[")):
+            text = _stancf.with_values(text, name, {"title": path.stem})
+        return cls(text, name)
+
+    @classmethod
+    def from_dict(cls, d, name="scenario"):
+        """A scenario from a dictionary with the keys of the TOML contract,
+        e.g. ``{"cable": {"length": 4.0, ...}, "loads": [{...}], ...}``."""
+        return cls(_stancf.dict_to_toml(d), name)
+
+    def with_values(self, values):
+        """A copy with dotted keys set: ``{"analysis.time_step": 1e-4,
+        "loads.1.drag_coefficient": 0.5}`` (list entries by 0-based index)."""
+        return Scenario(_stancf.with_values(self._text, self.name, dict(values)), self.name)
+
+    @property
+    def text(self):
+        """The scenario as TOML text."""
+        return self._text
+
+    def __repr__(self):
+        return "Scenario(%r)" % self.name
+
+    def __reduce__(self):
+        return (Scenario, (self._text, self.name))
+
+
+class SolverError(RuntimeError):
+    """The solver failed at `time` (the start of step `step`) with scaled
+    residual `residual`; `result` holds every converged step before it."""
+
+    def __init__(self, message, time, step, residual, result):
+        super().__init__(message)
+        self.time = time
+        self.step = step
+        self.residual = residual
+        self.result = result
+
+
+def _table(path):
+    """A numeric CSV result file: (header, 2-D float array)."""
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        rows = [[float(x) if x else np.nan for x in line.strip().split(",")]
+                for line in f if line.strip()]
+    data = np.array(rows, dtype=float).reshape(len(rows), len(header))
+    return header, data
+
+
+class Result:
+    """The results of a run, read from its folder (docs/interface.md):
+
+    - ``t``: the written times (steps,);
+    - ``nodes``: positions r (steps x nodes x 3), ``slopes``: r_x (same);
+    - ``energy``: dict of arrays over t (kinetic, strain, gravity, total,
+      load_potential, constraint_work, drag_work, iterations, residual, ...);
+    - ``stress``: axial stress (steps x samples) at material coordinates
+      ``stress_s``; ``curvature`` likewise;
+    - ``reactions``: dict node -> (steps x 3) forces on the cable (times
+      ``reactions_t``), empty without constraints;
+    - ``summary``: summary.json as a dict; ``directory``: the folder.
+    """
+
+    def __init__(self, directory, _keep=None):
+        d = Path(directory)
+        self.directory = d
+        self._keep = _keep
+        with open(d / "summary.json") as f:
+            self.summary = json.load(f)
+        h, hist = _table(d / "history.csv")
+        self.t = hist[:, 0].copy()
+        self.energy = {name: hist[:, k].copy() for k, name in enumerate(h) if k > 0}
+        h, nodes = _table(d / "nodes.csv")
+        times = np.unique(nodes[:, 0], return_counts=True)
+        n_nodes = int(times[1][0]) if len(times[1]) else 0
+        steps = len(self.t)
+        col = {name: k for k, name in enumerate(h)}
+        nodes = nodes.reshape(steps, n_nodes, len(h))
+        self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
+        self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
+            if "dx_ds" in col else None
+        h, stress = _table(d / "stress.csv")
+        col = {name: k for k, name in enumerate(h)}
+        per_step = len(stress) // max(steps, 1)
+        stress = stress.reshape(steps, per_step, len(h))
+        self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
+        self.stress = stress[:, :, col["axial_stress"]].copy()
+        self.curvature = stress[:, :, col["curvature"]].copy()
+        self.reactions = {}
+        self.reactions_t = np.zeros(0)
+        if (d / "reactions.csv").exists():
+            h, r = _table(d / "reactions.csv")
+            if len(r):
+                for node in np.unique(r[:, 1]).astype(int):
+                    rows = r[r[:, 1] == node]
+                    self.reactions[int(node)] = rows[:, 2:5].copy()
+                    self.reactions_t = rows[:, 0].copy()
+
+    def write(self, directory):
+        """Writes the result files (docs/interface.md) to `directory`."""
+        out = Path(directory)
+        out.mkdir(parents=True, exist_ok=True)
+        for f in self.directory.iterdir():
+            if f.is_file() and not f.name.endswith(".partial"):
+                shutil.copy2(f, out / f.name)
+        if (self.directory / "vtk").is_dir():
+            shutil.copytree(self.directory / "vtk", out / "vtk", dirs_exist_ok=True)
+        return out
+
+    @classmethod
+    def read(cls, directory):
+        """The results of a run already on disk (e.g. written by the CLI)."""
+        return cls(directory)
+
+    def __repr__(self):
+        return "Result(%d steps to t = %g s, %s)" % (
+            len(self.t), self.t[-1] if len(self.t) else 0.0, self.directory)
+
+
+def run(scenario, out=None, progress=False):
+    """Runs a scenario; returns a :class:`Result`.
+
+    `out`: the folder for the result files (default: a temporary folder
+    that lives as long as the result). The solver runs without the GIL;
+    Ctrl-C stops it after the current step (KeyboardInterrupt). A solver
+    failure raises :class:`SolverError` with the partial result.
+    """
+    if not isinstance(scenario, Scenario):
+        scenario = Scenario.from_file(scenario)
+    keep = None
+    if out is None:
+        keep = tempfile.TemporaryDirectory(prefix="stancf-")
+        out = keep.name
+    try:
+        _stancf.run(scenario.text, scenario.name, str(out), progress)
+    except _stancf.RunFailed as e:
+        partial = Result(out, keep)
+        failure = partial.summary.get("failure") or {}
+        raise SolverError(str(e), failure.get("time"), failure.get("step"),
+                          failure.get("residual"), partial) from None
+    return Result(out, keep)
+
+
+# ---- sweeps ----
+
+#: The summary figures a sweep gathers, with their place in summary.json.
+FIGURES = [
+    ("steps", ("steps",)),
+    ("time", ("time",)),
+    ("wall_time_s", ("wall_time_s",)),
+    ("iterations_per_step", ("iterations", "mean_per_step")),
+    ("factorizations", ("iterations", "factorizations")),
+    ("energy_max_rel_drift", ("energy", "max_rel_drift")),
+    ("stress_peak_pa", ("stress_peak", "axial_stress")),
+    ("tip_x", ("tip", 0)),
+    ("tip_y", ("tip", 1)),
+    ("tip_z", ("tip", 2)),
+]
+
+
+def _figures(summary):
+    out = {}
+    for name, path in FIGURES:
+        v = summary
+        try:
+            for p in path:
+                v = v[p]
+        except (KeyError, IndexError, TypeError):
+            v = None
+        out[name] = v
+    return out
+
+
+def _run_point(text, name, folder):
+    """One point of a sweep, on a worker: runs into `folder` and returns
+    the summary figures (only these cross the wire)."""
+    t0 = _time.perf_counter()
+    try:
+        _stancf.run(text, name, folder, False)
+        error = ""
+    except _stancf.RunFailed as e:
+        error = str(e)
+    with open(os.path.join(folder, "summary.json")) as f:
+        summary = json.load(f)
+    row = _figures(summary)
+    row["error"] = error
+    row["worker_s"] = _time.perf_counter() - t0
+    return row
+
+
+def _points(grid):
+    """A grid (dict key -> list of values: the Cartesian product, first key
+    slowest) or a list of dicts of dotted overrides."""
+    if isinstance(grid, dict):
+        keys = list(grid)
+        return [dict(zip(keys, combo)) for combo in itertools.product(*(grid[k] for k in keys))]
+    return [dict(p) for p in grid]
+
+
+def sweep(scenario, grid, executor=None, out=None, timeout=None):
+    """Runs `scenario` at every point of `grid` in parallel; returns one row
+    per point (a pandas DataFrame if pandas is installed, else a list of
+    dicts) with the varied values, ``status`` ("ok" or "failed"),
+    ``error`` and the summary figures of :data:`FIGURES`.
+
+    `grid`: ``{"analysis.time_step": [1e-4, 5e-5], ...}`` (Cartesian
+    product) or a list of dicts of dotted overrides. Every point is
+    validated before anything runs (:class:`ScenarioError`).
+
+    `executor`: anything with ``submit`` and futures with ``result`` --
+    a ``concurrent.futures`` executor or a ``dask.distributed.Client``;
+    default: a local process pool with one process per core. Only scenario
+    text and summary figures cross the wire; each worker writes the full
+    results to ``out/run_<k>/`` (`out` must be a folder every worker sees;
+    default: a new temporary folder). A run whose worker dies or fails is
+    reported as failed, with the reason, and does not stop the others.
+    """
+    if not isinstance(scenario, Scenario):
+        scenario = Scenario.from_file(scenario)
+    points = _points(grid)
+    texts = [scenario.with_values(p).text for p in points]
+    out = Path(out) if out is not None else Path(tempfile.mkdtemp(prefix="stancf-sweep-"))
+    out.mkdir(parents=True, exist_ok=True)
+    own = executor is None
+    if own:
+        executor = ProcessPoolExecutor(max_workers=os.cpu_count() or 1)
+    try:
+        futures = [executor.submit(_run_point, text, scenario.name, str(out / ("run_%04d" % k)))
+                   for k, text in enumerate(texts)]
+        rows = []
+        for k, (point, fut) in enumerate(zip(points, futures)):
+            row = {"run": k}
+            row.update(point)
+            try:
+                figures = fut.result(timeout=timeout)
+                row["status"] = "ok" if not figures["error"] else "failed"
+                row.update(figures)
+            except Exception as e:  # a dead worker, a timeout, a crash
+                row["status"] = "failed"
+                row["error"] = "%s: %s" % (type(e).__name__, e)
+                row.update({name: None for name, _ in FIGURES})
+            rows.append(row)
+    finally:
+        if own:
+            executor.shutdown(wait=True, cancel_futures=True)
+    with open(out / "sweep.csv", "w", newline="") as f:
+        keys = list(rows[0]) if rows else []
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
+    try:
+        import pandas as pd
+        return pd.DataFrame(rows)
+    except ImportError:
+        return rows

@@ -1,0 +1,162 @@
+//! `stancf._stancf`: the native part of the Python package. A thin layer
+//! over `stancf_cli`: the same scenario validation, the same run, the same
+//! result files; the Python side (`python/stancf/__init__.py`) reads the
+//! files into numpy arrays and runs sweeps on any executor.
+
+use pyo3::create_exception;
+use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use stancf_cli::commands::{run as run_scenario, Cancel, RunOptions};
+use stancf_cli::{scenario, sweep, Failure};
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+create_exception!(
+    _stancf,
+    ScenarioError,
+    PyException,
+    "A scenario that is not valid: the message names the key."
+);
+create_exception!(
+    _stancf,
+    RunFailed,
+    PyException,
+    "A run that stopped: the solver failed (results up to the last converged step are kept)."
+);
+
+fn scenario_err(e: scenario::ScenarioError) -> PyErr {
+    ScenarioError::new_err(e.0)
+}
+
+/// Validates scenario text (`name` names it in messages).
+#[pyfunction]
+fn validate(text: &str, name: &str) -> PyResult<()> {
+    scenario::parse(text, name, Path::new(name))
+        .map(|_| ())
+        .map_err(scenario_err)
+}
+
+/// A Python value as a TOML value.
+fn to_toml(v: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
+    if v.is_instance_of::<PyBool>() {
+        return Ok(toml::Value::Boolean(v.extract()?));
+    }
+    if v.is_instance_of::<PyInt>() {
+        return Ok(toml::Value::Integer(v.extract()?));
+    }
+    if v.is_instance_of::<PyFloat>() {
+        return Ok(toml::Value::Float(v.extract()?));
+    }
+    if v.is_instance_of::<PyString>() {
+        return Ok(toml::Value::String(v.extract()?));
+    }
+    if let Ok(d) = v.downcast::<PyDict>() {
+        return Ok(toml::Value::Table(dict_to_table(d, key)?));
+    }
+    if v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>() {
+        let items: PyResult<Vec<toml::Value>> = v.try_iter()?.map(|x| to_toml(&x?, key)).collect();
+        return Ok(toml::Value::Array(items?));
+    }
+    // numpy scalars and anything else that is a number.
+    if let Ok(x) = v.extract::<f64>() {
+        return Ok(toml::Value::Float(x));
+    }
+    Err(PyTypeError::new_err(format!(
+        "{key}: cannot put a {} into a scenario",
+        v.get_type().name()?
+    )))
+}
+
+fn dict_to_table(d: &Bound<'_, PyDict>, prefix: &str) -> PyResult<toml::Table> {
+    let mut t = toml::Table::new();
+    for (k, v) in d.iter() {
+        let k: String = k.extract()?;
+        let key = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        t.insert(k, to_toml(&v, &key)?);
+    }
+    Ok(t)
+}
+
+/// A scenario dictionary (the keys of the TOML contract) as TOML text.
+#[pyfunction]
+fn dict_to_toml(d: &Bound<'_, PyDict>) -> PyResult<String> {
+    let t = dict_to_table(d, "")?;
+    toml::to_string(&t).map_err(|e| ScenarioError::new_err(e.to_string()))
+}
+
+/// Scenario text with dotted keys set (`{"analysis.time_step": 1e-4,
+/// "loads.1.drag_coefficient": 0.5}`), validated.
+#[pyfunction]
+fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<String> {
+    let mut doc: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| ScenarioError::new_err(format!("{name}: {e}")))?;
+    for (k, v) in values.iter() {
+        let key: String = k.extract()?;
+        let value = to_toml(&v, &key)?;
+        sweep::apply(&mut doc, &key, value)
+            .map_err(|e| ScenarioError::new_err(format!("{name}: {key}: {e}")))?;
+    }
+    let out = toml::to_string(&doc).map_err(|e| ScenarioError::new_err(e.to_string()))?;
+    scenario::parse(&out, name, Path::new(name)).map_err(scenario_err)?;
+    Ok(out)
+}
+
+/// Runs scenario text into the folder `out` (its `scenario.toml` and the
+/// result files of docs/interface.md), with the GIL released. Ctrl-C stops
+/// the run after the current step (KeyboardInterrupt; the files up to it
+/// are kept); a solver failure raises RunFailed (the files up to the last
+/// converged step are kept).
+#[pyfunction]
+#[pyo3(signature = (text, name, out, progress = false))]
+fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> PyResult<()> {
+    scenario::parse(text, name, Path::new(name)).map_err(scenario_err)?;
+    std::fs::create_dir_all(&out)
+        .map_err(|e| PyOSError::new_err(format!("{}: {e}", out.display())))?;
+    stancf_cli::output::write_atomic(&out, "scenario.toml", text.as_bytes())
+        .map_err(|e| PyOSError::new_err(format!("{}: {e}", out.display())))?;
+    // Python's signal handlers run only with the GIL: take it for a
+    // moment, at most ten times a second, to see whether Ctrl-C came.
+    let last = Mutex::new(Instant::now());
+    let cancel = Cancel(Arc::new(move || {
+        let mut l = last.lock().expect("not poisoned");
+        if l.elapsed() < Duration::from_millis(100) {
+            return false;
+        }
+        *l = Instant::now();
+        Python::with_gil(|py| py.check_signals().is_err())
+    }));
+    let path = out.join("scenario.toml");
+    let opts = RunOptions {
+        out: Some(out.clone()),
+        quiet: !progress,
+        cancel: Some(cancel),
+        ..RunOptions::default()
+    };
+    let result = py.allow_threads(|| run_scenario(&path, opts));
+    match result {
+        Ok(()) => Ok(()),
+        Err(Failure::Input(m)) => Err(ScenarioError::new_err(m)),
+        Err(Failure::Solver(m)) => Err(RunFailed::new_err(m)),
+        Err(Failure::Interrupted(m)) => Err(PyKeyboardInterrupt::new_err(m)),
+        Err(Failure::Other(m)) => Err(PyOSError::new_err(m)),
+    }
+}
+
+#[pymodule]
+fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("ScenarioError", m.py().get_type::<ScenarioError>())?;
+    m.add("RunFailed", m.py().get_type::<RunFailed>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(validate, m)?)?;
+    m.add_function(wrap_pyfunction!(dict_to_toml, m)?)?;
+    m.add_function(wrap_pyfunction!(with_values, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    Ok(())
+}
