@@ -104,6 +104,23 @@ pub fn axial_energy_density(
     ea: f64,
     rx: &[f64; 3],
 ) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    axial_energy_terms(measure, ea, rx, true)
+}
+
+/// [`axial_energy_density`] without the Hessian (a residual evaluation).
+#[inline]
+pub fn axial_energy_gradient(measure: AxialStrain, ea: f64, rx: &[f64; 3]) -> (f64, [f64; 3]) {
+    let (e, g, _) = axial_energy_terms(measure, ea, rx, false);
+    (e, g)
+}
+
+#[inline(always)]
+fn axial_energy_terms(
+    measure: AxialStrain,
+    ea: f64,
+    rx: &[f64; 3],
+    with_hessian: bool,
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
     let g = dot(rx, rx);
     let mut grad = [0.0; 3];
     let mut hess = [[0.0; 3]; 3];
@@ -112,10 +129,14 @@ pub fn axial_energy_density(
             let eps = 0.5 * (g - 1.0);
             for i in 0..3 {
                 grad[i] = ea * eps * rx[i];
-                for j in 0..3 {
-                    hess[i][j] = ea * rx[i] * rx[j];
+            }
+            if with_hessian {
+                for i in 0..3 {
+                    for j in 0..3 {
+                        hess[i][j] = ea * rx[i] * rx[j];
+                    }
+                    hess[i][i] += ea * eps;
                 }
-                hess[i][i] += ea * eps;
             }
             (0.5 * ea * eps * eps, grad, hess)
         }
@@ -126,10 +147,14 @@ pub fn axial_energy_density(
             let c = eps / len;
             for i in 0..3 {
                 grad[i] = ea * eps * n[i];
-                for j in 0..3 {
-                    hess[i][j] = ea * (1.0 - c) * n[i] * n[j];
+            }
+            if with_hessian {
+                for i in 0..3 {
+                    for j in 0..3 {
+                        hess[i][j] = ea * (1.0 - c) * n[i] * n[j];
+                    }
+                    hess[i][i] += ea * c;
                 }
-                hess[i][i] += ea * c;
             }
             (0.5 * ea * eps * eps, grad, hess)
         }
@@ -160,6 +185,29 @@ pub fn bending_energy_density(
     rx: &[f64; 3],
     rxx: &[f64; 3],
 ) -> (f64, [f64; 6], [[f64; 6]; 6]) {
+    bending_energy_terms(form, ei, rx, rxx, true)
+}
+
+/// [`bending_energy_density`] without the Hessian (a residual evaluation).
+#[inline]
+pub fn bending_energy_gradient(
+    form: Curvature,
+    ei: f64,
+    rx: &[f64; 3],
+    rxx: &[f64; 3],
+) -> (f64, [f64; 6]) {
+    let (e, g, _) = bending_energy_terms(form, ei, rx, rxx, false);
+    (e, g)
+}
+
+#[inline(always)]
+fn bending_energy_terms(
+    form: Curvature,
+    ei: f64,
+    rx: &[f64; 3],
+    rxx: &[f64; 3],
+    with_hessian: bool,
+) -> (f64, [f64; 6], [[f64; 6]; 6]) {
     let x = rx;
     let y = rxx;
     let g = dot(x, x);
@@ -184,6 +232,9 @@ pub fn bending_energy_density(
         grad[3 + i] = c * gp * ds_y[i];
     }
     let mut hess = [[0.0; 6]; 6];
+    if !with_hessian {
+        return (c * s * gp, grad, hess);
+    }
     for i in 0..3 {
         for j in 0..3 {
             let d = if i == j { 1.0 } else { 0.0 };
@@ -322,9 +373,15 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             *h = [[0.0; ND]; ND];
         }
         let mut u = 0.0;
+        let with_hessian = hess.is_some();
         for p in &self.axial_points {
             let (rx, _) = p.shape.gradients(q);
-            let (e, g, h) = axial_energy_density(self.measures.axial_strain, self.section.ea, &rx);
+            let (e, g, h) = axial_energy_terms(
+                self.measures.axial_strain,
+                self.section.ea,
+                &rx,
+                with_hessian,
+            );
             u += p.wl * e;
             let a = &p.shape.n_x;
             for k in 0..NS {
@@ -347,8 +404,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         for p in &self.bending_points {
             let (rx, rxx) = p.shape.gradients(q);
-            let (e, g, h) =
-                bending_energy_density(self.measures.curvature, self.section.ei, &rx, &rxx);
+            let (e, g, h) = bending_energy_terms(
+                self.measures.curvature,
+                self.section.ei,
+                &rx,
+                &rxx,
+                with_hessian,
+            );
             u += p.wl * e;
             let a = &p.shape.n_x;
             let b = &p.shape.n_xx;

@@ -344,3 +344,25 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
         assert!(e < 1e-13, "{model:?}: drag work rel. error {e:e}");
     }
 }
+
+/// The residual path's gradient-only densities are the full densities'
+/// energy and gradient to the bit (a residual evaluation and a tangent
+/// evaluation see the same residual).
+#[test]
+fn gradient_only_densities_equal_the_full_ones() {
+    use stancf::element::{
+        axial_energy_density, axial_energy_gradient, bending_energy_density,
+        bending_energy_gradient,
+    };
+    use stancf::{AxialStrain, Curvature};
+    let rx = [0.8, -0.45, 0.31];
+    let rxx = [0.2, 0.9, -0.4];
+    for m in [AxialStrain::Green, AxialStrain::Engineering] {
+        let (e, g, _) = axial_energy_density(m, 3.7, &rx);
+        assert_eq!(axial_energy_gradient(m, 3.7, &rx), (e, g));
+    }
+    for c in [Curvature::Paper, Curvature::Exact] {
+        let (e, g, _) = bending_energy_density(c, 0.9, &rx, &rxx);
+        assert_eq!(bending_energy_gradient(c, 0.9, &rx, &rxx), (e, g));
+    }
+}
