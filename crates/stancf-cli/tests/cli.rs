@@ -1337,6 +1337,7 @@ fn reproduce_all_writes_the_report() {
         "efficiency/fig6_efficiency.png",
         "efficiency/fig7_residuals.png",
         "pendulum/fig8_shapes.png",
+        "pendulum/fig10_shapes.png",
         "pendulum/fig10_tip_path_drag.png",
         "pendulum/fig10_tip_path_nodrag.png",
     ] {

@@ -20,6 +20,11 @@ const EXUDYN_TIP_DRAG: &str =
     include_str!("../../../../data/reference/pendulum/exudyn_drag_tip.csv");
 const EXUDYN_TIP_NODRAG: &str =
     include_str!("../../../../data/reference/pendulum/exudyn_nodrag_tip.csv");
+/// Its nodes and slopes at t = 0 and the six report times.
+const EXUDYN_SHAPES_DRAG: &str =
+    include_str!("../../../../data/reference/pendulum/exudyn_drag_shapes.csv");
+const EXUDYN_SHAPES_NODRAG: &str =
+    include_str!("../../../../data/reference/pendulum/exudyn_nodrag_shapes.csv");
 
 /// The paper's image times (Table 10) and the six report times of the
 /// reference (its image 1, t = 0.01 s, is the release).
@@ -65,6 +70,8 @@ struct Outcome {
     tip_at: Vec<(f64, [f64; 3])>,
     path: Vec<(f64, [f64; 3])>,
     shape: Vec<(f64, [f64; 3])>,
+    /// The centre line at the report times.
+    image_shapes: Vec<(f64, Vec<(f64, [f64; 3])>)>,
     energy_final: f64,
     drag_work: f64,
 }
@@ -121,6 +128,7 @@ fn simulate(c: &Case) -> Result<Outcome, Failure> {
         tip_at: Vec::new(),
         path: vec![(0.0, sim.model().node_position(&sim.state().e, tip_node))],
         shape: Vec::new(),
+        image_shapes: Vec::new(),
         energy_final: 0.0,
         drag_work: 0.0,
     };
@@ -129,6 +137,10 @@ fn simulate(c: &Case) -> Result<Outcome, Failure> {
         let tip = sim.model().node_position(&sim.state().e, tip_node);
         if IMAGE_TIMES.iter().any(|&ti| near(rep.t, ti)) {
             out.tip_at.push((rep.t, tip));
+        }
+        if let Some(&ti) = REPORT_TIMES.iter().find(|&&ti| near(rep.t, ti)) {
+            out.image_shapes
+                .push((ti, centre_line(sim.model(), sim.state(), 13)));
         }
         if rep.step % 50 == 0 {
             out.path.push((rep.t, tip));
@@ -214,6 +226,7 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
     );
     let mut shapes = String::from("element,elements,axial_strain,drag_coefficient,s,x,y\n");
     let mut paths = String::from("element,elements,axial_strain,drag_coefficient,t,x,y\n");
+    let mut image_shapes = String::from("element,elements,axial_strain,drag_coefficient,t,s,x,y\n");
     for (c, o) in &results {
         let head = format!(
             "{},{},{},{}",
@@ -258,6 +271,19 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
         }
         for (t, r) in &o.path {
             writeln!(paths, "{head},{},{},{}", Num(*t), Num(r[0]), Num(r[1])).ok();
+        }
+        for (t, line) in &o.image_shapes {
+            for (s, r) in line {
+                writeln!(
+                    image_shapes,
+                    "{head},{},{},{},{}",
+                    Num(*t),
+                    Num(*s),
+                    Num(r[0]),
+                    Num(r[1])
+                )
+                .ok();
+            }
         }
     }
 
@@ -403,9 +429,12 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
             ("tip_at_image_times.csv", &tips),
             ("shapes_068.csv", &shapes),
             ("tip_trajectory.csv", &paths),
+            ("shapes_at_report_times.csv", &image_shapes),
             // The reference, next to our results, for the figures.
             ("exudyn_drag_tip.csv", EXUDYN_TIP_DRAG),
             ("exudyn_nodrag_tip.csv", EXUDYN_TIP_NODRAG),
+            ("exudyn_drag_shapes.csv", EXUDYN_SHAPES_DRAG),
+            ("exudyn_nodrag_shapes.csv", EXUDYN_SHAPES_NODRAG),
             ("pendulum.md", &md),
         ],
     )
