@@ -37,6 +37,9 @@ const DURATION: f64 = 0.8;
 const TIME_STEP: f64 = 1e-4;
 const G: f64 = 9.81;
 
+/// A centre line: (material coordinate, position) along the cable.
+type Line = Vec<(f64, [f64; 3])>;
+
 /// One simulated pendulum.
 #[derive(Clone, Copy)]
 struct Case {
@@ -71,7 +74,7 @@ struct Outcome {
     path: Vec<(f64, [f64; 3])>,
     shape: Vec<(f64, [f64; 3])>,
     /// The centre line at the report times.
-    image_shapes: Vec<(f64, Vec<(f64, [f64; 3])>)>,
+    image_shapes: Vec<(f64, Line)>,
     energy_final: f64,
     drag_work: f64,
 }
