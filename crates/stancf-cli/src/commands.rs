@@ -75,7 +75,14 @@ fn warnings(sc: &Scenario, model: &Model, d: Option<&Derived>) -> Vec<String> {
     w
 }
 
-fn describe(sc: &Scenario, model: &Model, d: Option<&Derived>) -> String {
+/// `unknowns`: a dynamic run's unknowns per step and whether the planar
+/// reduction applies (from the simulation the run would build).
+fn describe(
+    sc: &Scenario,
+    model: &Model,
+    d: Option<&Derived>,
+    unknowns: Option<(usize, bool)>,
+) -> String {
     let a = &sc.analysis;
     let mut s = String::new();
     let mut line = |k: &str, v: String| s.push_str(&format!("{k:<28}{v}\n"));
@@ -121,22 +128,21 @@ fn describe(sc: &Scenario, model: &Model, d: Option<&Derived>) -> String {
         );
         return s;
     };
-    let layout = stancf::assembly::SlabLayout::new(
-        model,
-        stancf::assembly::Scheme::P2 {
-            layers: a.time_layers,
-        },
-        a.constraint_method,
-    );
-    line(
-        "unknowns per step",
-        format!(
-            "{} ({} time layer{})",
-            layout.size(),
-            a.time_layers,
-            if a.time_layers == 1 { "" } else { "s" }
-        ),
-    );
+    if let Some((n, planar)) = unknowns {
+        line(
+            "unknowns per step",
+            format!(
+                "{n} ({} time layer{}{})",
+                a.time_layers,
+                if a.time_layers == 1 { "" } else { "s" },
+                if planar {
+                    "; planar motion: z coordinates eliminated"
+                } else {
+                    ""
+                }
+            ),
+        );
+    }
     line(
         "quadrature",
         format!(
@@ -185,7 +191,14 @@ fn describe(sc: &Scenario, model: &Model, d: Option<&Derived>) -> String {
 pub fn check(path: &Path) -> Result<(), Failure> {
     let (sc, model, state) = load(path)?;
     let d = (sc.analysis.kind == AnalysisKind::Dynamic).then(|| derive(&sc, &model, &state));
-    print!("{}", describe(&sc, &model, d.as_ref()));
+    let unknowns = if sc.analysis.kind == AnalysisKind::Dynamic {
+        let sim = Simulation::new(model.clone(), state.clone(), sc.step_settings())
+            .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+        Some((sim.unknowns_per_step(), sim.is_planar()))
+    } else {
+        None
+    };
+    print!("{}", describe(&sc, &model, d.as_ref(), unknowns));
     if sc.analysis.kind == AnalysisKind::Static {
         stancf::StaticSolver::new(model.clone(), sc.static_settings())
             .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;

@@ -205,7 +205,8 @@ fn check_prints_the_derived_figures() {
     assert_eq!(o.status.code(), Some(0), "{se}");
     for needle in [
         "DOFs                        54",
-        "unknowns per step           108",
+        // 54 coordinates, 2 unknowns each per P2 step, z eliminated (planar).
+        "unknowns per step           72 (1 time layer; planar motion: z coordinates eliminated)",
         "wave speed sqrt(E/rho)      1569.6",
         "Courant number c dt/dx      0.1569",
         "stable step (P2)            1.0547",
