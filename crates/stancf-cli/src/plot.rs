@@ -630,13 +630,6 @@ impl Figure for Bars {
                     Rectangle::new([(x, y - 6), (x + 14, y + 6)], color.filled())
                 });
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.5))
-            .label_font((FAMILY, TICK))
-            .draw()
-            .map_err(err)
+        legend(&mut chart)
     }
 }

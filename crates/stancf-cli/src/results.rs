@@ -14,52 +14,32 @@ pub struct Table {
 
 impl Table {
     pub fn read(path: &Path) -> io::Result<Table> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
-        let mut lines = text.lines();
-        let header: Vec<String> = lines
-            .next()
-            .unwrap_or("")
-            .split(',')
-            .map(|s| s.trim().to_string())
-            .collect();
-        let mut rows = Vec::new();
-        for (i, line) in lines.enumerate() {
-            if line.trim().is_empty() {
-                continue;
-            }
-            let row: Result<Vec<f64>, _> = line
-                .split(',')
-                .map(|f| {
-                    let f = f.trim();
-                    if f.is_empty() {
-                        Ok(f64::NAN)
-                    } else {
-                        f.parse::<f64>()
-                    }
-                })
-                .collect();
-            let row = row.map_err(|e| {
-                io::Error::new(
-                    io::ErrorKind::InvalidData,
-                    format!("{} line {}: {e}", path.display(), i + 2),
-                )
-            })?;
-            if row.len() != header.len() {
-                return Err(io::Error::new(
-                    io::ErrorKind::InvalidData,
-                    format!(
-                        "{} line {}: {} fields, the header has {}",
-                        path.display(),
-                        i + 2,
-                        row.len(),
-                        header.len()
-                    ),
-                ));
-            }
-            rows.push(row);
-        }
-        Ok(Table { header, rows })
+        let text = TextTable::read(path)?;
+        let rows = text
+            .rows
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                row.iter()
+                    .map(|f| {
+                        if f.is_empty() {
+                            Ok(f64::NAN)
+                        } else {
+                            f.parse::<f64>().map_err(|e| {
+                                io::Error::new(
+                                    io::ErrorKind::InvalidData,
+                                    format!("{} row {}: {f:?}: {e}", path.display(), i + 2),
+                                )
+                            })
+                        }
+                    })
+                    .collect()
+            })
+            .collect::<io::Result<Vec<Vec<f64>>>>()?;
+        Ok(Table {
+            header: text.header,
+            rows,
+        })
     }
 
     /// Index of a column.

@@ -155,8 +155,9 @@ fn cell(v: &toml::Value) -> String {
     }
 }
 
-/// The summary figures of sweep.csv, in order, with their JSON paths.
-const FIGURES: [(&str, &[&str]); 10] = [
+/// The summary figures of sweep.csv (and of the Python package's sweep),
+/// in order, with their paths in summary.json (list entries by index).
+pub const FIGURES: [(&str, &[&str]); 10] = [
     ("steps", &["steps"]),
     ("time", &["time"]),
     ("wall_time_s", &["wall_time_s"]),

@@ -149,6 +149,16 @@ fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> 
     }
 }
 
+/// The summary figures a sweep gathers: (name, path in summary.json),
+/// the same list as `stancf sweep`'s sweep.csv.
+#[pyfunction]
+fn sweep_figures() -> Vec<(&'static str, Vec<&'static str>)> {
+    sweep::FIGURES
+        .iter()
+        .map(|(n, p)| (*n, p.to_vec()))
+        .collect()
+}
+
 #[pymodule]
 fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("ScenarioError", m.py().get_type::<ScenarioError>())?;
@@ -158,5 +168,6 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(dict_to_toml, m)?)?;
     m.add_function(wrap_pyfunction!(with_values, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_figures, m)?)?;
     Ok(())
 }

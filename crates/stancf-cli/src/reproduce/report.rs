@@ -271,27 +271,75 @@ fn efficiency(dir: &Path) -> io::Result<Vec<StudyFigure>> {
     ])
 }
 
+/// A CSV file of the pendulum study: rows labelled by their model
+/// (element, elements, axial_strain, drag_coefficient), with x and y (and
+/// possibly t) columns.
+struct PendulumFile {
+    table: TextTable,
+    model: [usize; 4],
+    t: Option<usize>,
+    x: usize,
+    y: usize,
+}
+
+impl PendulumFile {
+    fn read(dir: &Path, file: &str) -> io::Result<Self> {
+        let table = TextTable::read(&dir.join(file))?;
+        let model = [
+            table.need("element", file)?,
+            table.need("elements", file)?,
+            table.need("axial_strain", file)?,
+            table.need("drag_coefficient", file)?,
+        ];
+        let t = table.header.iter().position(|h| h == "t");
+        let (x, y) = (table.need("x", file)?, table.need("y", file)?);
+        Ok(PendulumFile {
+            table,
+            model,
+            t,
+            x,
+            y,
+        })
+    }
+
+    /// (x, y) of the rows of one model (`[element, elements, strain, C]`
+    /// as written), at time `t` if given.
+    fn points(&self, model: [&str; 4], t: Option<f64>) -> Vec<(f64, f64)> {
+        self.table
+            .rows
+            .iter()
+            .filter(|r| (0..4).all(|k| r[self.model[k]] == model[k]))
+            .filter(|r| match (t, self.t) {
+                (Some(t), Some(c)) => (TextTable::num(r, c) - t).abs() < 1e-9,
+                _ => true,
+            })
+            .map(|r| (TextTable::num(r, self.x), TextTable::num(r, self.y)))
+            .collect()
+    }
+
+    /// The distinct times of the file, ascending.
+    fn times(&self) -> Vec<f64> {
+        let Some(c) = self.t else {
+            return Vec::new();
+        };
+        let mut t: Vec<f64> = self
+            .table
+            .rows
+            .iter()
+            .map(|r| TextTable::num(r, c))
+            .collect();
+        t.sort_by(|a, b| a.total_cmp(b));
+        t.dedup();
+        t
+    }
+}
+
 /// Figs. 8-10: the tip's path against the Exudyn reference, and the
 /// shapes at t = 0.68 s.
 fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
-    let t = TextTable::read(&dir.join("tip_trajectory.csv"))?;
-    let f = "tip_trajectory.csv";
-    let cols = [
-        t.need("element", f)?,
-        t.need("elements", f)?,
-        t.need("axial_strain", f)?,
-        t.need("drag_coefficient", f)?,
-    ];
-    let (cx, cy) = (t.need("x", f)?, t.need("y", f)?);
-    let pick = |element: &str, n: &str, strain: &str, c: &str| -> Vec<(f64, f64)> {
-        t.rows
-            .iter()
-            .filter(|r| {
-                r[cols[0]] == element && r[cols[1]] == n && r[cols[2]] == strain && r[cols[3]] == c
-            })
-            .map(|r| (TextTable::num(r, cx), TextTable::num(r, cy)))
-            .collect()
-    };
+    let paths = PendulumFile::read(dir, "tip_trajectory.csv")?;
+    let pick =
+        |element: &str, n: &str, strain: &str, c: &str| paths.points([element, n, strain, c], None);
     let reference = |name: &str| -> io::Result<Vec<(f64, f64)>> {
         let r = Table::read(&dir.join(name))?;
         Ok(r.rows.iter().map(|row| (row[1], row[2])).collect())
@@ -349,15 +397,7 @@ fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
         ));
     }
     // Fig. 10 analogue: the shapes at the six report times, with drag.
-    let sh = TextTable::read(&dir.join("shapes_at_report_times.csv"))?;
-    let f = "shapes_at_report_times.csv";
-    let kc = [
-        sh.need("element", f)?,
-        sh.need("elements", f)?,
-        sh.need("axial_strain", f)?,
-        sh.need("drag_coefficient", f)?,
-    ];
-    let (kt, kx, ky) = (sh.need("t", f)?, sh.need("x", f)?, sh.need("y", f)?);
+    let sh = PendulumFile::read(dir, "shapes_at_report_times.csv")?;
     let reference = Table::read(&dir.join("exudyn_drag_shapes.csv"))?;
     let mut lines = Lines::new(
         "Fig. 10 analogue: the pendulum at the six report times, air drag C = 1.5",
@@ -366,12 +406,7 @@ fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
     );
     lines.equal_axes = true;
     // Our report times (the reference also has t = 0 and 0.8 s).
-    let times: Vec<f64> = {
-        let mut t: Vec<f64> = sh.rows.iter().map(|r| TextTable::num(r, kt)).collect();
-        t.sort_by(|a, b| a.total_cmp(b));
-        t.dedup();
-        t
-    };
+    let times = sh.times();
     for (k, &t) in times.iter().enumerate() {
         let first = k == 0;
         let mut e = Series::line(
@@ -408,18 +443,7 @@ fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
                 false,
             ),
         ] {
-            let pts: Vec<(f64, f64)> = sh
-                .rows
-                .iter()
-                .filter(|r| {
-                    r[kc[0]] == element
-                        && r[kc[1]] == n
-                        && r[kc[2]] == strain
-                        && r[kc[3]] == "1.5"
-                        && (TextTable::num(r, kt) - t).abs() < 1e-9
-                })
-                .map(|r| (TextTable::num(r, kx), TextTable::num(r, ky)))
-                .collect();
+            let pts = sh.points([element, n, strain, "1.5"], Some(t));
             let mut s = Series::line(if first { label } else { "" }, pts, color);
             s.dashed = dashed;
             lines.series.push(s);
@@ -432,15 +456,7 @@ fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
          0.79 s (the paper's images 2 to 7) against the Exudyn reference, in place of the \
          paper's photographs (not public).",
     ));
-    let s = TextTable::read(&dir.join("shapes_068.csv"))?;
-    let f = "shapes_068.csv";
-    let sc = [
-        s.need("element", f)?,
-        s.need("elements", f)?,
-        s.need("axial_strain", f)?,
-        s.need("drag_coefficient", f)?,
-    ];
-    let (sx, sy) = (s.need("x", f)?, s.need("y", f)?);
+    let shapes = PendulumFile::read(dir, "shapes_068.csv")?;
     let mut lines = Lines::new(
         "Fig. 8: the pendulum at t = 0.68 s for drag coefficients 0 to 2 (4 SAC-2, Green)",
         "x (m)",
@@ -449,14 +465,7 @@ fn pendulum(dir: &Path) -> io::Result<Vec<StudyFigure>> {
     lines.equal_axes = true;
     let cs = ["0", "0.5", "1", "1.5", "2"];
     for (k, c) in cs.iter().enumerate() {
-        let pts: Vec<(f64, f64)> = s
-            .rows
-            .iter()
-            .filter(|r| {
-                r[sc[0]] == "SAC-2" && r[sc[1]] == "4" && r[sc[2]] == "Green" && r[sc[3]] == *c
-            })
-            .map(|r| (TextTable::num(r, sx), TextTable::num(r, sy)))
-            .collect();
+        let pts = shapes.points(["SAC-2", "4", "Green", c], None);
         lines.series.push(Series::line(
             format!("C = {c}"),
             pts,
