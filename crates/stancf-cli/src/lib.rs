@@ -3,6 +3,7 @@
 //! paper's studies. The `stancf` binary and the Python package are thin
 //! layers over it, so that both read and write exactly the same files.
 
+pub mod check;
 pub mod commands;
 pub mod figures;
 pub mod output;
@@ -13,6 +14,7 @@ pub mod results;
 pub mod scenario;
 pub mod sweep;
 pub mod vtk;
+pub mod writers;
 
 /// How a command ended.
 #[derive(Debug)]
