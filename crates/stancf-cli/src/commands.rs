@@ -1,8 +1,8 @@
 //! The `run` command: a scenario stepped (or solved statically) with its
 //! results streamed to the output folder and summary.json written last.
 
-use crate::check::{derive, load, warnings};
-use crate::output::{json_num, write_atomic};
+use crate::check::{derive, load_text, warnings};
+use crate::output::{json_num, write_atomic, ResultFolder};
 use crate::scenario::{AnalysisKind, Scenario};
 use crate::writers::{Row, SolverRow, WallClock, Writers, STRESS_POINTS_PER_ELEMENT};
 use crate::Failure;
@@ -118,23 +118,58 @@ fn write_summary(
     write_atomic(dir, "summary.json", text.as_bytes()).map_err(io_err(dir))
 }
 
+/// Appends a line to a run's report (printed once its results are in place).
+macro_rules! say {
+    ($report:expr, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
+        let _ = writeln!($report, $($arg)*);
+    }};
+}
+
 /// The closing line of a run: the tip and where the results are.
-fn print_tip(model: &Model, state: &State, dir: &Path) {
+fn tip_line(model: &Model, state: &State, dir: &Path) -> String {
     let tip = model.node_position(&state.e, model.nodes() - 1);
-    println!(
+    format!(
         "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
         tip[0],
         tip[1],
         tip[2],
         dir.display()
-    );
+    )
 }
 
+/// The output folder: `--out`, or `out/<stem>` with the scenario file's
+/// stem made safe as a folder name (letters, digits, `-`, `_`, `.`, no
+/// leading dot; `run` when nothing is left), so the default is always a
+/// folder of its own under `out/`.
 fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
     out.unwrap_or_else(|| {
-        let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned());
-        PathBuf::from("out").join(stem.unwrap_or_else(|| "run".into()))
+        let stem = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        PathBuf::from("out").join(safe_folder_name(&stem))
     })
+}
+
+/// A file stem as a folder name of its own (see [`output_dir`]).
+pub(crate) fn safe_folder_name(stem: &str) -> String {
+    let name: String = stem
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let name = name.trim_start_matches('.');
+    if name.is_empty() {
+        "run".into()
+    } else {
+        name.chars().take(100).collect()
+    }
 }
 
 /// A request to stop a run, polled after every step (the Python layer
@@ -160,28 +195,69 @@ pub struct RunOptions {
     /// No progress bar and no summary on standard output (errors and
     /// warnings still go to standard error).
     pub quiet: bool,
+    /// Run even when the step count or the result size exceeds the
+    /// bounds that otherwise refuse a run.
+    pub allow_large: bool,
     /// Stop when this says so (checked after every step).
     pub cancel: Option<Cancel>,
 }
 
+/// Where a run writes (`dir`, the staging folder of its [`ResultFolder`])
+/// and the folder its results appear in (`shown`, named in messages).
+struct Place<'a> {
+    dir: &'a Path,
+    shown: &'a Path,
+}
+
+/// `stancf run`: reads the scenario file and runs it ([`run_text`]).
 pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
-    let (sc, model, state) = load(path)?;
-    let dir = output_dir(path, opts.out.clone());
-    let result = match sc.analysis.kind {
-        AnalysisKind::Dynamic => run_dynamic(path, &dir, &opts, sc, model, state),
-        AnalysisKind::Static => run_static(path, &dir, &opts, sc, model),
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    run_text(&text, path, opts)
+}
+
+/// Runs scenario text (`path` names it in messages and gives the default
+/// output folder and title). The results are written as one transaction
+/// ([`ResultFolder`]): the output folder holds the complete old set until
+/// the complete new one replaces it, the scenario text included
+/// (`scenario.toml`), also when the solver fails or the run is
+/// interrupted; an invalid scenario or a write error leaves it untouched.
+pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
+    let (sc, model, state) = load_text(text, path)?;
+    crate::check::admit(path, &sc, &opts)?;
+    let target = output_dir(path, opts.out.clone());
+    let folder = ResultFolder::open(&target)?;
+    let place = Place {
+        dir: folder.staging(),
+        shown: folder.target(),
     };
-    // The figures are drawn from the files on disk, also those of a run
-    // that stopped early (they hold every converged step).
-    if opts.plot && dir.join("summary.json").exists() {
-        let names = crate::figures::plot_results(&dir).map_err(io_err(&dir))?;
-        println!(
+    write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
+    let result = match sc.analysis.kind {
+        AnalysisKind::Dynamic => run_dynamic(path, &place, &opts, sc, model, state),
+        AnalysisKind::Static => run_static(path, &place, &opts, sc, model),
+    };
+    if let Err(Failure::Input(_) | Failure::Other(_)) = result {
+        return result.map(|_| ());
+    }
+    // The figures are drawn from the new files, also those of a run that
+    // stopped early (they hold every converged step).
+    let figures = opts
+        .plot
+        .then(|| crate::figures::plot_results(place.dir));
+    folder.commit().map_err(io_err(&target))?;
+    if let Ok(report) = &result {
+        print!("{report}");
+    }
+    match figures {
+        Some(Ok(names)) => println!(
             "figures: {} (PNG and SVG) in {}",
             names.join(", "),
-            dir.display()
-        );
+            target.display()
+        ),
+        Some(Err(e)) => return Err(io_err(&target)(e)),
+        None => {}
     }
-    result
+    result.map(|_| ())
 }
 
 /// `stancf plot DIR`: the figures of the results already in DIR.
@@ -201,14 +277,16 @@ pub fn plot(dir: &Path) -> Result<(), Failure> {
     Ok(())
 }
 
+/// A dynamic run into `place`; on success, the text to print.
 fn run_dynamic(
     path: &Path,
-    dir: &Path,
+    place: &Place,
     opts: &RunOptions,
     sc: Scenario,
     model: Model,
     state: State,
-) -> Result<(), Failure> {
+) -> Result<String, Failure> {
+    let mut report = String::new();
     let d = derive(&sc, &model, &state);
     for w in warnings(&sc, &model, Some(&d)) {
         eprintln!("warning: {w}");
@@ -216,10 +294,9 @@ fn run_dynamic(
     let mut sim = Simulation::new(model, state, sc.step_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     sim.set_clock(Box::new(WallClock(Instant::now())));
-    let dir = dir.to_path_buf();
-    std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
+    let dir = place.dir.to_path_buf();
     let constrained = !sim.model().constraints.is_empty();
-    let mut writers = Writers::create(&dir, constrained, true, opts.vtk).map_err(io_err(&dir))?;
+    let mut writers = Writers::create(&dir, constrained, true, opts.vtk).map_err(io_err(place.shown))?;
 
     let e0 = sim.energies();
     let first = Row {
@@ -232,7 +309,7 @@ fn run_dynamic(
         constraint_work: 0.0,
         drag_work: 0.0,
     };
-    writers.write(sim.model(), &first).map_err(io_err(&dir))?;
+    writers.write(sim.model(), &first).map_err(io_err(place.shown))?;
     let mut tally = Tally {
         energy_scale: e0.kinetic.abs() + e0.strain.abs(),
         ..Tally::default()
@@ -240,6 +317,7 @@ fn run_dynamic(
     tally.record_stress(0.0, &writers.samples);
     let mut peak_samples = Vec::new();
     let mut last_written = 0;
+    let mut last_newton = (0, 0.0, 0.0);
     let mut io_failure: Option<std::io::Error> = None;
     let every = sc.output_every;
     let clock = Instant::now();
@@ -252,6 +330,11 @@ fn run_dynamic(
             interrupted = true;
             return ControlFlow::Break(());
         }
+        last_newton = (
+            rep.newton.iterations,
+            rep.newton.residual,
+            rep.newton.increment,
+        );
         let timing = sim.timing();
         let solver_row = SolverRow {
             t: rep.t,
@@ -316,25 +399,27 @@ fn run_dynamic(
     progress.finish();
     let wall = clock.elapsed().as_secs_f64();
     if let Some(e) = io_failure {
-        return Err(io_err(&dir)(e));
+        return Err(io_err(place.shown)(e));
     }
     let failure = result.as_ref().err().cloned();
-    if failure.is_none() && last_written != sim.steps() {
+    // The last converged step when `output.every` skipped it (also of a
+    // run that failed or was interrupted), with its own solver figures.
+    if last_written != sim.steps() {
         let en = sim.energies();
-        let residual = sim.residual_history().last().copied().unwrap_or(0.0);
+        let (iterations, residual, increment) = last_newton;
         let row = Row {
             state: sim.state(),
             energies: &en,
-            iterations: 0,
+            iterations,
             residual,
-            increment: 0.0,
+            increment,
             reactions: Some(sim.reactions()),
             constraint_work: sim.constraint_work(),
             drag_work: sim.drag_work(),
         };
-        writers.write(sim.model(), &row).map_err(io_err(&dir))?;
+        writers.write(sim.model(), &row).map_err(io_err(place.shown))?;
     }
-    writers.commit().map_err(io_err(&dir))?;
+    writers.commit().map_err(io_err(place.shown))?;
 
     let state = sim.state();
     let model = sim.model();
@@ -429,22 +514,36 @@ fn run_dynamic(
             path.display(),
             state.t,
             steps,
-            dir.display()
+            place.shown.display()
         )));
     }
     if let Some(f) = failure {
+        // A Galerkin step beyond its meaningful range (warned at the start).
+        let w_dt = d.w_max * sc.analysis.time_step;
+        let beyond = if sc.analysis.time_scheme == stancf::TimeScheme::Galerkin
+            && w_dt > stancf::stability::GALERKIN_ACCURATE_W_DT
+        {
+            format!(
+                "; the Galerkin step's w_max dt = {w_dt:.1} is beyond {:.2}, the largest at which \
+                 its results are shown to be meaningful: use a step of at most {:.4e} s",
+                stancf::stability::GALERKIN_ACCURATE_W_DT,
+                stancf::stability::galerkin_accurate_step(d.w_max)
+            )
+        } else {
+            String::new()
+        };
         return Err(Failure::Solver(format!(
-            "{}: {f}; results up to t = {} s (step {}) are in {}",
+            "{}: {f}{beyond}; results up to t = {} s (step {}) are in {}",
             path.display(),
             state.t,
             steps,
-            dir.display()
+            place.shown.display()
         )));
     }
     if opts.quiet {
-        return Ok(());
+        return Ok(report);
     }
-    println!(
+    say!(report, 
         "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} {} iterations per step, {} factorizations",
         sc.title,
         steps,
@@ -458,19 +557,19 @@ fn run_dynamic(
         },
         tally.factorizations
     );
-    println!(
+    say!(report, 
         "energy: initial {:.9e} J, final {:.9e} J, max drift {:.3e} J ({:.3e} of the energy scale)",
         e0.mechanical(),
         en.mechanical(),
         tally.energy_max_abs_drift,
         rel
     );
-    println!(
+    say!(report, 
         "peak axial stress: {:.6e} Pa at s = {} m, t = {:.6e} s",
         tally.stress_peak.0, tally.stress_peak.1, tally.stress_peak.2
     );
-    print_tip(model, state, &dir);
-    Ok(())
+    say!(report, "{}", tip_line(model, state, place.shown));
+    Ok(report)
 }
 
 /// Energies of a static state at load factor lambda: the potentials of the
@@ -482,21 +581,22 @@ fn static_energies(model: &Model, state: &State) -> Energies {
     en
 }
 
+/// A static run into `place`; on success, the text to print.
 fn run_static(
     path: &Path,
-    dir: &Path,
+    place: &Place,
     opts: &RunOptions,
     sc: Scenario,
     model: Model,
-) -> Result<(), Failure> {
+) -> Result<String, Failure> {
+    let mut report = String::new();
     for w in warnings(&sc, &model, None) {
         eprintln!("warning: {w}");
     }
     let mut solver = StaticSolver::new(model, sc.static_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
-    let dir = dir.to_path_buf();
-    std::fs::create_dir_all(&dir).map_err(io_err(&dir))?;
-    let mut writers = Writers::create(&dir, true, false, opts.vtk).map_err(io_err(&dir))?;
+    let dir = place.dir.to_path_buf();
+    let mut writers = Writers::create(&dir, true, false, opts.vtk).map_err(io_err(place.shown))?;
     let e0 = static_energies(solver.model(), solver.state());
     let first = Row {
         state: solver.state(),
@@ -510,12 +610,13 @@ fn run_static(
     };
     writers
         .write(solver.model(), &first)
-        .map_err(io_err(&dir))?;
+        .map_err(io_err(place.shown))?;
     let mut tally = Tally::default();
     let mut increments = 0;
     let mut cuts = 0;
     let mut io_failure = None;
     let clock = Instant::now();
+    let mut interrupted = false;
     let result = solver.solve(|s, inc| {
         increments = inc.step;
         cuts += inc.cuts;
@@ -537,6 +638,11 @@ fn run_static(
         match writers.write(s.model(), &row) {
             Ok(()) => {
                 tally.record_stress(s.state().t, &writers.samples);
+                // Stopped after a written increment.
+                if opts.cancel.as_ref().is_some_and(|c| (c.0)()) {
+                    interrupted = true;
+                    return ControlFlow::Break(());
+                }
                 ControlFlow::Continue(())
             }
             Err(e) => {
@@ -547,9 +653,9 @@ fn run_static(
     });
     let wall = clock.elapsed().as_secs_f64();
     if let Some(e) = io_failure {
-        return Err(io_err(&dir)(e));
+        return Err(io_err(place.shown)(e));
     }
-    writers.commit().map_err(io_err(&dir))?;
+    writers.commit().map_err(io_err(place.shown))?;
     let failure = result.as_ref().err().cloned();
     let state = solver.state();
     let model = solver.model();
@@ -574,40 +680,53 @@ fn run_static(
         "max_residual": json_num(tally.max_residual),
         "stress_peak": tally.stress_json(),
         "reactions": reactions_json(solver.reactions()),
-        "error": failure.as_ref().map(|f| f.to_string()),
+        "error": if interrupted {
+            Some("interrupted".to_string())
+        } else {
+            failure.as_ref().map(|f| f.to_string())
+        },
+        "interrupted": interrupted,
     });
     write_summary(&dir, summary, extra)?;
+    if interrupted {
+        return Err(Failure::Interrupted(format!(
+            "{}: interrupted; results up to load factor {} are in {}",
+            path.display(),
+            state.t,
+            place.shown.display()
+        )));
+    }
     if let Some(f) = failure {
         return Err(Failure::Solver(format!(
             "{}: {f}; results up to load factor {} are in {}",
             path.display(),
             state.t,
-            dir.display()
+            place.shown.display()
         )));
     }
     if opts.quiet {
-        return Ok(());
+        return Ok(report);
     }
     let tip = model.node_position(&state.e, model.nodes() - 1);
-    println!(
+    say!(report, 
         "{}: static, {increments} load increments ({cuts} cuts) in {:.3} s wall time, {:.2} Newton iterations per increment",
         sc.title,
         wall,
         tally.iterations as f64 / increments.max(1) as f64
     );
-    println!("strain energy: {:.9e} J", en.strain);
+    say!(report, "strain energy: {:.9e} J", en.strain);
     for (node, f) in solver.reactions() {
-        println!(
+        say!(report, 
             "reaction at node {node}: [{:.9e}, {:.9e}, {:.9e}] N",
             f[0], f[1], f[2]
         );
     }
-    println!(
+    say!(report, 
         "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
         tip[0],
         tip[1],
         tip[2],
-        dir.display()
+        place.shown.display()
     );
-    Ok(())
+    Ok(report)
 }

@@ -10,8 +10,10 @@ pub mod output;
 pub mod plot;
 pub mod progress;
 pub mod reproduce;
+pub mod result_folder;
 pub mod results;
 pub mod scenario;
+pub mod signals;
 pub mod sweep;
 pub mod vtk;
 pub mod writers;
@@ -40,3 +42,5 @@ impl std::fmt::Display for Failure {
         }
     }
 }
+
+impl std::error::Error for Failure {}

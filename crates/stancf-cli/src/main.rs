@@ -4,7 +4,7 @@
 //! failed (results up to the last converged step are kept), 1 anything else.
 
 use clap::{Parser, Subcommand};
-use stancf_cli::{commands, reproduce, sweep, Failure};
+use stancf_cli::{commands, reproduce, signals, sweep, Failure};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -38,6 +38,10 @@ enum Command {
         /// No progress bar and no summary on standard output.
         #[arg(long, short)]
         quiet: bool,
+        /// Run even when the step count or the size of the result files
+        /// exceeds the bounds that otherwise refuse a run (see `check`).
+        #[arg(long)]
+        allow_large: bool,
     },
     /// Run a scenario over a grid of key values: `--set key=v1,v2` (dotted
     /// keys, list entries by index: `loads.1.drag_coefficient`), one folder
@@ -86,6 +90,9 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    if matches!(cli.command, Command::Run { .. } | Command::Sweep { .. }) {
+        signals::install();
+    }
     let result = match cli.command {
         Command::Run {
             scenario,
@@ -93,6 +100,7 @@ fn main() -> ExitCode {
             plot,
             vtk,
             quiet,
+            allow_large,
         } => commands::run(
             &scenario,
             commands::RunOptions {
@@ -100,7 +108,8 @@ fn main() -> ExitCode {
                 plot,
                 vtk,
                 quiet,
-                cancel: None,
+                allow_large,
+                cancel: Some(signals::cancel()),
             },
         ),
         Command::Plot { dir } => commands::plot(&dir),
@@ -132,7 +141,7 @@ fn main() -> ExitCode {
         }
         Err(Failure::Interrupted(m)) => {
             eprintln!("error: {m}");
-            ExitCode::from(130)
+            ExitCode::from(signals::exit_code())
         }
     }
 }

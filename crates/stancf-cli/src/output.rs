@@ -3,6 +3,7 @@
 //! `<name>.partial` next to its final path and renamed over it only when
 //! complete (a rename within a directory is atomic on POSIX systems).
 
+pub use crate::result_folder::ResultFolder;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};

@@ -62,7 +62,7 @@ pub fn save(figure: &impl Figure, dir: &Path, name: &str) -> io::Result<()> {
         figure.draw(&root).map_err(io_err)?;
         root.present().map_err(err).map_err(io_err)?;
     }
-    write_atomic(dir, &format!("{name}.png"), &encode_png(&pixels, w, h)?)?;
+    write_figure(dir, &format!("{name}.png"), &encode_png(&pixels, w, h)?)?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
@@ -70,7 +70,29 @@ pub fn save(figure: &impl Figure, dir: &Path, name: &str) -> io::Result<()> {
         figure.draw(&root).map_err(io_err)?;
         root.present().map_err(err).map_err(io_err)?;
     }
-    write_atomic(dir, &format!("{name}.svg"), svg.as_bytes())
+    write_figure(dir, &format!("{name}.svg"), svg.as_bytes())
+}
+
+/// Writes one figure file atomically; an error names the file (e.g. a
+/// folder in the way: "out/run/energy.png: is a folder, not a file") and
+/// leaves no `.partial` behind.
+fn write_figure(dir: &Path, file: &str, contents: &[u8]) -> io::Result<()> {
+    let path = dir.join(file);
+    let named = |e: io::Error| {
+        let what = if path.is_dir() {
+            "is a folder, not a file; move it away to draw the figure".to_string()
+        } else {
+            format!("cannot write the figure: {e}")
+        };
+        io::Error::new(e.kind(), format!("{}: {what}", path.display()))
+    };
+    if path.is_dir() {
+        return Err(named(io::Error::from(io::ErrorKind::IsADirectory)));
+    }
+    write_atomic(dir, file, contents).map_err(|e| {
+        let _ = std::fs::remove_file(dir.join(format!("{file}.partial")));
+        named(e)
+    })
 }
 
 fn encode_png(rgb: &[u8], w: u32, h: u32) -> io::Result<Vec<u8>> {

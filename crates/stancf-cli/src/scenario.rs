@@ -4,6 +4,7 @@
 //! anything is written. Unknown keys are errors at every level.
 
 use serde::Deserialize;
+use stancf::error::Sig;
 use stancf::{AxialStrain, Curvature, ElementType, Load, Material, Measures, ModelOptions};
 use std::path::Path;
 
@@ -18,6 +19,10 @@ impl std::fmt::Display for ScenarioError {
 }
 
 type Vector = Vec<f64>;
+
+/// The most steps a dynamic analysis can have: 2^53, above which f64
+/// cannot count them (t + dt == t).
+pub const MAX_COUNTABLE_STEPS: f64 = 9_007_199_254_740_992.0;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -55,17 +60,10 @@ struct RawMaterial {
     diameter: Option<f64>,
 }
 
-#[derive(Deserialize, Clone)]
-#[serde(untagged)]
-enum RawNode {
-    Name(String),
-    Index(i64),
-}
-
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawInitialVelocity {
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
     velocity: Option<Vector>,
     angular_velocity: Option<Vector>,
     center: Option<Vector>,
@@ -110,7 +108,7 @@ struct RawGravity {
 struct RawPointForce {
     #[serde(rename = "type")]
     _kind: String,
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
     force: Option<Vector>,
 }
 
@@ -132,7 +130,7 @@ struct RawAirDrag {
 struct RawEndMoment {
     #[serde(rename = "type")]
     _kind: String,
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
     moment: Option<Vector>,
 }
 
@@ -141,7 +139,7 @@ struct RawEndMoment {
 struct RawClamped {
     #[serde(rename = "type")]
     _kind: String,
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
     fix_curvature: Option<bool>,
 }
 
@@ -150,7 +148,7 @@ struct RawClamped {
 struct RawPinned {
     #[serde(rename = "type")]
     _kind: String,
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]
@@ -158,7 +156,7 @@ struct RawPinned {
 struct RawPrescribed {
     #[serde(rename = "type")]
     _kind: String,
-    node: Option<RawNode>,
+    node: Option<toml::Value>,
     velocity: Option<Vector>,
     amplitude: Option<Vector>,
     frequency: Option<f64>,
@@ -299,38 +297,231 @@ impl Ctx<'_> {
             let list: Vec<String> = allowed.iter().map(|a| format!("\"{a}\"")).collect();
             Err(self.err(
                 key,
-                format!("unknown value \"{v}\" (expected {})", list.join(" or ")),
+                format!(
+                    "unknown value \"{}\" (expected {})",
+                    clip(v, 60),
+                    list.join(" or ")
+                ),
             ))
         }
     }
 
+    /// A node: "A", "B", an integer index 0..=elements or (`allow_all`)
+    /// "all".
     fn node(
         &self,
         key: &str,
-        node: &RawNode,
+        node: &toml::Value,
         elements: usize,
         allow_all: bool,
     ) -> Result<NodeSet, ScenarioError> {
+        let expected = format!(
+            "a node is \"A\" (x = 0), \"B\" (x = length){} or an integer node index 0..={elements}",
+            if allow_all { ", \"all\"" } else { "" }
+        );
         match node {
-            RawNode::Name(s) if s == "A" => Ok(NodeSet::One(0)),
-            RawNode::Name(s) if s == "B" => Ok(NodeSet::One(elements)),
-            RawNode::Name(s) if s == "all" && allow_all => Ok(NodeSet::All),
-            RawNode::Name(s) => Err(self.err(
-                key,
-                format!(
-                    "unknown node \"{s}\" (expected \"A\", \"B\"{}, or an index 0..={elements})",
-                    if allow_all { ", \"all\"" } else { "" }
-                ),
-            )),
-            RawNode::Index(i) if *i >= 0 && (*i as usize) <= elements => {
+            toml::Value::String(s) if s == "A" => Ok(NodeSet::One(0)),
+            toml::Value::String(s) if s == "B" => Ok(NodeSet::One(elements)),
+            toml::Value::String(s) if s == "all" && allow_all => Ok(NodeSet::All),
+            toml::Value::Integer(i) if *i >= 0 && (*i as u64) <= elements as u64 => {
                 Ok(NodeSet::One(*i as usize))
             }
-            RawNode::Index(i) => Err(self.err(
+            toml::Value::Integer(i) => Err(self.err(
                 key,
                 format!("node index {i} is out of range (the mesh has nodes 0..={elements})"),
             )),
+            other => Err(self.err(key, format!("{expected}, got {}", describe_value(other)))),
         }
     }
+
+    /// The types of the entries present in a `[[loads]]` or
+    /// `[[constraints]]` table, checked before it is deserialized (serde's
+    /// own message would name neither the key nor the expected value in
+    /// words).
+    fn field_types(
+        &self,
+        key: &str,
+        table: &toml::Table,
+        fields: &[(&str, Field)],
+    ) -> Result<(), ScenarioError> {
+        for (name, kind) in fields {
+            let Some(v) = table.get(*name) else { continue };
+            let k = format!("{key}.{name}");
+            let number =
+                |v: &toml::Value| matches!(v, toml::Value::Integer(_) | toml::Value::Float(_));
+            let ok = match kind {
+                Field::Number => number(v),
+                Field::Text => matches!(v, toml::Value::String(_)),
+                Field::Bool => matches!(v, toml::Value::Boolean(_)),
+                Field::Node => true, // Ctx::node says what a node may be
+                Field::Vector => {
+                    if let toml::Value::Array(a) = v {
+                        if let Some((i, c)) = a.iter().enumerate().find(|(_, c)| !number(c)) {
+                            return Err(self.err(
+                                &k,
+                                format!(
+                                    "component {i} must be a number, got {}",
+                                    describe_value(c)
+                                ),
+                            ));
+                        }
+                        true
+                    } else {
+                        false
+                    }
+                }
+            };
+            if !ok {
+                return Err(self.err(
+                    &k,
+                    format!("expected {}, got {}", kind.describe(), describe_value(v)),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What a key of a `[[loads]]` or `[[constraints]]` entry holds.
+#[derive(Clone, Copy)]
+enum Field {
+    Number,
+    Vector,
+    Text,
+    Bool,
+    Node,
+}
+
+impl Field {
+    fn describe(self) -> &'static str {
+        match self {
+            Field::Number => "a number",
+            Field::Vector => "a vector of 3 numbers [x, y, z]",
+            Field::Text => "a string",
+            Field::Bool => "true or false",
+            Field::Node => "a node",
+        }
+    }
+}
+
+/// The longest piece of the user's input echoed in a message (in
+/// characters); longer pieces are cut with an ellipsis.
+pub const MAX_ECHO: usize = 200;
+
+/// `s` cut to at most `max` characters, with "..." (an ellipsis) where cut.
+pub fn clip(s: &str, max: usize) -> String {
+    match s.char_indices().nth(max) {
+        None => s.to_string(),
+        Some((end, _)) => format!("{}…", &s[..end]),
+    }
+}
+
+/// A TOML value in a message: its type and (clipped) value.
+fn describe_value(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => format!("the string \"{}\"", clip(s, 60)),
+        toml::Value::Integer(i) => format!("the integer {i}"),
+        toml::Value::Float(x) => format!("the number {x}"),
+        toml::Value::Boolean(b) => format!("{b}"),
+        toml::Value::Datetime(d) => format!("the date {d}"),
+        toml::Value::Array(a) => format!(
+            "a list of {} item{}",
+            a.len(),
+            if a.len() == 1 { "" } else { "s" }
+        ),
+        toml::Value::Table(_) => "a table".into(),
+    }
+}
+
+/// serde's words for the types of a scenario file, in the file's words;
+/// pieces of input quoted in the message (between ` or ") clipped.
+fn plain_words(message: &str) -> String {
+    let mut m = message.trim_end().to_string();
+    for (from, to) in [
+        ("expected i64", "expected an integer"),
+        ("expected u64", "expected an integer"),
+        ("expected usize", "expected an integer"),
+        ("expected f64", "expected a number"),
+        ("expected a sequence", "expected a list [..]"),
+        ("floating point `", "number `"),
+        (
+            "number too large to fit in target type",
+            "number too large (at most 9223372036854775807)",
+        ),
+    ] {
+        m = m.replace(from, to);
+    }
+    // Clip each quoted piece: a 5 MB key or string must not be echoed.
+    let mut out = String::with_capacity(m.len().min(4 * MAX_ECHO));
+    let mut rest = m.as_str();
+    while let Some(open) = rest.find(['`', '"']) {
+        let q = rest.as_bytes()[open] as char;
+        out.push_str(&rest[..=open]);
+        rest = &rest[open + 1..];
+        match rest.find(q) {
+            Some(close) => {
+                out.push_str(&clip(&rest[..close], 60));
+                out.push(q);
+                rest = &rest[close + 1..];
+            }
+            None => {
+                out.push_str(&clip(rest, 60));
+                rest = "";
+            }
+        }
+    }
+    out.push_str(rest);
+    clip(&out, 4 * MAX_ECHO)
+}
+
+/// A TOML syntax or type error: the line and column, the offending line
+/// (a window of at most [`MAX_ECHO`] characters around the error) with a
+/// caret under it, and serde's message in plain words.
+fn toml_error(file: &str, text: &str, e: &toml::de::Error) -> ScenarioError {
+    let message = plain_words(e.message());
+    let Some(span) = e.span() else {
+        return ScenarioError(format!("{file}: {message}"));
+    };
+    let floor = |mut i: usize| {
+        i = i.min(text.len());
+        while !text.is_char_boundary(i) {
+            i -= 1;
+        }
+        i
+    };
+    let start = floor(span.start);
+    let end = floor(span.end.max(span.start));
+    let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+    let line_no = text[..start].matches('\n').count() + 1;
+    let line = text[line_start..line_end].trim_end_matches('\r');
+    let column = text[line_start..start].chars().count();
+    let width = text[start..end.min(line_start + line.len()).max(start)]
+        .chars()
+        .count()
+        .max(1);
+    // The window of the line shown: MAX_ECHO characters, the error
+    // starting at most a third of the way in.
+    let chars = line.chars().count();
+    let from = if chars <= MAX_ECHO {
+        0
+    } else {
+        column.saturating_sub(MAX_ECHO / 3).min(chars - MAX_ECHO)
+    };
+    let shown: String = line.chars().skip(from).take(MAX_ECHO).collect();
+    let (lead, tail) = (
+        if from > 0 { "…" } else { "" },
+        if from + MAX_ECHO < chars { "…" } else { "" },
+    );
+    let caret_at = column - from + lead.chars().count();
+    let caret_width = width.min(MAX_ECHO + 1 - (column - from).min(MAX_ECHO));
+    let gutter = " ".repeat(line_no.to_string().len());
+    ScenarioError(format!(
+        "{file}: TOML parse error at line {line_no}, column {}\n{gutter} |\n{line_no} | {lead}{shown}{tail}\n{gutter} | {}{}\n{message}",
+        column + 1,
+        " ".repeat(caret_at),
+        "^".repeat(caret_width),
+    ))
 }
 
 /// Reads and validates a scenario file.
@@ -344,8 +535,7 @@ pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
 /// Parses and validates scenario text; `file` names it in messages.
 pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioError> {
     let ctx = Ctx { file };
-    let raw: RawScenario = toml::from_str(text)
-        .map_err(|e| ScenarioError(format!("{file}: {}", e.to_string().trim_end())))?;
+    let raw: RawScenario = toml::from_str(text).map_err(|e| toml_error(file, text, &e))?;
     let title = raw.title.unwrap_or_else(|| {
         path.file_stem()
             .map(|s| s.to_string_lossy().into_owned())
@@ -380,6 +570,15 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
     if direction.iter().all(|&c| c == 0.0) {
         return Err(ctx.err("cable.direction", "must not be the zero vector"));
     }
+    // Only its direction counts: scaled by its largest component first, so
+    // that [1e-200, 0, 0] and [1e300, 0, 0] are unit vectors too (their
+    // squared lengths underflow or overflow).
+    let direction = {
+        let big = direction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let d = direction.map(|c| c / big);
+        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        d.map(|c| c / n)
+    };
 
     let rm = ctx.required("material", raw.material)?;
     let material = Material {
@@ -407,9 +606,9 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         let key = format!("constraints[{i}]");
         let kind = type_of(&ctx, &key, table)?;
         let value = toml::Value::Table(table.clone());
-        let de_err = |e: toml::de::Error| ctx.err(&key, e.message().trim_end());
+        let de_err = |e: toml::de::Error| ctx.err(&key, plain_words(e.message()));
         let nk = format!("{key}.node");
-        let one_node = |n: Option<RawNode>| -> Result<usize, ScenarioError> {
+        let one_node = |n: Option<toml::Value>| -> Result<usize, ScenarioError> {
             match ctx.node(&nk, &ctx.required(&nk, n)?, elements, false)? {
                 NodeSet::One(n) => Ok(n),
                 NodeSet::All => unreachable!("\"all\" is not accepted here"),
@@ -423,6 +622,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         };
         let c = match kind.as_str() {
             "clamped" => {
+                ctx.field_types(&key, table, &[("node", Field::Node), ("fix_curvature", Field::Bool)])?;
                 let c: RawClamped = value.try_into().map_err(de_err)?;
                 stancf::Constraint {
                     node: one_node(c.node)?,
@@ -439,6 +639,12 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 }
             }
             "prescribed" => {
+                ctx.field_types(&key, table, &[
+                    ("velocity", Field::Vector),
+                    ("amplitude", Field::Vector),
+                    ("frequency", Field::Number),
+                    ("phase", Field::Number),
+                ])?;
                 let c: RawPrescribed = value.try_into().map_err(de_err)?;
                 let frequency = match c.frequency {
                     Some(f) => {
@@ -468,7 +674,8 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 return Err(ctx.err(
                     &format!("{key}.type"),
                     format!(
-                        "unknown constraint type \"{other}\" (expected \"clamped\", \"pinned\" or \"prescribed\")"
+                        "unknown constraint type \"{}\" (expected \"clamped\", \"pinned\" or \"prescribed\")",
+                        clip(other, 60)
                     ),
                 ))
             }
@@ -481,9 +688,10 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
         let key = format!("loads[{i}]");
         let kind = type_of(&ctx, &key, table)?;
         let value = toml::Value::Table(table.clone());
-        let de_err = |e: toml::de::Error| ctx.err(&key, e.message().trim_end());
+        let de_err = |e: toml::de::Error| ctx.err(&key, plain_words(e.message()));
         match kind.as_str() {
             "gravity" => {
+                ctx.field_types(&key, table, &[("acceleration", Field::Vector)])?;
                 let g: RawGravity = value.try_into().map_err(de_err)?;
                 let a = ctx.required(&format!("{key}.acceleration"), g.acceleration)?;
                 loads.push(Load::Gravity {
@@ -491,6 +699,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 });
             }
             "point-force" => {
+                ctx.field_types(&key, table, &[("force", Field::Vector)])?;
                 let p: RawPointForce = value.try_into().map_err(de_err)?;
                 let nk = format!("{key}.node");
                 let node = match ctx.node(&nk, &ctx.required(&nk, p.node)?, elements, false)? {
@@ -504,6 +713,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 });
             }
             "end-moment" => {
+                ctx.field_types(&key, table, &[("moment", Field::Vector)])?;
                 let p: RawEndMoment = value.try_into().map_err(de_err)?;
                 let nk = format!("{key}.node");
                 let node = match ctx.node(&nk, &ctx.required(&nk, p.node)?, elements, false)? {
@@ -517,6 +727,14 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 });
             }
             "air-drag" => {
+                ctx.field_types(&key, table, &[
+                    ("drag_coefficient", Field::Number),
+                    ("fluid_density", Field::Number),
+                    ("diameter", Field::Number),
+                    ("fluid_velocity", Field::Vector),
+                    ("model", Field::Text),
+                    ("tangential_coefficient", Field::Number),
+                ])?;
                 let d: RawAirDrag = value.try_into().map_err(de_err)?;
                 let nonneg = |name: &str, v: f64| -> Result<f64, ScenarioError> {
                     let v = ctx.finite(&format!("{key}.{name}"), v)?;
@@ -571,7 +789,8 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                 return Err(ctx.err(
                     &format!("{key}.type"),
                     format!(
-                        "unknown load type \"{other}\" (expected \"gravity\", \"point-force\", \"end-moment\" or \"air-drag\")"
+                        "unknown load type \"{}\" (expected \"gravity\", \"point-force\", \"end-moment\" or \"air-drag\")",
+                        clip(other, 60)
                     ),
                 ))
             }
@@ -646,6 +865,20 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                     "analysis.time_step",
                     format!(
                         "the step ({time_step:e} s) is longer than the duration ({duration:e} s)"
+                    ),
+                ));
+            }
+            let steps = duration / time_step;
+            if steps > MAX_COUNTABLE_STEPS {
+                return Err(ctx.err(
+                    "analysis.duration, analysis.time_step",
+                    format!(
+                        "duration / time_step = {} steps cannot be counted: above 2^53 = {:.4e} \
+                         the simulated time no longer advances by exactly one step \
+                         (a run is refused above {:e} steps anyway, see `stancf check`)",
+                        Sig(steps),
+                        MAX_COUNTABLE_STEPS,
+                        crate::check::MAX_STEPS as f64
                     ),
                 ));
             }

@@ -8,10 +8,18 @@
 //! value stops the sweep before anything runs, exit 2), then run in its own
 //! folder `DIR/run_<k>/` (with its `scenario.toml`), `--jobs` at a time.
 //! `DIR/sweep.csv` gathers the varied values and the summary figures of
-//! every run, also of runs that failed (their error in the last column).
+//! every run, also of runs that failed (their error in the last column),
+//! as RFC 4180 CSV (a cell with a comma, quote or line break is quoted).
+//!
+//! A key may be given once (nor may one key lie inside another:
+//! `loads.0` and `loads.0.acceleration`), and a grid has at most
+//! [`MAX_POINTS`] points, counted from the lengths of the lists before
+//! any point is built. The points are then built and validated one at a
+//! time, nothing of them kept, so validation needs memory for the table
+//! only (a few bytes per point) and takes about 0.1 ms per point.
 
-use crate::commands::{run, RunOptions};
-use crate::output::{write_atomic, Num};
+use crate::commands::{run_text, RunOptions};
+use crate::output::{write_atomic, Num, ResultFolder};
 use crate::scenario;
 use crate::Failure;
 use std::fmt::Write as _;
@@ -26,18 +34,40 @@ pub struct Axis {
     pub values: Vec<toml::Value>,
 }
 
-/// Splits at commas that are not inside brackets or quotes.
+/// Splits at commas that are not inside brackets or TOML strings (`"..."`
+/// with backslash escapes; `'...'` literal, when it starts a value, so
+/// that a bare word may hold an apostrophe).
 fn split_top_level(s: &str) -> Vec<&str> {
-    let (mut depth, mut quoted, mut start) = (0i32, false, 0);
+    let (mut depth, mut start) = (0i32, 0);
+    let mut quote: Option<char> = None;
+    let mut escaped = false;
+    // The last character outside strings that is not white space.
+    let mut prev: Option<char> = None;
     let mut out = Vec::new();
     for (i, c) in s.char_indices() {
+        if let Some(q) = quote {
+            if escaped {
+                escaped = false;
+            } else if c == '\\' && q == '"' {
+                escaped = true;
+            } else if c == q {
+                quote = None;
+            }
+            continue;
+        }
+        let starts_value = matches!(prev, None | Some(',' | '[' | '{' | '='));
+        if !c.is_whitespace() {
+            prev = Some(c);
+        }
         match c {
-            '"' => quoted = !quoted,
-            '[' | '{' if !quoted => depth += 1,
-            ']' | '}' if !quoted => depth -= 1,
-            ',' if !quoted && depth == 0 => {
+            '"' => quote = Some(c),
+            '\'' if starts_value => quote = Some(c),
+            '[' | '{' => depth += 1,
+            ']' | '}' => depth -= 1,
+            ',' if depth == 0 => {
                 out.push(&s[start..i]);
                 start = i + 1;
+                prev = None;
             }
             _ => {}
         }
@@ -81,8 +111,67 @@ pub fn parse_set(arg: &str) -> Result<Axis, String> {
     })
 }
 
+/// The most points a sweep may have. Every point is a run with its own
+/// folder of result files (megabytes for the examples) and a row of
+/// sweep.csv: ten thousand are hours of computing on a workstation and
+/// gigabytes of results, while validating them takes about a second. A
+/// larger study is several sweeps (a grid per `--out` folder). The Python
+/// package's sweep has the same bound (`stancf._stancf.SWEEP_LIMIT`).
+pub const MAX_POINTS: usize = 10_000;
+
+/// The number of points of a grid with lists of these lengths (their
+/// product), or why it is refused: more than [`MAX_POINTS`]. Computed
+/// before any point is built.
+pub fn grid_size(lengths: &[usize]) -> Result<usize, String> {
+    let product = lengths.iter().try_fold(1usize, |n, &l| n.checked_mul(l));
+    let dims = lengths
+        .iter()
+        .map(|l| l.to_string())
+        .collect::<Vec<_>>()
+        .join(" x ");
+    match product {
+        Some(n) if n <= MAX_POINTS => Ok(n),
+        Some(n) => Err(format!(
+            "sweep: the grid has {n} points ({dims}), more than the limit of \
+             {MAX_POINTS} points per sweep; split it into several sweeps"
+        )),
+        None => Err(format!(
+            "sweep: the grid has more than {} points ({dims}), more than the \
+             limit of {MAX_POINTS} points per sweep; split it into several sweeps",
+            usize::MAX
+        )),
+    }
+}
+
+/// Refuses a key given twice and a key inside another (`loads.0` and
+/// `loads.0.acceleration`): either way a run would be labelled with a
+/// value it did not use. (A key has one spelling: list entries are
+/// written `0`, `1`, ..., see [`apply`].)
+pub fn check_keys(keys: &[&str]) -> Result<(), String> {
+    for (i, a) in keys.iter().enumerate() {
+        for b in &keys[i + 1..] {
+            if a == b {
+                return Err(format!(
+                    "sweep: the key {a} is given twice; give each key once, with \
+                     all its values in one list"
+                ));
+            }
+            let (outer, inner) = if a.len() < b.len() { (a, b) } else { (b, a) };
+            if inner.starts_with(outer) && inner[outer.len()..].starts_with('.') {
+                return Err(format!(
+                    "sweep: the keys {outer} and {inner} overlap ({inner} is part of \
+                     {outer}), so a run would not have the value of {outer} its row \
+                     shows; vary one of them"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Puts `value` at the dotted `key` of a scenario document: tables by
-/// name (created if missing), arrays by 0-based index (which must exist).
+/// name (created if missing), arrays by 0-based index (which must exist,
+/// written without sign or leading zeros, so a key has one spelling).
 pub fn apply(doc: &mut toml::Table, key: &str, value: toml::Value) -> Result<(), String> {
     let parts: Vec<&str> = key.split('.').collect();
     let mut here = doc;
@@ -106,7 +195,11 @@ pub fn apply(doc: &mut toml::Table, key: &str, value: toml::Value) -> Result<(),
                 let idx_part = parts[i + 1];
                 let idx: usize = idx_part
                     .parse()
-                    .map_err(|_| format!("{path} is a list: {idx_part:?} is not an index"))?;
+                    .ok()
+                    .filter(|i: &usize| i.to_string() == idx_part)
+                    .ok_or_else(|| {
+                        format!("{path} is a list: {idx_part:?} is not an index (0, 1, 2, ...)")
+                    })?;
                 let n = items.len();
                 let item = items
                     .get_mut(idx)
@@ -128,31 +221,60 @@ pub fn apply(doc: &mut toml::Table, key: &str, value: toml::Value) -> Result<(),
     Ok(())
 }
 
-/// The grid: every combination of the axes' values, first axis slowest.
-pub fn grid(axes: &[Axis]) -> Vec<Vec<toml::Value>> {
-    let mut points: Vec<Vec<toml::Value>> = vec![Vec::new()];
-    for a in axes {
-        points = points
-            .into_iter()
-            .flat_map(|p| {
-                a.values.iter().map(move |v| {
-                    let mut q = p.clone();
-                    q.push(v.clone());
-                    q
-                })
-            })
-            .collect();
+/// Point `k` of the grid (`k` < [`grid_size`]): one value per axis, the
+/// first axis slowest, as the Cartesian product lists them.
+pub fn point(axes: &[Axis], mut k: usize) -> Vec<&toml::Value> {
+    let mut values = Vec::with_capacity(axes.len());
+    for a in axes.iter().rev() {
+        let n = a.values.len();
+        values.push(&a.values[k % n]);
+        k /= n;
     }
-    points
+    values.reverse();
+    values
 }
 
-/// A value for a CSV cell (strings bare, arrays in brackets, no commas).
+/// A value as text (strings bare, the rest as TOML: `[0, -10, 0]`).
 fn cell(v: &toml::Value) -> String {
     match v {
         toml::Value::String(s) => s.clone(),
         toml::Value::Float(x) => Num(*x).to_string(),
-        other => other.to_string().replace(',', ";"),
+        other => other.to_string(),
     }
+}
+
+/// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a
+/// comma, a quote or a line break; as it is otherwise.
+pub fn csv_field(s: &str) -> std::borrow::Cow<'_, str> {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\"")).into()
+    } else {
+        s.into()
+    }
+}
+
+/// The scenario text of point `k`: the base document with the point's
+/// values put in, and its name for messages (`file with key=value, ...`).
+fn point_text(
+    base: &toml::Table,
+    axes: &[Axis],
+    k: usize,
+    file: &str,
+) -> Result<(String, String), Failure> {
+    let values = point(axes, k);
+    let mut doc = base.clone();
+    for (a, v) in axes.iter().zip(&values) {
+        apply(&mut doc, &a.key, (*v).clone())
+            .map_err(|e| Failure::Input(format!("{file}: --set {}: {e}", a.key)))?;
+    }
+    let text =
+        toml::to_string(&doc).map_err(|e| Failure::Other(format!("{file}: run {k}: {e}")))?;
+    let label: Vec<String> = axes
+        .iter()
+        .zip(&values)
+        .map(|(a, v)| format!("{}={}", a.key, cell(v)))
+        .collect();
+    Ok((text, format!("{file} with {}", label.join(", "))))
 }
 
 /// The summary figures of sweep.csv (and of the Python package's sweep),
@@ -208,73 +330,73 @@ pub fn sweep(
         .map(|s| parse_set(s))
         .collect::<Result<_, _>>()
         .map_err(Failure::Input)?;
-    // Every point is built and validated before anything runs.
-    let points = grid(&axes);
-    let mut scenarios = Vec::with_capacity(points.len());
-    for (k, point) in points.iter().enumerate() {
-        let mut doc = base.clone();
-        let label: Vec<String> = axes
-            .iter()
-            .zip(point)
-            .map(|(a, v)| format!("{}={}", a.key, cell(v)))
-            .collect();
-        for (a, v) in axes.iter().zip(point) {
-            apply(&mut doc, &a.key, v.clone())
-                .map_err(|e| Failure::Input(format!("{file}: --set {}: {e}", a.key)))?;
-        }
-        let text =
-            toml::to_string(&doc).map_err(|e| Failure::Other(format!("{file}: run {k}: {e}")))?;
-        let name = format!("{file} with {}", label.join(", "));
+    let keys: Vec<&str> = axes.iter().map(|a| a.key.as_str()).collect();
+    check_keys(&keys).map_err(Failure::Input)?;
+    let lengths: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
+    let n_points = grid_size(&lengths).map_err(Failure::Input)?;
+    // Every point is built and validated before anything runs, one at a
+    // time and then dropped (its run builds the text again).
+    for k in 0..n_points {
+        let (text, name) = point_text(&base, &axes, k, &file)?;
         scenario::parse(&text, &name, path).map_err(|e| Failure::Input(e.0))?;
-        scenarios.push(text);
     }
-    let dir = out.unwrap_or_else(|| {
+    let target = out.unwrap_or_else(|| {
         let stem = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        PathBuf::from("out").join(format!("{stem}-sweep"))
+        PathBuf::from("out").join(format!("{}-sweep", crate::commands::safe_folder_name(&stem)))
     });
-    std::fs::create_dir_all(&dir).map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
-    let run_dirs: Vec<PathBuf> = (0..points.len())
+    // The sweep's folder is one transaction, its runs' folders inside it.
+    let folder = ResultFolder::open(&target)?;
+    let dir = folder.staging().to_path_buf();
+    let run_dirs: Vec<PathBuf> = (0..n_points)
         .map(|k| dir.join(format!("run_{k:04}")))
         .collect();
-    for (d, text) in run_dirs.iter().zip(&scenarios) {
-        std::fs::create_dir_all(d).map_err(|e| Failure::Other(format!("{}: {e}", d.display())))?;
-        write_atomic(d, "scenario.toml", text.as_bytes())
-            .map_err(|e| Failure::Other(format!("{}: {e}", d.display())))?;
-    }
+    let cancel = crate::signals::cancel();
+    let (staging_text, target_text) = (dir.display().to_string(), target.display().to_string());
     let jobs = jobs
         .unwrap_or_else(|| {
             std::thread::available_parallelism()
                 .map(|n| n.get())
                 .unwrap_or(1)
         })
-        .clamp(1, points.len());
+        .clamp(1, n_points);
     // Runs, `jobs` at a time; each records how it ended.
     let next = AtomicUsize::new(0);
-    let outcomes: Mutex<Vec<Option<String>>> = Mutex::new(vec![None; points.len()]);
+    let outcomes: Mutex<Vec<Option<(&str, String)>>> = Mutex::new(vec![None; n_points]);
     std::thread::scope(|s| {
         for _ in 0..jobs {
             s.spawn(|| loop {
-                let k = next.fetch_add(1, Ordering::SeqCst);
-                if k >= points.len() {
+                // After Ctrl-C or SIGTERM no further run starts.
+                if (cancel.0)() {
                     break;
                 }
-                let d = &run_dirs[k];
-                let result = run(
-                    &d.join("scenario.toml"),
-                    RunOptions {
-                        out: Some(d.clone()),
-                        quiet: true,
-                        ..RunOptions::default()
-                    },
-                );
-                let error = match result {
-                    Ok(()) => String::new(),
-                    Err(e) => e.to_string(),
+                let k = next.fetch_add(1, Ordering::SeqCst);
+                if k >= n_points {
+                    break;
+                }
+                // The run writes its results and its scenario.toml to run_<k>.
+                let result = point_text(&base, &axes, k, &file).and_then(|(text, _)| {
+                    run_text(
+                        &text,
+                        path,
+                        RunOptions {
+                            out: Some(run_dirs[k].clone()),
+                            quiet: true,
+                            cancel: Some(cancel.clone()),
+                            ..RunOptions::default()
+                        },
+                    )
+                });
+                // Messages name the folders as they will be after the commit.
+                let shown = |m: String| m.replace(&staging_text, &target_text);
+                let outcome = match result {
+                    Ok(()) => ("ok", String::new()),
+                    Err(Failure::Interrupted(m)) => ("interrupted", shown(m)),
+                    Err(e) => ("failed", shown(e.to_string())),
                 };
-                outcomes.lock().expect("no run panics holding it")[k] = Some(error);
+                outcomes.lock().expect("no run panics holding it")[k] = Some(outcome);
             });
         }
     });
@@ -282,7 +404,7 @@ pub fn sweep(
     // sweep.csv
     let mut csv = String::from("run");
     for a in &axes {
-        write!(csv, ",{}", a.key).ok();
+        write!(csv, ",{}", csv_field(&a.key)).ok();
     }
     csv.push_str(",status");
     for (name, _) in FIGURES {
@@ -290,17 +412,23 @@ pub fn sweep(
     }
     csv.push_str(",error\n");
     let mut failed = Vec::new();
-    for (k, point) in points.iter().enumerate() {
-        let error = outcomes[k].clone().unwrap_or_else(|| "did not run".into());
+    let mut interrupted = false;
+    for (k, outcome) in outcomes.into_iter().enumerate() {
+        let (status, error) = outcome.unwrap_or_else(|| {
+            (
+                "not run",
+                "the sweep was interrupted before this run started".into(),
+            )
+        });
         write!(csv, "{k}").ok();
-        for v in point {
-            write!(csv, ",{}", cell(v)).ok();
+        for v in point(&axes, k) {
+            write!(csv, ",{}", csv_field(&cell(v))).ok();
         }
         let summary: Option<serde_json::Value> =
             std::fs::read_to_string(run_dirs[k].join("summary.json"))
                 .ok()
                 .and_then(|t| serde_json::from_str(&t).ok());
-        write!(csv, ",{}", if error.is_empty() { "ok" } else { "failed" }).ok();
+        write!(csv, ",{status}").ok();
         for (_, p) in FIGURES {
             write!(
                 csv,
@@ -309,19 +437,32 @@ pub fn sweep(
             )
             .ok();
         }
-        writeln!(csv, ",{}", error.replace([',', '\n'], " ")).ok();
-        if !error.is_empty() {
-            failed.push(k);
+        writeln!(csv, ",{}", csv_field(&error)).ok();
+        match status {
+            "ok" => {}
+            "failed" => failed.push(k),
+            _ => interrupted = true,
         }
     }
-    write_atomic(&dir, "sweep.csv", csv.as_bytes())
-        .map_err(|e| Failure::Other(format!("{}: {e}", dir.display())))?;
+    let cannot = |e: std::io::Error| {
+        Failure::Other(format!("{}: cannot write results: {e}", target.display()))
+    };
+    write_atomic(&dir, "sweep.csv", csv.as_bytes()).map_err(cannot)?;
+    folder.commit().map_err(cannot)?;
+    let table = target.join("sweep.csv");
+    if interrupted {
+        return Err(Failure::Interrupted(format!(
+            "sweep: interrupted; the runs that finished, and those cut short up to their last \
+             step, are in {} (status column)",
+            table.display()
+        )));
+    }
     println!(
         "sweep: {} runs ({} at a time), {} failed; table in {}",
-        points.len(),
+        n_points,
         jobs,
         failed.len(),
-        dir.join("sweep.csv").display()
+        table.display()
     );
     if failed.is_empty() {
         Ok(())
@@ -333,7 +474,7 @@ pub fn sweep(
                 .map(|k| k.to_string())
                 .collect::<Vec<_>>()
                 .join(", "),
-            dir.join("sweep.csv").display()
+            table.display()
         )))
     }
 }
@@ -355,6 +496,12 @@ mod tests {
         assert!(matches!(&a.values[0], toml::Value::Array(v) if v.len() == 3));
         let a = parse_set("analysis.solver=newton,broyden").unwrap();
         assert_eq!(a.values[1], toml::Value::String("broyden".into()));
+        let a = parse_set(r#"title="a, b","say \"hi, you\"",'c:\d, e'"#).unwrap();
+        let strings: Vec<&str> = a.values.iter().map(|v| v.as_str().unwrap()).collect();
+        assert_eq!(strings, ["a, b", "say \"hi, you\"", "c:\\d, e"]);
+        let a = parse_set("title=don't,x").unwrap();
+        assert_eq!(a.values.len(), 2);
+        assert_eq!(a.values[0].as_str(), Some("don't"));
         assert!(parse_set("analysis.time_step").is_err());
         assert!(parse_set("a..b=1").is_err());
     }
@@ -387,11 +534,58 @@ mod tests {
     }
 
     #[test]
-    fn grid_is_the_cartesian_product() {
+    fn grid_is_the_cartesian_product_first_axis_slowest() {
         let axes = [parse_set("a=1,2").unwrap(), parse_set("b=3,4,5").unwrap()];
-        let g = grid(&axes);
-        assert_eq!(g.len(), 6);
-        assert_eq!(g[0], vec![toml::Value::Integer(1), toml::Value::Integer(3)]);
-        assert_eq!(g[5], vec![toml::Value::Integer(2), toml::Value::Integer(5)]);
+        assert_eq!(grid_size(&[2, 3]), Ok(6));
+        let int = |i| toml::Value::Integer(i);
+        let g: Vec<Vec<toml::Value>> = (0..6)
+            .map(|k| point(&axes, k).into_iter().cloned().collect())
+            .collect();
+        assert_eq!(g[0], vec![int(1), int(3)]);
+        assert_eq!(g[1], vec![int(1), int(4)]);
+        assert_eq!(g[3], vec![int(2), int(3)]);
+        assert_eq!(g[5], vec![int(2), int(5)]);
+    }
+
+    #[test]
+    fn a_grid_above_the_limit_is_refused_from_its_list_lengths() {
+        assert_eq!(grid_size(&[100, 100]), Ok(MAX_POINTS));
+        let e = grid_size(&[100, 100, 2]).unwrap_err();
+        assert!(e.contains("20000 points (100 x 100 x 2)"), "{e}");
+        assert!(e.contains("limit of 10000"), "{e}");
+        // A product past usize does not wrap around to a small number.
+        let e = grid_size(&[usize::MAX, 2]).unwrap_err();
+        assert!(e.contains("more than 18446744073709551615 points"), "{e}");
+    }
+
+    #[test]
+    fn keys_given_twice_or_inside_one_another_are_refused() {
+        assert!(check_keys(&["analysis.time_step", "loads.0.drag_coefficient"]).is_ok());
+        assert!(check_keys(&["loads.1", "loads.10"]).is_ok());
+        let e = check_keys(&["a.b", "c", "a.b"]).unwrap_err();
+        assert!(e.contains("the key a.b is given twice"), "{e}");
+        let e = check_keys(&["loads.0.acceleration", "loads.0"]).unwrap_err();
+        assert!(
+            e.contains("the keys loads.0 and loads.0.acceleration overlap"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_list_index_has_one_spelling() {
+        let mut doc: toml::Table = "[[loads]]\ntype = \"gravity\"\n".parse().unwrap();
+        for bad in ["loads.00.type", "loads.+0.type", "loads.0x0.type"] {
+            let e = apply(&mut doc, bad, toml::Value::String("x".into())).unwrap_err();
+            assert!(e.contains("is not an index"), "{bad}: {e}");
+        }
+        apply(&mut doc, "loads.0.type", toml::Value::String("x".into())).unwrap();
+    }
+
+    #[test]
+    fn csv_fields_are_quoted_only_when_needed() {
+        assert_eq!(csv_field("5e-5"), "5e-5");
+        assert_eq!(csv_field("[0, -10, 0]"), "\"[0, -10, 0]\"");
+        assert_eq!(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(csv_field("two\nlines"), "\"two\nlines\"");
     }
 }

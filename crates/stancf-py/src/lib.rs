@@ -7,7 +7,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use stancf_cli::commands::{run as run_scenario, Cancel, RunOptions};
+use stancf_cli::commands::{run_text, Cancel, RunOptions};
 use stancf_cli::{scenario, sweep, Failure};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -116,11 +116,8 @@ fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<S
 #[pyfunction]
 #[pyo3(signature = (text, name, out, progress = false))]
 fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> PyResult<()> {
-    scenario::parse(text, name, Path::new(name)).map_err(scenario_err)?;
-    std::fs::create_dir_all(&out)
-        .map_err(|e| PyOSError::new_err(format!("{}: {e}", out.display())))?;
-    stancf_cli::output::write_atomic(&out, "scenario.toml", text.as_bytes())
-        .map_err(|e| PyOSError::new_err(format!("{}: {e}", out.display())))?;
+    // The run validates the text and writes it, as scenario.toml, with its
+    // results into `out`, replaced whole (one transaction).
     // Python's signal handlers run only with the GIL: take it for a
     // moment, at most ten times a second, to see whether Ctrl-C came.
     let last = Mutex::new(Instant::now());
@@ -132,14 +129,13 @@ fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> 
         *l = Instant::now();
         Python::with_gil(|py| py.check_signals().is_err())
     }));
-    let path = out.join("scenario.toml");
     let opts = RunOptions {
         out: Some(out.clone()),
         quiet: !progress,
         cancel: Some(cancel),
         ..RunOptions::default()
     };
-    let result = py.allow_threads(|| run_scenario(&path, opts));
+    let result = py.allow_threads(|| run_text(text, Path::new(name), opts));
     match result {
         Ok(()) => Ok(()),
         Err(Failure::Input(m)) => Err(ScenarioError::new_err(m)),
@@ -159,6 +155,68 @@ fn sweep_figures() -> Vec<(&'static str, Vec<&'static str>)> {
         .collect()
 }
 
+/// The number of points of a sweep grid, checked as `stancf sweep` checks
+/// its `--set`s: `keys` (distinct, none inside another) and the lengths
+/// of their value lists (a list of points: no keys and `[len]`).
+/// ScenarioError above `SWEEP_LIMIT` points, counted before any is built.
+#[pyfunction]
+fn sweep_points(keys: Vec<String>, lengths: Vec<usize>) -> PyResult<usize> {
+    let keys: Vec<&str> = keys.iter().map(String::as_str).collect();
+    sweep::check_keys(&keys).map_err(ScenarioError::new_err)?;
+    sweep::grid_size(&lengths).map_err(ScenarioError::new_err)
+}
+
+/// A result folder written as one transaction (`stancf_cli`'s
+/// `ResultFolder`, as `stancf run` and `stancf sweep` write theirs):
+/// `ResultFolder(target)` locks `target` (ScenarioError if another run or
+/// sweep is writing into it, or if it is a folder of a user's files) and
+/// makes an empty private folder beside it, `staging`, for the whole new
+/// set; `commit()` swaps it in at once (the old set, with everything in
+/// it, is gone); `abort()`, or dropping the object, deletes it and leaves
+/// `target` as it was.
+#[pyclass(module = "stancf._stancf", name = "ResultFolder")]
+struct PyResultFolder(Option<stancf_cli::output::ResultFolder>);
+
+#[pymethods]
+impl PyResultFolder {
+    #[new]
+    fn new(target: PathBuf) -> PyResult<Self> {
+        match stancf_cli::output::ResultFolder::open(&target) {
+            Ok(f) => Ok(PyResultFolder(Some(f))),
+            Err(Failure::Input(m)) => Err(ScenarioError::new_err(m)),
+            Err(e) => Err(PyOSError::new_err(e.to_string())),
+        }
+    }
+
+    /// Where the new set is written.
+    #[getter]
+    fn staging(&self) -> PyResult<PathBuf> {
+        self.open().map(|f| f.staging().to_path_buf())
+    }
+
+    /// Swaps the new set in and releases the lock.
+    fn commit(&mut self) -> PyResult<()> {
+        self.open()?;
+        let f = self.0.take().expect("open");
+        let target = f.target().to_path_buf();
+        f.commit()
+            .map_err(|e| PyOSError::new_err(format!("{}: {e}", target.display())))
+    }
+
+    /// Deletes the new set and releases the lock; `target` is untouched.
+    fn abort(&mut self) {
+        self.0.take();
+    }
+}
+
+impl PyResultFolder {
+    fn open(&self) -> PyResult<&stancf_cli::output::ResultFolder> {
+        self.0
+            .as_ref()
+            .ok_or_else(|| PyOSError::new_err("this result folder is already committed or aborted"))
+    }
+}
+
 #[pymodule]
 fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("ScenarioError", m.py().get_type::<ScenarioError>())?;
@@ -169,5 +227,8 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(with_values, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_figures, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_points, m)?)?;
+    m.add("SWEEP_LIMIT", sweep::MAX_POINTS)?;
+    m.add_class::<PyResultFolder>()?;
     Ok(())
 }

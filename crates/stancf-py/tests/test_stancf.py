@@ -9,7 +9,7 @@ import signal
 import subprocess
 import threading
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import Future, ProcessPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -220,31 +220,194 @@ def test_twelve_point_sweep_on_a_dask_cluster(tmp_path):
         assert r["energy_max_rel_drift"] == alone.summary["energy"]["max_rel_drift"]
 
 
+class _KillsTheWorkerOfRun0:
+    """A Dask executor for the sweep that loses, on purpose, the worker
+    holding run 0: run 0's task starts its run (made to last minutes) and
+    ends its own process once the run has begun writing. Run 0 goes to one
+    worker and every other run to the other, so no other run can be on the
+    dying worker by chance: what fails does not depend on scheduling."""
+
+    def __init__(self, client):
+        client.wait_for_workers(2)
+        self.client = client
+        self.doomed, self.spared = sorted(client.scheduler_info()["workers"])[:2]
+
+    def submit(self, fn, text, name, folder):
+        if not folder.endswith("run_0000"):
+            return self.client.submit(fn, text, name, folder, workers=[self.spared],
+                                      allow_other_workers=False, pure=False)
+
+        def die_holding_run_0(fn, text, name, folder):
+            import os
+            import threading
+            import time
+            import stancf
+            long = stancf.Scenario(text).with_values({"analysis.duration": 100.0}).text
+            run = threading.Thread(target=fn, args=(long, name, folder), daemon=True)
+            run.start()
+            parent, me = os.path.split(folder)
+            # Until the run has taken its folder (its lock appears beside it).
+            while run.is_alive() and not any(me in f for f in os.listdir(parent)):
+                time.sleep(0.001)
+            os._exit(1)
+
+        return self.client.submit(die_holding_run_0, fn, text, name, folder,
+                                  workers=[self.doomed], allow_other_workers=False, pure=False)
+
+
+def _columns(keys):
+    return ["run", *keys, "status", *(name for name, _ in stancf.FIGURES), "worker_s", "error"]
+
+
 def test_a_killed_worker_is_reported_not_waited_for(tmp_path):
+    import csv
     import dask
-    sc = stancf.Scenario(PENDULUM).with_values({"analysis.duration": 2.0})
+    sc = stancf.Scenario(PENDULUM)
     grid = {"loads.1.drag_coefficient": [0.1 * k for k in range(8)]}
-    # No retries: a run on a dead worker fails instead of moving on.
+    # No retries: the run on the dead worker fails instead of moving on.
     with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
         cluster, client = _cluster()
         try:
-            def kill_one():
-                time.sleep(1.0)
-                workers = list(client.scheduler_info()["workers"])
-                try:
-                    client.run(os._exit, 1, workers=workers[:1])
-                except Exception:
-                    pass  # the worker is gone before it can answer
-            threading.Thread(target=kill_one, daemon=True).start()
             t0 = time.perf_counter()
-            rows = stancf.sweep(sc, grid, executor=client, out=tmp_path / "sw", timeout=120)
+            rows = stancf.sweep(sc, grid, executor=_KillsTheWorkerOfRun0(client),
+                                out=tmp_path / "sw", timeout=120)
             elapsed = time.perf_counter() - t0
         finally:
             client.close()
             cluster.close()
     rows = rows.to_dict("records") if hasattr(rows, "to_dict") else rows
-    assert len(rows) == 8
-    failed = [r for r in rows if r["status"] == "failed"]
-    assert failed, rows
-    assert all("KilledWorker" in r["error"] or "died" in r["error"].lower() for r in failed), failed
     assert elapsed < 120
+    assert [r["run"] for r in rows] == list(range(8))
+    # Run 0: failed, with the reason, and no figures.
+    assert rows[0]["status"] == "failed"
+    assert rows[0]["error"].startswith("KilledWorker"), rows[0]
+    assert all(rows[0][name] is None or rows[0][name] != rows[0][name]  # None or NaN
+               for name, _ in stancf.FIGURES)
+    # Every other run: complete, with its figures.
+    for r in rows[1:]:
+        assert r["status"] == "ok" and r["error"] == "", r
+        for name, _ in stancf.FIGURES:
+            assert np.isfinite(r[name]), (name, r)
+        assert r["steps"] == 3000 and r["worker_s"] > 0
+    # sweep.csv: the fixed header, every row, run 0's with its reason.
+    with open(tmp_path / "sw" / "sweep.csv", newline="") as f:
+        reader = csv.DictReader(f)
+        assert reader.fieldnames == _columns(["loads.1.drag_coefficient"])
+        table = list(reader)
+    assert len(table) == 8
+    assert table[0]["status"] == "failed" and table[0]["error"].startswith("KilledWorker")
+    assert all(table[0][name] == "" for name, _ in stancf.FIGURES)
+    for r, t in zip(rows[1:], table[1:]):
+        assert t["status"] == "ok"
+        for name, _ in stancf.FIGURES:
+            assert float(t[name]) == r[name], name
+    # The folder: the complete runs and the table, nothing of the dead run.
+    assert sorted(os.listdir(tmp_path / "sw")) == \
+        ["run_%04d" % k for k in range(1, 8)] + ["sweep.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["sw"]
+
+
+class _InThisProcess:
+    """An executor that runs each point here, at once."""
+
+    def submit(self, fn, *args):
+        f = Future()
+        f.set_result(fn(*args))
+        return f
+
+
+class _LosesRun0(_InThisProcess):
+    """An executor in this process whose run 0 is lost (its future raises,
+    as for a dead worker)."""
+
+    def submit(self, fn, *args):
+        if not args[-1].endswith("run_0000"):
+            return super().submit(fn, *args)
+        f = Future()
+        f.set_exception(RuntimeError("the worker of run 0 died"))
+        return f
+
+
+def test_sweep_csv_has_every_column_when_run_0_is_lost(tmp_path):
+    import csv
+    sc = stancf.Scenario(PENDULUM).with_values({"analysis.duration": 0.01})
+    # A list of points: the columns are the keys of all of them.
+    points = [{"analysis.time_step": 1e-4}, {"loads.1.drag_coefficient": 0.5},
+              {"analysis.time_step": 2e-4, "loads.1.drag_coefficient": 1.0}]
+    rows = stancf.sweep(sc, points, executor=_LosesRun0(), out=tmp_path / "sw")
+    rows = rows.to_dict("records") if hasattr(rows, "to_dict") else rows
+    columns = _columns(["analysis.time_step", "loads.1.drag_coefficient"])
+    assert all(list(r) == columns for r in rows)
+    assert rows[0]["status"] == "failed"
+    assert rows[0]["error"] == "RuntimeError: the worker of run 0 died"
+    assert [r["status"] for r in rows[1:]] == ["ok", "ok"]
+    with open(tmp_path / "sw" / "sweep.csv", newline="") as f:
+        reader = csv.DictReader(f)
+        assert reader.fieldnames == columns
+        table = list(reader)
+    assert [t["status"] for t in table] == ["failed", "ok", "ok"]
+    assert table[1]["analysis.time_step"] == "" and table[1]["loads.1.drag_coefficient"] == "0.5"
+    assert float(table[2]["steps"]) == 50 and float(table[2]["worker_s"]) > 0
+
+
+def test_a_grid_above_the_limit_is_refused_before_it_is_built(tmp_path):
+    sc = stancf.Scenario(PENDULUM)
+    assert stancf.SWEEP_LIMIT == 10000
+    # The size is checked first: the misspelt key is not reached.
+    grid = {"analysis.time_step": [1e-4] * 101, "analysis.time_stepp": [1e-4] * 100}
+    with pytest.raises(stancf.ScenarioError,
+                       match=r"10100 points \(101 x 100\), more than the limit of 10000"):
+        stancf.sweep(sc, grid, out=tmp_path / "sw")
+    with pytest.raises(stancf.ScenarioError, match="10001 points"):
+        stancf.sweep(sc, [{"analysis.time_step": 1e-4}] * 10001, out=tmp_path / "sw")
+    assert not (tmp_path / "sw").exists()
+
+
+def test_sweep_keys_that_overlap_or_alias_are_refused(tmp_path):
+    sc = stancf.Scenario(PENDULUM)
+    with pytest.raises(stancf.ScenarioError,
+                       match="the keys loads.1 and loads.1.drag_coefficient overlap"):
+        stancf.sweep(sc, {"loads.1": [{"type": "air-drag"}],
+                          "loads.1.drag_coefficient": [0.5]}, out=tmp_path / "sw")
+    with pytest.raises(stancf.ScenarioError, match="is not an index"):
+        stancf.sweep(sc, {"loads.01.drag_coefficient": [0.5]}, out=tmp_path / "sw")
+    assert not (tmp_path / "sw").exists()
+
+
+def test_a_new_sweep_replaces_an_earlier_larger_one_whole(tmp_path):
+    import csv
+    sc = stancf.Scenario(PENDULUM).with_values({"analysis.duration": 0.01})
+    out = tmp_path / "sw"
+    stancf.sweep(sc, {"loads.1.drag_coefficient": [0.0, 0.5, 1.0, 1.5]},
+                 executor=_InThisProcess(), out=out)
+    assert sorted(os.listdir(out)) == ["run_0000", "run_0001", "run_0002", "run_0003",
+                                       "sweep.csv"]
+    stancf.sweep(sc, {"analysis.time_step": [1e-4, 2e-4]}, executor=_InThisProcess(), out=out)
+    # No run_0002, run_0003 or old table beside the new ones, nothing beside `out`.
+    assert sorted(os.listdir(out)) == ["run_0000", "run_0001", "sweep.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["sw"]
+    with open(out / "sweep.csv", newline="") as f:
+        table = list(csv.DictReader(f))
+    assert [t["analysis.time_step"] for t in table] == ["0.0001", "0.0002"]
+    assert stancf.Result.read(out / "run_0001").summary["time_step"] == 2e-4
+
+
+def test_a_sweep_into_a_folder_in_use_is_refused(tmp_path):
+    sc = stancf.Scenario(PENDULUM).with_values({"analysis.duration": 0.01})
+    out = tmp_path / "sw"
+    stancf.sweep(sc, {"analysis.time_step": [1e-4, 2e-4]}, executor=_InThisProcess(), out=out)
+    before = (out / "sweep.csv").read_text()
+    # Another sweep is writing into `out` (it holds the folder's lock).
+    other = stancf._stancf.ResultFolder(str(out))
+    try:
+        with pytest.raises(stancf.ScenarioError, match="another stancf run is writing"):
+            stancf.sweep(sc, {"analysis.time_step": [5e-5]}, executor=_InThisProcess(),
+                         out=out)
+    finally:
+        other.abort()
+    assert (out / "sweep.csv").read_text() == before
+    assert sorted(os.listdir(out)) == ["run_0000", "run_0001", "sweep.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["sw"]
+    # Once it is done, the folder is free.
+    stancf.sweep(sc, {"analysis.time_step": [5e-5]}, executor=_InThisProcess(), out=out)
+    assert sorted(os.listdir(out)) == ["run_0000", "sweep.csv"]

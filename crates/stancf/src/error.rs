@@ -43,10 +43,15 @@ pub enum FailureKind {
 }
 
 /// A step that failed. Everything before `step` converged and is valid.
+///
+/// A static solve reports a load increment: `time` is then the load factor
+/// at its start and `detail` begins with [`STATIC_SOLVE`], which makes the
+/// message say "load factor" instead of "t = ... s".
 #[derive(Clone, Debug, PartialEq)]
 pub struct SolverError {
     pub kind: FailureKind,
-    /// Simulated time at the start of the failed step.
+    /// Simulated time at the start of the failed step (a static solve:
+    /// the load factor).
     pub time: f64,
     /// Index of the failed step (1 = the first step).
     pub step: usize,
@@ -66,10 +71,14 @@ impl fmt::Display for SolverError {
             FailureKind::SingularJacobian => "the Jacobian is singular",
             FailureKind::EnergyGrowth => "the energy grows without a source (unstable step)",
         };
+        if self.detail.starts_with(STATIC_SOLVE) {
+            write!(f, "{what} at load factor {} (increment", Sig(self.time))?;
+        } else {
+            write!(f, "{what} at t = {} s (step", Sig(self.time))?;
+        }
         write!(
             f,
-            "{what} at t = {:.6e} s (step {}, {} iteration{}, scaled residual {:.3e})",
-            self.time,
+            " {}, {} iteration{}, scaled residual {:.3e})",
             self.step,
             self.iterations,
             if self.iterations == 1 { "" } else { "s" },
@@ -83,3 +92,92 @@ impl fmt::Display for SolverError {
 }
 
 impl std::error::Error for SolverError {}
+
+/// How the `detail` of a static solve's [`SolverError`] begins.
+pub const STATIC_SOLVE: &str = "static solve";
+
+/// A number for a message: at most 6 significant digits, trailing zeros
+/// dropped, exponent form outside [1e-4, 1e6): `0.0063288` for
+/// 0.006328800000000001, `1e-5`, `2.5e8`, `-3`, `inf`, `NaN`.
+#[derive(Clone, Copy, Debug)]
+pub struct Sig(pub f64);
+
+impl fmt::Display for Sig {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 {
+            return write!(f, "{}", if x == 0.0 { 0.0 } else { x });
+        }
+        // Round to 6 significant digits first: the decision between the
+        // two forms uses the rounded value (999999.7 prints as 1e6).
+        let e = format!("{x:.5e}");
+        let (mantissa, exp) = e.split_once('e').expect("exponent form");
+        let exp: i32 = exp.parse().expect("integer exponent");
+        let mantissa = trim_zeros(mantissa);
+        if (-4..6).contains(&exp) {
+            let decimals = (5 - exp).max(0) as usize;
+            let s = format!("{:.*}", decimals, x);
+            f.write_str(trim_zeros(&s))
+        } else {
+            write!(f, "{mantissa}e{exp}")
+        }
+    }
+}
+
+/// "1.50000" -> "1.5", "2.000" -> "2", "10" -> "10".
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_messages_have_at_most_six_significant_digits() {
+        let cases = [
+            (0.006328800000000001, "0.0063288"),
+            (1e-5, "1e-5"),
+            (2.0e-4, "0.0002"),
+            (0.1 + 0.2, "0.3"),
+            (4.0, "4"),
+            (-3.0, "-3"),
+            (1234567.0, "1.23457e6"),
+            (999999.7, "1e6"),
+            (123456.4, "123456"),
+            (0.0, "0"),
+            (-0.0, "0"),
+            (f64::INFINITY, "inf"),
+            (f64::NAN, "NaN"),
+            (1.5e-300, "1.5e-300"),
+        ];
+        for (x, want) in cases {
+            assert_eq!(Sig(x).to_string(), want, "{x:e}");
+        }
+    }
+
+    #[test]
+    fn a_static_failure_names_the_load_factor_not_a_time() {
+        let e = SolverError {
+            kind: FailureKind::NotConverged,
+            time: 0.35000000000000003,
+            step: 8,
+            residual: 1e-3,
+            iterations: 50,
+            detail: format!("{STATIC_SOLVE}: the load increment could not be converged"),
+        };
+        let m = e.to_string();
+        assert!(m.contains("at load factor 0.35 (increment 8,"), "{m}");
+        assert!(!m.contains("t = "), "{m}");
+        let d = SolverError {
+            detail: String::new(),
+            time: 0.006328800000000001,
+            ..e
+        };
+        assert!(d.to_string().contains("at t = 0.0063288 s (step 8,"), "{d}");
+    }
+}

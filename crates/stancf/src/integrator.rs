@@ -161,74 +161,19 @@ impl Simulation {
     pub fn new(model: Model, initial: State, settings: StepSettings) -> Result<Self, ModelError> {
         let mut model = model;
         let dt = settings.time_step;
-        if !dt.is_finite() || dt <= 0.0 {
-            return Err(ModelError::invalid(
-                "analysis.time_step",
-                format!("must be > 0, got {dt}"),
-            ));
-        }
-        if settings.time_layers == 0 {
-            return Err(ModelError::invalid(
-                "analysis.time_layers",
-                "must be at least 1, got 0",
-            ));
-        }
-        let time_rule = GaussRule::new(settings.time_points)
-            .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
-        let tol = settings.newton.tolerance;
-        if !tol.is_finite() || tol <= 0.0 {
-            return Err(ModelError::invalid(
-                "analysis.tolerance",
-                format!("must be > 0, got {tol}"),
-            ));
-        }
-        if settings.newton.max_iterations == 0 {
-            return Err(ModelError::invalid(
-                "analysis.max_iterations",
-                "must be at least 1",
-            ));
-        }
+        let time_rule = check_settings(&settings)?;
+        check_initial_state(&model, &initial)?;
         let n = model.dofs();
-        if initial.e.len() != n || initial.v.len() != n {
-            return Err(ModelError::invalid(
-                "initial_state",
-                format!(
-                    "expected {n} coordinates, got {} and {}",
-                    initial.e.len(),
-                    initial.v.len()
-                ),
-            ));
-        }
-        if initial
-            .e
-            .iter()
-            .chain(initial.v.iter())
-            .any(|v| !v.is_finite())
-            || !initial.t.is_finite()
-        {
-            return Err(ModelError::invalid("initial_state", "must be finite"));
-        }
         let mut initial = initial;
         model.apply_constraints(&mut initial);
+        check_end_moments(&model, &initial.e)?;
         if settings.planar_reduction {
             model.reduce_to_plane(&initial);
         }
         let layers = settings.time_layers;
         let scheme = match settings.time_scheme {
             TimeScheme::P2 => Scheme::P2 { layers },
-            TimeScheme::Galerkin => {
-                if layers != 1 {
-                    return Err(ModelError::invalid(
-                        "analysis.time_layers",
-                        format!(
-                            "the Galerkin step takes one layer per step (got {layers}): joining \
-                             layers by C1 interior nodes inside a Galerkin step is unstable \
-                             (method notes)"
-                        ),
-                    ));
-                }
-                Scheme::Galerkin
-            }
+            TimeScheme::Galerkin => Scheme::Galerkin,
         };
         let layout = SlabLayout::new(&model, scheme, settings.constraint_method);
         let h = dt / layers as f64;
@@ -241,19 +186,13 @@ impl Simulation {
         start.set(&model, initial.t, &initial.e, &initial.v, h);
         let reference = model.reference_coordinates();
         let mut moment_angles = Vec::new();
-        for (i, (node, m)) in model.end_moments().enumerate() {
+        for (node, m) in model.end_moments() {
             let Some(moment) = EndMoment::from_vector(&m) else {
                 continue;
             };
             let o = model.node_offset(node) + 3;
             let r0 = [reference[o], reference[o + 1], reference[o + 2]];
             let rx = [initial.e[o], initial.e[o + 1], initial.e[o + 2]];
-            if !moment.acts_on(&rx) {
-                return Err(ModelError::invalid(
-                    format!("loads[{i}].moment"),
-                    "the moment is about the cable's own tangent (a torsion, which a cable cannot carry)",
-                ));
-            }
             moment_angles.push(MomentAngle::new(moment, node, r0, &rx));
         }
         let reactions: Vec<(usize, [f64; 3])> = model
@@ -643,6 +582,177 @@ impl Simulation {
     }
 }
 
+/// The checks of [`Simulation::new`] on the settings alone; the time
+/// quadrature they ask for.
+fn check_settings(settings: &StepSettings) -> Result<GaussRule, ModelError> {
+    let dt = settings.time_step;
+    if !dt.is_finite() || dt <= 0.0 {
+        return Err(ModelError::invalid(
+            "analysis.time_step",
+            format!("must be > 0, got {dt}"),
+        ));
+    }
+    if settings.time_layers == 0 {
+        return Err(ModelError::invalid(
+            "analysis.time_layers",
+            "must be at least 1, got 0",
+        ));
+    }
+    let time_rule = GaussRule::new(settings.time_points)
+        .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
+    let tol = settings.newton.tolerance;
+    if !tol.is_finite() || tol <= 0.0 {
+        return Err(ModelError::invalid(
+            "analysis.tolerance",
+            format!("must be > 0, got {tol}"),
+        ));
+    }
+    if settings.newton.max_iterations == 0 {
+        return Err(ModelError::invalid(
+            "analysis.max_iterations",
+            "must be at least 1",
+        ));
+    }
+    let layers = settings.time_layers;
+    if settings.time_scheme == TimeScheme::Galerkin && layers != 1 {
+        return Err(ModelError::invalid(
+            "analysis.time_layers",
+            format!(
+                "the Galerkin step takes one layer per step (got {layers}): joining \
+                 layers by C1 interior nodes inside a Galerkin step is unstable \
+                 (method notes)"
+            ),
+        ));
+    }
+    Ok(time_rule)
+}
+
+/// The initial state has the model's size and is finite.
+fn check_initial_state(model: &Model, initial: &State) -> Result<(), ModelError> {
+    let n = model.dofs();
+    if initial.e.len() != n || initial.v.len() != n {
+        return Err(ModelError::invalid(
+            "initial_state",
+            format!(
+                "expected {n} coordinates, got {} and {}",
+                initial.e.len(),
+                initial.v.len()
+            ),
+        ));
+    }
+    if initial
+        .e
+        .iter()
+        .chain(initial.v.iter())
+        .any(|v| !v.is_finite())
+        || !initial.t.is_finite()
+    {
+        return Err(ModelError::invalid("initial_state", "must be finite"));
+    }
+    Ok(())
+}
+
+/// An end moment must bend the cable at coordinates `e`: a moment about
+/// the end's own tangent is a torsion, which a cable cannot carry.
+fn check_end_moments(model: &Model, e: &[f64]) -> Result<(), ModelError> {
+    for (i, (node, m)) in model.end_moments().enumerate() {
+        let Some(moment) = EndMoment::from_vector(&m) else {
+            continue;
+        };
+        let o = model.node_offset(node) + 3;
+        if !moment.acts_on(&[e[o], e[o + 1], e[o + 2]]) {
+            return Err(ModelError::invalid(
+                format!("loads[{i}].moment"),
+                "the moment is about the cable's own tangent (a torsion, which a cable cannot carry)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The unknowns of the system every step of a [`Simulation`] of `model`
+/// from `initial` with `settings` solves, and whether the planar reduction
+/// applies ([`Simulation::unknowns_per_step`], [`Simulation::is_planar`]),
+/// after the same checks as [`Simulation::new`] but without building it:
+/// no copy of the model, no matrices, O(nodes) time and the memory of one
+/// state (`stancf check` on a large mesh). The count is the numbering of
+/// [`SlabLayout::new`]: every coordinate has one unknown per slot (2 per
+/// time layer with P2, 3 with the Galerkin step) unless it is eliminated
+/// (held by the planar reduction, or constrained with elimination), and a
+/// constrained coordinate with multipliers has one multiplier per slot too.
+pub fn step_unknowns(
+    model: &Model,
+    initial: &State,
+    settings: &StepSettings,
+) -> Result<(usize, bool), ModelError> {
+    check_settings(settings)?;
+    check_initial_state(model, initial)?;
+    let mut state = initial.clone();
+    model.apply_constraints(&mut state);
+    check_end_moments(model, &state.e)?;
+    // Model::reduce_to_plane holds the z coordinates, g = 2 mod 3.
+    let reduces = settings.planar_reduction && model.planar_coordinates(&state).is_some();
+    let planar = reduces || model.constraints.has_inactive();
+    let slots = match settings.time_scheme {
+        TimeScheme::P2 => 2 * settings.time_layers,
+        TimeScheme::Galerkin => 3,
+    };
+    let elimination = settings.constraint_method == ConstraintMethod::Elimination;
+    let held = |g: usize| model.constraints.is_inactive(g) || (reduces && g % 3 == 2);
+    let mut size = 0;
+    for g in 0..model.dofs() {
+        let inactive = held(g);
+        let constrained = model.constraints.is_constrained(g) && !inactive;
+        if !(inactive || (elimination && constrained)) {
+            size += slots;
+        }
+        if constrained && !elimination {
+            size += slots;
+        }
+    }
+    Ok((size, planar))
+}
+
+/// The model's own energy unit (J), never zero: the energies of
+/// deformations and motions of order one of this cable,
+///
+/// ```text
+///   E_model = E A L + E I / L + m |g| L + sum |F| L + sum |M|
+/// ```
+///
+/// (twice the strain energy of a unit axial strain over the length L and
+/// of a bend to curvature 1 / L; the work of the weight m g and of the
+/// point forces over a displacement L; that of the end moments over one
+/// radian). E A > 0, so it is positive whatever the loads.
+pub fn model_energy_scale(model: &Model) -> f64 {
+    let m = &model.material;
+    let l = model.cable.length;
+    let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let weight = m.density * m.area * l * norm(model.gravity);
+    let forces: f64 = model.point_forces().map(|(_, f)| norm(f)).sum();
+    let moments: f64 = model.end_moments().map(|(_, mo)| norm(mo)).sum();
+    m.youngs_modulus * m.area * l
+        + m.youngs_modulus * m.second_moment / l
+        + (weight + forces) * l
+        + moments
+}
+
+/// Relative size of the round-off in an energy evaluation and in the
+/// energy balance of a step (a sum of many terms, each rounded to eps of
+/// its size): changes of the energy below this times the magnitudes
+/// involved are not resolved.
+const ROUND_OFF: f64 = 1e3 * f64::EPSILON;
+
+/// Energy changes of this model below this are round-off (J):
+/// `1e3 eps E_model` ([`model_energy_scale`]). A cable at rest, or nearly,
+/// has energies of O(eps^2 E_model): positions and slopes rounded to eps
+/// give strains of O(eps), so 1/2 E A L eps^2; this is eps^-1 ~ 4.5e15 times
+/// more, yet still nothing physical (for the paper's 4 m PVC cable 9e-9 J,
+/// the energy of a strain of 7e-7).
+pub fn energy_resolution(model: &Model) -> f64 {
+    ROUND_OFF * model_energy_scale(model)
+}
+
 /// Watches the mechanical energy of a run for growth without a source.
 ///
 /// The cable under gravity, constant point forces and end moments
@@ -651,20 +761,29 @@ impl Simulation {
 /// their work W. A rise of E - W by more than `ratio` times the energy
 /// scale of the motion so far (the largest T + U seen, plus the largest
 /// change of the potentials and the largest |W|) can only come from an
-/// unstable step.
+/// unstable step, provided it is also above the round-off of the energy
+/// balance: `1e3 eps` times the magnitudes summed (the energies, |W|) and
+/// the model's own energy unit ([`energy_resolution`]). Without that unit a
+/// cable at rest, whose energy scale is itself round-off (1e-28 J), trips
+/// on its own round-off. An unstable mode grows geometrically (P2 beyond
+/// its limit: by up to 3 + 2 sqrt(2) per step in amplitude, method notes),
+/// so from round-off, O(eps^2 E_model), it passes the floor within
+/// ln(1e3 / eps) / ln(rho^2) steps: about 20 at rho = 3.
 #[derive(Clone, Debug)]
 pub struct EnergyWatch {
     pub ratio: f64,
     initial: Energies,
     scale: f64,
+    resolution: f64,
 }
 
 impl EnergyWatch {
-    pub fn new(initial: Energies, ratio: f64) -> Self {
+    pub fn new(model: &Model, initial: Energies, ratio: f64) -> Self {
         EnergyWatch {
             ratio,
             initial,
             scale: initial.kinetic.abs() + initial.strain.abs(),
+            resolution: energy_resolution(model),
         }
     }
 
@@ -682,8 +801,8 @@ impl EnergyWatch {
             .scale
             .max(en.kinetic.abs() + en.strain.abs() + potential_change + external_work.abs());
         let drift = en.mechanical() - self.initial.mechanical() - external_work;
-        let floor =
-            1e3 * f64::EPSILON * (en.magnitude() + self.initial.magnitude() + external_work.abs());
+        let floor = ROUND_OFF * (en.magnitude() + self.initial.magnitude() + external_work.abs())
+            + self.resolution;
         if drift > self.ratio * self.scale && drift > floor {
             Err(drift)
         } else {
@@ -714,7 +833,7 @@ where
     let dt = sim.settings.time_step;
     let t0 = sim.state.t;
     let n_steps = step_count(duration, dt);
-    let mut watch = EnergyWatch::new(sim.energies(), ENERGY_GROWTH_RATIO);
+    let mut watch = EnergyWatch::new(&sim.model, sim.energies(), ENERGY_GROWTH_RATIO);
     for k in 1..=n_steps {
         let h = if k == n_steps {
             t0 + duration - sim.state.t

@@ -112,7 +112,10 @@ pub struct StressSample {
 
 /// Axial stress E eps and curvature at `per_element` evenly spaced points
 /// of every element, both ends included (so interior nodes appear twice,
-/// once per element: SAC-2 stress is discontinuous there).
+/// once per element). The axial strain depends on r_x alone, a nodal
+/// coordinate of both elements, so the two values at a node agree; the
+/// curvature of SAC-2 (from r_xx, not nodal) jumps there (docs/method.md
+/// §1.2).
 pub fn stress_samples(
     model: &Model,
     state: &State,
@@ -183,7 +186,8 @@ pub struct CablePoint {
     /// Velocity r_dot (the same interpolation of the nodal rates).
     pub v: [f64; 3],
     /// E eps at this point; at a shared node, the mean of the two
-    /// elements' values (SAC-2 strain jumps there).
+    /// elements' values (equal up to round-off: the strain is continuous,
+    /// docs/method.md §1.2).
     pub axial_stress: f64,
     pub curvature: f64,
 }

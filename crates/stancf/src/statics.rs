@@ -50,7 +50,7 @@ use crate::assembly::{AssemblyScratch, Scheme, SlabLayout, StepProblem, StepStar
 use crate::band::{BandLu, BandMatrix};
 use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
-use crate::error::{FailureKind, ModelError, SolverError};
+use crate::error::{FailureKind, ModelError, Sig, SolverError, STATIC_SOLVE};
 use crate::model::{Model, State};
 use crate::quadrature::GaussRule;
 use std::ops::ControlFlow;
@@ -460,8 +460,9 @@ impl StaticSolver {
                             residual: self.residual_norm(),
                             iterations: self.settings.max_iterations,
                             detail: format!(
-                                "static solve: the load increment from {lambda:.6} could not be \
-                                 converged even after {} halvings",
+                                "{STATIC_SOLVE}: the load increment from load factor {} could \
+                                 not be converged even after {} halvings",
+                                Sig(lambda),
                                 self.settings.max_cuts
                             ),
                         });

@@ -107,3 +107,78 @@ pub fn random_slab_state<const NS: usize, const ND: usize>(
     }
     y
 }
+
+/// Eigenvalues of the symmetric matrix `a` (dense, n x n), ascending, by
+/// the cyclic Jacobi method (rotations until the off-diagonal part is
+/// below 1e-16 of the whole): slow, simple and independent of the
+/// library's eigenvalue code.
+pub fn symmetric_eigenvalues(mut a: Vec<Vec<f64>>) -> Vec<f64> {
+    let n = a.len();
+    let total: f64 = a.iter().flatten().map(|v| v * v).sum();
+    for _sweep in 0..100 {
+        let off: f64 = (0..n)
+            .flat_map(|i| (0..n).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| a[i][j] * a[i][j])
+            .sum();
+        if off <= 1e-32 * total {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[p][q] == 0.0 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta == 0.0 { 1.0 } else { t };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                for k in 0..n {
+                    let (akp, akq) = (a[k][p], a[k][q]);
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for k in 0..n {
+                    let (apk, aqk) = (a[p][k], a[q][k]);
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+            }
+        }
+    }
+    let mut ev: Vec<f64> = (0..n).map(|i| a[i][i]).collect();
+    ev.sort_by(f64::total_cmp);
+    ev
+}
+
+/// Largest lambda of K x = lambda M x (K symmetric, M symmetric positive
+/// definite, dense): Cholesky M = L L^T, then the eigenvalues of
+/// L^-1 K L^-T by [`symmetric_eigenvalues`].
+pub fn generalized_max_eigenvalue(k: &[Vec<f64>], m: &[Vec<f64>]) -> f64 {
+    let n = k.len();
+    let mut l = vec![vec![0.0; n]; n];
+    for i in 0..n {
+        for j in 0..=i {
+            let s = m[i][j] - (0..j).map(|p| l[i][p] * l[j][p]).sum::<f64>();
+            l[i][j] = if i == j { s.sqrt() } else { s / l[j][j] };
+        }
+    }
+    // C = L^-1 K L^-T: solve L Y = K, then L C^T = Y^T.
+    let lower_solve = |b: &[f64]| {
+        let mut x = vec![0.0; n];
+        for i in 0..n {
+            x[i] = (b[i] - (0..i).map(|p| l[i][p] * x[p]).sum::<f64>()) / l[i][i];
+        }
+        x
+    };
+    let y: Vec<Vec<f64>> = (0..n)
+        .map(|j| lower_solve(&(0..n).map(|i| k[i][j]).collect::<Vec<_>>()))
+        .collect(); // y[j] = column j of L^-1 K
+    let c: Vec<Vec<f64>> = (0..n)
+        .map(|i| lower_solve(&(0..n).map(|j| y[j][i]).collect::<Vec<_>>()))
+        .collect(); // c[i] = column i of L^-1 (L^-1 K)^T = row i of C
+    let c: Vec<Vec<f64>> = (0..n)
+        .map(|i| (0..n).map(|j| 0.5 * (c[i][j] + c[j][i])).collect())
+        .collect();
+    *symmetric_eigenvalues(c).last().expect("n > 0")
+}

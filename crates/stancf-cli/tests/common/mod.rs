@@ -1,0 +1,120 @@
+//! Helpers shared by the command-line tests: scratch folders, running the
+//! binary, small scenarios, and readers that fail on any malformed or
+//! non-finite number.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub const BIN: &str = env!("CARGO_BIN_EXE_stancf");
+
+/// A scratch folder per test (and per test binary), emptied first.
+pub fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("stancf-t-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+pub fn repo_file(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(rel)
+}
+
+/// Runs `stancf` with `args` to completion.
+pub fn stancf(args: &[&str]) -> Output {
+    Command::new(BIN).args(args).output().expect("run stancf")
+}
+
+/// Standard output and standard error as text.
+pub fn text(o: &Output) -> (String, String) {
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+pub fn write_scenario(dir: &Path, name: &str, contents: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, contents).unwrap();
+    p
+}
+
+/// The paper's free pendulum (4 SAC-2, pinned at A, gravity) with the
+/// given title, step and duration: cheap, smooth, and with reactions.
+pub fn pendulum(title: &str, time_step: f64, duration: f64, every: usize) -> String {
+    format!(
+        r#"title = "{title}"
+[cable]
+length = 0.5
+elements = 4
+element = "SAC-2"
+[material]
+youngs_modulus = 0.91e6
+density = 1202.0
+area = 1.075e-5
+second_moment = 9.15e-12
+[[constraints]]
+type = "pinned"
+node = "A"
+[[loads]]
+type = "gravity"
+acceleration = [0.0, -9.81, 0.0]
+[analysis]
+type = "dynamic"
+time_step = {time_step:e}
+duration = {duration:e}
+[output]
+every = {every}
+"#
+    )
+}
+
+/// Parses a CSV file of numbers: its header and rows; fails on a ragged
+/// row or any non-numeric or non-finite field.
+pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let s = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+    let mut lines = s.lines();
+    let header: Vec<String> = lines
+        .next()
+        .unwrap_or_else(|| panic!("{path:?}: empty"))
+        .split(',')
+        .map(String::from)
+        .collect();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|f| {
+                    if f.is_empty() {
+                        return 0.0; // an optional figure left blank
+                    }
+                    let v: f64 = f
+                        .parse()
+                        .unwrap_or_else(|_| panic!("{path:?}: bad field {f:?}"));
+                    assert!(v.is_finite(), "{path:?}: non-finite {f}");
+                    v
+                })
+                .collect()
+        })
+        .collect();
+    for r in &rows {
+        assert_eq!(r.len(), header.len(), "{path:?}: ragged row");
+    }
+    (header, rows)
+}
+
+pub fn read_json(path: &Path) -> serde_json::Value {
+    let s = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+    serde_json::from_str(&s).unwrap_or_else(|e| panic!("{path:?}: {e}"))
+}
+
+/// The names in a folder, sorted.
+pub fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{dir:?}: {e}"))
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
