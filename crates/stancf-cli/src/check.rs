@@ -7,7 +7,7 @@ use crate::Failure;
 use stancf::error::Sig;
 use stancf::integrator::step_count;
 use stancf::quadrature::GaussRule;
-use stancf::{stability, Model, Simulation, State};
+use stancf::{stability, Model, State};
 use std::path::Path;
 
 /// Figures derived from a dynamic scenario before running it.
@@ -28,7 +28,9 @@ pub(crate) fn load(path: &Path) -> Result<(Scenario, Model, State), Failure> {
 }
 
 /// Validates scenario text (`path` names it in messages and gives the
-/// default title) and builds its model and initial state.
+/// default title) and builds its model and initial state. A derived scale
+/// out of the range the solver computes in (non-finite, or beyond
+/// [`MAX_SCALE`]) is an input error naming the keys it is made of.
 pub(crate) fn load_text(text: &str, path: &Path) -> Result<(Scenario, Model, State), Failure> {
     let sc = scenario::parse(text, &path.display().to_string(), path)
         .map_err(|e| Failure::Input(e.0))?;
@@ -274,11 +276,41 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
     let ei = m.youngs_modulus * m.second_moment;
     let rho_a = m.density * m.area;
     let l = length / n;
-    f.need("the axial stiffness E A", ea, " N", &keys(&[ek, ak]), Rule::Scale)?;
-    f.need("the bending stiffness E I", ei, " N m^2", &keys(&[ek, ik]), Rule::Scale)?;
-    f.need("the mass per length rho A", rho_a, " kg/m", &keys(&[rk, ak]), Rule::Divisor)?;
-    f.need("the element length l = length / elements", l, " m", &keys(&[lk, nk]), Rule::Divisor)?;
-    f.need("the mass rho A length", rho_a * length, " kg", &keys(&[rk, ak, lk]), Rule::Divisor)?;
+    f.need(
+        "the axial stiffness E A",
+        ea,
+        " N",
+        &keys(&[ek, ak]),
+        Rule::Scale,
+    )?;
+    f.need(
+        "the bending stiffness E I",
+        ei,
+        " N m^2",
+        &keys(&[ek, ik]),
+        Rule::Scale,
+    )?;
+    f.need(
+        "the mass per length rho A",
+        rho_a,
+        " kg/m",
+        &keys(&[rk, ak]),
+        Rule::Divisor,
+    )?;
+    f.need(
+        "the element length l = length / elements",
+        l,
+        " m",
+        &keys(&[lk, nk]),
+        Rule::Divisor,
+    )?;
+    f.need(
+        "the mass rho A length",
+        rho_a * length,
+        " kg",
+        &keys(&[rk, ak, lk]),
+        Rule::Divisor,
+    )?;
     // The inertia of the highest derivative a node carries (r_x, r_xx).
     let power = match model.element_type() {
         stancf::ElementType::Sac2 => 3,
@@ -291,7 +323,13 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
         &keys(&[rk, ak, lk, nk]),
         Rule::Divisor,
     )?;
-    f.need("the element's axial stiffness E A / l", ea / l, " N/m", &keys(&[ek, ak, lk, nk]), Rule::Scale)?;
+    f.need(
+        "the element's axial stiffness E A / l",
+        ea / l,
+        " N/m",
+        &keys(&[ek, ak, lk, nk]),
+        Rule::Scale,
+    )?;
     f.need(
         &format!("the element's bending stiffness E I / l^{power}"),
         ei / l.powi(power),
@@ -300,7 +338,13 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
         Rule::Scale,
     )?;
     let c = model.material.wave_speed();
-    f.need("the wave speed sqrt(E / rho)", c, " m/s", &keys(&[ek, rk]), Rule::Scale)?;
+    f.need(
+        "the wave speed sqrt(E / rho)",
+        c,
+        " m/s",
+        &keys(&[ek, rk]),
+        Rule::Scale,
+    )?;
     // The highest frequency, estimated (the eigenvalue computation of
     // `check` needs w^4 to be finite): the larger of the axial and the
     // bending estimates, from the computed spectra of uniform meshes.
@@ -326,7 +370,29 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
     };
     let place_keys = keys(&[ok, lk]);
     let extent = largest(&sc.cable.origin) + length;
-    f.need("the extent of the cable |origin| + length", extent, " m", &place_keys, Rule::Scale)?;
+    f.need(
+        "the extent of the cable |origin| + length",
+        extent,
+        " m",
+        &place_keys,
+        Rule::Scale,
+    )?;
+    // Coordinates far from 0 are rounded to more than Newton's tolerance
+    // (a fraction of an element length): it could never converge.
+    let rounding = f64::EPSILON * extent;
+    if rounding / l > sc.analysis.tolerance {
+        return Err(Failure::Input(format!(
+            "{file}: cable.origin, analysis.tolerance, cable.length, cable.elements: the \
+             coordinates (up to {} m from 0) are rounded to {} m, {} of an element length, \
+             more than analysis.tolerance = {} (a fraction of an element length): Newton could \
+             not converge; place the cable nearer to the origin of coordinates or loosen \
+             analysis.tolerance",
+            Sig(extent),
+            Sig(rounding),
+            Sig(rounding / l),
+            Sig(sc.analysis.tolerance)
+        )));
+    }
     let dpn = model.dofs_per_node();
     let mut speed = 0.0f64;
     for j in 0..model.nodes() {
@@ -337,14 +403,35 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
         }
     }
     for (ks, rate, acceleration, travel) in &prescribed {
-        f.need("the speed of a prescribed motion", *rate, " m/s", ks, Rule::Scale)?;
+        f.need(
+            "the speed of a prescribed motion",
+            *rate,
+            " m/s",
+            ks,
+            Rule::Scale,
+        )?;
         speed = speed.max(*rate);
-        f.need("the acceleration of a prescribed motion", *acceleration, " m/s^2", ks, Rule::Scale)?;
+        f.need(
+            "the acceleration of a prescribed motion",
+            *acceleration,
+            " m/s^2",
+            ks,
+            Rule::Scale,
+        )?;
         let ks = with(ks.clone(), &keys(&[tk]));
-        f.need("the travel of a prescribed motion over the duration", *travel, " m", &ks, Rule::Scale)?;
+        f.need(
+            "the travel of a prescribed motion over the duration",
+            *travel,
+            " m",
+            &ks,
+            Rule::Scale,
+        )?;
     }
     // A rigid rotation's speed grows with the distance from its centre.
-    let rotating = sc.initial_velocity.iter().any(|iv| iv.angular_velocity.is_some());
+    let rotating = sc
+        .initial_velocity
+        .iter()
+        .any(|iv| iv.angular_velocity.is_some());
     let vk = if rotating {
         with(keys(&[ok, lk]), &velocity_keys)
     } else {
@@ -354,7 +441,13 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
     let mass_keys = keys(&[rk, ak, lk]);
     let ke_keys = with(mass_keys.clone(), &vk);
     let en = stancf::energies(model, state);
-    f.need("the kinetic energy at t = 0", en.kinetic, " J", &ke_keys, Rule::Scale)?;
+    f.need(
+        "the kinetic energy at t = 0",
+        en.kinetic,
+        " J",
+        &ke_keys,
+        Rule::Scale,
+    )?;
     f.need(
         "the kinetic energy scale rho A length v_max^2 / 2",
         0.5 * rho_a * length * speed * speed,
@@ -363,8 +456,20 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
         Rule::Scale,
     )?;
     let strain_keys = keys(&[ek, ak, ik, lk, nk]);
-    f.need("the strain energy at t = 0", en.strain, " J", &strain_keys, Rule::Scale)?;
-    f.need("the axial energy scale E A length", ea * length, " J", &keys(&[ek, ak, lk]), Rule::Scale)?;
+    f.need(
+        "the strain energy at t = 0",
+        en.strain,
+        " J",
+        &strain_keys,
+        Rule::Scale,
+    )?;
+    f.need(
+        "the axial energy scale E A length",
+        ea * length,
+        " J",
+        &keys(&[ek, ak, lk]),
+        Rule::Scale,
+    )?;
     f.need(
         "the bending energy scale E I length / l^2",
         ei * length / (l * l),
@@ -378,19 +483,47 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
         .iter()
         .find(|s| !(s.axial_stress.is_finite() && s.curvature.is_finite()))
     {
-        let v = if bad.axial_stress.is_finite() { bad.curvature } else { bad.axial_stress };
-        f.need("a stress or curvature at t = 0", v, "", &with(strain_keys.clone(), &place_keys), Rule::Finite)?;
+        let v = if bad.axial_stress.is_finite() {
+            bad.curvature
+        } else {
+            bad.axial_stress
+        };
+        f.need(
+            "a stress or curvature at t = 0",
+            v,
+            "",
+            &with(strain_keys.clone(), &place_keys),
+            Rule::Finite,
+        )?;
     }
     let t = if dynamic { sc.analysis.duration } else { 0.0 };
     let mass = rho_a * length;
     if !gravity_keys.is_empty() {
         let g = norm(&gravity);
         let gk = with(with(mass_keys.clone(), &gravity_keys), &place_keys);
-        f.need("the weight rho A length |g|", mass * g, " N", &gk, Rule::Scale)?;
-        f.need("the gravitational potential at t = 0", en.gravity, " J", &gk, Rule::Scale)?;
+        f.need(
+            "the weight rho A length |g|",
+            mass * g,
+            " N",
+            &gk,
+            Rule::Scale,
+        )?;
+        f.need(
+            "the gravitational potential at t = 0",
+            en.gravity,
+            " J",
+            &gk,
+            Rule::Scale,
+        )?;
         // Falling freely for the whole run.
         let fall = with(gk.clone(), &keys(&[tk]));
-        f.need("the fall under gravity over the duration g T^2 / 2", 0.5 * g * t * t, " m", &fall, Rule::Scale)?;
+        f.need(
+            "the fall under gravity over the duration g T^2 / 2",
+            0.5 * g * t * t,
+            " m",
+            &fall,
+            Rule::Scale,
+        )?;
         f.need(
             "the gravitational energy scale rho A length |g| (extent + g T^2 / 2)",
             mass * g * (extent + 0.5 * g * t * t),
@@ -408,7 +541,13 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
                 // The push on the free cable over the whole run.
                 let push = with(with(fk.clone(), &mass_keys), &keys(&[tk]));
                 let travel = 0.5 * fnorm / mass * t * t;
-                f.need("the travel of the cable pushed by the force |F| T^2 / (2 m)", travel, " m", &push, Rule::Scale)?;
+                f.need(
+                    "the travel of the cable pushed by the force |F| T^2 / (2 m)",
+                    travel,
+                    " m",
+                    &push,
+                    Rule::Scale,
+                )?;
                 f.need(
                     "the work scale of the point force |F| (extent + |F| T^2 / (2 m))",
                     fnorm * (extent + travel),
@@ -420,7 +559,13 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
             stancf::Load::EndMoment { moment, .. } => {
                 let mk = with(vec![format!("loads[{i}].moment")], &keys(&[lk, nk]));
                 f.need("the end moment |M|", norm(moment), " N m", &mk, Rule::Scale)?;
-                f.need("the end moment's force on an element |M| / l", norm(moment) / l, " N", &mk, Rule::Scale)?;
+                f.need(
+                    "the end moment's force on an element |M| / l",
+                    norm(moment) / l,
+                    " N",
+                    &mk,
+                    Rule::Scale,
+                )?;
             }
             stancf::Load::AirDrag(d) => {
                 let k = format!("loads[{i}]");
@@ -429,10 +574,25 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
                     .map(|n| format!("{k}.{n}"))
                     .collect();
                 let coefficient = 0.5 * d.drag_coefficient * d.fluid_density * d.diameter;
-                f.need("the drag factor C rho_fluid d / 2", coefficient, " kg/m^2", &dk, Rule::Scale)?;
+                f.need(
+                    "the drag factor C rho_fluid d / 2",
+                    coefficient,
+                    " kg/m^2",
+                    &dk,
+                    Rule::Scale,
+                )?;
                 let relative = norm(&d.fluid_velocity) + speed;
-                let vk = with(with(dk.clone(), &[format!("{k}.fluid_velocity")]), &velocity_keys);
-                f.need("the largest relative speed of the fluid", relative, " m/s", &vk, Rule::Scale)?;
+                let vk = with(
+                    with(dk.clone(), &[format!("{k}.fluid_velocity")]),
+                    &velocity_keys,
+                );
+                f.need(
+                    "the largest relative speed of the fluid",
+                    relative,
+                    " m/s",
+                    &vk,
+                    Rule::Scale,
+                )?;
                 f.need(
                     "the drag force scale C rho_fluid d length v^2 / 2",
                     coefficient * length * relative * relative,
@@ -452,20 +612,52 @@ fn scales(file: &str, sc: &Scenario, model: &Model, state: &State) -> Result<(),
             sc.loads
                 .iter()
                 .enumerate()
-                .filter(|(_, l)| matches!(l, stancf::Load::PointForce { .. } | stancf::Load::EndMoment { .. }))
-                .map(|(i, l)| format!("loads[{i}].{}", if matches!(l, stancf::Load::PointForce { .. }) { "force" } else { "moment" }))
+                .filter(|(_, l)| {
+                    matches!(
+                        l,
+                        stancf::Load::PointForce { .. } | stancf::Load::EndMoment { .. }
+                    )
+                })
+                .map(|(i, l)| {
+                    format!(
+                        "loads[{i}].{}",
+                        if matches!(l, stancf::Load::PointForce { .. }) {
+                            "force"
+                        } else {
+                            "moment"
+                        }
+                    )
+                })
                 .collect(),
             &place_keys,
         ),
         Rule::Scale,
     )?;
     if !state.e.iter().all(|v| v.is_finite()) {
-        f.need("a coordinate at t = 0", f64::NAN, "", &place_keys, Rule::Finite)?;
+        f.need(
+            "a coordinate at t = 0",
+            f64::NAN,
+            "",
+            &place_keys,
+            Rule::Finite,
+        )?;
     }
     if dynamic {
         let dt = sc.analysis.time_step;
-        f.need("the Courant number c dt / l", c * dt / l, "", &keys(&[ek, rk, dtk, lk, nk]), Rule::Scale)?;
-        f.need("w_max dt (estimate)", w_est * dt, "", &with(w_keys, &keys(&[dtk])), Rule::Scale)?;
+        f.need(
+            "the Courant number c dt / l",
+            c * dt / l,
+            "",
+            &keys(&[ek, rk, dtk, lk, nk]),
+            Rule::Scale,
+        )?;
+        f.need(
+            "w_max dt (estimate)",
+            w_est * dt,
+            "",
+            &with(w_keys, &keys(&[dtk])),
+            Rule::Scale,
+        )?;
     }
     Ok(())
 }
@@ -542,7 +734,10 @@ const BYTES_PER_VTK_ELEMENT: f64 = 2700.0;
 pub(crate) fn size(sc: &Scenario, vtk: bool) -> Size {
     let a = &sc.analysis;
     let (steps, per_step) = match a.kind {
-        AnalysisKind::Dynamic => ((a.duration / a.time_step - 1e-9).ceil().max(1.0), BYTES_PER_STEP),
+        AnalysisKind::Dynamic => (
+            (a.duration / a.time_step - 1e-9).ceil().max(1.0),
+            BYTES_PER_STEP,
+        ),
         AnalysisKind::Static => (a.load_steps as f64, 0.0),
     };
     // Every k-th step, the first row at t = 0 and the last step (a static
@@ -556,7 +751,11 @@ pub(crate) fn size(sc: &Scenario, vtk: bool) -> Size {
         + BYTES_PER_NODE_ROW * (elements + 1.0)
         + BYTES_PER_STRESS_ROW * 5.0 * elements
         + BYTES_PER_REACTION_ROW * sc.constraints.len() as f64
-        + if vtk { BYTES_PER_VTK_ELEMENT * elements } else { 0.0 };
+        + if vtk {
+            BYTES_PER_VTK_ELEMENT * elements
+        } else {
+            0.0
+        };
     Size {
         steps,
         written,
@@ -797,9 +996,12 @@ pub fn check(path: &Path) -> Result<(), Failure> {
         check_derived(path, d)?;
     }
     let unknowns = if sc.analysis.kind == AnalysisKind::Dynamic {
-        let sim = Simulation::new(model.clone(), state.clone(), sc.step_settings())
-            .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
-        Some((sim.unknowns_per_step(), sim.is_planar()))
+        // The same checks and count as the simulation a run builds, without
+        // building it (O(nodes): check stays fast on large meshes).
+        Some(
+            stancf::integrator::step_unknowns(&model, &state, &sc.step_settings())
+                .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?,
+        )
     } else {
         None
     };
@@ -889,8 +1091,14 @@ mod tests {
         let refused = admit(Path::new("t.toml"), &sc, &RunOptions::default());
         match refused {
             Err(Failure::Input(m)) => {
-                assert!(m.starts_with("t.toml: analysis.duration, analysis.time_step"), "{m}");
-                assert!(m.contains("2e8 steps") && m.contains("--allow-large"), "{m}");
+                assert!(
+                    m.starts_with("t.toml: analysis.duration, analysis.time_step"),
+                    "{m}"
+                );
+                assert!(
+                    m.contains("2e8 steps") && m.contains("--allow-large"),
+                    "{m}"
+                );
             }
             other => panic!("{other:?}"),
         }

@@ -1,14 +1,15 @@
 //! The `run` command: a scenario stepped (or solved statically) with its
 //! results streamed to the output folder and summary.json written last.
 
-use crate::check::{derive, load_text, warnings};
+use crate::check::{derive, load_text, warnings, Derived};
 use crate::output::{json_num, write_atomic, ResultFolder};
 use crate::scenario::{AnalysisKind, Scenario};
 use crate::writers::{Row, SolverRow, WallClock, Writers, STRESS_POINTS_PER_ELEMENT};
 use crate::Failure;
 use serde_json::{json, Value};
+use stancf::error::Sig;
 use stancf::observe::{momentum, stress_samples, Energies, StressSample};
-use stancf::{energies, Model, State, StaticSolver, Simulation};
+use stancf::{energies, Model, Simulation, State, StaticSolver};
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -225,6 +226,16 @@ pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
 pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
     let (sc, model, state) = load_text(text, path)?;
     crate::check::admit(path, &sc, &opts)?;
+    // Everything that can refuse the input is decided before anything is
+    // written.
+    let derived = match sc.analysis.kind {
+        AnalysisKind::Dynamic => {
+            let d = derive(&sc, &model, &state);
+            crate::check::check_derived(path, &d)?;
+            Some(d)
+        }
+        AnalysisKind::Static => None,
+    };
     let target = output_dir(path, opts.out.clone());
     let folder = ResultFolder::open(&target)?;
     let place = Place {
@@ -233,7 +244,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
     };
     write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
     let result = match sc.analysis.kind {
-        AnalysisKind::Dynamic => run_dynamic(path, &place, &opts, sc, model, state),
+        AnalysisKind::Dynamic => run_dynamic(path, &place, &opts, sc, model, state, derived),
         AnalysisKind::Static => run_static(path, &place, &opts, sc, model),
     };
     if let Err(Failure::Input(_) | Failure::Other(_)) = result {
@@ -241,9 +252,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
     }
     // The figures are drawn from the new files, also those of a run that
     // stopped early (they hold every converged step).
-    let figures = opts
-        .plot
-        .then(|| crate::figures::plot_results(place.dir));
+    let figures = opts.plot.then(|| crate::figures::plot_results(place.dir));
     folder.commit().map_err(io_err(&target))?;
     if let Ok(report) = &result {
         print!("{report}");
@@ -285,9 +294,10 @@ fn run_dynamic(
     sc: Scenario,
     model: Model,
     state: State,
+    derived: Option<Derived>,
 ) -> Result<String, Failure> {
     let mut report = String::new();
-    let d = derive(&sc, &model, &state);
+    let d = derived.expect("derived for every dynamic run");
     for w in warnings(&sc, &model, Some(&d)) {
         eprintln!("warning: {w}");
     }
@@ -296,7 +306,8 @@ fn run_dynamic(
     sim.set_clock(Box::new(WallClock(Instant::now())));
     let dir = place.dir.to_path_buf();
     let constrained = !sim.model().constraints.is_empty();
-    let mut writers = Writers::create(&dir, constrained, true, opts.vtk).map_err(io_err(place.shown))?;
+    let mut writers =
+        Writers::create(&dir, constrained, true, opts.vtk).map_err(io_err(place.shown))?;
 
     let e0 = sim.energies();
     let first = Row {
@@ -309,9 +320,14 @@ fn run_dynamic(
         constraint_work: 0.0,
         drag_work: 0.0,
     };
-    writers.write(sim.model(), &first).map_err(io_err(place.shown))?;
+    writers
+        .write(sim.model(), &first)
+        .map_err(io_err(place.shown))?;
     let mut tally = Tally {
-        energy_scale: e0.kinetic.abs() + e0.strain.abs(),
+        // Never zero: at rest the energies are round-off, and so would be a
+        // drift measured against them (docs/method.md §8).
+        energy_scale: (e0.kinetic.abs() + e0.strain.abs())
+            .max(stancf::integrator::energy_resolution(sim.model())),
         ..Tally::default()
     };
     tally.record_stress(0.0, &writers.samples);
@@ -417,7 +433,9 @@ fn run_dynamic(
             constraint_work: sim.constraint_work(),
             drag_work: sim.drag_work(),
         };
-        writers.write(sim.model(), &row).map_err(io_err(place.shown))?;
+        writers
+            .write(sim.model(), &row)
+            .map_err(io_err(place.shown))?;
     }
     writers.commit().map_err(io_err(place.shown))?;
 
@@ -426,11 +444,7 @@ fn run_dynamic(
     let en = sim.energies();
     let (mass, p, first_moment) = momentum(model, state);
     let steps = sim.steps();
-    let rel = if tally.energy_scale > 0.0 {
-        tally.energy_max_abs_drift / tally.energy_scale
-    } else {
-        0.0
-    };
+    let rel = tally.energy_max_abs_drift / tally.energy_scale;
     let mut summary = common_summary(&sc, model, state, wall);
     summary.insert("steps".into(), json!(steps));
     summary.insert("time".into(), json_num(state.t));
@@ -512,7 +526,7 @@ fn run_dynamic(
         return Err(Failure::Interrupted(format!(
             "{}: interrupted; results up to t = {} s (step {}) are in {}",
             path.display(),
-            state.t,
+            Sig(state.t),
             steps,
             place.shown.display()
         )));
@@ -535,7 +549,7 @@ fn run_dynamic(
         return Err(Failure::Solver(format!(
             "{}: {f}{beyond}; results up to t = {} s (step {}) are in {}",
             path.display(),
-            state.t,
+            Sig(state.t),
             steps,
             place.shown.display()
         )));
@@ -543,11 +557,11 @@ fn run_dynamic(
     if opts.quiet {
         return Ok(report);
     }
-    say!(report, 
+    say!(report,
         "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} {} iterations per step, {} factorizations",
         sc.title,
         steps,
-        state.t,
+        Sig(state.t),
         wall,
         tally.iterations as f64 / steps.max(1) as f64,
         match sc.analysis.solver {
@@ -557,16 +571,20 @@ fn run_dynamic(
         },
         tally.factorizations
     );
-    say!(report, 
+    say!(
+        report,
         "energy: initial {:.9e} J, final {:.9e} J, max drift {:.3e} J ({:.3e} of the energy scale)",
         e0.mechanical(),
         en.mechanical(),
         tally.energy_max_abs_drift,
         rel
     );
-    say!(report, 
+    say!(
+        report,
         "peak axial stress: {:.6e} Pa at s = {} m, t = {:.6e} s",
-        tally.stress_peak.0, tally.stress_peak.1, tally.stress_peak.2
+        tally.stress_peak.0,
+        Sig(tally.stress_peak.1),
+        tally.stress_peak.2
     );
     say!(report, "{}", tip_line(model, state, place.shown));
     Ok(report)
@@ -692,7 +710,7 @@ fn run_static(
         return Err(Failure::Interrupted(format!(
             "{}: interrupted; results up to load factor {} are in {}",
             path.display(),
-            state.t,
+            Sig(state.t),
             place.shown.display()
         )));
     }
@@ -700,7 +718,7 @@ fn run_static(
         return Err(Failure::Solver(format!(
             "{}: {f}; results up to load factor {} are in {}",
             path.display(),
-            state.t,
+            Sig(state.t),
             place.shown.display()
         )));
     }
@@ -708,7 +726,7 @@ fn run_static(
         return Ok(report);
     }
     let tip = model.node_position(&state.e, model.nodes() - 1);
-    say!(report, 
+    say!(report,
         "{}: static, {increments} load increments ({cuts} cuts) in {:.3} s wall time, {:.2} Newton iterations per increment",
         sc.title,
         wall,
@@ -716,12 +734,16 @@ fn run_static(
     );
     say!(report, "strain energy: {:.9e} J", en.strain);
     for (node, f) in solver.reactions() {
-        say!(report, 
+        say!(
+            report,
             "reaction at node {node}: [{:.9e}, {:.9e}, {:.9e}] N",
-            f[0], f[1], f[2]
+            f[0],
+            f[1],
+            f[2]
         );
     }
-    say!(report, 
+    say!(
+        report,
         "tip (end B): [{:.9}, {:.9}, {:.9}] m; results in {}",
         tip[0],
         tip[1],

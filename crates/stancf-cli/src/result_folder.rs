@@ -258,7 +258,10 @@ fn staging_prefix(name: &str) -> String {
 /// else, so another target whose name extends this one is left alone).
 fn is_staging_suffix(rest: &str) -> bool {
     let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    rest == "old" || rest.split_once('-').is_some_and(|(a, b)| digits(a) && digits(b))
+    rest == "old"
+        || rest
+            .split_once('-')
+            .is_some_and(|(a, b)| digits(a) && digits(b))
 }
 
 fn old_name(name: &str) -> String {

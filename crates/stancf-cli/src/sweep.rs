@@ -345,7 +345,10 @@ pub fn sweep(
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        PathBuf::from("out").join(format!("{}-sweep", crate::commands::safe_folder_name(&stem)))
+        PathBuf::from("out").join(format!(
+            "{}-sweep",
+            crate::commands::safe_folder_name(&stem)
+        ))
     });
     // The sweep's folder is one transaction, its runs' folders inside it.
     let folder = ResultFolder::open(&target)?;

@@ -187,6 +187,21 @@ fn extreme_velocities_are_refused_naming_the_key() {
 }
 
 #[test]
+fn a_cable_so_far_from_the_origin_that_newton_cannot_converge_is_refused() {
+    // 1000 km away, a 0.5 m element's coordinates are rounded to 2.2e-10 m,
+    // 4.4e-10 of its length: above the default tolerance 1e-10.
+    let far = with("origin", "[1e6, 0.0, 0.0]");
+    let se = refused("origin-far", &far, "cable.origin");
+    assert!(se.contains("analysis.tolerance"), "{se}");
+    // With a tolerance above the rounding it runs.
+    accepted(
+        "origin-far-loose",
+        &far.replace("[analysis]", "[analysis]\ntolerance = 1e-8"),
+    );
+    accepted("origin-near", &with("origin", "[1e4, 0.0, 0.0]"));
+}
+
+#[test]
 fn extreme_loads_are_refused_naming_the_key() {
     for (name, extra, key) in [
         (
@@ -673,4 +688,39 @@ fn plot_names_the_figure_whose_path_is_a_folder() {
         Path::new(&out.join("energy.png")).is_dir(),
         "the user's folder was touched"
     );
+}
+
+/// Issue 11, item 13: when `output.every` does not divide the step count,
+/// the last step is written anyway, with its own Newton figures (it used
+/// to show 0 iterations and no increment).
+#[test]
+fn the_last_step_written_out_of_turn_keeps_its_own_solver_figures() {
+    let d = scratch("every-last-row");
+    // 105 steps written every 10th: the last row is step 105.
+    let sc = write_scenario(&d, "p.toml", &pendulum("p", 1e-4, 1.05e-2, 10));
+    let out = d.join("out");
+    let o = stancf(&[
+        "run",
+        "--quiet",
+        sc.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    let (h_head, history) = common::read_csv(&out.join("history.csv"));
+    let (s_head, solver) = common::read_csv(&out.join("solver.csv"));
+    let col = |head: &[String], name: &str| head.iter().position(|h| h == name).unwrap();
+    let last = history.last().unwrap();
+    let last_step = solver.last().unwrap();
+    assert_eq!(history.len(), 1 + 10 + 1);
+    assert!((last[0] - 1.05e-2).abs() < 1e-15);
+    for name in ["iterations", "residual", "increment"] {
+        assert_eq!(
+            last[col(&h_head, name)],
+            last_step[col(&s_head, name)],
+            "{name} of the last row"
+        );
+    }
+    assert!(last[col(&h_head, "iterations")] >= 1.0);
+    std::fs::remove_dir_all(&d).unwrap();
 }

@@ -50,7 +50,7 @@ fn time_limit() -> Duration {
 }
 
 /// Cases per generator (each runs `check` and `run`).
-const CASES: u32 = 300;
+const CASES: u32 = 1000;
 
 /// Valid step counts above this are clamped to a few steps; a scenario
 /// asking for more steps than `ABSURD_STEPS` is left as it is: the CLI must
@@ -202,7 +202,12 @@ fn check_csv(path: &Path) -> Result<(), String> {
             }
             match f.parse::<f64>() {
                 Ok(v) if v.is_finite() => {}
-                _ => return Err(format!("line {}: {name} = {f:?} is not a finite number", i + 2)),
+                _ => {
+                    return Err(format!(
+                        "line {}: {name} = {f:?} is not a finite number",
+                        i + 2
+                    ))
+                }
             }
         }
     }
@@ -270,7 +275,11 @@ fn exercise(tag: &str, text: &str, tally: &Mutex<Tally>) -> Result<(), String> {
                 let _ = std::fs::remove_dir_all(&out);
             }
             if std::env::var_os("STANCF_PROPTEST_KEEP_GOING").is_some() {
-                eprintln!("FAILURE {}: {}", dir.display(), e.lines().next().unwrap_or(""));
+                eprintln!(
+                    "FAILURE {}: {}",
+                    dir.display(),
+                    e.lines().next().unwrap_or("")
+                );
                 return Ok(());
             }
             Err(format!("{e}\n(case folder kept: {})", dir.display()))
@@ -300,7 +309,14 @@ fn exercise_in(dir: &Path, scenario: &Path, tally: &Mutex<Tally>) -> Result<(), 
         return Err(format!("`check` wrote into its folder: {}", o.describe()));
     }
     if check == 0 {
-        if let Some(w) = non_finite_word(&o.stdout) {
+        // The title is the user's text; every other line is a figure.
+        let figures: String = o
+            .stdout
+            .lines()
+            .filter(|l| !l.starts_with("title"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        if let Some(w) = non_finite_word(&figures) {
             return Err(format!(
                 "`check` exit 0 prints a non-finite figure ({w}) instead of refusing the input: {}",
                 o.describe()
@@ -401,9 +417,9 @@ fn property(tag: &str, strategy: impl Strategy<Value = String>, cases: u32) -> (
     );
     match result {
         Ok(()) => (tally, cases),
-        Err(TestError::Fail(reason, text)) => panic!(
-            "{reason}\n=== scenario (minimal failing case) ===\n{text}\n=== end ==="
-        ),
+        Err(TestError::Fail(reason, text)) => {
+            panic!("{reason}\n=== scenario (minimal failing case) ===\n{text}\n=== end ===")
+        }
         Err(TestError::Abort(reason)) => panic!("aborted: {reason}"),
     }
 }
@@ -466,15 +482,66 @@ fn bound_work(text: String) -> String {
 
 /// Values of every kind that a key should not get, or only at its limits.
 const WEIRD: &[&str] = &[
-    "0", "-1", "0.0", "-0.0", "1", "2.5", "-2.5", "1e-300", "-1e-300", "1e300", "-1e300",
-    "5e-324", "1.7976931348623157e308", "inf", "-inf", "nan", "9223372036854775807",
-    "-9223372036854775808", "4294967296", "1000001", "17", "11", "\"\"", "\"A\"", "\"B\"",
-    "\"all\"", "\"1e-3\"", "\"SAC-4\"", "\"dynamic\"", "\"gravity\"", "\"clamped\"",
-    "\"a,b\\\"c\\nd\"", "true", "false", "[]", "[0]", "[0, 0]", "[0, 0, 0]", "[1, 2, 3, 4]",
-    "[\"x\", 0, 0]", "[nan, 0, 0]", "[0, inf, 0]", "[1e300, 1e300, 1e300]",
-    "[1e-300, 0, 0]", "[0, 0, -1e300]", "[[1, 2, 3]]", "[1, \"2\", 3]", "{}", "{ x = 1 }",
-    "1979-05-27T07:32:00Z", "07:32:00", "0x10", "0o7", "0b1", "[2, 3]", "[10, 10, 10]",
-    "[0, 11]", "[3, 0]", "[3, 3, 3, 3]", "[-1, 3]",
+    "0",
+    "-1",
+    "0.0",
+    "-0.0",
+    "1",
+    "2.5",
+    "-2.5",
+    "1e-300",
+    "-1e-300",
+    "1e300",
+    "-1e300",
+    "5e-324",
+    "1.7976931348623157e308",
+    "inf",
+    "-inf",
+    "nan",
+    "9223372036854775807",
+    "-9223372036854775808",
+    "4294967296",
+    "1000001",
+    "17",
+    "11",
+    "\"\"",
+    "\"A\"",
+    "\"B\"",
+    "\"all\"",
+    "\"1e-3\"",
+    "\"SAC-4\"",
+    "\"dynamic\"",
+    "\"gravity\"",
+    "\"clamped\"",
+    "\"a,b\\\"c\\nd\"",
+    "true",
+    "false",
+    "[]",
+    "[0]",
+    "[0, 0]",
+    "[0, 0, 0]",
+    "[1, 2, 3, 4]",
+    "[\"x\", 0, 0]",
+    "[nan, 0, 0]",
+    "[0, inf, 0]",
+    "[1e300, 1e300, 1e300]",
+    "[1e-300, 0, 0]",
+    "[0, 0, -1e300]",
+    "[[1, 2, 3]]",
+    "[1, \"2\", 3]",
+    "{}",
+    "{ x = 1 }",
+    "1979-05-27T07:32:00Z",
+    "07:32:00",
+    "0x10",
+    "0o7",
+    "0b1",
+    "[2, 3]",
+    "[10, 10, 10]",
+    "[0, 11]",
+    "[3, 0]",
+    "[3, 3, 3, 3]",
+    "[-1, 3]",
 ];
 
 fn weird() -> BoxedStrategy<String> {
@@ -485,7 +552,11 @@ fn f64_literal(v: f64) -> String {
     if v.is_nan() {
         "nan".into()
     } else if v.is_infinite() {
-        if v > 0.0 { "inf".into() } else { "-inf".into() }
+        if v > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        }
     } else {
         format!("{v:e}")
     }
@@ -512,7 +583,9 @@ fn sane_vector(components: &'static [&'static str]) -> BoxedStrategy<String> {
         .boxed()
 }
 
-const SMALL: &[&str] = &["0.0", "0.0", "0.0", "1.0", "-1.0", "0.5", "-9.81", "10.0", "-10.0", "2"];
+const SMALL: &[&str] = &[
+    "0.0", "0.0", "0.0", "1.0", "-1.0", "0.5", "-9.81", "10.0", "-10.0", "2",
+];
 
 /// How values are drawn at a given level of chaos `p` (the chance that a
 /// key is missing or gets a value from `WEIRD` or `wide_number`).
@@ -581,7 +654,9 @@ fn node(with_all: bool) -> BoxedStrategy<String> {
     if with_all {
         pick(&["\"A\"", "\"B\"", "0", "1", "2", "\"all\"", "\"all\""])
     } else {
-        pick(&["\"A\"", "\"B\"", "\"A\"", "\"B\"", "\"A\"", "\"B\"", "0", "1", "2"])
+        pick(&[
+            "\"A\"", "\"B\"", "\"A\"", "\"B\"", "\"A\"", "\"B\"", "0", "1", "2",
+        ])
     }
 }
 
@@ -656,7 +731,11 @@ fn initial_velocity(g: Gen) -> BoxedStrategy<Vec<Kv>> {
     (
         g.key("node", node(true)),
         g.optional("velocity", 0.9, sane_vector(SMALL)),
-        g.optional("angular_velocity", 0.3, sane_vector(&["0.0", "0.0", "1.0", "-3.0"])),
+        g.optional(
+            "angular_velocity",
+            0.3,
+            sane_vector(&["0.0", "0.0", "1.0", "-3.0"]),
+        ),
         g.optional("center", 0.2, sane_vector(&["0.0", "0.5", "-2.0"])),
         g.stray(),
         prop::bool::weighted(g.p),
@@ -664,7 +743,11 @@ fn initial_velocity(g: Gen) -> BoxedStrategy<Vec<Kv>> {
         .prop_map(|(n, v, w, c, stray, wild)| {
             // A rotation only with node = "all", unless chaos says otherwise.
             let all = n.1.as_deref() == Some("\"all\"");
-            let mut kv = if all || wild { vec![n, v, w, c] } else { vec![n, v] };
+            let mut kv = if all || wild {
+                vec![n, v, w, c]
+            } else {
+                vec![n, v]
+            };
             kv.extend(stray);
             kv
         })
@@ -674,12 +757,13 @@ fn initial_velocity(g: Gen) -> BoxedStrategy<Vec<Kv>> {
 fn analysis(g: Gen) -> BoxedStrategy<Vec<Kv>> {
     // A valid duration is a few steps; time_step and duration may still
     // each be replaced by anything.
-    let steps = (
-        select(&[1e-5, 5e-5, 1e-4, 1e-3, 1e-2][..]),
-        1u32..=10,
-    );
+    let steps = (select(&[1e-5, 5e-5, 1e-4, 1e-3, 1e-2][..]), 1u32..=10);
     (
-        g.optional("type", 0.7, pick(&["\"dynamic\"", "\"dynamic\"", "\"dynamic\"", "\"static\""])),
+        g.optional(
+            "type",
+            0.7,
+            pick(&["\"dynamic\"", "\"dynamic\"", "\"dynamic\"", "\"static\""]),
+        ),
         steps.prop_flat_map(move |(dt, k)| {
             (
                 g.key("time_step", Just(f64_literal(dt)).boxed()),
@@ -691,9 +775,21 @@ fn analysis(g: Gen) -> BoxedStrategy<Vec<Kv>> {
             g.optional(
                 "quadrature",
                 0.3,
-                pick(&["[3, 3]", "[5, 3]", "[2, 2]", "[1, 1]", "[5, 4, 3]", "[10, 10]", "[3, 10, 1]"]),
+                pick(&[
+                    "[3, 3]",
+                    "[5, 3]",
+                    "[2, 2]",
+                    "[1, 1]",
+                    "[5, 4, 3]",
+                    "[10, 10]",
+                    "[3, 10, 1]",
+                ]),
             ),
-            g.optional("solver", 0.3, pick(&["\"newton\"", "\"broyden\"", "\"modified-newton\""])),
+            g.optional(
+                "solver",
+                0.3,
+                pick(&["\"newton\"", "\"broyden\"", "\"modified-newton\""]),
+            ),
             g.optional("time_scheme", 0.3, pick(&["\"p2\"", "\"galerkin\""])),
             g.optional("tolerance", 0.3, pick(&["1e-10", "1e-8", "1e-6", "1e-14"])),
             g.optional("max_iterations", 0.3, pick(&["50", "1", "3", "200"])),
@@ -702,16 +798,22 @@ fn analysis(g: Gen) -> BoxedStrategy<Vec<Kv>> {
         (
             g.optional("curvature", 0.2, pick(&["\"paper\"", "\"exact\""])),
             g.optional("axial_strain", 0.2, pick(&["\"green\"", "\"engineering\""])),
-            g.optional("constraint_method", 0.3, pick(&["\"multiplier\"", "\"elimination\""])),
+            g.optional(
+                "constraint_method",
+                0.3,
+                pick(&["\"multiplier\"", "\"elimination\""]),
+            ),
             g.optional("planar_reduction", 0.3, pick(&["true", "false"])),
         ),
         g.stray(),
     )
-        .prop_map(|(kind, (dt, t), (l, q, s, ts, tol, it, ls), (c, ax, cm, pr), stray)| {
-            let mut kv = vec![kind, dt, t, l, q, s, ts, tol, it, ls, c, ax, cm, pr];
-            kv.extend(stray);
-            kv
-        })
+        .prop_map(
+            |(kind, (dt, t), (l, q, s, ts, tol, it, ls), (c, ax, cm, pr), stray)| {
+                let mut kv = vec![kind, dt, t, l, q, s, ts, tol, it, ls, c, ax, cm, pr];
+                kv.extend(stray);
+                kv
+            },
+        )
         .boxed()
 }
 
@@ -726,9 +828,18 @@ fn scenario_with(g: Gen) -> BoxedStrategy<String> {
     let title = g.optional(
         "title",
         0.5,
-        select(&["plain", "with, a comma", "quote \" and \\ backslash", "é ü 中", "", "line\nbreak"][..])
-            .prop_map(|s| toml::Value::String(s.to_string()).to_string())
-            .boxed(),
+        select(
+            &[
+                "plain",
+                "with, a comma",
+                "quote \" and \\ backslash",
+                "é ü 中",
+                "",
+                "line\nbreak",
+            ][..],
+        )
+        .prop_map(|s| toml::Value::String(s.to_string()).to_string())
+        .boxed(),
     );
     let cable = (
         g.key("length", pick(&["0.5", "1.0", "4.0", "2"])),
@@ -738,7 +849,13 @@ fn scenario_with(g: Gen) -> BoxedStrategy<String> {
         g.optional(
             "direction",
             0.4,
-            pick(&["[1.0, 0.0, 0.0]", "[0.0, 1.0, 0.0]", "[0.0, 0.0, 1.0]", "[1.0, 1.0, 0.0]", "[0.6, 0.0, 0.8]"]),
+            pick(&[
+                "[1.0, 0.0, 0.0]",
+                "[0.0, 1.0, 0.0]",
+                "[0.0, 0.0, 1.0]",
+                "[1.0, 1.0, 0.0]",
+                "[0.6, 0.0, 0.8]",
+            ]),
         ),
         g.stray(),
     )
@@ -768,11 +885,25 @@ fn scenario_with(g: Gen) -> BoxedStrategy<String> {
         prop::collection::vec(load(g), 0..=3),
         prop::collection::vec(initial_velocity(g), 0..=2),
         (section(g, 0.95), analysis(g)),
-        (section(g, 0.5), g.key("every", pick(&["1", "2", "3", "100"])), g.stray()),
+        (
+            section(g, 0.5),
+            g.key("every", pick(&["1", "2", "3", "100"])),
+            g.stray(),
+        ),
         g.stray(),
     )
         .prop_map(
-            move |(title, (has_cable, cable), (has_mat, mat), cons, loads, ivs, (has_an, an), (has_out, every, ostray), top)| {
+            move |(
+                title,
+                (has_cable, cable),
+                (has_mat, mat),
+                cons,
+                loads,
+                ivs,
+                (has_an, an),
+                (has_out, every, ostray),
+                top,
+            )| {
                 let mut s = String::new();
                 for (k, v) in [title].iter().chain(&top) {
                     if let Some(v) = v {
@@ -1045,7 +1176,10 @@ fn apply(text: &str, m: &Mutation) -> String {
             chars[k] = *c;
             chars.into_iter().collect()
         }
-        Mutation::Truncate(i) => text.chars().take(i.index(text.chars().count() + 1)).collect(),
+        Mutation::Truncate(i) => text
+            .chars()
+            .take(i.index(text.chars().count() + 1))
+            .collect(),
         Mutation::ScaleNumber(i, k) => {
             let spans = number_spans(text);
             if spans.is_empty() {
@@ -1101,8 +1235,96 @@ fn shipped_examples_shortened_pass_check_and_run_with_clean_results() {
     }
     let tally = tally.into_inner().unwrap();
     let n = shortened_examples().len();
-    assert_eq!(tally.check.get(&0), Some(&n), "check exits: {:?}", tally.check);
+    assert_eq!(
+        tally.check.get(&0),
+        Some(&n),
+        "check exits: {:?}",
+        tally.check
+    );
     assert_eq!(tally.run.get(&0), Some(&n), "run exits: {:?}", tally.run);
+}
+
+/// Minimal scenarios of what the generators found on the way (issue 11):
+/// they must keep the properties.
+const FINDINGS: &[(&str, &str)] = &[
+    (
+        "youngs_modulus 5e-324: check printed w_max NaN with no warning",
+        "[cable]\nlength = 1.0\nelements = 2\n[material]\nyoungs_modulus = 5e-324\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [analysis]\ntime_step = 1e-5\nduration = 2e-5\n",
+    ),
+    (
+        "length 2.8e18: check printed w_max NaN with no warning",
+        "[cable]\nlength = 2805586978562170655\nelements = 2\n[material]\n\
+         youngs_modulus = 3.4e9\ndensity = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [analysis]\ntime_step = 1e-5\nduration = 2e-5\n",
+    ),
+    (
+        "static, length 1e-248: exit 1, non-finite result at t = 0",
+        "[cable]\nlength = 1e-248\nelements = 2\n[material]\nyoungs_modulus = 3.4e9\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [[constraints]]\ntype = \"clamped\"\nnode = \"A\"\n\
+         [[loads]]\ntype = \"end-moment\"\nnode = \"B\"\nmoment = [0.0, 0.0, 2.67e-3]\n\
+         [analysis]\ntype = \"static\"\nload_steps = 2\n",
+    ),
+    (
+        "initial velocity 1e301: exit 1, non-finite result at t = 0",
+        "[cable]\nlength = 1.0\nelements = 2\n[material]\nyoungs_modulus = 3.4e9\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [[initial_velocity]]\nnode = \"A\"\nvelocity = [0.0, 1e301, 0.0]\n\
+         [analysis]\ntime_step = 1e-5\nduration = 2e-5\n",
+    ),
+    (
+        "prescribed frequency 1e300: exit 1, non-finite result at t = 0",
+        "[cable]\nlength = 1.0\nelements = 2\n[material]\nyoungs_modulus = 3.4e9\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [[constraints]]\ntype = \"prescribed\"\nnode = \"B\"\n\
+         amplitude = [0, 0.01, 0]\nfrequency = 1e300\n\
+         [analysis]\ntime_step = 1e-5\nduration = 2e-5\n",
+    ),
+    (
+        "static, length 1e300 and force 1e300: exit 1, non-finite result at t = 0",
+        "[cable]\nlength = 1e300\nelements = 2\n[material]\nyoungs_modulus = 3.4e9\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [[constraints]]\ntype = \"clamped\"\nnode = \"A\"\n\
+         [[loads]]\ntype = \"point-force\"\nnode = \"B\"\nforce = [0, -1e300, 0]\n\
+         [analysis]\ntype = \"static\"\nload_steps = 2\n",
+    ),
+    (
+        "4e10 steps: ran until killed",
+        "[cable]\nlength = 1.0\nelements = 2\n[material]\nyoungs_modulus = 3.4e9\n\
+         density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n\
+         [analysis]\ntime_step = 5e-5\nduration = 2e6\n",
+    ),
+];
+
+#[test]
+fn findings_of_the_generators_never_panic_and_exit_0_2_or_3() {
+    let tally = Mutex::new(Tally::default());
+    for (what, text) in FINDINGS {
+        if let Err(e) = exercise("finding", text, &tally) {
+            panic!("{what}: {e}\n=== scenario ===\n{text}\n=== end ===");
+        }
+    }
+}
+
+/// Found by the random generator (seed 1): a one-step Galerkin run with
+/// 2-point rules and gravity out of the plane never ends: Newton's residual
+/// is below the tolerance but the confirming chord step's increment is not,
+/// and the chord steps repeat without counting against max_iterations
+/// (crates/stancf/src/solver.rs, `newton`). Ignored until that is fixed.
+#[test]
+#[ignore = "Newton's chord confirmation loops for ever (solver.rs); see the report of issue 11"]
+fn a_newton_step_that_cannot_confirm_its_convergence_ends() {
+    let text = "[cable]\nlength = 2\nelements = 2\n[material]\nyoungs_modulus = 0.91e6\n\
+                density = 1202.0\narea = 1e-4\nsecond_moment = 9.15e-12\n\
+                [[loads]]\ntype = \"gravity\"\nacceleration = [0.0, 0.0, 1.0]\n\
+                [analysis]\ntime_step = 1e-3\nduration = 1e-3\n\
+                time_scheme = \"galerkin\"\nquadrature = [2, 2]\n";
+    let tally = Mutex::new(Tally::default());
+    if let Err(e) = exercise("chord", text, &tally) {
+        panic!("{e}\n=== scenario ===\n{text}\n=== end ===");
+    }
 }
 
 #[test]
@@ -1110,8 +1332,8 @@ fn random_scenarios_never_panic_and_exit_0_2_or_3() {
     let (tally, cases) = property("random", random_scenario(), CASES);
     let solved: usize = [0, 3].iter().filter_map(|c| tally.run.get(c)).sum();
     assert!(
-        solved * 4 >= cases,
-        "fewer than a quarter of the random scenarios reached the solver: {tally:?}"
+        solved * 8 >= cases,
+        "fewer than an eighth of the random scenarios reached the solver: {tally:?}"
     );
 }
 
@@ -1120,8 +1342,8 @@ fn mutated_examples_never_panic_and_exit_0_2_or_3() {
     let (tally, cases) = property("mutated", mutated_example(), CASES);
     let solved: usize = [0, 3].iter().filter_map(|c| tally.run.get(c)).sum();
     assert!(
-        solved * 4 >= cases,
-        "fewer than a quarter of the mutated examples reached the solver: {tally:?}"
+        solved * 8 >= cases,
+        "fewer than an eighth of the mutated examples reached the solver: {tally:?}"
     );
 }
 
@@ -1131,9 +1353,18 @@ fn mutations_change_the_text_they_aim_at() {
     let t = "a = 8\nb = [-2.0, 1.25e-13]\nc = \"SAC-2\"\n";
     assert_eq!(number_spans(t).len(), 3, "{:?}", number_spans(t));
     let first = Ix(0);
-    assert_eq!(apply(t, &Mutation::ScaleNumber(first, 2)), t.replace("= 8", "= 800"));
-    assert_eq!(apply(t, &Mutation::NegateNumber(first)), t.replace("= 8", "= -8"));
-    assert_eq!(apply(t, &Mutation::DeleteLine(first)), "b = [-2.0, 1.25e-13]\nc = \"SAC-2\"\n");
+    assert_eq!(
+        apply(t, &Mutation::ScaleNumber(first, 2)),
+        t.replace("= 8", "= 800")
+    );
+    assert_eq!(
+        apply(t, &Mutation::NegateNumber(first)),
+        t.replace("= 8", "= -8")
+    );
+    assert_eq!(
+        apply(t, &Mutation::DeleteLine(first)),
+        "b = [-2.0, 1.25e-13]\nc = \"SAC-2\"\n"
+    );
     let long = "[analysis]\ntime_step = 1e-5\nduration = 1.0\n".to_string();
     let bounded: toml::Table = toml::from_str(&bound_work(long)).unwrap();
     assert_eq!(bounded["analysis"]["duration"].as_float(), Some(8e-5));

@@ -70,9 +70,8 @@ fn staging_with_history(target: &Path, bytes: u64) -> Option<PathBuf> {
     std::fs::read_dir(parent).ok()?.flatten().find_map(|e| {
         let name = e.file_name().to_string_lossy().into_owned();
         let partial = e.path().join("history.csv.partial");
-        (name.starts_with(&prefix)
-            && std::fs::metadata(&partial).is_ok_and(|m| m.len() >= bytes))
-        .then(|| e.path())
+        (name.starts_with(&prefix) && std::fs::metadata(&partial).is_ok_and(|m| m.len() >= bytes))
+            .then(|| e.path())
     })
 }
 
@@ -125,14 +124,14 @@ fn kill_9_at_any_moment_leaves_the_old_or_the_new_complete_set() {
     let references = [d.join("ref-a"), d.join("ref-b")];
     let start = Instant::now();
     for (sc, r) in [&a, &b].iter().zip(&references) {
-        let o = stancf(&["run", "--quiet", sc.to_str().unwrap(), "--out", r.to_str().unwrap()]);
+        let o = run_quiet(&sc, &r, &[]);
         assert!(o.status.success(), "{:?}", text(&o));
     }
     // The span the kills are spread over: a little more than one run.
     let span = start.elapsed().as_secs_f64() * 0.5 * 1.3;
     let root = d.join("k");
     let target = root.join("case");
-    let o = stancf(&["run", "--quiet", a.to_str().unwrap(), "--out", target.to_str().unwrap()]);
+    let o = run_quiet(&a, &target, &[]);
     assert!(o.status.success());
     // A fixed pseudo-random sequence of moments (the claim holds at every
     // moment, so which ones the machine's speed makes them is immaterial).
@@ -150,27 +149,36 @@ fn kill_9_at_any_moment_leaves_the_old_or_the_new_complete_set() {
         seen[assert_one_complete_set(&target, &references)] += 1;
     }
     // What killed runs left beside the target goes with the next run.
-    let o = stancf(&["run", "--quiet", a.to_str().unwrap(), "--out", target.to_str().unwrap()]);
+    let o = run_quiet(&a, &target, &[]);
     assert!(o.status.success(), "{:?}", text(&o));
     assert_eq!(names(&root), ["case"]);
     assert_eq!(assert_one_complete_set(&target, &references), 0);
-    eprintln!("after the 50 kills the folder held set A {} times, set B {}", seen[0], seen[1]);
+    eprintln!(
+        "after the 50 kills the folder held set A {} times, set B {}",
+        seen[0], seen[1]
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }
 
 #[test]
 fn a_second_run_into_a_folder_in_use_is_refused_and_the_first_keeps_its_results() {
     let d = scratch("concurrent");
-    // Long enough to be running for as long as the test needs it; it is
-    // ended by SIGTERM, which must leave its results valid.
-    let long = write_scenario(&d, "long.toml", &pendulum("first", 1e-4, 1e3, 10));
+    // A million steps, long enough to be running for as long as the test
+    // needs it (and within the bounds on work); it is ended by SIGTERM,
+    // which must leave its results valid.
+    let long = write_scenario(&d, "long.toml", &pendulum("first", 1e-4, 1e2, 10));
     let short = write_scenario(&d, "short.toml", &pendulum("second", 1e-4, 0.01, 1));
     let target = d.join("case");
     let mut first = spawn_run(&long, &target);
     wait_for("the first run to step", || {
         staging_with_history(&target, 4096).is_some()
     });
-    let o = stancf(&["run", short.to_str().unwrap(), "--out", target.to_str().unwrap()]);
+    let o = stancf(&[
+        "run",
+        short.to_str().unwrap(),
+        "--out",
+        target.to_str().unwrap(),
+    ]);
     let (_, err) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains(target.to_str().unwrap()), "{err}");
@@ -189,14 +197,21 @@ fn a_second_run_into_a_folder_in_use_is_refused_and_the_first_keeps_its_results(
 #[test]
 fn ctrl_c_mid_run_writes_a_valid_partial_set_marked_interrupted() {
     let d = scratch("sigint");
-    let long = write_scenario(&d, "long.toml", &pendulum("long", 1e-4, 1e3, 7));
+    let long = write_scenario(&d, "long.toml", &pendulum("long", 1e-4, 1e2, 7));
     let target = d.join("case");
     // An older complete set, replaced by the interrupted run's.
     let old = write_scenario(&d, "old.toml", &pendulum("old", 1e-4, 0.01, 1));
-    let o = stancf(&["run", old.to_str().unwrap(), "--out", target.to_str().unwrap()]);
+    let o = stancf(&[
+        "run",
+        old.to_str().unwrap(),
+        "--out",
+        target.to_str().unwrap(),
+    ]);
     assert!(o.status.success());
-    let mut child = spawn_run(&long, &target);
-    wait_for("the run to step", || staging_with_history(&target, 4096).is_some());
+    let child = spawn_run(&long, &target);
+    wait_for("the run to step", || {
+        staging_with_history(&target, 4096).is_some()
+    });
     signal(&child, libc::SIGINT);
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
@@ -207,11 +222,14 @@ fn ctrl_c_mid_run_writes_a_valid_partial_set_marked_interrupted() {
     assert_eq!(summary["interrupted"], true);
     assert_eq!(summary["converged"], true);
     let t = summary["time"].as_f64().unwrap();
-    assert!(t > 0.0 && t < 1e3, "{t}");
+    assert!(t > 0.0 && t < 1e2, "{t}");
     // Every converged step is kept: the last row is the last step even
     // where output.every = 7 skips it.
     let steps = summary["steps"].as_u64().unwrap();
-    assert!((t - steps as f64 * 1e-4).abs() < 1e-9, "{t} vs {steps} steps");
+    assert!(
+        (t - steps as f64 * 1e-4).abs() < 1e-9,
+        "{t} vs {steps} steps"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }
 
@@ -221,14 +239,19 @@ fn a_new_run_leaves_nothing_of_an_older_one_in_its_folder() {
     let target = d.join("case");
     let out = target.to_str().unwrap();
     let pinned = write_scenario(&d, "pinned.toml", &pendulum("pinned", 1e-4, 0.01, 1));
-    let o = stancf(&["run", "--quiet", "--vtk", pinned.to_str().unwrap(), "--out", out]);
+    let o = stancf(&[
+        "run",
+        "--quiet",
+        "--vtk",
+        pinned.to_str().unwrap(),
+        "--out",
+        out,
+    ]);
     assert!(o.status.success(), "{:?}", text(&o));
     assert!(target.join("reactions.csv").exists() && target.join("vtk").is_dir());
     // The same cable without its pin: no reactions, no ParaView files.
-    let free = pendulum("free", 1e-4, 0.01, 1).replace(
-        "[[constraints]]\ntype = \"pinned\"\nnode = \"A\"\n",
-        "",
-    );
+    let free = pendulum("free", 1e-4, 0.01, 1)
+        .replace("[[constraints]]\ntype = \"pinned\"\nnode = \"A\"\n", "");
     let free = write_scenario(&d, "free.toml", &free);
     let o = stancf(&["run", "--quiet", free.to_str().unwrap(), "--out", out]);
     assert!(o.status.success(), "{:?}", text(&o));
@@ -252,7 +275,10 @@ fn a_new_run_leaves_nothing_of_an_older_one_in_its_folder() {
     let listing = names(&target);
     assert!(listing.iter().any(|n| n == "shapes.png"), "{listing:?}");
     for stale in ["solver.csv", "convergence.csv", "convergence.png"] {
-        assert!(!listing.iter().any(|n| n == stale), "{stale} in {listing:?}");
+        assert!(
+            !listing.iter().any(|n| n == stale),
+            "{stale} in {listing:?}"
+        );
     }
     assert_eq!(names(&d), ["case", "free.toml", "pinned.toml"]);
     std::fs::remove_dir_all(&d).unwrap();
@@ -262,7 +288,11 @@ fn a_new_run_leaves_nothing_of_an_older_one_in_its_folder() {
 fn the_default_output_folder_is_always_a_folder_of_its_own_under_out() {
     let d = scratch("default-out");
     let sc = pendulum("x", 1e-4, 1e-3, 1);
-    for (file, folder) in [("..toml", "run"), (".hidden.toml", "hidden"), ("a b;c.toml", "a_b_c")] {
+    for (file, folder) in [
+        ("..toml", "run"),
+        (".hidden.toml", "hidden"),
+        ("a b;c.toml", "a_b_c"),
+    ] {
         write_scenario(&d, file, &sc);
         let o = Command::new(BIN)
             .current_dir(&d)
@@ -270,7 +300,10 @@ fn the_default_output_folder_is_always_a_folder_of_its_own_under_out() {
             .output()
             .unwrap();
         assert!(o.status.success(), "{file}: {:?}", text(&o));
-        assert!(d.join("out").join(folder).join("summary.json").is_file(), "{file}");
+        assert!(
+            d.join("out").join(folder).join("summary.json").is_file(),
+            "{file}"
+        );
     }
     assert_eq!(names(&d), ["..toml", ".hidden.toml", "a b;c.toml", "out"]);
     assert_eq!(names(&d.join("out")), ["a_b_c", "hidden", "run"]);
@@ -294,7 +327,10 @@ fn an_output_folder_of_a_users_files_or_a_dot_is_refused_untouched() {
         assert_eq!(o.status.code(), Some(2), "{out}: {err}");
         assert!(err.contains(out), "{err}");
     }
-    assert_eq!(std::fs::read_to_string(mine.join("notes.txt")).unwrap(), "precious");
+    assert_eq!(
+        std::fs::read_to_string(mine.join("notes.txt")).unwrap(),
+        "precious"
+    );
     assert_eq!(names(&d), ["mine", "p.toml"]);
     assert_eq!(names(&mine), ["notes.txt"]);
     std::fs::remove_dir_all(&d).unwrap();
@@ -333,7 +369,10 @@ fn a_full_disk_leaves_the_old_set_and_frees_what_it_wrote() {
     let o = cmd.output().unwrap();
     let (_, err) = text(&o);
     assert_eq!(o.status.code(), Some(1), "{err}");
-    assert!(err.contains("cannot write results") && err.contains(out), "{err}");
+    assert!(
+        err.contains("cannot write results") && err.contains(out),
+        "{err}"
+    );
     let after: Vec<(String, Vec<u8>)> = names(&target)
         .into_iter()
         .map(|n| (n.clone(), std::fs::read(target.join(&n)).unwrap()))

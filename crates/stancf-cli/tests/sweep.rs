@@ -447,7 +447,10 @@ fn a_new_sweep_replaces_an_earlier_larger_one_whole() {
     };
     let o = run("1e-4,2e-4,5e-4");
     assert!(o.status.success(), "{:?}", text(&o));
-    assert_eq!(names(&out), ["run_0000", "run_0001", "run_0002", "sweep.csv"]);
+    assert_eq!(
+        names(&out),
+        ["run_0000", "run_0001", "run_0002", "sweep.csv"]
+    );
     let o = run("1e-4");
     assert!(o.status.success(), "{:?}", text(&o));
     // No run folder of the earlier sweep is left beside the new table.
@@ -475,9 +478,11 @@ fn ctrl_c_stops_a_sweep_and_keeps_every_row_with_its_status() {
     // Wait until run 0 is stepping (its staging folder has a history).
     let start = std::time::Instant::now();
     let stepping = || {
-        let Some(staging) = std::fs::read_dir(&d).unwrap().flatten().find(|e| {
-            e.file_name().to_string_lossy().starts_with(".sw.stancf-")
-        }) else {
+        let Some(staging) = std::fs::read_dir(&d)
+            .unwrap()
+            .flatten()
+            .find(|e| e.file_name().to_string_lossy().starts_with(".sw.stancf-"))
+        else {
             return false;
         };
         std::fs::read_dir(staging.path()).is_ok_and(|entries| {
@@ -501,10 +506,9 @@ fn ctrl_c_stops_a_sweep_and_keeps_every_row_with_its_status() {
     let statuses: Vec<&str> = rows.iter().map(|r| r[status].as_str()).collect();
     assert_eq!(statuses, ["interrupted", "not run", "not run"]);
     // The interrupted run's results are there, valid up to its last step.
-    let summary: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(out.join("run_0000/summary.json")).unwrap(),
-    )
-    .unwrap();
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("run_0000/summary.json")).unwrap())
+            .unwrap();
     assert_eq!(summary["interrupted"], true);
     assert_eq!(names(&out), ["run_0000", "sweep.csv"]);
     std::fs::remove_dir_all(&d).unwrap();

@@ -114,8 +114,15 @@ fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<S
 /// are kept); a solver failure raises RunFailed (the files up to the last
 /// converged step are kept).
 #[pyfunction]
-#[pyo3(signature = (text, name, out, progress = false))]
-fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> PyResult<()> {
+#[pyo3(signature = (text, name, out, progress = false, allow_large = false))]
+fn run(
+    py: Python<'_>,
+    text: &str,
+    name: &str,
+    out: PathBuf,
+    progress: bool,
+    allow_large: bool,
+) -> PyResult<()> {
     // The run validates the text and writes it, as scenario.toml, with its
     // results into `out`, replaced whole (one transaction).
     // Python's signal handlers run only with the GIL: take it for a
@@ -132,6 +139,7 @@ fn run(py: Python<'_>, text: &str, name: &str, out: PathBuf, progress: bool) -> 
     let opts = RunOptions {
         out: Some(out.clone()),
         quiet: !progress,
+        allow_large,
         cancel: Some(cancel),
         ..RunOptions::default()
     };

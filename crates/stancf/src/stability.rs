@@ -15,7 +15,10 @@
 //! W_crit from the scheme applied to the oscillator (the time basis, the
 //! quadrature and the layer assembly of [`crate::assembly`]), and w_max as
 //! the largest generalized eigenvalue of the tangent stiffness and the mass
-//! matrix of the actual mesh, by Lanczos iteration.
+//! matrix of the actual mesh, by Lanczos iteration (work and memory linear
+//! in the mesh). The Galerkin step has no stability limit, but a range of
+//! w_max dt beyond which its results are not meaningful
+//! ([`GALERKIN_ACCURATE_W_DT`]).
 
 use crate::band::BandLu;
 use crate::element::TimeSlab;
@@ -122,7 +125,11 @@ fn tridiagonal_count_below(alpha: &[f64], beta: &[f64], s: f64) -> usize {
     let mut c = 0;
     let mut d = 1.0;
     for i in 0..alpha.len() {
-        let b2 = if i > 0 { beta[i - 1] * beta[i - 1] } else { 0.0 };
+        let b2 = if i > 0 {
+            beta[i - 1] * beta[i - 1]
+        } else {
+            0.0
+        };
         d = alpha[i] - s - if i > 0 { b2 / d } else { 0.0 };
         if d == 0.0 {
             d = -f64::EPSILON * (s.abs() + 1.0);
@@ -164,7 +171,12 @@ fn tridiagonal_max_eigenvalue(alpha: &[f64], beta: &[f64]) -> f64 {
 /// largest eigenvalue `theta`: two steps of inverse iteration with the
 /// shift sigma just above theta, where T - sigma I is negative definite, so
 /// its LDL^T factors need no pivoting.
-fn tridiagonal_top_vector_tail(alpha: &[f64], beta: &[f64], theta: f64, work: &mut Vec<f64>) -> f64 {
+fn tridiagonal_top_vector_tail(
+    alpha: &[f64],
+    beta: &[f64],
+    theta: f64,
+    work: &mut Vec<f64>,
+) -> f64 {
     let n = alpha.len();
     let scale = alpha
         .iter()
@@ -488,13 +500,13 @@ pub fn galerkin_accurate_step(w_max: f64) -> f64 {
         return s;
     }
     let unit = 10f64.powi(s.log10().floor() as i32 - 3);
-    let rounded = (s / unit).floor() * unit;
-    // (s / unit) may round up to the next integer.
-    if rounded > s {
-        rounded - unit
-    } else {
-        rounded
+    let mut digits = (s / unit).floor();
+    // With a margin of 1e-12 for the rounding of digits * unit, and of the
+    // decimal as printed and read back.
+    while digits * unit * w_max > GALERKIN_ACCURATE_W_DT * (1.0 - 1e-12) {
+        digits -= 1.0;
     }
+    digits * unit
 }
 
 /// Largest stable P2 step of the model at coordinates `e` for this time
@@ -541,6 +553,23 @@ mod tests {
         assert!((w2 / 2.0 - 1.571).abs() < 1e-3, "{w2}");
         let w3 = p2_critical_w_dt(&rule, 3).unwrap();
         assert!((w3 / 3.0 - 1.048).abs() < 1e-3, "{w3}");
+    }
+
+    /// The suggested Galerkin step keeps w_max dt within the limit, also as
+    /// printed with four digits, and loses at most two units of the fourth
+    /// digit (rounding down, and one more at a tie with the limit).
+    #[test]
+    fn galerkin_accurate_step_is_within_the_limit() {
+        // The paper's 8-element PVC mesh: 31.62 / 2.998049e4 = 1.05478e-3 s.
+        assert_eq!(galerkin_accurate_step(2.998049e4), 1.054e-3);
+        for k in 0..2000 {
+            let w = 10f64.powf(-3.0 + 0.01 * k as f64);
+            let s = galerkin_accurate_step(w);
+            assert!(w * s <= GALERKIN_ACCURATE_W_DT, "{w}: {s}");
+            assert!(w * s > GALERKIN_ACCURATE_W_DT * (1.0 - 2e-3), "{w}: {s}");
+            let shown: f64 = format!("{s:.4e}").parse().unwrap();
+            assert!(w * shown <= GALERKIN_ACCURATE_W_DT, "{w}: {shown}");
+        }
     }
 
     /// x'' + x = 0, x(0) = 1, to t = 1 with steps of 1/8: the errors the

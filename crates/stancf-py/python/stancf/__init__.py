@@ -169,13 +169,16 @@ class Result:
             len(self.t), self.t[-1] if len(self.t) else 0.0, self.directory)
 
 
-def run(scenario, out=None, progress=False):
+def run(scenario, out=None, progress=False, allow_large=False):
     """Runs a scenario; returns a :class:`Result`.
 
     `out`: the folder for the result files (default: a temporary folder
     that lives as long as the result). The solver runs without the GIL;
     Ctrl-C stops it after the current step (KeyboardInterrupt). A solver
-    failure raises :class:`SolverError` with the partial result.
+    failure raises :class:`SolverError` with the partial result. `out` is
+    replaced whole when the run ends (the command line's result folders).
+    A run above 1e8 steps or about 4 GB of result files is refused
+    (:class:`ScenarioError`) unless `allow_large` is true.
     """
     if not isinstance(scenario, Scenario):
         scenario = Scenario.from_file(scenario)
@@ -184,7 +187,7 @@ def run(scenario, out=None, progress=False):
         keep = tempfile.TemporaryDirectory(prefix="stancf-")
         out = keep.name
     try:
-        _stancf.run(scenario.text, scenario.name, str(out), progress)
+        _stancf.run(scenario.text, scenario.name, str(out), progress, allow_large)
     except _stancf.RunFailed as e:
         partial = Result(out, keep)
         failure = partial.summary.get("failure") or {}
