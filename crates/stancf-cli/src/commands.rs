@@ -225,7 +225,7 @@ pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
 /// interrupted; an invalid scenario or a write error leaves it untouched.
 pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
     let (sc, model, state) = load_text(text, path)?;
-    crate::check::admit(path, &sc, &opts)?;
+    crate::work_bounds::admit(path, &sc, &opts)?;
     // Everything that can refuse the input is decided before anything is
     // written.
     let derived = match sc.analysis.kind {

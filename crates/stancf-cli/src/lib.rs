@@ -6,6 +6,7 @@
 pub mod check;
 pub mod commands;
 pub mod figures;
+pub mod input_scales;
 pub mod output;
 pub mod plot;
 pub mod progress;
@@ -16,6 +17,7 @@ pub mod scenario;
 pub mod signals;
 pub mod sweep;
 pub mod vtk;
+pub mod work_bounds;
 pub mod writers;
 
 /// How a command ended.

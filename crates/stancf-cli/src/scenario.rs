@@ -878,7 +878,7 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
                          (a run is refused above {:e} steps anyway, see `stancf check`)",
                         Sig(steps),
                         MAX_COUNTABLE_STEPS,
-                        crate::check::MAX_STEPS as f64
+                        crate::work_bounds::MAX_STEPS as f64
                     ),
                 ));
             }

@@ -1312,9 +1312,9 @@ fn findings_of_the_generators_never_panic_and_exit_0_2_or_3() {
 /// 2-point rules and gravity out of the plane never ends: Newton's residual
 /// is below the tolerance but the confirming chord step's increment is not,
 /// and the chord steps repeat without counting against max_iterations
-/// (crates/stancf/src/solver.rs, `newton`). Ignored until that is fixed.
+/// (crates/stancf/src/solver.rs, `newton`); they now count against the
+/// iteration limit.
 #[test]
-#[ignore = "Newton's chord confirmation loops for ever (solver.rs); see the report of issue 11"]
 fn a_newton_step_that_cannot_confirm_its_convergence_ends() {
     let text = "[cable]\nlength = 2\nelements = 2\n[material]\nyoungs_modulus = 0.91e6\n\
                 density = 1202.0\narea = 1e-4\nsecond_moment = 9.15e-12\n\

@@ -124,7 +124,7 @@ fn kill_9_at_any_moment_leaves_the_old_or_the_new_complete_set() {
     let references = [d.join("ref-a"), d.join("ref-b")];
     let start = Instant::now();
     for (sc, r) in [&a, &b].iter().zip(&references) {
-        let o = run_quiet(&sc, &r, &[]);
+        let o = run_quiet(sc, r, &[]);
         assert!(o.status.success(), "{:?}", text(&o));
     }
     // The span the kills are spread over: a little more than one run.

@@ -184,7 +184,7 @@ impl BandLu {
             }
             let l = &*l;
             for c in (j + 1)..=ju {
-                let base = (c - j - 1) * ld + diag - c + j;
+                let base = (c - j - 1) * ld + diag + j - c;
                 let a = right[base];
                 if a != 0.0 {
                     let target = &mut right[base + 1..base + 1 + km];

@@ -385,6 +385,12 @@ pub fn newton<S: NonlinearSystem>(
             if report.increment <= tol {
                 return Ok(report);
             }
+            // Chord steps count against the iteration limit (one beyond it
+            // to confirm the last Newton update): where round-off keeps the
+            // increment above the tolerance, they would go on for ever.
+            if report.iterations > settings.max_iterations {
+                return fail(FailureKind::NotConverged, report);
+            }
             // Confirm with a chord step on the factors in hand.
             let t0 = now(clock);
             ws.dx.copy_from_slice(&ws.residual);
@@ -551,6 +557,55 @@ mod tests {
         let err = newton(&mut sys, &mut x, &s, &mut ws, None).unwrap_err();
         assert_eq!(err.kind, FailureKind::NotConverged);
         assert_eq!(err.report.factorizations, 3);
+    }
+
+    /// A residual with a noise floor above what the increment test can
+    /// see through: r = x - 1 + (-1)^k 1e-14 at the k-th evaluation, with
+    /// increments weighted 1e6. The residual drops below the tolerance at
+    /// once, but no increment ever does (it is at least 2e-14 x 1e6 = 2e-8).
+    struct NoisyFloor {
+        evaluations: usize,
+    }
+
+    impl NonlinearSystem for NoisyFloor {
+        fn evaluate(&mut self, x: &[f64], r: &mut [f64], jac: Option<&mut BandMatrix>) {
+            self.evaluations += 1;
+            let noise = if self.evaluations.is_multiple_of(2) {
+                1e-14
+            } else {
+                -1e-14
+            };
+            r[0] = x[0] - 1.0 + noise;
+            if let Some(j) = jac {
+                j.clear();
+                j.add(0, 0, 1.0);
+            }
+        }
+        fn residual_norm(&self, r: &[f64]) -> f64 {
+            r[0].abs()
+        }
+        fn increment_norm(&self, dx: &[f64]) -> f64 {
+            1e6 * dx[0].abs()
+        }
+    }
+
+    /// Issue 11 (found by the property tests): Newton's confirming chord
+    /// steps used to repeat for ever when round-off kept the increment above
+    /// the tolerance; they count against the iteration limit (plus one).
+    #[test]
+    fn newton_ends_when_round_off_keeps_the_increment_above_the_tolerance() {
+        let settings = NewtonSettings {
+            tolerance: 1e-10,
+            max_iterations: 5,
+            method: SolverMethod::Newton,
+        };
+        let mut sys = NoisyFloor { evaluations: 0 };
+        let mut x = [0.0];
+        let mut ws = NewtonWorkspace::new(1, 0, 0, 10);
+        let err = newton(&mut sys, &mut x, &settings, &mut ws, None).unwrap_err();
+        assert_eq!(err.kind, FailureKind::NotConverged);
+        assert_eq!(err.report.iterations, settings.max_iterations + 1);
+        assert!((x[0] - 1.0).abs() < 1e-13);
     }
 
     /// R(x) = A x - b with A = diag(1e-3, 1): a guess 1e-8 off in the first

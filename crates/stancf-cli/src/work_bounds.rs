@@ -1,0 +1,199 @@
+//! The bounds on a run's work: at most [`MAX_STEPS`] steps and about
+//! [`MAX_RESULT_BYTES`] of result files, estimated from the steps,
+//! `output.every` and the mesh before anything runs; `run` refuses a run
+//! beyond them unless given `--allow-large`, and `check` warns.
+
+use crate::scenario::{AnalysisKind, Scenario};
+use crate::Failure;
+use stancf::error::Sig;
+use std::path::Path;
+
+/// A run is refused above this many steps unless `--allow-large` is given
+/// (`check` warns).
+pub const MAX_STEPS: usize = 100_000_000;
+
+/// A run is refused when its result files would exceed this many bytes
+/// (estimated from the steps, `output.every` and the mesh) unless
+/// `--allow-large` is given (`check` warns).
+pub const MAX_RESULT_BYTES: f64 = 4e9;
+
+/// How much a run would do and write.
+pub(crate) struct Size {
+    /// Steps (dynamic) or load steps (static).
+    pub(crate) steps: f64,
+    /// Rows written (one per written step).
+    pub(crate) written: f64,
+    /// Estimated bytes of the result files.
+    pub(crate) bytes: f64,
+}
+
+/// Bytes per step of solver.csv and convergence.csv (dynamic runs), and
+/// per written row of history.csv, per node of nodes.csv, per sample of
+/// stress.csv, per constrained node of reactions.csv and per element of a
+/// `--vtk` file: measured on the examples, rounded up.
+const BYTES_PER_STEP: f64 = 250.0;
+const BYTES_PER_HISTORY_ROW: f64 = 150.0;
+const BYTES_PER_NODE_ROW: f64 = 120.0;
+const BYTES_PER_STRESS_ROW: f64 = 75.0;
+const BYTES_PER_REACTION_ROW: f64 = 95.0;
+const BYTES_PER_VTK_ELEMENT: f64 = 2700.0;
+
+/// The size of a run of `sc` (with `--vtk` when `vtk`).
+pub(crate) fn size(sc: &Scenario, vtk: bool) -> Size {
+    let a = &sc.analysis;
+    let (steps, per_step) = match a.kind {
+        AnalysisKind::Dynamic => (
+            (a.duration / a.time_step - 1e-9).ceil().max(1.0),
+            BYTES_PER_STEP,
+        ),
+        AnalysisKind::Static => (a.load_steps as f64, 0.0),
+    };
+    // Every k-th step, the first row at t = 0 and the last step (a static
+    // run writes every load step).
+    let written = match a.kind {
+        AnalysisKind::Dynamic => (steps / sc.output_every as f64).floor() + 2.0,
+        AnalysisKind::Static => steps + 1.0,
+    };
+    let elements = sc.cable.elements as f64;
+    let row = BYTES_PER_HISTORY_ROW
+        + BYTES_PER_NODE_ROW * (elements + 1.0)
+        + BYTES_PER_STRESS_ROW * 5.0 * elements
+        + BYTES_PER_REACTION_ROW * sc.constraints.len() as f64
+        + if vtk {
+            BYTES_PER_VTK_ELEMENT * elements
+        } else {
+            0.0
+        };
+    Size {
+        steps,
+        written,
+        bytes: steps * per_step + written * row,
+    }
+}
+
+/// Bytes in words: "3.2 GB", "850 MB", "12 kB".
+pub(crate) fn bytes_text(b: f64) -> String {
+    let units = [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")];
+    for (scale, unit) in units {
+        if b >= scale {
+            return format!("{} {unit}", Sig((b / scale * 10.0).round() / 10.0));
+        }
+    }
+    format!("{} bytes", b.round())
+}
+
+/// Why a run of this size is refused without `--allow-large`: the keys
+/// that set its size and what is exceeded; `None` within the bounds.
+pub(crate) fn size_problem(sc: &Scenario, size: &Size) -> Option<(String, String)> {
+    let dynamic = sc.analysis.kind == AnalysisKind::Dynamic;
+    let steps_key = if dynamic {
+        "analysis.duration, analysis.time_step"
+    } else {
+        "analysis.load_steps"
+    };
+    let mut keys = Vec::new();
+    let mut what = Vec::new();
+    if size.steps > MAX_STEPS as f64 {
+        keys.push(steps_key.to_string());
+        what.push(format!(
+            "{} steps (the bound is {:e})",
+            Sig(size.steps),
+            MAX_STEPS as f64
+        ));
+    }
+    if size.bytes > MAX_RESULT_BYTES {
+        if keys.is_empty() {
+            keys.push(steps_key.to_string());
+        }
+        keys.push("output.every, cable.elements".to_string());
+        what.push(format!(
+            "about {} of result files ({} written steps; the bound is {})",
+            bytes_text(size.bytes),
+            Sig(size.written),
+            bytes_text(MAX_RESULT_BYTES)
+        ));
+    }
+    (!what.is_empty()).then(|| (keys.join(", "), what.join(" and ")))
+}
+
+/// `run`'s bound on work: a run above [`MAX_STEPS`] steps or
+/// [`MAX_RESULT_BYTES`] of result files is an input error naming the keys
+/// and `--allow-large`, unless `opts.allow_large`. Called before anything
+/// is written.
+pub(crate) fn admit(
+    path: &Path,
+    sc: &Scenario,
+    opts: &crate::commands::RunOptions,
+) -> Result<(), Failure> {
+    if opts.allow_large {
+        return Ok(());
+    }
+    let size = size(sc, opts.vtk);
+    match size_problem(sc, &size) {
+        None => Ok(()),
+        Some((keys, what)) => Err(Failure::Input(format!(
+            "{}: {keys}: this run would take {what}; shorten the run, write fewer steps \
+             (a larger output.every) or pass --allow-large to run it anyway",
+            path.display()
+        ))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::commands::RunOptions;
+    use crate::scenario;
+
+    fn scenario(body: &str) -> Scenario {
+        let text = format!(
+            "[cable]\nlength = 4.0\nelements = 8\n[material]\nyoungs_modulus = 3.4e9\n\
+             density = 1380.0\narea = 3.0e-6\nsecond_moment = 1.25e-13\n{body}"
+        );
+        scenario::parse(&text, "t.toml", Path::new("t.toml")).expect("valid")
+    }
+
+    #[test]
+    fn the_size_estimate_counts_every_written_step_and_the_per_step_files() {
+        let sc = scenario("[analysis]\ntime_step = 1e-3\nduration = 1.0\n[output]\nevery = 10\n");
+        let s = size(&sc, false);
+        assert_eq!(s.steps, 1000.0);
+        assert_eq!(s.written, 102.0);
+        let row = 150.0 + 120.0 * 9.0 + 75.0 * 5.0 * 8.0;
+        assert_eq!(s.bytes, 1000.0 * 250.0 + 102.0 * row);
+        assert!(size(&sc, true).bytes > s.bytes);
+        assert!(size_problem(&sc, &s).is_none());
+    }
+
+    #[test]
+    fn a_run_above_the_bounds_is_refused_unless_allowed() {
+        let sc = scenario("[analysis]\ntime_step = 1e-6\nduration = 200.0\n");
+        let refused = admit(Path::new("t.toml"), &sc, &RunOptions::default());
+        match refused {
+            Err(Failure::Input(m)) => {
+                assert!(
+                    m.starts_with("t.toml: analysis.duration, analysis.time_step"),
+                    "{m}"
+                );
+                assert!(
+                    m.contains("2e8 steps") && m.contains("--allow-large"),
+                    "{m}"
+                );
+            }
+            other => panic!("{other:?}"),
+        }
+        let allowed = RunOptions {
+            allow_large: true,
+            ..RunOptions::default()
+        };
+        assert!(admit(Path::new("t.toml"), &sc, &allowed).is_ok());
+    }
+
+    #[test]
+    fn bytes_read_in_words() {
+        assert_eq!(bytes_text(4e9), "4 GB");
+        assert_eq!(bytes_text(26_400.0), "26.4 kB");
+        assert_eq!(bytes_text(5.04e13), "50.4 TB");
+        assert_eq!(bytes_text(512.0), "512 bytes");
+    }
+}
