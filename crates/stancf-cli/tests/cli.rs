@@ -1,98 +1,13 @@
 //! The command line as docs/interface.md specifies it: `run` and `check`,
 //! result files, exit codes, and one test per class of bad input.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-const BIN: &str = env!("CARGO_BIN_EXE_stancf");
-
-/// A scratch folder per test, removed at the start.
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("stancf-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn repo_file(rel: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(rel)
-}
-
-fn stancf(args: &[&str]) -> Output {
-    Command::new(BIN).args(args).output().expect("run stancf")
-}
-
-fn text(o: &Output) -> (String, String) {
-    (
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
-}
+mod common;
+use common::{read_csv, repo_file, scratch, stancf, text, write_scenario, BIN};
+use std::path::Path;
+use std::process::Command;
 
 /// A small valid scenario: the transverse impact, shortened.
-const BASE: &str = r#"
-title = "test"
-[cable]
-length = 4.0
-elements = 8
-element = "SAC-2"
-origin = [-2.0, 0.0, 0.0]
-direction = [1.0, 0.0, 0.0]
-[material]
-youngs_modulus = 3.4e9
-density = 1380.0
-area = 3.0e-6
-second_moment = 1.25e-13
-[[loads]]
-type = "gravity"
-acceleration = [0.0, -9.81, 0.0]
-[[initial_velocity]]
-node = "A"
-velocity = [0.0, 10.0, 0.0]
-[[initial_velocity]]
-node = 8
-velocity = [0.0, -10.0, 0.0]
-[analysis]
-type = "dynamic"
-time_step = 5.0e-5
-duration = 2.0e-3
-quadrature = [3, 3]
-[output]
-every = 4
-"#;
-
-fn write_scenario(dir: &Path, name: &str, contents: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, contents).unwrap();
-    p
-}
-
-/// Parses a CSV file: header and rows of numbers; fails on any non-finite
-/// or non-numeric field.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let s = std::fs::read_to_string(path).unwrap();
-    let mut lines = s.lines();
-    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| {
-            l.split(',')
-                .map(|f| {
-                    let v: f64 = f
-                        .parse()
-                        .unwrap_or_else(|_| panic!("{path:?}: bad field {f:?}"));
-                    assert!(v.is_finite(), "{path:?}: non-finite {f}");
-                    v
-                })
-                .collect()
-        })
-        .collect();
-    for r in &rows {
-        assert_eq!(r.len(), header.len(), "{path:?}: ragged row");
-    }
-    (header, rows)
-}
+const BASE: &str = common::IMPACT;
 
 #[test]
 fn run_writes_the_contract_files() {

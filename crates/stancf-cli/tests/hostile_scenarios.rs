@@ -708,7 +708,7 @@ fn the_last_step_written_out_of_turn_keeps_its_own_solver_figures() {
     ]);
     assert!(o.status.success(), "{:?}", text(&o));
     let (h_head, history) = common::read_csv(&out.join("history.csv"));
-    let (s_head, solver) = common::read_csv(&out.join("solver.csv"));
+    let (s_head, solver) = common::read_csv_with_blanks(&out.join("solver.csv"));
     let col = |head: &[String], name: &str| head.iter().position(|h| h == name).unwrap();
     let last = history.last().unwrap();
     let last_step = solver.last().unwrap();

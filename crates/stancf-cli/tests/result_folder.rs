@@ -83,7 +83,7 @@ fn assert_valid_set(dir: &Path) -> serde_json::Value {
     let (_, history) = read_csv(&dir.join("history.csv"));
     let (_, nodes) = read_csv(&dir.join("nodes.csv"));
     read_csv(&dir.join("stress.csv"));
-    read_csv(&dir.join("solver.csv"));
+    read_csv_with_blanks(&dir.join("solver.csv"));
     let t_last = history.last().unwrap()[0];
     assert_eq!(t_last, summary["time"].as_f64().unwrap(), "{dir:?}");
     let final_nodes: Vec<&Vec<f64>> = nodes.iter().filter(|r| r[0] == t_last).collect();

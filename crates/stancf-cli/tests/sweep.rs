@@ -8,36 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 /// A small valid scenario: the transverse impact, shortened.
-const BASE: &str = r#"
-title = "test"
-[cable]
-length = 4.0
-elements = 8
-element = "SAC-2"
-origin = [-2.0, 0.0, 0.0]
-direction = [1.0, 0.0, 0.0]
-[material]
-youngs_modulus = 3.4e9
-density = 1380.0
-area = 3.0e-6
-second_moment = 1.25e-13
-[[loads]]
-type = "gravity"
-acceleration = [0.0, -9.81, 0.0]
-[[initial_velocity]]
-node = "A"
-velocity = [0.0, 10.0, 0.0]
-[[initial_velocity]]
-node = 8
-velocity = [0.0, -10.0, 0.0]
-[analysis]
-type = "dynamic"
-time_step = 5.0e-5
-duration = 2.0e-3
-quadrature = [3, 3]
-[output]
-every = 4
-"#;
+const BASE: &str = common::IMPACT;
 
 fn write_scenario(dir: &Path, contents: &str) -> PathBuf {
     let p = dir.join("s.toml");
