@@ -4,7 +4,6 @@
 //! layers over it, so that both read and write exactly the same files.
 
 pub mod check;
-pub mod commands;
 pub mod figures;
 pub mod input_scales;
 pub mod output;
@@ -13,12 +12,19 @@ pub mod progress;
 pub mod reproduce;
 pub mod result_folder;
 pub mod results;
+pub mod run;
 pub mod scenario;
 pub mod signals;
 pub mod sweep;
 pub mod vtk;
 pub mod work_bounds;
-pub mod writers;
+
+/// The commands' entry points under their older path (the `run` command
+/// lives in [`crate::run`]; `check` in [`crate::check`]).
+pub mod commands {
+    pub(crate) use crate::run::safe_folder_name;
+    pub use crate::run::{check, plot, run, run_text, Cancel, RunOptions};
+}
 
 /// How a command ended.
 #[derive(Debug)]

@@ -1,6 +1,8 @@
 //! Assembly of the equations of one time step, eq. (22), with any number
 //! of element layers in time (the paper's "time direction assembly"), and
-//! of a static solve (the time-invariant slab of the method notes).
+//! of a static solve (the time-invariant slab, docs/method.md §6.8).
+//! The step's unknowns and rows: docs/method.md §4.3 (P2) and §5.1
+//! (Galerkin); constraints: §6.3-6.4.
 //!
 //! A P2 step [t_a, t_b] holds L layers with time nodes t_0 = t_a, ...,
 //! t_L = t_b. The unknowns are e_i, v_i at t_1 .. t_L; the rows are
@@ -12,8 +14,8 @@
 //! ```
 //!
 //! with A the action of all space-time elements of the step and the
-//! virtual work of the nodal loads. The Galerkin step (method notes, "The
-//! Galerkin step") uses the same slab action with the end slopes w_a, w_b
+//! virtual work of the nodal loads. The Galerkin step (docs/method.md
+//! §5.1, (M22)) uses the same slab action with the end slopes w_a, w_b
 //! as unknowns in place of the velocities and carries the momentum p:
 //!
 //! ```text
@@ -22,7 +24,7 @@
 //! ```
 //!
 //! A static solve has one unknown e and one row per coordinate,
-//! dU/de - dW/de = 0 (A = dt (W - U) for a time-invariant slab).
+//! dU/de - dW/de = 0 (A = dt (W - U) for a time-invariant slab; (M25)).
 //!
 //! A constrained coordinate (see [`crate::constraints`]) has prescribed
 //! values at the time nodes and its rows are freed: with elimination they
@@ -31,7 +33,7 @@
 //! and every fixed value a constraint equation.
 //!
 //! Unknowns and rows are numbered spatial node by spatial node, so the
-//! Jacobian is a band matrix (see [`crate::band`]):
+//! Jacobian is a band matrix (see [`crate::band`]; docs/method.md §7.6):
 //!
 //! ```text
 //!   unknowns of node n:  [slot 1: free coords, slot 2: ..., multipliers]
@@ -527,7 +529,8 @@ impl StepProblem<'_> {
         }
     }
 
-    /// Element actions of every layer, eq. (10).
+    /// Element actions of every layer, eq. (10) (docs/method.md §3.1-3.2,
+    /// (M13)-(M14)).
     fn slab_elements<const NS: usize, const ND: usize>(
         &self,
         elements: &[CableElement<NS, ND>],
@@ -693,7 +696,7 @@ impl StepProblem<'_> {
 
     /// Point forces (eq. 14) and end moments (eqs. 15-16): in a P2 step
     /// their work over each layer, sum_g w_g dt F(q(t_g)) . q(t_g); in
-    /// statics minus the force.
+    /// statics minus the force (docs/method.md §2.6-2.7, (M7)).
     fn nodal_loads(
         &self,
         residual: &mut [f64],
@@ -809,7 +812,8 @@ impl StepProblem<'_> {
     }
 
     /// Momentum terms: + p_a (= M v_a) on row e_0; P2 also - M v_L on row
-    /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead).
+    /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead;
+    /// docs/method.md §4.3 and §5.1).
     fn momentum_terms(
         &self,
         residual: &mut [f64],
@@ -860,7 +864,7 @@ impl StepProblem<'_> {
     /// Multipliers in the freed rows (+ in P2 rows, which are generalized
     /// impulses; - in static rows dU/de - f, so that a multiplier is the
     /// reaction on the cable either way) and the constraint equations
-    /// x_c - c(t_i) = 0.
+    /// x_c - c(t_i) = 0 (docs/method.md §6.3, §6.5).
     fn constraint_terms(
         &self,
         x: &[f64],
@@ -905,7 +909,7 @@ impl StepProblem<'_> {
 }
 
 /// Scales that turn increments and residuals of a P2 step into fractions
-/// of the cable length (method notes, "Residual scaling"):
+/// of the cable length (docs/method.md §7.1, (M27)):
 ///
 /// - an unknown e of kind r, r_x, r_xx is weighted by 1, l, l^2 (its effect
 ///   on the centre line inside an element), a velocity unknown also by h = dt/L;

@@ -1,4 +1,5 @@
-//! Banded matrices and their LU factorization with partial pivoting.
+//! Banded matrices and their LU factorization with partial pivoting
+//! (docs/method.md §7.6).
 //!
 //! The slab Jacobian couples a spatial node only with its two neighbours,
 //! and its unknowns and equations are numbered node by node, so it is a band

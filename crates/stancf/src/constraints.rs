@@ -1,5 +1,5 @@
-//! Constraints on nodal coordinates (paper section 3; method notes,
-//! "Constraints").
+//! Constraints on nodal coordinates (paper section 3; docs/method.md
+//! §6.1-6.4).
 //!
 //! A constraint fixes coordinates of a node for all t: `clamped` fixes r
 //! and r_x (and r_xx on request, SAC-3 only), `pinned` fixes r, and
@@ -22,7 +22,7 @@
 use crate::error::ModelError;
 use crate::model::ElementType;
 
-/// What a constraint fixes.
+/// What a constraint fixes (docs/method.md §6.1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ConstraintKind {
     /// r and r_x fixed; r_xx too when `fix_curvature` (SAC-3 only; the
@@ -51,10 +51,12 @@ pub struct Constraint {
 /// How constraints are enforced.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ConstraintMethod {
-    /// Lagrange multipliers (the paper's supplementary constraints).
+    /// Lagrange multipliers (the paper's supplementary constraints;
+    /// docs/method.md §6.3).
     #[default]
     Multiplier,
-    /// Direct elimination of the constrained coordinates.
+    /// Direct elimination of the constrained coordinates (docs/method.md
+    /// §6.4).
     Elimination,
 }
 

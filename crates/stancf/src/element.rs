@@ -1,6 +1,7 @@
 //! The space-time ANCF cable element (SAC-2 and SAC-3): its action over one
 //! slab, eq. (10), the gradient of the action with respect to the element's
-//! unknowns and its exact Hessian.
+//! unknowns and its exact Hessian (docs/method.md §1.5, §2.1-2.4 and
+//! §3.1-3.2).
 //!
 //! One generic kernel serves both elements: `CableElement<NS, ND>` with NS
 //! spatial shape functions (4 for SAC-2, eq. 4; 6 for SAC-3, eq. 5) and
@@ -11,7 +12,8 @@
 //! Over one slab [t_a, t_b] the element's unknowns are
 //! `y = [e_a, v_a, e_b, v_b]` (4 x ND numbers) and every coordinate moves as
 //! `q(t) = sum_m phi_m(t) y_m` with the time Hermite functions of eq. (6).
-//! The slab action, Gauss-integrated in time with weights w_g,
+//! The slab action, Gauss-integrated in time with weights w_g ((M13)-(M14)
+//! of docs/method.md §3.1-3.2),
 //!
 //! ```text
 //!   A^e = sum_g w_g dt [ 1/2 qdot^T M qdot - U(q) + f_g . q ]          eq. (10)-(13)
@@ -37,7 +39,7 @@ pub enum AxialStrain {
     Engineering,
 }
 
-/// Curvature of the centre line.
+/// Curvature of the centre line (docs/method.md §2.3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Curvature {
     /// kappa = |r_x x r_xx| / |r_x|^2, eq. (9) as printed.
@@ -92,7 +94,7 @@ pub fn curvature(form: Curvature, rx: &[f64; 3], rxx: &[f64; 3]) -> f64 {
 }
 
 /// Axial energy density `1/2 EA eps^2` (eq. 12, first term), its gradient
-/// and Hessian with respect to r_x.
+/// and Hessian with respect to r_x (docs/method.md §2.2, (M3)-(M4)).
 ///
 /// ```text
 ///   Green:        dU/dr_x = EA eps r_x,      d2U = EA (r_x r_x^T + eps I)
@@ -162,7 +164,8 @@ fn axial_energy_terms(
 }
 
 /// Bending energy density `1/2 EI kappa^2` (eq. 12, second term), with its
-/// gradient and Hessian with respect to `(r_x, r_xx)` (6 numbers).
+/// gradient and Hessian with respect to `(r_x, r_xx)` (6 numbers;
+/// docs/method.md §2.3, (M5)-(M6)).
 ///
 /// Written with x = r_x, y = r_xx, g = x.x, h = y.y, m = x.y and
 /// s = |x cross y|^2 = g h - m^2, so kappa^2 = s g^-p (p = 2 for eq. 9,
@@ -280,7 +283,8 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     axial_points: Vec<SpacePoint<NS>>,
     bending_points: Vec<SpacePoint<NS>>,
     /// Consistent mass matrix per coordinate direction,
-    /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3.
+    /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
+    /// (docs/method.md §2.1, (M2)).
     pub mass: [[f64; NS]; NS],
     /// `int rho A N_k dx`: the gravity load of eq. (13) is this times g.
     pub weight_integrals: [f64; NS],
@@ -453,9 +457,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         u
     }
 
-    /// Static drag (a cable at rest in a moving fluid): subtracts the
-    /// generalized force int N^T f(0, r_x) dx, times `factor`, from
-    /// `grad` (= dU/dq) and its derivative from `hess`.
+    /// Static drag (a cable at rest in a moving fluid; docs/method.md §2.8,
+    /// §6.8): subtracts the generalized force int N^T f(0, r_x) dx, times
+    /// `factor`, from `grad` (= dU/dq) and its derivative from `hess`.
     pub fn add_static_drag(
         &self,
         drag: &crate::loads::AirDrag,
@@ -533,7 +537,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// matrices at the time points from which every block of its Jacobian
     /// follows (see [`SlabDerivatives`] and [`Self::slab_hessian_block`]).
     ///
-    /// Drag, per unit length f(r_dot, r_x), integrated with the axial rule:
+    /// Drag, per unit length f(r_dot, r_x), integrated with the axial rule
+    /// (docs/method.md §2.8, (M11); the rest is (M14) of §3.2):
     ///
     /// ```text
     ///   dW/dy_m   = sum_g w_g dt phi_m sum_s w_s l N_k f

@@ -38,7 +38,7 @@ pub enum FailureKind {
     /// The linear system of a Newton iteration is singular.
     SingularJacobian,
     /// The mechanical energy grew without a source: the step is above the
-    /// scheme's stability limit (method notes, "Stability").
+    /// scheme's stability limit (docs/method.md §4.5 and §8).
     EnergyGrowth,
 }
 

@@ -1,11 +1,13 @@
 //! Time stepping with the P2 formula, eq. (22): one space-time slab per
-//! step, optionally several element layers in time per step.
+//! step, optionally several element layers in time per step
+//! (docs/method.md §4; the Galerkin step, §5).
 //!
 //! [`Simulation::step`] advances the state by one step with Newton's method;
 //! [`run`] steps to a final time, hands every converged state to an
 //! observer and stops at the first step that fails or makes the mechanical
-//! energy grow without a source (method notes: P2 is only conditionally
-//! stable, and an unstable step must end the run, not write garbage).
+//! energy grow without a source (docs/method.md §4.5 and §8: P2 is only
+//! conditionally stable, and an unstable step must end the run, not write
+//! garbage).
 
 use crate::assembly::{AssemblyScratch, Kind, Scales, Scheme, SlabLayout, StepProblem, StepStart};
 use crate::band::{BandLu, BandMatrix};
@@ -42,7 +44,8 @@ pub struct StepSettings {
     pub planar_reduction: bool,
 }
 
-/// Which equations a step solves (method notes).
+/// Which equations a step solves (docs/method.md §4.2-4.3 for P2, §5 for
+/// the Galerkin step).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum TimeScheme {
     /// Hamilton's law with the P2 formula, eq. (22): conditionally stable,
@@ -313,25 +316,29 @@ impl Simulation {
     /// over the last step: its impulse (the multipliers of the freed P2
     /// rows of r, or the values of the eliminated rows) divided by dt.
     /// With it the discrete momentum balance is exact:
-    /// P_b - P_a = (m g + sum of reactions) dt.
+    /// P_b - P_a = (m g + sum of reactions) dt (docs/method.md §6.5, (M23);
+    /// §4.4, (M18)).
     pub fn reactions(&self) -> &[(usize, [f64; 3])] {
         &self.reactions
     }
 
     /// Work done on the cable by the constraints so far (zero unless a
-    /// constraint moves): sum over steps of reaction . displacement.
+    /// constraint moves): sum over steps of reaction . displacement
+    /// (docs/method.md §6.6, (M24)).
     pub fn constraint_work(&self) -> f64 {
         self.constraint_work
     }
 
     /// Work done on the cable by the drag loads so far: the slab integral
-    /// of f . r_dot over every step (negative in still air).
+    /// of f . r_dot over every step (negative in still air; docs/method.md
+    /// §2.8, (M12)).
     pub fn drag_work(&self) -> f64 {
         self.drag_work
     }
 
     /// Energies of the current state; `load_potential` includes -M theta
-    /// of the end moments with theta followed continuously.
+    /// of the end moments with theta followed continuously (docs/method.md
+    /// §2.7, (M8)).
     pub fn energies(&self) -> Energies {
         let mut en = energies(&self.model, &self.state);
         en.load_potential += self
@@ -354,14 +361,15 @@ impl Simulation {
         self.workspace.factors_valid = false;
     }
 
-    /// Predictor. After a converged step of the same length: the last
-    /// step's cubic in time (end values e, end slopes, eq. 6) extrapolated
-    /// over the new step, which is third order in dt (a predictor error of
-    /// O(dt^4) in e), so the corrector needs fewer iterations. Otherwise
-    /// (first step, after an undo or a change of step): Taylor expansion
-    /// with the last step's acceleration, e(t_i) = e_a + tau v_a + tau^2 a / 2,
-    /// v(t_i) = v_a + tau a. Constrained coordinates take their prescribed
-    /// values; the multipliers keep their last values.
+    /// Predictor (docs/method.md §4.8). After a converged step of the same
+    /// length: the last step's cubic in time (end values e, end slopes,
+    /// eq. 6) extrapolated over the new step, which is third order in dt
+    /// (a predictor error of O(dt^4) in e), so the corrector needs fewer
+    /// iterations. Otherwise (first step, after an undo or a change of
+    /// step): Taylor expansion with the last step's acceleration,
+    /// e(t_i) = e_a + tau v_a + tau^2 a / 2, v(t_i) = v_a + tau a.
+    /// Constrained coordinates take their prescribed values; the
+    /// multipliers keep their last values.
     fn predict(&mut self) {
         let h = self.slab.dt;
         let dt = self.settings.time_step;
@@ -552,7 +560,7 @@ impl Simulation {
 
     /// Reaction impulses of the step from the multipliers (or eliminated
     /// rows) of the position rows e_0, e_i, e_L, and the work of moving
-    /// constraints.
+    /// constraints (docs/method.md §6.5-6.6, (M23)-(M24)).
     fn collect_reactions(&mut self, dt: f64) {
         let n = self.model.dofs();
         let dpn = self.layout.dpn;
@@ -620,7 +628,7 @@ fn check_settings(settings: &StepSettings) -> Result<GaussRule, ModelError> {
             format!(
                 "the Galerkin step takes one layer per step (got {layers}): joining \
                  layers by C1 interior nodes inside a Galerkin step is unstable \
-                 (method notes)"
+                 (docs/method.md §5.4)"
             ),
         ));
     }
@@ -713,8 +721,9 @@ pub fn step_unknowns(
     Ok((size, planar))
 }
 
-/// The model's own energy unit (J), never zero: the energies of
-/// deformations and motions of order one of this cable,
+/// The model's own energy unit (J), never zero (`E_model` of docs/method.md
+/// §8, (M29)): the energies of deformations and motions of order one of
+/// this cable,
 ///
 /// ```text
 ///   E_model = E A L + E I / L + m |g| L + sum |F| L + sum |M|
@@ -753,7 +762,8 @@ pub fn energy_resolution(model: &Model) -> f64 {
     ROUND_OFF * model_energy_scale(model)
 }
 
-/// Watches the mechanical energy of a run for growth without a source.
+/// Watches the mechanical energy of a run for growth without a source
+/// (docs/method.md §8, (M29)).
 ///
 /// The cable under gravity, constant point forces and end moments
 /// conserves E = T + U + V_g + V_F; P2 keeps it within a bounded
@@ -766,9 +776,9 @@ pub fn energy_resolution(model: &Model) -> f64 {
 /// the model's own energy unit ([`energy_resolution`]). Without that unit a
 /// cable at rest, whose energy scale is itself round-off (1e-28 J), trips
 /// on its own round-off. An unstable mode grows geometrically (P2 beyond
-/// its limit: by up to 3 + 2 sqrt(2) per step in amplitude, method notes),
-/// so from round-off, O(eps^2 E_model), it passes the floor within
-/// ln(1e3 / eps) / ln(rho^2) steps: about 20 at rho = 3.
+/// its limit: by up to 3 + 2 sqrt(2) per step in amplitude, docs/method.md
+/// §4.5), so from round-off, O(eps^2 E_model), it passes the floor
+/// within ln(1e3 / eps) / ln(rho^2) steps: about 20 at rho = 3.
 #[derive(Clone, Debug)]
 pub struct EnergyWatch {
     pub ratio: f64,

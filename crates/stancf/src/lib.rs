@@ -9,7 +9,10 @@
 //! P2 formula, one slab per step, optionally several element layers in
 //! time per step.
 //!
-//! The modules follow the method from the bottom up:
+//! The method, equation by equation with the decisions taken, is
+//! docs/method.md in the repository; the modules' doc comments cite its
+//! sections (§) and formulas (M1)-(M29). The modules follow the method
+//! from the bottom up:
 //!
 //! | module | what it implements |
 //! |---|---|

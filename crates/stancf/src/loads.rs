@@ -1,12 +1,12 @@
 //! Loads that depend on the motion: the end moment of eqs. (15)-(16) and
-//! the air drag of eq. (17).
+//! the air drag of eq. (17) (docs/method.md §2.7-2.8).
 //!
 //! The paper's work of a moment is W = M theta with theta the rotation of
 //! the end tangent, written as an arctangent of a ratio of components
 //! (eq. 16), which jumps at theta = +-pi/2 and cannot follow a full circle.
-//! stancf uses the smooth generalized force of the method notes: for a
-//! moment of magnitude M about the unit axis n, with p = r_x - (r_x . n) n
-//! the part of r_x normal to n,
+//! stancf uses the smooth generalized force of docs/method.md §2.7, (M7):
+//! for a moment of magnitude M about the unit axis n, with
+//! p = r_x - (r_x . n) n the part of r_x normal to n,
 //!
 //! ```text
 //!   dtheta/dr_x = (n x p) / |p|^2          Q = M (n x p) / |p|^2
@@ -29,8 +29,9 @@ pub enum DragModel {
     Normal { tangential_coefficient: f64 },
 }
 
-/// Air drag per unit length (eq. 17; method notes), a non-conservative
-/// load entering the action as virtual work int int f . dr dx dt.
+/// Air drag per unit length (eq. 17; docs/method.md §2.8, (M9)-(M10)), a
+/// non-conservative load entering the action as virtual work
+/// int int f . dr dx dt.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AirDrag {
     pub drag_coefficient: f64,
@@ -70,7 +71,8 @@ fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
 
 impl AirDrag {
     /// Force per unit length f(r_dot, r_x) and its derivatives df/dr_dot
-    /// and df/dr_x (the latter zero for the full model).
+    /// and df/dr_x (the latter zero for the full model; docs/method.md
+    /// §2.8, (M9)-(M10)).
     ///
     /// ```text
     ///   full:    f = q(k, v),  v = r_dot - u,  q(k, v) = -k |v| v,  k = C rho d / 2
@@ -170,7 +172,8 @@ impl EndMoment {
         ]
     }
 
-    /// Generalized force Q = dW/dr_x and its Jacobian dQ/dr_x.
+    /// Generalized force Q = dW/dr_x and its Jacobian dQ/dr_x
+    /// (docs/method.md §2.7, (M7)).
     pub fn generalized_force(&self, rx: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
         let n = &self.axis;
         let p = self.normal_part(rx);
@@ -207,7 +210,8 @@ impl EndMoment {
 }
 
 /// The unwrapped angle of an end moment, followed step by step so that the
-/// moment's potential -M theta stays continuous through +-pi.
+/// moment's potential -M theta stays continuous through +-pi
+/// (docs/method.md §2.7, (M8)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MomentAngle {
     pub moment: EndMoment,

@@ -4,7 +4,7 @@
 //! `e[j * dpn .. (j + 1) * dpn]` = `[r, r_x]` (SAC-2, dpn = 6) or
 //! `[r, r_x, r_xx]` (SAC-3, dpn = 9). Element k spans nodes k and k + 1, so
 //! its coordinates are the contiguous slice starting at `k * dpn`, in the
-//! element's own order.
+//! element's own order (docs/method.md §1.1).
 
 use crate::constraints::{Constraint, Constraints};
 use crate::element::{CableElement, Measures, Section, SpaceRules};
@@ -37,7 +37,7 @@ impl ElementType {
 
     /// Gauss points in space (axial, bending) used when none are given:
     /// the paper's choices, 3 for SAC-2 ("3 x 3") and 5 for SAC-3
-    /// ("5 x 3", Table 5).
+    /// ("5 x 3", Table 5); docs/method.md §3.3.
     pub fn default_space_points(self) -> SpacePoints {
         match self {
             ElementType::Sac2 => SpacePoints {
@@ -58,7 +58,8 @@ impl ElementType {
     /// polynomial of degree NS - 2 in each element and the curvature
     /// (r_xx) one of degree NS - 3; n points annihilate a nonzero
     /// polynomial of degree d only if n <= d, so the rank needs NS - 1
-    /// axial and NS - 2 bending points (SAC-2: 3 and 2; SAC-3: 5 and 4).
+    /// axial and NS - 2 bending points (SAC-2: 3 and 2; SAC-3: 5 and 4;
+    /// docs/method.md §3.4, (M15)).
     pub fn minimal_space_points(self) -> SpacePoints {
         let ns = 2 * self.vectors_per_node();
         SpacePoints {
@@ -437,7 +438,7 @@ impl Model {
     /// Warnings about the model that do not make it invalid: a spatial
     /// quadrature too coarse to give every element's stiffness full rank
     /// (the mesh may then have spurious zero-energy modes that drift
-    /// without bound).
+    /// without bound; docs/method.md §3.4, (M15)).
     pub fn warnings(&self) -> Vec<String> {
         let p = self.space_points();
         let min = self.cable.element_type.minimal_space_points();
@@ -518,7 +519,8 @@ impl Model {
     /// z = z0 and zero slopes at every step, and their Jacobian does not
     /// couple them to the in-plane ones at such states (every coupling
     /// term carries an out-of-plane component), so eliminating them gives
-    /// the same motion with a third fewer unknowns. `None` otherwise.
+    /// the same motion with a third fewer unknowns (docs/method.md §6.7).
+    /// `None` otherwise.
     pub fn planar_coordinates(&self, state: &State) -> Option<Vec<usize>> {
         let dpn = self.dofs_per_node();
         let n = self.dofs();

@@ -1,5 +1,7 @@
 //! What can be observed of a state: energies, momentum, centre of mass,
-//! axial stress and curvature along the cable.
+//! axial stress and curvature along the cable (docs/method.md §2.1-2.6 for
+//! the energies and momentum, §2.9 for stress and curvature, §8 for the
+//! conserved energy).
 
 use crate::element::{axial_strain, curvature, CableElement};
 use crate::model::{gather, Model, State};

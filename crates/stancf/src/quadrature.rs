@@ -3,7 +3,8 @@
 //! The space-time action (eq. 10) is integrated with a tensor product of two
 //! such rules, one over the element's dimensionless material coordinate
 //! xi in [0, 1] and one over the slab's dimensionless time tau in [0, 1]
-//! (the paper's "3 x 3", "5 x 3" and "6 x 3" integration).
+//! (the paper's "3 x 3", "5 x 3" and "6 x 3" integration; docs/method.md
+//! §3.1, (M13), and the choice of rules, §3.3-3.4).
 //!
 //! An n-point rule integrates polynomials of degree 2n - 1 exactly.
 

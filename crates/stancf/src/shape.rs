@@ -1,4 +1,5 @@
-//! Hermite shape functions in space and time, eqs. (2)-(6).
+//! Hermite shape functions in space and time, eqs. (2)-(6)
+//! (docs/method.md §1.2-1.5, (M1)).
 //!
 //! The space-time element interpolates every nodal coordinate separately in
 //! space and time (eq. 2, the "Lagrange family" tensor product):

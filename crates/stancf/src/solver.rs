@@ -1,6 +1,8 @@
 //! Nonlinear solvers on a banded system: Newton-Raphson with the exact
 //! Jacobian, eq. (25), and Broyden's rank-one method, eq. (27), with the
-//! convergence test of eq. (26) plus a residual test.
+//! convergence test of eq. (26) plus a residual test (docs/method.md
+//! §7.1-7.5: the scaled measures (M27), Newton, Broyden (M28), modified
+//! Newton, no unchecked guess).
 //!
 //! Convergence (both norms scaled, see [`crate::assembly::Scales`]): a
 //! residual at most `tolerance` followed by an update (from it) at most
@@ -14,9 +16,9 @@
 //! factors in hand (a back-substitution, no new Jacobian). Nothing here
 //! allocates.
 //!
-//! Broyden (eq. 27 is garbled in the paper; method notes: the "good"
-//! update of the inverse). With B ~ J^-1, s the step and y the change of
-//! residual,
+//! Broyden (eq. 27 is garbled in the paper; docs/method.md §7.3, (M28):
+//! the "good" update of the inverse). With B ~ J^-1, s the step and y the
+//! change of residual,
 //!
 //! ```text
 //!   B+ = B + (s - B y) s^T B / (s^T B y) = (I + a s^T) B,   a = (s - B y) / (s^T B y)
@@ -179,7 +181,7 @@ impl NewtonWorkspace {
     }
 }
 
-/// The convergence-rate estimate of the paper's Table 7 (method notes),
+/// The convergence-rate estimate of the paper's Table 7 (docs/method.md §7.7),
 /// log(r_{k+1} / r_k) / log(r_k / r_{k-1}), from the last three residual
 /// norms of an iteration above `floor`: about 2 for Newton's quadratic
 /// convergence, 1 for linear, in between for Broyden's superlinear.

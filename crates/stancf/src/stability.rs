@@ -1,5 +1,5 @@
-//! The stability limit of the P2 step (method notes, "Stability and
-//! accuracy of P2").
+//! The stability limit of the P2 step (docs/method.md §4.5-4.6,
+//! (M20)-(M21); the Galerkin step's accurate range, §5.3).
 //!
 //! P2 is conditionally stable: on x'' + w^2 x = 0 its amplification matrix
 //! has eigenvalues of modulus 1 only while W = w dt stays below a critical
@@ -26,7 +26,8 @@ use crate::model::Model;
 use crate::quadrature::GaussRule;
 
 /// The P2 step (with `layers` layers of equal length) applied to
-/// x'' + w^2 x = 0 as the 2x2 map (x_a, v_a) -> (x_b, v_b), for W = w dt.
+/// x'' + w^2 x = 0 as the 2x2 map (x_a, v_a) -> (x_b, v_b), for W = w dt
+/// (docs/method.md §4.5, (M20)).
 pub fn p2_amplification(w_dt: f64, rule: &GaussRule, layers: usize) -> [[f64; 2]; 2] {
     // Time scaled so that w = 1 and dt = W.
     let h = w_dt / layers as f64;
@@ -95,7 +96,7 @@ pub fn spectral_radius_2x2(a: &[[f64; 2]; 2]) -> f64 {
 /// above 1), found by a scan in steps of 0.001 and bisection to 1e-12.
 /// With several layers the first unstable band is narrow (about 0.015 wide
 /// near W = pi for two layers), hence the fine scan. `None` if it stays
-/// stable up to W = 50.
+/// stable up to W = 50 (docs/method.md §4.5).
 pub fn p2_critical_w_dt(rule: &GaussRule, layers: usize) -> Option<f64> {
     let unstable = |w: f64| spectral_radius_2x2(&p2_amplification(w, rule, layers)) > 1.0 + 1e-9;
     let mut lo = 0.0;
@@ -378,14 +379,14 @@ fn add_element_stiffness<const NS: usize, const ND: usize>(
 const LANCZOS_MAX_STEPS: usize = 300;
 
 /// Relative residual of the top Ritz pair at which [`highest_frequency`]
-/// stops: the Ritz value is then within (1e-8 theta)^2 / gap of the
+/// stops: the Ritz value is then within (1e-10 theta)^2 / gap of the
 /// eigenvalue, round-off for any gap above 1e-3 theta.
 const LANCZOS_TOLERANCE: f64 = 1e-10;
 
 /// Highest angular frequency w_max of the mesh linearized at coordinates
 /// `e`: the square root of the largest eigenvalue of K phi = lambda M phi,
 /// K the tangent of the strain energy, M the consistent mass (constraints
-/// ignored: they can only lower it).
+/// ignored: they can only lower it; docs/method.md §4.6).
 ///
 /// Lanczos in the M inner product (Parlett, The Symmetric Eigenvalue
 /// Problem, ch. 13), with p = M q carried along so that each step costs one
@@ -470,7 +471,7 @@ pub fn highest_frequency(model: &Model, e: &[f64]) -> f64 {
 
 /// The largest w_max dt at which the Galerkin step is shown to give a
 /// meaningful result: ten times P2's limit (sqrt(10) with one layer and 3
-/// Gauss points in time), 10 sqrt(10) = 31.62.
+/// Gauss points in time), 10 sqrt(10) = 31.62 (docs/method.md §5.3).
 ///
 /// The Galerkin step is stable at every step (|amplification| = 1) but
 /// not accurate at every step. Its own error on the oscillator: the phase
@@ -511,7 +512,7 @@ pub fn galerkin_accurate_step(w_max: f64) -> f64 {
 
 /// Largest stable P2 step of the model at coordinates `e` for this time
 /// quadrature and number of layers per step, or None if the oscillator
-/// shows no limit.
+/// shows no limit: W_crit / w_max, (M21) of docs/method.md §4.6.
 pub fn stable_step(model: &Model, e: &[f64], time_rule: &GaussRule, layers: usize) -> Option<f64> {
     let w_max = highest_frequency(model, e);
     p2_critical_w_dt(time_rule, layers).map(|wc| wc / w_max)
@@ -521,7 +522,8 @@ pub fn stable_step(model: &Model, e: &[f64], time_rule: &GaussRule, layers: usiz
 mod tests {
     use super::*;
 
-    /// The method notes' closed form for one layer, 3 Gauss points:
+    /// The closed form (M20) of docs/method.md §4.5, one layer, 3 Gauss
+    /// points:
     /// det = 1, trace = 2 (3 W^4 - 104 W^2 + 240) / (W^4 + 16 W^2 + 240).
     #[test]
     fn amplification_matches_the_closed_form() {
@@ -536,14 +538,14 @@ mod tests {
             assert!((det - 1.0).abs() < 1e-12, "W={w}: det {det}");
             assert!((tr - expect).abs() < 1e-12, "W={w}: trace {tr} vs {expect}");
         }
-        // Spectral radius 3 at W = 10 (method notes).
+        // Spectral radius 3 at W = 10 (docs/method.md §4.5).
         let r = spectral_radius_2x2(&p2_amplification(10.0, &rule, 1));
         assert!((r - 3.0).abs() < 0.05, "{r}");
     }
 
     /// W_crit = sqrt(10) for one layer and 3 points; about pi / n per
-    /// layer with n layers, i.e. about pi for the whole step (method notes:
-    /// 1.571 per layer for 2 layers, 1.048 for 3).
+    /// layer with n layers, i.e. about pi for the whole step
+    /// (docs/method.md §4.5: 1.571 per layer for 2 layers, 1.048 for 3).
     #[test]
     fn critical_products() {
         let rule = GaussRule::new(3).unwrap();

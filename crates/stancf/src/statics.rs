@@ -1,4 +1,5 @@
-//! Static analysis (paper section 4.1; method notes, "Statics").
+//! Static analysis (paper section 4.1; docs/method.md §6.8, (M25), and
+//! §6.9, (M26)).
 //!
 //! A static solve is the space-time solve of a time-invariant slab:
 //! e_a = e_b = e, all velocities zero, so A = dt (W - U)(e) and the

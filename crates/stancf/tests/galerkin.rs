@@ -1,5 +1,5 @@
-//! The Galerkin step (all four variations of the slab action; method
-//! notes, "The Galerkin step"): sixth order, unconditionally stable,
+//! The Galerkin step (all four variations of the slab action;
+//! docs/method.md §5.1-5.3, (M22)): sixth order, unconditionally stable,
 //! momentum exact.
 
 use stancf::observe::momentum;

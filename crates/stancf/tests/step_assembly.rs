@@ -225,7 +225,7 @@ fn static_jacobian_matches_finite_differences() {
 
 /// For a free particle-like motion (rigid translation at constant velocity)
 /// the exact solution satisfies every P2 row: the residual at the exact
-/// end state is zero to round-off (method notes, "Sanity check").
+/// end state is zero to round-off (docs/method.md §4.2, its checks).
 #[test]
 fn rigid_translation_satisfies_the_p2_rows() {
     for kind in [ElementType::Sac2, ElementType::Sac3] {

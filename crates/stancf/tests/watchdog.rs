@@ -171,7 +171,7 @@ fn the_model_energy_scale_counts_every_source() {
 /// A cable at rest nudged by 1e-9 m/s along its axis, stepped at three
 /// times P2's stable step (w_max dt = 9.49, where P2's amplification has
 /// spectral radius rho = 2.74: (tr + sqrt(tr^2 - 4)) / 2 with tr = 3.104
-/// from the closed form of the method notes). The nudge's energy,
+/// from the closed form (M20) of docs/method.md §4.5). The nudge's energy,
 /// 3.8e-22 J, grows by up to rho^2 = 7.5 per step; the watchdog lets it
 /// pass its floor, 1e3 eps E_model = 9.1e-9 J, which takes at least
 /// ln(9.1e-9 / 3.8e-22) / ln 7.5 = 15 steps, and more as the fastest

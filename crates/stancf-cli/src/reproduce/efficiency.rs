@@ -331,10 +331,10 @@ pub fn efficiency(dir: &Path) -> Result<(), Failure> {
         "\nNotes: Broyden keeps the factorized Jacobian across steps (it needs a handful of \
          factorizations for the whole run), so its Part B falls well below Newton's, while its \
          iterations are cheaper residual-only evaluations. Time-direction assembly halves the \
-         steps but doubles the unknowns per step and does not lengthen P2's stable step (method \
-         notes). Newton's rate estimate is only defined on steps with three residuals; most \
-         steps converge after one update: the predictor (the last step's cubic in time, \
-         extrapolated) leaves a small scaled residual and one Newton update brings it to the \
+         steps but doubles the unknowns per step and does not lengthen P2's stable step \
+         (docs/method.md §4.5). Newton's rate estimate is only defined on steps with three \
+         residuals; most steps converge after one update: the predictor (the last step's \
+         cubic in time, extrapolated) leaves a small scaled residual and one Newton update brings it to the \
          round-off level, so three residuals above the tolerance rarely exist (\"-\": none). \
          Broyden's first update gains fewer orders (its Jacobian is from an earlier step) and \
          it iterates more, with far fewer factorizations."
@@ -494,8 +494,8 @@ pub fn grid_refinement(dir: &Path) -> Result<(), Failure> {
     writeln!(
         md,
         "\nThe paper's orders: 3.91 (time, 2 SEs), 4.26 (time, 4 SEs), 0.33 (space). Ours: \
-         fourth order in time, as P2 is (method notes); refining in space alone does not reduce \
-         an energy error that comes from the time integration: it raises the mesh's highest \
+         fourth order in time, as P2 is (docs/method.md §4.7); refining in space alone does not \
+         reduce an energy error that comes from the time integration: it raises the mesh's highest \
          frequency w_max, so w_max dt grows and the error with it. The paper's grids (\"4 TEs x \
          2 SEs\") cannot be matched exactly: its text does not say over which interval its time \
          elements are counted."

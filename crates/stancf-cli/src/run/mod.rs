@@ -1,0 +1,184 @@
+//! The `run` command: a scenario stepped (or solved statically) with its
+//! results streamed to the output folder and summary.json written last.
+//!
+//! - this file: the options, the output folder and its transaction
+//!   ([`run_text`]), and `stancf plot`;
+//! - `dynamic.rs`: the time-stepping run;
+//! - `statics.rs`: the static run (load stepping);
+//! - `summary.rs`: the running figures, summary.json and the printed report;
+//! - `writers.rs`: the streamed result files.
+
+mod dynamic;
+mod statics;
+mod summary;
+pub(crate) mod writers;
+
+use crate::check::{derive, load_text};
+use crate::output::{write_atomic, ResultFolder};
+use crate::scenario::AnalysisKind;
+use crate::Failure;
+use std::path::{Path, PathBuf};
+
+pub use crate::check::check;
+
+/// A request to stop a run, polled after every step (the Python layer
+/// answers it from Ctrl-C).
+#[derive(Clone)]
+pub struct Cancel(pub std::sync::Arc<dyn Fn() -> bool + Send + Sync>);
+
+impl std::fmt::Debug for Cancel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Cancel")
+    }
+}
+
+/// What `stancf run` writes besides the result files.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// Output folder (default: `out/<scenario file stem>/`).
+    pub out: Option<PathBuf>,
+    /// Also draw the run's figures (PNG and SVG) next to its results.
+    pub plot: bool,
+    /// Also write ParaView files (one .vtp per written step, cable.pvd).
+    pub vtk: bool,
+    /// No progress bar and no summary on standard output (errors and
+    /// warnings still go to standard error).
+    pub quiet: bool,
+    /// Run even when the step count or the result size exceeds the
+    /// bounds that otherwise refuse a run.
+    pub allow_large: bool,
+    /// Stop when this says so (checked after every step).
+    pub cancel: Option<Cancel>,
+}
+
+impl RunOptions {
+    /// Whether the run is asked to stop now (see [`RunOptions::cancel`]).
+    fn cancelled(&self) -> bool {
+        self.cancel.as_ref().is_some_and(|c| (c.0)())
+    }
+}
+
+/// Where a run writes (`dir`, the staging folder of its [`ResultFolder`])
+/// and the folder its results appear in (`shown`, named in messages).
+struct Place<'a> {
+    dir: &'a Path,
+    shown: &'a Path,
+}
+
+/// A write error as the failure of a run whose results go to `dir`.
+fn io_err(dir: &Path) -> impl Fn(std::io::Error) -> Failure + '_ {
+    move |e| Failure::Other(format!("{}: cannot write results: {e}", dir.display()))
+}
+
+/// The output folder: `--out`, or `out/<stem>` with the scenario file's
+/// stem made safe as a folder name (letters, digits, `-`, `_`, `.`, no
+/// leading dot; `run` when nothing is left), so the default is always a
+/// folder of its own under `out/`.
+fn output_dir(path: &Path, out: Option<PathBuf>) -> PathBuf {
+    out.unwrap_or_else(|| {
+        let stem = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        PathBuf::from("out").join(safe_folder_name(&stem))
+    })
+}
+
+/// A file stem as a folder name of its own (see [`output_dir`]).
+pub(crate) fn safe_folder_name(stem: &str) -> String {
+    let name: String = stem
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let name = name.trim_start_matches('.');
+    if name.is_empty() {
+        "run".into()
+    } else {
+        name.chars().take(100).collect()
+    }
+}
+
+/// `stancf run`: reads the scenario file and runs it ([`run_text`]).
+pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    run_text(&text, path, opts)
+}
+
+/// Runs scenario text (`path` names it in messages and gives the default
+/// output folder and title). The results are written as one transaction
+/// ([`ResultFolder`]): the output folder holds the complete old set until
+/// the complete new one replaces it, the scenario text included
+/// (`scenario.toml`), also when the solver fails or the run is
+/// interrupted; an invalid scenario or a write error leaves it untouched.
+pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
+    let (sc, model, state) = load_text(text, path)?;
+    crate::work_bounds::admit(path, &sc, &opts)?;
+    // Everything that can refuse the input is decided before anything is
+    // written.
+    let derived = match sc.analysis.kind {
+        AnalysisKind::Dynamic => {
+            let d = derive(&sc, &model, &state);
+            crate::check::check_derived(path, &d)?;
+            Some(d)
+        }
+        AnalysisKind::Static => None,
+    };
+    let target = output_dir(path, opts.out.clone());
+    let folder = ResultFolder::open(&target)?;
+    let place = Place {
+        dir: folder.staging(),
+        shown: folder.target(),
+    };
+    write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
+    let result = match sc.analysis.kind {
+        AnalysisKind::Dynamic => {
+            let d = derived.expect("derived for every dynamic run");
+            dynamic::run_dynamic(path, &place, &opts, sc, model, state, d)
+        }
+        AnalysisKind::Static => statics::run_static(path, &place, &opts, sc, model),
+    };
+    if let Err(Failure::Input(_) | Failure::Other(_)) = result {
+        return result.map(|_| ());
+    }
+    // The figures are drawn from the new files, also those of a run that
+    // stopped early (they hold every converged step).
+    let figures = opts.plot.then(|| crate::figures::plot_results(place.dir));
+    folder.commit().map_err(io_err(&target))?;
+    if let Ok(report) = &result {
+        print!("{report}");
+    }
+    match figures {
+        Some(Ok(names)) => println!(
+            "figures: {} (PNG and SVG) in {}",
+            names.join(", "),
+            target.display()
+        ),
+        Some(Err(e)) => return Err(io_err(&target)(e)),
+        None => {}
+    }
+    result.map(|_| ())
+}
+
+/// `stancf plot DIR`: the figures of the results already in DIR.
+pub fn plot(dir: &Path) -> Result<(), Failure> {
+    if !dir.join("summary.json").exists() {
+        return Err(Failure::Input(format!(
+            "{}: no summary.json here: not a folder of stancf results",
+            dir.display()
+        )));
+    }
+    let names = crate::figures::plot_results(dir).map_err(|e| Failure::Input(e.to_string()))?;
+    println!(
+        "figures: {} (PNG and SVG) in {}",
+        names.join(", "),
+        dir.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,324 @@
+//! `[analysis]` (dynamic or static, the time step, quadrature, solver and
+//! strain measures) and `[output]`, and the settings the library's solvers
+//! take from them.
+
+use super::context::Ctx;
+use super::raw::{RawAnalysis, RawOutput};
+use super::{Scenario, ScenarioError};
+use stancf::error::Sig;
+use stancf::{AxialStrain, ConstraintMethod, Curvature, Measures, SolverMethod, TimeScheme};
+
+/// The most steps a dynamic analysis can have: 2^53, above which f64
+/// cannot count them (t + dt == t).
+pub const MAX_COUNTABLE_STEPS: f64 = 9_007_199_254_740_992.0;
+
+/// Dynamic (P2 steps in time) or static (load steps).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AnalysisKind {
+    Dynamic,
+    Static,
+}
+
+/// The analysis settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Analysis {
+    pub kind: AnalysisKind,
+    /// Dynamic only (0 for a static analysis).
+    pub time_step: f64,
+    pub duration: f64,
+    pub time_layers: usize,
+    /// Spatial Gauss points (None: the element's default).
+    pub space_points: Option<stancf::SpacePoints>,
+    pub time_points: usize,
+    pub tolerance: f64,
+    pub max_iterations: usize,
+    pub solver: SolverMethod,
+    pub time_scheme: TimeScheme,
+    pub load_steps: usize,
+    pub constraint_method: ConstraintMethod,
+    /// Eliminate the out-of-plane coordinates of a planar motion.
+    pub planar_reduction: bool,
+}
+
+/// What the rest of the file holds that a static analysis refuses.
+pub(super) struct Others {
+    /// There are `[[initial_velocity]]` entries.
+    pub(super) initial_velocity: bool,
+    /// There are `[[constraints]]`.
+    pub(super) constraints: bool,
+}
+
+/// `[analysis]`, in this order: `type`, the time (see [`time`]),
+/// `time_layers` (1..=16, default 1), `quadrature` (see [`quadrature`]),
+/// `solver`, `time_scheme` (the Galerkin step with one layer only),
+/// `tolerance` (> 0, default 1e-10), `max_iterations` (1..=10000, default
+/// 50), `load_steps` (1..=1000000, default 20), `curvature`,
+/// `axial_strain`, `constraint_method`; `planar_reduction` defaults to
+/// true. Returns the settings, the strain measures and the notes.
+pub(super) fn analysis(
+    ctx: &Ctx,
+    raw: Option<RawAnalysis>,
+    others: Others,
+) -> Result<(Analysis, Measures, Vec<String>), ScenarioError> {
+    let ra = raw.unwrap_or_default();
+    let kind = match ctx.choice(
+        "analysis.type",
+        ra.kind.as_deref(),
+        "dynamic",
+        &["dynamic", "static"],
+    )? {
+        "static" => AnalysisKind::Static,
+        _ => AnalysisKind::Dynamic,
+    };
+    let mut notes = Vec::new();
+    let (time_step, duration) = time(ctx, &ra, kind, &others, &mut notes)?;
+    let time_layers = match ra.time_layers {
+        Some(n) => ctx.count("analysis.time_layers", n, 1, 16)?,
+        None => 1,
+    };
+    let (space_points, time_points) = quadrature(ctx, ra.quadrature.as_deref())?;
+    let solver = match ctx.choice(
+        "analysis.solver",
+        ra.solver.as_deref(),
+        "newton",
+        &["newton", "broyden", "modified-newton"],
+    )? {
+        "broyden" => SolverMethod::Broyden,
+        "modified-newton" => SolverMethod::ModifiedNewton,
+        _ => SolverMethod::Newton,
+    };
+    let time_scheme = time_scheme(ctx, &ra, time_layers)?;
+    let tolerance = match ra.tolerance {
+        Some(t) => ctx.positive("analysis.tolerance", t)?,
+        None => 1e-10,
+    };
+    let max_iterations = match ra.max_iterations {
+        Some(n) => ctx.count("analysis.max_iterations", n, 1, 10_000)?,
+        None => 50,
+    };
+    let load_steps = match ra.load_steps {
+        Some(n) => ctx.count("analysis.load_steps", n, 1, 1_000_000)?,
+        None => 20,
+    };
+    let measures = measures(ctx, &ra)?;
+    let constraint_method = match ctx.choice(
+        "analysis.constraint_method",
+        ra.constraint_method.as_deref(),
+        "multiplier",
+        &["multiplier", "elimination"],
+    )? {
+        "elimination" => ConstraintMethod::Elimination,
+        _ => ConstraintMethod::Multiplier,
+    };
+    let analysis = Analysis {
+        kind,
+        time_step,
+        duration,
+        time_layers,
+        space_points,
+        time_points,
+        tolerance,
+        max_iterations,
+        solver,
+        time_scheme,
+        load_steps,
+        constraint_method,
+        planar_reduction: ra.planar_reduction.unwrap_or(true),
+    };
+    Ok((analysis, measures, notes))
+}
+
+/// The time of `[analysis]`. Dynamic: `time_step` and `duration` (> 0,
+/// required), the step no longer than the duration, at most
+/// [`MAX_COUNTABLE_STEPS`] steps. Static: no time (0, 0); `time_step`,
+/// `duration` and `planar_reduction` given are noted as unused, and
+/// `[[initial_velocity]]` entries or no `[[constraints]]` are errors.
+fn time(
+    ctx: &Ctx,
+    ra: &RawAnalysis,
+    kind: AnalysisKind,
+    others: &Others,
+    notes: &mut Vec<String>,
+) -> Result<(f64, f64), ScenarioError> {
+    match kind {
+        AnalysisKind::Dynamic => {
+            let time_step = ctx.required_positive("analysis.time_step", ra.time_step)?;
+            let duration = ctx.required_positive("analysis.duration", ra.duration)?;
+            if time_step > duration {
+                return Err(ctx.err(
+                    "analysis.time_step",
+                    format!(
+                        "the step ({time_step:e} s) is longer than the duration ({duration:e} s)"
+                    ),
+                ));
+            }
+            let steps = duration / time_step;
+            if steps > MAX_COUNTABLE_STEPS {
+                return Err(ctx.err(
+                    "analysis.duration, analysis.time_step",
+                    format!(
+                        "duration / time_step = {} steps cannot be counted: above 2^53 = {:.4e} \
+                         the simulated time no longer advances by exactly one step \
+                         (a run is refused above {:e} steps anyway, see `stancf check`)",
+                        Sig(steps),
+                        MAX_COUNTABLE_STEPS,
+                        crate::work_bounds::MAX_STEPS as f64
+                    ),
+                ));
+            }
+            Ok((time_step, duration))
+        }
+        AnalysisKind::Static => {
+            for (name, v) in [("time_step", ra.time_step), ("duration", ra.duration)] {
+                if v.is_some() {
+                    notes.push(format!("analysis.{name} is not used by a static analysis"));
+                }
+            }
+            if ra.planar_reduction.is_some() {
+                notes.push("analysis.planar_reduction is not used by a static analysis".into());
+            }
+            if others.initial_velocity {
+                return Err(ctx.err("initial_velocity", "a static analysis has no velocities"));
+            }
+            if !others.constraints {
+                return Err(ctx.err(
+                    "constraints",
+                    "a static analysis needs constraints that remove the rigid motions; there are none",
+                ));
+            }
+            Ok((0.0, 0.0))
+        }
+    }
+}
+
+/// `analysis.quadrature`: [space, time] or [axial, bending, time] Gauss
+/// points, each 1..=`stancf::quadrature::MAX_POINTS`; default: the
+/// element's spatial points (None) and 3 in time.
+fn quadrature(
+    ctx: &Ctx,
+    q: Option<&[i64]>,
+) -> Result<(Option<stancf::SpacePoints>, usize), ScenarioError> {
+    let qmax = stancf::quadrature::MAX_POINTS as i64;
+    let qkey = "analysis.quadrature";
+    match q {
+        None => Ok((None, 3)),
+        Some([s, t]) => {
+            let s = ctx.count(qkey, *s, 1, qmax)?;
+            let points = stancf::SpacePoints {
+                axial: s,
+                bending: s,
+            };
+            Ok((Some(points), ctx.count(qkey, *t, 1, qmax)?))
+        }
+        Some([a, b, t]) => {
+            let points = stancf::SpacePoints {
+                axial: ctx.count(qkey, *a, 1, qmax)?,
+                bending: ctx.count(qkey, *b, 1, qmax)?,
+            };
+            Ok((Some(points), ctx.count(qkey, *t, 1, qmax)?))
+        }
+        Some(q) => Err(ctx.err(
+            qkey,
+            format!(
+                "expected [space, time] or [axial, bending, time] Gauss points, got {} numbers",
+                q.len()
+            ),
+        )),
+    }
+}
+
+/// `analysis.time_scheme`: "p2" (the default) or "galerkin"; the Galerkin
+/// step refuses `analysis.time_layers` > 1.
+fn time_scheme(
+    ctx: &Ctx,
+    ra: &RawAnalysis,
+    time_layers: usize,
+) -> Result<TimeScheme, ScenarioError> {
+    let time_scheme = match ctx.choice(
+        "analysis.time_scheme",
+        ra.time_scheme.as_deref(),
+        "p2",
+        &["p2", "galerkin"],
+    )? {
+        "galerkin" => TimeScheme::Galerkin,
+        _ => TimeScheme::P2,
+    };
+    if time_scheme == TimeScheme::Galerkin && time_layers > 1 {
+        return Err(ctx.err(
+            "analysis.time_layers",
+            format!(
+                "the Galerkin step takes one layer per step (got {time_layers}): joining layers \
+                 by C1 interior nodes inside a Galerkin step is unstable"
+            ),
+        ));
+    }
+    Ok(time_scheme)
+}
+
+/// The strain measures: `analysis.curvature` ("paper", the default, or
+/// "exact"), then `analysis.axial_strain` ("green", the default, or
+/// "engineering").
+fn measures(ctx: &Ctx, ra: &RawAnalysis) -> Result<Measures, ScenarioError> {
+    let curvature = match ctx.choice(
+        "analysis.curvature",
+        ra.curvature.as_deref(),
+        "paper",
+        &["paper", "exact"],
+    )? {
+        "exact" => Curvature::Exact,
+        _ => Curvature::Paper,
+    };
+    let axial_strain = match ctx.choice(
+        "analysis.axial_strain",
+        ra.axial_strain.as_deref(),
+        "green",
+        &["green", "engineering"],
+    )? {
+        "engineering" => AxialStrain::Engineering,
+        _ => AxialStrain::Green,
+    };
+    Ok(Measures {
+        axial_strain,
+        curvature,
+    })
+}
+
+/// `[output]`: `every` (at least 1, default 1): the steps between two
+/// written steps.
+pub(super) fn output_every(ctx: &Ctx, raw: Option<RawOutput>) -> Result<usize, ScenarioError> {
+    let ro = raw.unwrap_or_default();
+    match ro.every {
+        Some(n) => ctx.count("output.every", n, 1, i64::MAX),
+        None => Ok(1),
+    }
+}
+
+impl Scenario {
+    /// The step settings for the library.
+    pub fn step_settings(&self) -> stancf::StepSettings {
+        stancf::StepSettings {
+            time_step: self.analysis.time_step,
+            time_layers: self.analysis.time_layers,
+            time_points: self.analysis.time_points,
+            newton: stancf::NewtonSettings {
+                tolerance: self.analysis.tolerance,
+                max_iterations: self.analysis.max_iterations,
+                method: self.analysis.solver,
+            },
+            constraint_method: self.analysis.constraint_method,
+            time_scheme: self.analysis.time_scheme,
+            planar_reduction: self.analysis.planar_reduction,
+        }
+    }
+
+    /// The static solve settings for the library.
+    pub fn static_settings(&self) -> stancf::StaticSettings {
+        stancf::StaticSettings {
+            load_steps: self.analysis.load_steps,
+            tolerance: self.analysis.tolerance,
+            max_iterations: self.analysis.max_iterations,
+            constraint_method: self.analysis.constraint_method,
+            ..stancf::StaticSettings::default()
+        }
+    }
+}

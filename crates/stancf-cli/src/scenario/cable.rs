@@ -1,0 +1,75 @@
+//! `[cable]` (the straight reference line and its mesh) and `[material]`
+//! (the section's stiffness and mass, and the diameter seen by drag).
+
+use super::context::Ctx;
+use super::raw::{RawCable, RawMaterial};
+use super::ScenarioError;
+use stancf::{ElementType, Material};
+
+/// `[cable]`: `length` (> 0, required), `elements` (1..=1000000,
+/// required), `element` ("SAC-2", the default, or "SAC-3"), `origin`
+/// (default [0, 0, 0]) and `direction` (default [1, 0, 0], not zero; made
+/// a unit vector).
+pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, ScenarioError> {
+    let rc = ctx.required("cable", raw)?;
+    let length = ctx.required_positive("cable.length", rc.length)?;
+    let elements = ctx.count(
+        "cable.elements",
+        ctx.required("cable.elements", rc.elements)?,
+        1,
+        1_000_000,
+    )?;
+    let element_type = match ctx.choice(
+        "cable.element",
+        rc.element.as_deref(),
+        "SAC-2",
+        &["SAC-2", "SAC-3"],
+    )? {
+        "SAC-3" => ElementType::Sac3,
+        _ => ElementType::Sac2,
+    };
+    let origin = ctx.vector_or("cable.origin", rc.origin.as_deref(), [0.0; 3])?;
+    let direction = ctx.vector_or("cable.direction", rc.direction.as_deref(), [1.0, 0.0, 0.0])?;
+    if direction.iter().all(|&c| c == 0.0) {
+        return Err(ctx.err("cable.direction", "must not be the zero vector"));
+    }
+    Ok(stancf::Cable {
+        length,
+        elements,
+        element_type,
+        origin,
+        direction: unit(direction),
+    })
+}
+
+/// The unit vector along a non-zero `v`. Only its direction counts: scaled
+/// by its largest component first, so that [1e-200, 0, 0] and
+/// [1e300, 0, 0] are unit vectors too (their squared lengths underflow or
+/// overflow).
+fn unit(v: [f64; 3]) -> [f64; 3] {
+    let big = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let d = v.map(|c| c / big);
+    let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    d.map(|c| c / n)
+}
+
+/// `[material]`: `youngs_modulus`, `density`, `area` and `second_moment`
+/// (each > 0, required, in that order), and the `diameter` (> 0; default
+/// sqrt(4 area / pi)), returned beside the material.
+pub(super) fn material(
+    ctx: &Ctx,
+    raw: Option<RawMaterial>,
+) -> Result<(Material, f64), ScenarioError> {
+    let rm = ctx.required("material", raw)?;
+    let material = Material {
+        youngs_modulus: ctx.required_positive("material.youngs_modulus", rm.youngs_modulus)?,
+        density: ctx.required_positive("material.density", rm.density)?,
+        area: ctx.required_positive("material.area", rm.area)?,
+        second_moment: ctx.required_positive("material.second_moment", rm.second_moment)?,
+    };
+    let diameter = match rm.diameter {
+        Some(d) => ctx.positive("material.diameter", d)?,
+        None => (4.0 * material.area / std::f64::consts::PI).sqrt(),
+    };
+    Ok((material, diameter))
+}

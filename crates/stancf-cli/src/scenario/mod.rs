@@ -1,0 +1,118 @@
+//! Scenario files (TOML, docs/interface.md): parsing and validation.
+//!
+//! Every problem is reported as `<file>: <key>: <what is wrong>`, before
+//! anything is written. Unknown keys are errors at every level.
+//!
+//! [`parse`] reads the file (`raw`) and validates it part by part, in
+//! the file's order, so that the first wrong key is the one reported:
+//! `cable` (`[cable]`, `[material]`), `constraints`, `loads`,
+//! `initial_velocity`, `analysis` (`[analysis]`, `[output]`). The checks
+//! they share are in `context`, the words of the messages in `messages`.
+
+mod analysis;
+mod cable;
+mod constraints;
+mod context;
+mod initial_velocity;
+mod loads;
+mod messages;
+mod raw;
+
+pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
+pub use initial_velocity::{InitialVelocity, NodeSet};
+pub use messages::{clip, MAX_ECHO};
+
+use context::Ctx;
+use raw::RawScenario;
+use stancf::{Load, Material, ModelOptions};
+use std::path::Path;
+
+/// An invalid scenario: the message names the file and the key.
+#[derive(Debug)]
+pub struct ScenarioError(pub String);
+
+impl std::fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// A validated scenario.
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    pub title: String,
+    pub cable: stancf::Cable,
+    pub material: Material,
+    pub diameter: f64,
+    pub options: ModelOptions,
+    pub loads: Vec<Load>,
+    pub constraints: Vec<stancf::Constraint>,
+    pub initial_velocity: Vec<InitialVelocity>,
+    pub analysis: Analysis,
+    pub output_every: usize,
+    /// Things worth saying that do not make the scenario invalid.
+    pub notes: Vec<String>,
+}
+
+/// Reads and validates a scenario file.
+pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| ScenarioError(format!("{file}: cannot read the file: {e}")))?;
+    parse(&text, &file, path)
+}
+
+/// Parses and validates scenario text; `file` names it in messages. The
+/// `title` defaults to the file's stem (from `path`).
+pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioError> {
+    let ctx = Ctx { file };
+    let raw: RawScenario =
+        toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
+    let title = raw.title.unwrap_or_else(|| {
+        path.file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    });
+    let cable = cable::cable(&ctx, raw.cable)?;
+    let (material, diameter) = cable::material(&ctx, raw.material)?;
+    let constraints = constraints::constraints(&ctx, &raw.constraints, cable.elements)?;
+    let loads = loads::loads(&ctx, &raw.loads, cable.elements, diameter)?;
+    let initial_velocity =
+        initial_velocity::initial_velocities(&ctx, &raw.initial_velocity, cable.elements)?;
+    let others = analysis::Others {
+        initial_velocity: !raw.initial_velocity.is_empty(),
+        constraints: !constraints.is_empty(),
+    };
+    let (analysis, measures, notes) = analysis::analysis(&ctx, raw.analysis, others)?;
+    initial_velocity::check_initial_velocities(&ctx, &initial_velocity, &constraints)?;
+    let output_every = analysis::output_every(&ctx, raw.output)?;
+    Ok(Scenario {
+        title,
+        cable,
+        material,
+        diameter,
+        options: ModelOptions {
+            measures,
+            space_points: analysis.space_points,
+        },
+        loads,
+        constraints,
+        initial_velocity,
+        analysis,
+        output_every,
+        notes,
+    })
+}
+
+impl Scenario {
+    /// The library model.
+    pub fn model(&self) -> Result<stancf::Model, stancf::ModelError> {
+        stancf::Model::new(
+            self.cable,
+            self.material,
+            self.options.clone(),
+            self.loads.clone(),
+        )?
+        .with_constraints(self.constraints.clone())
+    }
+}
