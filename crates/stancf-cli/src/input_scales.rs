@@ -15,6 +15,7 @@ use crate::scenario::{AnalysisKind, Scenario};
 use crate::Failure;
 use rules::{key, keys, largest, norm, with, Figures, Rule};
 use stancf::error::Sig;
+use stancf::model::SLOT_R;
 use stancf::{ConstraintKind, Energies, Model, State};
 
 /// The range of the derived scales of a scenario (energies, forces,
@@ -378,12 +379,11 @@ fn initial_speed(
     motions: &[Motion],
     velocity_keys: Vec<String>,
 ) -> Result<Speed, Failure> {
-    let dpn = model.dofs_per_node();
     let mut speed = 0.0f64;
     for j in 0..model.nodes() {
-        let o = model.node_offset(j);
+        let o = model.coordinate(j, SLOT_R, 0);
         speed = speed.max(norm(&state.v[o..o + 3]));
-        if !state.v[o..o + dpn].iter().all(|v| v.is_finite()) {
+        if !state.v[model.node_range(j)].iter().all(|v| v.is_finite()) {
             speed = f64::INFINITY;
         }
     }

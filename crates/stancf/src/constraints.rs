@@ -20,7 +20,7 @@
 //! the same motion to round-off.
 
 use crate::error::ModelError;
-use crate::model::ElementType;
+use crate::model::{coordinate, ElementType, SLOT_R};
 
 /// What a constraint fixes (docs/method.md §6.1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,7 +134,7 @@ impl Constraints {
                     ),
                 ));
             }
-            let o = c.node * dpn;
+            let o = coordinate(dpn, c.node, SLOT_R, 0);
             let coords: Vec<(usize, CoordinateMotion)> = match c.kind {
                 ConstraintKind::Clamped { fix_curvature } => {
                     if fix_curvature && element != ElementType::Sac3 {

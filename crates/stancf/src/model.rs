@@ -4,13 +4,42 @@
 //! `e[j * dpn .. (j + 1) * dpn]` = `[r, r_x]` (SAC-2, dpn = 6) or
 //! `[r, r_x, r_xx]` (SAC-3, dpn = 9). Element k spans nodes k and k + 1, so
 //! its coordinates are the contiguous slice starting at `k * dpn`, in the
-//! element's own order (docs/method.md §1.1).
+//! element's own order (docs/method.md §1.1). [`coordinate`] computes
+//! every such index; the rest of the crate calls it.
 
 use crate::constraints::{Constraint, Constraints};
 use crate::element::{CableElement, Measures, Section, SpaceRules};
 use crate::error::ModelError;
 use crate::quadrature::GaussRule;
 use crate::shape::{cubic_hermite, quintic_hermite};
+use std::ops::Range;
+
+/// Vector slot of the position r in a node's coordinates.
+pub const SLOT_R: usize = 0;
+/// Vector slot of the gradient r_x.
+pub const SLOT_R_X: usize = 1;
+/// Vector slot of the second gradient r_xx (SAC-3 only).
+pub const SLOT_R_XX: usize = 2;
+
+/// Global index of component `component` (x, y, z = 0, 1, 2) of vector
+/// `slot` ([`SLOT_R`], [`SLOT_R_X`], [`SLOT_R_XX`]) of node `node`, with
+/// `dpn` scalar coordinates per node: `node dpn + 3 slot + component`
+/// (docs/method.md §1.1). The one place the numbering is written; every
+/// index of a coordinate is computed here. An element's coordinates are
+/// contiguous from its first node's, so a slot past the node's own
+/// vectors counts on into the next node: element k's vector a (its own
+/// order, 0..NS) is `coordinate(dpn, k, a, i)`, and `coordinate(dpn, k,
+/// SLOT_R, 0)` is the start of element k's slice.
+#[inline]
+pub const fn coordinate(dpn: usize, node: usize, slot: usize, component: usize) -> usize {
+    node * dpn + 3 * slot + component
+}
+
+/// The coordinates of node `node`: `[r, r_x(, r_xx)]`.
+#[inline]
+pub const fn node_range(dpn: usize, node: usize) -> Range<usize> {
+    coordinate(dpn, node, SLOT_R, 0)..coordinate(dpn, node + 1, SLOT_R, 0)
+}
 
 /// The two space-time elements of the paper (Table 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -488,7 +517,20 @@ impl Model {
 
     /// Index of the first coordinate of node j.
     pub fn node_offset(&self, node: usize) -> usize {
-        node * self.dofs_per_node()
+        self.coordinate(node, SLOT_R, 0)
+    }
+
+    /// Global index of component `component` of vector `slot` of node
+    /// `node` (see [`coordinate`]).
+    #[inline]
+    pub fn coordinate(&self, node: usize, slot: usize, component: usize) -> usize {
+        coordinate(self.dofs_per_node(), node, slot, component)
+    }
+
+    /// The coordinates of node j (see [`node_range`]).
+    #[inline]
+    pub fn node_range(&self, node: usize) -> Range<usize> {
+        node_range(self.dofs_per_node(), node)
     }
 
     /// Position r of node j in state e.
@@ -597,9 +639,8 @@ impl Model {
     pub fn add_rigid_rotation(&self, state: &mut State, omega: [f64; 3], center: [f64; 3]) {
         let vpn = self.cable.element_type.vectors_per_node();
         for j in 0..self.nodes() {
-            let o = self.node_offset(j);
             for k in 0..vpn {
-                let b = o + 3 * k;
+                let b = self.coordinate(j, k, 0);
                 let mut arm = [state.e[b], state.e[b + 1], state.e[b + 2]];
                 if k == 0 {
                     for i in 0..3 {
@@ -628,7 +669,7 @@ impl Model {
         let dpn = self.dofs_per_node();
         crate::with_elements!(&self.mesh, els => {
             for (k, el) in els.iter().enumerate() {
-                let o = k * dpn;
+                let o = coordinate(dpn, k, SLOT_R, 0);
                 let mq = el.mass_times(&gather(x, o));
                 for (d, v) in mq.iter().enumerate() {
                     y[o + d] += v;
@@ -643,10 +684,9 @@ impl Model {
         let mut diag = vec![0.0; self.dofs()];
         crate::with_elements!(&self.mesh, els => {
             for (k, el) in els.iter().enumerate() {
-                let o = k * dpn;
                 for (s, row) in el.mass.iter().enumerate() {
                     for i in 0..3 {
-                        diag[o + 3 * s + i] += row[s];
+                        diag[coordinate(dpn, k, s, i)] += row[s];
                     }
                 }
             }

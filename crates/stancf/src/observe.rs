@@ -4,7 +4,7 @@
 //! conserved energy).
 
 use crate::element::{axial_strain, curvature, CableElement};
-use crate::model::{gather, Model, State};
+use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
 /// Energies of a state (J).
@@ -46,8 +46,9 @@ fn element_energies<const NS: usize, const ND: usize>(
 ) -> Energies {
     let mut en = Energies::default();
     for (k, el) in els.iter().enumerate() {
-        let q: [f64; ND] = gather(&state.e, k * dpn);
-        let qd: [f64; ND] = gather(&state.v, k * dpn);
+        let o = coordinate(dpn, k, SLOT_R, 0);
+        let q: [f64; ND] = gather(&state.e, o);
+        let qd: [f64; ND] = gather(&state.v, o);
         let mq = el.mass_times(&qd);
         en.kinetic += 0.5 * qd.iter().zip(mq.iter()).map(|(a, b)| a * b).sum::<f64>();
         en.strain += el.strain_energy(&q);
@@ -81,7 +82,7 @@ pub fn momentum(model: &Model, state: &State) -> (f64, [f64; 3], [f64; 3]) {
     crate::with_elements!(&model.mesh, els => {
         for (k, el) in els.iter().enumerate() {
             for (a, w) in el.weight_integrals.iter().enumerate() {
-                let o = (k + a / vpn) * dpn + 3 * (a % vpn);
+                let o = coordinate(dpn, k, a, 0);
                 if a % vpn == 0 {
                     mass += w;
                 }
@@ -131,15 +132,12 @@ pub fn stress_samples(
     let m = model.options.measures;
     let n = per_element.max(2);
     for k in 0..model.cable.elements {
+        let q = &state.e[coordinate(dpn, k, SLOT_R, 0)..];
         for p in 0..n {
             let xi = p as f64 / (n - 1) as f64;
             let (rx, rxx) = match model.element_type() {
-                crate::model::ElementType::Sac2 => {
-                    cubic_hermite(xi, l).gradients(&state.e[k * dpn..])
-                }
-                crate::model::ElementType::Sac3 => {
-                    quintic_hermite(xi, l).gradients(&state.e[k * dpn..])
-                }
+                crate::model::ElementType::Sac2 => cubic_hermite(xi, l).gradients(q),
+                crate::model::ElementType::Sac3 => quintic_hermite(xi, l).gradients(q),
             };
             out.push(StressSample {
                 element: k,
@@ -162,7 +160,7 @@ pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64
         let first = if k == 0 { 0 } else { 1 };
         for p in first..n {
             let xi = p as f64 / (n - 1) as f64;
-            let q = &state.e[k * dpn..];
+            let q = &state.e[coordinate(dpn, k, SLOT_R, 0)..];
             let shape: Vec<f64> = match model.element_type() {
                 crate::model::ElementType::Sac2 => cubic_hermite(xi, l).n.to_vec(),
                 crate::model::ElementType::Sac3 => quintic_hermite(xi, l).n.to_vec(),
@@ -205,7 +203,8 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
     let m = model.options.measures;
     let mut out: Vec<CablePoint> = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
     for k in 0..model.cable.elements {
-        let (q, qd) = (&state.e[k * dpn..], &state.v[k * dpn..]);
+        let o = coordinate(dpn, k, SLOT_R, 0);
+        let (q, qd) = (&state.e[o..], &state.v[o..]);
         for p in 0..n {
             let xi = p as f64 / (n - 1) as f64;
             let (shape, (rx, rxx)): (Vec<f64>, _) = match model.element_type() {

@@ -22,7 +22,7 @@
 
 use crate::band::BandLu;
 use crate::element::TimeSlab;
-use crate::model::Model;
+use crate::model::{coordinate, Model, SLOT_R};
 use crate::quadrature::GaussRule;
 
 /// The P2 step (with `layers` layers of equal length) applied to
@@ -364,7 +364,7 @@ fn add_element_stiffness<const NS: usize, const ND: usize>(
     let mut grad = [0.0; ND];
     let mut hess = [[0.0; ND]; ND];
     for (j, el) in els.iter().enumerate() {
-        let o = j * dpn;
+        let o = coordinate(dpn, j, SLOT_R, 0);
         let q: [f64; ND] = crate::model::gather(e, o);
         el.strain_energy_derivatives(&q, &mut grad, Some(&mut hess));
         for a in 0..ND {

@@ -52,7 +52,7 @@ use crate::band::{BandLu, BandMatrix};
 use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, Sig, SolverError, STATIC_SOLVE};
-use crate::model::{Model, State};
+use crate::model::{coordinate, Model, State, SLOT_R};
 use crate::quadrature::GaussRule;
 use std::ops::ControlFlow;
 
@@ -490,7 +490,7 @@ impl StaticSolver {
         let dpn = self.layout.dpn;
         for (node, force) in self.reactions.iter_mut() {
             for c in 0..3 {
-                let g = *node * dpn + c;
+                let g = coordinate(dpn, *node, SLOT_R, c);
                 force[c] = match self.layout.multiplier_at(0, g) {
                     Some(m) => self.x[m],
                     None => self.scratch.reaction_rows[g],

@@ -4,6 +4,7 @@
 use super::{md_num, write_files};
 use crate::output::Num;
 use crate::Failure;
+use stancf::model::{SLOT_R, SLOT_R_X};
 use stancf::observe::stress_samples;
 use stancf::{Cable, ElementType, Material, Model, ModelOptions, Simulation, StepSettings};
 use std::fmt::Write as _;
@@ -177,7 +178,6 @@ fn wave_speed(history: &[(f64, [f64; 2])], stations: [f64; 2]) -> f64 {
 /// The peak stress of the same initial field on 64 SAC-2 elements.
 fn refined_peak() -> Result<f64, Failure> {
     let (model, mut s) = table4(ElementType::Sac2, 64, [0.0; 3])?;
-    let dpn = model.dofs_per_node();
     let width = 0.5;
     for j in 0..model.nodes() {
         let x = model.node_coordinate(j);
@@ -189,13 +189,13 @@ fn refined_peak() -> Result<f64, Failure> {
         };
         if x <= width + 1e-12 {
             let (h, dh) = bump(x / width);
-            s.v[j * dpn] = V0 * h;
-            s.v[j * dpn + 3] = V0 * dh;
+            s.v[model.coordinate(j, SLOT_R, 0)] = V0 * h;
+            s.v[model.coordinate(j, SLOT_R_X, 0)] = V0 * dh;
         }
         if x >= 4.0 - width - 1e-12 {
             let (h, dh) = bump((4.0 - x) / width);
-            s.v[j * dpn] = -V0 * h;
-            s.v[j * dpn + 3] = V0 * dh;
+            s.v[model.coordinate(j, SLOT_R, 0)] = -V0 * h;
+            s.v[model.coordinate(j, SLOT_R_X, 0)] = V0 * dh;
         }
     }
     let mut sim =

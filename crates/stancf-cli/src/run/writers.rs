@@ -3,6 +3,7 @@
 //! written to its `.partial` name and committed when complete.
 
 use crate::output::{AtomicFile, Num};
+use stancf::model::SLOT_R_X;
 use stancf::observe::{stress_samples, Energies, StressSample};
 use stancf::{Model, State};
 use std::io::Write;
@@ -156,10 +157,10 @@ impl Writers {
             Num(row.drag_work)
         )?;
         let w = self.nodes.writer();
-        let dpn = model.dofs_per_node();
         for j in 0..model.nodes() {
             let r = model.node_position(&state.e, j);
-            let d = &state.e[j * dpn + 3..j * dpn + 6];
+            let o = model.coordinate(j, SLOT_R_X, 0);
+            let d = &state.e[o..o + 3];
             writeln!(
                 w,
                 "{t},{j},{},{},{},{},{},{}",

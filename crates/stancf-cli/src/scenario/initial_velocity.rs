@@ -5,6 +5,7 @@
 use super::context::Ctx;
 use super::raw::RawInitialVelocity;
 use super::{Scenario, ScenarioError};
+use stancf::model::SLOT_R_X;
 
 /// Which nodes an initial velocity applies to.
 #[derive(Clone, Debug, PartialEq)]
@@ -130,10 +131,9 @@ impl Scenario {
                     }
                     if let Some(w) = iv.angular_velocity {
                         // Gradients' velocities come only from the rotation.
-                        let dpn = model.dofs_per_node();
                         for n in 0..model.nodes() {
-                            let o = model.node_offset(n);
-                            s.v[o + 3..o + dpn].fill(0.0);
+                            let slopes = model.coordinate(n, SLOT_R_X, 0)..model.node_range(n).end;
+                            s.v[slopes].fill(0.0);
                         }
                         model.add_rigid_rotation(&mut s, w, iv.center);
                     }

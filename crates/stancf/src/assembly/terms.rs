@@ -1,0 +1,468 @@
+//! The contributions to a step's rows and Jacobian: the element actions
+//! of every layer (docs/method.md §3.1-3.2), the static element rows
+//! (§6.8), the nodal loads (§2.6-2.7), the momentum terms (§4.3, §5.1)
+//! and the multipliers and constraint equations (§6.3, §6.5).
+
+use super::layout::NONE;
+use super::system::{AssemblyScratch, StepProblem, Target};
+use super::{Kind, Scheme};
+use crate::band::BandMatrix;
+use crate::constraints::ConstraintMethod;
+use crate::element::{CableElement, SlabDerivatives, SlabLoads};
+use crate::loads::EndMoment;
+use crate::model::{coordinate, gather, SLOT_R, SLOT_R_X};
+
+/// (time node, kind) of the four slots of a layer j's element: e_j, v_j,
+/// e_j+1, v_j+1 (the order of the element's time shape functions).
+#[inline]
+fn layer_slots(j: usize) -> [(usize, Kind); 4] {
+    [
+        (j, Kind::Position),
+        (j, Kind::Velocity),
+        (j + 1, Kind::Position),
+        (j + 1, Kind::Velocity),
+    ]
+}
+
+/// (node, coordinate of the node) of entry d of element k's coordinates
+/// (the element spans nodes k and k + 1; docs/method.md §1.1).
+#[inline]
+fn element_entry(dpn: usize, k: usize, d: usize) -> (usize, usize) {
+    if d < dpn {
+        (k, d)
+    } else {
+        (k + 1, d - dpn)
+    }
+}
+
+/// Global rows (or columns) of an element's entries, per slot: `None` for
+/// a slot without rows (columns), NONE for an entry without one.
+type SlotIndices<const ND: usize> = [Option<[usize; ND]>; 4];
+
+impl StepProblem<'_> {
+    /// Element actions of every layer, eq. (10) (docs/method.md §3.1-3.2,
+    /// (M13)-(M14)).
+    pub(super) fn slab_elements<const NS: usize, const ND: usize>(
+        &self,
+        elements: &[CableElement<NS, ND>],
+        derivs: &mut SlabDerivatives<ND>,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let dpn = layout.dpn;
+        let g = &self.model.gravity;
+        let loads = SlabLoads {
+            gravity: g.map(|c| c * self.start.load_factor),
+            drag: &self.model.drag,
+        };
+        let mut block = [[0.0; ND]; ND];
+        for j in 0..layout.layers() {
+            let slots = layer_slots(j);
+            let row_slots = slots.map(|(i, k)| layout.row_slot(i, k));
+            let col_slots = slots.map(|(i, k)| layout.unknown_slot(i, k));
+            for (k, el) in elements.iter().enumerate() {
+                let o = coordinate(dpn, k, SLOT_R, 0);
+                let mut y = [[0.0; ND]; 4];
+                for (m, &(i, kind)) in slots.iter().enumerate() {
+                    let src = match kind {
+                        Kind::Position => &scratch.node_e,
+                        Kind::Velocity => &scratch.node_v,
+                    };
+                    y[m] = gather(src, i * n + o);
+                }
+                el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
+                scratch.drag_work += derivs.drag_work;
+                let targets = self.element_targets::<ND>(k, &row_slots);
+                for m in 0..4 {
+                    for d in 0..ND {
+                        self.add(targets[m][d], derivs.grad[m][d], residual, scratch);
+                    }
+                }
+                let Some(jac) = jacobian.as_deref_mut() else {
+                    continue;
+                };
+                let mut rows: SlotIndices<ND> = [None; 4];
+                for m in 0..4 {
+                    rows[m] = row_slots[m].map(|_| {
+                        targets[m].map(|t| match t {
+                            Target::Row(r) => r,
+                            _ => NONE,
+                        })
+                    });
+                }
+                let cols = col_slots.map(|s| s.map(|s| self.element_unknowns::<ND>(k, s)));
+                add_slab_hessian(el, self.slab, derivs, &rows, &cols, &mut block, jac);
+            }
+        }
+    }
+
+    /// Where each entry of element k's gradient goes, per slot of the
+    /// layer (Galerkin: slot 2, e_b, is the end momentum).
+    #[inline]
+    fn element_targets<const ND: usize>(
+        &self,
+        k: usize,
+        row_slots: &[Option<usize>; 4],
+    ) -> [[Target; ND]; 4] {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let dpn = layout.dpn;
+        let o = coordinate(dpn, k, SLOT_R, 0);
+        let mut targets = row_slots.map(|rs| {
+            let mut out = [Target::Nothing; ND];
+            if let Some(s) = rs {
+                for (d, t) in out.iter_mut().enumerate() {
+                    let (node, dd) = element_entry(dpn, k, d);
+                    *t = match layout.row_of_node(s, node, dd) {
+                        Some(r) => Target::Row(r),
+                        None if self.model.constraints.is_constrained(o + d) => {
+                            Target::Reaction(s * n + o + d)
+                        }
+                        None => Target::Nothing,
+                    };
+                }
+            }
+            out
+        });
+        if layout.scheme == Scheme::Galerkin {
+            for (d, t) in targets[2].iter_mut().enumerate() {
+                *t = Target::Momentum(o + d);
+            }
+        }
+        targets
+    }
+
+    /// Global unknowns of element k's entries in unknown slot s (NONE
+    /// where eliminated).
+    #[inline]
+    fn element_unknowns<const ND: usize>(&self, k: usize, s: usize) -> [usize; ND] {
+        let dpn = self.layout.dpn;
+        let mut out = [NONE; ND];
+        for (d, v) in out.iter_mut().enumerate() {
+            let (node, dd) = element_entry(dpn, k, d);
+            *v = self.layout.unknown_of_node(s, node, dd).unwrap_or(NONE);
+        }
+        out
+    }
+
+    /// Static rows dU/de - f_g (the load factor scales the loads).
+    pub(super) fn static_elements<const NS: usize, const ND: usize>(
+        &self,
+        elements: &[CableElement<NS, ND>],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let dpn = layout.dpn;
+        let gravity = self.model.gravity.map(|c| c * self.start.load_factor);
+        let mut grad = [0.0; ND];
+        let mut hess = [[0.0; ND]; ND];
+        for (k, el) in elements.iter().enumerate() {
+            let o = coordinate(dpn, k, SLOT_R, 0);
+            let q: [f64; ND] = gather(&scratch.node_e, o);
+            let want = jacobian.is_some();
+            el.strain_energy_derivatives(&q, &mut grad, if want { Some(&mut hess) } else { None });
+            // A cable at rest in a moving fluid: drag f(0, r_x) is a load.
+            for drag in &self.model.drag {
+                el.add_static_drag(
+                    drag,
+                    self.start.load_factor,
+                    &q,
+                    &mut grad,
+                    want.then_some(&mut hess),
+                );
+            }
+            let fg = el.gravity_load(&gravity);
+            for d in 0..ND {
+                let t = self.target(Some(0), o + d);
+                self.add(t, grad[d] - fg[d], residual, scratch);
+            }
+            if let Some(jac) = jacobian.as_deref_mut() {
+                for a in 0..ND {
+                    let Some(r) = layout.row_at(0, o + a) else {
+                        continue;
+                    };
+                    for b in 0..ND {
+                        if let Some(c) = layout.unknown_at(0, o + b) {
+                            jac.add(r, c, hess[a][b]);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Point forces (eq. 14) and end moments (eqs. 15-16): in a P2 step
+    /// their work over each layer, sum_g w_g dt F(q(t_g)) . q(t_g); in
+    /// statics minus the force (docs/method.md §2.6-2.7, (M7)).
+    pub(super) fn nodal_loads(
+        &self,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        self.point_forces(residual, scratch);
+        let lf = self.start.load_factor;
+        for (node, mv) in self.model.end_moments() {
+            let Some(moment) = EndMoment::from_vector(&mv.map(|c| c * lf)) else {
+                continue;
+            };
+            let g0 = coordinate(self.layout.dpn, node, SLOT_R_X, 0);
+            if self.layout.scheme == Scheme::Static {
+                self.static_end_moment(&moment, g0, residual, jacobian.as_deref_mut(), scratch);
+            } else {
+                self.slab_end_moment(&moment, g0, residual, jacobian.as_deref_mut(), scratch);
+            }
+        }
+    }
+
+    /// Point forces, eq. (14): their work over each layer (the slab's
+    /// load weights), or minus the force in statics (docs/method.md §2.6).
+    fn point_forces(&self, residual: &mut [f64], scratch: &mut AssemblyScratch) {
+        let layout = self.layout;
+        let lf = self.start.load_factor;
+        let is_static = layout.scheme == Scheme::Static;
+        for (node, f) in self.model.point_forces() {
+            let f = f.map(|c| c * lf);
+            for c in 0..3 {
+                let g = coordinate(layout.dpn, node, SLOT_R, c);
+                if is_static {
+                    let t = self.target(Some(0), g);
+                    self.add(t, -f[c], residual, scratch);
+                    continue;
+                }
+                for j in 0..layout.layers() {
+                    for (m, (i, kind)) in layer_slots(j).into_iter().enumerate() {
+                        let t = self.target_at(i, kind, g);
+                        self.add(t, self.slab.load[m] * f[c], residual, scratch);
+                    }
+                }
+            }
+        }
+    }
+
+    /// An end moment in statics, eqs. (15)-(16): minus its generalized
+    /// force on the r_x coordinates from `g0` and minus its derivative
+    /// (docs/method.md §2.7).
+    fn static_end_moment(
+        &self,
+        moment: &EndMoment,
+        g0: usize,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let rx = [
+            scratch.node_e[g0],
+            scratch.node_e[g0 + 1],
+            scratch.node_e[g0 + 2],
+        ];
+        let (q, dq) = moment.generalized_force(&rx);
+        for a in 0..3 {
+            let t = self.target(Some(0), g0 + a);
+            self.add(t, -q[a], residual, scratch);
+            if let (Some(jac), Some(r)) = (jacobian.as_deref_mut(), layout.row_at(0, g0 + a)) {
+                for b in 0..3 {
+                    if let Some(c) = layout.unknown_at(0, g0 + b) {
+                        jac.add(r, c, -dq[a][b]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// An end moment in a step, eqs. (15)-(16): its work over each layer,
+    /// sum_g w_g dt Q(r_x(t_g)) . r_x(t_g), on the r_x coordinates from
+    /// `g0` (docs/method.md §2.7, (M7)).
+    fn slab_end_moment(
+        &self,
+        moment: &EndMoment,
+        g0: usize,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        for j in 0..layout.layers() {
+            let slots = layer_slots(j);
+            for tp in &self.slab.points {
+                let mut rx = [0.0; 3];
+                for (m, &(i, kind)) in slots.iter().enumerate() {
+                    let src = match kind {
+                        Kind::Position => &scratch.node_e,
+                        Kind::Velocity => &scratch.node_v,
+                    };
+                    for a in 0..3 {
+                        rx[a] += tp.shape.t[m] * src[i * n + g0 + a];
+                    }
+                }
+                let (q, dq) = moment.generalized_force(&rx);
+                for (m, &(i, kind)) in slots.iter().enumerate() {
+                    let rs = layout.row_slot(i, kind);
+                    let wm = tp.w_dt * tp.shape.t[m];
+                    for a in 0..3 {
+                        let t = self.target_at(i, kind, g0 + a);
+                        self.add(t, wm * q[a], residual, scratch);
+                    }
+                    let (Some(jac), Some(rs)) = (jacobian.as_deref_mut(), rs) else {
+                        continue;
+                    };
+                    for (nn, &(i2, kind2)) in slots.iter().enumerate() {
+                        let Some(cs) = layout.unknown_slot(i2, kind2) else {
+                            continue;
+                        };
+                        let w = wm * tp.shape.t[nn];
+                        for a in 0..3 {
+                            let Some(r) = layout.row_at(rs, g0 + a) else {
+                                continue;
+                            };
+                            for b in 0..3 {
+                                if let Some(c) = layout.unknown_at(cs, g0 + b) {
+                                    jac.add(r, c, w * dq[a][b]);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Momentum terms: + p_a (= M v_a) on row e_0; P2 also - M v_L on row
+    /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead;
+    /// docs/method.md §4.3 and §5.1).
+    pub(super) fn momentum_terms(
+        &self,
+        residual: &mut [f64],
+        jacobian: Option<&mut BandMatrix>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        let layout = self.layout;
+        let n = self.model.dofs();
+        let last = layout.layers();
+        let first_slot = layout.row_slot(0, Kind::Position);
+        let last_slot = layout.row_slot(last, Kind::Position);
+        for g in 0..n {
+            let t = self.target(first_slot, g);
+            self.add(t, self.start.mass_v[g], residual, scratch);
+        }
+        if layout.scheme == Scheme::Galerkin {
+            return;
+        }
+        let vl = &scratch.node_v[last * n..(last + 1) * n];
+        self.model.mass_times(vl, &mut scratch.mass_v_end);
+        for g in 0..n {
+            let t = self.target(last_slot, g);
+            let v = -scratch.mass_v_end[g];
+            self.add(t, v, residual, scratch);
+        }
+        let Some(jac) = jacobian else { return };
+        let (Some(rs), Some(cs)) = (last_slot, layout.unknown_slot(last, Kind::Velocity)) else {
+            return;
+        };
+        let dpn = layout.dpn;
+        crate::with_elements!(&self.model.mesh, els => {
+            for (k, el) in els.iter().enumerate() {
+                for (a, mrow) in el.mass.iter().enumerate() {
+                    for (b, &mab) in mrow.iter().enumerate() {
+                        for i in 0..3 {
+                            let ga = coordinate(dpn, k, a, i);
+                            let gb = coordinate(dpn, k, b, i);
+                            if let (Some(r), Some(c)) = (layout.row_at(rs, ga), layout.unknown_at(cs, gb)) {
+                                jac.add(r, c, -mab);
+                            }
+                        }
+                    }
+                }
+            }
+        });
+    }
+
+    /// Multipliers in the freed rows (+ in P2 rows, which are generalized
+    /// impulses; - in static rows dU/de - f, so that a multiplier is the
+    /// reaction on the cable either way) and the constraint equations
+    /// x_c - c(t_i) = 0 (docs/method.md §6.3, §6.5).
+    pub(super) fn constraint_terms(
+        &self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BandMatrix>,
+    ) {
+        let layout = self.layout;
+        if layout.method != ConstraintMethod::Multiplier || self.model.constraints.is_empty() {
+            return;
+        }
+        let n = self.model.dofs();
+        let sign = if layout.scheme == Scheme::Static {
+            -1.0
+        } else {
+            1.0
+        };
+        for g in (0..n).filter(|&g| self.model.constraints.is_constrained(g)) {
+            for s in 0..layout.row_slots.len() {
+                if let (Some(r), Some(m)) = (layout.row_at(s, g), layout.multiplier_at(s, g)) {
+                    residual[r] += sign * x[m];
+                    if let Some(jac) = jacobian.as_deref_mut() {
+                        jac.add(r, m, sign);
+                    }
+                }
+            }
+            for (s, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+                if let (Some(r), Some(u)) =
+                    (layout.constraint_row_at(s, g), layout.unknown_at(s, g))
+                {
+                    let target = match kind {
+                        Kind::Position => self.start.fixed_e[i * n + g],
+                        Kind::Velocity => self.start.fixed_v[i * n + g],
+                    };
+                    residual[r] = x[u] - target;
+                    if let Some(jac) = jacobian.as_deref_mut() {
+                        jac.add(r, u, 1.0);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Adds the Hessian blocks (M14) of one element's slab action at the
+/// global rows and columns of its entries (docs/method.md §3.2).
+fn add_slab_hessian<const NS: usize, const ND: usize>(
+    el: &CableElement<NS, ND>,
+    slab: &crate::element::TimeSlab,
+    derivs: &SlabDerivatives<ND>,
+    rows: &SlotIndices<ND>,
+    cols: &SlotIndices<ND>,
+    block: &mut [[f64; ND]; ND],
+    jac: &mut BandMatrix,
+) {
+    for m in 0..4 {
+        let Some(rows) = &rows[m] else {
+            continue;
+        };
+        for nn in 0..4 {
+            let Some(cols) = &cols[nn] else {
+                continue;
+            };
+            el.slab_hessian_block(slab, derivs, m, nn, block);
+            for (a, brow) in block.iter().enumerate() {
+                let r = rows[a];
+                if r == NONE {
+                    continue;
+                }
+                for (b, &val) in brow.iter().enumerate() {
+                    let c = cols[b];
+                    if c != NONE && val != 0.0 {
+                        jac.add(r, c, val);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,39 @@
+//! The forces of the position constraints on the cable and their work
+//! (docs/method.md §6.5-6.6, (M23)-(M24)).
+
+use super::Simulation;
+use crate::assembly::Kind;
+use crate::model::{coordinate, SLOT_R};
+
+impl Simulation {
+    /// Reaction impulses of the step from the multipliers (or eliminated
+    /// rows) of the position rows e_0, e_i, e_L, and the work of moving
+    /// constraints (docs/method.md §6.5-6.6, (M23)-(M24)).
+    pub(super) fn collect_reactions(&mut self, dt: f64) {
+        let n = self.model.dofs();
+        let dpn = self.layout.dpn;
+        let last = self.layout.layers();
+        for (node, force) in self.reactions.iter_mut() {
+            for c in 0..3 {
+                let g = coordinate(dpn, *node, SLOT_R, c);
+                let mut impulse = 0.0;
+                for (s, &(_, kind)) in self.layout.row_slots.iter().enumerate() {
+                    if kind != Kind::Position {
+                        continue;
+                    }
+                    impulse += match self.layout.multiplier_at(s, g) {
+                        Some(m) => self.x[m],
+                        None => -self.scratch.reaction_rows[s * n + g],
+                    };
+                }
+                if self.mass_lu.is_some() {
+                    // Galerkin: the end part, p_b - dA/de_b with p_b = M v_b.
+                    impulse += self.mass_v[g] - self.scratch.end_momentum[g];
+                }
+                force[c] = impulse / dt;
+                let moved = self.scratch.node_e[last * n + g] - self.state.e[g];
+                self.constraint_work += force[c] * moved;
+            }
+        }
+    }
+}

@@ -1,0 +1,69 @@
+//! Runs: stepping a [`Simulation`] to a final time under the energy
+//! watchdog (docs/method.md §4.5, §8).
+
+use super::{EnergyWatch, Simulation, StepReport, ENERGY_GROWTH_RATIO};
+use crate::error::{FailureKind, SolverError};
+use crate::observe::Energies;
+use std::ops::ControlFlow;
+
+/// Number of steps [`run`] takes to cover `duration` with steps `dt` (the
+/// last one shortened to land on it).
+pub fn step_count(duration: f64, dt: f64) -> usize {
+    ((duration / dt) - 1e-9).ceil().max(1.0) as usize
+}
+
+/// Steps `sim` until `duration` is covered (the last step is shortened to
+/// land on it), calling `observer` after every converged step; the
+/// observer may stop the run early with `ControlFlow::Break` (the result
+/// is then `Ok(false)`). Stops at the first failure and leaves `sim` at
+/// the last good state (a step that converged but made the energy grow is
+/// undone); the states already observed stay valid.
+pub fn run<F>(sim: &mut Simulation, duration: f64, mut observer: F) -> Result<bool, SolverError>
+where
+    F: FnMut(&Simulation, &StepReport, &Energies) -> ControlFlow<()>,
+{
+    let dt = sim.settings.time_step;
+    let t0 = sim.state.t;
+    let n_steps = step_count(duration, dt);
+    let mut watch = EnergyWatch::new(&sim.model, sim.energies(), ENERGY_GROWTH_RATIO);
+    for k in 1..=n_steps {
+        let h = if k == n_steps {
+            t0 + duration - sim.state.t
+        } else {
+            dt
+        };
+        sim.set_time_step(h);
+        let report = sim.step()?;
+        let en = sim.energies();
+        let failure = |kind, detail: String, sim: &Simulation| SolverError {
+            kind,
+            time: sim.state.t,
+            step: report.step,
+            residual: report.newton.residual,
+            iterations: report.newton.iterations,
+            detail,
+        };
+        if !en.mechanical().is_finite() {
+            sim.undo_last_step();
+            return Err(failure(
+                FailureKind::NonFinite,
+                "the energy is not finite".into(),
+                sim,
+            ));
+        }
+        if let Err(drift) = watch.check(&en, sim.constraint_work + sim.drag_work) {
+            sim.undo_last_step();
+            let detail = format!(
+                "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
+                en.mechanical() - sim.constraint_work - sim.drag_work,
+                drift,
+                watch.initial.mechanical()
+            );
+            return Err(failure(FailureKind::EnergyGrowth, detail, sim));
+        }
+        if observer(sim, &report, &en).is_break() {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}

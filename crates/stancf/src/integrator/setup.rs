@@ -1,0 +1,268 @@
+//! Building a [`Simulation`], and the checks it shares with
+//! [`step_unknowns`], which counts a step's unknowns without building one.
+
+use super::{Simulation, StepSettings, TimeScheme, Undo};
+use crate::assembly::{AssemblyScratch, Scales, Scheme, SlabLayout, StepStart};
+use crate::band::BandLu;
+use crate::constraints::ConstraintMethod;
+use crate::element::TimeSlab;
+use crate::error::ModelError;
+use crate::loads::{EndMoment, MomentAngle};
+use crate::model::{Model, State, SLOT_R_X};
+use crate::quadrature::GaussRule;
+use crate::solver::NewtonWorkspace;
+
+impl Simulation {
+    /// Prepares a simulation from `initial` (which must have the model's
+    /// size; its constrained coordinates are set to their prescribed values
+    /// and rates at `initial.t`).
+    pub fn new(model: Model, initial: State, settings: StepSettings) -> Result<Self, ModelError> {
+        let mut model = model;
+        let dt = settings.time_step;
+        let time_rule = check_settings(&settings)?;
+        check_initial_state(&model, &initial)?;
+        let n = model.dofs();
+        let mut initial = initial;
+        model.apply_constraints(&mut initial);
+        check_end_moments(&model, &initial.e)?;
+        if settings.planar_reduction {
+            model.reduce_to_plane(&initial);
+        }
+        let layers = settings.time_layers;
+        let scheme = match settings.time_scheme {
+            TimeScheme::P2 => Scheme::P2 { layers },
+            TimeScheme::Galerkin => Scheme::Galerkin,
+        };
+        let layout = SlabLayout::new(&model, scheme, settings.constraint_method);
+        let h = dt / layers as f64;
+        let slab = TimeSlab::new(h, &time_rule);
+        let scales = Scales::new(&model, &layout, h);
+        let (kl, ku) = layout.bandwidths();
+        let workspace = NewtonWorkspace::new(layout.size(), kl, ku, settings.newton.max_iterations);
+        let scratch = AssemblyScratch::new(&model, &layout);
+        let mut start = StepStart::new(&model, layout.time_nodes());
+        start.set(&model, initial.t, &initial.e, &initial.v, h);
+        let moment_angles = moment_angles(&model, &initial.e);
+        let reactions: Vec<(usize, [f64; 3])> = model
+            .constraints
+            .position_nodes
+            .iter()
+            .map(|&nd| (nd, [0.0; 3]))
+            .collect();
+        let mut momentum = vec![0.0; n];
+        model.mass_times(&initial.v, &mut momentum);
+        let mass_lu = if scheme == Scheme::Galerkin {
+            Some(constrained_mass_lu(&model, &initial.e)?)
+        } else {
+            None
+        };
+        let previous = Undo {
+            momentum: vec![0.0; n],
+            state: initial.clone(),
+            acceleration: vec![0.0; n],
+            constraint_work: 0.0,
+            drag_work: 0.0,
+            moment_angles: moment_angles.clone(),
+            reactions: reactions.clone(),
+        };
+        Ok(Simulation {
+            x: vec![0.0; layout.size()],
+            acceleration: vec![0.0; n],
+            last_slopes: vec![0.0; 2 * n],
+            last_dt: None,
+            model,
+            settings,
+            time_rule,
+            layout,
+            slab,
+            scales,
+            state: initial,
+            start,
+            workspace,
+            scratch,
+            steps: 0,
+            reactions,
+            constraint_work: 0.0,
+            drag_work: 0.0,
+            moment_angles,
+            previous,
+            clock: None,
+            momentum,
+            mass_lu,
+            rhs: vec![0.0; n],
+            mass_v: vec![0.0; n],
+        })
+    }
+}
+
+/// The unwrapped angles of the end moments (docs/method.md §2.7, (M8)),
+/// started at coordinates `e` from the reference shape.
+fn moment_angles(model: &Model, e: &[f64]) -> Vec<MomentAngle> {
+    let reference = model.reference_coordinates();
+    let mut moment_angles = Vec::new();
+    for (node, m) in model.end_moments() {
+        let Some(moment) = EndMoment::from_vector(&m) else {
+            continue;
+        };
+        let o = model.coordinate(node, SLOT_R_X, 0);
+        let r0 = [reference[o], reference[o + 1], reference[o + 2]];
+        let rx = [e[o], e[o + 1], e[o + 2]];
+        moment_angles.push(MomentAngle::new(moment, node, r0, &rx));
+    }
+    moment_angles
+}
+
+/// The Galerkin step's factors of the mass matrix at coordinates `e`, with
+/// the rows of constrained coordinates replaced by identity rows, so that
+/// v_b = M^-1 p_b takes the prescribed constrained rates (docs/method.md
+/// §5.1, (M22)).
+fn constrained_mass_lu(model: &Model, e: &[f64]) -> Result<BandLu, ModelError> {
+    let n = model.dofs();
+    let (_, mass) = crate::assembly::stiffness_and_mass(model, e);
+    let (kl, ku) = (mass.lower_bandwidth(), mass.upper_bandwidth());
+    let mut lu = BandLu::new(n, kl, ku);
+    let a = lu.matrix_mut();
+    for i in 0..n {
+        if model.constraints.is_constrained(i) {
+            a.add(i, i, 1.0);
+            continue;
+        }
+        for j in i.saturating_sub(kl)..=(i + ku).min(n - 1) {
+            a.add(i, j, mass.get(i, j));
+        }
+    }
+    lu.factorize()
+        .map_err(|_| ModelError::invalid("material", "the mass matrix is singular"))?;
+    Ok(lu)
+}
+
+/// The checks of [`Simulation::new`] on the settings alone; the time
+/// quadrature they ask for.
+fn check_settings(settings: &StepSettings) -> Result<GaussRule, ModelError> {
+    let dt = settings.time_step;
+    if !dt.is_finite() || dt <= 0.0 {
+        return Err(ModelError::invalid(
+            "analysis.time_step",
+            format!("must be > 0, got {dt}"),
+        ));
+    }
+    if settings.time_layers == 0 {
+        return Err(ModelError::invalid(
+            "analysis.time_layers",
+            "must be at least 1, got 0",
+        ));
+    }
+    let time_rule = GaussRule::new(settings.time_points)
+        .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
+    let tol = settings.newton.tolerance;
+    if !tol.is_finite() || tol <= 0.0 {
+        return Err(ModelError::invalid(
+            "analysis.tolerance",
+            format!("must be > 0, got {tol}"),
+        ));
+    }
+    if settings.newton.max_iterations == 0 {
+        return Err(ModelError::invalid(
+            "analysis.max_iterations",
+            "must be at least 1",
+        ));
+    }
+    let layers = settings.time_layers;
+    if settings.time_scheme == TimeScheme::Galerkin && layers != 1 {
+        return Err(ModelError::invalid(
+            "analysis.time_layers",
+            format!(
+                "the Galerkin step takes one layer per step (got {layers}): joining \
+                 layers by C1 interior nodes inside a Galerkin step is unstable \
+                 (docs/method.md §5.4)"
+            ),
+        ));
+    }
+    Ok(time_rule)
+}
+
+/// The initial state has the model's size and is finite.
+fn check_initial_state(model: &Model, initial: &State) -> Result<(), ModelError> {
+    let n = model.dofs();
+    if initial.e.len() != n || initial.v.len() != n {
+        return Err(ModelError::invalid(
+            "initial_state",
+            format!(
+                "expected {n} coordinates, got {} and {}",
+                initial.e.len(),
+                initial.v.len()
+            ),
+        ));
+    }
+    if initial
+        .e
+        .iter()
+        .chain(initial.v.iter())
+        .any(|v| !v.is_finite())
+        || !initial.t.is_finite()
+    {
+        return Err(ModelError::invalid("initial_state", "must be finite"));
+    }
+    Ok(())
+}
+
+/// An end moment must bend the cable at coordinates `e`: a moment about
+/// the end's own tangent is a torsion, which a cable cannot carry.
+fn check_end_moments(model: &Model, e: &[f64]) -> Result<(), ModelError> {
+    for (i, (node, m)) in model.end_moments().enumerate() {
+        let Some(moment) = EndMoment::from_vector(&m) else {
+            continue;
+        };
+        let o = model.coordinate(node, SLOT_R_X, 0);
+        if !moment.acts_on(&[e[o], e[o + 1], e[o + 2]]) {
+            return Err(ModelError::invalid(
+                format!("loads[{i}].moment"),
+                "the moment is about the cable's own tangent (a torsion, which a cable cannot carry)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The unknowns of the system every step of a [`Simulation`] of `model`
+/// from `initial` with `settings` solves, and whether the planar reduction
+/// applies ([`Simulation::unknowns_per_step`], [`Simulation::is_planar`]),
+/// after the same checks as [`Simulation::new`] but without building it:
+/// no copy of the model, no matrices, O(nodes) time and the memory of one
+/// state (`stancf check` on a large mesh). The count is the numbering of
+/// [`SlabLayout::new`]: every coordinate has one unknown per slot (2 per
+/// time layer with P2, 3 with the Galerkin step) unless it is eliminated
+/// (held by the planar reduction, or constrained with elimination), and a
+/// constrained coordinate with multipliers has one multiplier per slot too.
+pub fn step_unknowns(
+    model: &Model,
+    initial: &State,
+    settings: &StepSettings,
+) -> Result<(usize, bool), ModelError> {
+    check_settings(settings)?;
+    check_initial_state(model, initial)?;
+    let mut state = initial.clone();
+    model.apply_constraints(&mut state);
+    check_end_moments(model, &state.e)?;
+    // Model::reduce_to_plane holds the z coordinates, g = 2 mod 3.
+    let reduces = settings.planar_reduction && model.planar_coordinates(&state).is_some();
+    let planar = reduces || model.constraints.has_inactive();
+    let slots = match settings.time_scheme {
+        TimeScheme::P2 => 2 * settings.time_layers,
+        TimeScheme::Galerkin => 3,
+    };
+    let elimination = settings.constraint_method == ConstraintMethod::Elimination;
+    let held = |g: usize| model.constraints.is_inactive(g) || (reduces && g % 3 == 2);
+    let mut size = 0;
+    for g in 0..model.dofs() {
+        let inactive = held(g);
+        let constrained = model.constraints.is_constrained(g) && !inactive;
+        if !(inactive || (elimination && constrained)) {
+            size += slots;
+        }
+        if constrained && !elimination {
+            size += slots;
+        }
+    }
+    Ok((size, planar))
+}

@@ -1,0 +1,265 @@
+//! One step (docs/method.md §4; the Galerkin step, §5): the predictor
+//! (§4.8), the Newton solve of the slab's equations, the end values and,
+//! for the Galerkin step, the momentum carried to the next step; and the
+//! undo of the last step.
+
+use super::{Simulation, StepReport};
+use crate::assembly::{AssemblyScratch, Kind, Scales, StepProblem};
+use crate::band::BandMatrix;
+use crate::constraints::ConstraintMethod;
+use crate::error::SolverError;
+use crate::model::{coordinate, SLOT_R_X};
+use crate::solver::{solve, NewtonReport, NonlinearSystem};
+
+/// The system of one step as seen by Newton.
+struct StepSystem<'a> {
+    problem: StepProblem<'a>,
+    scales: &'a Scales,
+    scratch: &'a mut AssemblyScratch,
+}
+
+impl NonlinearSystem for StepSystem<'_> {
+    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
+        self.problem.assemble(x, residual, jacobian, self.scratch);
+    }
+    fn residual_norm(&self, r: &[f64]) -> f64 {
+        Scales::norm(&self.scales.equation, r)
+    }
+    fn increment_norm(&self, dx: &[f64]) -> f64 {
+        Scales::norm(&self.scales.unknown, dx)
+    }
+}
+
+impl Simulation {
+    /// Predictor (docs/method.md §4.8). After a converged step of the same
+    /// length: the last step's cubic in time (end values e, end slopes,
+    /// eq. 6) extrapolated over the new step, which is third order in dt
+    /// (a predictor error of O(dt^4) in e), so the corrector needs fewer
+    /// iterations. Otherwise (first step, after an undo or a change of
+    /// step): Taylor expansion with the last step's acceleration,
+    /// e(t_i) = e_a + tau v_a + tau^2 a / 2, v(t_i) = v_a + tau a.
+    /// Constrained coordinates take their prescribed values; the
+    /// multipliers keep their last values.
+    fn predict(&mut self) {
+        let h = self.slab.dt;
+        let dt = self.settings.time_step;
+        let n = self.model.dofs();
+        let extrapolate = self.last_dt == Some(dt);
+        for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
+            let tau = h * i as f64;
+            // Hermite basis of the last step at s = 1 + tau / dt.
+            let s = 1.0 + tau / dt;
+            let (s2, s3) = (s * s, s * s * s);
+            let value = [
+                2.0 * s3 - 3.0 * s2 + 1.0,
+                s3 - 2.0 * s2 + s,
+                -2.0 * s3 + 3.0 * s2,
+                s3 - s2,
+            ];
+            let slope = [
+                6.0 * s2 - 6.0 * s,
+                3.0 * s2 - 4.0 * s + 1.0,
+                -6.0 * s2 + 6.0 * s,
+                3.0 * s2 - 2.0 * s,
+            ];
+            for g in 0..n {
+                let Some(u) = self.layout.unknown_at(slot, g) else {
+                    continue;
+                };
+                self.x[u] = if self.model.constraints.is_constrained(g) {
+                    match kind {
+                        Kind::Position => self.start.fixed_e[i * n + g],
+                        Kind::Velocity => self.start.fixed_v[i * n + g],
+                    }
+                } else if extrapolate {
+                    let (e0, e1) = (self.previous.state.e[g], self.state.e[g]);
+                    let (w0, w1) = (self.last_slopes[g], self.last_slopes[n + g]);
+                    match kind {
+                        Kind::Position => {
+                            value[0] * e0 + value[1] * dt * w0 + value[2] * e1 + value[3] * dt * w1
+                        }
+                        Kind::Velocity => {
+                            (slope[0] * e0 + slope[2] * e1) / dt + slope[1] * w0 + slope[3] * w1
+                        }
+                    }
+                } else {
+                    let (e, v, a) = (self.state.e[g], self.state.v[g], self.acceleration[g]);
+                    match kind {
+                        Kind::Position => e + tau * v + 0.5 * tau * tau * a,
+                        Kind::Velocity => v + tau * a,
+                    }
+                };
+            }
+        }
+    }
+
+    /// Returns to the state before the last converged step (once).
+    pub fn undo_last_step(&mut self) {
+        if self.steps == 0 || self.previous.state.t == self.state.t {
+            return;
+        }
+        self.state.clone_from(&self.previous.state);
+        self.acceleration
+            .copy_from_slice(&self.previous.acceleration);
+        self.constraint_work = self.previous.constraint_work;
+        self.drag_work = self.previous.drag_work;
+        self.moment_angles
+            .copy_from_slice(&self.previous.moment_angles);
+        self.reactions.copy_from_slice(&self.previous.reactions);
+        self.steps -= 1;
+        self.last_dt = None;
+        let h = self.slab.dt;
+        self.start
+            .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
+    }
+
+    /// Advances the state by one step. On failure the state is left at the
+    /// last converged step.
+    pub fn step(&mut self) -> Result<StepReport, SolverError> {
+        let dt = self.settings.time_step;
+        let h = self.slab.dt;
+        self.start
+            .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
+        self.predict();
+        let report = self.solve_slab(dt)?;
+        self.save_undo();
+        self.expand_solution(dt);
+        self.galerkin_end_rates();
+        self.collect_reactions(dt);
+        self.advance(dt);
+        Ok(StepReport {
+            step: self.steps,
+            t: self.state.t,
+            newton: report,
+        })
+    }
+
+    /// Newton's solve of the step's equations from the predicted `x`
+    /// (docs/method.md §4.2-4.3, §5.1; the solvers, §7).
+    fn solve_slab(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
+        let mut system = StepSystem {
+            problem: StepProblem {
+                model: &self.model,
+                layout: &self.layout,
+                slab: &self.slab,
+                start: &self.start,
+            },
+            scales: &self.scales,
+            scratch: &mut self.scratch,
+        };
+        let result = solve(
+            &mut system,
+            &mut self.x,
+            &self.settings.newton,
+            &mut self.workspace,
+            self.clock.as_deref(),
+        );
+        match result {
+            Ok(r) => Ok(r),
+            Err(f) => Err(SolverError {
+                kind: f.kind,
+                time: self.state.t,
+                step: self.steps + 1,
+                residual: f.report.residual,
+                iterations: f.report.iterations,
+                detail: format!("time step {dt:e} s"),
+            }),
+        }
+    }
+
+    /// Keeps what [`Simulation::undo_last_step`] needs to return to the
+    /// state before this step.
+    fn save_undo(&mut self) {
+        self.previous.state.clone_from(&self.state);
+        self.previous.momentum.copy_from_slice(&self.momentum);
+        self.previous
+            .acceleration
+            .copy_from_slice(&self.acceleration);
+        self.previous.constraint_work = self.constraint_work;
+        self.previous.drag_work = self.drag_work;
+        self.previous
+            .moment_angles
+            .copy_from_slice(&self.moment_angles);
+        self.previous.reactions.copy_from_slice(&self.reactions);
+    }
+
+    /// The time-node values at the solution (and, for eliminated
+    /// constraints, the freed rows: the reactions; with drag, its work,
+    /// docs/method.md §2.8), and the end slopes of the step for the next
+    /// predictor (§4.8).
+    fn expand_solution(&mut self, dt: f64) {
+        let problem = StepProblem {
+            model: &self.model,
+            layout: &self.layout,
+            slab: &self.slab,
+            start: &self.start,
+        };
+        let eliminated = !self.model.constraints.is_empty()
+            && (self.layout.method == ConstraintMethod::Elimination
+                || self.model.constraints.has_inactive());
+        let galerkin = self.mass_lu.is_some();
+        if eliminated || galerkin || !self.model.drag.is_empty() {
+            problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);
+            self.drag_work += self.scratch.drag_work;
+        } else {
+            problem.expand(&self.x, &mut self.scratch);
+        }
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        self.last_slopes[..n].copy_from_slice(&self.scratch.node_v[..n]);
+        self.last_slopes[n..].copy_from_slice(&self.scratch.node_v[last * n..(last + 1) * n]);
+        self.last_dt = Some(dt);
+    }
+
+    /// Galerkin step, after convergence (docs/method.md §5.1, (M22)):
+    /// p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates, written
+    /// to the end time node; M v_b kept for the reactions and the momentum.
+    fn galerkin_end_rates(&mut self) {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        if let Some(lu) = &self.mass_lu {
+            // p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates.
+            for g in 0..n {
+                self.rhs[g] = if self.model.constraints.is_constrained(g) {
+                    self.start.fixed_v[n + g]
+                } else {
+                    self.scratch.end_momentum[g]
+                };
+            }
+            lu.solve(&mut self.rhs);
+            self.model.mass_times(&self.rhs, &mut self.mass_v);
+            for g in 0..n {
+                self.scratch.node_v[last * n + g] = self.rhs[g];
+            }
+        }
+    }
+
+    /// Moves the state to the end of the step: e, v, the acceleration for
+    /// the predictor, the carried momentum (Galerkin), the time, the step
+    /// count and the unwrapped end-moment angles (docs/method.md §2.7).
+    fn advance(&mut self, dt: f64) {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        let galerkin = self.mass_lu.is_some();
+        for g in 0..n {
+            let e_new = self.scratch.node_e[last * n + g];
+            let v_new = self.scratch.node_v[last * n + g];
+            self.acceleration[g] = (v_new - self.state.v[g]) / dt;
+            self.state.e[g] = e_new;
+            self.state.v[g] = v_new;
+            if galerkin {
+                self.momentum[g] = if self.model.constraints.is_constrained(g) {
+                    self.mass_v[g]
+                } else {
+                    self.scratch.end_momentum[g]
+                };
+            }
+        }
+        self.state.t += dt;
+        self.steps += 1;
+        for a in &mut self.moment_angles {
+            let o = coordinate(self.layout.dpn, a.node, SLOT_R_X, 0);
+            a.update(&[self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]]);
+        }
+    }
+}
