@@ -1,0 +1,123 @@
+//! The elastic energy U of eq. (12), integrated in space over the element
+//! with the axial and the bending Gauss rules, and its gradient and exact
+//! Hessian with respect to the element coordinates q (docs/method.md §2.4,
+//! from the densities of §2.2 and §2.3; rules in §3.3).
+
+use super::curvature::{bending_energy_terms, curvature};
+use super::strain::{axial_energy_terms, axial_strain};
+use super::CableElement;
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// Strain energy U of eq. (12) at element coordinates q.
+    pub fn strain_energy(&self, q: &[f64; ND]) -> f64 {
+        let mut u = 0.0;
+        for p in &self.axial_points {
+            let (rx, _) = p.shape.gradients(q);
+            let eps = axial_strain(self.measures.axial_strain, &rx);
+            u += p.wl * 0.5 * self.section.ea * eps * eps;
+        }
+        for p in &self.bending_points {
+            let (rx, rxx) = p.shape.gradients(q);
+            let k = curvature(self.measures.curvature, &rx, &rxx);
+            u += p.wl * 0.5 * self.section.ei * k * k;
+        }
+        u
+    }
+
+    /// Strain energy, its gradient dU/dq and (if asked) its Hessian d2U/dq2.
+    ///
+    /// With a = N_x and b = N_xx at a point, dU/dq_k = a_k dU/dr_x + b_k
+    /// dU/dr_xx and the (k, l) 3x3 block of the Hessian is
+    /// a_k a_l H_xx + a_k b_l H_xy + b_k a_l H_yx + b_k b_l H_yy.
+    pub fn strain_energy_derivatives(
+        &self,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) -> f64 {
+        *grad = [0.0; ND];
+        let mut hess = hess;
+        if let Some(h) = hess.as_deref_mut() {
+            *h = [[0.0; ND]; ND];
+        }
+        let mut u = 0.0;
+        let with_hessian = hess.is_some();
+        for p in &self.axial_points {
+            let (rx, _) = p.shape.gradients(q);
+            let (e, g, h) = axial_energy_terms(
+                self.measures.axial_strain,
+                self.section.ea,
+                &rx,
+                with_hessian,
+            );
+            u += p.wl * e;
+            let a = &p.shape.n_x;
+            for k in 0..NS {
+                for i in 0..3 {
+                    grad[3 * k + i] += p.wl * a[k] * g[i];
+                }
+            }
+            if let Some(hm) = hess.as_deref_mut() {
+                for k in 0..NS {
+                    for l in k..NS {
+                        let c = p.wl * a[k] * a[l];
+                        for i in 0..3 {
+                            for j in 0..3 {
+                                hm[3 * k + i][3 * l + j] += c * h[i][j];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        for p in &self.bending_points {
+            let (rx, rxx) = p.shape.gradients(q);
+            let (e, g, h) = bending_energy_terms(
+                self.measures.curvature,
+                self.section.ei,
+                &rx,
+                &rxx,
+                with_hessian,
+            );
+            u += p.wl * e;
+            let a = &p.shape.n_x;
+            let b = &p.shape.n_xx;
+            for k in 0..NS {
+                for i in 0..3 {
+                    grad[3 * k + i] += p.wl * (a[k] * g[i] + b[k] * g[3 + i]);
+                }
+            }
+            if let Some(hm) = hess.as_deref_mut() {
+                for k in 0..NS {
+                    for l in k..NS {
+                        let aa = p.wl * a[k] * a[l];
+                        let ab = p.wl * a[k] * b[l];
+                        let ba = p.wl * b[k] * a[l];
+                        let bb = p.wl * b[k] * b[l];
+                        for i in 0..3 {
+                            for j in 0..3 {
+                                hm[3 * k + i][3 * l + j] += aa * h[i][j]
+                                    + ab * h[i][3 + j]
+                                    + ba * h[3 + i][j]
+                                    + bb * h[3 + i][3 + j];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(hm) = hess {
+            // Mirror the blocks l < k from the computed upper block triangle.
+            for k in 0..NS {
+                for l in 0..k {
+                    for i in 0..3 {
+                        for j in 0..3 {
+                            hm[3 * k + i][3 * l + j] = hm[3 * l + j][3 * k + i];
+                        }
+                    }
+                }
+            }
+        }
+        u
+    }
+}

@@ -1,0 +1,222 @@
+//! The space-time ANCF cable element (SAC-2 and SAC-3): its action over one
+//! slab, eq. (10), the gradient of the action with respect to the element's
+//! unknowns and its exact Hessian (docs/method.md §1.5, §2.1-2.4 and
+//! §3.1-3.2).
+//!
+//! One generic kernel serves both elements: `CableElement<NS, ND>` with NS
+//! spatial shape functions (4 for SAC-2, eq. 4; 6 for SAC-3, eq. 5) and
+//! ND = 3 NS coordinates. The element coordinates are stored node by node,
+//! `q = [r(0), r_x(0), (r_xx(0)), r(l), r_x(l), (r_xx(l))]`, so entry
+//! `3 k + i` is component i of the coordinate carried by shape function k.
+//!
+//! Over one slab [t_a, t_b] the element's unknowns are
+//! `y = [e_a, v_a, e_b, v_b]` (4 x ND numbers) and every coordinate moves as
+//! `q(t) = sum_m phi_m(t) y_m` with the time Hermite functions of eq. (6).
+//! The slab action, Gauss-integrated in time with weights w_g ((M13)-(M14)
+//! of docs/method.md §3.1-3.2),
+//!
+//! ```text
+//!   A^e = sum_g w_g dt [ 1/2 qdot^T M qdot - U(q) + f_g . q ]          eq. (10)-(13)
+//!   dA^e/dy_m = sum_g w_g dt [ phidot_m M qdot - phi_m (dU/dq - f_g) ]
+//!   d2A^e/dy_m dy_n = C_mn M - sum_g w_g dt phi_m phi_n d2U/dq2(q(t_g))
+//! ```
+//!
+//! with `C_mn = sum_g w_g dt phidot_m phidot_n` and the constant consistent
+//! mass matrix M = int rho A S^T S dx (eq. 11). The strain energy U (eq. 12)
+//! is integrated in space with its own Gauss rules (one for the axial term,
+//! one for the bending term; the paper uses one rule for both).
+//!
+//! The kernel is split by what it holds:
+//!
+//! | file | contents | docs/method.md |
+//! |---|---|---|
+//! | `mod.rs` | the element, its section and measures, mass matrix and gravity load | §1.5, §2.1, §2.5 |
+//! | `strain` | axial strain and its energy density, gradient, Hessian | §2.2 |
+//! | `curvature` | curvature and the smooth kappa^2 bending density | §2.3 |
+//! | `energy` | the elastic energy U and its derivatives by spatial quadrature | §2.4 |
+//! | `drag` | air drag virtual work and its Jacobian | §2.8, §6.8 |
+//! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
+
+mod curvature;
+mod drag;
+mod energy;
+mod slab;
+mod strain;
+
+pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
+pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};
+pub use strain::{axial_energy_density, axial_energy_gradient, axial_strain};
+
+use crate::quadrature::GaussRule;
+use crate::shape::SpatialShape;
+
+/// Axial strain of the centre line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum AxialStrain {
+    /// eps = (r_x . r_x - 1) / 2, eq. (8) (Green strain; the paper's).
+    #[default]
+    Green,
+    /// eps = |r_x| - 1 (engineering strain, as in Exudyn and MoorDyn).
+    Engineering,
+}
+
+/// Curvature of the centre line (docs/method.md §2.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Curvature {
+    /// kappa = |r_x x r_xx| / |r_x|^2, eq. (9) as printed.
+    #[default]
+    Paper,
+    /// kappa = |r_x x r_xx| / |r_x|^3, the exact curvature.
+    Exact,
+}
+
+impl Curvature {
+    /// Power p of |r_x|^2 in kappa^2 = |r_x x r_xx|^2 / (|r_x|^2)^p.
+    fn power(self) -> i32 {
+        match self {
+            Curvature::Paper => 2,
+            Curvature::Exact => 3,
+        }
+    }
+}
+
+/// Cross-section stiffnesses and line density.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Section {
+    /// Axial stiffness EA (N).
+    pub ea: f64,
+    /// Bending stiffness EI (N m^2); the paper's "EJ".
+    pub ei: f64,
+    /// Mass per unit length rho A (kg/m).
+    pub rho_a: f64,
+}
+
+/// Which strain and curvature the elastic energy uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Measures {
+    pub axial_strain: AxialStrain,
+    pub curvature: Curvature,
+}
+
+/// Shape function values at one spatial quadrature point, with the
+/// quadrature weight times the element length (int dx = sum w l).
+#[derive(Clone, Copy, Debug)]
+struct SpacePoint<const NS: usize> {
+    wl: f64,
+    shape: SpatialShape<NS>,
+}
+
+/// One element of length l: everything about it that does not change
+/// during a simulation (shape functions at the quadrature points, mass
+/// matrix, load integrals).
+#[derive(Clone, Debug)]
+pub struct CableElement<const NS: usize, const ND: usize> {
+    /// Element length l (reference, stress-free).
+    pub length: f64,
+    pub section: Section,
+    pub measures: Measures,
+    axial_points: Vec<SpacePoint<NS>>,
+    bending_points: Vec<SpacePoint<NS>>,
+    /// Consistent mass matrix per coordinate direction,
+    /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
+    /// (docs/method.md §2.1, (M2)).
+    pub mass: [[f64; NS]; NS],
+    /// `int rho A N_k dx`: the gravity load of eq. (13) is this times g.
+    pub weight_integrals: [f64; NS],
+}
+
+/// The NS shape functions as a function of (xi, l).
+pub type ShapeFn<const NS: usize> = fn(f64, f64) -> SpatialShape<NS>;
+
+/// Spatial quadrature of the strain energy: Gauss points for the axial term
+/// and for the bending term (the paper uses the same rule for both).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpaceRules {
+    pub axial: GaussRule,
+    pub bending: GaussRule,
+}
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// Builds the element. The mass matrix and weight integrals are exact
+    /// (NS Gauss points integrate the degree 2 NS - 2 products); the strain
+    /// energy uses `rules`.
+    pub fn new(
+        shape: ShapeFn<NS>,
+        length: f64,
+        section: Section,
+        measures: Measures,
+        rules: &SpaceRules,
+    ) -> Self {
+        assert_eq!(ND, 3 * NS, "ND must be 3 NS");
+        let at = |rule: &GaussRule| -> Vec<SpacePoint<NS>> {
+            rule.iter()
+                .map(|(xi, w)| SpacePoint {
+                    wl: w * length,
+                    shape: shape(xi, length),
+                })
+                .collect()
+        };
+        let exact = GaussRule::new(NS).expect("NS <= 10");
+        let mut mass = [[0.0; NS]; NS];
+        let mut weight_integrals = [0.0; NS];
+        for (xi, w) in exact.iter() {
+            let s = shape(xi, length);
+            for k in 0..NS {
+                weight_integrals[k] += w * length * section.rho_a * s.n[k];
+                for l in 0..NS {
+                    mass[k][l] += w * length * section.rho_a * s.n[k] * s.n[l];
+                }
+            }
+        }
+        CableElement {
+            length,
+            section,
+            measures,
+            axial_points: at(&rules.axial),
+            bending_points: at(&rules.bending),
+            mass,
+            weight_integrals,
+        }
+    }
+
+    /// `M q` for element coordinates (the mass matrix is M (x) I_3).
+    pub fn mass_times(&self, q: &[f64; ND]) -> [f64; ND] {
+        let mut out = [0.0; ND];
+        for k in 0..NS {
+            for l in 0..NS {
+                let m = self.mass[k][l];
+                for i in 0..3 {
+                    out[3 * k + i] += m * q[3 * l + i];
+                }
+            }
+        }
+        out
+    }
+
+    /// Gravity load vector f_g = int rho A N^T g dx (eq. 13).
+    pub fn gravity_load(&self, g: &[f64; 3]) -> [f64; ND] {
+        let mut f = [0.0; ND];
+        for k in 0..NS {
+            for i in 0..3 {
+                f[3 * k + i] = self.weight_integrals[k] * g[i];
+            }
+        }
+        f
+    }
+}
+
+pub(crate) fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub(crate) fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn dot_n<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
+    a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
+}

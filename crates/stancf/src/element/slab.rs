@@ -1,0 +1,249 @@
+//! The time direction of a slab (eq. (6) at the time Gauss points) and the
+//! space-time quadrature loop of one element over it: the slab action of
+//! eq. (10), its gradient with respect to y = [e_a, v_a, e_b, v_b] (with the
+//! drag's virtual work, eq. (17)) and its exact Hessian, block by block
+//! (docs/method.md §3.1-3.2, (M13)-(M14); time layers §3.5).
+
+use super::{dot_n, CableElement};
+use crate::quadrature::GaussRule;
+use crate::shape::TimeShape;
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// Slab action A^e of eq. (10) for unknowns `y = [e_a, v_a, e_b, v_b]`.
+    pub fn slab_action(&self, slab: &TimeSlab, y: &[[f64; ND]; 4], g: &[f64; 3]) -> f64 {
+        let fg = self.gravity_load(g);
+        let mut action = 0.0;
+        for tp in &slab.points {
+            let (q, qdot) = interpolate_in_time(&tp.shape, y);
+            let mq = self.mass_times(&qdot);
+            let kinetic = 0.5 * dot_n(&qdot, &mq);
+            let strain = self.strain_energy(&q);
+            let gravity = dot_n(&fg, &q);
+            action += tp.w_dt * (kinetic - strain + gravity);
+        }
+        action
+    }
+
+    /// Gradient of the slab action with respect to `y` (plus the virtual
+    /// work of the drag loads, eq. 17) and, if `with_hessian`, the
+    /// matrices at the time points from which every block of its Jacobian
+    /// follows (see [`SlabDerivatives`] and [`Self::slab_hessian_block`]).
+    ///
+    /// Drag, per unit length f(r_dot, r_x), integrated with the axial rule
+    /// (docs/method.md §2.8, (M11); the rest is (M14) of §3.2):
+    ///
+    /// ```text
+    ///   dW/dy_m   = sum_g w_g dt phi_m sum_s w_s l N_k f
+    ///   C_g = sum_s w_s l N_k N_l df/dr_dot,   G_g = sum_s w_s l N_k N_x,l df/dr_x
+    ///   block_mn += sum_g w_g dt phi_m (phidot_n C_g + phi_n G_g)
+    /// ```
+    pub fn slab_derivatives(
+        &self,
+        slab: &TimeSlab,
+        y: &[[f64; ND]; 4],
+        loads: &SlabLoads,
+        with_hessian: bool,
+        out: &mut SlabDerivatives<ND>,
+    ) {
+        let fg = self.gravity_load(&loads.gravity);
+        out.grad = [[0.0; ND]; 4];
+        out.action = 0.0;
+        out.drag_work = 0.0;
+        out.has_drag = !loads.drag.is_empty();
+        let np = slab.points.len();
+        if out.k_at_points.len() < np {
+            out.k_at_points.resize(np, [[0.0; ND]; ND]);
+        }
+        if out.has_drag && with_hessian && out.c_at_points.len() < np {
+            out.c_at_points.resize(np, [[0.0; ND]; ND]);
+            out.g_at_points.resize(np, [[0.0; ND]; ND]);
+        }
+        let mut du = [0.0; ND];
+        for (gi, tp) in slab.points.iter().enumerate() {
+            let (q, qdot) = interpolate_in_time(&tp.shape, y);
+            let mq = self.mass_times(&qdot);
+            let hess = if with_hessian {
+                Some(&mut out.k_at_points[gi])
+            } else {
+                None
+            };
+            let strain = self.strain_energy_derivatives(&q, &mut du, hess);
+            out.action += tp.w_dt * (0.5 * dot_n(&qdot, &mq) - strain + dot_n(&fg, &q));
+            // Generalized drag force on q at this time point: f_q = sum N_k f.
+            let fq = if out.has_drag {
+                let at = with_hessian.then_some(gi);
+                self.slab_drag_at_point(loads.drag, tp.w_dt, &q, &qdot, at, out)
+            } else {
+                [0.0; ND]
+            };
+            for m in 0..4 {
+                let a = tp.w_dt * tp.shape.t_dot[m];
+                let b = tp.w_dt * tp.shape.t[m];
+                for d in 0..ND {
+                    out.grad[m][d] += a * mq[d] - b * (du[d] - fg[d] - fq[d]);
+                }
+            }
+        }
+    }
+
+    /// Hessian block d2A^e / dy_m dy_n (ND x ND) from the derivatives
+    /// evaluated by [`Self::slab_derivatives`] with `with_hessian = true`:
+    /// `C_mn M (x) I_3 - sum_g w_g dt phi_m phi_n K_g`.
+    pub fn slab_hessian_block(
+        &self,
+        slab: &TimeSlab,
+        derivs: &SlabDerivatives<ND>,
+        m: usize,
+        n: usize,
+        out: &mut [[f64; ND]; ND],
+    ) {
+        *out = [[0.0; ND]; ND];
+        for (gi, tp) in slab.points.iter().enumerate() {
+            let c = -tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
+            let k = &derivs.k_at_points[gi];
+            for (orow, krow) in out.iter_mut().zip(k.iter()) {
+                for (o, kv) in orow.iter_mut().zip(krow.iter()) {
+                    *o += c * kv;
+                }
+            }
+        }
+        let cm = slab.kinetic[m][n];
+        for k in 0..NS {
+            for l in 0..NS {
+                let v = cm * self.mass[k][l];
+                for i in 0..3 {
+                    out[3 * k + i][3 * l + i] += v;
+                }
+            }
+        }
+        if derivs.has_drag {
+            for (gi, tp) in slab.points.iter().enumerate() {
+                let a = tp.w_dt * tp.shape.t[m] * tp.shape.t_dot[n];
+                let b = tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
+                let (c, g) = (&derivs.c_at_points[gi], &derivs.g_at_points[gi]);
+                for (orow, (crow, grow)) in out.iter_mut().zip(c.iter().zip(g.iter())) {
+                    for (o, (cv, gv)) in orow.iter_mut().zip(crow.iter().zip(grow.iter())) {
+                        *o += a * cv + b * gv;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Gradient of the slab action and the strain-energy Hessians at the time
+/// quadrature points, for one element and one slab.
+#[derive(Clone, Debug)]
+pub struct SlabDerivatives<const ND: usize> {
+    /// A^e without the drag (for diagnostics and tests).
+    pub action: f64,
+    /// dA^e/dy_m (with the drag's virtual work) for m = e_a, v_a, e_b, v_b.
+    pub grad: [[f64; ND]; 4],
+    /// d2U/dq2 at q(t_g), one per time Gauss point.
+    pub k_at_points: Vec<[[f64; ND]; ND]>,
+    /// Drag: whether there is any, int f . r_dot over the slab (its work,
+    /// negative in still air), and the matrices C_g, G_g per time point.
+    pub has_drag: bool,
+    pub drag_work: f64,
+    pub c_at_points: Vec<[[f64; ND]; ND]>,
+    pub g_at_points: Vec<[[f64; ND]; ND]>,
+}
+
+impl<const ND: usize> Default for SlabDerivatives<ND> {
+    fn default() -> Self {
+        SlabDerivatives {
+            action: 0.0,
+            grad: [[0.0; ND]; 4],
+            k_at_points: Vec::new(),
+            has_drag: false,
+            drag_work: 0.0,
+            c_at_points: Vec::new(),
+            g_at_points: Vec::new(),
+        }
+    }
+}
+
+/// The distributed loads an element sees in a slab: gravity (eq. 13) and
+/// air drag (eq. 17).
+#[derive(Clone, Copy, Debug)]
+pub struct SlabLoads<'a> {
+    pub gravity: [f64; 3],
+    pub drag: &'a [crate::loads::AirDrag],
+}
+
+impl SlabLoads<'_> {
+    /// Gravity only.
+    pub fn gravity(g: [f64; 3]) -> SlabLoads<'static> {
+        SlabLoads {
+            gravity: g,
+            drag: &[],
+        }
+    }
+}
+
+/// One time quadrature point of a slab: the time shape functions and the
+/// weight times the slab length.
+#[derive(Clone, Copy, Debug)]
+pub struct TimePoint {
+    pub w_dt: f64,
+    pub shape: TimeShape,
+}
+
+/// The time direction of a slab (one layer of space-time elements):
+/// eq. (6) evaluated at the time Gauss points.
+#[derive(Clone, Debug)]
+pub struct TimeSlab {
+    pub dt: f64,
+    pub points: Vec<TimePoint>,
+    /// `C_mn = sum_g w_g dt phidot_m phidot_n`: the kinetic part of the
+    /// Hessian is C (x) M.
+    pub kinetic: [[f64; 4]; 4],
+    /// `b_m = sum_g w_g dt phi_m`: a constant force F does work b_m F . y_m.
+    pub load: [f64; 4],
+}
+
+impl TimeSlab {
+    pub fn new(dt: f64, rule: &GaussRule) -> Self {
+        let points: Vec<TimePoint> = rule
+            .iter()
+            .map(|(tau, w)| TimePoint {
+                w_dt: w * dt,
+                shape: crate::shape::time_hermite(tau, dt),
+            })
+            .collect();
+        let mut kinetic = [[0.0; 4]; 4];
+        let mut load = [0.0; 4];
+        for p in &points {
+            for m in 0..4 {
+                load[m] += p.w_dt * p.shape.t[m];
+                for n in 0..4 {
+                    kinetic[m][n] += p.w_dt * p.shape.t_dot[m] * p.shape.t_dot[n];
+                }
+            }
+        }
+        TimeSlab {
+            dt,
+            points,
+            kinetic,
+            load,
+        }
+    }
+}
+
+/// q(t) and qdot(t) from the slab unknowns (eq. 6).
+fn interpolate_in_time<const ND: usize>(
+    shape: &TimeShape,
+    y: &[[f64; ND]; 4],
+) -> ([f64; ND], [f64; ND]) {
+    let mut q = [0.0; ND];
+    let mut qdot = [0.0; ND];
+    for m in 0..4 {
+        let a = shape.t[m];
+        let b = shape.t_dot[m];
+        for d in 0..ND {
+            q[d] += a * y[m][d];
+            qdot[d] += b * y[m][d];
+        }
+    }
+    (q, qdot)
+}

@@ -1,0 +1,86 @@
+//! Axial strain of the centre line, eq. (8), and the axial energy density
+//! `1/2 EA eps^2` with its gradient and Hessian with respect to r_x
+//! (docs/method.md §2.2, (M3)-(M4); the first term of eq. (12), §2.4).
+//! Green strain is the paper's; engineering strain is as in Exudyn and
+//! MoorDyn.
+
+use super::{dot, AxialStrain};
+
+/// Axial strain and its first two derivatives with respect to r_x.
+pub fn axial_strain(measure: AxialStrain, rx: &[f64; 3]) -> f64 {
+    let g = dot(rx, rx);
+    match measure {
+        AxialStrain::Green => 0.5 * (g - 1.0),
+        AxialStrain::Engineering => g.sqrt() - 1.0,
+    }
+}
+
+/// Axial energy density `1/2 EA eps^2` (eq. 12, first term), its gradient
+/// and Hessian with respect to r_x (docs/method.md §2.2, (M3)-(M4)).
+///
+/// ```text
+///   Green:        dU/dr_x = EA eps r_x,      d2U = EA (r_x r_x^T + eps I)
+///   engineering:  dU/dr_x = EA eps n,        d2U = EA (n n^T + eps (I - n n^T) / |r_x|),
+///                 n = r_x / |r_x|
+/// ```
+pub fn axial_energy_density(
+    measure: AxialStrain,
+    ea: f64,
+    rx: &[f64; 3],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    axial_energy_terms(measure, ea, rx, true)
+}
+
+/// [`axial_energy_density`] without the Hessian (a residual evaluation).
+#[inline]
+pub fn axial_energy_gradient(measure: AxialStrain, ea: f64, rx: &[f64; 3]) -> (f64, [f64; 3]) {
+    let (e, g, _) = axial_energy_terms(measure, ea, rx, false);
+    (e, g)
+}
+
+#[inline(always)]
+pub(super) fn axial_energy_terms(
+    measure: AxialStrain,
+    ea: f64,
+    rx: &[f64; 3],
+    with_hessian: bool,
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    let g = dot(rx, rx);
+    let mut grad = [0.0; 3];
+    let mut hess = [[0.0; 3]; 3];
+    match measure {
+        AxialStrain::Green => {
+            let eps = 0.5 * (g - 1.0);
+            for i in 0..3 {
+                grad[i] = ea * eps * rx[i];
+            }
+            if with_hessian {
+                for i in 0..3 {
+                    for j in 0..3 {
+                        hess[i][j] = ea * rx[i] * rx[j];
+                    }
+                    hess[i][i] += ea * eps;
+                }
+            }
+            (0.5 * ea * eps * eps, grad, hess)
+        }
+        AxialStrain::Engineering => {
+            let len = g.sqrt();
+            let eps = len - 1.0;
+            let n = [rx[0] / len, rx[1] / len, rx[2] / len];
+            let c = eps / len;
+            for i in 0..3 {
+                grad[i] = ea * eps * n[i];
+            }
+            if with_hessian {
+                for i in 0..3 {
+                    for j in 0..3 {
+                        hess[i][j] = ea * (1.0 - c) * n[i] * n[j];
+                    }
+                    hess[i][i] += ea * c;
+                }
+            }
+            (0.5 * ea * eps * eps, grad, hess)
+        }
+    }
+}

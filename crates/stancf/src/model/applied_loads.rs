@@ -1,0 +1,97 @@
+//! The loads on the cable (docs/method.md §2.5-§2.8): gravity, point
+//! forces, end moments and air drag; their validation, and the views of
+//! them the assembly uses.
+
+use super::validate::{check_positive, check_vector};
+use super::Model;
+use crate::error::ModelError;
+
+/// A load on the cable.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Load {
+    /// Distributed weight rho A g, eq. (13).
+    Gravity { acceleration: [f64; 3] },
+    /// Constant force on the position of a node, eq. (14).
+    PointForce { node: usize, force: [f64; 3] },
+    /// Moment vector M n (N m) on the tangent r_x of a node, eqs. (15)-(16):
+    /// work M theta, theta the rotation of r_x about n (see [`crate::loads`]).
+    EndMoment { node: usize, moment: [f64; 3] },
+    /// Air drag along the whole cable, eq. (17) (see [`crate::loads::AirDrag`]).
+    AirDrag(crate::loads::AirDrag),
+}
+
+/// Checks `loads` on a cable of `elements` elements and returns the sum of
+/// the gravity loads and the drag loads.
+pub(super) fn gravity_and_drag(
+    loads: &[Load],
+    elements: usize,
+) -> Result<([f64; 3], Vec<crate::loads::AirDrag>), ModelError> {
+    let mut gravity = [0.0; 3];
+    let mut drag = Vec::new();
+    for (i, load) in loads.iter().enumerate() {
+        match load {
+            Load::AirDrag(d) => {
+                let k = format!("loads[{i}]");
+                let nonneg = |name: &str, v: f64| -> Result<(), ModelError> {
+                    if v.is_finite() && v >= 0.0 {
+                        Ok(())
+                    } else {
+                        Err(ModelError::invalid(
+                            format!("{k}.{name}"),
+                            format!("must be a finite number >= 0, got {v}"),
+                        ))
+                    }
+                };
+                nonneg("drag_coefficient", d.drag_coefficient)?;
+                nonneg("fluid_density", d.fluid_density)?;
+                check_positive(&format!("{k}.diameter"), d.diameter)?;
+                check_vector(&format!("{k}.fluid_velocity"), &d.fluid_velocity)?;
+                if let crate::loads::DragModel::Normal {
+                    tangential_coefficient,
+                } = d.model
+                {
+                    nonneg("tangential_coefficient", tangential_coefficient)?;
+                }
+                drag.push(*d);
+            }
+            Load::Gravity { acceleration } => {
+                check_vector(&format!("loads[{i}].acceleration"), acceleration)?;
+                for c in 0..3 {
+                    gravity[c] += acceleration[c];
+                }
+            }
+            Load::PointForce { node, force: v } | Load::EndMoment { node, moment: v } => {
+                let name = match load {
+                    Load::PointForce { .. } => "force",
+                    _ => "moment",
+                };
+                check_vector(&format!("loads[{i}].{name}"), v)?;
+                if *node > elements {
+                    return Err(ModelError::invalid(
+                        format!("loads[{i}].node"),
+                        format!("node {node} does not exist (nodes are 0..={elements})"),
+                    ));
+                }
+            }
+        }
+    }
+    Ok((gravity, drag))
+}
+
+impl Model {
+    /// End moments: (node, moment vector).
+    pub fn end_moments(&self) -> impl Iterator<Item = (usize, [f64; 3])> + '_ {
+        self.loads.iter().filter_map(|l| match l {
+            Load::EndMoment { node, moment } => Some((*node, *moment)),
+            _ => None,
+        })
+    }
+
+    /// Point forces acting on node j (summed).
+    pub fn point_forces(&self) -> impl Iterator<Item = (usize, [f64; 3])> + '_ {
+        self.loads.iter().filter_map(|l| match l {
+            Load::PointForce { node, force } => Some((*node, *force)),
+            _ => None,
+        })
+    }
+}

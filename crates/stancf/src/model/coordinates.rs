@@ -1,0 +1,122 @@
+//! The coordinate index function and what is built on it (docs/method.md
+//! §1.1): vector slots, [`coordinate`], node ranges, the length scale of
+//! each coordinate kind, and the selection of the out-of-plane coordinates
+//! for the planar reduction (docs/method.md §6.7).
+
+use super::{Load, Model, State};
+use std::ops::Range;
+
+/// Vector slot of the position r in a node's coordinates.
+pub const SLOT_R: usize = 0;
+/// Vector slot of the gradient r_x.
+pub const SLOT_R_X: usize = 1;
+/// Vector slot of the second gradient r_xx (SAC-3 only).
+pub const SLOT_R_XX: usize = 2;
+
+/// Global index of component `component` (x, y, z = 0, 1, 2) of vector
+/// `slot` ([`SLOT_R`], [`SLOT_R_X`], [`SLOT_R_XX`]) of node `node`, with
+/// `dpn` scalar coordinates per node: `node dpn + 3 slot + component`
+/// (docs/method.md §1.1). The one place the numbering is written; every
+/// index of a coordinate is computed here. An element's coordinates are
+/// contiguous from its first node's, so a slot past the node's own
+/// vectors counts on into the next node: element k's vector a (its own
+/// order, 0..NS) is `coordinate(dpn, k, a, i)`, and `coordinate(dpn, k,
+/// SLOT_R, 0)` is the start of element k's slice.
+#[inline]
+pub const fn coordinate(dpn: usize, node: usize, slot: usize, component: usize) -> usize {
+    node * dpn + 3 * slot + component
+}
+
+/// The coordinates of node `node`: `[r, r_x(, r_xx)]`.
+#[inline]
+pub const fn node_range(dpn: usize, node: usize) -> Range<usize> {
+    coordinate(dpn, node, SLOT_R, 0)..coordinate(dpn, node + 1, SLOT_R, 0)
+}
+
+impl Model {
+    /// Index of the first coordinate of node j.
+    pub fn node_offset(&self, node: usize) -> usize {
+        self.coordinate(node, SLOT_R, 0)
+    }
+
+    /// Global index of component `component` of vector `slot` of node
+    /// `node` (see [`coordinate`]).
+    #[inline]
+    pub fn coordinate(&self, node: usize, slot: usize, component: usize) -> usize {
+        coordinate(self.dofs_per_node(), node, slot, component)
+    }
+
+    /// The coordinates of node j (see [`node_range`]).
+    #[inline]
+    pub fn node_range(&self, node: usize) -> Range<usize> {
+        node_range(self.dofs_per_node(), node)
+    }
+
+    /// The out-of-plane coordinates (the z components of r, r_x, r_xx at
+    /// every node) if the motion from `state` stays in the plane z = z0:
+    /// every node at z0 with r_x, r_xx and all rates in the plane; gravity,
+    /// point forces and the fluid velocity of drag in the plane; end
+    /// moments about z; constraints that do not move out of it. Then, by
+    /// the mirror symmetry about the plane, the z equations hold for
+    /// z = z0 and zero slopes at every step, and their Jacobian does not
+    /// couple them to the in-plane ones at such states (every coupling
+    /// term carries an out-of-plane component), so eliminating them gives
+    /// the same motion with a third fewer unknowns (docs/method.md §6.7).
+    /// `None` otherwise.
+    pub fn planar_coordinates(&self, state: &State) -> Option<Vec<usize>> {
+        let dpn = self.dofs_per_node();
+        let n = self.dofs();
+        if state.e.len() != n || state.v.len() != n {
+            return None;
+        }
+        let z0 = state.e[2];
+        let mut out = Vec::with_capacity(n / 3);
+        for g in (2..n).step_by(3) {
+            let value = if g % dpn == 2 { z0 } else { 0.0 };
+            if state.e[g] != value || state.v[g] != 0.0 {
+                return None;
+            }
+            if let Some(m) = &self.constraints.motion[g] {
+                let still = m.rate == 0.0 && (m.amplitude == 0.0 || m.omega == 0.0);
+                if !still || m.value(0.0) != value {
+                    return None;
+                }
+            }
+            out.push(g);
+        }
+        let in_plane = self.loads.iter().all(|l| match l {
+            Load::Gravity { acceleration } => acceleration[2] == 0.0,
+            Load::PointForce { force, .. } => force[2] == 0.0,
+            Load::EndMoment { moment, .. } => moment[0] == 0.0 && moment[1] == 0.0,
+            Load::AirDrag(d) => d.fluid_velocity[2] == 0.0,
+        });
+        in_plane.then_some(out)
+    }
+
+    /// Holds the out-of-plane coordinates at their values when the motion
+    /// from `state` is planar (see [`Self::planar_coordinates`]); returns
+    /// whether it did.
+    pub fn reduce_to_plane(&mut self, state: &State) -> bool {
+        match self.planar_coordinates(state) {
+            Some(dofs) => {
+                for g in dofs {
+                    self.constraints.hold_inactive(g, state.e[g]);
+                }
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Length scale of each coordinate kind within a node: a change of r
+    /// by 1 m, of r_x by 1/l or of r_xx by 1/l^2 moves the centre line by
+    /// about 1 m inside an element of length l.
+    pub fn coordinate_length_scale(&self, dof_in_node: usize) -> f64 {
+        let l = self.element_length();
+        match dof_in_node / 3 {
+            0 => 1.0,
+            1 => l,
+            _ => l * l,
+        }
+    }
+}

@@ -1,0 +1,280 @@
+//! The cable model: geometry, material, mesh, loads and DOF numbering.
+//!
+//! Global coordinates are numbered node by node: node j owns
+//! `e[j * dpn .. (j + 1) * dpn]` = `[r, r_x]` (SAC-2, dpn = 6) or
+//! `[r, r_x, r_xx]` (SAC-3, dpn = 9). Element k spans nodes k and k + 1, so
+//! its coordinates are the contiguous slice starting at `k * dpn`, in the
+//! element's own order (docs/method.md §1.1). [`coordinate`] computes
+//! every such index; the rest of the crate calls it.
+//!
+//! This module holds the [`Model`], its mesh and state and their core
+//! accessors; the rest is split by meaning:
+//!
+//! | file | holds |
+//! |---|---|
+//! | `cable.rs` | [`Cable`] and [`ElementType`] (§1.1-§1.3) |
+//! | `material.rs` | [`Material`] and its derived figures (§2.1, §2.4) |
+//! | `coordinates.rs` | the index function, slots, node ranges, planar coordinates (§1.1, §6.7) |
+//! | `quadrature_choice.rs` | [`SpacePoints`], [`ModelOptions`], default points, rank warnings (§3.3-§3.4) |
+//! | `applied_loads.rs` | [`Load`] and its validation (§2.5-§2.8) |
+//! | `mass.rs` | the global mass matrix products (§2.1) |
+//! | `validate.rs` | checks of the input figures |
+
+use crate::constraints::{Constraint, Constraints};
+use crate::element::{CableElement, Measures, Section, SpaceRules};
+use crate::error::ModelError;
+use crate::shape::{cubic_hermite, quintic_hermite};
+
+mod applied_loads;
+mod cable;
+mod coordinates;
+mod mass;
+mod material;
+mod quadrature_choice;
+mod validate;
+
+pub use applied_loads::Load;
+pub use cable::{Cable, ElementType};
+pub use coordinates::{coordinate, node_range, SLOT_R, SLOT_R_X, SLOT_R_XX};
+pub(crate) use mass::gather;
+pub use material::Material;
+pub use quadrature_choice::{ModelOptions, SpacePoints};
+
+/// The elements of the mesh, one variant per element type so that the
+/// generic kernel is monomorphized for SAC-2 and SAC-3.
+#[derive(Clone, Debug)]
+pub enum Mesh {
+    Sac2(Vec<CableElement<4, 12>>),
+    Sac3(Vec<CableElement<6, 18>>),
+}
+
+/// Runs `$body` with `$els` bound to the element slice of either type.
+#[macro_export]
+#[doc(hidden)]
+macro_rules! with_elements {
+    ($mesh:expr, $els:ident => $body:expr) => {
+        match $mesh {
+            $crate::model::Mesh::Sac2($els) => $body,
+            $crate::model::Mesh::Sac3($els) => $body,
+        }
+    };
+}
+
+/// A cable model ready to simulate.
+#[derive(Clone, Debug)]
+pub struct Model {
+    pub cable: Cable,
+    pub material: Material,
+    pub options: ModelOptions,
+    pub loads: Vec<Load>,
+    pub mesh: Mesh,
+    /// Sum of the gravity loads.
+    pub gravity: [f64; 3],
+    /// The drag loads.
+    pub drag: Vec<crate::loads::AirDrag>,
+    /// Constraints, resolved to coordinates (none for a free cable).
+    pub constraints: Constraints,
+}
+
+/// Positions e and velocities v of all coordinates at time t.
+#[derive(Debug, PartialEq)]
+pub struct State {
+    pub t: f64,
+    pub e: Vec<f64>,
+    pub v: Vec<f64>,
+}
+
+impl Clone for State {
+    fn clone(&self) -> Self {
+        State {
+            t: self.t,
+            e: self.e.clone(),
+            v: self.v.clone(),
+        }
+    }
+
+    /// Reuses the buffers (the derived `clone_from` would allocate).
+    fn clone_from(&mut self, source: &Self) {
+        self.t = source.t;
+        self.e.clone_from(&source.e);
+        self.v.clone_from(&source.v);
+    }
+}
+
+impl Mesh {
+    /// `elements` elements of type `element_type` and length `l`.
+    fn build(
+        element_type: ElementType,
+        elements: usize,
+        l: f64,
+        section: Section,
+        measures: Measures,
+        rules: &SpaceRules,
+    ) -> Self {
+        match element_type {
+            ElementType::Sac2 => Mesh::Sac2(
+                (0..elements)
+                    .map(|_| CableElement::new(cubic_hermite, l, section, measures, rules))
+                    .collect(),
+            ),
+            ElementType::Sac3 => Mesh::Sac3(
+                (0..elements)
+                    .map(|_| CableElement::new(quintic_hermite, l, section, measures, rules))
+                    .collect(),
+            ),
+        }
+    }
+}
+
+impl Model {
+    /// Validates the data and builds the mesh.
+    pub fn new(
+        cable: Cable,
+        material: Material,
+        options: ModelOptions,
+        loads: Vec<Load>,
+    ) -> Result<Self, ModelError> {
+        let cable = validate::cable(cable)?;
+        validate::material(&material)?;
+        let points = options
+            .space_points
+            .unwrap_or_else(|| cable.element_type.default_space_points());
+        let rules = quadrature_choice::space_rules(points)?;
+        let (gravity, drag) = applied_loads::gravity_and_drag(&loads, cable.elements)?;
+        let l = cable.length / cable.elements as f64;
+        let section = material.section();
+        let measures = options.measures;
+        let mesh = Mesh::build(
+            cable.element_type,
+            cable.elements,
+            l,
+            section,
+            measures,
+            &rules,
+        );
+        let nodes = cable.elements + 1;
+        Ok(Model {
+            cable,
+            material,
+            options,
+            loads,
+            mesh,
+            gravity,
+            drag,
+            constraints: Constraints {
+                motion: vec![None; nodes * cable.element_type.dofs_per_node()],
+                ..Constraints::default()
+            },
+        })
+    }
+
+    /// The model with these constraints (replacing any before).
+    pub fn with_constraints(mut self, list: Vec<Constraint>) -> Result<Self, ModelError> {
+        let reference = self.reference_coordinates();
+        self.constraints = Constraints::new(list, self.element_type(), self.nodes(), &reference)?;
+        Ok(self)
+    }
+
+    /// Coordinates of the straight, stress-free reference shape:
+    /// r_j = origin + x_j d, r_x = d, r_xx = 0.
+    pub fn reference_coordinates(&self) -> Vec<f64> {
+        let mut e = vec![0.0; self.dofs()];
+        let d = self.cable.direction;
+        for j in 0..self.nodes() {
+            let o = self.node_offset(j);
+            let x = self.node_coordinate(j);
+            for i in 0..3 {
+                e[o + i] = self.cable.origin[i] + x * d[i];
+                e[o + 3 + i] = d[i];
+            }
+        }
+        e
+    }
+
+    pub fn element_type(&self) -> ElementType {
+        self.cable.element_type
+    }
+
+    /// Spatial nodes (elements + 1).
+    pub fn nodes(&self) -> usize {
+        self.cable.elements + 1
+    }
+
+    /// Scalar coordinates per node.
+    pub fn dofs_per_node(&self) -> usize {
+        self.cable.element_type.dofs_per_node()
+    }
+
+    /// Scalar coordinates of the mesh.
+    pub fn dofs(&self) -> usize {
+        self.nodes() * self.dofs_per_node()
+    }
+
+    /// Element length l.
+    pub fn element_length(&self) -> f64 {
+        self.cable.length / self.cable.elements as f64
+    }
+
+    /// Material coordinate of node j.
+    pub fn node_coordinate(&self, node: usize) -> f64 {
+        node as f64 * self.element_length()
+    }
+
+    /// Position r of node j in state e.
+    pub fn node_position(&self, e: &[f64], node: usize) -> [f64; 3] {
+        let o = self.node_offset(node);
+        [e[o], e[o + 1], e[o + 2]]
+    }
+
+    /// The straight reference shape at rest at t = 0, with constrained
+    /// coordinates at their prescribed values and rates.
+    pub fn initial_state(&self) -> State {
+        let n = self.dofs();
+        let mut s = State {
+            t: 0.0,
+            e: self.reference_coordinates(),
+            v: vec![0.0; n],
+        };
+        self.apply_constraints(&mut s);
+        s
+    }
+
+    /// Sets every constrained coordinate of `state` to its prescribed value
+    /// and rate at `state.t`.
+    pub fn apply_constraints(&self, state: &mut State) {
+        for (g, m) in self.constraints.motion.iter().enumerate() {
+            if let Some(m) = m {
+                state.e[g] = m.value(state.t);
+                state.v[g] = m.rate_at(state.t);
+            }
+        }
+    }
+
+    /// Sets the velocity of the position r of node j (its gradients keep
+    /// their velocity).
+    pub fn set_node_velocity(&self, state: &mut State, node: usize, velocity: [f64; 3]) {
+        let o = self.node_offset(node);
+        state.v[o..o + 3].copy_from_slice(&velocity);
+    }
+
+    /// Adds a rigid rotation w x (r - center) to every node's r velocity and
+    /// w x r_x (w x r_xx) to its gradients' velocities.
+    pub fn add_rigid_rotation(&self, state: &mut State, omega: [f64; 3], center: [f64; 3]) {
+        let vpn = self.cable.element_type.vectors_per_node();
+        for j in 0..self.nodes() {
+            for k in 0..vpn {
+                let b = self.coordinate(j, k, 0);
+                let mut arm = [state.e[b], state.e[b + 1], state.e[b + 2]];
+                if k == 0 {
+                    for i in 0..3 {
+                        arm[i] -= center[i];
+                    }
+                }
+                let w = crate::element::cross(&omega, &arm);
+                for i in 0..3 {
+                    state.v[b + i] += w[i];
+                }
+            }
+        }
+    }
+}
