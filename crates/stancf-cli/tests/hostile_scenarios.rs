@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{names, pendulum, scratch, stancf, text, write_scenario};
+use common::{names, pendulum, run_to, scratch, stancf, text, write_scenario};
 use std::path::Path;
 
 /// A free 4 m PVC cable whose end A is struck sideways (8 SAC-2, 4 steps).
@@ -324,12 +324,7 @@ fn run_refuses_more_than_1e8_steps_naming_the_keys_and_the_flag() {
     let dir = scratch("hostile-steps-run");
     let file = write_scenario(&dir, "long.toml", &with("duration", "1e4"));
     let out = dir.join("out");
-    let o = stancf(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = run_to(&file, &out);
     let (_, se) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{se}");
     let keys = named_keys(&se, "long.toml");
@@ -373,12 +368,7 @@ fn run_refuses_results_beyond_4_gb_naming_output_every() {
     let dir = scratch("hostile-size-run");
     let file = write_scenario(&dir, "big.toml", &huge_output());
     let out = dir.join("out");
-    let o = stancf(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = run_to(&file, &out);
     let (_, se) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{se}");
     let keys = named_keys(&se, "big.toml");
@@ -606,12 +596,7 @@ fn a_static_failure_names_the_load_factor_not_a_time() {
     let dir = scratch("hostile-static-fail");
     let file = write_scenario(&dir, "static.toml", &failing_static());
     let out = dir.join("out");
-    let o = stancf(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = run_to(&file, &out);
     let (_, se) = text(&o);
     assert_eq!(o.status.code(), Some(3), "{se}");
     assert!(se.contains("at load factor 0 (increment 1,"), "{se}");

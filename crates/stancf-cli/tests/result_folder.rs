@@ -173,12 +173,7 @@ fn a_second_run_into_a_folder_in_use_is_refused_and_the_first_keeps_its_results(
     wait_for("the first run to step", || {
         staging_with_history(&target, 4096).is_some()
     });
-    let o = stancf(&[
-        "run",
-        short.to_str().unwrap(),
-        "--out",
-        target.to_str().unwrap(),
-    ]);
+    let o = run_to(&short, &target);
     let (_, err) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains(target.to_str().unwrap()), "{err}");
@@ -201,12 +196,7 @@ fn ctrl_c_mid_run_writes_a_valid_partial_set_marked_interrupted() {
     let target = d.join("case");
     // An older complete set, replaced by the interrupted run's.
     let old = write_scenario(&d, "old.toml", &pendulum("old", 1e-4, 0.01, 1));
-    let o = stancf(&[
-        "run",
-        old.to_str().unwrap(),
-        "--out",
-        target.to_str().unwrap(),
-    ]);
+    let o = run_to(&old, &target);
     assert!(o.status.success());
     let child = spawn_run(&long, &target);
     wait_for("the run to step", || {

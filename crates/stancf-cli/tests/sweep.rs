@@ -3,7 +3,7 @@
 //! and the refusals (exit 2, naming the key or the size, nothing written).
 
 mod common;
-use common::{names, pendulum, scratch, stancf, text, BIN};
+use common::{names, pendulum, run_to, scratch, stancf, text, BIN};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -149,12 +149,7 @@ fn sweep_runs_the_grid_and_reports_failures() {
         // The same scenario run alone gives the same tip, to the bit.
         let alone = d.join(format!("alone{k}"));
         let run_sc = out.join(format!("run_{k:04}")).join("scenario.toml");
-        let o = stancf(&[
-            "run",
-            run_sc.to_str().unwrap(),
-            "--out",
-            alone.to_str().unwrap(),
-        ]);
+        let o = run_to(&run_sc, &alone);
         assert_eq!(o.status.code(), Some(0));
         let s: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(alone.join("summary.json")).unwrap())

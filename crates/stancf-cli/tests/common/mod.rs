@@ -162,6 +162,17 @@ pub fn names(dir: &Path) -> Vec<String> {
     v
 }
 
+/// `stancf run <scenario> --out <out>` (progress and summary printed).
+pub fn run_to(scenario: &Path, out: &Path) -> Output {
+    Command::new(BIN)
+        .arg("run")
+        .arg(scenario)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .expect("run stancf")
+}
+
 /// `stancf run --quiet <scenario> --out <out>`, with `extra` arguments.
 pub fn run_quiet(scenario: &Path, out: &Path, extra: &[&str]) -> Output {
     Command::new(BIN)
@@ -172,4 +183,45 @@ pub fn run_quiet(scenario: &Path, out: &Path, extra: &[&str]) -> Output {
         .args(extra)
         .output()
         .expect("run stancf")
+}
+
+/// Runs `stancf run` on a scenario and checks the exit code 2, that the
+/// message names the file and `needles`, and that no output is written.
+pub fn expect_input_error(name: &str, scenario: &str, needles: &[&str]) {
+    let d = scratch(name);
+    let sc = write_scenario(&d, "bad.toml", scenario);
+    let out = d.join("never");
+    for cmd in ["run", "check"] {
+        let mut args = vec![cmd, sc.to_str().unwrap()];
+        if cmd == "run" {
+            args.extend(["--out", out.to_str().unwrap()]);
+        }
+        let o = stancf(&args);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{name} ({cmd}): {se}");
+        assert!(se.contains("bad.toml"), "{name}: file not named: {se}");
+        for n in needles {
+            assert!(se.contains(n), "{name}: {n:?} not in: {se}");
+        }
+    }
+    assert!(!out.exists(), "{name}: an output folder was created");
+}
+
+/// A PNG file: signature, IHDR size, and a size a real figure has.
+pub fn check_png(path: &Path) {
+    let b = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{}", path.display());
+    assert_eq!(&b[12..16], b"IHDR", "{}", path.display());
+    let w = u32::from_be_bytes(b[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(b[20..24].try_into().unwrap());
+    assert!(
+        (600..=2000).contains(&w) && (400..=1500).contains(&h),
+        "{w} x {h}"
+    );
+    assert!(
+        b.len() > 10_000 && b.len() < 5_000_000,
+        "{}: {} bytes",
+        path.display(),
+        b.len()
+    );
 }
