@@ -19,13 +19,6 @@ pub mod sweep;
 pub mod vtk;
 pub mod work_bounds;
 
-/// The commands' entry points under their older path (the `run` command
-/// lives in [`crate::run`]; `check` in [`crate::check`]).
-pub mod commands {
-    pub(crate) use crate::run::safe_folder_name;
-    pub use crate::run::{check, plot, run, run_text, Cancel, RunOptions};
-}
-
 /// How a command ended.
 #[derive(Debug)]
 pub enum Failure {

@@ -4,7 +4,7 @@
 //! failed (results up to the last converged step are kept), 1 anything else.
 
 use clap::{Parser, Subcommand};
-use stancf_cli::{commands, reproduce, signals, sweep, Failure};
+use stancf_cli::{check, reproduce, run, signals, sweep, Failure};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -101,25 +101,26 @@ fn main() -> ExitCode {
             vtk,
             quiet,
             allow_large,
-        } => commands::run(
+        } => run::run(
             &scenario,
-            commands::RunOptions {
+            run::RunOptions {
                 out,
                 plot,
                 vtk,
                 quiet,
                 allow_large,
                 cancel: Some(signals::cancel()),
+                shown_as: None,
             },
         ),
-        Command::Plot { dir } => commands::plot(&dir),
+        Command::Plot { dir } => run::plot(&dir),
         Command::Sweep {
             scenario,
             sets,
             jobs,
             out,
         } => sweep::sweep(&scenario, &sets, jobs, out),
-        Command::Check { scenario } => commands::check(&scenario),
+        Command::Check { scenario } => check::check(&scenario),
         Command::Reproduce { study, out } => reproduce::reproduce(
             &study,
             &out.unwrap_or_else(|| PathBuf::from("out").join("reproduce")),

@@ -8,7 +8,7 @@
 //! second Ctrl-C ends the process at once the default way: the output
 //! folder then keeps its previous complete set ([`crate::output::ResultFolder`]).
 
-use crate::commands::Cancel;
+use crate::run::Cancel;
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::Arc;
 

@@ -18,8 +18,8 @@
 //! time, nothing of them kept, so validation needs memory for the table
 //! only (a few bytes per point) and takes about 0.1 ms per point.
 
-use crate::commands::{run_text, RunOptions};
 use crate::output::{write_atomic, Num, ResultFolder};
+use crate::run::{run_text, RunOptions};
 use crate::scenario;
 use crate::Failure;
 use std::fmt::Write as _;
@@ -345,10 +345,7 @@ pub fn sweep(
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        PathBuf::from("out").join(format!(
-            "{}-sweep",
-            crate::commands::safe_folder_name(&stem)
-        ))
+        PathBuf::from("out").join(format!("{}-sweep", crate::run::safe_folder_name(&stem)))
     });
     // The sweep's folder is one transaction, its runs' folders inside it.
     let folder = ResultFolder::open(&target)?;
@@ -357,7 +354,6 @@ pub fn sweep(
         .map(|k| dir.join(format!("run_{k:04}")))
         .collect();
     let cancel = crate::signals::cancel();
-    let (staging_text, target_text) = (dir.display().to_string(), target.display().to_string());
     let jobs = jobs
         .unwrap_or_else(|| {
             std::thread::available_parallelism()
@@ -388,16 +384,17 @@ pub fn sweep(
                             out: Some(run_dirs[k].clone()),
                             quiet: true,
                             cancel: Some(cancel.clone()),
+                            // Messages name the folder as it will be after
+                            // the sweep's commit.
+                            shown_as: Some(target.join(format!("run_{k:04}"))),
                             ..RunOptions::default()
                         },
                     )
                 });
-                // Messages name the folders as they will be after the commit.
-                let shown = |m: String| m.replace(&staging_text, &target_text);
                 let outcome = match result {
                     Ok(()) => ("ok", String::new()),
-                    Err(Failure::Interrupted(m)) => ("interrupted", shown(m)),
-                    Err(e) => ("failed", shown(e.to_string())),
+                    Err(Failure::Interrupted(m)) => ("interrupted", m),
+                    Err(e) => ("failed", e.to_string()),
                 };
                 outcomes.lock().expect("no run panics holding it")[k] = Some(outcome);
             });

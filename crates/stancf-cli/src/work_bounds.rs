@@ -123,7 +123,7 @@ pub(crate) fn size_problem(sc: &Scenario, size: &Size) -> Option<(String, String
 pub(crate) fn admit(
     path: &Path,
     sc: &Scenario,
-    opts: &crate::commands::RunOptions,
+    opts: &crate::run::RunOptions,
 ) -> Result<(), Failure> {
     if opts.allow_large {
         return Ok(());
@@ -142,7 +142,7 @@ pub(crate) fn admit(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::commands::RunOptions;
+    use crate::run::RunOptions;
     use crate::scenario;
 
     fn scenario(body: &str) -> Scenario {

@@ -177,7 +177,12 @@ fn sweep_runs_the_grid_and_reports_failures() {
     let (header, rows) = table(&d.join("res2"));
     assert_eq!(rows[0][col(&header, "status")], "ok");
     assert_eq!(rows[1][col(&header, "status")], "failed");
-    assert!(!rows[1][col(&header, "error")].is_empty());
+    let error = &rows[1][col(&header, "error")];
+    // It names the run's folder where it is after the sweep, not where it
+    // was written.
+    let run_1 = d.join("res2").join("run_0001");
+    assert!(error.contains(run_1.to_str().unwrap()), "{error}");
+    assert!(!error.contains(".stancf-"), "{error}");
     // A misspelt key: exit 2 naming it, nothing run.
     let o = stancf(&[
         "sweep",

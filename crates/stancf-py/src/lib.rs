@@ -7,7 +7,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use stancf_cli::commands::{run_text, Cancel, RunOptions};
+use stancf_cli::run::{run_text, Cancel, RunOptions};
 use stancf_cli::{scenario, sweep, Failure};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};

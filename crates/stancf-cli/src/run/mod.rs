@@ -49,6 +49,9 @@ pub struct RunOptions {
     pub allow_large: bool,
     /// Stop when this says so (checked after every step).
     pub cancel: Option<Cancel>,
+    /// The folder messages name when `out` is itself moved after the run
+    /// (a sweep's runs live in the sweep's staging folder until it commits).
+    pub shown_as: Option<PathBuf>,
 }
 
 impl RunOptions {
@@ -134,7 +137,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
     let folder = ResultFolder::open(&target)?;
     let place = Place {
         dir: folder.staging(),
-        shown: folder.target(),
+        shown: opts.shown_as.as_deref().unwrap_or(folder.target()),
     };
     write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
     let result = match sc.analysis.kind {
