@@ -39,6 +39,70 @@ pub enum ConstraintKind {
         frequency: f64,
         phase: f64,
     },
+    /// r held at a point of a system: fixed (an anchor) or moving with it
+    /// (a coupled point, a fairlead), r(t) = position + oscillation(t).
+    Attached {
+        position: [f64; 3],
+        oscillation: Oscillation,
+    },
+}
+
+/// A periodic motion about a point with a smooth start,
+/// `u(t) = f(t) amplitude sin(2 pi t / period + phase)`, with the ramp
+/// f = s^3 (6 s^2 - 15 s + 10), s = min(t / ramp, 1) (f = 1 without a
+/// ramp; f, f' and f'' are continuous, so the motion starts from rest
+/// without a jerk).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Oscillation {
+    pub amplitude: [f64; 3],
+    /// Period (s); 0 for no motion.
+    pub period: f64,
+    /// Phase (rad).
+    pub phase: f64,
+    /// Ramp time (s); 0 for none.
+    pub ramp: f64,
+}
+
+impl Oscillation {
+    /// No motion.
+    pub const NONE: Oscillation = Oscillation {
+        amplitude: [0.0; 3],
+        period: 0.0,
+        phase: 0.0,
+        ramp: 0.0,
+    };
+
+    /// The motion of component k of a point at `position` moving so.
+    pub fn coordinate_motion(&self, position: &[f64; 3], k: usize) -> CoordinateMotion {
+        let moving = self.period > 0.0 && self.amplitude.iter().any(|&a| a != 0.0);
+        CoordinateMotion {
+            base: position[k],
+            rate: 0.0,
+            amplitude: if moving { self.amplitude[k] } else { 0.0 },
+            omega: if moving {
+                2.0 * std::f64::consts::PI / self.period
+            } else {
+                0.0
+            },
+            phase: self.phase,
+            ramp: self.ramp,
+        }
+    }
+}
+
+/// The ramp f(t) = s^3 (6 s^2 - 15 s + 10), s = min(t / ramp, 1), and
+/// df/dt (f = 1 when `ramp` is 0).
+pub fn ramp_factor(t: f64, ramp: f64) -> (f64, f64) {
+    if ramp <= 0.0 || t >= ramp {
+        return (1.0, 0.0);
+    }
+    if t <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let s = t / ramp;
+    let f = s * s * s * (s * (6.0 * s - 15.0) + 10.0);
+    let df = 30.0 * s * s * (s - 1.0) * (s - 1.0) / ramp;
+    (f, df)
 }
 
 /// A constraint on one node.
@@ -61,7 +125,8 @@ pub enum ConstraintMethod {
 }
 
 /// The prescribed history of one coordinate,
-/// c(t) = base + rate t + amplitude sin(omega t + phase).
+/// c(t) = base + rate t + f(t) amplitude sin(omega t + phase), f the ramp
+/// of [`ramp_factor`] (1 when `ramp` is 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoordinateMotion {
     pub base: f64,
@@ -69,6 +134,7 @@ pub struct CoordinateMotion {
     pub amplitude: f64,
     pub omega: f64,
     pub phase: f64,
+    pub ramp: f64,
 }
 
 impl CoordinateMotion {
@@ -80,16 +146,66 @@ impl CoordinateMotion {
             amplitude: 0.0,
             omega: 0.0,
             phase: 0.0,
+            ramp: 0.0,
         }
     }
 
     pub fn value(&self, t: f64) -> f64 {
-        self.base + self.rate * t + self.amplitude * (self.omega * t + self.phase).sin()
+        let wave = self.amplitude * (self.omega * t + self.phase).sin();
+        if self.ramp > 0.0 {
+            self.base + self.rate * t + ramp_factor(t, self.ramp).0 * wave
+        } else {
+            self.base + self.rate * t + wave
+        }
     }
 
     pub fn rate_at(&self, t: f64) -> f64 {
-        self.rate + self.amplitude * self.omega * (self.omega * t + self.phase).cos()
+        let arg = self.omega * t + self.phase;
+        let wave_rate = self.amplitude * self.omega * arg.cos();
+        if self.ramp > 0.0 {
+            let (f, df) = ramp_factor(t, self.ramp);
+            self.rate + f * wave_rate + df * self.amplitude * arg.sin()
+        } else {
+            self.rate + wave_rate
+        }
     }
+}
+
+/// The motions of r of a node attached to a point (see
+/// [`ConstraintKind::Attached`]).
+fn attached_motions(
+    key: &str,
+    position: [f64; 3],
+    o: &Oscillation,
+) -> Result<Vec<(usize, CoordinateMotion)>, ModelError> {
+    let finite = |v: &[f64; 3]| v.iter().all(|x| x.is_finite());
+    if !finite(&position) || !finite(&o.amplitude) {
+        return Err(ModelError::invalid(
+            key,
+            format!(
+                "the point's position and motion amplitude must be finite, got {position:?} \
+                 and {:?}",
+                o.amplitude
+            ),
+        ));
+    }
+    for (name, v) in [("period", o.period), ("ramp", o.ramp)] {
+        if !v.is_finite() || v < 0.0 {
+            return Err(ModelError::invalid(
+                format!("{key}.{name}"),
+                format!("must be a finite number >= 0, got {v}"),
+            ));
+        }
+    }
+    if !o.phase.is_finite() {
+        return Err(ModelError::invalid(
+            format!("{key}.phase"),
+            format!("must be a finite number, got {}", o.phase),
+        ));
+    }
+    Ok((0..3)
+        .map(|d| (d, o.coordinate_motion(&position, d)))
+        .collect())
 }
 
 /// All constraints of a model, resolved to coordinates.
@@ -187,11 +303,16 @@ impl Constraints {
                                     amplitude: amplitude[d],
                                     omega: 2.0 * std::f64::consts::PI * frequency,
                                     phase,
+                                    ramp: 0.0,
                                 },
                             )
                         })
                         .collect()
                 }
+                ConstraintKind::Attached {
+                    position,
+                    oscillation,
+                } => attached_motions(&key, position, &oscillation)?,
             };
             for (d, m) in coords {
                 if let Some(other) = owner[o + d] {

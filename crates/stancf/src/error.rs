@@ -18,6 +18,17 @@ impl ModelError {
             message: message.into(),
         }
     }
+
+    /// The same error with its key under `prefix` (`lines[2]` +
+    /// `constraints[0]` = `lines[2].constraints[0]`).
+    pub fn under(self, prefix: &str) -> Self {
+        let key = if self.key.is_empty() {
+            prefix.to_string()
+        } else {
+            format!("{prefix}.{}", self.key)
+        };
+        ModelError { key, ..self }
+    }
 }
 
 impl fmt::Display for ModelError {

@@ -11,7 +11,7 @@
 //!
 //! The method, equation by equation with the decisions taken, is
 //! docs/method.md in the repository; the modules' doc comments cite its
-//! sections (§) and formulas (M1)-(M29). The modules follow the method
+//! sections (§) and formulas (M1)-(M31). The modules follow the method
 //! from the bottom up:
 //!
 //! | module | what it implements |
@@ -21,21 +21,26 @@
 //! | [`element`] | the SAC-2/SAC-3 kernel: energy densities, slab action, gradient, exact Hessian |
 //! | [`model`] | cable, material, loads, mesh and DOF numbering |
 //! | [`assembly`] | the P2 equations of a step (eq. 22) with time layers |
-//! | [`band`] | band LU with partial pivoting, the global linear solver |
+//! | [`band`] | band LU with partial pivoting, the linear solver of one cable |
+//! | [`bordered`] | bands bordered by the points' unknowns: a system's Jacobian, block elimination |
+//! | [`linear`] | what the solvers need of a matrix and its factors |
 //! | [`solver`] | Newton-Raphson (eq. 25, 26) |
 //! | [`integrator`] | the P2 step, runs with an energy watchdog |
 //! | [`observe`] | energies, momentum, stress |
 //! | [`stability`] | P2's stable step for the actual mesh |
+//! | [`system`] | lines joined at fixed, free and coupled points, and their step |
 //!
 //! The physics never touches files, terminals or the clock; the `stancf`
 //! command-line tool (crate `stancf-cli`) does.
 
 pub mod assembly;
 pub mod band;
+pub mod bordered;
 pub mod constraints;
 pub mod element;
 pub mod error;
 pub mod integrator;
+pub mod linear;
 pub mod loads;
 pub mod model;
 pub mod observe;
@@ -44,6 +49,7 @@ pub mod shape;
 pub mod solver;
 pub mod stability;
 pub mod statics;
+pub mod system;
 
 pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};
 pub use element::{AxialStrain, Curvature, Measures};

@@ -33,11 +33,13 @@
 
 use crate::band::{BandLu, BandMatrix};
 use crate::error::FailureKind;
+use crate::linear::Factorization;
 
-/// A square nonlinear system R(x) = 0 with a band Jacobian.
-pub trait NonlinearSystem {
+/// A square nonlinear system R(x) = 0 whose Jacobian is a `M` (a band
+/// matrix for one cable, a bordered one for a system of lines).
+pub trait NonlinearSystem<M = BandMatrix> {
     /// Writes R(x) and, if asked, dR/dx (both overwritten).
-    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>);
+    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut M>);
     /// Scaled norm of a residual.
     fn residual_norm(&self, residual: &[f64]) -> f64;
     /// Scaled norm of an increment.
@@ -111,10 +113,11 @@ pub struct NewtonFailure {
     pub report: NewtonReport,
 }
 
-/// Buffers of a Newton or Broyden solve, sized once for a system.
+/// Buffers of a Newton or Broyden solve, sized once for a system; `F`
+/// the factors of its Jacobian.
 #[derive(Clone, Debug)]
-pub struct NewtonWorkspace {
-    pub lu: BandLu,
+pub struct NewtonWorkspace<F = BandLu> {
+    pub lu: F,
     residual: Vec<f64>,
     dx: Vec<f64>,
     /// A residual-sized buffer for the caller (e.g. a last evaluation at
@@ -137,9 +140,17 @@ pub struct NewtonWorkspace {
 }
 
 impl NewtonWorkspace {
+    /// Buffers for a system of n unknowns with a band Jacobian.
     pub fn new(n: usize, kl: usize, ku: usize, max_iterations: usize) -> Self {
+        NewtonWorkspace::with_factors(BandLu::new(n, kl, ku), n, max_iterations)
+    }
+}
+
+impl<F: Factorization> NewtonWorkspace<F> {
+    /// Buffers for a system of n unknowns whose Jacobian `lu` factorizes.
+    pub fn with_factors(lu: F, n: usize, max_iterations: usize) -> Self {
         NewtonWorkspace {
-            lu: BandLu::new(n, kl, ku),
+            lu,
             residual: vec![0.0; n],
             dx: vec![0.0; n],
             spare: vec![0.0; n],
@@ -168,7 +179,7 @@ impl NewtonWorkspace {
     }
 
     /// v <- B v: back-substitution with J0, then the rank-one factors.
-    fn apply_inverse(lu: &BandLu, a: &[Vec<f64>], s: &[Vec<f64>], k: usize, v: &mut [f64]) {
+    fn apply_inverse(lu: &F, a: &[Vec<f64>], s: &[Vec<f64>], k: usize, v: &mut [f64]) {
         lu.solve(v);
         for i in 0..k {
             let c: f64 = s[i].iter().zip(v.iter()).map(|(p, q)| p * q).sum();
@@ -208,11 +219,11 @@ fn now(clock: Option<&dyn Clock>) -> f64 {
 
 /// Solves R(x) = 0 by the method of `settings`, timing Parts A and B with
 /// `clock` if given.
-pub fn solve<S: NonlinearSystem>(
+pub fn solve<F: Factorization, S: NonlinearSystem<F::Matrix>>(
     system: &mut S,
     x: &mut [f64],
     settings: &NewtonSettings,
-    ws: &mut NewtonWorkspace,
+    ws: &mut NewtonWorkspace<F>,
     clock: Option<&dyn Clock>,
 ) -> Result<NewtonReport, NewtonFailure> {
     match settings.method {
@@ -225,11 +236,11 @@ pub fn solve<S: NonlinearSystem>(
 
 /// Broyden's rank-one method (see the module documentation), or modified
 /// Newton when `settings.method` says so (no rank-one corrections).
-pub fn broyden<S: NonlinearSystem>(
+pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
     system: &mut S,
     x: &mut [f64],
     settings: &NewtonSettings,
-    ws: &mut NewtonWorkspace,
+    ws: &mut NewtonWorkspace<F>,
     clock: Option<&dyn Clock>,
 ) -> Result<NewtonReport, NewtonFailure> {
     let tol = settings.tolerance;
@@ -357,11 +368,11 @@ pub fn broyden<S: NonlinearSystem>(
 }
 
 /// Newton's method from the guess in `x` (see the module documentation).
-pub fn newton<S: NonlinearSystem>(
+pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
     system: &mut S,
     x: &mut [f64],
     settings: &NewtonSettings,
-    ws: &mut NewtonWorkspace,
+    ws: &mut NewtonWorkspace<F>,
     clock: Option<&dyn Clock>,
 ) -> Result<NewtonReport, NewtonFailure> {
     let tol = settings.tolerance;

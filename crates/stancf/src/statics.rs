@@ -483,7 +483,7 @@ impl StaticSolver {
             slab: &self.slab,
             start: &self.start,
         };
-        p.assemble(&self.x, &mut self.residual, None, &mut self.scratch);
+        p.residual(&self.x, &mut self.residual, &mut self.scratch);
         let n = self.model.dofs();
         self.state.e.copy_from_slice(&self.scratch.node_e[..n]);
         self.state.t = self.start.load_factor;

@@ -100,6 +100,13 @@ pub(super) fn check_initial_velocities(
                     let rate = [0, 1, 2].map(|k| velocity[k] + amplitude[k] * w * phase.cos());
                     ("prescribed", rate)
                 }
+                stancf::ConstraintKind::Attached {
+                    position,
+                    oscillation,
+                } => {
+                    let m = |k: usize| oscillation.coordinate_motion(&position, k);
+                    ("attached to a point", [0, 1, 2].map(|k| m(k).rate_at(0.0)))
+                }
             };
             if (0..3).any(|k| (iv.velocity[k] - rate[k]).abs() > 1e-12 * (1.0 + rate[k].abs())) {
                 return Err(ctx.err(

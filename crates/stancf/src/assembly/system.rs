@@ -6,6 +6,7 @@ use super::layout::SlabLayout;
 use super::{Kind, Scheme};
 use crate::band::BandMatrix;
 use crate::element::{SlabDerivatives, TimeSlab};
+use crate::linear::{AddEntries, Jacobian};
 use crate::model::{coordinate, Model, SLOT_R};
 
 /// The known data of a step: its start (t_a, e_a, v_a and M v_a), and
@@ -196,20 +197,38 @@ impl StepProblem<'_> {
     /// Residual R(x) of the rows and, if asked, the Jacobian dR/dx; the
     /// values of eliminated rows go to `scratch.reaction_rows`. All
     /// outputs are overwritten.
-    pub fn assemble(
+    pub fn assemble<J: Jacobian>(
         &self,
         x: &[f64],
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
+        scratch: &mut AssemblyScratch,
+    ) {
+        if let Some(j) = jacobian.as_deref_mut() {
+            j.clear();
+        }
+        self.assemble_into(x, residual, jacobian, scratch);
+    }
+
+    /// The residual R(x) alone (see [`Self::assemble`]).
+    pub fn residual(&self, x: &[f64], residual: &mut [f64], scratch: &mut AssemblyScratch) {
+        self.assemble_into::<BandMatrix>(x, residual, None, scratch);
+    }
+
+    /// As [`Self::assemble`], but the Jacobian's entries are added to
+    /// what `jacobian` holds (one line's share of a system's Jacobian);
+    /// the residual and the scratch are overwritten.
+    pub fn assemble_into<J: AddEntries>(
+        &self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         residual.fill(0.0);
         scratch.reaction_rows.fill(0.0);
         scratch.end_momentum.fill(0.0);
         scratch.drag_work = 0.0;
-        if let Some(j) = jacobian.as_deref_mut() {
-            j.clear();
-        }
         self.expand(x, scratch);
         let jac = jacobian.as_deref_mut();
         let mut derivs2 = std::mem::take(&mut scratch.derivs2);

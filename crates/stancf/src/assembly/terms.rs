@@ -6,9 +6,9 @@
 use super::layout::NONE;
 use super::system::{AssemblyScratch, StepProblem, Target};
 use super::{Kind, Scheme};
-use crate::band::BandMatrix;
 use crate::constraints::ConstraintMethod;
 use crate::element::{CableElement, SlabDerivatives, SlabLoads};
+use crate::linear::AddEntries;
 use crate::loads::EndMoment;
 use crate::model::{coordinate, gather, SLOT_R, SLOT_R_X};
 
@@ -42,12 +42,12 @@ type SlotIndices<const ND: usize> = [Option<[usize; ND]>; 4];
 impl StepProblem<'_> {
     /// Element actions of every layer, eq. (10) (docs/method.md §3.1-3.2,
     /// (M13)-(M14)).
-    pub(super) fn slab_elements<const NS: usize, const ND: usize>(
+    pub(super) fn slab_elements<const NS: usize, const ND: usize, J: AddEntries>(
         &self,
         elements: &[CableElement<NS, ND>],
         derivs: &mut SlabDerivatives<ND>,
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         let layout = self.layout;
@@ -149,11 +149,11 @@ impl StepProblem<'_> {
     }
 
     /// Static rows dU/de - f_g (the load factor scales the loads).
-    pub(super) fn static_elements<const NS: usize, const ND: usize>(
+    pub(super) fn static_elements<const NS: usize, const ND: usize, J: AddEntries>(
         &self,
         elements: &[CableElement<NS, ND>],
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         let layout = self.layout;
@@ -199,10 +199,10 @@ impl StepProblem<'_> {
     /// Point forces (eq. 14) and end moments (eqs. 15-16): in a P2 step
     /// their work over each layer, sum_g w_g dt F(q(t_g)) . q(t_g); in
     /// statics minus the force (docs/method.md §2.6-2.7, (M7)).
-    pub(super) fn nodal_loads(
+    pub(super) fn nodal_loads<J: AddEntries>(
         &self,
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         self.point_forces(residual, scratch);
@@ -248,12 +248,12 @@ impl StepProblem<'_> {
     /// An end moment in statics, eqs. (15)-(16): minus its generalized
     /// force on the r_x coordinates from `g0` and minus its derivative
     /// (docs/method.md §2.7).
-    fn static_end_moment(
+    fn static_end_moment<J: AddEntries>(
         &self,
         moment: &EndMoment,
         g0: usize,
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         let layout = self.layout;
@@ -279,12 +279,12 @@ impl StepProblem<'_> {
     /// An end moment in a step, eqs. (15)-(16): its work over each layer,
     /// sum_g w_g dt Q(r_x(t_g)) . r_x(t_g), on the r_x coordinates from
     /// `g0` (docs/method.md §2.7, (M7)).
-    fn slab_end_moment(
+    fn slab_end_moment<J: AddEntries>(
         &self,
         moment: &EndMoment,
         g0: usize,
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         let layout = self.layout;
@@ -337,10 +337,10 @@ impl StepProblem<'_> {
     /// Momentum terms: + p_a (= M v_a) on row e_0; P2 also - M v_L on row
     /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead;
     /// docs/method.md §4.3 and §5.1).
-    pub(super) fn momentum_terms(
+    pub(super) fn momentum_terms<J: AddEntries>(
         &self,
         residual: &mut [f64],
-        jacobian: Option<&mut BandMatrix>,
+        jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
     ) {
         let layout = self.layout;
@@ -388,11 +388,11 @@ impl StepProblem<'_> {
     /// impulses; - in static rows dU/de - f, so that a multiplier is the
     /// reaction on the cable either way) and the constraint equations
     /// x_c - c(t_i) = 0 (docs/method.md §6.3, §6.5).
-    pub(super) fn constraint_terms(
+    pub(super) fn constraint_terms<J: AddEntries>(
         &self,
         x: &[f64],
         residual: &mut [f64],
-        mut jacobian: Option<&mut BandMatrix>,
+        mut jacobian: Option<&mut J>,
     ) {
         let layout = self.layout;
         if layout.method != ConstraintMethod::Multiplier || self.model.constraints.is_empty() {
@@ -433,14 +433,14 @@ impl StepProblem<'_> {
 
 /// Adds the Hessian blocks (M14) of one element's slab action at the
 /// global rows and columns of its entries (docs/method.md §3.2).
-fn add_slab_hessian<const NS: usize, const ND: usize>(
+fn add_slab_hessian<const NS: usize, const ND: usize, J: AddEntries>(
     el: &CableElement<NS, ND>,
     slab: &crate::element::TimeSlab,
     derivs: &SlabDerivatives<ND>,
     rows: &SlotIndices<ND>,
     cols: &SlotIndices<ND>,
     block: &mut [[f64; ND]; ND],
-    jac: &mut BandMatrix,
+    jac: &mut J,
 ) {
     for m in 0..4 {
         let Some(rows) = &rows[m] else {

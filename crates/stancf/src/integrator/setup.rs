@@ -17,6 +17,25 @@ impl Simulation {
     /// size; its constrained coordinates are set to their prescribed values
     /// and rates at `initial.t`).
     pub fn new(model: Model, initial: State, settings: StepSettings) -> Result<Self, ModelError> {
+        Self::build(model, initial, settings, true)
+    }
+
+    /// A line of a system (see [`crate::system`]): everything of a
+    /// simulation but the linear solver, which the system's step owns.
+    pub(crate) fn line_of_system(
+        model: Model,
+        initial: State,
+        settings: StepSettings,
+    ) -> Result<Self, ModelError> {
+        Self::build(model, initial, settings, false)
+    }
+
+    fn build(
+        model: Model,
+        initial: State,
+        settings: StepSettings,
+        own_solver: bool,
+    ) -> Result<Self, ModelError> {
         let mut model = model;
         let dt = settings.time_step;
         let time_rule = check_settings(&settings)?;
@@ -38,7 +57,11 @@ impl Simulation {
         let slab = TimeSlab::new(h, &time_rule);
         let scales = Scales::new(&model, &layout, h);
         let (kl, ku) = layout.bandwidths();
-        let workspace = NewtonWorkspace::new(layout.size(), kl, ku, settings.newton.max_iterations);
+        let workspace = if own_solver {
+            NewtonWorkspace::new(layout.size(), kl, ku, settings.newton.max_iterations)
+        } else {
+            NewtonWorkspace::new(layout.size(), 0, 0, 1)
+        };
         let scratch = AssemblyScratch::new(&model, &layout);
         let mut start = StepStart::new(&model, layout.time_nodes());
         start.set(&model, initial.t, &initial.e, &initial.v, h);

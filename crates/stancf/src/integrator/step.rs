@@ -117,21 +117,61 @@ impl Simulation {
     /// last converged step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
         let dt = self.settings.time_step;
+        self.begin_step();
+        let newton = self.solve_slab(dt)?;
+        Ok(self.finish_step(newton))
+    }
+
+    /// The known data of the next step and the predicted unknowns in
+    /// [`Self::unknowns`].
+    pub(crate) fn begin_step(&mut self) {
         let h = self.slab.dt;
         self.start
             .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
         self.predict();
-        let report = self.solve_slab(dt)?;
+    }
+
+    /// Completes the step whose converged unknowns are in
+    /// [`Self::unknowns`].
+    pub(crate) fn finish_step(&mut self, newton: NewtonReport) -> StepReport {
+        let dt = self.settings.time_step;
         self.save_undo();
         self.expand_solution(dt);
         self.galerkin_end_rates();
         self.collect_reactions(dt);
         self.advance(dt);
-        Ok(StepReport {
+        StepReport {
             step: self.steps,
             t: self.state.t,
-            newton: report,
-        })
+            newton,
+        }
+    }
+
+    /// The step's unknowns (the predictor's, or the converged ones).
+    pub(crate) fn unknowns(&mut self) -> &mut [f64] {
+        &mut self.x
+    }
+
+    /// The step's rows at `x` (this line's numbering) into `residual` and
+    /// their derivatives added to `jacobian`.
+    pub(crate) fn assemble_line<J: crate::linear::AddEntries>(
+        &mut self,
+        x: &[f64],
+        residual: &mut [f64],
+        jacobian: Option<&mut J>,
+    ) {
+        let problem = StepProblem {
+            model: &self.model,
+            layout: &self.layout,
+            slab: &self.slab,
+            start: &self.start,
+        };
+        problem.assemble_into(x, residual, jacobian, &mut self.scratch);
+    }
+
+    /// The layout and convergence scales of the step.
+    pub(crate) fn step_layout(&self) -> (&crate::assembly::SlabLayout, &Scales) {
+        (&self.layout, &self.scales)
     }
 
     /// Newton's solve of the step's equations from the predicted `x`
@@ -199,7 +239,7 @@ impl Simulation {
                 || self.model.constraints.has_inactive());
         let galerkin = self.mass_lu.is_some();
         if eliminated || galerkin || !self.model.drag.is_empty() {
-            problem.assemble(&self.x, &mut self.workspace.spare, None, &mut self.scratch);
+            problem.residual(&self.x, &mut self.workspace.spare, &mut self.scratch);
             self.drag_work += self.scratch.drag_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);

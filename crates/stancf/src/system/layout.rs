@@ -1,0 +1,176 @@
+//! Numbering of a system's step (docs/method.md §11.3): every line keeps
+//! its own [`SlabLayout`] (its unknowns and rows numbered node by node,
+//! a band), and the position coordinates of line ends at free points are
+//! taken out of the lines' bands into the border, the free points'
+//! unknowns, shared by every line attached there. The Jacobian is then
+//! a [`crate::bordered::BorderedMatrix`]: one band per line, bordered by
+//! the points.
+
+use super::{End, System};
+use crate::assembly::{Scheme, SlabLayout};
+use crate::bordered::BlockShape;
+use crate::constraints::ConstraintMethod;
+use crate::model::Model;
+
+/// Marks a local index that goes to the border while numbering.
+const TO_BORDER: usize = 1 << (usize::BITS - 1);
+
+/// Where one line's local unknowns and rows go in the system.
+#[derive(Clone, Debug)]
+pub struct LineMap {
+    /// Local index -> index in the line's block of the bordered matrix
+    /// (below `size`: the band; `size + k`: the block's k-th border index).
+    pub place: Vec<usize>,
+    /// Local index -> global index.
+    pub global: Vec<usize>,
+    /// Unknowns in the line's band.
+    pub size: usize,
+    /// First global index of the band.
+    pub start: usize,
+}
+
+/// The numbering of a system's step or static solve.
+#[derive(Clone, Debug)]
+pub struct SystemLayout {
+    /// Each line's own numbering.
+    pub lines: Vec<SlabLayout>,
+    pub maps: Vec<LineMap>,
+    /// The block shapes of the bordered matrix.
+    pub shapes: Vec<BlockShape>,
+    /// Border index of point p's first unknown (free points only).
+    pub point_base: Vec<Option<usize>>,
+    /// Unknown slots (= row slots) per coordinate.
+    pub slots: usize,
+    /// Unknowns of the border (3 per slot per free point).
+    pub border: usize,
+    /// All unknowns.
+    pub size: usize,
+}
+
+impl SystemLayout {
+    /// Numbers the step of `system` whose lines are the models `lines`
+    /// (the system's, as the line simulations hold them).
+    pub fn new(
+        system: &System,
+        lines: &[&Model],
+        scheme: Scheme,
+        method: ConstraintMethod,
+    ) -> Self {
+        let layouts: Vec<SlabLayout> = lines
+            .iter()
+            .map(|m| SlabLayout::new(m, scheme, method))
+            .collect();
+        let slots = layouts[0].unknown_slots.len();
+        let mut point_base = vec![None; system.points().len()];
+        let mut border = 0;
+        for (p, pt) in system.points().iter().enumerate() {
+            if pt.is_free() {
+                point_base[p] = Some(border);
+                border += 3 * slots;
+            }
+        }
+        let mut maps = Vec::with_capacity(lines.len());
+        let mut shapes = Vec::with_capacity(lines.len());
+        let mut start = 0;
+        for (li, layout) in layouts.iter().enumerate() {
+            let line = &system.lines()[li];
+            let last = lines[li].nodes() - 1;
+            let (map, shape) = line_map(layout, &line.ends, [0, last], &point_base, start);
+            start += map.size;
+            maps.push(map);
+            shapes.push(shape);
+        }
+        let border_start = start;
+        for map in &mut maps {
+            for (u, g) in map.global.iter_mut().enumerate() {
+                if map.place[u] >= map.size {
+                    *g += border_start;
+                }
+            }
+        }
+        SystemLayout {
+            lines: layouts,
+            maps,
+            shapes,
+            point_base,
+            slots,
+            border,
+            size: border_start + border,
+        }
+    }
+
+    /// First global index of the border.
+    pub fn border_start(&self) -> usize {
+        self.size - self.border
+    }
+
+    /// Global index of unknown (and row) slot s, component c of free
+    /// point p.
+    pub fn point_unknown(&self, p: usize, slot: usize, c: usize) -> Option<usize> {
+        self.point_base[p].map(|b| self.border_start() + b + 3 * slot + c)
+    }
+}
+
+/// The map of one line's local indices: the position coordinates of its
+/// ends at free points to the points' border indices, the rest to its
+/// band in order; and the block's shape. `global` holds border indices
+/// relative to the border's start (the caller shifts them).
+fn line_map(
+    layout: &SlabLayout,
+    ends: &[End; 2],
+    end_nodes: [usize; 2],
+    point_base: &[Option<usize>],
+    start: usize,
+) -> (LineMap, BlockShape) {
+    let n = layout.size();
+    let slots = layout.unknown_slots.len();
+    let mut place = vec![0usize; n];
+    for (end, node) in ends.iter().zip(end_nodes) {
+        let End::Point(p) = *end else { continue };
+        let Some(base) = point_base[p] else { continue };
+        for s in 0..slots {
+            for c in 0..3 {
+                let u = layout
+                    .unknown_of_node(s, node, c)
+                    .expect("a line end at a free point is not constrained");
+                debug_assert_eq!(layout.row_of_node(s, node, c), Some(u));
+                place[u] = TO_BORDER | (base + 3 * s + c);
+            }
+        }
+    }
+    let mut border: Vec<usize> = place
+        .iter()
+        .filter(|&&p| p & TO_BORDER != 0)
+        .map(|&p| p & !TO_BORDER)
+        .collect();
+    border.sort_unstable();
+    border.dedup();
+    let own_count = place.iter().filter(|&&p| p & TO_BORDER == 0).count();
+    let mut global = vec![0usize; n];
+    let mut own = 0;
+    for u in 0..n {
+        if place[u] & TO_BORDER != 0 {
+            let b = place[u] & !TO_BORDER;
+            global[u] = b;
+            place[u] = own_count + border.binary_search(&b).expect("border index");
+        } else {
+            place[u] = own;
+            global[u] = start + own;
+            own += 1;
+        }
+    }
+    let (kl, ku) = layout.bandwidths();
+    let shape = BlockShape {
+        size: own,
+        kl: kl.min(own.saturating_sub(1)),
+        ku: ku.min(own.saturating_sub(1)),
+        border,
+    };
+    let map = LineMap {
+        place,
+        global,
+        size: own,
+        start,
+    };
+    (map, shape)
+}

@@ -1,0 +1,261 @@
+//! Systems of cable lines joined at points (docs/method.md §11): a
+//! mooring of lines from anchors to fairleads, a bridle of two lines
+//! meeting at a shackle, a clump weight or a buoy on a line.
+//!
+//! A *point* is `fixed` (an anchor), `free` (three translational
+//! unknowns, with a mass and a constant force: a shackle, a clump weight,
+//! a buoy) or `coupled` (its position is given as a function of time: a
+//! fairlead on a vessel). A *line* is a cable model ([`Model`]) whose ends
+//! A (node 0) and B (last node) are each attached to a point or left
+//! loose. An attached end shares the point's position and is free to
+//! rotate:
+//!
+//! - at a fixed or coupled point, its position r is prescribed, a
+//!   constraint of the line ([`ConstraintKind::Attached`]), enforced by
+//!   multipliers or elimination like every constraint (§6.3-6.4);
+//! - at a free point, its position coordinates *are* the point's: every
+//!   line attached there refers to the same unknowns, so the point's rows
+//!   sum the forces of all its lines with the point's own inertia and
+//!   load (§11.2). Lines are coupled only through free points.
+//!
+//! The step of a system ([`SystemSimulation`]) solves the lines' slab
+//! equations and the free points' rows together; its Jacobian is each
+//! line's band bordered by the free points' unknowns
+//! ([`crate::bordered`]), factorized by block elimination.
+
+mod layout;
+mod point_terms;
+mod simulation;
+
+pub use layout::SystemLayout;
+pub use simulation::{EndForce, SystemSimulation};
+
+use crate::constraints::{Constraint, ConstraintKind, Oscillation};
+use crate::error::ModelError;
+use crate::model::Model;
+
+/// What holds a point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointKind {
+    /// Held at its position (an anchor).
+    Fixed,
+    /// Three translational unknowns (a shackle, a clump weight, a buoy).
+    Free,
+    /// Moved along `position + oscillation(t)` by another code or a
+    /// prescribed motion (a fairlead).
+    Coupled(Oscillation),
+}
+
+/// A point of a system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    pub kind: PointKind,
+    /// Position at t = 0 (m).
+    pub position: [f64; 3],
+    /// Mass (kg) of a free point (its weight m g acts on it).
+    pub mass: f64,
+    /// A constant force on a free point (N), e.g. a buoy's net lift.
+    pub force: [f64; 3],
+}
+
+impl Point {
+    pub fn fixed(position: [f64; 3]) -> Self {
+        Point {
+            kind: PointKind::Fixed,
+            position,
+            mass: 0.0,
+            force: [0.0; 3],
+        }
+    }
+
+    pub fn free(position: [f64; 3], mass: f64) -> Self {
+        Point {
+            kind: PointKind::Free,
+            position,
+            mass,
+            force: [0.0; 3],
+        }
+    }
+
+    pub fn coupled(position: [f64; 3], oscillation: Oscillation) -> Self {
+        Point {
+            kind: PointKind::Coupled(oscillation),
+            position,
+            mass: 0.0,
+            force: [0.0; 3],
+        }
+    }
+
+    pub fn is_free(&self) -> bool {
+        self.kind == PointKind::Free
+    }
+}
+
+/// What a line end is attached to: a point (its index in the system) or
+/// nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    Loose,
+    Point(usize),
+}
+
+/// A line of a system: a cable model and what its ends A (node 0) and B
+/// (last node) attach to.
+#[derive(Clone, Debug)]
+pub struct Line {
+    pub model: Model,
+    pub ends: [End; 2],
+}
+
+/// A system of lines and points, validated; the lines' models carry the
+/// constraints of their ends at fixed and coupled points.
+#[derive(Clone, Debug)]
+pub struct System {
+    lines: Vec<Line>,
+    points: Vec<Point>,
+    /// Acceleration of gravity on the points' masses (m/s^2).
+    gravity: [f64; 3],
+}
+
+impl System {
+    /// Validates the points and lines and adds to every line the
+    /// constraints of its ends at fixed and coupled points (after its own).
+    /// Keys in errors: `points[i]`, `lines[i]`.
+    pub fn new(
+        lines: Vec<Line>,
+        points: Vec<Point>,
+        gravity: [f64; 3],
+    ) -> Result<Self, ModelError> {
+        if lines.is_empty() {
+            return Err(ModelError::invalid(
+                "lines",
+                "a system needs at least one line",
+            ));
+        }
+        for (i, p) in points.iter().enumerate() {
+            check_point(i, p)?;
+        }
+        if gravity.iter().any(|g| !g.is_finite()) {
+            return Err(ModelError::invalid("gravity", "must be finite"));
+        }
+        let mut attached = vec![0usize; points.len()];
+        let mut out = Vec::with_capacity(lines.len());
+        for (li, line) in lines.into_iter().enumerate() {
+            let mut list = line.model.constraints.list.clone();
+            let last = line.model.nodes() - 1;
+            for (end, node) in line.ends.iter().zip([0, last]) {
+                let End::Point(p) = *end else { continue };
+                let Some(point) = points.get(p) else {
+                    return Err(ModelError::invalid(
+                        format!("lines[{li}]"),
+                        format!("attached to point {p}, which does not exist"),
+                    ));
+                };
+                attached[p] += 1;
+                let oscillation = match point.kind {
+                    PointKind::Free => continue,
+                    PointKind::Fixed => Oscillation::NONE,
+                    PointKind::Coupled(o) => o,
+                };
+                list.push(Constraint {
+                    node,
+                    kind: ConstraintKind::Attached {
+                        position: point.position,
+                        oscillation,
+                    },
+                });
+            }
+            if line.ends[0] == line.ends[1] && line.ends[0] != End::Loose {
+                return Err(ModelError::invalid(
+                    format!("lines[{li}]"),
+                    "both ends are attached to the same point",
+                ));
+            }
+            let model = line
+                .model
+                .with_constraints(list)
+                .map_err(|e| e.under(&format!("lines[{li}]")))?;
+            out.push(Line {
+                model,
+                ends: line.ends,
+            });
+        }
+        for (i, p) in points.iter().enumerate() {
+            if p.is_free() && attached[i] == 0 {
+                return Err(ModelError::invalid(
+                    format!("points[{i}]"),
+                    "a free point needs at least one line attached (nothing else holds it)",
+                ));
+            }
+        }
+        Ok(System {
+            lines: out,
+            points,
+            gravity,
+        })
+    }
+
+    pub fn lines(&self) -> &[Line] {
+        &self.lines
+    }
+
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    pub fn gravity(&self) -> [f64; 3] {
+        self.gravity
+    }
+
+    /// The load on free point p: its weight and its constant force.
+    pub fn point_load(&self, p: usize) -> [f64; 3] {
+        let pt = &self.points[p];
+        std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i])
+    }
+
+    /// The lines attached to point p: (line, end 0 = A or 1 = B).
+    pub fn attachments(&self, p: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.lines.iter().enumerate().flat_map(move |(li, l)| {
+            l.ends
+                .iter()
+                .enumerate()
+                .filter(move |(_, e)| **e == End::Point(p))
+                .map(move |(end, _)| (li, end))
+        })
+    }
+
+    /// Whether some point is free (the lines are then solved together).
+    pub fn has_free_points(&self) -> bool {
+        self.points.iter().any(Point::is_free)
+    }
+}
+
+fn check_point(i: usize, p: &Point) -> Result<(), ModelError> {
+    let key = format!("points[{i}]");
+    if p.position.iter().any(|x| !x.is_finite()) {
+        return Err(ModelError::invalid(
+            format!("{key}.position"),
+            "must be finite",
+        ));
+    }
+    if !p.mass.is_finite() || p.mass < 0.0 {
+        return Err(ModelError::invalid(
+            format!("{key}.mass"),
+            format!("must be a finite number >= 0, got {}", p.mass),
+        ));
+    }
+    if p.force.iter().any(|x| !x.is_finite()) {
+        return Err(ModelError::invalid(
+            format!("{key}.force"),
+            "must be finite",
+        ));
+    }
+    if !p.is_free() && (p.mass != 0.0 || p.force != [0.0; 3]) {
+        return Err(ModelError::invalid(
+            key,
+            "only a free point carries a mass or a force (a fixed or coupled point's \
+             position is given)",
+        ));
+    }
+    Ok(())
+}

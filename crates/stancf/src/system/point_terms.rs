@@ -1,0 +1,138 @@
+//! A free point's own share of its rows (docs/method.md §11.2): the slab
+//! action of a point mass m under a constant force F (its weight m g and
+//! any given force),
+//!
+//! ```text
+//!   A_p = sum_g w_g dt ( m/2 |r_dot(t_g)|^2 + F . r(t_g) ),   r(t) = sum_m phi_m(t) y_m
+//!   dA_p/dy_m = m sum_n C_mn y_n + b_m F,       d2A_p/dy_m dy_n = m C_mn I
+//! ```
+//!
+//! with C and b the slab's kinetic and load weights (§3.1), plus the
+//! momentum terms of the P2 rows, + m v_a on row e_0 and - m v_L on row
+//! e_L (§4.3); in statics the row is - F. The lines attached at the point
+//! add their own shares to the same rows (their end's coordinates are
+//! the point's), so the rows state the point's balance of momentum.
+
+use crate::assembly::{Kind, Scheme, SlabLayout};
+use crate::element::TimeSlab;
+use crate::linear::AddEntries;
+
+/// The values of one free point at the time nodes of a step:
+/// `e[i]`, `v[i]` at time node i (P2 and statics; the Galerkin step's
+/// slopes in `v`).
+#[derive(Clone, Debug, Default)]
+pub struct PointNodes {
+    pub e: Vec<[f64; 3]>,
+    pub v: Vec<[f64; 3]>,
+}
+
+/// A free point's data for its terms: mass, load (already scaled by the
+/// load factor), global indices of its unknowns (and rows) per slot.
+pub struct PointTerms<'a> {
+    pub mass: f64,
+    pub load: [f64; 3],
+    /// Global index of (slot, component): `index[3 slot + c]`.
+    pub index: &'a [usize],
+    pub layout: &'a SlabLayout,
+    pub slab: &'a TimeSlab,
+}
+
+impl PointTerms<'_> {
+    /// Fills the time-node values from the unknowns `x` and the start
+    /// (e_a, v_a).
+    pub fn expand(&self, x: &[f64], e_a: [f64; 3], v_a: [f64; 3], nodes: &mut PointNodes) {
+        let layout = self.layout;
+        let count = layout.time_nodes();
+        nodes.e.resize(count, [0.0; 3]);
+        nodes.v.resize(count, [0.0; 3]);
+        for i in 0..count {
+            let static_solve = layout.scheme == Scheme::Static;
+            let (e0, v0) = if i == 0 && !static_solve {
+                (e_a, v_a)
+            } else {
+                ([0.0; 3], [0.0; 3])
+            };
+            let se = layout.unknown_slot(i, Kind::Position);
+            let sv = layout.unknown_slot(i, Kind::Velocity);
+            for c in 0..3 {
+                nodes.e[i][c] = se.map_or(e0[c], |s| x[self.index[3 * s + c]]);
+                nodes.v[i][c] = sv.map_or(v0[c], |s| x[self.index[3 * s + c]]);
+            }
+        }
+    }
+
+    /// Adds the point's share to the rows and, if given, the Jacobian.
+    pub fn add<J: AddEntries>(
+        &self,
+        nodes: &PointNodes,
+        momentum_a: [f64; 3],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut J>,
+    ) {
+        let layout = self.layout;
+        if layout.scheme == Scheme::Static {
+            if let Some(s) = layout.row_slot(0, Kind::Position) {
+                for c in 0..3 {
+                    residual[self.index[3 * s + c]] -= self.load[c];
+                }
+            }
+            return;
+        }
+        let m = self.mass;
+        for j in 0..layout.layers() {
+            let slots = [
+                (j, Kind::Position),
+                (j, Kind::Velocity),
+                (j + 1, Kind::Position),
+                (j + 1, Kind::Velocity),
+            ];
+            let y = slots.map(|(i, kind)| match kind {
+                Kind::Position => nodes.e[i],
+                Kind::Velocity => nodes.v[i],
+            });
+            for (a, &(i, kind)) in slots.iter().enumerate() {
+                let Some(rs) = layout.row_slot(i, kind) else {
+                    continue;
+                };
+                for c in 0..3 {
+                    let mut g = self.slab.load[a] * self.load[c];
+                    for b in 0..4 {
+                        g += m * self.slab.kinetic[a][b] * y[b][c];
+                    }
+                    residual[self.index[3 * rs + c]] += g;
+                }
+                let Some(jac) = jacobian.as_deref_mut() else {
+                    continue;
+                };
+                for (b, &(i2, kind2)) in slots.iter().enumerate() {
+                    let Some(cs) = layout.unknown_slot(i2, kind2) else {
+                        continue;
+                    };
+                    let k = m * self.slab.kinetic[a][b];
+                    if k != 0.0 {
+                        for c in 0..3 {
+                            jac.add(self.index[3 * rs + c], self.index[3 * cs + c], k);
+                        }
+                    }
+                }
+            }
+        }
+        let last = layout.layers();
+        if let Some(s) = layout.row_slot(0, Kind::Position) {
+            for c in 0..3 {
+                residual[self.index[3 * s + c]] += momentum_a[c];
+            }
+        }
+        if let (Some(rs), Some(cs)) = (
+            layout.row_slot(last, Kind::Position),
+            layout.unknown_slot(last, Kind::Velocity),
+        ) {
+            for c in 0..3 {
+                residual[self.index[3 * rs + c]] -= m * nodes.v[last][c];
+                if let Some(jac) = jacobian.as_deref_mut() {
+                    jac.add(self.index[3 * rs + c], self.index[3 * cs + c], -m);
+                }
+            }
+        }
+    }
+}

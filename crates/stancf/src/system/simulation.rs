@@ -1,0 +1,592 @@
+//! Time stepping of a system (docs/method.md §11.3): every line is a
+//! [`Simulation`] without its own solver (its predictor, end values,
+//! reactions and undo are the single cable's); the system's step gathers
+//! the lines' unknowns and the free points' into one vector, solves the
+//! slab equations of all lines and points together with the bordered
+//! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
+
+use super::layout::SystemLayout;
+use super::point_terms::{PointNodes, PointTerms};
+use super::{End, System};
+use crate::assembly::{Kind, Scheme, SlabLayout};
+use crate::bordered::{BorderedLu, BorderedMatrix};
+use crate::element::TimeSlab;
+use crate::error::{ModelError, SolverError};
+use crate::integrator::{Simulation, StepReport, StepSettings, TimeScheme};
+use crate::linear::{AddEntries, Jacobian};
+use crate::model::{coordinate, State, SLOT_R};
+use crate::quadrature::GaussRule;
+use crate::solver::{solve, NewtonReport, NewtonWorkspace, NonlinearSystem};
+
+/// The force a line end exerts on the point it is attached to, averaged
+/// over the last step (N); its magnitude is the effective tension there.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EndForce {
+    pub force: [f64; 3],
+}
+
+impl EndForce {
+    pub fn tension(&self) -> f64 {
+        self.force.iter().map(|f| f * f).sum::<f64>().sqrt()
+    }
+}
+
+/// Position, velocity and predictor history of a point.
+#[derive(Clone, Debug, Default)]
+struct PointMotion {
+    e: [f64; 3],
+    v: [f64; 3],
+    previous: ([f64; 3], [f64; 3]),
+    acceleration: [f64; 3],
+}
+
+/// A running simulation of a system.
+pub struct SystemSimulation {
+    system: System,
+    lines: Vec<Simulation>,
+    layout: SystemLayout,
+    settings: StepSettings,
+    slab: TimeSlab,
+    points: Vec<PointMotion>,
+    /// Global indices of free point p's unknowns, `[3 slot + c]`.
+    point_index: Vec<Vec<usize>>,
+    point_nodes: Vec<PointNodes>,
+    x: Vec<f64>,
+    x_local: Vec<Vec<f64>>,
+    residual_local: Vec<Vec<f64>>,
+    workspace: NewtonWorkspace<BorderedLu>,
+    unknown_scale: Vec<f64>,
+    equation_scale: Vec<f64>,
+    end_forces: Vec<[EndForce; 2]>,
+    steps: usize,
+    t: f64,
+}
+
+impl SystemSimulation {
+    /// Prepares the simulation of `system` from the lines' states
+    /// `initial` (one per line, at a common time) with the points' free
+    /// positions taken from the attached line ends and at rest.
+    pub fn new(
+        system: System,
+        initial: Vec<State>,
+        settings: StepSettings,
+    ) -> Result<Self, ModelError> {
+        if initial.len() != system.lines().len() {
+            return Err(ModelError::invalid(
+                "initial_state",
+                format!(
+                    "expected {} line states, got {}",
+                    system.lines().len(),
+                    initial.len()
+                ),
+            ));
+        }
+        if system.has_free_points() && settings.time_scheme == TimeScheme::Galerkin {
+            return Err(ModelError::invalid(
+                "analysis.time_scheme",
+                "the Galerkin step of a system with free points is not available in this \
+                 version (its end rates need the system's mass matrix); use \"p2\"",
+            ));
+        }
+        let t = initial[0].t;
+        let mut line_settings = settings.clone();
+        // The planar reduction holds coordinates line by line; lines
+        // joined at free points must hold the same ones, so it is left off.
+        line_settings.planar_reduction &= !system.has_free_points();
+        let lines = system
+            .lines()
+            .iter()
+            .zip(initial)
+            .enumerate()
+            .map(|(i, (line, state))| {
+                Simulation::line_of_system(line.model.clone(), state, line_settings.clone())
+                    .map_err(|e| e.under(&format!("lines[{i}]")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
+        let scheme = match settings.time_scheme {
+            TimeScheme::P2 => Scheme::P2 {
+                layers: settings.time_layers,
+            },
+            TimeScheme::Galerkin => Scheme::Galerkin,
+        };
+        let layout = SystemLayout::new(&system, &models, scheme, settings.constraint_method);
+        let h = settings.time_step / settings.time_layers as f64;
+        let rule = GaussRule::new(settings.time_points)
+            .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
+        let slab = TimeSlab::new(h, &rule);
+        let points = point_motions(&system, &lines)?;
+        let point_index = (0..system.points().len())
+            .map(|p| match layout.point_base[p] {
+                Some(_) => (0..3 * layout.slots)
+                    .map(|k| layout.point_unknown(p, k / 3, k % 3).expect("free"))
+                    .collect(),
+                None => Vec::new(),
+            })
+            .collect();
+        let lu = BorderedLu::new(&layout.shapes, layout.border);
+        let n = layout.size;
+        let workspace = NewtonWorkspace::with_factors(lu, n, settings.newton.max_iterations);
+        let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
+        let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
+        let (unknown_scale, equation_scale) = system_scales(&system, &lines, &layout);
+        Ok(SystemSimulation {
+            end_forces: vec![[EndForce::default(); 2]; lines.len()],
+            point_nodes: vec![PointNodes::default(); system.points().len()],
+            system,
+            lines,
+            layout,
+            settings,
+            slab,
+            points,
+            point_index,
+            x: vec![0.0; n],
+            x_local,
+            residual_local,
+            workspace,
+            unknown_scale,
+            equation_scale,
+            steps: 0,
+            t,
+        })
+    }
+
+    pub fn system(&self) -> &System {
+        &self.system
+    }
+
+    /// The line simulations (their states, reactions and energies).
+    pub fn lines(&self) -> &[Simulation] {
+        &self.lines
+    }
+
+    /// Position and velocity of point p (fixed and coupled points: as
+    /// given by their motion at the current time).
+    pub fn point_state(&self, p: usize) -> ([f64; 3], [f64; 3]) {
+        let m = &self.points[p];
+        (m.e, m.v)
+    }
+
+    /// The force each end of line i exerts on its point (zero at a loose
+    /// end), averaged over the last step.
+    pub fn end_forces(&self, line: usize) -> [EndForce; 2] {
+        self.end_forces[line]
+    }
+
+    /// The net force the attached lines exert on point p.
+    pub fn point_force(&self, p: usize) -> [f64; 3] {
+        let mut f = [0.0; 3];
+        for (li, end) in self.system.attachments(p) {
+            for c in 0..3 {
+                f[c] += self.end_forces[li][end].force[c];
+            }
+        }
+        f
+    }
+
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Unknowns solved for in every step.
+    pub fn unknowns_per_step(&self) -> usize {
+        self.layout.size
+    }
+
+    /// Advances the system by one step. On failure every line and point
+    /// is left at the last converged step.
+    pub fn step(&mut self) -> Result<StepReport, SolverError> {
+        let dt = self.settings.time_step;
+        for line in &mut self.lines {
+            line.begin_step();
+        }
+        self.gather_prediction();
+        let report = self.solve_step(dt)?;
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = line.unknowns();
+            for (u, &g) in map.global.iter().enumerate() {
+                xl[u] = self.x[g];
+            }
+        }
+        for line in &mut self.lines {
+            line.finish_step(report);
+        }
+        self.collect_end_forces(dt);
+        self.advance_points(dt);
+        self.steps += 1;
+        self.t += dt;
+        Ok(StepReport {
+            step: self.steps,
+            t: self.t,
+            newton: report,
+        })
+    }
+
+    /// The lines' predicted unknowns and the free points' (Taylor
+    /// expansion with the last step's acceleration, docs/method.md §4.8).
+    fn gather_prediction(&mut self) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = line.unknowns();
+            for (u, &g) in map.global.iter().enumerate() {
+                self.x[g] = xl[u];
+            }
+        }
+        let layout = &self.layout.lines[0];
+        let h = self.slab.dt;
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let m = &self.points[p];
+            for (s, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+                let tau = h * i as f64;
+                for c in 0..3 {
+                    let (e, v, a) = (m.e[c], m.v[c], m.acceleration[c]);
+                    self.x[idx[3 * s + c]] = match kind {
+                        Kind::Position => e + tau * v + 0.5 * tau * tau * a,
+                        Kind::Velocity => v + tau * a,
+                    };
+                }
+            }
+        }
+    }
+
+    fn solve_step(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
+        let mut problem = StepOfSystem {
+            system: &self.system,
+            lines: &mut self.lines,
+            layout: &self.layout,
+            slab: &self.slab,
+            points: &self.points,
+            point_index: &self.point_index,
+            point_nodes: &mut self.point_nodes,
+            x_local: &mut self.x_local,
+            residual_local: &mut self.residual_local,
+            unknown_scale: &self.unknown_scale,
+            equation_scale: &self.equation_scale,
+        };
+        solve(
+            &mut problem,
+            &mut self.x,
+            &self.settings.newton,
+            &mut self.workspace,
+            None,
+        )
+        .map_err(|f| SolverError {
+            kind: f.kind,
+            time: self.t,
+            step: self.steps + 1,
+            residual: f.report.residual,
+            iterations: f.report.iterations,
+            detail: format!("time step {dt:e} s"),
+        })
+    }
+
+    /// The forces of the line ends on their points over the step: at a
+    /// free point the line's share of the point's position rows, summed
+    /// over the step's position rows and divided by dt (the negative of
+    /// the impulse the point gives the line, docs/method.md §11.4); at a
+    /// fixed or coupled point minus the line's reaction (§6.5).
+    fn collect_end_forces(&mut self, dt: f64) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let ends = self.system.lines()[i].ends;
+            let last = line.model().nodes() - 1;
+            let free_end = ends
+                .iter()
+                .any(|e| matches!(e, End::Point(p) if self.system.points()[*p].is_free()));
+            if free_end {
+                // The line's rows at the converged unknowns.
+                let map = &self.layout.maps[i];
+                let xl = &mut self.x_local[i];
+                for (u, &g) in map.global.iter().enumerate() {
+                    xl[u] = self.x[g];
+                }
+                line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
+            }
+            let layout = &self.layout.lines[i];
+            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
+                let End::Point(p) = *end else {
+                    self.end_forces[i][k] = EndForce::default();
+                    continue;
+                };
+                let force = if self.system.points()[p].is_free() {
+                    position_row_sum(layout, node, &self.residual_local[i]).map(|f| f / dt)
+                } else {
+                    let r = line
+                        .reactions()
+                        .iter()
+                        .find(|(n, _)| *n == node)
+                        .map_or([0.0; 3], |(_, f)| *f);
+                    r.map(|f| -f)
+                };
+                self.end_forces[i][k] = EndForce { force };
+            }
+        }
+    }
+
+    /// Moves the points to the end of the step: free points to their
+    /// converged unknowns, fixed and coupled ones along their motion.
+    fn advance_points(&mut self, dt: f64) {
+        let layout = &self.layout.lines[0];
+        let last = layout.layers();
+        let t_end = self.t + dt;
+        for (p, point) in self.system.points().iter().enumerate() {
+            let m = &mut self.points[p];
+            m.previous = (m.e, m.v);
+            let (e, v) = if self.point_index[p].is_empty() {
+                point_motion_at(point, t_end)
+            } else {
+                let idx = &self.point_index[p];
+                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
+                let sv = layout.unknown_slot(last, Kind::Velocity).expect("v_L");
+                (
+                    std::array::from_fn(|c| self.x[idx[3 * se + c]]),
+                    std::array::from_fn(|c| self.x[idx[3 * sv + c]]),
+                )
+            };
+            for c in 0..3 {
+                m.acceleration[c] = (v[c] - m.v[c]) / dt;
+            }
+            m.e = e;
+            m.v = v;
+        }
+    }
+}
+
+/// Sum over the position rows of a step of the rows of r at `node`.
+fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for (s, &(_, kind)) in layout.row_slots.iter().enumerate() {
+        if kind != Kind::Position {
+            continue;
+        }
+        for c in 0..3 {
+            if let Some(r) = layout.row_of_node(s, node, c) {
+                out[c] += rows[r];
+            }
+        }
+    }
+    out
+}
+
+/// Position and velocity of a fixed or coupled point at time t.
+fn point_motion_at(point: &super::Point, t: f64) -> ([f64; 3], [f64; 3]) {
+    let super::PointKind::Coupled(o) = point.kind else {
+        return (point.position, [0.0; 3]);
+    };
+    let m = |c: usize| o.coordinate_motion(&point.position, c);
+    (
+        std::array::from_fn(|c| m(c).value(t)),
+        std::array::from_fn(|c| m(c).rate_at(t)),
+    )
+}
+
+/// The points' states at the start: free points where their first
+/// attached line end is (its position and velocity), the others on
+/// their motion.
+fn point_motions(system: &System, lines: &[Simulation]) -> Result<Vec<PointMotion>, ModelError> {
+    let t = lines[0].state().t;
+    let mut out = Vec::with_capacity(system.points().len());
+    for (p, point) in system.points().iter().enumerate() {
+        let (e, v) = if point.is_free() {
+            let mut at = None;
+            for (li, end) in system.attachments(p) {
+                let sim = &lines[li];
+                let node = if end == 0 { 0 } else { sim.model().nodes() - 1 };
+                let o = coordinate(sim.model().dofs_per_node(), node, SLOT_R, 0);
+                let s = sim.state();
+                let here = (
+                    [s.e[o], s.e[o + 1], s.e[o + 2]],
+                    [s.v[o], s.v[o + 1], s.v[o + 2]],
+                );
+                match at {
+                    None => at = Some(here),
+                    Some(first) if first != here => {
+                        return Err(ModelError::invalid(
+                            format!("points[{p}]"),
+                            format!(
+                                "the ends of the lines attached to this free point do not \
+                                 start at the same position and velocity ({:?} and {:?})",
+                                first, here
+                            ),
+                        ));
+                    }
+                    Some(_) => {}
+                }
+            }
+            at.expect("a free point has a line")
+        } else {
+            point_motion_at(point, t)
+        };
+        out.push(PointMotion {
+            e,
+            v,
+            previous: (e, v),
+            acceleration: [0.0; 3],
+        });
+    }
+    Ok(out)
+}
+
+/// The convergence scales of the system's unknowns and rows: each line's
+/// (docs/method.md §7.1) at its own indices; at a free point's, the
+/// smallest of the attached lines' for unknowns, and for rows the
+/// lines' weights combined as the point's total mass demands (a row
+/// weight is inverse to the mass on the coordinate: 1/w = sum 1/w_i,
+/// scaled by the lines' end mass over that plus the point's).
+fn system_scales(
+    system: &System,
+    lines: &[Simulation],
+    layout: &SystemLayout,
+) -> (Vec<f64>, Vec<f64>) {
+    let n = layout.size;
+    let border_start = layout.border_start();
+    let mut unknown = vec![f64::INFINITY; n];
+    let mut inverse_equation = vec![0.0; n];
+    let mut equation = vec![0.0; n];
+    let mut end_mass = vec![0.0; layout.border];
+    for (i, line) in lines.iter().enumerate() {
+        let (_, scales) = line.step_layout();
+        let map = &layout.maps[i];
+        let mass = line.model().mass_diagonal();
+        let last = line.model().nodes() - 1;
+        for (u, &g) in map.global.iter().enumerate() {
+            unknown[g] = unknown[g].min(scales.unknown[u]);
+            if g < border_start {
+                equation[g] = scales.equation[u];
+            } else if scales.equation[u] > 0.0 {
+                inverse_equation[g] += 1.0 / scales.equation[u];
+            }
+        }
+        for (end, node) in system.lines()[i].ends.iter().zip([0, last]) {
+            let End::Point(p) = *end else { continue };
+            let Some(base) = layout.point_base[p] else {
+                continue;
+            };
+            let o = coordinate(line.model().dofs_per_node(), node, SLOT_R, 0);
+            for k in 0..3 * layout.slots {
+                end_mass[base + k] += mass[o + k % 3];
+            }
+        }
+    }
+    for (p, point) in system.points().iter().enumerate() {
+        let Some(base) = layout.point_base[p] else {
+            continue;
+        };
+        for k in 0..3 * layout.slots {
+            let g = border_start + base + k;
+            let lines_mass = end_mass[base + k];
+            let share = lines_mass / (lines_mass + point.mass);
+            equation[g] = share / inverse_equation[g];
+        }
+    }
+    for u in unknown.iter_mut() {
+        if !u.is_finite() {
+            *u = 0.0;
+        }
+    }
+    (unknown, equation)
+}
+
+/// The step of a system as Newton sees it.
+struct StepOfSystem<'a> {
+    system: &'a System,
+    lines: &'a mut [Simulation],
+    layout: &'a SystemLayout,
+    slab: &'a TimeSlab,
+    points: &'a [PointMotion],
+    point_index: &'a [Vec<usize>],
+    point_nodes: &'a mut [PointNodes],
+    x_local: &'a mut [Vec<f64>],
+    residual_local: &'a mut [Vec<f64>],
+    unknown_scale: &'a [f64],
+    equation_scale: &'a [f64],
+}
+
+/// One line's share of the bordered Jacobian, in the line's numbering.
+struct LineView<'a> {
+    matrix: &'a mut BorderedMatrix,
+    block: usize,
+    place: &'a [usize],
+}
+
+impl AddEntries for LineView<'_> {
+    #[inline]
+    fn add(&mut self, i: usize, j: usize, value: f64) {
+        self.matrix
+            .add_local(self.block, self.place[i], self.place[j], value);
+    }
+}
+
+impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
+    fn evaluate(
+        &mut self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        residual.fill(0.0);
+        if let Some(j) = jacobian.as_deref_mut() {
+            j.clear();
+        }
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = &mut self.x_local[i];
+            for (u, &g) in map.global.iter().enumerate() {
+                xl[u] = x[g];
+            }
+            let rl = &mut self.residual_local[i];
+            match jacobian.as_deref_mut() {
+                Some(m) => {
+                    let mut view = LineView {
+                        matrix: m,
+                        block: i,
+                        place: &map.place,
+                    };
+                    line.assemble_line(xl, rl, Some(&mut view));
+                }
+                None => line.assemble_line::<BorderedMatrix>(xl, rl, None),
+            }
+            for (u, &g) in map.global.iter().enumerate() {
+                residual[g] += rl[u];
+            }
+        }
+        let layout = &self.layout.lines[0];
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let point = &self.system.points()[p];
+            let m = &self.points[p];
+            let terms = PointTerms {
+                mass: point.mass,
+                load: self.system.point_load(p),
+                index: idx,
+                layout,
+                slab: self.slab,
+            };
+            terms.expand(x, m.e, m.v, &mut self.point_nodes[p]);
+            let momentum = m.v.map(|v| point.mass * v);
+            terms.add(
+                &self.point_nodes[p],
+                momentum,
+                residual,
+                jacobian.as_deref_mut(),
+            );
+        }
+    }
+
+    fn residual_norm(&self, r: &[f64]) -> f64 {
+        crate::assembly::Scales::norm(self.equation_scale, r)
+    }
+
+    fn increment_norm(&self, dx: &[f64]) -> f64 {
+        crate::assembly::Scales::norm(self.unknown_scale, dx)
+    }
+}
