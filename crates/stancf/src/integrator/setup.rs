@@ -60,6 +60,7 @@ impl Simulation {
         let workspace = if own_solver {
             NewtonWorkspace::new(layout.size(), kl, ku, settings.newton.max_iterations)
         } else {
+            // No factors: only `spare`, the buffer of the end values' rows.
             NewtonWorkspace::new(layout.size(), 0, 0, 1)
         };
         let scratch = AssemblyScratch::new(&model, &layout);

@@ -169,9 +169,9 @@ impl Simulation {
         problem.assemble_into(x, residual, jacobian, &mut self.scratch);
     }
 
-    /// The layout and convergence scales of the step.
-    pub(crate) fn step_layout(&self) -> (&crate::assembly::SlabLayout, &Scales) {
-        (&self.layout, &self.scales)
+    /// The convergence scales of the step's unknowns and rows.
+    pub(crate) fn scales(&self) -> &Scales {
+        &self.scales
     }
 
     /// Newton's solve of the step's equations from the predicted `x`

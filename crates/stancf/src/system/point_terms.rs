@@ -45,8 +45,8 @@ impl PointTerms<'_> {
         let count = layout.time_nodes();
         nodes.e.resize(count, [0.0; 3]);
         nodes.v.resize(count, [0.0; 3]);
+        let static_solve = layout.scheme == Scheme::Static;
         for i in 0..count {
-            let static_solve = layout.scheme == Scheme::Static;
             let (e0, v0) = if i == 0 && !static_solve {
                 (e_a, v_a)
             } else {

@@ -452,7 +452,7 @@ fn system_scales(
     let mut equation = vec![0.0; n];
     let mut end_mass = vec![0.0; layout.border];
     for (i, line) in lines.iter().enumerate() {
-        let (_, scales) = line.step_layout();
+        let scales = line.scales();
         let map = &layout.maps[i];
         let mass = line.model().mass_diagonal();
         let last = line.model().nodes() - 1;
