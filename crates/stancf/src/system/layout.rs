@@ -8,8 +8,9 @@
 
 use super::{End, System};
 use crate::assembly::{Scheme, SlabLayout};
-use crate::bordered::BlockShape;
+use crate::bordered::{BlockShape, BorderedMatrix};
 use crate::constraints::ConstraintMethod;
+use crate::linear::AddEntries;
 use crate::model::Model;
 
 /// Marks a local index that goes to the border while numbering.
@@ -173,4 +174,19 @@ fn line_map(
         start,
     };
     (map, shape)
+}
+
+/// One line's share of the bordered Jacobian, in the line's numbering.
+pub(super) struct LineView<'a> {
+    pub matrix: &'a mut BorderedMatrix,
+    pub block: usize,
+    pub place: &'a [usize],
+}
+
+impl AddEntries for LineView<'_> {
+    #[inline]
+    fn add(&mut self, i: usize, j: usize, value: f64) {
+        self.matrix
+            .add_local(self.block, self.place[i], self.place[j], value);
+    }
 }

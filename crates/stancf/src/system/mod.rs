@@ -26,9 +26,11 @@
 mod layout;
 mod point_terms;
 mod simulation;
+mod statics;
 
 pub use layout::SystemLayout;
 pub use simulation::{EndForce, SystemSimulation};
+pub use statics::SystemStatics;
 
 use crate::constraints::{Constraint, ConstraintKind, Oscillation};
 use crate::error::ModelError;
@@ -88,6 +90,20 @@ impl Point {
 
     pub fn is_free(&self) -> bool {
         self.kind == PointKind::Free
+    }
+
+    /// Position and velocity of a fixed or coupled point at time t (a
+    /// free point's are unknowns: this gives its initial position, at
+    /// rest).
+    pub fn state_at(&self, t: f64) -> ([f64; 3], [f64; 3]) {
+        let PointKind::Coupled(o) = self.kind else {
+            return (self.position, [0.0; 3]);
+        };
+        let m = |c: usize| o.coordinate_motion(&self.position, c);
+        (
+            std::array::from_fn(|c| m(c).value(t)),
+            std::array::from_fn(|c| m(c).rate_at(t)),
+        )
     }
 }
 
@@ -222,6 +238,47 @@ impl System {
                 .filter(move |(_, e)| **e == End::Point(p))
                 .map(move |(end, _)| (li, end))
         })
+    }
+
+    /// Checks that every line is held: connected, through lines and free
+    /// points, to a fixed or coupled point. A static equilibrium of a
+    /// group of lines that nothing holds is not unique (it can translate).
+    pub fn check_held(&self) -> Result<(), ModelError> {
+        let n_points = self.points.len();
+        // Union-find over points (0..n_points) and lines (n_points..).
+        let mut parent: Vec<usize> = (0..n_points + self.lines.len()).collect();
+        fn root(parent: &mut [usize], mut i: usize) -> usize {
+            while parent[i] != i {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            i
+        }
+        for (li, line) in self.lines.iter().enumerate() {
+            for end in line.ends {
+                if let End::Point(p) = end {
+                    let (a, b) = (root(&mut parent, p), root(&mut parent, n_points + li));
+                    parent[a] = b;
+                }
+            }
+        }
+        let mut held = vec![false; parent.len()];
+        for (p, point) in self.points.iter().enumerate() {
+            if !point.is_free() {
+                let r = root(&mut parent, p);
+                held[r] = true;
+            }
+        }
+        for li in 0..self.lines.len() {
+            if !held[root(&mut parent, n_points + li)] {
+                return Err(ModelError::invalid(
+                    format!("lines[{li}]"),
+                    "nothing holds this line: it is not connected, through lines and free \
+                     points, to a fixed or coupled point, so its equilibrium is not unique",
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// Whether some point is free (the lines are then solved together).

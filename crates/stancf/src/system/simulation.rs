@@ -5,7 +5,7 @@
 //! slab equations of all lines and points together with the bordered
 //! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
 
-use super::layout::SystemLayout;
+use super::layout::{LineView, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
 use super::{End, System};
 use crate::assembly::{Kind, Scheme, SlabLayout};
@@ -13,7 +13,7 @@ use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
 use crate::integrator::{Simulation, StepReport, StepSettings, TimeScheme};
-use crate::linear::{AddEntries, Jacobian};
+use crate::linear::Jacobian;
 use crate::model::{coordinate, State, SLOT_R};
 use crate::quadrature::GaussRule;
 use crate::solver::{solve, NewtonReport, NewtonWorkspace, NonlinearSystem};
@@ -340,7 +340,7 @@ impl SystemSimulation {
             let m = &mut self.points[p];
             m.previous = (m.e, m.v);
             let (e, v) = if self.point_index[p].is_empty() {
-                point_motion_at(point, t_end)
+                point.state_at(t_end)
             } else {
                 let idx = &self.point_index[p];
                 let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
@@ -373,18 +373,6 @@ fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -> [f64; 3] 
         }
     }
     out
-}
-
-/// Position and velocity of a fixed or coupled point at time t.
-fn point_motion_at(point: &super::Point, t: f64) -> ([f64; 3], [f64; 3]) {
-    let super::PointKind::Coupled(o) = point.kind else {
-        return (point.position, [0.0; 3]);
-    };
-    let m = |c: usize| o.coordinate_motion(&point.position, c);
-    (
-        std::array::from_fn(|c| m(c).value(t)),
-        std::array::from_fn(|c| m(c).rate_at(t)),
-    )
 }
 
 /// The points' states at the start: free points where their first
@@ -422,7 +410,7 @@ fn point_motions(system: &System, lines: &[Simulation]) -> Result<Vec<PointMotio
             }
             at.expect("a free point has a line")
         } else {
-            point_motion_at(point, t)
+            point.state_at(t)
         };
         out.push(PointMotion {
             e,
@@ -507,21 +495,6 @@ struct StepOfSystem<'a> {
     residual_local: &'a mut [Vec<f64>],
     unknown_scale: &'a [f64],
     equation_scale: &'a [f64],
-}
-
-/// One line's share of the bordered Jacobian, in the line's numbering.
-struct LineView<'a> {
-    matrix: &'a mut BorderedMatrix,
-    block: usize,
-    place: &'a [usize],
-}
-
-impl AddEntries for LineView<'_> {
-    #[inline]
-    fn add(&mut self, i: usize, j: usize, value: f64) {
-        self.matrix
-            .add_local(self.block, self.place[i], self.place[j], value);
-    }
 }
 
 impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {

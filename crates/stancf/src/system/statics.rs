@@ -1,0 +1,331 @@
+//! Static equilibrium of a system (docs/method.md §11.6): every line's
+//! static rows (M25) and the free points' rows, the point's load against
+//! the forces of its lines,
+//!
+//! ```text
+//!   R(x) = [ dU_i/de_i - f_i            (each line i, its constraints)
+//!            sum_i R_i|end at p - F_p ] (each free point p, F_p = m g + F)
+//! ```
+//!
+//! solved by the static driver (§6.9) on the bordered Jacobian. The path
+//! starts at a seed x0 (each line's elastic catenary through its end
+//! points, [`super::seed_states`]) and follows the Newton homotopy
+//!
+//! ```text
+//!   H(x; t) = R(x) - (1 - t) R(x0) = 0,     t: 0 -> 1       (M32)
+//! ```
+//!
+//! x0 solves H(.; 0) exactly, and H(.; 1) = R: the full loads are on from
+//! the start, and the increments take the seed's residual away. Unlike
+//! ramping the loads from zero, no increment meets a slack line without
+//! load (whose shape nothing determines).
+
+use super::layout::{LineView, SystemLayout};
+use super::simulation::EndForce;
+use super::{End, System};
+use crate::bordered::{BorderedLu, BorderedMatrix};
+use crate::error::{ModelError, SolverError};
+use crate::linear::Jacobian;
+use crate::model::{coordinate, State, SLOT_R};
+use crate::statics::{CableStatics, StaticEquations, StaticIncrement, StaticNewton, StaticSettings};
+use std::ops::ControlFlow;
+
+/// A static solve of a system.
+pub struct SystemStatics {
+    equations: SystemEquations,
+    newton: StaticNewton<BorderedLu>,
+}
+
+/// The equations of a system's equilibrium on the homotopy path (M32).
+struct SystemEquations {
+    system: System,
+    lines: Vec<CableStatics>,
+    layout: SystemLayout,
+    x_local: Vec<Vec<f64>>,
+    residual_local: Vec<Vec<f64>>,
+    /// R(x0): the seed's residual.
+    offset: Vec<f64>,
+    /// 1 - t.
+    homotopy: f64,
+    /// Global indices of free point p's x, y, z (empty for the others).
+    point_index: Vec<Vec<usize>>,
+    /// Positions of the points at the last converged increment.
+    point_position: Vec<[f64; 3]>,
+    end_forces: Vec<[EndForce; 2]>,
+}
+
+impl SystemStatics {
+    /// The static solve of `system` from the lines' seed states (one per
+    /// line, e.g. [`super::seed_states`]); the free points start where
+    /// their lines' seeds put the ends (which must agree).
+    pub fn new(
+        system: System,
+        seeds: Vec<State>,
+        settings: StaticSettings,
+    ) -> Result<Self, ModelError> {
+        settings.validate()?;
+        if seeds.len() != system.lines().len() {
+            return Err(ModelError::invalid(
+                "initial_state",
+                format!(
+                    "expected {} line seeds, got {}",
+                    system.lines().len(),
+                    seeds.len()
+                ),
+            ));
+        }
+        system.check_held()?;
+        let method = settings.constraint_method;
+        let lines: Vec<CableStatics> = system
+            .lines()
+            .iter()
+            .zip(seeds)
+            .map(|(line, seed)| CableStatics::new(line.model.clone(), method, seed.e))
+            .collect();
+        let models: Vec<_> = lines.iter().map(|l| &l.model).collect();
+        let layout = SystemLayout::new(&system, &models, crate::assembly::Scheme::Static, method);
+        let n = layout.size;
+        let mut x = vec![f64::NAN; n];
+        let mut unknown_weight = vec![f64::INFINITY; n];
+        for (i, line) in lines.iter().enumerate() {
+            let map = &layout.maps[i];
+            let (xl, wl) = (line.unknowns_of_state(), line.unknown_weights());
+            for (u, &g) in map.global.iter().enumerate() {
+                if !x[g].is_nan() && (x[g] - xl[u]).abs() > 1e-9 * line.model.cable.length {
+                    return Err(ModelError::invalid(
+                        format!("lines[{i}]"),
+                        "its seed does not start at the position of its free point",
+                    ));
+                }
+                x[g] = xl[u];
+                unknown_weight[g] = unknown_weight[g].min(wl[u]);
+            }
+        }
+        let point_index = (0..system.points().len())
+            .map(|p| {
+                (0..3)
+                    .filter_map(|c| layout.point_unknown(p, 0, c))
+                    .collect()
+            })
+            .collect();
+        let point_position = system.points().iter().map(|p| p.state_at(0.0).0).collect();
+        let mut equations = SystemEquations {
+            x_local: layout.lines.iter().map(|l| vec![0.0; l.size()]).collect(),
+            residual_local: layout.lines.iter().map(|l| vec![0.0; l.size()]).collect(),
+            offset: vec![0.0; n],
+            homotopy: 0.0,
+            end_forces: vec![[EndForce::default(); 2]; system.lines().len()],
+            point_index,
+            point_position,
+            system,
+            lines,
+            layout,
+        };
+        let mut r0 = vec![0.0; n];
+        equations.evaluate(&x, &mut r0, None);
+        equations.offset = r0;
+        equations.homotopy = 1.0;
+        equations.converged(&x);
+        let lu = BorderedLu::new(&equations.layout.shapes, equations.layout.border);
+        let jacobian = BorderedMatrix::new(&equations.layout.shapes, equations.layout.border);
+        let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings);
+        Ok(SystemStatics { equations, newton })
+    }
+
+    pub fn system(&self) -> &System {
+        &self.equations.system
+    }
+
+    /// Line i's state at the last converged increment (at rest; t holds
+    /// the path parameter).
+    pub fn line_state(&self, line: usize) -> &State {
+        &self.equations.lines[line].state
+    }
+
+    /// Every line's state at the last converged increment, at t = 0:
+    /// the start of a dynamic run from this equilibrium.
+    pub fn line_states(&self) -> Vec<State> {
+        self.equations
+            .lines
+            .iter()
+            .map(|l| State {
+                t: 0.0,
+                ..l.state.clone()
+            })
+            .collect()
+    }
+
+    /// Position of point p at the last converged increment.
+    pub fn point_position(&self, p: usize) -> [f64; 3] {
+        self.equations.point_position[p]
+    }
+
+    /// The force each end of line i exerts on its point (zero at a loose
+    /// end). Only at the end of the path (t = 1) are these the forces of
+    /// the equilibrium; before, they include the seed's share (M32).
+    pub fn end_forces(&self, line: usize) -> [EndForce; 2] {
+        self.equations.end_forces[line]
+    }
+
+    /// The net force the attached lines exert on point p.
+    pub fn point_force(&self, p: usize) -> [f64; 3] {
+        let mut f = [0.0; 3];
+        for (li, end) in self.equations.system.attachments(p) {
+            for c in 0..3 {
+                f[c] += self.equations.end_forces[li][end].force[c];
+            }
+        }
+        f
+    }
+
+    /// Unknowns of the static system.
+    pub fn unknowns(&self) -> usize {
+        self.equations.layout.size
+    }
+
+    /// Follows the path (M32) in `load_steps` increments, calling
+    /// `observer` after each converged one (see
+    /// [`crate::StaticSolver::solve`]).
+    pub fn solve<F>(&mut self, mut observer: F) -> Result<bool, SolverError>
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        while let Some(inc) = self.newton.advance(&mut self.equations)? {
+            if observer(self, &inc).is_break() {
+                return Ok(false);
+            }
+        }
+        Ok(true)
+    }
+}
+
+impl SystemEquations {
+    /// Each line's rows at x, with their Jacobians added to `jacobian`.
+    fn line_rows(&mut self, x: &[f64], residual: &mut [f64], mut jacobian: Option<&mut BorderedMatrix>) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = &mut self.x_local[i];
+            for (u, &g) in map.global.iter().enumerate() {
+                xl[u] = x[g];
+            }
+            let rl = &mut self.residual_local[i];
+            match jacobian.as_deref_mut() {
+                Some(m) => {
+                    let mut view = LineView {
+                        matrix: m,
+                        block: i,
+                        place: &map.place,
+                    };
+                    line.assemble_into(xl, rl, Some(&mut view));
+                }
+                None => line.assemble_into::<BorderedMatrix>(xl, rl, None),
+            }
+            for (u, &g) in map.global.iter().enumerate() {
+                residual[g] += rl[u];
+            }
+        }
+    }
+}
+
+impl StaticEquations for SystemEquations {
+    type Matrix = BorderedMatrix;
+
+    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], mut jacobian: Option<&mut BorderedMatrix>) {
+        residual.fill(0.0);
+        if let Some(j) = jacobian.as_deref_mut() {
+            j.clear();
+        }
+        self.line_rows(x, residual, jacobian);
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let load = self.system.point_load(p);
+            for c in 0..3 {
+                residual[idx[c]] -= load[c];
+            }
+        }
+        for (r, r0) in residual.iter_mut().zip(&self.offset) {
+            *r -= self.homotopy * r0;
+        }
+    }
+
+    /// Each line's weights (§6.9) at its own rows; a free point's rows
+    /// take the smallest weight of the lines attached there.
+    fn row_weights(&mut self, jacobian: &BorderedMatrix, weights: &mut [f64]) {
+        let n = self.layout.size;
+        let kmax = (0..n).map(|i| jacobian.get(i, i).abs()).fold(0.0, f64::max);
+        weights.fill(f64::INFINITY);
+        for (i, line) in self.lines.iter().enumerate() {
+            let map = &self.layout.maps[i];
+            let wl = &mut self.residual_local[i];
+            line.row_weights(|r| jacobian.get(map.global[r], map.global[r]), kmax, wl);
+            for (u, &g) in map.global.iter().enumerate() {
+                weights[g] = weights[g].min(wl[u]);
+            }
+        }
+    }
+
+    fn set_load_factor(&mut self, t: f64) {
+        self.homotopy = 1.0 - t;
+    }
+
+    fn legs(&self) -> usize {
+        1
+    }
+
+    fn converged(&mut self, x: &[f64]) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = &mut self.x_local[i];
+            for (u, &g) in map.global.iter().enumerate() {
+                xl[u] = x[g];
+            }
+            line.converged(xl, &mut self.residual_local[i]);
+        }
+        for (p, point) in self.system.points().iter().enumerate() {
+            let idx = &self.point_index[p];
+            self.point_position[p] = if idx.is_empty() {
+                point.state_at(0.0).0
+            } else {
+                [x[idx[0]], x[idx[1]], x[idx[2]]]
+            };
+        }
+        self.collect_end_forces();
+    }
+}
+
+impl SystemEquations {
+    /// The forces of the line ends on their points: at a free point
+    /// minus the line's rows there (the rows are dU/de - f, the force the
+    /// point exerts on the line; the residual of `converged`); at a fixed
+    /// or coupled point minus the line's reaction.
+    fn collect_end_forces(&mut self) {
+        for (i, line) in self.lines.iter().enumerate() {
+            let ends = self.system.lines()[i].ends;
+            let last = line.model.nodes() - 1;
+            let dpn = line.model.dofs_per_node();
+            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
+                let End::Point(p) = *end else {
+                    self.end_forces[i][k] = EndForce::default();
+                    continue;
+                };
+                let force = if self.system.points()[p].is_free() {
+                    std::array::from_fn(|c| {
+                        let g = coordinate(dpn, node, SLOT_R, c);
+                        let u = line.layout.row_at(0, g).expect("a free end's row");
+                        -self.residual_local[i][u]
+                    })
+                } else {
+                    let r = line
+                        .reactions
+                        .iter()
+                        .find(|(n, _)| *n == node)
+                        .map_or([0.0; 3], |(_, f)| *f);
+                    r.map(|f| -f)
+                };
+                self.end_forces[i][k] = EndForce { force };
+            }
+        }
+    }
+}
