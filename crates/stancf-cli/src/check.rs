@@ -25,12 +25,6 @@ pub(crate) struct Derived {
     pub(crate) steps: usize,
 }
 
-pub(crate) fn load(path: &Path) -> Result<(Scenario, Model, State), Failure> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
-    load_text(&text, path)
-}
-
 /// Validates scenario text (`path` names it in messages and gives the
 /// default title) and builds its model and initial state. A derived scale
 /// out of the range the solver computes in (non-finite, or beyond
@@ -251,7 +245,16 @@ fn describe(
 }
 
 pub fn check(path: &Path) -> Result<(), Failure> {
-    let (sc, model, state) = load(path)?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    let file = path.display().to_string();
+    if let scenario::Input::System(sc) =
+        scenario::parse_input(&text, &file, path).map_err(|e| Failure::Input(e.0))?
+    {
+        print!("{}", crate::check_system::check_system(path, &sc)?);
+        return Ok(());
+    }
+    let (sc, model, state) = load_text(&text, path)?;
     let d = (sc.analysis.kind == AnalysisKind::Dynamic).then(|| derive(&sc, &model, &state));
     if let Some(d) = &d {
         check_derived(path, d)?;

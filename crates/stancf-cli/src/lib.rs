@@ -4,8 +4,10 @@
 //! layers over it, so that both read and write exactly the same files.
 
 pub mod check;
+pub mod check_system;
 pub mod figures;
 pub mod input_scales;
+pub mod moordyn;
 pub mod output;
 pub mod plot;
 pub mod progress;

@@ -29,6 +29,7 @@
 //! | [`observe`] | energies, momentum, stress |
 //! | [`stability`] | P2's stable step for the actual mesh |
 //! | [`system`] | lines joined at fixed, free and coupled points, and their step |
+//! | [`catenary`] | the closed-form elastic catenary of a line between two points (Irvine) |
 //!
 //! The physics never touches files, terminals or the clock; the `stancf`
 //! command-line tool (crate `stancf-cli`) does.
@@ -36,6 +37,7 @@
 pub mod assembly;
 pub mod band;
 pub mod bordered;
+pub mod catenary;
 pub mod constraints;
 pub mod element;
 pub mod error;

@@ -199,3 +199,122 @@ fn a_one_line_system_is_in_equilibrium_where_the_single_cable_is() {
         .fold(0.0, f64::max);
     assert!(diff <= 1e-9 * length, "largest difference {diff} m");
 }
+
+/// A line type's section as a material: EA, EI, mass per length over
+/// an area of 1e-4 m^2.
+fn section(ea: f64, ei: f64, mass_per_length: f64) -> Material {
+    let area = 1e-4;
+    Material {
+        youngs_modulus: ea / area,
+        density: mass_per_length / area,
+        area,
+        second_moment: ei * area / ea,
+    }
+}
+
+/// The static equilibrium of one line between two fixed points at
+/// different heights, from its catenary seed: (end forces on A and B,
+/// sag below the chord at midspan measured along gravity).
+fn hanging_line(ei: f64, elements: usize, element: ElementType) -> ([f64; 3], [f64; 3], [f64; 3]) {
+    let (a, b) = ([0.0, 0.0, 0.0], [80.0, 0.0, 30.0]);
+    let cable = Cable::straight(100.0, elements, element)
+        .with_origin(a)
+        .with_direction([80.0, 0.0, 30.0]);
+    let options = ModelOptions {
+        measures: stancf::Measures {
+            axial_strain: stancf::AxialStrain::Engineering,
+            ..Default::default()
+        },
+        space_points: None,
+    };
+    let model = Model::new(
+        cable,
+        section(1e5, ei, 1.0),
+        options,
+        vec![Load::Gravity { acceleration: G }],
+    )
+    .expect("model");
+    let system = System::new(
+        vec![Line {
+            model,
+            ends: [End::Point(0), End::Point(1)],
+        }],
+        vec![Point::fixed(a), Point::fixed(b)],
+        G,
+    )
+    .expect("system");
+    let seeds = stancf::system::catenary_states(&system);
+    let mut s =
+        SystemStatics::new(system, seeds, settings(ConstraintMethod::Multiplier)).expect("statics");
+    assert!(s
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let [fa, fb] = s.end_forces(0);
+    let model = &s.system().lines()[0].model;
+    let mid = model.node_position(&s.line_state(0).e, elements / 2);
+    (fa.force, fb.force, mid)
+}
+
+/// Irvine's elastic catenary (crate::catenary) against the finite
+/// elements with a vanishing bending stiffness (the EI = 0 rule of
+/// docs/method.md §11.7, 1e-7 w L^3): the end forces agree to 1e-5
+/// relative. The elements' error at 40 SAC-2 is far below that (their
+/// statics converge at O(h^4)); bending changes tensions by about
+/// EI / (T L^2) ~ 1e-7.
+#[test]
+fn an_elastic_catenary_between_two_heights_has_irvines_end_forces() {
+    let (a, b) = ([0.0, 0.0, 0.0], [80.0, 0.0, 30.0]);
+    let exact = stancf::catenary::Catenary::between(
+        stancf::catenary::CatenaryLine {
+            length: 100.0,
+            weight: 9.81,
+            ea: 1e5,
+        },
+        a,
+        b,
+        G,
+    )
+    .expect("catenary");
+    let w_l3 = 9.81 * 1e6;
+    let (fa, fb, _) = hanging_line(1e-7 * w_l3, 40, ElementType::Sac2);
+    for (got, end) in [
+        (fa, stancf::catenary::LineEnd::A),
+        (fb, stancf::catenary::LineEnd::B),
+    ] {
+        let want = exact.end_force(end);
+        let err = norm(std::array::from_fn(|k| got[k] - want[k])) / norm(want);
+        eprintln!("end {end:?}: {got:?} against {want:?}: {err:e}");
+        assert!(err <= 1e-5, "end {end:?}: relative error {err:e}");
+    }
+}
+
+/// As EI -> 0 the sag converges to the catenary's: the difference
+/// falls with EI (measured ratios printed) and is below 1e-6 of the
+/// length at EI = 1e-7 w L^3.
+#[test]
+fn a_hanging_lines_sag_converges_as_its_bending_stiffness_vanishes() {
+    let exact = stancf::catenary::Catenary::between(
+        stancf::catenary::CatenaryLine {
+            length: 100.0,
+            weight: 9.81,
+            ea: 1e5,
+        },
+        [0.0; 3],
+        [80.0, 0.0, 30.0],
+        G,
+    )
+    .expect("catenary");
+    let want = exact.position(50.0);
+    let mut last = f64::INFINITY;
+    for k in [1e-3, 1e-4, 1e-5, 1e-6, 1e-7] {
+        let (_, _, mid) = hanging_line(k * 9.81e6, 40, ElementType::Sac2);
+        let d = norm(std::array::from_fn(|i| mid[i] - want[i]));
+        eprintln!("EI = {k:e} w L^3: midpoint {d:e} m from the catenary's");
+        assert!(
+            d < last,
+            "no convergence at EI = {k:e} w L^3: {d:e} after {last:e}"
+        );
+        last = d;
+    }
+    assert!(last <= 1e-6 * 100.0, "{last:e} m");
+}

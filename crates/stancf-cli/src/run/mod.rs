@@ -11,11 +11,12 @@
 mod dynamic;
 mod statics;
 mod summary;
+mod system;
 pub(crate) mod writers;
 
 use crate::check::{derive, load_text};
 use crate::output::{write_atomic, ResultFolder};
-use crate::scenario::AnalysisKind;
+use crate::scenario::{AnalysisKind, Input};
 use crate::Failure;
 use std::path::{Path, PathBuf};
 
@@ -121,6 +122,14 @@ pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
 /// (`scenario.toml`), also when the solver fails or the run is
 /// interrupted; an invalid scenario or a write error leaves it untouched.
 pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
+    let file = path.display().to_string();
+    if let Input::System(sc) =
+        crate::scenario::parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))?
+    {
+        return in_result_folder(text, path, &opts, |place| {
+            system::run_system(path, place, &opts, sc)
+        });
+    }
     let (sc, model, state) = load_text(text, path)?;
     crate::work_bounds::admit(path, &sc, &opts)?;
     // Everything that can refuse the input is decided before anything is
@@ -133,6 +142,26 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
         }
         AnalysisKind::Static => None,
     };
+    in_result_folder(text, path, &opts, |place| match sc.analysis.kind {
+        AnalysisKind::Dynamic => {
+            let d = derived.expect("derived for every dynamic run");
+            dynamic::run_dynamic(path, place, &opts, sc, model, state, d)
+        }
+        AnalysisKind::Static => statics::run_static(path, place, &opts, sc, model),
+    })
+}
+
+/// Runs `body` into the staging folder of the run's [`ResultFolder`]
+/// (with the scenario text as `scenario.toml`), then commits it, draws
+/// the figures if asked, and prints the report `body` returns. An input
+/// or write error leaves the output folder untouched; a solver failure or
+/// an interruption commits the results up to it.
+fn in_result_folder(
+    text: &str,
+    path: &Path,
+    opts: &RunOptions,
+    body: impl FnOnce(&Place) -> Result<String, Failure>,
+) -> Result<(), Failure> {
     let target = output_dir(path, opts.out.clone());
     let folder = ResultFolder::open(&target)?;
     let place = Place {
@@ -140,13 +169,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
         shown: opts.shown_as.as_deref().unwrap_or(folder.target()),
     };
     write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
-    let result = match sc.analysis.kind {
-        AnalysisKind::Dynamic => {
-            let d = derived.expect("derived for every dynamic run");
-            dynamic::run_dynamic(path, &place, &opts, sc, model, state, d)
-        }
-        AnalysisKind::Static => statics::run_static(path, &place, &opts, sc, model),
-    };
+    let result = body(&place);
     if let Err(Failure::Input(_) | Failure::Other(_)) = result {
         return result.map(|_| ());
     }

@@ -296,28 +296,40 @@ pub(super) fn output_every(ctx: &Ctx, raw: Option<RawOutput>) -> Result<usize, S
 impl Scenario {
     /// The step settings for the library.
     pub fn step_settings(&self) -> stancf::StepSettings {
+        self.analysis.step_settings()
+    }
+
+    /// The static solve settings for the library.
+    pub fn static_settings(&self) -> stancf::StaticSettings {
+        self.analysis.static_settings()
+    }
+}
+
+impl Analysis {
+    /// The step settings for the library.
+    pub fn step_settings(&self) -> stancf::StepSettings {
         stancf::StepSettings {
-            time_step: self.analysis.time_step,
-            time_layers: self.analysis.time_layers,
-            time_points: self.analysis.time_points,
+            time_step: self.time_step,
+            time_layers: self.time_layers,
+            time_points: self.time_points,
             newton: stancf::NewtonSettings {
-                tolerance: self.analysis.tolerance,
-                max_iterations: self.analysis.max_iterations,
-                method: self.analysis.solver,
+                tolerance: self.tolerance,
+                max_iterations: self.max_iterations,
+                method: self.solver,
             },
-            constraint_method: self.analysis.constraint_method,
-            time_scheme: self.analysis.time_scheme,
-            planar_reduction: self.analysis.planar_reduction,
+            constraint_method: self.constraint_method,
+            time_scheme: self.time_scheme,
+            planar_reduction: self.planar_reduction,
         }
     }
 
     /// The static solve settings for the library.
     pub fn static_settings(&self) -> stancf::StaticSettings {
         stancf::StaticSettings {
-            load_steps: self.analysis.load_steps,
-            tolerance: self.analysis.tolerance,
-            max_iterations: self.analysis.max_iterations,
-            constraint_method: self.analysis.constraint_method,
+            load_steps: self.load_steps,
+            tolerance: self.tolerance,
+            max_iterations: self.max_iterations,
+            constraint_method: self.constraint_method,
             ..stancf::StaticSettings::default()
         }
     }

@@ -17,10 +17,14 @@ mod initial_velocity;
 mod loads;
 mod messages;
 mod raw;
+mod system;
+mod system_model;
 
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
+pub use system::{InitialShape, LineType, PointType, SystemLine, SystemPoint, SystemScenario};
+pub use system_model::EI_FACTOR;
 
 use context::Ctx;
 use raw::RawScenario;
@@ -62,30 +66,82 @@ pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
     parse(&text, &file, path)
 }
 
-/// Parses and validates scenario text; `file` names it in messages. The
-/// `title` defaults to the file's stem (from `path`).
+/// What a scenario file describes: one cable or a system of lines.
+#[derive(Clone, Debug)]
+pub enum Input {
+    Cable(Scenario),
+    System(SystemScenario),
+}
+
+/// Parses and validates the text of a scenario of either kind (a system
+/// when it has `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` or
+/// `[[motions]]`).
+pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, ScenarioError> {
+    let ctx = Ctx { file };
+    let raw: RawScenario =
+        toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
+    if raw.is_system() {
+        let title = title_of(raw.title.clone(), path);
+        return system::system_scenario(&ctx, raw, title).map(Input::System);
+    }
+    cable_scenario(&ctx, raw, path).map(Input::Cable)
+}
+
+/// The title: the file's `title`, or its stem.
+fn title_of(title: Option<String>, path: &Path) -> String {
+    title.unwrap_or_else(|| {
+        path.file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    })
+}
+
+/// Parses and validates the text of a single-cable scenario; `file`
+/// names it in messages. The `title` defaults to the file's stem (from
+/// `path`). A system is refused (see [`parse_input`]).
 pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioError> {
     let ctx = Ctx { file };
     let raw: RawScenario =
         toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
-    let title = raw.title.unwrap_or_else(|| {
-        path.file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default()
-    });
-    let cable = cable::cable(&ctx, raw.cable)?;
-    let (material, diameter) = cable::material(&ctx, raw.material)?;
-    let constraints = constraints::constraints(&ctx, &raw.constraints, cable.elements)?;
-    let loads = loads::loads(&ctx, &raw.loads, cable.elements, diameter)?;
+    if raw.is_system() {
+        return Err(ctx.err(
+            "lines",
+            "this file describes a system of lines, which this command does not take in this \
+             version (use `stancf run` or `stancf check`)",
+        ));
+    }
+    cable_scenario(&ctx, raw, path)
+}
+
+/// The single-cable parts of a scenario file.
+fn cable_scenario(ctx: &Ctx, raw: RawScenario, path: &Path) -> Result<Scenario, ScenarioError> {
+    if let Some(initial) = raw.analysis.as_ref().and_then(|a| a.initial.as_deref()) {
+        if initial != "reference" {
+            return Err(ctx.err(
+                "analysis.initial",
+                format!(
+                    "\"{}\": a single cable starts from its reference shape (\"reference\"); \
+                     a start from the static equilibrium is available for systems \
+                     ([[lines]]) in this version",
+                    clip(initial, 60)
+                ),
+            ));
+        }
+    }
+    let title = title_of(raw.title, path);
+    let cable = cable::cable(ctx, raw.cable)?;
+    let (material, diameter) = cable::material(ctx, raw.material)?;
+    let constraints = constraints::constraints(ctx, &raw.constraints, cable.elements)?;
+    let loads = loads::loads(ctx, &raw.loads, cable.elements, diameter)?;
     let initial_velocity =
-        initial_velocity::initial_velocities(&ctx, &raw.initial_velocity, cable.elements)?;
+        initial_velocity::initial_velocities(ctx, &raw.initial_velocity, cable.elements)?;
     let others = analysis::Others {
         initial_velocity: !raw.initial_velocity.is_empty(),
         constraints: !constraints.is_empty(),
     };
-    let (analysis, measures, notes) = analysis::analysis(&ctx, raw.analysis, others)?;
-    initial_velocity::check_initial_velocities(&ctx, &initial_velocity, &constraints)?;
-    let output_every = analysis::output_every(&ctx, raw.output)?;
+    let (analysis, measures, notes) = analysis::analysis(ctx, raw.analysis, others)?;
+    initial_velocity::check_initial_velocities(ctx, &initial_velocity, &constraints)?;
+    let output_every = analysis::output_every(ctx, raw.output)?;
     Ok(Scenario {
         title,
         cable,

@@ -28,6 +28,89 @@ pub(super) struct RawScenario {
     pub(super) initial_velocity: Vec<RawInitialVelocity>,
     pub(super) analysis: Option<RawAnalysis>,
     pub(super) output: Option<RawOutput>,
+    /// A system of lines (docs/interface.md, "Systems").
+    pub(super) system: Option<RawSystem>,
+    #[serde(default)]
+    pub(super) line_types: Vec<RawLineType>,
+    #[serde(default)]
+    pub(super) points: Vec<RawPoint>,
+    #[serde(default)]
+    pub(super) lines: Vec<RawLine>,
+    #[serde(default)]
+    pub(super) motions: Vec<RawMotion>,
+}
+
+impl RawScenario {
+    /// Whether the file describes a system of lines.
+    pub(super) fn is_system(&self) -> bool {
+        self.system.is_some()
+            || !self.line_types.is_empty()
+            || !self.points.is_empty()
+            || !self.lines.is_empty()
+            || !self.motions.is_empty()
+    }
+}
+
+/// `[system]`.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSystem {
+    pub(super) gravity: Option<Vector>,
+    pub(super) moordyn: Option<String>,
+}
+
+/// One `[[line_types]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawLineType {
+    pub(super) name: Option<String>,
+    pub(super) diameter: Option<f64>,
+    pub(super) mass_per_length: Option<f64>,
+    pub(super) ea: Option<f64>,
+    pub(super) ei: Option<f64>,
+    pub(super) ba: Option<f64>,
+    pub(super) cd: Option<f64>,
+    pub(super) ca: Option<f64>,
+    pub(super) cdax: Option<f64>,
+    pub(super) caax: Option<f64>,
+}
+
+/// One `[[points]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawPoint {
+    pub(super) id: Option<i64>,
+    #[serde(rename = "type")]
+    pub(super) kind: Option<String>,
+    pub(super) position: Option<Vector>,
+    pub(super) mass: Option<f64>,
+    pub(super) force: Option<Vector>,
+}
+
+/// One `[[lines]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawLine {
+    pub(super) id: Option<i64>,
+    #[serde(rename = "type")]
+    pub(super) line_type: Option<String>,
+    pub(super) length: Option<f64>,
+    pub(super) elements: Option<i64>,
+    pub(super) element: Option<String>,
+    pub(super) a: Option<i64>,
+    pub(super) b: Option<i64>,
+}
+
+/// One `[[motions]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawMotion {
+    pub(super) point: Option<i64>,
+    pub(super) amplitude: Option<Vector>,
+    pub(super) period: Option<f64>,
+    pub(super) phase: Option<f64>,
+    pub(super) ramp: Option<f64>,
+    pub(super) file: Option<String>,
 }
 
 /// `[cable]`.
@@ -81,6 +164,7 @@ pub(super) struct RawAnalysis {
     pub(super) axial_strain: Option<String>,
     pub(super) constraint_method: Option<String>,
     pub(super) planar_reduction: Option<bool>,
+    pub(super) initial: Option<String>,
 }
 
 /// `[output]`.

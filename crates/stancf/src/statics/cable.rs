@@ -186,7 +186,8 @@ impl StaticEquations for SingleCable {
     fn row_weights(&mut self, jacobian: &BandMatrix, weights: &mut [f64]) {
         let n = self.cable.layout.size();
         let kmax = (0..n).map(|i| jacobian.get(i, i).abs()).fold(0.0, f64::max);
-        self.cable.row_weights(|r| jacobian.get(r, r), kmax, weights);
+        self.cable
+            .row_weights(|r| jacobian.get(r, r), kmax, weights);
     }
 
     /// Sets the point t in [0, 1] of the load path. Without support

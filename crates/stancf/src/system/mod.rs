@@ -25,10 +25,12 @@
 
 mod layout;
 mod point_terms;
+mod seed;
 mod simulation;
 mod statics;
 
 pub use layout::SystemLayout;
+pub use seed::{catenary_states, end_positions, shaped, straight_between, straight_states};
 pub use simulation::{EndForce, SystemSimulation};
 pub use statics::SystemStatics;
 

@@ -27,7 +27,9 @@ use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
 use crate::linear::Jacobian;
 use crate::model::{coordinate, State, SLOT_R};
-use crate::statics::{CableStatics, StaticEquations, StaticIncrement, StaticNewton, StaticSettings};
+use crate::statics::{
+    CableStatics, StaticEquations, StaticIncrement, StaticNewton, StaticSettings,
+};
 use std::ops::ControlFlow;
 
 /// A static solve of a system.
@@ -201,7 +203,12 @@ impl SystemStatics {
 
 impl SystemEquations {
     /// Each line's rows at x, with their Jacobians added to `jacobian`.
-    fn line_rows(&mut self, x: &[f64], residual: &mut [f64], mut jacobian: Option<&mut BorderedMatrix>) {
+    fn line_rows(
+        &mut self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = &mut self.x_local[i];
@@ -230,7 +237,12 @@ impl SystemEquations {
 impl StaticEquations for SystemEquations {
     type Matrix = BorderedMatrix;
 
-    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], mut jacobian: Option<&mut BorderedMatrix>) {
+    fn evaluate(
+        &mut self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
         residual.fill(0.0);
         if let Some(j) = jacobian.as_deref_mut() {
             j.clear();

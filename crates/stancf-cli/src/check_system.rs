@@ -1,0 +1,136 @@
+//! `stancf check` of a system scenario: the system built as a run builds
+//! it (every refusal of `run` is a refusal here), then what it is: lines
+//! with the bending stiffness each is simulated with, points, and for a
+//! dynamic analysis each line's stable P2 step.
+
+use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario};
+use crate::Failure;
+use stancf::error::Sig;
+use stancf::quadrature::GaussRule;
+use stancf::stability;
+use stancf::system::{catenary_states, straight_states, System, SystemSimulation, SystemStatics};
+use stancf::TimeScheme;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Validates the system of `sc` as `run` does and returns the report.
+pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
+    let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    let system = sc.system().map_err(input)?;
+    if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static {
+        SystemStatics::new(
+            system.clone(),
+            catenary_states(&system),
+            sc.analysis.static_settings(),
+        )
+        .map_err(input)?;
+    }
+    if sc.analysis.kind == AnalysisKind::Dynamic {
+        SystemSimulation::new(
+            system.clone(),
+            straight_states(&system),
+            sc.analysis.step_settings(),
+        )
+        .map_err(input)?;
+    }
+    let mut r = String::new();
+    let mut line = |k: &str, v: String| {
+        let _ = writeln!(r, "{k:<28}{v}");
+    };
+    line("scenario", format!("{} (a system)", sc.title));
+    for (i, l) in sc.lines.iter().enumerate() {
+        let t = &sc.line_types[l.line_type];
+        let ei = sc.bending_stiffness(i);
+        let bending = if t.ei > 0.0 {
+            format!("EI {} N m^2", Sig(ei))
+        } else {
+            format!(
+                "EI = 0 taken as {} N m^2 ({:e} w L^3, docs/method.md §11.7)",
+                Sig(ei),
+                crate::scenario::EI_FACTOR
+            )
+        };
+        line(
+            &format!("line {}", l.id),
+            format!(
+                "type {}, {} m, {} {} elements, ends {} and {}; {bending}",
+                t.name,
+                Sig(l.length),
+                l.elements,
+                l.element_type.name(),
+                end_name(sc, l.ends[0]),
+                end_name(sc, l.ends[1])
+            ),
+        );
+    }
+    for p in &sc.points {
+        let kind = match p.kind {
+            PointType::Fixed => "fixed".to_string(),
+            PointType::Coupled if p.motion.period > 0.0 => "coupled, moving".to_string(),
+            PointType::Coupled => "coupled, at rest".to_string(),
+            PointType::Free => format!("free, mass {} kg", Sig(p.mass)),
+        };
+        line(
+            &format!("point {}", p.id),
+            format!(
+                "{kind} at [{}, {}, {}] m",
+                Sig(p.position[0]),
+                Sig(p.position[1]),
+                Sig(p.position[2])
+            ),
+        );
+    }
+    line(
+        "analysis",
+        match (sc.analysis.kind, sc.initial) {
+            (AnalysisKind::Static, _) => "static equilibrium from the lines' catenaries".into(),
+            (AnalysisKind::Dynamic, InitialShape::Static) => format!(
+                "dynamic from the static equilibrium, {} s in steps of {} s",
+                Sig(sc.analysis.duration),
+                Sig(sc.analysis.time_step)
+            ),
+            (AnalysisKind::Dynamic, InitialShape::Reference) => format!(
+                "dynamic from the lines straight between their points, {} s in steps of {} s",
+                Sig(sc.analysis.duration),
+                Sig(sc.analysis.time_step)
+            ),
+        },
+    );
+    if sc.analysis.kind == AnalysisKind::Dynamic {
+        if let Some(step) = stable_step(sc, &system) {
+            line(
+                "stable step (P2)",
+                format!("{} s (the stiffest line's)", Sig(step)),
+            );
+        }
+    }
+    for n in &sc.notes {
+        let _ = writeln!(r, "note: {n}");
+    }
+    Ok(r)
+}
+
+/// The largest P2 step every line is stable with (None for the Galerkin
+/// step or a quadrature without a limit): the smallest over the lines of
+/// (w_max dt)_crit / w_max of its straight start.
+pub fn stable_step(sc: &SystemScenario, system: &System) -> Option<f64> {
+    if sc.analysis.time_scheme != TimeScheme::P2 {
+        return None;
+    }
+    let rule = GaussRule::new(sc.analysis.time_points).ok()?;
+    let critical = stability::p2_critical_w_dt(&rule, sc.analysis.time_layers)?;
+    let states = straight_states(system);
+    system
+        .lines()
+        .iter()
+        .zip(&states)
+        .map(|(l, s)| critical / stability::highest_frequency(&l.model, &s.e))
+        .fold(None, |m: Option<f64>, s| Some(m.map_or(s, |m| m.min(s))))
+}
+
+fn end_name(sc: &SystemScenario, end: Option<usize>) -> String {
+    match end {
+        Some(p) => format!("point {}", sc.points[p].id),
+        None => "loose".into(),
+    }
+}

@@ -1,0 +1,318 @@
+//! The `OUTPUTS` section: channel names as `MoorDyn2.cpp` reads them
+//! (`ReadInFile`, the `OUTPUT` section, with `str::decomposeString`),
+//! case-insensitive.
+
+use super::layout::Section;
+use super::{DeckError, DeckLine, DeckPoint, Output};
+
+/// A component of a vector, in the global frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Axis {
+    X,
+    Y,
+    Z,
+}
+
+/// An end of a line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineEnd {
+    /// End A, node 0 (`AttachA`).
+    A,
+    /// End B, node `NumSegs` (`AttachB`).
+    B,
+}
+
+/// What MoorDyn outputs at a line node (`Line::GetLineOutput`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineQuantity {
+    /// `PX` `PY` `PZ` (m).
+    Position(Axis),
+    /// `VX` `VY` `VZ` (m/s).
+    Velocity(Axis),
+    /// `FX` `FY` `FZ`: net force on the node (N).
+    Force(Axis),
+    /// `T` or `TEN` (N): at an end node the magnitude of the net force on
+    /// it, at an inner node the mean tension of its two segments.
+    Tension,
+}
+
+/// What MoorDyn outputs at a point (`Point::GetPointOutput`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointQuantity {
+    /// `PX` `PY` `PZ` (m).
+    Position(Axis),
+    /// `VX` `VY` `VZ` (m/s).
+    Velocity(Axis),
+    /// `AX` `AY` `AZ` (m/s²).
+    Acceleration(Axis),
+    /// `FX` `FY` `FZ`: net force on the point (N).
+    Force(Axis),
+    /// `T` or `TEN`: magnitude of the net force (N).
+    Tension,
+}
+
+/// An output channel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Channel {
+    /// `FairTen<n>`: tension at end B (the fairlead, node `NumSegs`) of
+    /// line n; the same as `L<n>NB T`.
+    FairleadTension { line: usize },
+    /// `AnchTen<n>`: tension at end A (the anchor, node 0) of line n.
+    AnchorTension { line: usize },
+    /// `L<n>N<k><q>` or `Line<n>N<k><q>`; `NA` is node 0 and `NB` node
+    /// `NumSegs`; without a node, node 0 (MoorDyn's reference point of a
+    /// line is end A).
+    LineNode {
+        line: usize,
+        node: usize,
+        quantity: LineQuantity,
+    },
+    /// `L<n>TA`/`L<n>TenA` and `L<n>TB`/`L<n>TenB`: the magnitude of the
+    /// net force on an end node of line n (N).
+    LineEndTension { line: usize, end: LineEnd },
+    /// `P<n><q>`, `Point<n><q>` or the older `Con<n><q>`.
+    Point {
+        point: usize,
+        quantity: PointQuantity,
+    },
+}
+
+/// A channel name before the lines and points are known.
+pub(crate) struct RawOutput<'a> {
+    line: usize,
+    name: &'a str,
+}
+
+/// The channel names: every word of every row, up to a row starting with
+/// `END` (MoorDyn-F stops there; MoorDyn-C skips the word with a
+/// warning); nothing may follow `END` in the section.
+pub(crate) fn words<'a>(s: &Section<'a>) -> Result<Vec<RawOutput<'a>>, DeckError> {
+    let mut out = Vec::new();
+    let mut end: Option<usize> = None;
+    for row in &s.rows {
+        if let Some(at) = end {
+            return Err(DeckError::at(
+                row.line,
+                format!("\"{}\" follows END (line {at}) in OUTPUTS", row.words[0]),
+            ));
+        }
+        for (i, w) in row.words.iter().enumerate() {
+            if w.eq_ignore_ascii_case("END") {
+                if i > 0 || row.words.len() > 1 {
+                    return Err(DeckError::at(
+                        row.line,
+                        "END must stand alone on its line in OUTPUTS",
+                    ));
+                }
+                end = Some(row.line);
+            } else {
+                out.push(RawOutput {
+                    line: row.line,
+                    name: w,
+                });
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The channels, checked against the deck's lines and points.
+pub(crate) fn resolve(
+    raw: Vec<RawOutput>,
+    lines: &[DeckLine],
+    points: &[DeckPoint],
+) -> Result<Vec<Output>, DeckError> {
+    raw.into_iter()
+        .map(|r| {
+            let channel = channel(r.name, lines, points).map_err(|m| {
+                DeckError::at(r.line, format!("output channel \"{}\": {m}", r.name))
+            })?;
+            Ok(Output {
+                line: r.line,
+                name: r.name.to_string(),
+                channel,
+            })
+        })
+        .collect()
+}
+
+/// A name cut into its leading letters, the digits after them and the
+/// rest (`FairTen12` → `FAIRTEN`, `12`, ``).
+fn head(upper: &str) -> (&str, &str, &str) {
+    let a = upper
+        .find(|c: char| !c.is_ascii_alphabetic())
+        .unwrap_or(upper.len());
+    let b = upper[a..]
+        .find(|c: char| !c.is_ascii_digit())
+        .map_or(upper.len(), |i| a + i);
+    (&upper[..a], &upper[a..b], &upper[b..])
+}
+
+fn channel(name: &str, lines: &[DeckLine], points: &[DeckPoint]) -> Result<Channel, String> {
+    if !name.chars().all(|c| c.is_ascii_alphanumeric()) {
+        return Err("a channel name is made of letters and digits".into());
+    }
+    let upper = name.to_ascii_uppercase();
+    let (kind, id, rest) = head(&upper);
+    let known = "known: FairTen<n>, AnchTen<n>, L<n>N<k><q> (Line...), P<n><q> (Point..., Con...)";
+    if id.is_empty() {
+        return Err(format!("no object number; {known}"));
+    }
+    let id: usize = id.parse().map_err(|_| "the object number is too large")?;
+    match kind {
+        "FAIRTEN" | "ANCHTEN" => {
+            if !rest.is_empty() {
+                return Err(format!("unexpected \"{rest}\" after the line number"));
+            }
+            line_of(id, lines)?;
+            Ok(if kind == "FAIRTEN" {
+                Channel::FairleadTension { line: id }
+            } else {
+                Channel::AnchorTension { line: id }
+            })
+        }
+        "L" | "LINE" => line_channel(id, rest, line_of(id, lines)?),
+        "P" | "POINT" | "CON" => {
+            if id == 0 || id > points.len() {
+                return Err(format!("there is no point {id} ({} points)", points.len()));
+            }
+            let quantity = point_quantity(rest)?;
+            Ok(Channel::Point {
+                point: id,
+                quantity,
+            })
+        }
+        "R" | "ROD" => Err("rods are not supported".into()),
+        "B" | "BODY" => Err("bodies are not supported".into()),
+        _ => Err(format!("unknown channel; {known}")),
+    }
+}
+
+fn line_of(id: usize, lines: &[DeckLine]) -> Result<&DeckLine, String> {
+    id.checked_sub(1)
+        .and_then(|i| lines.get(i))
+        .ok_or_else(|| format!("there is no line {id} ({} lines)", lines.len()))
+}
+
+/// The part after `L<n>`: `N<k><q>`, `NA<q>`, `NB<q>`, `<q>`, `TA`, `TB`.
+fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, String> {
+    if let Some(end) = end_tension(rest) {
+        return Ok(Channel::LineEndTension { line: id, end });
+    }
+    let (node, q) = if let Some(after) = rest.strip_prefix('N') {
+        let digits = after
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(after.len());
+        if digits > 0 {
+            let k: usize = after[..digits]
+                .parse()
+                .map_err(|_| "node number too large")?;
+            (k, &after[digits..])
+        } else if let Some(q) = after.strip_prefix('A') {
+            (0, q)
+        } else if let Some(q) = after.strip_prefix('B') {
+            (line.segments, q)
+        } else {
+            return Err("after N comes a node number, A or B".into());
+        }
+    } else {
+        (0, rest)
+    };
+    if node > line.segments {
+        return Err(format!(
+            "line {id} has nodes 0 to {} ({} segments)",
+            line.segments, line.segments
+        ));
+    }
+    if end_tension(q).is_some() {
+        return Err("TA and TB (end tensions) take no node".into());
+    }
+    let quantity = match quantity(q)? {
+        Q::P(a) => LineQuantity::Position(a),
+        Q::V(a) => LineQuantity::Velocity(a),
+        Q::F(a) => LineQuantity::Force(a),
+        Q::T => LineQuantity::Tension,
+        Q::A(_) | Q::Other => {
+            return Err(format!(
+                "MoorDyn outputs no \"{q}\" at line nodes (only PX PY PZ VX VY VZ FX FY FZ T)"
+            ))
+        }
+    };
+    Ok(Channel::LineNode {
+        line: id,
+        node,
+        quantity,
+    })
+}
+
+fn end_tension(q: &str) -> Option<LineEnd> {
+    match q {
+        "TA" | "TENA" => Some(LineEnd::A),
+        "TB" | "TENB" => Some(LineEnd::B),
+        _ => None,
+    }
+}
+
+fn point_quantity(q: &str) -> Result<PointQuantity, String> {
+    Ok(match quantity(q)? {
+        Q::P(a) => PointQuantity::Position(a),
+        Q::V(a) => PointQuantity::Velocity(a),
+        Q::A(a) => PointQuantity::Acceleration(a),
+        Q::F(a) => PointQuantity::Force(a),
+        Q::T => PointQuantity::Tension,
+        Q::Other => {
+            return Err(format!(
+                "MoorDyn outputs no \"{q}\" at points (only PX PY PZ VX VY VZ AX AY AZ FX FY FZ T)"
+            ))
+        }
+    })
+}
+
+/// The quantity suffixes of `MoorDyn2.cpp`, those of no line or point
+/// (rotations, moments, `SUB`) as `Other`.
+enum Q {
+    P(Axis),
+    V(Axis),
+    A(Axis),
+    F(Axis),
+    T,
+    Other,
+}
+
+fn quantity(q: &str) -> Result<Q, String> {
+    let axis = |c: u8| match c {
+        b'X' => Some(Axis::X),
+        b'Y' => Some(Axis::Y),
+        b'Z' => Some(Axis::Z),
+        _ => None,
+    };
+    let b = q.as_bytes();
+    let q2 = if b.len() == 2 { axis(b[1]) } else { None };
+    Ok(match (b.first(), q2) {
+        (Some(b'P'), Some(a)) => Q::P(a),
+        (Some(b'V'), Some(a)) => Q::V(a),
+        (Some(b'A'), Some(a)) => Q::A(a),
+        (Some(b'F'), Some(a)) => Q::F(a),
+        _ if q == "T" || q == "TEN" => Q::T,
+        _ if matches!(
+            q,
+            "RX" | "RY"
+                | "RZ"
+                | "RVX"
+                | "RVY"
+                | "RVZ"
+                | "RAX"
+                | "RAY"
+                | "RAZ"
+                | "MX"
+                | "MY"
+                | "MZ"
+                | "SUB"
+        ) =>
+        {
+            Q::Other
+        }
+        _ if q.is_empty() => return Err("no quantity (e.g. PX, VZ, FX, T)".into()),
+        _ => return Err(format!("unknown quantity \"{q}\"")),
+    })
+}

@@ -1,0 +1,299 @@
+//! MoorDyn v2 input files ("decks") read into a neutral, validated
+//! [`Deck`]. Only what stancf can represent is accepted: line types with
+//! constant coefficients, fixed, free and coupled points, lines between
+//! points, the options of [`SupportedOption`] (plus MoorDyn's initial
+//! condition, logging and output switches, accepted and ignored) and the
+//! output channels of [`Channel`]. Everything else (rods, bodies,
+//! failures, nonlinear or viscoelastic stiffness, VIV, waves, currents,
+//! bathymetry files...) is refused by name, naming the line of the file.
+//! Turning a deck into a simulation model is not done here.
+//!
+//! The format follows MoorDyn-C's reader (`MoorDyn2.cpp`,
+//! `MoorDyn::ReadInFile`, `findStartOfSection`, `readLineProps`,
+//! `readOptionsLine`; `Misc.cpp`, `str::split` and `str::decomposeString`)
+//! and its documentation (`docs/inputs.rst`, "The V2 Input File"):
+//!
+//! - A section starts at a line containing `---` whose upper-cased text
+//!   contains one of the section's key phrases (`LINE TYPES`, `POINTS`,
+//!   `LINES`, `OPTIONS`, `OUTPUTS` and their synonyms); any other
+//!   line containing `---` ends the section before it (the customary
+//!   `--- need this line ---` or `--- END ---`). The lines before the
+//!   first section are a free-form title.
+//! - Table sections (line types, points, lines...) start with a row of
+//!   column names and a row of units; options and outputs do not.
+//! - Values are separated by blanks; the first word containing `#`
+//!   starts a comment running to the end of the line (MoorDyn drops that
+//!   whole word). Words after the last column MoorDyn reads are ignored
+//!   as MoorDyn ignores them, except in `LINE TYPES`, where MoorDyn
+//!   refuses rows of other than 10, 11 or 13 words.
+
+mod channels;
+mod layout;
+mod options;
+mod sections;
+#[cfg(test)]
+mod tests;
+
+use std::fmt;
+use std::path::Path;
+
+pub use channels::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
+pub use options::{OptionKind, OptionValue, SupportedOption};
+
+/// A MoorDyn v2 input file, read and checked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Deck {
+    /// The free-form lines before the first section (banner lines of
+    /// dashes excluded), joined with newlines.
+    pub title: String,
+    /// `LINE TYPES` (or `LINE DICTIONARY`), in file order.
+    pub line_types: Vec<LineType>,
+    /// `POINTS` (or `POINT LIST`, `POINT PROPERTIES`, `CONNECTION
+    /// PROPERTIES`, `NODE PROPERTIES`); the n-th has id n.
+    pub points: Vec<DeckPoint>,
+    /// `LINES` (or `LINE LIST`, `LINE PROPERTIES`); the n-th has id n.
+    pub lines: Vec<DeckLine>,
+    /// `OPTIONS` (or `SOLVER OPTIONS`), in file order, each name at most
+    /// once.
+    pub options: Vec<DeckOption>,
+    /// `OUTPUTS` (or `OUTPUT`), in file order.
+    pub outputs: Vec<Output>,
+}
+
+/// A row of `LINE TYPES`: `TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx
+/// CaAx`, optionally followed by `Cl` or `Cl dF cF` (VIV), accepted only
+/// with `Cl` = 0 (VIV off).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineType {
+    /// 1-based line number in the file.
+    pub line: usize,
+    /// `TypeName`, matched case-sensitively by the lines, as MoorDyn does.
+    pub name: String,
+    /// `Diam`: volume-equivalent diameter (m).
+    pub diameter: f64,
+    /// `Mass/m`: mass per unit length (kg/m).
+    pub mass_per_length: f64,
+    /// `EA`: axial stiffness (N), a constant (curve files and
+    /// viscoelastic `a|b` forms are refused).
+    pub ea: f64,
+    /// `BA/-zeta` as written: if ≥ 0, the internal axial damping
+    /// coefficient BA (N·s); if negative, minus the damping ratio ζ
+    /// (fraction of critical) from which MoorDyn sets BA for each line
+    /// from its segment length (so `-1.0` is critical damping of the
+    /// axial segment mode). See [`LineType::damping_ratio`].
+    pub ba: f64,
+    /// `EI`: bending stiffness (N·m²), a constant.
+    pub ei: f64,
+    /// `Cd`: transverse drag coefficient (on d·l).
+    pub cd: f64,
+    /// `Ca`: transverse added-mass coefficient.
+    pub ca: f64,
+    /// `CdAx`: tangential drag coefficient (on π·d·l).
+    pub cd_ax: f64,
+    /// `CaAx`: tangential added-mass coefficient.
+    pub ca_ax: f64,
+}
+
+impl LineType {
+    /// ζ when `BA/-zeta` is negative (a damping ratio), `None` when it is
+    /// a damping coefficient.
+    pub fn damping_ratio(&self) -> Option<f64> {
+        (self.ba < 0.0).then_some(-self.ba)
+    }
+}
+
+/// How a point moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Attachment {
+    /// `Fixed`, `Fix` or `Anchor`: held at its position.
+    Fixed,
+    /// `Free`, `Point`, `Connect` or `Con`: moves under the forces on it.
+    Free,
+    /// `Coupled`, `Cpld`, `Vessel`, `Ves` or `Fairlead`: moved by the
+    /// caller (the vessel).
+    Coupled,
+}
+
+/// A row of `POINTS`: `ID Attachment X Y Z Mass Volume CdA Ca` (a
+/// 12-column form with `FX FY FZ` after `Volume` is accepted when the
+/// forces are zero).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeckPoint {
+    /// 1-based line number in the file.
+    pub line: usize,
+    /// `ID`, 1, 2, 3... in order.
+    pub id: usize,
+    /// `Attachment` (MoorDyn also calls the column `Type`).
+    pub attachment: Attachment,
+    /// `X Y Z` (m), global frame, z up from the still water line.
+    pub position: [f64; 3],
+    /// `Mass` (kg), a clump weight.
+    pub mass: f64,
+    /// `Volume` (m³), buoyancy.
+    pub volume: f64,
+    /// `CdA`: drag coefficient times area (m²).
+    pub cda: f64,
+    /// `Ca`: added-mass coefficient (on `Volume`).
+    pub ca: f64,
+}
+
+/// A row of `LINES`: `ID LineType AttachA AttachB UnstrLen NumSegs
+/// Outputs`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeckLine {
+    /// 1-based line number in the file.
+    pub line: usize,
+    /// `ID`, 1, 2, 3... in order.
+    pub id: usize,
+    /// `LineType`, as written.
+    pub line_type: String,
+    /// Index of the line type in [`Deck::line_types`].
+    pub type_index: usize,
+    /// `AttachA`: id of the point at end A (node 0, the anchor end).
+    pub end_a: usize,
+    /// `AttachB`: id of the point at end B (node `segments`, the fairlead
+    /// end).
+    pub end_b: usize,
+    /// `UnstrLen` (m), > 0.
+    pub unstretched_length: f64,
+    /// `NumSegs`, ≥ 1; the line has `segments + 1` nodes.
+    pub segments: usize,
+    /// `Outputs` (`LineOutputs`): MoorDyn's per-line output file flags as
+    /// written, e.g. `p`, `pt`, `-` (none).
+    pub outputs: String,
+}
+
+impl DeckLine {
+    /// Whether MoorDyn would write a file for this line: one of the flag
+    /// letters `pvUDVKctsd` is present (as `MoorDyn2.cpp` tests).
+    pub fn wants_line_file(&self) -> bool {
+        self.outputs.chars().any(|c| "pvUDVKctsd".contains(c))
+    }
+}
+
+/// A row of `OPTIONS`: `value name [comment]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeckOption {
+    /// 1-based line number in the file.
+    pub line: usize,
+    /// The name as written, e.g. `WtrDnsty`.
+    pub name: String,
+    /// The value, a number for every supported option.
+    pub value: OptionValue,
+    /// What stancf does with it.
+    pub kind: OptionKind,
+}
+
+/// A word of `OUTPUTS`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Output {
+    /// 1-based line number in the file.
+    pub line: usize,
+    /// The channel name as written, e.g. `FairTen1`.
+    pub name: String,
+    /// What it measures.
+    pub channel: Channel,
+}
+
+impl Deck {
+    /// The value of a supported option, if the deck sets it.
+    pub fn option(&self, which: SupportedOption) -> Option<f64> {
+        self.options.iter().find_map(|o| match (o.kind, &o.value) {
+            (OptionKind::Supported(s), OptionValue::Number(v)) if s == which => Some(*v),
+            _ => None,
+        })
+    }
+
+    /// The line type of a line.
+    pub fn line_type_of(&self, line: &DeckLine) -> &LineType {
+        &self.line_types[line.type_index]
+    }
+
+    /// The point with this id (ids start at 1).
+    pub fn point(&self, id: usize) -> Option<&DeckPoint> {
+        id.checked_sub(1).and_then(|i| self.points.get(i))
+    }
+}
+
+/// Why a deck was refused.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DeckError {
+    /// 1-based line number in the file, when the problem has one.
+    pub line: Option<usize>,
+    /// What is wrong, in words.
+    pub message: String,
+}
+
+impl DeckError {
+    pub(crate) fn at(line: usize, message: impl Into<String>) -> DeckError {
+        DeckError {
+            line: Some(line),
+            message: message.into(),
+        }
+    }
+
+    pub(crate) fn whole(message: impl Into<String>) -> DeckError {
+        DeckError {
+            line: None,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for DeckError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(n) => write!(f, "line {n}: {}", self.message),
+            None => f.write_str(&self.message),
+        }
+    }
+}
+
+impl std::error::Error for DeckError {}
+
+/// Reads and checks a MoorDyn v2 deck.
+pub fn parse(text: &str) -> Result<Deck, DeckError> {
+    let layout = layout::split(text)?;
+    let mut line_types = Vec::new();
+    let mut points = Vec::new();
+    let mut raw_lines = Vec::new();
+    let mut options = Vec::new();
+    let mut raw_outputs = Vec::new();
+    for section in &layout.sections {
+        use layout::SectionKind as K;
+        match section.kind {
+            K::LineTypes => line_types = sections::line_types(section)?,
+            K::Points => points = sections::points(section)?,
+            K::Lines => raw_lines = sections::lines(section)?,
+            K::Options => options = options::read(section)?,
+            K::Outputs => raw_outputs = channels::words(section)?,
+            other => sections::refuse_rows(section, other)?,
+        }
+    }
+    let lines = sections::link_lines(raw_lines, &line_types, &points)?;
+    let outputs = channels::resolve(raw_outputs, &lines, &points)?;
+    Ok(Deck {
+        title: layout.title,
+        line_types,
+        points,
+        lines,
+        options,
+        outputs,
+    })
+}
+
+/// Reads and checks the MoorDyn v2 deck in a file. A file that cannot be
+/// read is an error without a line, naming the file.
+pub fn load(path: &Path) -> Result<Deck, DeckError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| DeckError::whole(format!("{}: cannot read the file: {e}", path.display())))?;
+    parse(&text)
+}
+
+/// Whether a text looks like a MoorDyn deck rather than a TOML scenario:
+/// some line starts with `---` and names a MoorDyn section (`LINE
+/// TYPES`, `POINTS`, `LINES`, `OPTIONS`...).
+pub fn looks_like_moordyn(text: &str) -> bool {
+    text.lines()
+        .any(|l| l.trim_start().starts_with("---") && layout::SectionKind::of_header(l).is_some())
+}

@@ -1,0 +1,221 @@
+//! The `OPTIONS` section: `value name [comment]` rows, names compared
+//! lower-cased as in `MoorDyn2.cpp`'s `readOptionsLine`.
+
+use super::layout::Section;
+use super::{DeckError, DeckOption};
+
+/// An option stancf uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SupportedOption {
+    /// `dtM` (old `dt`): the time step (s).
+    TimeStep,
+    /// `g` (`gravity`): gravitational acceleration (m/s²).
+    Gravity,
+    /// `WtrDpth`: water depth (m), the seabed at z = −depth.
+    WaterDepth,
+    /// `WtrDnsty` (`rho`, and `rhoW` of MoorDyn-F and the v1 docs): water
+    /// density (kg/m³).
+    WaterDensity,
+    /// `kBot` (`kb`): seabed stiffness (Pa/m).
+    BottomStiffness,
+    /// `cBot` (`cb`): seabed damping (Pa·s/m).
+    BottomDamping,
+    /// `FrictionCoefficient`: seabed friction coefficient.
+    FrictionCoefficient,
+    /// `FricDamp` (MoorDyn-F `CV`): friction damping (s/m), scaling from no
+    /// friction at rest to full friction when sliding.
+    FrictionDamping,
+    /// `StatDynFricScale` (MoorDyn-F `MC`): static over dynamic friction.
+    StaticDynamicFrictionScale,
+    /// `dtOut`: interval of the output rows (s), 0 for every step.
+    OutputInterval,
+}
+
+impl SupportedOption {
+    /// MoorDyn's usual name for it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SupportedOption::TimeStep => "dtM",
+            SupportedOption::Gravity => "g",
+            SupportedOption::WaterDepth => "WtrDpth",
+            SupportedOption::WaterDensity => "WtrDnsty",
+            SupportedOption::BottomStiffness => "kBot",
+            SupportedOption::BottomDamping => "cBot",
+            SupportedOption::FrictionCoefficient => "FrictionCoefficient",
+            SupportedOption::FrictionDamping => "FricDamp",
+            SupportedOption::StaticDynamicFrictionScale => "StatDynFricScale",
+            SupportedOption::OutputInterval => "dtOut",
+        }
+    }
+
+    /// Whether 0 is allowed (else the value must be positive); negative
+    /// values are always refused.
+    fn zero_allowed(self) -> bool {
+        !matches!(
+            self,
+            SupportedOption::TimeStep | SupportedOption::Gravity | SupportedOption::WaterDepth
+        )
+    }
+}
+
+/// What stancf does with an option.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OptionKind {
+    /// Used by stancf.
+    Supported(SupportedOption),
+    /// Accepted and ignored: MoorDyn's initial condition generator
+    /// (`dtIC`, `TmaxIC`, `CdScaleIC`, `threshIC`, `ICgenDynamic`,
+    /// `fileIC` and their old names), logging and output switches
+    /// (`writeLog`, `WriteUnits`, `disableOutput`, `disableOutTime`,
+    /// `OutSwitch`, `Echo`), and the settings that are inert as given
+    /// (`WaveKin 0`, `Currents 0`, `inertialF 0`, `dtWave`,
+    /// `UnifyCurrentGrid`, `inertialF_rampT`).
+    Ignored,
+}
+
+/// An option's value as written.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OptionValue {
+    /// A finite number.
+    Number(f64),
+    /// Anything else (e.g. the file of `fileIC`).
+    Text(String),
+}
+
+/// How a name is treated.
+enum Class {
+    Known(OptionKind),
+    /// Accepted and ignored only when the value is 0.
+    IgnoredIfZero(&'static str),
+    Refused(&'static str),
+}
+
+fn classify(lower: &str) -> Option<Class> {
+    use SupportedOption as S;
+    let s = |o| Some(Class::Known(OptionKind::Supported(o)));
+    match lower {
+        "dtm" | "dt" => s(S::TimeStep),
+        "g" | "gravity" => s(S::Gravity),
+        "wtrdpth" => s(S::WaterDepth),
+        "rho" | "wtrdnsty" | "rhow" => s(S::WaterDensity),
+        "kbot" | "kb" => s(S::BottomStiffness),
+        "cbot" | "cb" => s(S::BottomDamping),
+        "frictioncoefficient" => s(S::FrictionCoefficient),
+        "fricdamp" | "cv" => s(S::FrictionDamping),
+        "statdynfricscale" | "mc" => s(S::StaticDynamicFrictionScale),
+        "dtout" => s(S::OutputInterval),
+        "dtic" | "icdt" | "tmaxic" | "ictmax" | "cdscaleic" | "icdfac" | "threshic"
+        | "icthresh" | "gendynamicic" | "icgendynamic" | "fileic" | "icfile" | "writelog"
+        | "writeunits" | "disableoutput" | "disableouttime" | "outswitch" | "echo" | "dtwave"
+        | "unifycurrentgrid" | "inertialf_rampt" => Some(Class::Known(OptionKind::Ignored)),
+        "wavekin" => Some(Class::IgnoredIfZero("waves are not supported")),
+        "currents" => Some(Class::IgnoredIfZero("currents are not supported")),
+        "inertialf" => Some(Class::IgnoredIfZero(
+            "MoorDyn-F's inertial coupled forces are not supported",
+        )),
+        "cfl" => Some(Class::Refused(
+            "a time step from a Courant number is not supported; give dtM",
+        )),
+        "tscheme" => Some(Class::Refused(
+            "MoorDyn's time integrators are not supported; stancf uses its own (remove tScheme)",
+        )),
+        "seafloorfile" => Some(Class::Refused("bathymetry files are not supported")),
+        "waterkin" => Some(Class::Refused(
+            "MoorDyn-F water kinematics (waves, currents) are not supported",
+        )),
+        "mu_kt" | "mu_ka" => Some(Class::Refused(
+            "MoorDyn-F's separate transverse and axial friction coefficients are not \
+             supported; give FrictionCoefficient",
+        )),
+        _ => None,
+    }
+}
+
+/// The options, each name (synonyms included) at most once.
+pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
+    let mut out: Vec<DeckOption> = Vec::new();
+    for row in &s.rows {
+        if row.words.len() < 2 {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "an option row is \"value name\"; this one has only \"{}\"",
+                    row.words[0]
+                ),
+            ));
+        }
+        let (text, name) = (row.words[0], row.words[1]);
+        let lower = name.to_ascii_lowercase();
+        let number = text.parse::<f64>().ok().filter(|v| v.is_finite());
+        let kind = match classify(&lower) {
+            None => {
+                return Err(DeckError::at(
+                    row.line,
+                    format!("unknown option \"{name}\""),
+                ))
+            }
+            Some(Class::Refused(why)) => {
+                return Err(DeckError::at(row.line, format!("option {name}: {why}")))
+            }
+            Some(Class::IgnoredIfZero(why)) if number != Some(0.0) => {
+                return Err(DeckError::at(
+                    row.line,
+                    format!("option {name} is {text}: {why} (only 0 is accepted)"),
+                ))
+            }
+            Some(Class::IgnoredIfZero(_)) => OptionKind::Ignored,
+            Some(Class::Known(k)) => k,
+        };
+        let value = match (kind, number) {
+            (OptionKind::Supported(o), Some(v)) => supported_value(o, v, name, row.line)?,
+            (OptionKind::Supported(_), None) => {
+                return Err(DeckError::at(
+                    row.line,
+                    format!("option {name} is \"{text}\", which is not a finite number"),
+                ))
+            }
+            (OptionKind::Ignored, Some(v)) => OptionValue::Number(v),
+            (OptionKind::Ignored, None) => OptionValue::Text(text.to_string()),
+        };
+        let same = |o: &&DeckOption| {
+            o.name.eq_ignore_ascii_case(name)
+                || matches!(kind, OptionKind::Supported(_)) && o.kind == kind
+        };
+        if let Some(first) = out.iter().find(same) {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "option {name} is given twice (first as {} at line {})",
+                    first.name, first.line
+                ),
+            ));
+        }
+        out.push(DeckOption {
+            line: row.line,
+            name: name.to_string(),
+            value,
+            kind,
+        });
+    }
+    Ok(out)
+}
+
+fn supported_value(
+    o: SupportedOption,
+    v: f64,
+    name: &str,
+    line: usize,
+) -> Result<OptionValue, DeckError> {
+    if v < 0.0 || (v == 0.0 && !o.zero_allowed()) {
+        let bound = if o.zero_allowed() {
+            "zero or positive"
+        } else {
+            "positive"
+        };
+        return Err(DeckError::at(
+            line,
+            format!("option {name} is {v}; it must be {bound}"),
+        ));
+    }
+    Ok(OptionValue::Number(v))
+}

@@ -1,0 +1,423 @@
+//! The table sections: `LINE TYPES`, `POINTS`, `LINES`, and the refusal
+//! of the sections stancf cannot represent.
+
+use super::layout::{Row, Section, SectionKind};
+use super::{Attachment, DeckError, DeckLine, DeckPoint, LineType};
+
+/// A finite number, or an error naming the column and the row's object.
+pub(crate) fn number(row: &Row, col: usize, what: &str) -> Result<f64, DeckError> {
+    let w = row.words[col];
+    match w.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(DeckError::at(
+            row.line,
+            format!("{what} is \"{w}\", which is not a finite number"),
+        )),
+        Err(_) => Err(DeckError::at(
+            row.line,
+            format!("{what} is \"{w}\", which is not a number"),
+        )),
+    }
+}
+
+/// A number that must be ≥ 0 (`strict`: > 0).
+fn non_negative(row: &Row, col: usize, what: &str, strict: bool) -> Result<f64, DeckError> {
+    let v = number(row, col, what)?;
+    if v < 0.0 || (strict && v == 0.0) {
+        let bound = if strict {
+            "positive"
+        } else {
+            "zero or positive"
+        };
+        return Err(DeckError::at(
+            row.line,
+            format!("{what} is {v}; it must be {bound}"),
+        ));
+    }
+    Ok(v)
+}
+
+/// A whole number ≥ 1.
+pub(crate) fn count(row: &Row, col: usize, what: &str) -> Result<usize, DeckError> {
+    let w = row.words[col];
+    match w.parse::<usize>() {
+        Ok(n) if n >= 1 => Ok(n),
+        _ => Err(DeckError::at(
+            row.line,
+            format!("{what} is \"{w}\"; it must be a whole number, 1 or more"),
+        )),
+    }
+}
+
+/// At least `min` words, or an error naming the columns expected.
+fn columns(row: &Row, min: usize, section: &str, names: &str) -> Result<(), DeckError> {
+    if row.words.len() < min {
+        return Err(DeckError::at(
+            row.line,
+            format!(
+                "{section} rows have {min} columns ({names}); this one has {}",
+                row.words.len()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The ids of a table must be 1, 2, 3... in order, as MoorDyn requires.
+fn sequential(row: &Row, id: usize, expected: usize, what: &str) -> Result<(), DeckError> {
+    if id != expected {
+        let detail = if id < expected {
+            format!("{what} {id} is defined twice or out of order")
+        } else {
+            format!("{what} {expected} is missing")
+        };
+        return Err(DeckError::at(
+            row.line,
+            format!("{what} ids must be 1, 2, 3... in order: expected {expected}, found {id} ({detail})"),
+        ));
+    }
+    Ok(())
+}
+
+const LINE_TYPE_COLUMNS: &str = "TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx";
+
+/// `LINE TYPES` rows.
+pub(crate) fn line_types(s: &Section) -> Result<Vec<LineType>, DeckError> {
+    let mut out: Vec<LineType> = Vec::new();
+    for row in &s.rows {
+        let t = line_type(row)?;
+        if let Some(first) = out.iter().find(|o| o.name == t.name) {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "line type \"{}\" is defined twice (first at line {})",
+                    t.name, first.line
+                ),
+            ));
+        }
+        out.push(t);
+    }
+    Ok(out)
+}
+
+fn line_type(row: &Row) -> Result<LineType, DeckError> {
+    columns(row, 10, "LINE TYPES", LINE_TYPE_COLUMNS)?;
+    let name = row.words[0];
+    match row.words.len() {
+        10 => {}
+        11 | 13 => viv_off(row, name)?,
+        n => {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "LINE TYPES rows have 10 columns ({LINE_TYPE_COLUMNS}), 11 (+ Cl) or 13 \
+                     (+ Cl dF cF); this one has {n} (MoorDyn refuses other counts; start a \
+                     comment with #)"
+                ),
+            ))
+        }
+    }
+    let what = |col: &str| format!("{col} of line type \"{name}\"");
+    constant(row, 3, name, "EA")?;
+    constant(row, 4, name, "BA/-zeta")?;
+    constant(row, 5, name, "EI")?;
+    Ok(LineType {
+        line: row.line,
+        name: name.to_string(),
+        diameter: non_negative(row, 1, &what("Diam"), true)?,
+        mass_per_length: non_negative(row, 2, &what("Mass/m"), true)?,
+        ea: non_negative(row, 3, &what("EA"), true)?,
+        ba: number(row, 4, &what("BA/-zeta"))?,
+        ei: non_negative(row, 5, &what("EI"), false)?,
+        cd: non_negative(row, 6, &what("Cd"), false)?,
+        ca: non_negative(row, 7, &what("Ca"), false)?,
+        cd_ax: non_negative(row, 8, &what("CdAx"), false)?,
+        ca_ax: non_negative(row, 9, &what("CaAx"), false)?,
+    })
+}
+
+/// The optional VIV columns are accepted only with `Cl` = 0, which
+/// MoorDyn reads as VIV off.
+fn viv_off(row: &Row, name: &str) -> Result<(), DeckError> {
+    let cl = number(row, 10, &format!("Cl of line type \"{name}\""))?;
+    if cl != 0.0 {
+        return Err(DeckError::at(
+            row.line,
+            format!(
+                "line type \"{name}\" has the VIV lift coefficient Cl = {cl}; vortex-induced \
+                 vibration is not supported (Cl = 0 turns it off)"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// EA, BA and EI must be plain numbers: MoorDyn also takes the name of a
+/// file holding a nonlinear curve, `a|b` or `a|b|c` viscoelastic forms
+/// and `SYROPE:...` for EA (`readLineProps`, `read_curve`).
+fn constant(row: &Row, col: usize, name: &str, column: &str) -> Result<(), DeckError> {
+    let w = row.words[col];
+    if w.parse::<f64>().is_ok() {
+        return Ok(());
+    }
+    let kind = if w.to_ascii_uppercase().starts_with("SYROPE:") {
+        "the Syrope polyester model"
+    } else if w.contains('|') {
+        "a viscoelastic (bar-separated) value"
+    } else {
+        "not a number (MoorDyn would read a nonlinear curve from a file of that name)"
+    };
+    Err(DeckError::at(
+        row.line,
+        format!(
+            "{column} of line type \"{name}\" is \"{w}\", {kind}; only a constant \
+             {column} is supported"
+        ),
+    ))
+}
+
+const POINT_COLUMNS: &str = "ID Attachment X Y Z Mass Volume CdA Ca";
+
+/// `POINTS` rows.
+pub(crate) fn points(s: &Section) -> Result<Vec<DeckPoint>, DeckError> {
+    let mut out = Vec::new();
+    for row in &s.rows {
+        columns(row, 9, "POINTS", POINT_COLUMNS)?;
+        let id = count(row, 0, "the point ID")?;
+        sequential(row, id, out.len() + 1, "point")?;
+        let attachment = attachment(row, id)?;
+        let what = |col: &str| format!("{col} of point {id}");
+        // 12 words or more: MoorDyn reads `X Y Z Mass Volume FX FY FZ CdA Ca`.
+        let (cda, ca) = if row.words.len() >= 12 {
+            for (col, name) in [(7, "FX"), (8, "FY"), (9, "FZ")] {
+                if number(row, col, &what(name))? != 0.0 {
+                    return Err(DeckError::at(
+                        row.line,
+                        format!("point {id} has a constant force {name}; point forces are not supported"),
+                    ));
+                }
+            }
+            (10, 11)
+        } else {
+            (7, 8)
+        };
+        out.push(DeckPoint {
+            line: row.line,
+            id,
+            attachment,
+            position: [
+                number(row, 2, &what("X"))?,
+                number(row, 3, &what("Y"))?,
+                number(row, 4, &what("Z"))?,
+            ],
+            mass: non_negative(row, 5, &what("Mass"), false)?,
+            volume: non_negative(row, 6, &what("Volume"), false)?,
+            cda: non_negative(row, cda, &what("CdA"), false)?,
+            ca: non_negative(row, ca, &what("Ca"), false)?,
+        });
+    }
+    Ok(out)
+}
+
+/// The words of `MoorDyn2.cpp` for point types, compared upper-cased.
+fn attachment(row: &Row, id: usize) -> Result<Attachment, DeckError> {
+    let w = row.words[1];
+    let upper = w.to_ascii_uppercase();
+    let letters = upper.trim_end_matches(|c: char| c.is_ascii_digit());
+    let numbered = letters.len() < upper.len();
+    let kind = match letters {
+        "ANCHOR" | "FIXED" | "FIX" if !numbered => Attachment::Fixed,
+        "POINT" | "CONNECT" | "CON" | "FREE" if !numbered => Attachment::Free,
+        "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" if !numbered => Attachment::Coupled,
+        _ if letters.starts_with("BODY") => {
+            return Err(refused(row, id, w, "bodies are not supported"))
+        }
+        "TURBINE" | "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" => {
+            return Err(refused(
+                row,
+                id,
+                w,
+                "coupling to one of several turbines (FAST.Farm) is not supported; use Coupled",
+            ))
+        }
+        _ if letters.contains("PIN") => {
+            return Err(refused(row, id, w, "pinned attachments are not supported"))
+        }
+        _ => {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "point {id} has the unknown attachment \"{w}\"; known: Fixed (Anchor, Fix), \
+                     Free (Point, Connect, Con), Coupled (Vessel, Ves, Fairlead, Cpld)"
+                ),
+            ))
+        }
+    };
+    Ok(kind)
+}
+
+fn refused(row: &Row, id: usize, word: &str, why: &str) -> DeckError {
+    DeckError::at(
+        row.line,
+        format!("point {id} is attached to \"{word}\": {why}"),
+    )
+}
+
+/// A `LINES` row before its type and points are looked up.
+pub(crate) struct RawLine<'a> {
+    line: usize,
+    id: usize,
+    line_type: &'a str,
+    ends: [usize; 2],
+    unstretched_length: f64,
+    segments: usize,
+    outputs: &'a str,
+}
+
+const LINE_COLUMNS: &str = "ID LineType AttachA AttachB UnstrLen NumSegs Outputs";
+
+/// `LINES` rows.
+pub(crate) fn lines<'a>(s: &Section<'a>) -> Result<Vec<RawLine<'a>>, DeckError> {
+    let mut out = Vec::new();
+    for row in &s.rows {
+        columns(row, 7, "LINES", LINE_COLUMNS)?;
+        let id = count(row, 0, "the line ID")?;
+        sequential(row, id, out.len() + 1, "line")?;
+        let what = |col: &str| format!("{col} of line {id}");
+        let unstretched_length = number(row, 4, &what("UnstrLen"))?;
+        if unstretched_length <= 0.0 {
+            return Err(DeckError::at(
+                row.line,
+                format!("UnstrLen of line {id} is {unstretched_length}; it must be positive"),
+            ));
+        }
+        out.push(RawLine {
+            line: row.line,
+            id,
+            line_type: row.words[1],
+            ends: [end(row, id, 2, "A")?, end(row, id, 3, "B")?],
+            unstretched_length,
+            segments: count(row, 5, &what("NumSegs"))?,
+            outputs: row.words[6],
+        });
+    }
+    Ok(out)
+}
+
+/// An attachment of a line end: a point id, written `4`, `P4`, `Point4`,
+/// `C4` or `Con4` (`MoorDyn2.cpp`); `R1A`/`Rod1B` (rod ends) are refused.
+fn end(row: &Row, id: usize, col: usize, which: &str) -> Result<usize, DeckError> {
+    let w = row.words[col];
+    let upper = w.to_ascii_uppercase();
+    let digits_at = upper
+        .find(|c: char| c.is_ascii_digit())
+        .unwrap_or(upper.len());
+    let (letters, rest) = upper.split_at(digits_at);
+    let digits_end = rest
+        .find(|c: char| !c.is_ascii_digit())
+        .unwrap_or(rest.len());
+    let (digits, tail) = rest.split_at(digits_end);
+    if matches!(letters, "R" | "ROD") {
+        return Err(DeckError::at(
+            row.line,
+            format!("Attach{which} of line {id} is \"{w}\", a rod end: rods are not supported"),
+        ));
+    }
+    let point = matches!(letters, "" | "C" | "CON" | "P" | "POINT") && tail.is_empty();
+    match digits.parse::<usize>() {
+        Ok(n) if point && n >= 1 => Ok(n),
+        _ => Err(DeckError::at(
+            row.line,
+            format!(
+                "Attach{which} of line {id} is \"{w}\"; expected a point ID such as 4 or P4 \
+                 (columns: {LINE_COLUMNS})"
+            ),
+        )),
+    }
+}
+
+/// Lines with their types and points looked up.
+pub(crate) fn link_lines(
+    raw: Vec<RawLine>,
+    types: &[LineType],
+    points: &[super::DeckPoint],
+) -> Result<Vec<DeckLine>, DeckError> {
+    if raw.is_empty() {
+        return Err(DeckError::whole(
+            "the deck defines no lines (a LINES section with at least one row is required)",
+        ));
+    }
+    let mut out = Vec::new();
+    for l in raw {
+        let Some(type_index) = types.iter().position(|t| t.name == l.line_type) else {
+            let known: Vec<&str> = types.iter().map(|t| t.name.as_str()).collect();
+            let known = if known.is_empty() {
+                "none".to_string()
+            } else {
+                known.join(", ")
+            };
+            return Err(DeckError::at(
+                l.line,
+                format!(
+                    "line {} uses line type \"{}\", which LINE TYPES does not define; known: {known}",
+                    l.id, l.line_type
+                ),
+            ));
+        };
+        for (end, p) in ["A", "B"].into_iter().zip(l.ends) {
+            if p > points.len() {
+                return Err(DeckError::at(
+                    l.line,
+                    format!(
+                        "end {end} of line {} is attached to point {p}, which POINTS does not \
+                         define ({} points)",
+                        l.id,
+                        points.len()
+                    ),
+                ));
+            }
+        }
+        if l.ends[0] == l.ends[1] {
+            return Err(DeckError::at(
+                l.line,
+                format!(
+                    "both ends of line {} are attached to point {}",
+                    l.id, l.ends[0]
+                ),
+            ));
+        }
+        out.push(DeckLine {
+            line: l.line,
+            id: l.id,
+            line_type: l.line_type.to_string(),
+            type_index,
+            end_a: l.ends[0],
+            end_b: l.ends[1],
+            unstretched_length: l.unstretched_length,
+            segments: l.segments,
+            outputs: l.outputs.to_string(),
+        });
+    }
+    Ok(out)
+}
+
+/// Sections stancf cannot represent are accepted only empty; the first
+/// data row is refused.
+pub(crate) fn refuse_rows(s: &Section, kind: SectionKind) -> Result<(), DeckError> {
+    let Some(row) = s.rows.first() else {
+        return Ok(());
+    };
+    let why = match kind {
+        SectionKind::RodTypes | SectionKind::Rods => "rods are not supported",
+        SectionKind::Bodies => "bodies are not supported",
+        SectionKind::Failure => "line failures are not supported",
+        SectionKind::Control => "line length control is not supported",
+        SectionKind::ExternalLoads => "external loads are not supported",
+        SectionKind::SyropeIc => "the Syrope polyester model is not supported",
+        _ => "this section is not supported",
+    };
+    Err(DeckError::at(
+        row.line,
+        format!("{} (section {} at line {})", why, kind.title(), s.header),
+    ))
+}

@@ -1,0 +1,439 @@
+//! The run of a system of lines (docs/interface.md, "Systems"): the
+//! static equilibrium from the lines' catenaries (a static analysis, or
+//! the start of a dynamic one with `analysis.initial = "static"`), then
+//! the time stepping; results per line, per point and per line end.
+
+mod writers;
+
+use super::summary::{error_json, say, vec3};
+use super::{io_err, Place, RunOptions};
+use crate::output::{json_num, write_atomic};
+use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
+use crate::Failure;
+use serde_json::{json, Value};
+use stancf::error::Sig;
+use stancf::system::{
+    catenary_states, straight_states, EndForce, System, SystemSimulation, SystemStatics,
+};
+use stancf::{energies, SolverError};
+use std::ops::ControlFlow;
+use std::path::Path;
+use std::time::Instant;
+use writers::{SystemRow, SystemWriters};
+
+/// How the run went: the largest tension at each line end, counts, the
+/// failure or interruption.
+struct Outcome {
+    max_tension: Vec<[f64; 2]>,
+    steps: usize,
+    iterations: usize,
+    increments: usize,
+    t: f64,
+    failure: Option<SolverError>,
+    interrupted: bool,
+}
+
+impl Outcome {
+    fn record_tensions(&mut self, ends: &[[Option<EndForce>; 2]]) {
+        for (m, e) in self.max_tension.iter_mut().zip(ends) {
+            for k in 0..2 {
+                if let Some(f) = e[k] {
+                    m[k] = m[k].max(f.tension());
+                }
+            }
+        }
+    }
+}
+
+/// A system run into `place`; on success, the text to print.
+pub(super) fn run_system(
+    path: &Path,
+    place: &Place,
+    opts: &RunOptions,
+    sc: SystemScenario,
+) -> Result<String, Failure> {
+    let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    let system = sc.system().map_err(input)?;
+    for n in &sc.notes {
+        eprintln!("warning: {n}");
+    }
+    if sc.analysis.kind == AnalysisKind::Dynamic {
+        if let Some(stable) = crate::check_system::stable_step(&sc, &system) {
+            if sc.analysis.time_step > stable {
+                eprintln!(
+                    "warning: analysis.time_step: {} s is above the stable step of P2 for the \
+                     stiffest line ({} s, see `stancf check`): the run may grow unstable",
+                    Sig(sc.analysis.time_step),
+                    Sig(stable)
+                );
+            }
+        }
+    }
+    let line_ids: Vec<i64> = sc.lines.iter().map(|l| l.id).collect();
+    let point_ids: Vec<i64> = sc.points.iter().map(|p| p.id).collect();
+    let clock = Instant::now();
+    let mut outcome = Outcome {
+        max_tension: vec![[0.0; 2]; sc.lines.len()],
+        steps: 0,
+        iterations: 0,
+        increments: 0,
+        t: 0.0,
+        failure: None,
+        interrupted: false,
+    };
+    let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
+    let mut static_solve = if statics {
+        Some(
+            SystemStatics::new(
+                system.clone(),
+                catenary_states(&system),
+                sc.analysis.static_settings(),
+            )
+            .map_err(input)?,
+        )
+    } else {
+        None
+    };
+    // Built before anything is written: it refuses what it cannot run.
+    let mut sim = if sc.analysis.kind == AnalysisKind::Dynamic {
+        let start = straight_states(&system);
+        Some(
+            SystemSimulation::new(system.clone(), start, sc.analysis.step_settings())
+                .map_err(input)?,
+        )
+    } else {
+        None
+    };
+    let mut writers =
+        SystemWriters::create(place.dir, &line_ids, &point_ids).map_err(io_err(place.shown))?;
+    let mut from_static = false;
+    if let Some(st) = static_solve.as_mut() {
+        solve_statics(st, opts, &mut outcome);
+        if outcome.failure.is_some() || outcome.interrupted {
+            sim = None;
+        } else {
+            let t = if sc.analysis.kind == AnalysisKind::Static {
+                1.0
+            } else {
+                0.0
+            };
+            let row = static_row(st, t);
+            outcome.record_tensions(&row.ends);
+            writers.write(&row).map_err(io_err(place.shown))?;
+            if sim.is_some() {
+                let states = st.line_states();
+                sim = Some(
+                    SystemSimulation::new(system, states, sc.analysis.step_settings())
+                        .map_err(input)?,
+                );
+                from_static = true;
+            }
+        }
+    }
+    if let Some(s) = sim.as_mut() {
+        if !from_static {
+            writers
+                .write(&dynamic_row(s, false))
+                .map_err(io_err(place.shown))?;
+        }
+        step_through(s, &sc, opts, &mut writers, &mut outcome).map_err(io_err(place.shown))?;
+    }
+    writers.commit().map_err(io_err(place.shown))?;
+    let wall = clock.elapsed().as_secs_f64();
+    write_summary(
+        place.dir,
+        &sc,
+        &outcome,
+        wall,
+        sim.as_ref(),
+        static_solve.as_ref(),
+    )?;
+    let shown = place.shown.display();
+    if outcome.interrupted {
+        return Err(Failure::Interrupted(format!(
+            "{}: interrupted; results up to t = {} s are in {shown}",
+            path.display(),
+            Sig(outcome.t)
+        )));
+    }
+    if let Some(f) = &outcome.failure {
+        let kept = if outcome.steps > 0 {
+            format!("results up to t = {} s are in {shown}", Sig(outcome.t))
+        } else {
+            format!("no equilibrium was reached; {shown} holds the result files' headers")
+        };
+        return Err(Failure::Solver(format!("{}: {f}; {kept}", path.display())));
+    }
+    if opts.quiet {
+        return Ok(String::new());
+    }
+    Ok(report(&sc, &outcome, wall, place))
+}
+
+/// Follows the static path to the equilibrium; a failure or a cancel is
+/// kept in `outcome`.
+fn solve_statics(st: &mut SystemStatics, opts: &RunOptions, outcome: &mut Outcome) {
+    let mut interrupted = false;
+    let mut increments = 0;
+    let mut iterations = 0;
+    let result = st.solve(|_, inc| {
+        increments += 1;
+        iterations += inc.iterations;
+        if opts.cancelled() {
+            interrupted = true;
+            return ControlFlow::Break(());
+        }
+        ControlFlow::Continue(())
+    });
+    outcome.increments = increments;
+    outcome.iterations += iterations;
+    outcome.interrupted = interrupted;
+    if let Err(f) = result {
+        outcome.failure = Some(f);
+    }
+}
+
+/// Steps to the end of the analysis, writing every `output.every`-th
+/// step and the last; a solver failure or a cancel ends it early.
+fn step_through(
+    sim: &mut SystemSimulation,
+    sc: &SystemScenario,
+    opts: &RunOptions,
+    writers: &mut SystemWriters,
+    outcome: &mut Outcome,
+) -> std::io::Result<()> {
+    let a = &sc.analysis;
+    let steps = (a.duration / a.time_step).round().max(1.0) as usize;
+    let mut last_written = 0;
+    for k in 1..=steps {
+        match sim.step() {
+            Ok(rep) => {
+                outcome.steps = k;
+                outcome.iterations += rep.newton.iterations;
+                outcome.t = sim.time();
+                let row = dynamic_row(sim, true);
+                outcome.record_tensions(&row.ends);
+                if k % sc.output_every == 0 || k == steps {
+                    let mut row = row;
+                    row.iterations = rep.newton.iterations;
+                    row.residual = rep.newton.residual;
+                    writers.write(&row)?;
+                    last_written = k;
+                }
+            }
+            Err(f) => {
+                outcome.failure = Some(f);
+                break;
+            }
+        }
+        if opts.cancelled() {
+            outcome.interrupted = true;
+            break;
+        }
+    }
+    if outcome.steps > last_written {
+        writers.write(&dynamic_row(sim, true))?;
+    }
+    Ok(())
+}
+
+/// The row of a system simulation's current state (`forces`: the end
+/// forces of the last step; none before the first).
+fn dynamic_row(sim: &SystemSimulation, forces: bool) -> SystemRow<'_> {
+    let system = sim.system();
+    let lines = sim.lines().iter().map(|l| (l.model(), l.state())).collect();
+    let points = (0..system.points().len())
+        .map(|p| {
+            let (x, v) = sim.point_state(p);
+            (x, v, if forces { sim.point_force(p) } else { [0.0; 3] })
+        })
+        .collect();
+    let ends = ends_of(system, |i| sim.end_forces(i), forces);
+    let mut en = [0.0; 3];
+    for l in sim.lines() {
+        let e = l.energies();
+        en[0] += e.kinetic;
+        en[1] += e.strain;
+        en[2] += e.gravity;
+    }
+    add_point_energies(system, |p| sim.point_state(p), &mut en);
+    SystemRow {
+        t: sim.time(),
+        lines,
+        points,
+        ends,
+        energies: en,
+        iterations: 0,
+        residual: 0.0,
+    }
+}
+
+/// The row of a static solve's equilibrium, at time `t`.
+fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
+    let system = st.system();
+    let lines = system
+        .lines()
+        .iter()
+        .enumerate()
+        .map(|(i, l)| (&l.model, st.line_state(i)))
+        .collect();
+    let points = (0..system.points().len())
+        .map(|p| (st.point_position(p), [0.0; 3], st.point_force(p)))
+        .collect();
+    let ends = ends_of(system, |i| st.end_forces(i), true);
+    let mut en = [0.0; 3];
+    for (i, l) in system.lines().iter().enumerate() {
+        let e = energies(&l.model, st.line_state(i));
+        en[1] += e.strain;
+        en[2] += e.gravity;
+    }
+    add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut en);
+    SystemRow {
+        t,
+        lines,
+        points,
+        ends,
+        energies: en,
+        iterations: 0,
+        residual: 0.0,
+    }
+}
+
+/// The end forces of every line, None at loose ends (and everywhere
+/// without `forces`).
+fn ends_of(
+    system: &System,
+    forces_of: impl Fn(usize) -> [EndForce; 2],
+    forces: bool,
+) -> Vec<[Option<EndForce>; 2]> {
+    system
+        .lines()
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let f = forces_of(i);
+            std::array::from_fn(|k| {
+                (forces && l.ends[k] != stancf::system::End::Loose).then_some(f[k])
+            })
+        })
+        .collect()
+}
+
+/// Adds the free points' kinetic energy 1/2 m v^2 and the potential
+/// -m g . x of their weight to [kinetic, strain, gravity].
+fn add_point_energies(
+    system: &System,
+    state: impl Fn(usize) -> ([f64; 3], [f64; 3]),
+    en: &mut [f64; 3],
+) {
+    let g = system.gravity();
+    for (p, point) in system.points().iter().enumerate() {
+        if !point.is_free() {
+            continue;
+        }
+        let (x, v) = state(p);
+        en[0] += 0.5 * point.mass * v.iter().map(|c| c * c).sum::<f64>();
+        en[2] -= point.mass * (0..3).map(|k| g[k] * x[k]).sum::<f64>();
+    }
+}
+
+/// summary.json of a system run.
+fn write_summary(
+    dir: &Path,
+    sc: &SystemScenario,
+    outcome: &Outcome,
+    wall: f64,
+    sim: Option<&SystemSimulation>,
+    statics: Option<&SystemStatics>,
+) -> Result<(), Failure> {
+    let lines: Vec<Value> = sc
+        .lines
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            json!({
+                "id": l.id,
+                "type": sc.line_types[l.line_type].name,
+                "length": json_num(l.length),
+                "elements": l.elements,
+                "element": l.element_type.name(),
+                "bending_stiffness": json_num(sc.bending_stiffness(i)),
+                "max_tension_a": json_num(outcome.max_tension[i][0]),
+                "max_tension_b": json_num(outcome.max_tension[i][1]),
+            })
+        })
+        .collect();
+    let points: Vec<Value> = sc
+        .points
+        .iter()
+        .enumerate()
+        .map(|(p, pt)| {
+            let position = match (sim, statics) {
+                (Some(s), _) => s.point_state(p).0,
+                (None, Some(st)) => st.point_position(p),
+                _ => pt.position,
+            };
+            json!({
+                "id": pt.id,
+                "type": match pt.kind {
+                    crate::scenario::PointType::Fixed => "fixed",
+                    crate::scenario::PointType::Free => "free",
+                    crate::scenario::PointType::Coupled => "coupled",
+                },
+                "position_final": vec3(position),
+            })
+        })
+        .collect();
+    let summary = json!({
+        "title": sc.title,
+        "analysis": match sc.analysis.kind {
+            AnalysisKind::Dynamic => "dynamic",
+            AnalysisKind::Static => "static",
+        },
+        "system": true,
+        "initial": match sc.initial {
+            InitialShape::Static => "static",
+            InitialShape::Reference => "reference",
+        },
+        "lines": lines,
+        "points": points,
+        "steps": outcome.steps,
+        "t_final": json_num(outcome.t),
+        "load_increments": outcome.increments,
+        "iterations": outcome.iterations,
+        "wall_time_s": json_num(wall),
+        "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
+    });
+    let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
+    write_atomic(dir, "summary.json", text.as_bytes()).map_err(io_err(dir))
+}
+
+/// The printed report: the largest end tensions and where the results are.
+fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &Place) -> String {
+    let mut r = String::new();
+    say!(
+        r,
+        "{}: {} line{}, {} point{}; {} in {:.2} s",
+        sc.title,
+        sc.lines.len(),
+        if sc.lines.len() == 1 { "" } else { "s" },
+        sc.points.len(),
+        if sc.points.len() == 1 { "" } else { "s" },
+        match sc.analysis.kind {
+            AnalysisKind::Static => format!("equilibrium in {} increments", outcome.increments),
+            AnalysisKind::Dynamic => format!("{} steps to t = {} s", outcome.steps, Sig(outcome.t)),
+        },
+        wall
+    );
+    for (l, m) in sc.lines.iter().zip(&outcome.max_tension) {
+        say!(
+            r,
+            "line {}: largest tension {} N at end A, {} N at end B",
+            l.id,
+            Sig(m[0]),
+            Sig(m[1])
+        );
+    }
+    say!(r, "results in {}", place.shown.display());
+    r
+}

@@ -1,0 +1,189 @@
+//! The streamed result files of a system (docs/interface.md, "Systems"):
+//! `lines/<id>/nodes.csv` and `lines/<id>/stress.csv` in the single
+//! cable's columns, `points.csv`, `tensions.csv` and `history.csv`.
+
+use crate::output::{AtomicFile, Num};
+use crate::run::writers::STRESS_POINTS_PER_ELEMENT;
+use stancf::model::SLOT_R_X;
+use stancf::observe::{stress_samples, StressSample};
+use stancf::system::EndForce;
+use stancf::{Model, State};
+use std::io::Write;
+use std::path::Path;
+
+/// One written moment of a system.
+pub(super) struct SystemRow<'a> {
+    pub t: f64,
+    /// Each line's model and state.
+    pub lines: Vec<(&'a Model, &'a State)>,
+    /// Each point's position, velocity and the net force of its lines.
+    pub points: Vec<([f64; 3], [f64; 3], [f64; 3])>,
+    /// Each line's end forces (A, B; None for a loose end).
+    pub ends: Vec<[Option<EndForce>; 2]>,
+    /// Kinetic, strain and gravity energies of lines and points.
+    pub energies: [f64; 3],
+    pub iterations: usize,
+    pub residual: f64,
+}
+
+/// The files of a system run.
+pub(super) struct SystemWriters {
+    /// Per line: nodes.csv, stress.csv.
+    lines: Vec<(AtomicFile, AtomicFile)>,
+    line_ids: Vec<i64>,
+    point_ids: Vec<i64>,
+    points: AtomicFile,
+    tensions: AtomicFile,
+    history: AtomicFile,
+    samples: Vec<StressSample>,
+}
+
+impl SystemWriters {
+    pub(super) fn create(dir: &Path, line_ids: &[i64], point_ids: &[i64]) -> std::io::Result<Self> {
+        let mut lines = Vec::with_capacity(line_ids.len());
+        for id in line_ids {
+            let sub = format!("lines/{id}");
+            std::fs::create_dir_all(dir.join(&sub))?;
+            let mut nodes = AtomicFile::create(dir, &format!("{sub}/nodes.csv"))?;
+            let mut stress = AtomicFile::create(dir, &format!("{sub}/stress.csv"))?;
+            writeln!(nodes.writer(), "t,node,x,y,z,dx_ds,dy_ds,dz_ds")?;
+            writeln!(stress.writer(), "t,s,axial_stress,curvature,element")?;
+            lines.push((nodes, stress));
+        }
+        let mut points = AtomicFile::create(dir, "points.csv")?;
+        writeln!(points.writer(), "t,point,x,y,z,vx,vy,vz,fx,fy,fz")?;
+        let mut tensions = AtomicFile::create(dir, "tensions.csv")?;
+        writeln!(tensions.writer(), "t,line,end,fx,fy,fz,tension")?;
+        let mut history = AtomicFile::create(dir, "history.csv")?;
+        writeln!(
+            history.writer(),
+            "t,kinetic,strain,gravity,total,iterations,residual"
+        )?;
+        Ok(SystemWriters {
+            lines,
+            line_ids: line_ids.to_vec(),
+            point_ids: point_ids.to_vec(),
+            points,
+            tensions,
+            history,
+            samples: Vec::new(),
+        })
+    }
+
+    /// Writes one moment. Refuses non-finite values (none may reach a
+    /// file).
+    pub(super) fn write(&mut self, row: &SystemRow) -> std::io::Result<()> {
+        let bad = |what: &str| {
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!("non-finite {what} at t = {}", row.t),
+            )
+        };
+        let t = Num(row.t);
+        for (i, (model, state)) in row.lines.iter().enumerate() {
+            if !state.e.iter().all(|v| v.is_finite()) {
+                return Err(bad(&format!("position of line {}", self.line_ids[i])));
+            }
+            stress_samples(model, state, STRESS_POINTS_PER_ELEMENT, &mut self.samples);
+            if !self
+                .samples
+                .iter()
+                .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite())
+            {
+                return Err(bad(&format!("stress of line {}", self.line_ids[i])));
+            }
+            let (nodes, stress) = &mut self.lines[i];
+            let w = nodes.writer();
+            for j in 0..model.nodes() {
+                let r = model.node_position(&state.e, j);
+                let o = model.coordinate(j, SLOT_R_X, 0);
+                let d = &state.e[o..o + 3];
+                writeln!(
+                    w,
+                    "{t},{j},{},{},{},{},{},{}",
+                    Num(r[0]),
+                    Num(r[1]),
+                    Num(r[2]),
+                    Num(d[0]),
+                    Num(d[1]),
+                    Num(d[2])
+                )?;
+            }
+            let w = stress.writer();
+            for s in &self.samples {
+                writeln!(
+                    w,
+                    "{t},{},{},{},{}",
+                    Num(s.s),
+                    Num(s.axial_stress),
+                    Num(s.curvature),
+                    s.element
+                )?;
+            }
+        }
+        for (p, (x, v, f)) in row.points.iter().enumerate() {
+            if ![x, v, f].iter().all(|a| a.iter().all(|c| c.is_finite())) {
+                return Err(bad(&format!("state of point {}", self.point_ids[p])));
+            }
+            writeln!(
+                self.points.writer(),
+                "{t},{},{},{},{},{},{},{},{},{},{}",
+                self.point_ids[p],
+                Num(x[0]),
+                Num(x[1]),
+                Num(x[2]),
+                Num(v[0]),
+                Num(v[1]),
+                Num(v[2]),
+                Num(f[0]),
+                Num(f[1]),
+                Num(f[2])
+            )?;
+        }
+        for (i, ends) in row.ends.iter().enumerate() {
+            for (name, end) in ["A", "B"].iter().zip(ends) {
+                let Some(e) = end else { continue };
+                if !e.force.iter().all(|c| c.is_finite()) {
+                    return Err(bad(&format!("end force of line {}", self.line_ids[i])));
+                }
+                writeln!(
+                    self.tensions.writer(),
+                    "{t},{},{name},{},{},{},{}",
+                    self.line_ids[i],
+                    Num(e.force[0]),
+                    Num(e.force[1]),
+                    Num(e.force[2]),
+                    Num(e.tension())
+                )?;
+            }
+        }
+        let [kinetic, strain, gravity] = row.energies;
+        if ![kinetic, strain, gravity, row.residual]
+            .iter()
+            .all(|v| v.is_finite())
+        {
+            return Err(bad("energy or residual"));
+        }
+        writeln!(
+            self.history.writer(),
+            "{t},{},{},{},{},{},{}",
+            Num(kinetic),
+            Num(strain),
+            Num(gravity),
+            Num(kinetic + strain + gravity),
+            row.iterations,
+            Num(row.residual)
+        )?;
+        Ok(())
+    }
+
+    pub(super) fn commit(self) -> std::io::Result<()> {
+        for (nodes, stress) in self.lines {
+            nodes.commit()?;
+            stress.commit()?;
+        }
+        self.points.commit()?;
+        self.tensions.commit()?;
+        self.history.commit()
+    }
+}

@@ -1,0 +1,388 @@
+//! A system of lines joined at points (docs/interface.md, "Systems"):
+//! `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` and
+//! `[[motions]]`, validated into a [`SystemScenario`] that builds the
+//! library's [`stancf::system::System`].
+
+use super::analysis::{self, Others};
+use super::context::Ctx;
+use super::raw::{RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
+use super::{Analysis, ScenarioError};
+use stancf::constraints::Oscillation;
+use stancf::{ElementType, Measures};
+
+/// A line type: the section of a line (MoorDyn's LINE TYPES row).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineType {
+    pub name: String,
+    /// Diameter (m): the area pi d^2 / 4 the mass and stiffness are
+    /// spread over, and the diameter water sees.
+    pub diameter: f64,
+    /// Mass per length (kg/m).
+    pub mass_per_length: f64,
+    /// Axial stiffness EA (N).
+    pub ea: f64,
+    /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
+    pub ei: f64,
+    /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's
+    /// convention).
+    pub ba: f64,
+    /// Normal and axial drag and added mass coefficients (used in water).
+    pub cd: f64,
+    pub ca: f64,
+    pub cdax: f64,
+    pub caax: f64,
+}
+
+/// What holds a point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointType {
+    Fixed,
+    Free,
+    Coupled,
+}
+
+/// A point of the system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemPoint {
+    pub id: i64,
+    pub kind: PointType,
+    pub position: [f64; 3],
+    pub mass: f64,
+    pub force: [f64; 3],
+    /// The motion of a coupled point (none: it stays put).
+    pub motion: Oscillation,
+}
+
+/// A line of the system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemLine {
+    pub id: i64,
+    /// Index into the line types.
+    pub line_type: usize,
+    /// Unstretched length (m).
+    pub length: f64,
+    pub elements: usize,
+    pub element_type: ElementType,
+    /// The points (indices) ends A and B attach to; None: loose.
+    pub ends: [Option<usize>; 2],
+}
+
+/// Where a dynamic run of a system starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InitialShape {
+    /// Every line straight between its end points, at rest.
+    Reference,
+    /// The static equilibrium (solved first).
+    Static,
+}
+
+/// A validated system scenario.
+#[derive(Clone, Debug)]
+pub struct SystemScenario {
+    pub title: String,
+    pub line_types: Vec<LineType>,
+    pub points: Vec<SystemPoint>,
+    pub lines: Vec<SystemLine>,
+    /// Acceleration of gravity (m/s^2), default [0, 0, -9.81] (z up).
+    pub gravity: [f64; 3],
+    pub analysis: Analysis,
+    pub measures: Measures,
+    pub initial: InitialShape,
+    pub output_every: usize,
+    pub notes: Vec<String>,
+}
+
+/// The system parts of a scenario file, in the file's order.
+pub(super) fn system_scenario(
+    ctx: &Ctx,
+    raw: RawScenario,
+    title: String,
+) -> Result<SystemScenario, ScenarioError> {
+    for (present, key) in [
+        (raw.cable.is_some(), "cable"),
+        (raw.material.is_some(), "material"),
+        (!raw.constraints.is_empty(), "constraints"),
+        (!raw.loads.is_empty(), "loads"),
+        (!raw.initial_velocity.is_empty(), "initial_velocity"),
+    ] {
+        if present {
+            return Err(ctx.err(
+                key,
+                "belongs to a single-cable scenario; this file describes a system \
+                 ([system], [[line_types]], [[points]], [[lines]]): give the sections \
+                 of a line through its line type and its points",
+            ));
+        }
+    }
+    let rs = raw.system.unwrap_or_default();
+    if rs.moordyn.is_some() {
+        return Err(ctx.err(
+            "system.moordyn",
+            "reading a MoorDyn deck from a scenario is not available in this version",
+        ));
+    }
+    let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
+    let line_types = line_types(ctx, &raw.line_types)?;
+    let mut points = points(ctx, &raw.points)?;
+    let lines = lines(ctx, &raw.lines, &line_types, &points)?;
+    motions(ctx, &raw.motions, &mut points)?;
+    let others = Others {
+        initial_velocity: false,
+        constraints: true,
+    };
+    let initial_key = raw.analysis.as_ref().and_then(|a| a.initial.clone());
+    let axial_given = raw
+        .analysis
+        .as_ref()
+        .is_some_and(|a| a.axial_strain.is_some());
+    let (analysis, mut measures, mut notes) = analysis::analysis(ctx, raw.analysis, others)?;
+    // Lines are elastic in the engineering strain (T = EA (|r'| - 1)),
+    // as MoorDyn's and the elastic catenary's are, unless the file says.
+    if !axial_given {
+        measures.axial_strain = stancf::AxialStrain::Engineering;
+    }
+    let initial = match ctx.choice(
+        "analysis.initial",
+        initial_key.as_deref(),
+        "reference",
+        &["reference", "static"],
+    )? {
+        "static" => InitialShape::Static,
+        _ => InitialShape::Reference,
+    };
+    for (i, t) in line_types.iter().enumerate() {
+        if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
+            notes.push(format!(
+                "line_types[{i}]: cd, ca, cdax and caax act in water, which this version does \
+                 not model: unused"
+            ));
+        }
+    }
+    let output_every = analysis::output_every(ctx, raw.output)?;
+    Ok(SystemScenario {
+        title,
+        line_types,
+        points,
+        lines,
+        gravity,
+        analysis,
+        measures,
+        initial,
+        output_every,
+        notes,
+    })
+}
+
+/// `[[line_types]]`: `name` (required, unique), `diameter` (> 0),
+/// `mass_per_length` (> 0), `ea` (> 0), each required; `ei` (>= 0,
+/// default 0), `ba` (default 0; < 0: minus a damping ratio), `cd`, `ca`,
+/// `cdax`, `caax` (>= 0, default 0).
+fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioError> {
+    if raw.is_empty() {
+        return Err(ctx.err("line_types", "a system needs at least one line type"));
+    }
+    let mut out: Vec<LineType> = Vec::with_capacity(raw.len());
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("line_types[{i}].{k}");
+        let name = ctx.required(&key("name"), r.name.clone())?;
+        if out.iter().any(|t| t.name == name) {
+            return Err(ctx.err(&key("name"), format!("\"{name}\" is defined twice")));
+        }
+        let optional = |k: &str, v: Option<f64>| match v {
+            Some(v) => ctx.non_negative(&key(k), v),
+            None => Ok(0.0),
+        };
+        out.push(LineType {
+            diameter: ctx.required_positive(&key("diameter"), r.diameter)?,
+            mass_per_length: ctx.required_positive(&key("mass_per_length"), r.mass_per_length)?,
+            ea: ctx.required_positive(&key("ea"), r.ea)?,
+            ei: optional("ei", r.ei)?,
+            ba: match r.ba {
+                Some(v) => ctx.finite(&key("ba"), v)?,
+                None => 0.0,
+            },
+            cd: optional("cd", r.cd)?,
+            ca: optional("ca", r.ca)?,
+            cdax: optional("cdax", r.cdax)?,
+            caax: optional("caax", r.caax)?,
+            name,
+        });
+    }
+    Ok(out)
+}
+
+/// `[[points]]`: `id` (required, unique), `type` ("fixed", "free" or
+/// "coupled", required), `position` (required); a free point's `mass`
+/// (>= 0, default 0) and `force` (default 0).
+fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError> {
+    let mut out: Vec<SystemPoint> = Vec::with_capacity(raw.len());
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("points[{i}].{k}");
+        let id = ctx.required(&key("id"), r.id)?;
+        if out.iter().any(|p| p.id == id) {
+            return Err(ctx.err(&key("id"), format!("point {id} is defined twice")));
+        }
+        let kind = match ctx.choice(
+            &key("type"),
+            Some(ctx.required(&key("type"), r.kind.as_deref())?),
+            "",
+            &["fixed", "free", "coupled"],
+        )? {
+            "fixed" => PointType::Fixed,
+            "free" => PointType::Free,
+            _ => PointType::Coupled,
+        };
+        let position = ctx.vector(
+            &key("position"),
+            &ctx.required(&key("position"), r.position.clone())?,
+        )?;
+        if kind != PointType::Free && (r.mass.is_some() || r.force.is_some()) {
+            let k = if r.mass.is_some() { "mass" } else { "force" };
+            return Err(ctx.err(
+                &key(k),
+                "only a free point carries a mass or a force (a fixed or coupled point's \
+                 position is given)",
+            ));
+        }
+        out.push(SystemPoint {
+            id,
+            kind,
+            position,
+            mass: match r.mass {
+                Some(m) => ctx.non_negative(&key("mass"), m)?,
+                None => 0.0,
+            },
+            force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
+            motion: Oscillation::NONE,
+        });
+    }
+    Ok(out)
+}
+
+/// `[[lines]]`: `id` (required, unique), `type` (a line type's name,
+/// required), `length` (> 0, required), `elements` (1..=1000000,
+/// required), `element` ("SAC-2", the default, or "SAC-3"), `a` and `b`
+/// (point ids; a missing one leaves that end loose, not both).
+fn lines(
+    ctx: &Ctx,
+    raw: &[RawLine],
+    types: &[LineType],
+    points: &[SystemPoint],
+) -> Result<Vec<SystemLine>, ScenarioError> {
+    if raw.is_empty() {
+        return Err(ctx.err("lines", "a system needs at least one line"));
+    }
+    let mut out: Vec<SystemLine> = Vec::with_capacity(raw.len());
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("lines[{i}].{k}");
+        let id = ctx.required(&key("id"), r.id)?;
+        if out.iter().any(|l| l.id == id) {
+            return Err(ctx.err(&key("id"), format!("line {id} is defined twice")));
+        }
+        let type_name = ctx.required(&key("type"), r.line_type.as_deref())?;
+        let Some(line_type) = types.iter().position(|t| t.name == type_name) else {
+            let known: Vec<&str> = types.iter().map(|t| t.name.as_str()).collect();
+            return Err(ctx.err(
+                &key("type"),
+                format!(
+                    "line type \"{}\" is not defined (known: {})",
+                    super::clip(type_name, 60),
+                    known.join(", ")
+                ),
+            ));
+        };
+        let length = ctx.required_positive(&key("length"), r.length)?;
+        let elements = ctx.count(
+            &key("elements"),
+            ctx.required(&key("elements"), r.elements)?,
+            1,
+            1_000_000,
+        )?;
+        let element_type = match ctx.choice(
+            &key("element"),
+            r.element.as_deref(),
+            "SAC-2",
+            &["SAC-2", "SAC-3"],
+        )? {
+            "SAC-3" => ElementType::Sac3,
+            _ => ElementType::Sac2,
+        };
+        let end = |k: &str, v: Option<i64>| -> Result<Option<usize>, ScenarioError> {
+            let Some(id) = v else { return Ok(None) };
+            match points.iter().position(|p| p.id == id) {
+                Some(p) => Ok(Some(p)),
+                None => Err(ctx.err(&key(k), format!("point {id} is not defined"))),
+            }
+        };
+        let ends = [end("a", r.a)?, end("b", r.b)?];
+        if ends == [None, None] {
+            return Err(ctx.err(
+                &key("a"),
+                "a line needs at least one end attached to a point (a and b are both missing)",
+            ));
+        }
+        if ends[0].is_some() && ends[0] == ends[1] {
+            return Err(ctx.err(&key("b"), "both ends are attached to the same point"));
+        }
+        out.push(SystemLine {
+            id,
+            line_type,
+            length,
+            elements,
+            element_type,
+            ends,
+        });
+    }
+    for (p, point) in points.iter().enumerate() {
+        let attached = out.iter().any(|l| l.ends.contains(&Some(p)));
+        if !attached {
+            return Err(ctx.err(
+                &format!("points[{p}]"),
+                format!("no line is attached to point {}", point.id),
+            ));
+        }
+    }
+    Ok(out)
+}
+
+/// `[[motions]]`: `point` (a coupled point's id, one motion each),
+/// `amplitude` (m, required), `period` (s, > 0, required), `phase`
+/// (degrees, default 0), `ramp` (s, >= 0, default 0):
+/// r(t) = r0 + f(t) amplitude sin(2 pi t / period + phase) (M30).
+fn motions(ctx: &Ctx, raw: &[RawMotion], points: &mut [SystemPoint]) -> Result<(), ScenarioError> {
+    let mut moved = vec![false; points.len()];
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("motions[{i}].{k}");
+        let id = ctx.required(&key("point"), r.point)?;
+        let Some(p) = points.iter().position(|p| p.id == id) else {
+            return Err(ctx.err(&key("point"), format!("point {id} is not defined")));
+        };
+        if points[p].kind != PointType::Coupled {
+            return Err(ctx.err(&key("point"), format!("point {id} is not a coupled point")));
+        }
+        if moved[p] {
+            return Err(ctx.err(&key("point"), format!("point {id} already has a motion")));
+        }
+        moved[p] = true;
+        if r.file.is_some() {
+            return Err(ctx.err(
+                &key("file"),
+                "motions tabulated in a file are not available in this version; give \
+                 amplitude, period, phase and ramp",
+            ));
+        }
+        let amplitude = ctx.vector(
+            &key("amplitude"),
+            &ctx.required(&key("amplitude"), r.amplitude.clone())?,
+        )?;
+        points[p].motion = Oscillation {
+            amplitude,
+            period: ctx.required_positive(&key("period"), r.period)?,
+            phase: ctx
+                .finite(&key("phase"), r.phase.unwrap_or(0.0))?
+                .to_radians(),
+            ramp: ctx.non_negative(&key("ramp"), r.ramp.unwrap_or(0.0))?,
+        };
+    }
+    Ok(())
+}

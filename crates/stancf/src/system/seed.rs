@@ -1,0 +1,120 @@
+//! Start shapes of a system's lines (docs/method.md §11.6): straight
+//! between the end points, or the elastic catenary through them, the
+//! seed of a static solve.
+
+use super::{End, System};
+use crate::catenary::{Catenary, CatenaryLine};
+use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
+
+/// A straight state of `model` from a to b, at rest at t = 0:
+/// r_j = a + (b - a) x_j / L, r_x = (b - a) / L, r_xx = 0 (stretched or
+/// compressed to the chord).
+pub fn straight_between(model: &Model, a: [f64; 3], b: [f64; 3]) -> State {
+    let len = model.cable.length;
+    let rx: [f64; 3] = std::array::from_fn(|k| (b[k] - a[k]) / len);
+    shaped(model, |x| {
+        (std::array::from_fn(|k| a[k] + rx[k] * x), rx, [0.0; 3])
+    })
+}
+
+/// The state at rest whose node j has (r, r_x, r_xx) = `shape(x_j)`.
+pub fn shaped(model: &Model, shape: impl Fn(f64) -> ([f64; 3], [f64; 3], [f64; 3])) -> State {
+    let dpn = model.dofs_per_node();
+    let vectors = model.element_type().vectors_per_node();
+    let mut e = vec![0.0; model.dofs()];
+    for j in 0..model.nodes() {
+        let (r, rx, rxx) = shape(model.node_coordinate(j));
+        for (slot, v) in [(SLOT_R, r), (SLOT_R_X, rx), (SLOT_R_XX, rxx)] {
+            if slot < vectors {
+                for k in 0..3 {
+                    e[coordinate(dpn, j, slot, k)] = v[k];
+                }
+            }
+        }
+    }
+    State {
+        t: 0.0,
+        v: vec![0.0; e.len()],
+        e,
+    }
+}
+
+/// Where line `line`'s ends start: at their points (at t = 0); a loose
+/// end hangs the line's length from the other along gravity (along -z
+/// without gravity).
+pub fn end_positions(system: &System, line: usize) -> ([f64; 3], [f64; 3]) {
+    let l = &system.lines()[line];
+    let at = |e: End| match e {
+        End::Point(p) => Some(system.points()[p].state_at(0.0).0),
+        End::Loose => None,
+    };
+    let g = system.gravity();
+    let gn = norm(g);
+    let down = if gn > 0.0 {
+        g.map(|c| c / gn)
+    } else {
+        [0.0, 0.0, -1.0]
+    };
+    let length = l.model.cable.length;
+    let hang = |from: [f64; 3]| -> [f64; 3] { std::array::from_fn(|k| from[k] + length * down[k]) };
+    match (at(l.ends[0]), at(l.ends[1])) {
+        (Some(a), Some(b)) => (a, b),
+        (Some(a), None) => (a, hang(a)),
+        (None, Some(b)) => (hang(b), b),
+        (None, None) => (l.model.cable.origin, hang(l.model.cable.origin)),
+    }
+}
+
+/// Every line straight between its end points ([`straight_between`],
+/// [`end_positions`]), with the constrained coordinates at their
+/// prescribed values and rates: the reference start of a system.
+pub fn straight_states(system: &System) -> Vec<State> {
+    (0..system.lines().len())
+        .map(|i| {
+            let model = &system.lines()[i].model;
+            let (a, b) = end_positions(system, i);
+            let mut s = straight_between(model, a, b);
+            model.apply_constraints(&mut s);
+            s
+        })
+        .collect()
+}
+
+/// The seed of a system's static solve (docs/method.md §11.6): each
+/// line the elastic catenary of its weight per length (rho A |g|) and
+/// EA through its end points ([`crate::catenary`]; node j takes r, r_x
+/// and r_xx of the catenary at its material coordinate). Where no
+/// catenary exists (a slack weightless line, a slack vertical one), the
+/// line starts straight between its ends.
+pub fn catenary_states(system: &System) -> Vec<State> {
+    let g = system.gravity();
+    (0..system.lines().len())
+        .map(|i| {
+            let model = &system.lines()[i].model;
+            let (a, b) = end_positions(system, i);
+            let section = model.material.section();
+            let line = CatenaryLine {
+                length: model.cable.length,
+                weight: section.rho_a * norm(model.gravity),
+                ea: section.ea,
+            };
+            let direction = if norm(model.gravity) > 0.0 {
+                model.gravity
+            } else {
+                g
+            };
+            let mut s = match Catenary::between(line, a, b, direction) {
+                Ok(c) if norm(direction) > 0.0 => shaped(model, |x| {
+                    (c.position(x), c.derivative(x), c.second_derivative(x))
+                }),
+                _ => straight_between(model, a, b),
+            };
+            model.apply_constraints(&mut s);
+            s
+        })
+        .collect()
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    v.iter().map(|c| c * c).sum::<f64>().sqrt()
+}
