@@ -18,12 +18,11 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
     let system = sc.system().map_err(input)?;
     if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static {
-        SystemStatics::new(
-            system.clone(),
-            catenary_states(&system),
-            sc.analysis.static_settings(),
-        )
-        .map_err(input)?;
+        let seeds = catenary_states(&system);
+        sc.check_submerged(&system, &seeds).map_err(|e| {
+            Failure::Input(format!("{}: {e} (the line's catenary)", path.display()))
+        })?;
+        SystemStatics::new(system.clone(), seeds, sc.analysis.static_settings()).map_err(input)?;
     }
     if sc.analysis.kind == AnalysisKind::Dynamic {
         SystemSimulation::new(

@@ -16,6 +16,7 @@ mod context;
 mod initial_velocity;
 mod loads;
 mod messages;
+mod moordyn;
 mod raw;
 mod system;
 mod system_model;
@@ -23,7 +24,11 @@ mod system_model;
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
-pub use system::{InitialShape, LineType, PointType, SystemLine, SystemPoint, SystemScenario};
+pub use moordyn::{deck_file_scenario, deck_scenario};
+pub use system::{
+    InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
+    Water,
+};
 pub use system_model::EI_FACTOR;
 
 use context::Ctx;
@@ -73,16 +78,23 @@ pub enum Input {
     System(SystemScenario),
 }
 
-/// Parses and validates the text of a scenario of either kind (a system
-/// when it has `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` or
-/// `[[motions]]`).
+/// Parses and validates the text of a scenario of either kind: a system
+/// when it is a MoorDyn v2 deck (dashed section headers) or a TOML file
+/// with `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` or
+/// `[[motions]]`; else a single cable.
 pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, ScenarioError> {
+    if crate::moordyn::looks_like_moordyn(text) {
+        let deck =
+            crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
+        let title = title_of(None, path);
+        return deck_scenario(&deck, file, title).map(Input::System);
+    }
     let ctx = Ctx { file };
     let raw: RawScenario =
         toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
     if raw.is_system() {
         let title = title_of(raw.title.clone(), path);
-        return system::system_scenario(&ctx, raw, title).map(Input::System);
+        return system::system_scenario(&ctx, raw, title, path).map(Input::System);
     }
     cable_scenario(&ctx, raw, path).map(Input::Cable)
 }

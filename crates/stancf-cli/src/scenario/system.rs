@@ -5,10 +5,11 @@
 
 use super::analysis::{self, Others};
 use super::context::Ctx;
-use super::raw::{RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
+use super::raw::{RawAnalysis, RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
 use super::{Analysis, ScenarioError};
 use stancf::constraints::Oscillation;
 use stancf::{ElementType, Measures};
+use std::path::Path;
 
 /// A line type: the section of a line (MoorDyn's LINE TYPES row).
 #[derive(Clone, Debug, PartialEq)]
@@ -49,8 +50,27 @@ pub struct SystemPoint {
     pub position: [f64; 3],
     pub mass: f64,
     pub force: [f64; 3],
+    /// Displaced volume (m^3): buoyancy in water.
+    pub volume: f64,
     /// The motion of a coupled point (none: it stays put).
     pub motion: Oscillation,
+}
+
+/// Still water around the system (from a MoorDyn deck): z up, the free
+/// surface at z = 0, the seabed at z = -depth.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Water {
+    pub depth: f64,
+    /// Density (kg/m^3).
+    pub density: f64,
+}
+
+/// An output channel of a MoorDyn deck, written to channels.csv.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputChannel {
+    /// The name as the deck writes it (MoorDyn's).
+    pub name: String,
+    pub channel: crate::moordyn::Channel,
 }
 
 /// A line of the system.
@@ -90,6 +110,10 @@ pub struct SystemScenario {
     pub initial: InitialShape,
     pub output_every: usize,
     pub notes: Vec<String>,
+    /// The water the lines hang in (None: air).
+    pub water: Option<Water>,
+    /// Output channels (from a MoorDyn deck).
+    pub channels: Vec<OutputChannel>,
 }
 
 /// The system parts of a scenario file, in the file's order.
@@ -97,6 +121,7 @@ pub(super) fn system_scenario(
     ctx: &Ctx,
     raw: RawScenario,
     title: String,
+    path: &Path,
 ) -> Result<SystemScenario, ScenarioError> {
     for (present, key) in [
         (raw.cable.is_some(), "cable"),
@@ -115,46 +140,52 @@ pub(super) fn system_scenario(
         }
     }
     let rs = raw.system.unwrap_or_default();
-    if rs.moordyn.is_some() {
-        return Err(ctx.err(
-            "system.moordyn",
-            "reading a MoorDyn deck from a scenario is not available in this version",
-        ));
+    if let Some(deck) = rs.moordyn.as_deref() {
+        for (present, key) in [
+            (rs.gravity.is_some(), "system.gravity"),
+            (!raw.line_types.is_empty(), "line_types"),
+            (!raw.points.is_empty(), "points"),
+            (!raw.lines.is_empty(), "lines"),
+        ] {
+            if present {
+                return Err(ctx.err(
+                    key,
+                    "the MoorDyn deck of system.moordyn gives the line types, points, lines \
+                     and gravity; the scenario adds motions, [analysis] and [output]",
+                ));
+            }
+        }
+        let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
+        let mut sc = super::moordyn::deck_file_scenario(&deck_path, title)?;
+        motions(ctx, &raw.motions, &mut sc.points)?;
+        let (analysis, measures, initial, notes) =
+            analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+        sc.analysis = analysis;
+        sc.measures = measures;
+        sc.initial = initial;
+        sc.notes.extend(notes);
+        sc.output_every = analysis::output_every(ctx, raw.output)?;
+        if sc.analysis.kind == super::AnalysisKind::Dynamic {
+            return Err(ctx.err(
+                "analysis.type",
+                "a dynamic analysis of a MoorDyn deck's lines in water needs their added mass \
+                 and drag, which this version does not model; use \"static\"",
+            ));
+        }
+        return Ok(sc);
     }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut points = points(ctx, &raw.points)?;
     let lines = lines(ctx, &raw.lines, &line_types, &points)?;
     motions(ctx, &raw.motions, &mut points)?;
-    let others = Others {
-        initial_velocity: false,
-        constraints: true,
-    };
-    let initial_key = raw.analysis.as_ref().and_then(|a| a.initial.clone());
-    let axial_given = raw
-        .analysis
-        .as_ref()
-        .is_some_and(|a| a.axial_strain.is_some());
-    let (analysis, mut measures, mut notes) = analysis::analysis(ctx, raw.analysis, others)?;
-    // Lines are elastic in the engineering strain (T = EA (|r'| - 1)),
-    // as MoorDyn's and the elastic catenary's are, unless the file says.
-    if !axial_given {
-        measures.axial_strain = stancf::AxialStrain::Engineering;
-    }
-    let initial = match ctx.choice(
-        "analysis.initial",
-        initial_key.as_deref(),
-        "reference",
-        &["reference", "static"],
-    )? {
-        "static" => InitialShape::Static,
-        _ => InitialShape::Reference,
-    };
+    let (analysis, measures, initial, mut notes) =
+        analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
     for (i, t) in line_types.iter().enumerate() {
         if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
             notes.push(format!(
-                "line_types[{i}]: cd, ca, cdax and caax act in water, which this version does \
-                 not model: unused"
+                "line_types[{i}]: cd, ca, cdax and caax act in water, which a scenario \
+                 without a MoorDyn deck does not have: unused"
             ));
         }
     }
@@ -170,7 +201,44 @@ pub(super) fn system_scenario(
         initial,
         output_every,
         notes,
+        water: None,
+        channels: Vec::new(),
     })
+}
+
+/// `[analysis]` of a system: the single cable's keys and `initial`
+/// ("reference" or "static"; `default` when missing). Lines are elastic
+/// in the engineering strain (T = EA (|r'| - 1)), as MoorDyn's and the
+/// elastic catenary's are, unless `axial_strain` says otherwise.
+pub(super) fn analysis_part(
+    ctx: &Ctx,
+    raw: Option<RawAnalysis>,
+    default: InitialShape,
+) -> Result<(Analysis, Measures, InitialShape, Vec<String>), ScenarioError> {
+    let others = Others {
+        initial_velocity: false,
+        constraints: true,
+    };
+    let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
+    let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
+    let (analysis, mut measures, notes) = analysis::analysis(ctx, raw, others)?;
+    if !axial_given {
+        measures.axial_strain = stancf::AxialStrain::Engineering;
+    }
+    let default_word = match default {
+        InitialShape::Static => "static",
+        InitialShape::Reference => "reference",
+    };
+    let initial = match ctx.choice(
+        "analysis.initial",
+        initial_key.as_deref(),
+        default_word,
+        &["reference", "static"],
+    )? {
+        "static" => InitialShape::Static,
+        _ => InitialShape::Reference,
+    };
+    Ok((analysis, measures, initial, notes))
 }
 
 /// `[[line_types]]`: `name` (required, unique), `diameter` (> 0),
@@ -253,6 +321,7 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
                 None => 0.0,
             },
             force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
+            volume: 0.0,
             motion: Oscillation::NONE,
         });
     }

@@ -2,7 +2,7 @@
 //! model of its line type's section, every point a library point, and
 //! the lines' start shapes (docs/method.md §11.6).
 
-use super::system::{LineType, PointType, SystemScenario};
+use super::system::{LineType, PointType, SystemScenario, Water};
 use stancf::system::{End, Line, Point, PointKind, System};
 use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions};
 
@@ -15,8 +15,7 @@ pub const EI_FACTOR: f64 = 1e-7;
 impl SystemScenario {
     /// The bending stiffness line i is simulated with: its type's EI, or
     /// for EI = 0 (chain, wire rope) c w L^3 with c = [`EI_FACTOR`] and w
-    /// its weight per length (in a system without gravity, c EA L^2 /
-    /// 1000).
+    /// its (wet) weight per length (without weight, c EA L^2 / 1000).
     pub fn bending_stiffness(&self, line: usize) -> f64 {
         let l = &self.lines[line];
         let t = &self.line_types[l.line_type];
@@ -24,15 +23,34 @@ impl SystemScenario {
             return t.ei;
         }
         let g = self.gravity.iter().map(|g| g * g).sum::<f64>().sqrt();
-        let w = t.mass_per_length * g;
+        let w = (t.mass_per_length * g * self.wet_weight_fraction(t)).abs();
         let reference_tension = if w > 0.0 { w * l.length } else { 1e-3 * t.ea };
         EI_FACTOR * reference_tension * l.length * l.length
+    }
+
+    /// The fraction of a line's weight left in water: its weight per
+    /// length m g less the buoyancy rho_w (pi d^2 / 4) g of the water it
+    /// displaces, over m g (1 in air). A line in still water carries its
+    /// wet weight as a constant load per length, the gravity load of its
+    /// mass scaled by this fraction (docs/method.md §11.8).
+    pub fn wet_weight_fraction(&self, t: &LineType) -> f64 {
+        match self.water {
+            Some(w) => {
+                let area = std::f64::consts::PI * t.diameter * t.diameter / 4.0;
+                1.0 - w.density * area / t.mass_per_length
+            }
+            None => 1.0,
+        }
     }
 
     /// The library's system: the lines' models (their reference shapes
     /// straight between their end points) and the points.
     pub fn system(&self) -> Result<System, ModelError> {
-        let points: Vec<Point> = self.points.iter().map(library_point).collect();
+        let points: Vec<Point> = self
+            .points
+            .iter()
+            .map(|p| library_point(p, self.water, self.gravity))
+            .collect();
         let lines = self
             .lines
             .iter()
@@ -84,27 +102,31 @@ impl SystemScenario {
             measures: self.measures,
             space_points: self.analysis.space_points,
         };
-        let gravity = if self.gravity == [0.0; 3] {
+        let acceleration = self.gravity.map(|g| g * self.wet_weight_fraction(t));
+        let gravity = if acceleration == [0.0; 3] {
             vec![]
         } else {
-            vec![Load::Gravity {
-                acceleration: self.gravity,
-            }]
+            vec![Load::Gravity { acceleration }]
         };
         Model::new(cable, material, options, gravity)
     }
 }
 
-fn library_point(p: &super::system::SystemPoint) -> Point {
+/// The library's point; a free point in water carries its buoyancy
+/// -rho_w V g beside its own force.
+fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: [f64; 3]) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
         PointType::Coupled => Point::coupled(p.position, p.motion),
-        PointType::Free => Point {
-            kind: PointKind::Free,
-            position: p.position,
-            mass: p.mass,
-            force: p.force,
-        },
+        PointType::Free => {
+            let buoyancy = water.map_or(0.0, |w| w.density * p.volume);
+            Point {
+                kind: PointKind::Free,
+                position: p.position,
+                mass: p.mass,
+                force: std::array::from_fn(|k| p.force[k] - buoyancy * gravity[k]),
+            }
+        }
     }
 }
 
@@ -118,5 +140,36 @@ fn section_material(t: &LineType, ei: f64) -> Material {
         density: t.mass_per_length / area,
         area,
         second_moment: ei / youngs_modulus,
+    }
+}
+
+impl SystemScenario {
+    /// Refuses what the water of this version cannot represent: a line
+    /// of `states` (one per line) with a node below the seabed (z <
+    /// -depth) or above the free surface (z > 0), beyond 1e-9 of the
+    /// depth. Seabed contact and lines through the surface are not
+    /// modelled in this version; the message names the line and where.
+    pub fn check_submerged(&self, system: &System, states: &[stancf::State]) -> Result<(), String> {
+        let Some(w) = self.water else { return Ok(()) };
+        let slack = 1e-9 * w.depth;
+        for (i, (line, s)) in system.lines().iter().zip(states).enumerate() {
+            for j in 0..line.model.nodes() {
+                let z = line.model.node_position(&s.e, j)[2];
+                let what = if z < -w.depth - slack {
+                    "below the seabed"
+                } else if z > slack {
+                    "above the water surface"
+                } else {
+                    continue;
+                };
+                return Err(format!(
+                    "line {}: node {j} hangs {what} (z = {z:.6} m, water depth {} m): \
+                     seabed contact and lines crossing the surface are not modelled in this \
+                     version",
+                    self.lines[i].id, w.depth
+                ));
+            }
+        }
+        Ok(())
     }
 }

@@ -83,13 +83,13 @@ pub(super) fn run_system(
     };
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
     let mut static_solve = if statics {
+        let seeds = catenary_states(&system);
+        sc.check_submerged(&system, &seeds).map_err(|e| {
+            Failure::Input(format!("{}: {e} (the line's catenary)", path.display()))
+        })?;
         Some(
-            SystemStatics::new(
-                system.clone(),
-                catenary_states(&system),
-                sc.analysis.static_settings(),
-            )
-            .map_err(input)?,
+            SystemStatics::new(system.clone(), seeds, sc.analysis.static_settings())
+                .map_err(input)?,
         )
     } else {
         None
@@ -104,8 +104,8 @@ pub(super) fn run_system(
     } else {
         None
     };
-    let mut writers =
-        SystemWriters::create(place.dir, &line_ids, &point_ids).map_err(io_err(place.shown))?;
+    let mut writers = SystemWriters::create(place.dir, &line_ids, &point_ids, &sc.channels)
+        .map_err(io_err(place.shown))?;
     let mut from_static = false;
     if let Some(st) = static_solve.as_mut() {
         solve_statics(st, opts, &mut outcome);

@@ -2,9 +2,11 @@
 //! `lines/<id>/nodes.csv` and `lines/<id>/stress.csv` in the single
 //! cable's columns, `points.csv`, `tensions.csv` and `history.csv`.
 
+use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Num};
 use crate::run::writers::STRESS_POINTS_PER_ELEMENT;
-use stancf::model::SLOT_R_X;
+use crate::scenario::OutputChannel;
+use stancf::model::{SLOT_R, SLOT_R_X};
 use stancf::observe::{stress_samples, StressSample};
 use stancf::system::EndForce;
 use stancf::{Model, State};
@@ -35,11 +37,18 @@ pub(super) struct SystemWriters {
     points: AtomicFile,
     tensions: AtomicFile,
     history: AtomicFile,
+    /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
+    channels: Option<(AtomicFile, Vec<Channel>)>,
     samples: Vec<StressSample>,
 }
 
 impl SystemWriters {
-    pub(super) fn create(dir: &Path, line_ids: &[i64], point_ids: &[i64]) -> std::io::Result<Self> {
+    pub(super) fn create(
+        dir: &Path,
+        line_ids: &[i64],
+        point_ids: &[i64],
+        channels: &[OutputChannel],
+    ) -> std::io::Result<Self> {
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
             let sub = format!("lines/{id}");
@@ -59,7 +68,16 @@ impl SystemWriters {
             history.writer(),
             "t,kinetic,strain,gravity,total,iterations,residual"
         )?;
+        let channels = if channels.is_empty() {
+            None
+        } else {
+            let mut file = AtomicFile::create(dir, "channels.csv")?;
+            let names: Vec<&str> = channels.iter().map(|c| c.name.as_str()).collect();
+            writeln!(file.writer(), "t,{}", names.join(","))?;
+            Some((file, channels.iter().map(|c| c.channel).collect()))
+        };
         Ok(SystemWriters {
+            channels,
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
@@ -164,6 +182,18 @@ impl SystemWriters {
         {
             return Err(bad("energy or residual"));
         }
+        if let Some((file, channels)) = self.channels.as_mut() {
+            let w = file.writer();
+            write!(w, "{t}")?;
+            for c in channels.iter() {
+                let v = channel_value(c, row);
+                if !v.is_finite() {
+                    return Err(bad("output channel"));
+                }
+                write!(w, ",{}", Num(v))?;
+            }
+            writeln!(w)?;
+        }
         writeln!(
             self.history.writer(),
             "{t},{},{},{},{},{},{}",
@@ -184,6 +214,51 @@ impl SystemWriters {
         }
         self.points.commit()?;
         self.tensions.commit()?;
+        if let Some((file, _)) = self.channels {
+            file.commit()?;
+        }
         self.history.commit()
+    }
+}
+
+/// The value of a MoorDyn output channel at a row (ids are 1-based, as
+/// the deck's): line end tensions (0 before the first step of a run from
+/// the straight shape, where no end force is known yet), point and line
+/// node positions and velocities.
+fn channel_value(c: &Channel, row: &SystemRow) -> f64 {
+    let axis = |a: Axis| match a {
+        Axis::X => 0,
+        Axis::Y => 1,
+        Axis::Z => 2,
+    };
+    let end_tension =
+        |line: usize, end: usize| row.ends[line - 1][end].map_or(0.0, |f| f.tension());
+    match *c {
+        Channel::FairleadTension { line } => end_tension(line, 1),
+        Channel::AnchorTension { line } => end_tension(line, 0),
+        Channel::LineEndTension { line, end } => {
+            end_tension(line, if end == LineEnd::A { 0 } else { 1 })
+        }
+        Channel::LineNode {
+            line,
+            node,
+            quantity,
+        } => {
+            let (model, state) = row.lines[line - 1];
+            let o = model.coordinate(node, SLOT_R, 0);
+            match quantity {
+                LineQuantity::Position(a) => state.e[o + axis(a)],
+                LineQuantity::Velocity(a) => state.v[o + axis(a)],
+                _ => f64::NAN,
+            }
+        }
+        Channel::Point { point, quantity } => {
+            let (x, v, _) = row.points[point - 1];
+            match quantity {
+                PointQuantity::Position(a) => x[axis(a)],
+                PointQuantity::Velocity(a) => v[axis(a)],
+                _ => f64::NAN,
+            }
+        }
     }
 }
