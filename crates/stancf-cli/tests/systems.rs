@@ -1,0 +1,429 @@
+//! Systems of lines from the command line (docs/interface.md,
+//! "Systems"): TOML systems and MoorDyn decks read, run and refused; the
+//! result files per line, per point and per line end.
+
+mod common;
+
+use common::*;
+use std::path::Path;
+
+/// The rows of a CSV file whose `end` column (tensions.csv) is A or B,
+/// read as 0 and 1.
+fn read_tensions(path: &Path) -> Vec<Vec<f64>> {
+    let s = std::fs::read_to_string(path).unwrap();
+    let mut lines = s.lines();
+    assert_eq!(lines.next(), Some("t,line,end,fx,fy,fz,tension"));
+    lines
+        .map(|l| {
+            l.split(',')
+                .map(|f| match f {
+                    "A" => 0.0,
+                    "B" => 1.0,
+                    _ => f.parse::<f64>().unwrap(),
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// A bridle: two ropes from points at different heights meet at a free
+/// point with a clump weight of `mass` kg; `analysis` is the
+/// `[analysis]` body.
+fn bridle(mass: f64, analysis: &str) -> String {
+    format!(
+        r#"
+title = "bridle"
+[[line_types]]
+name = "rope"
+diameter = 0.01
+mass_per_length = 0.08
+ea = 2.0e4
+[[points]]
+id = 1
+type = "fixed"
+position = [0.0, 0.0, 0.0]
+[[points]]
+id = 2
+type = "fixed"
+position = [6.0, 0.0, 1.0]
+[[points]]
+id = 3
+type = "free"
+position = [2.5, 0.0, -2.5]
+mass = {mass}
+[[lines]]
+id = 1
+type = "rope"
+length = 4.0
+elements = 8
+a = 1
+b = 3
+[[lines]]
+id = 2
+type = "rope"
+length = 5.0
+elements = 10
+a = 2
+b = 3
+[analysis]
+{analysis}
+"#
+    )
+}
+
+/// The lines' forces on the bridle's free point balance its weight:
+/// points.csv's f of point 3 is m g upward to 1e-9 (the static
+/// tolerance is 1e-10 on scaled residuals), and it is the sum of the
+/// two lines' end forces in tensions.csv.
+#[test]
+fn a_bridles_lines_hold_its_clump_weight_at_equilibrium() {
+    let d = scratch("systems-bridle-static");
+    let sc = write_scenario(&d, "bridle.toml", &bridle(5.0, "type = \"static\""));
+    let out = d.join("out");
+    let o = run_to(&sc, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, points) = read_csv(&out.join("points.csv"));
+    assert_eq!(header.join(","), "t,point,x,y,z,vx,vy,vz,fx,fy,fz");
+    let p3 = points.iter().rev().find(|r| r[1] == 3.0).expect("point 3");
+    let mg = 5.0 * 9.81;
+    assert!(p3[8].abs() + p3[9].abs() <= 1e-9 * mg, "{p3:?}");
+    assert!((p3[10] - mg).abs() <= 1e-9 * mg, "{p3:?}");
+    let ends = read_tensions(&out.join("tensions.csv"));
+    let at_point: Vec<&Vec<f64>> = ends.iter().filter(|r| r[2] == 1.0).collect();
+    assert_eq!(at_point.len(), 2);
+    for c in 0..3 {
+        let sum = at_point[0][3 + c] + at_point[1][3 + c];
+        assert!((sum - p3[8 + c]).abs() <= 1e-12 * mg, "component {c}");
+    }
+    for l in ["1", "2"] {
+        let dir = out.join("lines").join(l);
+        let (h, _) = read_csv(&dir.join("nodes.csv"));
+        assert_eq!(h.join(","), "t,node,x,y,z,dx_ds,dy_ds,dz_ds");
+        let (h, _) = read_csv(&dir.join("stress.csv"));
+        assert_eq!(h.join(","), "t,s,axial_stress,curvature,element");
+    }
+    let summary = read_json(&out.join("summary.json"));
+    assert_eq!(summary["lines"].as_array().unwrap().len(), 2);
+    assert_eq!(summary["points"].as_array().unwrap().len(), 3);
+    let tb = summary["lines"][0]["max_tension_b"].as_f64().unwrap();
+    assert_eq!(tb, at_point[0][6]);
+}
+
+/// A dynamic run from the straight start writes, every `output.every`
+/// steps and at t = 0, each line's nodes, each point, and (from the
+/// first step on, when they are known) each line end's force.
+#[test]
+fn a_system_run_writes_every_line_point_and_end_at_every_written_step() {
+    let d = scratch("systems-bridle-dynamic");
+    let analysis = "type = \"dynamic\"\ntime_step = 1e-4\nduration = 2e-3\n[output]\nevery = 5";
+    let sc = write_scenario(&d, "bridle.toml", &bridle(5.0, analysis));
+    let out = d.join("out");
+    let o = run_to(&sc, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (_, nodes) = read_csv(&out.join("lines/1/nodes.csv"));
+    assert_eq!(nodes.len(), 5 * 9, "t = 0 and 4 written steps of 9 nodes");
+    let (_, points) = read_csv(&out.join("points.csv"));
+    assert_eq!(points.len(), 5 * 3);
+    assert_eq!(read_tensions(&out.join("tensions.csv")).len(), 4 * 4);
+    let (_, history) = read_csv(&out.join("history.csv"));
+    assert_eq!(history.len(), 5);
+}
+
+/// The same cable as a `[cable]` scenario pinned at both ends and as a
+/// one-line system between two fixed points: the same material figures
+/// (E = EA / A, rho = m / A, I = EI / E with A = pi d^2 / 4, computed
+/// here as the reader computes them) give the same positions, written
+/// to 17 digits: equal to round-off in statics (both solved to a
+/// scaled residual of 1e-13, on different load paths) and in
+/// dynamics (the same equations, the same band factors).
+#[test]
+fn a_one_line_system_equals_the_cable_scenario_of_the_same_cable() {
+    let (diameter, mass, ea, ei) = (0.002, 0.004, 40.0, 1e-4);
+    let area = std::f64::consts::PI * diameter * diameter / 4.0;
+    let e = ea / area;
+    let cable = |analysis: &str| {
+        format!(
+            r#"
+[cable]
+length = 2.0
+elements = 8
+[material]
+youngs_modulus = {e:?}
+density = {:?}
+area = {area:?}
+second_moment = {:?}
+[[constraints]]
+type = "pinned"
+node = 0
+[[constraints]]
+type = "pinned"
+node = 8
+[[loads]]
+type = "gravity"
+acceleration = [0.0, 0.0, -9.81]
+[analysis]
+axial_strain = "engineering"
+tolerance = 1e-13
+{analysis}
+"#,
+            mass / area,
+            ei / e
+        )
+    };
+    let system = |analysis: &str| {
+        format!(
+            r#"
+[[line_types]]
+name = "t"
+diameter = {diameter:?}
+mass_per_length = {mass:?}
+ea = {ea:?}
+ei = {ei:?}
+[[points]]
+id = 1
+type = "fixed"
+position = [0.0, 0.0, 0.0]
+[[points]]
+id = 2
+type = "fixed"
+position = [2.0, 0.0, 0.0]
+[[lines]]
+id = 1
+type = "t"
+length = 2.0
+elements = 8
+a = 1
+b = 2
+[analysis]
+tolerance = 1e-13
+{analysis}
+"#
+        )
+    };
+    let d = scratch("systems-one-line");
+    for (name, analysis, tolerance) in [
+        ("static", "type = \"static\"", 1e-11),
+        (
+            "dynamic",
+            "type = \"dynamic\"\ntime_step = 1e-3\nduration = 0.1",
+            1e-12,
+        ),
+    ] {
+        let a = write_scenario(&d, &format!("cable-{name}.toml"), &cable(analysis));
+        let b = write_scenario(&d, &format!("system-{name}.toml"), &system(analysis));
+        let (oa, ob) = (d.join(format!("a-{name}")), d.join(format!("b-{name}")));
+        for (sc, out) in [(&a, &oa), (&b, &ob)] {
+            let o = run_to(sc, out);
+            assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
+        }
+        let (_, rows_a) = read_csv(&oa.join("nodes.csv"));
+        let (_, rows_b) = read_csv(&ob.join("lines/1/nodes.csv"));
+        // The last written state of each: positions and tangents.
+        let last_a = &rows_a[rows_a.len() - 9..];
+        let last_b = &rows_b[rows_b.len() - 9..];
+        let mut diff: f64 = 0.0;
+        for (ra, rb) in last_a.iter().zip(last_b) {
+            for c in 2..8 {
+                diff = diff.max((ra[c] - rb[c]).abs());
+            }
+        }
+        assert!(
+            diff <= tolerance * 2.0,
+            "{name}: largest difference {diff:e}"
+        );
+    }
+}
+
+#[test]
+fn a_misspelt_line_type_is_refused_naming_the_key() {
+    let sc = bridle(5.0, "type = \"static\"").replace(
+        "type = \"rope\"\nlength = 5.0",
+        "type = \"rpoe\"\nlength = 5.0",
+    );
+    expect_input_error("systems-misspelt", &sc, &["lines[1].type", "rpoe", "rope"]);
+}
+
+/// Every MoorDyn deck shipped in examples/ is read: `check` describes
+/// its lines and points, or (the OC4 deck) refuses only the seabed
+/// contact its catenaries reach, after reading the whole deck.
+#[test]
+fn the_shipped_moordyn_decks_are_read() {
+    let decks: Vec<String> = std::fs::read_dir(repo_file("examples"))
+        .unwrap()
+        .map(|e| e.unwrap().path().display().to_string())
+        .filter(|p| p.ends_with("-moordyn.txt"))
+        .collect();
+    assert_eq!(decks.len(), 2, "{decks:?}");
+    for deck in decks {
+        let o = stancf(&["check", &deck]);
+        let (so, se) = text(&o);
+        if deck.contains("oc4") {
+            assert_eq!(o.status.code(), Some(2), "{deck}: {se}");
+            assert!(se.contains("seabed contact"), "{deck}: {se}");
+        } else {
+            assert_eq!(o.status.code(), Some(0), "{deck}: {se}");
+            assert!(
+                so.contains("line 1") && so.contains("point 1"),
+                "{deck}: {so}"
+            );
+        }
+    }
+}
+
+/// The OC4 chain lies on the seabed for hundreds of metres: seabed
+/// contact is not in this version, so the run is refused, naming the
+/// line, before anything is written.
+#[test]
+fn the_oc4_deck_is_refused_where_its_chain_would_pass_the_seabed() {
+    let d = scratch("systems-oc4");
+    let out = d.join("never");
+    let deck = repo_file("examples/oc4-deepcwind-moordyn.txt");
+    let o = stancf(&[
+        "run",
+        deck.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    assert!(se.contains("line 1") && se.contains("seabed"), "{se}");
+    assert!(!out.exists());
+}
+
+/// The midwater bridle deck: its free point carries 2000 kg less the
+/// 0.5 m^3 of water it displaces, and the lines hold exactly that
+/// (1e-9: the static tolerance); channels.csv carries the deck's
+/// OUTPUTS with tensions.csv's values.
+#[test]
+fn a_midwater_deck_holds_its_clump_weight_less_its_buoyancy() {
+    let d = scratch("systems-midwater");
+    let out = d.join("out");
+    let o = run_to(&repo_file("examples/midwater-bridle-moordyn.txt"), &out);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (_, points) = read_csv(&out.join("points.csv"));
+    let p3 = points.iter().find(|r| r[1] == 3.0).unwrap();
+    let wet = (2000.0 - 1025.0 * 0.5) * 9.81;
+    assert!((p3[10] - wet).abs() <= 1e-9 * wet, "{p3:?} against {wet}");
+    let (header, channels) = read_csv(&out.join("channels.csv"));
+    assert_eq!(
+        header.join(","),
+        "t,AnchTen1,AnchTen2,FairTen1,FairTen2,Point3PX,Point3PZ"
+    );
+    let ends = read_tensions(&out.join("tensions.csv"));
+    let tension =
+        |line: f64, end: f64| ends.iter().find(|r| r[1] == line && r[2] == end).unwrap()[6];
+    let row = &channels[0];
+    assert_eq!(row[1], tension(1.0, 0.0));
+    assert_eq!(row[3], tension(1.0, 1.0));
+    assert_eq!(row[5], p3[2]);
+    assert_eq!(row[6], p3[4]);
+}
+
+/// A small valid deck, and the same with one line changed: each change
+/// is refused with exit 2 naming the deck's line, nothing written.
+#[test]
+fn a_deck_with_a_rod_a_body_an_unknown_option_or_a_misspelt_type_is_refused_naming_its_line() {
+    let deck = std::fs::read_to_string(repo_file("examples/midwater-bridle-moordyn.txt")).unwrap();
+    let lines: Vec<&str> = deck.lines().collect();
+    let at = |needle: &str| lines.iter().position(|l| l.starts_with(needle)).unwrap();
+    let options = at("------------------------------- OPTIONS");
+    let cases: Vec<(String, String)> = vec![
+        (
+            "rod".into(),
+            deck.replace(
+                "-------------------------------- POINTS",
+                "---------------------- RODS ----------------------\nID RodType AttachA AttachB NumSegs Outputs\n(#) (name) (#) (#) (-) (-)\n1 rod 1 3 4 -\n-------------------------------- POINTS",
+            ),
+        ),
+        (
+            "body".into(),
+            deck.replace("3   Free  ", "3   Body1 "),
+        ),
+        (
+            "unknown option".into(),
+            deck.replace("9.81      g ", "9.81      gee"),
+        ),
+        (
+            "misspelt type".into(),
+            deck.replace("1   wire      1", "1   wier      1"),
+        ),
+    ];
+    let expected_line = |case: &str, text: &str| -> usize {
+        let ls: Vec<&str> = text.lines().collect();
+        let find = |needle: &str| ls.iter().position(|l| l.contains(needle)).unwrap() + 1;
+        match case {
+            "rod" => find("1 rod 1 3"),
+            "body" => find("Body1"),
+            "unknown option" => find("gee"),
+            _ => find("wier"),
+        }
+    };
+    assert!(options > 0);
+    let d = scratch("systems-bad-decks");
+    for (case, text_of_deck) in cases {
+        assert_ne!(text_of_deck, deck, "{case}: the change did not apply");
+        let path = write_scenario(&d, "bad.txt", &text_of_deck);
+        let out = d.join("never");
+        let o = stancf(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{case}: {se}");
+        let n = expected_line(&case, &text_of_deck);
+        assert!(
+            se.contains(&format!("bad.txt: line {n}:")),
+            "{case}: line {n} not named: {se}"
+        );
+        assert!(!out.exists(), "{case}: output written");
+    }
+}
+
+/// A line whose mass is the water it displaces, between two points its
+/// length apart: no wet weight, no stretch, so it stays straight along
+/// the chord (to 1e-9 of its length: the static tolerance) with no
+/// tension to speak of.
+#[test]
+fn a_neutrally_buoyant_line_stays_put() {
+    let area = std::f64::consts::PI * 0.05 * 0.05 / 4.0;
+    let mass = 1025.0 * area;
+    let deck = std::fs::read_to_string(repo_file("examples/midwater-bridle-moordyn.txt"))
+        .unwrap()
+        .replace(
+            "wire      0.05    12.0 ",
+            &format!("wire      0.05    {mass:?} "),
+        );
+    let deck: String = deck
+        .lines()
+        .filter(|l| {
+            !l.starts_with("2   wire")
+                && !l.starts_with("3   Free")
+                && !l.contains("Point3")
+                && !l.contains("Ten2")
+        })
+        .map(|l| format!("{l}\n"))
+        .collect::<String>()
+        .replace(
+            "1   wire      1        3        46.0",
+            "1   wire      1        2        72.80109889280519",
+        );
+    let d = scratch("systems-neutral");
+    let path = write_scenario(&d, "neutral.txt", &deck);
+    let out = d.join("out");
+    let o = run_to(&path, &out);
+    assert_eq!(o.status.code(), Some(0), "{}\n{deck}", text(&o).1);
+    let (_, nodes) = read_csv(&out.join("lines/1/nodes.csv"));
+    let length = (70.0f64 * 70.0 + 20.0 * 20.0).sqrt();
+    for r in &nodes {
+        // Distance from the chord from (0, 0, -60) to (70, 0, -40).
+        let (x, z) = (r[2], r[4] + 60.0);
+        let off = (x * 20.0 - z * 70.0).abs() / length;
+        assert!(off <= 1e-9 * length && r[3].abs() <= 1e-9 * length, "{r:?}");
+    }
+    let ends = read_tensions(&out.join("tensions.csv"));
+    for r in &ends {
+        assert!(r[6] <= 1e-6 * 12.0 * 9.81 * length, "{r:?}");
+    }
+}
