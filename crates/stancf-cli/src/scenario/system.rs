@@ -181,6 +181,15 @@ pub(super) fn system_scenario(
     motions(ctx, &raw.motions, &mut points)?;
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
+    if analysis.kind == super::AnalysisKind::Dynamic {
+        if let Some(i) = line_types.iter().position(|t| t.ba != 0.0) {
+            return Err(ctx.err(
+                &format!("line_types[{i}].ba"),
+                "axial damping is not available in a dynamic analysis in this version (a \
+                 static one does not need it); remove ba or set it to 0",
+            ));
+        }
+    }
     for (i, t) in line_types.iter().enumerate() {
         if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
             notes.push(format!(

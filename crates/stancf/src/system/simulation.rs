@@ -18,6 +18,27 @@ use crate::model::{coordinate, State, SLOT_R};
 use crate::quadrature::GaussRule;
 use crate::solver::{solve, NewtonReport, NewtonWorkspace, NonlinearSystem};
 
+/// The step's equations as Newton sees them, borrowing the fields of a
+/// [`SystemSimulation`] they need (and no others: Newton takes `x` and
+/// the workspace beside them).
+macro_rules! step_problem {
+    ($sim:expr) => {
+        StepOfSystem {
+            system: &$sim.system,
+            lines: &mut $sim.lines,
+            layout: &$sim.layout,
+            slab: &$sim.slab,
+            points: &$sim.points,
+            point_index: &$sim.point_index,
+            point_nodes: &mut $sim.point_nodes,
+            x_local: &mut $sim.x_local,
+            residual_local: &mut $sim.residual_local,
+            unknown_scale: &$sim.unknown_scale,
+            equation_scale: &$sim.equation_scale,
+        }
+    };
+}
+
 /// The force a line end exerts on the point it is attached to, averaged
 /// over the last step (N); its magnitude is the effective tension there.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -197,6 +218,23 @@ impl SystemSimulation {
         self.layout.size
     }
 
+    /// The Jacobian of the next step's equations at its predicted
+    /// unknowns (x, for inspection and for measuring linear solvers
+    /// against [`BorderedLu`]; allocates, unlike stepping). Leaves the
+    /// simulation as it was.
+    pub fn next_step_jacobian(&mut self) -> (BorderedMatrix, Vec<f64>) {
+        for line in &mut self.lines {
+            line.begin_step();
+        }
+        self.gather_prediction();
+        let mut jacobian = BorderedMatrix::new(&self.layout.shapes, self.layout.border);
+        let mut residual = vec![0.0; self.layout.size];
+        let x = self.x.clone();
+        let mut problem = step_problem!(self);
+        problem.evaluate(&x, &mut residual, Some(&mut jacobian));
+        (jacobian, x)
+    }
+
     /// Advances the system by one step. On failure every line and point
     /// is left at the last converged step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
@@ -258,19 +296,7 @@ impl SystemSimulation {
     }
 
     fn solve_step(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
-        let mut problem = StepOfSystem {
-            system: &self.system,
-            lines: &mut self.lines,
-            layout: &self.layout,
-            slab: &self.slab,
-            points: &self.points,
-            point_index: &self.point_index,
-            point_nodes: &mut self.point_nodes,
-            x_local: &mut self.x_local,
-            residual_local: &mut self.residual_local,
-            unknown_scale: &self.unknown_scale,
-            equation_scale: &self.equation_scale,
-        };
+        let mut problem = step_problem!(self);
         solve(
             &mut problem,
             &mut self.x,
