@@ -30,12 +30,19 @@ fn scenario_err(e: scenario::ScenarioError) -> PyErr {
     ScenarioError::new_err(e.0)
 }
 
-/// Validates scenario text (`name` names it in messages).
+/// Validates scenario text (`name` names it in messages): a single
+/// cable, a system of lines, or a MoorDyn v2 deck.
 #[pyfunction]
 fn validate(text: &str, name: &str) -> PyResult<()> {
-    scenario::parse(text, name, Path::new(name))
+    scenario::parse_input(text, name, Path::new(name))
         .map(|_| ())
         .map_err(scenario_err)
+}
+
+/// Whether scenario text is a MoorDyn v2 deck (not TOML).
+#[pyfunction]
+fn is_moordyn(text: &str) -> bool {
+    stancf_cli::moordyn::looks_like_moordyn(text)
 }
 
 /// A Python value as a TOML value.
@@ -104,7 +111,7 @@ fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<S
             .map_err(|e| ScenarioError::new_err(format!("{name}: {key}: {e}")))?;
     }
     let out = toml::to_string(&doc).map_err(|e| ScenarioError::new_err(e.to_string()))?;
-    scenario::parse(&out, name, Path::new(name)).map_err(scenario_err)?;
+    scenario::parse_input(&out, name, Path::new(name)).map_err(scenario_err)?;
     Ok(out)
 }
 
@@ -231,6 +238,7 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RunFailed", m.py().get_type::<RunFailed>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
+    m.add_function(wrap_pyfunction!(is_moordyn, m)?)?;
     m.add_function(wrap_pyfunction!(dict_to_toml, m)?)?;
     m.add_function(wrap_pyfunction!(with_values, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;

@@ -109,6 +109,26 @@ def test_same_numbers_as_the_cli_bit_for_bit(tmp_path):
     assert (tmp_path / "copy" / "summary.json").read_text() == (tmp_path / "py" / "summary.json").read_text()
 
 
+def test_a_system_result_has_the_clis_lines_points_and_tensions(tmp_path):
+    """A MoorDyn deck run from Python: the same files as the command
+    line's, read into lines, points, tensions and channels; the clump
+    weight's wet weight is held by its lines."""
+    deck = ROOT / "examples" / "midwater-bridle-moordyn.txt"
+    res = stancf.run(stancf.Scenario.from_file(deck), out=tmp_path / "py")
+    r = cli("run", deck, "--out", tmp_path / "cli", "--quiet")
+    assert r.returncode == 0, r.stderr
+    for name in ["points.csv", "tensions.csv", "channels.csv", "lines/1/nodes.csv",
+                 "lines/2/stress.csv"]:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
+    assert res.is_system and sorted(res.lines) == [1, 2] and sorted(res.points) == [1, 2, 3]
+    assert res.lines[1].nodes.shape == (1, 21, 3)
+    wet = (2000.0 - 1025.0 * 0.5) * 9.81
+    assert abs(res.points[3]["force"][-1][2] - wet) <= 1e-9 * wet
+    a = res.tensions[(1, "A")]
+    assert a["tension"][-1] == pytest.approx(np.linalg.norm(a["force"][-1]), rel=1e-15)
+    assert res.channels["AnchTen1"][-1] == a["tension"][-1]
+
+
 def test_from_dict_with_values_and_errors_name_the_key():
     sc = stancf.Scenario(IMPACT)
     d = {

@@ -30,7 +30,7 @@ from . import _stancf
 from ._stancf import ScenarioError
 
 __version__ = _stancf.__version__
-__all__ = ["Scenario", "Result", "ScenarioError", "SolverError", "run", "sweep"]
+__all__ = ["Scenario", "Result", "Line", "ScenarioError", "SolverError", "run", "sweep"]
 
 
 class Scenario:
@@ -49,6 +49,9 @@ class Scenario:
         text = path.read_text()
         name = str(path)
         _stancf.validate(text, name)
+        if _stancf.is_moordyn(text):
+            # A MoorDyn deck: its title is the file's stem already.
+            return cls(text, name)
         if not any(line.split("=")[0].strip() == "title" for line in text.splitlines()
                    if not line.lstrip().startswith("[")):
             text = _stancf.with_values(text, name, {"title": path.stem})
@@ -99,6 +102,34 @@ def _table(path):
     return header, data
 
 
+class Line:
+    """One cable's results: ``t`` (steps,), ``nodes``: positions r (steps x
+    nodes x 3), ``slopes``: r_x (same), ``stress``: axial stress (steps x
+    samples) at material coordinates ``stress_s``, ``curvature`` likewise."""
+
+    def __init__(self, directory, t):
+        steps = len(t)
+        self.t = t
+        h, nodes = _table(directory / "nodes.csv")
+        times = np.unique(nodes[:, 0], return_counts=True)
+        n_nodes = int(times[1][0]) if len(times[1]) else 0
+        col = {name: k for k, name in enumerate(h)}
+        nodes = nodes.reshape(steps, n_nodes, len(h))
+        self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
+        self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
+            if "dx_ds" in col else None
+        h, stress = _table(directory / "stress.csv")
+        col = {name: k for k, name in enumerate(h)}
+        per_step = len(stress) // max(steps, 1)
+        stress = stress.reshape(steps, per_step, len(h))
+        self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
+        self.stress = stress[:, :, col["axial_stress"]].copy()
+        self.curvature = stress[:, :, col["curvature"]].copy()
+
+    def __repr__(self):
+        return "Line(%d steps, %d nodes)" % self.nodes.shape[:2]
+
+
 class Result:
     """The results of a run, read from its folder (docs/interface.md):
 
@@ -111,6 +142,18 @@ class Result:
     - ``reactions``: dict node -> (steps x 3) forces on the cable (times
       ``reactions_t``), empty without constraints;
     - ``summary``: summary.json as a dict; ``directory``: the folder.
+
+    A system of lines (``is_system``) has instead of nodes, stress and
+    reactions:
+
+    - ``lines``: dict line id -> :class:`Line`;
+    - ``points``: dict point id -> dict of ``t``, ``position``,
+      ``velocity`` and ``force`` (the lines' net force on it), arrays
+      (steps x 3);
+    - ``tensions``: dict (line id, "A" or "B") -> dict of ``t``, ``force``
+      (the force that end exerts on its point, k x 3) and ``tension`` (k,);
+    - ``channels``: dict name -> array over ``channels_t`` (a MoorDyn
+      deck's OUTPUTS; empty otherwise).
     """
 
     def __init__(self, directory, _keep=None):
@@ -122,24 +165,17 @@ class Result:
         h, hist = _table(d / "history.csv")
         self.t = hist[:, 0].copy()
         self.energy = {name: hist[:, k].copy() for k, name in enumerate(h) if k > 0}
-        h, nodes = _table(d / "nodes.csv")
-        times = np.unique(nodes[:, 0], return_counts=True)
-        n_nodes = int(times[1][0]) if len(times[1]) else 0
-        steps = len(self.t)
-        col = {name: k for k, name in enumerate(h)}
-        nodes = nodes.reshape(steps, n_nodes, len(h))
-        self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
-        self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
-            if "dx_ds" in col else None
-        h, stress = _table(d / "stress.csv")
-        col = {name: k for k, name in enumerate(h)}
-        per_step = len(stress) // max(steps, 1)
-        stress = stress.reshape(steps, per_step, len(h))
-        self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
-        self.stress = stress[:, :, col["axial_stress"]].copy()
-        self.curvature = stress[:, :, col["curvature"]].copy()
+        self.is_system = bool(self.summary.get("system"))
         self.reactions = {}
         self.reactions_t = np.zeros(0)
+        self.lines, self.points, self.tensions, self.channels = {}, {}, {}, {}
+        self.channels_t = np.zeros(0)
+        if self.is_system:
+            self._read_system(d)
+            return
+        line = Line(d, self.t)
+        self.nodes, self.slopes = line.nodes, line.slopes
+        self.stress_s, self.stress, self.curvature = line.stress_s, line.stress, line.curvature
         if (d / "reactions.csv").exists():
             h, r = _table(d / "reactions.csv")
             if len(r):
@@ -148,6 +184,40 @@ class Result:
                     self.reactions[int(node)] = rows[:, 2:5].copy()
                     self.reactions_t = rows[:, 0].copy()
 
+    def _read_system(self, d):
+        self.nodes = self.slopes = self.stress = self.curvature = None
+        self.stress_s = None
+        self.lines = {int(line["id"]): Line(d / "lines" / str(line["id"]), self.t)
+                      for line in self.summary["lines"]}
+        h, p = _table(d / "points.csv")
+        col = {name: k for k, name in enumerate(h)}
+        self.points = {}
+        for point in np.unique(p[:, col["point"]]).astype(int):
+            rows = p[p[:, col["point"]] == point]
+            self.points[int(point)] = {
+                "t": rows[:, col["t"]].copy(),
+                "position": rows[:, [col["x"], col["y"], col["z"]]].copy(),
+                "velocity": rows[:, [col["vx"], col["vy"], col["vz"]]].copy(),
+                "force": rows[:, [col["fx"], col["fy"], col["fz"]]].copy(),
+            }
+        self.tensions = {}
+        with open(d / "tensions.csv") as f:
+            next(f)
+            for row in csv.reader(f):
+                t, line, end, fx, fy, fz, tension = row
+                entry = self.tensions.setdefault(
+                    (int(float(line)), end), {"t": [], "force": [], "tension": []})
+                entry["t"].append(float(t))
+                entry["force"].append([float(fx), float(fy), float(fz)])
+                entry["tension"].append(float(tension))
+        for entry in self.tensions.values():
+            for k in entry:
+                entry[k] = np.array(entry[k], dtype=float)
+        if (d / "channels.csv").exists():
+            h, c = _table(d / "channels.csv")
+            self.channels_t = c[:, 0].copy()
+            self.channels = {name: c[:, k].copy() for k, name in enumerate(h) if k > 0}
+
     def write(self, directory):
         """Writes the result files (docs/interface.md) to `directory`."""
         out = Path(directory)
@@ -155,6 +225,9 @@ class Result:
         for f in self.directory.iterdir():
             if f.is_file() and not f.name.endswith(".partial"):
                 shutil.copy2(f, out / f.name)
+        if (self.directory / "lines").is_dir():
+            shutil.copytree(self.directory / "lines", out / "lines", dirs_exist_ok=True,
+                            ignore=shutil.ignore_patterns("*.partial"))
         if (self.directory / "vtk").is_dir():
             shutil.copytree(self.directory / "vtk", out / "vtk", dirs_exist_ok=True)
         return out
