@@ -133,7 +133,7 @@ pub fn centre_line(
     out
 }
 
-const AXES: [&str; 3] = ["x", "y", "z"];
+pub(crate) const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// Shapes at up to `count` written times, in the plane of motion.
 pub fn shapes_figure(
@@ -310,6 +310,9 @@ pub fn convergence_figure(conv: &Table, info: &RunInfo, count: usize) -> io::Res
 /// returns their names (without extension).
 pub fn plot_results(dir: &Path) -> io::Result<Vec<String>> {
     let info = RunInfo::read(dir)?;
+    if dir.join("lines").is_dir() && dir.join("tensions.csv").exists() {
+        return crate::figures_system::plot_system(dir, &info);
+    }
     let mut written = Vec::new();
     let mut put = |fig: &dyn Fn(&Path, &str) -> io::Result<()>, name: &str| -> io::Result<()> {
         fig(dir, name)?;

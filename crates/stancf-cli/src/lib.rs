@@ -6,6 +6,7 @@
 pub mod check;
 pub mod check_system;
 pub mod figures;
+pub mod figures_system;
 pub mod input_scales;
 pub mod moordyn;
 pub mod output;

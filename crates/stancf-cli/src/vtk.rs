@@ -1,5 +1,6 @@
 //! ParaView output (`stancf run --vtk`): one VTK XML PolyData file per
-//! written step, `vtk/cable_<k>.vtp`, with the cable as a polyline sampled
+//! written step, `vtk/cable_<k>.vtp`, with the cable (each line of a
+//! system, with its id as the point data `line`) as a polyline sampled
 //! at [`POINTS_PER_ELEMENT`] points per element and velocity, axial stress,
 //! curvature and the material coordinate as point data; and `cable.pvd`,
 //! the collection that gives each file its time. ASCII, so that any tool
@@ -33,9 +34,27 @@ impl VtkWriter {
         })
     }
 
-    /// One written step.
+    /// One written step of a single cable.
     pub fn write(&mut self, model: &Model, state: &State) -> io::Result<()> {
-        let points = cable_points(model, state, POINTS_PER_ELEMENT);
+        self.write_lines(state.t, &[(model, state)], None)
+    }
+
+    /// One written step of lines: one polyline per line (a system's, with
+    /// the point data `line`, each point's line id from `ids`).
+    pub fn write_lines(
+        &mut self,
+        t: f64,
+        lines: &[(&Model, &State)],
+        ids: Option<&[i64]>,
+    ) -> io::Result<()> {
+        let mut points = Vec::new();
+        let mut ends = Vec::with_capacity(lines.len());
+        let mut line_of_point = Vec::new();
+        for (i, (model, state)) in lines.iter().enumerate() {
+            points.extend(cable_points(model, state, POINTS_PER_ELEMENT));
+            ends.push(points.len());
+            line_of_point.resize(points.len(), ids.map_or(0, |ids| ids[i]));
+        }
         let finite = points.iter().all(|p| {
             p.r.iter().chain(p.v.iter()).all(|x| x.is_finite())
                 && p.axial_stress.is_finite()
@@ -44,7 +63,7 @@ impl VtkWriter {
         if !finite {
             return Err(io::Error::new(
                 io::ErrorKind::InvalidData,
-                format!("non-finite result at t = {}", state.t),
+                format!("non-finite result at t = {t}"),
             ));
         }
         let n = points.len();
@@ -58,13 +77,14 @@ impl VtkWriter {
             x,
             "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
              format=\"ascii\">{}</DataArray>\n</FieldData>",
-            Num(state.t)
+            Num(t)
         )
         .ok();
         writeln!(
             x,
-            "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"1\" \
-             NumberOfStrips=\"0\" NumberOfPolys=\"0\">"
+            "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" \
+             NumberOfStrips=\"0\" NumberOfPolys=\"0\">",
+            lines.len()
         )
         .ok();
         x.push_str("<PointData Scalars=\"axial_stress\" Vectors=\"velocity\">\n");
@@ -76,6 +96,9 @@ impl VtkWriter {
         );
         array1(&mut x, "curvature", points.iter().map(|p| p.curvature));
         array1(&mut x, "s", points.iter().map(|p| p.s));
+        if ids.is_some() {
+            array1(&mut x, "line", line_of_point.iter().map(|&id| id as f64));
+        }
         x.push_str("</PointData>\n<Points>\n");
         array3(&mut x, "position", points.iter().map(|p| p.r));
         x.push_str("</Points>\n<Lines>\n");
@@ -84,15 +107,17 @@ impl VtkWriter {
             write!(x, "{i} ").ok();
         }
         x.push_str("\n</DataArray>\n");
+        let offsets: Vec<String> = ends.iter().map(|e| e.to_string()).collect();
         writeln!(
             x,
-            "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">{n}</DataArray>"
+            "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">{}</DataArray>",
+            offsets.join(" ")
         )
         .ok();
         x.push_str("</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
         let name = format!("cable_{:06}.vtp", self.entries.len());
         write_atomic(&self.dir.join("vtk"), &name, x.as_bytes())?;
-        self.entries.push((state.t, format!("vtk/{name}")));
+        self.entries.push((t, format!("vtk/{name}")));
         Ok(())
     }
 

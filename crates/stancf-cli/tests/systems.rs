@@ -427,3 +427,27 @@ fn a_neutrally_buoyant_line_stays_put() {
         assert!(r[6] <= 1e-6 * 12.0 * 9.81 * length, "{r:?}");
     }
 }
+
+/// `--plot` draws every line's shapes, the energies and the end
+/// tensions; `--vtk` writes one polyline per line (with its id as point
+/// data) per written step, and the collection.
+#[test]
+fn a_system_run_draws_its_figures_and_writes_one_polyline_per_line() {
+    let d = scratch("systems-figures");
+    let analysis = "type = \"dynamic\"\ntime_step = 1e-4\nduration = 2e-3\n[output]\nevery = 5";
+    let sc = write_scenario(&d, "bridle.toml", &bridle(5.0, analysis));
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &["--plot", "--vtk"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    for fig in ["shapes", "energy", "tensions"] {
+        check_png(&out.join(format!("{fig}.png")));
+        assert!(out.join(format!("{fig}.svg")).is_file(), "{fig}.svg");
+    }
+    let vtp = std::fs::read_to_string(out.join("vtk/cable_000004.vtp")).unwrap();
+    assert!(vtp.contains("NumberOfLines=\"2\""), "{}", &vtp[..400]);
+    assert!(vtp.contains("Name=\"line\""));
+    let pvd = std::fs::read_to_string(out.join("cable.pvd")).unwrap();
+    assert_eq!(pvd.matches("<DataSet").count(), 5);
+    let o = stancf(&["plot", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+}

@@ -104,8 +104,9 @@ pub(super) fn run_system(
     } else {
         None
     };
-    let mut writers = SystemWriters::create(place.dir, &line_ids, &point_ids, &sc.channels)
-        .map_err(io_err(place.shown))?;
+    let mut writers =
+        SystemWriters::create(place.dir, &line_ids, &point_ids, &sc.channels, opts.vtk)
+            .map_err(io_err(place.shown))?;
     let mut from_static = false;
     if let Some(st) = static_solve.as_mut() {
         solve_statics(st, opts, &mut outcome);

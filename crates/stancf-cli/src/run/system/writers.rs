@@ -39,6 +39,8 @@ pub(super) struct SystemWriters {
     history: AtomicFile,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
     channels: Option<(AtomicFile, Vec<Channel>)>,
+    /// ParaView files (`--vtk`): one polyline per line.
+    vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
 }
 
@@ -48,6 +50,7 @@ impl SystemWriters {
         line_ids: &[i64],
         point_ids: &[i64],
         channels: &[OutputChannel],
+        with_vtk: bool,
     ) -> std::io::Result<Self> {
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
@@ -77,6 +80,11 @@ impl SystemWriters {
             Some((file, channels.iter().map(|c| c.channel).collect()))
         };
         Ok(SystemWriters {
+            vtk: if with_vtk {
+                Some(crate::vtk::VtkWriter::create(dir)?)
+            } else {
+                None
+            },
             channels,
             lines,
             line_ids: line_ids.to_vec(),
@@ -182,6 +190,9 @@ impl SystemWriters {
         {
             return Err(bad("energy or residual"));
         }
+        if let Some(vtk) = self.vtk.as_mut() {
+            vtk.write_lines(row.t, &row.lines, Some(&self.line_ids))?;
+        }
         if let Some((file, channels)) = self.channels.as_mut() {
             let w = file.writer();
             write!(w, "{t}")?;
@@ -216,6 +227,9 @@ impl SystemWriters {
         self.tensions.commit()?;
         if let Some((file, _)) = self.channels {
             file.commit()?;
+        }
+        if let Some(vtk) = self.vtk {
+            vtk.commit()?;
         }
         self.history.commit()
     }

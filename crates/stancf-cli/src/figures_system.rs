@@ -1,0 +1,134 @@
+//! The figures of a system's results (`stancf plot`, `run --plot`): every
+//! line's shape at a few written times in one frame, the energies, and
+//! the tension at every line end over time.
+
+use crate::figures::{centre_line, energy_figure, plane_of_motion, read_nodes, RunInfo, AXES};
+use crate::plot::{sequential, Lines, Series, PALETTE};
+use crate::results::{spread, Table};
+use std::io;
+use std::path::Path;
+
+/// One line's id, element length and written shapes.
+struct LineShapes {
+    id: i64,
+    element_length: Option<f64>,
+    steps: Vec<(f64, Vec<crate::figures::NodeRow>)>,
+}
+
+fn bad(path: &Path, what: &str) -> io::Error {
+    io::Error::new(
+        io::ErrorKind::InvalidData,
+        format!("{}: {what}", path.display()),
+    )
+}
+
+/// The lines listed in summary.json with their written shapes.
+fn read_lines(dir: &Path) -> io::Result<Vec<LineShapes>> {
+    let path = dir.join("summary.json");
+    let text = std::fs::read_to_string(&path)?;
+    let s: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
+    let lines = s["lines"]
+        .as_array()
+        .ok_or_else(|| bad(&path, "no lines"))?;
+    lines
+        .iter()
+        .map(|l| {
+            let id = l["id"]
+                .as_i64()
+                .ok_or_else(|| bad(&path, "a line without an id"))?;
+            let element_length = match (l["length"].as_f64(), l["elements"].as_f64()) {
+                (Some(len), Some(n)) if n > 0.0 => Some(len / n),
+                _ => None,
+            };
+            let steps = read_nodes(&dir.join("lines").join(id.to_string()))?;
+            Ok(LineShapes {
+                id,
+                element_length,
+                steps,
+            })
+        })
+        .collect()
+}
+
+/// Every line at `count` written times spread over the run, in the plane
+/// the system moves in most (colour: time; all lines of a time share it).
+fn shapes_figure(lines: &[LineShapes], info: &RunInfo, count: usize) -> Lines {
+    let all = lines
+        .iter()
+        .flat_map(|l| l.steps.iter().flat_map(|(_, n)| n.iter().map(|r| r.r)));
+    let (a, b) = plane_of_motion(all);
+    let mut fig = Lines::new(
+        format!("{}: shapes", info.title),
+        format!("{} (m)", AXES[a]),
+        format!("{} (m)", AXES[b]),
+    );
+    fig.equal_axes = true;
+    let steps = lines.first().map_or(0, |l| l.steps.len());
+    let picks = spread(steps, count);
+    for (k, &i) in picks.iter().enumerate() {
+        for l in lines {
+            let Some((t, nodes)) = l.steps.get(i) else {
+                continue;
+            };
+            let curve = centre_line(nodes, l.element_length, 12);
+            fig.series.push(Series::line(
+                format!("line {}, t = {}", l.id, crate::plot::tick(*t)),
+                curve.iter().map(|p| (p[a], p[b])).collect(),
+                sequential(k, picks.len()),
+            ));
+        }
+    }
+    fig
+}
+
+/// The tension at every line end against time, from tensions.csv.
+fn tensions_figure(dir: &Path, info: &RunInfo) -> io::Result<Lines> {
+    let path = dir.join("tensions.csv");
+    let text = std::fs::read_to_string(&path)?;
+    let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for (n, row) in text.lines().enumerate().skip(1) {
+        let f: Vec<&str> = row.split(',').collect();
+        let (Some(t), Some(line), Some(end), Some(tension)) =
+            (f.first(), f.get(1), f.get(2), f.get(6))
+        else {
+            return Err(bad(&path, &format!("line {}: too few columns", n + 1)));
+        };
+        let num = |s: &str| -> io::Result<f64> {
+            s.parse()
+                .map_err(|_| bad(&path, &format!("line {}: {s:?} is not a number", n + 1)))
+        };
+        let label = format!("line {line} end {end}");
+        let point = (num(t)?, num(tension)?);
+        match series.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, points)) => points.push(point),
+            None => series.push((label, vec![point])),
+        }
+    }
+    let mut fig = Lines::new(
+        format!("{}: end tensions", info.title),
+        if info.dynamic { "t (s)" } else { "load" },
+        "tension (N)",
+    );
+    for (k, (label, points)) in series.into_iter().enumerate() {
+        let mut s = Series::line(label, points, PALETTE[k % PALETTE.len()]);
+        if info.dynamic {
+            s = s.with_markers();
+        }
+        fig.series.push(s);
+    }
+    Ok(fig)
+}
+
+/// The figures of a system's results in `dir`; their names.
+pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
+    let lines = read_lines(dir)?;
+    let shapes = shapes_figure(&lines, info, 4);
+    crate::plot::save(&shapes, dir, "shapes")?;
+    let history = Table::read(&dir.join("history.csv"))?;
+    let energy = energy_figure(&history, info)?;
+    crate::plot::save(&energy, dir, "energy")?;
+    let tensions = tensions_figure(dir, info)?;
+    crate::plot::save(&tensions, dir, "tensions")?;
+    Ok(vec!["shapes".into(), "energy".into(), "tensions".into()])
+}
