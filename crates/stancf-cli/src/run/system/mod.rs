@@ -53,6 +53,18 @@ pub(super) fn run_system(
     sc: SystemScenario,
 ) -> Result<String, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    if sc.analysis.kind == AnalysisKind::Dynamic && !opts.allow_large {
+        let steps = sc.analysis.duration / sc.analysis.time_step;
+        if steps > crate::work_bounds::MAX_STEPS as f64 {
+            return Err(Failure::Input(format!(
+                "{}: analysis.duration, analysis.time_step: {} steps is above the {:e} a run \
+                 takes without --allow-large",
+                path.display(),
+                Sig(steps),
+                crate::work_bounds::MAX_STEPS as f64
+            )));
+        }
+    }
     let system = sc.system().map_err(input)?;
     for n in &sc.notes {
         eprintln!("warning: {n}");
