@@ -50,6 +50,7 @@ pub fn write_atomic(dir: &Path, name: &str, contents: &[u8]) -> io::Result<()> {
 /// A number for a CSV file: the shortest text that reads back to the same
 /// f64, in exponent form outside [1e-4, 1e15) so no field gets long.
 /// Callers never pass a non-finite value (they are checked first).
+#[derive(Clone, Copy)]
 pub struct Num(pub f64);
 
 impl std::fmt::Display for Num {

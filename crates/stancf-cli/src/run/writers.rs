@@ -13,6 +13,50 @@ use std::time::Instant;
 /// Stress samples per element in stress.csv (ends included).
 pub(crate) const STRESS_POINTS_PER_ELEMENT: usize = 5;
 
+/// The rows of nodes.csv at time t: `t,node,x,y,z,dx_ds,dy_ds,dz_ds`.
+pub(crate) fn node_rows(
+    w: &mut impl Write,
+    t: Num,
+    model: &Model,
+    state: &State,
+) -> std::io::Result<()> {
+    for j in 0..model.nodes() {
+        let r = model.node_position(&state.e, j);
+        let o = model.coordinate(j, SLOT_R_X, 0);
+        let d = &state.e[o..o + 3];
+        writeln!(
+            w,
+            "{t},{j},{},{},{},{},{},{}",
+            Num(r[0]),
+            Num(r[1]),
+            Num(r[2]),
+            Num(d[0]),
+            Num(d[1]),
+            Num(d[2])
+        )?;
+    }
+    Ok(())
+}
+
+/// The rows of stress.csv at time t: `t,s,axial_stress,curvature,element`.
+pub(crate) fn stress_rows(
+    w: &mut impl Write,
+    t: Num,
+    samples: &[StressSample],
+) -> std::io::Result<()> {
+    for s in samples {
+        writeln!(
+            w,
+            "{t},{},{},{},{}",
+            Num(s.s),
+            Num(s.axial_stress),
+            Num(s.curvature),
+            s.element
+        )?;
+    }
+    Ok(())
+}
+
 /// The streamed result files of a run.
 pub(crate) struct Writers {
     history: AtomicFile,
@@ -156,33 +200,8 @@ impl Writers {
             Num(row.constraint_work),
             Num(row.drag_work)
         )?;
-        let w = self.nodes.writer();
-        for j in 0..model.nodes() {
-            let r = model.node_position(&state.e, j);
-            let o = model.coordinate(j, SLOT_R_X, 0);
-            let d = &state.e[o..o + 3];
-            writeln!(
-                w,
-                "{t},{j},{},{},{},{},{},{}",
-                Num(r[0]),
-                Num(r[1]),
-                Num(r[2]),
-                Num(d[0]),
-                Num(d[1]),
-                Num(d[2])
-            )?;
-        }
-        let w = self.stress.writer();
-        for s in &self.samples {
-            writeln!(
-                w,
-                "{t},{},{},{},{}",
-                Num(s.s),
-                Num(s.axial_stress),
-                Num(s.curvature),
-                s.element
-            )?;
-        }
+        node_rows(self.nodes.writer(), t, model, state)?;
+        stress_rows(self.stress.writer(), t, &self.samples)?;
         if let Some(vtk) = self.vtk.as_mut() {
             vtk.write(model, state)?;
         }

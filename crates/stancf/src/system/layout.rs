@@ -30,6 +30,30 @@ pub struct LineMap {
     pub start: usize,
 }
 
+impl LineMap {
+    /// The line's local unknowns from the system's x.
+    pub fn gather(&self, x: &[f64], local: &mut [f64]) {
+        for (u, &g) in self.global.iter().enumerate() {
+            local[u] = x[g];
+        }
+    }
+
+    /// Sets the system's x at the line's unknowns from its local ones.
+    pub fn scatter(&self, local: &[f64], x: &mut [f64]) {
+        for (u, &g) in self.global.iter().enumerate() {
+            x[g] = local[u];
+        }
+    }
+
+    /// Adds the line's local rows to the system's (a free point's rows
+    /// sum the lines attached there).
+    pub fn add_rows(&self, local: &[f64], rows: &mut [f64]) {
+        for (u, &g) in self.global.iter().enumerate() {
+            rows[g] += local[u];
+        }
+    }
+}
+
 /// The numbering of a system's step or static solve.
 #[derive(Clone, Debug)]
 pub struct SystemLayout {
@@ -174,6 +198,34 @@ fn line_map(
         start,
     };
     (map, shape)
+}
+
+/// Adds line `block`'s rows at the system's x to `residual`, and its
+/// Jacobian entries to `jacobian` through a [`LineView`]: `assemble`
+/// evaluates the line at its local unknowns (gathered into `local_x`)
+/// into `local_rows`.
+pub(super) fn add_line_rows(
+    map: &LineMap,
+    block: usize,
+    x: &[f64],
+    (local_x, local_rows): (&mut [f64], &mut [f64]),
+    residual: &mut [f64],
+    jacobian: Option<&mut BorderedMatrix>,
+    assemble: impl FnOnce(&[f64], &mut [f64], Option<&mut LineView>),
+) {
+    map.gather(x, local_x);
+    match jacobian {
+        Some(matrix) => {
+            let mut view = LineView {
+                matrix,
+                block,
+                place: &map.place,
+            };
+            assemble(local_x, local_rows, Some(&mut view));
+        }
+        None => assemble(local_x, local_rows, None),
+    }
+    map.add_rows(local_rows, residual);
 }
 
 /// One line's share of the bordered Jacobian, in the line's numbering.

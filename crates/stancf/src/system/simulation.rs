@@ -5,7 +5,7 @@
 //! slab equations of all lines and points together with the bordered
 //! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
 
-use super::layout::{LineView, SystemLayout};
+use super::layout::{add_line_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
 use super::{End, System};
 use crate::assembly::{Kind, Scheme, SlabLayout};
@@ -247,9 +247,7 @@ impl SystemSimulation {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = line.unknowns();
-            for (u, &g) in map.global.iter().enumerate() {
-                xl[u] = self.x[g];
-            }
+            map.gather(&self.x, xl);
         }
         for line in &mut self.lines {
             line.finish_step(report);
@@ -271,9 +269,7 @@ impl SystemSimulation {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = line.unknowns();
-            for (u, &g) in map.global.iter().enumerate() {
-                self.x[g] = xl[u];
-            }
+            map.scatter(xl, &mut self.x);
         }
         let layout = &self.layout.lines[0];
         let h = self.slab.dt;
@@ -330,9 +326,7 @@ impl SystemSimulation {
                 // The line's rows at the converged unknowns.
                 let map = &self.layout.maps[i];
                 let xl = &mut self.x_local[i];
-                for (u, &g) in map.global.iter().enumerate() {
-                    xl[u] = self.x[g];
-                }
+                map.gather(&self.x, xl);
                 line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
             }
             let layout = &self.layout.lines[i];
@@ -535,26 +529,16 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
             j.clear();
         }
         for (i, line) in self.lines.iter_mut().enumerate() {
-            let map = &self.layout.maps[i];
-            let xl = &mut self.x_local[i];
-            for (u, &g) in map.global.iter().enumerate() {
-                xl[u] = x[g];
-            }
-            let rl = &mut self.residual_local[i];
-            match jacobian.as_deref_mut() {
-                Some(m) => {
-                    let mut view = LineView {
-                        matrix: m,
-                        block: i,
-                        place: &map.place,
-                    };
-                    line.assemble_line(xl, rl, Some(&mut view));
-                }
-                None => line.assemble_line::<BorderedMatrix>(xl, rl, None),
-            }
-            for (u, &g) in map.global.iter().enumerate() {
-                residual[g] += rl[u];
-            }
+            let local = (&mut self.x_local[i][..], &mut self.residual_local[i][..]);
+            add_line_rows(
+                &self.layout.maps[i],
+                i,
+                x,
+                local,
+                residual,
+                jacobian.as_deref_mut(),
+                |xl, rl, view| line.assemble_line(xl, rl, view),
+            );
         }
         let layout = &self.layout.lines[0];
         for (p, idx) in self.point_index.iter().enumerate() {

@@ -20,7 +20,7 @@
 //! ramping the loads from zero, no increment meets a slack line without
 //! load (whose shape nothing determines).
 
-use super::layout::{LineView, SystemLayout};
+use super::layout::{add_line_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::{End, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
@@ -210,26 +210,16 @@ impl SystemEquations {
         mut jacobian: Option<&mut BorderedMatrix>,
     ) {
         for (i, line) in self.lines.iter_mut().enumerate() {
-            let map = &self.layout.maps[i];
-            let xl = &mut self.x_local[i];
-            for (u, &g) in map.global.iter().enumerate() {
-                xl[u] = x[g];
-            }
-            let rl = &mut self.residual_local[i];
-            match jacobian.as_deref_mut() {
-                Some(m) => {
-                    let mut view = LineView {
-                        matrix: m,
-                        block: i,
-                        place: &map.place,
-                    };
-                    line.assemble_into(xl, rl, Some(&mut view));
-                }
-                None => line.assemble_into::<BorderedMatrix>(xl, rl, None),
-            }
-            for (u, &g) in map.global.iter().enumerate() {
-                residual[g] += rl[u];
-            }
+            let local = (&mut self.x_local[i][..], &mut self.residual_local[i][..]);
+            add_line_rows(
+                &self.layout.maps[i],
+                i,
+                x,
+                local,
+                residual,
+                jacobian.as_deref_mut(),
+                |xl, rl, view| line.assemble_into(xl, rl, view),
+            );
         }
     }
 }
@@ -290,9 +280,7 @@ impl StaticEquations for SystemEquations {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = &mut self.x_local[i];
-            for (u, &g) in map.global.iter().enumerate() {
-                xl[u] = x[g];
-            }
+            map.gather(x, xl);
             line.converged(xl, &mut self.residual_local[i]);
         }
         for (p, point) in self.system.points().iter().enumerate() {

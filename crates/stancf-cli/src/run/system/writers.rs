@@ -4,9 +4,9 @@
 
 use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Num};
-use crate::run::writers::STRESS_POINTS_PER_ELEMENT;
+use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::OutputChannel;
-use stancf::model::{SLOT_R, SLOT_R_X};
+use stancf::model::SLOT_R;
 use stancf::observe::{stress_samples, StressSample};
 use stancf::system::EndForce;
 use stancf::{Model, State};
@@ -119,33 +119,8 @@ impl SystemWriters {
                 return Err(bad(&format!("stress of line {}", self.line_ids[i])));
             }
             let (nodes, stress) = &mut self.lines[i];
-            let w = nodes.writer();
-            for j in 0..model.nodes() {
-                let r = model.node_position(&state.e, j);
-                let o = model.coordinate(j, SLOT_R_X, 0);
-                let d = &state.e[o..o + 3];
-                writeln!(
-                    w,
-                    "{t},{j},{},{},{},{},{},{}",
-                    Num(r[0]),
-                    Num(r[1]),
-                    Num(r[2]),
-                    Num(d[0]),
-                    Num(d[1]),
-                    Num(d[2])
-                )?;
-            }
-            let w = stress.writer();
-            for s in &self.samples {
-                writeln!(
-                    w,
-                    "{t},{},{},{},{}",
-                    Num(s.s),
-                    Num(s.axial_stress),
-                    Num(s.curvature),
-                    s.element
-                )?;
-            }
+            node_rows(nodes.writer(), t, model, state)?;
+            stress_rows(stress.writer(), t, &self.samples)?;
         }
         for (p, (x, v, f)) in row.points.iter().enumerate() {
             if ![x, v, f].iter().all(|a| a.iter().all(|c| c.is_finite())) {
