@@ -27,6 +27,9 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
+#[path = "common/rope_systems.rs"]
+mod rope_systems;
+
 use stancf::{
     Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
     ModelOptions, Simulation, StepSettings,
@@ -125,62 +128,20 @@ fn stepping_a_cable_allocates_nothing() {
 /// allocates nothing, with either constraint route and all three
 /// solvers.
 fn stepping_a_system_with_a_free_point_allocates_nothing() {
-    use stancf::constraints::Oscillation;
-    use stancf::system::{straight_states, End, Line, Point, System, SystemSimulation};
+    use rope_systems::{settings, three_to_a_point};
+    use stancf::system::{straight_states, SystemSimulation};
     use stancf::SolverMethod;
-    let g = [0.0, 0.0, -9.81];
-    let hub: [f64; 3] = [0.0, 0.0, -1.0];
-    let anchors: [[f64; 3]; 3] = [[2.0, 0.0, 0.0], [-1.0, 1.7, 0.0], [-1.0, -1.7, 0.5]];
     for (method, solver) in [
         (ConstraintMethod::Multiplier, SolverMethod::Newton),
         (ConstraintMethod::Elimination, SolverMethod::Newton),
         (ConstraintMethod::Multiplier, SolverMethod::Broyden),
         (ConstraintMethod::Elimination, SolverMethod::ModifiedNewton),
     ] {
-        let lines = anchors
-            .iter()
-            .enumerate()
-            .map(|(i, a)| {
-                let d = [hub[0] - a[0], hub[1] - a[1], hub[2] - a[2]];
-                let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-                let model = Model::new(
-                    Cable::straight(length, 10, ElementType::Sac2)
-                        .with_origin(*a)
-                        .with_direction(d),
-                    Material {
-                        youngs_modulus: 1e7,
-                        density: 1000.0,
-                        area: 1e-5,
-                        second_moment: 1e-12,
-                    },
-                    ModelOptions::default(),
-                    vec![Load::Gravity { acceleration: g }],
-                )
-                .unwrap();
-                Line {
-                    model,
-                    ends: [End::Point(i), End::Point(3)],
-                }
-            })
-            .collect();
-        let swing = Oscillation {
-            amplitude: [0.05, 0.0, 0.0],
-            period: 0.5,
-            phase: 0.0,
-            ramp: 0.0,
-        };
-        let points = vec![
-            Point::fixed(anchors[0]),
-            Point::fixed(anchors[1]),
-            Point::coupled(anchors[2], swing),
-            Point::free(hub, 0.2),
-        ];
-        let system = System::new(lines, points, g).unwrap();
+        let system = three_to_a_point(10);
         let start = straight_states(&system);
         let mut settings = StepSettings {
-            time_step: 1e-4,
             constraint_method: method,
-            ..StepSettings::default()
+            ..settings()
         };
         settings.newton.method = solver;
         let mut sim = SystemSimulation::new(system, start, settings).unwrap();

@@ -30,6 +30,8 @@ pub(crate) struct StaticNewton<F: Factorization> {
     pub x: Vec<f64>,
     x_trial: Vec<f64>,
     x_prev: Vec<f64>,
+    /// The start of the increment being tried (restored if it fails).
+    x_saved: Vec<f64>,
     residual: Vec<f64>,
     dx: Vec<f64>,
     /// Row weights 1 / |K_ii| (refreshed with every Jacobian).
@@ -61,6 +63,7 @@ impl<F: Factorization> StaticNewton<F> {
         StaticNewton {
             x_trial: x.clone(),
             x_prev: x.clone(),
+            x_saved: x.clone(),
             x,
             residual: vec![0.0; n],
             dx: vec![0.0; n],
@@ -212,7 +215,7 @@ impl<F: Factorization> StaticNewton<F> {
             let target = (self.lambda + self.step).min(1.0);
             let h = target - self.lambda;
             // Predictor: secant extrapolation from the last two solutions.
-            let saved = self.x.clone();
+            self.x_saved.copy_from_slice(&self.x);
             if self.previous_step > 0.0 {
                 let f = h / self.previous_step;
                 for i in 0..self.x.len() {
@@ -222,7 +225,7 @@ impl<F: Factorization> StaticNewton<F> {
             eq.set_load_factor(target);
             match self.newton(eq) {
                 Ok((iterations, residual, increment)) => {
-                    self.x_prev.copy_from_slice(&saved);
+                    self.x_prev.copy_from_slice(&self.x_saved);
                     self.previous_step = h;
                     self.lambda = target;
                     self.increments += 1;
@@ -239,7 +242,7 @@ impl<F: Factorization> StaticNewton<F> {
                     return Ok(Some(inc));
                 }
                 Err(kind) => {
-                    self.x.copy_from_slice(&saved);
+                    self.x.copy_from_slice(&self.x_saved);
                     self.cuts += 1;
                     if self.cuts > self.settings.max_cuts {
                         eq.set_load_factor(self.lambda);

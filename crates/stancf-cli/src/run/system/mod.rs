@@ -34,6 +34,24 @@ struct Outcome {
 }
 
 impl Outcome {
+    /// Takes the end tensions of a simulation's last step into the
+    /// largest ones (every step, without building a written row).
+    fn record_step_tensions(&mut self, sim: &SystemSimulation) {
+        for (i, (m, line)) in self
+            .max_tension
+            .iter_mut()
+            .zip(sim.system().lines())
+            .enumerate()
+        {
+            let forces = sim.end_forces(i);
+            for k in 0..2 {
+                if line.ends[k] != stancf::system::End::Loose {
+                    m[k] = m[k].max(forces[k].tension());
+                }
+            }
+        }
+    }
+
     fn record_tensions(&mut self, ends: &[[Option<EndForce>; 2]]) {
         for (m, e) in self.max_tension.iter_mut().zip(ends) {
             for k in 0..2 {
@@ -224,10 +242,9 @@ fn step_through(
                 outcome.steps = k;
                 outcome.iterations += rep.newton.iterations;
                 outcome.t = sim.time();
-                let row = dynamic_row(sim, true);
-                outcome.record_tensions(&row.ends);
+                outcome.record_step_tensions(sim);
                 if k % sc.output_every == 0 || k == steps {
-                    let mut row = row;
+                    let mut row = dynamic_row(sim, true);
                     row.iterations = rep.newton.iterations;
                     row.residual = rep.newton.residual;
                     writers.write(&row)?;
