@@ -13,25 +13,50 @@ use stancf::TimeScheme;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Validates the system of `sc` as `run` does and returns the report.
-pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
+/// What a run of a system starts from, built before anything is
+/// written (each refuses what it cannot run): the system, its static
+/// solve from the lines' catenaries (a static analysis, or
+/// `initial = "static"`), and its simulation from the straight start (a
+/// dynamic analysis).
+pub struct Prepared {
+    pub system: System,
+    pub statics: Option<SystemStatics>,
+    pub dynamics: Option<SystemSimulation>,
+}
+
+/// Builds what `sc` runs (see [`Prepared`]); errors are input errors
+/// naming `path`.
+pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
     let system = sc.system().map_err(input)?;
-    if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static {
+    let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
+    {
         let seeds = catenary_states(&system);
         sc.check_submerged(&system, &seeds).map_err(|e| {
             Failure::Input(format!("{}: {e} (the line's catenary)", path.display()))
         })?;
-        SystemStatics::new(system.clone(), seeds, sc.analysis.static_settings()).map_err(input)?;
-    }
-    if sc.analysis.kind == AnalysisKind::Dynamic {
-        SystemSimulation::new(
-            system.clone(),
-            straight_states(&system),
-            sc.analysis.step_settings(),
-        )
-        .map_err(input)?;
-    }
+        let settings = sc.analysis.static_settings();
+        Some(SystemStatics::new(system.clone(), seeds, settings).map_err(input)?)
+    } else {
+        None
+    };
+    let dynamics = if sc.analysis.kind == AnalysisKind::Dynamic {
+        let start = straight_states(&system);
+        let settings = sc.analysis.step_settings();
+        Some(SystemSimulation::new(system.clone(), start, settings).map_err(input)?)
+    } else {
+        None
+    };
+    Ok(Prepared {
+        system,
+        statics,
+        dynamics,
+    })
+}
+
+/// Validates the system of `sc` as `run` does and returns the report.
+pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
+    let system = prepare(path, sc)?.system;
     let mut r = String::new();
     let mut line = |k: &str, v: String| {
         let _ = writeln!(r, "{k:<28}{v}");

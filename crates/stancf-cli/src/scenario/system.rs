@@ -34,6 +34,14 @@ pub struct LineType {
     pub caax: f64,
 }
 
+impl LineType {
+    /// The area pi d^2 / 4 the section is spread over (and that displaces
+    /// water).
+    pub fn area(&self) -> f64 {
+        std::f64::consts::PI * self.diameter * self.diameter / 4.0
+    }
+}
+
 /// What holds a point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PointType {

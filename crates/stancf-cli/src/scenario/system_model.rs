@@ -35,10 +35,7 @@ impl SystemScenario {
     /// mass scaled by this fraction (docs/method.md §11.8).
     pub fn wet_weight_fraction(&self, t: &LineType) -> f64 {
         match self.water {
-            Some(w) => {
-                let area = std::f64::consts::PI * t.diameter * t.diameter / 4.0;
-                1.0 - w.density * area / t.mass_per_length
-            }
+            Some(w) => 1.0 - w.density * t.area() / t.mass_per_length,
             None => 1.0,
         }
     }
@@ -133,7 +130,7 @@ fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: 
 /// The material of a line type's section: A = pi d^2 / 4, E = EA / A,
 /// rho = m / A, I = EI / E.
 fn section_material(t: &LineType, ei: f64) -> Material {
-    let area = std::f64::consts::PI * t.diameter * t.diameter / 4.0;
+    let area = t.area();
     let youngs_modulus = t.ea / area;
     Material {
         youngs_modulus,

@@ -12,9 +12,7 @@ use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
 use crate::Failure;
 use serde_json::{json, Value};
 use stancf::error::Sig;
-use stancf::system::{
-    catenary_states, straight_states, EndForce, System, SystemSimulation, SystemStatics,
-};
+use stancf::system::{EndForce, System, SystemSimulation, SystemStatics};
 use stancf::{energies, SolverError};
 use std::ops::ControlFlow;
 use std::path::Path;
@@ -83,7 +81,11 @@ pub(super) fn run_system(
             )));
         }
     }
-    let system = sc.system().map_err(input)?;
+    let crate::check_system::Prepared {
+        system,
+        statics: mut static_solve,
+        dynamics: mut sim,
+    } = crate::check_system::prepare(path, &sc)?;
     for n in &sc.notes {
         eprintln!("warning: {n}");
     }
@@ -110,29 +112,6 @@ pub(super) fn run_system(
         t: 0.0,
         failure: None,
         interrupted: false,
-    };
-    let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
-    let mut static_solve = if statics {
-        let seeds = catenary_states(&system);
-        sc.check_submerged(&system, &seeds).map_err(|e| {
-            Failure::Input(format!("{}: {e} (the line's catenary)", path.display()))
-        })?;
-        Some(
-            SystemStatics::new(system.clone(), seeds, sc.analysis.static_settings())
-                .map_err(input)?,
-        )
-    } else {
-        None
-    };
-    // Built before anything is written: it refuses what it cannot run.
-    let mut sim = if sc.analysis.kind == AnalysisKind::Dynamic {
-        let start = straight_states(&system);
-        Some(
-            SystemSimulation::new(system.clone(), start, sc.analysis.step_settings())
-                .map_err(input)?,
-        )
-    } else {
-        None
     };
     let mut writers =
         SystemWriters::create(place.dir, &line_ids, &point_ids, &sc.channels, opts.vtk)
