@@ -129,6 +129,47 @@ fn a_system_run_writes_every_line_point_and_end_at_every_written_step() {
     assert_eq!(history.len(), 5);
 }
 
+/// The bridle released from straight lines, stepped by P2 and by the
+/// Galerkin step (whose free point's rates solve the system's mass
+/// matrix, docs/method.md §11.10): after 20 ms the clump weight is where
+/// P2 at half the step puts it to within P2's own error at the full step
+/// (the distance between its two runs; Galerkin, order 6 at the step
+/// ends, is far closer to the exact motion than P2, order 4).
+#[test]
+fn a_bridle_swings_alike_with_either_time_scheme() {
+    let d = scratch("systems-bridle-schemes");
+    let clump = |scheme: &str, dt: f64| -> [f64; 3] {
+        let analysis = format!(
+            "type = \"dynamic\"\ntime_scheme = \"{scheme}\"\ntime_step = {dt:e}\nduration = 0.02"
+        );
+        let name = format!("{scheme}-{dt:e}");
+        let sc = write_scenario(&d, &format!("{name}.toml"), &bridle(5.0, &analysis));
+        let out = d.join(&name);
+        let o = run_to(&sc, &out);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        let (_, points) = read_csv(&out.join("points.csv"));
+        let p3 = points.iter().rev().find(|r| r[1] == 3.0).expect("point 3");
+        assert!(
+            (p3[0] - 0.02).abs() < 1e-12,
+            "the last row is at t = 0.02: {p3:?}"
+        );
+        [p3[2], p3[3], p3[4]]
+    };
+    let distance =
+        |a: [f64; 3], b: [f64; 3]| (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>().sqrt();
+    let (p2, p2_half, galerkin) = (
+        clump("p2", 1e-4),
+        clump("p2", 5e-5),
+        clump("galerkin", 1e-4),
+    );
+    let moved = distance(p2_half, [2.5, 0.0, -2.5]);
+    let p2_error = distance(p2, p2_half);
+    let gap = distance(galerkin, p2_half);
+    eprintln!("moved {moved:e} m; P2 dt vs dt/2 {p2_error:e} m; Galerkin vs P2 dt/2 {gap:e} m");
+    assert!(moved > 1e-3, "the clump weight must fall: {moved:e}");
+    assert!(gap <= p2_error, "{gap:e} > {p2_error:e}");
+}
+
 /// The same cable as a `[cable]` scenario pinned at both ends and as a
 /// one-line system between two fixed points: the same material figures
 /// (E = EA / A, rho = m / A, I = EI / E with A = pi d^2 / 4, computed

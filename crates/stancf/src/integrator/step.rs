@@ -99,6 +99,7 @@ impl Simulation {
             return;
         }
         self.state.clone_from(&self.previous.state);
+        self.momentum.copy_from_slice(&self.previous.momentum);
         self.acceleration
             .copy_from_slice(&self.previous.acceleration);
         self.constraint_work = self.previous.constraint_work;
@@ -134,16 +135,86 @@ impl Simulation {
     /// Completes the step whose converged unknowns are in
     /// [`Self::unknowns`].
     pub(crate) fn finish_step(&mut self, newton: NewtonReport) -> StepReport {
-        let dt = self.settings.time_step;
-        self.save_undo();
-        self.expand_solution(dt);
+        self.expand_step();
         self.galerkin_end_rates();
+        self.close_step(newton)
+    }
+
+    /// First part of [`Self::finish_step`]: keeps the undo data and
+    /// expands the converged unknowns to the time nodes (the Galerkin
+    /// step's end momentum dA/de_b included).
+    pub(crate) fn expand_step(&mut self) {
+        self.save_undo();
+        self.expand_solution(self.settings.time_step);
+    }
+
+    /// Last part of [`Self::finish_step`], once the end rates are set:
+    /// the reactions and the new state.
+    pub(crate) fn close_step(&mut self, newton: NewtonReport) -> StepReport {
+        let dt = self.settings.time_step;
         self.collect_reactions(dt);
         self.advance(dt);
         StepReport {
             step: self.steps,
             t: self.state.t,
             newton,
+        }
+    }
+
+    /// Galerkin step of a line in a system whose end rates v_b come from
+    /// the system's mass matrix (docs/method.md §11.10): the momentum
+    /// its free coordinates must carry, `q = p_b - M_fc v_c` (p_b =
+    /// dA/de_b, v_c the prescribed end rates of the constrained
+    /// coordinates), in `self.rhs` at the free coordinates (zero at the
+    /// constrained ones). Call after [`Self::expand_step`].
+    pub(crate) fn free_end_momentum(&mut self) -> &[f64] {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        let constraints = &self.model.constraints;
+        for g in 0..n {
+            self.mass_v[g] = if constraints.is_constrained(g) {
+                self.start.fixed_v[last * n + g]
+            } else {
+                0.0
+            };
+        }
+        self.model.mass_times(&self.mass_v, &mut self.rhs);
+        for g in 0..n {
+            self.rhs[g] = if constraints.is_constrained(g) {
+                0.0
+            } else {
+                self.scratch.end_momentum[g] - self.rhs[g]
+            };
+        }
+        &self.rhs
+    }
+
+    /// Sets the Galerkin step's end rates v_b (the prescribed ones at
+    /// constrained coordinates, `free_rate(g)` at the others) and M v_b,
+    /// in place of the line's own mass solve. Call between
+    /// [`Self::expand_step`] and [`Self::close_step`].
+    pub(crate) fn set_end_rates(&mut self, free_rate: impl Fn(usize) -> f64) {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        for g in 0..n {
+            self.rhs[g] = if self.model.constraints.is_constrained(g) {
+                self.start.fixed_v[last * n + g]
+            } else {
+                free_rate(g)
+            };
+            self.scratch.node_v[last * n + g] = self.rhs[g];
+        }
+        self.model.mass_times(&self.rhs, &mut self.mass_v);
+    }
+
+    /// Galerkin: the line's share of the end impulse at coordinate g,
+    /// `dA/de_b - M v_b` (the end row's part that P2 carries in its
+    /// e_L row, docs/method.md §5.1); zero for P2.
+    pub(crate) fn galerkin_end_term(&self, g: usize) -> f64 {
+        if self.layout.scheme == crate::assembly::Scheme::Galerkin {
+            self.scratch.end_momentum[g] - self.mass_v[g]
+        } else {
+            0.0
         }
     }
 

@@ -24,6 +24,7 @@
 //! ([`crate::bordered`]), factorized by block elimination.
 
 mod layout;
+mod mass;
 mod point_terms;
 mod seed;
 mod simulation;

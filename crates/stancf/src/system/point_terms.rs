@@ -9,7 +9,9 @@
 //!
 //! with C and b the slab's kinetic and load weights (§3.1), plus the
 //! momentum terms of the P2 rows, + m v_a on row e_0 and - m v_L on row
-//! e_L (§4.3); in statics the row is - F. The lines attached at the point
+//! e_L (§4.3) (the Galerkin step: + p_a on row e_0 and no e_L row, the
+//! end momentum [`PointTerms::end_momentum`] taking its place, §11.10);
+//! in statics the row is - F. The lines attached at the point
 //! add their own shares to the same rows (their end's coordinates are
 //! the point's), so the rows state the point's balance of momentum.
 
@@ -59,6 +61,21 @@ impl PointTerms<'_> {
                 nodes.v[i][c] = sv.map_or(v0[c], |s| x[self.index[3 * s + c]]);
             }
         }
+    }
+
+    /// The Galerkin step's end momentum of the point, its share of
+    /// p_b = dA/de_b (docs/method.md §5.1, §11.10): the gradient entry of
+    /// the slot (1, e) that the step has no row for,
+    /// `m sum_n C_(e_b) n y_n + b_(e_b) F`.
+    pub fn end_momentum(&self, nodes: &PointNodes) -> [f64; 3] {
+        let y = [nodes.e[0], nodes.v[0], nodes.e[1], nodes.v[1]];
+        std::array::from_fn(|c| {
+            let mut p = self.slab.load[2] * self.load[c];
+            for (b, yb) in y.iter().enumerate() {
+                p += self.mass * self.slab.kinetic[2][b] * yb[c];
+            }
+            p
+        })
     }
 
     /// Adds the point's share to the rows and, if given, the Jacobian.

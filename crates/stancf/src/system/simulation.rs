@@ -6,6 +6,7 @@
 //! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
 
 use super::layout::{add_line_rows, SystemLayout};
+use super::mass::SystemMass;
 use super::point_terms::{PointNodes, PointTerms};
 use super::{End, System};
 use crate::assembly::{Kind, Scheme, SlabLayout};
@@ -79,6 +80,10 @@ pub struct SystemSimulation {
     unknown_scale: Vec<f64>,
     equation_scale: Vec<f64>,
     end_forces: Vec<[EndForce; 2]>,
+    /// The Galerkin step's system mass matrix (free points only).
+    mass: Option<SystemMass>,
+    /// The Galerkin step's end momenta of the free points.
+    point_momentum: Vec<[f64; 3]>,
     steps: usize,
     t: f64,
 }
@@ -100,13 +105,6 @@ impl SystemSimulation {
                     system.lines().len(),
                     initial.len()
                 ),
-            ));
-        }
-        if system.has_free_points() && settings.time_scheme == TimeScheme::Galerkin {
-            return Err(ModelError::invalid(
-                "analysis.time_scheme",
-                "the Galerkin step of a system with free points is not available in this \
-                 version (its end rates need the system's mass matrix); use \"p2\"",
             ));
         }
         let t = initial[0].t;
@@ -151,7 +149,14 @@ impl SystemSimulation {
         let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let (unknown_scale, equation_scale) = system_scales(&system, &lines, &layout);
+        let mass = if system.has_free_points() && scheme == Scheme::Galerkin {
+            Some(SystemMass::new(&system, &models)?)
+        } else {
+            None
+        };
         Ok(SystemSimulation {
+            mass,
+            point_momentum: vec![[0.0; 3]; system.points().len()],
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             point_nodes: vec![PointNodes::default(); system.points().len()],
             system,
@@ -249,9 +254,7 @@ impl SystemSimulation {
             let xl = line.unknowns();
             map.gather(&self.x, xl);
         }
-        for line in &mut self.lines {
-            line.finish_step(report);
-        }
+        self.finish_lines(report);
         self.collect_end_forces(dt);
         self.advance_points(dt);
         self.steps += 1;
@@ -261,6 +264,41 @@ impl SystemSimulation {
             t: self.t,
             newton: report,
         })
+    }
+
+    /// Completes every line's step. The Galerkin step of a system with
+    /// free points takes the end rates from the system's mass matrix
+    /// (docs/method.md §11.10), the others from each line's own.
+    fn finish_lines(&mut self, report: NewtonReport) {
+        let Some(mass) = &mut self.mass else {
+            for line in &mut self.lines {
+                line.finish_step(report);
+            }
+            return;
+        };
+        for line in &mut self.lines {
+            line.expand_step();
+        }
+        let layout = &self.layout.lines[0];
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let m = &self.points[p];
+            let terms = PointTerms {
+                mass: self.system.points()[p].mass,
+                load: self.system.point_load(p),
+                index: idx,
+                layout,
+                slab: &self.slab,
+            };
+            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
+            self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
+        }
+        mass.set_end_rates(&mut self.lines, &self.point_momentum);
+        for line in &mut self.lines {
+            line.close_step(report);
+        }
     }
 
     /// The lines' predicted unknowns and the free points' (Taylor
@@ -336,7 +374,12 @@ impl SystemSimulation {
                     continue;
                 };
                 let force = if self.system.points()[p].is_free() {
-                    position_row_sum(layout, node, &self.residual_local[i]).map(|f| f / dt)
+                    let rows = position_row_sum(layout, node, &self.residual_local[i]);
+                    let dpn = line.model().dofs_per_node();
+                    std::array::from_fn(|c| {
+                        let g = coordinate(dpn, node, SLOT_R, c);
+                        (rows[c] + line.galerkin_end_term(g)) / dt
+                    })
                 } else {
                     let r = line
                         .reactions()
@@ -359,8 +402,13 @@ impl SystemSimulation {
         for (p, point) in self.system.points().iter().enumerate() {
             let m = &mut self.points[p];
             m.previous = (m.e, m.v);
+            let galerkin_rate = self.mass.as_ref().and_then(|mass| mass.point_rate(p));
             let (e, v) = if self.point_index[p].is_empty() {
                 point.state_at(t_end)
+            } else if let Some(v) = galerkin_rate {
+                let idx = &self.point_index[p];
+                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
+                (std::array::from_fn(|c| self.x[idx[3 * se + c]]), v)
             } else {
                 let idx = &self.point_index[p];
                 let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
