@@ -125,22 +125,26 @@ fn stepping_a_cable_allocates_nothing() {
 /// Three lines from two fixed points and a moving coupled one meet at a
 /// free point carrying a mass: after the first step, stepping the system
 /// (the bordered factorization, the point rows, the end forces)
-/// allocates nothing, with either constraint route and all three
-/// solvers.
+/// allocates nothing, with either constraint route, all three solvers
+/// and both time schemes (the Galerkin step's system mass solve too).
 fn stepping_a_system_with_a_free_point_allocates_nothing() {
     use rope_systems::{settings, three_to_a_point};
     use stancf::system::{straight_states, SystemSimulation};
     use stancf::SolverMethod;
-    for (method, solver) in [
-        (ConstraintMethod::Multiplier, SolverMethod::Newton),
-        (ConstraintMethod::Elimination, SolverMethod::Newton),
-        (ConstraintMethod::Multiplier, SolverMethod::Broyden),
-        (ConstraintMethod::Elimination, SolverMethod::ModifiedNewton),
+    use stancf::TimeScheme::{Galerkin, P2};
+    for (method, solver, scheme) in [
+        (ConstraintMethod::Multiplier, SolverMethod::Newton, P2),
+        (ConstraintMethod::Elimination, SolverMethod::Newton, P2),
+        (ConstraintMethod::Multiplier, SolverMethod::Broyden, P2),
+        (ConstraintMethod::Elimination, SolverMethod::ModifiedNewton, P2),
+        (ConstraintMethod::Multiplier, SolverMethod::Newton, Galerkin),
+        (ConstraintMethod::Elimination, SolverMethod::Broyden, Galerkin),
     ] {
         let system = three_to_a_point(10);
         let start = straight_states(&system);
         let mut settings = StepSettings {
             constraint_method: method,
+            time_scheme: scheme,
             ..settings()
         };
         settings.newton.method = solver;
@@ -158,7 +162,7 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
         assert_eq!(
             after - before,
             0,
-            "{method:?} {solver:?}: {} allocations in 50 steps",
+            "{method:?} {solver:?} {scheme:?}: {} allocations in 50 steps",
             after - before
         );
     }
