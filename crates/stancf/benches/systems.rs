@@ -28,8 +28,12 @@ fn benches(c: &mut Criterion) {
     g.bench_function("three_lines_of_40_at_a_free_point", |b| {
         b.iter(|| system.step().unwrap())
     });
-    let mut single = one_line(true);
+    let mut single = one_line(false);
     g.bench_function("one_line_of_120", |b| b.iter(|| single.step().unwrap()));
+    let mut planar = one_line(true);
+    g.bench_function("one_line_of_120_planar_reduced", |b| {
+        b.iter(|| planar.step().unwrap())
+    });
     g.finish();
 }
 

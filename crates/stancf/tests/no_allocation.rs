@@ -136,9 +136,17 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
         (ConstraintMethod::Multiplier, SolverMethod::Newton, P2),
         (ConstraintMethod::Elimination, SolverMethod::Newton, P2),
         (ConstraintMethod::Multiplier, SolverMethod::Broyden, P2),
-        (ConstraintMethod::Elimination, SolverMethod::ModifiedNewton, P2),
+        (
+            ConstraintMethod::Elimination,
+            SolverMethod::ModifiedNewton,
+            P2,
+        ),
         (ConstraintMethod::Multiplier, SolverMethod::Newton, Galerkin),
-        (ConstraintMethod::Elimination, SolverMethod::Broyden, Galerkin),
+        (
+            ConstraintMethod::Elimination,
+            SolverMethod::Broyden,
+            Galerkin,
+        ),
     ] {
         let system = three_to_a_point(10);
         let start = straight_states(&system);
