@@ -202,15 +202,21 @@ impl BorderedMatrix {
     /// search).
     #[inline]
     pub fn add_local(&mut self, b: usize, i: usize, j: usize, v: f64) {
+        self.block_entries(b).add(i, j, v);
+    }
+
+    /// Block `b`'s share of the matrix, for adding many entries in its
+    /// local numbering (see [`BlockEntries::add`]).
+    pub fn block_entries(&mut self, b: usize) -> BlockEntries<'_> {
         let blk = &mut self.blocks[b];
-        let n = blk.n;
-        match (i < n, j < n) {
-            (true, true) => blk.a.matrix_mut().add(i, j, v),
-            (true, false) => blk.b[(j - n) * n + i] += v,
-            (false, true) => blk.c[(i - n) * n + j] += v,
-            (false, false) => {
-                self.d[blk.border[i - n] * self.nb + blk.border[j - n]] += v;
-            }
+        BlockEntries {
+            n: blk.n,
+            nb: self.nb,
+            a: blk.a.matrix_mut(),
+            b: &mut blk.b,
+            c: &mut blk.c,
+            border: &blk.border,
+            d: &mut self.d,
         }
     }
 
@@ -245,6 +251,35 @@ impl BorderedMatrix {
                 (k != UNTOUCHED).then(|| Slot::C(bj, k * self.blocks[bj].n + lj))
             }
             (false, false) => Some(Slot::D((i - bs) * self.nb + j - bs)),
+        }
+    }
+}
+
+/// One block's share of a [`BorderedMatrix`], borrowed once for many
+/// entries (the assembly of one line).
+pub struct BlockEntries<'a> {
+    n: usize,
+    nb: usize,
+    a: &'a mut crate::band::BandMatrix,
+    b: &'a mut [f64],
+    c: &'a mut [f64],
+    border: &'a [usize],
+    d: &'a mut [f64],
+}
+
+impl BlockEntries<'_> {
+    /// A(i, j) += v in the block's local numbering, as
+    /// [`BorderedMatrix::add_local`].
+    #[inline]
+    pub fn add(&mut self, i: usize, j: usize, v: f64) {
+        let n = self.n;
+        match (i < n, j < n) {
+            (true, true) => self.a.add(i, j, v),
+            (true, false) => self.b[(j - n) * n + i] += v,
+            (false, true) => self.c[(i - n) * n + j] += v,
+            (false, false) => {
+                self.d[self.border[i - n] * self.nb + self.border[j - n]] += v;
+            }
         }
     }
 }

@@ -8,7 +8,7 @@
 
 use super::{End, System};
 use crate::assembly::{Scheme, SlabLayout};
-use crate::bordered::{BlockShape, BorderedMatrix};
+use crate::bordered::{BlockEntries, BlockShape, BorderedMatrix};
 use crate::constraints::ConstraintMethod;
 use crate::linear::AddEntries;
 use crate::model::Model;
@@ -217,8 +217,7 @@ pub(super) fn add_line_rows(
     match jacobian {
         Some(matrix) => {
             let mut view = LineView {
-                matrix,
-                block,
+                entries: matrix.block_entries(block),
                 place: &map.place,
             };
             assemble(local_x, local_rows, Some(&mut view));
@@ -230,15 +229,13 @@ pub(super) fn add_line_rows(
 
 /// One line's share of the bordered Jacobian, in the line's numbering.
 pub(super) struct LineView<'a> {
-    pub matrix: &'a mut BorderedMatrix,
-    pub block: usize,
+    pub entries: BlockEntries<'a>,
     pub place: &'a [usize],
 }
 
 impl AddEntries for LineView<'_> {
     #[inline]
     fn add(&mut self, i: usize, j: usize, value: f64) {
-        self.matrix
-            .add_local(self.block, self.place[i], self.place[j], value);
+        self.entries.add(self.place[i], self.place[j], value);
     }
 }

@@ -46,8 +46,7 @@ impl SystemMass {
         for (i, model) in lines.iter().enumerate() {
             let numbering = &layout.lines[i];
             let mut view = LineView {
-                matrix: lu.matrix_mut(),
-                block: i,
+                entries: lu.matrix_mut().block_entries(i),
                 place: &layout.maps[i].place,
             };
             let dpn = model.dofs_per_node();
