@@ -1,6 +1,7 @@
 //! Property-based tests of the command line (issue 11): random scenario
 //! files from a grammar of the real keys, and mutations of the shipped
-//! examples, are fed to `stancf check` and to a few steps of `stancf run`.
+//! examples (the TOML scenarios, systems among them, and the MoorDyn
+//! decks), are fed to `stancf check` and to a few steps of `stancf run`.
 //! Whatever the input:
 //!
 //! - no panic (no "panicked" on standard error, exit code not 101);

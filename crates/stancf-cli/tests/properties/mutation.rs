@@ -55,6 +55,26 @@ pub fn shortened_examples() -> Vec<(String, String)> {
         .collect()
 }
 
+/// The MoorDyn decks in `examples/` (`*.txt`), as shipped: a deck alone
+/// runs statics only, so there is nothing to shorten.
+pub fn shipped_decks() -> Vec<(String, String)> {
+    let mut names: Vec<PathBuf> = std::fs::read_dir(examples_dir())
+        .expect("examples/")
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+        .collect();
+    names.sort();
+    assert!(!names.is_empty(), "no examples/*.txt decks");
+    names
+        .into_iter()
+        .map(|p| {
+            let text = std::fs::read_to_string(&p).unwrap();
+            (p.file_name().unwrap().to_string_lossy().into_owned(), text)
+        })
+        .collect()
+}
+
 /// A position in a sequence of any length (taken modulo the length).
 #[derive(Clone, Copy, Debug)]
 pub struct Ix(pub usize);
@@ -273,7 +293,8 @@ pub fn apply(text: &str, m: &Mutation) -> String {
 
 pub fn mutated_example() -> BoxedStrategy<String> {
     let examples = shortened_examples();
-    let texts: Vec<String> = examples.into_iter().map(|(_, t)| t).collect();
+    let mut texts: Vec<String> = examples.into_iter().map(|(_, t)| t).collect();
+    texts.extend(shipped_decks().into_iter().map(|(_, t)| t));
     (select(texts), prop::collection::vec(mutation(), 1..=2))
         .prop_map(|(text, ms)| bound_work(ms.iter().fold(text, |t, m| apply(&t, m))))
         .boxed()
