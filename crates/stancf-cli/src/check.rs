@@ -204,6 +204,18 @@ fn describe(
         ),
     );
     line("diameter (drag)", format!("{:.6e} m", sc.diameter));
+    let ba = model.material.axial_damping;
+    if ba != 0.0 {
+        let ea = model.material.section().ea;
+        line(
+            "axial damping BA",
+            format!(
+                "{ba:.6e} N s: damping ratio BA w / (2 EA) of an axial mode of frequency w, \
+                 {:.4e} at w_max (docs/method.md §2.10)",
+                ba * d.w_max / (2.0 * ea)
+            ),
+        );
+    }
     line("wave speed sqrt(E/rho)", format!("{:.6} m/s", d.wave_speed));
     line("Courant number c dt/dx", format!("{:.6}", d.courant));
     line(

@@ -77,13 +77,14 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements, ends {} and {}; {bending}",
+                "type {}, {} m, {} {} elements, ends {} and {}; {bending}{}",
                 t.name,
                 Sig(l.length),
                 l.elements,
                 l.element_type.name(),
                 end_name(sc, l.ends[0]),
-                end_name(sc, l.ends[1])
+                end_name(sc, l.ends[1]),
+                damping_note(sc, i)
             ),
         );
     }
@@ -132,6 +133,35 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         let _ = writeln!(r, "note: {n}");
     }
     Ok(r)
+}
+
+/// The axial damping line i gets, as `check` reports it: nothing without
+/// damping; BA (N s), and for a damping ratio (a negative `ba`) the ratio
+/// and the element length it was converted with (docs/method.md §2.10,
+/// (M36)); a static analysis does not use it.
+fn damping_note(sc: &SystemScenario, i: usize) -> String {
+    let l = &sc.lines[i];
+    let t = &sc.line_types[l.line_type];
+    if t.ba == 0.0 {
+        return String::new();
+    }
+    let ba = sc.axial_damping(i);
+    let from = if t.ba < 0.0 {
+        format!(
+            " (damping ratio {} on {} m elements: zeta l sqrt(EA w), MoorDyn's, docs/method.md \
+             §2.10)",
+            Sig(-t.ba),
+            Sig(l.length / l.elements as f64)
+        )
+    } else {
+        String::new()
+    };
+    let unused = if sc.analysis.kind == AnalysisKind::Static {
+        ", unused in statics"
+    } else {
+        ""
+    };
+    format!("; axial damping BA {} N s{from}{unused}", Sig(ba))
 }
 
 /// The largest P2 step every line is stable with (None for the Galerkin

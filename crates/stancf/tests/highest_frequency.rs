@@ -146,6 +146,7 @@ fn sac2_highest_frequency_is_that_of_the_hermite_bar_and_beam() {
         density: 1000.0,
         area: 1e-2,
         second_moment: 1e-4,
+        axial_damping: 0.0,
     };
     for (material, length, elements) in [
         (pvc, 4.0, 1),

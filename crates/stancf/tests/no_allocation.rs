@@ -60,13 +60,45 @@ fn stepping_a_cable_or_a_system_allocates_nothing() {
 }
 
 fn stepping_a_cable_allocates_nothing() {
-    let material = Material::chen2023_pvc();
-    for (kind, layers, constrained, method) in [
-        (ElementType::Sac2, 1, false, ConstraintMethod::Multiplier),
-        (ElementType::Sac3, 2, false, ConstraintMethod::Multiplier),
-        (ElementType::Sac2, 1, true, ConstraintMethod::Multiplier),
-        (ElementType::Sac3, 2, true, ConstraintMethod::Elimination),
+    for (kind, layers, constrained, method, damped) in [
+        (
+            ElementType::Sac2,
+            1,
+            false,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            false,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac2,
+            1,
+            true,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            true,
+            ConstraintMethod::Elimination,
+            false,
+        ),
+        (
+            ElementType::Sac2,
+            1,
+            true,
+            ConstraintMethod::Elimination,
+            true,
+        ),
     ] {
+        // The last case with axial damping (docs/method.md §2.10).
+        let material = Material::chen2023_pvc().with_axial_damping(if damped { 1e-3 } else { 0.0 });
         let constraints = if constrained {
             vec![
                 Constraint {

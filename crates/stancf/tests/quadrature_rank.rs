@@ -50,6 +50,7 @@ fn model(kind: ElementType, elements: usize, points: Option<SpacePoints>) -> Mod
         density: 1000.0,
         area: 1e-4,
         second_moment: 1e-9,
+        axial_damping: 0.0,
     };
     Model::new(
         Cable::straight(1.0, elements, kind).with_direction([0.6, 0.0, 0.8]),

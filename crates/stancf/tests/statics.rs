@@ -101,6 +101,7 @@ fn catenary(youngs_modulus: f64) {
         density: 1000.0,
         area: 1.0e-4,
         second_moment: 1.0e-11,
+        axial_damping: 0.0,
     };
     let length = 10.0;
     let g = 9.81;
@@ -395,6 +396,7 @@ fn slack_catenary_with_a_prescribed_support() {
         density: 1000.0,
         area: 1.0e-4,
         second_moment: 1.0e-11,
+        axial_damping: 0.0,
     };
     let (length, span, n, g) = (10.0, 9.0, 40, 9.81);
     let run = |method| {

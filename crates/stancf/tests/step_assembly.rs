@@ -3,16 +3,18 @@
 //! of load and constraint, by both constraint routes.
 
 mod common;
+#[path = "common/step_checks.rs"]
+mod step_checks;
 
 use common::*;
 use stancf::assembly::{AssemblyScratch, Kind, Scheme, SlabLayout, StepProblem, StepStart};
-use stancf::band::BandMatrix;
 use stancf::element::TimeSlab;
 use stancf::quadrature::GaussRule;
 use stancf::{
     Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
     ModelOptions,
 };
+use step_checks::{check_jacobian, random_start};
 
 fn model(
     kind: ElementType,
@@ -25,6 +27,7 @@ fn model(
         density: 900.0,
         area: 1.0e-3,
         second_moment: 2.0e-7,
+        axial_damping: 0.0,
     };
     let cable = Cable::straight(1.2, elements, kind)
         .with_origin([0.1, -0.2, 0.3])
@@ -87,86 +90,6 @@ fn some_constraints(kind: ElementType) -> Vec<Constraint> {
     ]
 }
 
-/// dR/dx against central differences of R at a random iterate near `start`.
-fn check_jacobian(
-    m: &Model,
-    layout: &SlabLayout,
-    slab: &TimeSlab,
-    start: &StepStart,
-    rng: &mut Rng,
-    label: &str,
-) {
-    let n = layout.size();
-    let mut x = vec![0.0; n];
-    for (slot, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
-        for g in 0..m.dofs() {
-            if let Some(u) = layout.unknown_at(slot, g) {
-                x[u] = match kind {
-                    Kind::Position => start.e[g] + 0.03 * rng.next() * (i as f64 + 0.5),
-                    Kind::Velocity => start.v[g] + 0.3 * rng.next(),
-                };
-            }
-        }
-        for g in 0..m.dofs() {
-            if let Some(r) = layout.constraint_row_at(slot, g) {
-                let _ = r;
-            }
-        }
-    }
-    for s in 0..layout.row_slots.len() {
-        for g in 0..m.dofs() {
-            if let Some(u) = layout.multiplier_at(s, g) {
-                x[u] = rng.next();
-            }
-        }
-    }
-    let p = StepProblem {
-        model: m,
-        layout,
-        slab,
-        start,
-    };
-    let (kl, ku) = layout.bandwidths();
-    let mut jac = BandMatrix::new(n, kl, ku);
-    let mut r = vec![0.0; n];
-    let mut scratch = AssemblyScratch::new(m, layout);
-    p.assemble(&x, &mut r, Some(&mut jac), &mut scratch);
-    let mut r_only = vec![0.0; n];
-    p.residual(&x, &mut r_only, &mut scratch);
-    assert_eq!(
-        r, r_only,
-        "{label}: residual must not depend on whether J is built"
-    );
-    let h = 1e-6;
-    let mut analytic = Vec::with_capacity(n * n);
-    let mut fd = Vec::with_capacity(n * n);
-    let mut rp = vec![0.0; n];
-    let mut rm = vec![0.0; n];
-    for c in 0..n {
-        let mut xp = x.clone();
-        let mut xm = x.clone();
-        xp[c] += h;
-        xm[c] -= h;
-        p.residual(&xp, &mut rp, &mut scratch);
-        p.residual(&xm, &mut rm, &mut scratch);
-        for row in 0..n {
-            fd.push((rp[row] - rm[row]) / (2.0 * h));
-            analytic.push(jac.get(row, c));
-        }
-    }
-    let e = rel_diff(&analytic, &fd);
-    assert!(e < 1e-6, "{label}: Jacobian rel. error {e:e}");
-}
-
-fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> StepStart {
-    let s0 = m.initial_state();
-    let e: Vec<f64> = s0.e.iter().map(|v| v + 0.05 * rng.next()).collect();
-    let v: Vec<f64> = s0.v.iter().map(|_| 0.5 * rng.next()).collect();
-    let mut start = StepStart::new(m, layout.time_nodes());
-    start.set(m, 0.37, &e, &v, h);
-    start
-}
-
 /// P2 steps with 1 to 3 layers, SAC-2 and SAC-3, gravity, a point force,
 /// an end moment and air drag (full and cross-flow, in wind), free and
 /// constrained (clamp, prescribed motion) by
@@ -193,7 +116,7 @@ fn step_jacobian_matches_finite_differences() {
                 let start = random_start(&m, &layout, h, &mut rng);
                 let label =
                     format!("{kind:?} {layers} layers, constrained {constrained} {method:?}");
-                check_jacobian(&m, &layout, &slab, &start, &mut rng, &label);
+                check_jacobian(&m, &layout, &slab, &start, &mut rng, &label, 1e-6);
             }
         }
     }
@@ -218,6 +141,7 @@ fn static_jacobian_matches_finite_differences() {
                 &start,
                 &mut rng,
                 &format!("static {kind:?} {method:?}"),
+                1e-6,
             );
         }
     }

@@ -19,6 +19,7 @@ fn rope() -> Material {
         density: 1000.0,
         area: 2e-6,
         second_moment: 2e-12,
+        axial_damping: 0.0,
     }
 }
 

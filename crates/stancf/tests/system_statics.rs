@@ -17,6 +17,7 @@ fn rope(density: f64) -> Material {
         density,
         area: 2e-6,
         second_moment: 2e-12,
+        axial_damping: 0.0,
     }
 }
 
@@ -209,6 +210,7 @@ fn section(ea: f64, ei: f64, mass_per_length: f64) -> Material {
         density: mass_per_length / area,
         area,
         second_moment: ei * area / ea,
+        axial_damping: 0.0,
     }
 }
 

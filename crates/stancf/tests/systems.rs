@@ -20,6 +20,7 @@ fn rope() -> Material {
         density: 1000.0,
         area: 2e-6,
         second_moment: 2e-12,
+        axial_damping: 0.0,
     }
 }
 
@@ -155,6 +156,7 @@ mod joined {
             density: 1.0 / area,
             area,
             second_moment: 1e-8 * area / 1e3,
+            axial_damping: 0.0,
         };
         let options = ModelOptions {
             measures: Measures {

@@ -37,8 +37,9 @@ pub(super) fn run_dynamic(
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     sim.set_clock(Box::new(WallClock(Instant::now())));
     let constrained = !sim.model().constraints.is_empty();
-    let mut writers =
-        Writers::create(place.dir, constrained, true, opts.vtk).map_err(io_err(place.shown))?;
+    let damped = sim.model().has_axial_damping();
+    let mut writers = Writers::create(place.dir, constrained, true, opts.vtk, damped)
+        .map_err(io_err(place.shown))?;
     let e0 = sim.energies();
     let first = Row {
         state: sim.state(),
@@ -49,6 +50,7 @@ pub(super) fn run_dynamic(
         reactions: None,
         constraint_work: 0.0,
         drag_work: 0.0,
+        damping_work: 0.0,
     };
     writers
         .write(sim.model(), &first)
@@ -131,6 +133,7 @@ impl StepObserver<'_> {
                 reactions: Some(sim.reactions()),
                 constraint_work: sim.constraint_work(),
                 drag_work: sim.drag_work(),
+                damping_work: sim.damping_work(),
             };
             match self.writers.write(sim.model(), &row) {
                 Ok(()) => self.last_written = rep.step,
@@ -174,7 +177,7 @@ impl StepObserver<'_> {
         tally.factorizations += rep.newton.factorizations;
         tally.max_iterations = tally.max_iterations.max(rep.newton.iterations);
         tally.max_residual = tally.max_residual.max(rep.newton.residual);
-        let work = sim.constraint_work() + sim.drag_work();
+        let work = sim.external_work();
         let potential_change =
             (en.gravity - e0.gravity).abs() + (en.load_potential - e0.load_potential).abs();
         tally.energy_scale = tally
@@ -251,6 +254,7 @@ fn step_through(
             reactions: Some(sim.reactions()),
             constraint_work: sim.constraint_work(),
             drag_work: sim.drag_work(),
+            damping_work: sim.damping_work(),
         };
         obs.writers.write(sim.model(), &row)?;
     }
@@ -318,6 +322,7 @@ fn write_dynamic_summary(
             "scale": json_num(tally.energy_scale),
             "constraint_work": json_num(sim.constraint_work()),
             "drag_work": json_num(sim.drag_work()),
+            "damping_work": json_num(sim.damping_work()),
         }),
     );
     summary.insert("solver".into(), solver_json(sc, sim, tally, steps));

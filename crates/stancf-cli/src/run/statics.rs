@@ -52,7 +52,7 @@ pub(super) fn run_static(
     let mut solver = StaticSolver::new(model, sc.static_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     let mut writers =
-        Writers::create(place.dir, true, false, opts.vtk).map_err(io_err(place.shown))?;
+        Writers::create(place.dir, true, false, opts.vtk, false).map_err(io_err(place.shown))?;
     let e0 = static_energies(solver.model(), solver.state());
     let first = Row {
         state: solver.state(),
@@ -63,6 +63,7 @@ pub(super) fn run_static(
         reactions: Some(solver.reactions()),
         constraint_work: 0.0,
         drag_work: 0.0,
+        damping_work: 0.0,
     };
     writers
         .write(solver.model(), &first)
@@ -124,6 +125,7 @@ fn step_loads(
             reactions: Some(s.reactions()),
             constraint_work: 0.0,
             drag_work: 0.0,
+            damping_work: 0.0,
         };
         match writers.write(s.model(), &row) {
             Ok(()) => {

@@ -68,6 +68,9 @@ pub(crate) struct Writers {
     /// ParaView files (`--vtk`).
     vtk: Option<crate::vtk::VtkWriter>,
     pub(crate) samples: Vec<StressSample>,
+    /// Whether history.csv has the `damping_work` column (a cable with
+    /// axial damping).
+    damping: bool,
 }
 
 /// The wall clock the library's Part A / Part B split is timed with.
@@ -100,9 +103,10 @@ pub(crate) struct Row<'a> {
     pub(crate) increment: f64,
     /// Reactions to write with this row (none at t = 0 of a dynamic run).
     pub(crate) reactions: Option<&'a [(usize, [f64; 3])]>,
-    /// Work of moving constraints and of drag so far.
+    /// Work of moving constraints, of drag and of the axial damping so far.
     pub(crate) constraint_work: f64,
     pub(crate) drag_work: f64,
+    pub(crate) damping_work: f64,
 }
 
 impl Writers {
@@ -111,6 +115,7 @@ impl Writers {
         with_reactions: bool,
         with_solver: bool,
         with_vtk: bool,
+        with_damping: bool,
     ) -> std::io::Result<Self> {
         let mut w = Writers {
             history: AtomicFile::create(dir, "history.csv")?,
@@ -135,10 +140,12 @@ impl Writers {
                 None
             },
             samples: Vec::new(),
+            damping: with_damping,
         };
         writeln!(
             w.history.writer(),
-            "t,kinetic,strain,gravity,total,iterations,residual,increment,load_potential,constraint_work,drag_work"
+            "t,kinetic,strain,gravity,total,iterations,residual,increment,load_potential,constraint_work,drag_work{}",
+            if with_damping { ",damping_work" } else { "" }
         )?;
         if let Some((solver, conv)) = w.solver.as_mut() {
             writeln!(
@@ -186,7 +193,7 @@ impl Writers {
             ));
         }
         let t = Num(state.t);
-        writeln!(
+        write!(
             self.history.writer(),
             "{t},{},{},{},{},{},{},{},{},{},{}",
             Num(en.kinetic),
@@ -200,6 +207,10 @@ impl Writers {
             Num(row.constraint_work),
             Num(row.drag_work)
         )?;
+        if self.damping {
+            write!(self.history.writer(), ",{}", Num(row.damping_work))?;
+        }
+        writeln!(self.history.writer())?;
         node_rows(self.nodes.writer(), t, model, state)?;
         stress_rows(self.stress.writer(), t, &self.samples)?;
         if let Some(vtk) = self.vtk.as_mut() {

@@ -54,7 +54,8 @@ fn unit(v: [f64; 3]) -> [f64; 3] {
 }
 
 /// `[material]`: `youngs_modulus`, `density`, `area` and `second_moment`
-/// (each > 0, required, in that order), and the `diameter` (> 0; default
+/// (each > 0, required, in that order), `axial_damping` (BA in N s, >= 0,
+/// default 0; docs/method.md §2.10) and the `diameter` (> 0; default
 /// sqrt(4 area / pi)), returned beside the material.
 pub(super) fn material(
     ctx: &Ctx,
@@ -66,6 +67,19 @@ pub(super) fn material(
         density: ctx.required_positive("material.density", rm.density)?,
         area: ctx.required_positive("material.area", rm.area)?,
         second_moment: ctx.required_positive("material.second_moment", rm.second_moment)?,
+        axial_damping: match rm.axial_damping {
+            Some(v) if v < 0.0 => {
+                return Err(ctx.err(
+                    "material.axial_damping",
+                    format!(
+                        "must be >= 0 (BA in N s), got {v}: a damping ratio (MoorDyn's negative \
+                         BA) is taken by [[line_types]] ba and MoorDyn decks only"
+                    ),
+                ))
+            }
+            Some(v) => ctx.non_negative("material.axial_damping", v)?,
+            None => 0.0,
+        },
     };
     let diameter = match rm.diameter {
         Some(d) => ctx.positive("material.diameter", d)?,

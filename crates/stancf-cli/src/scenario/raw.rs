@@ -133,6 +133,7 @@ pub(super) struct RawMaterial {
     pub(super) area: Option<f64>,
     pub(super) second_moment: Option<f64>,
     pub(super) diameter: Option<f64>,
+    pub(super) axial_damping: Option<f64>,
 }
 
 /// One `[[initial_velocity]]` entry.

@@ -25,7 +25,9 @@ pub struct LineType {
     /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
     pub ei: f64,
     /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's
-    /// convention).
+    /// convention; each line gets BA = zeta l sqrt(EA w) from its element
+    /// length l, docs/method.md §2.10, (M36); see
+    /// [`SystemScenario::axial_damping`]).
     pub ba: f64,
     /// Normal and axial drag and added mass coefficients (used in water).
     pub cd: f64,
@@ -189,15 +191,6 @@ pub(super) fn system_scenario(
     motions(ctx, &raw.motions, &mut points)?;
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
-    if analysis.kind == super::AnalysisKind::Dynamic {
-        if let Some(i) = line_types.iter().position(|t| t.ba != 0.0) {
-            return Err(ctx.err(
-                &format!("line_types[{i}].ba"),
-                "axial damping is not available in a dynamic analysis in this version (a \
-                 static one does not need it); remove ba or set it to 0",
-            ));
-        }
-    }
     for (i, t) in line_types.iter().enumerate() {
         if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
             notes.push(format!(

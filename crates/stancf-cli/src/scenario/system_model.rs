@@ -28,6 +28,21 @@ impl SystemScenario {
         EI_FACTOR * reference_tension * l.length * l.length
     }
 
+    /// The axial damping BA (N s) line i is simulated with: its type's
+    /// `ba` when >= 0; for `ba` < 0, minus a damping ratio zeta as in
+    /// MoorDyn, BA = zeta l sqrt(EA w) with l the line's element length
+    /// (MoorDyn's segment length) and w its mass per length
+    /// (docs/method.md §2.10, (M36)).
+    pub fn axial_damping(&self, line: usize) -> f64 {
+        let l = &self.lines[line];
+        let t = &self.line_types[l.line_type];
+        if t.ba >= 0.0 {
+            return t.ba;
+        }
+        let segment = l.length / l.elements as f64;
+        section_material(t, 0.0).axial_damping_for_ratio(-t.ba, segment)
+    }
+
     /// The fraction of a line's weight left in water: its weight per
     /// length m g less the buoyancy rho_w (pi d^2 / 4) g of the water it
     /// displaces, over m g (1 in air). A line in still water carries its
@@ -94,7 +109,8 @@ impl SystemScenario {
         let cable = Cable::straight(l.length, l.elements, l.element_type)
             .with_origin(origin)
             .with_direction(direction);
-        let material = section_material(t, self.bending_stiffness(i));
+        let material = section_material(t, self.bending_stiffness(i))
+            .with_axial_damping(self.axial_damping(i));
         let options = ModelOptions {
             measures: self.measures,
             space_points: self.analysis.space_points,
@@ -128,7 +144,8 @@ fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: 
 }
 
 /// The material of a line type's section: A = pi d^2 / 4, E = EA / A,
-/// rho = m / A, I = EI / E.
+/// rho = m / A, I = EI / E, without damping (the line's BA is added by
+/// its model).
 fn section_material(t: &LineType, ei: f64) -> Material {
     let area = t.area();
     let youngs_modulus = t.ea / area;
@@ -137,6 +154,7 @@ fn section_material(t: &LineType, ei: f64) -> Material {
         density: t.mass_per_length / area,
         area,
         second_moment: ei / youngs_modulus,
+        axial_damping: 0.0,
     }
 }
 

@@ -76,6 +76,9 @@ pub struct AssemblyScratch {
     pub reaction_rows: Vec<f64>,
     /// Work of the drag loads over the step (int int f . r_dot dx dt).
     pub drag_work: f64,
+    /// Work of the axial damping over the step (-int int BA eps_dot^2 dx
+    /// dt; docs/method.md §2.10).
+    pub damping_work: f64,
     /// Galerkin: dA/de_b, the momentum at the end of the step.
     pub end_momentum: Vec<f64>,
 }
@@ -91,6 +94,7 @@ impl AssemblyScratch {
             mass_v_end: vec![0.0; n],
             reaction_rows: vec![0.0; layout.row_slots.len() * n],
             drag_work: 0.0,
+            damping_work: 0.0,
             end_momentum: vec![0.0; n],
         }
     }
@@ -229,6 +233,7 @@ impl StepProblem<'_> {
         scratch.reaction_rows.fill(0.0);
         scratch.end_momentum.fill(0.0);
         scratch.drag_work = 0.0;
+        scratch.damping_work = 0.0;
         self.expand(x, scratch);
         let jac = jacobian.as_deref_mut();
         let mut derivs2 = std::mem::take(&mut scratch.derivs2);

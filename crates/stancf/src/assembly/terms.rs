@@ -75,6 +75,7 @@ impl StepProblem<'_> {
                 }
                 el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
                 scratch.drag_work += derivs.drag_work;
+                scratch.damping_work += derivs.damping_work;
                 let targets = self.element_targets::<ND>(k, &row_slots);
                 for m in 0..4 {
                     for d in 0..ND {

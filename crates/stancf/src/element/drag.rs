@@ -47,7 +47,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// `drags` (docs/method.md §2.8, (M11)): returns the generalized drag
     /// force on q, `f_q = sum_s w_s l N_k f`, adds its work
     /// `w_dt sum_s w_s l f . r_dot` to `out.drag_work` and, if `hessian_at`
-    /// names the time point, sets its matrices
+    /// names the time point, adds to its matrices (zeroed by the caller)
     ///
     /// ```text
     ///   C_g = sum_s w_s l N_k N_l df/dr_dot,   G_g = sum_s w_s l N_k N_x,l df/dr_x
@@ -62,10 +62,6 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut SlabDerivatives<ND>,
     ) -> [f64; ND] {
         let mut fq = [0.0; ND];
-        if let Some(gi) = hessian_at {
-            out.c_at_points[gi] = [[0.0; ND]; ND];
-            out.g_at_points[gi] = [[0.0; ND]; ND];
-        }
         for drag in drags {
             for p in &self.axial_points {
                 let (rx, _) = p.shape.gradients(q);

@@ -35,9 +35,11 @@
 //! | `curvature` | curvature and the smooth kappa^2 bending density | §2.3 |
 //! | `energy` | the elastic energy U and its derivatives by spatial quadrature | §2.4 |
 //! | `drag` | air drag virtual work and its Jacobian | §2.8, §6.8 |
+//! | `damping` | axial (Kelvin-Voigt) damping virtual work and its Jacobian | §2.10 |
 //! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
 
 mod curvature;
+mod damping;
 mod drag;
 mod energy;
 mod slab;
@@ -45,7 +47,9 @@ mod strain;
 
 pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
 pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};
-pub use strain::{axial_energy_density, axial_energy_gradient, axial_strain};
+pub use strain::{
+    axial_energy_density, axial_energy_gradient, axial_strain, axial_strain_derivatives,
+};
 
 use crate::quadrature::GaussRule;
 use crate::shape::SpatialShape;
@@ -89,6 +93,9 @@ pub struct Section {
     pub ei: f64,
     /// Mass per unit length rho A (kg/m).
     pub rho_a: f64,
+    /// Axial (Kelvin-Voigt) damping BA (N s): the axial force is
+    /// EA eps + BA eps_dot (docs/method.md §2.10, (M34)); 0 for none.
+    pub ba: f64,
 }
 
 /// Which strain and curvature the elastic energy uses.

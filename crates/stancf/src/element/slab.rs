@@ -1,8 +1,9 @@
 //! The time direction of a slab (eq. (6) at the time Gauss points) and the
 //! space-time quadrature loop of one element over it: the slab action of
 //! eq. (10), its gradient with respect to y = [e_a, v_a, e_b, v_b] (with the
-//! drag's virtual work, eq. (17)) and its exact Hessian, block by block
-//! (docs/method.md §3.1-3.2, (M13)-(M14); time layers §3.5).
+//! virtual work of drag, eq. (17), and of the axial damping, (M34)) and its
+//! exact Hessian, block by block (docs/method.md §3.1-3.2, (M13)-(M14);
+//! time layers §3.5; damping §2.10).
 
 use super::{dot_n, CableElement};
 use crate::quadrature::GaussRule;
@@ -25,7 +26,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     }
 
     /// Gradient of the slab action with respect to `y` (plus the virtual
-    /// work of the drag loads, eq. 17) and, if `with_hessian`, the
+    /// work of the drag loads, eq. 17, and of the axial damping, (M34)) and,
+    /// if `with_hessian`, the
     /// matrices at the time points from which every block of its Jacobian
     /// follows (see [`SlabDerivatives`] and [`Self::slab_hessian_block`]).
     ///
@@ -37,6 +39,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     ///   C_g = sum_s w_s l N_k N_l df/dr_dot,   G_g = sum_s w_s l N_k N_x,l df/dr_x
     ///   block_mn += sum_g w_g dt phi_m (phidot_n C_g + phi_n G_g)
     /// ```
+    ///
+    /// The axial damping (BA != 0; docs/method.md §2.10, (M34)) adds its
+    /// generalized force to the drag's and its derivatives to the same
+    /// C_g, G_g.
     pub fn slab_derivatives(
         &self,
         slab: &TimeSlab,
@@ -49,12 +55,15 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out.grad = [[0.0; ND]; 4];
         out.action = 0.0;
         out.drag_work = 0.0;
+        out.damping_work = 0.0;
         out.has_drag = !loads.drag.is_empty();
+        out.has_damping = self.section.ba != 0.0;
+        let rates = out.has_drag || out.has_damping;
         let np = slab.points.len();
         if out.k_at_points.len() < np {
             out.k_at_points.resize(np, [[0.0; ND]; ND]);
         }
-        if out.has_drag && with_hessian && out.c_at_points.len() < np {
+        if rates && with_hessian && out.c_at_points.len() < np {
             out.c_at_points.resize(np, [[0.0; ND]; ND]);
             out.g_at_points.resize(np, [[0.0; ND]; ND]);
         }
@@ -69,13 +78,20 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             };
             let strain = self.strain_energy_derivatives(&q, &mut du, hess);
             out.action += tp.w_dt * (0.5 * dot_n(&qdot, &mq) - strain + dot_n(&fg, &q));
-            // Generalized drag force on q at this time point: f_q = sum N_k f.
-            let fq = if out.has_drag {
-                let at = with_hessian.then_some(gi);
+            // Generalized drag and damping forces on q at this time point.
+            let at = with_hessian.then_some(gi);
+            if rates && with_hessian {
+                out.c_at_points[gi] = [[0.0; ND]; ND];
+                out.g_at_points[gi] = [[0.0; ND]; ND];
+            }
+            let mut fq = if out.has_drag {
                 self.slab_drag_at_point(loads.drag, tp.w_dt, &q, &qdot, at, out)
             } else {
                 [0.0; ND]
             };
+            if out.has_damping {
+                self.slab_damping_at_point(tp.w_dt, &q, &qdot, at, &mut fq, out);
+            }
             for m in 0..4 {
                 let a = tp.w_dt * tp.shape.t_dot[m];
                 let b = tp.w_dt * tp.shape.t[m];
@@ -116,7 +132,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 }
             }
         }
-        if derivs.has_drag {
+        if derivs.has_drag || derivs.has_damping {
             for (gi, tp) in slab.points.iter().enumerate() {
                 let a = tp.w_dt * tp.shape.t[m] * tp.shape.t_dot[n];
                 let b = tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
@@ -137,7 +153,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
 pub struct SlabDerivatives<const ND: usize> {
     /// A^e without the drag (for diagnostics and tests).
     pub action: f64,
-    /// dA^e/dy_m (with the drag's virtual work) for m = e_a, v_a, e_b, v_b.
+    /// dA^e/dy_m (with the virtual work of drag and damping) for m = e_a,
+    /// v_a, e_b, v_b.
     pub grad: [[f64; ND]; 4],
     /// d2U/dq2 at q(t_g), one per time Gauss point.
     pub k_at_points: Vec<[[f64; ND]; ND]>,
@@ -145,6 +162,11 @@ pub struct SlabDerivatives<const ND: usize> {
     /// negative in still air), and the matrices C_g, G_g per time point.
     pub has_drag: bool,
     pub drag_work: f64,
+    /// Axial damping (docs/method.md §2.10): whether there is any (BA !=
+    /// 0; its derivatives share C_g, G_g with the drag's) and its work
+    /// over the slab, -int int BA eps_dot^2 dx dt (never positive).
+    pub has_damping: bool,
+    pub damping_work: f64,
     pub c_at_points: Vec<[[f64; ND]; ND]>,
     pub g_at_points: Vec<[[f64; ND]; ND]>,
 }
@@ -157,6 +179,8 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             k_at_points: Vec::new(),
             has_drag: false,
             drag_work: 0.0,
+            has_damping: false,
+            damping_work: 0.0,
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
         }

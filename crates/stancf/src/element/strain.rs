@@ -84,3 +84,37 @@ pub(super) fn axial_energy_terms(
         }
     }
 }
+
+/// The axial strain's first and second derivatives with respect to r_x,
+/// `a = d eps / d r_x` and `H = d2 eps / d r_x2` (symmetric), for the
+/// strain rate `eps_dot = a . r_x_dot` of the axial damping
+/// (docs/method.md §2.10, (M34)):
+///
+/// ```text
+///   Green:        a = r_x,   H = I
+///   engineering:  a = n,     H = (I - n n^T) / |r_x|,    n = r_x / |r_x|
+/// ```
+#[inline]
+pub fn axial_strain_derivatives(measure: AxialStrain, rx: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
+    match measure {
+        AxialStrain::Green => {
+            let mut h = [[0.0; 3]; 3];
+            for (i, row) in h.iter_mut().enumerate() {
+                row[i] = 1.0;
+            }
+            (*rx, h)
+        }
+        AxialStrain::Engineering => {
+            let len = dot(rx, rx).sqrt();
+            let n = rx.map(|c| c / len);
+            let mut h = [[0.0; 3]; 3];
+            for i in 0..3 {
+                for j in 0..3 {
+                    h[i][j] = -n[i] * n[j] / len;
+                }
+                h[i][i] += 1.0 / len;
+            }
+            (n, h)
+        }
+    }
+}

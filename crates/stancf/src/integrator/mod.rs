@@ -122,6 +122,8 @@ pub struct Simulation {
     constraint_work: f64,
     /// Work done on the cable by the drag loads (negative in still air).
     drag_work: f64,
+    /// Work done on the cable by its axial damping (never positive).
+    damping_work: f64,
     /// Unwrapped angles of the end moments.
     moment_angles: Vec<MomentAngle>,
     /// What is needed to undo the last step.
@@ -145,6 +147,7 @@ struct Undo {
     acceleration: Vec<f64>,
     constraint_work: f64,
     drag_work: f64,
+    damping_work: f64,
     moment_angles: Vec<MomentAngle>,
     reactions: Vec<(usize, [f64; 3])>,
 }
@@ -220,6 +223,21 @@ impl Simulation {
     /// §2.8, (M12)).
     pub fn drag_work(&self) -> f64 {
         self.drag_work
+    }
+
+    /// Work done on the cable by its axial damping so far: the slab
+    /// integral of -BA eps_dot^2 over every step (never positive;
+    /// docs/method.md §2.10, (M35)).
+    pub fn damping_work(&self) -> f64 {
+        self.damping_work
+    }
+
+    /// Work done on the cable by everything that is not a potential:
+    /// moving constraints, drag and axial damping, so that
+    /// `energies().mechanical() - external_work()` stays at its initial
+    /// value up to the scheme's error (docs/method.md §8).
+    pub fn external_work(&self) -> f64 {
+        self.constraint_work + self.drag_work + self.damping_work
     }
 
     /// Energies of the current state; `load_potential` includes -M theta

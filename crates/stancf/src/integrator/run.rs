@@ -51,11 +51,11 @@ where
                 sim,
             ));
         }
-        if let Err(drift) = watch.check(&en, sim.constraint_work + sim.drag_work) {
+        if let Err(drift) = watch.check(&en, sim.external_work()) {
             sim.undo_last_step();
             let detail = format!(
                 "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
-                en.mechanical() - sim.constraint_work - sim.drag_work,
+                en.mechanical() - sim.external_work(),
                 drift,
                 watch.initial.mechanical()
             );

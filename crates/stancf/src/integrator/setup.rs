@@ -86,6 +86,7 @@ impl Simulation {
             acceleration: vec![0.0; n],
             constraint_work: 0.0,
             drag_work: 0.0,
+            damping_work: 0.0,
             moment_angles: moment_angles.clone(),
             reactions: reactions.clone(),
         };
@@ -108,6 +109,7 @@ impl Simulation {
             reactions,
             constraint_work: 0.0,
             drag_work: 0.0,
+            damping_work: 0.0,
             moment_angles,
             previous,
             clock: None,

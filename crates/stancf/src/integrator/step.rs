@@ -104,6 +104,7 @@ impl Simulation {
             .copy_from_slice(&self.previous.acceleration);
         self.constraint_work = self.previous.constraint_work;
         self.drag_work = self.previous.drag_work;
+        self.damping_work = self.previous.damping_work;
         self.moment_angles
             .copy_from_slice(&self.previous.moment_angles);
         self.reactions.copy_from_slice(&self.previous.reactions);
@@ -288,6 +289,7 @@ impl Simulation {
             .copy_from_slice(&self.acceleration);
         self.previous.constraint_work = self.constraint_work;
         self.previous.drag_work = self.drag_work;
+        self.previous.damping_work = self.damping_work;
         self.previous
             .moment_angles
             .copy_from_slice(&self.moment_angles);
@@ -295,8 +297,8 @@ impl Simulation {
     }
 
     /// The time-node values at the solution (and, for eliminated
-    /// constraints, the freed rows: the reactions; with drag, its work,
-    /// docs/method.md §2.8), and the end slopes of the step for the next
+    /// constraints, the freed rows: the reactions; with drag and damping,
+    /// their work, docs/method.md §2.8, §2.10), and the end slopes of the step for the next
     /// predictor (§4.8).
     fn expand_solution(&mut self, dt: f64) {
         let problem = StepProblem {
@@ -309,9 +311,10 @@ impl Simulation {
             && (self.layout.method == ConstraintMethod::Elimination
                 || self.model.constraints.has_inactive());
         let galerkin = self.mass_lu.is_some();
-        if eliminated || galerkin || !self.model.drag.is_empty() {
+        if eliminated || galerkin || !self.model.drag.is_empty() || self.model.has_axial_damping() {
             problem.residual(&self.x, &mut self.workspace.spare, &mut self.scratch);
             self.drag_work += self.scratch.drag_work;
+            self.damping_work += self.scratch.damping_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);
         }

@@ -1,6 +1,7 @@
 //! Material and cross-section, and the figures derived from them: the
 //! section stiffnesses EA, EI and mass per length rho A (docs/method.md
-//! §2.1, §2.4) and the longitudinal wave speed (docs/method.md §4.6).
+//! §2.1, §2.4), the axial damping BA (§2.10) and the longitudinal wave
+//! speed (docs/method.md §4.6).
 
 use crate::element::Section;
 
@@ -15,6 +16,10 @@ pub struct Material {
     pub area: f64,
     /// I (m^4).
     pub second_moment: f64,
+    /// Axial (Kelvin-Voigt) damping BA (N s): the axial force is
+    /// EA eps + BA d(eps)/dt (docs/method.md §2.10, (M34)). 0: none, and
+    /// the element then costs what it did without it.
+    pub axial_damping: f64,
 }
 
 impl Material {
@@ -26,6 +31,7 @@ impl Material {
             density: 1380.0,
             area: 3.0e-6,
             second_moment: 1.25e-13,
+            axial_damping: 0.0,
         }
     }
 
@@ -37,6 +43,7 @@ impl Material {
             density: 1202.0,
             area: 1.075e-5,
             second_moment: 9.15e-12,
+            axial_damping: 0.0,
         }
     }
 
@@ -45,7 +52,30 @@ impl Material {
             ea: self.youngs_modulus * self.area,
             ei: self.youngs_modulus * self.second_moment,
             rho_a: self.density * self.area,
+            ba: self.axial_damping,
         }
+    }
+
+    /// The material with axial damping BA (N s).
+    pub fn with_axial_damping(mut self, ba: f64) -> Self {
+        self.axial_damping = ba;
+        self
+    }
+
+    /// MoorDyn's axial damping for a damping ratio `zeta` (its negative
+    /// `BA/-zeta` entry) on segments (here: elements) of length
+    /// `segment_length` (docs/method.md §2.10, (M36)):
+    ///
+    /// ```text
+    ///   BA = zeta l sqrt(EA rho A)
+    /// ```
+    ///
+    /// the damping that gives the axial mode of wave number ~ 1 / l
+    /// (MoorDyn's highest lumped-mass mode, omega = 2 c / l) the damping
+    /// ratio zeta: zeta(omega) = BA omega / (2 EA) (M35).
+    pub fn axial_damping_for_ratio(&self, zeta: f64, segment_length: f64) -> f64 {
+        let s = self.section();
+        zeta * segment_length * (s.ea * s.rho_a).sqrt()
     }
 
     /// Longitudinal wave speed c = sqrt(E / rho).

@@ -210,6 +210,11 @@ impl Model {
         self.nodes() * self.dofs_per_node()
     }
 
+    /// Whether the cable has axial damping (BA > 0, docs/method.md §2.10).
+    pub fn has_axial_damping(&self) -> bool {
+        self.material.axial_damping != 0.0
+    }
+
     /// Element length l.
     pub fn element_length(&self) -> f64 {
         self.cable.length / self.cable.elements as f64

@@ -53,11 +53,19 @@ pub(super) fn cable(cable: Cable) -> Result<Cable, ModelError> {
     Ok(cable)
 }
 
-/// Checks that every material figure is finite and positive.
+/// Checks that every material figure is finite and positive (the axial
+/// damping finite and >= 0).
 pub(super) fn material(material: &Material) -> Result<(), ModelError> {
     check_positive("material.youngs_modulus", material.youngs_modulus)?;
     check_positive("material.density", material.density)?;
     check_positive("material.area", material.area)?;
     check_positive("material.second_moment", material.second_moment)?;
+    let ba = material.axial_damping;
+    if !ba.is_finite() || ba < 0.0 {
+        return Err(ModelError::invalid(
+            "material.axial_damping",
+            format!("must be a finite number >= 0 (N s), got {ba}"),
+        ));
+    }
     Ok(())
 }

@@ -1,5 +1,5 @@
 //! The end rates of a Galerkin step of a system with free points
-//! (docs/method.md §11.10, (M34)).
+//! (docs/method.md §11.10, (M37)).
 //!
 //! The Galerkin step carries momentum, not velocity: after convergence
 //! p_b = dA/de_b, and the state's rates solve M v_b = p_b (M22). In a

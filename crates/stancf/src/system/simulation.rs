@@ -214,6 +214,12 @@ impl SystemSimulation {
         self.t
     }
 
+    /// Work done on the lines by their axial damping so far (never
+    /// positive; docs/method.md §2.10, (M35)).
+    pub fn damping_work(&self) -> f64 {
+        self.lines.iter().map(Simulation::damping_work).sum()
+    }
+
     pub fn steps(&self) -> usize {
         self.steps
     }

@@ -54,6 +54,7 @@ pub fn section() -> Section {
         ea: 3.0,
         ei: 0.2,
         rho_a: 1.3,
+        ba: 0.0,
     }
 }
 

@@ -30,6 +30,7 @@ pub fn rope() -> Material {
         density: 1000.0,
         area: 1e-5,
         second_moment: 1e-12,
+        axial_damping: 0.0,
     }
 }
 

@@ -113,9 +113,18 @@ pub(super) fn run_system(
         failure: None,
         interrupted: false,
     };
-    let mut writers =
-        SystemWriters::create(place.dir, &line_ids, &point_ids, &sc.channels, opts.vtk)
-            .map_err(io_err(place.shown))?;
+    // history.csv accounts for the damping's work in a damped dynamic run.
+    let damped = sc.analysis.kind == AnalysisKind::Dynamic
+        && system.lines().iter().any(|l| l.model.has_axial_damping());
+    let mut writers = SystemWriters::create(
+        place.dir,
+        &line_ids,
+        &point_ids,
+        &sc.channels,
+        opts.vtk,
+        damped,
+    )
+    .map_err(io_err(place.shown))?;
     let mut from_static = false;
     if let Some(st) = static_solve.as_mut() {
         solve_statics(st, opts, &mut outcome);
@@ -274,6 +283,7 @@ fn dynamic_row(sim: &SystemSimulation, forces: bool) -> SystemRow<'_> {
         energies: en,
         iterations: 0,
         residual: 0.0,
+        damping_work: sim.damping_work(),
     }
 }
 
@@ -305,6 +315,7 @@ fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         energies: en,
         iterations: 0,
         residual: 0.0,
+        damping_work: 0.0,
     }
 }
 

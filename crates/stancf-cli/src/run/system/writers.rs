@@ -26,6 +26,9 @@ pub(super) struct SystemRow<'a> {
     pub energies: [f64; 3],
     pub iterations: usize,
     pub residual: f64,
+    /// Work of the lines' axial damping so far (written with
+    /// `with_damping`).
+    pub damping_work: f64,
 }
 
 /// The files of a system run.
@@ -42,6 +45,8 @@ pub(super) struct SystemWriters {
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
+    /// Whether history.csv has the `damping_work` column.
+    damping: bool,
 }
 
 impl SystemWriters {
@@ -51,6 +56,7 @@ impl SystemWriters {
         point_ids: &[i64],
         channels: &[OutputChannel],
         with_vtk: bool,
+        with_damping: bool,
     ) -> std::io::Result<Self> {
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
@@ -69,7 +75,8 @@ impl SystemWriters {
         let mut history = AtomicFile::create(dir, "history.csv")?;
         writeln!(
             history.writer(),
-            "t,kinetic,strain,gravity,total,iterations,residual"
+            "t,kinetic,strain,gravity,total,iterations,residual{}",
+            if with_damping { ",damping_work" } else { "" }
         )?;
         let channels = if channels.is_empty() {
             None
@@ -93,6 +100,7 @@ impl SystemWriters {
             tensions,
             history,
             samples: Vec::new(),
+            damping: with_damping,
         })
     }
 
@@ -180,7 +188,7 @@ impl SystemWriters {
             }
             writeln!(w)?;
         }
-        writeln!(
+        write!(
             self.history.writer(),
             "{t},{},{},{},{},{},{}",
             Num(kinetic),
@@ -190,6 +198,13 @@ impl SystemWriters {
             row.iterations,
             Num(row.residual)
         )?;
+        if self.damping {
+            if !row.damping_work.is_finite() {
+                return Err(bad("damping work"));
+            }
+            write!(self.history.writer(), ",{}", Num(row.damping_work))?;
+        }
+        writeln!(self.history.writer())?;
         Ok(())
     }
 

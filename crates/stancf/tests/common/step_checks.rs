@@ -1,0 +1,95 @@
+//! Finite-difference checks of an assembled step (or static solve),
+//! shared by the tests of the step's rows (`step_assembly.rs`,
+//! `axial_damping.rs`).
+#![allow(dead_code)]
+
+use super::common::{rel_diff, Rng};
+use stancf::assembly::{AssemblyScratch, Kind, SlabLayout, StepProblem, StepStart};
+use stancf::band::BandMatrix;
+use stancf::element::TimeSlab;
+use stancf::Model;
+
+/// dR/dx against central differences of R at a random iterate near
+/// `start`: asserts a relative error (2-norm over all entries) below `tol`
+/// and returns it.
+pub fn check_jacobian(
+    m: &Model,
+    layout: &SlabLayout,
+    slab: &TimeSlab,
+    start: &StepStart,
+    rng: &mut Rng,
+    label: &str,
+    tol: f64,
+) -> f64 {
+    let n = layout.size();
+    let mut x = vec![0.0; n];
+    for (slot, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+        for g in 0..m.dofs() {
+            if let Some(u) = layout.unknown_at(slot, g) {
+                x[u] = match kind {
+                    Kind::Position => start.e[g] + 0.03 * rng.next() * (i as f64 + 0.5),
+                    Kind::Velocity => start.v[g] + 0.3 * rng.next(),
+                };
+            }
+        }
+        for g in 0..m.dofs() {
+            if let Some(r) = layout.constraint_row_at(slot, g) {
+                let _ = r;
+            }
+        }
+    }
+    for s in 0..layout.row_slots.len() {
+        for g in 0..m.dofs() {
+            if let Some(u) = layout.multiplier_at(s, g) {
+                x[u] = rng.next();
+            }
+        }
+    }
+    let p = StepProblem {
+        model: m,
+        layout,
+        slab,
+        start,
+    };
+    let (kl, ku) = layout.bandwidths();
+    let mut jac = BandMatrix::new(n, kl, ku);
+    let mut r = vec![0.0; n];
+    let mut scratch = AssemblyScratch::new(m, layout);
+    p.assemble(&x, &mut r, Some(&mut jac), &mut scratch);
+    let mut r_only = vec![0.0; n];
+    p.residual(&x, &mut r_only, &mut scratch);
+    assert_eq!(
+        r, r_only,
+        "{label}: residual must not depend on whether J is built"
+    );
+    let h = 1e-6;
+    let mut analytic = Vec::with_capacity(n * n);
+    let mut fd = Vec::with_capacity(n * n);
+    let mut rp = vec![0.0; n];
+    let mut rm = vec![0.0; n];
+    for c in 0..n {
+        let mut xp = x.clone();
+        let mut xm = x.clone();
+        xp[c] += h;
+        xm[c] -= h;
+        p.residual(&xp, &mut rp, &mut scratch);
+        p.residual(&xm, &mut rm, &mut scratch);
+        for row in 0..n {
+            fd.push((rp[row] - rm[row]) / (2.0 * h));
+            analytic.push(jac.get(row, c));
+        }
+    }
+    let e = rel_diff(&analytic, &fd);
+    assert!(e < tol, "{label}: Jacobian rel. error {e:e}");
+    e
+}
+
+/// A step start near the reference state with random e and v.
+pub fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> StepStart {
+    let s0 = m.initial_state();
+    let e: Vec<f64> = s0.e.iter().map(|v| v + 0.05 * rng.next()).collect();
+    let v: Vec<f64> = s0.v.iter().map(|_| 0.5 * rng.next()).collect();
+    let mut start = StepStart::new(m, layout.time_nodes());
+    start.set(m, 0.37, &e, &v, h);
+    start
+}
