@@ -16,7 +16,9 @@ use std::path::Path;
 
 /// Figures derived from a dynamic scenario before running it.
 pub(crate) struct Derived {
-    pub(crate) element_length: f64,
+    /// The shortest element's length (all of them on a uniform mesh): the
+    /// one that bounds the step (docs/method.md §1.6, §4.6).
+    pub(crate) shortest_element: f64,
     pub(crate) wave_speed: f64,
     pub(crate) courant: f64,
     pub(crate) w_max: f64,
@@ -47,11 +49,11 @@ pub(crate) fn derive(sc: &Scenario, model: &Model, state: &State) -> Derived {
     let w_max = stability::highest_frequency(model, &state.e);
     let critical_w_dt = stability::p2_critical_w_dt(&rule, a.time_layers);
     let wave_speed = model.material.wave_speed();
-    let element_length = model.element_length();
+    let shortest_element = model.shortest_element_length();
     Derived {
-        element_length,
+        shortest_element,
         wave_speed,
-        courant: wave_speed * a.time_step / element_length,
+        courant: wave_speed * a.time_step / shortest_element,
         w_max,
         critical_w_dt,
         stable_step: critical_w_dt.map(|w| w / w_max),
@@ -140,15 +142,7 @@ fn describe(
     let mut s = String::new();
     let mut line = |k: &str, v: String| s.push_str(&format!("{k:<28}{v}\n"));
     line("title", sc.title.clone());
-    line(
-        "mesh",
-        format!(
-            "{} x {}, element length {} m",
-            sc.cable.elements,
-            model.element_type().name(),
-            model.element_length()
-        ),
-    );
+    line("mesh", mesh_text(model));
     line("DOFs", model.dofs().to_string());
     let constrained = (0..model.dofs())
         .filter(|&g| model.constraints.is_constrained(g))
@@ -223,7 +217,7 @@ fn describe(
         format!(
             "{:.6e} rad/s ({:.4} c/l)",
             d.w_max,
-            d.w_max * d.element_length / d.wave_speed
+            d.w_max * d.shortest_element / d.wave_speed
         ),
     );
     match (a.time_scheme, d.stable_step, d.critical_w_dt) {
@@ -254,6 +248,28 @@ fn describe(
     line("duration", format!("{:e} s", a.duration));
     line("steps", d.steps.to_string());
     s
+}
+
+/// "n x SAC-2, element length l m" for a uniform mesh; a graded one's
+/// shortest and longest elements and its grading (docs/method.md §1.6).
+pub(crate) fn mesh_text(model: &Model) -> String {
+    let c = &model.cable;
+    let kind = model.element_type().name();
+    match c.grading {
+        stancf::Grading::Geometric { toward, ratio } if !c.grading.is_uniform() => format!(
+            "{} x {kind}, element lengths {} m (shortest) to {} m (longest), graded toward {} \
+             with ratio {ratio}",
+            c.elements,
+            model.shortest_element_length(),
+            model.longest_element_length(),
+            toward.name()
+        ),
+        _ => format!(
+            "{} x {kind}, element length {} m",
+            c.elements,
+            model.element_length(0)
+        ),
+    }
 }
 
 pub fn check(path: &Path) -> Result<(), Failure> {
@@ -316,7 +332,7 @@ mod tests {
 
     fn derived(w_max: f64) -> Derived {
         Derived {
-            element_length: 0.5,
+            shortest_element: 0.5,
             wave_speed: 1569.6,
             courant: 0.16,
             w_max,

@@ -77,11 +77,12 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements, ends {} and {}; {bending}{}",
+                "type {}, {} m, {} {} elements ({}), ends {} and {}; {bending}{}",
                 t.name,
                 Sig(l.length),
                 l.elements,
                 l.element_type.name(),
+                element_sizes(&system.lines()[i].model),
                 end_name(sc, l.ends[0]),
                 end_name(sc, l.ends[1]),
                 damping_note(sc, i)
@@ -180,6 +181,23 @@ pub fn stable_step(sc: &SystemScenario, system: &System) -> Option<f64> {
         .zip(&states)
         .map(|(l, s)| critical / stability::highest_frequency(&l.model, &s.e))
         .fold(None, |m: Option<f64>, s| Some(m.map_or(s, |m| m.min(s))))
+}
+
+/// "l m long" on a uniform mesh; a graded one's shortest and longest
+/// elements and its grading (docs/method.md §1.6).
+fn element_sizes(model: &stancf::Model) -> String {
+    match model.cable.grading {
+        stancf::Grading::Geometric { toward, ratio } if !model.cable.grading.is_uniform() => {
+            format!(
+                "{} m to {} m long, graded toward {} with ratio {}",
+                Sig(model.shortest_element_length()),
+                Sig(model.longest_element_length()),
+                toward.name(),
+                Sig(ratio)
+            )
+        }
+        _ => format!("{} m long", Sig(model.element_length(0))),
+    }
 }
 
 fn end_name(sc: &SystemScenario, end: Option<usize>) -> String {

@@ -13,8 +13,40 @@ use std::path::Path;
 pub struct RunInfo {
     pub title: String,
     pub dynamic: bool,
-    /// Element length in the reference (unstretched) configuration.
-    pub element_length: Option<f64>,
+    /// Reference (unstretched) length of every element, from the
+    /// length, the element count and the grading (docs/method.md §1.6).
+    pub element_lengths: Option<Vec<f64>>,
+}
+
+/// The element lengths a `summary.json` object (a cable's, or a system's
+/// line's) describes: its `length`, `elements` and `grading` (absent:
+/// uniform), by the library's [`stancf::Grading::element_lengths`]. None
+/// without a length or an element count, or with a grading it cannot read.
+pub fn element_lengths_of(s: &serde_json::Value) -> Option<Vec<f64>> {
+    let (Some(length), Some(n)) = (s["length"].as_f64(), s["elements"].as_u64()) else {
+        return None;
+    };
+    if n == 0 {
+        return None;
+    }
+    let grading = grading_of(&s["grading"])?;
+    Some(grading.element_lengths(length, n as usize))
+}
+
+/// The grading summary.json writes (`{"toward", "ratio"}`, absent for a
+/// uniform mesh); None if it cannot be read.
+pub fn grading_of(g: &serde_json::Value) -> Option<stancf::Grading> {
+    if g.is_null() {
+        return Some(stancf::Grading::Uniform);
+    }
+    let toward = match g["toward"].as_str()? {
+        "A" => stancf::GradedEnd::A,
+        "B" => stancf::GradedEnd::B,
+        "both" => stancf::GradedEnd::Both,
+        _ => return None,
+    };
+    let ratio = g["ratio"].as_f64()?;
+    Some(stancf::Grading::Geometric { toward, ratio })
 }
 
 impl RunInfo {
@@ -28,14 +60,10 @@ impl RunInfo {
                 format!("{}: {e}", path.display()),
             )
         })?;
-        let element_length = match (s["length"].as_f64(), s["elements"].as_f64()) {
-            (Some(l), Some(n)) if n > 0.0 => Some(l / n),
-            _ => None,
-        };
         Ok(RunInfo {
             title: s["title"].as_str().unwrap_or("stancf run").to_string(),
             dynamic: s["analysis"].as_str() != Some("static"),
-            element_length,
+            element_lengths: element_lengths_of(&s),
         })
     }
 }
@@ -97,18 +125,19 @@ pub fn read_nodes(dir: &Path) -> io::Result<Vec<(f64, Vec<NodeRow>)>> {
 }
 
 /// The centre line through the nodes: the cubic Hermite interpolation of
-/// positions and slopes over each element (eq. 4; exact for SAC-2, the
-/// cubic part of SAC-3), `per_element` points per element; straight
-/// segments without slopes.
+/// positions and slopes over each element k of length `element_lengths[k]`
+/// (eq. 4; exact for SAC-2, the cubic part of SAC-3), `per_element` points
+/// per element; straight segments without slopes or lengths.
 pub fn centre_line(
     nodes: &[NodeRow],
-    element_length: Option<f64>,
+    element_lengths: Option<&[f64]>,
     per_element: usize,
 ) -> Vec<[f64; 3]> {
     let mut out = Vec::new();
     for (k, pair) in nodes.windows(2).enumerate() {
         let (a, b) = (&pair[0], &pair[1]);
-        let (Some(da), Some(db), Some(l)) = (a.slope, b.slope, element_length) else {
+        let l = element_lengths.and_then(|ls| ls.get(k).copied());
+        let (Some(da), Some(db), Some(l)) = (a.slope, b.slope, l) else {
             if k == 0 {
                 out.push(a.r);
             }
@@ -152,7 +181,7 @@ pub fn shapes_figure(
     let picks = spread(steps.len(), count);
     for (k, &i) in picks.iter().enumerate() {
         let (t, nodes) = &steps[i];
-        let line = centre_line(nodes, info.element_length, 12);
+        let line = centre_line(nodes, info.element_lengths.as_deref(), 12);
         fig.series.push(Series::line(
             format!("{time_label} = {}", crate::plot::tick(*t)),
             line.iter().map(|p| (p[a], p[b])).collect(),
@@ -356,7 +385,7 @@ mod tests {
                 slope: Some([-1.0, 0.0, 0.0]),
             },
         ];
-        let line = centre_line(&nodes, Some(l), 8);
+        let line = centre_line(&nodes, Some(&[l]), 8);
         assert_eq!(line.len(), 9);
         assert_eq!(line[0], [1.0, 0.0, 0.0]);
         assert_eq!(line[8], [0.0, 1.0, 0.0]);
@@ -367,6 +396,39 @@ mod tests {
             let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
             assert!(r < 1.0 && r > 0.9847, "{r}");
         }
+    }
+
+    /// A graded mesh's summary gives each element its own length, the
+    /// library's (docs/method.md §1.6), so the Hermite curve of a straight
+    /// graded line through its nodes stays on the line and moves forward;
+    /// a grading that cannot be read gives no lengths (straight segments).
+    #[test]
+    fn a_graded_summary_gives_each_element_its_own_length() {
+        let s = serde_json::json!({
+            "length": 10.0, "elements": 5, "grading": {"toward": "B", "ratio": 4.0}
+        });
+        let g = stancf::Grading::Geometric {
+            toward: stancf::GradedEnd::B,
+            ratio: 4.0,
+        };
+        let lengths = element_lengths_of(&s).expect("lengths");
+        assert_eq!(lengths, g.element_lengths(10.0, 5));
+        let nodes: Vec<NodeRow> = g
+            .node_coordinates(10.0, 5)
+            .iter()
+            .map(|&x| NodeRow {
+                r: [x, 0.0, 0.0],
+                slope: Some([1.0, 0.0, 0.0]),
+            })
+            .collect();
+        let line = centre_line(&nodes, Some(&lengths), 8);
+        for w in line.windows(2) {
+            assert!(w[1][0] > w[0][0] && w[1][1] == 0.0, "{w:?}");
+        }
+        let bad = serde_json::json!({
+            "length": 10.0, "elements": 5, "grading": {"toward": "C", "ratio": 4.0}
+        });
+        assert_eq!(element_lengths_of(&bad), None);
     }
 
     /// The figures show the numbers of the files, not a recomputation.
@@ -395,7 +457,7 @@ mod tests {
              0.5,0,0,0,0\n0.5,1,1e6,0,0\n0.5,1,1e6,0,1\n0.5,2,7e6,0,1\n",
         );
         let info = RunInfo::read(&dir).unwrap();
-        assert_eq!(info.element_length, Some(1.0));
+        assert_eq!(info.element_lengths, Some(vec![1.0, 1.0]));
         let steps = read_nodes(&dir).unwrap();
         let shapes = shapes_figure(&steps, &info, 9, "t");
         assert_eq!(shapes.series.len(), 2);

@@ -2,16 +2,18 @@
 //! line's shape at a few written times in one frame, the energies, and
 //! the tension at every line end over time.
 
-use crate::figures::{centre_line, energy_figure, plane_of_motion, read_nodes, RunInfo, AXES};
+use crate::figures::{
+    centre_line, element_lengths_of, energy_figure, plane_of_motion, read_nodes, RunInfo, AXES,
+};
 use crate::plot::{sequential, Lines, Series, PALETTE};
 use crate::results::{spread, Table};
 use std::io;
 use std::path::Path;
 
-/// One line's id, element length and written shapes.
+/// One line's id, element lengths and written shapes.
 struct LineShapes {
     id: i64,
-    element_length: Option<f64>,
+    element_lengths: Option<Vec<f64>>,
     steps: Vec<(f64, Vec<crate::figures::NodeRow>)>,
 }
 
@@ -37,14 +39,11 @@ fn read_lines(dir: &Path) -> io::Result<Vec<LineShapes>> {
             let id = l["id"]
                 .as_i64()
                 .ok_or_else(|| bad(&path, "a line without an id"))?;
-            let element_length = match (l["length"].as_f64(), l["elements"].as_f64()) {
-                (Some(len), Some(n)) if n > 0.0 => Some(len / n),
-                _ => None,
-            };
+            let element_lengths = element_lengths_of(l);
             let steps = read_nodes(&dir.join("lines").join(id.to_string()))?;
             Ok(LineShapes {
                 id,
-                element_length,
+                element_lengths,
                 steps,
             })
         })
@@ -71,7 +70,7 @@ fn shapes_figure(lines: &[LineShapes], info: &RunInfo, count: usize) -> Lines {
             let Some((t, nodes)) = l.steps.get(i) else {
                 continue;
             };
-            let curve = centre_line(nodes, l.element_length, 12);
+            let curve = centre_line(nodes, l.element_lengths.as_deref(), 12);
             fig.series.push(Series::line(
                 format!("line {}, t = {}", l.id, crate::plot::tick(*t)),
                 curve.iter().map(|p| (p[a], p[b])).collect(),

@@ -48,7 +48,7 @@ pub(crate) fn scales(
     let gravity = loads::load_values(sc, &mut values);
     let f = Figures { file, values };
 
-    let s = section(&f, sc)?;
+    let s = section(&f, sc, model)?;
     let frequency = element(&f, model, &s)?;
     let place = placement(&f, sc, &s)?;
     let speed = initial_speed(&f, sc, model, state, &motions, velocity_keys)?;
@@ -74,7 +74,7 @@ pub(crate) fn scales(
 /// The values of the cable, its material and the analysis, key by key.
 fn cable_values(sc: &Scenario) -> Vec<(String, f64)> {
     let m = &sc.material;
-    vec![
+    let mut values = vec![
         (key::YOUNGS_MODULUS.into(), m.youngs_modulus),
         (key::DENSITY.into(), m.density),
         (key::AREA.into(), m.area),
@@ -85,7 +85,13 @@ fn cable_values(sc: &Scenario) -> Vec<(String, f64)> {
         (key::TIME_STEP.into(), sc.analysis.time_step),
         (key::DURATION.into(), sc.analysis.duration),
         ("material.diameter".into(), sc.diameter),
-    ]
+    ];
+    if let stancf::Grading::Geometric { ratio, .. } = sc.cable.grading {
+        if !sc.cable.grading.is_uniform() {
+            values.push((key::GRADING_RATIO.into(), ratio));
+        }
+    }
+    values
 }
 
 /// The initial velocities' values added to `values`; returns the keys of
@@ -171,16 +177,18 @@ struct Section {
     rho_a: f64,
     /// The cable's length L (m).
     length: f64,
-    /// The element length l = L / elements (m).
+    /// The element length l = L / elements (m); on a graded mesh the
+    /// shortest element's (docs/method.md §1.6).
     l: f64,
     /// The mass rho A L (kg).
     mass: f64,
 }
 
 /// The section and the mesh: the stiffnesses E A and E I within range, and
-/// the mass per length rho A, the element length l = L / n and the mass
-/// rho A L also at least 1e-150, as the solver divides by them.
-fn section(f: &Figures, sc: &Scenario) -> Result<Section, Failure> {
+/// the mass per length rho A, the element length l = L / n (the shortest
+/// on a graded mesh) and the mass rho A L also at least 1e-150, as the
+/// solver divides by them.
+fn section(f: &Figures, sc: &Scenario, model: &Model) -> Result<Section, Failure> {
     use key::{AREA, DENSITY, ELEMENTS, LENGTH, SECOND_MOMENT, YOUNGS_MODULUS};
     let m = &sc.material;
     let length = sc.cable.length;
@@ -189,7 +197,7 @@ fn section(f: &Figures, sc: &Scenario) -> Result<Section, Failure> {
         ei: m.youngs_modulus * m.second_moment,
         rho_a: m.density * m.area,
         length,
-        l: length / sc.cable.elements as f64,
+        l: model.shortest_element_length(),
         mass: m.density * m.area * length,
     };
     f.need(
@@ -214,7 +222,11 @@ fn section(f: &Figures, sc: &Scenario) -> Result<Section, Failure> {
         Rule::Divisor,
     )?;
     f.need(
-        "the element length l = length / elements",
+        if sc.cable.grading.is_uniform() {
+            "the element length l = length / elements"
+        } else {
+            "the shortest element length l of the graded mesh"
+        },
         s.l,
         " m",
         &keys(&[LENGTH, ELEMENTS]),

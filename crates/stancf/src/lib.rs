@@ -11,7 +11,7 @@
 //!
 //! The method, equation by equation with the decisions taken, is
 //! docs/method.md in the repository; the modules' doc comments cite its
-//! sections (§) and formulas (M1)-(M37). The modules follow the method
+//! sections (§) and formulas (M1)-(M38). The modules follow the method
 //! from the bottom up:
 //!
 //! | module | what it implements |
@@ -57,7 +57,9 @@ pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};
 pub use element::{AxialStrain, Curvature, Measures};
 pub use error::{FailureKind, ModelError, SolverError};
 pub use integrator::{run, Simulation, StepReport, StepSettings, TimeScheme};
-pub use model::{Cable, ElementType, Load, Material, Model, ModelOptions, SpacePoints, State};
+pub use model::{
+    Cable, ElementType, GradedEnd, Grading, Load, Material, Model, ModelOptions, SpacePoints, State,
+};
 pub use observe::{energies, Energies};
 pub use solver::{convergence_rate, Clock, NewtonSettings, SolverMethod, Timing};
 pub use statics::{StaticSettings, StaticSolver};

@@ -126,12 +126,12 @@ pub fn stress_samples(
     out: &mut Vec<StressSample>,
 ) {
     out.clear();
-    let l = model.element_length();
     let dpn = model.dofs_per_node();
     let e_mod = model.material.youngs_modulus;
     let m = model.options.measures;
     let n = per_element.max(2);
     for k in 0..model.cable.elements {
+        let l = model.element_length(k);
         let q = &state.e[coordinate(dpn, k, SLOT_R, 0)..];
         for p in 0..n {
             let xi = p as f64 / (n - 1) as f64;
@@ -141,7 +141,7 @@ pub fn stress_samples(
             };
             out.push(StressSample {
                 element: k,
-                s: (k as f64 + xi) * l,
+                s: model.material_coordinate(k, xi),
                 axial_stress: e_mod * axial_strain(m.axial_strain, &rx),
                 curvature: curvature(m.curvature, &rx, &rxx),
             });
@@ -152,11 +152,11 @@ pub fn stress_samples(
 /// Points of the centre line: `per_element` evenly spaced points in every
 /// element (both ends; shared nodes once), as (material coordinate, r).
 pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64, [f64; 3])> {
-    let l = model.element_length();
     let dpn = model.dofs_per_node();
     let n = per_element.max(2);
     let mut out = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
     for k in 0..model.cable.elements {
+        let l = model.element_length(k);
         let first = if k == 0 { 0 } else { 1 };
         for p in first..n {
             let xi = p as f64 / (n - 1) as f64;
@@ -171,7 +171,7 @@ pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64
                     r[i] += na * q[3 * a + i];
                 }
             }
-            out.push(((k as f64 + xi) * l, r));
+            out.push((model.material_coordinate(k, xi), r));
         }
     }
     out
@@ -196,13 +196,13 @@ pub struct CablePoint {
 /// `per_element` evenly spaced points of every element (both ends; a node
 /// shared by two elements once): for drawing and for ParaView.
 pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<CablePoint> {
-    let l = model.element_length();
     let dpn = model.dofs_per_node();
     let n = per_element.max(2);
     let e_mod = model.material.youngs_modulus;
     let m = model.options.measures;
     let mut out: Vec<CablePoint> = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
     for k in 0..model.cable.elements {
+        let l = model.element_length(k);
         let o = coordinate(dpn, k, SLOT_R, 0);
         let (q, qd) = (&state.e[o..], &state.v[o..]);
         for p in 0..n {
@@ -226,7 +226,7 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
                 }
             }
             let point = CablePoint {
-                s: (k as f64 + xi) * l,
+                s: model.material_coordinate(k, xi),
                 r,
                 v,
                 axial_stress: e_mod * axial_strain(m.axial_strain, &rx),

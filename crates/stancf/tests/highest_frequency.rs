@@ -16,16 +16,21 @@ use common::generalized_max_eigenvalue;
 use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite, SpatialShape};
 use stancf::stability::highest_frequency;
-use stancf::{Cable, ElementType, Material, Model, ModelOptions};
+use stancf::{Cable, ElementType, GradedEnd, Grading, Material, Model, ModelOptions};
 
 /// Assembles N equal elements of `size` scalar unknowns (the shape
 /// functions of one direction, two nodes of size / 2) into dense matrices.
 fn assemble(elements: usize, element: &[Vec<f64>]) -> Vec<Vec<f64>> {
-    let size = element.len();
+    assemble_each(&vec![element.to_vec(); elements])
+}
+
+/// Assembles the elements' matrices, element k's from `elements[k]`.
+fn assemble_each(elements: &[Vec<Vec<f64>>]) -> Vec<Vec<f64>> {
+    let size = elements[0].len();
     let per_node = size / 2;
-    let n = (elements + 1) * per_node;
+    let n = (elements.len() + 1) * per_node;
     let mut a = vec![vec![0.0; n]; n];
-    for e in 0..elements {
+    for (e, element) in elements.iter().enumerate() {
         let o = e * per_node;
         for i in 0..size {
             for j in 0..size {
@@ -155,7 +160,7 @@ fn sac2_highest_frequency_is_that_of_the_hermite_bar_and_beam() {
         (thick, 0.1, 6),
     ] {
         let model = straight(length, elements, ElementType::Sac2, material);
-        let l = model.element_length();
+        let l = model.element_length(0);
         let w = highest_frequency(&model, &model.initial_state().e);
         let reference = reference_w_max(elements, &sac2_bar_and_beam(&material, l));
         let c_over_l = material.wave_speed() / l;
@@ -188,7 +193,7 @@ fn sac3_highest_frequency_is_that_of_the_quintic_bar_and_beam() {
     let pvc = Material::chen2023_pvc();
     for elements in [1, 8, 30] {
         let model = straight(4.0, elements, ElementType::Sac3, pvc);
-        let l = model.element_length();
+        let l = model.element_length(0);
         let w = highest_frequency(&model, &model.initial_state().e);
         let reference = reference_w_max(elements, &bar_and_beam(quintic_hermite, &pvc, l));
         eprintln!("SAC-3 x {elements}: w_max {w:.10e}, reference {reference:.10e}");
@@ -258,5 +263,53 @@ fn a_stretched_cable_is_stiffer_by_its_tangent_modulus() {
             w1 / w0
         );
         assert!((w1 / w0 / expect - 1.0).abs() < TOLERANCE, "{}", w1 / w0);
+    }
+}
+
+/// A graded mesh (docs/method.md §1.6): w_max is that of its unequal
+/// textbook elements assembled (each of its own length), and its shortest
+/// elements set it. By the element eigenvalue bound (the Rayleigh quotient
+/// of the assembly is a weighted mean of the elements'), w_max is at most
+/// the largest one-element value, 13.04 c / l_min for SAC-2. Measured:
+/// w_max l_min / c = 9.08 to 9.47 for ratios 2 and 8 toward A, B and both,
+/// against 9.55 on uniform meshes: the stable step W_crit / w_max (M21)
+/// follows the shortest element.
+#[test]
+fn a_graded_meshs_highest_frequency_is_set_by_its_shortest_elements() {
+    let pvc = Material::chen2023_pvc();
+    let c = pvc.wave_speed();
+    for toward in [GradedEnd::A, GradedEnd::B, GradedEnd::Both] {
+        for ratio in [2.0, 8.0] {
+            let model = Model::new(
+                Cable::straight(4.0, 12, ElementType::Sac2)
+                    .with_grading(Grading::Geometric { toward, ratio }),
+                pvc,
+                ModelOptions::default(),
+                vec![],
+            )
+            .unwrap();
+            let w = highest_frequency(&model, &model.initial_state().e);
+            let matrices: Vec<[Vec<Vec<f64>>; 3]> = (0..12)
+                .map(|k| sac2_bar_and_beam(&pvc, model.element_length(k)))
+                .collect();
+            let of = |i: usize| -> Vec<Vec<Vec<f64>>> {
+                matrices.iter().map(|m| m[i].clone()).collect()
+            };
+            let mass = assemble_each(&of(2));
+            let bar = generalized_max_eigenvalue(&assemble_each(&of(0)), &mass);
+            let beam = generalized_max_eigenvalue(&assemble_each(&of(1)), &mass);
+            let reference = bar.max(beam).sqrt();
+            let short = model.shortest_element_length();
+            eprintln!(
+                "toward {toward:?}, ratio {ratio}: w_max {w:.10e} rad/s = {:.4} c/l_min, \
+                 reference {reference:.10e}",
+                w * short / c
+            );
+            assert!(
+                (w / reference - 1.0).abs() < TOLERANCE,
+                "{w} vs {reference}"
+            );
+            assert!(w * short / c <= 13.05, "{}", w * short / c);
+        }
     }
 }

@@ -66,7 +66,15 @@ impl Figures<'_> {
         let Some(problem) = problem else {
             return Ok(());
         };
-        let keys = self.culprits_first(keys);
+        let mut keys = keys.to_vec();
+        if keys.iter().any(|k| k == key::ELEMENTS)
+            && self.values.iter().any(|(k, _)| k == key::GRADING_RATIO)
+        {
+            // On a graded mesh the element length l (the shortest) is
+            // made of the grading's ratio too.
+            keys.push(key::GRADING_RATIO.to_string());
+        }
+        let keys = self.culprits_first(&keys);
         let shown: Vec<String> = keys
             .iter()
             .map(|k| format!("{k} = {}", Sig(self.value(k))))
@@ -121,6 +129,8 @@ pub(super) mod key {
     pub(in crate::input_scales) const SECOND_MOMENT: &str = "material.second_moment";
     pub(in crate::input_scales) const LENGTH: &str = "cable.length";
     pub(in crate::input_scales) const ELEMENTS: &str = "cable.elements";
+    /// Among the values only for a graded mesh (docs/method.md §1.6).
+    pub(in crate::input_scales) const GRADING_RATIO: &str = "cable.grading.ratio";
     pub(in crate::input_scales) const ORIGIN: &str = "cable.origin";
     pub(in crate::input_scales) const TIME_STEP: &str = "analysis.time_step";
     pub(in crate::input_scales) const DURATION: &str = "analysis.duration";

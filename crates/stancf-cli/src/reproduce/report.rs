@@ -116,7 +116,7 @@ fn impact_axial(dir: &Path) -> io::Result<Vec<StudyFigure>> {
         let info = RunInfo {
             title: format!("Fig. 4: axial impact, {name}, 8 elements"),
             dynamic: true,
-            element_length: None,
+            element_lengths: None,
         };
         let mut map = stress_figure(&t, &info, 400)?;
         map.clip_quantile = None;

@@ -94,11 +94,26 @@ pub(super) fn common_summary(
     m.insert("element".into(), json!(model.element_type().name()));
     m.insert("elements".into(), json!(sc.cable.elements));
     m.insert("length".into(), json_num(sc.cable.length));
+    if let Some(g) = grading_json(sc.cable.grading) {
+        m.insert("grading".into(), g);
+    }
     m.insert("dofs".into(), json!(model.dofs()));
     m.insert("wall_time_s".into(), json_num(wall));
     m.insert("tip".into(), vec3(tip));
     m.insert("nodes_final".into(), Value::Array(nodes_final));
     m
+}
+
+/// A graded mesh's `{"toward": "A" | "B" | "both", "ratio": R}` for
+/// summary.json (docs/method.md §1.6); None for a uniform mesh, which
+/// summary.json does not mention. [`crate::figures::grading_of`] reads it.
+pub(crate) fn grading_json(grading: stancf::Grading) -> Option<Value> {
+    match grading {
+        stancf::Grading::Geometric { toward, ratio } if !grading.is_uniform() => {
+            Some(json!({"toward": toward.name(), "ratio": json_num(ratio)}))
+        }
+        _ => None,
+    }
 }
 
 /// Writes summary.json: the common fields followed by `extra`'s.

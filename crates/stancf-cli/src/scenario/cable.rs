@@ -2,14 +2,14 @@
 //! (the section's stiffness and mass, and the diameter seen by drag).
 
 use super::context::Ctx;
-use super::raw::{RawCable, RawMaterial};
+use super::raw::{RawCable, RawGrading, RawMaterial};
 use super::ScenarioError;
-use stancf::{ElementType, Material};
+use stancf::{ElementType, GradedEnd, Grading, Material};
 
 /// `[cable]`: `length` (> 0, required), `elements` (1..=1000000,
 /// required), `element` ("SAC-2", the default, or "SAC-3"), `origin`
 /// (default [0, 0, 0]) and `direction` (default [1, 0, 0], not zero; made
-/// a unit vector).
+/// a unit vector), `grading` (see [`grading`]; default uniform).
 pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, ScenarioError> {
     let rc = ctx.required("cable", raw)?;
     let length = ctx.required_positive("cable.length", rc.length)?;
@@ -39,7 +39,41 @@ pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, S
         element_type,
         origin,
         direction: unit(direction),
+        grading: grading(ctx, "cable", rc.grading.as_ref(), elements)?,
     })
+}
+
+/// `<owner>.grading = { toward = "A" | "B" | "both", ratio = R }`, both
+/// keys required: the elements shortest at `toward`, the longest R times
+/// the shortest (R >= 1, finite; docs/method.md §1.6). Missing: uniform.
+/// `owner` is `cable` or `lines[i]`; the key named in an error is under it.
+pub(super) fn grading(
+    ctx: &Ctx,
+    owner: &str,
+    raw: Option<&RawGrading>,
+    elements: usize,
+) -> Result<Grading, ScenarioError> {
+    let Some(raw) = raw else {
+        return Ok(Grading::Uniform);
+    };
+    let key = |k: &str| format!("{owner}.grading.{k}");
+    let toward = match ctx.choice(
+        &key("toward"),
+        Some(ctx.required(&key("toward"), raw.toward.as_deref())?),
+        "",
+        &["A", "B", "both"],
+    )? {
+        "A" => GradedEnd::A,
+        "B" => GradedEnd::B,
+        _ => GradedEnd::Both,
+    };
+    let ratio = ctx.required(&key("ratio"), raw.ratio)?;
+    let g = Grading::Geometric { toward, ratio };
+    g.check(elements).map_err(|e| {
+        let under = e.key.strip_prefix("cable").unwrap_or(&e.key);
+        ctx.err(&format!("{owner}{under}"), e.message)
+    })?;
+    Ok(g)
 }
 
 /// The unit vector along a non-zero `v`. Only its direction counts: scaled

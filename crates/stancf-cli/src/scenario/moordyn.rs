@@ -104,6 +104,7 @@ pub fn deck_scenario(
             elements: l.segments,
             element_type: ElementType::Sac2,
             ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
+            grading: stancf::Grading::Uniform,
         })
         .collect();
     let mut channels = Vec::with_capacity(deck.outputs.len());

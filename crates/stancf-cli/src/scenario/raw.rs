@@ -99,6 +99,16 @@ pub(super) struct RawLine {
     pub(super) element: Option<String>,
     pub(super) a: Option<i64>,
     pub(super) b: Option<i64>,
+    pub(super) grading: Option<RawGrading>,
+}
+
+/// `grading = { toward = "B", ratio = 4.0 }` of `[cable]` or a
+/// `[[lines]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawGrading {
+    pub(super) toward: Option<String>,
+    pub(super) ratio: Option<f64>,
 }
 
 /// One `[[motions]]` entry.
@@ -122,6 +132,7 @@ pub(super) struct RawCable {
     pub(super) element: Option<String>,
     pub(super) origin: Option<Vector>,
     pub(super) direction: Option<Vector>,
+    pub(super) grading: Option<RawGrading>,
 }
 
 /// `[material]`.

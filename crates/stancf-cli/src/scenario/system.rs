@@ -8,7 +8,7 @@ use super::context::Ctx;
 use super::raw::{RawAnalysis, RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
 use super::{Analysis, ScenarioError};
 use stancf::constraints::Oscillation;
-use stancf::{ElementType, Measures};
+use stancf::{ElementType, Grading, Measures};
 use std::path::Path;
 
 /// A line type: the section of a line (MoorDyn's LINE TYPES row).
@@ -95,6 +95,8 @@ pub struct SystemLine {
     pub element_type: ElementType,
     /// The points (indices) ends A and B attach to; None: loose.
     pub ends: [Option<usize>; 2],
+    /// How the elements divide the length (docs/method.md §1.6).
+    pub grading: Grading,
 }
 
 /// Where a dynamic run of a system starts.
@@ -341,7 +343,8 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
 /// `[[lines]]`: `id` (required, unique), `type` (a line type's name,
 /// required), `length` (> 0, required), `elements` (1..=1000000,
 /// required), `element` ("SAC-2", the default, or "SAC-3"), `a` and `b`
-/// (point ids; a missing one leaves that end loose, not both).
+/// (point ids; a missing one leaves that end loose, not both), `grading`
+/// (`{ toward, ratio }`, default uniform; see [`super::cable::grading`]).
 fn lines(
     ctx: &Ctx,
     raw: &[RawLine],
@@ -403,6 +406,8 @@ fn lines(
         if ends[0].is_some() && ends[0] == ends[1] {
             return Err(ctx.err(&key("b"), "both ends are attached to the same point"));
         }
+        let grading =
+            super::cable::grading(ctx, &format!("lines[{i}]"), r.grading.as_ref(), elements)?;
         out.push(SystemLine {
             id,
             line_type,
@@ -410,6 +415,7 @@ fn lines(
             elements,
             element_type,
             ends,
+            grading,
         });
     }
     for (p, point) in points.iter().enumerate() {

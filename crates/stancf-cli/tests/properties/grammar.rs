@@ -383,10 +383,20 @@ fn scenario_with(g: Gen) -> BoxedStrategy<String> {
                 "[0.6, 0.0, 0.8]",
             ]),
         ),
+        g.optional(
+            "grading",
+            0.3,
+            pick(&[
+                "{ toward = \"A\", ratio = 2.0 }",
+                "{ toward = \"B\", ratio = 1.0 }",
+                "{ toward = \"both\", ratio = 4.0 }",
+                "{ toward = \"B\", ratio = 0.5 }",
+            ]),
+        ),
         g.stray(),
     )
-        .prop_map(|(a, b, c, d, e, stray)| {
-            let mut kv = vec![a, b, c, d, e];
+        .prop_map(|(a, b, c, d, e, f, stray)| {
+            let mut kv = vec![a, b, c, d, e, f];
             kv.extend(stray);
             kv
         });

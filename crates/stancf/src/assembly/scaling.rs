@@ -31,7 +31,7 @@ impl Scales {
         let len = model.cable.length;
         let dpn = layout.dpn;
         for g in 0..model.dofs() {
-            let s = model.coordinate_length_scale(g % dpn) / len;
+            let s = model.coordinate_length_scale(g / dpn, g % dpn) / len;
             let m = mass[g];
             for (slot, &(_, kind)) in layout.unknown_slots.iter().enumerate() {
                 let w = match kind {

@@ -1,6 +1,8 @@
 //! The straight reference cable and its element type (docs/method.md
 //! §1.1-§1.3): SAC-2 (cubic Hermite, nodal r, r_x) or SAC-3 (quintic
-//! Hermite, nodal r, r_x, r_xx).
+//! Hermite, nodal r, r_x, r_xx), and its mesh grading (§1.6).
+
+use super::Grading;
 
 /// The two space-time elements of the paper (Table 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,6 +45,9 @@ pub struct Cable {
     pub origin: [f64; 3],
     /// Unit tangent of the reference shape (normalized on construction).
     pub direction: [f64; 3],
+    /// How the elements divide the length (uniform unless given;
+    /// docs/method.md §1.6).
+    pub grading: Grading,
 }
 
 impl Cable {
@@ -54,6 +59,7 @@ impl Cable {
             element_type,
             origin: [0.0; 3],
             direction: [1.0, 0.0, 0.0],
+            grading: Grading::Uniform,
         }
     }
 
@@ -64,6 +70,13 @@ impl Cable {
 
     pub fn with_direction(mut self, direction: [f64; 3]) -> Self {
         self.direction = direction;
+        self
+    }
+
+    /// The cable with its elements graded by `grading` (docs/method.md
+    /// §1.6).
+    pub fn with_grading(mut self, grading: Grading) -> Self {
+        self.grading = grading;
         self
     }
 }

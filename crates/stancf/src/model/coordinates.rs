@@ -108,11 +108,19 @@ impl Model {
         }
     }
 
-    /// Length scale of each coordinate kind within a node: a change of r
-    /// by 1 m, of r_x by 1/l or of r_xx by 1/l^2 moves the centre line by
-    /// about 1 m inside an element of length l.
-    pub fn coordinate_length_scale(&self, dof_in_node: usize) -> f64 {
-        let l = self.element_length();
+    /// Length scale of each coordinate kind of node j: a change of r by
+    /// 1 m, of r_x by 1/l or of r_xx by 1/l^2 moves the centre line by
+    /// about 1 m inside an element of length l, with l the longer of the
+    /// node's elements (the one it moves more; all are `L / n` on a
+    /// uniform mesh).
+    pub fn coordinate_length_scale(&self, node: usize, dof_in_node: usize) -> f64 {
+        let before = node.checked_sub(1).map_or(0.0, |k| self.element_length(k));
+        let after = if node < self.cable.elements {
+            self.element_length(node)
+        } else {
+            0.0
+        };
+        let l = before.max(after);
         match dof_in_node / 3 {
             0 => 1.0,
             1 => l,

@@ -13,6 +13,7 @@
 //! | file | holds |
 //! |---|---|
 //! | `cable.rs` | [`Cable`] and [`ElementType`] (§1.1-§1.3) |
+//! | `grading.rs` | [`Grading`]: the node coordinates of uniform and graded meshes (§1.6) |
 //! | `material.rs` | [`Material`] and its derived figures (§2.1, §2.4) |
 //! | `coordinates.rs` | the index function, slots, node ranges, planar coordinates (§1.1, §6.7) |
 //! | `quadrature_choice.rs` | [`SpacePoints`], [`ModelOptions`], default points, rank warnings (§3.3-§3.4) |
@@ -28,6 +29,7 @@ use crate::shape::{cubic_hermite, quintic_hermite};
 mod applied_loads;
 mod cable;
 mod coordinates;
+mod grading;
 mod mass;
 mod material;
 mod quadrature_choice;
@@ -36,6 +38,7 @@ mod validate;
 pub use applied_loads::Load;
 pub use cable::{Cable, ElementType};
 pub use coordinates::{coordinate, node_range, SLOT_R, SLOT_R_X, SLOT_R_XX};
+pub use grading::{GradedEnd, Grading};
 pub(crate) use mass::gather;
 pub use material::Material;
 pub use quadrature_choice::{ModelOptions, SpacePoints};
@@ -74,6 +77,8 @@ pub struct Model {
     pub drag: Vec<crate::loads::AirDrag>,
     /// Constraints, resolved to coordinates (none for a free cable).
     pub constraints: Constraints,
+    /// Material coordinate x_j of every node ([`Grading::node_coordinates`]).
+    node_x: Vec<f64>,
 }
 
 /// Positions e and velocities v of all coordinates at time t.
@@ -102,24 +107,25 @@ impl Clone for State {
 }
 
 impl Mesh {
-    /// `elements` elements of type `element_type` and length `l`.
+    /// Elements of type `element_type`, element k of length `lengths[k]`.
     fn build(
         element_type: ElementType,
-        elements: usize,
-        l: f64,
+        lengths: &[f64],
         section: Section,
         measures: Measures,
         rules: &SpaceRules,
     ) -> Self {
         match element_type {
             ElementType::Sac2 => Mesh::Sac2(
-                (0..elements)
-                    .map(|_| CableElement::new(cubic_hermite, l, section, measures, rules))
+                lengths
+                    .iter()
+                    .map(|&l| CableElement::new(cubic_hermite, l, section, measures, rules))
                     .collect(),
             ),
             ElementType::Sac3 => Mesh::Sac3(
-                (0..elements)
-                    .map(|_| CableElement::new(quintic_hermite, l, section, measures, rules))
+                lengths
+                    .iter()
+                    .map(|&l| CableElement::new(quintic_hermite, l, section, measures, rules))
                     .collect(),
             ),
         }
@@ -141,17 +147,11 @@ impl Model {
             .unwrap_or_else(|| cable.element_type.default_space_points());
         let rules = quadrature_choice::space_rules(points)?;
         let (gravity, drag) = applied_loads::gravity_and_drag(&loads, cable.elements)?;
-        let l = cable.length / cable.elements as f64;
+        let lengths = cable.grading.element_lengths(cable.length, cable.elements);
+        let node_x = cable.grading.node_coordinates(cable.length, cable.elements);
         let section = material.section();
         let measures = options.measures;
-        let mesh = Mesh::build(
-            cable.element_type,
-            cable.elements,
-            l,
-            section,
-            measures,
-            &rules,
-        );
+        let mesh = Mesh::build(cable.element_type, &lengths, section, measures, &rules);
         let nodes = cable.elements + 1;
         Ok(Model {
             cable,
@@ -165,6 +165,7 @@ impl Model {
                 motion: vec![None; nodes * cable.element_type.dofs_per_node()],
                 ..Constraints::default()
             },
+            node_x,
         })
     }
 
@@ -215,14 +216,47 @@ impl Model {
         self.material.axial_damping != 0.0
     }
 
-    /// Element length l.
-    pub fn element_length(&self) -> f64 {
-        self.cable.length / self.cable.elements as f64
+    /// Reference length l_k of element k (`L / n` on a uniform mesh;
+    /// docs/method.md §1.6).
+    pub fn element_length(&self, element: usize) -> f64 {
+        crate::with_elements!(&self.mesh, els => els[element].length)
     }
 
-    /// Material coordinate of node j.
+    /// The shortest element's length: the one that bounds the stable
+    /// step and the Courant number (docs/method.md §4.6).
+    pub fn shortest_element_length(&self) -> f64 {
+        crate::with_elements!(&self.mesh, els => {
+            els.iter().map(|e| e.length).fold(f64::INFINITY, f64::min)
+        })
+    }
+
+    /// The longest element's length.
+    pub fn longest_element_length(&self) -> f64 {
+        crate::with_elements!(&self.mesh, els => els.iter().map(|e| e.length).fold(0.0, f64::max))
+    }
+
+    /// Material coordinate (reference arc length from end A) of node j:
+    /// `x_j` of [`Grading::node_coordinates`] (docs/method.md §1.6).
     pub fn node_coordinate(&self, node: usize) -> f64 {
-        node as f64 * self.element_length()
+        self.node_x[node]
+    }
+
+    /// The material coordinates of all nodes, x_0 = 0 to x_n.
+    pub fn node_coordinates(&self) -> &[f64] {
+        &self.node_x
+    }
+
+    /// Material coordinate of the point at `xi` in [0, 1] of element k:
+    /// `x_k + xi l_k`, written `(k + xi) l` on a uniform mesh (the same
+    /// number up to round-off; that form keeps the numbers of earlier
+    /// versions).
+    pub fn material_coordinate(&self, element: usize, xi: f64) -> f64 {
+        let l = self.element_length(element);
+        if self.cable.grading.is_uniform() {
+            (element as f64 + xi) * l
+        } else {
+            self.node_x[element] + xi * l
+        }
     }
 
     /// Position r of node j in state e.

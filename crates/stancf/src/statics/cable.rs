@@ -74,7 +74,7 @@ impl CableStatics {
         let mut w = vec![0.0; self.layout.size()];
         for g in 0..self.model.dofs() {
             if let Some(u) = self.layout.unknown_at(0, g) {
-                w[u] = self.model.coordinate_length_scale(g % dpn) / len;
+                w[u] = self.model.coordinate_length_scale(g / dpn, g % dpn) / len;
             }
         }
         w
@@ -117,7 +117,7 @@ impl CableStatics {
             *w = 0.0;
         }
         for g in 0..self.model.dofs() {
-            let s = self.model.coordinate_length_scale(g % dpn) / len;
+            let s = self.model.coordinate_length_scale(g / dpn, g % dpn) / len;
             if let Some(r) = self.layout.row_at(0, g) {
                 weights[r] = s / diagonal(r).abs().max(floor);
             }

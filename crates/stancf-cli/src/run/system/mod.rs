@@ -371,7 +371,7 @@ fn write_summary(
         .iter()
         .enumerate()
         .map(|(i, l)| {
-            json!({
+            let mut line = json!({
                 "id": l.id,
                 "type": sc.line_types[l.line_type].name,
                 "length": json_num(l.length),
@@ -380,7 +380,11 @@ fn write_summary(
                 "bending_stiffness": json_num(sc.bending_stiffness(i)),
                 "max_tension_a": json_num(outcome.max_tension[i][0]),
                 "max_tension_b": json_num(outcome.max_tension[i][1]),
-            })
+            });
+            if let Some(g) = super::summary::grading_json(l.grading) {
+                line["grading"] = g;
+            }
+            line
         })
         .collect();
     let points: Vec<Value> = sc
