@@ -90,8 +90,19 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     for p in &sc.points {
         let kind = match p.kind {
             PointType::Fixed => "fixed".to_string(),
-            PointType::Coupled if p.motion.period > 0.0 => "coupled, moving".to_string(),
-            PointType::Coupled => "coupled, at rest".to_string(),
+            PointType::Coupled => match (&p.motion_file, p.motion.table()) {
+                (Some(file), Some(table)) => {
+                    let (first, last) = table.span();
+                    format!(
+                        "coupled, moving along the table {file} ({} rows, t = {} to {} s)",
+                        table.len(),
+                        Sig(first),
+                        Sig(last)
+                    )
+                }
+                _ if p.motion.moves() => "coupled, moving".to_string(),
+                _ => "coupled, at rest".to_string(),
+            },
             PointType::Free => format!("free, mass {} kg", Sig(p.mass)),
         };
         line(

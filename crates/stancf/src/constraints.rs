@@ -21,9 +21,11 @@
 
 use crate::error::ModelError;
 use crate::model::{coordinate, ElementType, SLOT_R};
+pub use crate::motion::{CoupledMotion, MotionTable};
+use std::sync::Arc;
 
 /// What a constraint fixes (docs/method.md §6.1).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ConstraintKind {
     /// r and r_x fixed; r_xx too when `fix_curvature` (SAC-3 only; the
     /// paper's Table 3 "with r_xx constraint" row, wrong for a bent
@@ -40,10 +42,11 @@ pub enum ConstraintKind {
         phase: f64,
     },
     /// r held at a point of a system: fixed (an anchor) or moving with it
-    /// (a coupled point, a fairlead), r(t) = position + oscillation(t).
+    /// (a coupled point, a fairlead) along `motion` from `position`
+    /// ((M30) or (M34)).
     Attached {
         position: [f64; 3],
-        oscillation: Oscillation,
+        motion: CoupledMotion,
     },
 }
 
@@ -75,7 +78,7 @@ impl Oscillation {
     /// The motion of component k of a point at `position` moving so.
     pub fn coordinate_motion(&self, position: &[f64; 3], k: usize) -> CoordinateMotion {
         let moving = self.period > 0.0 && self.amplitude.iter().any(|&a| a != 0.0);
-        CoordinateMotion {
+        CoordinateMotion::Harmonic(HarmonicMotion {
             base: position[k],
             rate: 0.0,
             amplitude: if moving { self.amplitude[k] } else { 0.0 },
@@ -86,7 +89,7 @@ impl Oscillation {
             },
             phase: self.phase,
             ramp: self.ramp,
-        }
+        })
     }
 }
 
@@ -106,7 +109,7 @@ pub fn ramp_factor(t: f64, ramp: f64) -> (f64, f64) {
 }
 
 /// A constraint on one node.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Constraint {
     pub node: usize,
     pub kind: ConstraintKind,
@@ -124,11 +127,23 @@ pub enum ConstraintMethod {
     Elimination,
 }
 
-/// The prescribed history of one coordinate,
+/// The prescribed history of one coordinate.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CoordinateMotion {
+    /// c(t) = base + rate t + f(t) amplitude sin(omega t + phase).
+    Harmonic(HarmonicMotion),
+    /// Component `component` (0 = x, 1 = y, 2 = z) of a tabulated motion
+    /// (M34).
+    Table {
+        table: Arc<MotionTable>,
+        component: usize,
+    },
+}
+
 /// c(t) = base + rate t + f(t) amplitude sin(omega t + phase), f the ramp
 /// of [`ramp_factor`] (1 when `ramp` is 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CoordinateMotion {
+pub struct HarmonicMotion {
     pub base: f64,
     pub rate: f64,
     pub amplitude: f64,
@@ -140,16 +155,52 @@ pub struct CoordinateMotion {
 impl CoordinateMotion {
     /// A coordinate held at `value`.
     pub fn fixed(value: f64) -> Self {
-        CoordinateMotion {
+        CoordinateMotion::Harmonic(HarmonicMotion {
             base: value,
             rate: 0.0,
             amplitude: 0.0,
             omega: 0.0,
             phase: 0.0,
             ramp: 0.0,
+        })
+    }
+
+    pub fn value(&self, t: f64) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.value(t),
+            CoordinateMotion::Table { table, component } => table.component(*component, t).0,
         }
     }
 
+    pub fn rate_at(&self, t: f64) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.rate_at(t),
+            CoordinateMotion::Table { table, component } => table.component(*component, t).1,
+        }
+    }
+
+    /// Whether the value stays the same for all t.
+    pub fn is_still(&self) -> bool {
+        match self {
+            CoordinateMotion::Harmonic(h) => {
+                h.rate == 0.0 && (h.amplitude == 0.0 || h.omega == 0.0)
+            }
+            CoordinateMotion::Table { table, component } => table.is_constant(*component),
+        }
+    }
+
+    /// The value the motion is referred to: a harmonic's base (a static
+    /// solve moves a support from it to its value at t = 0), a table's
+    /// value at t = 0.
+    pub fn base(&self) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.base,
+            CoordinateMotion::Table { .. } => self.value(0.0),
+        }
+    }
+}
+
+impl HarmonicMotion {
     pub fn value(&self, t: f64) -> f64 {
         let wave = self.amplitude * (self.omega * t + self.phase).sin();
         if self.ramp > 0.0 {
@@ -176,9 +227,14 @@ impl CoordinateMotion {
 fn attached_motions(
     key: &str,
     position: [f64; 3],
-    o: &Oscillation,
+    motion: &CoupledMotion,
 ) -> Result<Vec<(usize, CoordinateMotion)>, ModelError> {
     let finite = |v: &[f64; 3]| v.iter().all(|x| x.is_finite());
+    let o = match motion {
+        CoupledMotion::Oscillation(o) => o,
+        // A table is checked when built (MotionTable::new).
+        CoupledMotion::Table(_) => &Oscillation::NONE,
+    };
     if !finite(&position) || !finite(&o.amplitude) {
         return Err(ModelError::invalid(
             key,
@@ -204,7 +260,7 @@ fn attached_motions(
         ));
     }
     Ok((0..3)
-        .map(|d| (d, o.coordinate_motion(&position, d)))
+        .map(|d| (d, motion.coordinate_motion(&position, d)))
         .collect())
 }
 
@@ -251,7 +307,7 @@ impl Constraints {
                 ));
             }
             let o = coordinate(dpn, c.node, SLOT_R, 0);
-            let coords: Vec<(usize, CoordinateMotion)> = match c.kind {
+            let coords: Vec<(usize, CoordinateMotion)> = match c.kind.clone() {
                 ConstraintKind::Clamped { fix_curvature } => {
                     if fix_curvature && element != ElementType::Sac3 {
                         return Err(ModelError::invalid(
@@ -297,22 +353,21 @@ impl Constraints {
                         .map(|d| {
                             (
                                 d,
-                                CoordinateMotion {
+                                CoordinateMotion::Harmonic(HarmonicMotion {
                                     base: reference[o + d],
                                     rate: velocity[d],
                                     amplitude: amplitude[d],
                                     omega: 2.0 * std::f64::consts::PI * frequency,
                                     phase,
                                     ramp: 0.0,
-                                },
+                                }),
                             )
                         })
                         .collect()
                 }
-                ConstraintKind::Attached {
-                    position,
-                    oscillation,
-                } => attached_motions(&key, position, &oscillation)?,
+                ConstraintKind::Attached { position, motion } => {
+                    attached_motions(&key, position, &motion)?
+                }
             };
             for (d, m) in coords {
                 if let Some(other) = owner[o + d] {
@@ -374,10 +429,7 @@ impl Constraints {
 
     /// True if some constraint moves (prescribed motion does work).
     pub fn moves(&self) -> bool {
-        self.motion
-            .iter()
-            .flatten()
-            .any(|m| m.rate != 0.0 || (m.amplitude != 0.0 && m.omega != 0.0))
+        self.motion.iter().flatten().any(|m| !m.is_still())
     }
 
     /// Whether the constraints remove the rigid motions of a static

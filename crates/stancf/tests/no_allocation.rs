@@ -126,18 +126,29 @@ fn stepping_a_cable_allocates_nothing() {
 /// free point carrying a mass: after the first step, stepping the system
 /// (the bordered factorization, the point rows, the end forces)
 /// allocates nothing, with either constraint route and all three
-/// solvers.
+/// solvers, and with the coupled point moved by an oscillation or by a
+/// table (the spline evaluated at every time node).
 fn stepping_a_system_with_a_free_point_allocates_nothing() {
-    use rope_systems::{settings, three_to_a_point};
+    use rope_systems::{settings, three_to_a_point, three_to_a_point_on_a_table};
     use stancf::system::{straight_states, SystemSimulation};
     use stancf::SolverMethod;
-    for (method, solver) in [
-        (ConstraintMethod::Multiplier, SolverMethod::Newton),
-        (ConstraintMethod::Elimination, SolverMethod::Newton),
-        (ConstraintMethod::Multiplier, SolverMethod::Broyden),
-        (ConstraintMethod::Elimination, SolverMethod::ModifiedNewton),
+    for (method, solver, table) in [
+        (ConstraintMethod::Multiplier, SolverMethod::Newton, false),
+        (ConstraintMethod::Elimination, SolverMethod::Newton, false),
+        (ConstraintMethod::Multiplier, SolverMethod::Broyden, false),
+        (
+            ConstraintMethod::Elimination,
+            SolverMethod::ModifiedNewton,
+            false,
+        ),
+        (ConstraintMethod::Multiplier, SolverMethod::Newton, true),
+        (ConstraintMethod::Elimination, SolverMethod::Newton, true),
     ] {
-        let system = three_to_a_point(10);
+        let system = if table {
+            three_to_a_point_on_a_table(10)
+        } else {
+            three_to_a_point(10)
+        };
         let start = straight_states(&system);
         let mut settings = StepSettings {
             constraint_method: method,
@@ -158,7 +169,7 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
         assert_eq!(
             after - before,
             0,
-            "{method:?} {solver:?}: {} allocations in 50 steps",
+            "{method:?} {solver:?} (table: {table}): {} allocations in 50 steps",
             after - before
         );
     }

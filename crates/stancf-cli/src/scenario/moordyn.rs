@@ -21,7 +21,7 @@ use super::ScenarioError;
 use crate::moordyn::{
     self, Attachment, Channel, Deck, LineQuantity, PointQuantity, SupportedOption,
 };
-use stancf::constraints::Oscillation;
+use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
 
@@ -91,7 +91,8 @@ pub fn deck_scenario(
             } else {
                 0.0
             },
-            motion: Oscillation::NONE,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
         })
         .collect();
     let lines = deck

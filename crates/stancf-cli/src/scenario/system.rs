@@ -5,9 +5,10 @@
 
 use super::analysis::{self, Others};
 use super::context::Ctx;
-use super::raw::{RawAnalysis, RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
+use super::motions::motions;
+use super::raw::{RawAnalysis, RawLine, RawLineType, RawPoint, RawScenario};
 use super::{Analysis, ScenarioError};
-use stancf::constraints::Oscillation;
+use stancf::motion::CoupledMotion;
 use stancf::{ElementType, Measures};
 use std::path::Path;
 
@@ -61,7 +62,9 @@ pub struct SystemPoint {
     /// Displaced volume (m^3): buoyancy in water.
     pub volume: f64,
     /// The motion of a coupled point (none: it stays put).
-    pub motion: Oscillation,
+    pub motion: CoupledMotion,
+    /// The file a tabulated motion was read from, as the scenario names it.
+    pub motion_file: Option<String>,
 }
 
 /// Still water around the system (from a MoorDyn deck): z up, the free
@@ -165,9 +168,10 @@ pub(super) fn system_scenario(
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
         let mut sc = super::moordyn::deck_file_scenario(&deck_path, title)?;
-        motions(ctx, &raw.motions, &mut sc.points)?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+        let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
+        motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
         sc.analysis = analysis;
         sc.measures = measures;
         sc.initial = initial;
@@ -186,9 +190,10 @@ pub(super) fn system_scenario(
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut points = points(ctx, &raw.points)?;
     let lines = lines(ctx, &raw.lines, &line_types, &points)?;
-    motions(ctx, &raw.motions, &mut points)?;
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
+    let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
+    motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     if analysis.kind == super::AnalysisKind::Dynamic {
         if let Some(i) = line_types.iter().position(|t| t.ba != 0.0) {
             return Err(ctx.err(
@@ -339,7 +344,8 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
             },
             force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
             volume: 0.0,
-            motion: Oscillation::NONE,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
         });
     }
     Ok(out)
@@ -429,46 +435,4 @@ fn lines(
         }
     }
     Ok(out)
-}
-
-/// `[[motions]]`: `point` (a coupled point's id, one motion each),
-/// `amplitude` (m, required), `period` (s, > 0, required), `phase`
-/// (degrees, default 0), `ramp` (s, >= 0, default 0):
-/// r(t) = r0 + f(t) amplitude sin(2 pi t / period + phase) (M30).
-fn motions(ctx: &Ctx, raw: &[RawMotion], points: &mut [SystemPoint]) -> Result<(), ScenarioError> {
-    let mut moved = vec![false; points.len()];
-    for (i, r) in raw.iter().enumerate() {
-        let key = |k: &str| format!("motions[{i}].{k}");
-        let id = ctx.required(&key("point"), r.point)?;
-        let Some(p) = points.iter().position(|p| p.id == id) else {
-            return Err(ctx.err(&key("point"), format!("point {id} is not defined")));
-        };
-        if points[p].kind != PointType::Coupled {
-            return Err(ctx.err(&key("point"), format!("point {id} is not a coupled point")));
-        }
-        if moved[p] {
-            return Err(ctx.err(&key("point"), format!("point {id} already has a motion")));
-        }
-        moved[p] = true;
-        if r.file.is_some() {
-            return Err(ctx.err(
-                &key("file"),
-                "motions tabulated in a file are not available in this version; give \
-                 amplitude, period, phase and ramp",
-            ));
-        }
-        let amplitude = ctx.vector(
-            &key("amplitude"),
-            &ctx.required(&key("amplitude"), r.amplitude.clone())?,
-        )?;
-        points[p].motion = Oscillation {
-            amplitude,
-            period: ctx.required_positive(&key("period"), r.period)?,
-            phase: ctx
-                .finite(&key("phase"), r.phase.unwrap_or(0.0))?
-                .to_radians(),
-            ramp: ctx.non_negative(&key("ramp"), r.ramp.unwrap_or(0.0))?,
-        };
-    }
-    Ok(())
 }

@@ -114,7 +114,7 @@ impl SystemScenario {
 fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: [f64; 3]) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
-        PointType::Coupled => Point::coupled(p.position, p.motion),
+        PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
         PointType::Free => {
             let buoyancy = water.map_or(0.0, |w| w.density * p.volume);
             Point {

@@ -77,8 +77,7 @@ impl Model {
                 return None;
             }
             if let Some(m) = &self.constraints.motion[g] {
-                let still = m.rate == 0.0 && (m.amplitude == 0.0 || m.omega == 0.0);
-                if !still || m.value(0.0) != value {
+                if !m.is_still() || m.value(0.0) != value {
                     return None;
                 }
             }

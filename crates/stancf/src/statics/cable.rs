@@ -87,7 +87,7 @@ impl CableStatics {
             .motion
             .iter()
             .flatten()
-            .any(|m| m.value(0.0) != m.base)
+            .any(|m| m.value(0.0) != m.base())
     }
 
     /// The rows (and Jacobian entries, added to `jacobian`) at x.
@@ -209,7 +209,7 @@ impl StaticEquations for SingleCable {
         start.load_factor = loads;
         for (g, m) in self.cable.model.constraints.motion.iter().enumerate() {
             if let Some(m) = m {
-                start.fixed_e[g] = m.base + supports * (m.value(0.0) - m.base);
+                start.fixed_e[g] = m.base() + supports * (m.value(0.0) - m.base());
             }
         }
     }
