@@ -77,13 +77,15 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements, ends {} and {}; {bending}",
+                "type {}, {} m, {} {} elements, ends {}{} and {}{}; {bending}",
                 t.name,
                 Sig(l.length),
                 l.elements,
                 l.element_type.name(),
                 end_name(sc, l.ends[0]),
-                end_name(sc, l.ends[1])
+                clamp_words(l.clamps[0]),
+                end_name(sc, l.ends[1]),
+                clamp_words(l.clamps[1])
             ),
         );
     }
@@ -168,4 +170,18 @@ fn end_name(sc: &SystemScenario, end: Option<usize>) -> String {
         Some(p) => format!("point {}", sc.points[p].id),
         None => "loose".into(),
     }
+}
+
+/// ", clamped along [dx, dy, dz]" (the unit direction) for a clamped end.
+fn clamp_words(clamp: Option<[f64; 3]>) -> String {
+    let Some(d) = clamp else {
+        return String::new();
+    };
+    let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    format!(
+        " (clamped along [{}, {}, {}])",
+        Sig(d[0] / n),
+        Sig(d[1] / n),
+        Sig(d[2] / n)
+    )
 }

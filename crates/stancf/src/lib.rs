@@ -11,7 +11,7 @@
 //!
 //! The method, equation by equation with the decisions taken, is
 //! docs/method.md in the repository; the modules' doc comments cite its
-//! sections (§) and formulas (M1)-(M35). The modules follow the method
+//! sections (§) and formulas (M1)-(M37). The modules follow the method
 //! from the bottom up:
 //!
 //! | module | what it implements |

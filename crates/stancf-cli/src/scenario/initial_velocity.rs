@@ -90,6 +90,8 @@ pub(super) fn check_initial_velocities(
             let (name, rate) = match &c.kind {
                 stancf::ConstraintKind::Clamped { .. } => ("clamped", [0.0; 3]),
                 stancf::ConstraintKind::Pinned => ("pinned", [0.0; 3]),
+                // Holds r_x's direction, not r.
+                stancf::ConstraintKind::Parallel { .. } => continue,
                 stancf::ConstraintKind::Prescribed {
                     velocity,
                     amplitude,

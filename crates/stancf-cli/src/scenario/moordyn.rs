@@ -105,6 +105,8 @@ pub fn deck_scenario(
             elements: l.segments,
             element_type: ElementType::Sac2,
             ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
+            // MoorDyn's lines are pinned at their points.
+            clamps: [None; 2],
         })
         .collect();
     let mut channels = Vec::with_capacity(deck.outputs.len());

@@ -96,6 +96,9 @@ pub struct SystemLine {
     pub element_type: ElementType,
     /// The points (indices) ends A and B attach to; None: loose.
     pub ends: [Option<usize>; 2],
+    /// Ends A and B clamped in a direction (as given; the library
+    /// normalizes it): r_x held parallel to it (docs/method.md §6.10).
+    pub clamps: [Option<[f64; 3]>; 2],
 }
 
 /// Where a dynamic run of a system starts.
@@ -192,6 +195,7 @@ pub(super) fn system_scenario(
     let lines = lines(ctx, &raw.lines, &line_types, &points)?;
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
+    check_clamp_route(ctx, &lines, &analysis)?;
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     if analysis.kind == super::AnalysisKind::Dynamic {
@@ -351,6 +355,73 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
     Ok(out)
 }
 
+/// `[[lines]]` `clamp_a` / `clamp_b` of line i: a direction (a vector,
+/// not zero) for an end attached to a fixed or coupled point.
+fn clamp(
+    ctx: &Ctx,
+    i: usize,
+    name: &str,
+    raw: Option<&[f64]>,
+    end: Option<usize>,
+    points: &[SystemPoint],
+) -> Result<Option<[f64; 3]>, ScenarioError> {
+    let Some(raw) = raw else { return Ok(None) };
+    let key = format!("lines[{i}].{name}");
+    let d = ctx.vector(&key, raw)?;
+    if d == [0.0; 3] {
+        return Err(ctx.err(&key, "the clamp's direction must not be the zero vector"));
+    }
+    let end_name = &name[name.len() - 1..].to_uppercase();
+    match end.map(|p| &points[p]) {
+        None => Err(ctx.err(
+            &key,
+            format!("end {end_name} is loose: a clamp needs a fixed or coupled point"),
+        )),
+        Some(p) if p.kind == PointType::Free => Err(ctx.err(
+            &key,
+            format!(
+                "end {end_name} is at free point {}, which has no rotation to clamp to: \
+                 a clamp needs a fixed or coupled point",
+                p.id
+            ),
+        )),
+        Some(_) => Ok(Some(d)),
+    }
+}
+
+/// A clamp in a direction is enforced by multipliers in the P2 step or
+/// statics only (docs/method.md §6.10): other choices are refused
+/// naming the clamp.
+fn check_clamp_route(
+    ctx: &Ctx,
+    lines: &[SystemLine],
+    analysis: &Analysis,
+) -> Result<(), ScenarioError> {
+    let Some((i, name)) = lines.iter().enumerate().find_map(|(i, l)| {
+        let k = l.clamps.iter().position(Option::is_some)?;
+        Some((i, ["clamp_a", "clamp_b"][k]))
+    }) else {
+        return Ok(());
+    };
+    let key = format!("lines[{i}].{name}");
+    if analysis.constraint_method == stancf::ConstraintMethod::Elimination {
+        return Err(ctx.err(
+            &key,
+            "a clamp in a direction holds a combination of coordinates, which only the \
+             multiplier route enforces: remove analysis.constraint_method = \"elimination\"",
+        ));
+    }
+    let dynamic = analysis.kind == super::AnalysisKind::Dynamic;
+    if dynamic && analysis.time_scheme == stancf::TimeScheme::Galerkin {
+        return Err(ctx.err(
+            &key,
+            "a clamp in a direction is not available with the Galerkin step in this version; \
+             use analysis.time_scheme = \"P2\"",
+        ));
+    }
+    Ok(())
+}
+
 /// `[[lines]]`: `id` (required, unique), `type` (a line type's name,
 /// required), `length` (> 0, required), `elements` (1..=1000000,
 /// required), `element` ("SAC-2", the default, or "SAC-3"), `a` and `b`
@@ -416,6 +487,10 @@ fn lines(
         if ends[0].is_some() && ends[0] == ends[1] {
             return Err(ctx.err(&key("b"), "both ends are attached to the same point"));
         }
+        let clamps = [
+            clamp(ctx, i, "clamp_a", r.clamp_a.as_deref(), ends[0], points)?,
+            clamp(ctx, i, "clamp_b", r.clamp_b.as_deref(), ends[1], points)?,
+        ];
         out.push(SystemLine {
             id,
             line_type,
@@ -423,6 +498,7 @@ fn lines(
             elements,
             element_type,
             ends,
+            clamps,
         });
     }
     for (p, point) in points.iter().enumerate() {

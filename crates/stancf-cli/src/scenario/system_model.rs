@@ -57,7 +57,15 @@ impl SystemScenario {
                     .line_model(i, &points)
                     .map_err(|e| e.under(&format!("lines[{i}]")))?;
                 let ends = l.ends.map(|e| e.map_or(End::Loose, End::Point));
-                Ok(Line { model, ends })
+                let mut line = Line { model, ends };
+                for (end, d) in l.clamps.iter().enumerate() {
+                    if let Some(d) = d {
+                        line = line
+                            .clamped(end, *d)
+                            .map_err(|e| e.under(&format!("lines[{i}]")))?;
+                    }
+                }
+                Ok(line)
             })
             .collect::<Result<Vec<_>, ModelError>>()?;
         System::new(lines, points, self.gravity)

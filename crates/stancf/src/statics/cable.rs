@@ -9,7 +9,7 @@ use crate::band::BandMatrix;
 use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
-use crate::model::{coordinate, Model, State, SLOT_R};
+use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X};
 use crate::quadrature::GaussRule;
 
 /// One cable's static equations and what a converged increment gives.
@@ -123,6 +123,15 @@ impl CableStatics {
             }
             if let Some(r) = self.layout.constraint_row_at(0, g) {
                 weights[r] = s;
+            }
+        }
+        // A direction hold's equations n . r_x = 0, like r_x's.
+        let s = self.model.coordinate_length_scale(SLOT_R_X * 3) / len;
+        for h in 0..self.model.constraints.directions.len() {
+            for k in 0..2 {
+                if let Some(r) = self.layout.hold_row(h, 0, k) {
+                    weights[r] = s;
+                }
             }
         }
     }

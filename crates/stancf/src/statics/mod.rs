@@ -134,6 +134,9 @@ pub struct StaticSolver {
 impl StaticSolver {
     pub fn new(model: Model, settings: StaticSettings) -> Result<Self, ModelError> {
         settings.validate()?;
+        model
+            .constraints
+            .check_direction_route(settings.constraint_method, false)?;
         if !model.constraints.remove_rigid_motions() {
             return Err(ModelError::invalid(
                 "constraints",

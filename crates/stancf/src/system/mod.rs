@@ -125,6 +125,26 @@ pub struct Line {
     pub ends: [End; 2],
 }
 
+impl Line {
+    /// The line with its end (0 = A, 1 = B) clamped in `direction`: the
+    /// end's r_x held parallel to it (docs/method.md §6.10; a riser
+    /// hang-off). The end must be attached to a fixed or coupled point
+    /// (checked by [`System::new`]); the direction need not be a unit
+    /// vector.
+    pub fn clamped(self, end: usize, direction: [f64; 3]) -> Result<Self, ModelError> {
+        let node = if end == 0 { 0 } else { self.model.nodes() - 1 };
+        let mut list = self.model.constraints.list.clone();
+        list.push(Constraint {
+            node,
+            kind: ConstraintKind::Parallel { direction },
+        });
+        Ok(Line {
+            model: self.model.with_constraints(list)?,
+            ends: self.ends,
+        })
+    }
+}
+
 /// A system of lines and points, validated; the lines' models carry the
 /// constraints of their ends at fixed and coupled points.
 #[derive(Clone, Debug)]
@@ -190,6 +210,7 @@ impl System {
                     },
                 });
             }
+            check_clamps(li, &line, &points)?;
             if line.ends[0] == line.ends[1] && line.ends[0] != End::Loose {
                 return Err(ModelError::invalid(
                     format!("lines[{li}]"),
@@ -294,6 +315,41 @@ impl System {
     pub fn has_free_points(&self) -> bool {
         self.points.iter().any(Point::is_free)
     }
+}
+
+/// A line end clamped in a direction must be attached to a fixed or
+/// coupled point (whose motion translates, so the direction stays fixed
+/// in space); a clamp elsewhere is refused.
+fn check_clamps(li: usize, line: &Line, points: &[Point]) -> Result<(), ModelError> {
+    let last = line.model.nodes() - 1;
+    for h in &line.model.constraints.directions {
+        let end = match h.node {
+            0 => 0,
+            n if n == last => 1,
+            n => {
+                return Err(ModelError::invalid(
+                    format!("lines[{li}]"),
+                    format!("node {n} is clamped in a direction; only a line end may be"),
+                ))
+            }
+        };
+        let name = ["A", "B"][end];
+        let held = match line.ends[end] {
+            End::Point(p) => !points[p].is_free(),
+            End::Loose => false,
+        };
+        if !held {
+            return Err(ModelError::invalid(
+                format!("lines[{li}]"),
+                format!(
+                    "end {name} is clamped in a direction but not attached to a fixed or \
+                     coupled point (a free point has no rotation to clamp to, a loose end \
+                     nothing)"
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The size of a system (m): the largest of its lines' unstretched

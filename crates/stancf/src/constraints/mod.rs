@@ -18,10 +18,17 @@
 //! constraint equation per fixed value, so no P2 row becomes singular) and
 //! direct elimination of the fixed coordinates and their rows. Both give
 //! the same motion to round-off.
+//!
+//! One constraint holds a combination of coordinates instead: `parallel`
+//! keeps r_x along a direction (a line end clamped in a direction,
+//! §6.10, [`DirectionHold`]), enforced by multipliers only.
+
+mod direction;
 
 use crate::error::ModelError;
 use crate::model::{coordinate, ElementType, SLOT_R};
 pub use crate::motion::{CoupledMotion, MotionTable};
+pub use direction::DirectionHold;
 use std::sync::Arc;
 
 /// What a constraint fixes (docs/method.md §6.1).
@@ -41,6 +48,13 @@ pub enum ConstraintKind {
         frequency: f64,
         phase: f64,
     },
+    /// r_x held parallel to `direction` (normalized here; a clamp in a
+    /// direction, a riser hang-off, docs/method.md §6.10): the two linear
+    /// equations n_1 . r_x = n_2 . r_x = 0, n_1, n_2 orthonormal to the
+    /// direction, so the end may still stretch along it. r is not held (a
+    /// clamp pairs it with `Pinned` or `Attached`). Multiplier route and
+    /// P2 or static only.
+    Parallel { direction: [f64; 3] },
     /// r held at a point of a system: fixed (an anchor) or moving with it
     /// (a coupled point, a fairlead) along `motion` from `position`
     /// ((M30) or (M34)).
@@ -264,6 +278,13 @@ fn attached_motions(
         .collect())
 }
 
+fn conflict(key: &str, other: usize, what: &str, node: usize) -> ModelError {
+    ModelError::invalid(
+        key,
+        format!("conflicts with constraints[{other}]: both constrain {what} of node {node}"),
+    )
+}
+
 /// All constraints of a model, resolved to coordinates.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Constraints {
@@ -274,6 +295,9 @@ pub struct Constraints {
     /// Nodes whose position r is constrained (their reactions are
     /// reported), ascending.
     pub position_nodes: Vec<usize>,
+    /// r_x held parallel to a direction ([`ConstraintKind::Parallel`]),
+    /// in the order given.
+    pub directions: Vec<DirectionHold>,
     /// Per global coordinate: held because the motion stays in a plane
     /// (see [`crate::Model::reduce_to_plane`]), not by a constraint. Such a
     /// coordinate has a fixed `motion` and is always eliminated, never
@@ -294,6 +318,7 @@ impl Constraints {
         let mut motion: Vec<Option<CoordinateMotion>> = vec![None; nodes * dpn];
         let mut owner: Vec<Option<usize>> = vec![None; nodes * dpn];
         let mut position_nodes = Vec::new();
+        let mut directions = Vec::new();
         for (ci, c) in list.iter().enumerate() {
             let key = format!("constraints[{ci}]");
             if c.node >= nodes {
@@ -368,18 +393,22 @@ impl Constraints {
                 ConstraintKind::Attached { position, motion } => {
                     attached_motions(&key, position, &motion)?
                 }
+                ConstraintKind::Parallel { direction } => {
+                    let hold = DirectionHold::new(&key, c.node, direction)?;
+                    for d in 3..6 {
+                        if let Some(other) = owner[o + d] {
+                            return Err(conflict(&key, other, "r_x", c.node));
+                        }
+                        owner[o + d] = Some(ci);
+                    }
+                    directions.push(hold);
+                    continue;
+                }
             };
             for (d, m) in coords {
                 if let Some(other) = owner[o + d] {
                     let names = ["r", "r_x", "r_xx"];
-                    return Err(ModelError::invalid(
-                        key,
-                        format!(
-                            "conflicts with constraints[{other}]: both constrain {} of node {}",
-                            names[d / 3],
-                            c.node
-                        ),
-                    ));
+                    return Err(conflict(&key, other, names[d / 3], c.node));
                 }
                 owner[o + d] = Some(ci);
                 motion[o + d] = Some(m);
@@ -391,8 +420,46 @@ impl Constraints {
             list,
             motion,
             position_nodes,
+            directions,
             inactive: Vec::new(),
         })
+    }
+
+    /// Refuses what the direction holds cannot be enforced with: the
+    /// elimination route (a combination of coordinates, not a coordinate,
+    /// is held) and the Galerkin step (its end rates v_b = M^-1 p_b would
+    /// need the hold's impulse at t_b). Keys `analysis.constraint_method`
+    /// and `analysis.time_scheme` in errors.
+    pub fn check_direction_route(
+        &self,
+        method: ConstraintMethod,
+        galerkin: bool,
+    ) -> Result<(), ModelError> {
+        let Some(h) = self.directions.first() else {
+            return Ok(());
+        };
+        if method == ConstraintMethod::Elimination {
+            return Err(ModelError::invalid(
+                "analysis.constraint_method",
+                format!(
+                    "node {} is clamped in a direction (r_x parallel to {:?}), which holds a \
+                     combination of coordinates: only the multiplier route enforces it; use \
+                     constraint_method = \"multiplier\"",
+                    h.node, h.direction
+                ),
+            ));
+        }
+        if galerkin {
+            return Err(ModelError::invalid(
+                "analysis.time_scheme",
+                format!(
+                    "node {} is clamped in a direction: the Galerkin step does not take such a \
+                     clamp in this version; use the P2 step",
+                    h.node
+                ),
+            ));
+        }
+        Ok(())
     }
 
     pub fn is_empty(&self) -> bool {
@@ -436,10 +503,12 @@ impl Constraints {
     /// problem: some node's position must be held (translations), and a
     /// clamp or a second held position must stop the rotations.
     pub fn remove_rigid_motions(&self) -> bool {
-        let clamped = self
-            .list
-            .iter()
-            .any(|c| matches!(c.kind, ConstraintKind::Clamped { .. }));
+        let clamped = self.list.iter().any(|c| {
+            matches!(
+                c.kind,
+                ConstraintKind::Clamped { .. } | ConstraintKind::Parallel { .. }
+            )
+        });
         let mut nodes = self.position_nodes.clone();
         nodes.dedup();
         !nodes.is_empty() && (clamped || nodes.len() >= 2)
