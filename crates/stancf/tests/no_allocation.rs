@@ -46,13 +46,44 @@ fn stepping_a_cable_or_a_system_allocates_nothing() {
 
 fn stepping_a_cable_allocates_nothing() {
     let material = Material::chen2023_pvc();
-    for (kind, layers, constrained, method) in [
-        (ElementType::Sac2, 1, false, ConstraintMethod::Multiplier),
-        (ElementType::Sac3, 2, false, ConstraintMethod::Multiplier),
-        (ElementType::Sac2, 1, true, ConstraintMethod::Multiplier),
-        (ElementType::Sac3, 2, true, ConstraintMethod::Elimination),
+    for (kind, layers, constrained, method, held) in [
+        (
+            ElementType::Sac2,
+            1,
+            false,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            false,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac2,
+            1,
+            true,
+            ConstraintMethod::Multiplier,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            true,
+            ConstraintMethod::Elimination,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            true,
+            ConstraintMethod::Multiplier,
+            true,
+        ),
     ] {
-        let constraints = if constrained {
+        let mut constraints = if constrained {
             vec![
                 Constraint {
                     node: 0,
@@ -73,6 +104,15 @@ fn stepping_a_cable_allocates_nothing() {
         } else {
             vec![]
         };
+        if held {
+            // r_x of node 6 held along an oblique direction (§6.10).
+            constraints.push(Constraint {
+                node: 6,
+                kind: ConstraintKind::Parallel {
+                    direction: [1.0, 0.2, -0.1],
+                },
+            });
+        }
         let model = Model::new(
             Cable::straight(4.0, 8, kind),
             material,

@@ -6,7 +6,7 @@
 use super::newton::StaticEquations;
 use crate::assembly::{AssemblyScratch, Scheme, SlabLayout, StepProblem, StepStart};
 use crate::band::BandMatrix;
-use crate::constraints::ConstraintMethod;
+use crate::constraints::{ConstraintMethod, DirectionHold};
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X};
@@ -23,6 +23,8 @@ pub(crate) struct CableStatics {
     pub state: State,
     /// Force each position constraint exerts on the cable.
     pub reactions: Vec<(usize, [f64; 3])>,
+    /// Moment each direction hold exerts on the cable (M37).
+    pub clamp_moments: Vec<(usize, [f64; 3])>,
 }
 
 impl CableStatics {
@@ -51,6 +53,12 @@ impl CableStatics {
             scratch,
             state,
             reactions,
+            clamp_moments: model
+                .constraints
+                .directions
+                .iter()
+                .map(|h| (h.node, [0.0; 3]))
+                .collect(),
             model,
         }
     }
@@ -157,6 +165,21 @@ impl CableStatics {
                     None => self.scratch.reaction_rows[g],
                 };
             }
+        }
+        // The hold's multipliers are its generalized reaction on r_x
+        // (statics: lambda is the force itself), M = r_x x Q (M37).
+        for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            let mut q = [0.0; 3];
+            for (k, n) in hold.normals.iter().enumerate() {
+                if let Some(m) = self.layout.hold_multiplier(h, 0, k) {
+                    for c in 0..3 {
+                        q[c] += x[m] * n[c];
+                    }
+                }
+            }
+            let o = coordinate(dpn, hold.node, SLOT_R_X, 0);
+            let r_x = [self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]];
+            self.clamp_moments[h].1 = DirectionHold::moment(r_x, q);
         }
     }
 }

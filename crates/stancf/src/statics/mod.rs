@@ -179,6 +179,13 @@ impl StaticSolver {
         &self.equations.cable.reactions
     }
 
+    /// The moment each direction hold (a clamp in a direction,
+    /// docs/method.md §6.10) exerts on the cable at equilibrium: (node,
+    /// M = r_x x Q), Q the hold's reaction on r_x (M37).
+    pub fn clamp_moments(&self) -> &[(usize, [f64; 3])] {
+        &self.equations.cable.clamp_moments
+    }
+
     /// Unknowns of the static system.
     pub fn unknowns(&self) -> usize {
         self.equations.cable.layout.size()
