@@ -77,14 +77,16 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements ({}), ends {} and {}; {bending}{}",
+                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}",
                 t.name,
                 Sig(l.length),
                 l.elements,
                 l.element_type.name(),
                 element_sizes(&system.lines()[i].model),
                 end_name(sc, l.ends[0]),
+                clamp_words(l.clamps[0]),
                 end_name(sc, l.ends[1]),
+                clamp_words(l.clamps[1]),
                 damping_note(sc, i)
             ),
         );
@@ -92,8 +94,19 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     for p in &sc.points {
         let kind = match p.kind {
             PointType::Fixed => "fixed".to_string(),
-            PointType::Coupled if p.motion.period > 0.0 => "coupled, moving".to_string(),
-            PointType::Coupled => "coupled, at rest".to_string(),
+            PointType::Coupled => match (&p.motion_file, p.motion.table()) {
+                (Some(file), Some(table)) => {
+                    let (first, last) = table.span();
+                    format!(
+                        "coupled, moving along the table {file} ({} rows, t = {} to {} s)",
+                        table.len(),
+                        Sig(first),
+                        Sig(last)
+                    )
+                }
+                _ if p.motion.moves() => "coupled, moving".to_string(),
+                _ => "coupled, at rest".to_string(),
+            },
             PointType::Free => format!("free, mass {} kg", Sig(p.mass)),
         };
         line(
@@ -205,4 +218,18 @@ fn end_name(sc: &SystemScenario, end: Option<usize>) -> String {
         Some(p) => format!("point {}", sc.points[p].id),
         None => "loose".into(),
     }
+}
+
+/// ", clamped along [dx, dy, dz]" (the unit direction) for a clamped end.
+fn clamp_words(clamp: Option<[f64; 3]>) -> String {
+    let Some(d) = clamp else {
+        return String::new();
+    };
+    let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    format!(
+        " (clamped along [{}, {}, {}])",
+        Sig(d[0] / n),
+        Sig(d[1] / n),
+        Sig(d[2] / n)
+    )
 }

@@ -11,7 +11,7 @@
 //!
 //! The method, equation by equation with the decisions taken, is
 //! docs/method.md in the repository; the modules' doc comments cite its
-//! sections (§) and formulas (M1)-(M38). The modules follow the method
+//! sections (§) and formulas (M1)-(M42). The modules follow the method
 //! from the bottom up:
 //!
 //! | module | what it implements |
@@ -28,6 +28,7 @@
 //! | [`integrator`] | the P2 step, runs with an energy watchdog |
 //! | [`observe`] | energies, momentum, stress |
 //! | [`stability`] | P2's stable step for the actual mesh |
+//! | [`motion`] | motions of coupled points: oscillations and interpolated tables |
 //! | [`system`] | lines joined at fixed, free and coupled points, and their step |
 //! | [`catenary`] | the closed-form elastic catenary of a line between two points (Irvine) |
 //!
@@ -45,6 +46,7 @@ pub mod integrator;
 pub mod linear;
 pub mod loads;
 pub mod model;
+pub mod motion;
 pub mod observe;
 pub mod quadrature;
 pub mod shape;

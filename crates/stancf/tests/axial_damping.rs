@@ -472,7 +472,7 @@ fn rod_peaks(ba: f64, elements: usize, steps_per_period: usize, scheme: TimeSche
             node: elements,
             kind: ConstraintKind::Attached {
                 position: b,
-                oscillation: stancf::constraints::Oscillation::NONE,
+                motion: stancf::motion::CoupledMotion::NONE,
             },
         },
     ])

@@ -72,7 +72,7 @@ fn simulate_perturbed(
     s.e[last] += perturbation;
     let (mass, _, _) = momentum(&model, &s);
     let motion: Vec<_> = (0..3)
-        .map(|c| model.constraints.motion[c].unwrap())
+        .map(|c| model.constraints.motion[c].clone().unwrap())
         .collect();
     let mut sim = Simulation::new(model, s, settings(dt, method, tol)).unwrap();
     let e0 = sim.energies();
@@ -193,7 +193,7 @@ fn prescribed_support_motion() {
         frequency: 2.0,
         phase: 0.3,
     };
-    let m = || pendulum(ElementType::Sac2, 4, shake);
+    let m = || pendulum(ElementType::Sac2, 4, shake.clone());
     let tol = 1e-12;
     let short_a = simulate(m(), 1e-4, 0.1, ConstraintMethod::Multiplier, tol);
     let short_b = simulate(m(), 1e-4, 0.1, ConstraintMethod::Elimination, tol);

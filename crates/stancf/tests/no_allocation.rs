@@ -60,12 +60,13 @@ fn stepping_a_cable_or_a_system_allocates_nothing() {
 }
 
 fn stepping_a_cable_allocates_nothing() {
-    for (kind, layers, constrained, method, damped) in [
+    for (kind, layers, constrained, method, held, damped) in [
         (
             ElementType::Sac2,
             1,
             false,
             ConstraintMethod::Multiplier,
+            false,
             false,
         ),
         (
@@ -74,12 +75,14 @@ fn stepping_a_cable_allocates_nothing() {
             false,
             ConstraintMethod::Multiplier,
             false,
+            false,
         ),
         (
             ElementType::Sac2,
             1,
             true,
             ConstraintMethod::Multiplier,
+            false,
             false,
         ),
         (
@@ -88,18 +91,28 @@ fn stepping_a_cable_allocates_nothing() {
             true,
             ConstraintMethod::Elimination,
             false,
+            false,
+        ),
+        (
+            ElementType::Sac3,
+            2,
+            true,
+            ConstraintMethod::Multiplier,
+            true,
+            false,
         ),
         (
             ElementType::Sac2,
             1,
             true,
             ConstraintMethod::Elimination,
+            false,
             true,
         ),
     ] {
         // The last case with axial damping (docs/method.md §2.10).
         let material = Material::chen2023_pvc().with_axial_damping(if damped { 1e-3 } else { 0.0 });
-        let constraints = if constrained {
+        let mut constraints = if constrained {
             vec![
                 Constraint {
                     node: 0,
@@ -120,6 +133,15 @@ fn stepping_a_cable_allocates_nothing() {
         } else {
             vec![]
         };
+        if held {
+            // r_x of node 6 held along an oblique direction (§6.10).
+            constraints.push(Constraint {
+                node: 6,
+                kind: ConstraintKind::Parallel {
+                    direction: [1.0, 0.2, -0.1],
+                },
+            });
+        }
         let model = Model::new(
             Cable::straight(4.0, 8, kind),
             material,
@@ -173,29 +195,64 @@ fn stepping_a_cable_allocates_nothing() {
 /// free point carrying a mass: after the first step, stepping the system
 /// (the bordered factorization, the point rows, the end forces)
 /// allocates nothing, with either constraint route, all three solvers
-/// and both time schemes (the Galerkin step's system mass solve too).
+/// and both time schemes (the Galerkin step's system mass solve too), and
+/// with the coupled point moved by an oscillation or by a table (the
+/// spline evaluated at every time node).
 fn stepping_a_system_with_a_free_point_allocates_nothing() {
-    use rope_systems::{settings, three_to_a_point};
+    use rope_systems::{settings, three_to_a_point, three_to_a_point_on_a_table};
     use stancf::system::{straight_states, SystemSimulation};
     use stancf::SolverMethod;
     use stancf::TimeScheme::{Galerkin, P2};
-    for (method, solver, scheme) in [
-        (ConstraintMethod::Multiplier, SolverMethod::Newton, P2),
-        (ConstraintMethod::Elimination, SolverMethod::Newton, P2),
-        (ConstraintMethod::Multiplier, SolverMethod::Broyden, P2),
+    for (method, solver, scheme, table) in [
+        (
+            ConstraintMethod::Multiplier,
+            SolverMethod::Newton,
+            P2,
+            false,
+        ),
+        (
+            ConstraintMethod::Elimination,
+            SolverMethod::Newton,
+            P2,
+            false,
+        ),
+        (
+            ConstraintMethod::Multiplier,
+            SolverMethod::Broyden,
+            P2,
+            false,
+        ),
         (
             ConstraintMethod::Elimination,
             SolverMethod::ModifiedNewton,
             P2,
+            false,
         ),
-        (ConstraintMethod::Multiplier, SolverMethod::Newton, Galerkin),
+        (
+            ConstraintMethod::Multiplier,
+            SolverMethod::Newton,
+            Galerkin,
+            false,
+        ),
         (
             ConstraintMethod::Elimination,
             SolverMethod::Broyden,
             Galerkin,
+            false,
+        ),
+        (ConstraintMethod::Multiplier, SolverMethod::Newton, P2, true),
+        (
+            ConstraintMethod::Elimination,
+            SolverMethod::Newton,
+            Galerkin,
+            true,
         ),
     ] {
-        let system = three_to_a_point(10);
+        let system = if table {
+            three_to_a_point_on_a_table(10)
+        } else {
+            three_to_a_point(10)
+        };
         let start = straight_states(&system);
         let mut settings = StepSettings {
             constraint_method: method,
@@ -217,7 +274,7 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
         assert_eq!(
             after - before,
             0,
-            "{method:?} {solver:?} {scheme:?}: {} allocations in 50 steps",
+            "{method:?} {solver:?} {scheme:?} (table: {table}): {} allocations in 50 steps",
             after - before
         );
     }

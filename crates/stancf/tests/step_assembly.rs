@@ -147,6 +147,47 @@ fn static_jacobian_matches_finite_differences() {
     }
 }
 
+/// A line end clamped in a direction (r pinned, r_x held parallel to an
+/// oblique d by multipliers, docs/method.md §6.10) beside the other
+/// constraints: P2 with 1 to 3 layers and statics, SAC-2 and SAC-3.
+#[test]
+fn a_direction_hold_jacobian_matches_finite_differences() {
+    let mut rng = Rng(0x5eed_00f0_c1a3_9e11);
+    for kind in [ElementType::Sac2, ElementType::Sac3] {
+        let mut cons = some_constraints(kind);
+        cons.push(Constraint {
+            node: 3,
+            kind: ConstraintKind::Pinned,
+        });
+        cons.push(Constraint {
+            node: 3,
+            kind: ConstraintKind::Parallel {
+                direction: [0.8, -0.3, 0.5],
+            },
+        });
+        let m = model(kind, 3, all_loads(), cons);
+        for scheme in [
+            Scheme::P2 { layers: 1 },
+            Scheme::P2 { layers: 2 },
+            Scheme::P2 { layers: 3 },
+            Scheme::Static,
+        ] {
+            let layout = SlabLayout::new(&m, scheme, ConstraintMethod::Multiplier);
+            // A static solve's slab is the unit time-invariant one.
+            let (h, slab_dt, points, label) = match scheme {
+                Scheme::P2 { layers } => {
+                    let h = 0.02 / layers as f64;
+                    (h, h, 3, format!("{kind:?} {layers} layers"))
+                }
+                _ => (0.0, 1.0, 1, format!("{kind:?} static")),
+            };
+            let slab = TimeSlab::new(slab_dt, &GaussRule::new(points).unwrap());
+            let start = random_start(&m, &layout, h, &mut rng);
+            check_jacobian(&m, &layout, &slab, &start, &mut rng, &label, 1e-6);
+        }
+    }
+}
+
 /// For a free particle-like motion (rigid translation at constant velocity)
 /// the exact solution satisfies every P2 row: the residual at the exact
 /// end state is zero to round-off (docs/method.md §4.2, its checks).

@@ -54,7 +54,7 @@ fn cases() -> Vec<Rest> {
             ..rest("pinned")
         },
         Rest {
-            constraints: vec![at(0, clamped)],
+            constraints: vec![at(0, clamped.clone())],
             method: ConstraintMethod::Elimination,
             ..rest("clamped, eliminated")
         },

@@ -87,9 +87,11 @@ pub(super) fn check_initial_velocities(
             continue;
         };
         for c in constraints.iter().filter(|c| c.node == node) {
-            let (name, rate) = match c.kind {
+            let (name, rate) = match &c.kind {
                 stancf::ConstraintKind::Clamped { .. } => ("clamped", [0.0; 3]),
                 stancf::ConstraintKind::Pinned => ("pinned", [0.0; 3]),
+                // Holds r_x's direction, not r.
+                stancf::ConstraintKind::Parallel { .. } => continue,
                 stancf::ConstraintKind::Prescribed {
                     velocity,
                     amplitude,
@@ -100,12 +102,8 @@ pub(super) fn check_initial_velocities(
                     let rate = [0, 1, 2].map(|k| velocity[k] + amplitude[k] * w * phase.cos());
                     ("prescribed", rate)
                 }
-                stancf::ConstraintKind::Attached {
-                    position,
-                    oscillation,
-                } => {
-                    let m = |k: usize| oscillation.coordinate_motion(&position, k);
-                    ("attached to a point", [0, 1, 2].map(|k| m(k).rate_at(0.0)))
+                stancf::ConstraintKind::Attached { position, motion } => {
+                    ("attached to a point", motion.state_at(position, 0.0).1)
                 }
             };
             if (0..3).any(|k| (iv.velocity[k] - rate[k]).abs() > 1e-12 * (1.0 + rate[k].abs())) {

@@ -17,6 +17,7 @@ mod initial_velocity;
 mod loads;
 mod messages;
 mod moordyn;
+mod motions;
 mod raw;
 mod system;
 mod system_model;

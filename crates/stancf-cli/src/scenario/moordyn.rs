@@ -21,7 +21,7 @@ use super::ScenarioError;
 use crate::moordyn::{
     self, Attachment, Channel, Deck, LineQuantity, PointQuantity, SupportedOption,
 };
-use stancf::constraints::Oscillation;
+use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
 
@@ -91,7 +91,8 @@ pub fn deck_scenario(
             } else {
                 0.0
             },
-            motion: Oscillation::NONE,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
         })
         .collect();
     let lines = deck
@@ -105,6 +106,8 @@ pub fn deck_scenario(
             element_type: ElementType::Sac2,
             ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
             grading: stancf::Grading::Uniform,
+            // MoorDyn's lines are pinned at their points.
+            clamps: [None; 2],
         })
         .collect();
     let mut channels = Vec::with_capacity(deck.outputs.len());

@@ -99,6 +99,8 @@ pub(super) struct RawLine {
     pub(super) element: Option<String>,
     pub(super) a: Option<i64>,
     pub(super) b: Option<i64>,
+    pub(super) clamp_a: Option<Vector>,
+    pub(super) clamp_b: Option<Vector>,
     pub(super) grading: Option<RawGrading>,
 }
 

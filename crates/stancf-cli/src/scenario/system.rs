@@ -5,9 +5,10 @@
 
 use super::analysis::{self, Others};
 use super::context::Ctx;
-use super::raw::{RawAnalysis, RawLine, RawLineType, RawMotion, RawPoint, RawScenario};
+use super::motions::motions;
+use super::raw::{RawAnalysis, RawLine, RawLineType, RawPoint, RawScenario};
 use super::{Analysis, ScenarioError};
-use stancf::constraints::Oscillation;
+use stancf::motion::CoupledMotion;
 use stancf::{ElementType, Grading, Measures};
 use std::path::Path;
 
@@ -63,7 +64,9 @@ pub struct SystemPoint {
     /// Displaced volume (m^3): buoyancy in water.
     pub volume: f64,
     /// The motion of a coupled point (none: it stays put).
-    pub motion: Oscillation,
+    pub motion: CoupledMotion,
+    /// The file a tabulated motion was read from, as the scenario names it.
+    pub motion_file: Option<String>,
 }
 
 /// Still water around the system (from a MoorDyn deck): z up, the free
@@ -97,6 +100,9 @@ pub struct SystemLine {
     pub ends: [Option<usize>; 2],
     /// How the elements divide the length (docs/method.md §1.6).
     pub grading: Grading,
+    /// Ends A and B clamped in a direction (as given; the library
+    /// normalizes it): r_x held parallel to it (docs/method.md §6.10).
+    pub clamps: [Option<[f64; 3]>; 2],
 }
 
 /// Where a dynamic run of a system starts.
@@ -169,9 +175,10 @@ pub(super) fn system_scenario(
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
         let mut sc = super::moordyn::deck_file_scenario(&deck_path, title)?;
-        motions(ctx, &raw.motions, &mut sc.points)?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+        let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
+        motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
         sc.analysis = analysis;
         sc.measures = measures;
         sc.initial = initial;
@@ -190,9 +197,11 @@ pub(super) fn system_scenario(
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut points = points(ctx, &raw.points)?;
     let lines = lines(ctx, &raw.lines, &line_types, &points)?;
-    motions(ctx, &raw.motions, &mut points)?;
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
+    check_clamp_route(ctx, &lines, &analysis)?;
+    let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
+    motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     for (i, t) in line_types.iter().enumerate() {
         if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
             notes.push(format!(
@@ -334,10 +343,78 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
             },
             force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
             volume: 0.0,
-            motion: Oscillation::NONE,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
         });
     }
     Ok(out)
+}
+
+/// `[[lines]]` `clamp_a` / `clamp_b` of line i: a direction (a vector,
+/// not zero) for an end attached to a fixed or coupled point.
+fn clamp(
+    ctx: &Ctx,
+    i: usize,
+    name: &str,
+    raw: Option<&[f64]>,
+    end: Option<usize>,
+    points: &[SystemPoint],
+) -> Result<Option<[f64; 3]>, ScenarioError> {
+    let Some(raw) = raw else { return Ok(None) };
+    let key = format!("lines[{i}].{name}");
+    let d = ctx.vector(&key, raw)?;
+    if d == [0.0; 3] {
+        return Err(ctx.err(&key, "the clamp's direction must not be the zero vector"));
+    }
+    let end_name = &name[name.len() - 1..].to_uppercase();
+    match end.map(|p| &points[p]) {
+        None => Err(ctx.err(
+            &key,
+            format!("end {end_name} is loose: a clamp needs a fixed or coupled point"),
+        )),
+        Some(p) if p.kind == PointType::Free => Err(ctx.err(
+            &key,
+            format!(
+                "end {end_name} is at free point {}, which has no rotation to clamp to: \
+                 a clamp needs a fixed or coupled point",
+                p.id
+            ),
+        )),
+        Some(_) => Ok(Some(d)),
+    }
+}
+
+/// A clamp in a direction is enforced by multipliers in the P2 step or
+/// statics only (docs/method.md §6.10): other choices are refused
+/// naming the clamp.
+fn check_clamp_route(
+    ctx: &Ctx,
+    lines: &[SystemLine],
+    analysis: &Analysis,
+) -> Result<(), ScenarioError> {
+    let Some((i, name)) = lines.iter().enumerate().find_map(|(i, l)| {
+        let k = l.clamps.iter().position(Option::is_some)?;
+        Some((i, ["clamp_a", "clamp_b"][k]))
+    }) else {
+        return Ok(());
+    };
+    let key = format!("lines[{i}].{name}");
+    if analysis.constraint_method == stancf::ConstraintMethod::Elimination {
+        return Err(ctx.err(
+            &key,
+            "a clamp in a direction holds a combination of coordinates, which only the \
+             multiplier route enforces: remove analysis.constraint_method = \"elimination\"",
+        ));
+    }
+    let dynamic = analysis.kind == super::AnalysisKind::Dynamic;
+    if dynamic && analysis.time_scheme == stancf::TimeScheme::Galerkin {
+        return Err(ctx.err(
+            &key,
+            "a clamp in a direction is not available with the Galerkin step in this version; \
+             use analysis.time_scheme = \"P2\"",
+        ));
+    }
+    Ok(())
 }
 
 /// `[[lines]]`: `id` (required, unique), `type` (a line type's name,
@@ -408,6 +485,10 @@ fn lines(
         }
         let grading =
             super::cable::grading(ctx, &format!("lines[{i}]"), r.grading.as_ref(), elements)?;
+        let clamps = [
+            clamp(ctx, i, "clamp_a", r.clamp_a.as_deref(), ends[0], points)?,
+            clamp(ctx, i, "clamp_b", r.clamp_b.as_deref(), ends[1], points)?,
+        ];
         out.push(SystemLine {
             id,
             line_type,
@@ -416,6 +497,7 @@ fn lines(
             element_type,
             ends,
             grading,
+            clamps,
         });
     }
     for (p, point) in points.iter().enumerate() {
@@ -428,46 +510,4 @@ fn lines(
         }
     }
     Ok(out)
-}
-
-/// `[[motions]]`: `point` (a coupled point's id, one motion each),
-/// `amplitude` (m, required), `period` (s, > 0, required), `phase`
-/// (degrees, default 0), `ramp` (s, >= 0, default 0):
-/// r(t) = r0 + f(t) amplitude sin(2 pi t / period + phase) (M30).
-fn motions(ctx: &Ctx, raw: &[RawMotion], points: &mut [SystemPoint]) -> Result<(), ScenarioError> {
-    let mut moved = vec![false; points.len()];
-    for (i, r) in raw.iter().enumerate() {
-        let key = |k: &str| format!("motions[{i}].{k}");
-        let id = ctx.required(&key("point"), r.point)?;
-        let Some(p) = points.iter().position(|p| p.id == id) else {
-            return Err(ctx.err(&key("point"), format!("point {id} is not defined")));
-        };
-        if points[p].kind != PointType::Coupled {
-            return Err(ctx.err(&key("point"), format!("point {id} is not a coupled point")));
-        }
-        if moved[p] {
-            return Err(ctx.err(&key("point"), format!("point {id} already has a motion")));
-        }
-        moved[p] = true;
-        if r.file.is_some() {
-            return Err(ctx.err(
-                &key("file"),
-                "motions tabulated in a file are not available in this version; give \
-                 amplitude, period, phase and ramp",
-            ));
-        }
-        let amplitude = ctx.vector(
-            &key("amplitude"),
-            &ctx.required(&key("amplitude"), r.amplitude.clone())?,
-        )?;
-        points[p].motion = Oscillation {
-            amplitude,
-            period: ctx.required_positive(&key("period"), r.period)?,
-            phase: ctx
-                .finite(&key("phase"), r.phase.unwrap_or(0.0))?
-                .to_radians(),
-            ramp: ctx.non_negative(&key("ramp"), r.ramp.unwrap_or(0.0))?,
-        };
-    }
-    Ok(())
 }

@@ -72,7 +72,15 @@ impl SystemScenario {
                     .line_model(i, &points)
                     .map_err(|e| e.under(&format!("lines[{i}]")))?;
                 let ends = l.ends.map(|e| e.map_or(End::Loose, End::Point));
-                Ok(Line { model, ends })
+                let mut line = Line { model, ends };
+                for (end, d) in l.clamps.iter().enumerate() {
+                    if let Some(d) = d {
+                        line = line
+                            .clamped(end, *d)
+                            .map_err(|e| e.under(&format!("lines[{i}]")))?;
+                    }
+                }
+                Ok(line)
             })
             .collect::<Result<Vec<_>, ModelError>>()?;
         System::new(lines, points, self.gravity)
@@ -131,7 +139,7 @@ impl SystemScenario {
 fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: [f64; 3]) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
-        PointType::Coupled => Point::coupled(p.position, p.motion),
+        PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
         PointType::Free => {
             let buoyancy = water.map_or(0.0, |w| w.density * p.volume);
             Point {

@@ -188,7 +188,21 @@ pub fn run_quiet(scenario: &Path, out: &Path, extra: &[&str]) -> Output {
 /// Runs `stancf run` on a scenario and checks the exit code 2, that the
 /// message names the file and `needles`, and that no output is written.
 pub fn expect_input_error(name: &str, scenario: &str, needles: &[&str]) {
+    expect_input_error_beside(name, scenario, &[], needles);
+}
+
+/// [`expect_input_error`] with `files` (name, contents) written beside
+/// the scenario (files it refers to).
+pub fn expect_input_error_beside(
+    name: &str,
+    scenario: &str,
+    files: &[(&str, &str)],
+    needles: &[&str],
+) {
     let d = scratch(name);
+    for (file, contents) in files {
+        std::fs::write(d.join(file), contents).unwrap();
+    }
     let sc = write_scenario(&d, "bad.toml", scenario);
     let out = d.join("never");
     for cmd in ["run", "check"] {

@@ -27,6 +27,11 @@ pub struct SlabLayout {
     multipliers: Vec<usize>,
     /// Constraint equation of a fixed unknown, same indexing as `unknowns`.
     constraint_rows: Vec<usize>,
+    /// Direction holds (§6.10, multiplier route): the multiplier of hold
+    /// h, row slot s, normal k at `[(h nr + s) 2 + k]`, and its equation
+    /// n_k . r_x = 0 in unknown slot s at `[(h nu + s) 2 + k]`.
+    hold_multipliers: Vec<usize>,
+    hold_rows: Vec<usize>,
     /// First index of each node's block, and the total.
     block_start: Vec<usize>,
     kl: usize,
@@ -111,10 +116,17 @@ impl SlabLayout {
             rows: vec![NONE; nodes * nr * dpn],
             multipliers: vec![NONE; nodes * nr * dpn],
             constraint_rows: vec![NONE; nodes * nu * dpn],
+            hold_multipliers: Vec::new(),
+            hold_rows: Vec::new(),
             block_start: Vec::with_capacity(nodes + 1),
             kl: 0,
             ku: 0,
         };
+        if method == ConstraintMethod::Multiplier {
+            let holds = model.constraints.directions.len();
+            layout.hold_multipliers = vec![NONE; holds * nr * 2];
+            layout.hold_rows = vec![NONE; holds * nu * 2];
+        }
         let mut next = 0;
         for n in 0..nodes {
             layout.block_start.push(next);
@@ -169,9 +181,40 @@ impl SlabLayout {
                     r += 1;
                 }
             }
+            let holds = &model.constraints.directions;
+            for h in (0..holds.len()).filter(|&h| holds[h].node == n) {
+                for k in 0..2 {
+                    for s in 0..nr {
+                        self.hold_multipliers[(h * nr + s) * 2 + k] = u;
+                        u += 1;
+                    }
+                    for s in 0..nu {
+                        self.hold_rows[(h * nu + s) * 2 + k] = r;
+                        r += 1;
+                    }
+                }
+            }
         }
         debug_assert_eq!(u, r, "square blocks");
         u
+    }
+
+    /// Multiplier of direction hold h's normal k in row slot s
+    /// (multiplier route).
+    pub fn hold_multiplier(&self, h: usize, slot: usize, k: usize) -> Option<usize> {
+        let v = *self
+            .hold_multipliers
+            .get((h * self.row_slots.len() + slot) * 2 + k)?;
+        (v != NONE).then_some(v)
+    }
+
+    /// Equation n_k . r_x = 0 of direction hold h in unknown slot s
+    /// (multiplier route).
+    pub fn hold_row(&self, h: usize, slot: usize, k: usize) -> Option<usize> {
+        let v = *self
+            .hold_rows
+            .get((h * self.unknown_slots.len() + slot) * 2 + k)?;
+        (v != NONE).then_some(v)
     }
 
     /// Element layers per step (0 for a static solve).

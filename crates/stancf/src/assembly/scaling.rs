@@ -58,6 +58,33 @@ impl Scales {
                 }
             }
         }
+        // Direction holds: a multiplier like the r_x row it enters, an
+        // equation n . r_x = 0 like an r_x unknown.
+        for (h, hold) in model.constraints.directions.iter().enumerate() {
+            let g = crate::model::coordinate(dpn, hold.node, crate::model::SLOT_R_X, 0);
+            let (s, m) = (
+                model.coordinate_length_scale(hold.node, g % dpn) / len,
+                mass[g],
+            );
+            for k in 0..2 {
+                for (slot, &(_, kind)) in layout.unknown_slots.iter().enumerate() {
+                    if let Some(r) = layout.hold_row(h, slot, k) {
+                        equation[r] = match kind {
+                            Kind::Position => s,
+                            Kind::Velocity => s * layer_dt,
+                        };
+                    }
+                }
+                for (slot, &(_, kind)) in layout.row_slots.iter().enumerate() {
+                    if let Some(u) = layout.hold_multiplier(h, slot, k) {
+                        unknown[u] = match kind {
+                            Kind::Position => s * layer_dt / m,
+                            Kind::Velocity => s / m,
+                        };
+                    }
+                }
+            }
+        }
         Scales { unknown, equation }
     }
 

@@ -429,6 +429,54 @@ impl StepProblem<'_> {
                 }
             }
         }
+        self.direction_terms(x, sign, residual, jacobian);
+    }
+
+    /// The direction holds (docs/method.md §6.10, (M41)): in every row
+    /// slot, the multipliers lambda_k enter the node's r_x rows as
+    /// sign lambda_k n_k; in every unknown slot, n_k . r_x = 0 (value or
+    /// rate: the direction is fixed in space).
+    fn direction_terms<J: AddEntries>(
+        &self,
+        x: &[f64],
+        sign: f64,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut J>,
+    ) {
+        let layout = self.layout;
+        for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            let g0 = coordinate(layout.dpn, hold.node, SLOT_R_X, 0);
+            for (k, n) in hold.normals.iter().enumerate() {
+                for s in 0..layout.row_slots.len() {
+                    let Some(m) = layout.hold_multiplier(h, s, k) else {
+                        continue;
+                    };
+                    for c in 0..3 {
+                        if let Some(r) = layout.row_at(s, g0 + c) {
+                            residual[r] += sign * n[c] * x[m];
+                            if let Some(jac) = jacobian.as_deref_mut() {
+                                jac.add(r, m, sign * n[c]);
+                            }
+                        }
+                    }
+                }
+                for s in 0..layout.unknown_slots.len() {
+                    let Some(r) = layout.hold_row(h, s, k) else {
+                        continue;
+                    };
+                    residual[r] = 0.0;
+                    for c in 0..3 {
+                        let u = layout
+                            .unknown_at(s, g0 + c)
+                            .expect("a held r_x is not otherwise constrained");
+                        residual[r] += n[c] * x[u];
+                        if let Some(jac) = jacobian.as_deref_mut() {
+                            jac.add(r, u, n[c]);
+                        }
+                    }
+                }
+            }
+        }
     }
 }
 

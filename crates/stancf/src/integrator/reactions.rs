@@ -3,7 +3,8 @@
 
 use super::Simulation;
 use crate::assembly::Kind;
-use crate::model::{coordinate, SLOT_R};
+use crate::constraints::DirectionHold;
+use crate::model::{coordinate, SLOT_R, SLOT_R_X};
 
 impl Simulation {
     /// Reaction impulses of the step from the multipliers (or eliminated
@@ -35,5 +36,39 @@ impl Simulation {
                 self.constraint_work += force[c] * moved;
             }
         }
+    }
+
+    /// The moment each direction hold (a line end clamped in a direction,
+    /// docs/method.md §6.10) exerted on the cable, averaged over the last
+    /// step: (node, moment). The generalized impulse on r_x is the sum of
+    /// the hold's multipliers of the position rows times their normals,
+    /// Q dt = sum lambda_k n_k, and the moment M = r_x x Q at the step's
+    /// end (M42). Zero before the first step; not restored by an undo.
+    pub fn clamp_moments(&self) -> Vec<(usize, [f64; 3])> {
+        let dt = self.settings.time_step;
+        let dpn = self.layout.dpn;
+        let holds = &self.model.constraints.directions;
+        holds
+            .iter()
+            .enumerate()
+            .map(|(h, hold)| {
+                let mut q = [0.0; 3];
+                for (s, &(_, kind)) in self.layout.row_slots.iter().enumerate() {
+                    if kind != Kind::Position {
+                        continue;
+                    }
+                    for (k, n) in hold.normals.iter().enumerate() {
+                        if let Some(m) = self.layout.hold_multiplier(h, s, k) {
+                            for c in 0..3 {
+                                q[c] += self.x[m] * n[c] / dt;
+                            }
+                        }
+                    }
+                }
+                let o = coordinate(dpn, hold.node, SLOT_R_X, 0);
+                let r_x = [self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]];
+                (hold.node, DirectionHold::moment(r_x, q))
+            })
+            .collect()
     }
 }

@@ -66,7 +66,8 @@ impl Model {
     pub fn planar_coordinates(&self, state: &State) -> Option<Vec<usize>> {
         let dpn = self.dofs_per_node();
         let n = self.dofs();
-        if state.e.len() != n || state.v.len() != n {
+        if state.e.len() != n || state.v.len() != n || !self.constraints.directions.is_empty() {
+            // A direction hold is not split by coordinates (§6.10).
             return None;
         }
         let z0 = state.e[2];
@@ -77,8 +78,7 @@ impl Model {
                 return None;
             }
             if let Some(m) = &self.constraints.motion[g] {
-                let still = m.rate == 0.0 && (m.amplitude == 0.0 || m.omega == 0.0);
-                if !still || m.value(0.0) != value {
+                if !m.is_still() || m.value(0.0) != value {
                     return None;
                 }
             }

@@ -280,11 +280,26 @@ impl Model {
 
     /// Sets every constrained coordinate of `state` to its prescribed value
     /// and rate at `state.t`.
+    /// A node whose r_x is held parallel to a direction d (§6.10) has r_x
+    /// turned onto d with its length and sense kept, and the rate of r_x
+    /// projected onto d.
     pub fn apply_constraints(&self, state: &mut State) {
         for (g, m) in self.constraints.motion.iter().enumerate() {
             if let Some(m) = m {
                 state.e[g] = m.value(state.t);
                 state.v[g] = m.rate_at(state.t);
+            }
+        }
+        for h in &self.constraints.directions {
+            let o = coordinate(self.dofs_per_node(), h.node, SLOT_R_X, 0);
+            let d = h.direction;
+            let along = |x: &[f64]| d[0] * x[o] + d[1] * x[o + 1] + d[2] * x[o + 2];
+            let length = (0..3).map(|c| state.e[o + c].powi(2)).sum::<f64>().sqrt();
+            let sense = if along(&state.e) < 0.0 { -1.0 } else { 1.0 };
+            let rate = along(&state.v);
+            for c in 0..3 {
+                state.e[o + c] = sense * length * d[c];
+                state.v[o + c] = rate * d[c];
             }
         }
     }

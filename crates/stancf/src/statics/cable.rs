@@ -6,10 +6,10 @@
 use super::newton::StaticEquations;
 use crate::assembly::{AssemblyScratch, Scheme, SlabLayout, StepProblem, StepStart};
 use crate::band::BandMatrix;
-use crate::constraints::ConstraintMethod;
+use crate::constraints::{ConstraintMethod, DirectionHold};
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
-use crate::model::{coordinate, Model, State, SLOT_R};
+use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X};
 use crate::quadrature::GaussRule;
 
 /// One cable's static equations and what a converged increment gives.
@@ -23,6 +23,8 @@ pub(crate) struct CableStatics {
     pub state: State,
     /// Force each position constraint exerts on the cable.
     pub reactions: Vec<(usize, [f64; 3])>,
+    /// Moment each direction hold exerts on the cable (M42).
+    pub clamp_moments: Vec<(usize, [f64; 3])>,
 }
 
 impl CableStatics {
@@ -51,6 +53,12 @@ impl CableStatics {
             scratch,
             state,
             reactions,
+            clamp_moments: model
+                .constraints
+                .directions
+                .iter()
+                .map(|h| (h.node, [0.0; 3]))
+                .collect(),
             model,
         }
     }
@@ -87,7 +95,7 @@ impl CableStatics {
             .motion
             .iter()
             .flatten()
-            .any(|m| m.value(0.0) != m.base)
+            .any(|m| m.value(0.0) != m.base())
     }
 
     /// The rows (and Jacobian entries, added to `jacobian`) at x.
@@ -125,6 +133,15 @@ impl CableStatics {
                 weights[r] = s;
             }
         }
+        // A direction hold's equations n . r_x = 0, like r_x's.
+        for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            let s = self.model.coordinate_length_scale(hold.node, SLOT_R_X * 3) / len;
+            for k in 0..2 {
+                if let Some(r) = self.layout.hold_row(h, 0, k) {
+                    weights[r] = s;
+                }
+            }
+        }
     }
 
     /// The state and reactions at the converged x (`residual` is scratch).
@@ -148,6 +165,21 @@ impl CableStatics {
                     None => self.scratch.reaction_rows[g],
                 };
             }
+        }
+        // The hold's multipliers are its generalized reaction on r_x
+        // (statics: lambda is the force itself), M = r_x x Q (M42).
+        for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            let mut q = [0.0; 3];
+            for (k, n) in hold.normals.iter().enumerate() {
+                if let Some(m) = self.layout.hold_multiplier(h, 0, k) {
+                    for c in 0..3 {
+                        q[c] += x[m] * n[c];
+                    }
+                }
+            }
+            let o = coordinate(dpn, hold.node, SLOT_R_X, 0);
+            let r_x = [self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]];
+            self.clamp_moments[h].1 = DirectionHold::moment(r_x, q);
         }
     }
 }
@@ -209,7 +241,7 @@ impl StaticEquations for SingleCable {
         start.load_factor = loads;
         for (g, m) in self.cable.model.constraints.motion.iter().enumerate() {
             if let Some(m) = m {
-                start.fixed_e[g] = m.base + supports * (m.value(0.0) - m.base);
+                start.fixed_e[g] = m.base() + supports * (m.value(0.0) - m.base());
             }
         }
     }

@@ -134,6 +134,9 @@ pub struct StaticSolver {
 impl StaticSolver {
     pub fn new(model: Model, settings: StaticSettings) -> Result<Self, ModelError> {
         settings.validate()?;
+        model
+            .constraints
+            .check_direction_route(settings.constraint_method, false)?;
         if !model.constraints.remove_rigid_motions() {
             return Err(ModelError::invalid(
                 "constraints",
@@ -174,6 +177,13 @@ impl StaticSolver {
     /// Force each position constraint exerts on the cable.
     pub fn reactions(&self) -> &[(usize, [f64; 3])] {
         &self.equations.cable.reactions
+    }
+
+    /// The moment each direction hold (a clamp in a direction,
+    /// docs/method.md §6.10) exerts on the cable at equilibrium: (node,
+    /// M = r_x x Q), Q the hold's reaction on r_x (M42).
+    pub fn clamp_moments(&self) -> &[(usize, [f64; 3])] {
+        &self.equations.cable.clamp_moments
     }
 
     /// Unknowns of the static system.

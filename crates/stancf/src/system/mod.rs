@@ -35,20 +35,21 @@ pub use seed::{catenary_states, end_positions, shaped, straight_between, straigh
 pub use simulation::{EndForce, SystemSimulation};
 pub use statics::SystemStatics;
 
-use crate::constraints::{Constraint, ConstraintKind, Oscillation};
+use crate::constraints::{Constraint, ConstraintKind};
 use crate::error::ModelError;
 use crate::model::Model;
+use crate::motion::{CoupledMotion, MotionTable};
 
 /// What holds a point.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum PointKind {
     /// Held at its position (an anchor).
     Fixed,
     /// Three translational unknowns (a shackle, a clump weight, a buoy).
     Free,
-    /// Moved along `position + oscillation(t)` by another code or a
-    /// prescribed motion (a fairlead).
-    Coupled(Oscillation),
+    /// Moved along a given motion (a fairlead): an oscillation about its
+    /// position (M30) or a table (M39).
+    Coupled(CoupledMotion),
 }
 
 /// A point of a system.
@@ -82,9 +83,12 @@ impl Point {
         }
     }
 
-    pub fn coupled(position: [f64; 3], oscillation: Oscillation) -> Self {
+    /// A coupled point at `position` (its position at t = 0) moving
+    /// along `motion` (an [`crate::constraints::Oscillation`], a
+    /// [`crate::motion::MotionTable`] or a [`CoupledMotion`]).
+    pub fn coupled(position: [f64; 3], motion: impl Into<CoupledMotion>) -> Self {
         Point {
-            kind: PointKind::Coupled(oscillation),
+            kind: PointKind::Coupled(motion.into()),
             position,
             mass: 0.0,
             force: [0.0; 3],
@@ -99,14 +103,10 @@ impl Point {
     /// free point's are unknowns: this gives its initial position, at
     /// rest).
     pub fn state_at(&self, t: f64) -> ([f64; 3], [f64; 3]) {
-        let PointKind::Coupled(o) = self.kind else {
-            return (self.position, [0.0; 3]);
-        };
-        let m = |c: usize| o.coordinate_motion(&self.position, c);
-        (
-            std::array::from_fn(|c| m(c).value(t)),
-            std::array::from_fn(|c| m(c).rate_at(t)),
-        )
+        match &self.kind {
+            PointKind::Coupled(motion) => motion.state_at(&self.position, t),
+            _ => (self.position, [0.0; 3]),
+        }
     }
 }
 
@@ -124,6 +124,26 @@ pub enum End {
 pub struct Line {
     pub model: Model,
     pub ends: [End; 2],
+}
+
+impl Line {
+    /// The line with its end (0 = A, 1 = B) clamped in `direction`: the
+    /// end's r_x held parallel to it (docs/method.md §6.10; a riser
+    /// hang-off). The end must be attached to a fixed or coupled point
+    /// (checked by [`System::new`]); the direction need not be a unit
+    /// vector.
+    pub fn clamped(self, end: usize, direction: [f64; 3]) -> Result<Self, ModelError> {
+        let node = if end == 0 { 0 } else { self.model.nodes() - 1 };
+        let mut list = self.model.constraints.list.clone();
+        list.push(Constraint {
+            node,
+            kind: ConstraintKind::Parallel { direction },
+        });
+        Ok(Line {
+            model: self.model.with_constraints(list)?,
+            ends: self.ends,
+        })
+    }
 }
 
 /// A system of lines and points, validated; the lines' models carry the
@@ -157,6 +177,13 @@ impl System {
         if gravity.iter().any(|g| !g.is_finite()) {
             return Err(ModelError::invalid("gravity", "must be finite"));
         }
+        let size = extent(
+            lines.iter().map(|l| l.model.cable.length),
+            points.iter().map(|p| p.position),
+        );
+        for (i, p) in points.iter().enumerate() {
+            check_table_start(i, p, size)?;
+        }
         let mut attached = vec![0usize; points.len()];
         let mut out = Vec::with_capacity(lines.len());
         for (li, line) in lines.into_iter().enumerate() {
@@ -171,19 +198,20 @@ impl System {
                     ));
                 };
                 attached[p] += 1;
-                let oscillation = match point.kind {
+                let motion = match &point.kind {
                     PointKind::Free => continue,
-                    PointKind::Fixed => Oscillation::NONE,
-                    PointKind::Coupled(o) => o,
+                    PointKind::Fixed => CoupledMotion::NONE,
+                    PointKind::Coupled(m) => m.clone(),
                 };
                 list.push(Constraint {
                     node,
                     kind: ConstraintKind::Attached {
                         position: point.position,
-                        oscillation,
+                        motion,
                     },
                 });
             }
+            check_clamps(li, &line, &points)?;
             if line.ends[0] == line.ends[1] && line.ends[0] != End::Loose {
                 return Err(ModelError::invalid(
                     format!("lines[{li}]"),
@@ -287,6 +315,100 @@ impl System {
     /// Whether some point is free (the lines are then solved together).
     pub fn has_free_points(&self) -> bool {
         self.points.iter().any(Point::is_free)
+    }
+}
+
+/// A line end clamped in a direction must be attached to a fixed or
+/// coupled point (whose motion translates, so the direction stays fixed
+/// in space); a clamp elsewhere is refused.
+fn check_clamps(li: usize, line: &Line, points: &[Point]) -> Result<(), ModelError> {
+    let last = line.model.nodes() - 1;
+    for h in &line.model.constraints.directions {
+        let end = match h.node {
+            0 => 0,
+            n if n == last => 1,
+            n => {
+                return Err(ModelError::invalid(
+                    format!("lines[{li}]"),
+                    format!("node {n} is clamped in a direction; only a line end may be"),
+                ))
+            }
+        };
+        let name = ["A", "B"][end];
+        let held = match line.ends[end] {
+            End::Point(p) => !points[p].is_free(),
+            End::Loose => false,
+        };
+        if !held {
+            return Err(ModelError::invalid(
+                format!("lines[{li}]"),
+                format!(
+                    "end {name} is clamped in a direction but not attached to a fixed or \
+                     coupled point (a free point has no rotation to clamp to, a loose end \
+                     nothing)"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The size of a system (m): the largest of its lines' unstretched
+/// lengths and the diagonal of its points' bounding box.
+pub fn extent(
+    lengths: impl IntoIterator<Item = f64>,
+    positions: impl IntoIterator<Item = [f64; 3]>,
+) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut any = false;
+    for r in positions {
+        any = true;
+        for c in 0..3 {
+            lo[c] = lo[c].min(r[c]);
+            hi[c] = hi[c].max(r[c]);
+        }
+    }
+    let diagonal = if any {
+        (0..3).map(|c| (hi[c] - lo[c]).powi(2)).sum::<f64>().sqrt()
+    } else {
+        0.0
+    };
+    lengths.into_iter().fold(diagonal, f64::max)
+}
+
+/// How far a tabulated motion may start from its point: 1e-9 of the
+/// system's [`extent`] (round-off of positions written to a file and read
+/// back, not a modelling tolerance).
+pub const TABLE_START_TOLERANCE: f64 = 1e-9;
+
+/// The distance between a coupled point's tabulated position at t = 0
+/// and its position, when it exceeds [`TABLE_START_TOLERANCE`] of `size`.
+pub fn table_start_mismatch(position: &[f64; 3], table: &MotionTable, size: f64) -> Option<f64> {
+    let r0 = table.state(0.0).0;
+    let d = (0..3)
+        .map(|c| (r0[c] - position[c]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    (d > TABLE_START_TOLERANCE * size).then_some(d)
+}
+
+/// A coupled point moved by a table starts where the table is at t = 0.
+fn check_table_start(i: usize, p: &Point, size: f64) -> Result<(), ModelError> {
+    let PointKind::Coupled(CoupledMotion::Table(table)) = &p.kind else {
+        return Ok(());
+    };
+    match table_start_mismatch(&p.position, table, size) {
+        None => Ok(()),
+        Some(d) => Err(ModelError::invalid(
+            format!("points[{i}].motion"),
+            format!(
+                "the table's position at t = 0, {:?}, is {d:e} m from the point's position \
+                 {:?} (allowed: {TABLE_START_TOLERANCE:e} of the system's size {size} m)",
+                table.state(0.0).0,
+                p.position
+            ),
+        )),
     }
 }
 

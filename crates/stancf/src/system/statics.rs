@@ -78,6 +78,12 @@ impl SystemStatics {
         }
         system.check_held()?;
         let method = settings.constraint_method;
+        for (i, line) in system.lines().iter().enumerate() {
+            line.model
+                .constraints
+                .check_direction_route(method, false)
+                .map_err(|e| ModelError::invalid(e.key, format!("line {i}: {}", e.message)))?;
+        }
         let lines: Vec<CableStatics> = system
             .lines()
             .iter()

@@ -6,7 +6,8 @@
 //! as a module otherwise).
 #![allow(dead_code)]
 
-use stancf::constraints::Oscillation;
+use stancf::constraints::{MotionTable, Oscillation};
+use stancf::motion::CoupledMotion;
 use stancf::system::{End, Line, Point, System};
 use stancf::{
     Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions,
@@ -60,6 +61,24 @@ pub fn line_model(a: [f64; 3], b: [f64; 3], elements: usize) -> Model {
 /// Three lines of `elements` elements from two fixed anchors and a
 /// swinging one (points 0-2) to a free point of 0.2 kg (point 3).
 pub fn three_to_a_point(elements: usize) -> System {
+    three_to_a_point_moving(elements, SWING.into())
+}
+
+/// [`three_to_a_point`] with the swinging anchor moved by a table of
+/// [`SWING`] sampled every 5 ms over 1 s (201 rows).
+pub fn three_to_a_point_on_a_table(elements: usize) -> System {
+    let anchor = [-1.0, -1.7, 0.5];
+    let swing = CoupledMotion::from(SWING);
+    let times: Vec<f64> = (0..=200).map(|i| i as f64 * 5e-3).collect();
+    let positions = times
+        .iter()
+        .map(|&t| swing.state_at(&anchor, t).0)
+        .collect();
+    let table = MotionTable::new(times, positions).unwrap();
+    three_to_a_point_moving(elements, table.into())
+}
+
+fn three_to_a_point_moving(elements: usize, swing: CoupledMotion) -> System {
     let hub: [f64; 3] = [0.0, 0.0, -1.0];
     let anchors: [[f64; 3]; 3] = [[2.0, 0.0, 0.0], [-1.0, 1.7, 0.0], [-1.0, -1.7, 0.5]];
     let lines = anchors
@@ -73,7 +92,7 @@ pub fn three_to_a_point(elements: usize) -> System {
     let points = vec![
         Point::fixed(anchors[0]),
         Point::fixed(anchors[1]),
-        Point::coupled(anchors[2], SWING),
+        Point::coupled(anchors[2], swing),
         Point::free(hub, 0.2),
     ];
     System::new(lines, points, G).unwrap()

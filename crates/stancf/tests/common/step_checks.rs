@@ -44,6 +44,13 @@ pub fn check_jacobian(
                 x[u] = rng.next();
             }
         }
+        for h in 0..m.constraints.directions.len() {
+            for k in 0..2 {
+                if let Some(u) = layout.hold_multiplier(h, s, k) {
+                    x[u] = rng.next();
+                }
+            }
+        }
     }
     let p = StepProblem {
         model: m,

@@ -18,12 +18,21 @@
 //! constraint equation per fixed value, so no P2 row becomes singular) and
 //! direct elimination of the fixed coordinates and their rows. Both give
 //! the same motion to round-off.
+//!
+//! One constraint holds a combination of coordinates instead: `parallel`
+//! keeps r_x along a direction (a line end clamped in a direction,
+//! §6.10, [`DirectionHold`]), enforced by multipliers only.
+
+mod direction;
 
 use crate::error::ModelError;
 use crate::model::{coordinate, ElementType, SLOT_R};
+pub use crate::motion::{CoupledMotion, MotionTable};
+pub use direction::DirectionHold;
+use std::sync::Arc;
 
 /// What a constraint fixes (docs/method.md §6.1).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ConstraintKind {
     /// r and r_x fixed; r_xx too when `fix_curvature` (SAC-3 only; the
     /// paper's Table 3 "with r_xx constraint" row, wrong for a bent
@@ -39,11 +48,19 @@ pub enum ConstraintKind {
         frequency: f64,
         phase: f64,
     },
+    /// r_x held parallel to `direction` (normalized here; a clamp in a
+    /// direction, a riser hang-off, docs/method.md §6.10): the two linear
+    /// equations n_1 . r_x = n_2 . r_x = 0, n_1, n_2 orthonormal to the
+    /// direction, so the end may still stretch along it. r is not held (a
+    /// clamp pairs it with `Pinned` or `Attached`). Multiplier route and
+    /// P2 or static only.
+    Parallel { direction: [f64; 3] },
     /// r held at a point of a system: fixed (an anchor) or moving with it
-    /// (a coupled point, a fairlead), r(t) = position + oscillation(t).
+    /// (a coupled point, a fairlead) along `motion` from `position`
+    /// ((M30) or (M39)).
     Attached {
         position: [f64; 3],
-        oscillation: Oscillation,
+        motion: CoupledMotion,
     },
 }
 
@@ -75,7 +92,7 @@ impl Oscillation {
     /// The motion of component k of a point at `position` moving so.
     pub fn coordinate_motion(&self, position: &[f64; 3], k: usize) -> CoordinateMotion {
         let moving = self.period > 0.0 && self.amplitude.iter().any(|&a| a != 0.0);
-        CoordinateMotion {
+        CoordinateMotion::Harmonic(HarmonicMotion {
             base: position[k],
             rate: 0.0,
             amplitude: if moving { self.amplitude[k] } else { 0.0 },
@@ -86,7 +103,7 @@ impl Oscillation {
             },
             phase: self.phase,
             ramp: self.ramp,
-        }
+        })
     }
 }
 
@@ -106,7 +123,7 @@ pub fn ramp_factor(t: f64, ramp: f64) -> (f64, f64) {
 }
 
 /// A constraint on one node.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Constraint {
     pub node: usize,
     pub kind: ConstraintKind,
@@ -124,11 +141,23 @@ pub enum ConstraintMethod {
     Elimination,
 }
 
-/// The prescribed history of one coordinate,
+/// The prescribed history of one coordinate.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CoordinateMotion {
+    /// c(t) = base + rate t + f(t) amplitude sin(omega t + phase).
+    Harmonic(HarmonicMotion),
+    /// Component `component` (0 = x, 1 = y, 2 = z) of a tabulated motion
+    /// (M39).
+    Table {
+        table: Arc<MotionTable>,
+        component: usize,
+    },
+}
+
 /// c(t) = base + rate t + f(t) amplitude sin(omega t + phase), f the ramp
 /// of [`ramp_factor`] (1 when `ramp` is 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CoordinateMotion {
+pub struct HarmonicMotion {
     pub base: f64,
     pub rate: f64,
     pub amplitude: f64,
@@ -140,16 +169,52 @@ pub struct CoordinateMotion {
 impl CoordinateMotion {
     /// A coordinate held at `value`.
     pub fn fixed(value: f64) -> Self {
-        CoordinateMotion {
+        CoordinateMotion::Harmonic(HarmonicMotion {
             base: value,
             rate: 0.0,
             amplitude: 0.0,
             omega: 0.0,
             phase: 0.0,
             ramp: 0.0,
+        })
+    }
+
+    pub fn value(&self, t: f64) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.value(t),
+            CoordinateMotion::Table { table, component } => table.component(*component, t).0,
         }
     }
 
+    pub fn rate_at(&self, t: f64) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.rate_at(t),
+            CoordinateMotion::Table { table, component } => table.component(*component, t).1,
+        }
+    }
+
+    /// Whether the value stays the same for all t.
+    pub fn is_still(&self) -> bool {
+        match self {
+            CoordinateMotion::Harmonic(h) => {
+                h.rate == 0.0 && (h.amplitude == 0.0 || h.omega == 0.0)
+            }
+            CoordinateMotion::Table { table, component } => table.is_constant(*component),
+        }
+    }
+
+    /// The value the motion is referred to: a harmonic's base (a static
+    /// solve moves a support from it to its value at t = 0), a table's
+    /// value at t = 0.
+    pub fn base(&self) -> f64 {
+        match self {
+            CoordinateMotion::Harmonic(h) => h.base,
+            CoordinateMotion::Table { .. } => self.value(0.0),
+        }
+    }
+}
+
+impl HarmonicMotion {
     pub fn value(&self, t: f64) -> f64 {
         let wave = self.amplitude * (self.omega * t + self.phase).sin();
         if self.ramp > 0.0 {
@@ -176,9 +241,14 @@ impl CoordinateMotion {
 fn attached_motions(
     key: &str,
     position: [f64; 3],
-    o: &Oscillation,
+    motion: &CoupledMotion,
 ) -> Result<Vec<(usize, CoordinateMotion)>, ModelError> {
     let finite = |v: &[f64; 3]| v.iter().all(|x| x.is_finite());
+    let o = match motion {
+        CoupledMotion::Oscillation(o) => o,
+        // A table is checked when built (MotionTable::new).
+        CoupledMotion::Table(_) => &Oscillation::NONE,
+    };
     if !finite(&position) || !finite(&o.amplitude) {
         return Err(ModelError::invalid(
             key,
@@ -204,8 +274,15 @@ fn attached_motions(
         ));
     }
     Ok((0..3)
-        .map(|d| (d, o.coordinate_motion(&position, d)))
+        .map(|d| (d, motion.coordinate_motion(&position, d)))
         .collect())
+}
+
+fn conflict(key: &str, other: usize, what: &str, node: usize) -> ModelError {
+    ModelError::invalid(
+        key,
+        format!("conflicts with constraints[{other}]: both constrain {what} of node {node}"),
+    )
 }
 
 /// All constraints of a model, resolved to coordinates.
@@ -218,6 +295,9 @@ pub struct Constraints {
     /// Nodes whose position r is constrained (their reactions are
     /// reported), ascending.
     pub position_nodes: Vec<usize>,
+    /// r_x held parallel to a direction ([`ConstraintKind::Parallel`]),
+    /// in the order given.
+    pub directions: Vec<DirectionHold>,
     /// Per global coordinate: held because the motion stays in a plane
     /// (see [`crate::Model::reduce_to_plane`]), not by a constraint. Such a
     /// coordinate has a fixed `motion` and is always eliminated, never
@@ -238,6 +318,7 @@ impl Constraints {
         let mut motion: Vec<Option<CoordinateMotion>> = vec![None; nodes * dpn];
         let mut owner: Vec<Option<usize>> = vec![None; nodes * dpn];
         let mut position_nodes = Vec::new();
+        let mut directions = Vec::new();
         for (ci, c) in list.iter().enumerate() {
             let key = format!("constraints[{ci}]");
             if c.node >= nodes {
@@ -251,7 +332,7 @@ impl Constraints {
                 ));
             }
             let o = coordinate(dpn, c.node, SLOT_R, 0);
-            let coords: Vec<(usize, CoordinateMotion)> = match c.kind {
+            let coords: Vec<(usize, CoordinateMotion)> = match c.kind.clone() {
                 ConstraintKind::Clamped { fix_curvature } => {
                     if fix_curvature && element != ElementType::Sac3 {
                         return Err(ModelError::invalid(
@@ -297,34 +378,37 @@ impl Constraints {
                         .map(|d| {
                             (
                                 d,
-                                CoordinateMotion {
+                                CoordinateMotion::Harmonic(HarmonicMotion {
                                     base: reference[o + d],
                                     rate: velocity[d],
                                     amplitude: amplitude[d],
                                     omega: 2.0 * std::f64::consts::PI * frequency,
                                     phase,
                                     ramp: 0.0,
-                                },
+                                }),
                             )
                         })
                         .collect()
                 }
-                ConstraintKind::Attached {
-                    position,
-                    oscillation,
-                } => attached_motions(&key, position, &oscillation)?,
+                ConstraintKind::Attached { position, motion } => {
+                    attached_motions(&key, position, &motion)?
+                }
+                ConstraintKind::Parallel { direction } => {
+                    let hold = DirectionHold::new(&key, c.node, direction)?;
+                    for d in 3..6 {
+                        if let Some(other) = owner[o + d] {
+                            return Err(conflict(&key, other, "r_x", c.node));
+                        }
+                        owner[o + d] = Some(ci);
+                    }
+                    directions.push(hold);
+                    continue;
+                }
             };
             for (d, m) in coords {
                 if let Some(other) = owner[o + d] {
                     let names = ["r", "r_x", "r_xx"];
-                    return Err(ModelError::invalid(
-                        key,
-                        format!(
-                            "conflicts with constraints[{other}]: both constrain {} of node {}",
-                            names[d / 3],
-                            c.node
-                        ),
-                    ));
+                    return Err(conflict(&key, other, names[d / 3], c.node));
                 }
                 owner[o + d] = Some(ci);
                 motion[o + d] = Some(m);
@@ -336,8 +420,46 @@ impl Constraints {
             list,
             motion,
             position_nodes,
+            directions,
             inactive: Vec::new(),
         })
+    }
+
+    /// Refuses what the direction holds cannot be enforced with: the
+    /// elimination route (a combination of coordinates, not a coordinate,
+    /// is held) and the Galerkin step (its end rates v_b = M^-1 p_b would
+    /// need the hold's impulse at t_b). Keys `analysis.constraint_method`
+    /// and `analysis.time_scheme` in errors.
+    pub fn check_direction_route(
+        &self,
+        method: ConstraintMethod,
+        galerkin: bool,
+    ) -> Result<(), ModelError> {
+        let Some(h) = self.directions.first() else {
+            return Ok(());
+        };
+        if method == ConstraintMethod::Elimination {
+            return Err(ModelError::invalid(
+                "analysis.constraint_method",
+                format!(
+                    "node {} is clamped in a direction (r_x parallel to {:?}), which holds a \
+                     combination of coordinates: only the multiplier route enforces it; use \
+                     constraint_method = \"multiplier\"",
+                    h.node, h.direction
+                ),
+            ));
+        }
+        if galerkin {
+            return Err(ModelError::invalid(
+                "analysis.time_scheme",
+                format!(
+                    "node {} is clamped in a direction: the Galerkin step does not take such a \
+                     clamp in this version; use the P2 step",
+                    h.node
+                ),
+            ));
+        }
+        Ok(())
     }
 
     pub fn is_empty(&self) -> bool {
@@ -374,20 +496,19 @@ impl Constraints {
 
     /// True if some constraint moves (prescribed motion does work).
     pub fn moves(&self) -> bool {
-        self.motion
-            .iter()
-            .flatten()
-            .any(|m| m.rate != 0.0 || (m.amplitude != 0.0 && m.omega != 0.0))
+        self.motion.iter().flatten().any(|m| !m.is_still())
     }
 
     /// Whether the constraints remove the rigid motions of a static
     /// problem: some node's position must be held (translations), and a
     /// clamp or a second held position must stop the rotations.
     pub fn remove_rigid_motions(&self) -> bool {
-        let clamped = self
-            .list
-            .iter()
-            .any(|c| matches!(c.kind, ConstraintKind::Clamped { .. }));
+        let clamped = self.list.iter().any(|c| {
+            matches!(
+                c.kind,
+                ConstraintKind::Clamped { .. } | ConstraintKind::Parallel { .. }
+            )
+        });
         let mut nodes = self.position_nodes.clone();
         nodes.dedup();
         !nodes.is_empty() && (clamped || nodes.len() >= 2)

@@ -1,0 +1,74 @@
+//! A line end clamped in a direction: r_x held parallel to a unit d by
+//! n_1 . r_x = n_2 . r_x = 0 (docs/method.md §6.10, (M41)-(M42)).
+
+use crate::error::ModelError;
+
+/// r_x of `node` held parallel to `direction` by n . r_x = 0 for both
+/// `normals` (docs/method.md §6.10, (M41)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DirectionHold {
+    pub node: usize,
+    /// Unit direction d.
+    pub direction: [f64; 3],
+    /// n_1, n_2: with d, an orthonormal right-handed frame (d x n_1 = n_2).
+    pub normals: [[f64; 3]; 2],
+}
+
+impl DirectionHold {
+    /// The hold of node's r_x along `direction` (finite, not zero; key
+    /// `key` in errors).
+    pub fn new(key: &str, node: usize, direction: [f64; 3]) -> Result<Self, ModelError> {
+        let norm = direction.iter().map(|c| c * c).sum::<f64>().sqrt();
+        if !norm.is_finite() || norm == 0.0 || direction.iter().any(|c| !c.is_finite()) {
+            return Err(ModelError::invalid(
+                format!("{key}.direction"),
+                format!("must be a finite vector that is not zero, got {direction:?}"),
+            ));
+        }
+        let d = direction.map(|c| c / norm);
+        // The axis least aligned with d, made normal to it.
+        let k = (0..3)
+            .min_by(|&a, &b| d[a].abs().total_cmp(&d[b].abs()))
+            .expect("3 axes");
+        let mut e = [0.0; 3];
+        e[k] = 1.0;
+        let n1 = normalized(sub(e, scale(d, dot(d, e))));
+        let n2 = cross(d, n1);
+        Ok(DirectionHold {
+            node,
+            direction: d,
+            normals: [n1, n2],
+        })
+    }
+
+    /// The generalized force Q = sum_k lambda_k n_k on r_x turned into
+    /// the moment r_x x Q it exerts (from (M7): a moment M normal to r_x
+    /// acts on r_x as Q = M x r_x / |r_x|^2, so M = r_x x Q).
+    pub fn moment(r_x: [f64; 3], q: [f64; 3]) -> [f64; 3] {
+        cross(r_x, q)
+    }
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
+    a.map(|c| c * s)
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn normalized(a: [f64; 3]) -> [f64; 3] {
+    scale(a, 1.0 / dot(a, a).sqrt())
+}
