@@ -29,6 +29,7 @@ mod point_terms;
 mod seed;
 mod simulation;
 mod statics;
+mod step_equations;
 
 pub use layout::SystemLayout;
 pub use seed::{catenary_states, end_positions, shaped, straight_between, straight_states};

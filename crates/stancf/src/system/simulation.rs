@@ -5,16 +5,16 @@
 //! slab equations of all lines and points together with the bordered
 //! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
 
-use super::layout::{add_line_rows, SystemLayout};
+use super::layout::SystemLayout;
 use super::mass::SystemMass;
 use super::point_terms::{PointNodes, PointTerms};
+use super::step_equations::{system_scales, StepOfSystem};
 use super::{End, System};
 use crate::assembly::{Kind, Scheme, SlabLayout};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
 use crate::integrator::{Simulation, StepReport, StepSettings, TimeScheme};
-use crate::linear::Jacobian;
 use crate::model::{coordinate, State, SLOT_R};
 use crate::quadrature::GaussRule;
 use crate::solver::{solve, NewtonReport, NewtonWorkspace, NonlinearSystem};
@@ -55,9 +55,9 @@ impl EndForce {
 
 /// Position, velocity and predictor history of a point.
 #[derive(Clone, Debug, Default)]
-struct PointMotion {
-    e: [f64; 3],
-    v: [f64; 3],
+pub(super) struct PointMotion {
+    pub(super) e: [f64; 3],
+    pub(super) v: [f64; 3],
     previous: ([f64; 3], [f64; 3]),
     acceleration: [f64; 3],
 }
@@ -494,136 +494,4 @@ fn point_motions(system: &System, lines: &[Simulation]) -> Result<Vec<PointMotio
         });
     }
     Ok(out)
-}
-
-/// The convergence scales of the system's unknowns and rows: each line's
-/// (docs/method.md §7.1) at its own indices; at a free point's, the
-/// smallest of the attached lines' for unknowns, and for rows the
-/// lines' weights combined as the point's total mass demands (a row
-/// weight is inverse to the mass on the coordinate: 1/w = sum 1/w_i,
-/// scaled by the lines' end mass over that plus the point's).
-fn system_scales(
-    system: &System,
-    lines: &[Simulation],
-    layout: &SystemLayout,
-) -> (Vec<f64>, Vec<f64>) {
-    let n = layout.size;
-    let border_start = layout.border_start();
-    let mut unknown = vec![f64::INFINITY; n];
-    let mut inverse_equation = vec![0.0; n];
-    let mut equation = vec![0.0; n];
-    let mut end_mass = vec![0.0; layout.border];
-    for (i, line) in lines.iter().enumerate() {
-        let scales = line.scales();
-        let map = &layout.maps[i];
-        let mass = line.model().mass_diagonal();
-        let last = line.model().nodes() - 1;
-        for (u, &g) in map.global.iter().enumerate() {
-            unknown[g] = unknown[g].min(scales.unknown[u]);
-            if g < border_start {
-                equation[g] = scales.equation[u];
-            } else if scales.equation[u] > 0.0 {
-                inverse_equation[g] += 1.0 / scales.equation[u];
-            }
-        }
-        for (end, node) in system.lines()[i].ends.iter().zip([0, last]) {
-            let End::Point(p) = *end else { continue };
-            let Some(base) = layout.point_base[p] else {
-                continue;
-            };
-            let o = coordinate(line.model().dofs_per_node(), node, SLOT_R, 0);
-            for k in 0..3 * layout.slots {
-                end_mass[base + k] += mass[o + k % 3];
-            }
-        }
-    }
-    for (p, point) in system.points().iter().enumerate() {
-        let Some(base) = layout.point_base[p] else {
-            continue;
-        };
-        for k in 0..3 * layout.slots {
-            let g = border_start + base + k;
-            let lines_mass = end_mass[base + k];
-            let share = lines_mass / (lines_mass + point.mass);
-            equation[g] = share / inverse_equation[g];
-        }
-    }
-    for u in unknown.iter_mut() {
-        if !u.is_finite() {
-            *u = 0.0;
-        }
-    }
-    (unknown, equation)
-}
-
-/// The step of a system as Newton sees it.
-struct StepOfSystem<'a> {
-    system: &'a System,
-    lines: &'a mut [Simulation],
-    layout: &'a SystemLayout,
-    slab: &'a TimeSlab,
-    points: &'a [PointMotion],
-    point_index: &'a [Vec<usize>],
-    point_nodes: &'a mut [PointNodes],
-    x_local: &'a mut [Vec<f64>],
-    residual_local: &'a mut [Vec<f64>],
-    unknown_scale: &'a [f64],
-    equation_scale: &'a [f64],
-}
-
-impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
-    fn evaluate(
-        &mut self,
-        x: &[f64],
-        residual: &mut [f64],
-        mut jacobian: Option<&mut BorderedMatrix>,
-    ) {
-        residual.fill(0.0);
-        if let Some(j) = jacobian.as_deref_mut() {
-            j.clear();
-        }
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let local = (&mut self.x_local[i][..], &mut self.residual_local[i][..]);
-            add_line_rows(
-                &self.layout.maps[i],
-                i,
-                x,
-                local,
-                residual,
-                jacobian.as_deref_mut(),
-                |xl, rl, view| line.assemble_line(xl, rl, view),
-            );
-        }
-        let layout = &self.layout.lines[0];
-        for (p, idx) in self.point_index.iter().enumerate() {
-            if idx.is_empty() {
-                continue;
-            }
-            let point = &self.system.points()[p];
-            let m = &self.points[p];
-            let terms = PointTerms {
-                mass: point.mass,
-                load: self.system.point_load(p),
-                index: idx,
-                layout,
-                slab: self.slab,
-            };
-            terms.expand(x, m.e, m.v, &mut self.point_nodes[p]);
-            let momentum = m.v.map(|v| point.mass * v);
-            terms.add(
-                &self.point_nodes[p],
-                momentum,
-                residual,
-                jacobian.as_deref_mut(),
-            );
-        }
-    }
-
-    fn residual_norm(&self, r: &[f64]) -> f64 {
-        crate::assembly::Scales::norm(self.equation_scale, r)
-    }
-
-    fn increment_norm(&self, dx: &[f64]) -> f64 {
-        crate::assembly::Scales::norm(self.unknown_scale, dx)
-    }
 }
