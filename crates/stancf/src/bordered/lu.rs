@@ -46,23 +46,15 @@ impl Factorization for BorderedLu {
                 column: e.column + blk.start,
             })?;
             let n = blk.n;
-            // W_i = L_i^-1 P_i B_i, column by column over B_i.
-            for (w, from) in blk.b.chunks_exact_mut(n).zip(&mut blk.w_from) {
-                let first = first_nonzero(w);
-                blk.a.forward(w, first);
-                *from = first_nonzero(w);
+            // Z_i = A_i^-1 B_i, column by column, over B_i.
+            for z in blk.b.chunks_exact_mut(n) {
+                blk.a.solve(z);
             }
-            // Y_i = C_i U_i^-1, row by row over C_i.
-            for (y, from) in blk.c.chunks_exact_mut(n).zip(&mut blk.y_from) {
-                *from = first_nonzero(y);
-                blk.a.row_times_upper_inverse(y, *from);
-            }
-            // S -= Y_i W_i at border_i x border_i.
-            for ((y, &y_from), &r) in blk.c.chunks_exact(n).zip(&blk.y_from).zip(&blk.border) {
-                let s_row = &mut m.d[r * nb..(r + 1) * nb];
-                for ((w, &w_from), &g) in blk.b.chunks_exact(n).zip(&blk.w_from).zip(&blk.border) {
-                    let from = y_from.max(w_from);
-                    s_row[g] -= dot(&y[from..], &w[from..]);
+            // S -= C_i Z_i at border_i x border_i.
+            for (r, c_row) in blk.c.chunks_exact(n).enumerate() {
+                let s_row = &mut m.d[blk.border[r] * nb..(blk.border[r] + 1) * nb];
+                for (z, &g) in blk.b.chunks_exact(n).zip(&blk.border) {
+                    s_row[g] -= dot(c_row, z);
                 }
             }
         }
@@ -81,26 +73,20 @@ impl Factorization for BorderedLu {
         for blk in &m.blocks {
             let n = blk.n;
             let y = &mut b_blocks[blk.start..blk.start + n];
-            blk.a.forward(y, 0);
-            for ((c_row, &from), &g) in blk.c.chunks_exact(n).zip(&blk.y_from).zip(&blk.border) {
-                b_border[g] -= dot(&c_row[from..], &y[from..]);
+            blk.a.solve(y);
+            for (c_row, &g) in blk.c.chunks_exact(n).zip(&blk.border) {
+                b_border[g] -= dot(c_row, y);
             }
         }
         dense_solve(&m.d, nb, &self.pivots, b_border);
         for blk in &m.blocks {
             let n = blk.n;
             let y = &mut b_blocks[blk.start..blk.start + n];
-            for ((w, &from), &g) in blk.b.chunks_exact(n).zip(&blk.w_from).zip(&blk.border) {
-                axpy(-b_border[g], &w[from..], &mut y[from..]);
+            for (z, &g) in blk.b.chunks_exact(n).zip(&blk.border) {
+                axpy(-b_border[g], z, y);
             }
-            blk.a.backward(y);
         }
     }
-}
-
-/// Index of the first nonzero entry of v (its length if none).
-fn first_nonzero(v: &[f64]) -> usize {
-    v.iter().position(|&x| x != 0.0).unwrap_or(v.len())
 }
 
 /// Dense LU with partial pivoting of the row-major n x n `s`, in place

@@ -22,29 +22,24 @@
 //!
 //! ```text
 //!   A_i = P_i L_i U_i              band LU with partial pivoting, per block
-//!   W_i = L_i^-1 P_i B_i           k_i forward substitutions, kept
-//!   Y_i = C_i U_i^-1               k_i row substitutions, kept
-//!   S   = D - sum_i Y_i W_i        (C_i A_i^-1 B_i) added at border_i x border_i
+//!   Z_i = A_i^-1 B_i               k_i band solves, kept
+//!   S   = D - sum_i C_i Z_i        each k_i x k_i product added at border_i x border_i
 //!   S   = P L U                    dense LU with partial pivoting, nb x nb
 //! ```
 //!
 //! and A x = b is solved as
 //!
 //! ```text
-//!   y_i      = L_i^-1 P_i b_i
-//!   s        = b_border - sum_i Y_i y_i
+//!   y_i      = A_i^-1 b_i
+//!   s        = b_border - sum_i C_i y_i
 //!   x_border = S^-1 s
-//!   x_i      = U_i^-1 (y_i - W_i x_border[border_i])
+//!   x_i      = y_i - Z_i x_border[border_i]
 //! ```
 //!
-//! Everything happens in place in the matrix's own storage (W_i
-//! overwrites B_i, Y_i C_i, S D), so factorization and solves never
-//! allocate. A line touches the border at its end nodes only: where that
-//! is the block's last rows, W_i and Y_i are zero above them (the forward
-//! and row substitutions start there) and cost almost nothing; at its
-//! first rows they fill in, one forward substitution per column. The cost
-//! is that of the band LUs plus at most `sum k_i n_i (kl_i + ku_i)` for W
-//! and Y, `sum k_i^2 n_i` for S, and `nb^3 / 3` for its LU.
+//! Everything happens in place in the matrix's own storage (Z_i overwrites
+//! B_i, S overwrites D), so factorization and solves never allocate. The
+//! cost is that of the band LUs plus `sum k_i^2 n_i` for S and `nb^3 / 3`
+//! for its LU.
 //!
 //! This file holds the matrix ([`BorderedMatrix`]); `lu.rs` its factors
 //! ([`BorderedLu`]) and the dense LU of S; `tests.rs` the checks against a
@@ -84,10 +79,6 @@ struct Block {
     a: BandLu,
     b: Vec<f64>,
     c: Vec<f64>,
-    /// After factorization: the first row of column k of W_i that can be
-    /// nonzero, and the first column of row k of Y_i.
-    w_from: Vec<usize>,
-    y_from: Vec<usize>,
 }
 
 /// A square matrix of band blocks bordered by a dense block (see the
@@ -138,8 +129,6 @@ impl BorderedMatrix {
                 a: BandLu::new(n, shape.kl, shape.ku),
                 b: vec![0.0; n * k],
                 c: vec![0.0; k * n],
-                w_from: vec![0; k],
-                y_from: vec![0; k],
             });
             start += n;
         }

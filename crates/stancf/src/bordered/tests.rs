@@ -308,3 +308,46 @@ fn factorize_and_solve_do_not_allocate() {
     lu.solve(&mut b);
     assert_eq!(buffers(&lu), before);
 }
+
+/// Blocks that touch the border only at their last rows or only at their
+/// first rows (a line's end at a free point), with entries that are not
+/// diagonally dominant, so the band LUs pivot: the forward and row
+/// substitutions that start at the first nonzero row must solve as a
+/// dense LU does.
+#[test]
+fn borders_at_a_blocks_end_or_start_solve_like_a_dense_lu_with_pivoting() {
+    let shapes = vec![shape(30, 3, 2, &[0, 1, 2]), shape(25, 2, 4, &[1, 2, 3])];
+    let nb = 4;
+    for (seed, at_end) in [(3u64, true), (4, false), (5, true), (6, false)] {
+        let size = 30 + 25 + nb;
+        let bs = 55;
+        let mut state = seed;
+        let mut a = vec![vec![0.0; size]; size];
+        for i in 0..size {
+            for j in 0..size {
+                if !in_structure(&shapes, nb, i, j) {
+                    continue;
+                }
+                // Border couplings only within 4 rows of the block's end
+                // (or start).
+                let near = |k: usize| match owner(&shapes, k) {
+                    Some((b, l)) => {
+                        let n = shapes[b].size;
+                        if at_end {
+                            l + 4 >= n
+                        } else {
+                            l < 4
+                        }
+                    }
+                    None => true,
+                };
+                if (i >= bs || j >= bs) && !(near(i) && near(j)) {
+                    continue;
+                }
+                a[i][j] = lcg(&mut state);
+            }
+        }
+        let mut lu = BorderedLu::new(&shapes, nb);
+        solve_and_check(&mut lu, &a, seed + 20);
+    }
+}
