@@ -7,7 +7,7 @@
 mod common;
 
 use common::{
-    expect_input_error, pendulum, read_csv, repo_file, run_to, scratch, stancf, text,
+    expect_input_error, one_rope, pendulum, read_csv, repo_file, run_to, scratch, stancf, text,
     write_scenario,
 };
 
@@ -16,32 +16,14 @@ use common::{
 /// line type's.
 fn rope(ba: &str, analysis: &str) -> String {
     format!(
-        r#"
-title = "damped rope"
-[[line_types]]
-name = "rope"
-diameter = 0.01
-mass_per_length = 0.08
-ea = 2.0e4
-ba = {ba}
-[[points]]
-id = 1
-type = "fixed"
-position = [0.0, 0.0, 0.0]
-[[points]]
-id = 2
-type = "fixed"
-position = [4.0, 0.0, 0.0]
-[[lines]]
-id = 1
-type = "rope"
-length = 4.0
-elements = 12
-a = 1
-b = 2
-[analysis]
-{analysis}
-"#
+        "{}[analysis]\n{analysis}\n",
+        one_rope(
+            "damped rope",
+            &format!("ba = {ba}"),
+            ("fixed", [4.0, 0.0, 0.0]),
+            (1, 4.0, 12),
+            ""
+        )
     )
 }
 

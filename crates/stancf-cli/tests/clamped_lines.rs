@@ -13,33 +13,14 @@ use common::*;
 /// `[analysis]` body.
 fn riser(clamp: &str, point2: &str, analysis: &str) -> String {
     format!(
-        r#"
-title = "riser"
-[[line_types]]
-name = "rope"
-diameter = 0.01
-mass_per_length = 0.08
-ea = 2.0e4
-ei = 0.05
-[[points]]
-id = 1
-type = "fixed"
-position = [0.0, 0.0, 0.0]
-[[points]]
-id = 2
-type = "{point2}"
-position = [3.0, 0.0, -1.0]
-[[lines]]
-id = 1
-type = "rope"
-length = 4.0
-elements = 16
-a = 1
-b = 2
-{clamp}
-[analysis]
-{analysis}
-"#
+        "{}[analysis]\n{analysis}\n",
+        one_rope(
+            "riser",
+            "ei = 0.05",
+            (point2, [3.0, 0.0, -1.0]),
+            (1, 4.0, 16),
+            clamp
+        )
     )
 }
 

@@ -18,32 +18,14 @@ fn hanging(grading: &str, analysis: &str) -> String {
         format!("grading = {grading}")
     };
     format!(
-        r#"
-title = "graded rope"
-[[line_types]]
-name = "rope"
-diameter = 0.01
-mass_per_length = 0.08
-ea = 2.0e4
-[[points]]
-id = 1
-type = "fixed"
-position = [0.0, 0.0, 0.0]
-[[points]]
-id = 2
-type = "fixed"
-position = [8.0, 0.0, 0.0]
-[[lines]]
-id = 7
-type = "rope"
-length = 10.0
-elements = 12
-a = 1
-b = 2
-{grading}
-[analysis]
-{analysis}
-"#
+        "{}[analysis]\n{analysis}\n",
+        one_rope(
+            "graded rope",
+            "",
+            ("fixed", [8.0, 0.0, 0.0]),
+            (7, 10.0, 12),
+            &grading
+        )
     )
 }
 

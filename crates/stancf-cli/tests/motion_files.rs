@@ -12,38 +12,9 @@ use common::*;
 /// stepped for `duration` s in steps of 0.1 ms written every 10th.
 fn fairlead(motion: &str, duration: f64) -> String {
     format!(
-        r#"
-title = "table"
-[[line_types]]
-name = "rope"
-diameter = 0.01
-mass_per_length = 0.08
-ea = 2.0e4
-[[points]]
-id = 1
-type = "fixed"
-position = [0.0, 0.0, 0.0]
-[[points]]
-id = 2
-type = "coupled"
-position = [1.0, 0.0, 0.0]
-[[lines]]
-id = 1
-type = "rope"
-length = 1.0
-elements = 4
-a = 1
-b = 2
-[[motions]]
-point = 2
-{motion}
-[analysis]
-type = "dynamic"
-time_step = 1e-4
-duration = {duration}
-[output]
-every = 10
-"#
+        "{}[[motions]]\npoint = 2\n{motion}\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 1e-4\nduration = {duration}\n[output]\nevery = 10\n",
+        one_rope("table", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
     )
 }
 

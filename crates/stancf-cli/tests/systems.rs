@@ -33,20 +33,7 @@ fn bridle(mass: f64, analysis: &str) -> String {
     format!(
         r#"
 title = "bridle"
-[[line_types]]
-name = "rope"
-diameter = 0.01
-mass_per_length = 0.08
-ea = 2.0e4
-[[points]]
-id = 1
-type = "fixed"
-position = [0.0, 0.0, 0.0]
-[[points]]
-id = 2
-type = "fixed"
-position = [6.0, 0.0, 1.0]
-[[points]]
+{}{}{}[[points]]
 id = 3
 type = "free"
 position = [2.5, 0.0, -2.5]
@@ -67,7 +54,10 @@ a = 2
 b = 3
 [analysis]
 {analysis}
-"#
+"#,
+        rope_type(""),
+        toml_point(1, "fixed", [0.0; 3]),
+        toml_point(2, "fixed", [6.0, 0.0, 1.0]),
     )
 }
 

@@ -30,10 +30,6 @@ fn benches(c: &mut Criterion) {
     });
     let mut single = one_line(false);
     g.bench_function("one_line_of_120", |b| b.iter(|| single.step().unwrap()));
-    let mut planar = one_line(true);
-    g.bench_function("one_line_of_120_planar_reduced", |b| {
-        b.iter(|| planar.step().unwrap())
-    });
     g.finish();
 }
 

@@ -200,21 +200,14 @@ impl BandLu {
 
     /// Solves A x = b in place with the factors.
     pub fn solve(&self, b: &mut [f64]) {
-        self.forward(b, 0);
-        self.backward(b);
-    }
-
-    /// b <- L^-1 P b: the row interchanges and L, column by column.
-    /// `from`: b is zero above this row (the interchanges and L of the
-    /// columns before `from - kl` only move and combine zeros, so they
-    /// are skipped; 0 when nothing is known).
-    pub fn forward(&self, b: &mut [f64], from: usize) {
         let n = self.a.n;
         let kl = self.a.kl;
+        let ku = self.a.ku;
         let ld = self.a.ld;
-        let diag = kl + self.a.ku;
+        let diag = kl + ku;
         let data = &self.a.data;
-        for j in from.saturating_sub(kl)..n {
+        // Forward: apply the interchanges and L column by column.
+        for j in 0..n {
             let p = self.pivots[j];
             if p != j {
                 b.swap(j, p);
@@ -231,15 +224,7 @@ impl BandLu {
                 }
             }
         }
-    }
-
-    /// b <- U^-1 b (U has kl + ku super-diagonals).
-    pub fn backward(&self, b: &mut [f64]) {
-        let n = self.a.n;
-        let (kl, ku) = (self.a.kl, self.a.ku);
-        let ld = self.a.ld;
-        let diag = kl + ku;
-        let data = &self.a.data;
+        // Backward: U has kl + ku super-diagonals.
         for j in (0..n).rev() {
             let base = j * ld + diag - j;
             b[j] /= data[base + j];
@@ -250,27 +235,6 @@ impl BandLu {
                     *bi -= u * bj;
                 }
             }
-        }
-    }
-
-    /// c <- c U^-1 for a row vector c (y U = c, solved column by column:
-    /// y_j = (c_j - sum_i y_i U_ij) / U_jj over U's column j, which is
-    /// contiguous). `from`: c is zero before this column (so is y).
-    pub fn row_times_upper_inverse(&self, c: &mut [f64], from: usize) {
-        let n = self.a.n;
-        let (kl, ku) = (self.a.kl, self.a.ku);
-        let ld = self.a.ld;
-        let diag = kl + ku;
-        let data = &self.a.data;
-        for j in from..n {
-            let base = j * ld + diag - j;
-            let lo = j.saturating_sub(kl + ku).max(from);
-            let s: f64 = c[lo..j]
-                .iter()
-                .zip(&data[base + lo..base + j])
-                .map(|(y, u)| y * u)
-                .sum();
-            c[j] = (c[j] - s) / data[base + j];
         }
     }
 }

@@ -6,22 +6,13 @@
 //! matrix: the momentum the next step starts from, M v_a, must be the
 //! momentum the last step ended with, p_b.
 
+mod common;
+use common::light_rope;
 use stancf::observe::momentum;
 use stancf::system::{End, Line, Point, System, SystemSimulation};
-use stancf::{Cable, ElementType, Material, Model, ModelOptions, StepSettings, TimeScheme};
+use stancf::{Cable, ElementType, Model, ModelOptions, StepSettings, TimeScheme};
 
 const POINT_MASS: f64 = 0.2;
-
-/// A rope of EA 2 N and 2 g/m (wave speed 32 m/s).
-fn rope() -> Material {
-    Material {
-        youngs_modulus: 1e6,
-        density: 1000.0,
-        area: 2e-6,
-        second_moment: 2e-12,
-        axial_damping: 0.0,
-    }
-}
 
 /// Three 1 m lines from the origin at 120 degrees in the x-y plane, ends
 /// A at a free point of 0.2 kg, ends B loose, no loads; spinning at
@@ -34,7 +25,8 @@ fn spinning_star(element_type: ElementType, drift: [f64; 3]) -> (System, Vec<sta
         let angle = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
         let cable =
             Cable::straight(1.0, 8, element_type).with_direction([angle.cos(), angle.sin(), 0.0]);
-        let model = Model::new(cable, rope(), ModelOptions::default(), vec![]).expect("model");
+        let model =
+            Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
         let mut state = model.initial_state();
         model.add_rigid_rotation(&mut state, [0.0, 0.0, 3.0], [0.0; 3]);
         for node in 0..model.nodes() {

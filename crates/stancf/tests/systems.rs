@@ -2,27 +2,16 @@
 //! one line is the single cable; a coupled point carries its line end
 //! along its motion.
 
+mod common;
+use common::light_rope;
 use stancf::constraints::Oscillation;
 use stancf::system::{End, Line, Point, System, SystemSimulation};
 use stancf::{
-    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
-    ModelOptions, Simulation, StepSettings,
+    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Model, ModelOptions,
+    Simulation, StepSettings,
 };
 
 const G: [f64; 3] = [0.0, -9.81, 0.0];
-
-/// A light rope: 2 mm^2 at 1 MPa (1 % strain under its own weight over a
-/// metre, wave speed 32 m/s), bending stiffness 1e-6 of
-/// its axial one over a metre squared.
-fn rope() -> Material {
-    Material {
-        youngs_modulus: 1e6,
-        density: 1000.0,
-        area: 2e-6,
-        second_moment: 2e-12,
-        axial_damping: 0.0,
-    }
-}
 
 fn line_model(length: f64, elements: usize, origin: [f64; 3]) -> Model {
     let cable = Cable::straight(length, elements, ElementType::Sac2)
@@ -30,7 +19,7 @@ fn line_model(length: f64, elements: usize, origin: [f64; 3]) -> Model {
         .with_direction([1.0, 0.0, 0.0]);
     Model::new(
         cable,
-        rope(),
+        light_rope(),
         ModelOptions::default(),
         vec![Load::Gravity { acceleration: G }],
     )

@@ -74,6 +74,43 @@ quadrature = [3, 3]
 every = 4
 "#;
 
+/// The rope line type of the system tests: 10 mm, 0.08 kg/m, EA 2e4 N
+/// (a TOML `[[line_types]]` entry named "rope"), with `extra_keys` (TOML
+/// lines such as `ba = 20.0`, or "") added to it.
+pub fn rope_type(extra_keys: &str) -> String {
+    format!(
+        "[[line_types]]\nname = \"rope\"\ndiameter = 0.01\nmass_per_length = 0.08\n\
+         ea = 2.0e4\n{extra_keys}\n"
+    )
+}
+
+/// A `[[points]]` entry: `id`, `kind` ("fixed", "coupled", "free") and
+/// `position`.
+pub fn toml_point(id: u32, kind: &str, position: [f64; 3]) -> String {
+    format!("[[points]]\nid = {id}\ntype = \"{kind}\"\nposition = {position:?}\n")
+}
+
+/// A system of one rope line (type [`rope_type`] with `type_keys`) from
+/// fixed point 1 at the origin to point 2 (`kind` at `b`): line `id`,
+/// `length` m in `elements` elements, with `line_keys` (TOML lines, or
+/// "") added to its `[[lines]]` entry. The caller appends the other
+/// sections (`[[motions]]`, `[analysis]`, `[output]`).
+pub fn one_rope(
+    title: &str,
+    type_keys: &str,
+    (kind, b): (&str, [f64; 3]),
+    (id, length, elements): (u32, f64, usize),
+    line_keys: &str,
+) -> String {
+    format!(
+        "title = \"{title}\"\n{}{}{}[[lines]]\nid = {id}\ntype = \"rope\"\n\
+         length = {length:?}\nelements = {elements}\na = 1\nb = 2\n{line_keys}\n",
+        rope_type(type_keys),
+        toml_point(1, "fixed", [0.0; 3]),
+        toml_point(2, kind, b),
+    )
+}
+
 /// The paper's free pendulum (4 SAC-2, pinned at A, gravity) with the
 /// given title, step and duration: cheap, smooth, and with reactions.
 pub fn pendulum(title: &str, time_step: f64, duration: f64, every: usize) -> String {

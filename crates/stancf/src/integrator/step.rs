@@ -170,18 +170,12 @@ impl Simulation {
     /// constrained ones). Call after [`Self::expand_step`].
     pub(crate) fn free_end_momentum(&mut self) -> &[f64] {
         let n = self.model.dofs();
-        let last = self.layout.layers();
-        let constraints = &self.model.constraints;
         for g in 0..n {
-            self.mass_v[g] = if constraints.is_constrained(g) {
-                self.start.fixed_v[last * n + g]
-            } else {
-                0.0
-            };
+            self.mass_v[g] = self.prescribed_end_rate(g).unwrap_or(0.0);
         }
         self.model.mass_times(&self.mass_v, &mut self.rhs);
         for g in 0..n {
-            self.rhs[g] = if constraints.is_constrained(g) {
+            self.rhs[g] = if self.model.constraints.is_constrained(g) {
                 0.0
             } else {
                 self.scratch.end_momentum[g] - self.rhs[g]
@@ -198,14 +192,21 @@ impl Simulation {
         let n = self.model.dofs();
         let last = self.layout.layers();
         for g in 0..n {
-            self.rhs[g] = if self.model.constraints.is_constrained(g) {
-                self.start.fixed_v[last * n + g]
-            } else {
-                free_rate(g)
-            };
+            self.rhs[g] = self.prescribed_end_rate(g).unwrap_or_else(|| free_rate(g));
             self.scratch.node_v[last * n + g] = self.rhs[g];
         }
         self.model.mass_times(&self.rhs, &mut self.mass_v);
+    }
+
+    /// The prescribed rate of coordinate g at the step's end (None if it
+    /// is free).
+    fn prescribed_end_rate(&self, g: usize) -> Option<f64> {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        self.model
+            .constraints
+            .is_constrained(g)
+            .then(|| self.start.fixed_v[last * n + g])
     }
 
     /// Galerkin: the line's share of the end impulse at coordinate g,
@@ -334,11 +335,9 @@ impl Simulation {
         if let Some(lu) = &self.mass_lu {
             // p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates.
             for g in 0..n {
-                self.rhs[g] = if self.model.constraints.is_constrained(g) {
-                    self.start.fixed_v[n + g]
-                } else {
-                    self.scratch.end_momentum[g]
-                };
+                self.rhs[g] = self
+                    .prescribed_end_rate(g)
+                    .unwrap_or(self.scratch.end_momentum[g]);
             }
             lu.solve(&mut self.rhs);
             self.model.mass_times(&self.rhs, &mut self.mass_v);

@@ -227,6 +227,33 @@ pub(super) fn add_line_rows(
     map.add_rows(local_rows, residual);
 }
 
+/// Every line's rows at the system's x added to `residual` and their
+/// Jacobian entries to `jacobian` ([`add_line_rows`] line by line):
+/// `assemble(line, x_line, rows_line, view)` evaluates one line in its
+/// own numbering; `locals` are the lines' buffers for their unknowns and
+/// rows.
+pub(super) fn add_lines_rows<L>(
+    lines: &mut [L],
+    maps: &[LineMap],
+    (x_local, rows_local): (&mut [Vec<f64>], &mut [Vec<f64>]),
+    x: &[f64],
+    residual: &mut [f64],
+    mut jacobian: Option<&mut BorderedMatrix>,
+    assemble: impl Fn(&mut L, &[f64], &mut [f64], Option<&mut LineView>),
+) {
+    for (i, line) in lines.iter_mut().enumerate() {
+        add_line_rows(
+            &maps[i],
+            i,
+            x,
+            (&mut x_local[i][..], &mut rows_local[i][..]),
+            residual,
+            jacobian.as_deref_mut(),
+            |xl, rl, view| assemble(line, xl, rl, view),
+        );
+    }
+}
+
 /// One line's share of the bordered Jacobian, in the line's numbering.
 pub(super) struct LineView<'a> {
     pub entries: BlockEntries<'a>,

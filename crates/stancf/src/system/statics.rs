@@ -20,7 +20,7 @@
 //! ramping the loads from zero, no increment meets a slack line without
 //! load (whose shape nothing determines).
 
-use super::layout::{add_line_rows, SystemLayout};
+use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::{End, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
@@ -213,20 +213,17 @@ impl SystemEquations {
         &mut self,
         x: &[f64],
         residual: &mut [f64],
-        mut jacobian: Option<&mut BorderedMatrix>,
+        jacobian: Option<&mut BorderedMatrix>,
     ) {
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let local = (&mut self.x_local[i][..], &mut self.residual_local[i][..]);
-            add_line_rows(
-                &self.layout.maps[i],
-                i,
-                x,
-                local,
-                residual,
-                jacobian.as_deref_mut(),
-                |xl, rl, view| line.assemble_into(xl, rl, view),
-            );
-        }
+        add_lines_rows(
+            &mut self.lines,
+            &self.layout.maps,
+            (&mut self.x_local, &mut self.residual_local),
+            x,
+            residual,
+            jacobian,
+            |line, xl, rl, view| line.assemble_into(xl, rl, view),
+        );
     }
 }
 

@@ -3,7 +3,7 @@
 //! bordered numbering and the free points' own rows, with the
 //! convergence scales of the system's unknowns and rows (§7.1).
 
-use super::layout::{add_line_rows, SystemLayout};
+use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
 use super::simulation::PointMotion;
 use super::{End, System};
@@ -100,18 +100,15 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
         if let Some(j) = jacobian.as_deref_mut() {
             j.clear();
         }
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let local = (&mut self.x_local[i][..], &mut self.residual_local[i][..]);
-            add_line_rows(
-                &self.layout.maps[i],
-                i,
-                x,
-                local,
-                residual,
-                jacobian.as_deref_mut(),
-                |xl, rl, view| line.assemble_line(xl, rl, view),
-            );
-        }
+        add_lines_rows(
+            self.lines,
+            &self.layout.maps,
+            (self.x_local, self.residual_local),
+            x,
+            residual,
+            jacobian.as_deref_mut(),
+            |line, xl, rl, view| line.assemble_line(xl, rl, view),
+        );
         let layout = &self.layout.lines[0];
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {
