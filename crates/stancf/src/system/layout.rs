@@ -10,7 +10,7 @@ use super::{End, System};
 use crate::assembly::{Scheme, SlabLayout};
 use crate::bordered::{BlockEntries, BlockShape, BorderedMatrix};
 use crate::constraints::ConstraintMethod;
-use crate::linear::AddEntries;
+use crate::linear::{AddEntries, Jacobian};
 use crate::model::Model;
 
 /// Marks a local index that goes to the border while numbering.
@@ -227,8 +227,10 @@ pub(super) fn add_line_rows(
     map.add_rows(local_rows, residual);
 }
 
-/// Every line's rows at the system's x added to `residual` and their
-/// Jacobian entries to `jacobian` ([`add_line_rows`] line by line):
+/// Every line's rows at the system's x into `residual` and their
+/// Jacobian entries into `jacobian`, both cleared first
+/// ([`add_line_rows`] line by line; the points' own terms are added
+/// after):
 /// `assemble(line, x_line, rows_line, view)` evaluates one line in its
 /// own numbering; `locals` are the lines' buffers for their unknowns and
 /// rows.
@@ -241,6 +243,10 @@ pub(super) fn add_lines_rows<L>(
     mut jacobian: Option<&mut BorderedMatrix>,
     assemble: impl Fn(&mut L, &[f64], &mut [f64], Option<&mut LineView>),
 ) {
+    residual.fill(0.0);
+    if let Some(j) = jacobian.as_deref_mut() {
+        j.clear();
+    }
     for (i, line) in lines.iter_mut().enumerate() {
         add_line_rows(
             &maps[i],

@@ -208,7 +208,8 @@ impl SystemStatics {
 }
 
 impl SystemEquations {
-    /// Each line's rows at x, with their Jacobians added to `jacobian`.
+    /// Each line's rows at x into `residual` and their Jacobians into
+    /// `jacobian` (both cleared first).
     fn line_rows(
         &mut self,
         x: &[f64],
@@ -230,16 +231,7 @@ impl SystemEquations {
 impl StaticEquations for SystemEquations {
     type Matrix = BorderedMatrix;
 
-    fn evaluate(
-        &mut self,
-        x: &[f64],
-        residual: &mut [f64],
-        mut jacobian: Option<&mut BorderedMatrix>,
-    ) {
-        residual.fill(0.0);
-        if let Some(j) = jacobian.as_deref_mut() {
-            j.clear();
-        }
+    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BorderedMatrix>) {
         self.line_rows(x, residual, jacobian);
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {

@@ -10,7 +10,6 @@ use super::{End, System};
 use crate::bordered::BorderedMatrix;
 use crate::element::TimeSlab;
 use crate::integrator::Simulation;
-use crate::linear::Jacobian;
 use crate::model::{coordinate, SLOT_R};
 use crate::solver::NonlinearSystem;
 
@@ -96,10 +95,6 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
         residual: &mut [f64],
         mut jacobian: Option<&mut BorderedMatrix>,
     ) {
-        residual.fill(0.0);
-        if let Some(j) = jacobian.as_deref_mut() {
-            j.clear();
-        }
         add_lines_rows(
             self.lines,
             &self.layout.maps,
