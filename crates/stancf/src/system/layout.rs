@@ -216,10 +216,7 @@ pub(super) fn add_line_rows(
     map.gather(x, local_x);
     match jacobian {
         Some(matrix) => {
-            let mut view = LineView {
-                entries: matrix.block_entries(block),
-                place: &map.place,
-            };
+            let mut view = LineView::new(matrix.block_entries(block), map);
             assemble(local_x, local_rows, Some(&mut view));
         }
         None => assemble(local_x, local_rows, None),
@@ -262,12 +259,21 @@ pub(super) fn add_lines_rows<L>(
 
 /// One line's share of the bordered Jacobian, in the line's numbering.
 pub(super) struct LineView<'a> {
-    pub entries: BlockEntries<'a>,
-    pub place: &'a [usize],
+    entries: BlockEntries<'a>,
+    place: &'a [usize],
+}
+
+impl<'a> LineView<'a> {
+    pub fn new(entries: BlockEntries<'a>, map: &'a LineMap) -> Self {
+        LineView {
+            entries,
+            place: &map.place,
+        }
+    }
 }
 
 impl AddEntries for LineView<'_> {
-    #[inline]
+    #[inline(always)]
     fn add(&mut self, i: usize, j: usize, value: f64) {
         self.entries.add(self.place[i], self.place[j], value);
     }

@@ -45,10 +45,7 @@ impl SystemMass {
         let mut lu = BorderedLu::new(&layout.shapes, layout.border);
         for (i, model) in lines.iter().enumerate() {
             let numbering = &layout.lines[i];
-            let mut view = LineView {
-                entries: lu.matrix_mut().block_entries(i),
-                place: &layout.maps[i].place,
-            };
+            let mut view = LineView::new(lu.matrix_mut().block_entries(i), &layout.maps[i]);
             let dpn = model.dofs_per_node();
             crate::with_elements!(&model.mesh, els => {
                 for (k, el) in els.iter().enumerate() {
