@@ -31,6 +31,7 @@
 //! | [`motion`] | motions of coupled points: oscillations and interpolated tables |
 //! | [`system`] | lines joined at fixed, free and coupled points, and their step |
 //! | [`catenary`] | the closed-form elastic catenary of a line between two points (Irvine) |
+//! | [`water`] | the sea: density, depth, currents, waves, and the loads of water on a line |
 //!
 //! The physics never touches files, terminals or the clock; the `stancf`
 //! command-line tool (crate `stancf-cli`) does.
@@ -54,6 +55,7 @@ pub mod solver;
 pub mod stability;
 pub mod statics;
 pub mod system;
+pub mod water;
 
 pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};
 pub use element::{AxialStrain, Curvature, Measures};

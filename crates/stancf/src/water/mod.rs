@@ -1,0 +1,5 @@
+//! Lines in water (docs/method.md §12): the sea a line sees (density,
+//! depth, currents, waves) and the loads it puts on the line at the
+//! slab's space-time Gauss points.
+//!
+//! z is up, the still water surface is z = 0 and the seabed z = -depth.
