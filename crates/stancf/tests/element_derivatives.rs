@@ -89,7 +89,7 @@ fn check_slab<const NS: usize, const ND: usize>(
     label: &str,
 ) {
     let g = &loads.gravity;
-    let conservative = loads.drag.is_empty();
+    let conservative = loads.drag.is_empty() && loads.seabed.is_none();
     let mut d = SlabDerivatives::<ND>::default();
     el.slab_derivatives(slab, y, loads, true, &mut d);
     let a0 = el.slab_action(slab, y, g);
@@ -288,6 +288,7 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
         let loads = SlabLoads {
             gravity: [0.0, -9.81, 0.0],
             drag: &drag,
+            seabed: None,
         };
         let r = rules(3, 3);
         let s = slab(0.05, 3);
@@ -343,6 +344,49 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
         let e = rel_diff(&got, &exp);
         assert!(e < 1e-13, "{model:?}: drag work rel. error {e:e}");
     }
+}
+
+/// With a seabed (docs/method.md §12.5, (W40)-(W47)): a tilted bed
+/// through the element's random state, so some Gauss points are in
+/// contact, sliding with friction; the slab Jacobian (velocity, tangent
+/// and position parts of the contact force) against differences of the
+/// gradient, in SAC-2 and SAC-3.
+#[test]
+fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
+    use stancf::water::{Seabed, SeabedContact};
+    let mut rng = Rng(0x5eab_ed00_1234_9876);
+    let n: [f64; 3] = [0.2, -0.1, 1.0];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let bed = Seabed {
+        point: [0.2, 0.0, 0.0],
+        normal: n.map(|c| c / len),
+        stiffness: 1e5,
+        damping: 2e3,
+        friction_axial: 0.5,
+        friction_transverse: 0.9,
+        slip_velocity: 0.3,
+    };
+    let contact = SeabedContact {
+        seabed: bed,
+        diameter: 0.5,
+    };
+    let loads = SlabLoads {
+        gravity: [0.0, 0.0, -9.81],
+        drag: &[],
+        seabed: Some(&contact),
+    };
+    let s = slab(0.05, 3);
+    let r = rules(3, 3);
+    let el2 = sac2(0.4, ALL_MEASURES[0], &r);
+    let y2 = random_slab_state::<4, 12>(&mut rng, 0.4, 0.2);
+    check_slab(&el2, &s, &y2, &loads, "SAC-2 seabed");
+    let mut d = SlabDerivatives::<12>::default();
+    el2.slab_derivatives(&s, &y2, &loads, false, &mut d);
+    assert!(d.seabed_work != 0.0, "the state touches the bed");
+    let r5 = rules(5, 5);
+    let el3 = sac3(0.4, ALL_MEASURES[2], &r5);
+    let y3 = random_slab_state::<6, 18>(&mut rng, 0.4, 0.2);
+    check_slab(&el3, &s, &y3, &loads, "SAC-3 seabed");
 }
 
 /// The residual path's gradient-only densities are the full densities'

@@ -79,6 +79,8 @@ pub struct AssemblyScratch {
     /// Work of the axial damping over the step (-int int BA eps_dot^2 dx
     /// dt; docs/method.md §2.10).
     pub damping_work: f64,
+    /// Work of the seabed contact over the step (W47).
+    pub seabed_work: f64,
     /// Galerkin: dA/de_b, the momentum at the end of the step.
     pub end_momentum: Vec<f64>,
 }
@@ -95,6 +97,7 @@ impl AssemblyScratch {
             reaction_rows: vec![0.0; layout.row_slots.len() * n],
             drag_work: 0.0,
             damping_work: 0.0,
+            seabed_work: 0.0,
             end_momentum: vec![0.0; n],
         }
     }
@@ -234,6 +237,7 @@ impl StepProblem<'_> {
         scratch.end_momentum.fill(0.0);
         scratch.drag_work = 0.0;
         scratch.damping_work = 0.0;
+        scratch.seabed_work = 0.0;
         self.expand(x, scratch);
         let jac = jacobian.as_deref_mut();
         let mut derivs2 = std::mem::take(&mut scratch.derivs2);

@@ -57,6 +57,7 @@ impl StepProblem<'_> {
         let loads = SlabLoads {
             gravity: g.map(|c| c * self.start.load_factor),
             drag: &self.model.drag,
+            seabed: self.model.seabed.as_ref(),
         };
         let mut block = [[0.0; ND]; ND];
         for j in 0..layout.layers() {
@@ -76,6 +77,7 @@ impl StepProblem<'_> {
                 el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
                 scratch.drag_work += derivs.drag_work;
                 scratch.damping_work += derivs.damping_work;
+                scratch.seabed_work += derivs.seabed_work;
                 let targets = self.element_targets::<ND>(k, &row_slots);
                 for m in 0..4 {
                     for d in 0..ND {
@@ -176,6 +178,11 @@ impl StepProblem<'_> {
                     &mut grad,
                     want.then_some(&mut hess),
                 );
+            }
+            // A line at rest on the bed: its contact force f(r, r_x, 0),
+            // whole at every load factor (the bed is there from the start).
+            if let Some(contact) = &self.model.seabed {
+                el.add_static_seabed(contact, 1.0, &q, &mut grad, want.then_some(&mut hess));
             }
             let fg = el.gravity_load(&gravity);
             for d in 0..ND {

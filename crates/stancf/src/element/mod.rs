@@ -42,6 +42,7 @@ mod curvature;
 mod damping;
 mod drag;
 mod energy;
+mod seabed;
 mod slab;
 mod strain;
 

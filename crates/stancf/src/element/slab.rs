@@ -56,7 +56,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out.action = 0.0;
         out.drag_work = 0.0;
         out.damping_work = 0.0;
-        out.has_drag = !loads.drag.is_empty();
+        out.seabed_work = 0.0;
+        out.has_drag = !loads.drag.is_empty() || loads.seabed.is_some();
         out.has_damping = self.section.ba != 0.0;
         let rates = out.has_drag || out.has_damping;
         let np = slab.points.len();
@@ -91,6 +92,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             };
             if out.has_damping {
                 self.slab_damping_at_point(tp.w_dt, &q, &qdot, at, &mut fq, out);
+            }
+            if let Some(contact) = loads.seabed {
+                self.slab_seabed_at_point(contact, tp.w_dt, (&q, &qdot), at, &mut fq, out);
             }
             for m in 0..4 {
                 let a = tp.w_dt * tp.shape.t_dot[m];
@@ -158,8 +162,9 @@ pub struct SlabDerivatives<const ND: usize> {
     pub grad: [[f64; ND]; 4],
     /// d2U/dq2 at q(t_g), one per time Gauss point.
     pub k_at_points: Vec<[[f64; ND]; ND]>,
-    /// Drag: whether there is any, int f . r_dot over the slab (its work,
-    /// negative in still air), and the matrices C_g, G_g per time point.
+    /// Drag (and the seabed, which shares its matrices): whether there is
+    /// any, int f . r_dot over the slab (the drag's work, negative in
+    /// still air), and the matrices C_g, G_g per time point.
     pub has_drag: bool,
     pub drag_work: f64,
     /// Axial damping (docs/method.md §2.10): whether there is any (BA !=
@@ -167,6 +172,8 @@ pub struct SlabDerivatives<const ND: usize> {
     /// over the slab, -int int BA eps_dot^2 dx dt (never positive).
     pub has_damping: bool,
     pub damping_work: f64,
+    /// The seabed's work over the slab, int int f . r_dot dx dt (W47).
+    pub seabed_work: f64,
     pub c_at_points: Vec<[[f64; ND]; ND]>,
     pub g_at_points: Vec<[[f64; ND]; ND]>,
 }
@@ -181,6 +188,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             drag_work: 0.0,
             has_damping: false,
             damping_work: 0.0,
+            seabed_work: 0.0,
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
         }
@@ -193,6 +201,8 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
 pub struct SlabLoads<'a> {
     pub gravity: [f64; 3],
     pub drag: &'a [crate::loads::AirDrag],
+    /// The seabed, if the line can touch one (docs/method.md §12.5).
+    pub seabed: Option<&'a crate::water::SeabedContact>,
 }
 
 impl SlabLoads<'_> {
@@ -201,6 +211,7 @@ impl SlabLoads<'_> {
         SlabLoads {
             gravity: g,
             drag: &[],
+            seabed: None,
         }
     }
 }

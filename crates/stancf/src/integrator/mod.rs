@@ -124,6 +124,8 @@ pub struct Simulation {
     drag_work: f64,
     /// Work done on the cable by its axial damping (never positive).
     damping_work: f64,
+    /// Work done on the cable by the seabed (penalty, damping, friction).
+    seabed_work: f64,
     /// Unwrapped angles of the end moments.
     moment_angles: Vec<MomentAngle>,
     /// What is needed to undo the last step.
@@ -148,6 +150,7 @@ struct Undo {
     constraint_work: f64,
     drag_work: f64,
     damping_work: f64,
+    seabed_work: f64,
     moment_angles: Vec<MomentAngle>,
     reactions: Vec<(usize, [f64; 3])>,
 }
@@ -232,12 +235,19 @@ impl Simulation {
         self.damping_work
     }
 
+    /// Work done on the cable by the seabed so far: the slab integral of
+    /// f . r_dot of the contact force (W47), its penalty's elastic part
+    /// included (the bed's potential is not in the energies).
+    pub fn seabed_work(&self) -> f64 {
+        self.seabed_work
+    }
+
     /// Work done on the cable by everything that is not a potential:
-    /// moving constraints, drag and axial damping, so that
+    /// moving constraints, drag, axial damping and the seabed, so that
     /// `energies().mechanical() - external_work()` stays at its initial
     /// value up to the scheme's error (docs/method.md §8).
     pub fn external_work(&self) -> f64 {
-        self.constraint_work + self.drag_work + self.damping_work
+        self.constraint_work + self.drag_work + self.damping_work + self.seabed_work
     }
 
     /// Energies of the current state; `load_potential` includes -M theta

@@ -91,6 +91,7 @@ impl Simulation {
             constraint_work: 0.0,
             drag_work: 0.0,
             damping_work: 0.0,
+            seabed_work: 0.0,
             moment_angles: moment_angles.clone(),
             reactions: reactions.clone(),
         };
@@ -114,6 +115,7 @@ impl Simulation {
             constraint_work: 0.0,
             drag_work: 0.0,
             damping_work: 0.0,
+            seabed_work: 0.0,
             moment_angles,
             previous,
             clock: None,

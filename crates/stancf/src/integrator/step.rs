@@ -105,6 +105,7 @@ impl Simulation {
         self.constraint_work = self.previous.constraint_work;
         self.drag_work = self.previous.drag_work;
         self.damping_work = self.previous.damping_work;
+        self.seabed_work = self.previous.seabed_work;
         self.moment_angles
             .copy_from_slice(&self.previous.moment_angles);
         self.reactions.copy_from_slice(&self.previous.reactions);
@@ -291,6 +292,7 @@ impl Simulation {
         self.previous.constraint_work = self.constraint_work;
         self.previous.drag_work = self.drag_work;
         self.previous.damping_work = self.damping_work;
+        self.previous.seabed_work = self.seabed_work;
         self.previous
             .moment_angles
             .copy_from_slice(&self.moment_angles);
@@ -312,10 +314,14 @@ impl Simulation {
             && (self.layout.method == ConstraintMethod::Elimination
                 || self.model.constraints.has_inactive());
         let galerkin = self.mass_lu.is_some();
-        if eliminated || galerkin || !self.model.drag.is_empty() || self.model.has_axial_damping() {
+        let works = !self.model.drag.is_empty()
+            || self.model.has_axial_damping()
+            || self.model.seabed.is_some();
+        if eliminated || galerkin || works {
             problem.residual(&self.x, &mut self.workspace.spare, &mut self.scratch);
             self.drag_work += self.scratch.drag_work;
             self.damping_work += self.scratch.damping_work;
+            self.seabed_work += self.scratch.seabed_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);
         }

@@ -18,6 +18,9 @@ pub enum Load {
     EndMoment { node: usize, moment: [f64; 3] },
     /// Air drag along the whole cable, eq. (17) (see [`crate::loads::AirDrag`]).
     AirDrag(crate::loads::AirDrag),
+    /// Contact with a seabed, with friction (docs/method.md §12.5; see
+    /// [`crate::water::SeabedContact`]). At most one per cable.
+    Seabed(crate::water::SeabedContact),
 }
 
 /// Checks `loads` on a cable of `elements` elements and returns the sum of
@@ -60,6 +63,7 @@ pub(super) fn gravity_and_drag(
                     gravity[c] += acceleration[c];
                 }
             }
+            Load::Seabed(_) => {}
             Load::PointForce { node, force: v } | Load::EndMoment { node, moment: v } => {
                 let name = match load {
                     Load::PointForce { .. } => "force",
@@ -76,6 +80,49 @@ pub(super) fn gravity_and_drag(
         }
     }
     Ok((gravity, drag))
+}
+
+/// The one seabed among `loads`, checked: a unit normal, finite point,
+/// kBot > 0, cBot, friction coefficients >= 0, slip velocity > 0.
+pub(super) fn seabed(loads: &[Load]) -> Result<Option<crate::water::SeabedContact>, ModelError> {
+    let mut found = None;
+    for (i, load) in loads.iter().enumerate() {
+        let Load::Seabed(c) = load else { continue };
+        let k = format!("loads[{i}]");
+        if found.is_some() {
+            return Err(ModelError::invalid(
+                k,
+                "a second seabed (a cable touches one)",
+            ));
+        }
+        let bed = &c.seabed;
+        check_vector(&format!("{k}.point"), &bed.point)?;
+        check_vector(&format!("{k}.normal"), &bed.normal)?;
+        let norm = crate::element::dot(&bed.normal, &bed.normal).sqrt();
+        if (norm - 1.0).abs() > 1e-12 {
+            return Err(ModelError::invalid(
+                format!("{k}.normal"),
+                format!("must be a unit vector, has length {norm}"),
+            ));
+        }
+        check_positive(&format!("{k}.diameter"), c.diameter)?;
+        check_positive(&format!("{k}.stiffness"), bed.stiffness)?;
+        check_positive(&format!("{k}.slip_velocity"), bed.slip_velocity)?;
+        for (name, v) in [
+            ("damping", bed.damping),
+            ("friction_axial", bed.friction_axial),
+            ("friction_transverse", bed.friction_transverse),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(ModelError::invalid(
+                    format!("{k}.{name}"),
+                    format!("must be a finite number >= 0, got {v}"),
+                ));
+            }
+        }
+        found = Some(*c);
+    }
+    Ok(found)
 }
 
 impl Model {

@@ -89,6 +89,7 @@ impl Model {
             Load::PointForce { force, .. } => force[2] == 0.0,
             Load::EndMoment { moment, .. } => moment[0] == 0.0 && moment[1] == 0.0,
             Load::AirDrag(d) => d.fluid_velocity[2] == 0.0,
+            Load::Seabed(c) => c.seabed.normal[2] == 0.0,
         });
         in_plane.then_some(out)
     }

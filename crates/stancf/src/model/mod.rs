@@ -75,6 +75,8 @@ pub struct Model {
     pub gravity: [f64; 3],
     /// The drag loads.
     pub drag: Vec<crate::loads::AirDrag>,
+    /// The seabed the cable can touch (docs/method.md §12.5).
+    pub seabed: Option<crate::water::SeabedContact>,
     /// Constraints, resolved to coordinates (none for a free cable).
     pub constraints: Constraints,
     /// Material coordinate x_j of every node ([`Grading::node_coordinates`]).
@@ -147,6 +149,7 @@ impl Model {
             .unwrap_or_else(|| cable.element_type.default_space_points());
         let rules = quadrature_choice::space_rules(points)?;
         let (gravity, drag) = applied_loads::gravity_and_drag(&loads, cable.elements)?;
+        let seabed = applied_loads::seabed(&loads)?;
         let lengths = cable.grading.element_lengths(cable.length, cable.elements);
         let node_x = cable.grading.node_coordinates(cable.length, cable.elements);
         let section = material.section();
@@ -161,6 +164,7 @@ impl Model {
             mesh,
             gravity,
             drag,
+            seabed,
             constraints: Constraints {
                 motion: vec![None; nodes * cable.element_type.dofs_per_node()],
                 ..Constraints::default()

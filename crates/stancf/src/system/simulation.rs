@@ -220,6 +220,11 @@ impl SystemSimulation {
         self.lines.iter().map(Simulation::damping_work).sum()
     }
 
+    /// Work done on the lines by the seabed so far (W47).
+    pub fn seabed_work(&self) -> f64 {
+        self.lines.iter().map(Simulation::seabed_work).sum()
+    }
+
     pub fn steps(&self) -> usize {
         self.steps
     }

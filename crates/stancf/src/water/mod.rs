@@ -3,3 +3,6 @@
 //! slab's space-time Gauss points.
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
+pub mod seabed;
+
+pub use seabed::{ForceAtPoint, Seabed, SeabedContact};

@@ -1,0 +1,358 @@
+//! Contact of a line with the seabed (docs/method.md §12.5, (W40)-(W46)):
+//! a penalty per unit length on the penetration, MoorDyn's kBot and cBot,
+//! and Coulomb friction against sliding with separate axial and
+//! transverse coefficients, regularized near zero velocity.
+//!
+//! The seabed is a plane through `point` with upward unit normal `n`
+//! (flat: n = e_z, point = (0, 0, -depth)). At a point r of the line's
+//! axis with velocity r_dot and tangent r_x, per unit unstretched length:
+//!
+//! ```text
+//!   g = n . (p0 - r)                     penetration (> 0 in the bed)    (W40)
+//!   P(g) = 0, g^2 / (2 delta), g - delta/2   for g <= 0, < delta, >= delta
+//!   S(g) = P'(g) in [0, 1]               contact fraction (C0 ramp)       (W41)
+//!   N = d (k P(g) - c S(g) n . r_dot)    normal force (MoorDyn: (kBot pen
+//!                                        - cBot v_n) d)                   (W42)
+//!   f_n = N n
+//! ```
+//!
+//! The ramp width delta = 1e-3 d makes the force C1 in r (Newton sees a
+//! continuous tangent); beyond delta it is MoorDyn's k d g shifted by
+//! k d delta/2, a penetration error of delta/2 = 5e-4 d.
+//!
+//! Friction resists sliding along the bed, in the directions of the line's
+//! axis projected on the bed, a = P_n r_x / |P_n r_x| (P_n = I - n n^T),
+//! and across it, b = n x a, with the elastic normal force N_e = d k P(g):
+//!
+//! ```text
+//!   v_a = a . r_dot,  v_b = b . r_dot,  phi(v) = v / sqrt(v^2 + v_s^2)   (W43)
+//!   f_f = -N_e (mu_a phi(v_a) a + mu_b phi(v_b) b)                       (W44)
+//! ```
+//!
+//! phi is Coulomb's sign(v) regularized below the slip velocity v_s: at
+//! |v| = v_s the friction is 1/sqrt(2) of Coulomb's, at 10 v_s 99.5 %.
+//! The force's derivatives, for the slab's Jacobian (the matrices C_g,
+//! G_g of (M14) and the position part N_k N_l df/dr):
+//!
+//! ```text
+//!   df/dr     = -n n^T d (k P' - c S' n . r_dot) - u (dN_e/dr)^T,
+//!               dN_e/dr = -d k P' n,  u = mu_a phi_a a + mu_b phi_b b     (W45)
+//!   df/dr_dot = -d c S n n^T - N_e (mu_a phi'_a a a^T + mu_b phi'_b b b^T)
+//!   df/dr_x   = -N_e sum_{e = a, b} mu_e (phi'_e e r_dot^T + phi_e I) De,
+//!               Da = (I - a a^T) P_n / |P_n r_x|,  Db = [n]x Da          (W46)
+//! ```
+
+use crate::element::{cross, dot};
+
+/// Force per unit length at a point and its derivatives with respect to
+/// the position r, the tangent r_x and the velocity r_dot (rows: force
+/// components).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ForceAtPoint {
+    pub force: [f64; 3],
+    pub d_r: [[f64; 3]; 3],
+    pub d_rx: [[f64; 3]; 3],
+    pub d_rdot: [[f64; 3]; 3],
+}
+
+/// A plane seabed with a penalty contact and friction (MoorDyn's kBot,
+/// cBot and friction coefficients).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Seabed {
+    /// A point of the plane (flat bed: (0, 0, -depth)).
+    pub point: [f64; 3],
+    /// Upward unit normal (flat bed: (0, 0, 1)).
+    pub normal: [f64; 3],
+    /// kBot (Pa/m): normal force per unit length per metre of penetration
+    /// per metre of diameter.
+    pub stiffness: f64,
+    /// cBot (Pa s/m): the same per unit penetration velocity.
+    pub damping: f64,
+    /// Friction coefficients along the line's axis and across it.
+    pub friction_axial: f64,
+    pub friction_transverse: f64,
+    /// Slip velocity v_s (m/s) below which friction is regularized (W43).
+    pub slip_velocity: f64,
+}
+
+impl Seabed {
+    /// A flat seabed at z = -depth.
+    pub fn flat(depth: f64, stiffness: f64, damping: f64) -> Self {
+        Seabed {
+            point: [0.0, 0.0, -depth],
+            normal: [0.0, 0.0, 1.0],
+            stiffness,
+            damping,
+            friction_axial: 0.0,
+            friction_transverse: 0.0,
+            slip_velocity: 1e-3,
+        }
+    }
+
+    /// The same bed with Coulomb friction.
+    pub fn with_friction(mut self, axial: f64, transverse: f64, slip_velocity: f64) -> Self {
+        self.friction_axial = axial;
+        self.friction_transverse = transverse;
+        self.slip_velocity = slip_velocity;
+        self
+    }
+
+    /// Whether either friction coefficient is nonzero.
+    pub fn has_friction(&self) -> bool {
+        self.friction_axial != 0.0 || self.friction_transverse != 0.0
+    }
+
+    /// The penetration g of (W40) at r.
+    pub fn penetration(&self, r: &[f64; 3]) -> f64 {
+        let d = [
+            self.point[0] - r[0],
+            self.point[1] - r[1],
+            self.point[2] - r[2],
+        ];
+        dot(&self.normal, &d)
+    }
+}
+
+/// The seabed as one line of diameter `diameter` touches it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeabedContact {
+    pub seabed: Seabed,
+    /// The line's hydrodynamic diameter d (m).
+    pub diameter: f64,
+}
+
+/// P(g), P'(g) = S(g) and P''(g) = S'(g) of (W40)-(W41).
+fn smoothed_penetration(g: f64, delta: f64) -> (f64, f64, f64) {
+    if g <= 0.0 {
+        (0.0, 0.0, 0.0)
+    } else if g < delta {
+        (0.5 * g * g / delta, g / delta, 1.0 / delta)
+    } else {
+        (g - 0.5 * delta, 1.0, 0.0)
+    }
+}
+
+/// phi(v) of (W43) and its derivative.
+fn regularized_sign(v: f64, vs: f64) -> (f64, f64) {
+    let s = (v * v + vs * vs).sqrt();
+    (v / s, vs * vs / (s * s * s))
+}
+
+fn outer(a: &[f64; 3], b: &[f64; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[i] * b[j]))
+}
+
+fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
+}
+
+fn add_scaled(m: &mut [[f64; 3]; 3], s: f64, a: &[[f64; 3]; 3]) {
+    for (mr, ar) in m.iter_mut().zip(a) {
+        for (x, y) in mr.iter_mut().zip(ar) {
+            *x += s * y;
+        }
+    }
+}
+
+impl SeabedContact {
+    /// The ramp width delta of (W41): 1e-3 of the diameter.
+    pub fn ramp_width(&self) -> f64 {
+        1e-3 * self.diameter
+    }
+
+    /// The contact force per unit length (W42)-(W44) and its derivatives
+    /// (W45)-(W46) at position r, tangent r_x, velocity r_dot. Zero, with
+    /// zero derivatives, clear of the bed.
+    pub fn force(&self, r: &[f64; 3], rx: &[f64; 3], rdot: &[f64; 3]) -> ForceAtPoint {
+        let bed = &self.seabed;
+        let n = bed.normal;
+        let d = self.diameter;
+        let (p, s, ds) = smoothed_penetration(bed.penetration(r), self.ramp_width());
+        let mut out = ForceAtPoint::default();
+        if s == 0.0 {
+            return out;
+        }
+        let vn = dot(&n, rdot);
+        let normal = d * (bed.stiffness * p - bed.damping * s * vn);
+        let nn = outer(&n, &n);
+        out.force = n.map(|c| normal * c);
+        add_scaled(
+            &mut out.d_r,
+            -d * (bed.stiffness * s - bed.damping * ds * vn),
+            &nn,
+        );
+        add_scaled(&mut out.d_rdot, -d * bed.damping * s, &nn);
+        if bed.has_friction() {
+            self.add_friction(
+                d * bed.stiffness * p,
+                d * bed.stiffness * s,
+                rx,
+                rdot,
+                &mut out,
+            );
+        }
+        out
+    }
+
+    /// Adds the friction (W43)-(W44) with elastic normal force `ne` (and
+    /// its derivative along -n, `dne`) and its derivatives (W45)-(W46).
+    fn add_friction(
+        &self,
+        ne: f64,
+        dne: f64,
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        out: &mut ForceAtPoint,
+    ) {
+        let bed = &self.seabed;
+        let n = bed.normal;
+        // P_n r_x: the tangent's part along the bed.
+        let rn = dot(&n, rx);
+        let pt = [rx[0] - rn * n[0], rx[1] - rn * n[1], rx[2] - rn * n[2]];
+        let len = dot(&pt, &pt).sqrt();
+        if len == 0.0 || ne == 0.0 && dne == 0.0 {
+            return;
+        }
+        let a = pt.map(|c| c / len);
+        let b = cross(&n, &a);
+        // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da.
+        let pn: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| f64::from(u8::from(i == j)) - n[i] * n[j])
+        });
+        let ia: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| (f64::from(u8::from(i == j)) - a[i] * a[j]) / len)
+        });
+        let da = mat_mul(&ia, &pn);
+        let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
+        let db = mat_mul(&nx, &da);
+        let vs = bed.slip_velocity;
+        let mut u = [0.0; 3];
+        for (e, de, mu) in [
+            (a, da, bed.friction_axial),
+            (b, db, bed.friction_transverse),
+        ] {
+            if mu == 0.0 {
+                continue;
+            }
+            let (phi, dphi) = regularized_sign(dot(&e, rdot), vs);
+            for i in 0..3 {
+                u[i] += mu * phi * e[i];
+                out.force[i] -= ne * mu * phi * e[i];
+            }
+            add_scaled(&mut out.d_rdot, -ne * mu * dphi, &outer(&e, &e));
+            // d(phi e)/dr_x = phi' e (r_dot^T De) + phi De.
+            let rdot_de: [f64; 3] =
+                std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
+            add_scaled(&mut out.d_rx, -ne * mu * dphi, &outer(&e, &rdot_de));
+            add_scaled(&mut out.d_rx, -ne * mu * phi, &de);
+        }
+        // -u (dN_e/dr)^T with dN_e/dr = -dne n.
+        add_scaled(&mut out.d_r, dne, &outer(&u, &n));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bed() -> SeabedContact {
+        let n = [0.1, -0.2, 1.0];
+        let l = dot(&n, &n).sqrt();
+        SeabedContact {
+            seabed: Seabed {
+                point: [0.3, 0.0, -50.0],
+                normal: n.map(|c| c / l),
+                stiffness: 3e6,
+                damping: 3e5,
+                friction_axial: 0.6,
+                friction_transverse: 1.0,
+                slip_velocity: 0.05,
+            },
+            diameter: 0.08,
+        }
+    }
+
+    /// Central differences of `force` in argument `which` (r, r_x, r_dot)
+    /// against the analytic derivative, to 1e-6 of the largest derivative
+    /// (step h: round-off eps |f| / h and truncation h^2 f''' are both
+    /// below 1e-9 of it for these magnitudes; P is quadratic in the ramp).
+    fn check(c: &SeabedContact, args: [[f64; 3]; 3], which: usize, h: f64) {
+        let f0 = c.force(&args[0], &args[1], &args[2]);
+        let analytic = [f0.d_r, f0.d_rx, f0.d_rdot][which];
+        let scale = [f0.d_r, f0.d_rx, f0.d_rdot]
+            .iter()
+            .flatten()
+            .flatten()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        for j in 0..3 {
+            let (mut plus, mut minus) = (args, args);
+            plus[which][j] += h;
+            minus[which][j] -= h;
+            let fp = c.force(&plus[0], &plus[1], &plus[2]).force;
+            let fm = c.force(&minus[0], &minus[1], &minus[2]).force;
+            for i in 0..3 {
+                let fd = (fp[i] - fm[i]) / (2.0 * h);
+                assert!(
+                    (fd - analytic[i][j]).abs() <= 1e-6 * scale + 1e-9,
+                    "arg {which} d f{i}/d x{j}: fd {fd} analytic {}",
+                    analytic[i][j]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_contact_force_derivatives_match_finite_differences() {
+        let c = bed();
+        let n = c.seabed.normal;
+        let rx = [0.8, 0.5, -0.1];
+        let v = [0.03, -0.02, -0.01];
+        // Deep in the bed, in the ramp, and clear of it.
+        for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
+            let along = [0.4, 0.9, 0.0];
+            let along_n = dot(&along, &n);
+            let r: [f64; 3] = std::array::from_fn(|i| {
+                c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
+            });
+            assert!((c.seabed.penetration(&r) - below).abs() < 1e-12);
+            let h = if below.abs() < c.ramp_width() {
+                1e-8
+            } else {
+                1e-6
+            };
+            for which in 0..3 {
+                check(&c, [r, rx, v], which, h);
+            }
+        }
+    }
+
+    #[test]
+    fn a_line_resting_in_the_bed_feels_its_weight_back_without_friction_at_rest() {
+        let c = SeabedContact {
+            seabed: Seabed::flat(100.0, 3e6, 3e5).with_friction(0.5, 1.0, 1e-3),
+            diameter: 0.1,
+        };
+        let g = 2e-3;
+        let f = c.force(&[5.0, 2.0, -100.0 - g], &[1.0, 0.0, 0.0], &[0.0; 3]);
+        let expected = 3e6 * 0.1 * (g - 0.5 * c.ramp_width());
+        // The penetration 100 + g - 100 is exact to eps 100 / g = 1e-11.
+        assert!((f.force[2] - expected).abs() <= 1e-10 * expected);
+        assert_eq!((f.force[0], f.force[1]), (0.0, 0.0));
+    }
+
+    #[test]
+    fn sliding_friction_is_coulombs_well_above_the_slip_velocity() {
+        let c = SeabedContact {
+            seabed: Seabed::flat(100.0, 3e6, 0.0).with_friction(0.5, 1.0, 1e-3),
+            diameter: 0.1,
+        };
+        let r = [0.0, 0.0, -100.01];
+        let ne = 3e6 * 0.1 * (0.01 - 0.5 * c.ramp_width());
+        // Axial (along x) and transverse (along y) sliding at 1 m/s.
+        let fa = c.force(&r, &[2.0, 0.0, 0.3], &[1.0, 0.0, 0.0]).force;
+        let ft = c.force(&r, &[2.0, 0.0, 0.3], &[0.0, -1.0, 0.0]).force;
+        let coulomb = |mu: f64| mu * ne / (1.0f64 + 1e-6).sqrt();
+        assert!((fa[0] + coulomb(0.5)).abs() <= 1e-12 * ne);
+        assert!((ft[1] - coulomb(1.0)).abs() <= 1e-12 * ne);
+    }
+}
