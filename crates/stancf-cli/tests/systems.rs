@@ -275,8 +275,7 @@ fn a_misspelt_line_type_is_refused_naming_the_key() {
 }
 
 /// Every MoorDyn deck shipped in examples/ is read: `check` describes
-/// its lines and points, or (the OC4 deck) refuses only the seabed
-/// contact its catenaries reach, after reading the whole deck.
+/// its lines and points.
 #[test]
 fn the_shipped_moordyn_decks_are_read() {
     let decks: Vec<String> = std::fs::read_dir(repo_file("examples"))
@@ -288,37 +287,58 @@ fn the_shipped_moordyn_decks_are_read() {
     for deck in decks {
         let o = stancf(&["check", &deck]);
         let (so, se) = text(&o);
-        if deck.contains("oc4") {
-            assert_eq!(o.status.code(), Some(2), "{deck}: {se}");
-            assert!(se.contains("seabed contact"), "{deck}: {se}");
-        } else {
-            assert_eq!(o.status.code(), Some(0), "{deck}: {se}");
-            assert!(
-                so.contains("line 1") && so.contains("point 1"),
-                "{deck}: {so}"
-            );
-        }
+        assert_eq!(o.status.code(), Some(0), "{deck}: {se}");
+        assert!(
+            so.contains("line 1") && so.contains("point 1"),
+            "{deck}: {so}"
+        );
     }
 }
 
-/// The OC4 chain lies on the seabed for hundreds of metres: seabed
-/// contact is not in this version, so the run is refused, naming the
-/// line, before anything is written.
+/// The OC4 chains rest on the seabed for about 240 m (docs/method.md
+/// §12.2). The frictionless flat bed pushes only along z, so each line's
+/// horizontal end forces balance (to the static tolerance, 1e-9). Above
+/// touchdown the line is an elastic catenary with a horizontal tangent at
+/// the bed, for which (C4) gives the fairlead tension
+/// T_F = H + w h - V_F^2 / (2 EA), h the height of the fairlead above the
+/// line resting in the bed (sunk by w / (k d) + delta / 2, (W42)). It
+/// holds to 1.3e-5 of T_F here; the claim is 1e-4: the 42 m elements
+/// meet touchdown, where the curvature jumps from w / H to 0, within one
+/// element, and the chain's EI (1e-7 w L^3, §11.7) bends it there.
 #[test]
-fn the_oc4_deck_is_refused_where_its_chain_would_pass_the_seabed() {
+fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
     let d = scratch("systems-oc4");
-    let out = d.join("never");
+    let out = d.join("out");
     let deck = repo_file("examples/oc4-deepcwind-moordyn.txt");
-    let o = stancf(&[
-        "run",
-        deck.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let (_, se) = text(&o);
-    assert_eq!(o.status.code(), Some(2), "{se}");
-    assert!(se.contains("line 1") && se.contains("seabed"), "{se}");
-    assert!(!out.exists());
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let csv = std::fs::read_to_string(out.join("tensions.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 6, "{csv}");
+    let num = |r: &[&str], k: usize| r[k].parse::<f64>().unwrap();
+    let (ea, g, rho, d_chain) = (7.536e8, 9.81, 1025.0, 0.0766);
+    let w = (113.35 - rho * std::f64::consts::PI * d_chain * d_chain / 4.0) * g;
+    let sunk = w / (3.0e6 * d_chain) + 0.5e-3 * d_chain;
+    let h = -14.0 - (-200.0 - sunk);
+    for pair in rows.chunks(2) {
+        let (a, b) = (&pair[0], &pair[1]);
+        assert_eq!((a[2], b[2]), ("A", "B"));
+        let (ha, hb) = (
+            num(a, 3).hypot(num(a, 4)),
+            num(b, 3).hypot(num(b, 4)),
+        );
+        for k in [3, 4] {
+            assert!((num(a, k) + num(b, k)).abs() < 1e-9 * ha, "line {}: {a:?} {b:?}", a[1]);
+        }
+        let (tf, vf) = (num(b, 6), num(b, 5).abs());
+        let expected = hb + w * h - vf * vf / (2.0 * ea);
+        assert!(
+            (tf - expected).abs() < 1e-4 * tf,
+            "line {}: T_F {tf} N, H + w h - V_F^2 / 2EA = {expected} N",
+            a[1]
+        );
+        assert!(vf < w * 835.35 * 0.8, "line {} rests on the bed: V_F {vf} N", a[1]);
+    }
 }
 
 /// The midwater bridle deck: its free point carries 2000 kg less the

@@ -47,6 +47,12 @@ pub(super) fn load_values(sc: &Scenario, values: &mut Vec<(String, f64)>) -> Gra
                 values.push((format!("{k}.diameter"), d.diameter));
                 values.push((format!("{k}.fluid_velocity"), largest(&d.fluid_velocity)));
             }
+            Load::Seabed(c) => {
+                let k = format!("loads[{i}]");
+                values.push((format!("{k}.stiffness"), c.seabed.stiffness));
+                values.push((format!("{k}.damping"), c.seabed.damping));
+                values.push((format!("{k}.diameter"), c.diameter));
+            }
         }
     }
     gravity
@@ -79,7 +85,7 @@ pub(super) fn loads(
             Load::PointForce { force, .. } => point_force(f, i, force, s, place, t)?,
             Load::EndMoment { moment, .. } => end_moment(f, i, moment, s)?,
             Load::AirDrag(d) => drag(f, i, d, s, speed)?,
-            Load::Gravity { .. } => {}
+            Load::Gravity { .. } | Load::Seabed(_) => {}
         }
     }
     load_potential(f, sc, place, en.load_potential)
@@ -234,7 +240,7 @@ fn load_potential(
         .filter_map(|(i, l)| match l {
             Load::PointForce { .. } => Some(format!("loads[{i}].force")),
             Load::EndMoment { .. } => Some(format!("loads[{i}].moment")),
-            Load::Gravity { .. } | Load::AirDrag(_) => None,
+            Load::Gravity { .. } | Load::AirDrag(_) | Load::Seabed(_) => None,
         })
         .collect();
     f.need(

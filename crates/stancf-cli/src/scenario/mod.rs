@@ -28,7 +28,7 @@ pub use messages::{clip, MAX_ECHO};
 pub use moordyn::{deck_file_scenario, deck_scenario};
 pub use system::{
     InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
-    Water,
+    SeabedOptions, Water,
 };
 pub use system_model::EI_FACTOR;
 

@@ -8,14 +8,16 @@
 //! What stancf cannot compute from a deck is refused by name, naming the
 //! deck's line: output channels stancf has no value for; in this version
 //! also a dynamic analysis in water (added mass and drag are not
-//! modelled) and seabed contact (checked by the run).
+//! modelled) and lines through the surface (checked by the run). The
+//! seabed at z = -WtrDpth holds the lines that reach it (kBot, cBot,
+//! FrictionCoefficient; docs/method.md §12.2).
 
 use super::analysis;
 use super::context::Ctx;
 use super::raw::RawAnalysis;
 use super::system::{
     analysis_part, InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint,
-    SystemScenario, Water,
+    SeabedOptions, SystemScenario, Water,
 };
 use super::ScenarioError;
 use crate::moordyn::{
@@ -52,6 +54,17 @@ pub fn deck_scenario(
             ))
         })?,
         density: deck.option(SupportedOption::WaterDensity).unwrap_or(1025.0),
+        seabed: SeabedOptions {
+            stiffness: deck
+                .option(SupportedOption::BottomStiffness)
+                .unwrap_or(SeabedOptions::MOORDYN.stiffness),
+            damping: deck
+                .option(SupportedOption::BottomDamping)
+                .unwrap_or(SeabedOptions::MOORDYN.damping),
+            friction: deck
+                .option(SupportedOption::FrictionCoefficient)
+                .unwrap_or(SeabedOptions::MOORDYN.friction),
+        },
     };
     let line_types = deck
         .line_types

@@ -76,6 +76,30 @@ pub struct Water {
     pub depth: f64,
     /// Density (kg/m^3).
     pub density: f64,
+    /// The flat seabed at z = -depth (docs/method.md §12.2).
+    pub seabed: SeabedOptions,
+}
+
+/// The seabed's contact and friction, MoorDyn's kBot, cBot and
+/// FrictionCoefficient.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeabedOptions {
+    /// kBot (Pa/m).
+    pub stiffness: f64,
+    /// cBot (Pa s/m).
+    pub damping: f64,
+    /// Coulomb's coefficient, along and across a line alike.
+    pub friction: f64,
+}
+
+impl SeabedOptions {
+    /// MoorDyn's defaults: kBot = 3e6 Pa/m, cBot = 3e5 Pa s/m, no
+    /// friction.
+    pub const MOORDYN: SeabedOptions = SeabedOptions {
+        stiffness: 3.0e6,
+        damping: 3.0e5,
+        friction: 0.0,
+    };
 }
 
 /// An output channel of a MoorDyn deck, written to channels.csv.

@@ -125,12 +125,15 @@ impl SystemScenario {
             space_points: self.analysis.space_points,
         };
         let acceleration = self.gravity.map(|g| g * self.wet_weight_fraction(t));
-        let gravity = if acceleration == [0.0; 3] {
+        let mut loads = if acceleration == [0.0; 3] {
             vec![]
         } else {
             vec![Load::Gravity { acceleration }]
         };
-        Model::new(cable, material, options, gravity)
+        if let Some(w) = self.water {
+            loads.push(Load::Seabed(seabed_contact(&w, t.diameter)));
+        }
+        Model::new(cable, material, options, loads)
     }
 }
 
@@ -167,29 +170,39 @@ fn section_material(t: &LineType, ei: f64) -> Material {
     }
 }
 
+/// A line of diameter d on the water's flat seabed (docs/method.md
+/// §12.2). Friction is regularized below a slip velocity of 1 mm/s
+/// (W43); it acts only on sliding, so statics do not see it.
+fn seabed_contact(w: &Water, diameter: f64) -> stancf::water::SeabedContact {
+    let b = w.seabed;
+    stancf::water::SeabedContact {
+        seabed: stancf::water::Seabed::flat(w.depth, b.stiffness, b.damping).with_friction(
+            b.friction,
+            b.friction,
+            1e-3,
+        ),
+        diameter,
+    }
+}
+
 impl SystemScenario {
     /// Refuses what the water of this version cannot represent: a line
-    /// of `states` (one per line) with a node below the seabed (z <
-    /// -depth) or above the free surface (z > 0), beyond 1e-9 of the
-    /// depth. Seabed contact and lines through the surface are not
-    /// modelled in this version; the message names the line and where.
+    /// of `states` (one per line) with a node above the free surface
+    /// (z > 0), beyond 1e-9 of the depth: lines through the surface are
+    /// not modelled in this version; the message names the line and
+    /// where. (Nodes in the seabed meet its contact, §12.2.)
     pub fn check_submerged(&self, system: &System, states: &[stancf::State]) -> Result<(), String> {
         let Some(w) = self.water else { return Ok(()) };
         let slack = 1e-9 * w.depth;
         for (i, (line, s)) in system.lines().iter().zip(states).enumerate() {
             for j in 0..line.model.nodes() {
                 let z = line.model.node_position(&s.e, j)[2];
-                let what = if z < -w.depth - slack {
-                    "below the seabed"
-                } else if z > slack {
-                    "above the water surface"
-                } else {
+                if z <= slack {
                     continue;
-                };
+                }
                 return Err(format!(
-                    "line {}: node {j} hangs {what} (z = {z:.6} m, water depth {} m): \
-                     seabed contact and lines crossing the surface are not modelled in this \
-                     version",
+                    "line {}: node {j} hangs above the water surface (z = {z:.6} m, water \
+                     depth {} m): lines crossing the surface are not modelled in this version",
                     self.lines[i].id, w.depth
                 ));
             }

@@ -1,4 +1,4 @@
-//! Seabed contact on the element (docs/method.md §12.5, (W40)-(W47)): the
+//! Seabed contact on the element (docs/method.md §12.2, (W40)-(W47)): the
 //! contact force per unit length of [`crate::water::SeabedContact`] at the
 //! points of the axial rule, its virtual work over a slab with the matrices
 //! C_g, G_g of its exact Jacobian at the time points, and its static form.
@@ -60,7 +60,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// Static contact (a line at rest on the bed, docs/method.md §12.5):
+    /// Static contact (a line at rest on the bed, docs/method.md §12.2):
     /// subtracts `factor int N^T f(r, r_x, 0) dx` from `grad` (= dU/dq)
     /// and its derivative from `hess`.
     pub fn add_static_seabed(

@@ -201,7 +201,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
 pub struct SlabLoads<'a> {
     pub gravity: [f64; 3],
     pub drag: &'a [crate::loads::AirDrag],
-    /// The seabed, if the line can touch one (docs/method.md §12.5).
+    /// The seabed, if the line can touch one (docs/method.md §12.2).
     pub seabed: Option<&'a crate::water::SeabedContact>,
 }
 

@@ -18,7 +18,7 @@ pub enum Load {
     EndMoment { node: usize, moment: [f64; 3] },
     /// Air drag along the whole cable, eq. (17) (see [`crate::loads::AirDrag`]).
     AirDrag(crate::loads::AirDrag),
-    /// Contact with a seabed, with friction (docs/method.md §12.5; see
+    /// Contact with a seabed, with friction (docs/method.md §12.2; see
     /// [`crate::water::SeabedContact`]). At most one per cable.
     Seabed(crate::water::SeabedContact),
 }

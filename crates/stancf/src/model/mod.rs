@@ -75,7 +75,7 @@ pub struct Model {
     pub gravity: [f64; 3],
     /// The drag loads.
     pub drag: Vec<crate::loads::AirDrag>,
-    /// The seabed the cable can touch (docs/method.md §12.5).
+    /// The seabed the cable can touch (docs/method.md §12.2).
     pub seabed: Option<crate::water::SeabedContact>,
     /// Constraints, resolved to coordinates (none for a free cable).
     pub constraints: Constraints,

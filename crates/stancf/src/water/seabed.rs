@@ -1,4 +1,4 @@
-//! Contact of a line with the seabed (docs/method.md §12.5, (W40)-(W46)):
+//! Contact of a line with the seabed (docs/method.md §12.2, (W40)-(W46)):
 //! a penalty per unit length on the penetration, MoorDyn's kBot and cBot,
 //! and Coulomb friction against sliding with separate axial and
 //! transverse coefficients, regularized near zero velocity.
