@@ -17,6 +17,12 @@ pub const MAX_STEPS: usize = 100_000_000;
 /// `--allow-large` is given (`check` warns).
 pub const MAX_RESULT_BYTES: f64 = 4e9;
 
+/// A system of more elements than this (all lines together) is refused
+/// unless `--allow-large` is given: its static solve alone takes about
+/// 10 ms per element when lines rest on the seabed (the OC4 deck with one
+/// line of 2000 segments: 22 s).
+pub const MAX_SYSTEM_ELEMENTS: usize = 2000;
+
 /// How much a run would do and write.
 pub(crate) struct Size {
     /// Steps (dynamic) or load steps (static).

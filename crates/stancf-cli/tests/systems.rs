@@ -313,7 +313,11 @@ fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
     let o = run_quiet(&deck, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let csv = std::fs::read_to_string(out.join("tensions.csv")).unwrap();
-    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
     assert_eq!(rows.len(), 6, "{csv}");
     let num = |r: &[&str], k: usize| r[k].parse::<f64>().unwrap();
     let (ea, g, rho, d_chain) = (7.536e8, 9.81, 1025.0, 0.0766);
@@ -323,12 +327,13 @@ fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
     for pair in rows.chunks(2) {
         let (a, b) = (&pair[0], &pair[1]);
         assert_eq!((a[2], b[2]), ("A", "B"));
-        let (ha, hb) = (
-            num(a, 3).hypot(num(a, 4)),
-            num(b, 3).hypot(num(b, 4)),
-        );
+        let (ha, hb) = (num(a, 3).hypot(num(a, 4)), num(b, 3).hypot(num(b, 4)));
         for k in [3, 4] {
-            assert!((num(a, k) + num(b, k)).abs() < 1e-9 * ha, "line {}: {a:?} {b:?}", a[1]);
+            assert!(
+                (num(a, k) + num(b, k)).abs() < 1e-9 * ha,
+                "line {}: {a:?} {b:?}",
+                a[1]
+            );
         }
         let (tf, vf) = (num(b, 6), num(b, 5).abs());
         let expected = hb + w * h - vf * vf / (2.0 * ea);
@@ -337,8 +342,34 @@ fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
             "line {}: T_F {tf} N, H + w h - V_F^2 / 2EA = {expected} N",
             a[1]
         );
-        assert!(vf < w * 835.35 * 0.8, "line {} rests on the bed: V_F {vf} N", a[1]);
+        assert!(
+            vf < w * 835.35 * 0.8,
+            "line {} rests on the bed: V_F {vf} N",
+            a[1]
+        );
     }
+}
+
+/// A system beyond 2000 elements in all (one OC4 line of 20000
+/// segments) is refused by `run` without --allow-large, naming the lines
+/// and the bound, before anything is written.
+#[test]
+fn a_system_of_more_than_2000_elements_needs_allow_large() {
+    let d = scratch("systems-large");
+    let deck = std::fs::read_to_string(repo_file("examples/oc4-deepcwind-moordyn.txt"))
+        .unwrap()
+        .replace("835.35    20       -\n-", "835.35    20000    -\n-");
+    let path = d.join("big-moordyn.txt");
+    std::fs::write(&path, deck).unwrap();
+    let out = d.join("never");
+    let o = run_quiet(&path, &out, &[]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    assert!(
+        se.contains("20040 elements") && se.contains("--allow-large"),
+        "{se}"
+    );
+    assert!(!out.exists());
 }
 
 /// The midwater bridle deck: its free point carries 2000 kg less the

@@ -27,8 +27,8 @@ pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn::{deck_file_scenario, deck_scenario};
 pub use system::{
-    InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
-    SeabedOptions, Water,
+    InitialShape, LineType, OutputChannel, PointType, SeabedOptions, SystemLine, SystemPoint,
+    SystemScenario, Water,
 };
 pub use system_model::EI_FACTOR;
 

@@ -16,8 +16,8 @@ use super::analysis;
 use super::context::Ctx;
 use super::raw::RawAnalysis;
 use super::system::{
-    analysis_part, InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint,
-    SeabedOptions, SystemScenario, Water,
+    analysis_part, InitialShape, LineType, OutputChannel, PointType, SeabedOptions, SystemLine,
+    SystemPoint, SystemScenario, Water,
 };
 use super::ScenarioError;
 use crate::moordyn::{

@@ -176,11 +176,8 @@ fn section_material(t: &LineType, ei: f64) -> Material {
 fn seabed_contact(w: &Water, diameter: f64) -> stancf::water::SeabedContact {
     let b = w.seabed;
     stancf::water::SeabedContact {
-        seabed: stancf::water::Seabed::flat(w.depth, b.stiffness, b.damping).with_friction(
-            b.friction,
-            b.friction,
-            1e-3,
-        ),
+        seabed: stancf::water::Seabed::flat(w.depth, b.stiffness, b.damping)
+            .with_friction(b.friction, b.friction, 1e-3),
         diameter,
     }
 }

@@ -69,6 +69,15 @@ pub(super) fn run_system(
     sc: SystemScenario,
 ) -> Result<String, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    let elements: usize = sc.lines.iter().map(|l| l.elements).sum();
+    if elements > crate::work_bounds::MAX_SYSTEM_ELEMENTS && !opts.allow_large {
+        return Err(Failure::Input(format!(
+            "{}: lines: {elements} elements in all is above the {} a system run takes \
+             without --allow-large (its static solve would take minutes)",
+            path.display(),
+            crate::work_bounds::MAX_SYSTEM_ELEMENTS
+        )));
+    }
     if sc.analysis.kind == AnalysisKind::Dynamic && !opts.allow_large {
         let steps = sc.analysis.duration / sc.analysis.time_step;
         if steps > crate::work_bounds::MAX_STEPS as f64 {
