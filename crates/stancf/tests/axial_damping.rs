@@ -10,18 +10,18 @@ mod common;
 mod step_checks;
 
 use common::*;
-use stancf::assembly::{Scheme, SlabLayout};
+use stancf::assembly::Scheme;
 use stancf::element::axial_strain as axial_strain_of;
 use stancf::element::{CableElement, Section, SlabDerivatives, SlabLoads, TimeSlab};
 use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite};
 use stancf::{
-    run, AxialStrain, Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load,
-    Material, Measures, Model, ModelOptions, NewtonSettings, Simulation, StaticSettings,
-    StaticSolver, StepSettings, TimeScheme,
+    run, AxialStrain, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Measures,
+    Model, ModelOptions, NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings,
+    TimeScheme,
 };
 use std::ops::ControlFlow;
-use step_checks::{check_jacobian, random_start};
+use step_checks::check_schemes_and_routes;
 
 /// Central differences with this step agree with an exact derivative to
 /// ~1e-9 relative here (truncation h^2 f''' ~ 1e-12, round-off eps / h ~
@@ -222,51 +222,38 @@ fn step_jacobian_with_axial_damping_matches_finite_differences() {
     let mut worst = 0.0f64;
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for strain in [AxialStrain::Green, AxialStrain::Engineering] {
-            for scheme in [
+            let model = |constrained: bool| {
+                let cons = if constrained {
+                    vec![
+                        Constraint {
+                            node: 0,
+                            kind: ConstraintKind::Clamped {
+                                fix_curvature: false,
+                            },
+                        },
+                        Constraint {
+                            node: 2,
+                            kind: ConstraintKind::Prescribed {
+                                velocity: [0.1, 0.0, -0.2],
+                                amplitude: [0.0, 0.02, 0.01],
+                                frequency: 3.0,
+                                phase: 0.4,
+                            },
+                        },
+                    ]
+                } else {
+                    vec![]
+                };
+                damped_model(kind, strain, cons)
+            };
+            let schemes = [
                 Scheme::P2 { layers: 1 },
                 Scheme::P2 { layers: 2 },
                 Scheme::Galerkin,
-            ] {
-                for (constrained, method) in [
-                    (false, ConstraintMethod::Multiplier),
-                    (true, ConstraintMethod::Multiplier),
-                    (true, ConstraintMethod::Elimination),
-                ] {
-                    let cons = if constrained {
-                        vec![
-                            Constraint {
-                                node: 0,
-                                kind: ConstraintKind::Clamped {
-                                    fix_curvature: false,
-                                },
-                            },
-                            Constraint {
-                                node: 2,
-                                kind: ConstraintKind::Prescribed {
-                                    velocity: [0.1, 0.0, -0.2],
-                                    amplitude: [0.0, 0.02, 0.01],
-                                    frequency: 3.0,
-                                    phase: 0.4,
-                                },
-                            },
-                        ]
-                    } else {
-                        vec![]
-                    };
-                    let m = damped_model(kind, strain, cons);
-                    let layout = SlabLayout::new(&m, scheme, method);
-                    let layers = match scheme {
-                        Scheme::P2 { layers } => layers,
-                        _ => 1,
-                    };
-                    let h = 0.02 / layers as f64;
-                    let slab = TimeSlab::new(h, &GaussRule::new(3).unwrap());
-                    let start = random_start(&m, &layout, h, &mut rng);
-                    let label = format!("{kind:?} {strain:?} {scheme:?} {constrained} {method:?}");
-                    let e = check_jacobian(&m, &layout, &slab, &start, &mut rng, &label, FD_TOL);
-                    worst = worst.max(e);
-                }
-            }
+            ];
+            let label = format!("{kind:?} {strain:?}");
+            let e = check_schemes_and_routes(&model, &schemes, &mut rng, &label, FD_TOL);
+            worst = worst.max(e);
         }
     }
     eprintln!("damped step Jacobians: worst rel. error {worst:.1e}");

@@ -9,17 +9,14 @@ mod common;
 mod step_checks;
 
 use common::*;
-use stancf::assembly::{Scheme, SlabLayout};
-use stancf::element::TimeSlab;
-use stancf::quadrature::GaussRule;
+use stancf::assembly::Scheme;
 use stancf::water::{Seabed, SeabedContact};
 use stancf::{
-    run, Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
-    ModelOptions, NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings,
-    TimeScheme,
+    run, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions,
+    NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings, TimeScheme,
 };
 use std::ops::ControlFlow;
-use step_checks::{check_jacobian, random_start};
+use step_checks::check_schemes_and_routes;
 
 /// As in the damping tests: central differences with h = 1e-6 agree with
 /// an exact derivative to ~1e-9 relative; the contact's ramp (W41) is
@@ -80,43 +77,53 @@ fn step_jacobian_with_seabed_contact_matches_finite_differences() {
     let mut rng = Rng(0x5eab_ed00_0000_0013);
     let mut worst = 0.0f64;
     for kind in [ElementType::Sac2, ElementType::Sac3] {
-        for scheme in [
+        let model = |constrained: bool| {
+            let cons = if constrained {
+                vec![Constraint {
+                    node: 0,
+                    kind: ConstraintKind::Clamped {
+                        fix_curvature: false,
+                    },
+                }]
+            } else {
+                vec![]
+            };
+            cable_in_the_bed(kind, cons)
+        };
+        let schemes = [
             Scheme::P2 { layers: 1 },
             Scheme::P2 { layers: 2 },
             Scheme::Galerkin,
             Scheme::Static,
-        ] {
-            for (constrained, method) in [
-                (false, ConstraintMethod::Multiplier),
-                (true, ConstraintMethod::Multiplier),
-                (true, ConstraintMethod::Elimination),
-            ] {
-                let cons = if constrained {
-                    vec![Constraint {
-                        node: 0,
-                        kind: ConstraintKind::Clamped {
-                            fix_curvature: false,
-                        },
-                    }]
-                } else {
-                    vec![]
-                };
-                let m = cable_in_the_bed(kind, cons);
-                let layout = SlabLayout::new(&m, scheme, method);
-                let layers = match scheme {
-                    Scheme::P2 { layers } => layers,
-                    _ => 1,
-                };
-                let h = 0.02 / layers as f64;
-                let slab = TimeSlab::new(h, &GaussRule::new(3).unwrap());
-                let start = random_start(&m, &layout, h, &mut rng);
-                let label = format!("{kind:?} {scheme:?} {constrained} {method:?}");
-                let e = check_jacobian(&m, &layout, &slab, &start, &mut rng, &label, FD_TOL);
-                worst = worst.max(e);
-            }
-        }
+        ];
+        let label = format!("{kind:?}");
+        worst = worst.max(check_schemes_and_routes(
+            &model, &schemes, &mut rng, &label, FD_TOL,
+        ));
     }
     eprintln!("step Jacobians with the seabed: worst rel. error {worst:.1e}");
+}
+
+/// A cable under gravity (0, 0, -9.81) on the bed `contact`, its nodes
+/// `pinned` held.
+fn cable_on(cable: Cable, material: Material, contact: SeabedContact, pinned: &[usize]) -> Model {
+    let loads = vec![
+        Load::Gravity {
+            acceleration: [0.0, 0.0, -9.81],
+        },
+        Load::Seabed(contact),
+    ];
+    let pins = pinned
+        .iter()
+        .map(|&node| Constraint {
+            node,
+            kind: ConstraintKind::Pinned,
+        })
+        .collect();
+    Model::new(cable, material, ModelOptions::default(), loads)
+        .unwrap()
+        .with_constraints(pins)
+        .unwrap()
 }
 
 /// A 20 m line laid along a flat bed at z = -50 m, pinned at both ends on
@@ -143,29 +150,7 @@ fn a_line_laid_on_a_flat_bed_sinks_in_by_its_weight_over_k_d() {
     };
     let w = 7800.0 * 1e-3 * 9.81;
     let cable = Cable::straight(20.0, 20, ElementType::Sac2).with_origin([0.0, 0.0, -depth]);
-    let model = Model::new(
-        cable,
-        material,
-        ModelOptions::default(),
-        vec![
-            Load::Gravity {
-                acceleration: [0.0, 0.0, -9.81],
-            },
-            Load::Seabed(contact),
-        ],
-    )
-    .unwrap()
-    .with_constraints(vec![
-        Constraint {
-            node: 0,
-            kind: ConstraintKind::Pinned,
-        },
-        Constraint {
-            node: 20,
-            kind: ConstraintKind::Pinned,
-        },
-    ])
-    .unwrap();
+    let model = cable_on(cable, material, contact, &[0, 20]);
     let mut solver = StaticSolver::new(model, StaticSettings::default()).unwrap();
     solver.solve(|_, _| ControlFlow::Continue(())).unwrap();
     let m = solver.model();
@@ -211,23 +196,7 @@ fn dropped_rope(dt: f64, scheme: TimeScheme) -> (f64, f64, f64) {
     let cable = Cable::straight(2.0, 8, ElementType::Sac2)
         .with_origin([0.0, 0.0, -0.95])
         .with_direction([1.0, 0.3, 0.0]);
-    let model = Model::new(
-        cable,
-        material,
-        ModelOptions::default(),
-        vec![
-            Load::Gravity {
-                acceleration: [0.0, 0.0, -9.81],
-            },
-            Load::Seabed(contact),
-        ],
-    )
-    .unwrap()
-    .with_constraints(vec![Constraint {
-        node: 0,
-        kind: ConstraintKind::Pinned,
-    }])
-    .unwrap();
+    let model = cable_on(cable, material, contact, &[0]);
     let s = model.initial_state();
     let mut sim = Simulation::new(model, s, drop_settings(dt, scheme)).unwrap();
     let e0 = sim.energies().mechanical();

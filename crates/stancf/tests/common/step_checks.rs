@@ -4,9 +4,11 @@
 #![allow(dead_code)]
 
 use super::common::{rel_diff, Rng};
-use stancf::assembly::{AssemblyScratch, Kind, SlabLayout, StepProblem, StepStart};
+use stancf::assembly::{AssemblyScratch, Kind, Scheme, SlabLayout, StepProblem, StepStart};
 use stancf::band::BandMatrix;
 use stancf::element::TimeSlab;
+use stancf::quadrature::GaussRule;
+use stancf::ConstraintMethod;
 use stancf::Model;
 
 /// dR/dx against central differences of R at a random iterate near
@@ -99,4 +101,41 @@ pub fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> St
     let mut start = StepStart::new(m, layout.time_nodes());
     start.set(m, 0.37, &e, &v, h);
     start
+}
+
+/// The constraint routes every step check covers: free, and constrained
+/// by multipliers and by elimination.
+pub const ROUTES: [(bool, ConstraintMethod); 3] = [
+    (false, ConstraintMethod::Multiplier),
+    (true, ConstraintMethod::Multiplier),
+    (true, ConstraintMethod::Elimination),
+];
+
+/// [`check_jacobian`] for each scheme of `schemes` and each of
+/// [`ROUTES`], on `model(constrained)` at a random start (slabs of 0.02 s
+/// split into the scheme's layers); returns the worst relative error.
+pub fn check_schemes_and_routes(
+    model: &dyn Fn(bool) -> Model,
+    schemes: &[Scheme],
+    rng: &mut Rng,
+    label: &str,
+    tol: f64,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for &scheme in schemes {
+        for (constrained, method) in ROUTES {
+            let m = model(constrained);
+            let layout = SlabLayout::new(&m, scheme, method);
+            let layers = match scheme {
+                Scheme::P2 { layers } => layers,
+                _ => 1,
+            };
+            let h = 0.02 / layers as f64;
+            let slab = TimeSlab::new(h, &GaussRule::new(3).unwrap());
+            let start = random_start(&m, &layout, h, rng);
+            let label = format!("{label} {scheme:?} {constrained} {method:?}");
+            worst = worst.max(check_jacobian(&m, &layout, &slab, &start, rng, &label, tol));
+        }
+    }
+    worst
 }
