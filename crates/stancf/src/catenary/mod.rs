@@ -157,6 +157,7 @@ use std::fmt;
 
 mod profile;
 mod solve;
+pub mod touchdown;
 
 use profile::{any_perpendicular, dot, norm, scale, sub};
 use solve::{solve_hanging, straight_profile, vertical_profile};
@@ -369,3 +370,5 @@ fn validate(
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod touchdown_tests;
