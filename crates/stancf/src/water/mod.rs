@@ -3,3 +3,8 @@
 //! slab's space-time Gauss points.
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
+
+pub mod current;
+pub mod kinematics;
+pub mod spectrum;
+pub mod waves;
