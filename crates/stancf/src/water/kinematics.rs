@@ -40,9 +40,9 @@ pub struct Sea {
 }
 
 impl Sea {
-    /// A sea of depth `depth` (m, > 0) under gravity `gravity` (m/s^2,
-    /// > 0) with the regular waves `waves` superposed, no current and no
-    /// ramp. Refused, naming the quantity (`depth`, `gravity`,
+    /// A sea of depth `depth` (m, positive) under gravity `gravity`
+    /// (m/s^2, a positive magnitude) with the regular waves `waves`
+    /// superposed, no current and no ramp. Refused, naming the quantity (`depth`, `gravity`,
     /// `waves[3].period`, ...): a depth or gravity not positive and
     /// finite, a wave with a period <= 0, an amplitude < 0, or a value
     /// that is not finite.
@@ -111,8 +111,11 @@ impl Sea {
         self.current.as_ref()
     }
 
-    /// The flow at `position` and time t (W13): the sum of the waves'
-    /// flows (W4)-(W8), ramped by (W12), plus the ramped current (W9)-(W10).
+    /// The flow at `position` and time t: the waves' flows (W4)-(W8)
+    /// summed and ramped by r_w (W12), plus the current (W9)-(W10) ramped
+    /// by r_c:
+    ///
+    ///     u = r_w sum_i u_i + r_c U(z),  eta = r_w sum_i eta_i           (W13)
     ///
     /// A ramp r(t) (W11) multiplies a velocity field u(x, t) into r u, so
     /// the local acceleration stays the time derivative of the velocity:

@@ -93,6 +93,7 @@ fn linear_waves_are_divergence_free_and_irrotational() {
     // to round-off in the largest gradient entry.
     let sea = Sea::new(DEPTH, G, &crossing_waves()).unwrap();
     let tolerance = 16.0 * EPS * wave_derivative_bound(&sea, 1, 0);
+    let mut worst: f64 = 0.0;
     for (n, p) in points_in_water(200, 3).iter().enumerate() {
         let grad = sea.kinematics(p, 0.37 * n as f64).velocity_gradient;
         let divergence = grad[0][0] + grad[1][1] + grad[2][2];
@@ -108,7 +109,11 @@ fn linear_waves_are_divergence_free_and_irrotational() {
         for c in curl {
             assert!(c.abs() < tolerance, "curl u = {curl:?} at {p:?}");
         }
+        worst = worst
+            .max(divergence.abs())
+            .max(curl.iter().fold(0.0, |m, c| m.max(c.abs())));
     }
+    println!("div u, curl u: {worst:.1e} 1/s (bound {tolerance:.1e})");
 }
 
 #[test]
@@ -124,6 +129,7 @@ fn the_free_surface_moves_with_the_water_at_the_still_water_level() {
         .map(|w| w.amplitude * w.omega.powi(3))
         .sum();
     let tolerance = dt * dt / 6.0 * cubes + 8.0 * EPS * amplitudes / dt;
+    let mut worst: f64 = 0.0;
     for (n, p) in points_in_water(50, 5).iter().enumerate() {
         let surface = [p[0], p[1], 0.0];
         let t = 1.3 * n as f64;
@@ -134,7 +140,9 @@ fn the_free_surface_moves_with_the_water_at_the_still_water_level() {
             (rate - u_z).abs() < tolerance,
             "{rate} vs {u_z} ({tolerance:e})"
         );
+        worst = worst.max((rate - u_z).abs());
     }
+    println!("d eta/dt - u_z at z = 0: {worst:.1e} m/s (bound {tolerance:.1e})");
 }
 
 #[test]
@@ -168,6 +176,7 @@ fn the_acceleration_is_the_time_derivative_of_the_velocity() {
         + (PI / 10.0f64).powi(3);
     let size = wave_derivative_bound(&sea, 0, 0) + 1.0;
     let tolerance = dt * dt / 6.0 * truncation + 8.0 * EPS * size / dt;
+    let mut worst: f64 = 0.0;
     for (n, p) in points_in_water(100, 11).iter().enumerate() {
         let t = 0.3 * n as f64 + 0.05;
         let up = sea.kinematics(p, t + dt).velocity;
@@ -180,14 +189,17 @@ fn the_acceleration_is_the_time_derivative_of_the_velocity() {
                 "t {t} i {i}: {rate} vs {}",
                 a[i]
             );
+            worst = worst.max((rate - a[i]).abs());
         }
     }
+    println!("acceleration against d u/dt: {worst:.1e} m/s^2 (bound {tolerance:.1e})");
 }
 
 /// Central differences in x_j of the velocity and the acceleration at
-/// `p`, against the gradients, to `tolerance`.
-fn check_gradients(sea: &Sea, p: &[f64; 3], t: f64, step: f64, tolerance: [f64; 2]) {
+/// `p`, against the gradients, to `tolerance`; the largest differences.
+fn check_gradients(sea: &Sea, p: &[f64; 3], t: f64, step: f64, tolerance: [f64; 2]) -> [f64; 2] {
     let k = sea.kinematics(p, t);
+    let mut worst = [0.0f64; 2];
     for j in 0..3 {
         let (mut plus, mut minus) = (*p, *p);
         plus[j] += step;
@@ -205,8 +217,10 @@ fn check_gradients(sea: &Sea, p: &[f64; 3], t: f64, step: f64, tolerance: [f64; 
                 (da - ga).abs() < tolerance[1],
                 "da{i}/dx{j} at {p:?} t {t}: {da} vs {ga}"
             );
+            worst = [worst[0].max((du - gu).abs()), worst[1].max((da - ga).abs())];
         }
     }
+    worst
 }
 
 #[test]
@@ -229,13 +243,19 @@ fn the_gradients_are_the_derivatives_of_the_velocity_and_acceleration() {
             + roundoff(acceleration_size),
     ];
     let rows = [-35.0, -20.0, -5.0];
+    let mut worst = [0.0f64; 2];
     for (n, p) in points_in_water(150, 13).iter().enumerate() {
         let mut p = *p;
         if rows.iter().any(|r| (p[2] - r).abs() < 0.5) {
             p[2] += 1.0;
         }
-        check_gradients(&sea, &p, 0.2 * n as f64, step, tolerance);
+        let errors = check_gradients(&sea, &p, 0.2 * n as f64, step, tolerance);
+        worst = [worst[0].max(errors[0]), worst[1].max(errors[1])];
     }
+    println!(
+        "gradients by central differences: velocity {:.1e} (bound {:.1e}), acceleration {:.1e} (bound {:.1e})",
+        worst[0], tolerance[0], worst[1], tolerance[1]
+    );
     // In a crest (z > 0) and below the seabed the flow is that at z = 0 or
     // z = -h (W8), constant in z: the z column is zero there, as its
     // difference.

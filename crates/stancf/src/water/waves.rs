@@ -277,7 +277,7 @@ mod tests {
 
     #[test]
     fn the_wave_number_solves_the_dispersion_relation_to_round_off() {
-        // From k h = 1e-4 to 1e3: the residual of (W1) relative to w^2.
+        // From k h = 2e-4 to 1e5: the residual of (W1) relative to w^2.
         let mut worst: f64 = 0.0;
         for depth in [0.5, 5.0, 50.0, 500.0] {
             for i in 0..60 {
