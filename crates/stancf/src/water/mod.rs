@@ -3,6 +3,10 @@
 //! slab's space-time Gauss points.
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
+pub mod current;
+pub mod kinematics;
 pub mod seabed;
+pub mod spectrum;
+pub mod waves;
 
 pub use seabed::{ForceAtPoint, Seabed, SeabedContact};
