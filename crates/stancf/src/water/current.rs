@@ -92,12 +92,14 @@ impl CurrentProfile {
 
     /// The current U(z) and its derivative dU/dz at height z:
     ///
-    ///     U(z) = U_i + (z - z_i) (U_{i+1} - U_i) / (z_{i+1} - z_i)
-    ///            for z_i <= z < z_{i+1}                                   (W9)
-    ///     U(z) = U_0 for z < z_0,  U(z) = U_last for z >= z_last
+    /// ```text
+    /// U(z) = U_i + (z - z_i) (U_{i+1} - U_i) / (z_{i+1} - z_i)
+    ///        for z_i <= z < z_{i+1}                                   (W9)
+    /// U(z) = U_0 for z < z_0,  U(z) = U_last for z >= z_last
     ///
-    ///     dU/dz = (U_{i+1} - U_i) / (z_{i+1} - z_i) on [z_i, z_{i+1}),
-    ///             0 below z_0 and from z_last up                          (W10)
+    /// dU/dz = (U_{i+1} - U_i) / (z_{i+1} - z_i) on [z_i, z_{i+1}),
+    ///         0 below z_0 and from z_last up                          (W10)
+    /// ```
     ///
     /// At a row z = z_i, where U has a kink, dU/dz is the derivative on
     /// the segment above the row (the right-hand derivative in z); the
@@ -131,8 +133,10 @@ impl CurrentProfile {
 
 /// A smooth start in time: the factor
 ///
-///     r(t) = 0 for t <= 0,  (1 - cos(pi t / T)) / 2 for 0 < t < T,  1 after
-///     r'(t) = (pi / (2 T)) sin(pi t / T) for 0 < t < T,  0 otherwise  (W11)
+/// ```text
+/// r(t) = 0 for t <= 0,  (1 - cos(pi t / T)) / 2 for 0 < t < T,  1 after
+/// r'(t) = (pi / (2 T)) sin(pi t / T) for 0 < t < T,  0 otherwise  (W11)
+/// ```
 ///
 /// continuous with its first derivative at t = 0 and t = T. A duration of
 /// zero is no ramp (r = 1 always).

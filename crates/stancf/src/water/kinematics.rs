@@ -115,13 +115,17 @@ impl Sea {
     /// summed and ramped by r_w (W12), plus the current (W9)-(W10) ramped
     /// by r_c:
     ///
-    ///     u = r_w sum_i u_i + r_c U(z),  eta = r_w sum_i eta_i           (W13)
+    /// ```text
+    /// u = r_w sum_i u_i + r_c U(z),  eta = r_w sum_i eta_i           (W13)
+    /// ```
     ///
     /// A ramp r(t) (W11) multiplies a velocity field u(x, t) into r u, so
     /// the local acceleration stays the time derivative of the velocity:
     ///
-    ///     u_r = r u,  a_r = d(r u)/dt = r a + r' u,  eta_r = r eta
-    ///     grad u_r = r grad u,  grad a_r = r grad a + r' grad u         (W12)
+    /// ```text
+    /// u_r = r u,  a_r = d(r u)/dt = r a + r' u,  eta_r = r eta
+    /// grad u_r = r grad u,  grad a_r = r grad a + r' grad u         (W12)
+    /// ```
     ///
     /// A current U(z) is steady, so it contributes r_c U to the velocity,
     /// r_c' U to the acceleration and (r_c dU/dz, r_c' dU/dz) to the z

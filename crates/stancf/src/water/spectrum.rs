@@ -20,10 +20,12 @@ pub const HIGHEST_FREQUENCY: f64 = 4.0;
 /// The JONSWAP spectral density S(w) (m^2 s) in the form of DNV-RP-C205
 /// (2010) §3.5.5 with wp = 2 pi / Tp:
 ///
-///     S_PM(w) = (5/16) Hs^2 wp^4 w^-5 exp(-(5/4) (w / wp)^-4)
-///     S(w) = (1 - 0.287 ln gamma) S_PM(w)
-///            gamma^exp(-(w - wp)^2 / (2 sigma^2 wp^2))                  (W14)
-///     sigma = 0.07 for w <= wp, 0.09 for w > wp
+/// ```text
+/// S_PM(w) = (5/16) Hs^2 wp^4 w^-5 exp(-(5/4) (w / wp)^-4)
+/// S(w) = (1 - 0.287 ln gamma) S_PM(w)
+///        gamma^exp(-(w - wp)^2 / (2 sigma^2 wp^2))                  (W14)
+/// sigma = 0.07 for w <= wp, 0.09 for w > wp
+/// ```
 ///
 /// S_PM (Pierson-Moskowitz, gamma = 1) integrates to Hs^2/16 exactly:
 /// S_PM = (Hs^2/16) d/dw exp(-(5/4)(wp/w)^4). The factor 1 - 0.287 ln gamma
@@ -63,8 +65,10 @@ impl Jonswap {
     /// w_i = w_lo + (i + 1/2) dw, dw = (w_hi - w_lo)/N, of [w_lo, w_hi] =
     /// [0.5 wp, 4 wp], with
     ///
-    ///     A_i = sqrt(2 S(w_i) dw),  T_i = 2 pi / w_i,
-    ///     phi_i = 360 deg * u_i                                         (W15)
+    /// ```text
+    /// A_i = sqrt(2 S(w_i) dw),  T_i = 2 pi / w_i,
+    /// phi_i = 360 deg * u_i                                         (W15)
+    /// ```
     ///
     /// u_i the i-th draw of [`SplitMix64`] seeded with `seed`, mapped to
     /// [0, 1) by its top 53 bits (W16). The variance sum A_i^2/2 is the
@@ -141,10 +145,12 @@ impl Jonswap {
 /// SplitMix64 (Steele, Lea, Flood 2014; Vigna's reference constants): a
 /// 64-bit state advanced by the golden-ratio increment and mixed:
 ///
-///     s <- s + 0x9E3779B97F4A7C15
-///     z <- (s ^ (s >> 30)) * 0xBF58476D1CE4E5B9
-///     z <- (z ^ (z >> 27)) * 0x94D049BB133111EB
-///     x = z ^ (z >> 31)                                                (W16)
+/// ```text
+/// s <- s + 0x9E3779B97F4A7C15
+/// z <- (s ^ (s >> 30)) * 0xBF58476D1CE4E5B9
+/// z <- (z ^ (z >> 27)) * 0x94D049BB133111EB
+/// x = z ^ (z >> 31)                                                (W16)
+/// ```
 ///
 /// with wrapping products; a draw in [0, 1) is (x >> 11) 2^-53.
 #[derive(Clone, Debug)]

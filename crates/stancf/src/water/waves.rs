@@ -4,7 +4,9 @@
 //! A wave of amplitude A, angular frequency w = 2 pi / T and heading beta
 //! (from +x towards +y) over a flat seabed at z = -h has the phase
 //!
-//!     theta = k (x cos beta + y sin beta) - w t + phi                 (W2)
+//! ```text
+//! theta = k (x cos beta + y sin beta) - w t + phi                 (W2)
+//! ```
 //!
 //! the elevation eta = A cos theta, and the velocity potential of linear
 //! theory. Its wave number k solves the dispersion relation (W1); the
@@ -29,7 +31,9 @@ pub struct AiryWave {
 /// of depth `depth` (m) under gravity `gravity` (m/s^2), solving the
 /// finite-depth dispersion relation
 ///
-///     w^2 = g k tanh(k h)                                              (W1)
+/// ```text
+/// w^2 = g k tanh(k h)                                              (W1)
+/// ```
 ///
 /// Written for y = k h and x = w^2 h / g it reads f(y) = y tanh y - x = 0,
 /// f increasing and convex for y > 0, so Newton from Eckart's
@@ -63,13 +67,17 @@ const DEEP_WATER_KH: f64 = 20.0;
 
 /// The depth factors of linear theory at height z (-h <= z <= 0):
 ///
-///     C(z) = cosh(k (z + h)) / sinh(k h)
-///     S(z) = sinh(k (z + h)) / sinh(k h)                               (W3)
+/// ```text
+/// C(z) = cosh(k (z + h)) / sinh(k h)
+/// S(z) = sinh(k (z + h)) / sinh(k h)                               (W3)
+/// ```
 ///
 /// and, for k h > 20, the same ratios multiplied through by e^(-k h):
 ///
-///     C = (e^(k z) + e^(-k (z + 2 h))) / (1 - e^(-2 k h))
-///     S = (e^(k z) - e^(-k (z + 2 h))) / (1 - e^(-2 k h))
+/// ```text
+/// C = (e^(k z) + e^(-k (z + 2 h))) / (1 - e^(-2 k h))
+/// S = (e^(k z) - e^(-k (z + 2 h))) / (1 - e^(-2 k h))
+/// ```
 ///
 /// an exact rewriting that cannot overflow (both exponents are <= 0).
 fn depth_factors(k: f64, depth: f64, z: f64) -> (f64, f64) {
@@ -177,19 +185,25 @@ impl SolvedWave {
     /// Phi = (g A / w) cosh(k (z + h)) / cosh(k h) sin theta with (W1)
     /// gives u = grad Phi:
     ///
-    ///     eta = A cos theta
-    ///     u_h = A w C cos theta e,         u_z = A w S sin theta         (W4)
+    /// ```text
+    /// eta = A cos theta
+    /// u_h = A w C cos theta e,         u_z = A w S sin theta         (W4)
+    /// ```
     ///
     /// and the local acceleration a = du/dt (d theta/dt = -w):
     ///
-    ///     a_h = A w^2 C sin theta e,       a_z = -A w^2 S cos theta      (W5)
+    /// ```text
+    /// a_h = A w^2 C sin theta e,       a_z = -A w^2 S cos theta      (W5)
+    /// ```
     ///
     /// With d theta/dx_j = k e_j and dC/dz = k S, dS/dz = k C:
     ///
-    ///     du_h/dx_j = -A w C sin theta k e e_j,  du_h/dz = A w k S cos theta e
-    ///     du_z/dx_j =  A w S cos theta k e_j,    du_z/dz = A w k C sin theta  (W6)
-    ///     da_h/dx_j =  A w^2 C cos theta k e e_j, da_h/dz = A w^2 k S sin theta e
-    ///     da_z/dx_j =  A w^2 S sin theta k e_j,   da_z/dz = -A w^2 k C cos theta (W7)
+    /// ```text
+    /// du_h/dx_j = -A w C sin theta k e e_j,  du_h/dz = A w k S cos theta e
+    /// du_z/dx_j =  A w S cos theta k e_j,    du_z/dz = A w k C sin theta  (W6)
+    /// da_h/dx_j =  A w^2 C cos theta k e e_j, da_h/dz = A w^2 k S sin theta e
+    /// da_z/dx_j =  A w^2 S sin theta k e_j,   da_z/dz = -A w^2 k C cos theta (W7)
+    /// ```
     ///
     /// (j = x, y). Outside -h <= z <= 0 the flow is constant in z (W8), so
     /// there the z column of the gradients is zero.
