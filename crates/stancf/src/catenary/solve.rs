@@ -103,7 +103,8 @@ fn closure_residual(plane: &Plane, length: f64, span: f64, rise: f64) -> [f64; 2
     [x - span, z - rise]
 }
 
-/// Newton on (C7) with the exact Jacobian (C8), from the guess (C9).
+/// Newton on (C7) with the exact Jacobian (C8), from the guess (C9),
+/// each step shortened by [`safeguarded_step_length`].
 pub(super) fn solve_hanging(
     line: &CatenaryLine,
     compliance: f64,
@@ -111,52 +112,91 @@ pub(super) fn solve_hanging(
     rise: f64,
 ) -> Result<(Plane, usize), CatenaryError> {
     let length = line.length;
-    let closure_scale = length.max(span.hypot(rise));
-    let tolerance = CLOSURE_TOLERANCE * closure_scale;
-    let mut plane = initial_guess(line, compliance, span, rise);
-    let mut residual = closure_residual(&plane, length, span, rise);
+    let residual_of = |plane: &Plane| closure_residual(plane, length, span, rise);
+    newton_on_closure(
+        initial_guess(line, compliance, span, rise),
+        length.max(span.hypot(rise)),
+        ClosureSteps {
+            residual: &residual_of,
+            newton_step: &|plane, residual| newton_step(plane, length, residual),
+            polish: &|plane, step| {
+                let candidate = plane.stepped(1.0, step);
+                (candidate.horizontal > 0.0).then_some(candidate)
+            },
+            advance: &|plane, step, residual| {
+                let alpha = safeguarded_step_length(plane, step, residual, length, span, rise);
+                let next = plane.stepped(alpha, step);
+                let r = residual_of(&next);
+                (next, r)
+            },
+        },
+    )
+}
+
+/// The two closure equations' residual (or Newton step) at a state.
+type Pair = [f64; 2];
+
+/// What [`newton_on_closure`] needs of one closure problem with unknowns
+/// of type S: its residual (the fairlead's miss, in metres), the Newton
+/// step -J^-1 r (None where J is singular), the full step used to
+/// polish a converged state (None if it leaves the admissible states),
+/// and a safeguarded step with its new residual.
+pub(super) struct ClosureSteps<'a, S> {
+    pub residual: &'a dyn Fn(&S) -> Pair,
+    pub newton_step: &'a dyn Fn(&S, Pair) -> Option<Pair>,
+    pub polish: &'a dyn Fn(&S, Pair) -> Option<S>,
+    pub advance: &'a dyn Fn(&S, Pair, Pair) -> (S, Pair),
+}
+
+/// Newton on a two-equation closure (C7) or (C18) from `start`: stops
+/// when |r| <= 1e-13 `scale` after one polishing step, kept only if it
+/// does not undo the closure (round-off can make it useless, never
+/// harmful). Returns the state and the iterations, or the residual
+/// relative to `scale` where it stopped.
+pub(super) fn newton_on_closure<S>(
+    start: S,
+    scale: f64,
+    steps: ClosureSteps<S>,
+) -> Result<(S, usize), CatenaryError> {
+    let tolerance = CLOSURE_TOLERANCE * scale;
+    let mut state = start;
+    let mut residual = (steps.residual)(&state);
     let mut polished = false;
     for iteration in 0..MAX_NEWTON_ITERATIONS {
         let residual_norm = residual[0].hypot(residual[1]);
         let converged = residual_norm <= tolerance;
         let failure = CatenaryError::NotConverged {
             iterations: iteration,
-            residual: residual_norm / closure_scale,
+            residual: residual_norm / scale,
         };
         if !residual_norm.is_finite() {
             return Err(failure);
         }
         if converged && polished {
-            return Ok((plane, iteration));
+            return Ok((state, iteration));
         }
-        let Some(step) = newton_step(&plane, length, residual) else {
+        let Some(step) = (steps.newton_step)(&state, residual) else {
             return if converged {
-                Ok((plane, iteration))
+                Ok((state, iteration))
             } else {
                 Err(failure)
             };
         };
         if converged {
-            // One full polishing step, kept only if it does not undo the
-            // closure (round-off can make it useless, never harmful).
             polished = true;
-            let candidate = plane.stepped(1.0, step);
-            let candidate_residual = closure_residual(&candidate, length, span, rise);
-            if candidate.horizontal > 0.0
-                && candidate_residual[0].hypot(candidate_residual[1]) <= residual_norm
-            {
-                plane = candidate;
-                residual = candidate_residual;
+            if let Some(candidate) = (steps.polish)(&state, step) {
+                let candidate_residual = (steps.residual)(&candidate);
+                if candidate_residual[0].hypot(candidate_residual[1]) <= residual_norm {
+                    (state, residual) = (candidate, candidate_residual);
+                }
             }
             continue;
         }
-        let alpha = safeguarded_step_length(&plane, step, residual, length, span, rise);
-        plane = plane.stepped(alpha, step);
-        residual = closure_residual(&plane, length, span, rise);
+        (state, residual) = (steps.advance)(&state, step, residual);
     }
     Err(CatenaryError::NotConverged {
         iterations: MAX_NEWTON_ITERATIONS,
-        residual: residual[0].hypot(residual[1]) / closure_scale,
+        residual: residual[0].hypot(residual[1]) / scale,
     })
 }
 

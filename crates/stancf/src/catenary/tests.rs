@@ -292,16 +292,7 @@ fn inextensible_symmetric_span_is_the_classic_catenary() {
     let catenary = frame.catenary(line, span, 0.0);
     // L - 2 a sinh(h/(2a)) increases with a (from -inf to L - h > 0).
     let mismatch = |a: f64| length - 2.0 * a * (span / (2.0 * a)).sinh();
-    let (mut low, mut high) = (0.1, 1e3);
-    for _ in 0..200 {
-        let mid = 0.5 * (low + high);
-        if mismatch(mid) < 0.0 {
-            low = mid;
-        } else {
-            high = mid;
-        }
-    }
-    let a = 0.5 * (low + high);
+    let a = bisect(&mismatch, 0.1, 1e3);
     let h_error = (catenary.horizontal_tension() - weight * a).abs() / (weight * a);
     let expected_sag = a * ((span / (2.0 * a)).cosh() - 1.0);
     let sag_error = (catenary.sag() - expected_sag).abs() / length;
@@ -560,4 +551,19 @@ fn newton_converges_over_a_sweep_of_slack_and_rise() {
         "sweep: {count} lines, worst closure {worst:.1e} L, at most {most_iterations} iterations"
     );
     assert!(count >= 200);
+}
+
+/// The root of an increasing `f` with f(low) < 0 < f(high), by 200
+/// bisections (to the last bit of the bracket): an independent solve for
+/// the textbook catenaries the tests compare with.
+pub(super) fn bisect(f: &dyn Fn(f64) -> f64, mut low: f64, mut high: f64) -> f64 {
+    for _ in 0..200 {
+        let mid = 0.5 * (low + high);
+        if f(mid) < 0.0 {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    0.5 * (low + high)
 }

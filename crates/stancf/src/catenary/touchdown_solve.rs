@@ -4,12 +4,8 @@
 
 use super::super::profile::Plane;
 use super::TouchdownLine;
+use crate::catenary::solve::{newton_on_closure, ClosureSteps};
 use crate::catenary::CatenaryError;
-
-/// Relative closure residual at which Newton stops (before its polishing
-/// step), relative to max(L, chord), as in the free solve.
-const CLOSURE_TOLERANCE: f64 = 1e-13;
-const MAX_NEWTON_ITERATIONS: usize = 200;
 
 /// A line with its anchor on the seabed and fairlead forces (HF, VF),
 /// 0 < VF <= W L, HF > 0, W > 0.
@@ -167,67 +163,45 @@ pub(in crate::catenary) fn solve_resting(
                      it would fold back on itself",
         });
     }
-    let mut resting = initial_guess(line, compliance, xf, zf, vertical_reach);
-    let closure_scale = length.max(xf.hypot(zf));
-    let tolerance = CLOSURE_TOLERANCE * closure_scale;
     let residual_of = |r: &RestingLine| {
         let (x, z) = r.position(length);
         [x - xf, z - zf]
     };
-    let mut residual = residual_of(&resting);
-    let mut polished = false;
-    for iteration in 0..MAX_NEWTON_ITERATIONS {
-        let residual_norm = residual[0].hypot(residual[1]);
-        let converged = residual_norm <= tolerance;
-        let failure = CatenaryError::NotConverged {
-            iterations: iteration,
-            residual: residual_norm / closure_scale,
-        };
-        if !residual_norm.is_finite() {
-            return Err(failure);
+    newton_on_closure(
+        initial_guess(line, compliance, xf, zf, vertical_reach),
+        length.max(xf.hypot(zf)),
+        ClosureSteps {
+            residual: &residual_of,
+            newton_step: &newton_step,
+            polish: &|resting, step| Some(resting.stepped(step_length_inside(resting, step), step)),
+            advance: &|resting, step, residual| armijo_step(resting, step, residual, &residual_of),
+        },
+    )
+}
+
+/// The step from `resting` along `step`, from the longest that stays
+/// inside the admissible states, halved until the squared residual falls
+/// by the Armijo fraction 1e-4 of its linear prediction (-2 alpha |r|^2);
+/// the new state and its residual.
+fn armijo_step(
+    resting: &RestingLine,
+    step: [f64; 2],
+    residual: [f64; 2],
+    residual_of: &dyn Fn(&RestingLine) -> [f64; 2],
+) -> (RestingLine, [f64; 2]) {
+    let residual_norm = residual[0].hypot(residual[1]);
+    let mut alpha = step_length_inside(resting, step);
+    loop {
+        let candidate = resting.stepped(alpha, step);
+        let candidate_residual = residual_of(&candidate);
+        let candidate_norm = candidate_residual[0].hypot(candidate_residual[1]);
+        if candidate_norm * candidate_norm <= (1.0 - 2e-4 * alpha) * residual_norm * residual_norm
+            || alpha < 1e-10
+        {
+            return (candidate, candidate_residual);
         }
-        if converged && polished {
-            return Ok((resting, iteration));
-        }
-        let Some(step) = newton_step(&resting, residual) else {
-            return if converged {
-                Ok((resting, iteration))
-            } else {
-                Err(failure)
-            };
-        };
-        let alpha_max = step_length_inside(&resting, step);
-        if converged {
-            // One polishing step, kept only if it does not undo the closure.
-            polished = true;
-            let candidate = resting.stepped(alpha_max, step);
-            let candidate_residual = residual_of(&candidate);
-            if candidate_residual[0].hypot(candidate_residual[1]) <= residual_norm {
-                (resting, residual) = (candidate, candidate_residual);
-            }
-            continue;
-        }
-        // Halve the step until the squared residual falls by the Armijo
-        // fraction 1e-4 of its linear prediction (-2 alpha |r|^2).
-        let mut alpha = alpha_max;
-        loop {
-            let candidate = resting.stepped(alpha, step);
-            let candidate_residual = residual_of(&candidate);
-            let candidate_norm = candidate_residual[0].hypot(candidate_residual[1]);
-            if candidate_norm * candidate_norm
-                <= (1.0 - 2e-4 * alpha) * residual_norm * residual_norm
-                || alpha < 1e-10
-            {
-                (resting, residual) = (candidate, candidate_residual);
-                break;
-            }
-            alpha *= 0.5;
-        }
+        alpha *= 0.5;
     }
-    Err(CatenaryError::NotConverged {
-        iterations: MAX_NEWTON_ITERATIONS,
-        residual: residual[0].hypot(residual[1]) / closure_scale,
-    })
 }
 
 /// d = -J^-1 residual with J of (C19), or None if J is singular in

@@ -6,6 +6,7 @@
 //! against round-off or the truncation error of the reference method.
 
 use super::profile::Plane;
+use super::tests::bisect;
 use super::touchdown::{solve_touchdown, RestingLine, TouchdownLine, TouchdownRegime};
 use super::CatenaryError;
 
@@ -363,17 +364,9 @@ fn inextensible_limit_is_the_textbook_catenary_with_touchdown() {
         length - ls + h / weight * (weight * ls / h).asinh() - xf
     };
     // Ls = L at the largest H; X(H) - XF < 0 as H -> 0 (L - ZF < XF).
-    let (mut low, mut high) = (1e-9, weight * (length * length - zf * zf) / (2.0 * zf));
+    let (low, high) = (1e-9, weight * (length * length - zf * zf) / (2.0 * zf));
     assert!(mismatch(low) < 0.0 && mismatch(high) > 0.0);
-    for _ in 0..200 {
-        let mid = 0.5 * (low + high);
-        if mismatch(mid) < 0.0 {
-            low = mid;
-        } else {
-            high = mid;
-        }
-    }
-    let textbook_h = 0.5 * (low + high);
+    let textbook_h = bisect(&mismatch, low, high);
     let textbook_v = weight * suspended(textbook_h);
     let relative_gap = |ea: f64, friction: f64| {
         let solution =
