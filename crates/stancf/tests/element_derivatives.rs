@@ -355,17 +355,8 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
 fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
     use stancf::water::{Seabed, SeabedContact};
     let mut rng = Rng(0x5eab_ed00_1234_9876);
-    let n: [f64; 3] = [0.2, -0.1, 1.0];
-    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-    let bed = Seabed {
-        point: [0.2, 0.0, 0.0],
-        normal: n.map(|c| c / len),
-        stiffness: 1e5,
-        damping: 2e3,
-        friction_axial: 0.5,
-        friction_transverse: 0.9,
-        slip_velocity: 0.3,
-    };
+    let bed =
+        Seabed::plane([0.2, 0.0, 0.0], [0.2, -0.1, 1.0], 1e5, 2e3).with_friction(0.5, 0.9, 0.3);
     let contact = SeabedContact {
         seabed: bed,
         diameter: 0.5,

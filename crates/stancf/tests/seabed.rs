@@ -35,18 +35,9 @@ fn rope() -> Material {
 
 /// A tilted bed with friction that cuts the cable of [`cable_in_the_bed`].
 fn tilted_bed() -> SeabedContact {
-    let n: [f64; 3] = [0.1, -0.2, 1.0];
-    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     SeabedContact {
-        seabed: Seabed {
-            point: [0.0, 0.0, 0.17],
-            normal: n.map(|c| c / len),
-            stiffness: 2e4,
-            damping: 50.0,
-            friction_axial: 0.4,
-            friction_transverse: 0.8,
-            slip_velocity: 0.2,
-        },
+        seabed: Seabed::plane([0.0, 0.0, 0.17], [0.1, -0.2, 1.0], 2e4, 50.0)
+            .with_friction(0.4, 0.8, 0.2),
         diameter: 0.2,
     }
 }

@@ -89,6 +89,17 @@ impl Seabed {
         }
     }
 
+    /// A sloped bed: the plane through `point` with upward normal along
+    /// `normal` (any length; made a unit vector here).
+    pub fn plane(point: [f64; 3], normal: [f64; 3], stiffness: f64, damping: f64) -> Self {
+        let length = dot(&normal, &normal).sqrt();
+        Seabed {
+            point,
+            normal: normal.map(|c| c / length),
+            ..Seabed::flat(0.0, stiffness, damping)
+        }
+    }
+
     /// The same bed with Coulomb friction.
     pub fn with_friction(mut self, axial: f64, transverse: f64, slip_velocity: f64) -> Self {
         self.friction_axial = axial;
@@ -256,18 +267,9 @@ mod tests {
     use super::*;
 
     fn bed() -> SeabedContact {
-        let n = [0.1, -0.2, 1.0];
-        let l = dot(&n, &n).sqrt();
         SeabedContact {
-            seabed: Seabed {
-                point: [0.3, 0.0, -50.0],
-                normal: n.map(|c| c / l),
-                stiffness: 3e6,
-                damping: 3e5,
-                friction_axial: 0.6,
-                friction_transverse: 1.0,
-                slip_velocity: 0.05,
-            },
+            seabed: Seabed::plane([0.3, 0.0, -50.0], [0.1, -0.2, 1.0], 3e6, 3e5)
+                .with_friction(0.6, 1.0, 0.05),
             diameter: 0.08,
         }
     }
