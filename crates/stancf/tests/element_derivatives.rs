@@ -289,6 +289,8 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
             gravity: [0.0, -9.81, 0.0],
             drag: &drag,
             seabed: None,
+            water: None,
+            time: 0.0,
         };
         let r = rules(3, 3);
         let s = slab(0.05, 3);
@@ -365,6 +367,8 @@ fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
         gravity: [0.0, 0.0, -9.81],
         drag: &[],
         seabed: Some(&contact),
+        water: None,
+        time: 0.0,
     };
     let s = slab(0.05, 3);
     let r = rules(3, 3);

@@ -63,8 +63,8 @@ fn step_unknowns_counts_what_a_simulation_builds() {
     let mut planar_seen = [false; 2];
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for (direction, loads) in [
-            ([1.0, 0.0, 0.0], vec![gravity]),
-            ([1.0, 0.0, 0.0], vec![gravity, out_of_plane]),
+            ([1.0, 0.0, 0.0], vec![gravity.clone()]),
+            ([1.0, 0.0, 0.0], vec![gravity.clone(), out_of_plane.clone()]),
             ([0.6, 0.0, 0.8], vec![]),
         ] {
             for constraints in &held {

@@ -53,6 +53,16 @@ pub(super) fn load_values(sc: &Scenario, values: &mut Vec<(String, f64)>) -> Gra
                 values.push((format!("{k}.damping"), c.seabed.damping));
                 values.push((format!("{k}.diameter"), c.diameter));
             }
+            Load::Water(w) => {
+                let k = format!("loads[{i}]");
+                let m = &w.morison;
+                values.push((format!("{k}.density"), w.water.density));
+                values.push((format!("{k}.diameter"), m.diameter));
+                values.push((format!("{k}.cd_normal"), m.cd_normal));
+                values.push((format!("{k}.cd_axial"), m.cd_axial));
+                values.push((format!("{k}.ca_normal"), m.ca_normal));
+                values.push((format!("{k}.ca_axial"), m.ca_axial));
+            }
         }
     }
     gravity
@@ -85,7 +95,7 @@ pub(super) fn loads(
             Load::PointForce { force, .. } => point_force(f, i, force, s, place, t)?,
             Load::EndMoment { moment, .. } => end_moment(f, i, moment, s)?,
             Load::AirDrag(d) => drag(f, i, d, s, speed)?,
-            Load::Gravity { .. } | Load::Seabed(_) => {}
+            Load::Gravity { .. } | Load::Seabed(_) | Load::Water(_) => {}
         }
     }
     load_potential(f, sc, place, en.load_potential)
@@ -240,7 +250,7 @@ fn load_potential(
         .filter_map(|(i, l)| match l {
             Load::PointForce { .. } => Some(format!("loads[{i}].force")),
             Load::EndMoment { .. } => Some(format!("loads[{i}].moment")),
-            Load::Gravity { .. } | Load::AirDrag(_) | Load::Seabed(_) => None,
+            Load::Gravity { .. } | Load::AirDrag(_) | Load::Seabed(_) | Load::Water(_) => None,
         })
         .collect();
     f.need(

@@ -54,13 +54,16 @@ impl StepProblem<'_> {
         let n = self.model.dofs();
         let dpn = layout.dpn;
         let g = &self.model.gravity;
-        let loads = SlabLoads {
+        let mut loads = SlabLoads {
             gravity: g.map(|c| c * self.start.load_factor),
             drag: &self.model.drag,
             seabed: self.model.seabed.as_ref(),
+            water: self.model.water.as_ref(),
+            time: self.start.t,
         };
         let mut block = [[0.0; ND]; ND];
         for j in 0..layout.layers() {
+            loads.time = self.start.t + j as f64 * self.slab.dt;
             let slots = layer_slots(j);
             let row_slots = slots.map(|(i, k)| layout.row_slot(i, k));
             let col_slots = slots.map(|(i, k)| layout.unknown_slot(i, k));

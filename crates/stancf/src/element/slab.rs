@@ -203,6 +203,11 @@ pub struct SlabLoads<'a> {
     pub drag: &'a [crate::loads::AirDrag],
     /// The seabed, if the line can touch one (docs/method.md §12.2).
     pub seabed: Option<&'a crate::water::SeabedContact>,
+    /// The water, if the line is in water (docs/method.md §12.3-12.5).
+    pub water: Option<&'a crate::water::LineInWater>,
+    /// The time at the slab's start (s): time point g is at
+    /// `time + offset_g` (the sea's kinematics depend on it).
+    pub time: f64,
 }
 
 impl SlabLoads<'_> {
@@ -212,6 +217,8 @@ impl SlabLoads<'_> {
             gravity: g,
             drag: &[],
             seabed: None,
+            water: None,
+            time: 0.0,
         }
     }
 }
@@ -221,6 +228,8 @@ impl SlabLoads<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct TimePoint {
     pub w_dt: f64,
+    /// tau dt: the point's time after the slab's start.
+    pub offset: f64,
     pub shape: TimeShape,
 }
 
@@ -243,6 +252,7 @@ impl TimeSlab {
             .iter()
             .map(|(tau, w)| TimePoint {
                 w_dt: w * dt,
+                offset: tau * dt,
                 shape: crate::shape::time_hermite(tau, dt),
             })
             .collect();

@@ -7,7 +7,7 @@ use super::Model;
 use crate::error::ModelError;
 
 /// A load on the cable.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Load {
     /// Distributed weight rho A g, eq. (13).
     Gravity { acceleration: [f64; 3] },
@@ -21,6 +21,10 @@ pub enum Load {
     /// Contact with a seabed, with friction (docs/method.md §12.2; see
     /// [`crate::water::SeabedContact`]). At most one per cable.
     Seabed(crate::water::SeabedContact),
+    /// The water the cable is in: buoyancy, Morison drag, the fluid's
+    /// inertia and the added mass (docs/method.md §12.3-12.5; see
+    /// [`crate::water::LineInWater`]). At most one per cable.
+    Water(crate::water::LineInWater),
 }
 
 /// Checks `loads` on a cable of `elements` elements and returns the sum of
@@ -63,7 +67,7 @@ pub(super) fn gravity_and_drag(
                     gravity[c] += acceleration[c];
                 }
             }
-            Load::Seabed(_) => {}
+            Load::Seabed(_) | Load::Water(_) => {}
             Load::PointForce { node, force: v } | Load::EndMoment { node, moment: v } => {
                 let name = match load {
                     Load::PointForce { .. } => "force",
@@ -121,6 +125,40 @@ pub(super) fn seabed(loads: &[Load]) -> Result<Option<crate::water::SeabedContac
             }
         }
         found = Some(*c);
+    }
+    Ok(found)
+}
+
+/// The one water load among `loads`, checked: a density >= 0, a
+/// diameter > 0 and coefficients >= 0, all finite.
+pub(super) fn water(loads: &[Load]) -> Result<Option<crate::water::LineInWater>, ModelError> {
+    let mut found = None;
+    for (i, load) in loads.iter().enumerate() {
+        let Load::Water(w) = load else { continue };
+        let k = format!("loads[{i}]");
+        if found.is_some() {
+            return Err(ModelError::invalid(
+                k,
+                "a second water load (a cable is in one water)",
+            ));
+        }
+        check_positive(&format!("{k}.diameter"), w.morison.diameter)?;
+        let m = &w.morison;
+        for (name, v) in [
+            ("density", w.water.density),
+            ("cd_normal", m.cd_normal),
+            ("cd_axial", m.cd_axial),
+            ("ca_normal", m.ca_normal),
+            ("ca_axial", m.ca_axial),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(ModelError::invalid(
+                    format!("{k}.{name}"),
+                    format!("must be a finite number >= 0, got {v}"),
+                ));
+            }
+        }
+        found = Some(w.clone());
     }
     Ok(found)
 }

@@ -90,6 +90,8 @@ impl Model {
             Load::EndMoment { moment, .. } => moment[0] == 0.0 && moment[1] == 0.0,
             Load::AirDrag(d) => d.fluid_velocity[2] == 0.0,
             Load::Seabed(c) => c.seabed.normal[2] == 0.0,
+            // Buoyancy acts along z, the plane's normal.
+            Load::Water(_) => false,
         });
         in_plane.then_some(out)
     }

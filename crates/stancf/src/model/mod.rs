@@ -77,6 +77,8 @@ pub struct Model {
     pub drag: Vec<crate::loads::AirDrag>,
     /// The seabed the cable can touch (docs/method.md §12.2).
     pub seabed: Option<crate::water::SeabedContact>,
+    /// The water the cable is in (docs/method.md §12.3-12.5).
+    pub water: Option<crate::water::LineInWater>,
     /// Constraints, resolved to coordinates (none for a free cable).
     pub constraints: Constraints,
     /// Material coordinate x_j of every node ([`Grading::node_coordinates`]).
@@ -150,6 +152,7 @@ impl Model {
         let rules = quadrature_choice::space_rules(points)?;
         let (gravity, drag) = applied_loads::gravity_and_drag(&loads, cable.elements)?;
         let seabed = applied_loads::seabed(&loads)?;
+        let water = applied_loads::water(&loads)?;
         let lengths = cable.grading.element_lengths(cable.length, cable.elements);
         let node_x = cable.grading.node_coordinates(cable.length, cable.elements);
         let section = material.section();
@@ -165,6 +168,7 @@ impl Model {
             gravity,
             drag,
             seabed,
+            water,
             constraints: Constraints {
                 motion: vec![None; nodes * cable.element_type.dofs_per_node()],
                 ..Constraints::default()

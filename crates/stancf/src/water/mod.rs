@@ -4,9 +4,13 @@
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
 pub mod current;
+pub mod hydro;
 pub mod kinematics;
 pub mod seabed;
 pub mod spectrum;
+pub mod submerged;
 pub mod waves;
 
+pub use hydro::{LineInWater, Morison, Water};
 pub use seabed::{ForceAtPoint, Seabed, SeabedContact};
+pub use submerged::SubmergedFraction;
