@@ -81,6 +81,7 @@ pub struct AssemblyScratch {
     pub damping_work: f64,
     /// Work of the seabed contact over the step (W47).
     pub seabed_work: f64,
+    pub water_work: f64,
     /// Galerkin: dA/de_b, the momentum at the end of the step.
     pub end_momentum: Vec<f64>,
 }
@@ -98,6 +99,7 @@ impl AssemblyScratch {
             drag_work: 0.0,
             damping_work: 0.0,
             seabed_work: 0.0,
+            water_work: 0.0,
             end_momentum: vec![0.0; n],
         }
     }
@@ -238,6 +240,7 @@ impl StepProblem<'_> {
         scratch.drag_work = 0.0;
         scratch.damping_work = 0.0;
         scratch.seabed_work = 0.0;
+        scratch.water_work = 0.0;
         self.expand(x, scratch);
         let jac = jacobian.as_deref_mut();
         let mut derivs2 = std::mem::take(&mut scratch.derivs2);

@@ -81,6 +81,7 @@ impl StepProblem<'_> {
                 scratch.drag_work += derivs.drag_work;
                 scratch.damping_work += derivs.damping_work;
                 scratch.seabed_work += derivs.seabed_work;
+                scratch.water_work += derivs.water_work;
                 let targets = self.element_targets::<ND>(k, &row_slots);
                 for m in 0..4 {
                     for d in 0..ND {
@@ -186,6 +187,12 @@ impl StepProblem<'_> {
             // whole at every load factor (the bed is there from the start).
             if let Some(contact) = &self.model.seabed {
                 el.add_static_seabed(contact, 1.0, &q, &mut grad, want.then_some(&mut hess));
+            }
+            // Buoyancy grows with the weight; the steady current's drag
+            // with the other loads (§12.4).
+            if let Some(water) = &self.model.water {
+                let (factor, g) = (self.start.load_factor, &self.model.gravity);
+                el.add_static_water(water, factor, g, &q, &mut grad, want.then_some(&mut hess));
             }
             let fg = el.gravity_load(&gravity);
             for d in 0..ND {

@@ -42,9 +42,11 @@ mod curvature;
 mod damping;
 mod drag;
 mod energy;
+mod point_force;
 mod seabed;
 mod slab;
 mod strain;
+mod water;
 
 pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
 pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};

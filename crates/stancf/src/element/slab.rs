@@ -57,7 +57,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out.drag_work = 0.0;
         out.damping_work = 0.0;
         out.seabed_work = 0.0;
-        out.has_drag = !loads.drag.is_empty() || loads.seabed.is_some();
+        out.water_work = 0.0;
+        out.has_drag = !loads.drag.is_empty() || loads.seabed.is_some() || loads.water.is_some();
         out.has_damping = self.section.ba != 0.0;
         let rates = out.has_drag || out.has_damping;
         let np = slab.points.len();
@@ -95,6 +96,11 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             }
             if let Some(contact) = loads.seabed {
                 self.slab_seabed_at_point(contact, tp.w_dt, (&q, &qdot), at, &mut fq, out);
+            }
+            if let Some(water) = loads.water {
+                let when = (loads.time + tp.offset, tp.w_dt);
+                let g = &loads.gravity;
+                self.slab_water_at_point(water, when, g, (&q, &qdot), at, &mut fq, out);
             }
             for m in 0..4 {
                 let a = tp.w_dt * tp.shape.t_dot[m];
@@ -174,6 +180,8 @@ pub struct SlabDerivatives<const ND: usize> {
     pub damping_work: f64,
     /// The seabed's work over the slab, int int f . r_dot dx dt (W47).
     pub seabed_work: f64,
+    /// The water's work over the slab, int int f . r_dot dx dt (W24).
+    pub water_work: f64,
     pub c_at_points: Vec<[[f64; ND]; ND]>,
     pub g_at_points: Vec<[[f64; ND]; ND]>,
 }
@@ -189,6 +197,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             has_damping: false,
             damping_work: 0.0,
             seabed_work: 0.0,
+            water_work: 0.0,
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
         }

@@ -126,6 +126,8 @@ pub struct Simulation {
     damping_work: f64,
     /// Work done on the cable by the seabed (penalty, damping, friction).
     seabed_work: f64,
+    /// Work done on the cable by the water (buoyancy, drag, inertia).
+    water_work: f64,
     /// Unwrapped angles of the end moments.
     moment_angles: Vec<MomentAngle>,
     /// What is needed to undo the last step.
@@ -151,6 +153,7 @@ struct Undo {
     drag_work: f64,
     damping_work: f64,
     seabed_work: f64,
+    water_work: f64,
     moment_angles: Vec<MomentAngle>,
     reactions: Vec<(usize, [f64; 3])>,
 }
@@ -242,12 +245,23 @@ impl Simulation {
         self.seabed_work
     }
 
+    /// Work done on the cable by the water so far: the slab integral of
+    /// f . r_dot of buoyancy, drag and the fluid's inertia (W24) (the
+    /// buoyancy's potential is not in the energies).
+    pub fn water_work(&self) -> f64 {
+        self.water_work
+    }
+
     /// Work done on the cable by everything that is not a potential:
-    /// moving constraints, drag, axial damping and the seabed, so that
+    /// moving constraints, drag, axial damping, the seabed and the water, so that
     /// `energies().mechanical() - external_work()` stays at its initial
     /// value up to the scheme's error (docs/method.md §8).
     pub fn external_work(&self) -> f64 {
-        self.constraint_work + self.drag_work + self.damping_work + self.seabed_work
+        self.constraint_work
+            + self.drag_work
+            + self.damping_work
+            + self.seabed_work
+            + self.water_work
     }
 
     /// Energies of the current state; `load_potential` includes -M theta

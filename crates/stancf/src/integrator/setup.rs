@@ -92,6 +92,7 @@ impl Simulation {
             drag_work: 0.0,
             damping_work: 0.0,
             seabed_work: 0.0,
+            water_work: 0.0,
             moment_angles: moment_angles.clone(),
             reactions: reactions.clone(),
         };
@@ -116,6 +117,7 @@ impl Simulation {
             drag_work: 0.0,
             damping_work: 0.0,
             seabed_work: 0.0,
+            water_work: 0.0,
             moment_angles,
             previous,
             clock: None,

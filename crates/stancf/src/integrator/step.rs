@@ -106,6 +106,7 @@ impl Simulation {
         self.drag_work = self.previous.drag_work;
         self.damping_work = self.previous.damping_work;
         self.seabed_work = self.previous.seabed_work;
+        self.water_work = self.previous.water_work;
         self.moment_angles
             .copy_from_slice(&self.previous.moment_angles);
         self.reactions.copy_from_slice(&self.previous.reactions);
@@ -293,6 +294,7 @@ impl Simulation {
         self.previous.drag_work = self.drag_work;
         self.previous.damping_work = self.damping_work;
         self.previous.seabed_work = self.seabed_work;
+        self.previous.water_work = self.water_work;
         self.previous
             .moment_angles
             .copy_from_slice(&self.moment_angles);
@@ -316,12 +318,14 @@ impl Simulation {
         let galerkin = self.mass_lu.is_some();
         let works = !self.model.drag.is_empty()
             || self.model.has_axial_damping()
-            || self.model.seabed.is_some();
+            || self.model.seabed.is_some()
+            || self.model.water.is_some();
         if eliminated || galerkin || works {
             problem.residual(&self.x, &mut self.workspace.spare, &mut self.scratch);
             self.drag_work += self.scratch.drag_work;
             self.damping_work += self.scratch.damping_work;
             self.seabed_work += self.scratch.seabed_work;
+            self.water_work += self.scratch.water_work;
         } else {
             problem.expand(&self.x, &mut self.scratch);
         }

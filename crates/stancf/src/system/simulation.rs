@@ -225,6 +225,11 @@ impl SystemSimulation {
         self.lines.iter().map(Simulation::seabed_work).sum()
     }
 
+    /// Work done on the lines by the water so far (W24).
+    pub fn water_work(&self) -> f64 {
+        self.lines.iter().map(Simulation::water_work).sum()
+    }
+
     pub fn steps(&self) -> usize {
         self.steps
     }

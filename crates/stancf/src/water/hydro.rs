@@ -23,8 +23,10 @@
 //! -s rho_w A (Can P_n + Cat P_t) r_ddot, is not in f: it enters the action
 //! as the kinetic energy of the entrained water (§12.5).
 
-use super::kinematics::Sea;
+use super::kinematics::{FluidKinematics, Sea};
+use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
+use crate::element::dot;
 use std::sync::Arc;
 
 /// A line type's hydrodynamic coefficients (MoorDyn's LINE TYPES columns
@@ -79,3 +81,167 @@ impl LineInWater {
         SubmergedFraction::at(r[2], self.morison.diameter)
     }
 }
+
+/// The derivatives of (W18)-(W20), for the slab's Jacobian, with
+/// G_u = grad u, G_a = grad a_f, q(k, w) = k |w| w and
+/// Q(k, w) = dq/dw = k (|w| I + w w^T / |w|) (zero at w = 0):
+///
+/// ```text
+///   f_D = s f_D0,  f_D0 = q(k_n, v_n) + q(k_t, v_t),
+///   k_n = rho_w d Cdn / 2,  k_t = rho_w pi d Cdt / 2,   D_v = Q_n P_n + Q_t P_t
+///   df_D/dr_dot = -s D_v
+///   df_D/dr     =  s D_v G_u + f_D0 s' e_z^T
+///   df_D/dr_x   =  s (Q_n - Q_t) dv_n/dr_x,
+///                  dv_n/dr_x = -(t v^T + (v . t) I) P_n / |r_x|          (W21)
+///   f_I = s f_I0,  f_I0 = c_n a_f + (c_t - c_n) (t . a_f) t,
+///   c_n = rho_w A (1 + Can),  c_t = rho_w A (1 + Cat)
+///   df_I/dr     =  s (c_n I + (c_t - c_n) P_t) G_a + f_I0 s' e_z^T
+///   df_I/dr_x   =  s (c_t - c_n) (t a_f^T + (t . a_f) I) P_n / |r_x|      (W22)
+///   df_B/dr     = -s' rho_w A g e_z^T                                     (W23)
+/// ```
+///
+/// (dt/dr_x = P_n / |r_x|; the flow's gradients carry the dependence of
+/// u and a_f on where the line is.)
+impl LineInWater {
+    /// The water's force per unit length on the line at `r` with tangent
+    /// `rx` and velocity `rdot` at time `t`, under gravity `gravity`
+    /// (W18)-(W20), with its derivatives (W21)-(W23).
+    pub fn force(
+        &self,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        t: f64,
+        gravity: &[f64; 3],
+    ) -> ForceAtPoint {
+        let s = self.submerged(r);
+        if s.is_dry() {
+            return ForceAtPoint::default();
+        }
+        let flow = self.water.sea.kinematics(r, t);
+        self.force_in(&s, rx, rdot, &flow, gravity)
+    }
+
+    /// The force on a line at rest in the steady current (no waves, the
+    /// current at full strength whatever its ramp): the water's load in
+    /// statics (docs/method.md §12.4).
+    pub fn static_force(&self, r: &[f64; 3], rx: &[f64; 3], gravity: &[f64; 3]) -> ForceAtPoint {
+        let s = self.submerged(r);
+        if s.is_dry() {
+            return ForceAtPoint::default();
+        }
+        let flow = self.water.sea.steady_current(r);
+        self.force_in(&s, rx, &[0.0; 3], &flow, gravity)
+    }
+
+    /// (W18)-(W23) in the flow `flow` at the section.
+    fn force_in(
+        &self,
+        s: &SubmergedFraction,
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        flow: &FluidKinematics,
+        gravity: &[f64; 3],
+    ) -> ForceAtPoint {
+        let m = &self.morison;
+        let rho = self.water.density;
+        let area = m.area();
+        let len = dot(rx, rx).sqrt();
+        let t = rx.map(|c| c / len);
+        let mut p_t = [[0.0; 3]; 3];
+        let mut p_n = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                p_t[i][j] = t[i] * t[j];
+                p_n[i][j] = f64::from(u8::from(i == j)) - p_t[i][j];
+            }
+        }
+        let mut out = ForceAtPoint::default();
+        // Buoyancy (W18), (W23).
+        for i in 0..3 {
+            out.force[i] = -s.value * rho * area * gravity[i];
+            out.d_r[i][2] = -s.slope * rho * area * gravity[i];
+        }
+        // Drag (W19), (W21).
+        let v: [f64; 3] = std::array::from_fn(|i| flow.velocity[i] - rdot[i]);
+        let vt_s = dot(&v, &t);
+        let v_t = t.map(|c| vt_s * c);
+        let v_n: [f64; 3] = std::array::from_fn(|i| v[i] - v_t[i]);
+        let (q_n, dq_n) = quadratic(0.5 * rho * m.diameter * m.cd_normal, &v_n);
+        let k_t = 0.5 * rho * std::f64::consts::PI * m.diameter * m.cd_axial;
+        let (q_t, dq_t) = quadratic(k_t, &v_t);
+        let d_v = add(&mat_mul(&dq_n, &p_n), &mat_mul(&dq_t, &p_t));
+        let mut lever = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                lever[i][j] = -(t[i] * v[j] + if i == j { vt_s } else { 0.0 }) / len;
+            }
+        }
+        let dvn_drx = mat_mul(&lever, &p_n);
+        let dq_diff = sub(&dq_n, &dq_t);
+        let drag_rx = mat_mul(&dq_diff, &dvn_drx);
+        let drag_r = mat_mul(&d_v, &flow.velocity_gradient);
+        // Fluid inertia (W20), (W22).
+        let (c_n, c_t) = (
+            rho * area * (1.0 + m.ca_normal),
+            rho * area * (1.0 + m.ca_axial),
+        );
+        let a = &flow.acceleration;
+        let at_s = dot(a, &t);
+        let f_i0: [f64; 3] = std::array::from_fn(|i| c_n * a[i] + (c_t - c_n) * at_s * t[i]);
+        let mut inertia_mass = [[0.0; 3]; 3];
+        let mut swing = [[0.0; 3]; 3];
+        for i in 0..3 {
+            for j in 0..3 {
+                inertia_mass[i][j] = (c_t - c_n) * p_t[i][j] + if i == j { c_n } else { 0.0 };
+                swing[i][j] = (c_t - c_n) * (t[i] * a[j] + if i == j { at_s } else { 0.0 }) / len;
+            }
+        }
+        let inertia_r = mat_mul(&inertia_mass, &flow.acceleration_gradient);
+        let inertia_rx = mat_mul(&swing, &p_n);
+        for i in 0..3 {
+            let f_d0 = q_n[i] + q_t[i];
+            out.force[i] += s.value * (f_d0 + f_i0[i]);
+            out.d_r[i][2] += s.slope * (f_d0 + f_i0[i]);
+            for j in 0..3 {
+                out.d_rdot[i][j] = -s.value * d_v[i][j];
+                out.d_r[i][j] += s.value * (drag_r[i][j] + inertia_r[i][j]);
+                out.d_rx[i][j] = s.value * (drag_rx[i][j] + inertia_rx[i][j]);
+            }
+        }
+        out
+    }
+}
+
+/// q(k, w) = k |w| w and Q = dq/dw = k (|w| I + w w^T / |w|), zero at
+/// w = 0 (where q is C1).
+fn quadratic(k: f64, w: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
+    let speed = dot(w, w).sqrt();
+    let mut d = [[0.0; 3]; 3];
+    if speed == 0.0 || k == 0.0 {
+        return ([0.0; 3], d);
+    }
+    for i in 0..3 {
+        for j in 0..3 {
+            d[i][j] = k * w[i] * w[j] / speed;
+        }
+        d[i][i] += k * speed;
+    }
+    (w.map(|c| k * speed * c), d)
+}
+
+fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
+}
+
+fn add(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[i][j] + b[i][j]))
+}
+
+fn sub(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[i][j] - b[i][j]))
+}
+
+#[cfg(test)]
+#[path = "hydro_tests.rs"]
+mod tests;

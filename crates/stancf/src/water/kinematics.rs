@@ -161,6 +161,21 @@ impl Sea {
         }
         out
     }
+
+    /// The steady current at `position` at full strength (its ramp
+    /// ignored) and nothing else: the flow of statics (docs/method.md
+    /// §12.4). Still water without a current.
+    pub fn steady_current(&self, position: &[f64; 3]) -> FluidKinematics {
+        let mut out = FluidKinematics::default();
+        if let Some(current) = &self.current {
+            let (u, dudz) = current.velocity_and_derivative(position[2]);
+            for i in 0..3 {
+                out.velocity[i] = u[i];
+                out.velocity_gradient[i][2] = dudz[i];
+            }
+        }
+        out
+    }
 }
 
 #[cfg(test)]

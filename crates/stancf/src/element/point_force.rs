@@ -1,0 +1,126 @@
+//! A force per unit length at the points of the axial rule, as the slab
+//! sees it (docs/method.md §3.2, (M14)): the position of a point and the
+//! derivatives of the generalized force, shared by the seabed (§12.2) and
+//! the water (§12.3-12.4).
+
+use super::slab::SlabDerivatives;
+use super::CableElement;
+use crate::shape::SpatialShape;
+use crate::water::ForceAtPoint;
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// A force per unit length `force(r, r_x, r_dot, x)` (x the point's
+    /// index in the axial rule) at one time point of a slab, weight
+    /// `w_dt`: adds the generalized force `f_q,k = sum_s w_s l N_k f` to
+    /// `fq`, returns its work `w_dt sum_s w_s l f . r_dot` and, if
+    /// `hessian_at` names the time point, adds its derivatives to the
+    /// point's matrices (the position part joins G_g):
+    ///
+    /// ```text
+    ///   C_g += sum_s w_s l N_k N_l df/dr_dot
+    ///   G_g += sum_s w_s l N_k (N_l df/dr + N_x,l df/dr_x)
+    /// ```
+    pub(super) fn slab_force_per_length(
+        &self,
+        w_dt: f64,
+        (q, qdot): (&[f64; ND], &[f64; ND]),
+        hessian_at: Option<usize>,
+        fq: &mut [f64; ND],
+        out: &mut SlabDerivatives<ND>,
+        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+    ) -> f64 {
+        let mut work = 0.0;
+        for p in &self.axial_points {
+            let r = position(&p.shape, q);
+            let rdot = position(&p.shape, qdot);
+            let (rx, _) = p.shape.gradients(q);
+            let f = force(&r, &rx, &rdot);
+            if f == ForceAtPoint::default() {
+                continue;
+            }
+            work += w_dt * p.wl * (0..3).map(|i| f.force[i] * rdot[i]).sum::<f64>();
+            for k in 0..NS {
+                for i in 0..3 {
+                    fq[3 * k + i] += p.wl * p.shape.n[k] * f.force[i];
+                }
+            }
+            if let Some(gi) = hessian_at {
+                let (c, g) = (&mut out.c_at_points[gi], &mut out.g_at_points[gi]);
+                add_point_derivatives(&p.shape, p.wl, &f, c, g);
+            }
+        }
+        work
+    }
+
+    /// A force per unit length `force(r, r_x)` on a line at rest, in the
+    /// static rows: subtracts `factor int N^T f dx` from `grad` (= dU/dq)
+    /// and its derivative from `hess`.
+    pub(super) fn add_static_force_per_length(
+        &self,
+        factor: f64,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        mut hess: Option<&mut [[f64; ND]; ND]>,
+        force: impl Fn(&[f64; 3], &[f64; 3]) -> ForceAtPoint,
+    ) {
+        let mut unused = [[0.0; ND]; ND];
+        for p in &self.axial_points {
+            let r = position(&p.shape, q);
+            let (rx, _) = p.shape.gradients(q);
+            let f = force(&r, &rx);
+            if f == ForceAtPoint::default() {
+                continue;
+            }
+            for k in 0..NS {
+                for i in 0..3 {
+                    grad[3 * k + i] -= factor * p.wl * p.shape.n[k] * f.force[i];
+                }
+            }
+            if let Some(h) = hess.as_deref_mut() {
+                let mut g = [[0.0; ND]; ND];
+                add_point_derivatives(&p.shape, p.wl, &f, &mut unused, &mut g);
+                for (hr, gr) in h.iter_mut().zip(&g) {
+                    for (hv, gv) in hr.iter_mut().zip(gr) {
+                        *hv -= factor * gv;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// r = sum_k N_k q_k at a spatial point.
+fn position<const NS: usize>(shape: &SpatialShape<NS>, q: &[f64]) -> [f64; 3] {
+    let mut r = [0.0; 3];
+    for k in 0..NS {
+        for (i, ri) in r.iter_mut().enumerate() {
+            *ri += shape.n[k] * q[3 * k + i];
+        }
+    }
+    r
+}
+
+/// The derivatives of the generalized force of a force per length at one
+/// spatial point of weight `wl`: velocity part into `c`, position and
+/// tangent parts into `g` (the formulas of
+/// [`CableElement::slab_force_per_length`]).
+fn add_point_derivatives<const NS: usize, const ND: usize>(
+    shape: &SpatialShape<NS>,
+    wl: f64,
+    f: &ForceAtPoint,
+    c: &mut [[f64; ND]; ND],
+    g: &mut [[f64; ND]; ND],
+) {
+    for k in 0..NS {
+        for l in 0..NS {
+            let a = wl * shape.n[k] * shape.n[l];
+            let b = wl * shape.n[k] * shape.n_x[l];
+            for i in 0..3 {
+                for j in 0..3 {
+                    c[3 * k + i][3 * l + j] += a * f.d_rdot[i][j];
+                    g[3 * k + i][3 * l + j] += a * f.d_r[i][j] + b * f.d_rx[i][j];
+                }
+            }
+        }
+    }
+}

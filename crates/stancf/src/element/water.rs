@@ -1,0 +1,51 @@
+//! The water on the element (docs/method.md §12.3-12.4, (W18)-(W24)):
+//! buoyancy, Morison drag and the fluid's inertia of
+//! [`crate::water::LineInWater`] per unit length at the points of the
+//! axial rule, evaluated with the sea's kinematics at each time point of
+//! the slab (t = slab start + tau dt), its virtual work with the matrices
+//! C_g, G_g of its exact Jacobian, and its static form (buoyancy and the
+//! steady current).
+
+use super::slab::SlabDerivatives;
+use super::CableElement;
+use crate::water::LineInWater;
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// The water at one time point of a slab, at time `t`, weight `w_dt`,
+    /// under gravity `gravity` (W24): its generalized force into `fq`, its
+    /// work into `out.water_work`, its derivatives into the point's C_g,
+    /// G_g (see [`Self::slab_force_per_length`]).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn slab_water_at_point(
+        &self,
+        water: &LineInWater,
+        (t, w_dt): (f64, f64),
+        gravity: &[f64; 3],
+        state: (&[f64; ND], &[f64; ND]),
+        hessian_at: Option<usize>,
+        fq: &mut [f64; ND],
+        out: &mut SlabDerivatives<ND>,
+    ) {
+        out.water_work +=
+            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot| {
+                water.force(r, rx, rdot, t, gravity)
+            });
+    }
+
+    /// The water on a line at rest (docs/method.md §12.4): subtracts
+    /// `factor int N^T f dx` of buoyancy under `gravity` and the steady
+    /// current's drag from `grad` (= dU/dq) and its derivative from `hess`.
+    pub fn add_static_water(
+        &self,
+        water: &LineInWater,
+        factor: f64,
+        gravity: &[f64; 3],
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) {
+        self.add_static_force_per_length(factor, q, grad, hess, |r, rx| {
+            water.static_force(r, rx, gravity)
+        });
+    }
+}
