@@ -274,7 +274,9 @@ pub fn node_bending(model: &Model, state: &State) -> Vec<NodeBending> {
 /// The seabed's consistent nodal forces (N) on the nodes' positions,
 /// `sum_e int N_k f dx` of the contact force per length f(r, r_x, r_dot)
 /// (docs/method.md §12.2), friction included: what the bed exerts on the
-/// line around each node. Zero without a seabed.
+/// line around each node. Zero without a seabed. Friction is the sliding
+/// friction of the state's velocities; a static result (at rest) shows
+/// none of the static friction against the slide from the seed (W48).
 pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
     let mut out = vec![[0.0; 3]; model.nodes()];
     let Some(contact) = &model.seabed else {

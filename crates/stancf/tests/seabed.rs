@@ -23,6 +23,13 @@ use step_checks::check_schemes_and_routes;
 /// 1e-3 d = 2e-4 m wide, far wider than the differences' step.
 const FD_TOL: f64 = 1e-7;
 
+/// In statics friction resists the slide from the seed, regularized over
+/// u_s = 1e-3 d = 2e-4 m (W48): central differences with h = 1e-6 across
+/// it carry a truncation error of order (h / u_s)^2 = 2.5e-5 of the
+/// friction's stiffness (measured 4.2e-6 overall); a wrong derivative of
+/// the friction would be off by its whole size, 1e-2 of the rows or more.
+const FD_TOL_STATIC_FRICTION: f64 = 5e-5;
+
 fn rope() -> Material {
     Material {
         youngs_modulus: 2.0e3,
@@ -61,8 +68,9 @@ fn cable_in_the_bed(kind: ElementType, constraints: Vec<Constraint>) -> Model {
 
 /// Assembled steps with the line partly in the bed and sliding: P2 with 1
 /// and 2 layers and the Galerkin step, SAC-2 and SAC-3, free and with a
-/// clamped end by both constraint routes, and the static rows: the
-/// Jacobian against central differences to 1e-7.
+/// clamped end by both constraint routes: the Jacobian against central
+/// differences to 1e-7; the static rows, with friction against the slide
+/// from the seed, to 5e-5.
 #[test]
 fn step_jacobian_with_seabed_contact_matches_finite_differences() {
     let mut rng = Rng(0x5eab_ed00_0000_0013);
@@ -85,11 +93,17 @@ fn step_jacobian_with_seabed_contact_matches_finite_differences() {
             Scheme::P2 { layers: 1 },
             Scheme::P2 { layers: 2 },
             Scheme::Galerkin,
-            Scheme::Static,
         ];
         let label = format!("{kind:?}");
         worst = worst.max(check_schemes_and_routes(
             &model, &schemes, &mut rng, &label, FD_TOL,
+        ));
+        worst = worst.max(check_schemes_and_routes(
+            &model,
+            &[Scheme::Static],
+            &mut rng,
+            &label,
+            FD_TOL_STATIC_FRICTION,
         ));
     }
     eprintln!("step Jacobians with the seabed: worst rel. error {worst:.1e}");

@@ -184,9 +184,12 @@ impl StepProblem<'_> {
                 );
             }
             // A line at rest on the bed: its contact force f(r, r_x, 0),
-            // whole at every load factor (the bed is there from the start).
+            // whole at every load factor (the bed is there from the start),
+            // its friction against the slide from the seed (start.e, W48).
             if let Some(contact) = &self.model.seabed {
-                el.add_static_seabed(contact, 1.0, &q, &mut grad, want.then_some(&mut hess));
+                let seed: [f64; ND] = gather(&self.start.e, o);
+                let h = want.then_some(&mut hess);
+                el.add_static_seabed(contact, 1.0, (&q, &seed), &mut grad, h);
             }
             // Buoyancy grows with the weight; the steady current's drag
             // with the other loads (§12.4).

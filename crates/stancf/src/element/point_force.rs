@@ -76,22 +76,24 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         fq
     }
 
-    /// A force per unit length `force(r, r_x)` on a line at rest, in the
-    /// static rows: subtracts `factor int N^T f dx` from `grad` (= dU/dq)
-    /// and its derivative from `hess`.
+    /// A force per unit length `force(r, r_x, r_0)` on a line at rest, in
+    /// the static rows (r_0: where the point was in the coordinates
+    /// `seed`): subtracts `factor int N^T f dx` from `grad` (= dU/dq) and
+    /// its derivative from `hess`.
     pub(super) fn add_static_force_per_length(
         &self,
         factor: f64,
-        q: &[f64; ND],
+        (q, seed): (&[f64; ND], &[f64; ND]),
         grad: &mut [f64; ND],
         mut hess: Option<&mut [[f64; ND]; ND]>,
-        force: impl Fn(&[f64; 3], &[f64; 3]) -> ForceAtPoint,
+        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
     ) {
         let mut unused = [[0.0; ND]; ND];
         for p in &self.axial_points {
             let r = position(&p.shape, q);
+            let r0 = position(&p.shape, seed);
             let (rx, _) = p.shape.gradients(q);
-            let f = force(&r, &rx);
+            let f = force(&r, &rx, &r0);
             if f == ForceAtPoint::default() {
                 continue;
             }

@@ -27,19 +27,20 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             });
     }
 
-    /// Static contact (a line at rest on the bed, docs/method.md §12.2):
-    /// subtracts `factor int N^T f(r, r_x, 0) dx` from `grad` (= dU/dq)
-    /// and its derivative from `hess`.
+    /// Static contact (a line at rest on the bed, docs/method.md §12.2,
+    /// (W48)): subtracts `factor int N^T f dx` of the contact force with
+    /// friction against the slide from the seed coordinates `seed` from
+    /// `grad` (= dU/dq) and its derivative from `hess`.
     pub fn add_static_seabed(
         &self,
         contact: &SeabedContact,
         factor: f64,
-        q: &[f64; ND],
+        (q, seed): (&[f64; ND], &[f64; ND]),
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) {
-        self.add_static_force_per_length(factor, q, grad, hess, |r, rx| {
-            contact.force(r, rx, &[0.0; 3])
+        self.add_static_force_per_length(factor, (q, seed), grad, hess, |r, rx, r0| {
+            contact.static_force(r, rx, &std::array::from_fn(|i| r[i] - r0[i]))
         });
     }
 }

@@ -44,7 +44,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) {
-        self.add_static_force_per_length(factor, q, grad, hess, |r, rx| {
+        self.add_static_force_per_length(factor, (q, q), grad, hess, |r, rx, _| {
             water.static_force(r, rx, gravity)
         });
     }

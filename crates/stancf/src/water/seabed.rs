@@ -171,10 +171,44 @@ impl SeabedContact {
         1e-3 * self.diameter
     }
 
+    /// The displacement scale u_s of static friction (W48): 1e-3 of the
+    /// diameter, the contact ramp's width.
+    pub fn static_slip(&self) -> f64 {
+        1e-3 * self.diameter
+    }
+
     /// The contact force per unit length (W42)-(W44) and its derivatives
     /// (W45)-(W46) at position r, tangent r_x, velocity r_dot. Zero, with
     /// zero derivatives, clear of the bed.
     pub fn force(&self, r: &[f64; 3], rx: &[f64; 3], rdot: &[f64; 3]) -> ForceAtPoint {
+        self.force_with(r, rx, rdot, (rdot, self.seabed.slip_velocity), false)
+    }
+
+    /// The contact force on a line at rest whose point at `r` has slid by
+    /// `slide` = r - r_0 from where the static solve started (W48):
+    /// friction resists that displacement as it resists a velocity in
+    /// (W43)-(W44), regularized below u_s = [`Self::static_slip`], so a
+    /// line pulled along the bed from its seed carries Coulomb's friction
+    /// once it has moved by a few u_s. The derivatives in r include the
+    /// slide's (d slide / dr = I); d_rdot is zero.
+    pub fn static_force(&self, r: &[f64; 3], rx: &[f64; 3], slide: &[f64; 3]) -> ForceAtPoint {
+        let mut out = self.force_with(r, rx, &[0.0; 3], (slide, self.static_slip()), true);
+        out.d_rdot = [[0.0; 3]; 3];
+        out
+    }
+
+    /// (W42)-(W46) with the normal damping on `rdot` and the friction on
+    /// `slide` regularized below `slip` (a velocity in dynamics, a
+    /// displacement in statics); the friction's derivative in `slide`
+    /// goes into d_r if `slide_is_position`, else into d_rdot.
+    fn force_with(
+        &self,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        (slide, slip): (&[f64; 3], f64),
+        slide_is_position: bool,
+    ) -> ForceAtPoint {
         let bed = &self.seabed;
         let n = bed.normal;
         let d = self.diameter;
@@ -194,25 +228,22 @@ impl SeabedContact {
         );
         add_scaled(&mut out.d_rdot, -d * bed.damping * s, &nn);
         if bed.has_friction() {
-            self.add_friction(
-                d * bed.stiffness * p,
-                d * bed.stiffness * s,
-                rx,
-                rdot,
-                &mut out,
-            );
+            let normal = (d * bed.stiffness * p, d * bed.stiffness * s);
+            self.add_friction(normal, rx, (slide, slip), slide_is_position, &mut out);
         }
         out
     }
 
-    /// Adds the friction (W43)-(W44) with elastic normal force `ne` (and
-    /// its derivative along -n, `dne`) and its derivatives (W45)-(W46).
+    /// Adds the friction (W43)-(W44) on the sliding `rdot` (a velocity,
+    /// or in statics a displacement, regularized below `vs`) with elastic
+    /// normal force `ne` (and its derivative along -n, `dne`) and its
+    /// derivatives (W45)-(W46), the sliding's into d_r if `into_r`.
     fn add_friction(
         &self,
-        ne: f64,
-        dne: f64,
+        (ne, dne): (f64, f64),
         rx: &[f64; 3],
-        rdot: &[f64; 3],
+        (rdot, vs): (&[f64; 3], f64),
+        into_r: bool,
         out: &mut ForceAtPoint,
     ) {
         let bed = &self.seabed;
@@ -236,7 +267,6 @@ impl SeabedContact {
         let da = mat_mul(&ia, &pn);
         let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
         let db = mat_mul(&nx, &da);
-        let vs = bed.slip_velocity;
         let mut u = [0.0; 3];
         for (e, de, mu) in [
             (a, da, bed.friction_axial),
@@ -250,7 +280,12 @@ impl SeabedContact {
                 u[i] += mu * phi * e[i];
                 out.force[i] -= ne * mu * phi * e[i];
             }
-            add_scaled(&mut out.d_rdot, -ne * mu * dphi, &outer(&e, &e));
+            let sliding = if into_r {
+                &mut out.d_r
+            } else {
+                &mut out.d_rdot
+            };
+            add_scaled(sliding, -ne * mu * dphi, &outer(&e, &e));
             // d(phi e)/dr_x = phi' e (r_dot^T De) + phi De.
             let rdot_de: [f64; 3] =
                 std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
@@ -356,5 +391,64 @@ mod tests {
         let coulomb = |mu: f64| mu * ne / (1.0f64 + 1e-6).sqrt();
         assert!((fa[0] + coulomb(0.5)).abs() <= 1e-12 * ne);
         assert!((ft[1] - coulomb(1.0)).abs() <= 1e-12 * ne);
+    }
+
+    /// Static friction (W48): the slide r - r_0 stands where the velocity
+    /// was, so the derivative in r of the force with r_0 held is the
+    /// velocity-free derivative plus the sliding's; against central
+    /// differences as above, in the bed and in the ramp.
+    #[test]
+    fn the_static_contact_force_derivatives_match_finite_differences() {
+        let c = bed();
+        let n = c.seabed.normal;
+        let rx = [0.8, 0.5, -0.1];
+        for below in [0.01, 0.3 * c.ramp_width()] {
+            let along = [0.4, 0.9, 0.0];
+            let along_n = dot(&along, &n);
+            let r: [f64; 3] = std::array::from_fn(|i| {
+                c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
+            });
+            // Slid by a few u_s (where phi bends) from r_0.
+            let r0: [f64; 3] =
+                std::array::from_fn(|i| r[i] - [2.0, -1.0, 0.5][i] * c.static_slip());
+            let force = |r: &[f64; 3], rx: &[f64; 3]| {
+                c.static_force(r, rx, &std::array::from_fn(|i| r[i] - r0[i]))
+            };
+            let f0 = force(&r, &rx);
+            assert_eq!(f0.d_rdot, [[0.0; 3]; 3]);
+            let scale = [f0.d_r, f0.d_rx]
+                .iter()
+                .flatten()
+                .flatten()
+                .fold(0.0f64, |m, x| m.max(x.abs()));
+            // h = 1e-7: round-off eps |r| / h stays below 1e-7 at |r| ~ 50 m
+            // and truncation (h / u_s)^2 below 1e-5 across the slide's
+            // regularization (u_s = 8e-5 m).
+            let h = 1e-7;
+            for j in 0..3 {
+                for (which, analytic) in [(0, f0.d_r), (1, f0.d_rx)] {
+                    let (mut rp, mut rm, mut xp, mut xm) = (r, r, rx, rx);
+                    if which == 0 {
+                        rp[j] += h;
+                        rm[j] -= h;
+                    } else {
+                        xp[j] += h;
+                        xm[j] -= h;
+                    }
+                    let (fp, fm) = (force(&rp, &xp).force, force(&rm, &xm).force);
+                    for i in 0..3 {
+                        let fd = (fp[i] - fm[i]) / (2.0 * h);
+                        assert!(
+                            (fd - analytic[i][j]).abs() <= 1e-6 * scale,
+                            "arg {which} d f{i}/d x{j}: fd {fd} analytic {}",
+                            analytic[i][j]
+                        );
+                    }
+                }
+            }
+            // Slid far: Coulomb's friction against the slide, no damping.
+            let far = c.static_force(&r, &[1.0, 0.0, 0.0], &[1.0, 0.0, 0.0]);
+            assert!(far.force[0] < 0.0);
+        }
     }
 }
