@@ -150,6 +150,7 @@ fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: 
                 position: p.position,
                 mass: p.mass,
                 force: std::array::from_fn(|k| p.force[k] - buoyancy * gravity[k]),
+                water: None,
             }
         }
     }

@@ -65,10 +65,11 @@ impl SystemMass {
                 }
             });
         }
-        for (p, point) in system.points().iter().enumerate() {
+        for p in 0..system.points().len() {
+            let inertia = system.point_inertia(p);
             for c in 0..3 {
                 if let Some(g) = layout.point_unknown(p, 0, c) {
-                    lu.matrix_mut().add(g, g, point.mass);
+                    lu.matrix_mut().add(g, g, inertia);
                 }
             }
         }

@@ -63,6 +63,9 @@ pub struct Point {
     pub mass: f64,
     /// A constant force on a free point (N), e.g. a buoy's net lift.
     pub force: [f64; 3],
+    /// The water on a free point: buoyancy, drag, the fluid's inertia and
+    /// the added mass (docs/method.md §12.6); None in air.
+    pub water: Option<crate::water::PointInWater>,
 }
 
 impl Point {
@@ -72,6 +75,7 @@ impl Point {
             position,
             mass: 0.0,
             force: [0.0; 3],
+            water: None,
         }
     }
 
@@ -81,6 +85,7 @@ impl Point {
             position,
             mass,
             force: [0.0; 3],
+            water: None,
         }
     }
 
@@ -93,6 +98,7 @@ impl Point {
             position,
             mass: 0.0,
             force: [0.0; 3],
+            water: None,
         }
     }
 
@@ -255,10 +261,22 @@ impl System {
         self.gravity
     }
 
-    /// The load on free point p: its weight and its constant force.
+    /// The constant load on free point p: its weight, its constant force
+    /// and, in water, its buoyancy (W33).
     pub fn point_load(&self, p: usize) -> [f64; 3] {
         let pt = &self.points[p];
-        std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i])
+        let buoyancy = pt
+            .water
+            .as_ref()
+            .map_or([0.0; 3], |w| w.buoyancy(&self.gravity));
+        std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i] + buoyancy[i])
+    }
+
+    /// The inertia of free point p: its mass and, in water, its added mass
+    /// (W35).
+    pub fn point_inertia(&self, p: usize) -> f64 {
+        let pt = &self.points[p];
+        pt.mass + pt.water.as_ref().map_or(0.0, |w| w.added_mass())
     }
 
     /// The lines attached to point p: (line, end 0 = A or 1 = B).
@@ -433,12 +451,15 @@ fn check_point(i: usize, p: &Point) -> Result<(), ModelError> {
             "must be finite",
         ));
     }
-    if !p.is_free() && (p.mass != 0.0 || p.force != [0.0; 3]) {
+    if !p.is_free() && (p.mass != 0.0 || p.force != [0.0; 3] || p.water.is_some()) {
         return Err(ModelError::invalid(
             key,
-            "only a free point carries a mass or a force (a fixed or coupled point's \
-             position is given)",
+            "only a free point carries a mass, a force or water loads (a fixed or coupled \
+             point's position is given)",
         ));
+    }
+    if let Some(w) = &p.water {
+        w.check(&key)?;
     }
     Ok(())
 }

@@ -14,10 +14,22 @@
 //! in statics the row is - F. The lines attached at the point
 //! add their own shares to the same rows (their end's coordinates are
 //! the point's), so the rows state the point's balance of momentum.
+//!
+//! In water (docs/method.md §12.6) m includes the added mass and F the
+//! buoyancy; the drag and the fluid's inertia f(r, r_dot, t) (W34) add
+//! their virtual work at the slab's time points,
+//!
+//! ```text
+//!   dA_p/dy_m += sum_g w_g dt phi_m f(r_g, r_dot_g, t_g)
+//!   d2A_p/dy_m dy_n += sum_g w_g dt phi_m (phi_n df/dr + phidot_n df/dr_dot)
+//! ```
+//!
+//! and in statics - f of the steady current at rest.
 
 use crate::assembly::{Kind, Scheme, SlabLayout};
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
+use crate::water::{PointForce, PointInWater};
 
 /// The values of one free point at the time nodes of a step:
 /// `e[i]`, `v[i]` at time node i (P2 and statics; the Galerkin step's
@@ -31,8 +43,13 @@ pub struct PointNodes {
 /// A free point's data for its terms: mass, load (already scaled by the
 /// load factor), global indices of its unknowns (and rows) per slot.
 pub struct PointTerms<'a> {
+    /// The point's inertia: its mass and added mass.
     pub mass: f64,
     pub load: [f64; 3],
+    /// The water's drag and inertia on the point, if in water.
+    pub water: Option<&'a PointInWater>,
+    /// The step's start time.
+    pub time: f64,
     /// Global index of (slot, component): `index[3 slot + c]`.
     pub index: &'a [usize],
     pub layout: &'a SlabLayout,
@@ -69,12 +86,42 @@ impl PointTerms<'_> {
     /// `m sum_n C_(e_b) n y_n + b_(e_b) F`.
     pub fn end_momentum(&self, nodes: &PointNodes) -> [f64; 3] {
         let y = [nodes.e[0], nodes.v[0], nodes.e[1], nodes.v[1]];
-        std::array::from_fn(|c| {
+        let mut p: [f64; 3] = std::array::from_fn(|c| {
             let mut p = self.slab.load[2] * self.load[c];
             for (b, yb) in y.iter().enumerate() {
                 p += self.mass * self.slab.kinetic[2][b] * yb[c];
             }
             p
+        });
+        if let Some(water) = self.water {
+            for (tp, f) in self.water_forces(water, 0, &y) {
+                for c in 0..3 {
+                    p[c] += tp.w_dt * tp.shape.t[2] * f.force[c];
+                }
+            }
+        }
+        p
+    }
+
+    /// The water's force (W34) at the time points of layer j, whose slot
+    /// values are `y` = [e_j, v_j, e_j+1, v_j+1].
+    fn water_forces<'s>(
+        &'s self,
+        water: &'s PointInWater,
+        j: usize,
+        y: &'s [[f64; 3]; 4],
+    ) -> impl Iterator<Item = (&'s crate::element::TimePoint, PointForce)> + 's {
+        let start = self.time + j as f64 * self.slab.dt;
+        self.slab.points.iter().map(move |tp| {
+            let mut r = [0.0; 3];
+            let mut rdot = [0.0; 3];
+            for (m, ym) in y.iter().enumerate() {
+                for c in 0..3 {
+                    r[c] += tp.shape.t[m] * ym[c];
+                    rdot[c] += tp.shape.t_dot[m] * ym[c];
+                }
+            }
+            (tp, water.force(&r, &rdot, start + tp.offset))
         })
     }
 
@@ -88,11 +135,7 @@ impl PointTerms<'_> {
     ) {
         let layout = self.layout;
         if layout.scheme == Scheme::Static {
-            if let Some(s) = layout.row_slot(0, Kind::Position) {
-                for c in 0..3 {
-                    residual[self.index[3 * s + c]] -= self.load[c];
-                }
-            }
+            self.add_static(nodes, residual, jacobian);
             return;
         }
         let m = self.mass;
@@ -117,6 +160,17 @@ impl PointTerms<'_> {
                         g += m * self.slab.kinetic[a][b] * y[b][c];
                     }
                     residual[self.index[3 * rs + c]] += g;
+                }
+                if let Some(water) = self.water {
+                    self.add_water(
+                        water,
+                        j,
+                        (a, rs),
+                        &slots,
+                        &y,
+                        residual,
+                        jacobian.as_deref_mut(),
+                    );
                 }
                 let Some(jac) = jacobian.as_deref_mut() else {
                     continue;
@@ -148,6 +202,73 @@ impl PointTerms<'_> {
                 residual[self.index[3 * rs + c]] -= m * nodes.v[last][c];
                 if let Some(jac) = jacobian.as_deref_mut() {
                     jac.add(self.index[3 * rs + c], self.index[3 * cs + c], -m);
+                }
+            }
+        }
+    }
+
+    /// The static rows: - F, and in water - f of the steady current at
+    /// rest with its derivative.
+    fn add_static<J: AddEntries>(
+        &self,
+        nodes: &PointNodes,
+        residual: &mut [f64],
+        jacobian: Option<&mut J>,
+    ) {
+        let Some(s) = self.layout.row_slot(0, Kind::Position) else {
+            return;
+        };
+        for c in 0..3 {
+            residual[self.index[3 * s + c]] -= self.load[c];
+        }
+        let (Some(water), Some(u)) = (self.water, self.layout.unknown_slot(0, Kind::Position))
+        else {
+            return;
+        };
+        let f = water.static_force(&nodes.e[0]);
+        for c in 0..3 {
+            residual[self.index[3 * s + c]] -= f.force[c];
+        }
+        if let Some(jac) = jacobian {
+            for c in 0..3 {
+                for d in 0..3 {
+                    jac.add(self.index[3 * s + c], self.index[3 * u + d], -f.d_r[c][d]);
+                }
+            }
+        }
+    }
+
+    /// The water's virtual work on row slot `rs` (slot a of layer j's
+    /// four) and its derivatives in the layer's unknowns.
+    #[allow(clippy::too_many_arguments)]
+    fn add_water<J: AddEntries>(
+        &self,
+        water: &PointInWater,
+        j: usize,
+        (a, rs): (usize, usize),
+        slots: &[(usize, Kind); 4],
+        y: &[[f64; 3]; 4],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut J>,
+    ) {
+        for (tp, f) in self.water_forces(water, j, y) {
+            let wa = tp.w_dt * tp.shape.t[a];
+            for c in 0..3 {
+                residual[self.index[3 * rs + c]] += wa * f.force[c];
+            }
+            let Some(jac) = jacobian.as_deref_mut() else {
+                continue;
+            };
+            for (b, &(i2, kind2)) in slots.iter().enumerate() {
+                let Some(cs) = self.layout.unknown_slot(i2, kind2) else {
+                    continue;
+                };
+                let (pb, pdb) = (tp.shape.t[b], tp.shape.t_dot[b]);
+                for c in 0..3 {
+                    for d in 0..3 {
+                        let v = wa * (pb * f.d_r[c][d] + pdb * f.d_rdot[c][d]);
+                        jac.add(self.index[3 * rs + c], self.index[3 * cs + d], v);
+                    }
                 }
             }
         }

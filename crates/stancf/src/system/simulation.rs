@@ -36,6 +36,7 @@ macro_rules! step_problem {
             residual_local: &mut $sim.residual_local,
             unknown_scale: &$sim.unknown_scale,
             equation_scale: &$sim.equation_scale,
+            time: $sim.t,
         }
     };
 }
@@ -256,6 +257,19 @@ impl SystemSimulation {
         (jacobian, x)
     }
 
+    /// The residual of the next step's equations at the unknowns `x` (for
+    /// checking [`Self::next_step_jacobian`] by finite differences;
+    /// allocates). Leaves the simulation as it was.
+    pub fn next_step_residual(&mut self, x: &[f64]) -> Vec<f64> {
+        for line in &mut self.lines {
+            line.begin_step();
+        }
+        let mut residual = vec![0.0; self.layout.size];
+        let mut problem = step_problem!(self);
+        problem.evaluate(x, &mut residual, None);
+        residual
+    }
+
     /// Advances the system by one step. On failure every line and point
     /// is left at the last converged step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
@@ -302,8 +316,10 @@ impl SystemSimulation {
             }
             let m = &self.points[p];
             let terms = PointTerms {
-                mass: self.system.points()[p].mass,
+                mass: self.system.point_inertia(p),
                 load: self.system.point_load(p),
+                water: self.system.points()[p].water.as_ref(),
+                time: self.t,
                 index: idx,
                 layout,
                 slab: &self.slab,

@@ -25,7 +25,7 @@ use super::simulation::EndForce;
 use super::{End, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
-use crate::linear::Jacobian;
+use crate::linear::{AddEntries, Jacobian};
 use crate::model::{coordinate, State, SLOT_R};
 use crate::statics::{
     CableStatics, StaticEquations, StaticIncrement, StaticNewton, StaticSettings,
@@ -231,8 +231,13 @@ impl SystemEquations {
 impl StaticEquations for SystemEquations {
     type Matrix = BorderedMatrix;
 
-    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BorderedMatrix>) {
-        self.line_rows(x, residual, jacobian);
+    fn evaluate(
+        &mut self,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        self.line_rows(x, residual, jacobian.as_deref_mut());
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {
                 continue;
@@ -240,6 +245,19 @@ impl StaticEquations for SystemEquations {
             let load = self.system.point_load(p);
             for c in 0..3 {
                 residual[idx[c]] -= load[c];
+            }
+            // In water: the steady current's drag at rest (§12.6).
+            let Some(water) = &self.system.points()[p].water else {
+                continue;
+            };
+            let f = water.static_force(&[x[idx[0]], x[idx[1]], x[idx[2]]]);
+            for c in 0..3 {
+                residual[idx[c]] -= f.force[c];
+                if let Some(jac) = jacobian.as_deref_mut() {
+                    for d in 0..3 {
+                        jac.add(idx[c], idx[d], -f.d_r[c][d]);
+                    }
+                }
             }
         }
         for (r, r0) in residual.iter_mut().zip(&self.offset) {

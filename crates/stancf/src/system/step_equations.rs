@@ -54,14 +54,14 @@ pub(super) fn system_scales(
             }
         }
     }
-    for (p, point) in system.points().iter().enumerate() {
+    for p in 0..system.points().len() {
         let Some(base) = layout.point_base[p] else {
             continue;
         };
         for k in 0..3 * layout.slots {
             let g = border_start + base + k;
             let lines_mass = end_mass[base + k];
-            let share = lines_mass / (lines_mass + point.mass);
+            let share = lines_mass / (lines_mass + system.point_inertia(p));
             equation[g] = share / inverse_equation[g];
         }
     }
@@ -86,6 +86,8 @@ pub(super) struct StepOfSystem<'a> {
     pub(super) residual_local: &'a mut [Vec<f64>],
     pub(super) unknown_scale: &'a [f64],
     pub(super) equation_scale: &'a [f64],
+    /// The step's start time (the water's kinematics depend on it).
+    pub(super) time: f64,
 }
 
 impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
@@ -111,15 +113,18 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
             }
             let point = &self.system.points()[p];
             let m = &self.points[p];
+            let inertia = self.system.point_inertia(p);
             let terms = PointTerms {
-                mass: point.mass,
+                mass: inertia,
                 load: self.system.point_load(p),
+                water: point.water.as_ref(),
+                time: self.time,
                 index: idx,
                 layout,
                 slab: self.slab,
             };
             terms.expand(x, m.e, m.v, &mut self.point_nodes[p]);
-            let momentum = m.v.map(|v| point.mass * v);
+            let momentum = m.v.map(|v| inertia * v);
             terms.add(
                 &self.point_nodes[p],
                 momentum,

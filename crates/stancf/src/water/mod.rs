@@ -6,11 +6,13 @@
 pub mod current;
 pub mod hydro;
 pub mod kinematics;
+pub mod point;
 pub mod seabed;
 pub mod spectrum;
 pub mod submerged;
 pub mod waves;
 
 pub use hydro::{LineInWater, Morison, Water};
+pub use point::{PointForce, PointInWater};
 pub use seabed::{ForceAtPoint, Seabed, SeabedContact};
 pub use submerged::SubmergedFraction;

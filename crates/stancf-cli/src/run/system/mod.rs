@@ -361,7 +361,9 @@ fn add_point_energies(
             continue;
         }
         let (x, v) = state(p);
-        en[0] += 0.5 * point.mass * v.iter().map(|c| c * c).sum::<f64>();
+        // The kinetic energy of the point and the water it entrains.
+        let inertia = system.point_inertia(p);
+        en[0] += 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
         en[2] -= point.mass * (0..3).map(|k| g[k] * x[k]).sum::<f64>();
     }
 }
