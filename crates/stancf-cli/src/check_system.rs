@@ -186,14 +186,14 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
         out.push((
             "current",
             format!(
-                "{} rows from {} (z = {} m: {} m/s to z = {} m: {} m/s){}",
+                "{} rows, z = {} m: {} m/s to z = {} m: {} m/s{}, from {}",
                 c.rows.len(),
-                c.source,
                 Sig(first.z),
                 speed(first.velocity),
                 Sig(last.z),
                 speed(last.velocity),
-                ramp_words(c.ramp)
+                ramp_words(c.ramp),
+                c.source
             ),
         ));
     }
@@ -213,7 +213,7 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
         out.push((
             "waves",
             format!(
-                "{} regular Airy waves{jonswap}{}",
+                "{} regular Airy wave(s){jonswap}{}",
                 w.waves.len(),
                 ramp_words(w.wave_ramp)
             ),

@@ -31,8 +31,8 @@ pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use system::{
     InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
-pub use water::{Current, SeabedOptions, Water};
 pub use system_model::EI_FACTOR;
+pub use water::{Current, SeabedOptions, Water};
 
 use context::Ctx;
 use raw::RawScenario;

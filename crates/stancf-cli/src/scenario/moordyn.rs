@@ -15,8 +15,8 @@
 
 use super::analysis;
 use super::context::Ctx;
-use super::raw::RawAnalysis;
 use super::moordyn_water::{deck_water, deck_water_keys};
+use super::raw::RawAnalysis;
 use super::system::{
     analysis_part, InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint,
     SystemScenario,

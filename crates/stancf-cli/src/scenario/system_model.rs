@@ -175,10 +175,7 @@ impl SystemScenario {
             vec![Load::Gravity { acceleration }]
         };
         if let (Some(w), Some(fluid)) = (&self.water, water) {
-            line_loads.push(Load::Water(LineInWater::new(
-                Arc::clone(fluid),
-                morison(t),
-            )));
+            line_loads.push(Load::Water(LineInWater::new(Arc::clone(fluid), morison(t))));
             line_loads.push(Load::Seabed(w.seabed_contact(t.diameter)));
         }
         Model::new(cable, material, options, line_loads)
@@ -203,7 +200,11 @@ fn norm(v: [f64; 3]) -> f64 {
 
 /// The library's point; a free point in water carries its buoyancy
 /// -rho_w V g beside its own force.
-fn library_point(p: &super::system::SystemPoint, water: Option<&Water>, gravity: [f64; 3]) -> Point {
+fn library_point(
+    p: &super::system::SystemPoint,
+    water: Option<&Water>,
+    gravity: [f64; 3],
+) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
         PointType::Coupled => Point::coupled(p.position, p.motion.clone()),

@@ -185,8 +185,13 @@ impl Water {
     pub fn seabed_contact(&self, diameter: f64) -> SeabedContact {
         let b = &self.seabed;
         let [sx, sy] = b.slope;
-        let bed = Seabed::plane([0.0, 0.0, -self.depth], [-sx, -sy, 1.0], b.stiffness, b.damping)
-            .with_friction(b.friction_axial, b.friction_transverse, b.slip_velocity);
+        let bed = Seabed::plane(
+            [0.0, 0.0, -self.depth],
+            [-sx, -sy, 1.0],
+            b.stiffness,
+            b.damping,
+        )
+        .with_friction(b.friction_axial, b.friction_transverse, b.slip_velocity);
         SeabedContact {
             seabed: bed,
             diameter,
@@ -234,10 +239,7 @@ fn seabed_keys(ctx: &Ctx, s: RawSeabed, keys: &mut WaterKeys) -> Result<(), Scen
         Some(v) if v.len() != 2 => {
             return Err(ctx.err(
                 "water.seabed.slope",
-                format!(
-                    "the slope is [dz/dx, dz/dy], 2 numbers, got {}",
-                    v.len()
-                ),
+                format!("the slope is [dz/dx, dz/dy], 2 numbers, got {}", v.len()),
             ))
         }
         Some(v) => Some([
@@ -348,10 +350,7 @@ fn jonswap(ctx: &Ctx, j: RawJonswap) -> Result<Jonswap, ScenarioError> {
         ));
     }
     Ok(Jonswap {
-        hs: ctx.non_negative(
-            "water.jonswap.hs",
-            ctx.required("water.jonswap.hs", j.hs)?,
-        )?,
+        hs: ctx.non_negative("water.jonswap.hs", ctx.required("water.jonswap.hs", j.hs)?)?,
         tp: ctx.required_positive("water.jonswap.tp", j.tp)?,
         gamma,
         heading_deg: ctx.finite("water.jonswap.heading", j.heading.unwrap_or(0.0))?,
