@@ -289,6 +289,9 @@ fn the_shipped_moordyn_decks_are_read() {
 /// issue's validation: H, V_F and the anchor tension against the closed
 /// form of a line resting on a rigid bed (C14)-(C18) to 0.1 % (measured
 /// 2.8e-4, 1.8e-4; the bed's 4.7 mm give way and the mesh the rest).
+/// The bed's nodal forces of `node_loads.csv` and the end forces carry
+/// each line's wet weight (consistent nodal forces sum to the integral:
+/// to the static tolerance).
 #[test]
 fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
     let d = scratch("systems-oc4");
@@ -330,6 +333,28 @@ fn the_oc4_chains_rest_on_the_seabed_as_elastic_catenaries() {
             vf < w * 835.35 * 0.8,
             "line {} rests on the bed: V_F {vf} N",
             a[1]
+        );
+        // The line's vertical balance: the bed's nodal forces
+        // (lines/<id>/node_loads.csv) carry what the ends do not of its
+        // wet weight w L (the ends' forces are those on the points).
+        let loads =
+            std::fs::read_to_string(out.join(format!("lines/{}/node_loads.csv", a[1]))).unwrap();
+        assert!(
+            loads.starts_with("t,node,s,curvature,bending_moment,seabed_fx,seabed_fy,seabed_fz\n")
+        );
+        let bed: f64 = loads
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(7).unwrap().parse::<f64>().unwrap())
+            .sum();
+        let balance = bed - w * 835.35 - num(a, 5) - num(b, 5);
+        assert!(
+            balance.abs() < 1e-6 * w * 835.35,
+            "line {}: bed {bed} N, ends {} {} N, weight {} N",
+            a[1],
+            num(a, 5),
+            num(b, 5),
+            w * 835.35
         );
         let line = TouchdownLine {
             length: 835.35,

@@ -118,10 +118,13 @@ def test_a_system_result_has_the_clis_lines_points_and_tensions(tmp_path):
     r = cli("run", deck, "--out", tmp_path / "cli", "--quiet")
     assert r.returncode == 0, r.stderr
     for name in ["points.csv", "tensions.csv", "channels.csv", "lines/1/nodes.csv",
-                 "lines/2/stress.csv"]:
+                 "lines/2/stress.csv", "lines/2/node_loads.csv"]:
         assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
     assert res.is_system and sorted(res.lines) == [1, 2] and sorted(res.points) == [1, 2, 3]
     assert res.lines[1].nodes.shape == (1, 21, 3)
+    assert res.lines[1].bending_moment.shape == (1, 21)
+    assert res.lines[1].seabed_force.shape == (1, 21, 3)
+    assert res.lines[1].node_s[-1] == pytest.approx(res.lines[1].stress_s[-1], rel=1e-15)
     wet = (2000.0 - 1025.0 * 0.5) * 9.81
     assert abs(res.points[3]["force"][-1][2] - wet) <= 1e-9 * wet
     a = res.tensions[(1, "A")]

@@ -245,6 +245,63 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
     out
 }
 
+/// The state of bending at a node: curvature and bending moment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NodeBending {
+    /// Material coordinate (m).
+    pub s: f64,
+    /// Curvature (1/m) at the node; for SAC-2, whose r_xx is not nodal,
+    /// the mean of the two elements' values (docs/method.md §1.2).
+    pub curvature: f64,
+    /// EI kappa (N m), with the EI the line is simulated with.
+    pub bending_moment: f64,
+}
+
+/// Curvature and bending moment EI kappa at every node (the values users
+/// check against a cable's minimum bend radius, 1 / kappa).
+pub fn node_bending(model: &Model, state: &State) -> Vec<NodeBending> {
+    let ei = model.material.youngs_modulus * model.material.second_moment;
+    cable_points(model, state, 2)
+        .iter()
+        .map(|p| NodeBending {
+            s: p.s,
+            curvature: p.curvature,
+            bending_moment: ei * p.curvature,
+        })
+        .collect()
+}
+
+/// The seabed's consistent nodal forces (N) on the nodes' positions,
+/// `sum_e int N_k f dx` of the contact force per length f(r, r_x, r_dot)
+/// (docs/method.md §12.2), friction included: what the bed exerts on the
+/// line around each node. Zero without a seabed.
+pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
+    let mut out = vec![[0.0; 3]; model.nodes()];
+    let Some(contact) = &model.seabed else {
+        return out;
+    };
+    let dpn = model.dofs_per_node();
+    crate::with_elements!(&model.mesh, els => {
+        for (k, el) in els.iter().enumerate() {
+            let o = coordinate(dpn, k, SLOT_R, 0);
+            let q = gather(&state.e, o);
+            let qdot = gather(&state.v, o);
+            let fq = el.generalized_force_per_length(&q, &qdot, |r, rx, rdot| {
+                contact.force(r, rx, rdot)
+            });
+            // The position slots of the element's two nodes: each node
+            // holds half of the element's coordinates, r first.
+            for (end, node) in [(0, k), (1, k + 1)] {
+                let a = end * fq.len() / 2;
+                for i in 0..3 {
+                    out[node][i] += fq[a + i];
+                }
+            }
+        }
+    });
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -278,6 +335,58 @@ mod tests {
                 assert!((p.v[0] - j as f64).abs() < 1e-15 && p.v[1] == -1.0 && p.v[2] == 0.5);
                 // Straight and unstretched: no stress, no curvature.
                 assert!(p.axial_stress.abs() < 1e-3 && p.curvature.abs() < 1e-12);
+            }
+        }
+    }
+
+    /// A cable bent into a circle of radius R (nodes on the circle, r_x
+    /// and r_xx its exact tangent and curvature vector) has curvature 1/R
+    /// and moment EI / R at every node, for both elements.
+    #[test]
+    fn a_cable_bent_into_a_circle_has_curvature_one_over_the_radius_at_its_nodes() {
+        let radius = 2.0;
+        for kind in [ElementType::Sac2, ElementType::Sac3] {
+            let model = Model::new(
+                Cable::straight(3.0, 6, kind),
+                Material::chen2023_pvc(),
+                ModelOptions::default(),
+                vec![],
+            )
+            .unwrap();
+            let mut state = model.initial_state();
+            let dpn = model.dofs_per_node();
+            for j in 0..model.nodes() {
+                let phi = j as f64 * 0.5 / radius;
+                let (c, s) = (phi.cos(), phi.sin());
+                let values = [
+                    [radius * s, radius * (1.0 - c), 0.0],
+                    [c, s, 0.0],
+                    [-s / radius, c / radius, 0.0],
+                ];
+                for (slot, v) in values.iter().enumerate().take(dpn / 3) {
+                    for i in 0..3 {
+                        state.e[model.coordinate(j, slot, i)] = v[i];
+                    }
+                }
+            }
+            let ei = model.material.youngs_modulus * model.material.second_moment;
+            for (j, b) in node_bending(&model, &state).iter().enumerate() {
+                // SAC-2 interpolates the arc with cubics, whose r_xx at
+                // an element's ends is off by (h / R)^2 / 12 (the leading
+                // term, 5.2e-3 here; the next is (h / R)^4 smaller); SAC-3
+                // carries r_xx as a node's coordinate.
+                let expected = match kind {
+                    ElementType::Sac2 => (0.5f64 / radius).powi(2) / 12.0,
+                    ElementType::Sac3 => 0.0,
+                };
+                let err = b.curvature * radius - 1.0;
+                let next = (0.5f64 / radius).powi(2) * expected;
+                assert!(
+                    (err - expected).abs() <= next + 1e-12,
+                    "{kind:?} node {j}: {err}"
+                );
+                assert!((b.bending_moment - ei * b.curvature).abs() < 1e-12 * ei);
+                assert!((b.s - 0.5 * j as f64).abs() < 1e-15);
             }
         }
     }

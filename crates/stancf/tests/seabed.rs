@@ -229,3 +229,42 @@ fn a_rope_dropped_on_the_bed_loses_what_the_bed_takes() {
         "schemes: {taken} {g_taken}"
     );
 }
+
+/// A 20 m line set straight into a flat bed at a uniform penetration g =
+/// 2 mm, at rest: the bed pushes with d k (g - delta/2) per metre
+/// (W42), so its consistent nodal forces (`seabed_nodal_forces`) sum to
+/// that times the length, push only upwards, and give an interior node of
+/// SAC-2 the share of its two half elements, d k (g - delta/2) l (the
+/// quadrature of a uniform force is exact; the penetration is the
+/// difference of two heights near -50 m, known to ~1e-14 m: 1e-10 of g).
+#[test]
+fn the_seabed_s_nodal_forces_add_up_to_the_bed_s_push() {
+    let depth = 50.0;
+    let (k, d, g) = (3e6, 0.0766, 2e-3);
+    let contact = SeabedContact {
+        seabed: Seabed::flat(depth, k, 3e5),
+        diameter: d,
+    };
+    let cable = Cable::straight(20.0, 10, ElementType::Sac2)
+        .with_origin([0.0, 0.0, -depth - g])
+        .with_direction([0.6, 0.8, 0.0]);
+    let model = cable_on(cable, rope(), contact, &[]);
+    let state = model.initial_state();
+    let per_metre = d * k * (g - 0.5 * contact.ramp_width());
+    let forces = stancf::observe::seabed_nodal_forces(&model, &state);
+    let total: f64 = forces.iter().map(|f| f[2]).sum();
+    assert!(
+        (total - per_metre * 20.0).abs() < 1e-10 * per_metre * 20.0,
+        "{total}"
+    );
+    for (j, f) in forces.iter().enumerate() {
+        assert!(f[0].abs() < 1e-9 * per_metre && f[1].abs() < 1e-9 * per_metre);
+        if j > 0 && j < 10 {
+            assert!(
+                (f[2] - per_metre * 2.0).abs() < 1e-10 * per_metre,
+                "node {j}: {}",
+                f[2]
+            );
+        }
+    }
+}

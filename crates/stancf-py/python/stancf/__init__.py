@@ -105,7 +105,10 @@ def _table(path):
 class Line:
     """One cable's results: ``t`` (steps,), ``nodes``: positions r (steps x
     nodes x 3), ``slopes``: r_x (same), ``stress``: axial stress (steps x
-    samples) at material coordinates ``stress_s``, ``curvature`` likewise."""
+    samples) at material coordinates ``stress_s``, ``curvature`` likewise;
+    a system's line also ``node_s`` (nodes,), ``node_curvature`` and
+    ``bending_moment`` (steps x nodes) and ``seabed_force`` (steps x nodes
+    x 3) from ``node_loads.csv``."""
 
     def __init__(self, directory, t):
         steps = len(t)
@@ -125,6 +128,19 @@ class Line:
         self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
         self.stress = stress[:, :, col["axial_stress"]].copy()
         self.curvature = stress[:, :, col["curvature"]].copy()
+        # A system's line: per node curvature, bending moment and the
+        # seabed's force (node_loads.csv); None for a single cable.
+        self.node_s = self.node_curvature = self.bending_moment = None
+        self.seabed_force = None
+        if (directory / "node_loads.csv").exists():
+            h, loads = _table(directory / "node_loads.csv")
+            col = {name: k for k, name in enumerate(h)}
+            loads = loads.reshape(steps, n_nodes, len(h))
+            self.node_s = loads[0, :, col["s"]].copy() if steps else np.zeros(0)
+            self.node_curvature = loads[:, :, col["curvature"]].copy()
+            self.bending_moment = loads[:, :, col["bending_moment"]].copy()
+            self.seabed_force = loads[:, :, [col["seabed_fx"], col["seabed_fy"],
+                                             col["seabed_fz"]]].copy()
 
     def __repr__(self):
         return "Line(%d steps, %d nodes)" % self.nodes.shape[:2]

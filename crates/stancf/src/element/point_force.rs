@@ -52,6 +52,30 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         work
     }
 
+    /// The generalized force `f_q,k = sum_s w_s l N_k f` of a force per
+    /// unit length `force(r, r_x, r_dot)` at the element's coordinates `q`
+    /// and rates `qdot` (the consistent nodal loads; (M14)).
+    pub fn generalized_force_per_length(
+        &self,
+        q: &[f64; ND],
+        qdot: &[f64; ND],
+        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+    ) -> [f64; ND] {
+        let mut fq = [0.0; ND];
+        for p in &self.axial_points {
+            let r = position(&p.shape, q);
+            let rdot = position(&p.shape, qdot);
+            let (rx, _) = p.shape.gradients(q);
+            let f = force(&r, &rx, &rdot);
+            for k in 0..NS {
+                for i in 0..3 {
+                    fq[3 * k + i] += p.wl * p.shape.n[k] * f.force[i];
+                }
+            }
+        }
+        fq
+    }
+
     /// A force per unit length `force(r, r_x)` on a line at rest, in the
     /// static rows: subtracts `factor int N^T f dx` from `grad` (= dU/dq)
     /// and its derivative from `hess`.

@@ -1,13 +1,15 @@
 //! The streamed result files of a system (docs/interface.md, "Systems"):
 //! `lines/<id>/nodes.csv` and `lines/<id>/stress.csv` in the single
-//! cable's columns, `points.csv`, `tensions.csv` and `history.csv`.
+//! cable's columns, `lines/<id>/node_loads.csv` (curvature, bending moment
+//! and the seabed's force at every node), `points.csv`, `tensions.csv` and
+//! `history.csv`.
 
 use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Num};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::OutputChannel;
 use stancf::model::SLOT_R;
-use stancf::observe::{stress_samples, StressSample};
+use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
 use stancf::system::EndForce;
 use stancf::{Model, State};
 use std::io::Write;
@@ -31,10 +33,16 @@ pub(super) struct SystemRow<'a> {
     pub damping_work: f64,
 }
 
+/// The files of one line.
+struct LineFiles {
+    nodes: AtomicFile,
+    stress: AtomicFile,
+    node_loads: AtomicFile,
+}
+
 /// The files of a system run.
 pub(super) struct SystemWriters {
-    /// Per line: nodes.csv, stress.csv.
-    lines: Vec<(AtomicFile, AtomicFile)>,
+    lines: Vec<LineFiles>,
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
     points: AtomicFile,
@@ -66,7 +74,16 @@ impl SystemWriters {
             let mut stress = AtomicFile::create(dir, &format!("{sub}/stress.csv"))?;
             writeln!(nodes.writer(), "t,node,x,y,z,dx_ds,dy_ds,dz_ds")?;
             writeln!(stress.writer(), "t,s,axial_stress,curvature,element")?;
-            lines.push((nodes, stress));
+            let mut node_loads = AtomicFile::create(dir, &format!("{sub}/node_loads.csv"))?;
+            writeln!(
+                node_loads.writer(),
+                "t,node,s,curvature,bending_moment,seabed_fx,seabed_fy,seabed_fz"
+            )?;
+            lines.push(LineFiles {
+                nodes,
+                stress,
+                node_loads,
+            });
         }
         let mut points = AtomicFile::create(dir, "points.csv")?;
         writeln!(points.writer(), "t,point,x,y,z,vx,vy,vz,fx,fy,fz")?;
@@ -126,9 +143,11 @@ impl SystemWriters {
             {
                 return Err(bad(&format!("stress of line {}", self.line_ids[i])));
             }
-            let (nodes, stress) = &mut self.lines[i];
-            node_rows(nodes.writer(), t, model, state)?;
-            stress_rows(stress.writer(), t, &self.samples)?;
+            let files = &mut self.lines[i];
+            node_rows(files.nodes.writer(), t, model, state)?;
+            stress_rows(files.stress.writer(), t, &self.samples)?;
+            node_load_rows(files.node_loads.writer(), t, model, state)
+                .map_err(|_| bad(&format!("node loads of line {}", self.line_ids[i])))?;
         }
         for (p, (x, v, f)) in row.points.iter().enumerate() {
             if ![x, v, f].iter().all(|a| a.iter().all(|c| c.is_finite())) {
@@ -209,9 +228,10 @@ impl SystemWriters {
     }
 
     pub(super) fn commit(self) -> std::io::Result<()> {
-        for (nodes, stress) in self.lines {
-            nodes.commit()?;
-            stress.commit()?;
+        for files in self.lines {
+            files.nodes.commit()?;
+            files.stress.commit()?;
+            files.node_loads.commit()?;
         }
         self.points.commit()?;
         self.tensions.commit()?;
@@ -223,6 +243,24 @@ impl SystemWriters {
         }
         self.history.commit()
     }
+}
+
+/// The rows of `node_loads.csv` at time `t`: per node its material
+/// coordinate, curvature, bending moment EI kappa and the seabed's
+/// consistent nodal force (docs/interface.md). A non-finite value is an
+/// error (InvalidData, for the caller to name).
+fn node_load_rows(w: &mut impl Write, t: Num, model: &Model, state: &State) -> std::io::Result<()> {
+    let bending = node_bending(model, state);
+    let bed = seabed_nodal_forces(model, state);
+    for (j, (b, f)) in bending.iter().zip(&bed).enumerate() {
+        let values = [b.s, b.curvature, b.bending_moment, f[0], f[1], f[2]];
+        if !values.iter().all(|v| v.is_finite()) {
+            return Err(std::io::Error::from(std::io::ErrorKind::InvalidData));
+        }
+        let [s, k, m, fx, fy, fz] = values.map(Num);
+        writeln!(w, "{t},{j},{s},{k},{m},{fx},{fy},{fz}")?;
+    }
+    Ok(())
 }
 
 /// The value of a MoorDyn output channel at a row (ids are 1-based, as
