@@ -234,7 +234,10 @@ pub(super) fn system_scenario(
 /// of this version): the lines move with their own mass.
 fn added_mass_note(sc: &SystemScenario) -> Option<String> {
     sc.water.as_ref()?;
-    let with = sc.line_types.iter().find(|t| t.ca != 0.0 || t.caax != 0.0)?;
+    let with = sc
+        .line_types
+        .iter()
+        .find(|t| t.ca != 0.0 || t.caax != 0.0)?;
     (sc.analysis.kind == super::AnalysisKind::Dynamic).then(|| {
         format!(
             "line type {}: the added mass of ca and caax is not in this version's dynamics; \
