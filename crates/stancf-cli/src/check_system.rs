@@ -3,12 +3,12 @@
 //! with the bending stiffness each is simulated with, points, and for a
 //! dynamic analysis each line's stable P2 step.
 
-use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario};
+use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario, Water};
 use crate::Failure;
 use stancf::error::Sig;
 use stancf::quadrature::GaussRule;
 use stancf::stability;
-use stancf::system::{catenary_states, straight_states, System, SystemSimulation, SystemStatics};
+use stancf::system::{straight_states, System, SystemSimulation, SystemStatics};
 use stancf::TimeScheme;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -31,10 +31,7 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let system = sc.system().map_err(input)?;
     let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
     {
-        let seeds = catenary_states(&system);
-        sc.check_submerged(&system, &seeds).map_err(|e| {
-            Failure::Input(format!("{}: {e} (the line's catenary)", path.display()))
-        })?;
+        let seeds = sc.static_seed(&system).map_err(input)?;
         let settings = sc.analysis.static_settings();
         Some(SystemStatics::new(system.clone(), seeds, settings).map_err(input)?)
     } else {
@@ -119,6 +116,11 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         );
     }
+    if let Some(w) = &sc.water {
+        for (k, v) in water_words(w) {
+            line(k, v);
+        }
+    }
     line(
         "analysis",
         match (sc.analysis.kind, sc.initial) {
@@ -147,6 +149,85 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         let _ = writeln!(r, "note: {n}");
     }
     Ok(r)
+}
+
+/// The water as `check` reports it: depth, density and seabed; the
+/// current's rows and ramp; the waves, the JONSWAP sea and their ramp.
+fn water_words(w: &Water) -> Vec<(&'static str, String)> {
+    let b = &w.seabed;
+    let mut out = vec![
+        (
+            "water",
+            format!(
+                "depth {} m, density {} kg/m^3 (still surface z = 0)",
+                Sig(w.depth),
+                Sig(w.density)
+            ),
+        ),
+        (
+            "seabed",
+            format!(
+                "through z = {} m, slope [{}, {}]; kBot {} Pa/m, cBot {} Pa s/m, friction {} \
+                 axial and {} transverse, regularized below {} m/s",
+                Sig(-w.depth),
+                Sig(b.slope[0]),
+                Sig(b.slope[1]),
+                Sig(b.stiffness),
+                Sig(b.damping),
+                Sig(b.friction_axial),
+                Sig(b.friction_transverse),
+                Sig(b.slip_velocity)
+            ),
+        ),
+    ];
+    if let Some(c) = &w.current {
+        let (first, last) = (c.rows[0], c.rows[c.rows.len() - 1]);
+        let speed = |v: [f64; 3]| Sig((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt());
+        out.push((
+            "current",
+            format!(
+                "{} rows, z = {} m: {} m/s to z = {} m: {} m/s{}, from {}",
+                c.rows.len(),
+                Sig(first.z),
+                speed(first.velocity),
+                Sig(last.z),
+                speed(last.velocity),
+                ramp_words(c.ramp),
+                c.source
+            ),
+        ));
+    }
+    if !w.waves.is_empty() || w.jonswap.is_some() {
+        let jonswap = w.jonswap.map_or(String::new(), |j| {
+            format!(
+                " and a JONSWAP sea of {} components (Hs {} m, Tp {} s, gamma {}, heading {} \
+                 deg, seed {})",
+                j.components,
+                Sig(j.hs),
+                Sig(j.tp),
+                Sig(j.gamma),
+                Sig(j.heading_deg),
+                j.seed
+            )
+        });
+        out.push((
+            "waves",
+            format!(
+                "{} regular Airy wave(s){jonswap}{}",
+                w.waves.len(),
+                ramp_words(w.wave_ramp)
+            ),
+        ));
+    }
+    out
+}
+
+fn ramp_words(ramp: f64) -> String {
+    if ramp > 0.0 {
+        format!(", ramped over {} s", Sig(ramp))
+    } else {
+        String::new()
+    }
 }
 
 /// The axial damping line i gets, as `check` reports it: nothing without

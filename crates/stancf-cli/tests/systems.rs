@@ -6,26 +6,6 @@ mod common;
 
 use common::*;
 use stancf::catenary::touchdown::{solve_touchdown, TouchdownLine};
-use std::path::Path;
-
-/// The rows of a CSV file whose `end` column (tensions.csv) is A or B,
-/// read as 0 and 1.
-fn read_tensions(path: &Path) -> Vec<Vec<f64>> {
-    let s = std::fs::read_to_string(path).unwrap();
-    let mut lines = s.lines();
-    assert_eq!(lines.next(), Some("t,line,end,fx,fy,fz,tension"));
-    lines
-        .map(|l| {
-            l.split(',')
-                .map(|f| match f {
-                    "A" => 0.0,
-                    "B" => 1.0,
-                    _ => f.parse::<f64>().unwrap(),
-                })
-                .collect()
-        })
-        .collect()
-}
 
 /// A bridle: two ropes from points at different heights meet at a free
 /// point with a clump weight of `mass` kg; `analysis` is the

@@ -4,8 +4,9 @@
 //! points, the options of [`SupportedOption`] (plus MoorDyn's initial
 //! condition, logging and output switches, accepted and ignored) and the
 //! output channels of [`Channel`]. Everything else (rods, bodies,
-//! failures, nonlinear or viscoelastic stiffness, VIV, waves, currents,
-//! bathymetry files...) is refused by name, naming the line of the file.
+//! failures, nonlinear or viscoelastic stiffness, VIV, wave files,
+//! MoorDyn-F water kinematics, bathymetry files...) is refused by name,
+//! naming the line of the file.
 //! Turning a deck into a simulation model is not done here.
 //!
 //! The format follows MoorDyn-C's reader (`MoorDyn2.cpp`,

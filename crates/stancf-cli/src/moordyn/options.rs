@@ -29,6 +29,10 @@ pub enum SupportedOption {
     StaticDynamicFrictionScale,
     /// `dtOut`: interval of the output rows (s), 0 for every step.
     OutputInterval,
+    /// `Currents`: MoorDyn-C's current mode; 0 none, 1 the steady profile
+    /// of `current_profile.txt` beside the deck (other modes are refused
+    /// by the scenario that reads the deck).
+    Currents,
 }
 
 impl SupportedOption {
@@ -45,6 +49,7 @@ impl SupportedOption {
             SupportedOption::FrictionDamping => "FricDamp",
             SupportedOption::StaticDynamicFrictionScale => "StatDynFricScale",
             SupportedOption::OutputInterval => "dtOut",
+            SupportedOption::Currents => "Currents",
         }
     }
 
@@ -68,7 +73,7 @@ pub enum OptionKind {
     /// `fileIC` and their old names), logging and output switches
     /// (`writeLog`, `WriteUnits`, `disableOutput`, `disableOutTime`,
     /// `OutSwitch`, `Echo`), and the settings that are inert as given
-    /// (`WaveKin 0`, `Currents 0`, `inertialF 0`, `dtWave`,
+    /// (`WaveKin 0`, `inertialF 0`, `dtWave`,
     /// `UnifyCurrentGrid`, `inertialF_rampT`).
     Ignored,
 }
@@ -104,12 +109,15 @@ fn classify(lower: &str) -> Option<Class> {
         "fricdamp" | "cv" => s(S::FrictionDamping),
         "statdynfricscale" | "mc" => s(S::StaticDynamicFrictionScale),
         "dtout" => s(S::OutputInterval),
+        "currents" => s(S::Currents),
         "dtic" | "icdt" | "tmaxic" | "ictmax" | "cdscaleic" | "icdfac" | "threshic"
         | "icthresh" | "gendynamicic" | "icgendynamic" | "fileic" | "icfile" | "writelog"
         | "writeunits" | "disableoutput" | "disableouttime" | "outswitch" | "echo" | "dtwave"
         | "unifycurrentgrid" | "inertialf_rampt" => Some(Class::Known(OptionKind::Ignored)),
-        "wavekin" => Some(Class::IgnoredIfZero("waves are not supported")),
-        "currents" => Some(Class::IgnoredIfZero("currents are not supported")),
+        "wavekin" => Some(Class::IgnoredIfZero(
+            "MoorDyn's wave files are not read; give the waves in a scenario that takes this \
+             deck (system.moordyn) as [[water.waves]] or [water.jonswap]",
+        )),
         "inertialf" => Some(Class::IgnoredIfZero(
             "MoorDyn-F's inertial coupled forces are not supported",
         )),

@@ -196,8 +196,7 @@ fn an_unknown_option_is_refused_naming_its_line() {
 #[test]
 fn options_that_change_the_physics_are_refused_by_name() {
     for (row, words) in [
-        ("1 WaveKin", "waves are not supported"),
-        ("2 Currents", "currents are not supported"),
+        ("1 WaveKin", "wave files are not read"),
         ("0.5 CFL", "Courant"),
         ("RK4 tScheme", "time integrators"),
         ("bathy.txt SeafloorFile", "bathymetry"),

@@ -17,20 +17,22 @@ mod initial_velocity;
 mod loads;
 mod messages;
 mod moordyn;
+mod moordyn_water;
 mod motions;
 mod raw;
 mod system;
 mod system_model;
+mod water;
 
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
-pub use moordyn::{deck_file_scenario, deck_scenario};
+pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use system::{
-    InitialShape, LineType, OutputChannel, PointType, SeabedOptions, SystemLine, SystemPoint,
-    SystemScenario, Water,
+    InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
 pub use system_model::EI_FACTOR;
+pub use water::{Current, SeabedOptions, Water};
 
 use context::Ctx;
 use raw::RawScenario;
@@ -88,7 +90,7 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
-        return deck_scenario(&deck, file, title).map(Input::System);
+        return moordyn::deck_scenario(&deck, file, path, title, None).map(Input::System);
     }
     let ctx = Ctx { file };
     let raw: RawScenario =
@@ -128,6 +130,13 @@ pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioEr
 
 /// The single-cable parts of a scenario file.
 fn cable_scenario(ctx: &Ctx, raw: RawScenario, path: &Path) -> Result<Scenario, ScenarioError> {
+    if raw.water.is_some() {
+        return Err(ctx.err(
+            "water",
+            "[water] acts on the lines of a system ([[line_types]], [[points]], [[lines]]) in \
+             this version; a single cable takes an \"air-drag\" load in a fluid",
+        ));
+    }
     if let Some(initial) = raw.analysis.as_ref().and_then(|a| a.initial.as_deref()) {
         if initial != "reference" {
             return Err(ctx.err(

@@ -6,20 +6,23 @@
 //! at z = 0, the seabed at z = -WtrDpth.
 //!
 //! What stancf cannot compute from a deck is refused by name, naming the
-//! deck's line: output channels stancf has no value for; in this version
-//! also a dynamic analysis in water (added mass and drag are not
-//! modelled) and lines through the surface (checked by the run). The
-//! seabed at z = -WtrDpth holds the lines that reach it (kBot, cBot,
-//! FrictionCoefficient; docs/method.md §12.2).
+//! deck's line: output channels stancf has no value for; in a dynamic
+//! analysis, a free point's drag (CdA) and added mass (Ca), which this
+//! version does not model. The lines are in the deck's water (buoyancy,
+//! Morison drag and inertia with the line types' Cd, Ca, CdAx, CaAx,
+//! docs/method.md §12.3-12.5) on the seabed at z = -WtrDpth (kBot, cBot,
+//! FrictionCoefficient; §12.2); see [`super::moordyn_water`].
 
 use super::analysis;
 use super::context::Ctx;
+use super::moordyn_water::{deck_water, deck_water_keys};
 use super::raw::RawAnalysis;
 use super::system::{
-    analysis_part, InitialShape, LineType, OutputChannel, PointType, SeabedOptions, SystemLine,
-    SystemPoint, SystemScenario, Water,
+    analysis_part, InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint,
+    SystemScenario,
 };
-use super::ScenarioError;
+use super::water::WaterKeys;
+use super::{AnalysisKind, ScenarioError};
 use crate::moordyn::{
     self, Attachment, Channel, Deck, LineQuantity, PointQuantity, SupportedOption,
 };
@@ -27,45 +30,30 @@ use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
 
-/// The scenario of the deck in the file at `path` (a static analysis
-/// from the lines' catenaries, as a deck alone says nothing of time).
-pub fn deck_file_scenario(path: &Path, title: String) -> Result<SystemScenario, ScenarioError> {
+/// The deck in the file at `path`; errors name the file (and its line).
+pub(super) fn load_deck(path: &Path) -> Result<Deck, ScenarioError> {
     let file = path.display().to_string();
-    let deck = moordyn::load(path).map_err(|e| match e.line {
+    moordyn::load(path).map_err(|e| match e.line {
         Some(_) => ScenarioError(format!("{file}: {e}")),
         None => ScenarioError(e.message),
-    })?;
-    deck_scenario(&deck, &file, title)
+    })
 }
 
-/// The scenario of a deck read from `file` (named in messages).
-pub fn deck_scenario(
+/// The scenario of a deck read from `path` (named `file` in messages): a
+/// static analysis from the lines' catenaries, as a deck alone says
+/// nothing of time, in the deck's water with the `[water]` keys of the
+/// scenario that takes the deck (`added`, checked under that scenario's
+/// context) added.
+pub(super) fn deck_scenario(
     deck: &Deck,
     file: &str,
+    path: &Path,
     title: String,
+    added: Option<(&Ctx, WaterKeys)>,
 ) -> Result<SystemScenario, ScenarioError> {
     let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
     let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
-    let water = Water {
-        depth: deck.option(SupportedOption::WaterDepth).ok_or_else(|| {
-            ScenarioError(format!(
-                "{file}: OPTIONS: WtrDpth is missing: a deck's lines hang in water of a given \
-                 depth"
-            ))
-        })?,
-        density: deck.option(SupportedOption::WaterDensity).unwrap_or(1025.0),
-        seabed: SeabedOptions {
-            stiffness: deck
-                .option(SupportedOption::BottomStiffness)
-                .unwrap_or(SeabedOptions::MOORDYN.stiffness),
-            damping: deck
-                .option(SupportedOption::BottomDamping)
-                .unwrap_or(SeabedOptions::MOORDYN.damping),
-            friction: deck
-                .option(SupportedOption::FrictionCoefficient)
-                .unwrap_or(SeabedOptions::MOORDYN.friction),
-        },
-    };
+    let water = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
     let line_types = deck
         .line_types
         .iter()
@@ -162,6 +150,34 @@ pub fn deck_scenario(
         water: Some(water),
         channels,
     })
+}
+
+/// Refuses, naming the deck's line, a free point with drag (CdA) or
+/// added mass (Ca) in a dynamic analysis: this version does not model
+/// them (a static one does not use them).
+pub(super) fn check_point_hydrodynamics(
+    deck: &Deck,
+    file: &str,
+    kind: AnalysisKind,
+) -> Result<(), ScenarioError> {
+    if kind != AnalysisKind::Dynamic {
+        return Ok(());
+    }
+    let moving = |p: &&moordyn::DeckPoint| p.attachment == Attachment::Free;
+    match deck
+        .points
+        .iter()
+        .filter(moving)
+        .find(|p| p.cda != 0.0 || p.ca != 0.0)
+    {
+        Some(p) => Err(ScenarioError(format!(
+            "{file}: line {}: point {}: CdA = {} m^2 and Ca = {}: a free point's drag and added \
+             mass are not modelled in a dynamic analysis in this version; set both to 0 (a \
+             static analysis does not use them)",
+            p.line, p.id, p.cda, p.ca
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// Whether stancf has the value of a channel: line end tensions, point

@@ -38,6 +38,8 @@ pub(super) struct RawScenario {
     pub(super) lines: Vec<RawLine>,
     #[serde(default)]
     pub(super) motions: Vec<RawMotion>,
+    /// The water a system's lines are in (docs/interface.md, "Water").
+    pub(super) water: Option<RawWater>,
 }
 
 impl RawScenario {
@@ -57,6 +59,63 @@ impl RawScenario {
 pub(super) struct RawSystem {
     pub(super) gravity: Option<Vector>,
     pub(super) moordyn: Option<String>,
+}
+
+/// `[water]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawWater {
+    pub(super) density: Option<f64>,
+    pub(super) depth: Option<f64>,
+    pub(super) wave_ramp: Option<f64>,
+    pub(super) seabed: Option<RawSeabed>,
+    pub(super) current: Option<RawCurrent>,
+    #[serde(default)]
+    pub(super) waves: Vec<RawWave>,
+    pub(super) jonswap: Option<RawJonswap>,
+}
+
+/// `[water.seabed]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSeabed {
+    pub(super) stiffness: Option<f64>,
+    pub(super) damping: Option<f64>,
+    pub(super) friction_axial: Option<f64>,
+    pub(super) friction_transverse: Option<f64>,
+    pub(super) slip_velocity: Option<f64>,
+    pub(super) slope: Option<Vec<f64>>,
+}
+
+/// `[water.current]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawCurrent {
+    pub(super) profile: Option<Vec<Vec<f64>>>,
+    pub(super) velocity: Option<Vector>,
+    pub(super) ramp: Option<f64>,
+}
+
+/// One `[[water.waves]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawWave {
+    pub(super) amplitude: Option<f64>,
+    pub(super) period: Option<f64>,
+    pub(super) heading: Option<f64>,
+    pub(super) phase: Option<f64>,
+}
+
+/// `[water.jonswap]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawJonswap {
+    pub(super) hs: Option<f64>,
+    pub(super) tp: Option<f64>,
+    pub(super) gamma: Option<f64>,
+    pub(super) heading: Option<f64>,
+    pub(super) seed: Option<i64>,
+    pub(super) components: Option<i64>,
 }
 
 /// One `[[line_types]]` entry.

@@ -7,6 +7,7 @@ use super::analysis::{self, Others};
 use super::context::Ctx;
 use super::motions::motions;
 use super::raw::{RawAnalysis, RawLine, RawLineType, RawPoint, RawScenario};
+use super::water::{scenario_water, water_keys, Water};
 use super::{Analysis, ScenarioError};
 use stancf::motion::CoupledMotion;
 use stancf::{ElementType, Grading, Measures};
@@ -69,39 +70,6 @@ pub struct SystemPoint {
     pub motion_file: Option<String>,
 }
 
-/// Still water around the system (from a MoorDyn deck): z up, the free
-/// surface at z = 0, the seabed at z = -depth.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Water {
-    pub depth: f64,
-    /// Density (kg/m^3).
-    pub density: f64,
-    /// The flat seabed at z = -depth (docs/method.md §12.2).
-    pub seabed: SeabedOptions,
-}
-
-/// The seabed's contact and friction, MoorDyn's kBot, cBot and
-/// FrictionCoefficient.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SeabedOptions {
-    /// kBot (Pa/m).
-    pub stiffness: f64,
-    /// cBot (Pa s/m).
-    pub damping: f64,
-    /// Coulomb's coefficient, along and across a line alike.
-    pub friction: f64,
-}
-
-impl SeabedOptions {
-    /// MoorDyn's defaults: kBot = 3e6 Pa/m, cBot = 3e5 Pa s/m, no
-    /// friction.
-    pub const MOORDYN: SeabedOptions = SeabedOptions {
-        stiffness: 3.0e6,
-        damping: 3.0e5,
-        friction: 0.0,
-    };
-}
-
 /// An output channel of a MoorDyn deck, written to channels.csv.
 #[derive(Clone, Debug, PartialEq)]
 pub struct OutputChannel {
@@ -152,7 +120,7 @@ pub struct SystemScenario {
     pub initial: InitialShape,
     pub output_every: usize,
     pub notes: Vec<String>,
-    /// The water the lines hang in (None: air).
+    /// The water the lines are in (None: air).
     pub water: Option<Water>,
     /// Output channels (from a MoorDyn deck).
     pub channels: Vec<OutputChannel>,
@@ -193,31 +161,38 @@ pub(super) fn system_scenario(
                 return Err(ctx.err(
                     key,
                     "the MoorDyn deck of system.moordyn gives the line types, points, lines \
-                     and gravity; the scenario adds motions, [analysis] and [output]",
+                     and gravity; the scenario adds motions, [water] (what the deck does not \
+                     give), [analysis] and [output]",
                 ));
             }
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
-        let mut sc = super::moordyn::deck_file_scenario(&deck_path, title)?;
+        let deck = super::moordyn::load_deck(&deck_path)?;
+        let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
+        let deck_file = deck_path.display().to_string();
+        let mut sc = super::moordyn::deck_scenario(
+            &deck,
+            &deck_file,
+            &deck_path,
+            title,
+            added.map(|w| (ctx, w)),
+        )?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+        super::moordyn::check_point_hydrodynamics(&deck, &deck_file, analysis.kind)?;
         let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
         motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
         sc.analysis = analysis;
         sc.measures = measures;
         sc.initial = initial;
         sc.notes.extend(notes);
+        sc.notes.extend(static_waves_note(&sc));
+        sc.notes.extend(added_mass_note(&sc));
         sc.output_every = analysis::output_every(ctx, raw.output)?;
-        if sc.analysis.kind == super::AnalysisKind::Dynamic {
-            return Err(ctx.err(
-                "analysis.type",
-                "a dynamic analysis of a MoorDyn deck's lines in water needs their added mass \
-                 and drag, which this version does not model; use \"static\"",
-            ));
-        }
         return Ok(sc);
     }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
+    let water = scenario_water(ctx, raw.water, gravity)?;
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut points = points(ctx, &raw.points)?;
     let lines = lines(ctx, &raw.lines, &line_types, &points)?;
@@ -227,15 +202,15 @@ pub(super) fn system_scenario(
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     for (i, t) in line_types.iter().enumerate() {
-        if [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
+        if water.is_none() && [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
             notes.push(format!(
-                "line_types[{i}]: cd, ca, cdax and caax act in water, which a scenario \
-                 without a MoorDyn deck does not have: unused"
+                "line_types[{i}]: cd, ca, cdax and caax act in water, which this scenario \
+                 does not have ([water]): unused"
             ));
         }
     }
     let output_every = analysis::output_every(ctx, raw.output)?;
-    Ok(SystemScenario {
+    let mut sc = SystemScenario {
         title,
         line_types,
         points,
@@ -246,8 +221,41 @@ pub(super) fn system_scenario(
         initial,
         output_every,
         notes,
-        water: None,
+        water,
         channels: Vec::new(),
+    };
+    sc.notes.extend(static_waves_note(&sc));
+    sc.notes.extend(added_mass_note(&sc));
+    Ok(sc)
+}
+
+/// A note that a dynamic analysis in water does not yet carry the
+/// lines' added mass (Ca, CaAx; docs/method.md §12.5, not in the library
+/// of this version): the lines move with their own mass.
+fn added_mass_note(sc: &SystemScenario) -> Option<String> {
+    sc.water.as_ref()?;
+    let with = sc
+        .line_types
+        .iter()
+        .find(|t| t.ca != 0.0 || t.caax != 0.0)?;
+    (sc.analysis.kind == super::AnalysisKind::Dynamic).then(|| {
+        format!(
+            "line type {}: the added mass of ca and caax is not in this version's dynamics; \
+             the lines move with their own mass",
+            with.name
+        )
+    })
+}
+
+/// A note that a static analysis does not see the waves of its water
+/// (statics see buoyancy and the steady current, docs/method.md §12.4).
+fn static_waves_note(sc: &SystemScenario) -> Option<String> {
+    let w = sc.water.as_ref()?;
+    let waves = !w.waves.is_empty() || w.jonswap.is_some();
+    (waves && sc.analysis.kind == super::AnalysisKind::Static).then(|| {
+        "water: a static analysis sees the water's buoyancy and steady current; its waves \
+         act in a dynamic one only"
+            .to_string()
     })
 }
 

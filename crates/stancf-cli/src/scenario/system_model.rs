@@ -1,10 +1,25 @@
 //! The library's system from a [`SystemScenario`]: every line a cable
-//! model of its line type's section, every point a library point, and
-//! the lines' start shapes (docs/method.md §11.6).
+//! model of its line type's section under its loads (gravity, and in
+//! water the water's load and the seabed), every point a library point,
+//! and the seed of the static solve (docs/method.md §11.6).
 
-use super::system::{LineType, PointType, SystemScenario, Water};
-use stancf::system::{End, Line, Point, PointKind, System};
-use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions};
+use super::system::{LineType, PointType, SystemScenario};
+use super::water::Water;
+use stancf::system::{catenary_states, End, Line, Point, PointKind, System};
+use stancf::water::{LineInWater, Morison};
+use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions, State};
+use std::sync::Arc;
+
+/// The loads a line model is built with.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Loads {
+    /// Gravity on the line's mass, and in water the water's load (its
+    /// buoyancy, drag and inertia) and the seabed: the system simulated.
+    Full,
+    /// Gravity scaled to the line's wet weight, nothing else: the system
+    /// whose elastic catenaries seed the static solve.
+    WetWeight,
+}
 
 /// The factor c in the bending stiffness EI = c w L^3 a line of EI = 0
 /// is given (docs/method.md §11.7): bending then changes the tensions of
@@ -45,11 +60,10 @@ impl SystemScenario {
 
     /// The fraction of a line's weight left in water: its weight per
     /// length m g less the buoyancy rho_w (pi d^2 / 4) g of the water it
-    /// displaces, over m g (1 in air). A line in still water carries its
-    /// wet weight as a constant load per length, the gravity load of its
-    /// mass scaled by this fraction (docs/method.md §11.8).
+    /// displaces, over m g (1 in air): the weight of a submerged line
+    /// that sets its catenary seed and the EI of EI = 0.
     pub fn wet_weight_fraction(&self, t: &LineType) -> f64 {
-        match self.water {
+        match &self.water {
             Some(w) => 1.0 - w.density * t.area() / t.mass_per_length,
             None => 1.0,
         }
@@ -58,18 +72,37 @@ impl SystemScenario {
     /// The library's system: the lines' models (their reference shapes
     /// straight between their end points) and the points.
     pub fn system(&self) -> Result<System, ModelError> {
+        self.system_with(Loads::Full)
+    }
+
+    /// The seed of the static solve of `system` (this scenario's
+    /// [`SystemScenario::system`]): each line's elastic catenary of its
+    /// weight per length ([`catenary_states`]); in water the wet weight
+    /// (m - rho_w A) g, the weight a fully submerged line hangs by.
+    pub fn static_seed(&self, system: &System) -> Result<Vec<State>, ModelError> {
+        if self.water.is_none() {
+            return Ok(catenary_states(system));
+        }
+        Ok(catenary_states(&self.system_with(Loads::WetWeight)?))
+    }
+
+    fn system_with(&self, loads: Loads) -> Result<System, ModelError> {
         let points: Vec<Point> = self
             .points
             .iter()
-            .map(|p| library_point(p, self.water, self.gravity))
+            .map(|p| library_point(p, self.water.as_ref(), self.gravity))
             .collect();
+        let water = match (&self.water, loads) {
+            (Some(w), Loads::Full) => Some(Arc::new(w.library(norm(self.gravity))?)),
+            _ => None,
+        };
         let lines = self
             .lines
             .iter()
             .enumerate()
             .map(|(i, l)| {
                 let model = self
-                    .line_model(i, &points)
+                    .line_model(i, &points, loads, water.as_ref())
                     .map_err(|e| e.under(&format!("lines[{i}]")))?;
                 let ends = l.ends.map(|e| e.map_or(End::Loose, End::Point));
                 let mut line = Line { model, ends };
@@ -88,10 +121,17 @@ impl SystemScenario {
 
     /// Line i's cable model: its type's section over the area pi d^2 / 4,
     /// its reference straight from end A toward end B (from a loose end A
-    /// down along gravity to B), under gravity. The start shapes are the
+    /// down along gravity to B), under `loads` ([`Loads`]; `water` the
+    /// library's water of [`Loads::Full`]). The start shapes are the
     /// library's ([`stancf::system::straight_states`],
     /// [`stancf::system::catenary_states`]).
-    fn line_model(&self, i: usize, points: &[Point]) -> Result<Model, ModelError> {
+    fn line_model(
+        &self,
+        i: usize,
+        points: &[Point],
+        loads: Loads,
+        water: Option<&Arc<stancf::water::Water>>,
+    ) -> Result<Model, ModelError> {
         let l = &self.lines[i];
         let t = &self.line_types[l.line_type];
         let at = |e: Option<usize>| e.map(|p| points[p].state_at(0.0).0);
@@ -124,22 +164,47 @@ impl SystemScenario {
             measures: self.measures,
             space_points: self.analysis.space_points,
         };
-        let acceleration = self.gravity.map(|g| g * self.wet_weight_fraction(t));
-        let mut loads = if acceleration == [0.0; 3] {
+        let scale = match loads {
+            Loads::Full => 1.0,
+            Loads::WetWeight => self.wet_weight_fraction(t),
+        };
+        let acceleration = self.gravity.map(|g| g * scale);
+        let mut line_loads = if acceleration == [0.0; 3] {
             vec![]
         } else {
             vec![Load::Gravity { acceleration }]
         };
-        if let Some(w) = self.water {
-            loads.push(Load::Seabed(seabed_contact(&w, t.diameter)));
+        if let (Some(w), Some(fluid)) = (&self.water, water) {
+            line_loads.push(Load::Water(LineInWater::new(Arc::clone(fluid), morison(t))));
+            line_loads.push(Load::Seabed(w.seabed_contact(t.diameter)));
         }
-        Model::new(cable, material, options, loads)
+        Model::new(cable, material, options, line_loads)
     }
+}
+
+/// A line type's Morison coefficients as the deck or `[[line_types]]`
+/// gives them (MoorDyn's Cd on d, CdAx on pi d, Ca, CaAx).
+fn morison(t: &LineType) -> Morison {
+    Morison {
+        diameter: t.diameter,
+        cd_normal: t.cd,
+        cd_axial: t.cdax,
+        ca_normal: t.ca,
+        ca_axial: t.caax,
+    }
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }
 
 /// The library's point; a free point in water carries its buoyancy
 /// -rho_w V g beside its own force.
-fn library_point(p: &super::system::SystemPoint, water: Option<Water>, gravity: [f64; 3]) -> Point {
+fn library_point(
+    p: &super::system::SystemPoint,
+    water: Option<&Water>,
+    gravity: [f64; 3],
+) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
         PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
@@ -168,43 +233,5 @@ fn section_material(t: &LineType, ei: f64) -> Material {
         area,
         second_moment: ei / youngs_modulus,
         axial_damping: 0.0,
-    }
-}
-
-/// A line of diameter d on the water's flat seabed (docs/method.md
-/// §12.2). Friction is regularized below a slip velocity of 1 mm/s
-/// (W43); it acts only on sliding, so statics do not see it.
-fn seabed_contact(w: &Water, diameter: f64) -> stancf::water::SeabedContact {
-    let b = w.seabed;
-    stancf::water::SeabedContact {
-        seabed: stancf::water::Seabed::flat(w.depth, b.stiffness, b.damping)
-            .with_friction(b.friction, b.friction, 1e-3),
-        diameter,
-    }
-}
-
-impl SystemScenario {
-    /// Refuses what the water of this version cannot represent: a line
-    /// of `states` (one per line) with a node above the free surface
-    /// (z > 0), beyond 1e-9 of the depth: lines through the surface are
-    /// not modelled in this version; the message names the line and
-    /// where. (Nodes in the seabed meet its contact, §12.2.)
-    pub fn check_submerged(&self, system: &System, states: &[stancf::State]) -> Result<(), String> {
-        let Some(w) = self.water else { return Ok(()) };
-        let slack = 1e-9 * w.depth;
-        for (i, (line, s)) in system.lines().iter().zip(states).enumerate() {
-            for j in 0..line.model.nodes() {
-                let z = line.model.node_position(&s.e, j)[2];
-                if z <= slack {
-                    continue;
-                }
-                return Err(format!(
-                    "line {}: node {j} hangs above the water surface (z = {z:.6} m, water \
-                     depth {} m): lines crossing the surface are not modelled in this version",
-                    self.lines[i].id, w.depth
-                ));
-            }
-        }
-        Ok(())
     }
 }

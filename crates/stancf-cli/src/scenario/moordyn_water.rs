@@ -1,0 +1,190 @@
+//! A MoorDyn deck's water (docs/interface.md, "Water"): the options
+//! WtrDpth, WtrDnsty, kBot, cBot, FrictionCoefficient (axial and
+//! transverse alike) and `Currents 1` (the steady profile of
+//! `current_profile.txt` beside the deck, MoorDyn-C's format), merged
+//! with the `[water]` keys of a scenario that takes the deck: a key both
+//! give is refused naming both.
+//!
+//! What the deck asks for that stancf does not map is refused by name:
+//! `Currents` modes other than 0 and 1 (time-varying or 4D grids).
+//! `WaveKin` other than 0 is refused by the deck's reader.
+
+use super::context::Ctx;
+use super::water::{Current, Water, WaterKeys};
+use super::ScenarioError;
+use crate::moordyn::{Deck, OptionKind, SupportedOption};
+use stancf::water::current::{CurrentProfile, CurrentRow};
+use std::path::Path;
+
+/// The file MoorDyn-C reads a steady current profile from (`Currents 1`),
+/// in the deck's folder.
+pub const CURRENT_PROFILE_FILE: &str = "current_profile.txt";
+
+/// The lines of MoorDyn-C's `current_profile.txt` before its rows (a
+/// title, a description, the column names), skipped as MoorDyn skips them.
+const CURRENT_PROFILE_HEADER_LINES: usize = 3;
+
+/// The deck's option `which`: its name as written and its line.
+fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, usize)> {
+    deck.options
+        .iter()
+        .find(|o| o.kind == OptionKind::Supported(which))
+        .map(|o| (o.name.as_str(), o.line))
+}
+
+/// The water keys the deck at `path` (named `file` in messages) gives.
+pub(super) fn deck_water_keys(
+    deck: &Deck,
+    file: &str,
+    path: &Path,
+) -> Result<WaterKeys, ScenarioError> {
+    let friction = deck.option(SupportedOption::FrictionCoefficient);
+    Ok(WaterKeys {
+        depth: deck.option(SupportedOption::WaterDepth),
+        density: deck.option(SupportedOption::WaterDensity),
+        stiffness: deck.option(SupportedOption::BottomStiffness),
+        damping: deck.option(SupportedOption::BottomDamping),
+        friction_axial: friction,
+        friction_transverse: friction,
+        current: deck_current(deck, file, path)?,
+        ..WaterKeys::default()
+    })
+}
+
+/// `Currents`: 0 (or missing) none; 1 the steady profile of
+/// [`CURRENT_PROFILE_FILE`] beside the deck; any other mode refused.
+fn deck_current(deck: &Deck, file: &str, path: &Path) -> Result<Option<Current>, ScenarioError> {
+    let Some(mode) = deck.option(SupportedOption::Currents) else {
+        return Ok(None);
+    };
+    let (name, line) = option_at(deck, SupportedOption::Currents).expect("the option is set");
+    if mode == 0.0 {
+        return Ok(None);
+    }
+    if mode != 1.0 {
+        return Err(ScenarioError(format!(
+            "{file}: line {line}: option {name} is {mode}: stancf reads MoorDyn's steady current \
+             profile (Currents 1, {CURRENT_PROFILE_FILE}) only; time-varying and 4D current \
+             grids are not mapped (give a steady profile, or [water.current] in a scenario)"
+        )));
+    }
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let profile = dir.join(CURRENT_PROFILE_FILE);
+    let rows = read_current_profile(&profile).map_err(|e| {
+        ScenarioError(format!(
+            "{file}: line {line}: option {name} 1 reads {}: {e}",
+            profile.display()
+        ))
+    })?;
+    Ok(Some(Current {
+        rows,
+        ramp: 0.0,
+        source: format!("{} (the deck's {name} 1)", profile.display()),
+    }))
+}
+
+/// MoorDyn-C's steady current profile: 3 lines skipped, then rows
+/// `z ux uy uz` (m, m/s; z up, the still surface z = 0), blank lines
+/// skipped, z strictly increasing or decreasing. Errors name the line.
+pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the file: {e}"))?;
+    let mut rows = Vec::new();
+    let mut lines = Vec::new();
+    for (n, l) in text.lines().enumerate().skip(CURRENT_PROFILE_HEADER_LINES) {
+        let words: Vec<&str> = l.split_whitespace().collect();
+        if words.is_empty() {
+            continue;
+        }
+        let at = n + 1;
+        if words.len() != 4 {
+            return Err(format!(
+                "line {at}: a row is \"z ux uy uz\", 4 numbers, got {} words",
+                words.len()
+            ));
+        }
+        let mut v = [0.0; 4];
+        for (k, w) in words.iter().enumerate() {
+            v[k] = w
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    format!(
+                        "line {at}: \"{}\" is not a finite number",
+                        super::clip(w, 60)
+                    )
+                })?;
+        }
+        rows.push(CurrentRow {
+            z: v[0],
+            velocity: [v[1], v[2], v[3]],
+        });
+        lines.push(at);
+    }
+    if rows.is_empty() {
+        return Err(format!(
+            "no rows after the {CURRENT_PROFILE_HEADER_LINES} header lines"
+        ));
+    }
+    CurrentProfile::new(&rows).map_err(|e| {
+        let row: Option<usize> = e
+            .key
+            .trim_start_matches("rows[")
+            .split(']')
+            .next()
+            .and_then(|i| i.parse().ok());
+        match row {
+            Some(i) => format!("line {}: {}", lines[i], e.message),
+            None => e.message,
+        }
+    })?;
+    Ok(rows)
+}
+
+/// The deck option a `[water]` key of [`WaterKeys::given`] collides with.
+fn deck_option_of(key: &str) -> SupportedOption {
+    match key {
+        "water.depth" => SupportedOption::WaterDepth,
+        "water.density" => SupportedOption::WaterDensity,
+        "water.seabed.stiffness" => SupportedOption::BottomStiffness,
+        "water.seabed.damping" => SupportedOption::BottomDamping,
+        "water.current" => SupportedOption::Currents,
+        _ => SupportedOption::FrictionCoefficient,
+    }
+}
+
+/// The deck's water with the scenario's `[water]` keys `added` (checked
+/// under `ctx`, the scenario) : a key both give is refused naming the
+/// key and the deck's option and line; the depth is required of one.
+pub(super) fn deck_water(
+    deck_keys: WaterKeys,
+    file: &str,
+    deck: &Deck,
+    added: Option<(&Ctx, WaterKeys)>,
+) -> Result<Water, ScenarioError> {
+    let keys = match added {
+        None => deck_keys,
+        Some((ctx, added)) => {
+            for ((key, in_deck), (_, in_scenario)) in deck_keys.given().iter().zip(added.given()) {
+                if *in_deck && in_scenario {
+                    let (name, line) =
+                        option_at(deck, deck_option_of(key)).expect("the deck sets it");
+                    return Err(ctx.err(
+                        key,
+                        format!(
+                            "the deck {file} gives it too (option {name}, line {line}): give \
+                             it in one place"
+                        ),
+                    ));
+                }
+            }
+            deck_keys.or(added)
+        }
+    };
+    keys.water().ok_or_else(|| {
+        ScenarioError(format!(
+            "{file}: OPTIONS: WtrDpth is missing: a deck's lines hang in water of a given depth \
+             (give WtrDpth, or water.depth in a scenario that takes the deck)"
+        ))
+    })
+}

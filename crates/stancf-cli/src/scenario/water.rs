@@ -1,0 +1,400 @@
+//! The water a system's lines are in (docs/interface.md, "Water"):
+//! `[water]` of a scenario, a MoorDyn deck's water options
+//! ([`super::moordyn_water`]), or both, merged into one [`Water`] that
+//! builds the library's sea (docs/method.md §12).
+//!
+//! z is up, the still water surface z = 0, the seabed the plane through
+//! (0, 0, -depth) (flat, or sloped by `seabed.slope`).
+
+use super::context::Ctx;
+use super::raw::{RawCurrent, RawJonswap, RawSeabed, RawWater, RawWave};
+use super::ScenarioError;
+use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
+use stancf::water::spectrum::Jonswap;
+use stancf::water::waves::AiryWave;
+use stancf::water::{Seabed, SeabedContact};
+use stancf::ModelError;
+
+/// The water around a system: z up, the still surface at z = 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Water {
+    /// The seabed plane passes through (0, 0, -depth) (m).
+    pub depth: f64,
+    /// Density rho_w (kg/m^3).
+    pub density: f64,
+    pub seabed: SeabedOptions,
+    /// A steady current profile (None: none).
+    pub current: Option<Current>,
+    /// Regular Airy waves as given.
+    pub waves: Vec<AiryWave>,
+    /// An irregular sea whose components add to the waves.
+    pub jonswap: Option<Jonswap>,
+    /// The duration (s) of the ramp that starts the waves (0: none).
+    pub wave_ramp: f64,
+}
+
+/// The seabed's contact and friction (docs/method.md §12.2).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeabedOptions {
+    /// MoorDyn's kBot (Pa/m).
+    pub stiffness: f64,
+    /// MoorDyn's cBot (Pa s/m).
+    pub damping: f64,
+    /// Coulomb's coefficients along a line's axis and across it.
+    pub friction_axial: f64,
+    pub friction_transverse: f64,
+    /// The velocity (m/s) below which friction is regularized (W43).
+    pub slip_velocity: f64,
+    /// dz/dx and dz/dy of the bed plane.
+    pub slope: [f64; 2],
+}
+
+impl SeabedOptions {
+    /// MoorDyn's defaults: kBot = 3e6 Pa/m, cBot = 3e5 Pa s/m, no
+    /// friction; friction regularized below 1 mm/s; a flat bed.
+    pub const MOORDYN: SeabedOptions = SeabedOptions {
+        stiffness: 3.0e6,
+        damping: 3.0e5,
+        friction_axial: 0.0,
+        friction_transverse: 0.0,
+        slip_velocity: 1.0e-3,
+        slope: [0.0, 0.0],
+    };
+}
+
+/// A steady current profile: rows (z, velocity), linear between rows and
+/// constant beyond the ends (W9), started by a ramp.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Current {
+    pub rows: Vec<CurrentRow>,
+    /// The ramp's duration (s), 0 for none.
+    pub ramp: f64,
+    /// Where the rows come from, for `stancf check` (a key or a file).
+    pub source: String,
+}
+
+/// The water's keys as one source gives them: a value for each key the
+/// source sets, None for a key it leaves out. A deck and a scenario's
+/// `[water]` each give one; [`merge`] puts them together.
+#[derive(Clone, Debug, Default)]
+pub(super) struct WaterKeys {
+    pub(super) depth: Option<f64>,
+    pub(super) density: Option<f64>,
+    pub(super) stiffness: Option<f64>,
+    pub(super) damping: Option<f64>,
+    pub(super) friction_axial: Option<f64>,
+    pub(super) friction_transverse: Option<f64>,
+    pub(super) slip_velocity: Option<f64>,
+    pub(super) slope: Option<[f64; 2]>,
+    pub(super) current: Option<Current>,
+    pub(super) waves: Vec<AiryWave>,
+    pub(super) jonswap: Option<Jonswap>,
+    pub(super) wave_ramp: Option<f64>,
+}
+
+impl WaterKeys {
+    /// The keys of `[water]` a key of the scenario names, each with
+    /// whether it is set: the pairs a deck's option may collide with.
+    pub(super) fn given(&self) -> [(&'static str, bool); 7] {
+        [
+            ("water.depth", self.depth.is_some()),
+            ("water.density", self.density.is_some()),
+            ("water.seabed.stiffness", self.stiffness.is_some()),
+            ("water.seabed.damping", self.damping.is_some()),
+            ("water.seabed.friction_axial", self.friction_axial.is_some()),
+            (
+                "water.seabed.friction_transverse",
+                self.friction_transverse.is_some(),
+            ),
+            ("water.current", self.current.is_some()),
+        ]
+    }
+
+    /// The water these keys describe, with the defaults of the keys left
+    /// out (density 1025 kg/m^3, [`SeabedOptions::MOORDYN`], no current,
+    /// no waves); None without a depth.
+    pub(super) fn water(self) -> Option<Water> {
+        let d = SeabedOptions::MOORDYN;
+        Some(Water {
+            depth: self.depth?,
+            density: self.density.unwrap_or(1025.0),
+            seabed: SeabedOptions {
+                stiffness: self.stiffness.unwrap_or(d.stiffness),
+                damping: self.damping.unwrap_or(d.damping),
+                friction_axial: self.friction_axial.unwrap_or(d.friction_axial),
+                friction_transverse: self.friction_transverse.unwrap_or(d.friction_transverse),
+                slip_velocity: self.slip_velocity.unwrap_or(d.slip_velocity),
+                slope: self.slope.unwrap_or(d.slope),
+            },
+            current: self.current,
+            waves: self.waves,
+            jonswap: self.jonswap,
+            wave_ramp: self.wave_ramp.unwrap_or(0.0),
+        })
+    }
+
+    /// These keys with those of `other` added (a key set by both is for
+    /// the caller to refuse first).
+    pub(super) fn or(self, other: WaterKeys) -> WaterKeys {
+        let mut waves = self.waves;
+        waves.extend(other.waves);
+        WaterKeys {
+            depth: self.depth.or(other.depth),
+            density: self.density.or(other.density),
+            stiffness: self.stiffness.or(other.stiffness),
+            damping: self.damping.or(other.damping),
+            friction_axial: self.friction_axial.or(other.friction_axial),
+            friction_transverse: self.friction_transverse.or(other.friction_transverse),
+            slip_velocity: self.slip_velocity.or(other.slip_velocity),
+            slope: self.slope.or(other.slope),
+            current: self.current.or(other.current),
+            waves,
+            jonswap: self.jonswap.or(other.jonswap),
+            wave_ramp: self.wave_ramp.or(other.wave_ramp),
+        }
+    }
+}
+
+impl Water {
+    /// The library's water: the sea of this depth under gravity of
+    /// magnitude `gravity` (m/s^2), the regular waves and the JONSWAP
+    /// components superposed and started by the wave ramp, the current
+    /// by its ramp. Errors name the `[water]` key.
+    pub fn library(&self, gravity: f64) -> Result<stancf::water::Water, ModelError> {
+        let mut waves = self.waves.clone();
+        if let Some(j) = &self.jonswap {
+            waves.extend(j.waves().map_err(|e| e.under("water.jonswap"))?);
+        }
+        let mut sea = stancf::water::kinematics::Sea::new(self.depth, gravity, &waves)
+            .map_err(|e| e.under("water"))?
+            .with_wave_ramp(Ramp::new(self.wave_ramp).map_err(|e| e.under("water.wave_ramp"))?);
+        if let Some(c) = &self.current {
+            let profile = CurrentProfile::new(&c.rows).map_err(|e| e.under("water.current"))?;
+            let ramp = Ramp::new(c.ramp).map_err(|e| e.under("water.current"))?;
+            sea = sea.with_current(profile, ramp);
+        }
+        Ok(stancf::water::Water {
+            density: self.density,
+            sea,
+        })
+    }
+
+    /// The seabed as a line of diameter `diameter` touches it: the plane
+    /// z = -depth + sx x + sy y (upward normal (-sx, -sy, 1)), with the
+    /// contact's stiffness and damping and the friction.
+    pub fn seabed_contact(&self, diameter: f64) -> SeabedContact {
+        let b = &self.seabed;
+        let [sx, sy] = b.slope;
+        let bed = Seabed::plane(
+            [0.0, 0.0, -self.depth],
+            [-sx, -sy, 1.0],
+            b.stiffness,
+            b.damping,
+        )
+        .with_friction(b.friction_axial, b.friction_transverse, b.slip_velocity);
+        SeabedContact {
+            seabed: bed,
+            diameter,
+        }
+    }
+}
+
+/// `[water]` of a scenario, each key checked (the message names it).
+pub(super) fn water_keys(ctx: &Ctx, raw: RawWater) -> Result<WaterKeys, ScenarioError> {
+    let positive = |k: &str, v: Option<f64>| v.map(|v| ctx.positive(k, v)).transpose();
+    let non_negative = |k: &str, v: Option<f64>| v.map(|v| ctx.non_negative(k, v)).transpose();
+    let mut keys = WaterKeys {
+        depth: positive("water.depth", raw.depth)?,
+        density: positive("water.density", raw.density)?,
+        wave_ramp: non_negative("water.wave_ramp", raw.wave_ramp)?,
+        ..WaterKeys::default()
+    };
+    if let Some(s) = raw.seabed {
+        seabed_keys(ctx, s, &mut keys)?;
+    }
+    keys.current = raw.current.map(|c| current(ctx, c)).transpose()?;
+    keys.waves = raw
+        .waves
+        .iter()
+        .enumerate()
+        .map(|(i, w)| wave(ctx, i, w))
+        .collect::<Result<_, _>>()?;
+    keys.jonswap = raw.jonswap.map(|j| jonswap(ctx, j)).transpose()?;
+    Ok(keys)
+}
+
+/// `[water.seabed]`: stiffness and slip velocity > 0; damping and
+/// friction >= 0; slope two finite numbers.
+fn seabed_keys(ctx: &Ctx, s: RawSeabed, keys: &mut WaterKeys) -> Result<(), ScenarioError> {
+    let positive = |k: &str, v: Option<f64>| v.map(|v| ctx.positive(k, v)).transpose();
+    let non_negative = |k: &str, v: Option<f64>| v.map(|v| ctx.non_negative(k, v)).transpose();
+    keys.stiffness = positive("water.seabed.stiffness", s.stiffness)?;
+    keys.damping = non_negative("water.seabed.damping", s.damping)?;
+    keys.friction_axial = non_negative("water.seabed.friction_axial", s.friction_axial)?;
+    keys.friction_transverse =
+        non_negative("water.seabed.friction_transverse", s.friction_transverse)?;
+    keys.slip_velocity = positive("water.seabed.slip_velocity", s.slip_velocity)?;
+    keys.slope = match s.slope {
+        None => None,
+        Some(v) if v.len() != 2 => {
+            return Err(ctx.err(
+                "water.seabed.slope",
+                format!("the slope is [dz/dx, dz/dy], 2 numbers, got {}", v.len()),
+            ))
+        }
+        Some(v) => Some([
+            ctx.finite("water.seabed.slope", v[0])?,
+            ctx.finite("water.seabed.slope", v[1])?,
+        ]),
+    };
+    Ok(())
+}
+
+/// `[water.current]`: `profile` (rows [z, ux, uy, uz], z strictly
+/// monotone) or `velocity` (uniform), one of them; `ramp` >= 0.
+fn current(ctx: &Ctx, c: RawCurrent) -> Result<Current, ScenarioError> {
+    let ramp = match c.ramp {
+        Some(r) => ctx.non_negative("water.current.ramp", r)?,
+        None => 0.0,
+    };
+    let (rows, source) = match (c.profile, c.velocity) {
+        (Some(_), Some(_)) => {
+            return Err(ctx.err(
+                "water.current.velocity",
+                "give a profile or a uniform velocity, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(ctx.err(
+                "water.current",
+                "needs a profile ([[z, ux, uy, uz], ...]) or a velocity ([ux, uy, uz])",
+            ))
+        }
+        (None, Some(v)) => {
+            let velocity = ctx.vector("water.current.velocity", &v)?;
+            (
+                vec![CurrentRow { z: 0.0, velocity }],
+                "water.current.velocity".to_string(),
+            )
+        }
+        (Some(p), None) => (profile(ctx, &p)?, "water.current.profile".to_string()),
+    };
+    Ok(Current { rows, ramp, source })
+}
+
+/// The rows of `water.current.profile`: each [z, ux, uy, uz], finite, z
+/// strictly increasing or strictly decreasing.
+fn profile(ctx: &Ctx, p: &[Vec<f64>]) -> Result<Vec<CurrentRow>, ScenarioError> {
+    let key = "water.current.profile";
+    if p.is_empty() {
+        return Err(ctx.err(key, "a profile needs at least one row [z, ux, uy, uz]"));
+    }
+    let mut rows = Vec::with_capacity(p.len());
+    for (i, r) in p.iter().enumerate() {
+        if r.len() != 4 {
+            return Err(ctx.err(
+                &format!("{key}[{i}]"),
+                format!("a row is [z, ux, uy, uz], 4 numbers, got {}", r.len()),
+            ));
+        }
+        for v in r {
+            ctx.finite(&format!("{key}[{i}]"), *v)?;
+        }
+        rows.push(CurrentRow {
+            z: r[0],
+            velocity: [r[1], r[2], r[3]],
+        });
+    }
+    CurrentProfile::new(&rows).map_err(|e| {
+        let at = e.key.trim_start_matches("rows").trim_end_matches(".z");
+        ctx.err(&format!("{key}{at}"), e.message)
+    })?;
+    Ok(rows)
+}
+
+/// One `[[water.waves]]` entry: amplitude >= 0 and period > 0 required;
+/// heading and phase in degrees, finite, default 0.
+fn wave(ctx: &Ctx, i: usize, w: &RawWave) -> Result<AiryWave, ScenarioError> {
+    let key = |k: &str| format!("water.waves[{i}].{k}");
+    Ok(AiryWave {
+        amplitude: ctx.non_negative(
+            &key("amplitude"),
+            ctx.required(&key("amplitude"), w.amplitude)?,
+        )?,
+        period: ctx.required_positive(&key("period"), w.period)?,
+        heading_deg: ctx.finite(&key("heading"), w.heading.unwrap_or(0.0))?,
+        phase_deg: ctx.finite(&key("phase"), w.phase.unwrap_or(0.0))?,
+    })
+}
+
+/// The most components a JONSWAP sea may have (each is evaluated at every
+/// Gauss point of every step).
+const MAX_COMPONENTS: i64 = 10_000;
+
+/// `[water.jonswap]`: hs >= 0 and tp > 0 required; gamma in [1, 7]
+/// (default 3.3), heading (degrees, default 0), seed (integer >= 0,
+/// default 0), components (1..=10000, default 100).
+fn jonswap(ctx: &Ctx, j: RawJonswap) -> Result<Jonswap, ScenarioError> {
+    let gamma = ctx.finite("water.jonswap.gamma", j.gamma.unwrap_or(3.3))?;
+    if !(1.0..=7.0).contains(&gamma) {
+        return Err(ctx.err(
+            "water.jonswap.gamma",
+            format!("must be within [1, 7] (1 is Pierson-Moskowitz), got {gamma}"),
+        ));
+    }
+    let seed = j.seed.unwrap_or(0);
+    if seed < 0 {
+        return Err(ctx.err(
+            "water.jonswap.seed",
+            format!("must be an integer >= 0, got {seed}"),
+        ));
+    }
+    Ok(Jonswap {
+        hs: ctx.non_negative("water.jonswap.hs", ctx.required("water.jonswap.hs", j.hs)?)?,
+        tp: ctx.required_positive("water.jonswap.tp", j.tp)?,
+        gamma,
+        heading_deg: ctx.finite("water.jonswap.heading", j.heading.unwrap_or(0.0))?,
+        seed: seed as u64,
+        components: ctx.count(
+            "water.jonswap.components",
+            j.components.unwrap_or(100),
+            1,
+            MAX_COMPONENTS,
+        )?,
+    })
+}
+
+/// The water of a system without a deck: `[water]` (its depth required)
+/// under `gravity`, which must point along -z (the key named:
+/// `system.gravity`).
+pub(super) fn scenario_water(
+    ctx: &Ctx,
+    raw: Option<RawWater>,
+    gravity: [f64; 3],
+) -> Result<Option<Water>, ScenarioError> {
+    let Some(raw) = raw else { return Ok(None) };
+    check_gravity(ctx, gravity)?;
+    let keys = water_keys(ctx, raw)?;
+    match keys.water() {
+        Some(w) => Ok(Some(w)),
+        None => Err(ctx.err(
+            "water.depth",
+            "required key is missing (the seabed is at z = -depth)",
+        )),
+    }
+}
+
+/// Water needs gravity along -z (its surface is the plane z = 0).
+pub(super) fn check_gravity(ctx: &Ctx, gravity: [f64; 3]) -> Result<(), ScenarioError> {
+    if gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] < 0.0 {
+        return Ok(());
+    }
+    Err(ctx.err(
+        "system.gravity",
+        format!(
+            "[water] needs gravity along -z (z is up, the still surface z = 0), got \
+             [{}, {}, {}]",
+            gravity[0], gravity[1], gravity[2]
+        ),
+    ))
+}
