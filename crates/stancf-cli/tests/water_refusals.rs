@@ -320,23 +320,15 @@ fn a_decks_current_mode_or_file_stancf_does_not_map_is_refused_naming_its_line()
     );
 }
 
-/// A free point's drag and added mass are not modelled in a dynamic run:
-/// the deck's point row is named; the same deck runs its statics, and
-/// its dynamics with CdA = Ca = 0.
+/// A free point's volume, drag (CdA) and added mass (Ca) are the
+/// library's point in water (docs/method.md §12.6): the deck runs its
+/// statics and its dynamics with them.
 #[test]
-fn a_free_points_drag_and_added_mass_are_refused_in_a_dynamic_run_naming_its_line() {
+fn a_free_point_with_drag_and_added_mass_runs_static_and_dynamic() {
     let dynamic = "type = \"dynamic\"\ntime_step = 2.0e-4\nduration = 4.0e-4";
-    let with_drag = "3   Free      30.0     0.0      -95.0    2000    0.5     1.0    0.0";
-    let deck = wire_deck("", with_drag);
-    let row = format!("deck.txt: line {}: point 3", line_of(&deck, with_drag));
-    expect_refusal_beside(
-        "water-point-drag",
-        &deck_scenario("", dynamic),
-        &[("deck.txt", &deck)],
-        &[&row, "CdA"],
-    );
+    let with_drag = "3   Free      30.0     0.0      -95.0    2000    0.5     1.0    0.8";
     let d = scratch("water-point-runs");
-    std::fs::write(d.join("deck.txt"), wire_deck("", FREE_POINT)).unwrap();
+    std::fs::write(d.join("deck.txt"), wire_deck("", with_drag)).unwrap();
     for analysis in [dynamic, "type = \"static\""] {
         let sc = write_scenario(&d, "deck.toml", &deck_scenario("", analysis));
         let out = d.join("out");

@@ -8,7 +8,7 @@
 use stancf::catenary::touchdown::{solve_touchdown, TouchdownLine};
 use stancf::element::{AxialStrain, Measures};
 use stancf::observe::stress_samples;
-use stancf::system::{shaped, End, Line, Point, System, SystemStatics};
+use stancf::system::{catenary_states, shaped, End, Line, Point, System, SystemStatics};
 use stancf::water::kinematics::Sea;
 use stancf::water::{LineInWater, Morison, Seabed, SeabedContact, Water};
 use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings};
@@ -115,18 +115,7 @@ fn chain_on_the_bed(elements: usize, friction: f64) -> Measured {
         let rx = std::array::from_fn(|k| (c[k] - a[k]) / (hi - lo));
         (b, rx, [0.0; 3])
     });
-    let system = System::new(
-        vec![Line {
-            model,
-            ends: [End::Point(0), End::Point(1)],
-        }],
-        vec![
-            Point::fixed([0.0, 0.0, -DEPTH]),
-            Point::fixed([SPAN, 0.0, FAIRLEAD_Z]),
-        ],
-        [0.0, 0.0, -G],
-    )
-    .unwrap();
+    let system = anchored_to_the_fairlead(model);
     let mut solver = SystemStatics::new(system, vec![seed], StaticSettings::default()).unwrap();
     solver.solve(|_, _| ControlFlow::Continue(())).unwrap();
     let [_, ff] = solver.end_forces(0);
@@ -151,6 +140,70 @@ fn chain_on_the_bed(elements: usize, friction: f64) -> Measured {
         resting_tension,
         last_node_on_bed: LENGTH * last as f64 / elements as f64,
     }
+}
+
+/// A system of `model` from the anchor at (0, 0, -depth) to the
+/// fairlead, both fixed.
+fn anchored_to_the_fairlead(model: Model) -> System {
+    System::new(
+        vec![Line {
+            model,
+            ends: [End::Point(0), End::Point(1)],
+        }],
+        vec![
+            Point::fixed([0.0, 0.0, -DEPTH]),
+            Point::fixed([SPAN, 0.0, FAIRLEAD_Z]),
+        ],
+        [0.0, 0.0, -G],
+    )
+    .unwrap()
+}
+
+/// A system's seed (`catenary_states`, docs/method.md §11.6) starts a
+/// line anchored on its bed resting on it (the closed form, §11.12):
+/// no node below the bed, the nodes of the resting part on it, the ends
+/// at their points. The elastic catenary through the ends without the
+/// bed, the seed before, dips 5 m into it.
+#[test]
+fn a_line_anchored_on_the_bed_is_seeded_resting_on_it() {
+    let area = 0.25 * std::f64::consts::PI * DIAMETER * DIAMETER;
+    let wet = (MASS_PER_LENGTH - RHO_W * area) / MASS_PER_LENGTH;
+    let material = Material {
+        youngs_modulus: EA / area,
+        density: MASS_PER_LENGTH / area,
+        area,
+        second_moment: 1e-9,
+        axial_damping: 0.0,
+    };
+    let bed = SeabedContact {
+        seabed: Seabed::flat(DEPTH, K_BOT, 3.0e5),
+        diameter: DIAMETER,
+    };
+    // The seed's weight is the wet weight, as the command line seeds.
+    let loads = vec![
+        Load::Gravity {
+            acceleration: [0.0, 0.0, -G * wet],
+        },
+        Load::Seabed(bed),
+    ];
+    let cable = Cable::straight(LENGTH, 40, ElementType::Sac2).with_origin([0.0, 0.0, -DEPTH]);
+    let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
+    let system = anchored_to_the_fairlead(model);
+    let seed = &catenary_states(&system)[0];
+    let m = &system.lines()[0].model;
+    let (cf, _) = closed_form(0.0);
+    for j in 0..m.nodes() {
+        let r = m.node_position(&seed.e, j);
+        assert!(r[2] >= -DEPTH - 1e-9, "node {j} in the bed: z {}", r[2]);
+        if m.node_coordinate(j) < cf.resting_length - 1.0 {
+            assert!((r[2] + DEPTH).abs() < 1e-9, "node {j} rests: z {}", r[2]);
+        }
+    }
+    let end = m.node_position(&seed.e, m.nodes() - 1);
+    assert!(
+        (end[0] - SPAN).abs() < 1e-6 && (end[2] - FAIRLEAD_Z).abs() < 1e-6,
+        "{end:?}"
+    );
 }
 
 /// The height of the chain resting in the bed: sunk by w / (k d) + delta

@@ -22,7 +22,7 @@ use super::system::{
     SystemScenario,
 };
 use super::water::WaterKeys;
-use super::{AnalysisKind, ScenarioError};
+use super::ScenarioError;
 use crate::moordyn::{
     self, Attachment, Channel, Deck, LineQuantity, PointQuantity, SupportedOption,
 };
@@ -92,6 +92,16 @@ pub(super) fn deck_scenario(
             } else {
                 0.0
             },
+            drag_area: if p.attachment == Attachment::Free {
+                p.cda
+            } else {
+                0.0
+            },
+            ca: if p.attachment == Attachment::Free {
+                p.ca
+            } else {
+                0.0
+            },
             motion: CoupledMotion::NONE,
             motion_file: None,
         })
@@ -150,34 +160,6 @@ pub(super) fn deck_scenario(
         water: Some(water),
         channels,
     })
-}
-
-/// Refuses, naming the deck's line, a free point with drag (CdA) or
-/// added mass (Ca) in a dynamic analysis: this version does not model
-/// them (a static one does not use them).
-pub(super) fn check_point_hydrodynamics(
-    deck: &Deck,
-    file: &str,
-    kind: AnalysisKind,
-) -> Result<(), ScenarioError> {
-    if kind != AnalysisKind::Dynamic {
-        return Ok(());
-    }
-    let moving = |p: &&moordyn::DeckPoint| p.attachment == Attachment::Free;
-    match deck
-        .points
-        .iter()
-        .filter(moving)
-        .find(|p| p.cda != 0.0 || p.ca != 0.0)
-    {
-        Some(p) => Err(ScenarioError(format!(
-            "{file}: line {}: point {}: CdA = {} m^2 and Ca = {}: a free point's drag and added \
-             mass are not modelled in a dynamic analysis in this version; set both to 0 (a \
-             static analysis does not use them)",
-            p.line, p.id, p.cda, p.ca
-        ))),
-        None => Ok(()),
-    }
 }
 
 /// Whether stancf has the value of a channel: line end tensions, point

@@ -144,6 +144,9 @@ pub(super) struct RawPoint {
     pub(super) position: Option<Vector>,
     pub(super) mass: Option<f64>,
     pub(super) force: Option<Vector>,
+    pub(super) volume: Option<f64>,
+    pub(super) cda: Option<f64>,
+    pub(super) ca: Option<f64>,
 }
 
 /// One `[[lines]]` entry.

@@ -62,8 +62,12 @@ pub struct SystemPoint {
     pub position: [f64; 3],
     pub mass: f64,
     pub force: [f64; 3],
-    /// Displaced volume (m^3): buoyancy in water.
+    /// Displaced volume (m^3): buoyancy and added mass in water.
     pub volume: f64,
+    /// Drag area CdA (m^2) in water.
+    pub drag_area: f64,
+    /// Added-mass coefficient Ca on the volume.
+    pub ca: f64,
     /// The motion of a coupled point (none: it stays put).
     pub motion: CoupledMotion,
     /// The file a tabulated motion was read from, as the scenario names it.
@@ -179,7 +183,6 @@ pub(super) fn system_scenario(
         )?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
-        super::moordyn::check_point_hydrodynamics(&deck, &deck_file, analysis.kind)?;
         let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
         motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
         sc.analysis = analysis;
@@ -357,14 +360,24 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
             &key("position"),
             &ctx.required(&key("position"), r.position.clone())?,
         )?;
-        if kind != PointType::Free && (r.mass.is_some() || r.force.is_some()) {
-            let k = if r.mass.is_some() { "mass" } else { "force" };
+        let given = [
+            ("mass", r.mass.is_some()),
+            ("force", r.force.is_some()),
+            ("volume", r.volume.is_some()),
+            ("cda", r.cda.is_some()),
+            ("ca", r.ca.is_some()),
+        ];
+        if let (false, Some((k, _))) = (kind == PointType::Free, given.iter().find(|g| g.1)) {
             return Err(ctx.err(
                 &key(k),
-                "only a free point carries a mass or a force (a fixed or coupled point's \
-                 position is given)",
+                "only a free point carries a mass, a force or water loads (a fixed or coupled \
+                 point's position is given)",
             ));
         }
+        let non_negative = |name: &str, v: Option<f64>| match v {
+            Some(v) => ctx.non_negative(&key(name), v),
+            None => Ok(0.0),
+        };
         out.push(SystemPoint {
             id,
             kind,
@@ -374,7 +387,9 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
                 None => 0.0,
             },
             force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
-            volume: 0.0,
+            volume: non_negative("volume", r.volume)?,
+            drag_area: non_negative("cda", r.cda)?,
+            ca: non_negative("ca", r.ca)?,
             motion: CoupledMotion::NONE,
             motion_file: None,
         });

@@ -87,15 +87,15 @@ impl SystemScenario {
     }
 
     fn system_with(&self, loads: Loads) -> Result<System, ModelError> {
-        let points: Vec<Point> = self
-            .points
-            .iter()
-            .map(|p| library_point(p, self.water.as_ref(), self.gravity))
-            .collect();
         let water = match (&self.water, loads) {
             (Some(w), Loads::Full) => Some(Arc::new(w.library(norm(self.gravity))?)),
             _ => None,
         };
+        let points: Vec<Point> = self
+            .points
+            .iter()
+            .map(|p| library_point(p, self.water.as_ref(), water.as_ref(), self.gravity))
+            .collect();
         let lines = self
             .lines
             .iter()
@@ -174,8 +174,11 @@ impl SystemScenario {
         } else {
             vec![Load::Gravity { acceleration }]
         };
-        if let (Some(w), Some(fluid)) = (&self.water, water) {
-            line_loads.push(Load::Water(LineInWater::new(Arc::clone(fluid), morison(t))));
+        if let Some(w) = &self.water {
+            if let Some(fluid) = water {
+                line_loads.push(Load::Water(LineInWater::new(Arc::clone(fluid), morison(t))));
+            }
+            // The seed's lines see the bed too: they start resting on it.
             line_loads.push(Load::Seabed(w.seabed_contact(t.diameter)));
         }
         Model::new(cable, material, options, line_loads)
@@ -198,24 +201,37 @@ fn norm(v: [f64; 3]) -> f64 {
     v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }
 
-/// The library's point; a free point in water carries its buoyancy
-/// -rho_w V g beside its own force.
+/// The library's point. In water (`fluid`: the library's water) a free
+/// point carries its volume's buoyancy, drag on its CdA, the fluid's
+/// inertia and its added mass Ca rho_w V (docs/method.md §12.6); for the
+/// wet-weight seed (water given, `fluid` None) its buoyancy is a constant
+/// force -rho_w V g.
 fn library_point(
     p: &super::system::SystemPoint,
     water: Option<&Water>,
+    fluid: Option<&Arc<stancf::water::Water>>,
     gravity: [f64; 3],
 ) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
         PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
         PointType::Free => {
-            let buoyancy = water.map_or(0.0, |w| w.density * p.volume);
+            let in_water = fluid.map(|f| stancf::water::PointInWater {
+                water: Arc::clone(f),
+                volume: p.volume,
+                drag_area: p.drag_area,
+                ca: p.ca,
+            });
+            let buoyancy = match (water, &in_water) {
+                (Some(w), None) => w.density * p.volume,
+                _ => 0.0,
+            };
             Point {
                 kind: PointKind::Free,
                 position: p.position,
                 mass: p.mass,
                 force: std::array::from_fn(|k| p.force[k] - buoyancy * gravity[k]),
-                water: None,
+                water: in_water,
             }
         }
     }

@@ -3,6 +3,9 @@
 //! seed of a static solve.
 
 use super::{End, System};
+use crate::catenary::touchdown::{
+    solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
+};
 use crate::catenary::{Catenary, CatenaryLine};
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
 
@@ -85,7 +88,11 @@ pub fn straight_states(system: &System) -> Vec<State> {
 /// EA through its end points ([`crate::catenary`]; node j takes r, r_x
 /// and r_xx of the catenary at its material coordinate). Where no
 /// catenary exists (a slack weightless line, a slack vertical one), the
-/// line starts straight between its ends.
+/// line starts straight between its ends. A line whose catenary would
+/// pass through its flat seabed, anchored on the bed, starts as the
+/// closed form resting on the bed instead (§11.12):
+/// the catenary would start it metres inside the bed, where the contact's
+/// forces (and static friction's stiffness) are far from the solution's.
 pub fn catenary_states(system: &System) -> Vec<State> {
     let g = system.gravity();
     (0..system.lines().len())
@@ -104,15 +111,115 @@ pub fn catenary_states(system: &System) -> Vec<State> {
                 g
             };
             let mut s = match Catenary::between(line, a, b, direction) {
-                Ok(c) if norm(direction) > 0.0 => shaped(model, |x| {
-                    (c.position(x), c.derivative(x), c.second_derivative(x))
-                }),
+                Ok(c) if norm(direction) > 0.0 => {
+                    let x_nodes = (0..model.nodes()).map(|j| model.node_coordinate(j));
+                    let through_bed = model.seabed.as_ref().is_some_and(|bed| {
+                        x_nodes
+                            .clone()
+                            .any(|x| bed.seabed.penetration(&c.position(x)) > 0.0)
+                    });
+                    match through_bed
+                        .then(|| resting_shape(model, line, a, b))
+                        .flatten()
+                    {
+                        Some(rest) => shaped(model, |x| rest.at(x)),
+                        None => shaped(model, |x| {
+                            (c.position(x), c.derivative(x), c.second_derivative(x))
+                        }),
+                    }
+                }
                 _ => straight_between(model, a, b),
             };
             model.apply_constraints(&mut s);
             s
         })
         .collect()
+}
+
+/// The closed form of a line resting on its flat seabed (docs/method.md
+/// §11.12, (C14)-(C21), frictionless) from its lower end, on the bed,
+/// to its upper end, in the vertical plane through both: r(x), r_x and
+/// r_xx at material coordinate x from end A (derivatives by central
+/// differences over 1e-4 of the length: a seed). None where it does not
+/// apply: a bed that is not flat, gravity not along its normal, the
+/// lower end off the bed (by more than 1e-6 of the length), ends one
+/// above the other, or no resting solution (the line too long, (C20)).
+fn resting_shape(model: &Model, line: CatenaryLine, a: [f64; 3], b: [f64; 3]) -> Option<Resting> {
+    let bed = &model.seabed.as_ref()?.seabed;
+    let g = norm(model.gravity);
+    let down: [f64; 3] = model.gravity.map(|c| c / g);
+    if bed.normal != [0.0, 0.0, 1.0] || down != [0.0, 0.0, -1.0] {
+        return None;
+    }
+    let length = model.cable.length;
+    let (low, high, reversed) = if a[2] <= b[2] {
+        (a, b, false)
+    } else {
+        (b, a, true)
+    };
+    if (low[2] - bed.point[2]).abs() > 1e-6 * length {
+        return None;
+    }
+    let span = ((high[0] - low[0]).powi(2) + (high[1] - low[1]).powi(2)).sqrt();
+    if span <= 1e-9 * length {
+        return None;
+    }
+    let resting = TouchdownLine {
+        length,
+        weight: line.weight,
+        ea: line.ea,
+        friction: 0.0,
+    };
+    let solution = solve_touchdown(&resting, span, high[2] - low[2]).ok()?;
+    if solution.regime == TouchdownRegime::Hanging {
+        return None;
+    }
+    let horizontal = [(high[0] - low[0]) / span, (high[1] - low[1]) / span];
+    Some(Resting {
+        solution,
+        low,
+        horizontal,
+        reversed,
+        length,
+    })
+}
+
+/// A line resting on the bed, as [`resting_shape`] solves it.
+struct Resting {
+    solution: TouchdownSolution,
+    low: [f64; 3],
+    horizontal: [f64; 2],
+    reversed: bool,
+    length: f64,
+}
+
+impl Resting {
+    /// r at arc length s from the lower end.
+    fn point(&self, s: f64) -> [f64; 3] {
+        let (x, z) = self.solution.position(s.clamp(0.0, self.length));
+        [
+            self.low[0] + x * self.horizontal[0],
+            self.low[1] + x * self.horizontal[1],
+            self.low[2] + z,
+        ]
+    }
+
+    /// (r, r_x, r_xx) at material coordinate x from end A.
+    fn at(&self, x: f64) -> ([f64; 3], [f64; 3], [f64; 3]) {
+        let (s, sign) = if self.reversed {
+            (self.length - x, -1.0)
+        } else {
+            (x, 1.0)
+        };
+        let h = 1e-4 * self.length;
+        // Central differences inside, shifted one step in at the ends.
+        let c = s.clamp(h, self.length - h);
+        let (m, o, p) = (self.point(c - h), self.point(c), self.point(c + h));
+        let r = self.point(s);
+        let rx = std::array::from_fn(|k| sign * (p[k] - m[k]) / (2.0 * h));
+        let rxx = std::array::from_fn(|k| (p[k] - 2.0 * o[k] + m[k]) / (h * h));
+        (r, rx, rxx)
+    }
 }
 
 fn norm(v: [f64; 3]) -> f64 {
