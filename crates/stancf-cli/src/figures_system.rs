@@ -1,6 +1,7 @@
 //! The figures of a system's results (`stancf plot`, `run --plot`): every
-//! line's shape at a few written times in one frame, the energies, and
-//! the tension at every line end over time.
+//! line's shape at a few written times in one frame, the energies, the
+//! tension at every line end over time, and the curvature along every
+//! line (its envelope over the run and its first written state).
 
 use crate::figures::{
     centre_line, element_lengths_of, energy_figure, plane_of_motion, read_nodes, RunInfo, AXES,
@@ -119,6 +120,46 @@ fn tensions_figure(dir: &Path, info: &RunInfo) -> io::Result<Lines> {
     Ok(fig)
 }
 
+/// The curvature along every line from `lines/<id>/node_loads.csv`:
+/// its largest value at each node over the written times (the envelope
+/// users hold against a minimum bend radius, 1 / kappa) and its value at
+/// the first written time, against the material coordinate.
+fn curvature_figure(dir: &Path, lines: &[LineShapes], info: &RunInfo) -> io::Result<Lines> {
+    let mut fig = Lines::new(
+        format!("{}: curvature along the lines", info.title),
+        "s (m)",
+        "curvature (1/m)",
+    );
+    for (k, l) in lines.iter().enumerate() {
+        let file = format!("lines/{}/node_loads.csv", l.id);
+        let table = Table::read(&dir.join(&file))?;
+        let (cn, cs, ck) = (
+            table.need("node", &file)?,
+            table.need("s", &file)?,
+            table.need("curvature", &file)?,
+        );
+        let mut envelope: Vec<(f64, f64)> = Vec::new();
+        let mut first: Vec<(f64, f64)> = Vec::new();
+        for row in &table.rows {
+            let node = row[cn] as usize;
+            if node >= envelope.len() {
+                envelope.push((row[cs], row[ck]));
+                first.push((row[cs], row[ck]));
+            } else {
+                envelope[node].1 = envelope[node].1.max(row[ck]);
+            }
+        }
+        let colour = PALETTE[k % PALETTE.len()];
+        fig.series
+            .push(Series::line(format!("line {}, largest", l.id), envelope, colour).with_markers());
+        if info.dynamic {
+            fig.series
+                .push(Series::line(format!("line {}, first", l.id), first, colour));
+        }
+    }
+    Ok(fig)
+}
+
 /// The figures of a system's results in `dir`; their names.
 pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
     let lines = read_lines(dir)?;
@@ -129,5 +170,12 @@ pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
     crate::plot::save(&energy, dir, "energy")?;
     let tensions = tensions_figure(dir, info)?;
     crate::plot::save(&tensions, dir, "tensions")?;
-    Ok(vec!["shapes".into(), "energy".into(), "tensions".into()])
+    let curvature = curvature_figure(dir, &lines, info)?;
+    crate::plot::save(&curvature, dir, "curvature")?;
+    Ok(vec![
+        "shapes".into(),
+        "energy".into(),
+        "tensions".into(),
+        "curvature".into(),
+    ])
 }

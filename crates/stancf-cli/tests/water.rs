@@ -246,3 +246,45 @@ fn a_line_through_the_water_surface_runs_and_carries_its_wet_and_dry_weight() {
         "ends' vertical force {fz} N, weight less buoyancy {expected} N ({submerged} m below)"
     );
 }
+
+/// The lazy-wave example (three lines of two line types joined at free
+/// points) holds its wave: at the static equilibrium the buoyant section
+/// arches above the sag bend of the upper cable (a hog bend higher than
+/// the sag bend), the lower cable touches down and rests on the bed
+/// (the bed pushes its last nodes), and two seconds under the wave run;
+/// `stancf plot` draws the curvature along the lines.
+#[test]
+fn the_lazy_wave_example_holds_its_wave_and_plots_its_curvature() {
+    let d = scratch("water-lazy-wave");
+    let example = std::fs::read_to_string(repo_file("examples/lazy-wave.toml")).unwrap();
+    let short = example.replace("duration = 40.0", "duration = 2.0");
+    assert_ne!(short, example, "the example's duration moved");
+    let sc = write_scenario(&d, "lazy-wave.toml", &short);
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let heights = |line: usize| -> Vec<f64> {
+        let nodes = std::fs::read_to_string(out.join(format!("lines/{line}/nodes.csv"))).unwrap();
+        nodes
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').collect::<Vec<_>>())
+            .filter(|f| f[0] == "0")
+            .map(|f| f[4].parse().unwrap())
+            .collect()
+    };
+    let sag = heights(1).into_iter().fold(f64::INFINITY, f64::min);
+    let hog = heights(2).into_iter().fold(f64::NEG_INFINITY, f64::max);
+    assert!(hog > sag + 2.0, "hog bend {hog} m, sag bend {sag} m");
+    let loads = std::fs::read_to_string(out.join("lines/3/node_loads.csv")).unwrap();
+    let resting = loads
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|f| f[0] == "0" && f[7].parse::<f64>().unwrap() > 0.0)
+        .count();
+    assert!(resting >= 5, "{resting} nodes of line 3 on the bed");
+    let o = stancf(&["plot", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(out.join("curvature.svg").exists());
+}
