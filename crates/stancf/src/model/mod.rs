@@ -30,6 +30,7 @@ mod applied_loads;
 mod cable;
 mod coordinates;
 mod grading;
+mod entrained;
 mod mass;
 mod material;
 mod quadrature_choice;
