@@ -21,9 +21,7 @@ use common::*;
 use stancf::assembly::Scheme;
 use stancf::element::{CableElement, SlabDerivatives, SlabLoads, TimeSlab};
 use stancf::water::LineInWater;
-use stancf::{
-    Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions,
-};
+use stancf::{Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions};
 use step_checks::check_schemes_and_routes;
 use water_lines::*;
 
@@ -181,7 +179,9 @@ fn step_jacobian_with_added_mass_matches_finite_differences() {
             Scheme::Static,
         ];
         let label = format!("{kind:?} in water");
-        worst = worst.max(check_schemes_and_routes(&model, &schemes, &mut rng, &label, 1e-7));
+        worst = worst.max(check_schemes_and_routes(
+            &model, &schemes, &mut rng, &label, 1e-7,
+        ));
     }
     eprintln!("step Jacobians with added mass: worst rel. error {worst:.1e}");
 }

@@ -182,10 +182,8 @@ fn add_point_blocks<const NS: usize, const ND: usize>(
                     let (a, b) = (3 * k + i, 3 * l + j);
                     v[a][b] += nn * t.vv[i][j];
                     x[a][b] += nn * t.vr[i][j] + nnx * t.vx[i][j];
-                    z[a][b] += nn * t.rr[i][j]
-                        + nnx * t.rx[i][j]
-                        + nxn * t.rx[j][i]
-                        + nxnx * t.xx[i][j];
+                    z[a][b] +=
+                        nn * t.rr[i][j] + nnx * t.rx[i][j] + nxn * t.rx[j][i] + nxnx * t.xx[i][j];
                 }
             }
         }

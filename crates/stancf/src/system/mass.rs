@@ -145,38 +145,38 @@ fn fill_mass<'a>(
         let numbering = &layout.lines[i];
         let mut view = LineView::new(lu.matrix_mut().block_entries(i), &layout.maps[i]);
         let dpn = model.dofs_per_node();
-            crate::with_elements!(&model.mesh, els => {
-                for (k, el) in els.iter().enumerate() {
-                    for (a, row) in el.mass.iter().enumerate() {
-                        for (b, &m_ab) in row.iter().enumerate() {
-                            for c in 0..3 {
-                                let ga = coordinate(dpn, k, a, c);
-                                let gb = coordinate(dpn, k, b, c);
-                                if let (Some(r), Some(s)) =
-                                    (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
-                                {
-                                    view.add(r, s, m_ab);
-                                }
+        crate::with_elements!(&model.mesh, els => {
+            for (k, el) in els.iter().enumerate() {
+                for (a, row) in el.mass.iter().enumerate() {
+                    for (b, &m_ab) in row.iter().enumerate() {
+                        for c in 0..3 {
+                            let ga = coordinate(dpn, k, a, c);
+                            let gb = coordinate(dpn, k, b, c);
+                            if let (Some(r), Some(s)) =
+                                (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
+                            {
+                                view.add(r, s, m_ab);
                             }
                         }
                     }
                 }
-            });
-            if let Some(e) = end {
-                model.for_entrained_mass(e, |ga, gb, m| {
-                    if let (Some(r), Some(s)) =
-                        (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
-                    {
-                        view.add(r, s, m);
-                    }
-                });
             }
-        }
-        for (p, point) in system.points().iter().enumerate() {
-            for c in 0..3 {
-                if let Some(g) = layout.point_unknown(p, 0, c) {
-                    lu.matrix_mut().add(g, g, point.mass);
+        });
+        if let Some(e) = end {
+            model.for_entrained_mass(e, |ga, gb, m| {
+                if let (Some(r), Some(s)) =
+                    (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
+                {
+                    view.add(r, s, m);
                 }
+            });
+        }
+    }
+    for (p, point) in system.points().iter().enumerate() {
+        for c in 0..3 {
+            if let Some(g) = layout.point_unknown(p, 0, c) {
+                lu.matrix_mut().add(g, g, point.mass);
             }
         }
+    }
 }
