@@ -61,9 +61,9 @@ fn spinning_line_in_water(dt: f64, scheme: TimeScheme, duration: f64) -> (f64, f
     let model = Model::new(cable, soft_line(), ModelOptions::default(), loads).unwrap();
     let mut s = model.initial_state();
     let axis = {
-        let a = [0.3, 0.5, 1.0];
-        let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) as f64;
-        a.map(|c| c / n.sqrt())
+        let a: [f64; 3] = [0.3, 0.5, 1.0];
+        let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+        a.map(|c| c / n)
     };
     let omega = 2.0;
     for j in 0..model.nodes() {
@@ -112,7 +112,7 @@ fn spinning_line_in_water(dt: f64, scheme: TimeScheme, duration: f64) -> (f64, f
 /// schemes, through large rotations (the line turns by more than a full
 /// revolution in the horizontal plane in 4 s, its anisotropic added mass
 /// turning with it). Both checks fail at O(1) if the momentum carried
-/// between steps were not p = M v + dT_a/dv (W29) with the same T_a as the
+/// between steps were not p = M v + dT_a/dv (W30) with the same T_a as the
 /// action.
 ///
 /// P2 has order four (docs/method.md §4.7): the error falls by 2^4 when

@@ -2,7 +2,7 @@
 //! Galerkin step of a system with a free point solves the system's
 //! (M + M_a(e_b)) v_b = p_b, refactorized at every step because the
 //! entrained water's mass turns with the lines (W31); P2 carries each
-//! line's p = M v + dT_a/dv (W29). Either way the energy with T_a is kept.
+//! line's p = M v + dT_a/dv (W30). Either way the energy with T_a is kept.
 
 mod common;
 #[path = "common/water_lines.rs"]

@@ -1,5 +1,5 @@
 //! The P2 output row's momentum with the entrained water (docs/method.md
-//! §12.5, (W29)): p_L = M v_L + dT_a/dv(e_L, v_L) depends on e_L as well
+//! §12.5, (W30)): p_L = M v_L + dT_a/dv(e_L, v_L) depends on e_L as well
 //! as on v_L, so the row e_L gets -dp_L/de_L besides -dp_L/dv_L.
 
 use super::system::{AssemblyScratch, StepProblem};

@@ -10,7 +10,7 @@ use crate::linear::{AddEntries, Jacobian};
 use crate::model::{coordinate, Model, SLOT_R};
 
 /// The known data of a step: its start (t_a, e_a, v_a and the momentum
-/// p_a = M v_a + dT_a/dv, (W29)), and
+/// p_a = M v_a + dT_a/dv, (W30)), and
 /// the prescribed values of constrained coordinates at every time node.
 #[derive(Clone, Debug)]
 pub struct StepStart {
@@ -70,7 +70,7 @@ pub struct AssemblyScratch {
     /// the prescribed values.
     pub node_e: Vec<f64>,
     pub node_v: Vec<f64>,
-    /// p_L = M v_L + dT_a/dv (W29).
+    /// p_L = M v_L + dT_a/dv (W30).
     pub(super) mass_v_end: Vec<f64>,
     /// Values of the eliminated rows, `[slot * dofs + g]`: the generalized
     /// reactions (elimination route).

@@ -346,8 +346,9 @@ impl StepProblem<'_> {
     }
 
     /// Momentum terms: + p_a (= M v_a, with the entrained water's dT_a/dv,
-    /// (W29)) on row e_0; P2 also - p_L on row e_L (the Galerkin step computes p_b = dA/de_b afterwards instead;
-    /// docs/method.md §4.3 and §5.1).
+    /// (W30)) on row e_0; P2 also - p_L on row e_L (the Galerkin step
+    /// computes p_b = dA/de_b afterwards instead; docs/method.md §4.3 and
+    /// §5.1).
     pub(super) fn momentum_terms<J: AddEntries>(
         &self,
         residual: &mut [f64],

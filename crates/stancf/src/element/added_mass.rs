@@ -14,7 +14,7 @@
 //!               + N_x,k N_x,l T_xx)                          (q q)
 //! ```
 //!
-//! and the slab's Hessian block (m, n) gains (W30)
+//! and the slab's Hessian block (m, n) gains (W29)
 //! `sum_g w_g dt (Tdot_m Tdot_n V_g + Tdot_m T_n X_g + T_m Tdot_n X_g^T
 //! + T_m T_n Z_g)`.
 
@@ -84,7 +84,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     }
 
     /// The momentum the entrained water adds at a time node, dT_a/dqdot
-    /// (W29), added to `p`; with `derivatives`, its Jacobians d/dq (X)
+    /// (W30), added to `p`; with `derivatives`, its Jacobians d/dq (X)
     /// and d/dqdot (V) written there.
     pub fn entrained_momentum(
         &self,
@@ -125,7 +125,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// Adds the added mass's part of Hessian block (m, n) (W30).
+    /// Adds the added mass's part of Hessian block (m, n) (W29).
     pub(super) fn add_entrained_block(
         &self,
         slab: &TimeSlab,

@@ -129,7 +129,7 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     axial_points: Vec<SpacePoint<NS>>,
     bending_points: Vec<SpacePoint<NS>>,
     /// The NS Gauss points that integrate the mass matrix exactly; the
-    /// added mass's rule (docs/method.md §12.5, (W29)).
+    /// added mass's rule (docs/method.md §12.5, (W28)).
     mass_points: Vec<SpacePoint<NS>>,
     /// Consistent mass matrix per coordinate direction,
     /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3

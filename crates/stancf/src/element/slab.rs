@@ -3,7 +3,8 @@
 //! eq. (10), its gradient with respect to y = [e_a, v_a, e_b, v_b] (with the
 //! virtual work of drag, eq. (17), and of the axial damping, (M34)) and its
 //! exact Hessian, block by block (docs/method.md §3.1-3.2, (M13)-(M14);
-//! time layers §3.5; damping §2.10).
+//! time layers §3.5; damping §2.10; the entrained water's kinetic energy
+//! of a line in water, §12.5, (W28)-(W29)).
 
 use super::{dot_n, CableElement};
 use crate::quadrature::GaussRule;
@@ -122,7 +123,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// Hessian block d2A^e / dy_m dy_n (ND x ND) from the derivatives
     /// evaluated by [`Self::slab_derivatives`] with `with_hessian = true`:
     /// `C_mn M (x) I_3 - sum_g w_g dt phi_m phi_n K_g`, with drag's and
-    /// the entrained water's blocks ((M11), (W30)).
+    /// the entrained water's blocks ((M11), (W29)).
     pub fn slab_hessian_block(
         &self,
         slab: &TimeSlab,

@@ -1,5 +1,5 @@
 //! The momentum and kinetic energy of a line with the water it entrains
-//! (docs/method.md §12.5, (W29)-(W31)): p = M v + dT_a/dv, a function of
+//! (docs/method.md §12.5, (W30)-(W31)): p = M v + dT_a/dv, a function of
 //! the configuration as well as of the rates, and the configuration's
 //! mass matrix M + M_a(e).
 
@@ -13,7 +13,7 @@ impl Model {
     }
 
     /// The momentum p = M v + dT_a/dv at coordinates `e` and rates `v`
-    /// (W29); M v without added mass.
+    /// (W30); M v without added mass.
     pub fn momentum(&self, e: &[f64], v: &[f64], p: &mut [f64]) {
         self.mass_times(v, p);
         let Some(am) = self.added_mass() else {

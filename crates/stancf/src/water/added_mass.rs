@@ -1,5 +1,5 @@
 //! The added mass of a line in water as the kinetic energy of the water it
-//! entrains (docs/method.md §12.5, (W25)-(W28)).
+//! entrains (docs/method.md §12.5, (W25)-(W27)).
 //!
 //! Per unit unstretched length, at a point of the axis with position r,
 //! slope x = r_x and velocity v = r_dot, with c = rho_w A (A = pi d^2 / 4),
