@@ -167,7 +167,8 @@ impl Simulation {
     /// the system's mass matrix (docs/method.md §11.10): the momentum
     /// its free coordinates must carry, `q = p_b - M_fc v_c` (p_b =
     /// dA/de_b, v_c the prescribed end rates of the constrained
-    /// coordinates), in `self.rhs` at the free coordinates (zero at the
+    /// coordinates, M with the added mass M_a(e_b) of a line in water,
+    /// (W31)), in `self.rhs` at the free coordinates (zero at the
     /// constrained ones). Call after [`Self::expand_step`].
     pub(crate) fn free_end_momentum(&mut self) -> &[f64] {
         let n = self.model.dofs();
