@@ -10,7 +10,8 @@ use crate::shape::{cubic_hermite, quintic_hermite};
 /// Energies of a state (J).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Energies {
-    /// T = 1/2 v^T M v (eq. 11).
+    /// T = 1/2 v^T M v (eq. 11), plus the entrained water's T_a of a line
+    /// in water with added mass (W25), (W32).
     pub kinetic: f64,
     /// U of eq. (12), with the model's spatial quadrature.
     pub strain: f64,
@@ -64,6 +65,7 @@ pub fn energies(model: &Model, state: &State) -> Energies {
     let mut en = crate::with_elements!(&model.mesh, els => {
         element_energies(els, dpn, state, &model.gravity)
     });
+    en.kinetic += model.entrained_energy(&state.e, &state.v);
     for (node, f) in model.point_forces() {
         let r = model.node_position(&state.e, node);
         en.load_potential -= f[0] * r[0] + f[1] * r[1] + f[2] * r[2];

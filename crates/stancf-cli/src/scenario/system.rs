@@ -190,7 +190,6 @@ pub(super) fn system_scenario(
         sc.initial = initial;
         sc.notes.extend(notes);
         sc.notes.extend(static_waves_note(&sc));
-        sc.notes.extend(added_mass_note(&sc));
         sc.output_every = analysis::output_every(ctx, raw.output)?;
         return Ok(sc);
     }
@@ -228,26 +227,7 @@ pub(super) fn system_scenario(
         channels: Vec::new(),
     };
     sc.notes.extend(static_waves_note(&sc));
-    sc.notes.extend(added_mass_note(&sc));
     Ok(sc)
-}
-
-/// A note that a dynamic analysis in water does not yet carry the
-/// lines' added mass (Ca, CaAx; docs/method.md §12.5, not in the library
-/// of this version): the lines move with their own mass.
-fn added_mass_note(sc: &SystemScenario) -> Option<String> {
-    sc.water.as_ref()?;
-    let with = sc
-        .line_types
-        .iter()
-        .find(|t| t.ca != 0.0 || t.caax != 0.0)?;
-    (sc.analysis.kind == super::AnalysisKind::Dynamic).then(|| {
-        format!(
-            "line type {}: the added mass of ca and caax is not in this version's dynamics; \
-             the lines move with their own mass",
-            with.name
-        )
-    })
 }
 
 /// A note that a static analysis does not see the waves of its water

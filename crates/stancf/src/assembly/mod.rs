@@ -48,6 +48,7 @@
 //! constraint terms); `scaling.rs` the convergence scales ([`Scales`]);
 //! `matrices.rs` the global stiffness and mass matrices.
 
+mod entrained;
 mod layout;
 mod matrices;
 mod scaling;

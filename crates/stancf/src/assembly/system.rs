@@ -9,7 +9,8 @@ use crate::element::{SlabDerivatives, TimeSlab};
 use crate::linear::{AddEntries, Jacobian};
 use crate::model::{coordinate, Model, SLOT_R};
 
-/// The known data of a step: its start (t_a, e_a, v_a and M v_a), and
+/// The known data of a step: its start (t_a, e_a, v_a and the momentum
+/// p_a = M v_a + dT_a/dv, (W30)), and
 /// the prescribed values of constrained coordinates at every time node.
 #[derive(Clone, Debug)]
 pub struct StepStart {
@@ -45,7 +46,7 @@ impl StepStart {
         self.t = t;
         self.e.copy_from_slice(e);
         self.v.copy_from_slice(v);
-        model.mass_times(&self.v, &mut self.mass_v);
+        model.momentum(&self.e, &self.v, &mut self.mass_v);
         let n = model.dofs();
         let nodes = self.fixed_e.len() / n;
         for (g, m) in model.constraints.motion.iter().enumerate() {
@@ -69,7 +70,7 @@ pub struct AssemblyScratch {
     /// the prescribed values.
     pub node_e: Vec<f64>,
     pub node_v: Vec<f64>,
-    /// M v_L.
+    /// p_L = M v_L + dT_a/dv (W30).
     pub(super) mass_v_end: Vec<f64>,
     /// Values of the eliminated rows, `[slot * dofs + g]`: the generalized
     /// reactions (elimination route).

@@ -355,9 +355,10 @@ impl StepProblem<'_> {
         }
     }
 
-    /// Momentum terms: + p_a (= M v_a) on row e_0; P2 also - M v_L on row
-    /// e_L (the Galerkin step computes p_b = dA/de_b afterwards instead;
-    /// docs/method.md §4.3 and §5.1).
+    /// Momentum terms: + p_a (= M v_a, with the entrained water's dT_a/dv,
+    /// (W30)) on row e_0; P2 also - p_L on row e_L (the Galerkin step
+    /// computes p_b = dA/de_b afterwards instead; docs/method.md §4.3 and
+    /// §5.1).
     pub(super) fn momentum_terms<J: AddEntries>(
         &self,
         residual: &mut [f64],
@@ -376,8 +377,9 @@ impl StepProblem<'_> {
         if layout.scheme == Scheme::Galerkin {
             return;
         }
+        let el = &scratch.node_e[last * n..(last + 1) * n];
         let vl = &scratch.node_v[last * n..(last + 1) * n];
-        self.model.mass_times(vl, &mut scratch.mass_v_end);
+        self.model.momentum(el, vl, &mut scratch.mass_v_end);
         for g in 0..n {
             let t = self.target(last_slot, g);
             let v = -scratch.mass_v_end[g];
@@ -387,6 +389,7 @@ impl StepProblem<'_> {
         let (Some(rs), Some(cs)) = (last_slot, layout.unknown_slot(last, Kind::Velocity)) else {
             return;
         };
+        self.entrained_end_momentum(rs, jac, scratch);
         let dpn = layout.dpn;
         crate::with_elements!(&self.model.mesh, els => {
             for (k, el) in els.iter().enumerate() {

@@ -36,8 +36,10 @@
 //! | `energy` | the elastic energy U and its derivatives by spatial quadrature | §2.4 |
 //! | `drag` | air drag virtual work and its Jacobian | §2.8, §6.8 |
 //! | `damping` | axial (Kelvin-Voigt) damping virtual work and its Jacobian | §2.10 |
+//! | `added_mass` | the entrained water's kinetic energy, its momentum and derivatives | §12.5 |
 //! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
 
+mod added_mass;
 mod curvature;
 mod damping;
 mod drag;
@@ -48,6 +50,7 @@ mod slab;
 mod strain;
 mod water;
 
+pub use added_mass::AddedMassDerivatives;
 pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
 pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};
 pub use strain::{
@@ -127,6 +130,9 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     pub measures: Measures,
     axial_points: Vec<SpacePoint<NS>>,
     bending_points: Vec<SpacePoint<NS>>,
+    /// The NS Gauss points that integrate the mass matrix exactly; the
+    /// added mass's rule (docs/method.md §12.5, (W28)).
+    mass_points: Vec<SpacePoint<NS>>,
     /// Consistent mass matrix per coordinate direction,
     /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
     /// (docs/method.md §2.1, (M2)).
@@ -184,6 +190,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             measures,
             axial_points: at(&rules.axial),
             bending_points: at(&rules.bending),
+            mass_points: at(&exact),
             mass,
             weight_integrals,
         }

@@ -3,7 +3,8 @@
 //! eq. (10), its gradient with respect to y = [e_a, v_a, e_b, v_b] (with the
 //! virtual work of drag, eq. (17), and of the axial damping, (M34)) and its
 //! exact Hessian, block by block (docs/method.md §3.1-3.2, (M13)-(M14);
-//! time layers §3.5; damping §2.10).
+//! time layers §3.5; damping §2.10; the entrained water's kinetic energy
+//! of a line in water, §12.5, (W28)-(W29)).
 
 use super::{dot_n, CableElement};
 use crate::quadrature::GaussRule;
@@ -62,6 +63,12 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out.has_damping = self.section.ba != 0.0;
         let rates = out.has_drag || out.has_damping;
         let np = slab.points.len();
+        // The entrained water's kinetic energy (docs/method.md §12.5).
+        let added = loads.water.and_then(crate::water::AddedMass::of);
+        out.added_mass.active = added.is_some();
+        if added.is_some() && with_hessian {
+            out.added_mass.reserve(np);
+        }
         if out.k_at_points.len() < np {
             out.k_at_points.resize(np, [[0.0; ND]; ND]);
         }
@@ -72,7 +79,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let mut du = [0.0; ND];
         for (gi, tp) in slab.points.iter().enumerate() {
             let (q, qdot) = interpolate_in_time(&tp.shape, y);
-            let mq = self.mass_times(&qdot);
+            let mut mq = self.mass_times(&qdot);
             let hess = if with_hessian {
                 Some(&mut out.k_at_points[gi])
             } else {
@@ -102,6 +109,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 let g = &loads.gravity;
                 self.slab_water_at_point(water, when, g, (&q, &qdot), at, &mut fq, out);
             }
+            if let Some(am) = &added {
+                // (W28): dT_a/dqdot joins M qdot, dT_a/dq the forces.
+                let am_out = &mut out.added_mass;
+                let blocks = at.map(|g| (&mut am_out.vv[g], &mut am_out.vq[g], &mut am_out.qq[g]));
+                let t_a = self.entrained_energy(am, (&q, &qdot), &mut fq, &mut mq, blocks);
+                out.action += tp.w_dt * t_a;
+            }
             for m in 0..4 {
                 let a = tp.w_dt * tp.shape.t_dot[m];
                 let b = tp.w_dt * tp.shape.t[m];
@@ -114,7 +128,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
 
     /// Hessian block d2A^e / dy_m dy_n (ND x ND) from the derivatives
     /// evaluated by [`Self::slab_derivatives`] with `with_hessian = true`:
-    /// `C_mn M (x) I_3 - sum_g w_g dt phi_m phi_n K_g`.
+    /// `C_mn M (x) I_3 - sum_g w_g dt phi_m phi_n K_g`, with drag's and
+    /// the entrained water's blocks ((M11), (W29)).
     pub fn slab_hessian_block(
         &self,
         slab: &TimeSlab,
@@ -154,6 +169,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 }
             }
         }
+        if derivs.added_mass.active {
+            self.add_entrained_block(slab, &derivs.added_mass, m, n, out);
+        }
     }
 }
 
@@ -184,6 +202,9 @@ pub struct SlabDerivatives<const ND: usize> {
     pub water_work: f64,
     pub c_at_points: Vec<[[f64; ND]; ND]>,
     pub g_at_points: Vec<[[f64; ND]; ND]>,
+    /// The entrained water's matrices (W28) at the time points, used
+    /// only if the line is in water with added mass (docs/method.md §12.5).
+    pub added_mass: super::AddedMassDerivatives<ND>,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -200,6 +221,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             water_work: 0.0,
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
+            added_mass: super::AddedMassDerivatives::default(),
         }
     }
 }

@@ -15,6 +15,7 @@
 //! the Galerkin end terms, undo); `reactions` the constraint forces and
 //! work; `watchdog` the energy watchdog; `run` the run loop.
 
+mod entrained;
 mod reactions;
 mod run;
 mod setup;

@@ -78,7 +78,7 @@ impl Simulation {
             .map(|&nd| (nd, [0.0; 3]))
             .collect();
         let mut momentum = vec![0.0; n];
-        model.mass_times(&initial.v, &mut momentum);
+        model.momentum(&initial.e, &initial.v, &mut momentum);
         let mass_lu = if scheme == Scheme::Galerkin {
             Some(constrained_mass_lu(&model, &initial.e)?)
         } else {
@@ -146,26 +146,14 @@ fn moment_angles(model: &Model, e: &[f64]) -> Vec<MomentAngle> {
     moment_angles
 }
 
-/// The Galerkin step's factors of the mass matrix at coordinates `e`, with
-/// the rows of constrained coordinates replaced by identity rows, so that
-/// v_b = M^-1 p_b takes the prescribed constrained rates (docs/method.md
-/// §5.1, (M22)).
+/// The Galerkin step's factors of the mass matrix at coordinates `e`
+/// (with the entrained water's, (W31)), with the rows of constrained
+/// coordinates replaced by identity rows, so that v_b = M^-1 p_b takes the
+/// prescribed constrained rates (docs/method.md §5.1, (M22)).
 fn constrained_mass_lu(model: &Model, e: &[f64]) -> Result<BandLu, ModelError> {
-    let n = model.dofs();
-    let (_, mass) = crate::assembly::stiffness_and_mass(model, e);
-    let (kl, ku) = (mass.lower_bandwidth(), mass.upper_bandwidth());
-    let mut lu = BandLu::new(n, kl, ku);
-    let a = lu.matrix_mut();
-    for i in 0..n {
-        if model.constraints.is_constrained(i) {
-            a.add(i, i, 1.0);
-            continue;
-        }
-        for j in i.saturating_sub(kl)..=(i + ku).min(n - 1) {
-            a.add(i, j, mass.get(i, j));
-        }
-    }
-    lu.factorize()
+    let bw = 2 * model.dofs_per_node() - 1;
+    let mut lu = BandLu::new(model.dofs(), bw, bw);
+    super::entrained::factorize_constrained_mass(&mut lu, model, e)
         .map_err(|_| ModelError::invalid("material", "the mass matrix is singular"))?;
     Ok(lu)
 }

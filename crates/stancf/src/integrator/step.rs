@@ -168,14 +168,17 @@ impl Simulation {
     /// the system's mass matrix (docs/method.md §11.10): the momentum
     /// its free coordinates must carry, `q = p_b - M_fc v_c` (p_b =
     /// dA/de_b, v_c the prescribed end rates of the constrained
-    /// coordinates), in `self.rhs` at the free coordinates (zero at the
+    /// coordinates, M with the added mass M_a(e_b) of a line in water,
+    /// (W31)), in `self.rhs` at the free coordinates (zero at the
     /// constrained ones). Call after [`Self::expand_step`].
     pub(crate) fn free_end_momentum(&mut self) -> &[f64] {
         let n = self.model.dofs();
         for g in 0..n {
             self.mass_v[g] = self.prescribed_end_rate(g).unwrap_or(0.0);
         }
-        self.model.mass_times(&self.mass_v, &mut self.rhs);
+        let last = self.layout.layers();
+        let end_e = &self.scratch.node_e[last * n..(last + 1) * n];
+        self.model.momentum(end_e, &self.mass_v, &mut self.rhs);
         for g in 0..n {
             self.rhs[g] = if self.model.constraints.is_constrained(g) {
                 0.0
@@ -184,6 +187,13 @@ impl Simulation {
             };
         }
         &self.rhs
+    }
+
+    /// The coordinates e_b at the step's end (after [`Self::expand_step`]).
+    pub(crate) fn end_coordinates(&self) -> &[f64] {
+        let n = self.model.dofs();
+        let last = self.layout.layers();
+        &self.scratch.node_e[last * n..(last + 1) * n]
     }
 
     /// Sets the Galerkin step's end rates v_b (the prescribed ones at
@@ -197,7 +207,8 @@ impl Simulation {
             self.rhs[g] = self.prescribed_end_rate(g).unwrap_or_else(|| free_rate(g));
             self.scratch.node_v[last * n + g] = self.rhs[g];
         }
-        self.model.mass_times(&self.rhs, &mut self.mass_v);
+        let end_e = &self.scratch.node_e[last * n..(last + 1) * n];
+        self.model.momentum(end_e, &self.rhs, &mut self.mass_v);
     }
 
     /// The prescribed rate of coordinate g at the step's end (None if it
@@ -338,10 +349,16 @@ impl Simulation {
 
     /// Galerkin step, after convergence (docs/method.md §5.1, (M22)):
     /// p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates, written
-    /// to the end time node; M v_b kept for the reactions and the momentum.
+    /// to the end time node; p(e_b, v_b) kept for the reactions and the
+    /// momentum. With added mass M is M + M_a(e_b) (W31), factorized here.
     fn galerkin_end_rates(&mut self) {
         let n = self.model.dofs();
         let last = self.layout.layers();
+        let end_e = &self.scratch.node_e[last * n..(last + 1) * n];
+        if let (Some(lu), true) = (&mut self.mass_lu, self.model.added_mass().is_some()) {
+            super::entrained::factorize_constrained_mass(lu, &self.model, end_e)
+                .expect("M + M_a is positive definite (Ca >= 0, validated)");
+        }
         if let Some(lu) = &self.mass_lu {
             // p_b = dA/de_b; v_b = M^-1 p_b with the constrained rates.
             for g in 0..n {
@@ -350,7 +367,8 @@ impl Simulation {
                     .unwrap_or(self.scratch.end_momentum[g]);
             }
             lu.solve(&mut self.rhs);
-            self.model.mass_times(&self.rhs, &mut self.mass_v);
+            let end_e = &self.scratch.node_e[last * n..(last + 1) * n];
+            self.model.momentum(end_e, &self.rhs, &mut self.mass_v);
             for g in 0..n {
                 self.scratch.node_v[last * n + g] = self.rhs[g];
             }

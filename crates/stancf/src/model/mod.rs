@@ -29,6 +29,7 @@ use crate::shape::{cubic_hermite, quintic_hermite};
 mod applied_loads;
 mod cable;
 mod coordinates;
+mod entrained;
 mod grading;
 mod mass;
 mod material;

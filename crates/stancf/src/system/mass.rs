@@ -16,7 +16,8 @@
 //! M_ff is numbered like a static solve with the constrained coordinates
 //! eliminated ([`SystemLayout`] with one slot), a band per line bordered
 //! by 3 unknowns per free point, factorized once by block elimination
-//! ([`BorderedLu`]): M is constant (docs/method.md §2.1).
+//! ([`BorderedLu`]): M is constant (docs/method.md §2.1), unless a line has
+//! added mass, whose M_a(e_b) (W31) makes it refactorize at every step.
 
 use super::layout::{LineView, SystemLayout};
 use super::System;
@@ -25,7 +26,7 @@ use crate::bordered::BorderedLu;
 use crate::constraints::ConstraintMethod;
 use crate::error::ModelError;
 use crate::integrator::Simulation;
-use crate::linear::{AddEntries, Factorization};
+use crate::linear::{AddEntries, Factorization, Jacobian};
 use crate::model::{coordinate, Model};
 
 /// The factors of a system's mass matrix over its free coordinates and
@@ -35,6 +36,9 @@ pub(super) struct SystemMass {
     lu: BorderedLu,
     /// p_f, then v_f.
     rates: Vec<f64>,
+    /// Whether a line has added mass: M_ff is then M + M_a(e_b) (W31),
+    /// refactorized at every step's end.
+    entrained: bool,
 }
 
 impl SystemMass {
@@ -43,36 +47,7 @@ impl SystemMass {
         let layout =
             SystemLayout::new(system, lines, Scheme::Static, ConstraintMethod::Elimination);
         let mut lu = BorderedLu::new(&layout.shapes, layout.border);
-        for (i, model) in lines.iter().enumerate() {
-            let numbering = &layout.lines[i];
-            let mut view = LineView::new(lu.matrix_mut().block_entries(i), &layout.maps[i]);
-            let dpn = model.dofs_per_node();
-            crate::with_elements!(&model.mesh, els => {
-                for (k, el) in els.iter().enumerate() {
-                    for (a, row) in el.mass.iter().enumerate() {
-                        for (b, &m_ab) in row.iter().enumerate() {
-                            for c in 0..3 {
-                                let ga = coordinate(dpn, k, a, c);
-                                let gb = coordinate(dpn, k, b, c);
-                                if let (Some(r), Some(s)) =
-                                    (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
-                                {
-                                    view.add(r, s, m_ab);
-                                }
-                            }
-                        }
-                    }
-                }
-            });
-        }
-        for p in 0..system.points().len() {
-            let inertia = system.point_inertia(p);
-            for c in 0..3 {
-                if let Some(g) = layout.point_unknown(p, 0, c) {
-                    lu.matrix_mut().add(g, g, inertia);
-                }
-            }
-        }
+        fill_mass(&mut lu, &layout, system, |i| (lines[i], None));
         lu.factorize().map_err(|_| {
             ModelError::invalid(
                 "lines",
@@ -82,16 +57,38 @@ impl SystemMass {
         })?;
         Ok(SystemMass {
             rates: vec![0.0; layout.size],
+            entrained: lines.iter().any(|m| m.added_mass().is_some()),
             layout,
             lu,
         })
+    }
+
+    /// With added mass, refills M_ff at the lines' step-end coordinates
+    /// and factorizes it (after every line's [`Simulation::expand_step`]).
+    fn refactorize(&mut self, system: &System, lines: &[Simulation]) {
+        if !self.entrained {
+            return;
+        }
+        self.lu.matrix_mut().clear();
+        fill_mass(&mut self.lu, &self.layout, system, |i| {
+            (lines[i].model(), Some(lines[i].end_coordinates()))
+        });
+        self.lu
+            .factorize()
+            .expect("M + M_a is positive definite (Ca >= 0, validated)");
     }
 
     /// Solves M_ff v_f = p_f from the lines' expanded steps and the free
     /// points' end momenta `point_momentum[p]` (dA_point/de_b), and sets
     /// every line's end rates (each line after its
     /// [`Simulation::expand_step`]).
-    pub fn set_end_rates(&mut self, lines: &mut [Simulation], point_momentum: &[[f64; 3]]) {
+    pub fn set_end_rates(
+        &mut self,
+        system: &System,
+        lines: &mut [Simulation],
+        point_momentum: &[[f64; 3]],
+    ) {
+        self.refactorize(system, lines);
         self.rates.fill(0.0);
         for (i, line) in lines.iter_mut().enumerate() {
             let q = line.free_end_momentum();
@@ -131,5 +128,56 @@ impl SystemMass {
         Some(std::array::from_fn(|c| {
             self.rates[self.layout.point_unknown(p, 0, c).expect("free point")]
         }))
+    }
+}
+
+/// Adds the system's mass matrix over the free coordinates to `lu`: each
+/// line's band (with its added mass M_a(e) (W31) where `line(i)` gives the
+/// coordinates e) and the free points' masses.
+fn fill_mass<'a>(
+    lu: &mut BorderedLu,
+    layout: &SystemLayout,
+    system: &System,
+    line: impl Fn(usize) -> (&'a Model, Option<&'a [f64]>),
+) {
+    for i in 0..layout.lines.len() {
+        let (model, end) = line(i);
+        let numbering = &layout.lines[i];
+        let mut view = LineView::new(lu.matrix_mut().block_entries(i), &layout.maps[i]);
+        let dpn = model.dofs_per_node();
+        crate::with_elements!(&model.mesh, els => {
+            for (k, el) in els.iter().enumerate() {
+                for (a, row) in el.mass.iter().enumerate() {
+                    for (b, &m_ab) in row.iter().enumerate() {
+                        for c in 0..3 {
+                            let ga = coordinate(dpn, k, a, c);
+                            let gb = coordinate(dpn, k, b, c);
+                            if let (Some(r), Some(s)) =
+                                (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
+                            {
+                                view.add(r, s, m_ab);
+                            }
+                        }
+                    }
+                }
+            }
+        });
+        if let Some(e) = end {
+            model.for_entrained_mass(e, |ga, gb, m| {
+                if let (Some(r), Some(s)) =
+                    (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
+                {
+                    view.add(r, s, m);
+                }
+            });
+        }
+    }
+    for p in 0..system.points().len() {
+        let inertia = system.point_inertia(p);
+        for c in 0..3 {
+            if let Some(g) = layout.point_unknown(p, 0, c) {
+                lu.matrix_mut().add(g, g, inertia);
+            }
+        }
     }
 }

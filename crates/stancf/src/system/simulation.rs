@@ -327,7 +327,7 @@ impl SystemSimulation {
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
         }
-        mass.set_end_rates(&mut self.lines, &self.point_momentum);
+        mass.set_end_rates(&self.system, &mut self.lines, &self.point_momentum);
         for line in &mut self.lines {
             line.close_step(report);
         }

@@ -3,6 +3,7 @@
 //! slab's space-time Gauss points.
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
+pub mod added_mass;
 pub mod current;
 pub mod hydro;
 pub mod kinematics;
@@ -12,6 +13,7 @@ pub mod spectrum;
 pub mod submerged;
 pub mod waves;
 
+pub use added_mass::{AddedMass, EntrainedAtPoint};
 pub use hydro::{LineInWater, Morison, Water};
 pub use point::{PointForce, PointInWater};
 pub use seabed::{ForceAtPoint, Seabed, SeabedContact};
