@@ -6,29 +6,20 @@
 //! coefficients give the air's motion to the bit.
 
 mod common;
+use common::step_settings;
 #[path = "common/water_lines.rs"]
 mod water_lines;
 
 use stancf::{
     run, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Measures, Model,
-    ModelOptions, NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings,
-    TimeScheme,
+    ModelOptions, Simulation, StaticSettings, StaticSolver, StepSettings, TimeScheme,
 };
 use std::f64::consts::PI;
 use std::ops::ControlFlow;
 use water_lines::*;
 
 fn settings(dt: f64, scheme: TimeScheme) -> StepSettings {
-    StepSettings {
-        time_step: dt,
-        time_scheme: scheme,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            max_iterations: 50,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    }
+    step_settings(dt, scheme, 1e-12)
 }
 
 /// d = 5 cm (rho_w A = 2.01 kg/m), m = 3.93 kg/m, EA = 1963 N,

@@ -18,11 +18,10 @@ mod step_checks;
 mod water_lines;
 
 use common::*;
-use stancf::assembly::Scheme;
 use stancf::element::{CableElement, SlabDerivatives, SlabLoads, TimeSlab};
 use stancf::water::LineInWater;
-use stancf::{Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions};
-use step_checks::check_schemes_and_routes;
+use stancf::{Cable, Constraint, ElementType, Load, Material, Model, ModelOptions};
+use step_checks::{check_schemes_and_routes, clamped_start, ALL_SCHEMES};
 use water_lines::*;
 
 const H: f64 = 1e-5;
@@ -159,25 +158,8 @@ fn step_jacobian_with_added_mass_matches_finite_differences() {
     let mut rng = Rng(0x000a_dded_0a55_0014);
     let mut worst = 0.0f64;
     for kind in [ElementType::Sac2, ElementType::Sac3] {
-        let model = |constrained: bool| {
-            let cons = if constrained {
-                vec![Constraint {
-                    node: 0,
-                    kind: ConstraintKind::Clamped {
-                        fix_curvature: false,
-                    },
-                }]
-            } else {
-                vec![]
-            };
-            cable_through_the_surface(kind, cons)
-        };
-        let schemes = [
-            Scheme::P2 { layers: 1 },
-            Scheme::P2 { layers: 2 },
-            Scheme::Galerkin,
-            Scheme::Static,
-        ];
+        let model = |constrained: bool| cable_through_the_surface(kind, clamped_start(constrained));
+        let schemes = ALL_SCHEMES;
         let label = format!("{kind:?} in water");
         worst = worst.max(check_schemes_and_routes(
             &model, &schemes, &mut rng, &label, 1e-7,

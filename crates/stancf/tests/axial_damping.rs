@@ -17,8 +17,7 @@ use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite};
 use stancf::{
     run, AxialStrain, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Measures,
-    Model, ModelOptions, NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings,
-    TimeScheme,
+    Model, ModelOptions, Simulation, StaticSettings, StaticSolver, StepSettings, TimeScheme,
 };
 use std::ops::ControlFlow;
 use step_checks::check_schemes_and_routes;
@@ -319,16 +318,7 @@ fn a_damping_ratio_becomes_moordyns_coefficient() {
 }
 
 fn settings(dt: f64, scheme: TimeScheme) -> StepSettings {
-    StepSettings {
-        time_step: dt,
-        time_scheme: scheme,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            max_iterations: 50,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    }
+    step_settings(dt, scheme, 1e-12)
 }
 
 /// The paper's gutta-percha pendulum (0.5 m, 4 SAC-2, pinned at end A,

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::rel_diff;
+use common::{rel_diff, step_settings};
 use stancf::linear::Jacobian;
 use stancf::system::{catenary_states, End, Line, Point, System, SystemSimulation, SystemStatics};
 use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
@@ -15,8 +15,8 @@ use stancf::water::kinematics::Sea;
 use stancf::water::waves::AiryWave;
 use stancf::water::{LineInWater, Morison, PointInWater, Water};
 use stancf::{
-    Cable, ElementType, Load, Material, Model, ModelOptions, NewtonSettings, StaticSettings,
-    StepSettings, TimeScheme,
+    Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
+    TimeScheme,
 };
 use std::ops::ControlFlow;
 use std::sync::Arc;
@@ -95,16 +95,7 @@ fn water(sea: Sea) -> Arc<Water> {
 }
 
 fn settings(dt: f64, scheme: TimeScheme) -> StepSettings {
-    StepSettings {
-        time_step: dt,
-        time_scheme: scheme,
-        newton: NewtonSettings {
-            tolerance: 1e-10,
-            max_iterations: 50,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    }
+    step_settings(dt, scheme, 1e-10)
 }
 
 /// The step's Jacobian, with the buoy in two waves over a current (the

@@ -13,10 +13,10 @@ use stancf::assembly::Scheme;
 use stancf::water::{Seabed, SeabedContact};
 use stancf::{
     run, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions,
-    NewtonSettings, Simulation, StaticSettings, StaticSolver, StepSettings, TimeScheme,
+    Simulation, StaticSettings, StaticSolver, StepSettings, TimeScheme,
 };
 use std::ops::ControlFlow;
-use step_checks::check_schemes_and_routes;
+use step_checks::{check_schemes_and_routes, clamped_start};
 
 /// As in the damping tests: central differences with h = 1e-6 agree with
 /// an exact derivative to ~1e-9 relative; the contact's ramp (W41) is
@@ -76,19 +76,7 @@ fn step_jacobian_with_seabed_contact_matches_finite_differences() {
     let mut rng = Rng(0x5eab_ed00_0000_0013);
     let mut worst = 0.0f64;
     for kind in [ElementType::Sac2, ElementType::Sac3] {
-        let model = |constrained: bool| {
-            let cons = if constrained {
-                vec![Constraint {
-                    node: 0,
-                    kind: ConstraintKind::Clamped {
-                        fix_curvature: false,
-                    },
-                }]
-            } else {
-                vec![]
-            };
-            cable_in_the_bed(kind, cons)
-        };
+        let model = |constrained: bool| cable_in_the_bed(kind, clamped_start(constrained));
         let schemes = [
             Scheme::P2 { layers: 1 },
             Scheme::P2 { layers: 2 },
@@ -170,16 +158,7 @@ fn a_line_laid_on_a_flat_bed_sinks_in_by_its_weight_over_k_d() {
 }
 
 fn drop_settings(dt: f64, scheme: TimeScheme) -> StepSettings {
-    StepSettings {
-        time_step: dt,
-        time_scheme: scheme,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            max_iterations: 50,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    }
+    step_settings(dt, scheme, 1e-12)
 }
 
 /// A 2 m rope pinned at one end, released horizontal 5 cm above a flat

@@ -10,18 +10,17 @@ mod common;
 mod step_checks;
 
 use common::*;
-use stancf::assembly::Scheme;
 use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
 use stancf::water::kinematics::Sea;
 use stancf::water::waves::AiryWave;
 use stancf::water::{LineInWater, Morison, Water};
 use stancf::{
     run, Cable, Constraint, ConstraintKind, ElementType, Load, Material, Model, ModelOptions,
-    NewtonSettings, Simulation, StepSettings, TimeScheme,
+    Simulation, StepSettings, TimeScheme,
 };
 use std::ops::ControlFlow;
 use std::sync::Arc;
-use step_checks::check_schemes_and_routes;
+use step_checks::{check_schemes_and_routes, clamped_start, ALL_SCHEMES};
 
 /// Central differences with h = 1e-6 agree with an exact derivative to
 /// ~1e-9 relative (as for the seabed and the damping); the surface band
@@ -116,16 +115,6 @@ fn step_jacobian_in_waves_and_current_matches_finite_differences() {
                 .with_origin([0.1, -0.2, 0.12])
                 .with_direction([1.0, 0.5, -0.25]);
             let loads = vec![gravity(), in_water(rough_sea(), coefficients(0.2))];
-            let cons = if constrained {
-                vec![Constraint {
-                    node: 0,
-                    kind: ConstraintKind::Clamped {
-                        fix_curvature: false,
-                    },
-                }]
-            } else {
-                vec![]
-            };
             Model::new(
                 cable,
                 line_material(0.2, 1500.0, 2e5),
@@ -133,15 +122,10 @@ fn step_jacobian_in_waves_and_current_matches_finite_differences() {
                 loads,
             )
             .unwrap()
-            .with_constraints(cons)
+            .with_constraints(clamped_start(constrained))
             .unwrap()
         };
-        let schemes = [
-            Scheme::P2 { layers: 1 },
-            Scheme::P2 { layers: 2 },
-            Scheme::Galerkin,
-            Scheme::Static,
-        ];
+        let schemes = ALL_SCHEMES;
         let label = format!("{kind:?}");
         worst = worst.max(check_schemes_and_routes(
             &model, &schemes, &mut rng, &label, FD_TOL,
@@ -151,16 +135,7 @@ fn step_jacobian_in_waves_and_current_matches_finite_differences() {
 }
 
 fn settings(dt: f64, scheme: TimeScheme) -> StepSettings {
-    StepSettings {
-        time_step: dt,
-        time_scheme: scheme,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            max_iterations: 50,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    }
+    step_settings(dt, scheme, 1e-12)
 }
 
 /// A free 4 m line of the water's density, lying askew 10 m down in still

@@ -4,7 +4,7 @@
 use stancf::element::{CableElement, Measures, Section, SpaceRules, TimeSlab};
 use stancf::quadrature::GaussRule;
 use stancf::shape::{cubic_hermite, quintic_hermite};
-use stancf::{AxialStrain, Curvature, Material};
+use stancf::{AxialStrain, Curvature, Material, NewtonSettings, StepSettings, TimeScheme};
 
 /// Deterministic pseudo-random numbers in [-1, 1) (xorshift64).
 pub struct Rng(pub u64);
@@ -194,5 +194,20 @@ pub fn light_rope() -> Material {
         area: 2e-6,
         second_moment: 2e-12,
         axial_damping: 0.0,
+    }
+}
+
+/// A step of `dt` in `scheme` with Newton to `tolerance` in at most 50
+/// iterations (the rest as [`StepSettings::default`]).
+pub fn step_settings(dt: f64, scheme: TimeScheme, tolerance: f64) -> StepSettings {
+    StepSettings {
+        time_step: dt,
+        time_scheme: scheme,
+        newton: NewtonSettings {
+            tolerance,
+            max_iterations: 50,
+            ..NewtonSettings::default()
+        },
+        ..StepSettings::default()
     }
 }

@@ -103,6 +103,28 @@ pub fn random_start(m: &Model, layout: &SlabLayout, h: f64, rng: &mut Rng) -> St
     start
 }
 
+/// The schemes every load's step check covers: P2 with 1 and 2 layers,
+/// the Galerkin step and statics.
+pub const ALL_SCHEMES: [Scheme; 4] = [
+    Scheme::P2 { layers: 1 },
+    Scheme::P2 { layers: 2 },
+    Scheme::Galerkin,
+    Scheme::Static,
+];
+
+/// The constraints of a constrained route: node 0 clamped (r and r_x).
+pub fn clamped_start(constrained: bool) -> Vec<stancf::Constraint> {
+    if !constrained {
+        return vec![];
+    }
+    vec![stancf::Constraint {
+        node: 0,
+        kind: stancf::ConstraintKind::Clamped {
+            fix_curvature: false,
+        },
+    }]
+}
+
 /// The constraint routes every step check covers: free, and constrained
 /// by multipliers and by elimination.
 pub const ROUTES: [(bool, ConstraintMethod); 3] = [
