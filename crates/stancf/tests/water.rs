@@ -450,3 +450,8 @@ fn a_neutrally_buoyant_line_follows_the_water_particles(ca: f64) {
 fn a_neutrally_buoyant_line_without_added_mass_follows_the_water_particles() {
     a_neutrally_buoyant_line_follows_the_water_particles(0.0);
 }
+
+#[test]
+fn a_neutrally_buoyant_line_with_added_mass_follows_the_water_particles() {
+    a_neutrally_buoyant_line_follows_the_water_particles(1.0);
+}
