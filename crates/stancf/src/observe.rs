@@ -104,6 +104,15 @@ pub fn center_of_mass(model: &Model, state: &State) -> [f64; 3] {
     s.map(|c| c / m)
 }
 
+/// E eps, or 0 where a line without compression is shortened ((M4a)).
+fn axial_stress(compression: bool, e_mod: f64, eps: f64) -> f64 {
+    if eps < 0.0 && !compression {
+        0.0
+    } else {
+        e_mod * eps
+    }
+}
+
 /// One sample of the axial stress and curvature.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StressSample {
@@ -130,6 +139,7 @@ pub fn stress_samples(
     out.clear();
     let dpn = model.dofs_per_node();
     let e_mod = model.material.youngs_modulus;
+    let compression = model.carries_compression();
     let m = model.options.measures;
     let n = per_element.max(2);
     for k in 0..model.cable.elements {
@@ -144,7 +154,7 @@ pub fn stress_samples(
             out.push(StressSample {
                 element: k,
                 s: model.material_coordinate(k, xi),
-                axial_stress: e_mod * axial_strain(m.axial_strain, &rx),
+                axial_stress: axial_stress(compression, e_mod, axial_strain(m.axial_strain, &rx)),
                 curvature: curvature(m.curvature, &rx, &rxx),
             });
         }
@@ -201,6 +211,7 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
     let dpn = model.dofs_per_node();
     let n = per_element.max(2);
     let e_mod = model.material.youngs_modulus;
+    let compression = model.carries_compression();
     let m = model.options.measures;
     let mut out: Vec<CablePoint> = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
     for k in 0..model.cable.elements {
@@ -231,7 +242,7 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
                 s: model.material_coordinate(k, xi),
                 r,
                 v,
-                axial_stress: e_mod * axial_strain(m.axial_strain, &rx),
+                axial_stress: axial_stress(compression, e_mod, axial_strain(m.axial_strain, &rx)),
                 curvature: curvature(m.curvature, &rx, &rxx),
             };
             if p == 0 && k > 0 {

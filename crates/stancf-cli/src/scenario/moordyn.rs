@@ -68,6 +68,11 @@ pub(super) fn deck_scenario(
             ca: t.ca,
             cdax: t.cd_ax,
             caax: t.ca_ax,
+            // MoorDyn's segments carry no compression (Line.cpp: T = 0
+            // when l_str <= l); a deck's lines here do, because a line
+            // without compression at exactly zero tension leaves the
+            // static solve without an axial stiffness (docs/interface.md).
+            compression: true,
         })
         .collect();
     let points = deck

@@ -132,6 +132,7 @@ pub(super) struct RawLineType {
     pub(super) ca: Option<f64>,
     pub(super) cdax: Option<f64>,
     pub(super) caax: Option<f64>,
+    pub(super) compression: Option<bool>,
 }
 
 /// One `[[points]]` entry.

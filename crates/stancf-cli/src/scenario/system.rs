@@ -36,6 +36,10 @@ pub struct LineType {
     pub ca: f64,
     pub cdax: f64,
     pub caax: f64,
+    /// Whether the line carries compression (`compression`, default
+    /// true); chains and ropes do not (docs/method.md §2.2, (M4a)), nor
+    /// do a MoorDyn deck's lines.
+    pub compression: bool,
 }
 
 impl LineType {
@@ -309,6 +313,7 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             ca: optional("ca", r.ca)?,
             cdax: optional("cdax", r.cdax)?,
             caax: optional("caax", r.caax)?,
+            compression: r.compression.unwrap_or(true),
             name,
         });
     }

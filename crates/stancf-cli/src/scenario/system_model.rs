@@ -181,7 +181,12 @@ impl SystemScenario {
             // The seed's lines see the bed too: they start resting on it.
             line_loads.push(Load::Seabed(w.seabed_contact(t.diameter)));
         }
-        Model::new(cable, material, options, line_loads)
+        let model = Model::new(cable, material, options, line_loads)?;
+        Ok(if t.compression {
+            model
+        } else {
+            model.without_compression()
+        })
     }
 }
 

@@ -14,7 +14,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         for p in &self.axial_points {
             let (rx, _) = p.shape.gradients(q);
             let eps = axial_strain(self.measures.axial_strain, &rx);
-            u += p.wl * 0.5 * self.section.ea * eps * eps;
+            if !(self.section.tension_only && eps < 0.0) {
+                u += p.wl * 0.5 * self.section.ea * eps * eps;
+            }
         }
         for p in &self.bending_points {
             let (rx, rxx) = p.shape.gradients(q);
@@ -49,6 +51,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 self.section.ea,
                 &rx,
                 with_hessian,
+                self.section.tension_only,
             );
             u += p.wl * e;
             let a = &p.shape.n_x;

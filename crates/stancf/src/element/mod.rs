@@ -55,6 +55,7 @@ pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
 pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};
 pub use strain::{
     axial_energy_density, axial_energy_gradient, axial_strain, axial_strain_derivatives,
+    tension_only_energy_density,
 };
 
 use crate::quadrature::GaussRule;
@@ -102,6 +103,9 @@ pub struct Section {
     /// Axial (Kelvin-Voigt) damping BA (N s): the axial force is
     /// EA eps + BA eps_dot (docs/method.md §2.10, (M34)); 0 for none.
     pub ba: f64,
+    /// No compression (chains, ropes; docs/method.md §2.2, (M4a)): the
+    /// axial energy is 1/2 EA eps^2 where eps >= 0 and 0 where eps < 0.
+    pub tension_only: bool,
 }
 
 /// Which strain and curvature the elastic energy uses.

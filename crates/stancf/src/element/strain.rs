@@ -28,14 +28,27 @@ pub fn axial_energy_density(
     ea: f64,
     rx: &[f64; 3],
 ) -> (f64, [f64; 3], [[f64; 3]; 3]) {
-    axial_energy_terms(measure, ea, rx, true)
+    axial_energy_terms(measure, ea, rx, true, false)
 }
 
 /// [`axial_energy_density`] without the Hessian (a residual evaluation).
 #[inline]
 pub fn axial_energy_gradient(measure: AxialStrain, ea: f64, rx: &[f64; 3]) -> (f64, [f64; 3]) {
-    let (e, g, _) = axial_energy_terms(measure, ea, rx, false);
+    let (e, g, _) = axial_energy_terms(measure, ea, rx, false, false);
     (e, g)
+}
+
+/// [`axial_energy_density`] of a line without compression (M4a): zero
+/// energy, force and stiffness where eps < 0. The energy is C1: the
+/// force falls continuously to zero as the line goes slack, and the
+/// stiffness steps from EA to 0 there (a blend would either leave a
+/// residual compression or shift the tension of a stretched line).
+pub fn tension_only_energy_density(
+    measure: AxialStrain,
+    ea: f64,
+    rx: &[f64; 3],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    axial_energy_terms(measure, ea, rx, true, true)
 }
 
 #[inline(always)]
@@ -44,7 +57,11 @@ pub(super) fn axial_energy_terms(
     ea: f64,
     rx: &[f64; 3],
     with_hessian: bool,
+    tension_only: bool,
 ) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    if tension_only && axial_strain(measure, rx) < 0.0 {
+        return (0.0, [0.0; 3], [[0.0; 3]; 3]);
+    }
     let g = dot(rx, rx);
     let mut grad = [0.0; 3];
     let mut hess = [[0.0; 3]; 3];
@@ -115,6 +132,33 @@ pub fn axial_strain_derivatives(measure: AxialStrain, rx: &[f64; 3]) -> ([f64; 3
                 h[i][i] += 1.0 / len;
             }
             (n, h)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Stretched, a line without compression has the elastic energy of
+    /// (M3)-(M4); shortened, none: energy, force and stiffness zero.
+    #[test]
+    fn a_line_without_compression_is_elastic_stretched_and_slack_shortened() {
+        for measure in [AxialStrain::Green, AxialStrain::Engineering] {
+            let stretched = [0.9, 0.5, 0.2];
+            assert_eq!(
+                tension_only_energy_density(measure, 3.0, &stretched),
+                axial_energy_density(measure, 3.0, &stretched)
+            );
+            let shortened = [0.7, 0.3, -0.2];
+            assert!(axial_strain(measure, &shortened) < 0.0);
+            let (e, g, h) = tension_only_energy_density(measure, 3.0, &shortened);
+            assert_eq!((e, g, h), (0.0, [0.0; 3], [[0.0; 3]; 3]));
+            // The force falls continuously to zero at eps = 0.
+            let len = (stretched.iter().map(|c| c * c).sum::<f64>()).sqrt();
+            let unit = stretched.map(|c| c / len * (1.0 + 1e-9));
+            let (_, g0, _) = tension_only_energy_density(measure, 3.0, &unit);
+            assert!(g0.iter().all(|c| c.abs() < 1e-8), "{g0:?}");
         }
     }
 }

@@ -53,6 +53,7 @@ impl Material {
             ei: self.youngs_modulus * self.second_moment,
             rho_a: self.density * self.area,
             ba: self.axial_damping,
+            tension_only: false,
         }
     }
 

@@ -178,6 +178,23 @@ impl Model {
         })
     }
 
+    /// The model of a line that carries no compression (chains, ropes):
+    /// its axial energy is zero where it is shortened (docs/method.md
+    /// §2.2, (M4a)).
+    pub fn without_compression(mut self) -> Self {
+        match &mut self.mesh {
+            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.tension_only = true),
+            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.tension_only = true),
+        }
+        self
+    }
+
+    /// Whether the line carries compression (see
+    /// [`Self::without_compression`]).
+    pub fn carries_compression(&self) -> bool {
+        crate::with_elements!(&self.mesh, els => els.iter().all(|e| !e.section.tension_only))
+    }
+
     /// The model with these constraints (replacing any before).
     pub fn with_constraints(mut self, list: Vec<Constraint>) -> Result<Self, ModelError> {
         let reference = self.reference_coordinates();

@@ -55,6 +55,7 @@ pub fn section() -> Section {
         ei: 0.2,
         rho_a: 1.3,
         ba: 0.0,
+        tension_only: false,
     }
 }
 
