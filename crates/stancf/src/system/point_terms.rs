@@ -103,6 +103,30 @@ impl PointTerms<'_> {
         p
     }
 
+    /// The work of the water's drag and inertia (W34) on the point over
+    /// the step, sum_layers sum_g w_g dt f_g . r_dot_g, from the expanded
+    /// time-node values `nodes` (0 in air): the same quadrature as its
+    /// virtual work in the rows.
+    pub fn water_work(&self, nodes: &PointNodes) -> f64 {
+        let Some(water) = self.water else {
+            return 0.0;
+        };
+        let mut work = 0.0;
+        for j in 0..self.layout.layers() {
+            let y = [nodes.e[j], nodes.v[j], nodes.e[j + 1], nodes.v[j + 1]];
+            for (tp, f) in self.water_forces(water, j, &y) {
+                let mut rdot = [0.0; 3];
+                for (m, ym) in y.iter().enumerate() {
+                    for c in 0..3 {
+                        rdot[c] += tp.shape.t_dot[m] * ym[c];
+                    }
+                }
+                work += tp.w_dt * (0..3).map(|c| f.force[c] * rdot[c]).sum::<f64>();
+            }
+        }
+        work
+    }
+
     /// The water's force (W34) at the time points of layer j, whose slot
     /// values are `y` = [e_j, v_j, e_j+1, v_j+1].
     fn water_forces<'s>(

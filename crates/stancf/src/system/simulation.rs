@@ -85,6 +85,8 @@ pub struct SystemSimulation {
     mass: Option<SystemMass>,
     /// The Galerkin step's end momenta of the free points.
     point_momentum: Vec<[f64; 3]>,
+    /// Work done on the free points by the water's drag and inertia.
+    point_water_work: f64,
     steps: usize,
     t: f64,
 }
@@ -158,6 +160,7 @@ impl SystemSimulation {
         Ok(SystemSimulation {
             mass,
             point_momentum: vec![[0.0; 3]; system.points().len()],
+            point_water_work: 0.0,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             point_nodes: vec![PointNodes::default(); system.points().len()],
             system,
@@ -226,9 +229,11 @@ impl SystemSimulation {
         self.lines.iter().map(Simulation::seabed_work).sum()
     }
 
-    /// Work done on the lines by the water so far (W24).
+    /// Work done by the water so far: on the lines (W24) and on the free
+    /// points by their drag and inertia (W34) (the points' buoyancy is a
+    /// constant load, a potential).
     pub fn water_work(&self) -> f64 {
-        self.lines.iter().map(Simulation::water_work).sum()
+        self.lines.iter().map(Simulation::water_work).sum::<f64>() + self.point_water_work
     }
 
     pub fn steps(&self) -> usize {
@@ -285,6 +290,7 @@ impl SystemSimulation {
             map.gather(&self.x, xl);
         }
         self.finish_lines(report);
+        self.add_point_water_work();
         self.collect_end_forces(dt);
         self.advance_points(dt);
         self.steps += 1;
@@ -294,6 +300,29 @@ impl SystemSimulation {
             t: self.t,
             newton: report,
         })
+    }
+
+    /// Adds the step's work of the water on the free points (W34).
+    fn add_point_water_work(&mut self) {
+        let layout = &self.layout.lines[0];
+        for (p, idx) in self.point_index.iter().enumerate() {
+            let point = &self.system.points()[p];
+            if idx.is_empty() || point.water.is_none() {
+                continue;
+            }
+            let m = &self.points[p];
+            let terms = PointTerms {
+                mass: self.system.point_inertia(p),
+                load: self.system.point_load(p),
+                water: point.water.as_ref(),
+                time: self.t,
+                index: idx,
+                layout,
+                slab: &self.slab,
+            };
+            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
+            self.point_water_work += terms.water_work(&self.point_nodes[p]);
+        }
     }
 
     /// Completes every line's step. The Galerkin step of a system with
