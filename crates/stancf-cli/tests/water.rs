@@ -288,3 +288,40 @@ fn the_lazy_wave_example_holds_its_wave_and_plots_its_curvature() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     assert!(out.join("curvature.svg").exists());
 }
+
+/// A dynamic run in water writes the water's and the seabed's work so far
+/// in history.csv (`water_work`, `seabed_work`, the library's
+/// `SystemSimulation::water_work` and `seabed_work`): zero at the start,
+/// and not after the lazy-wave example's first two seconds, where the
+/// water and the bed both work.
+#[test]
+fn history_carries_the_water_and_seabed_work() {
+    let d = scratch("water-history-work");
+    let example = std::fs::read_to_string(repo_file("examples/lazy-wave.toml")).unwrap();
+    let sc = write_scenario(
+        &d,
+        "lazy.toml",
+        &example.replace("duration = 40.0", "duration = 2.0"),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("history.csv"));
+    let (water, bed) = (
+        header
+            .iter()
+            .position(|h| h == "water_work")
+            .expect("water_work"),
+        header
+            .iter()
+            .position(|h| h == "seabed_work")
+            .expect("seabed_work"),
+    );
+    let last = rows.last().unwrap();
+    assert!(last[water] != 0.0 && last[bed] != 0.0, "{last:?}");
+    assert!(
+        rows[0][water] == 0.0 && rows[0][bed] == 0.0,
+        "{:?}",
+        rows[0]
+    );
+}

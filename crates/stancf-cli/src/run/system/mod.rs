@@ -125,6 +125,8 @@ pub(super) fn run_system(
     // history.csv accounts for the damping's work in a damped dynamic run.
     let damped = sc.analysis.kind == AnalysisKind::Dynamic
         && system.lines().iter().any(|l| l.model.has_axial_damping());
+    // ... and for the water's and the seabed's work in water.
+    let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let mut writers = SystemWriters::create(
         place.dir,
         &line_ids,
@@ -132,6 +134,7 @@ pub(super) fn run_system(
         &sc.channels,
         opts.vtk,
         damped,
+        wet,
     )
     .map_err(io_err(place.shown))?;
     let mut from_static = false;
@@ -293,6 +296,8 @@ fn dynamic_row(sim: &SystemSimulation, forces: bool) -> SystemRow<'_> {
         iterations: 0,
         residual: 0.0,
         damping_work: sim.damping_work(),
+        water_work: sim.water_work(),
+        seabed_work: sim.seabed_work(),
     }
 }
 
@@ -325,6 +330,8 @@ fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         iterations: 0,
         residual: 0.0,
         damping_work: 0.0,
+        water_work: 0.0,
+        seabed_work: 0.0,
     }
 }
 
@@ -364,7 +371,12 @@ fn add_point_energies(
         // The kinetic energy of the point and the water it entrains.
         let inertia = system.point_inertia(p);
         en[0] += 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
-        en[2] -= point.mass * (0..3).map(|k| g[k] * x[k]).sum::<f64>();
+        // Its weight's potential and, in water, its buoyancy's (a
+        // constant load, the weight of the water it displaces).
+        let buoyancy = point.water.as_ref().map_or([0.0; 3], |w| w.buoyancy(&g));
+        en[2] -= (0..3)
+            .map(|k| (point.mass * g[k] + buoyancy[k]) * x[k])
+            .sum::<f64>();
     }
 }
 

@@ -31,6 +31,10 @@ pub(super) struct SystemRow<'a> {
     /// Work of the lines' axial damping so far (written with
     /// `with_damping`).
     pub damping_work: f64,
+    /// Work of the water and the seabed on lines and points so far
+    /// (written with `with_water`).
+    pub water_work: f64,
+    pub seabed_work: f64,
 }
 
 /// The files of one line.
@@ -55,6 +59,8 @@ pub(super) struct SystemWriters {
     samples: Vec<StressSample>,
     /// Whether history.csv has the `damping_work` column.
     damping: bool,
+    /// Whether history.csv has the `water_work` and `seabed_work` columns.
+    water: bool,
 }
 
 impl SystemWriters {
@@ -65,6 +71,7 @@ impl SystemWriters {
         channels: &[OutputChannel],
         with_vtk: bool,
         with_damping: bool,
+        with_water: bool,
     ) -> std::io::Result<Self> {
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
@@ -92,8 +99,13 @@ impl SystemWriters {
         let mut history = AtomicFile::create(dir, "history.csv")?;
         writeln!(
             history.writer(),
-            "t,kinetic,strain,gravity,total,iterations,residual{}",
-            if with_damping { ",damping_work" } else { "" }
+            "t,kinetic,strain,gravity,total,iterations,residual{}{}",
+            if with_damping { ",damping_work" } else { "" },
+            if with_water {
+                ",water_work,seabed_work"
+            } else {
+                ""
+            }
         )?;
         let channels = if channels.is_empty() {
             None
@@ -118,6 +130,7 @@ impl SystemWriters {
             history,
             samples: Vec::new(),
             damping: with_damping,
+            water: with_water,
         })
     }
 
@@ -222,6 +235,13 @@ impl SystemWriters {
                 return Err(bad("damping work"));
             }
             write!(self.history.writer(), ",{}", Num(row.damping_work))?;
+        }
+        if self.water {
+            if !(row.water_work.is_finite() && row.seabed_work.is_finite()) {
+                return Err(bad("water or seabed work"));
+            }
+            let (w, b) = (Num(row.water_work), Num(row.seabed_work));
+            write!(self.history.writer(), ",{w},{b}")?;
         }
         writeln!(self.history.writer())?;
         Ok(())
