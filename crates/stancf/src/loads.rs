@@ -15,7 +15,7 @@
 //!
 //! which is exact through theta = pi and 2 pi.
 
-use crate::element::{cross, dot};
+use crate::element::{cross, dot, mat3_mul};
 
 /// Which part of the relative velocity the drag acts on.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,7 +44,7 @@ pub struct AirDrag {
 }
 
 /// f = -k |v| v and df/dv = -k (|v| I + v v^T / |v|) (bounded; zero at v = 0).
-fn quadratic_drag(k: f64, v: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
+pub(crate) fn quadratic_drag(k: f64, v: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
     let speed = dot(v, v).sqrt();
     let mut d = [[0.0; 3]; 3];
     if speed == 0.0 || k == 0.0 {
@@ -57,16 +57,6 @@ fn quadratic_drag(k: f64, v: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
         d[i][i] -= k * speed;
     }
     (v.map(|c| -k * speed * c), d)
-}
-
-fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    let mut c = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            c[i][j] = (0..3).map(|k| a[i][k] * b[k][j]).sum();
-        }
-    }
-    c
 }
 
 impl AirDrag {
@@ -117,8 +107,8 @@ impl AirDrag {
                         p[i][j] = if i == j { 1.0 } else { 0.0 } - tt[i][j];
                     }
                 }
-                let a = mat_mul(&qn, &p);
-                let b = mat_mul(&qt, &tt);
+                let a = mat3_mul(&qn, &p);
+                let b = mat3_mul(&qt, &tt);
                 let mut dv = [[0.0; 3]; 3];
                 // dv_n/dr_x
                 let mut m = [[0.0; 3]; 3];
@@ -127,7 +117,7 @@ impl AirDrag {
                         m[i][j] = -(t[i] * v[j] + if i == j { vt_s } else { 0.0 });
                     }
                 }
-                let dvn_dx = mat_mul(&m, &p).map(|row| row.map(|c| c / len));
+                let dvn_dx = mat3_mul(&m, &p).map(|row| row.map(|c| c / len));
                 let mut qd = [[0.0; 3]; 3];
                 for i in 0..3 {
                     for j in 0..3 {
@@ -135,7 +125,7 @@ impl AirDrag {
                         qd[i][j] = qn[i][j] - qt[i][j];
                     }
                 }
-                let dx = mat_mul(&qd, &dvn_dx);
+                let dx = mat3_mul(&qd, &dvn_dx);
                 ([fn_[0] + ft[0], fn_[1] + ft[1], fn_[2] + ft[2]], dv, dx)
             }
         }

@@ -56,7 +56,28 @@ pub struct PointTerms<'a> {
     pub slab: &'a TimeSlab,
 }
 
-impl PointTerms<'_> {
+impl<'a> PointTerms<'a> {
+    /// The terms of free point p of `system` in the step from `time`:
+    /// its inertia, load and water (docs/method.md §11.2, §12.6).
+    pub fn of(
+        system: &'a super::System,
+        p: usize,
+        time: f64,
+        index: &'a [usize],
+        layout: &'a SlabLayout,
+        slab: &'a TimeSlab,
+    ) -> Self {
+        PointTerms {
+            mass: system.point_inertia(p),
+            load: system.point_load(p),
+            water: system.points()[p].water.as_ref(),
+            time,
+            index,
+            layout,
+            slab,
+        }
+    }
+
     /// Fills the time-node values from the unknowns `x` and the start
     /// (e_a, v_a).
     pub fn expand(&self, x: &[f64], e_a: [f64; 3], v_a: [f64; 3], nodes: &mut PointNodes) {

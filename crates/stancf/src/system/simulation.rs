@@ -311,15 +311,7 @@ impl SystemSimulation {
                 continue;
             }
             let m = &self.points[p];
-            let terms = PointTerms {
-                mass: self.system.point_inertia(p),
-                load: self.system.point_load(p),
-                water: point.water.as_ref(),
-                time: self.t,
-                index: idx,
-                layout,
-                slab: &self.slab,
-            };
+            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_water_work += terms.water_work(&self.point_nodes[p]);
         }
@@ -344,15 +336,7 @@ impl SystemSimulation {
                 continue;
             }
             let m = &self.points[p];
-            let terms = PointTerms {
-                mass: self.system.point_inertia(p),
-                load: self.system.point_load(p),
-                water: self.system.points()[p].water.as_ref(),
-                time: self.t,
-                index: idx,
-                layout,
-                slab: &self.slab,
-            };
+            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
         }

@@ -111,20 +111,10 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
             if idx.is_empty() {
                 continue;
             }
-            let point = &self.system.points()[p];
             let m = &self.points[p];
-            let inertia = self.system.point_inertia(p);
-            let terms = PointTerms {
-                mass: inertia,
-                load: self.system.point_load(p),
-                water: point.water.as_ref(),
-                time: self.time,
-                index: idx,
-                layout,
-                slab: self.slab,
-            };
+            let terms = PointTerms::of(self.system, p, self.time, idx, layout, self.slab);
             terms.expand(x, m.e, m.v, &mut self.point_nodes[p]);
-            let momentum = m.v.map(|v| inertia * v);
+            let momentum = m.v.map(|v| terms.mass * v);
             terms.add(
                 &self.point_nodes[p],
                 momentum,

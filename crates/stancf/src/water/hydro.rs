@@ -26,7 +26,7 @@
 use super::kinematics::{FluidKinematics, Sea};
 use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
-use crate::element::dot;
+use crate::element::{dot, mat3_mul};
 use std::sync::Arc;
 
 /// A line type's hydrodynamic coefficients (MoorDyn's LINE TYPES columns
@@ -170,17 +170,17 @@ impl LineInWater {
         let (q_n, dq_n) = quadratic(0.5 * rho * m.diameter * m.cd_normal, &v_n);
         let k_t = 0.5 * rho * std::f64::consts::PI * m.diameter * m.cd_axial;
         let (q_t, dq_t) = quadratic(k_t, &v_t);
-        let d_v = add(&mat_mul(&dq_n, &p_n), &mat_mul(&dq_t, &p_t));
+        let d_v = add(&mat3_mul(&dq_n, &p_n), &mat3_mul(&dq_t, &p_t));
         let mut lever = [[0.0; 3]; 3];
         for i in 0..3 {
             for j in 0..3 {
                 lever[i][j] = -(t[i] * v[j] + if i == j { vt_s } else { 0.0 }) / len;
             }
         }
-        let dvn_drx = mat_mul(&lever, &p_n);
+        let dvn_drx = mat3_mul(&lever, &p_n);
         let dq_diff = sub(&dq_n, &dq_t);
-        let drag_rx = mat_mul(&dq_diff, &dvn_drx);
-        let drag_r = mat_mul(&d_v, &flow.velocity_gradient);
+        let drag_rx = mat3_mul(&dq_diff, &dvn_drx);
+        let drag_r = mat3_mul(&d_v, &flow.velocity_gradient);
         // Fluid inertia (W20), (W22).
         let (c_n, c_t) = (
             rho * area * (1.0 + m.ca_normal),
@@ -197,8 +197,8 @@ impl LineInWater {
                 swing[i][j] = (c_t - c_n) * (t[i] * a[j] + if i == j { at_s } else { 0.0 }) / len;
             }
         }
-        let inertia_r = mat_mul(&inertia_mass, &flow.acceleration_gradient);
-        let inertia_rx = mat_mul(&swing, &p_n);
+        let inertia_r = mat3_mul(&inertia_mass, &flow.acceleration_gradient);
+        let inertia_rx = mat3_mul(&swing, &p_n);
         for i in 0..3 {
             let f_d0 = q_n[i] + q_t[i];
             out.force[i] += s.value * (f_d0 + f_i0[i]);
@@ -214,24 +214,10 @@ impl LineInWater {
 }
 
 /// q(k, w) = k |w| w and Q = dq/dw = k (|w| I + w w^T / |w|), zero at
-/// w = 0 (where q is C1).
+/// w = 0 (where q is C1): the air drag's law with the sign of a force
+/// along w.
 fn quadratic(k: f64, w: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
-    let speed = dot(w, w).sqrt();
-    let mut d = [[0.0; 3]; 3];
-    if speed == 0.0 || k == 0.0 {
-        return ([0.0; 3], d);
-    }
-    for i in 0..3 {
-        for j in 0..3 {
-            d[i][j] = k * w[i] * w[j] / speed;
-        }
-        d[i][i] += k * speed;
-    }
-    (w.map(|c| k * speed * c), d)
-}
-
-fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
+    crate::loads::quadratic_drag(-k, w)
 }
 
 fn add(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {

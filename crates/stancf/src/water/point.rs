@@ -91,21 +91,13 @@ impl PointInWater {
     fn force_in(&self, flow: &FluidKinematics, rdot: &[f64; 3]) -> PointForce {
         let rho = self.water.density;
         let v: [f64; 3] = std::array::from_fn(|i| flow.velocity[i] - rdot[i]);
-        let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        let k = 0.5 * rho * self.drag_area;
+        // q(k, v) = k |v| v and Q = dq/dv: the air drag's law with the
+        // sign of a force along v.
+        let (drag, q) = crate::loads::quadratic_drag(-0.5 * rho * self.drag_area, &v);
         let c = rho * self.volume * (1.0 + self.ca);
         let mut out = PointForce::default();
-        let mut q = [[0.0; 3]; 3];
-        if speed > 0.0 && k > 0.0 {
-            for i in 0..3 {
-                for j in 0..3 {
-                    q[i][j] = k * v[i] * v[j] / speed;
-                }
-                q[i][i] += k * speed;
-            }
-        }
         for i in 0..3 {
-            out.force[i] = k * speed * v[i] + c * flow.acceleration[i];
+            out.force[i] = drag[i] + c * flow.acceleration[i];
             for j in 0..3 {
                 out.d_rdot[i][j] = -q[i][j];
                 out.d_r[i][j] = (0..3)

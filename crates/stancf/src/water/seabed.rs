@@ -42,7 +42,7 @@
 //!               Da = (I - a a^T) P_n / |P_n r_x|,  Db = [n]x Da          (W46)
 //! ```
 
-use crate::element::{cross, dot};
+use crate::element::{cross, dot, mat3_mul};
 
 /// Force per unit length at a point and its derivatives with respect to
 /// the position r, the tangent r_x and the velocity r_dot (rows: force
@@ -153,10 +153,6 @@ fn outer(a: &[f64; 3], b: &[f64; 3]) -> [[f64; 3]; 3] {
     std::array::from_fn(|i| std::array::from_fn(|j| a[i] * b[j]))
 }
 
-fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
-}
-
 fn add_scaled(m: &mut [[f64; 3]; 3], s: f64, a: &[[f64; 3]; 3]) {
     for (mr, ar) in m.iter_mut().zip(a) {
         for (x, y) in mr.iter_mut().zip(ar) {
@@ -264,9 +260,9 @@ impl SeabedContact {
         let ia: [[f64; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|j| (f64::from(u8::from(i == j)) - a[i] * a[j]) / len)
         });
-        let da = mat_mul(&ia, &pn);
+        let da = mat3_mul(&ia, &pn);
         let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
-        let db = mat_mul(&nx, &da);
+        let db = mat3_mul(&nx, &da);
         let mut u = [0.0; 3];
         for (e, de, mu) in [
             (a, da, bed.friction_axial),

@@ -161,3 +161,23 @@ pub fn check_schemes_and_routes(
     }
     worst
 }
+
+/// [`check_schemes_and_routes`] for SAC-2 and SAC-3, the model of each
+/// `model(element_type, constrained)`; returns the worst relative error.
+pub fn check_elements_schemes_and_routes(
+    model: &dyn Fn(stancf::ElementType, bool) -> Model,
+    schemes: &[Scheme],
+    rng: &mut Rng,
+    label: &str,
+    tol: f64,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for kind in [stancf::ElementType::Sac2, stancf::ElementType::Sac3] {
+        let of_kind = |constrained: bool| model(kind, constrained);
+        let label = format!("{label} {kind:?}");
+        worst = worst.max(check_schemes_and_routes(
+            &of_kind, schemes, rng, &label, tol,
+        ));
+    }
+    worst
+}
