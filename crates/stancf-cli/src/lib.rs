@@ -5,6 +5,7 @@
 
 pub mod check;
 pub mod check_system;
+pub mod coupling;
 pub mod figures;
 pub mod figures_system;
 pub mod input_scales;

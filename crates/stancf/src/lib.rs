@@ -30,6 +30,7 @@
 //! | [`stability`] | P2's stable step for the actual mesh |
 //! | [`motion`] | motions of coupled points: oscillations and interpolated tables |
 //! | [`system`] | lines joined at fixed, free and coupled points, and their step |
+//! | [`coupling`] | a system stepped by another code that moves its coupled points (MoorDyn's step API) |
 //! | [`catenary`] | the closed-form elastic catenary of a line between two points (Irvine) |
 //! | [`water`] | the sea: density, depth, currents, waves, and the loads of water on a line |
 //!
@@ -41,6 +42,7 @@ pub mod band;
 pub mod bordered;
 pub mod catenary;
 pub mod constraints;
+pub mod coupling;
 pub mod element;
 pub mod error;
 pub mod integrator;

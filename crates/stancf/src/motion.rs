@@ -8,11 +8,15 @@
 //! the energy balance (M24) see its acceleration through consecutive
 //! steps, which the spline keeps continuous (C2).
 //!
-//! [`CoupledMotion`] is the one type a coupled point carries; a later
-//! variant can take positions and velocities set by another code before
-//! every step (a coupling API): every consumer evaluates a motion through
-//! [`CoupledMotion::state_at`] and [`CoordinateMotion`], so such a
-//! variant adds one arm to each, nothing else.
+//! [`CoupledMotion`] is the one type a coupled point carries. A coupling
+//! code that drives the point sets its motion over each coupling interval
+//! from the positions (and velocities) it gives ([`MotionInterval`],
+//! (C1)-(C2), docs/method.md §13.2): every consumer evaluates a motion
+//! through [`CoupledMotion::state_at`] and [`CoordinateMotion`].
+
+mod interval;
+
+pub use interval::{IntervalMotion, MotionInterval};
 
 use crate::constraints::{CoordinateMotion, Oscillation};
 use crate::error::ModelError;
@@ -27,6 +31,9 @@ pub enum CoupledMotion {
     /// Absolute positions interpolated from a table (M39); its position
     /// at t = 0 is the point's.
     Table(Arc<MotionTable>),
+    /// Set by a coupling code for the current coupling interval, (C1) or
+    /// (C2); absolute positions.
+    Interval(MotionInterval),
 }
 
 impl CoupledMotion {
@@ -45,6 +52,7 @@ impl CoupledMotion {
                 )
             }
             CoupledMotion::Table(table) => table.state(t),
+            CoupledMotion::Interval(i) => i.state(t),
         }
     }
 
@@ -56,6 +64,7 @@ impl CoupledMotion {
                 table: Arc::clone(table),
                 component: k,
             },
+            CoupledMotion::Interval(i) => CoordinateMotion::Interval(i.coordinate(k)),
         }
     }
 
@@ -66,6 +75,7 @@ impl CoupledMotion {
                 o.period > 0.0 && o.amplitude.iter().any(|&a| a != 0.0)
             }
             CoupledMotion::Table(table) => (0..3).any(|c| !table.is_constant(c)),
+            CoupledMotion::Interval(i) => (0..3).any(|c| !i.coordinate(c).is_still()),
         }
     }
 
@@ -73,7 +83,7 @@ impl CoupledMotion {
     pub fn table(&self) -> Option<&MotionTable> {
         match self {
             CoupledMotion::Table(t) => Some(t),
-            CoupledMotion::Oscillation(_) => None,
+            CoupledMotion::Oscillation(_) | CoupledMotion::Interval(_) => None,
         }
     }
 }

@@ -80,7 +80,7 @@ impl Default for NewtonSettings {
 
 /// A source of wall-clock time in seconds, injected by the caller: the
 /// library itself never reads the clock.
-pub trait Clock {
+pub trait Clock: Send + Sync {
     fn seconds(&self) -> f64;
 }
 

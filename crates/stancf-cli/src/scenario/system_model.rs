@@ -86,6 +86,16 @@ impl SystemScenario {
         Ok(catenary_states(&self.system_with(Loads::WetWeight)?))
     }
 
+    /// The system whose lines' catenaries seed the static solve: the
+    /// system itself in air; in water, its lines under their wet weight
+    /// (see [`SystemScenario::static_seed`]).
+    pub fn seed_system(&self) -> Result<System, ModelError> {
+        match self.water {
+            None => self.system_with(Loads::Full),
+            Some(_) => self.system_with(Loads::WetWeight),
+        }
+    }
+
     fn system_with(&self, loads: Loads) -> Result<System, ModelError> {
         let water = match (&self.water, loads) {
             (Some(w), Loads::Full) => Some(Arc::new(w.library(norm(self.gravity))?)),

@@ -27,7 +27,7 @@ mod direction;
 
 use crate::error::ModelError;
 use crate::model::{coordinate, ElementType, SLOT_R};
-pub use crate::motion::{CoupledMotion, MotionTable};
+pub use crate::motion::{CoupledMotion, IntervalMotion, MotionTable};
 pub use direction::DirectionHold;
 use std::sync::Arc;
 
@@ -152,6 +152,8 @@ pub enum CoordinateMotion {
         table: Arc<MotionTable>,
         component: usize,
     },
+    /// One coordinate of a coupling interval's motion, (C1) or (C2).
+    Interval(IntervalMotion),
 }
 
 /// c(t) = base + rate t + f(t) amplitude sin(omega t + phase), f the ramp
@@ -183,6 +185,7 @@ impl CoordinateMotion {
         match self {
             CoordinateMotion::Harmonic(h) => h.value(t),
             CoordinateMotion::Table { table, component } => table.component(*component, t).0,
+            CoordinateMotion::Interval(i) => i.at(t).0,
         }
     }
 
@@ -190,6 +193,7 @@ impl CoordinateMotion {
         match self {
             CoordinateMotion::Harmonic(h) => h.rate_at(t),
             CoordinateMotion::Table { table, component } => table.component(*component, t).1,
+            CoordinateMotion::Interval(i) => i.at(t).1,
         }
     }
 
@@ -200,16 +204,17 @@ impl CoordinateMotion {
                 h.rate == 0.0 && (h.amplitude == 0.0 || h.omega == 0.0)
             }
             CoordinateMotion::Table { table, component } => table.is_constant(*component),
+            CoordinateMotion::Interval(i) => i.is_still(),
         }
     }
 
     /// The value the motion is referred to: a harmonic's base (a static
     /// solve moves a support from it to its value at t = 0), a table's
-    /// value at t = 0.
+    /// or an interval's value at t = 0.
     pub fn base(&self) -> f64 {
         match self {
             CoordinateMotion::Harmonic(h) => h.base,
-            CoordinateMotion::Table { .. } => self.value(0.0),
+            CoordinateMotion::Table { .. } | CoordinateMotion::Interval(_) => self.value(0.0),
         }
     }
 }
@@ -248,6 +253,16 @@ fn attached_motions(
         CoupledMotion::Oscillation(o) => o,
         // A table is checked when built (MotionTable::new).
         CoupledMotion::Table(_) => &Oscillation::NONE,
+        CoupledMotion::Interval(i) if !i.is_valid() => {
+            return Err(ModelError::invalid(
+                key,
+                format!(
+                    "the coupling interval's times, positions and velocities must be finite \
+                     and its length positive, got {i:?}"
+                ),
+            ))
+        }
+        CoupledMotion::Interval(_) => &Oscillation::NONE,
     };
     if !finite(&position) || !finite(&o.amplitude) {
         return Err(ModelError::invalid(
@@ -475,6 +490,45 @@ impl Constraints {
     /// True if the coordinate is held by the planar reduction.
     pub fn is_inactive(&self, g: usize) -> bool {
         self.inactive.get(g).copied().unwrap_or(false)
+    }
+
+    /// Moves node `node`'s attachment to a point ([`ConstraintKind::Attached`])
+    /// onto `motion` (a coupling code's next interval, §13.2); `dpn` is the
+    /// element's coordinates per node. Refused when the node has no such
+    /// constraint or when the planar reduction holds a coordinate the new
+    /// motion would move.
+    pub fn set_attached_motion(
+        &mut self,
+        node: usize,
+        dpn: usize,
+        motion: CoupledMotion,
+    ) -> Result<(), ModelError> {
+        let key = format!("node {node}");
+        let Some(c) = self
+            .list
+            .iter_mut()
+            .find(|c| c.node == node && matches!(c.kind, ConstraintKind::Attached { .. }))
+        else {
+            return Err(ModelError::invalid(key, "is not attached to a point"));
+        };
+        let ConstraintKind::Attached { position, .. } = c.kind else {
+            unreachable!("matched above")
+        };
+        let coords = attached_motions(&key, position, &motion)?;
+        let o = coordinate(dpn, node, SLOT_R, 0);
+        for (d, m) in &coords {
+            if self.inactive.get(o + d) == Some(&true) && !m.is_still() {
+                return Err(ModelError::invalid(
+                    key,
+                    "the motion leaves the plane the line was reduced to (planar reduction)",
+                ));
+            }
+        }
+        c.kind = ConstraintKind::Attached { position, motion };
+        for (d, m) in coords {
+            self.motion[o + d] = Some(m);
+        }
+        Ok(())
     }
 
     /// True if some coordinate is held by the planar reduction.

@@ -95,7 +95,9 @@ pub struct StepReport {
 }
 
 /// A running simulation: the model, the current state and everything a step
-/// needs, allocated once.
+/// needs, allocated once. A clone is an independent copy of the whole
+/// state, kept factors included (it steps on to the same bits).
+#[derive(Clone)]
 pub struct Simulation {
     model: Model,
     settings: StepSettings,
@@ -134,7 +136,7 @@ pub struct Simulation {
     /// What is needed to undo the last step.
     previous: Undo,
     /// Wall clock for the Part A / Part B split of eq. (32), if given.
-    clock: Option<Box<dyn Clock>>,
+    clock: Option<std::sync::Arc<dyn Clock>>,
     /// Galerkin: the momentum p carried from step to step, and the factors
     /// of the mass matrix with the rows of constrained coordinates replaced
     /// by identity rows (v_b = M^-1 p_b with prescribed constrained rates).
@@ -163,7 +165,7 @@ impl Simulation {
     /// Times Part A (element evaluation and assembly) and Part B (linear
     /// algebra) of every step with this clock (eq. 32).
     pub fn set_clock(&mut self, clock: Box<dyn Clock>) {
-        self.clock = Some(clock);
+        self.clock = Some(clock.into());
     }
 
     /// Accumulated Part A / Part B times (zero without a clock).
@@ -276,6 +278,20 @@ impl Simulation {
             .map(|a| a.potential())
             .sum::<f64>();
         en
+    }
+
+    /// Moves node `node`'s attachment to a point onto `motion` from the
+    /// next step on (a coupling code's next interval, docs/method.md
+    /// §13.2).
+    pub(crate) fn set_attached_motion(
+        &mut self,
+        node: usize,
+        motion: crate::motion::CoupledMotion,
+    ) -> Result<(), crate::ModelError> {
+        let dpn = self.model.dofs_per_node();
+        self.model
+            .constraints
+            .set_attached_motion(node, dpn, motion)
     }
 
     /// Changes the step length (e.g. to land exactly on the final time).

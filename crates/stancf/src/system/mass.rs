@@ -31,6 +31,7 @@ use crate::model::{coordinate, Model};
 
 /// The factors of a system's mass matrix over its free coordinates and
 /// the buffer of the end momenta, allocated once.
+#[derive(Clone)]
 pub(super) struct SystemMass {
     layout: SystemLayout,
     lu: BorderedLu,

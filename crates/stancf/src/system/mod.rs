@@ -279,6 +279,30 @@ impl System {
         pt.mass + pt.water.as_ref().map_or(0.0, |w| w.added_mass())
     }
 
+    /// Moves coupled point p along `motion` (a coupling code's next
+    /// interval, docs/method.md §13.2): the point and the attachment
+    /// constraints of its lines. Refused for a fixed or free point.
+    pub fn set_point_motion(&mut self, p: usize, motion: CoupledMotion) -> Result<(), ModelError> {
+        let key = format!("points[{p}]");
+        match self.points.get(p).map(|pt| &pt.kind) {
+            Some(PointKind::Coupled(_)) => {}
+            Some(_) => return Err(ModelError::invalid(key, "is not a coupled point")),
+            None => return Err(ModelError::invalid(key, "does not exist")),
+        }
+        let attached: Vec<(usize, usize)> = self.attachments(p).collect();
+        for (li, end) in attached {
+            let model = &mut self.lines[li].model;
+            let node = if end == 0 { 0 } else { model.nodes() - 1 };
+            let dpn = model.dofs_per_node();
+            model
+                .constraints
+                .set_attached_motion(node, dpn, motion.clone())
+                .map_err(|e| e.under(&format!("lines[{li}]")))?;
+        }
+        self.points[p].kind = PointKind::Coupled(motion);
+        Ok(())
+    }
+
     /// The lines attached to point p: (line, end 0 = A or 1 = B).
     pub fn attachments(&self, p: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
         self.lines.iter().enumerate().flat_map(move |(li, l)| {

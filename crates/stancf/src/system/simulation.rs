@@ -63,7 +63,10 @@ pub(super) struct PointMotion {
     acceleration: [f64; 3],
 }
 
-/// A running simulation of a system.
+/// A running simulation of a system. A clone is an independent copy of
+/// the whole state, kept factors included: it steps on to the same bits
+/// (a coupling code's save and restore, docs/method.md §13.4).
+#[derive(Clone)]
 pub struct SystemSimulation {
     system: System,
     lines: Vec<Simulation>,
@@ -273,6 +276,52 @@ impl SystemSimulation {
         let mut problem = step_problem!(self);
         problem.evaluate(x, &mut residual, None);
         residual
+    }
+
+    /// Moves coupled point p along `motion` from the next step on (a
+    /// coupling code's next interval, (C1)-(C2), docs/method.md §13.2):
+    /// the point and the constraints of the line ends attached to it.
+    pub fn set_point_motion(
+        &mut self,
+        p: usize,
+        motion: crate::motion::CoupledMotion,
+    ) -> Result<(), ModelError> {
+        self.system.set_point_motion(p, motion.clone())?;
+        let attached: Vec<(usize, usize)> = self.system.attachments(p).collect();
+        for (li, end) in attached {
+            let line = &mut self.lines[li];
+            let node = if end == 0 {
+                0
+            } else {
+                line.model().nodes() - 1
+            };
+            line.set_attached_motion(node, motion.clone())
+                .map_err(|e| e.under(&format!("lines[{li}]")))?;
+        }
+        Ok(())
+    }
+
+    /// The step length.
+    pub fn time_step(&self) -> f64 {
+        self.settings.time_step
+    }
+
+    /// Changes the step length from the next step on (a coupling interval
+    /// that is not a multiple of the step, §13.3): the slab, the lines'
+    /// steps and the scales; the kept factors are dropped.
+    pub fn set_time_step(&mut self, dt: f64) {
+        if dt == self.settings.time_step {
+            return;
+        }
+        self.settings.time_step = dt;
+        let h = dt / self.settings.time_layers as f64;
+        self.slab = TimeSlab::new(h, self.lines[0].time_rule());
+        for line in &mut self.lines {
+            line.set_time_step(dt);
+        }
+        (self.unknown_scale, self.equation_scale) =
+            system_scales(&self.system, &self.lines, &self.layout);
+        self.workspace.factors_valid = false;
     }
 
     /// Advances the system by one step. On failure every line and point

@@ -1,0 +1,70 @@
+//! A coupled system from a scenario file or a MoorDyn v2 deck
+//! (docs/interface.md, "Coupling"): the same validation and the same
+//! system as `stancf run`, stepped by another code through
+//! [`stancf::coupling::CoupledSystem`]. The Python `stancf.Simulation`
+//! and the C library `stancf_c` open their systems here.
+
+use crate::scenario::{parse_input, Input, SystemScenario};
+use crate::Failure;
+use stancf::coupling::CoupledSystem;
+use stancf::system::PointKind;
+use std::path::Path;
+
+/// A coupled system with the ids its scenario gives its points and lines.
+pub struct Coupled {
+    pub handle: CoupledSystem,
+    /// The coupled points' ids, in the order of the coupling arrays.
+    pub coupled_ids: Vec<i64>,
+    /// The lines' ids, in the order of the system's lines.
+    pub line_ids: Vec<i64>,
+}
+
+/// Reads the scenario or deck at `path` and builds its coupled system.
+pub fn open(path: &Path) -> Result<Coupled, Failure> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    from_text(&text, path)
+}
+
+/// The coupled system of scenario text (`path` names it in messages and
+/// resolves the files it refers to). Refused: a single cable (no points)
+/// and a system without coupled points. The coupled points' motions in
+/// the scenario are replaced by the coupling code's; their order in the
+/// coupling arrays is that of their ids.
+pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
+    let file = path.display().to_string();
+    let sc = match parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))? {
+        Input::System(sc) => sc,
+        Input::Cable(_) => {
+            return Err(Failure::Input(format!(
+                "{file}: a single cable has no points for a coupling code to move; give a \
+                 system with coupled points ([[points]] with type = \"coupled\", or a MoorDyn \
+                 deck with Coupled or Vessel points)"
+            )))
+        }
+    };
+    of_scenario(&sc, &file)
+}
+
+/// The coupled system of a validated system scenario.
+pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> {
+    let input = |e: stancf::ModelError| Failure::Input(format!("{file}: {e}"));
+    let system = sc.system().map_err(input)?;
+    let seed = sc.seed_system().map_err(input)?;
+    let mut order: Vec<usize> = (0..system.points().len())
+        .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
+        .collect();
+    order.sort_by_key(|&p| sc.points[p].id);
+    let handle = CoupledSystem::new(
+        system,
+        seed,
+        sc.analysis.static_settings(),
+        sc.analysis.step_settings(),
+    )
+    .map_err(input)?;
+    Ok(Coupled {
+        coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
+        line_ids: sc.lines.iter().map(|l| l.id).collect(),
+        handle: handle.with_order(order).map_err(input)?,
+    })
+}

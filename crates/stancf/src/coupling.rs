@@ -1,0 +1,408 @@
+//! Stepping a system while another code moves its coupled points
+//! (docs/method.md §13): a floating platform's solver, a vessel code or a
+//! cable robot's controller gives the positions (and velocities) of the
+//! fairleads at the end of each coupling interval and takes back the
+//! forces of the lines on them, in memory, as through MoorDyn's step API
+//! (create, init, step, close).
+//!
+//! - [`CoupledSystem::initialize`] solves the static equilibrium with the
+//!   coupled points where the coupling code puts them (§13.1);
+//! - [`CoupledSystem::step_to`] moves them over the interval along (C1) or
+//!   (C2) (§13.2), takes the steps that fit the interval (§13.3) and
+//!   returns the lines' force on each coupled point: the mean over the
+//!   last step and the mean over the whole interval (its impulse divided
+//!   by its length, (C3));
+//! - [`CoupledSystem::save`] and [`CoupledSystem::restore`] keep and bring
+//!   back the whole state, so a predictor-corrector coupling can repeat an
+//!   interval and step on to the same bits (§13.4).
+
+use crate::error::{ModelError, SolverError};
+use crate::integrator::{step_count, StepSettings};
+use crate::model::{coordinate, SLOT_R};
+use crate::motion::{CoupledMotion, MotionInterval};
+use crate::observe::{cable_points, node_bending};
+use crate::statics::StaticSettings;
+use crate::system::{catenary_states, PointKind, System, SystemSimulation, SystemStatics};
+use std::fmt;
+
+/// Why a coupling call failed: its input (sizes, values, the order of
+/// calls), or the solver (the state stays at the last converged step).
+#[derive(Clone, Debug, PartialEq)]
+pub enum CouplingError {
+    Input(ModelError),
+    Solver(SolverError),
+}
+
+impl fmt::Display for CouplingError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CouplingError::Input(e) => write!(f, "{e}"),
+            CouplingError::Solver(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for CouplingError {}
+
+impl From<ModelError> for CouplingError {
+    fn from(e: ModelError) -> Self {
+        CouplingError::Input(e)
+    }
+}
+
+impl From<SolverError> for CouplingError {
+    fn from(e: SolverError) -> Self {
+        CouplingError::Solver(e)
+    }
+}
+
+/// The forces of the lines on the coupled points after an interval,
+/// 3 per point in the order of [`CoupledSystem::coupled_points`] (N).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoupledForces {
+    /// The mean force over the interval's last step (the force `stancf
+    /// run` writes for that step).
+    pub last_step: Vec<f64>,
+    /// The mean force over the whole interval: its impulse divided by its
+    /// length (C3), for couplings that exchange impulses.
+    pub interval_mean: Vec<f64>,
+    /// Steps taken inside the interval.
+    pub steps: usize,
+}
+
+/// The running part of a [`CoupledSystem`]: the simulation and where the
+/// coupling code last put the coupled points.
+#[derive(Clone)]
+struct Running {
+    sim: SystemSimulation,
+    /// Positions and (when given) velocities of the last call.
+    position: Vec<f64>,
+    velocity: Option<Vec<f64>>,
+}
+
+/// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`]).
+#[derive(Clone)]
+pub struct CoupledState(Option<Running>);
+
+/// A system whose coupled points another code moves (see the module).
+#[derive(Clone)]
+pub struct CoupledSystem {
+    /// The system as built; its coupled points are moved to the coupling
+    /// code's positions by [`Self::initialize`].
+    system: System,
+    /// The system whose lines' catenaries seed the static solve (the same
+    /// system in air; with the lines' wet weights in water).
+    seed: System,
+    statics: StaticSettings,
+    steps: StepSettings,
+    coupled: Vec<usize>,
+    running: Option<Running>,
+}
+
+impl CoupledSystem {
+    /// The handle of `system`, its coupled points in index order; `seed`
+    /// is the system whose catenaries seed the static solve (see
+    /// [`crate::system::catenary_states`]). The planar reduction is left
+    /// off: the coupling code may move the points out of any plane.
+    pub fn new(
+        system: System,
+        seed: System,
+        statics: StaticSettings,
+        mut steps: StepSettings,
+    ) -> Result<Self, ModelError> {
+        statics.validate()?;
+        steps.planar_reduction = false;
+        if seed.points().len() != system.points().len()
+            || seed.lines().len() != system.lines().len()
+        {
+            return Err(ModelError::invalid(
+                "seed",
+                "the seed system must have the system's points and lines",
+            ));
+        }
+        let coupled: Vec<usize> = (0..system.points().len())
+            .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
+            .collect();
+        if coupled.is_empty() {
+            return Err(ModelError::invalid(
+                "points",
+                "the system has no coupled point for a coupling code to move",
+            ));
+        }
+        Ok(CoupledSystem {
+            system,
+            seed,
+            statics,
+            steps,
+            coupled,
+            running: None,
+        })
+    }
+
+    /// Orders the coupled points as `order` (a permutation of
+    /// [`Self::coupled_points`]; e.g. by the points' ids).
+    pub fn with_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
+        let mut sorted = order.clone();
+        sorted.sort_unstable();
+        if sorted != self.coupled {
+            return Err(ModelError::invalid(
+                "order",
+                format!(
+                    "must list the coupled points {:?} once each, got {order:?}",
+                    self.coupled
+                ),
+            ));
+        }
+        self.coupled = order;
+        Ok(self)
+    }
+
+    /// The coupled points (indices in the system), in the order of the
+    /// coupling arrays.
+    pub fn coupled_points(&self) -> &[usize] {
+        &self.coupled
+    }
+
+    /// Length of the coupling arrays: 3 per coupled point.
+    pub fn coupled_dof(&self) -> usize {
+        3 * self.coupled.len()
+    }
+
+    pub fn system(&self) -> &System {
+        self.running
+            .as_ref()
+            .map_or(&self.system, |r| r.sim.system())
+    }
+
+    /// The running simulation (after [`Self::initialize`]): its lines'
+    /// states, points and end forces.
+    pub fn simulation(&self) -> Option<&SystemSimulation> {
+        self.running.as_ref().map(|r| &r.sim)
+    }
+
+    /// The time reached (0 before the first interval).
+    pub fn time(&self) -> f64 {
+        self.simulation().map_or(0.0, SystemSimulation::time)
+    }
+
+    /// Solves the static equilibrium with the coupled points at `x` (3 per
+    /// point), at rest, and starts the simulation there at t = 0 (§13.1);
+    /// returns the lines' forces on the coupled points. `xd`, when given,
+    /// is the points' velocity at t = 0: the start of the first interval's
+    /// cubic (C2) (the lines start at rest). May be called again to start
+    /// over.
+    pub fn initialize(&mut self, x: &[f64], xd: Option<&[f64]>) -> Result<Vec<f64>, CouplingError> {
+        self.check_values("x", x)?;
+        if let Some(v) = xd {
+            self.check_values("xd", v)?;
+        }
+        let mut system = self.system.clone();
+        let mut seed = self.seed.clone();
+        for (k, &p) in self.coupled.iter().enumerate() {
+            let at = CoupledMotion::Interval(MotionInterval::at_rest(triple(x, k)));
+            system.set_point_motion(p, at.clone())?;
+            seed.set_point_motion(p, at)?;
+        }
+        let mut statics =
+            SystemStatics::new(system.clone(), catenary_states(&seed), self.statics.clone())?;
+        statics.solve(|_, _| std::ops::ControlFlow::Continue(()))?;
+        let forces = self
+            .coupled
+            .iter()
+            .flat_map(|&p| statics.point_force(p))
+            .collect();
+        let sim = SystemSimulation::new(system, statics.line_states(), self.steps.clone())?;
+        self.running = Some(Running {
+            sim,
+            position: x.to_vec(),
+            velocity: xd.map(<[f64]>::to_vec),
+        });
+        Ok(forces)
+    }
+
+    /// Advances to `t_next` with the coupled points moving from where the
+    /// last call put them to `x` (3 per point): along the cubic (C2) when
+    /// this call and the last both give velocities, else along the line
+    /// (C1). The interval is split into the fewest equal steps no longer
+    /// than the scenario's (§13.3). On a solver failure the state stays at
+    /// the last converged step, with the coupled points on this interval's
+    /// motion, so a later call continues from there.
+    pub fn step_to(
+        &mut self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+    ) -> Result<CoupledForces, CouplingError> {
+        self.check_values("x", x)?;
+        if let Some(v) = xd {
+            self.check_values("xd", v)?;
+        }
+        let dt = self.steps.time_step;
+        let coupled = self.coupled.clone();
+        let running = self.running.as_mut().ok_or_else(|| {
+            ModelError::invalid("step", "initialize the coupled system before stepping it")
+        })?;
+        let t0 = running.sim.time();
+        let length = t_next - t0;
+        if !t_next.is_finite() || length <= 1e-9 * dt {
+            return Err(ModelError::invalid(
+                "t",
+                format!("the next time {t_next} s must come after the time reached, {t0} s"),
+            )
+            .into());
+        }
+        let (steps, h) = interval_steps(length, dt);
+        let rates = match (&running.velocity, xd) {
+            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1)),
+            _ => None,
+        };
+        for (k, &p) in coupled.iter().enumerate() {
+            let interval = MotionInterval {
+                t0,
+                duration: steps as f64 * h,
+                start: triple(&running.position, k),
+                end: triple(x, k),
+                rates: rates.map(|(a, b)| (triple(a, k), triple(b, k))),
+            };
+            running
+                .sim
+                .set_point_motion(p, CoupledMotion::Interval(interval))?;
+        }
+        running.sim.set_time_step(h);
+        let mut impulse = vec![0.0; x.len()];
+        for _ in 0..steps {
+            if let Err(e) = running.sim.step() {
+                running.stop_on_motion(&coupled);
+                return Err(e.into());
+            }
+            for (k, &p) in coupled.iter().enumerate() {
+                let f = running.sim.point_force(p);
+                for c in 0..3 {
+                    impulse[3 * k + c] += f[c] * h;
+                }
+            }
+        }
+        running.position = x.to_vec();
+        running.velocity = xd.map(<[f64]>::to_vec);
+        let span = steps as f64 * h;
+        Ok(CoupledForces {
+            last_step: coupled
+                .iter()
+                .flat_map(|&p| running.sim.point_force(p))
+                .collect(),
+            interval_mean: impulse.iter().map(|i| i / span).collect(),
+            steps,
+        })
+    }
+
+    /// The whole state: the simulation (its kept factors included) and the
+    /// coupled points' last positions and velocities.
+    pub fn save(&self) -> CoupledState {
+        CoupledState(self.running.clone())
+    }
+
+    /// Brings back a state from [`Self::save`] of this handle: stepping on
+    /// from it gives the same bits as the first time.
+    pub fn restore(&mut self, state: &CoupledState) {
+        self.running.clone_from(&state.0);
+    }
+
+    /// Positions of line i's nodes (m).
+    pub fn line_nodes(&self, line: usize) -> Option<Vec<[f64; 3]>> {
+        self.line_node_coordinates(line, false)
+    }
+
+    /// Velocities of line i's nodes (m/s).
+    pub fn line_velocities(&self, line: usize) -> Option<Vec<[f64; 3]>> {
+        self.line_node_coordinates(line, true)
+    }
+
+    /// The axial force EA eps at line i's nodes (N; the mean of the two
+    /// elements' values at a shared node, docs/method.md §1.2).
+    pub fn line_tensions(&self, line: usize) -> Option<Vec<f64>> {
+        let l = self.simulation()?.lines().get(line)?;
+        let area = l.model().material.area;
+        Some(
+            cable_points(l.model(), l.state(), 2)
+                .iter()
+                .map(|p| p.axial_stress * area)
+                .collect(),
+        )
+    }
+
+    /// The curvature at line i's nodes (1/m).
+    pub fn line_curvatures(&self, line: usize) -> Option<Vec<f64>> {
+        let l = self.simulation()?.lines().get(line)?;
+        Some(
+            node_bending(l.model(), l.state())
+                .iter()
+                .map(|b| b.curvature)
+                .collect(),
+        )
+    }
+
+    fn line_node_coordinates(&self, line: usize, rates: bool) -> Option<Vec<[f64; 3]>> {
+        let l = self.simulation()?.lines().get(line)?;
+        let s = l.state();
+        let values = if rates { &s.v } else { &s.e };
+        let dpn = l.model().dofs_per_node();
+        Some(
+            (0..l.model().nodes())
+                .map(|j| {
+                    let o = coordinate(dpn, j, SLOT_R, 0);
+                    [values[o], values[o + 1], values[o + 2]]
+                })
+                .collect(),
+        )
+    }
+
+    /// A coupling array: `coupled_dof` finite values.
+    fn check_values(&self, key: &str, values: &[f64]) -> Result<(), ModelError> {
+        if values.len() != self.coupled_dof() {
+            return Err(ModelError::invalid(
+                key,
+                format!(
+                    "expected {} values (3 per coupled point), got {}",
+                    self.coupled_dof(),
+                    values.len()
+                ),
+            ));
+        }
+        if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+            return Err(ModelError::invalid(
+                format!("{key}[{i}]"),
+                format!("must be finite, got {}", values[i]),
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl Running {
+    /// After a failed step: the coupled points' last positions and
+    /// velocities become where their interval's motion has them at the
+    /// time reached, so the next interval starts from there.
+    fn stop_on_motion(&mut self, coupled: &[usize]) {
+        let t = self.sim.time();
+        let mut velocity = vec![0.0; self.position.len()];
+        for (k, &p) in coupled.iter().enumerate() {
+            let (r, v) = self.sim.system().points()[p].state_at(t);
+            self.position[3 * k..3 * k + 3].copy_from_slice(&r);
+            velocity[3 * k..3 * k + 3].copy_from_slice(&v);
+        }
+        self.velocity = self.velocity.is_some().then_some(velocity);
+    }
+}
+
+/// The steps of a coupling interval of `length` (§13.3): the fewest equal
+/// steps no longer than `dt` (with 1e-9 of slack, so an interval of a
+/// whole number of steps takes exactly `dt`, to the bit, as a run does).
+pub fn interval_steps(length: f64, dt: f64) -> (usize, f64) {
+    let n = step_count(length, dt);
+    let h = length / n as f64;
+    (n, if (h - dt).abs() <= 1e-9 * dt { dt } else { h })
+}
+
+fn triple(values: &[f64], k: usize) -> [f64; 3] {
+    [values[3 * k], values[3 * k + 1], values[3 * k + 2]]
+}
