@@ -1,7 +1,7 @@
 //! The coupling API (docs/method.md §13, docs/interface.md "Coupling"):
 //! a system stepped by another code that moves its coupled points is the
 //! run with the same motion prescribed, to round-off when the code calls
-//! once per step and to the interpolation error of (C1)-(C2) otherwise;
+//! once per step and to the interpolation error of (K1)-(K2) otherwise;
 //! save and restore repeat an interval to the bit.
 
 mod common;
@@ -145,7 +145,7 @@ fn a_coupling_code_calling_once_per_step_reproduces_the_prescribed_run() {
 }
 
 /// The largest errors in position and in acceleration of the piecewise
-/// cubic (C2) through the fairlead's positions and velocities every
+/// cubic (K2) through the fairlead's positions and velocities every
 /// `interval` seconds, against the motion itself, over [0, end] (sampled
 /// 40 times per interval; the acceleration by central differences of the
 /// displacement from START over 1 % of the interval: exact for the cubic,
@@ -183,7 +183,7 @@ fn interpolation_errors(interval: f64, end: f64) -> (f64, f64) {
 #[test]
 fn longer_coupling_intervals_differ_from_the_run_by_the_interpolation_error() {
     // A Galerkin step of 2 ms: the coupling intervals of 2.5 and 10 steps
-    // (5 and 20 ms) are long enough for (C2) to differ visibly from the
+    // (5 and 20 ms) are long enough for (K2) to differ visibly from the
     // motion at 1 Hz.
     let (dt, end) = (2e-3, 1.0);
     let mass = 0.08 * 7.0;
@@ -235,7 +235,7 @@ fn longer_coupling_intervals_differ_from_the_run_by_the_interpolation_error() {
         errors.push((worst, e_a));
     }
     // The force error falls at least as fast as the acceleration error of
-    // (C2), second order in the interval (measured: 94 against 14).
+    // (K2), second order in the interval (measured: 94 against 14).
     let (force_ratio, accel_ratio) = (errors[1].0 / errors[0].0, errors[1].1 / errors[0].1);
     println!(
         "4 x the interval: force error x {force_ratio:.1}, acceleration error x {accel_ratio:.1}"

@@ -7,11 +7,11 @@
 //!
 //! - [`CoupledSystem::initialize`] solves the static equilibrium with the
 //!   coupled points where the coupling code puts them (§13.1);
-//! - [`CoupledSystem::step_to`] moves them over the interval along (C1) or
-//!   (C2) (§13.2), takes the steps that fit the interval (§13.3) and
+//! - [`CoupledSystem::step_to`] moves them over the interval along (K1) or
+//!   (K2) (§13.2), takes the steps that fit the interval (§13.3) and
 //!   returns the lines' force on each coupled point: the mean over the
 //!   last step and the mean over the whole interval (its impulse divided
-//!   by its length, (C3));
+//!   by its length, (K3));
 //! - [`CoupledSystem::save`] and [`CoupledSystem::restore`] keep and bring
 //!   back the whole state, so a predictor-corrector coupling can repeat an
 //!   interval and step on to the same bits (§13.4).
@@ -64,7 +64,7 @@ pub struct CoupledForces {
     /// run` writes for that step).
     pub last_step: Vec<f64>,
     /// The mean force over the whole interval: its impulse divided by its
-    /// length (C3), for couplings that exchange impulses.
+    /// length (K3), for couplings that exchange impulses.
     pub interval_mean: Vec<f64>,
     /// Steps taken inside the interval.
     pub steps: usize,
@@ -189,7 +189,7 @@ impl CoupledSystem {
     /// point), at rest, and starts the simulation there at t = 0 (§13.1);
     /// returns the lines' forces on the coupled points. `xd`, when given,
     /// is the points' velocity at t = 0: the start of the first interval's
-    /// cubic (C2) (the lines start at rest). May be called again to start
+    /// cubic (K2) (the lines start at rest). May be called again to start
     /// over.
     pub fn initialize(&mut self, x: &[f64], xd: Option<&[f64]>) -> Result<Vec<f64>, CouplingError> {
         self.check_values("x", x)?;
@@ -221,9 +221,9 @@ impl CoupledSystem {
     }
 
     /// Advances to `t_next` with the coupled points moving from where the
-    /// last call put them to `x` (3 per point): along the cubic (C2) when
+    /// last call put them to `x` (3 per point): along the cubic (K2) when
     /// this call and the last both give velocities, else along the line
-    /// (C1). The interval is split into the fewest equal steps no longer
+    /// (K1). The interval is split into the fewest equal steps no longer
     /// than the scenario's (§13.3). On a solver failure the state stays at
     /// the last converged step, with the coupled points on this interval's
     /// motion, so a later call continues from there.

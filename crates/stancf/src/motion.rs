@@ -6,12 +6,12 @@
 //! end at a coupled point at the time nodes of its slab (§6.1), so a
 //! motion is evaluated for both at any t; the P2 predictor (§4.8) and
 //! the energy balance (M24) see its acceleration through consecutive
-//! steps, which the spline keeps continuous (C2).
+//! steps, which the spline keeps continuous (K2).
 //!
 //! [`CoupledMotion`] is the one type a coupled point carries. A coupling
 //! code that drives the point sets its motion over each coupling interval
 //! from the positions (and velocities) it gives ([`MotionInterval`],
-//! (C1)-(C2), docs/method.md §13.2): every consumer evaluates a motion
+//! (K1)-(K2), docs/method.md §13.2): every consumer evaluates a motion
 //! through [`CoupledMotion::state_at`] and [`CoordinateMotion`].
 
 mod interval;
@@ -31,8 +31,8 @@ pub enum CoupledMotion {
     /// Absolute positions interpolated from a table (M39); its position
     /// at t = 0 is the point's.
     Table(Arc<MotionTable>),
-    /// Set by a coupling code for the current coupling interval, (C1) or
-    /// (C2); absolute positions.
+    /// Set by a coupling code for the current coupling interval, (K1) or
+    /// (K2); absolute positions.
     Interval(MotionInterval),
 }
 

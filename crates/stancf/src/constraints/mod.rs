@@ -152,7 +152,7 @@ pub enum CoordinateMotion {
         table: Arc<MotionTable>,
         component: usize,
     },
-    /// One coordinate of a coupling interval's motion, (C1) or (C2).
+    /// One coordinate of a coupling interval's motion, (K1) or (K2).
     Interval(IntervalMotion),
 }
 

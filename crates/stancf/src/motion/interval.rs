@@ -1,12 +1,12 @@
 //! The motion of a coupled point between two calls of the code that
-//! drives it (docs/method.md §13.2, (C1)-(C2)): a coupling code gives the
+//! drives it (docs/method.md §13.2, (K1)-(K2)): a coupling code gives the
 //! point's position, and optionally its velocity, at the ends of each
 //! coupling interval [t_0, t_0 + T]; between them the point moves
 //!
 //! ```text
-//!   linearly (C1):   r(t) = r_0 + s (r_1 - r_0),            s = (t - t_0) / T,
+//!   linearly (K1):   r(t) = r_0 + s (r_1 - r_0),            s = (t - t_0) / T,
 //!                    r_dot = (r_1 - r_0) / T;
-//!   cubically (C2):  r(t) = H_00(s) r_0 + T H_10(s) v_0 + H_01(s) r_1 + T H_11(s) v_1,
+//!   cubically (K2):  r(t) = H_00(s) r_0 + T H_10(s) v_0 + H_01(s) r_1 + T H_11(s) v_1,
 //! ```
 //!
 //! with the cubic Hermite basis H_00 = 2s^3 - 3s^2 + 1, H_10 = s^3 - 2s^2 + s,
@@ -16,7 +16,7 @@
 //! error inside is T^4 max|r''''| / 384. Outside the interval the
 //! polynomial continues.
 
-/// One coordinate's motion over a coupling interval, (C1) or (C2).
+/// One coordinate's motion over a coupling interval, (K1) or (K2).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IntervalMotion {
     /// Start of the interval t_0 (s).
@@ -26,7 +26,7 @@ pub struct IntervalMotion {
     /// Values at t_0 and t_0 + T.
     pub start: f64,
     pub end: f64,
-    /// Rates at t_0 and t_0 + T: the cubic (C2); None: the line (C1).
+    /// Rates at t_0 and t_0 + T: the cubic (K2); None: the line (K1).
     pub rates: Option<(f64, f64)>,
 }
 
@@ -68,7 +68,7 @@ impl IntervalMotion {
     }
 }
 
-/// A point's motion over a coupling interval, (C1) or (C2), per
+/// A point's motion over a coupling interval, (K1) or (K2), per
 /// coordinate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MotionInterval {

@@ -279,7 +279,7 @@ impl SystemSimulation {
     }
 
     /// Moves coupled point p along `motion` from the next step on (a
-    /// coupling code's next interval, (C1)-(C2), docs/method.md §13.2):
+    /// coupling code's next interval, (K1)-(K2), docs/method.md §13.2):
     /// the point and the constraints of the line ends attached to it.
     pub fn set_point_motion(
         &mut self,
