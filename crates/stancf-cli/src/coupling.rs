@@ -27,13 +27,14 @@ pub fn open(path: &Path) -> Result<Coupled, Failure> {
 }
 
 /// The coupled system of scenario text (`path` names it in messages and
-/// resolves the files it refers to). Refused: a single cable (no points)
+/// resolves the files it refers to); a MoorDyn deck steps with its
+/// `dtM`. Refused: a single cable (no points)
 /// and a system without coupled points. The coupled points' motions in
 /// the scenario are replaced by the coupling code's; their order in the
 /// coupling arrays is that of their ids.
 pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
     let file = path.display().to_string();
-    let sc = match parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))? {
+    let mut sc = match parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))? {
         Input::System(sc) => sc,
         Input::Cable(_) => {
             return Err(Failure::Input(format!(
@@ -43,7 +44,30 @@ pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
             )))
         }
     };
+    if crate::moordyn::looks_like_moordyn(text) {
+        sc.analysis.time_step = deck_time_step(text, &file)?;
+    }
     of_scenario(&sc, &file)
+}
+
+/// A deck alone is a static analysis; coupled, it steps with its `dtM`,
+/// as MoorDyn does.
+fn deck_time_step(text: &str, file: &str) -> Result<f64, Failure> {
+    use crate::moordyn::{OptionKind, OptionValue, SupportedOption};
+    let deck = crate::moordyn::parse(text).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+    deck.options
+        .iter()
+        .find_map(|o| match (o.kind, &o.value) {
+            (OptionKind::Supported(SupportedOption::TimeStep), OptionValue::Number(dt)) => {
+                Some(*dt)
+            }
+            _ => None,
+        })
+        .ok_or_else(|| {
+            Failure::Input(format!(
+                "{file}: OPTIONS: the deck gives no dtM, the time step a coupled run takes"
+            ))
+        })
 }
 
 /// The coupled system of a validated system scenario.

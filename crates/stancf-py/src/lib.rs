@@ -3,6 +3,8 @@
 //! result files; the Python side (`python/stancf/__init__.py`) reads the
 //! files into numpy arrays and runs sweeps on any executor.
 
+mod simulation;
+
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
 use pyo3::prelude::*;
@@ -246,5 +248,7 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_points, m)?)?;
     m.add("SWEEP_LIMIT", sweep::MAX_POINTS)?;
     m.add_class::<PyResultFolder>()?;
+    m.add_class::<simulation::PySimulation>()?;
+    m.add_class::<simulation::PyState>()?;
     Ok(())
 }

@@ -1,0 +1,224 @@
+"""stancf.Simulation: a system stepped by a coupling code (docs/method.md
+§13) against `stancf.run` with the same motion prescribed, save and
+restore, errors, no files, and the OC4 coupling example (also against the
+C example through the C library)."""
+
+import math
+import os
+import shutil
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import stancf
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLES = ROOT / "examples"
+AMPLITUDE, PERIOD, RAMP, DT = [0.2, 0.1, 0.05], 1.0, 0.5, 2e-4
+START = [6.0, 0.0, 1.0]
+
+
+def bridle(steps):
+    """examples/bridle.toml with its fairlead (point 2) swinging along all
+    three axes, Galerkin steps of DT, every step written."""
+    head = (EXAMPLES / "bridle.toml").read_text().split("[[motions]]")[0]
+    text = head + f"""[[motions]]
+point = 2
+amplitude = {AMPLITUDE}
+period = {PERIOD}
+ramp = {RAMP}
+
+[analysis]
+type = "dynamic"
+initial = "static"
+time_step = {DT}
+duration = {steps * DT}
+time_scheme = "galerkin"
+planar_reduction = false
+
+[output]
+every = 1
+"""
+    return stancf.Scenario(text, "bridle.toml")
+
+
+def swing(t):
+    """The fairlead's position and velocity at t: r0 + f(t) a sin(2 pi t/T)
+    with the ramp f = s^3 (6 s^2 - 15 s + 10), s = min(t / ramp, 1)."""
+    s = min(t / RAMP, 1.0)
+    f = s * s * s * (s * (6.0 * s - 15.0) + 10.0)
+    df = 30.0 * s * s * (s - 1.0) ** 2 / RAMP if t < RAMP else 0.0
+    w = 2.0 * math.pi / PERIOD
+    x = [r + f * a * math.sin(w * t) for r, a in zip(START, AMPLITUDE)]
+    v = [df * a * math.sin(w * t) + f * a * w * math.cos(w * t) for a in AMPLITUDE]
+    return x, v
+
+
+def test_stepping_once_per_step_reproduces_the_prescribed_run():
+    steps = 200
+    sc = bridle(steps)
+    res = stancf.run(sc)
+    run_force = res.points[2]["force"]
+    sim = stancf.Simulation(sc)
+    assert sim.coupled_ids == [2] and sim.coupled_dof == 3
+    f0 = sim.initialize(START, [0.0, 0.0, 0.0])
+    scale = np.abs(run_force).max()
+    # Python's sin and the motion's rounding may differ from Rust's in the
+    # last bit; the forces then differ at round-off (measured below).
+    worst = np.abs(f0 - run_force[0]).max()
+    for k in range(1, steps + 1):
+        t = sim.time + DT  # the run's own accumulated time
+        x, v = swing(t)
+        f = sim.step_to(t, x, v)
+        assert sim.last_steps == 1
+        worst = max(worst, np.abs(f - run_force[k]).max())
+    print("worst difference", worst, "of", scale)
+    assert worst <= 1e-10 * scale
+
+
+def test_save_step_restore_step_is_identical_to_the_bit():
+    sim = stancf.Simulation(bridle(10))
+    sim.initialize(START)
+    t = 0.0
+
+    def advance(n):
+        nonlocal t
+        out = []
+        for _ in range(n):
+            t += 3.7 * DT
+            x, v = swing(t + 0.6)
+            out.append(sim.step_to(t, x, v))
+        return np.array(out), sim.line(1).nodes.copy(), sim.interval_mean_force
+
+    advance(10)
+    state, t_saved = sim.save(), t
+    first = advance(5)
+    sim.restore(state)
+    t = t_saved
+    second = advance(5)
+    for a, b in zip(first, second):
+        assert np.array_equal(a, b)
+
+
+def test_bad_calls_raise_and_the_simulation_goes_on():
+    sim = stancf.Simulation(bridle(10))
+    with pytest.raises(stancf.ScenarioError, match="initialize"):
+        sim.step_to(DT, START)
+    with pytest.raises(stancf.ScenarioError, match="expected 3 values"):
+        sim.initialize([0.0] * 4)
+    with pytest.raises(stancf.ScenarioError, match=r"x\[1\]"):
+        sim.initialize([6.0, float("nan"), 1.0])
+    sim.initialize(START)
+    with pytest.raises(stancf.ScenarioError, match="must come after"):
+        sim.step_to(0.0, START)
+    assert np.isfinite(sim.step_to(DT, START)).all()
+    line = sim.line(2)
+    assert line.nodes.shape == (21, 3) and line.tensions.shape == (21,)
+    assert line.velocities.shape == (21, 3) and line.curvatures.shape == (21,)
+    with pytest.raises(KeyError):
+        sim.line(7)
+    with pytest.raises(stancf.ScenarioError, match="single cable"):
+        stancf.Simulation(EXAMPLES / "pendulum.toml")
+
+
+def test_a_failed_step_raises_solver_error_and_keeps_the_last_step():
+    sim = stancf.Simulation(bridle(10))
+    sim.initialize(START)
+    sim.step_to(DT, START)
+    with pytest.raises(stancf.SolverError) as e:
+        # A jump of the fairlead by 1000 km in one step: Newton stalls
+        # at round-off of the huge coordinates.
+        sim.step_to(2 * DT, [1e6, 1e6, 1e6])
+    assert e.value.time == pytest.approx(DT) and e.value.step == 2
+    assert "did not converge" in str(e.value)
+    assert sim.time == pytest.approx(DT)
+    assert np.isfinite(sim.line(1).nodes).all()
+
+
+def test_a_simulation_writes_no_file(tmp_path):
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    shutil.copy(EXAMPLES / "bridle.toml", folder / "bridle.toml")
+    before = sorted((p.name, p.stat().st_mtime_ns) for p in folder.iterdir())
+    cwd = os.getcwd()
+    folder.chmod(stat.S_IRUSR | stat.S_IXUSR)
+    try:
+        os.chdir(folder)
+        sim = stancf.Simulation("bridle.toml")
+        sim.initialize(START)
+        state = sim.save()
+        for k in range(1, 4):
+            sim.step_to(k * 1e-3, swing(k * 1e-3)[0])
+        sim.restore(state)
+    finally:
+        os.chdir(cwd)
+        folder.chmod(stat.S_IRWXU)
+    assert sorted((p.name, p.stat().st_mtime_ns) for p in folder.iterdir()) == before
+
+
+def oc4_example():
+    sys.path.insert(0, str(EXAMPLES / "coupling"))
+    try:
+        import oc4_surge
+    finally:
+        sys.path.pop(0)
+    return oc4_surge
+
+
+def test_the_oc4_example_holds_the_decks_pretension_and_follows_the_surge():
+    example = oc4_example()
+    sim = stancf.Simulation(example.DECK)
+    x0 = np.ravel(example._positions(example.DECK, sim.coupled_ids))
+    f0 = np.linalg.norm(sim.initialize(x0).reshape(-1, 3), axis=1)
+    # The deck's pretension, as `stancf run` prints it (1.106e6 N).
+    assert np.allclose(f0, 1.106e6, rtol=2e-3), f0
+    t, tensions = example.surge(example.DECK, duration=0.5)
+    assert t.shape == (5,) and tensions.shape == (5, 3)
+    assert np.isfinite(tensions).all()
+    # Surging towards +x pulls on fairlead 4 (its anchor is at -x) and
+    # slackens the other two, which stay equal by symmetry.
+    assert (np.diff(tensions[:, 0]) > 0).all()
+    assert (np.diff(tensions[:, 1]) < 0).all()
+    assert np.allclose(tensions[:, 1], tensions[:, 2], rtol=1e-12)
+
+
+def test_the_c_example_prints_the_python_examples_tensions():
+    source = EXAMPLES / "coupling" / "oc4_surge.c"
+    library = ROOT / "target" / "release"
+    assert (library / "libstancf_c.so").exists(), \
+        "build the C library first: cargo build --release -p stancf-capi"
+    exe = Path(os.environ.get("TMPDIR", "/tmp")) / f"oc4_surge_{os.getpid()}"
+    subprocess.run(["cc", "-O1", "-I", str(ROOT / "crates" / "stancf-capi" / "include"),
+                    str(source), "-L", str(library), "-lstancf_c",
+                    f"-Wl,-rpath,{library}", "-lm", "-o", str(exe)], check=True)
+    out = subprocess.run([str(exe), str(EXAMPLES / "oc4-deepcwind-moordyn.txt"), "0.5"],
+                         capture_output=True, text=True, check=True).stdout
+    exe.unlink()
+    rows = np.array([[float(v) for v in line.split(",")]
+                     for line in out.splitlines()[1:] if line.strip()])
+    t, tensions = oc4_example().surge(duration=0.5)
+    assert out.splitlines()[0] == "t,tension_4,tension_5,tension_6"
+    assert np.array_equal(rows[:, 0], t)
+    # The same Rust code runs behind both: the same bits.
+    assert np.array_equal(rows[:, 1:], tensions)
+
+
+def test_the_gil_is_released_while_stepping():
+    import threading
+    sim = stancf.Simulation(bridle(10))
+    sim.initialize(START)
+    done = threading.Event()
+    # One long call: 1000 steps inside a single coupling interval.
+    th = threading.Thread(target=lambda: (sim.step_to(1000 * DT, swing(1000 * DT)[0]),
+                                          done.set()))
+    th.start()
+    count = 0
+    while not done.is_set():
+        count += 1
+    th.join()
+    assert sim.last_steps == 1000
+    assert count > 10000, count
