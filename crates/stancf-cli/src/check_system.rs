@@ -31,9 +31,9 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let system = sc.system().map_err(input)?;
     let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
     {
-        let seeds = sc.static_seed(&system).map_err(input)?;
+        let seed_system = sc.seed_system().map_err(input)?;
         let settings = sc.analysis.static_settings();
-        Some(SystemStatics::new(system.clone(), seeds, settings).map_err(input)?)
+        Some(SystemStatics::seeded(system.clone(), &seed_system, settings).map_err(input)?)
     } else {
         None
     };

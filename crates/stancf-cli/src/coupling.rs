@@ -17,6 +17,8 @@ pub struct Coupled {
     pub coupled_ids: Vec<i64>,
     /// The lines' ids, in the order of the system's lines.
     pub line_ids: Vec<i64>,
+    /// The points' ids, in the order of the system's points.
+    pub point_ids: Vec<i64>,
 }
 
 /// Reads the scenario or deck at `path` and builds its coupled system.
@@ -89,6 +91,7 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     Ok(Coupled {
         coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
         line_ids: sc.lines.iter().map(|l| l.id).collect(),
+        point_ids: sc.points.iter().map(|p| p.id).collect(),
         handle: handle.with_order(order).map_err(input)?,
     })
 }

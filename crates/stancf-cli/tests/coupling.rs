@@ -249,7 +249,7 @@ fn save_step_restore_step_is_identical_to_the_bit() {
     let mut h = handle(&scenario);
     h.initialize(&START, Some(&[0.0; 3])).unwrap();
     let mut t = 0.0;
-    let mut advance = |h: &mut CoupledSystem, t: &mut f64| {
+    let advance = |h: &mut CoupledSystem, t: &mut f64| {
         *t += 3.7 * DT;
         let (r, v) = swing(*t + 0.6);
         h.step_to(*t, &r, Some(&v)).unwrap()
@@ -292,4 +292,44 @@ fn bad_calls_are_refused_and_the_handle_goes_on() {
         .unwrap()
         .to_string();
     assert!(e.contains("single cable"), "{e}");
+}
+
+/// A coupling code may start its platform anywhere: the bridle's static
+/// equilibrium with the fairlead at x = 5.5 ... 6.1 m is the closed-form
+/// catenary network's (M32a) (the two elastic catenaries balancing the
+/// clump weight at the free point; stancf::system::balanced_points),
+/// whichever side of the scenario's 6.0 m it starts. (Before the free
+/// point was seeded at (M32a), 1 mm either side of 6.0 m gave a rope
+/// folded in compression, 2.6 N off, or a stalled solve.) The force on
+/// the fairlead is the catenary's (C12) to 1e-6 of its size, the
+/// agreement docs/method.md §11.6 measures for one line with the rope's
+/// EI = 1e-7 w L^3 (§11.7) (1.5e-6 for a line as heavy as its tension,
+/// w L / T = 3; these ropes have w L / T = 0.1: measured 3.5e-11 to
+/// 8e-11); the folded rope was 7e-2 off.
+#[test]
+fn the_bridles_equilibrium_is_the_catenary_networks_wherever_the_fairlead_starts() {
+    use stancf::catenary::{Catenary, CatenaryLine, LineEnd};
+    let rope = CatenaryLine {
+        length: 5.0,
+        weight: 0.08 * 9.81,
+        ea: 2.0e4,
+    };
+    for x in [5.5, 5.99, 6.0, 6.001, 6.1] {
+        let fairlead = [x, 0.0, 1.0];
+        let mut h = handle(&bridle("galerkin", 0.01));
+        let force = h.initialize(&fairlead, None).expect("static equilibrium");
+        let mut system = h.system().clone();
+        system
+            .set_point_motion(
+                1,
+                CoupledMotion::Interval(stancf::motion::MotionInterval::at_rest(fairlead)),
+            )
+            .unwrap();
+        let shackle = stancf::system::balanced_points(&system)[2];
+        let catenary = Catenary::between(rope, fairlead, shackle, [0.0, 0.0, -1.0]).unwrap();
+        let exact = catenary.end_force(LineEnd::A);
+        let error = distance(&force, &exact);
+        eprintln!("x = {x}: force {force:?}, catenary {exact:?}, error {error:e}");
+        assert!(error <= 1e-6 * distance(&exact, &[0.0; 3]), "x = {x}");
+    }
 }

@@ -15,9 +15,7 @@ use std::path::PathBuf;
 fn coupling_err(e: CouplingError) -> PyErr {
     match e {
         CouplingError::Input(m) => ScenarioError::new_err(m.to_string()),
-        CouplingError::Solver(s) => {
-            RunFailed::new_err((s.to_string(), s.time, s.step, s.residual))
-        }
+        CouplingError::Solver(s) => RunFailed::new_err((s.to_string(), s.time, s.step, s.residual)),
     }
 }
 
@@ -27,6 +25,7 @@ pub struct PySimulation {
     handle: CoupledSystem,
     coupled_ids: Vec<i64>,
     line_ids: Vec<i64>,
+    point_ids: Vec<i64>,
     last: Option<CoupledForces>,
 }
 
@@ -46,6 +45,7 @@ impl PySimulation {
             handle: opened.handle,
             coupled_ids: opened.coupled_ids,
             line_ids: opened.line_ids,
+            point_ids: opened.point_ids,
             last: None,
         })
     }
@@ -63,6 +63,11 @@ impl PySimulation {
     #[getter]
     fn line_ids(&self) -> Vec<i64> {
         self.line_ids.clone()
+    }
+
+    #[getter]
+    fn point_ids(&self) -> Vec<i64> {
+        self.point_ids.clone()
     }
 
     #[getter]
@@ -122,6 +127,15 @@ impl PySimulation {
     fn restore(&mut self, state: &PyState) {
         self.handle.restore(&state.0);
         self.last = None;
+    }
+
+    /// Point `index`'s (in the order of `point_ids`) position, velocity
+    /// and the net force of its lines on it.
+    fn point_arrays(&self, index: usize) -> PyResult<([f64; 3], [f64; 3], [f64; 3])> {
+        let p = self.handle.point(index).ok_or_else(|| {
+            PyIndexError::new_err(format!("no point {index} (or not initialized)"))
+        })?;
+        Ok((p.position, p.velocity, p.force))
     }
 
     /// Line `index`'s (in the order of `line_ids`) node positions, node

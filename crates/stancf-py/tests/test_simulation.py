@@ -121,6 +121,17 @@ def test_bad_calls_raise_and_the_simulation_goes_on():
     assert line.velocities.shape == (21, 3) and line.curvatures.shape == (21,)
     with pytest.raises(KeyError):
         sim.line(7)
+    # Every point: the fairlead where it was put, with the forces the
+    # step returned; the shackle (free) and the anchor from the solve.
+    assert sim.point_ids == [1, 2, 3]
+    f = sim.step_to(2 * DT, START)
+    fairlead = sim.point(2)
+    assert np.array_equal(fairlead.position, START)
+    assert np.array_equal(fairlead.force, f)
+    assert np.array_equal(sim.point(3).position, sim.line(2).nodes[-1])
+    assert np.array_equal(sim.point(1).position, [0.0, 0.0, 0.0])
+    with pytest.raises(KeyError):
+        sim.point(4)
     with pytest.raises(stancf.ScenarioError, match="single cable"):
         stancf.Simulation(EXAMPLES / "pendulum.toml")
 

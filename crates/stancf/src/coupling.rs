@@ -22,7 +22,7 @@ use crate::model::{coordinate, SLOT_R};
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::observe::{cable_points, node_bending};
 use crate::statics::StaticSettings;
-use crate::system::{catenary_states, PointKind, System, SystemSimulation, SystemStatics};
+use crate::system::{PointKind, System, SystemSimulation, SystemStatics};
 use std::fmt;
 
 /// Why a coupling call failed: its input (sizes, values, the order of
@@ -68,6 +68,18 @@ pub struct CoupledForces {
     pub interval_mean: Vec<f64>,
     /// Steps taken inside the interval.
     pub steps: usize,
+}
+
+/// A point of a [`CoupledSystem`] at its current time (see
+/// [`CoupledSystem::point`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointReading {
+    /// Position (m).
+    pub position: [f64; 3],
+    /// Velocity (m/s).
+    pub velocity: [f64; 3],
+    /// The net force of the attached lines on the point (N).
+    pub force: [f64; 3],
 }
 
 /// The running part of a [`CoupledSystem`]: the simulation and where the
@@ -203,8 +215,7 @@ impl CoupledSystem {
             system.set_point_motion(p, at.clone())?;
             seed.set_point_motion(p, at)?;
         }
-        let mut statics =
-            SystemStatics::new(system.clone(), catenary_states(&seed), self.statics.clone())?;
+        let mut statics = SystemStatics::seeded(system.clone(), &seed, self.statics.clone())?;
         statics.solve(|_, _| std::ops::ControlFlow::Continue(()))?;
         let forces = self
             .coupled
@@ -305,6 +316,24 @@ impl CoupledSystem {
     /// from it gives the same bits as the first time.
     pub fn restore(&mut self, state: &CoupledState) {
         self.running.clone_from(&state.0);
+    }
+
+    /// Point p (in the system's order) at the current time: its position
+    /// and velocity (a coupled point's on its interval's motion, a free
+    /// point's from the solve) and the net force of its lines on it (the
+    /// mean over the last step, as the coupling arrays'). None before
+    /// [`Self::initialize`] or for a point that does not exist.
+    pub fn point(&self, p: usize) -> Option<PointReading> {
+        let sim = self.simulation()?;
+        if p >= self.system.points().len() {
+            return None;
+        }
+        let (position, velocity) = sim.point_state(p);
+        Some(PointReading {
+            position,
+            velocity,
+            force: sim.point_force(p),
+        })
     }
 
     /// Positions of line i's nodes (m).

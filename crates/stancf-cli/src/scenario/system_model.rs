@@ -5,9 +5,9 @@
 
 use super::system::{LineType, PointType, SystemScenario};
 use super::water::Water;
-use stancf::system::{catenary_states, End, Line, Point, PointKind, System};
+use stancf::system::{End, Line, Point, PointKind, System};
 use stancf::water::{LineInWater, Morison};
-use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions, State};
+use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions};
 use std::sync::Arc;
 
 /// The loads a line model is built with.
@@ -75,20 +75,10 @@ impl SystemScenario {
         self.system_with(Loads::Full)
     }
 
-    /// The seed of the static solve of `system` (this scenario's
-    /// [`SystemScenario::system`]): each line's elastic catenary of its
-    /// weight per length ([`catenary_states`]); in water the wet weight
-    /// (m - rho_w A) g, the weight a fully submerged line hangs by.
-    pub fn static_seed(&self, system: &System) -> Result<Vec<State>, ModelError> {
-        if self.water.is_none() {
-            return Ok(catenary_states(system));
-        }
-        Ok(catenary_states(&self.system_with(Loads::WetWeight)?))
-    }
-
     /// The system whose lines' catenaries seed the static solve: the
     /// system itself in air; in water, its lines under their wet weight
-    /// (see [`SystemScenario::static_seed`]).
+    /// (their wet weight (m - rho_w A) g: the weight a fully submerged line
+    /// hangs by; [`stancf::system::SystemStatics::seeded`]).
     pub fn seed_system(&self) -> Result<System, ModelError> {
         match self.water {
             None => self.system_with(Loads::Full),

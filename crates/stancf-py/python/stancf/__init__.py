@@ -492,6 +492,20 @@ class LineState:
         return "LineState(%d nodes)" % len(self.tensions)
 
 
+class PointState:
+    """One point of a :class:`Simulation` at its current time:
+    ``position`` (3,, m), ``velocity`` (3,, m/s) and ``force`` (3,, N: the
+    net force of its lines on it, the mean over the last step)."""
+
+    def __init__(self, position, velocity, force):
+        self.position = np.asarray(position, dtype=float)
+        self.velocity = np.asarray(velocity, dtype=float)
+        self.force = np.asarray(force, dtype=float)
+
+    def __repr__(self):
+        return "PointState(position=%s)" % (self.position,)
+
+
 class Simulation:
     """A system stepped by a coupling code that moves its coupled points
     (docs/method.md §13; MoorDyn's create/init/step in memory)::
@@ -513,7 +527,8 @@ class Simulation:
     mean over its last step, what ``stancf run`` writes for that step);
     ``interval_mean_force`` is the interval's impulse over its length.
     ``save()`` returns a state that ``restore(state)`` brings back
-    exactly. ``line(line_id)`` gives a :class:`LineState`.
+    exactly. ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
+    a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``).
 
     Nothing is written to disk. Bad input raises :class:`ScenarioError`;
     a failed step raises :class:`SolverError` (``result`` is None) and
@@ -540,6 +555,10 @@ class Simulation:
     @property
     def line_ids(self):
         return list(self._sim.line_ids)
+
+    @property
+    def point_ids(self):
+        return list(self._sim.point_ids)
 
     @property
     def time(self):
@@ -571,6 +590,12 @@ class Simulation:
         if line_id not in ids:
             raise KeyError("no line %r (lines: %s)" % (line_id, ids))
         return LineState(*self._sim.line_arrays(ids.index(line_id)))
+
+    def point(self, point_id):
+        ids = self.point_ids
+        if point_id not in ids:
+            raise KeyError("no point %r (points: %s)" % (point_id, ids))
+        return PointState(*self._sim.point_arrays(ids.index(point_id)))
 
     @staticmethod
     def _call(method, *args):

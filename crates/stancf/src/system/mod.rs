@@ -23,6 +23,7 @@
 //! line's band bordered by the free points' unknowns
 //! ([`crate::bordered`]), factorized by block elimination.
 
+mod balance;
 mod layout;
 mod mass;
 mod point_terms;
@@ -31,8 +32,12 @@ mod simulation;
 mod statics;
 mod step_equations;
 
+pub use balance::balanced_points;
 pub use layout::SystemLayout;
-pub use seed::{catenary_states, end_positions, shaped, straight_between, straight_states};
+pub use seed::{
+    catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,
+    static_seed_states, straight_between, straight_states,
+};
 pub use simulation::{EndForce, SystemSimulation};
 pub use statics::SystemStatics;
 

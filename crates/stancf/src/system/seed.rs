@@ -2,11 +2,12 @@
 //! between the end points, or the elastic catenary through them, the
 //! seed of a static solve.
 
+use super::balance::balanced_points;
 use super::{End, System};
 use crate::catenary::touchdown::{
     solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
 };
-use crate::catenary::{Catenary, CatenaryLine};
+use crate::catenary::{Catenary, CatenaryLine, LineEnd};
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
 
 /// A straight state of `model` from a to b, at rest at t = 0:
@@ -46,9 +47,19 @@ pub fn shaped(model: &Model, shape: impl Fn(f64) -> ([f64; 3], [f64; 3], [f64; 3
 /// end hangs the line's length from the other along gravity (along -z
 /// without gravity).
 pub fn end_positions(system: &System, line: usize) -> ([f64; 3], [f64; 3]) {
+    let at_rest: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
+    end_positions_at(system, line, &at_rest)
+}
+
+/// [`end_positions`] with point p at `positions[p]`.
+pub fn end_positions_at(
+    system: &System,
+    line: usize,
+    positions: &[[f64; 3]],
+) -> ([f64; 3], [f64; 3]) {
     let l = &system.lines()[line];
     let at = |e: End| match e {
-        End::Point(p) => Some(system.points()[p].state_at(0.0).0),
+        End::Point(p) => Some(positions[p]),
         End::Loose => None,
     };
     let g = system.gravity();
@@ -83,57 +94,118 @@ pub fn straight_states(system: &System) -> Vec<State> {
         .collect()
 }
 
-/// The seed of a system's static solve (docs/method.md §11.6): each
-/// line the elastic catenary of its weight per length (rho A |g|) and
-/// EA through its end points ([`crate::catenary`]; node j takes r, r_x
-/// and r_xx of the catenary at its material coordinate). Where no
-/// catenary exists (a slack weightless line, a slack vertical one), the
-/// line starts straight between its ends. A line whose catenary would
-/// pass through its flat seabed, anchored on the bed, starts as the
-/// closed form resting on the bed instead (§11.12):
-/// the catenary would start it metres inside the bed, where the contact's
+/// Every line as its seed shape through its end points where the
+/// scenario puts them (docs/method.md §11.6): the elastic catenary of its
+/// weight per length (rho A |g|) and EA ([`crate::catenary`]; node j
+/// takes r, r_x and r_xx of the catenary at its material coordinate).
+/// Where no catenary exists (a slack weightless line, a slack vertical
+/// one), the line starts straight between its ends. A line whose
+/// catenary would pass through its flat seabed, anchored on the bed,
+/// starts as the closed form resting on the bed instead (§11.12): the
+/// catenary would start it metres inside the bed, where the contact's
 /// forces (and static friction's stiffness) are far from the solution's.
+/// The seed of a static solve is [`static_seed_states`].
 pub fn catenary_states(system: &System) -> Vec<State> {
-    let g = system.gravity();
+    let at_rest: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
+    catenary_states_at(system, &at_rest)
+}
+
+/// The seed of a system's static solve (§11.6): [`catenary_states`] with
+/// the free points where these catenaries hold them in equilibrium
+/// ([`balanced_points`], (M32a)).
+pub fn static_seed_states(system: &System) -> Vec<State> {
+    catenary_states_at(system, &balanced_points(system))
+}
+
+/// [`catenary_states`] with point p at `positions[p]`.
+pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State> {
     (0..system.lines().len())
         .map(|i| {
             let model = &system.lines()[i].model;
-            let (a, b) = end_positions(system, i);
-            let section = model.material.section();
-            let line = CatenaryLine {
-                length: model.cable.length,
-                weight: section.rho_a * norm(model.gravity),
-                ea: section.ea,
-            };
-            let direction = if norm(model.gravity) > 0.0 {
-                model.gravity
-            } else {
-                g
-            };
-            let mut s = match Catenary::between(line, a, b, direction) {
-                Ok(c) if norm(direction) > 0.0 => {
-                    let x_nodes = (0..model.nodes()).map(|j| model.node_coordinate(j));
-                    let through_bed = model.seabed.as_ref().is_some_and(|bed| {
-                        x_nodes
-                            .clone()
-                            .any(|x| bed.seabed.penetration(&c.position(x)) > 0.0)
-                    });
-                    match through_bed
-                        .then(|| resting_shape(model, line, a, b))
-                        .flatten()
-                    {
-                        Some(rest) => shaped(model, |x| rest.at(x)),
-                        None => shaped(model, |x| {
-                            (c.position(x), c.derivative(x), c.second_derivative(x))
-                        }),
-                    }
-                }
-                _ => straight_between(model, a, b),
-            };
+            let (a, b) = end_positions_at(system, i, positions);
+            let mut s = seed_shape(system, i, a, b).state(model, a, b);
             model.apply_constraints(&mut s);
             s
         })
         .collect()
+}
+
+/// The seed shape of one line between end positions a and b.
+pub(super) enum SeedShape {
+    Catenary(Catenary),
+    Resting(Resting),
+    /// No catenary (a slack weightless or vertical line): straight, and
+    /// no force on its ends.
+    Straight,
+}
+
+/// Line `line`'s seed shape from `a` to `b` (see [`catenary_states`]).
+pub(super) fn seed_shape(system: &System, line: usize, a: [f64; 3], b: [f64; 3]) -> SeedShape {
+    let model = &system.lines()[line].model;
+    let section = model.material.section();
+    let cat_line = CatenaryLine {
+        length: model.cable.length,
+        weight: section.rho_a * norm(model.gravity),
+        ea: section.ea,
+    };
+    let direction = if norm(model.gravity) > 0.0 {
+        model.gravity
+    } else {
+        system.gravity()
+    };
+    match Catenary::between(cat_line, a, b, direction) {
+        Ok(c) if norm(direction) > 0.0 => {
+            let through_bed = model.seabed.as_ref().is_some_and(|bed| {
+                (0..model.nodes()).any(|j| {
+                    bed.seabed
+                        .penetration(&c.position(model.node_coordinate(j)))
+                        > 0.0
+                })
+            });
+            match through_bed
+                .then(|| resting_shape(model, cat_line, a, b))
+                .flatten()
+            {
+                Some(rest) => SeedShape::Resting(rest),
+                None => SeedShape::Catenary(c),
+            }
+        }
+        _ => SeedShape::Straight,
+    }
+}
+
+impl SeedShape {
+    /// The line's state at rest in this shape (from `a` to `b`).
+    fn state(&self, model: &Model, a: [f64; 3], b: [f64; 3]) -> State {
+        match self {
+            SeedShape::Catenary(c) => shaped(model, |x| {
+                (c.position(x), c.derivative(x), c.second_derivative(x))
+            }),
+            SeedShape::Resting(rest) => shaped(model, |x| rest.at(x)),
+            SeedShape::Straight => straight_between(model, a, b),
+        }
+    }
+
+    /// The force the line exerts on the point at its end `end` (0: A,
+    /// 1: B): the catenary's (C12); resting on the bed, the fairlead's
+    /// (HF, VF) pulling the upper end down and towards the anchor, the
+    /// anchor's HA pulling the lower end towards the fairlead.
+    pub(super) fn end_force(&self, end: usize) -> [f64; 3] {
+        match self {
+            SeedShape::Catenary(c) => c.end_force(if end == 0 { LineEnd::A } else { LineEnd::B }),
+            SeedShape::Resting(rest) => {
+                let [hx, hy] = rest.horizontal;
+                let sol = &rest.solution;
+                // End A is the lower end unless the line was reversed.
+                if (end == 0) != rest.reversed {
+                    [sol.ha * hx, sol.ha * hy, sol.va]
+                } else {
+                    [-sol.hf * hx, -sol.hf * hy, -sol.vf]
+                }
+            }
+            SeedShape::Straight => [0.0; 3],
+        }
+    }
 }
 
 /// The closed form of a line resting on its flat seabed (docs/method.md
@@ -185,7 +257,7 @@ fn resting_shape(model: &Model, line: CatenaryLine, a: [f64; 3], b: [f64; 3]) ->
 }
 
 /// A line resting on the bed, as [`resting_shape`] solves it.
-struct Resting {
+pub(super) struct Resting {
     solution: TouchdownSolution,
     low: [f64; 3],
     horizontal: [f64; 2],

@@ -36,6 +36,10 @@ use std::ops::ControlFlow;
 pub struct SystemStatics {
     equations: SystemEquations,
     newton: StaticNewton<BorderedLu>,
+    settings: StaticSettings,
+    /// Seeds to start over from if the path fails (see
+    /// [`SystemStatics::seeded`]).
+    fallback: Option<Vec<State>>,
 }
 
 /// The equations of a system's equilibrium on the homotopy path (M32).
@@ -136,8 +140,38 @@ impl SystemStatics {
         equations.converged(&x);
         let lu = BorderedLu::new(&equations.layout.shapes, equations.layout.border);
         let jacobian = BorderedMatrix::new(&equations.layout.shapes, equations.layout.border);
-        let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings);
-        Ok(SystemStatics { equations, newton })
+        let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings.clone());
+        Ok(SystemStatics {
+            equations,
+            newton,
+            settings,
+            fallback: None,
+        })
+    }
+
+    /// The static solve of `system` from the seed of §11.6: the lines'
+    /// catenaries of `seed_system` (the system itself in air, its lines
+    /// under their wet weight in water) with the free points at the
+    /// catenary network's equilibrium (M32a, [`super::static_seed_states`]);
+    /// if that path fails, [`SystemStatics::solve`] starts over once from
+    /// the free points where the scenario puts them
+    /// ([`super::catenary_states`]). Measured: the network's start takes
+    /// the bridle to its equilibrium from fairlead positions where the
+    /// scenario's start stalls or ends on a rope folded in compression;
+    /// the lazy-wave example's path from it turns back at t = 0.286 and
+    /// the scenario's start reaches the equilibrium.
+    pub fn seeded(
+        system: System,
+        seed_system: &System,
+        settings: StaticSettings,
+    ) -> Result<Self, ModelError> {
+        let balanced = super::static_seed_states(seed_system);
+        let given = super::catenary_states(seed_system);
+        let mut statics = SystemStatics::new(system, balanced.clone(), settings)?;
+        if given != balanced {
+            statics.fallback = Some(given);
+        }
+        Ok(statics)
     }
 
     pub fn system(&self) -> &System {
@@ -193,17 +227,37 @@ impl SystemStatics {
 
     /// Follows the path (M32) in `load_steps` increments, calling
     /// `observer` after each converged one (see
-    /// [`crate::StaticSolver::solve`]).
+    /// [`crate::StaticSolver::solve`]). A solve built by
+    /// [`SystemStatics::seeded`] whose path fails starts over once from
+    /// its fallback seed (the observer sees both paths' increments); the
+    /// error is the last path's.
     pub fn solve<F>(&mut self, mut observer: F) -> Result<bool, SolverError>
     where
         F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
     {
-        while let Some(inc) = self.newton.advance(&mut self.equations)? {
-            if observer(self, &inc).is_break() {
-                return Ok(false);
+        loop {
+            match self.newton.advance(&mut self.equations) {
+                Ok(Some(inc)) => {
+                    if observer(self, &inc).is_break() {
+                        return Ok(false);
+                    }
+                }
+                Ok(None) => return Ok(true),
+                Err(e) => {
+                    let Some(seeds) = self.fallback.take() else {
+                        return Err(e);
+                    };
+                    let system = self.equations.system.clone();
+                    // The system was accepted with the first seeds; the
+                    // fallback has the same lines, so this cannot fail.
+                    let Ok(restart) = SystemStatics::new(system, seeds, self.settings.clone())
+                    else {
+                        return Err(e);
+                    };
+                    *self = restart;
+                }
             }
         }
-        Ok(true)
     }
 }
 
