@@ -49,7 +49,8 @@ def surge(deck=DECK, duration=40.0, interval=INTERVAL):
         xd[0::3] = vx
         f = sim.step_to(t, x, xd).reshape(-1, 3)
         times.append(t)
-        tensions.append(np.sqrt((f * f).sum(axis=1)))
+        # |f| in the C example's order of operations (the same bits).
+        tensions.append([math.sqrt(fx * fx + fy * fy + fz * fz) for fx, fy, fz in f])
     return np.array(times), np.array(tensions)
 
 

@@ -1,0 +1,135 @@
+/*
+ * stancf.h: the C library of stancf's coupling API (libstancf_c).
+ *
+ * A system of cable lines (a TOML system scenario or a MoorDyn v2 deck)
+ * stepped by a code that moves its coupled points (fairleads) and takes
+ * back the lines' forces on them, in memory. The calls mirror MoorDyn's C
+ * API argument for argument (MoorDyn_Create, MoorDyn_NCoupledDOF,
+ * MoorDyn_Init, MoorDyn_Step, MoorDyn_Close). See docs/interface.md
+ * ("C library") and docs/method.md section 13.
+ *
+ * Units: m, s, N. The coupling arrays hold 3 values per coupled point
+ * (x, y, z), the points in the order of their ids (stancf_coupled_ids).
+ * Every call returns STANCF_SUCCESS (0) or an error code, and keeps its
+ * message for stancf_error_message() (per thread); none aborts or unwinds
+ * into the caller. One handle is used by one thread at a time; separate
+ * handles may step in separate threads.
+ *
+ * Build: cargo build --release --workspace  (target/release/libstancf_c.so)
+ * Link:  cc prog.c -I crates/stancf-capi/include -L target/release -lstancf_c
+ */
+#ifndef STANCF_H
+#define STANCF_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Return codes (MoorDyn's values where they mean the same). */
+#define STANCF_SUCCESS 0
+/* The scenario or deck cannot be read or is not valid. */
+#define STANCF_INVALID_INPUT_FILE -1
+/* A call that cannot be made: NULL handle or pointer, no such line, node
+   or point, a step before stancf_init, *t not the time reached. */
+#define STANCF_INVALID_INPUT -3
+/* The solver did not converge (the message gives time, step and
+   residual); the system stays at its last converged step. */
+#define STANCF_NUMERICAL_ERROR -4
+/* A refused value: a wrong number of coupled DOFs, a value not finite. */
+#define STANCF_INVALID_VALUE -6
+/* An internal error caught at the boundary (please report it). */
+#define STANCF_UNHANDLED_ERROR -255
+
+/* A coupled system and a saved state of one (opaque). */
+typedef struct StancfSystem StancfSystem;
+typedef struct StancfState StancfState;
+
+/* Opens the system scenario or MoorDyn v2 deck at path; NULL on error
+   (the message names the file and the key or line). Writes no file. */
+StancfSystem *stancf_create(const char *path);
+
+/* Frees the system; s is not used again. */
+int stancf_close(StancfSystem *s);
+
+/* *n = the number of coupled degrees of freedom, 3 per coupled point. */
+int stancf_ncoupled_dof(StancfSystem *s, unsigned int *n);
+
+/* ids[k] = the id of coupled point k (ncoupled_dof / 3 values). */
+int stancf_coupled_ids(StancfSystem *s, int64_t *ids);
+
+/* x = the coupled points' positions as the scenario or deck places them
+   (ncoupled_dof values): a start for stancf_init. */
+int stancf_coupled_positions(StancfSystem *s, double *x);
+
+/* Solves the static equilibrium with the coupled points at x (their
+   velocities xd, or NULL) and starts at t = 0. Reads ncoupled_dof values
+   from each array; writes nothing. May be called again to start over. */
+int stancf_init(StancfSystem *s, const double *x, const double *xd);
+
+/* stancf_init with the arrays' length n: STANCF_INVALID_VALUE unless n is
+   ncoupled_dof. */
+int stancf_init_n(StancfSystem *s, unsigned int n, const double *x, const double *xd);
+
+/* Advances from *t (the time reached) to *t + *dt with the coupled points
+   moving to x (cubically when this call and the last gave velocities xd,
+   else linearly; xd may be NULL); f = the lines' force on each coupled
+   point (the mean over the last internal step); then *t += *dt. The
+   interval is split into the fewest equal steps no longer than the
+   scenario's time step. */
+int stancf_step(StancfSystem *s, const double *x, const double *xd, double *f, double *t,
+                double *dt);
+
+/* stancf_step with the arrays' length n: STANCF_INVALID_VALUE unless n is
+   ncoupled_dof. */
+int stancf_step_n(StancfSystem *s, unsigned int n, const double *x, const double *xd, double *f,
+                  double *t, double *dt);
+
+/* f = the mean force over the last stancf_step's whole interval (its
+   impulse over its length; ncoupled_dof values). */
+int stancf_interval_mean_force(StancfSystem *s, double *f);
+
+/* *t = the time reached (0 before stancf_init). */
+int stancf_time(StancfSystem *s, double *t);
+
+/* The whole state (NULL on error): stancf_restore brings it back and
+   stepping on gives the same bits. Free it with stancf_free_state. */
+StancfState *stancf_save(StancfSystem *s);
+int stancf_restore(StancfSystem *s, const StancfState *state);
+int stancf_free_state(StancfState *state);
+
+/* Lines, numbered from 0 in the scenario's order; their ids. */
+int stancf_nlines(StancfSystem *s, unsigned int *n);
+int stancf_line_id(StancfSystem *s, unsigned int line, int64_t *id);
+int stancf_line_nnodes(StancfSystem *s, unsigned int line, unsigned int *n);
+
+/* Node values at the time reached (after stancf_init): position (m, 3),
+   velocity (m/s, 3), axial force EA eps (N, a scalar, where MoorDyn's
+   MoorDyn_GetLineNodeTen gives a vector) and curvature (1/m). */
+int stancf_line_node_pos(StancfSystem *s, unsigned int line, unsigned int node, double *pos);
+int stancf_line_node_vel(StancfSystem *s, unsigned int line, unsigned int node, double *vel);
+int stancf_line_node_ten(StancfSystem *s, unsigned int line, unsigned int node, double *ten);
+int stancf_line_node_curv(StancfSystem *s, unsigned int line, unsigned int node, double *curv);
+
+/* A whole line at once: 3 positions per node, or one axial force per
+   node. */
+int stancf_line_positions(StancfSystem *s, unsigned int line, double *pos);
+int stancf_line_tensions(StancfSystem *s, unsigned int line, double *ten);
+
+/* Points (fixed, coupled and free), numbered from 0 in the scenario's
+   order; their ids; position (m), velocity (m/s) and the net force of
+   their lines (N), 3 values each, any of the three NULL to skip it. */
+int stancf_npoints(StancfSystem *s, unsigned int *n);
+int stancf_point_id(StancfSystem *s, unsigned int point, int64_t *id);
+int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double *vel,
+                       double *force);
+
+/* The message of this thread's last failed call ("" before any). */
+const char *stancf_error_message(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* STANCF_H */

@@ -1,0 +1,357 @@
+//! `libstancf_c`: the coupling API (docs/method.md §13) for C, Fortran
+//! and every language that calls C, argument for argument as MoorDyn's
+//! C API (`MoorDyn_Create`, `MoorDyn_NCoupledDOF`, `MoorDyn_Init`,
+//! `MoorDyn_Step`, `MoorDyn_Close`), so that a code coupled to MoorDyn
+//! can switch with little change. The header is `include/stancf.h`;
+//! docs/interface.md ("C library") is the contract.
+//!
+//! A thin shell: the handle is `stancf_cli::coupling::open`'s
+//! [`stancf::coupling::CoupledSystem`], the same code as Rust's and
+//! Python's `stancf.Simulation`. Every function returns a code (0 is
+//! success, [`error`] lists the others) and keeps its message for
+//! `stancf_error_message`; none unwinds into C.
+
+pub mod args;
+pub mod error;
+pub mod lines;
+
+pub use lines::*;
+
+use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT_FILE};
+use stancf::coupling::{CoupledForces, CoupledState};
+use stancf_cli::coupling::Coupled;
+use std::ffi::{c_char, c_int, c_uint, CStr};
+use std::path::PathBuf;
+
+/// A coupled system (opaque to C): the handle and the forces of its last
+/// step.
+pub struct StancfSystem {
+    coupled: Coupled,
+    last: Option<CoupledForces>,
+}
+
+/// A saved state of a system (opaque to C), from `stancf_save`.
+pub struct StancfState(CoupledState);
+
+/// The path of a C string.
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string.
+unsafe fn path_of(path: *const c_char) -> Result<PathBuf, Error> {
+    if path.is_null() {
+        return Err(Error::new(STANCF_INVALID_INPUT_FILE, "the path is NULL"));
+    }
+    let bytes = CStr::from_ptr(path).to_bytes();
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        Ok(PathBuf::from(std::ffi::OsStr::from_bytes(bytes)))
+    }
+    #[cfg(not(unix))]
+    {
+        std::str::from_utf8(bytes)
+            .map(PathBuf::from)
+            .map_err(|_| Error::new(STANCF_INVALID_INPUT_FILE, "the path is not UTF-8"))
+    }
+}
+
+/// Opens the system scenario or MoorDyn v2 deck at `path`
+/// (`MoorDyn_Create`): NULL if it cannot be read or is not valid, with
+/// the reason, naming the file and the key or line, in
+/// `stancf_error_message()`. Nothing is written to disk.
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_create(path: *const c_char) -> *mut StancfSystem {
+    guard_ptr(|| {
+        let path = path_of(path)?;
+        let coupled = stancf_cli::coupling::open(&path)
+            .map_err(|e| Error::new(STANCF_INVALID_INPUT_FILE, e.to_string()))?;
+        Ok(Box::into_raw(Box::new(StancfSystem {
+            coupled,
+            last: None,
+        })))
+    })
+}
+
+/// Frees a system (`MoorDyn_Close`). NULL is refused with
+/// `STANCF_INVALID_INPUT` (nothing to free).
+///
+/// # Safety
+/// `s` is NULL or a handle from `stancf_create` not yet closed; it is
+/// not used again.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_close(s: *mut StancfSystem) -> c_int {
+    guard(|| {
+        if s.is_null() {
+            return Err(Error::input("the system handle is NULL"));
+        }
+        drop(Box::from_raw(s));
+        Ok(())
+    })
+}
+
+/// The number of coupled degrees of freedom, 3 per coupled point
+/// (`MoorDyn_NCoupledDOF`).
+///
+/// # Safety
+/// `s` is a live handle or NULL; `n` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_ncoupled_dof(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        *args::place(n, "n")? = sys.coupled.handle.coupled_dof() as c_uint;
+        Ok(())
+    })
+}
+
+/// The coupled points' ids, in the order of the coupling arrays
+/// (`ncoupled_dof / 3` values).
+///
+/// # Safety
+/// `s` is a live handle or NULL; `ids` is NULL or has room for
+/// `ncoupled_dof / 3` values.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        let known = &sys.coupled.coupled_ids;
+        if ids.is_null() {
+            return Err(Error::input("ids is NULL"));
+        }
+        std::slice::from_raw_parts_mut(ids, known.len()).copy_from_slice(known);
+        Ok(())
+    })
+}
+
+/// The coupled points' positions where the scenario or deck puts them
+/// (m; `ncoupled_dof` values): the start a coupling code may give
+/// `stancf_init`.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `x` is NULL or has room for
+/// `ncoupled_dof` values.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_coupled_positions(s: *mut StancfSystem, x: *mut f64) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        let h = &sys.coupled.handle;
+        let out = args::room(x, h.coupled_dof(), "x")?;
+        for (k, &p) in h.coupled_points().iter().enumerate() {
+            out[3 * k..3 * k + 3].copy_from_slice(&h.system().points()[p].position);
+        }
+        Ok(())
+    })
+}
+
+/// Solves the static equilibrium with the coupled points at `x` and
+/// starts the system at t = 0 (`MoorDyn_Init`); `xd` (may be NULL) their
+/// velocities. Reads `ncoupled_dof` values from each; writes nothing
+/// back. Call again to start over.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold
+/// `ncoupled_dof` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_init(s: *mut StancfSystem, x: *const f64, xd: *const f64) -> c_int {
+    guard(|| {
+        let n = args::system(s)?.coupled.handle.coupled_dof();
+        init(s, n, x, xd)
+    })
+}
+
+/// `stancf_init` with the arrays' length `n`, refused with
+/// `STANCF_INVALID_VALUE` unless it is `ncoupled_dof`.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold `n`
+/// doubles.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_init_n(
+    s: *mut StancfSystem,
+    n: c_uint,
+    x: *const f64,
+    xd: *const f64,
+) -> c_int {
+    guard(|| init(s, n as usize, x, xd))
+}
+
+unsafe fn init(s: *mut StancfSystem, n: usize, x: *const f64, xd: *const f64) -> Result<(), Error> {
+    let sys = args::system(s)?;
+    let x = args::values(x, n, "x")?;
+    let xd = args::optional_values(xd, n);
+    sys.coupled.handle.initialize(x, xd)?;
+    sys.last = None;
+    Ok(())
+}
+
+/// Advances from `*t`, the time reached, to `*t + *dt` with the coupled
+/// points moving to `x` (cubically in time when this call and the last
+/// gave velocities `xd`, else linearly; `xd` may be NULL), and writes
+/// into `f` the force of the lines on each coupled point (N; the mean
+/// over the interval's last step), then `*t += *dt` (`MoorDyn_Step`).
+/// The interval is split into the fewest equal steps no longer than the
+/// scenario's time step. A `*t` that is not the time reached is refused.
+/// On `STANCF_NUMERICAL_ERROR` the system stays at its last converged
+/// step and `*t` is unchanged.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold and `f`
+/// has room for `ncoupled_dof` doubles; `t` and `dt` are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_step(
+    s: *mut StancfSystem,
+    x: *const f64,
+    xd: *const f64,
+    f: *mut f64,
+    t: *mut f64,
+    dt: *mut f64,
+) -> c_int {
+    guard(|| {
+        let n = args::system(s)?.coupled.handle.coupled_dof();
+        step(s, n, (x, xd, f), t, dt)
+    })
+}
+
+/// `stancf_step` with the arrays' length `n`, refused with
+/// `STANCF_INVALID_VALUE` unless it is `ncoupled_dof`.
+///
+/// # Safety
+/// As `stancf_step`, with `n` doubles in each array.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_step_n(
+    s: *mut StancfSystem,
+    n: c_uint,
+    x: *const f64,
+    xd: *const f64,
+    f: *mut f64,
+    t: *mut f64,
+    dt: *mut f64,
+) -> c_int {
+    guard(|| step(s, n as usize, (x, xd, f), t, dt))
+}
+
+type Arrays = (*const f64, *const f64, *mut f64);
+
+unsafe fn step(
+    s: *mut StancfSystem,
+    n: usize,
+    (x, xd, f): Arrays,
+    t: *mut f64,
+    dt: *mut f64,
+) -> Result<(), Error> {
+    let sys = args::system(s)?;
+    let x = args::values(x, n, "x")?;
+    let xd = args::optional_values(xd, n);
+    let f = args::room(f, n, "f")?;
+    let t = args::place(t, "t")?;
+    let dt = *args::place(dt, "dt")?;
+    let h = &mut sys.coupled.handle;
+    if h.simulation().is_none() {
+        return Err(Error::input("stancf_step before stancf_init"));
+    }
+    let reached = h.time();
+    if (*t - reached).abs() > 1e-9 * reached.abs().max(1.0) {
+        return Err(Error::input(format!(
+            "t = {} s is not the time reached, {reached} s",
+            *t
+        )));
+    }
+    // step_to refuses arrays of another length than ncoupled_dof.
+    let forces = h.step_to(*t + dt, x, xd)?;
+    f.copy_from_slice(&forces.last_step);
+    sys.last = Some(forces);
+    *t += dt;
+    Ok(())
+}
+
+/// The mean force of the last `stancf_step` over its whole interval, its
+/// impulse over its length (docs/method.md (K3); `ncoupled_dof` values).
+/// Refused before the first step.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `f` is NULL or has room for
+/// `ncoupled_dof` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_interval_mean_force(s: *mut StancfSystem, f: *mut f64) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        let last = sys
+            .last
+            .as_ref()
+            .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
+        args::room(f, last.interval_mean.len(), "f")?.copy_from_slice(&last.interval_mean);
+        Ok(())
+    })
+}
+
+/// The time reached (s; 0 before `stancf_init`).
+///
+/// # Safety
+/// `s` is a live handle or NULL; `t` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_time(s: *mut StancfSystem, t: *mut f64) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        *args::place(t, "t")? = sys.coupled.handle.time();
+        Ok(())
+    })
+}
+
+/// The whole state of a system (docs/method.md §13.4): `stancf_restore`
+/// brings it back and stepping on gives the same bits. NULL on error.
+/// Free it with `stancf_free_state`.
+///
+/// # Safety
+/// `s` is a live handle or NULL.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_save(s: *mut StancfSystem) -> *mut StancfState {
+    guard_ptr(|| {
+        let sys = args::system(s)?;
+        Ok(Box::into_raw(Box::new(StancfState(
+            sys.coupled.handle.save(),
+        ))))
+    })
+}
+
+/// Brings back a state saved from the same system.
+///
+/// # Safety
+/// `s` is a live handle or NULL; `state` is NULL or from `stancf_save`
+/// of this system, not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_restore(s: *mut StancfSystem, state: *const StancfState) -> c_int {
+    guard(|| {
+        let sys = args::system(s)?;
+        let state = state
+            .as_ref()
+            .ok_or_else(|| Error::input("the state is NULL"))?;
+        sys.coupled.handle.restore(&state.0);
+        sys.last = None;
+        Ok(())
+    })
+}
+
+/// Frees a state from `stancf_save`.
+///
+/// # Safety
+/// `state` is NULL or from `stancf_save`, not yet freed; it is not used
+/// again.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_free_state(state: *mut StancfState) -> c_int {
+    guard(|| {
+        if state.is_null() {
+            return Err(Error::input("the state is NULL"));
+        }
+        drop(Box::from_raw(state));
+        Ok(())
+    })
+}
+
+/// The message of this thread's last failed call ("" before any): valid
+/// until its next failed call.
+#[no_mangle]
+pub extern "C" fn stancf_error_message() -> *const c_char {
+    error::message_ptr()
+}

@@ -1,0 +1,110 @@
+//! Helpers of the C library's tests: files of the repository, C strings,
+//! the built library and the system C compiler.
+#![allow(dead_code)]
+
+use stancf_c::*;
+use std::ffi::{CStr, CString};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// A file of the repository.
+pub fn repo(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(path)
+}
+
+pub fn cstring(path: &Path) -> CString {
+    CString::new(path.to_str().unwrap()).unwrap()
+}
+
+/// This thread's last error message.
+pub fn message() -> String {
+    unsafe { CStr::from_ptr(stancf_error_message()) }
+        .to_str()
+        .unwrap()
+        .to_string()
+}
+
+/// examples/bridle.toml opened: one coupled point (id 2 at (6, 0, 1)).
+pub fn bridle() -> *mut StancfSystem {
+    let s = unsafe { stancf_create(cstring(&repo("examples/bridle.toml")).as_ptr()) };
+    assert!(!s.is_null(), "{}", message());
+    s
+}
+
+/// Where the fairlead of the bridle swings: 0.2 m along x over 1 s,
+/// a little along y and z.
+pub fn swing(t: f64) -> ([f64; 3], [f64; 3]) {
+    let w = 2.0 * std::f64::consts::PI;
+    let a = [0.2, 0.1, 0.05];
+    (
+        [
+            6.0 + a[0] * (w * t).sin(),
+            a[1] * (w * t).sin(),
+            1.0 + a[2] * (w * t).sin(),
+        ],
+        [
+            a[0] * w * (w * t).cos(),
+            a[1] * w * (w * t).cos(),
+            a[2] * w * (w * t).cos(),
+        ],
+    )
+}
+
+/// The folder of the built `libstancf_c.so`: beside the test executable
+/// (target/<profile>/deps) or one up (target/<profile>).
+pub fn library_dir() -> PathBuf {
+    let exe = std::env::current_exe().unwrap();
+    let deps = exe.parent().unwrap().to_path_buf();
+    for dir in [deps.clone(), deps.parent().unwrap().to_path_buf()] {
+        if dir.join("libstancf_c.so").exists() {
+            return dir;
+        }
+    }
+    panic!(
+        "libstancf_c.so is neither in {} nor one folder up",
+        deps.display()
+    );
+}
+
+/// Compiles C `source` against the header and the library into `exe`
+/// with the system C compiler (`cc`, or `$CC`), warnings as errors.
+pub fn compile(source: &Path, exe: &Path, standard: &str) {
+    let lib = library_dir();
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
+    let out = Command::new(cc)
+        .args([
+            "-O1",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            &format!("-std={standard}"),
+        ])
+        .arg("-I")
+        .arg(repo("crates/stancf-capi/include"))
+        .arg(source)
+        .arg("-L")
+        .arg(&lib)
+        .arg("-lstancf_c")
+        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .arg("-lm")
+        .arg("-o")
+        .arg(exe)
+        .output()
+        .expect("the system C compiler runs");
+    assert!(
+        out.status.success(),
+        "{} does not compile: {}",
+        source.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// A fresh folder for a test's files.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("stancf-capi-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}

@@ -1,0 +1,136 @@
+//! Errors come back as codes with a message, and the process and the
+//! handle go on (docs/interface.md, "C library").
+
+mod common;
+
+use common::{bridle, cstring, message, repo, scratch};
+use stancf_c::error::*;
+use stancf_c::*;
+use std::ptr::{null, null_mut};
+
+#[test]
+fn a_bad_file_is_null_with_a_message_naming_it() {
+    let missing = repo("examples/no-such-file.toml");
+    let s = unsafe { stancf_create(cstring(&missing).as_ptr()) };
+    assert!(s.is_null());
+    assert!(message().contains("no-such-file.toml"), "{}", message());
+
+    let dir = scratch("bad-file");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "[system]\ngravity = [0.0, 0.0]\n[[points]]\nid = 1\n").unwrap();
+    let s = unsafe { stancf_create(cstring(&bad).as_ptr()) };
+    assert!(s.is_null());
+    assert!(message().contains("bad.toml"), "{}", message());
+    // A single cable has no coupled points.
+    let s = unsafe { stancf_create(cstring(&repo("examples/pendulum.toml")).as_ptr()) };
+    assert!(s.is_null());
+    assert!(message().contains("single cable"), "{}", message());
+    assert!(unsafe { stancf_create(null()) }.is_null());
+}
+
+#[test]
+fn wrong_dof_counts_null_pointers_and_bad_calls_return_codes_and_the_handle_goes_on() {
+    let s = bridle();
+    let mut n = 0u32;
+    assert_eq!(unsafe { stancf_ncoupled_dof(s, &mut n) }, STANCF_SUCCESS);
+    assert_eq!(n, 3);
+    let x = [6.0, 0.0, 1.0, 0.0];
+    let (mut f, mut t, mut dt) = ([0.0; 4], 0.0, 1e-3);
+    // A step before stancf_init.
+    let code = unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
+    assert_eq!(code, STANCF_INVALID_INPUT);
+    assert!(message().contains("before stancf_init"), "{}", message());
+    // Four values where the system has three.
+    let code = unsafe { stancf_init_n(s, 4, x.as_ptr(), null()) };
+    assert_eq!(code, STANCF_INVALID_VALUE);
+    assert!(message().contains("expected 3 values"), "{}", message());
+    let nan = [6.0, f64::NAN, 1.0];
+    assert_eq!(
+        unsafe { stancf_init(s, nan.as_ptr(), null()) },
+        STANCF_INVALID_VALUE
+    );
+    assert!(message().contains("x[1]"), "{}", message());
+    assert_eq!(
+        unsafe { stancf_init(s, null(), null()) },
+        STANCF_INVALID_INPUT
+    );
+    assert!(message().contains("x is NULL"), "{}", message());
+    assert_eq!(
+        unsafe { stancf_ncoupled_dof(null_mut(), &mut n) },
+        STANCF_INVALID_INPUT
+    );
+    assert!(message().contains("handle is NULL"), "{}", message());
+
+    // The handle still works.
+    assert_eq!(
+        unsafe { stancf_init(s, x.as_ptr(), null()) },
+        STANCF_SUCCESS
+    );
+    let code = unsafe { stancf_step_n(s, 4, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
+    assert_eq!(code, STANCF_INVALID_VALUE);
+    assert_eq!(t, 0.0);
+    // A *t that is not the time reached.
+    let mut wrong = 0.5;
+    let code = unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut wrong, &mut dt) };
+    assert_eq!(code, STANCF_INVALID_INPUT);
+    assert!(message().contains("not the time reached"), "{}", message());
+    let code = unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
+    assert_eq!(code, STANCF_SUCCESS, "{}", message());
+    assert_eq!(t, 1e-3);
+    assert!(f[..3].iter().all(|v| v.is_finite()) && f[2] < 0.0);
+    let mut p = [0.0; 3];
+    assert_eq!(
+        unsafe { stancf_line_node_pos(s, 5, 0, p.as_mut_ptr()) },
+        STANCF_INVALID_INPUT
+    );
+    assert!(message().contains("no line 5"), "{}", message());
+    assert_eq!(
+        unsafe { stancf_line_node_pos(s, 0, 99, p.as_mut_ptr()) },
+        STANCF_INVALID_INPUT
+    );
+    assert!(message().contains("no node 99"), "{}", message());
+    assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
+    assert_eq!(unsafe { stancf_close(null_mut()) }, STANCF_INVALID_INPUT);
+}
+
+/// A jump of the fairlead by 1000 km in one step (the scenario's,
+/// 0.15 ms): Newton stalls at round-off of the huge coordinates; the code says so with time, step
+/// and residual, and the system stays at its last converged step.
+#[test]
+fn a_diverging_step_returns_a_numerical_error_and_keeps_the_last_step() {
+    let s = bridle();
+    let x = [6.0, 0.0, 1.0];
+    let (mut f, mut t, mut dt) = ([0.0; 3], 0.0, 1.5e-4);
+    assert_eq!(
+        unsafe { stancf_init(s, x.as_ptr(), null()) },
+        STANCF_SUCCESS
+    );
+    assert_eq!(
+        unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) },
+        STANCF_SUCCESS
+    );
+    let far = [1e6; 3];
+    let code = unsafe { stancf_step(s, far.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
+    assert_eq!(code, STANCF_NUMERICAL_ERROR);
+    let m = message();
+    assert!(
+        m.contains("did not converge") && m.contains("residual"),
+        "{m}"
+    );
+    assert_eq!(t, 1.5e-4);
+    let mut reached = -1.0;
+    assert_eq!(unsafe { stancf_time(s, &mut reached) }, STANCF_SUCCESS);
+    assert_eq!(reached, 1.5e-4);
+    let mut nodes = 0u32;
+    assert_eq!(
+        unsafe { stancf_line_nnodes(s, 0, &mut nodes) },
+        STANCF_SUCCESS
+    );
+    let mut pos = vec![0.0; 3 * nodes as usize];
+    assert_eq!(
+        unsafe { stancf_line_positions(s, 0, pos.as_mut_ptr()) },
+        STANCF_SUCCESS
+    );
+    assert!(pos.iter().all(|v| v.is_finite()));
+    assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
+}
