@@ -111,6 +111,7 @@ fn main() -> ExitCode {
                 allow_large,
                 cancel: Some(signals::cancel()),
                 shown_as: None,
+                collect: None,
             },
         ),
         Command::Plot { dir } => run::plot(&dir),

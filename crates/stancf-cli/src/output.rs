@@ -4,47 +4,127 @@
 //! complete (a rename within a directory is atomic on POSIX systems).
 
 pub use crate::result_folder::ResultFolder;
+use std::collections::BTreeMap;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 /// A file that appears under its final name only on [`AtomicFile::commit`].
 pub struct AtomicFile {
     path: PathBuf,
     partial: PathBuf,
-    writer: BufWriter<File>,
+    writer: Sink,
+    /// Where the copy goes on commit, under the file's name in the run's
+    /// folder.
+    collect: Option<(Collector, String)>,
+}
+
+/// The bytes of a result file on their way to disk and, when its run
+/// collects its results (see [`Collector`]), into a copy in memory: the
+/// same bytes, formatted once.
+pub struct Sink {
+    file: BufWriter<File>,
+    copy: Option<Vec<u8>>,
+}
+
+impl Write for Sink {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        self.file.write_all(buf)?;
+        if let Some(copy) = &mut self.copy {
+            copy.extend_from_slice(buf);
+        }
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.file.flush()
+    }
 }
 
 impl AtomicFile {
     pub fn create(dir: &Path, name: &str) -> io::Result<Self> {
-        let path = dir.join(name);
-        let partial = dir.join(format!("{name}.partial"));
+        Self::create_in(Dest { dir, collect: None }, name)
+    }
+
+    /// A file of `dest` (its copy kept when `dest` collects).
+    pub fn create_in(dest: Dest, name: &str) -> io::Result<Self> {
+        let path = dest.dir.join(name);
+        let partial = dest.dir.join(format!("{name}.partial"));
         let file = File::create(&partial)?;
         Ok(AtomicFile {
             path,
             partial,
-            writer: BufWriter::with_capacity(1 << 16, file),
+            writer: Sink {
+                file: BufWriter::with_capacity(1 << 16, file),
+                copy: dest.collect.map(|_| Vec::new()),
+            },
+            collect: dest.collect.map(|c| (c.clone(), name.to_string())),
         })
     }
 
-    pub fn writer(&mut self) -> &mut BufWriter<File> {
+    pub fn writer(&mut self) -> &mut Sink {
         &mut self.writer
     }
 
-    /// Flushes, syncs and renames the file into place.
+    /// Flushes, syncs and renames the file into place (and hands its
+    /// copy to the collector).
     pub fn commit(self) -> io::Result<()> {
-        let file = self.writer.into_inner().map_err(|e| e.into_error())?;
+        let file = self.writer.file.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
         drop(file);
-        std::fs::rename(&self.partial, &self.path)
+        std::fs::rename(&self.partial, &self.path)?;
+        if let (Some((collector, name)), Some(copy)) = (self.collect, self.writer.copy) {
+            collector.keep(name, copy);
+        }
+        Ok(())
     }
 }
 
 /// Writes `contents` to `dir/name` atomically.
 pub fn write_atomic(dir: &Path, name: &str, contents: &[u8]) -> io::Result<()> {
-    let mut f = AtomicFile::create(dir, name)?;
-    f.writer().write_all(contents)?;
-    f.commit()
+    Dest { dir, collect: None }.write(name, contents)
+}
+
+/// The result files of a run kept in memory as they are written (`stancf.run`
+/// in Python takes its results from here: `RunOptions::collect`): the
+/// files' names in the run's folder (`lines/1/nodes.csv`) and their bytes,
+/// for the files committed so far (a run that stops early commits the
+/// rows up to its last converged step).
+#[derive(Clone, Debug, Default)]
+pub struct Collector(Arc<Mutex<BTreeMap<String, Vec<u8>>>>);
+
+impl Collector {
+    fn keep(&self, name: String, bytes: Vec<u8>) {
+        self.0.lock().expect("not poisoned").insert(name, bytes);
+    }
+
+    /// The files collected so far (the collector is left empty).
+    pub fn take(&self) -> BTreeMap<String, Vec<u8>> {
+        std::mem::take(&mut *self.0.lock().expect("not poisoned"))
+    }
+}
+
+/// Where a run writes: its folder, and the collector that keeps a copy of
+/// each file when the run collects its results.
+#[derive(Clone, Copy)]
+pub struct Dest<'a> {
+    pub dir: &'a Path,
+    pub collect: Option<&'a Collector>,
+}
+
+impl Dest<'_> {
+    /// A file of this destination ([`AtomicFile::create_in`]).
+    pub fn create(&self, name: &str) -> io::Result<AtomicFile> {
+        AtomicFile::create_in(*self, name)
+    }
+
+    /// Writes `contents` to the file `name` atomically.
+    pub fn write(&self, name: &str, contents: &[u8]) -> io::Result<()> {
+        let mut f = self.create(name)?;
+        f.writer().write_all(contents)?;
+        f.commit()
+    }
 }
 
 /// A number for a CSV file: the shortest text that reads back to the same

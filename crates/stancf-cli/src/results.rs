@@ -14,31 +14,13 @@ pub struct Table {
 
 impl Table {
     pub fn read(path: &Path) -> io::Result<Table> {
-        let text = TextTable::read(path)?;
-        let rows = text
-            .rows
-            .iter()
-            .enumerate()
-            .map(|(i, row)| {
-                row.iter()
-                    .map(|f| {
-                        if f.is_empty() {
-                            Ok(f64::NAN)
-                        } else {
-                            f.parse::<f64>().map_err(|e| {
-                                io::Error::new(
-                                    io::ErrorKind::InvalidData,
-                                    format!("{} row {}: {f:?}: {e}", path.display(), i + 2),
-                                )
-                            })
-                        }
-                    })
-                    .collect()
-            })
-            .collect::<io::Result<Vec<Vec<f64>>>>()?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let flat = FlatTable::parse(&text, &path.display().to_string())?;
+        let width = flat.header.len().max(1);
         Ok(Table {
-            header: text.header,
-            rows,
+            rows: flat.values.chunks(width).map(<[f64]>::to_vec).collect(),
+            header: flat.header,
         })
     }
 
@@ -60,6 +42,66 @@ impl Table {
     /// The values of a column.
     pub fn column(&self, c: usize) -> Vec<f64> {
         self.rows.iter().map(|r| r[c]).collect()
+    }
+}
+
+/// A numeric CSV result file parsed whole: its header, its row count and
+/// its values row after row. Blank lines are skipped; an empty field
+/// reads as NaN; every number is read correctly rounded (as Python's
+/// `float` reads it, so `stancf.run`'s arrays from memory are the files'
+/// to the bit).
+#[derive(Clone, Debug)]
+pub struct FlatTable {
+    pub header: Vec<String>,
+    pub rows: usize,
+    pub values: Vec<f64>,
+}
+
+impl FlatTable {
+    /// Parses `text`; `name` names it in errors (with the row).
+    pub fn parse(text: &str, name: &str) -> io::Result<FlatTable> {
+        let bad = |row: usize, what: String| {
+            io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("{name} row {row}: {what}"),
+            )
+        };
+        let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+        let header: Vec<String> = lines
+            .next()
+            .unwrap_or("")
+            .trim()
+            .split(',')
+            .map(|h| h.trim().to_string())
+            .collect();
+        let mut values = Vec::new();
+        let mut rows = 0;
+        for (i, line) in lines.enumerate() {
+            let start = values.len();
+            for field in line.trim().split(',') {
+                let field = field.trim();
+                values.push(if field.is_empty() {
+                    f64::NAN
+                } else {
+                    field
+                        .parse::<f64>()
+                        .map_err(|e| bad(i + 2, format!("{field:?}: {e}")))?
+                });
+            }
+            let fields = values.len() - start;
+            if fields != header.len() {
+                return Err(bad(
+                    i + 2,
+                    format!("{fields} fields, the header has {}", header.len()),
+                ));
+            }
+            rows += 1;
+        }
+        Ok(FlatTable {
+            header,
+            rows,
+            values,
+        })
     }
 }
 

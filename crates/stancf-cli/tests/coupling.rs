@@ -193,7 +193,7 @@ fn longer_coupling_intervals_differ_from_the_run_by_the_interpolation_error() {
         // The handle splits an interval into ceil(2.5) = 3 steps of
         // interval / 3: the run compared takes the same steps, so that the
         // motion is all that differs.
-        let steps = (steps_per_interval as f64).ceil() as usize;
+        let steps = steps_per_interval.ceil() as usize;
         let h_step = interval / steps as f64;
         let scenario = hanging_rope("galerkin", end, h_step);
         let run = run_forces(&format!("coupling_intervals_{steps}"), &scenario);

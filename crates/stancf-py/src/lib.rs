@@ -3,12 +3,14 @@
 //! result files; the Python side (`python/stancf/__init__.py`) reads the
 //! files into numpy arrays and runs sweeps on any executor.
 
+mod results;
 mod simulation;
 
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use stancf_cli::output::Collector;
 use stancf_cli::run::{run_text, Cancel, RunOptions};
 use stancf_cli::{scenario, sweep, Failure};
 use std::path::{Path, PathBuf};
@@ -118,12 +120,14 @@ fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<S
 }
 
 /// Runs scenario text into the folder `out` (its `scenario.toml` and the
-/// result files of docs/interface.md), with the GIL released. Ctrl-C stops
+/// result files of docs/interface.md), with the GIL released, and returns
+/// the files as they were written (see [`results::files`]; none unless
+/// `collect`). Ctrl-C stops
 /// the run after the current step (KeyboardInterrupt; the files up to it
-/// are kept); a solver failure raises RunFailed (the files up to the last
-/// converged step are kept).
+/// are kept); a solver failure raises RunFailed(message, files) (the
+/// files up to the last converged step are kept).
 #[pyfunction]
-#[pyo3(signature = (text, name, out, progress = false, allow_large = false))]
+#[pyo3(signature = (text, name, out, progress = false, allow_large = false, collect = true))]
 fn run(
     py: Python<'_>,
     text: &str,
@@ -131,7 +135,8 @@ fn run(
     out: PathBuf,
     progress: bool,
     allow_large: bool,
-) -> PyResult<()> {
+    collect: bool,
+) -> PyResult<Vec<results::File>> {
     // The run validates the text and writes it, as scenario.toml, with its
     // results into `out`, replaced whole (one transaction).
     // Python's signal handlers run only with the GIL: take it for a
@@ -145,18 +150,23 @@ fn run(
         *l = Instant::now();
         Python::with_gil(|py| py.check_signals().is_err())
     }));
+    let collector = Collector::default();
     let opts = RunOptions {
         out: Some(out.clone()),
         quiet: !progress,
         allow_large,
         cancel: Some(cancel),
+        collect: collect.then(|| collector.clone()),
         ..RunOptions::default()
     };
     let result = py.allow_threads(|| run_text(text, Path::new(name), opts));
     match result {
-        Ok(()) => Ok(()),
+        Ok(()) => Ok(results::files(py, collector.take())),
         Err(Failure::Input(m)) => Err(ScenarioError::new_err(m)),
-        Err(Failure::Solver(m)) => Err(RunFailed::new_err(m)),
+        Err(Failure::Solver(m)) => Err(RunFailed::new_err((
+            m,
+            results::files(py, collector.take()),
+        ))),
         Err(Failure::Interrupted(m)) => Err(PyKeyboardInterrupt::new_err(m)),
         Err(Failure::Other(m)) => Err(PyOSError::new_err(m)),
     }

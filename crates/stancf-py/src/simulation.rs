@@ -19,6 +19,10 @@ fn coupling_err(e: CouplingError) -> PyErr {
     }
 }
 
+/// A line's node positions, velocities (flat, 3 per node), axial forces
+/// and curvatures.
+type LineArrays = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
+
 /// The native coupled system (see `stancf.Simulation`).
 #[pyclass(module = "stancf._stancf", name = "Simulation")]
 pub struct PySimulation {
@@ -140,7 +144,7 @@ impl PySimulation {
 
     /// Line `index`'s (in the order of `line_ids`) node positions, node
     /// velocities (flat, 3 per node), axial forces and curvatures.
-    fn line_arrays(&self, index: usize) -> PyResult<(Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>)> {
+    fn line_arrays(&self, index: usize) -> PyResult<LineArrays> {
         let missing = || PyIndexError::new_err(format!("no line {index} (or not initialized)"));
         let flat = |v: Vec<[f64; 3]>| v.into_iter().flatten().collect::<Vec<f64>>();
         let h = &self.handle;

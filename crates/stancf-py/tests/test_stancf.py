@@ -132,6 +132,45 @@ def test_a_system_result_has_the_clis_lines_points_and_tensions(tmp_path):
     assert res.channels["AnchTen1"][-1] == a["tension"][-1]
 
 
+def assert_same_result(a, b):
+    """Every array and value of two Results equal to the bit (NaN equal
+    to NaN)."""
+    def same(x, y, where):
+        if isinstance(x, dict):
+            assert sorted(x, key=str) == sorted(y, key=str), where
+            for k in x:
+                same(x[k], y[k], "%s[%r]" % (where, k))
+        elif isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+            assert np.array_equal(x, y, equal_nan=True), where
+            assert np.asarray(x).dtype == np.asarray(y).dtype, where
+        elif hasattr(x, "__dict__") and not isinstance(x, type):
+            same(vars(x), vars(y), where)
+        else:
+            assert x == y, where
+    keep = ("t", "energy", "nodes", "slopes", "stress", "stress_s", "curvature",
+            "reactions", "reactions_t", "summary", "is_system", "lines", "points",
+            "tensions", "channels", "channels_t")
+    for name in keep:
+        same(getattr(a, name), getattr(b, name), name)
+
+
+def test_run_from_memory_equals_the_files_to_the_bit(tmp_path):
+    """stancf.run takes its arrays from the bytes the run wrote, kept in
+    memory: a single cable with reactions, a system with its tensions and
+    a MoorDyn deck with OUTPUTS channels give the Result that reading the
+    folder back gives, bit for bit."""
+    pendulum = stancf.Scenario(PENDULUM).with_values({"cable.elements": 12, "output.every": 1,
+                                                      "analysis.duration": 0.05})
+    bridle = stancf.Scenario.from_file(ROOT / "examples" / "bridle.toml").with_values(
+        {"analysis.duration": 0.03, "output.every": 1})
+    deck = stancf.Scenario.from_file(ROOT / "examples" / "midwater-bridle-moordyn.txt")
+    for k, sc in enumerate([pendulum, bridle, deck]):
+        res = stancf.run(sc, out=tmp_path / str(k))
+        assert res._keep is None
+        assert_same_result(res, stancf.Result.read(tmp_path / str(k)))
+    assert res.channels and res.tensions and pendulum and len(res.lines) == 2
+
+
 def test_from_dict_with_values_and_errors_name_the_key():
     sc = stancf.Scenario(IMPACT)
     d = {
@@ -168,6 +207,8 @@ def test_solver_failure_raises_with_the_partial_result():
     assert part.summary["converged"] is False
     assert len(part.t) == err.step  # t = 0 and every converged step before it
     assert np.all(np.isfinite(part.nodes))
+    # The partial result from memory is the partial files'.
+    assert_same_result(part, stancf.Result.read(part.directory))
 
 
 def test_ctrl_c_stops_a_run_cleanly(tmp_path):

@@ -38,7 +38,7 @@ pub(super) fn run_dynamic(
     sim.set_clock(Box::new(WallClock(Instant::now())));
     let constrained = !sim.model().constraints.is_empty();
     let damped = sim.model().has_axial_damping();
-    let mut writers = Writers::create(place.dir, constrained, true, opts.vtk, damped)
+    let mut writers = Writers::create(place.dest(), constrained, true, opts.vtk, damped)
         .map_err(io_err(place.shown))?;
     let e0 = sim.energies();
     let first = Row {
@@ -359,7 +359,7 @@ fn write_dynamic_summary(
         })),
         "interrupted": run.interrupted,
     });
-    write_summary(place.dir, summary, extra)
+    write_summary(place.dest(), summary, extra)
 }
 
 /// The failure of a run that was interrupted or that the solver could not

@@ -15,7 +15,7 @@ mod system;
 pub(crate) mod writers;
 
 use crate::check::{derive, load_text};
-use crate::output::{write_atomic, ResultFolder};
+use crate::output::{Collector, Dest, ResultFolder};
 use crate::scenario::{AnalysisKind, Input};
 use crate::Failure;
 use std::path::{Path, PathBuf};
@@ -53,6 +53,9 @@ pub struct RunOptions {
     /// The folder messages name when `out` is itself moved after the run
     /// (a sweep's runs live in the sweep's staging folder until it commits).
     pub shown_as: Option<PathBuf>,
+    /// Also keep every result file in memory as it is written, the same
+    /// bytes (Python's `stancf.run` takes its arrays from here).
+    pub collect: Option<Collector>,
 }
 
 impl RunOptions {
@@ -67,6 +70,18 @@ impl RunOptions {
 struct Place<'a> {
     dir: &'a Path,
     shown: &'a Path,
+    /// Keeps a copy of every file written (see [`RunOptions::collect`]).
+    collect: Option<&'a Collector>,
+}
+
+impl Place<'_> {
+    /// Where the run's files go.
+    fn dest(&self) -> Dest<'_> {
+        Dest {
+            dir: self.dir,
+            collect: self.collect,
+        }
+    }
 }
 
 /// A write error as the failure of a run whose results go to `dir`.
@@ -167,8 +182,12 @@ fn in_result_folder(
     let place = Place {
         dir: folder.staging(),
         shown: opts.shown_as.as_deref().unwrap_or(folder.target()),
+        collect: opts.collect.as_ref(),
     };
-    write_atomic(place.dir, "scenario.toml", text.as_bytes()).map_err(io_err(place.shown))?;
+    place
+        .dest()
+        .write("scenario.toml", text.as_bytes())
+        .map_err(io_err(place.shown))?;
     let result = body(&place);
     if let Err(Failure::Input(_) | Failure::Other(_)) = result {
         return result.map(|_| ());

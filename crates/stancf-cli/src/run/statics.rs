@@ -52,7 +52,7 @@ pub(super) fn run_static(
     let mut solver = StaticSolver::new(model, sc.static_settings())
         .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
     let mut writers =
-        Writers::create(place.dir, true, false, opts.vtk, false).map_err(io_err(place.shown))?;
+        Writers::create(place.dest(), true, false, opts.vtk, false).map_err(io_err(place.shown))?;
     let e0 = static_energies(solver.model(), solver.state());
     let first = Row {
         state: solver.state(),
@@ -192,7 +192,7 @@ fn write_static_summary(
         "error": error_json(run.interrupted, run.failure.as_ref()),
         "interrupted": run.interrupted,
     });
-    write_summary(place.dir, summary, extra)
+    write_summary(place.dest(), summary, extra)
 }
 
 /// The printed report of a static run that converged.

@@ -2,7 +2,7 @@
 //! fields of summary.json every analysis writes, and the printed report.
 
 use super::io_err;
-use crate::output::{json_num, write_atomic};
+use crate::output::{json_num, Dest};
 use crate::scenario::{AnalysisKind, Scenario};
 use crate::Failure;
 use serde_json::{json, Value};
@@ -118,7 +118,7 @@ pub(crate) fn grading_json(grading: stancf::Grading) -> Option<Value> {
 
 /// Writes summary.json: the common fields followed by `extra`'s.
 pub(super) fn write_summary(
-    dir: &Path,
+    dest: Dest,
     mut summary: serde_json::Map<String, Value>,
     extra: Value,
 ) -> Result<(), Failure> {
@@ -126,7 +126,8 @@ pub(super) fn write_summary(
         summary.extend(extra);
     }
     let text = serde_json::to_string_pretty(&Value::Object(summary)).expect("serializable") + "\n";
-    write_atomic(dir, "summary.json", text.as_bytes()).map_err(io_err(dir))
+    dest.write("summary.json", text.as_bytes())
+        .map_err(io_err(dest.dir))
 }
 
 /// summary.json's `error`: "interrupted", or the solver's failure if any.

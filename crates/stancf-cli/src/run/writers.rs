@@ -2,12 +2,11 @@
 //! nodes, stress, reactions, solver diagnostics and ParaView files, each
 //! written to its `.partial` name and committed when complete.
 
-use crate::output::{AtomicFile, Num};
+use crate::output::{AtomicFile, Dest, Num};
 use stancf::model::SLOT_R_X;
 use stancf::observe::{stress_samples, Energies, StressSample};
 use stancf::{Model, State};
 use std::io::Write;
-use std::path::Path;
 use std::time::Instant;
 
 /// Stress samples per element in stress.csv (ends included).
@@ -111,31 +110,28 @@ pub(crate) struct Row<'a> {
 
 impl Writers {
     pub(crate) fn create(
-        dir: &Path,
+        dest: Dest,
         with_reactions: bool,
         with_solver: bool,
         with_vtk: bool,
         with_damping: bool,
     ) -> std::io::Result<Self> {
         let mut w = Writers {
-            history: AtomicFile::create(dir, "history.csv")?,
-            nodes: AtomicFile::create(dir, "nodes.csv")?,
-            stress: AtomicFile::create(dir, "stress.csv")?,
+            history: dest.create("history.csv")?,
+            nodes: dest.create("nodes.csv")?,
+            stress: dest.create("stress.csv")?,
             reactions: if with_reactions {
-                Some(AtomicFile::create(dir, "reactions.csv")?)
+                Some(dest.create("reactions.csv")?)
             } else {
                 None
             },
             solver: if with_solver {
-                Some((
-                    AtomicFile::create(dir, "solver.csv")?,
-                    AtomicFile::create(dir, "convergence.csv")?,
-                ))
+                Some((dest.create("solver.csv")?, dest.create("convergence.csv")?))
             } else {
                 None
             },
             vtk: if with_vtk {
-                Some(crate::vtk::VtkWriter::create(dir)?)
+                Some(crate::vtk::VtkWriter::create(dest.dir)?)
             } else {
                 None
             },

@@ -15,6 +15,7 @@ Results are numpy arrays read from the files a run writes
 """
 
 import csv
+import io
 import itertools
 import json
 import os
@@ -96,11 +97,56 @@ class SolverError(RuntimeError):
 def _table(path):
     """A numeric CSV result file: (header, 2-D float array)."""
     with open(path) as f:
-        header = f.readline().strip().split(",")
-        rows = [[float(x) if x else np.nan for x in line.strip().split(",")]
-                for line in f if line.strip()]
+        return _parse_table(f)
+
+
+def _parse_table(lines):
+    """(header, 2-D float array) of a numeric CSV's lines (an empty field
+    is NaN)."""
+    lines = iter(lines)
+    header = next(lines, "").strip().split(",")
+    rows = [[float(x) if x else np.nan for x in line.strip().split(",")]
+            for line in lines if line.strip()]
     data = np.array(rows, dtype=float).reshape(len(rows), len(header))
     return header, data
+
+
+class _Folder:
+    """Result files in a folder (docs/interface.md)."""
+
+    def __init__(self, directory):
+        self.directory = Path(directory)
+
+    def exists(self, name):
+        return (self.directory / name).exists()
+
+    def table(self, name):
+        return _table(self.directory / name)
+
+    def text(self, name):
+        return (self.directory / name).read_text()
+
+
+class _Memory:
+    """The result files of a run as it wrote them, kept in memory: the same
+    bytes, numeric tables parsed in Rust (correctly rounded, as ``float``
+    parses them: the same numbers as :class:`_Folder`'s)."""
+
+    def __init__(self, files):
+        self.files = {name: (raw, table) for name, raw, table in files}
+
+    def exists(self, name):
+        return name in self.files
+
+    def table(self, name):
+        raw, table = self.files[name]
+        if table is None:
+            return _parse_table(raw.decode().splitlines())
+        header, rows, values = table
+        return header, np.frombuffer(values, dtype="<f8").reshape(rows, len(header))
+
+    def text(self, name):
+        return self.files[name][0].decode()
 
 
 class Line:
@@ -111,10 +157,10 @@ class Line:
     ``bending_moment`` (steps x nodes) and ``seabed_force`` (steps x nodes
     x 3) from ``node_loads.csv``."""
 
-    def __init__(self, directory, t):
+    def __init__(self, files, prefix, t):
         steps = len(t)
         self.t = t
-        h, nodes = _table(directory / "nodes.csv")
+        h, nodes = files.table(prefix + "nodes.csv")
         times = np.unique(nodes[:, 0], return_counts=True)
         n_nodes = int(times[1][0]) if len(times[1]) else 0
         col = {name: k for k, name in enumerate(h)}
@@ -122,7 +168,7 @@ class Line:
         self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
         self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
             if "dx_ds" in col else None
-        h, stress = _table(directory / "stress.csv")
+        h, stress = files.table(prefix + "stress.csv")
         col = {name: k for k, name in enumerate(h)}
         per_step = len(stress) // max(steps, 1)
         stress = stress.reshape(steps, per_step, len(h))
@@ -133,8 +179,8 @@ class Line:
         # seabed's force (node_loads.csv); None for a single cable.
         self.node_s = self.node_curvature = self.bending_moment = None
         self.seabed_force = None
-        if (directory / "node_loads.csv").exists():
-            h, loads = _table(directory / "node_loads.csv")
+        if files.exists(prefix + "node_loads.csv"):
+            h, loads = files.table(prefix + "node_loads.csv")
             col = {name: k for k, name in enumerate(h)}
             loads = loads.reshape(steps, n_nodes, len(h))
             self.node_s = loads[0, :, col["s"]].copy() if steps else np.zeros(0)
@@ -148,7 +194,9 @@ class Line:
 
 
 class Result:
-    """The results of a run, read from its folder (docs/interface.md):
+    """The results of a run (docs/interface.md), read from its folder or,
+    from :func:`run`, taken from memory as the run wrote them (the same
+    numbers to the bit):
 
     - ``t``: the written times (steps,);
     - ``nodes``: positions r (steps x nodes x 3), ``slopes``: r_x (same);
@@ -173,13 +221,13 @@ class Result:
       deck's OUTPUTS; empty otherwise).
     """
 
-    def __init__(self, directory, _keep=None):
+    def __init__(self, directory, _keep=None, _files=None):
         d = Path(directory)
         self.directory = d
         self._keep = _keep
-        with open(d / "summary.json") as f:
-            self.summary = json.load(f)
-        h, hist = _table(d / "history.csv")
+        files = _Memory(_files) if _files else _Folder(d)
+        self.summary = json.loads(files.text("summary.json"))
+        h, hist = files.table("history.csv")
         self.t = hist[:, 0].copy()
         self.energy = {name: hist[:, k].copy() for k, name in enumerate(h) if k > 0}
         self.is_system = bool(self.summary.get("system"))
@@ -188,25 +236,25 @@ class Result:
         self.lines, self.points, self.tensions, self.channels = {}, {}, {}, {}
         self.channels_t = np.zeros(0)
         if self.is_system:
-            self._read_system(d)
+            self._read_system(files)
             return
-        line = Line(d, self.t)
+        line = Line(files, "", self.t)
         self.nodes, self.slopes = line.nodes, line.slopes
         self.stress_s, self.stress, self.curvature = line.stress_s, line.stress, line.curvature
-        if (d / "reactions.csv").exists():
-            h, r = _table(d / "reactions.csv")
+        if files.exists("reactions.csv"):
+            h, r = files.table("reactions.csv")
             if len(r):
                 for node in np.unique(r[:, 1]).astype(int):
                     rows = r[r[:, 1] == node]
                     self.reactions[int(node)] = rows[:, 2:5].copy()
                     self.reactions_t = rows[:, 0].copy()
 
-    def _read_system(self, d):
+    def _read_system(self, files):
         self.nodes = self.slopes = self.stress = self.curvature = None
         self.stress_s = None
-        self.lines = {int(line["id"]): Line(d / "lines" / str(line["id"]), self.t)
+        self.lines = {int(line["id"]): Line(files, "lines/%s/" % line["id"], self.t)
                       for line in self.summary["lines"]}
-        h, p = _table(d / "points.csv")
+        h, p = files.table("points.csv")
         col = {name: k for k, name in enumerate(h)}
         self.points = {}
         for point in np.unique(p[:, col["point"]]).astype(int):
@@ -218,7 +266,7 @@ class Result:
                 "force": rows[:, [col["fx"], col["fy"], col["fz"]]].copy(),
             }
         self.tensions = {}
-        with open(d / "tensions.csv") as f:
+        with io.StringIO(files.text("tensions.csv")) as f:
             next(f)
             for row in csv.reader(f):
                 t, line, end, fx, fy, fz, tension = row
@@ -230,8 +278,8 @@ class Result:
         for entry in self.tensions.values():
             for k in entry:
                 entry[k] = np.array(entry[k], dtype=float)
-        if (d / "channels.csv").exists():
-            h, c = _table(d / "channels.csv")
+        if files.exists("channels.csv"):
+            h, c = files.table("channels.csv")
             self.channels_t = c[:, 0].copy()
             self.channels = {name: c[:, k].copy() for k, name in enumerate(h) if k > 0}
 
@@ -277,13 +325,14 @@ def run(scenario, out=None, progress=False, allow_large=False):
         keep = tempfile.TemporaryDirectory(prefix="stancf-")
         out = keep.name
     try:
-        _stancf.run(scenario.text, scenario.name, str(out), progress, allow_large)
+        files = _stancf.run(scenario.text, scenario.name, str(out), progress, allow_large)
     except _stancf.RunFailed as e:
-        partial = Result(out, keep)
+        message, files = e.args
+        partial = Result(out, keep, files)
         failure = partial.summary.get("failure") or {}
-        raise SolverError(str(e), failure.get("time"), failure.get("step"),
+        raise SolverError(message, failure.get("time"), failure.get("step"),
                           failure.get("residual"), partial) from None
-    return Result(out, keep)
+    return Result(out, keep, files)
 
 
 # ---- sweeps ----
@@ -312,10 +361,10 @@ def _run_point(text, name, folder):
     the summary figures (only these cross the wire)."""
     t0 = _time.perf_counter()
     try:
-        _stancf.run(text, name, folder, False)
+        _stancf.run(text, name, folder, False, collect=False)
         error = ""
     except _stancf.RunFailed as e:
-        error = str(e)
+        error = e.args[0]
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
     row = _figures(summary)

@@ -7,7 +7,7 @@ mod writers;
 
 use super::summary::{error_json, say, vec3};
 use super::{io_err, Place, RunOptions};
-use crate::output::{json_num, write_atomic};
+use crate::output::{json_num, Dest};
 use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
 use crate::Failure;
 use serde_json::{json, Value};
@@ -128,7 +128,7 @@ pub(super) fn run_system(
     // ... and for the water's and the seabed's work in water.
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let mut writers = SystemWriters::create(
-        place.dir,
+        place.dest(),
         &line_ids,
         &point_ids,
         &sc.channels,
@@ -172,7 +172,7 @@ pub(super) fn run_system(
     writers.commit().map_err(io_err(place.shown))?;
     let wall = clock.elapsed().as_secs_f64();
     write_summary(
-        place.dir,
+        place.dest(),
         &sc,
         &outcome,
         wall,
@@ -382,7 +382,7 @@ fn add_point_energies(
 
 /// summary.json of a system run.
 fn write_summary(
-    dir: &Path,
+    dest: Dest,
     sc: &SystemScenario,
     outcome: &Outcome,
     wall: f64,
@@ -452,7 +452,8 @@ fn write_summary(
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
     });
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
-    write_atomic(dir, "summary.json", text.as_bytes()).map_err(io_err(dir))
+    dest.write("summary.json", text.as_bytes())
+        .map_err(io_err(dest.dir))
 }
 
 /// The printed report: the largest end tensions and where the results are.

@@ -5,7 +5,7 @@
 //! `history.csv`.
 
 use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
-use crate::output::{AtomicFile, Num};
+use crate::output::{AtomicFile, Dest, Num};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::OutputChannel;
 use stancf::model::SLOT_R;
@@ -13,7 +13,6 @@ use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressS
 use stancf::system::EndForce;
 use stancf::{Model, State};
 use std::io::Write;
-use std::path::Path;
 
 /// One written moment of a system.
 pub(super) struct SystemRow<'a> {
@@ -65,7 +64,7 @@ pub(super) struct SystemWriters {
 
 impl SystemWriters {
     pub(super) fn create(
-        dir: &Path,
+        dest: Dest,
         line_ids: &[i64],
         point_ids: &[i64],
         channels: &[OutputChannel],
@@ -76,12 +75,12 @@ impl SystemWriters {
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
             let sub = format!("lines/{id}");
-            std::fs::create_dir_all(dir.join(&sub))?;
-            let mut nodes = AtomicFile::create(dir, &format!("{sub}/nodes.csv"))?;
-            let mut stress = AtomicFile::create(dir, &format!("{sub}/stress.csv"))?;
+            std::fs::create_dir_all(dest.dir.join(&sub))?;
+            let mut nodes = dest.create(&format!("{sub}/nodes.csv"))?;
+            let mut stress = dest.create(&format!("{sub}/stress.csv"))?;
             writeln!(nodes.writer(), "t,node,x,y,z,dx_ds,dy_ds,dz_ds")?;
             writeln!(stress.writer(), "t,s,axial_stress,curvature,element")?;
-            let mut node_loads = AtomicFile::create(dir, &format!("{sub}/node_loads.csv"))?;
+            let mut node_loads = dest.create(&format!("{sub}/node_loads.csv"))?;
             writeln!(
                 node_loads.writer(),
                 "t,node,s,curvature,bending_moment,seabed_fx,seabed_fy,seabed_fz"
@@ -92,11 +91,11 @@ impl SystemWriters {
                 node_loads,
             });
         }
-        let mut points = AtomicFile::create(dir, "points.csv")?;
+        let mut points = dest.create("points.csv")?;
         writeln!(points.writer(), "t,point,x,y,z,vx,vy,vz,fx,fy,fz")?;
-        let mut tensions = AtomicFile::create(dir, "tensions.csv")?;
+        let mut tensions = dest.create("tensions.csv")?;
         writeln!(tensions.writer(), "t,line,end,fx,fy,fz,tension")?;
-        let mut history = AtomicFile::create(dir, "history.csv")?;
+        let mut history = dest.create("history.csv")?;
         writeln!(
             history.writer(),
             "t,kinetic,strain,gravity,total,iterations,residual{}{}",
@@ -110,14 +109,14 @@ impl SystemWriters {
         let channels = if channels.is_empty() {
             None
         } else {
-            let mut file = AtomicFile::create(dir, "channels.csv")?;
+            let mut file = dest.create("channels.csv")?;
             let names: Vec<&str> = channels.iter().map(|c| c.name.as_str()).collect();
             writeln!(file.writer(), "t,{}", names.join(","))?;
             Some((file, channels.iter().map(|c| c.channel).collect()))
         };
         Ok(SystemWriters {
             vtk: if with_vtk {
-                Some(crate::vtk::VtkWriter::create(dir)?)
+                Some(crate::vtk::VtkWriter::create(dest.dir)?)
             } else {
                 None
             },
