@@ -188,7 +188,7 @@ fn longer_coupling_intervals_differ_from_the_run_by_the_interpolation_error() {
     let (dt, end) = (2e-3, 1.0);
     let mass = 0.08 * 7.0;
     let mut errors = Vec::new();
-    for steps_per_interval in [2.5, 10.0] {
+    for steps_per_interval in [2.5f64, 10.0] {
         let interval = steps_per_interval * dt;
         // The handle splits an interval into ceil(2.5) = 3 steps of
         // interval / 3: the run compared takes the same steps, so that the
