@@ -51,3 +51,16 @@ pub unsafe fn place<'a, T>(p: *mut T, what: &str) -> Result<&'a mut T, Error> {
     p.as_mut()
         .ok_or_else(|| Error::input(format!("{what} is NULL")))
 }
+
+/// Frees what `p` owns (from `Box::into_raw`); NULL is refused.
+///
+/// # Safety
+/// `p` is NULL or from `Box::into_raw` of a `T`, not yet freed; it is not
+/// used again.
+pub unsafe fn free<T>(p: *mut T, what: &str) -> Result<(), Error> {
+    if p.is_null() {
+        return Err(Error::input(format!("{what} is NULL")));
+    }
+    drop(Box::from_raw(p));
+    Ok(())
+}

@@ -83,13 +83,7 @@ pub unsafe extern "C" fn stancf_create(path: *const c_char) -> *mut StancfSystem
 /// not used again.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_close(s: *mut StancfSystem) -> c_int {
-    guard(|| {
-        if s.is_null() {
-            return Err(Error::input("the system handle is NULL"));
-        }
-        drop(Box::from_raw(s));
-        Ok(())
-    })
+    guard(|| args::free(s, "the system handle"))
 }
 
 /// The number of coupled degrees of freedom, 3 per coupled point
@@ -340,13 +334,7 @@ pub unsafe extern "C" fn stancf_restore(s: *mut StancfSystem, state: *const Stan
 /// again.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_free_state(state: *mut StancfState) -> c_int {
-    guard(|| {
-        if state.is_null() {
-            return Err(Error::input("the state is NULL"));
-        }
-        drop(Box::from_raw(state));
-        Ok(())
-    })
+    guard(|| args::free(state, "the state"))
 }
 
 /// The message of this thread's last failed call ("" before any): valid
