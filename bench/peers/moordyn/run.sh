@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The race against MoorDyn (issue 15): builds stancf, makes a virtual
+# environment with MoorDyn (2.7 or later), numpy and matplotlib from PyPI,
+# and runs both codes on the same decks. `./run.sh --quick` runs a few
+# coarse points only (a smoke test, minutes); the full race takes about
+# an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
+# to docs/race/ by `./run.sh --publish`.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+(cd "$root" && cargo build --release -p stancf-cli)
+venv="$here/.venv"
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet "moordyn>=2.7" numpy matplotlib
+fi
+cd "$here"
+PYTHONWARNINGS=ignore "$venv/bin/python" race.py "$@"
