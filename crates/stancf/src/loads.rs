@@ -56,7 +56,16 @@ pub(crate) fn quadratic_drag(k: f64, v: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) 
         }
         d[i][i] -= k * speed;
     }
-    (v.map(|c| -k * speed * c), d)
+    (quadratic_drag_force(k, v), d)
+}
+
+/// f = -k |v| v alone (the value of [`quadratic_drag`], the same bits).
+pub(crate) fn quadratic_drag_force(k: f64, v: &[f64; 3]) -> [f64; 3] {
+    let speed = dot(v, v).sqrt();
+    if speed == 0.0 || k == 0.0 {
+        return [0.0; 3];
+    }
+    v.map(|c| -k * speed * c)
 }
 
 impl AirDrag {

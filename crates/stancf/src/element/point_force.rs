@@ -9,8 +9,9 @@ use crate::shape::SpatialShape;
 use crate::water::ForceAtPoint;
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
-    /// A force per unit length `force(r, r_x, r_dot, x)` (x the point's
-    /// index in the axial rule) at one time point of a slab, weight
+    /// A force per unit length `force(r, r_x, r_dot, derivatives)` (its
+    /// derivatives asked for only where the Jacobian is) at one time point
+    /// of a slab, weight
     /// `w_dt`: adds the generalized force `f_q,k = sum_s w_s l N_k f` to
     /// `fq`, returns its work `w_dt sum_s w_s l f . r_dot` and, if
     /// `hessian_at` names the time point, adds its derivatives to the
@@ -27,14 +28,14 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         hessian_at: Option<usize>,
         fq: &mut [f64; ND],
         out: &mut SlabDerivatives<ND>,
-        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3], bool) -> ForceAtPoint,
     ) -> f64 {
         let mut work = 0.0;
         for p in &self.axial_points {
             let r = position(&p.shape, q);
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
-            let f = force(&r, &rx, &rdot);
+            let f = force(&r, &rx, &rdot, hessian_at.is_some());
             if f == ForceAtPoint::default() {
                 continue;
             }

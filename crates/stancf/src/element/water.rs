@@ -27,8 +27,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut SlabDerivatives<ND>,
     ) {
         out.water_work +=
-            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot| {
-                water.force(r, rx, rdot, t, gravity)
+            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot, d| {
+                water.force_at(r, rx, rdot, t, gravity, d)
             });
     }
 

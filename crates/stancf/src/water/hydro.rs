@@ -114,12 +114,27 @@ impl LineInWater {
         t: f64,
         gravity: &[f64; 3],
     ) -> ForceAtPoint {
+        self.force_at(r, rx, rdot, t, gravity, true)
+    }
+
+    /// [`Self::force`], its derivatives only when `derivatives` (else
+    /// zero): a residual without a Jacobian skips them, with the same
+    /// force to the bit.
+    pub(crate) fn force_at(
+        &self,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        t: f64,
+        gravity: &[f64; 3],
+        derivatives: bool,
+    ) -> ForceAtPoint {
         let s = self.submerged(r);
         if s.is_dry() {
             return ForceAtPoint::default();
         }
         let flow = self.water.sea.kinematics(r, t);
-        self.force_in(&s, rx, rdot, &flow, gravity)
+        self.force_in(&s, rx, rdot, &flow, gravity, derivatives)
     }
 
     /// The force on a line at rest in the steady current (no waves, the
@@ -131,10 +146,11 @@ impl LineInWater {
             return ForceAtPoint::default();
         }
         let flow = self.water.sea.steady_current(r);
-        self.force_in(&s, rx, &[0.0; 3], &flow, gravity)
+        self.force_in(&s, rx, &[0.0; 3], &flow, gravity, true)
     }
 
-    /// (W18)-(W23) in the flow `flow` at the section.
+    /// (W18)-(W23) in the flow `flow` at the section; the derivatives
+    /// (W21)-(W23) only when `derivatives`.
     fn force_in(
         &self,
         s: &SubmergedFraction,
@@ -142,12 +158,39 @@ impl LineInWater {
         rdot: &[f64; 3],
         flow: &FluidKinematics,
         gravity: &[f64; 3],
+        derivatives: bool,
     ) -> ForceAtPoint {
         let m = &self.morison;
         let rho = self.water.density;
         let area = m.area();
         let len = dot(rx, rx).sqrt();
         let t = rx.map(|c| c / len);
+        // Drag (W19) on the normal and tangential relative velocities.
+        let v: [f64; 3] = std::array::from_fn(|i| flow.velocity[i] - rdot[i]);
+        let vt_s = dot(&v, &t);
+        let v_t = t.map(|c| vt_s * c);
+        let v_n: [f64; 3] = std::array::from_fn(|i| v[i] - v_t[i]);
+        let k_n = 0.5 * rho * m.diameter * m.cd_normal;
+        let k_t = 0.5 * rho * std::f64::consts::PI * m.diameter * m.cd_axial;
+        let q_n = crate::loads::quadratic_drag_force(-k_n, &v_n);
+        let q_t = crate::loads::quadratic_drag_force(-k_t, &v_t);
+        // Fluid inertia (W20).
+        let (c_n, c_t) = (
+            rho * area * (1.0 + m.ca_normal),
+            rho * area * (1.0 + m.ca_axial),
+        );
+        let a = &flow.acceleration;
+        let at_s = dot(a, &t);
+        let f_i0: [f64; 3] = std::array::from_fn(|i| c_n * a[i] + (c_t - c_n) * at_s * t[i]);
+        // Buoyancy (W18) and the sum.
+        let mut out = ForceAtPoint::default();
+        for i in 0..3 {
+            out.force[i] = -s.value * rho * area * gravity[i];
+            out.force[i] += s.value * (q_n[i] + q_t[i] + f_i0[i]);
+        }
+        if !derivatives {
+            return out;
+        }
         let mut p_t = [[0.0; 3]; 3];
         let mut p_n = [[0.0; 3]; 3];
         for i in 0..3 {
@@ -156,20 +199,13 @@ impl LineInWater {
                 p_n[i][j] = f64::from(u8::from(i == j)) - p_t[i][j];
             }
         }
-        let mut out = ForceAtPoint::default();
-        // Buoyancy (W18), (W23).
+        // Buoyancy (W23).
         for i in 0..3 {
-            out.force[i] = -s.value * rho * area * gravity[i];
             out.d_r[i][2] = -s.slope * rho * area * gravity[i];
         }
-        // Drag (W19), (W21).
-        let v: [f64; 3] = std::array::from_fn(|i| flow.velocity[i] - rdot[i]);
-        let vt_s = dot(&v, &t);
-        let v_t = t.map(|c| vt_s * c);
-        let v_n: [f64; 3] = std::array::from_fn(|i| v[i] - v_t[i]);
-        let (q_n, dq_n) = quadratic(0.5 * rho * m.diameter * m.cd_normal, &v_n);
-        let k_t = 0.5 * rho * std::f64::consts::PI * m.diameter * m.cd_axial;
-        let (q_t, dq_t) = quadratic(k_t, &v_t);
+        // Drag (W21).
+        let (_, dq_n) = quadratic(k_n, &v_n);
+        let (_, dq_t) = quadratic(k_t, &v_t);
         let d_v = add(&mat3_mul(&dq_n, &p_n), &mat3_mul(&dq_t, &p_t));
         let mut lever = [[0.0; 3]; 3];
         for i in 0..3 {
@@ -181,14 +217,7 @@ impl LineInWater {
         let dq_diff = sub(&dq_n, &dq_t);
         let drag_rx = mat3_mul(&dq_diff, &dvn_drx);
         let drag_r = mat3_mul(&d_v, &flow.velocity_gradient);
-        // Fluid inertia (W20), (W22).
-        let (c_n, c_t) = (
-            rho * area * (1.0 + m.ca_normal),
-            rho * area * (1.0 + m.ca_axial),
-        );
-        let a = &flow.acceleration;
-        let at_s = dot(a, &t);
-        let f_i0: [f64; 3] = std::array::from_fn(|i| c_n * a[i] + (c_t - c_n) * at_s * t[i]);
+        // Fluid inertia (W22).
         let mut inertia_mass = [[0.0; 3]; 3];
         let mut swing = [[0.0; 3]; 3];
         for i in 0..3 {
@@ -200,9 +229,7 @@ impl LineInWater {
         let inertia_r = mat3_mul(&inertia_mass, &flow.acceleration_gradient);
         let inertia_rx = mat3_mul(&swing, &p_n);
         for i in 0..3 {
-            let f_d0 = q_n[i] + q_t[i];
-            out.force[i] += s.value * (f_d0 + f_i0[i]);
-            out.d_r[i][2] += s.slope * (f_d0 + f_i0[i]);
+            out.d_r[i][2] += s.slope * (q_n[i] + q_t[i] + f_i0[i]);
             for j in 0..3 {
                 out.d_rdot[i][j] = -s.value * d_v[i][j];
                 out.d_r[i][j] += s.value * (drag_r[i][j] + inertia_r[i][j]);
