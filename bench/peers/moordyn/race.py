@@ -30,6 +30,10 @@ MoorDyn's own `FairTen` (the top segment's tension, half a segment below
 the fairlead) is not used: at 20 segments it is 22 kN (3 % of the range)
 below |f|.
 
+stancf runs the Galerkin step with modified Newton and `step_halvings = 4`
+(a step Newton cannot finish at a touchdown is taken in halves,
+docs/method.md §11.13).
+
 Cost: wall time of the whole simulation. MoorDyn: MoorDyn_Init (its
 initial-condition generation, reported separately) and the MoorDyn_Step
 calls, one per 0.1 s output (it sub-steps at dtM inside). stancf: the
@@ -53,59 +57,87 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 STANCF = os.path.join(ROOT, "target", "release", "stancf")
 OUT = os.path.join(HERE, "out")
 QUICK = "--quick" in sys.argv
-DECK = os.path.join(ROOT, "examples", "oc4-deepcwind-moordyn.txt")
-COUPLED = [4, 5, 6]
-AMPLITUDE, PERIOD, DURATION = 8.0, 100.0, 300.0
 OUTPUT_DT = 0.1
-# BA = zeta l sqrt(EA m) at zeta = 1, l = 835.35 / 20 m (docs/method.md (M36)).
-BA = 1.0 * 835.35 / 20 * math.sqrt(7.536e8 * 113.35)
 
 
-def surge(t):
-    """x offset and rate of every fairlead at t (stancf's [[motions]])."""
-    s = min(t / PERIOD, 1.0)
+class Problem:
+    """A race problem: a deck, its coupled points moved along x by
+    f(t) A sin(2 pi t / T) (ramp over one period), the resolutions."""
+
+    def __init__(self, name, deck, coupled, amplitude, period, duration, ba, title):
+        self.name, self.deck, self.coupled = name, deck, coupled
+        self.amplitude, self.period, self.duration = amplitude, period, duration
+        self.ba, self.title = ba, title
+
+
+# OC4: BA = zeta l sqrt(EA m) at zeta = 1, l = 835.35 / 20 m (docs/method.md (M36)).
+OC4 = Problem("oc4", os.path.join(ROOT, "examples", "oc4-deepcwind-moordyn.txt"), [4, 5, 6],
+              8.0, 100.0, 300.0, 1.0 * 835.35 / 20 * math.sqrt(7.536e8 * 113.35),
+              "OC4 DeepCwind, 8 m surge at 100 s, 300 s")
+# The lazy wave's deck fixes its own BA.
+LAZY = Problem("lazy_wave", os.path.join(ROOT, "examples", "lazy-wave-moordyn.txt"), [1],
+               5.0, 20.0, 120.0, None, "lazy-wave cable, 5 m at 20 s, 120 s")
+
+
+def surge(t, pb):
+    """x offset and rate of the coupled points at t (stancf's [[motions]])."""
+    s = min(t / pb.period, 1.0)
     f = s * s * s * (s * (6.0 * s - 15.0) + 10.0)
-    df = 30.0 * s * s * (s - 1.0) ** 2 / PERIOD if t < PERIOD else 0.0
-    w = 2.0 * math.pi / PERIOD
-    return (f * AMPLITUDE * math.sin(w * t),
-            df * AMPLITUDE * math.sin(w * t) + f * AMPLITUDE * w * math.cos(w * t))
+    df = 30.0 * s * s * (s - 1.0) ** 2 / pb.period if t < pb.period else 0.0
+    w = 2.0 * math.pi / pb.period
+    a = pb.amplitude
+    return f * a * math.sin(w * t), df * a * math.sin(w * t) + f * a * w * math.cos(w * t)
 
 
-def deck_text(segments, dtm):
-    """The race's deck: NumSegs, BA and dtM set, no OUTPUTS channels, a
-    tight initial-condition threshold for MoorDyn."""
+def deck_text(pb, refine, dtm):
+    """The race's deck: every line's NumSegs times `refine`, BA set (when
+    the problem fixes it here), dtM set, no OUTPUTS channels, a tight
+    initial-condition threshold for MoorDyn."""
     out, section = [], None
-    with open(DECK) as f:
+    with open(pb.deck) as f:
         for line in f:
             if line.startswith("---"):
                 section = line.strip("- \n").upper()
                 out.append(line)
                 continue
             fields = line.split()
-            if section and fields and fields[0][0].isdigit() or (
-                    section == "LINE TYPES" and fields and fields[0] == "chain"):
-                if section == "LINE TYPES":
-                    fields[4] = "%.6e" % BA
-                    line = "  ".join(fields) + "\n"
-                elif section == "LINES":
-                    fields[5] = str(segments)
-                    line = "  ".join(fields) + "\n"
-                elif section == "OPTIONS" and fields[1] == "dtM":
-                    line = "%r  dtM\n" % dtm
-                elif section == "OPTIONS" and fields[1] == "threshIC":
-                    line = "0.0001  threshIC\n"
-                elif section == "OPTIONS" and fields[1] == "TmaxIC":
-                    line = "200.0  TmaxIC\n"
-            if section == "OUTPUTS" and fields and fields[0] != "END":
+            data = bool(fields) and not fields[0].startswith("(") and fields[0] != "TypeName" \
+                and fields[0] != "ID"
+            if section == "LINE TYPES" and data and pb.ba is not None:
+                fields[4] = "%.6e" % pb.ba
+                line = "  ".join(fields) + "\n"
+            elif section == "LINES" and data:
+                fields[5] = str(int(round(int(fields[5]) * refine)))
+                line = "  ".join(fields) + "\n"
+            elif section == "OPTIONS" and data and fields[1] == "dtM":
+                line = "%r  dtM\n" % dtm
+            elif section == "OPTIONS" and data and fields[1] in ("threshIC", "TmaxIC"):
+                continue
+            elif section == "OUTPUTS" and data and fields[0] != "END":
                 continue
             out.append(line)
-    return "".join(out)
+    k = next(i for i, line in enumerate(out) if line.startswith("---") and "OUTPUTS" in line)
+    return "".join(out[:k] + ["0.0001  threshIC\n", "200.0  TmaxIC\n"] + out[k:])
 
 
-def positions0():
+def segments(pb, refine):
+    """The total segments (elements) of a resolution."""
+    total, section = 0, None
+    with open(pb.deck) as f:
+        for line in f:
+            if line.startswith("---"):
+                section = line.strip("- \n").upper()
+                continue
+            fields = line.split()
+            if section == "LINES" and fields and fields[0].isdigit():
+                total += int(round(int(fields[5]) * refine))
+    return total
+
+
+def positions0(pb):
     """The coupled points' positions in the deck."""
     rows, section = {}, None
-    with open(DECK) as f:
+    with open(pb.deck) as f:
         for line in f:
             if line.startswith("---"):
                 section = line.strip("- \n").upper()
@@ -113,7 +145,7 @@ def positions0():
             fields = line.split()
             if section == "POINTS" and fields and fields[0].isdigit():
                 rows[int(fields[0])] = [float(v) for v in fields[2:5]]
-    return np.array([rows[i] for i in COUPLED])
+    return np.array([rows[i] for i in pb.coupled])
 
 
 class Quiet:
@@ -131,14 +163,15 @@ class Quiet:
         os.close(self.saved)
 
 
-def run_moordyn(segments, dtm):
-    """(IC seconds, simulation seconds, times, tensions k x 3) or None."""
+def run_moordyn(pb, refine, dtm):
+    """(IC seconds, simulation seconds, times, tensions k x points) or
+    None."""
     import moordyn
-    x0 = positions0()
+    x0 = positions0(pb)
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "deck.txt")
         with open(path, "w") as f:
-            f.write(deck_text(segments, dtm))
+            f.write(deck_text(pb, refine, dtm))
         with Quiet():
             t0 = time.perf_counter()
             s = moordyn.Create(path)
@@ -148,9 +181,9 @@ def run_moordyn(segments, dtm):
             times, tensions = [], []
             t = 0.0
             ok = True
-            for k in range(1, int(round(DURATION / OUTPUT_DT)) + 1):
+            for k in range(1, int(round(pb.duration / OUTPUT_DT)) + 1):
                 tn = k * OUTPUT_DT
-                dx, vx = surge(tn)
+                dx, vx = surge(tn, pb)
                 x = x0.copy()
                 x[:, 0] += dx
                 xd = np.zeros_like(x0)
@@ -181,24 +214,25 @@ time_step = {dt!r}
 duration = {duration!r}
 time_scheme = "{scheme}"
 solver = "{solver}"
+step_halvings = 4
 
 [output]
 every = {every}
 """
 
 
-def run_stancf(elements, dt, scheme="galerkin", solver="modified-newton"):
-    """(wall seconds, times, tensions k x 3, summary) or None."""
+def run_stancf(pb, refine, dt, scheme="galerkin", solver="modified-newton"):
+    """(wall seconds, times, tensions k x points, summary) or None."""
     motions = "".join(
         "\n[[motions]]\npoint = %d\namplitude = [%r, 0.0, 0.0]\nperiod = %r\nramp = %r\n"
-        % (p, AMPLITUDE, PERIOD, PERIOD) for p in COUPLED)
+        % (p, pb.amplitude, pb.period, pb.period) for p in pb.coupled)
     every = max(1, int(round(OUTPUT_DT / dt)))
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, "deck.txt"), "w") as f:
-            f.write(deck_text(elements, 1e-3))
+            f.write(deck_text(pb, refine, 1e-3))
         sc = os.path.join(d, "race.toml")
         with open(sc, "w") as f:
-            f.write(SCENARIO.format(motions=motions, dt=dt, duration=DURATION, scheme=scheme,
+            f.write(SCENARIO.format(motions=motions, dt=dt, duration=pb.duration, scheme=scheme,
                                     solver=solver, every=every))
         out = os.path.join(d, "out")
         t0 = time.perf_counter()
@@ -213,22 +247,23 @@ def run_stancf(elements, dt, scheme="galerkin", solver="modified-newton"):
         with open(os.path.join(out, "points.csv")) as f:
             for r in csv.DictReader(f):
                 point = int(float(r["point"]))
-                if point in COUPLED:
+                if point in pb.coupled:
                     t = round(float(r["t"]), 6)
                     f3 = [float(r["fx"]), float(r["fy"]), float(r["fz"])]
                     rows.setdefault(t, {})[point] = math.sqrt(sum(c * c for c in f3))
     times = np.array(sorted(t for t in rows if t > 0))
-    tensions = np.array([[rows[t][p] for p in COUPLED] for t in times])
+    tensions = np.array([[rows[t][p] for p in pb.coupled] for t in times])
     return wall, times, tensions, summary
 
 
-def error(times, tensions, ref):
-    """Largest |T - T_ref| over t >= one period, over the reference's
-    range there, the worst fairlead (None without common times)."""
+def error(times, tensions, ref, pb):
+    """Largest |T - T_ref| over t >= one period (after the ramp), over
+    the reference's range there, the worst fairlead (None without common
+    times)."""
     rt, rv = ref
     index = {round(t, 6): k for k, t in enumerate(rt)}
     pairs = [(k, index[round(t, 6)]) for k, t in enumerate(times)
-             if t >= PERIOD - 1e-9 and round(t, 6) in index]
+             if t >= pb.period - 1e-9 and round(t, 6) in index]
     if not pairs:
         return None
     a = tensions[[p[0] for p in pairs]]
@@ -237,66 +272,104 @@ def error(times, tensions, ref):
     return float((np.abs(a - b).max(axis=0) / span).max())
 
 
-def main():
-    os.makedirs(OUT, exist_ok=True)
-    if QUICK:
-        stancf_runs = [(10, 0.1), (20, 0.05)]
-        reference = (20, 0.025)
-        moordyn_runs = [(10, 2e-3), (20, 1e-3)]
-    else:
-        stancf_runs = [(n, dt) for n in (5, 10, 20, 40) for dt in (0.1, 0.05, 0.025)]
-        reference = (80, 0.0125)
-        moordyn_runs = [(10, 2e-3), (20, 1e-3), (40, 5e-4), (80, 2.5e-4), (160, 1.25e-4)]
-    ref = run_stancf(*reference)
+# Resolutions: (refinement of the deck's NumSegs, step). MoorDyn's step
+# shrinks with its segments (its explicit bound); stancf's does not have to.
+GRIDS = {
+    "oc4": dict(
+        quick=dict(stancf=[(0.5, 0.1), (1, 0.05)], reference=(1, 0.025),
+                   moordyn=[(0.5, 2e-3), (1, 1e-3)]),
+        full=dict(stancf=[(r, dt) for r in (0.25, 0.5, 1, 2) for dt in (0.1, 0.05, 0.025)],
+                  reference=(4, 0.0125),
+                  moordyn=[(0.5, 2e-3), (1, 1e-3), (2, 5e-4), (4, 2.5e-4), (8, 1.25e-4)])),
+    "lazy_wave": dict(
+        quick=dict(stancf=[(1, 0.05)], reference=(1, 0.025), moordyn=[(1, 2e-4)]),
+        full=dict(stancf=[(r, dt) for r in (0.5, 1, 2) for dt in (0.05, 0.025, 0.0125)],
+                  reference=(4, 0.00625),
+                  moordyn=[(0.5, 4e-4), (1, 2e-4), (2, 1e-4), (4, 5e-5)])),
+}
+
+
+def race(pb):
+    """Every run of problem `pb`; the rows of its table."""
+    grid = GRIDS[pb.name]["quick" if QUICK else "full"]
+    ref = run_stancf(pb, *grid["reference"])
     if ref is None:
-        sys.exit("the reference run failed: %r" % (reference,))
+        sys.exit("%s: the reference run failed: %r" % (pb.name, grid["reference"]))
     ref_series = (ref[1], ref[2])
     rows = []
-    for n, dt in stancf_runs:
-        r = run_stancf(n, dt)
-        rows.append(dict(code="stancf", resolution=n, dt=dt, ic_s="",
-                         wall_s=r[0] if r else "", error=error(r[1], r[2], ref_series) if r else ""))
+    for r, dt in grid["stancf"]:
+        out = run_stancf(pb, r, dt)
+        rows.append(dict(problem=pb.name, code="stancf", segments=segments(pb, r), dt=dt,
+                         ic_s="", wall_s=out[0] if out else "",
+                         error=error(out[1], out[2], ref_series, pb) if out else ""))
         print(rows[-1], flush=True)
-    for n, dtm in moordyn_runs:
-        r = run_moordyn(n, dtm)
-        rows.append(dict(code="moordyn", resolution=n, dt=dtm, ic_s=r[0] if r else "",
-                         wall_s=r[1] if r else "", error=error(r[2], r[3], ref_series) if r else ""))
+    for r, dtm in grid["moordyn"]:
+        out = run_moordyn(pb, r, dtm)
+        rows.append(dict(problem=pb.name, code="moordyn", segments=segments(pb, r), dt=dtm,
+                         ic_s=out[0] if out else "", wall_s=out[1] if out else "",
+                         error=error(out[2], out[3], ref_series, pb) if out else ""))
         print(rows[-1], flush=True)
-    rows.append(dict(code="stancf reference", resolution=reference[0], dt=reference[1], ic_s="",
-                     wall_s=ref[0], error=0.0))
+    rows.append(dict(problem=pb.name, code="stancf reference",
+                     segments=segments(pb, grid["reference"][0]), dt=grid["reference"][1],
+                     ic_s="", wall_s=ref[0], error=0.0))
+    return rows
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--problem=")]
+    rows = []
+    for pb in (OC4, LAZY):
+        if not only or pb.name in only:
+            rows += race(pb)
     write(rows)
 
 
 def cheapest(rows, code, level):
+    """The cheapest run of `code` within `level`."""
     ok = [r for r in rows if r["code"] == code and r["error"] != "" and r["error"] <= level]
     return min(ok, key=lambda r: r["wall_s"]) if ok else None
 
 
-def write(rows):
-    with open(os.path.join(OUT, "moordyn_race.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    lines = ["# The race against MoorDyn: OC4 surge (this machine, one run)", "",
-             "| accuracy | MoorDyn cheapest (s) | run | stancf cheapest (s) | run | MoorDyn / stancf |",
-             "|---|---|---|---|---|---|"]
+def summary_table(rows, pb):
+    """The ratios at 1 % and 0.1 % of problem `pb` (markdown lines)."""
+    lines = ["## %s" % pb.title, "",
+             "| accuracy | MoorDyn cheapest (s) | run | stancf cheapest (s) | run "
+             "| MoorDyn / stancf |", "|---|---|---|---|---|---|"]
     for level, label in [(0.01, "1 %"), (0.001, "0.1 %")]:
-        m, s = cheapest(rows, "moordyn", level), cheapest(rows, "stancf", level)
-        cell = lambda r, what: ("%.2f" % r["wall_s"], "%d %s, dt %g (%.3g %%)" % (
-            r["resolution"], what, r["dt"], 100 * r["error"])) if r else ("-", "not reached")
-        mc, sc_ = cell(m, "segments"), cell(s, "elements")
-        ratio = "%.2f" % (m["wall_s"] / s["wall_s"]) if m and s else "-"
-        lines.append("| %s | %s | %s | %s | %s | %s |" % (label, mc[0], mc[1], sc_[0], sc_[1], ratio))
-    lines += ["", "| code | resolution | dt (s) | IC (s) | wall (s) | error (% of range) |",
+        cells = []
+        for code in ("moordyn", "stancf"):
+            r = cheapest(rows, code, level)
+            cells.append(("%.2f" % r["wall_s"], "%d segments, dt %g (%.3g %%)" % (
+                r["segments"], r["dt"], 100 * r["error"])) if r else ("-", "not reached"))
+        m, s_ = cheapest(rows, "moordyn", level), cheapest(rows, "stancf", level)
+        ratio = "%.2f" % (m["wall_s"] / s_["wall_s"]) if m and s_ else "-"
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (
+            label, cells[0][0], cells[0][1], cells[1][0], cells[1][1], ratio))
+    lines += ["", "| code | segments | dt (s) | MoorDyn IC (s) | wall (s) | error (% of range) |",
               "|---|---|---|---|---|---|"]
     for r in rows:
         err = "%.3g" % (100 * r["error"]) if r["error"] != "" else "failed"
         wall = "%.2f" % r["wall_s"] if r["wall_s"] != "" else "-"
         ic = "%.2f" % r["ic_s"] if r["ic_s"] != "" else ""
-        lines.append("| %s | %s | %g | %s | %s | %s |" % (r["code"], r["resolution"], r["dt"],
-                                                          ic, wall, err))
+        lines.append("| %s | %d | %g | %s | %s | %s |" % (
+            r["code"], r["segments"], r["dt"], ic, wall, err))
+    return lines + [""]
+
+
+def write(rows):
+    """out/moordyn_race.csv, .md (per problem: the ratios, every run) and
+    .png (work-precision, one panel per problem)."""
+    with open(os.path.join(OUT, "moordyn_race.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    problems = [pb for pb in (OC4, LAZY) if any(r["problem"] == pb.name for r in rows)]
+    lines = ["# The race against MoorDyn (this machine, one run)", ""]
+    for pb in problems:
+        lines += summary_table([r for r in rows if r["problem"] == pb.name], pb)
     with open(os.path.join(OUT, "moordyn_race.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines))
     print("\n".join(lines))
     try:
         import matplotlib
@@ -304,18 +377,21 @@ def write(rows):
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for code, marker in [("moordyn", "s"), ("stancf", "o")]:
-        pts = [(r["wall_s"], r["error"]) for r in rows
-               if r["code"] == code and r["error"] not in ("", 0.0)]
-        if pts:
-            x, y = zip(*sorted(pts))
-            ax.loglog(x, [100 * v for v in y], marker, label=code)
-    ax.set_xlabel("wall time (s)")
-    ax.set_ylabel("fairlead tension error (% of range)")
-    ax.set_title("OC4 DeepCwind, 8 m surge at 100 s, 300 s")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
+    fig, axes = plt.subplots(1, len(problems), figsize=(6.0 * len(problems), 4.5), squeeze=False)
+    for ax, pb in zip(axes[0], problems):
+        for code, marker in [("moordyn", "s"), ("stancf", "o")]:
+            pts = [(r["wall_s"], r["error"]) for r in rows if r["problem"] == pb.name
+                   and r["code"] == code and r["error"] not in ("", 0.0)]
+            if pts:
+                x, y = zip(*sorted(pts))
+                ax.loglog(x, [100 * v for v in y], marker, label=code)
+        for level in (1.0, 0.1):
+            ax.axhline(level, color="grey", lw=0.8, ls="--")
+        ax.set_xlabel("wall time (s)")
+        ax.set_ylabel("fairlead tension error (% of range)")
+        ax.set_title(pb.title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "moordyn_race.png"), dpi=120)
 

@@ -24,6 +24,18 @@ pub struct Prepared {
     pub dynamics: Option<SystemSimulation>,
 }
 
+/// The dynamic simulation of `system` from the lines' `states` with the
+/// scenario's step settings and step halvings.
+pub fn simulation(
+    sc: &SystemScenario,
+    system: System,
+    states: Vec<stancf::State>,
+) -> Result<SystemSimulation, stancf::ModelError> {
+    let mut sim = SystemSimulation::new(system, states, sc.analysis.step_settings())?;
+    sim.set_step_halvings(sc.analysis.step_halvings)?;
+    Ok(sim)
+}
+
 /// Builds what `sc` runs (see [`Prepared`]); errors are input errors
 /// naming `path`.
 pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
@@ -39,8 +51,7 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     };
     let dynamics = if sc.analysis.kind == AnalysisKind::Dynamic {
         let start = straight_states(&system);
-        let settings = sc.analysis.step_settings();
-        Some(SystemSimulation::new(system.clone(), start, settings).map_err(input)?)
+        Some(simulation(sc, system.clone(), start).map_err(input)?)
     } else {
         None
     };

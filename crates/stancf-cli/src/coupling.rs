@@ -92,6 +92,9 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
         coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
         line_ids: sc.lines.iter().map(|l| l.id).collect(),
         point_ids: sc.points.iter().map(|p| p.id).collect(),
-        handle: handle.with_order(order).map_err(input)?,
+        handle: handle
+            .with_order(order)
+            .and_then(|h| h.with_step_halvings(sc.analysis.step_halvings))
+            .map_err(input)?,
     })
 }

@@ -107,6 +107,9 @@ pub struct CoupledSystem {
     seed: System,
     statics: StaticSettings,
     steps: StepSettings,
+    /// Halvings of a step that Newton fails (see
+    /// [`SystemSimulation::set_step_halvings`]).
+    step_halvings: u32,
     coupled: Vec<usize>,
     running: Option<Running>,
 }
@@ -146,6 +149,7 @@ impl CoupledSystem {
             seed,
             statics,
             steps,
+            step_halvings: 0,
             coupled,
             running: None,
         })
@@ -153,6 +157,22 @@ impl CoupledSystem {
 
     /// Orders the coupled points as `order` (a permutation of
     /// [`Self::coupled_points`]; e.g. by the points' ids).
+    /// The handle whose steps that Newton fails are taken again in halves,
+    /// `halvings` levels deep ([`SystemSimulation::set_step_halvings`]).
+    pub fn with_step_halvings(mut self, halvings: u32) -> Result<Self, ModelError> {
+        if halvings > crate::system::MAX_STEP_HALVINGS {
+            return Err(ModelError::invalid(
+                "step_halvings",
+                format!(
+                    "{halvings} is above the {} a step may take",
+                    crate::system::MAX_STEP_HALVINGS
+                ),
+            ));
+        }
+        self.step_halvings = halvings;
+        Ok(self)
+    }
+
     pub fn with_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
         let mut sorted = order.clone();
         sorted.sort_unstable();
@@ -222,7 +242,8 @@ impl CoupledSystem {
             .iter()
             .flat_map(|&p| statics.point_force(p))
             .collect();
-        let sim = SystemSimulation::new(system, statics.line_states(), self.steps.clone())?;
+        let mut sim = SystemSimulation::new(system, statics.line_states(), self.steps.clone())?;
+        sim.set_step_halvings(self.step_halvings)?;
         self.running = Some(Running {
             sim,
             position: x.to_vec(),

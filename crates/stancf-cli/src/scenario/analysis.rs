@@ -38,6 +38,9 @@ pub struct Analysis {
     pub constraint_method: ConstraintMethod,
     /// Eliminate the out-of-plane coordinates of a planar motion.
     pub planar_reduction: bool,
+    /// A system's step that Newton fails is taken again in halves, this
+    /// many levels deep (docs/method.md §11.13; 0: fail at once).
+    pub step_halvings: u32,
 }
 
 /// What the rest of the file holds that a static analysis refuses.
@@ -54,7 +57,9 @@ pub(super) struct Others {
 /// `tolerance` (> 0, default 1e-10), `max_iterations` (1..=10000, default
 /// 50), `load_steps` (1..=1000000, default 20), `curvature`,
 /// `axial_strain`, `constraint_method`; `planar_reduction` defaults to
-/// true. Returns the settings, the strain measures and the notes.
+/// true; `step_halvings` (0..=10, default 0; systems only, refused by the
+/// single cable's reader). Returns the settings, the strain measures and
+/// the notes.
 pub(super) fn analysis(
     ctx: &Ctx,
     raw: Option<RawAnalysis>,
@@ -110,7 +115,17 @@ pub(super) fn analysis(
         "elimination" => ConstraintMethod::Elimination,
         _ => ConstraintMethod::Multiplier,
     };
+    let step_halvings = match ra.step_halvings {
+        Some(n) => ctx.count(
+            "analysis.step_halvings",
+            n,
+            0,
+            stancf::system::MAX_STEP_HALVINGS as i64,
+        )? as u32,
+        None => 0,
+    };
     let analysis = Analysis {
+        step_halvings,
         kind,
         time_step,
         duration,

@@ -162,6 +162,12 @@ fn cable_scenario(ctx: &Ctx, raw: RawScenario, path: &Path) -> Result<Scenario, 
         constraints: !constraints.is_empty(),
     };
     let (analysis, measures, notes) = analysis::analysis(ctx, raw.analysis, others)?;
+    if analysis.step_halvings > 0 {
+        return Err(ctx.err(
+            "analysis.step_halvings",
+            "halving failed steps is for systems of lines in this version, not a single cable",
+        ));
+    }
     initial_velocity::check_initial_velocities(ctx, &initial_velocity, &constraints)?;
     let output_every = analysis::output_every(ctx, raw.output)?;
     Ok(Scenario {

@@ -241,6 +241,7 @@ pub(super) struct RawAnalysis {
     pub(super) axial_strain: Option<String>,
     pub(super) constraint_method: Option<String>,
     pub(super) planar_reduction: Option<bool>,
+    pub(super) step_halvings: Option<i64>,
     pub(super) initial: Option<String>,
 }
 

@@ -24,6 +24,7 @@
 //! ([`crate::bordered`]), factorized by block elimination.
 
 mod balance;
+mod halving;
 mod layout;
 mod mass;
 mod point_terms;
@@ -33,6 +34,7 @@ mod statics;
 mod step_equations;
 
 pub use balance::balanced_points;
+pub use halving::MAX_STEP_HALVINGS;
 pub use layout::SystemLayout;
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,

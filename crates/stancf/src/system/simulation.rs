@@ -90,6 +90,9 @@ pub struct SystemSimulation {
     point_momentum: Vec<[f64; 3]>,
     /// Work done on the free points by the water's drag and inertia.
     point_water_work: f64,
+    /// How many times a step that Newton fails is halved (see
+    /// [`SystemSimulation::set_step_halvings`]).
+    pub(super) step_halvings: u32,
     steps: usize,
     t: f64,
 }
@@ -164,6 +167,7 @@ impl SystemSimulation {
             mass,
             point_momentum: vec![[0.0; 3]; system.points().len()],
             point_water_work: 0.0,
+            step_halvings: 0,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             point_nodes: vec![PointNodes::default(); system.points().len()],
             system,
@@ -324,9 +328,16 @@ impl SystemSimulation {
         self.workspace.factors_valid = false;
     }
 
-    /// Advances the system by one step. On failure every line and point
-    /// is left at the last converged step.
+    /// Advances the system by one step of the step length (in halves
+    /// where Newton fails, see [`SystemSimulation::set_step_halvings`]).
+    /// On failure every line and point is left at the last converged
+    /// step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
+        self.step_halving(self.step_halvings)
+    }
+
+    /// One step of the step length, not halved.
+    pub(super) fn step_once(&mut self) -> Result<StepReport, SolverError> {
         let dt = self.settings.time_step;
         for line in &mut self.lines {
             line.begin_step();

@@ -153,10 +153,7 @@ pub(super) fn run_system(
             writers.write(&row).map_err(io_err(place.shown))?;
             if sim.is_some() {
                 let states = st.line_states();
-                sim = Some(
-                    SystemSimulation::new(system, states, sc.analysis.step_settings())
-                        .map_err(input)?,
-                );
+                sim = Some(crate::check_system::simulation(&sc, system, states).map_err(input)?);
                 from_static = true;
             }
         }

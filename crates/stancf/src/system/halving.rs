@@ -1,0 +1,69 @@
+//! A step that Newton fails, taken again in halves (docs/method.md
+//! §11.13): from the last converged state, two steps of half the length,
+//! each of which may halve again, `step_halvings` levels deep. Where a
+//! line touches down on a stiff seabed the contact's force has a kink
+//! that Newton can cycle around at a long step; half the step moves the
+//! touchdown less. Until a step fails, the run is the one without
+//! halvings, to the bit; the energy
+//! watchdog's unstable step (P2 above its stable step) is not halved:
+//! it is the step the scenario chose, reported as such.
+
+use super::SystemSimulation;
+use crate::error::{FailureKind, ModelError, SolverError};
+use crate::integrator::StepReport;
+
+/// The most halvings a step may take (a step cut into 2^10 parts).
+pub const MAX_STEP_HALVINGS: u32 = 10;
+
+impl SystemSimulation {
+    /// Where Newton fails a step (no convergence, a singular Jacobian, a
+    /// value that is not finite), take it again as two halves, up to
+    /// `halvings` levels (0, the default: fail at once). At most
+    /// [`MAX_STEP_HALVINGS`].
+    pub fn set_step_halvings(&mut self, halvings: u32) -> Result<(), ModelError> {
+        if halvings > MAX_STEP_HALVINGS {
+            return Err(ModelError::invalid(
+                "step_halvings",
+                format!("{halvings} is above the {MAX_STEP_HALVINGS} a step may take"),
+            ));
+        }
+        self.step_halvings = halvings;
+        Ok(())
+    }
+
+    /// The halvings a failed step may take.
+    pub fn step_halvings(&self) -> u32 {
+        self.step_halvings
+    }
+
+    /// One step of the current length, in halves where Newton fails, up
+    /// to `halvings` levels. The step length is the same after as before.
+    /// The report counts the Newton iterations of the parts that
+    /// converged and carries the last part's residual; the error is the
+    /// deepest failed part's (its time, step and residual).
+    pub(super) fn step_halving(&mut self, halvings: u32) -> Result<StepReport, SolverError> {
+        match self.step_once() {
+            Err(e) if halvings > 0 && newton_failed(&e) => {}
+            done => return done,
+        }
+        let dt = self.time_step();
+        self.set_time_step(0.5 * dt);
+        let halves = self
+            .step_halving(halvings - 1)
+            .and_then(|a| self.step_halving(halvings - 1).map(|b| (a, b)));
+        self.set_time_step(dt);
+        let (a, b) = halves?;
+        let mut report = b;
+        report.newton.iterations += a.newton.iterations;
+        report.newton.factorizations += a.newton.factorizations;
+        Ok(report)
+    }
+}
+
+/// Whether Newton failed (not the energy watchdog).
+fn newton_failed(e: &SolverError) -> bool {
+    matches!(
+        e.kind,
+        FailureKind::NotConverged | FailureKind::NonFinite | FailureKind::SingularJacobian
+    )
+}
