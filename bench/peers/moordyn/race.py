@@ -120,31 +120,28 @@ def deck_text(pb, refine, dtm):
     return "".join(out[:k] + ["0.0001  threshIC\n", "200.0  TmaxIC\n"] + out[k:])
 
 
-def segments(pb, refine):
-    """The total segments (elements) of a resolution."""
-    total, section = 0, None
+def deck_rows(pb, section):
+    """The fields of the data rows (first field a number) of a section of
+    the problem's deck."""
+    current = None
     with open(pb.deck) as f:
         for line in f:
             if line.startswith("---"):
-                section = line.strip("- \n").upper()
+                current = line.strip("- \n").upper()
                 continue
             fields = line.split()
-            if section == "LINES" and fields and fields[0].isdigit():
-                total += int(round(int(fields[5]) * refine))
-    return total
+            if current == section and fields and fields[0].isdigit():
+                yield fields
+
+
+def segments(pb, refine):
+    """The total segments (elements) of a resolution."""
+    return sum(int(round(int(f[5]) * refine)) for f in deck_rows(pb, "LINES"))
 
 
 def positions0(pb):
     """The coupled points' positions in the deck."""
-    rows, section = {}, None
-    with open(pb.deck) as f:
-        for line in f:
-            if line.startswith("---"):
-                section = line.strip("- \n").upper()
-                continue
-            fields = line.split()
-            if section == "POINTS" and fields and fields[0].isdigit():
-                rows[int(fields[0])] = [float(v) for v in fields[2:5]]
+    rows = {int(f[0]): [float(v) for v in f[2:5]] for f in deck_rows(pb, "POINTS")}
     return np.array([rows[i] for i in pb.coupled])
 
 

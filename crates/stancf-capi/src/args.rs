@@ -35,8 +35,8 @@ pub unsafe fn optional_values<'a>(p: *const f64, n: usize) -> Option<&'a [f64]> 
 /// Room for `n` values at `p`.
 ///
 /// # Safety
-/// `p` is NULL or points to at least `n` writable doubles.
-pub unsafe fn room<'a>(p: *mut f64, n: usize, what: &str) -> Result<&'a mut [f64], Error> {
+/// `p` is NULL or points to at least `n` writable values.
+pub unsafe fn room<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], Error> {
     if p.is_null() {
         return Err(Error::input(format!("{what} is NULL")));
     }

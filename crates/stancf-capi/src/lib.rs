@@ -111,10 +111,7 @@ pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64)
     guard(|| {
         let sys = args::system(s)?;
         let known = &sys.coupled.coupled_ids;
-        if ids.is_null() {
-            return Err(Error::input("ids is NULL"));
-        }
-        std::slice::from_raw_parts_mut(ids, known.len()).copy_from_slice(known);
+        args::room(ids, known.len(), "ids")?.copy_from_slice(known);
         Ok(())
     })
 }
