@@ -29,7 +29,7 @@ pub trait Jacobian: AddEntries {
 }
 
 /// The factors of a [`Jacobian`], computed in place without allocation.
-pub trait Factorization {
+pub trait Factorization: Clone {
     type Matrix: Jacobian;
     /// The matrix to fill before [`Self::factorize`].
     fn matrix_mut(&mut self) -> &mut Self::Matrix;

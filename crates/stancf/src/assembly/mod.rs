@@ -59,6 +59,7 @@ pub use layout::SlabLayout;
 pub use matrices::stiffness_and_mass;
 pub use scaling::Scales;
 pub use system::{AssemblyScratch, StepProblem, StepStart};
+pub use terms::PARALLEL_ELEMENTS;
 
 /// Position (e) or velocity (v) coordinates of a time node.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -64,8 +64,10 @@ impl StepStart {
 /// Scratch for the assembly, allocated once.
 #[derive(Clone, Debug)]
 pub struct AssemblyScratch {
-    derivs2: SlabDerivatives<12>,
-    derivs3: SlabDerivatives<18>,
+    /// The slab derivatives of a batch of elements (one, evaluated
+    /// serially, or a batch evaluated on several threads).
+    derivs2: Vec<SlabDerivatives<12>>,
+    derivs3: Vec<SlabDerivatives<18>>,
     /// e and v at every time node, `[i * dofs + g]`, from the unknowns and
     /// the prescribed values.
     pub node_e: Vec<f64>,
@@ -91,8 +93,8 @@ impl AssemblyScratch {
     pub fn new(model: &Model, layout: &SlabLayout) -> Self {
         let n = model.dofs();
         AssemblyScratch {
-            derivs2: SlabDerivatives::default(),
-            derivs3: SlabDerivatives::default(),
+            derivs2: Vec::new(),
+            derivs3: Vec::new(),
             node_e: vec![0.0; layout.time_nodes() * n],
             node_v: vec![0.0; layout.time_nodes() * n],
             mass_v_end: vec![0.0; n],

@@ -11,6 +11,25 @@ use crate::element::{CableElement, SlabDerivatives, SlabLoads};
 use crate::linear::AddEntries;
 use crate::loads::EndMoment;
 use crate::model::{coordinate, gather, SLOT_R, SLOT_R_X};
+use rayon::prelude::*;
+
+/// Elements of a line from which its residual's slab derivatives are
+/// evaluated on several threads (below, on one: the hand-offs would cost
+/// more than they save; measured in docs/method.md §7.8).
+pub const PARALLEL_ELEMENTS: usize = 1024;
+
+/// How many elements of a line of `elements` are evaluated at once before
+/// their rows are added: all of them on rayon's threads for a residual of
+/// a long enough line, one at a time (the serial loop) otherwise. With the
+/// Jacobian, the serial loop: the Hessian blocks are added serially and
+/// outweigh the share that would run in parallel (measured, §7.8).
+fn element_batch(elements: usize, with_jacobian: bool) -> usize {
+    if with_jacobian || elements < PARALLEL_ELEMENTS || rayon::current_num_threads() < 2 {
+        1
+    } else {
+        elements
+    }
+}
 
 /// (time node, kind) of the four slots of a layer j's element: e_j, v_j,
 /// e_j+1, v_j+1 (the order of the element's time shape functions).
@@ -42,10 +61,18 @@ type SlotIndices<const ND: usize> = [Option<[usize; ND]>; 4];
 impl StepProblem<'_> {
     /// Element actions of every layer, eq. (10) (docs/method.md §3.1-3.2,
     /// (M13)-(M14)).
+    ///
+    /// The elements' slab derivatives are independent of one another: for
+    /// a residual of a line of [`PARALLEL_ELEMENTS`] or more (and more than
+    /// one thread) they are evaluated on rayon's threads, each into its
+    /// own [`SlabDerivatives`], and then added to the rows one element
+    /// after the other in the element order, as the serial loop adds them:
+    /// the same sums in the same order, so the result is the serial one to
+    /// the bit, whatever the number of threads (docs/method.md §7.8).
     pub(super) fn slab_elements<const NS: usize, const ND: usize, J: AddEntries>(
         &self,
         elements: &[CableElement<NS, ND>],
-        derivs: &mut SlabDerivatives<ND>,
+        derivs: &mut Vec<SlabDerivatives<ND>>,
         residual: &mut [f64],
         mut jacobian: Option<&mut J>,
         scratch: &mut AssemblyScratch,
@@ -61,47 +88,62 @@ impl StepProblem<'_> {
             water: self.model.water.as_ref(),
             time: self.start.t,
         };
+        let batch = element_batch(elements.len(), jacobian.is_some());
+        if derivs.len() < batch {
+            derivs.resize_with(batch, SlabDerivatives::default);
+        }
+        let with_jacobian = jacobian.is_some();
         let mut block = [[0.0; ND]; ND];
         for j in 0..layout.layers() {
             loads.time = self.start.t + j as f64 * self.slab.dt;
             let slots = layer_slots(j);
             let row_slots = slots.map(|(i, k)| layout.row_slot(i, k));
             let col_slots = slots.map(|(i, k)| layout.unknown_slot(i, k));
-            for (k, el) in elements.iter().enumerate() {
-                let o = coordinate(dpn, k, SLOT_R, 0);
-                let mut y = [[0.0; ND]; 4];
-                for (m, &(i, kind)) in slots.iter().enumerate() {
-                    let src = match kind {
-                        Kind::Position => &scratch.node_e,
-                        Kind::Velocity => &scratch.node_v,
-                    };
-                    y[m] = gather(src, i * n + o);
-                }
-                el.slab_derivatives(self.slab, &y, &loads, jacobian.is_some(), derivs);
-                scratch.drag_work += derivs.drag_work;
-                scratch.damping_work += derivs.damping_work;
-                scratch.seabed_work += derivs.seabed_work;
-                scratch.water_work += derivs.water_work;
-                let targets = self.element_targets::<ND>(k, &row_slots);
-                for m in 0..4 {
-                    for d in 0..ND {
-                        self.add(targets[m][d], derivs.grad[m][d], residual, scratch);
-                    }
-                }
-                let Some(jac) = jacobian.as_deref_mut() else {
-                    continue;
-                };
-                let mut rows: SlotIndices<ND> = [None; 4];
-                for m in 0..4 {
-                    rows[m] = row_slots[m].map(|_| {
-                        targets[m].map(|t| match t {
-                            Target::Row(r) => r,
-                            _ => NONE,
-                        })
+            for first in (0..elements.len()).step_by(batch) {
+                let count = batch.min(elements.len() - first);
+                let chunk = &mut derivs[..count];
+                let (node_e, node_v) = (&scratch.node_e, &scratch.node_v);
+                let evaluate = |(i, d): (usize, &mut SlabDerivatives<ND>)| {
+                    let k = first + i;
+                    let o = coordinate(dpn, k, SLOT_R, 0);
+                    let y = slots.map(|(i, kind)| match kind {
+                        Kind::Position => gather(node_e, i * n + o),
+                        Kind::Velocity => gather(node_v, i * n + o),
                     });
+                    elements[k].slab_derivatives(self.slab, &y, &loads, with_jacobian, d);
+                };
+                if count > 1 {
+                    chunk.par_iter_mut().enumerate().for_each(evaluate);
+                } else {
+                    chunk.iter_mut().enumerate().for_each(evaluate);
                 }
-                let cols = col_slots.map(|s| s.map(|s| self.element_unknowns::<ND>(k, s)));
-                add_slab_hessian(el, self.slab, derivs, &rows, &cols, &mut block, jac);
+                for (i, d) in chunk.iter().enumerate() {
+                    let k = first + i;
+                    scratch.drag_work += d.drag_work;
+                    scratch.damping_work += d.damping_work;
+                    scratch.seabed_work += d.seabed_work;
+                    scratch.water_work += d.water_work;
+                    let targets = self.element_targets::<ND>(k, &row_slots);
+                    for m in 0..4 {
+                        for dd in 0..ND {
+                            self.add(targets[m][dd], d.grad[m][dd], residual, scratch);
+                        }
+                    }
+                    let Some(jac) = jacobian.as_deref_mut() else {
+                        continue;
+                    };
+                    let mut rows: SlotIndices<ND> = [None; 4];
+                    for m in 0..4 {
+                        rows[m] = row_slots[m].map(|_| {
+                            targets[m].map(|t| match t {
+                                Target::Row(r) => r,
+                                _ => NONE,
+                            })
+                        });
+                    }
+                    let cols = col_slots.map(|s| s.map(|s| self.element_unknowns::<ND>(k, s)));
+                    add_slab_hessian(&elements[k], self.slab, d, &rows, &cols, &mut block, jac);
+                }
             }
         }
     }
