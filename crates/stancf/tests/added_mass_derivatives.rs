@@ -35,6 +35,7 @@ fn wet(water: &LineInWater) -> SlabLoads<'_> {
         seabed: None,
         water: Some(water),
         time: 0.0,
+        in_plane: false,
     }
 }
 

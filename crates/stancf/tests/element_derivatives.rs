@@ -291,6 +291,7 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
             seabed: None,
             water: None,
             time: 0.0,
+            in_plane: false,
         };
         let r = rules(3, 3);
         let s = slab(0.05, 3);
@@ -369,6 +370,7 @@ fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
         seabed: Some(&contact),
         water: None,
         time: 0.0,
+        in_plane: false,
     };
     let s = slab(0.05, 3);
     let r = rules(3, 3);

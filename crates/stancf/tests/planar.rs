@@ -2,10 +2,13 @@
 //! without its out-of-plane coordinates (`Model::reduce_to_plane`), and
 //! gives the same motion and reactions as the full 3-D solve.
 
+mod common;
+
+use stancf::element::{SlabDerivatives, SlabLoads};
 use stancf::loads::{AirDrag, DragModel};
 use stancf::{
-    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Model,
-    ModelOptions, NewtonSettings, Simulation, State, StepSettings, TimeScheme,
+    Cable, Constraint, ConstraintKind, ConstraintMethod, ElementType, Load, Material, Measures,
+    Model, ModelOptions, NewtonSettings, Simulation, State, StepSettings, TimeScheme,
 };
 
 const TOL: f64 = 1e-12;
@@ -170,4 +173,85 @@ fn motion_out_of_the_plane_is_not_reduced() {
     let a = Simulation::new(model.clone(), state.clone(), full).unwrap();
     let b = Simulation::new(model, state, auto).unwrap();
     assert_eq!(a.unknowns_per_step(), b.unknowns_per_step());
+}
+
+/// Holds a slab state in the plane z = z0: r's z at z0, r_x's and r_xx's
+/// z at 0, no z velocity.
+fn into_plane<const NS: usize, const ND: usize>(y: &mut [[f64; ND]; 4], z0: f64) {
+    for (m, values) in y.iter_mut().enumerate() {
+        for (d, v) in values.iter_mut().enumerate() {
+            if d % 3 == 2 {
+                // Vector d / 3 of the element: r at a node where it is a
+                // multiple of the vectors per node.
+                let is_position = (d / 3) % (NS / 2) == 0;
+                *v = if m % 2 == 0 && is_position { z0 } else { 0.0 };
+            }
+        }
+    }
+}
+
+/// The kernel of a line held in a plane (docs/method.md §7.10) gives the
+/// 3-D kernel's x and y entries of the gradient, of every Hessian block
+/// and of the slab gradient, to the bit, and zero z rows and columns: the
+/// accumulation over 2 components changes nothing the reduced step uses.
+fn in_plane_kernel_matches<const NS: usize, const ND: usize>(
+    make: impl Fn(Measures) -> stancf::element::CableElement<NS, ND>,
+) {
+    let mut rng = common::Rng(0x0bad_cafe_1234_5678);
+    let slab = common::slab(0.01, 3);
+    for measures in common::ALL_MEASURES {
+        let el = make(measures);
+        for _ in 0..5 {
+            let mut y = common::random_slab_state::<NS, ND>(&mut rng, 0.25, 0.1);
+            into_plane::<NS, ND>(&mut y, 0.3);
+            let (mut g3, mut h3) = ([0.0; ND], [[0.0; ND]; ND]);
+            let (mut g2, mut h2) = ([0.0; ND], [[0.0; ND]; ND]);
+            let u3 = el.strain_energy_derivatives(&y[0], &mut g3, Some(&mut h3));
+            let u2 = el.strain_energy_derivatives_in_plane(&y[0], &mut g2, Some(&mut h2));
+            assert_eq!(u3.to_bits(), u2.to_bits());
+            for a in 0..ND {
+                if a % 3 == 2 {
+                    assert_eq!(g2[a], 0.0);
+                    assert!(h2[a].iter().all(|&v| v == 0.0));
+                    continue;
+                }
+                assert_eq!(g2[a].to_bits(), g3[a].to_bits(), "gradient {a}");
+                for b in (0..ND).filter(|b| b % 3 != 2) {
+                    assert_eq!(h2[a][b].to_bits(), h3[a][b].to_bits(), "Hessian ({a}, {b})");
+                }
+            }
+            let mut loads = SlabLoads::gravity([0.0, -9.81, 0.0]);
+            let mut full = SlabDerivatives::default();
+            el.slab_derivatives(&slab, &y, &loads, true, &mut full);
+            loads.in_plane = true;
+            let mut plane = SlabDerivatives::default();
+            el.slab_derivatives(&slab, &y, &loads, true, &mut plane);
+            let (mut b3, mut b2) = ([[0.0; ND]; ND], [[0.0; ND]; ND]);
+            for m in 0..4 {
+                for a in (0..ND).filter(|a| a % 3 != 2) {
+                    assert_eq!(plane.grad[m][a].to_bits(), full.grad[m][a].to_bits());
+                }
+                for n in 0..4 {
+                    el.slab_hessian_block(&slab, &full, m, n, &mut b3);
+                    el.slab_hessian_block(&slab, &plane, m, n, &mut b2);
+                    for a in 0..ND {
+                        for b in 0..ND {
+                            if a % 3 == 2 || b % 3 == 2 {
+                                assert_eq!(b2[a][b], 0.0, "block ({m}, {n}), ({a}, {b})");
+                            } else {
+                                assert_eq!(b2[a][b].to_bits(), b3[a][b].to_bits());
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_in_plane_kernel_is_the_3d_kernel_in_the_plane() {
+    let rules = common::rules(5, 3);
+    in_plane_kernel_matches(|m| common::sac2(0.25, m, &rules));
+    in_plane_kernel_matches(|m| common::sac3(0.25, m, &rules));
 }

@@ -87,6 +87,7 @@ impl StepProblem<'_> {
             seabed: self.model.seabed.as_ref(),
             water: self.model.water.as_ref(),
             time: self.start.t,
+            in_plane: self.model.constraints.in_plane,
         };
         let batch = element_batch(elements.len(), jacobian.is_some());
         if derivs.len() < batch {

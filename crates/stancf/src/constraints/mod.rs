@@ -318,6 +318,10 @@ pub struct Constraints {
     /// coordinate has a fixed `motion` and is always eliminated, never
     /// given a multiplier. Empty when no coordinate is held so.
     pub inactive: Vec<bool>,
+    /// Every z coordinate is held by the planar reduction (the line moves
+    /// in a plane z = const): its elements leave their z rows and columns
+    /// unevaluated (docs/method.md §7.10).
+    pub in_plane: bool,
 }
 
 impl Constraints {
@@ -437,6 +441,7 @@ impl Constraints {
             position_nodes,
             directions,
             inactive: Vec::new(),
+            in_plane: false,
         })
     }
 

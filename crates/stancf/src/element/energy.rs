@@ -37,6 +37,35 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) -> f64 {
+        self.energy_derivatives_in::<3>(q, grad, hess)
+    }
+
+    /// [`Self::strain_energy_derivatives`] of a line held in the plane
+    /// z = const (the planar reduction, docs/method.md §7.10): the x and y
+    /// entries of the gradient and Hessian, the very numbers of the 3-D
+    /// kernel (the densities are still those of the 3-vectors r_x, r_xx),
+    /// and zero in every z row and column, which the reduced step has no
+    /// unknowns or rows for. The accumulation, most of a Jacobian's cost,
+    /// runs over 2 components instead of 3 (4 Hessian entries per block
+    /// instead of 9).
+    pub fn strain_energy_derivatives_in_plane(
+        &self,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) -> f64 {
+        self.energy_derivatives_in::<2>(q, grad, hess)
+    }
+
+    /// The derivatives in the first D components of every vector (3: all;
+    /// 2: x and y).
+    #[inline(always)]
+    fn energy_derivatives_in<const D: usize>(
+        &self,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) -> f64 {
         *grad = [0.0; ND];
         let mut hess = hess;
         if let Some(h) = hess.as_deref_mut() {
@@ -56,7 +85,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             u += p.wl * e;
             let a = &p.shape.n_x;
             for k in 0..NS {
-                for i in 0..3 {
+                for i in 0..D {
                     grad[3 * k + i] += p.wl * a[k] * g[i];
                 }
             }
@@ -64,8 +93,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 for k in 0..NS {
                     for l in k..NS {
                         let c = p.wl * a[k] * a[l];
-                        for i in 0..3 {
-                            for j in 0..3 {
+                        for i in 0..D {
+                            for j in 0..D {
                                 hm[3 * k + i][3 * l + j] += c * h[i][j];
                             }
                         }
@@ -86,7 +115,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             let a = &p.shape.n_x;
             let b = &p.shape.n_xx;
             for k in 0..NS {
-                for i in 0..3 {
+                for i in 0..D {
                     grad[3 * k + i] += p.wl * (a[k] * g[i] + b[k] * g[3 + i]);
                 }
             }
@@ -97,8 +126,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                         let ab = p.wl * a[k] * b[l];
                         let ba = p.wl * b[k] * a[l];
                         let bb = p.wl * b[k] * b[l];
-                        for i in 0..3 {
-                            for j in 0..3 {
+                        for i in 0..D {
+                            for j in 0..D {
                                 hm[3 * k + i][3 * l + j] += aa * h[i][j]
                                     + ab * h[i][3 + j]
                                     + ba * h[3 + i][j]
@@ -113,8 +142,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             // Mirror the blocks l < k from the computed upper block triangle.
             for k in 0..NS {
                 for l in 0..k {
-                    for i in 0..3 {
-                        for j in 0..3 {
+                    for i in 0..D {
+                        for j in 0..D {
                             hm[3 * k + i][3 * l + j] = hm[3 * l + j][3 * k + i];
                         }
                     }

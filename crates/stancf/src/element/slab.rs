@@ -61,6 +61,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out.water_work = 0.0;
         out.has_drag = !loads.drag.is_empty() || loads.seabed.is_some() || loads.water.is_some();
         out.has_damping = self.section.ba != 0.0;
+        out.in_plane = loads.in_plane;
         let rates = out.has_drag || out.has_damping;
         let np = slab.points.len();
         // The entrained water's kinetic energy (docs/method.md §12.5).
@@ -85,7 +86,11 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             } else {
                 None
             };
-            let strain = self.strain_energy_derivatives(&q, &mut du, hess);
+            let strain = if loads.in_plane {
+                self.strain_energy_derivatives_in_plane(&q, &mut du, hess)
+            } else {
+                self.strain_energy_derivatives(&q, &mut du, hess)
+            };
             out.action += tp.w_dt * (0.5 * dot_n(&qdot, &mq) - strain + dot_n(&fg, &q));
             // Generalized drag and damping forces on q at this time point.
             let at = with_hessian.then_some(gi);
@@ -139,23 +144,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut [[f64; ND]; ND],
     ) {
         *out = [[0.0; ND]; ND];
-        for (gi, tp) in slab.points.iter().enumerate() {
-            let c = -tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
-            let k = &derivs.k_at_points[gi];
-            for (orow, krow) in out.iter_mut().zip(k.iter()) {
-                for (o, kv) in orow.iter_mut().zip(krow.iter()) {
-                    *o += c * kv;
-                }
-            }
-        }
-        let cm = slab.kinetic[m][n];
-        for k in 0..NS {
-            for l in 0..NS {
-                let v = cm * self.mass[k][l];
-                for i in 0..3 {
-                    out[3 * k + i][3 * l + i] += v;
-                }
-            }
+        if derivs.in_plane {
+            self.elastic_and_kinetic_block::<2>(slab, derivs, m, n, out);
+        } else {
+            self.elastic_and_kinetic_block::<3>(slab, derivs, m, n, out);
         }
         if derivs.has_drag || derivs.has_damping {
             for (gi, tp) in slab.points.iter().enumerate() {
@@ -171,6 +163,45 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         if derivs.added_mass.active {
             self.add_entrained_block(slab, &derivs.added_mass, m, n, out);
+        }
+    }
+
+    /// The strain energy's and the kinetic energy's share of block (m, n)
+    /// of [`Self::slab_hessian_block`], added to `out` in the first D
+    /// components of every node vector (2 for a line held in a plane:
+    /// its z rows and columns stay zero, §7.10):
+    /// `C_mn M (x) I_D - sum_g w_g dt phi_m phi_n K_g`.
+    #[inline(always)]
+    fn elastic_and_kinetic_block<const D: usize>(
+        &self,
+        slab: &TimeSlab,
+        derivs: &SlabDerivatives<ND>,
+        m: usize,
+        n: usize,
+        out: &mut [[f64; ND]; ND],
+    ) {
+        for (gi, tp) in slab.points.iter().enumerate() {
+            let c = -tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
+            let k = &derivs.k_at_points[gi];
+            for ka in 0..NS {
+                for i in 0..D {
+                    let (orow, krow) = (&mut out[3 * ka + i], &k[3 * ka + i]);
+                    for kb in 0..NS {
+                        for j in 0..D {
+                            orow[3 * kb + j] += c * krow[3 * kb + j];
+                        }
+                    }
+                }
+            }
+        }
+        let cm = slab.kinetic[m][n];
+        for k in 0..NS {
+            for l in 0..NS {
+                let v = cm * self.mass[k][l];
+                for i in 0..D {
+                    out[3 * k + i][3 * l + i] += v;
+                }
+            }
         }
     }
 }
@@ -195,6 +226,9 @@ pub struct SlabDerivatives<const ND: usize> {
     /// 0; its derivatives share C_g, G_g with the drag's) and its work
     /// over the slab, -int int BA eps_dot^2 dx dt (never positive).
     pub has_damping: bool,
+    /// Evaluated for a line held in a plane ([`SlabLoads::in_plane`]): the
+    /// Hessian's z rows and columns are zero.
+    pub in_plane: bool,
     pub damping_work: f64,
     /// The seabed's work over the slab, int int f . r_dot dx dt (W47).
     pub seabed_work: f64,
@@ -216,6 +250,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             has_drag: false,
             drag_work: 0.0,
             has_damping: false,
+            in_plane: false,
             damping_work: 0.0,
             seabed_work: 0.0,
             water_work: 0.0,
@@ -239,6 +274,10 @@ pub struct SlabLoads<'a> {
     /// The time at the slab's start (s): time point g is at
     /// `time + offset_g` (the sea's kinematics depend on it).
     pub time: f64,
+    /// The line is held in the plane z = const (the planar reduction):
+    /// the strain energy's z rows and columns are not wanted and are left
+    /// zero (docs/method.md §7.10).
+    pub in_plane: bool,
 }
 
 impl SlabLoads<'_> {
@@ -250,6 +289,7 @@ impl SlabLoads<'_> {
             seabed: None,
             water: None,
             time: 0.0,
+            in_plane: false,
         }
     }
 }

@@ -105,6 +105,7 @@ impl Model {
                 for g in dofs {
                     self.constraints.hold_inactive(g, state.e[g]);
                 }
+                self.constraints.in_plane = true;
                 true
             }
             None => false,
