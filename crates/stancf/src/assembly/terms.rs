@@ -107,10 +107,14 @@ impl StepProblem<'_> {
                 let evaluate = |(i, d): (usize, &mut SlabDerivatives<ND>)| {
                     let k = first + i;
                     let o = coordinate(dpn, k, SLOT_R, 0);
-                    let y = slots.map(|(i, kind)| match kind {
-                        Kind::Position => gather(node_e, i * n + o),
-                        Kind::Velocity => gather(node_v, i * n + o),
-                    });
+                    let mut y = [[0.0; ND]; 4];
+                    for (ym, &(i, kind)) in y.iter_mut().zip(&slots) {
+                        let src = match kind {
+                            Kind::Position => node_e,
+                            Kind::Velocity => node_v,
+                        };
+                        *ym = gather(src, i * n + o);
+                    }
                     elements[k].slab_derivatives(self.slab, &y, &loads, with_jacobian, d);
                 };
                 if count > 1 {

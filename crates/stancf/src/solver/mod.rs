@@ -192,6 +192,16 @@ impl<F: Factorization> NewtonWorkspace<F> {
         }
     }
 
+    /// The update with the factors in hand: dx = J^-1 R (R the last
+    /// residual evaluated), x <- x - dx.
+    fn update_with_factors(&mut self, x: &mut [f64]) {
+        self.dx.copy_from_slice(&self.residual);
+        self.lu.solve(&mut self.dx);
+        for (xi, d) in x.iter_mut().zip(self.dx.iter()) {
+            *xi -= d;
+        }
+    }
+
     /// Allocates Broyden's buffers (once).
     fn prepare_broyden(&mut self, max_iterations: usize) {
         let n = self.residual.len();

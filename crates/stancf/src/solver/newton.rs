@@ -77,11 +77,7 @@ pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             // evaluated with this residual is not factorized: the factors
             // in hand are the last Newton update's).
             let t0 = now(clock);
-            ws.dx.copy_from_slice(&ws.residual);
-            ws.lu.solve(&mut ws.dx);
-            for (xi, d) in x.iter_mut().zip(ws.dx.iter()) {
-                *xi -= d;
-            }
+            ws.update_with_factors(x);
             ws.timing.part_b += now(clock) - t0;
             report.iterations += 1;
             report.increment = system.increment_norm(&ws.dx);
@@ -107,11 +103,7 @@ pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
         if factorized.is_err() {
             return fail(FailureKind::SingularJacobian, report);
         }
-        ws.dx.copy_from_slice(&ws.residual);
-        ws.lu.solve(&mut ws.dx);
-        for (xi, d) in x.iter_mut().zip(ws.dx.iter()) {
-            *xi -= d;
-        }
+        ws.update_with_factors(x);
         ws.timing.part_b += now(clock) - t2;
         report.iterations += 1;
         report.increment = system.increment_norm(&ws.dx);
