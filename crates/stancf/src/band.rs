@@ -108,6 +108,10 @@ impl BandMatrix {
 pub struct BandLu {
     a: BandMatrix,
     pivots: Vec<usize>,
+    /// Super-diagonals of U that the factorization filled: ku where no
+    /// row was interchanged, at most kl + ku (the fill room); the
+    /// back-substitution runs over these only (the rest are zeros).
+    u_width: usize,
 }
 
 /// The factorization met a zero pivot in this column.
@@ -119,9 +123,12 @@ pub struct SingularMatrix {
 impl BandLu {
     /// Storage for factorizing matrices of this shape.
     pub fn new(n: usize, kl: usize, ku: usize) -> Self {
+        let a = BandMatrix::new(n, kl, ku);
+        let u_width = a.kl + a.ku;
         BandLu {
-            a: BandMatrix::new(n, kl, ku),
+            a,
             pivots: vec![0; n],
+            u_width,
         }
     }
 
@@ -147,6 +154,7 @@ impl BandLu {
         let tiny = scale * 1e-300_f64.max(f64::EPSILON * 1e-8);
         let data = &mut self.a.data;
         let mut ju = 0usize;
+        let mut u_width = 0usize;
         for j in 0..n {
             let km = kl.min(n - 1 - j);
             // Pivot: largest |A(j + i, j)|, i = 0..=km.
@@ -165,6 +173,7 @@ impl BandLu {
                 return Err(SingularMatrix { column: j });
             }
             ju = ju.max((j + ku + p).min(n - 1));
+            u_width = u_width.max(ju - j);
             if p != 0 {
                 // Swap rows j and j + p in columns j..=ju.
                 for c in j..=ju {
@@ -195,6 +204,7 @@ impl BandLu {
                 }
             }
         }
+        self.u_width = u_width;
         Ok(())
     }
 
@@ -224,13 +234,14 @@ impl BandLu {
                 }
             }
         }
-        // Backward: U has kl + ku super-diagonals.
+        // Backward: U has kl + ku super-diagonals, of which the first
+        // u_width hold the factors (the others are exact zeros).
         for j in (0..n).rev() {
             let base = j * ld + diag - j;
             b[j] /= data[base + j];
             let bj = b[j];
             if bj != 0.0 {
-                let lo = j.saturating_sub(kl + ku);
+                let lo = j.saturating_sub(self.u_width);
                 for (bi, &u) in b[lo..j].iter_mut().zip(&data[base + lo..base + j]) {
                     *bi -= u * bj;
                 }

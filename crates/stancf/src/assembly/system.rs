@@ -68,6 +68,10 @@ pub struct AssemblyScratch {
     /// serially, or a batch evaluated on several threads).
     derivs2: Vec<SlabDerivatives<12>>,
     derivs3: Vec<SlabDerivatives<18>>,
+    /// Where each element's gradient entries go, `[((layer elements +
+    /// element) 4 + slot) ND + entry]`: fixed by the layout this scratch
+    /// serves, found at the first evaluation.
+    pub(super) element_targets: Vec<Target>,
     /// e and v at every time node, `[i * dofs + g]`, from the unknowns and
     /// the prescribed values.
     pub node_e: Vec<f64>,
@@ -95,6 +99,7 @@ impl AssemblyScratch {
         AssemblyScratch {
             derivs2: Vec::new(),
             derivs3: Vec::new(),
+            element_targets: Vec::new(),
             node_e: vec![0.0; layout.time_nodes() * n],
             node_v: vec![0.0; layout.time_nodes() * n],
             mass_v_end: vec![0.0; n],
@@ -121,7 +126,7 @@ pub struct StepProblem<'a> {
 
 /// Where the rows of one element slot go: a row index, or the reaction
 /// buffer for an eliminated constrained coordinate, or nowhere.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug)]
 pub(super) enum Target {
     Row(usize),
     Reaction(usize),

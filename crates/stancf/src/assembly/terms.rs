@@ -95,6 +95,20 @@ impl StepProblem<'_> {
         }
         let with_jacobian = jacobian.is_some();
         let mut block = [[0.0; ND]; ND];
+        // Where every element's gradient entries go, per layer: fixed by
+        // the layout, so found once (the first evaluation) and kept.
+        let mut all_targets = std::mem::take(&mut scratch.element_targets);
+        let per_element = 4 * ND;
+        if all_targets.len() != layout.layers() * elements.len() * per_element {
+            all_targets.clear();
+            for j in 0..layout.layers() {
+                let row_slots = layer_slots(j).map(|(i, k)| layout.row_slot(i, k));
+                for k in 0..elements.len() {
+                    let targets = self.element_targets::<ND>(k, &row_slots);
+                    all_targets.extend(targets.iter().flatten());
+                }
+            }
+        }
         for j in 0..layout.layers() {
             loads.time = self.start.t + j as f64 * self.slab.dt;
             let slots = layer_slots(j);
@@ -128,10 +142,11 @@ impl StepProblem<'_> {
                     scratch.damping_work += d.damping_work;
                     scratch.seabed_work += d.seabed_work;
                     scratch.water_work += d.water_work;
-                    let targets = self.element_targets::<ND>(k, &row_slots);
+                    let at = (j * elements.len() + k) * per_element;
+                    let targets = &all_targets[at..at + per_element];
                     for m in 0..4 {
                         for dd in 0..ND {
-                            self.add(targets[m][dd], d.grad[m][dd], residual, scratch);
+                            self.add(targets[m * ND + dd], d.grad[m][dd], residual, scratch);
                         }
                     }
                     let Some(jac) = jacobian.as_deref_mut() else {
@@ -140,7 +155,7 @@ impl StepProblem<'_> {
                     let mut rows: SlotIndices<ND> = [None; 4];
                     for m in 0..4 {
                         rows[m] = row_slots[m].map(|_| {
-                            targets[m].map(|t| match t {
+                            std::array::from_fn(|dd| match targets[m * ND + dd] {
                                 Target::Row(r) => r,
                                 _ => NONE,
                             })
@@ -151,6 +166,7 @@ impl StepProblem<'_> {
                 }
             }
         }
+        scratch.element_targets = all_targets;
     }
 
     /// Where each entry of element k's gradient goes, per slot of the

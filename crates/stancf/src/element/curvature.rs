@@ -69,7 +69,12 @@ pub(super) fn bending_energy_terms(
     let s = g * h - m * m;
     let p = form.power();
     let pf = p as f64;
-    let gp = g.powi(-p);
+    // g^-p as 1 / g^p with the products powi itself forms (the same
+    // bits, without its library call).
+    let gp = match p {
+        2 => 1.0 / (g * g),
+        _ => 1.0 / (g * (g * g)),
+    };
     let gp1 = gp / g;
     let gp2 = gp1 / g;
     let mut ds_x = [0.0; 3];
