@@ -43,11 +43,13 @@
 //!
 //! The files: `layout.rs` numbers the unknowns and rows ([`SlabLayout`]);
 //! `system.rs` holds a step's known data, its scratch and the assembly
-//! driver ([`StepProblem::assemble`]); `terms.rs` the contributions
-//! (element actions, static element rows, nodal loads, momentum and
-//! constraint terms); `scaling.rs` the convergence scales ([`Scales`]);
+//! driver ([`StepProblem::assemble`]); `elements.rs` the elements'
+//! contributions (element actions, on several threads for a long line's
+//! residual, and static element rows); `terms.rs` the others (nodal loads,
+//! momentum and constraint terms); `scaling.rs` the convergence scales ([`Scales`]);
 //! `matrices.rs` the global stiffness and mass matrices.
 
+mod elements;
 mod entrained;
 mod layout;
 mod matrices;
@@ -55,11 +57,11 @@ mod scaling;
 mod system;
 mod terms;
 
+pub use elements::PARALLEL_ELEMENTS;
 pub use layout::SlabLayout;
 pub use matrices::stiffness_and_mass;
 pub use scaling::Scales;
 pub use system::{AssemblyScratch, StepProblem, StepStart};
-pub use terms::PARALLEL_ELEMENTS;
 
 /// Position (e) or velocity (v) coordinates of a time node.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
