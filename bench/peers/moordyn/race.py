@@ -320,6 +320,12 @@ def main():
         if not only or pb.name in only:
             rows += race(pb)
     write(rows)
+    if "--publish" in sys.argv:
+        # The committed copy: docs/race/moordyn_race.{csv,md,png}.
+        for ext in ("csv", "md", "png"):
+            src = os.path.join(OUT, "moordyn_race." + ext)
+            if os.path.exists(src):
+                shutil.copy(src, os.path.join(ROOT, "docs", "race"))
 
 
 def cheapest(rows, code, level):
