@@ -193,7 +193,31 @@ impl BandLu {
                 *v *= inv;
             }
             let l = &*l;
-            for c in (j + 1)..=ju {
+            // Two columns at a time (each column's update is its own, so
+            // the order of the operations on every entry is unchanged):
+            // the multipliers are loaded once for both.
+            let mut c = j + 1;
+            while c < ju {
+                let base0 = (c - j - 1) * ld + diag + j - c;
+                let base1 = base0 + ld - 1;
+                let (a0, a1) = (right[base0], right[base1]);
+                let (first, second) = right.split_at_mut(base1 + 1);
+                let t0 = &mut first[base0 + 1..base0 + 1 + km];
+                let t1 = &mut second[..km];
+                match (a0 != 0.0, a1 != 0.0) {
+                    (true, true) => {
+                        for ((x0, x1), &li) in t0.iter_mut().zip(t1.iter_mut()).zip(l) {
+                            *x0 -= li * a0;
+                            *x1 -= li * a1;
+                        }
+                    }
+                    (true, false) => t0.iter_mut().zip(l).for_each(|(x, &li)| *x -= li * a0),
+                    (false, true) => t1.iter_mut().zip(l).for_each(|(x, &li)| *x -= li * a1),
+                    (false, false) => {}
+                }
+                c += 2;
+            }
+            if c == ju {
                 let base = (c - j - 1) * ld + diag + j - c;
                 let a = right[base];
                 if a != 0.0 {
