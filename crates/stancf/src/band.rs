@@ -204,28 +204,21 @@ impl BandLu {
                 let (first, second) = right.split_at_mut(base1 + 1);
                 let t0 = &mut first[base0 + 1..base0 + 1 + km];
                 let t1 = &mut second[..km];
-                match (a0 != 0.0, a1 != 0.0) {
-                    (true, true) => {
-                        for ((x0, x1), &li) in t0.iter_mut().zip(t1.iter_mut()).zip(l) {
-                            *x0 -= li * a0;
-                            *x1 -= li * a1;
-                        }
+                if a0 != 0.0 && a1 != 0.0 {
+                    for ((x0, x1), &li) in t0.iter_mut().zip(t1.iter_mut()).zip(l) {
+                        *x0 -= li * a0;
+                        *x1 -= li * a1;
                     }
-                    (true, false) => t0.iter_mut().zip(l).for_each(|(x, &li)| *x -= li * a0),
-                    (false, true) => t1.iter_mut().zip(l).for_each(|(x, &li)| *x -= li * a1),
-                    (false, false) => {}
+                } else {
+                    eliminate(t0, l, a0);
+                    eliminate(t1, l, a1);
                 }
                 c += 2;
             }
             if c == ju {
                 let base = (c - j - 1) * ld + diag + j - c;
                 let a = right[base];
-                if a != 0.0 {
-                    let target = &mut right[base + 1..base + 1 + km];
-                    for (t, &li) in target.iter_mut().zip(l) {
-                        *t -= li * a;
-                    }
-                }
+                eliminate(&mut right[base + 1..base + 1 + km], l, a);
             }
         }
         self.u_width = u_width;
@@ -270,6 +263,17 @@ impl BandLu {
                     *bi -= u * bj;
                 }
             }
+        }
+    }
+}
+
+/// One column's share of an elimination step: `column -= a l` (nothing
+/// where `a` is zero).
+#[inline(always)]
+fn eliminate(column: &mut [f64], l: &[f64], a: f64) {
+    if a != 0.0 {
+        for (t, &li) in column.iter_mut().zip(l) {
+            *t -= li * a;
         }
     }
 }

@@ -93,20 +93,18 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
         if r_new <= tol && report.increment <= tol {
             return Ok(report);
         }
-        // Modified Newton: the contraction of the chord steps so far (the larger of the
-        // last two ratios: they alternate where J0 has rotated) and the
-        // chord steps it still needs to reach the tolerance (M28a).
+        // Modified Newton (M28a): the contraction of the chord steps so
+        // far, the larger of the last two ratios (they alternate where J0
+        // has turned), and the steps it still needs to the tolerance.
         let theta = r_new / r;
         let rate = theta.max(last_theta);
         last_theta = theta;
-        let remaining = (tol / r_new).ln() / rate.ln();
-        if r_new > 0.5 * r
-            || ws.updates == ws.updates_a.len()
-            || (settings.method == SolverMethod::ModifiedNewton
-                && remaining > CHORD_STEPS_WORTH_A_TANGENT)
-        {
+        let too_slow = settings.method == SolverMethod::ModifiedNewton
+            && (tol / r_new).ln() / rate.ln() > CHORD_STEPS_WORTH_A_TANGENT;
+        if r_new > 0.5 * r || ws.updates == ws.updates_a.len() || too_slow {
             last_theta = 0.0;
-            // Not contracting (or out of room): a fresh Jacobian here.
+            // Not contracting, too slowly, or out of room: a fresh
+            // Jacobian here.
             refactorize = true;
             r = r_new;
             continue;

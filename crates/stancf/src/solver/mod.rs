@@ -29,8 +29,9 @@
 //! corrections; no dense inverse is formed. J0 is the exact Jacobian, kept
 //! across steps while the iteration contracts (each residual at most half
 //! the previous one); when it stops contracting (for modified Newton also
-//! when its rate predicts too many more chord steps, (M28a)), the Jacobian is rebuilt
-//! and factorized at the current iterate and the corrections dropped.
+//! when its rate predicts too many more chord steps, (M28a)), the Jacobian
+//! is rebuilt and factorized at the current iterate and the corrections
+//! dropped.
 
 mod broyden;
 mod newton;
@@ -74,7 +75,9 @@ pub enum SolverMethod {
     Broyden,
     /// Modified Newton: the factorized exact Jacobian kept across
     /// iterations and steps (chord steps), rebuilt where the residual stops
-    /// halving; Broyden without the rank-one corrections.
+    /// halving or contracts too slowly ((M28a),
+    /// [`CHORD_STEPS_WORTH_A_TANGENT`]); Broyden without the rank-one
+    /// corrections.
     ModifiedNewton,
 }
 
