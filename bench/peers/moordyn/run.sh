@@ -4,7 +4,8 @@
 # and runs both codes on the same decks. `./run.sh --quick` runs a few
 # coarse points only (a smoke test, minutes); the full race takes about
 # an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
-# to docs/race/ by `./run.sh --publish`.
+# to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
+# coupling_check.py instead (why MoorDyn is driven at its own step).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
@@ -12,7 +13,11 @@ root="$(cd "$here/../../.." && pwd)"
 venv="$here/.venv"
 if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
-  "$venv/bin/pip" install --quiet "moordyn>=2.7" numpy matplotlib
+  "$venv/bin/pip" install --quiet "moordyn>=2.7" numpy matplotlib scipy
 fi
 cd "$here"
+if [ "${1:-}" = "--coupling-check" ]; then
+  "$venv/bin/python" -c "import scipy" 2>/dev/null || "$venv/bin/pip" install --quiet scipy
+  exec "$venv/bin/python" coupling_check.py
+fi
 PYTHONWARNINGS=ignore "$venv/bin/python" race.py "$@"
