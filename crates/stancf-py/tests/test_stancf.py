@@ -171,6 +171,27 @@ def test_run_from_memory_equals_the_files_to_the_bit(tmp_path):
     assert res.channels and res.tensions and pendulum and len(res.lines) == 2
 
 
+def test_a_system_run_returns_the_tables_it_was_asked_to_write(tmp_path):
+    """[output] files: the tables written are the full run's to the bit,
+    the times come from them, the tables left out are empty or None."""
+    bridle = stancf.Scenario.from_file(ROOT / "examples" / "bridle.toml").with_values(
+        {"analysis.duration": 0.03, "output.every": 1})
+    full = stancf.run(bridle)
+    some = stancf.run(bridle.with_values({"output.files": ["points.csv", "tensions.csv"]}))
+    assert np.array_equal(some.t, full.t) and some.energy == {}
+    for p in full.points:
+        for k in ("t", "position", "velocity", "force"):
+            assert np.array_equal(some.points[p][k], full.points[p][k]), (p, k)
+    for end in full.tensions:
+        assert np.array_equal(some.tensions[end]["tension"], full.tensions[end]["tension"])
+    assert all(line.nodes is None and line.stress is None for line in some.lines.values())
+    nodes = stancf.run(bridle.with_values({"output.files": ["nodes.csv"]}), out=tmp_path / "n")
+    assert np.array_equal(nodes.t, full.t) and nodes.points == {} and nodes.tensions == {}
+    for k, line in full.lines.items():
+        assert np.array_equal(nodes.lines[k].nodes, line.nodes)
+    assert_same_result(nodes, stancf.Result.read(tmp_path / "n"))
+
+
 def test_from_dict_with_values_and_errors_name_the_key():
     sc = stancf.Scenario(IMPACT)
     d = {

@@ -3,7 +3,7 @@
 //! take from them.
 
 use super::context::Ctx;
-use super::raw::{RawAnalysis, RawOutput};
+use super::raw::RawAnalysis;
 use super::{Scenario, ScenarioError};
 use stancf::error::Sig;
 use stancf::{AxialStrain, ConstraintMethod, Curvature, Measures, SolverMethod, TimeScheme};
@@ -296,16 +296,6 @@ fn measures(ctx: &Ctx, ra: &RawAnalysis) -> Result<Measures, ScenarioError> {
         axial_strain,
         curvature,
     })
-}
-
-/// `[output]`: `every` (at least 1, default 1): the steps between two
-/// written steps.
-pub(super) fn output_every(ctx: &Ctx, raw: Option<RawOutput>) -> Result<usize, ScenarioError> {
-    let ro = raw.unwrap_or_default();
-    match ro.every {
-        Some(n) => ctx.count("output.every", n, 1, i64::MAX),
-        None => Ok(1),
-    }
 }
 
 impl Scenario {

@@ -19,6 +19,7 @@ mod messages;
 mod moordyn;
 mod moordyn_water;
 mod motions;
+mod output;
 mod raw;
 mod system;
 mod system_model;
@@ -28,6 +29,7 @@ pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
+pub use output::{OutputFiles, SYSTEM_FILES};
 pub use system::{
     InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
@@ -169,7 +171,8 @@ fn cable_scenario(ctx: &Ctx, raw: RawScenario, path: &Path) -> Result<Scenario, 
         ));
     }
     initial_velocity::check_initial_velocities(ctx, &initial_velocity, &constraints)?;
-    let output_every = analysis::output_every(ctx, raw.output)?;
+    output::no_output_files(ctx, raw.output.as_ref())?;
+    let output_every = output::output_every(ctx, raw.output.as_ref())?;
     Ok(Scenario {
         title,
         cable,

@@ -13,7 +13,6 @@
 //! docs/method.md §12.3-12.5) on the seabed at z = -WtrDpth (kBot, cBot,
 //! FrictionCoefficient; §12.2); see [`super::moordyn_water`].
 
-use super::analysis;
 use super::context::Ctx;
 use super::moordyn_water::{deck_water, deck_water_keys};
 use super::raw::RawAnalysis;
@@ -160,7 +159,8 @@ pub(super) fn deck_scenario(
         analysis,
         measures,
         initial,
-        output_every: analysis::output_every(&ctx, None)?,
+        output_every: 1,
+        output_files: super::OutputFiles::all(),
         notes,
         water: Some(water),
         channels,

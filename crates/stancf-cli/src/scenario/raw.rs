@@ -250,6 +250,7 @@ pub(super) struct RawAnalysis {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawOutput {
     pub(super) every: Option<i64>,
+    pub(super) files: Option<Vec<String>>,
 }
 
 /// A `[[loads]]` entry of type `"gravity"`.

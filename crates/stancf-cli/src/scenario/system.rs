@@ -127,6 +127,8 @@ pub struct SystemScenario {
     pub measures: Measures,
     pub initial: InitialShape,
     pub output_every: usize,
+    /// The result files written (`output.files`; all by default).
+    pub output_files: super::OutputFiles,
     pub notes: Vec<String>,
     /// The water the lines are in (None: air).
     pub water: Option<Water>,
@@ -194,7 +196,8 @@ pub(super) fn system_scenario(
         sc.initial = initial;
         sc.notes.extend(notes);
         sc.notes.extend(static_waves_note(&sc));
-        sc.output_every = analysis::output_every(ctx, raw.output)?;
+        sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
+        sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
         return Ok(sc);
     }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
@@ -215,7 +218,8 @@ pub(super) fn system_scenario(
             ));
         }
     }
-    let output_every = analysis::output_every(ctx, raw.output)?;
+    let output_every = super::output::output_every(ctx, raw.output.as_ref())?;
+    let output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     let mut sc = SystemScenario {
         title,
         line_types,
@@ -226,6 +230,7 @@ pub(super) fn system_scenario(
         measures,
         initial,
         output_every,
+        output_files,
         notes,
         water,
         channels: Vec::new(),

@@ -149,6 +149,33 @@ class _Memory:
         return self.files[name][0].decode()
 
 
+def _by_step(rows, steps, columns):
+    """A table of the same number of rows at each of `steps` written times
+    as an array steps x rows per step x columns."""
+    return rows.reshape(steps, len(rows) // max(steps, 1), columns)
+
+
+def _written_times(files, summary):
+    """The written times: history.csv's first column; a system run that
+    leaves history.csv out (``[output] files``) has them in any table it
+    writes, each time once per point, line end or node."""
+    if files.exists("history.csv"):
+        return files.table("history.csv")[1][:, 0].copy()
+    tables = ["points.csv", "tensions.csv", "channels.csv"] + [
+        "lines/%s/%s" % (line["id"], name) for line in summary.get("lines", [])
+        for name in ("nodes.csv", "node_loads.csv", "stress.csv")]
+    for name in tables:
+        if files.exists(name):
+            if name == "tensions.csv":
+                with io.StringIO(files.text(name)) as f:
+                    next(f)
+                    column = [float(row[0]) for row in csv.reader(f)]
+            else:
+                column = files.table(name)[1][:, 0]
+            return np.unique(np.asarray(column, dtype=float))
+    return np.zeros(0)
+
+
 class Line:
     """One cable's results: ``t`` (steps,), ``nodes``: positions r (steps x
     nodes x 3), ``slopes``: r_x (same), ``stress``: axial stress (steps x
@@ -160,29 +187,31 @@ class Line:
     def __init__(self, files, prefix, t):
         steps = len(t)
         self.t = t
-        h, nodes = files.table(prefix + "nodes.csv")
-        times = np.unique(nodes[:, 0], return_counts=True)
-        n_nodes = int(times[1][0]) if len(times[1]) else 0
-        col = {name: k for k, name in enumerate(h)}
-        nodes = nodes.reshape(steps, n_nodes, len(h))
-        self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
-        self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
-            if "dx_ds" in col else None
-        h, stress = files.table(prefix + "stress.csv")
-        col = {name: k for k, name in enumerate(h)}
-        per_step = len(stress) // max(steps, 1)
-        stress = stress.reshape(steps, per_step, len(h))
-        self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
-        self.stress = stress[:, :, col["axial_stress"]].copy()
-        self.curvature = stress[:, :, col["curvature"]].copy()
-        # A system's line: per node curvature, bending moment and the
-        # seabed's force (node_loads.csv); None for a single cable.
+        # A system run may leave out any of its line's files
+        # (``[output] files``): their arrays are then None.
+        self.nodes = self.slopes = self.stress_s = self.stress = self.curvature = None
         self.node_s = self.node_curvature = self.bending_moment = None
         self.seabed_force = None
+        if files.exists(prefix + "nodes.csv"):
+            h, nodes = files.table(prefix + "nodes.csv")
+            col = {name: k for k, name in enumerate(h)}
+            nodes = _by_step(nodes, steps, len(h))
+            self.nodes = nodes[:, :, [col["x"], col["y"], col["z"]]].copy()
+            self.slopes = nodes[:, :, [col["dx_ds"], col["dy_ds"], col["dz_ds"]]].copy() \
+                if "dx_ds" in col else None
+        if files.exists(prefix + "stress.csv"):
+            h, stress = files.table(prefix + "stress.csv")
+            col = {name: k for k, name in enumerate(h)}
+            stress = _by_step(stress, steps, len(h))
+            self.stress_s = stress[0, :, col["s"]].copy() if steps else np.zeros(0)
+            self.stress = stress[:, :, col["axial_stress"]].copy()
+            self.curvature = stress[:, :, col["curvature"]].copy()
+        # A system's line: per node curvature, bending moment and the
+        # seabed's force (node_loads.csv); None for a single cable.
         if files.exists(prefix + "node_loads.csv"):
             h, loads = files.table(prefix + "node_loads.csv")
             col = {name: k for k, name in enumerate(h)}
-            loads = loads.reshape(steps, n_nodes, len(h))
+            loads = _by_step(loads, steps, len(h))
             self.node_s = loads[0, :, col["s"]].copy() if steps else np.zeros(0)
             self.node_curvature = loads[:, :, col["curvature"]].copy()
             self.bending_moment = loads[:, :, col["bending_moment"]].copy()
@@ -190,6 +219,8 @@ class Line:
                                              col["seabed_fz"]]].copy()
 
     def __repr__(self):
+        if self.nodes is None:
+            return "Line(%d steps)" % len(self.t)
         return "Line(%d steps, %d nodes)" % self.nodes.shape[:2]
 
 
@@ -227,10 +258,11 @@ class Result:
         self._keep = _keep
         files = _Memory(_files) if _files else _Folder(d)
         self.summary = json.loads(files.text("summary.json"))
-        h, hist = files.table("history.csv")
-        self.t = hist[:, 0].copy()
-        self.energy = {name: hist[:, k].copy() for k, name in enumerate(h) if k > 0}
         self.is_system = bool(self.summary.get("system"))
+        self.t, self.energy = _written_times(files, self.summary), {}
+        if files.exists("history.csv"):
+            h, hist = files.table("history.csv")
+            self.energy = {name: hist[:, k].copy() for k, name in enumerate(h) if k > 0}
         self.reactions = {}
         self.reactions_t = np.zeros(0)
         self.lines, self.points, self.tensions, self.channels = {}, {}, {}, {}
@@ -254,10 +286,10 @@ class Result:
         self.stress_s = None
         self.lines = {int(line["id"]): Line(files, "lines/%s/" % line["id"], self.t)
                       for line in self.summary["lines"]}
-        h, p = files.table("points.csv")
+        self.points, self.tensions = {}, {}
+        h, p = files.table("points.csv") if files.exists("points.csv") else ([], np.zeros((0, 1)))
         col = {name: k for k, name in enumerate(h)}
-        self.points = {}
-        for point in np.unique(p[:, col["point"]]).astype(int):
+        for point in (np.unique(p[:, col["point"]]).astype(int) if col else []):
             rows = p[p[:, col["point"]] == point]
             self.points[int(point)] = {
                 "t": rows[:, col["t"]].copy(),
@@ -265,8 +297,8 @@ class Result:
                 "velocity": rows[:, [col["vx"], col["vy"], col["vz"]]].copy(),
                 "force": rows[:, [col["fx"], col["fy"], col["fz"]]].copy(),
             }
-        self.tensions = {}
-        with io.StringIO(files.text("tensions.csv")) as f:
+        tensions = files.text("tensions.csv") if files.exists("tensions.csv") else "t\n"
+        with io.StringIO(tensions) as f:
             next(f)
             for row in csv.reader(f):
                 t, line, end, fx, fy, fz, tension = row

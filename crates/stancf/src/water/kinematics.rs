@@ -131,6 +131,10 @@ impl Sea {
     /// r_c' U to the acceleration and (r_c dU/dz, r_c' dU/dz) to the z
     /// column of the gradients.
     pub fn kinematics(&self, position: &[f64; 3], t: f64) -> FluidKinematics {
+        if self.waves.is_empty() && self.current.is_none() {
+            // Still water: every term below is zero.
+            return FluidKinematics::default();
+        }
         let mut flow = WaveFlow::default();
         for wave in &self.waves {
             wave.add_flow(position, t, &mut flow);

@@ -69,6 +69,20 @@ pub(super) fn run_system(
     sc: SystemScenario,
 ) -> Result<String, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    // The figures of a system are drawn from these files (figures_system).
+    let drawn_from = ["nodes.csv", "node_loads.csv", "tensions.csv", "history.csv"];
+    let missing: Vec<&str> = drawn_from
+        .into_iter()
+        .filter(|n| !sc.output_files.writes(n))
+        .collect();
+    if opts.plot && !missing.is_empty() {
+        return Err(Failure::Input(format!(
+            "{}: output.files: --plot draws from {}; the scenario leaves out {}",
+            path.display(),
+            drawn_from.join(", "),
+            missing.join(", ")
+        )));
+    }
     let elements: usize = sc.lines.iter().map(|l| l.elements).sum();
     if elements > crate::work_bounds::MAX_SYSTEM_ELEMENTS && !opts.allow_large {
         return Err(Failure::Input(format!(
@@ -132,6 +146,7 @@ pub(super) fn run_system(
         &line_ids,
         &point_ids,
         &sc.channels,
+        &sc.output_files,
         opts.vtk,
         damped,
         wet,

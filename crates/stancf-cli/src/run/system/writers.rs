@@ -7,7 +7,7 @@
 use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Dest, Num};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
-use crate::scenario::OutputChannel;
+use crate::scenario::{OutputChannel, OutputFiles};
 use stancf::model::SLOT_R;
 use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
 use stancf::system::EndForce;
@@ -36,11 +36,11 @@ pub(super) struct SystemRow<'a> {
     pub seabed_work: f64,
 }
 
-/// The files of one line.
+/// The files of one line (None: left out by `output.files`).
 struct LineFiles {
-    nodes: AtomicFile,
-    stress: AtomicFile,
-    node_loads: AtomicFile,
+    nodes: Option<AtomicFile>,
+    stress: Option<AtomicFile>,
+    node_loads: Option<AtomicFile>,
 }
 
 /// The files of a system run.
@@ -48,9 +48,9 @@ pub(super) struct SystemWriters {
     lines: Vec<LineFiles>,
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
-    points: AtomicFile,
-    tensions: AtomicFile,
-    history: AtomicFile,
+    points: Option<AtomicFile>,
+    tensions: Option<AtomicFile>,
+    history: Option<AtomicFile>,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
     channels: Option<(AtomicFile, Vec<Channel>)>,
     /// ParaView files (`--vtk`): one polyline per line.
@@ -68,45 +68,71 @@ impl SystemWriters {
         line_ids: &[i64],
         point_ids: &[i64],
         channels: &[OutputChannel],
+        files: &OutputFiles,
         with_vtk: bool,
         with_damping: bool,
         with_water: bool,
     ) -> std::io::Result<Self> {
+        // A chosen file with its header line (None where left out).
+        let table = |path: &str, name: &str, header: &str| -> std::io::Result<_> {
+            if !files.writes(name) {
+                return Ok(None);
+            }
+            let mut file = dest.create(path)?;
+            writeln!(file.writer(), "{header}")?;
+            Ok(Some(file))
+        };
         let mut lines = Vec::with_capacity(line_ids.len());
         for id in line_ids {
             let sub = format!("lines/{id}");
-            std::fs::create_dir_all(dest.dir.join(&sub))?;
-            let mut nodes = dest.create(&format!("{sub}/nodes.csv"))?;
-            let mut stress = dest.create(&format!("{sub}/stress.csv"))?;
-            writeln!(nodes.writer(), "t,node,x,y,z,dx_ds,dy_ds,dz_ds")?;
-            writeln!(stress.writer(), "t,s,axial_stress,curvature,element")?;
-            let mut node_loads = dest.create(&format!("{sub}/node_loads.csv"))?;
-            writeln!(
-                node_loads.writer(),
-                "t,node,s,curvature,bending_moment,seabed_fx,seabed_fy,seabed_fz"
-            )?;
+            if ["nodes.csv", "stress.csv", "node_loads.csv"]
+                .iter()
+                .any(|n| files.writes(n))
+            {
+                std::fs::create_dir_all(dest.dir.join(&sub))?;
+            }
             lines.push(LineFiles {
-                nodes,
-                stress,
-                node_loads,
+                nodes: table(
+                    &format!("{sub}/nodes.csv"),
+                    "nodes.csv",
+                    "t,node,x,y,z,dx_ds,dy_ds,dz_ds",
+                )?,
+                stress: table(
+                    &format!("{sub}/stress.csv"),
+                    "stress.csv",
+                    "t,s,axial_stress,curvature,element",
+                )?,
+                node_loads: table(
+                    &format!("{sub}/node_loads.csv"),
+                    "node_loads.csv",
+                    "t,node,s,curvature,bending_moment,seabed_fx,seabed_fy,seabed_fz",
+                )?,
             });
         }
-        let mut points = dest.create("points.csv")?;
-        writeln!(points.writer(), "t,point,x,y,z,vx,vy,vz,fx,fy,fz")?;
-        let mut tensions = dest.create("tensions.csv")?;
-        writeln!(tensions.writer(), "t,line,end,fx,fy,fz,tension")?;
-        let mut history = dest.create("history.csv")?;
-        writeln!(
-            history.writer(),
-            "t,kinetic,strain,gravity,total,iterations,residual{}{}",
-            if with_damping { ",damping_work" } else { "" },
-            if with_water {
-                ",water_work,seabed_work"
-            } else {
-                ""
-            }
+        let points = table(
+            "points.csv",
+            "points.csv",
+            "t,point,x,y,z,vx,vy,vz,fx,fy,fz",
         )?;
-        let channels = if channels.is_empty() {
+        let tensions = table(
+            "tensions.csv",
+            "tensions.csv",
+            "t,line,end,fx,fy,fz,tension",
+        )?;
+        let history = table(
+            "history.csv",
+            "history.csv",
+            &format!(
+                "t,kinetic,strain,gravity,total,iterations,residual{}{}",
+                if with_damping { ",damping_work" } else { "" },
+                if with_water {
+                    ",water_work,seabed_work"
+                } else {
+                    ""
+                }
+            ),
+        )?;
+        let channels = if channels.is_empty() || !files.writes("channels.csv") {
             None
         } else {
             let mut file = dest.create("channels.csv")?;
@@ -147,26 +173,35 @@ impl SystemWriters {
             if !state.e.iter().all(|v| v.is_finite()) {
                 return Err(bad(&format!("position of line {}", self.line_ids[i])));
             }
-            stress_samples(model, state, STRESS_POINTS_PER_ELEMENT, &mut self.samples);
-            if !self
-                .samples
-                .iter()
-                .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite())
-            {
-                return Err(bad(&format!("stress of line {}", self.line_ids[i])));
-            }
             let files = &mut self.lines[i];
-            node_rows(files.nodes.writer(), t, model, state)?;
-            stress_rows(files.stress.writer(), t, &self.samples)?;
-            node_load_rows(files.node_loads.writer(), t, model, state)
-                .map_err(|_| bad(&format!("node loads of line {}", self.line_ids[i])))?;
+            if let Some(stress) = files.stress.as_mut() {
+                stress_samples(model, state, STRESS_POINTS_PER_ELEMENT, &mut self.samples);
+                if !self
+                    .samples
+                    .iter()
+                    .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite())
+                {
+                    return Err(bad(&format!("stress of line {}", self.line_ids[i])));
+                }
+                stress_rows(stress.writer(), t, &self.samples)?;
+            }
+            if let Some(nodes) = files.nodes.as_mut() {
+                node_rows(nodes.writer(), t, model, state)?;
+            }
+            if let Some(node_loads) = files.node_loads.as_mut() {
+                node_load_rows(node_loads.writer(), t, model, state)
+                    .map_err(|_| bad(&format!("node loads of line {}", self.line_ids[i])))?;
+            }
         }
         for (p, (x, v, f)) in row.points.iter().enumerate() {
             if ![x, v, f].iter().all(|a| a.iter().all(|c| c.is_finite())) {
                 return Err(bad(&format!("state of point {}", self.point_ids[p])));
             }
+            let Some(points) = self.points.as_mut() else {
+                continue;
+            };
             writeln!(
-                self.points.writer(),
+                points.writer(),
                 "{t},{},{},{},{},{},{},{},{},{},{}",
                 self.point_ids[p],
                 Num(x[0]),
@@ -186,8 +221,11 @@ impl SystemWriters {
                 if !e.force.iter().all(|c| c.is_finite()) {
                     return Err(bad(&format!("end force of line {}", self.line_ids[i])));
                 }
+                let Some(tensions) = self.tensions.as_mut() else {
+                    continue;
+                };
                 writeln!(
-                    self.tensions.writer(),
+                    tensions.writer(),
                     "{t},{},{name},{},{},{},{}",
                     self.line_ids[i],
                     Num(e.force[0]),
@@ -219,8 +257,17 @@ impl SystemWriters {
             }
             writeln!(w)?;
         }
+        if !(row.damping_work.is_finite()
+            && row.water_work.is_finite()
+            && row.seabed_work.is_finite())
+        {
+            return Err(bad("damping, water or seabed work"));
+        }
+        let Some(history) = self.history.as_mut() else {
+            return Ok(());
+        };
         write!(
-            self.history.writer(),
+            history.writer(),
             "{t},{},{},{},{},{},{}",
             Num(kinetic),
             Num(strain),
@@ -230,37 +277,34 @@ impl SystemWriters {
             Num(row.residual)
         )?;
         if self.damping {
-            if !row.damping_work.is_finite() {
-                return Err(bad("damping work"));
-            }
-            write!(self.history.writer(), ",{}", Num(row.damping_work))?;
+            write!(history.writer(), ",{}", Num(row.damping_work))?;
         }
         if self.water {
-            if !(row.water_work.is_finite() && row.seabed_work.is_finite()) {
-                return Err(bad("water or seabed work"));
-            }
             let (w, b) = (Num(row.water_work), Num(row.seabed_work));
-            write!(self.history.writer(), ",{w},{b}")?;
+            write!(history.writer(), ",{w},{b}")?;
         }
-        writeln!(self.history.writer())?;
+        writeln!(history.writer())?;
         Ok(())
     }
 
     pub(super) fn commit(self) -> std::io::Result<()> {
-        for files in self.lines {
-            files.nodes.commit()?;
-            files.stress.commit()?;
-            files.node_loads.commit()?;
-        }
-        self.points.commit()?;
-        self.tensions.commit()?;
-        if let Some((file, _)) = self.channels {
+        let files = self
+            .lines
+            .into_iter()
+            .flat_map(|l| [l.nodes, l.stress, l.node_loads]);
+        let tables = [
+            self.points,
+            self.tensions,
+            self.history,
+            self.channels.map(|(f, _)| f),
+        ];
+        for file in files.chain(tables).flatten() {
             file.commit()?;
         }
         if let Some(vtk) = self.vtk {
             vtk.commit()?;
         }
-        self.history.commit()
+        Ok(())
     }
 }
 

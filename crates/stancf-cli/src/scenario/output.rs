@@ -1,0 +1,97 @@
+//! `[output]`: how often a run writes (`every`) and which of a system's
+//! result files it writes (`files`, docs/interface.md "Systems").
+
+use super::context::Ctx;
+use super::raw::RawOutput;
+use super::ScenarioError;
+
+/// The result tables of a system run `files` may name (docs/interface.md,
+/// "Systems"): the last three are written for every line, in
+/// `lines/<id>/`. summary.json and scenario.toml are always written.
+pub const SYSTEM_FILES: [&str; 7] = [
+    "points.csv",
+    "tensions.csv",
+    "history.csv",
+    "channels.csv",
+    "nodes.csv",
+    "stress.csv",
+    "node_loads.csv",
+];
+
+/// Which of a system's result tables a run writes (all by default).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct OutputFiles {
+    /// The names chosen (None: every file).
+    chosen: Option<Vec<String>>,
+}
+
+impl OutputFiles {
+    /// Every file.
+    pub fn all() -> Self {
+        OutputFiles { chosen: None }
+    }
+
+    /// Whether the table `name` (one of [`SYSTEM_FILES`]) is written.
+    pub fn writes(&self, name: &str) -> bool {
+        self.chosen
+            .as_ref()
+            .map_or(true, |c| c.iter().any(|n| n == name))
+    }
+
+    /// The tables of [`SYSTEM_FILES`] not written.
+    pub fn left_out(&self) -> Vec<&'static str> {
+        SYSTEM_FILES
+            .into_iter()
+            .filter(|n| !self.writes(n))
+            .collect()
+    }
+}
+
+/// `output.every` (at least 1, default 1): the steps between two written
+/// steps.
+pub(super) fn output_every(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<usize, ScenarioError> {
+    match raw.and_then(|r| r.every) {
+        Some(n) => ctx.count("output.every", n, 1, i64::MAX),
+        None => Ok(1),
+    }
+}
+
+/// `output.files` of a system: names from [`SYSTEM_FILES`], each once
+/// (absent: every file).
+pub(super) fn output_files(
+    ctx: &Ctx,
+    raw: Option<&RawOutput>,
+) -> Result<OutputFiles, ScenarioError> {
+    let Some(names) = raw.and_then(|r| r.files.as_ref()) else {
+        return Ok(OutputFiles::all());
+    };
+    for (i, name) in names.iter().enumerate() {
+        if !SYSTEM_FILES.contains(&name.as_str()) {
+            return Err(ctx.err(
+                "output.files",
+                format!(
+                    "\"{name}\" is not a result file of a system; the files are {}",
+                    SYSTEM_FILES.join(", ")
+                ),
+            ));
+        }
+        if names[..i].contains(name) {
+            return Err(ctx.err("output.files", format!("\"{name}\" is named twice")));
+        }
+    }
+    Ok(OutputFiles {
+        chosen: Some(names.clone()),
+    })
+}
+
+/// A single cable writes all its files: `output.files` is refused there.
+pub(super) fn no_output_files(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<(), ScenarioError> {
+    if raw.is_some_and(|r| r.files.is_some()) {
+        return Err(ctx.err(
+            "output.files",
+            "chooses the result files of a system of lines ([system] or [[lines]]); a single \
+             cable writes all of its files",
+        ));
+    }
+    Ok(())
+}
