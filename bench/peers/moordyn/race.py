@@ -368,8 +368,25 @@ def race(pb):
     return rows
 
 
+def read_rows(path):
+    """The rows of a race's CSV (numbers as numbers, blanks as "")."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for k in ("segments", "dt", "ic_s", "wall_s", "error", "driver_s"):
+            if r.get(k, "") != "":
+                r[k] = int(r[k]) if k == "segments" else float(r[k])
+            else:
+                r[k] = ""
+    return rows
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
+    if "--tables-only" in sys.argv:
+        # The table and figure again from out/moordyn_race.csv, no runs.
+        write(read_rows(os.path.join(OUT, "moordyn_race.csv")))
+        return
     only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--problem=")]
     rows = []
     for pb in (OC4, LAZY):
@@ -395,7 +412,13 @@ def summary_table(rows, pb):
     lines = ["## %s" % pb.title, "",
              "| accuracy | MoorDyn cheapest (s) | run | stancf cheapest (s) | run "
              "| MoorDyn / stancf |", "|---|---|---|---|---|---|"]
-    for level, label in [(0.01, "1 %"), (0.001, "0.1 %")]:
+    # Where MoorDyn reaches neither 1 % nor 0.1 %: also the accuracy of
+    # its most accurate run (what stancf needs to match it).
+    best = [r["error"] for r in rows if r["code"] == "moordyn" and r["error"] != ""]
+    levels = [(0.01, "1 %"), (0.001, "0.1 %")]
+    if best and min(best) > 0.01:
+        levels.append((min(best), "MoorDyn's best, %.3g %%" % (100 * min(best))))
+    for level, label in levels:
         cells = []
         for code in ("moordyn", "stancf"):
             r = cheapest(rows, code, level)

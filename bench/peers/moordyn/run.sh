@@ -5,7 +5,8 @@
 # coarse points only (a smoke test, minutes); the full race takes about
 # an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
 # to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
-# coupling_check.py instead (why MoorDyn is driven at its own step).
+# coupling_check.py instead (why MoorDyn is driven at its own step);
+# `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
