@@ -35,7 +35,7 @@ impl OutputFiles {
     pub fn writes(&self, name: &str) -> bool {
         self.chosen
             .as_ref()
-            .map_or(true, |c| c.iter().any(|n| n == name))
+            .is_none_or(|c| c.iter().any(|n| n == name))
     }
 
     /// The tables of [`SYSTEM_FILES`] not written.

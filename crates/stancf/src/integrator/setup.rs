@@ -21,13 +21,16 @@ impl Simulation {
     }
 
     /// A line of a system (see [`crate::system`]): everything of a
-    /// simulation but the linear solver, which the system's step owns.
+    /// simulation; its own linear solver where the line is solved apart
+    /// (`own_solver`: a system without free points, docs/method.md
+    /// §11.14), none where the system's step solves all lines together.
     pub(crate) fn line_of_system(
         model: Model,
         initial: State,
         settings: StepSettings,
+        own_solver: bool,
     ) -> Result<Self, ModelError> {
-        Self::build(model, initial, settings, false)
+        Self::build(model, initial, settings, own_solver)
     }
 
     fn build(

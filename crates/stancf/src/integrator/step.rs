@@ -262,7 +262,7 @@ impl Simulation {
 
     /// Newton's solve of the step's equations from the predicted `x`
     /// (docs/method.md §4.2-4.3, §5.1; the solvers, §7).
-    fn solve_slab(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
+    pub(crate) fn solve_slab(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
         let mut system = StepSystem {
             problem: StepProblem {
                 model: &self.model,

@@ -23,6 +23,7 @@
 //! line's band bordered by the free points' unknowns
 //! ([`crate::bordered`]), factorized by block elimination.
 
+mod apart;
 mod balance;
 mod halving;
 mod layout;

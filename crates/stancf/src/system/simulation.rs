@@ -1,9 +1,11 @@
 //! Time stepping of a system (docs/method.md §11.3): every line is a
-//! [`Simulation`] without its own solver (its predictor, end values,
-//! reactions and undo are the single cable's); the system's step gathers
-//! the lines' unknowns and the free points' into one vector, solves the
-//! slab equations of all lines and points together with the bordered
-//! Jacobian ([`BorderedLu`]), and hands each line its converged unknowns.
+//! [`Simulation`] (its predictor, end values, reactions and undo are the
+//! single cable's); the system's step gathers the lines' unknowns and the
+//! free points' into one vector, solves the slab equations of all lines
+//! and points together with the bordered Jacobian ([`BorderedLu`]), and
+//! hands each line its converged unknowns. Without free points the lines
+//! are independent and each is solved apart with its own solver
+//! (§11.14, [`super::apart`]).
 
 use super::layout::SystemLayout;
 use super::mass::SystemMass;
@@ -121,13 +123,16 @@ impl SystemSimulation {
         // The planar reduction holds coordinates line by line; lines
         // joined at free points must hold the same ones, so it is left off.
         line_settings.planar_reduction &= !system.has_free_points();
+        // Without free points the lines are independent: each is solved
+        // apart, with its own solver (docs/method.md §11.14).
+        let apart = !system.has_free_points();
         let lines = system
             .lines()
             .iter()
             .zip(initial)
             .enumerate()
             .map(|(i, (line, state))| {
-                Simulation::line_of_system(line.model.clone(), state, line_settings.clone())
+                Simulation::line_of_system(line.model.clone(), state, line_settings.clone(), apart)
                     .map_err(|e| e.under(&format!("lines[{i}]")))
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -342,13 +347,18 @@ impl SystemSimulation {
         for line in &mut self.lines {
             line.begin_step();
         }
-        self.gather_prediction();
-        let report = self.solve_step(dt)?;
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let map = &self.layout.maps[i];
-            let xl = line.unknowns();
-            map.gather(&self.x, xl);
-        }
+        let report = if self.system.has_free_points() {
+            self.gather_prediction();
+            let report = self.solve_step(dt)?;
+            for (i, line) in self.lines.iter_mut().enumerate() {
+                let map = &self.layout.maps[i];
+                let xl = line.unknowns();
+                map.gather(&self.x, xl);
+            }
+            report
+        } else {
+            super::apart::solve_lines_apart(&mut self.lines, dt)?
+        };
         self.finish_lines(report);
         self.add_point_water_work();
         self.collect_end_forces(dt);

@@ -143,8 +143,7 @@ pub(super) fn run_system(
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let mut writers = SystemWriters::create(
         place.dest(),
-        &line_ids,
-        &point_ids,
+        (&line_ids, &point_ids),
         &sc.channels,
         &sc.output_files,
         opts.vtk,

@@ -65,8 +65,7 @@ pub(super) struct SystemWriters {
 impl SystemWriters {
     pub(super) fn create(
         dest: Dest,
-        line_ids: &[i64],
-        point_ids: &[i64],
+        (line_ids, point_ids): (&[i64], &[i64]),
         channels: &[OutputChannel],
         files: &OutputFiles,
         with_vtk: bool,
