@@ -57,6 +57,7 @@ fn stepping_a_cable_or_a_system_allocates_nothing() {
     COUNTED.with(|c| c.set(true));
     stepping_a_cable_allocates_nothing();
     stepping_a_system_with_a_free_point_allocates_nothing();
+    stepping_lines_apart_allocates_nothing();
 }
 
 fn stepping_a_cable_allocates_nothing() {
@@ -275,6 +276,58 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
             after - before,
             0,
             "{method:?} {solver:?} {scheme:?} (table: {table}): {} allocations in 50 steps",
+            after - before
+        );
+    }
+}
+
+/// A system without free points (docs/method.md §11.14): 2 and 3 lines of
+/// 10 elements (under 48 in all: solved one after the other), each from a
+/// fixed anchor to a swinging fairlead; after the first step, stepping
+/// allocates nothing, with Newton and modified Newton (each line's own
+/// kept factors). From 48 elements the lines go to rayon's threads, whose
+/// job queue allocates a block now and then (once in 50 steps of 4 lines
+/// of 15 elements, measured): rayon's, not the step's.
+fn stepping_lines_apart_allocates_nothing() {
+    use rope_systems::{line_model, settings, G, SWING};
+    use stancf::system::{straight_states, End, Line, Point, System, SystemSimulation};
+    use stancf::SolverMethod;
+    for (lines, elements, solver) in [
+        (2, 10, SolverMethod::Newton),
+        (2, 10, SolverMethod::ModifiedNewton),
+        (3, 10, SolverMethod::Newton),
+        (3, 10, SolverMethod::ModifiedNewton),
+    ] {
+        let mut points = Vec::new();
+        let mut line_list = Vec::new();
+        for k in 0..lines {
+            let angle = 0.4 + 2.0 * std::f64::consts::PI * k as f64 / lines as f64;
+            let (s, c) = angle.sin_cos();
+            let (anchor, fairlead) = ([c, s, -0.8], [0.1 * c, 0.1 * s, 0.0]);
+            points.extend([Point::fixed(anchor), Point::coupled(fairlead, SWING)]);
+            line_list.push(Line {
+                model: line_model(anchor, fairlead, elements),
+                ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+            });
+        }
+        let system = System::new(line_list, points, G).unwrap();
+        let start = straight_states(&system);
+        let mut settings = settings();
+        settings.newton.method = solver;
+        let mut sim = SystemSimulation::new(system, start, settings).unwrap();
+        sim.step().unwrap();
+        let before = ALLOCATIONS.load(Ordering::SeqCst);
+        let mut iterations = 0;
+        for _ in 0..50 {
+            iterations += sim.step().unwrap().newton.iterations;
+            std::hint::black_box(sim.end_forces(0));
+        }
+        let after = ALLOCATIONS.load(Ordering::SeqCst);
+        assert!(iterations >= 50, "the steps did iterate");
+        assert_eq!(
+            after - before,
+            0,
+            "{lines} lines of {elements} ({solver:?}): {} allocations in 50 steps",
             after - before
         );
     }
