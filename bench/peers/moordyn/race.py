@@ -185,6 +185,8 @@ def run_moordyn(pb, refine, dtm):
     import moordyn
     x0 = positions0(pb)
     per_output = int(round(OUTPUT_DT / dtm))
+    if abs(per_output * dtm - OUTPUT_DT) > 1e-12:
+        sys.exit("MoorDyn step %r does not divide the output interval %r" % (dtm, OUTPUT_DT))
     outputs = int(round(pb.duration / OUTPUT_DT))
 
     def state(ta, tb):
@@ -335,7 +337,7 @@ GRIDS = {
         quick=dict(stancf=[(1, 0.05)], reference=(1, 0.025), moordyn=[(1, 8e-4)]),
         full=dict(stancf=[(r, dt) for r in (0.5, 1, 2) for dt in (0.05, 0.025, 0.0125)],
                   reference=(4, 0.00625),
-                  moordyn=[(0.5, 1.6e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
+                  moordyn=[(0.5, 2e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
                            (2, 1e-4), (4, 1e-4), (4, 5e-5)])),
 }
 

@@ -339,7 +339,7 @@ pub fn convergence_figure(conv: &Table, info: &RunInfo, count: usize) -> io::Res
 /// returns their names (without extension).
 pub fn plot_results(dir: &Path) -> io::Result<Vec<String>> {
     let info = RunInfo::read(dir)?;
-    if dir.join("lines").is_dir() && dir.join("tensions.csv").exists() {
+    if crate::figures_system::is_system(dir)? {
         return crate::figures_system::plot_system(dir, &info);
     }
     let mut written = Vec::new();

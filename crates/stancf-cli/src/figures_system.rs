@@ -25,6 +25,34 @@ fn bad(path: &Path, what: &str) -> io::Error {
     )
 }
 
+/// Whether `dir` holds a system's results (summary.json's `system`).
+pub(crate) fn is_system(dir: &Path) -> io::Result<bool> {
+    let path = dir.join("summary.json");
+    let text = std::fs::read_to_string(&path)?;
+    let s: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
+    Ok(s["system"].as_bool() == Some(true))
+}
+
+/// The tables the figures of a system are drawn from that `dir` lacks (a
+/// run whose `[output] files` left them out), named as in the folder.
+fn missing_tables(dir: &Path) -> io::Result<Vec<String>> {
+    let path = dir.join("summary.json");
+    let text = std::fs::read_to_string(&path)?;
+    let s: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
+    let mut needed = vec!["tensions.csv".to_string(), "history.csv".to_string()];
+    for l in s["lines"].as_array().into_iter().flatten() {
+        for table in ["nodes.csv", "node_loads.csv"] {
+            needed.push(format!("lines/{}/{table}", l["id"]));
+        }
+    }
+    Ok(needed
+        .into_iter()
+        .filter(|n| !dir.join(n).exists())
+        .collect())
+}
+
 /// The lines listed in summary.json with their written shapes.
 fn read_lines(dir: &Path) -> io::Result<Vec<LineShapes>> {
     let path = dir.join("summary.json");
@@ -162,6 +190,16 @@ fn curvature_figure(dir: &Path, lines: &[LineShapes], info: &RunInfo) -> io::Res
 
 /// The figures of a system's results in `dir`; their names.
 pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
+    let missing = missing_tables(dir)?;
+    if !missing.is_empty() {
+        return Err(bad(
+            dir,
+            &format!(
+                "the figures are drawn from tables this run did not write (output.files): {}",
+                missing.join(", ")
+            ),
+        ));
+    }
     let lines = read_lines(dir)?;
     let shapes = shapes_figure(&lines, info, 4);
     crate::plot::save(&shapes, dir, "shapes")?;

@@ -93,3 +93,25 @@ fn plot_refuses_a_run_that_leaves_out_what_it_draws_from() {
     }
     assert!(!out.exists(), "an output folder was created");
 }
+
+#[test]
+fn plot_names_the_tables_a_run_left_out_and_draws_nothing() {
+    let d = scratch("output-files-plot-later");
+    let out = d.join("out");
+    let files = "files = [\"points.csv\", \"tensions.csv\"]";
+    let o = run_quiet(&write_scenario(&d, "some.toml", &rope(files)), &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let o = stancf(&["plot", out.to_str().unwrap()]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    for needle in ["output.files", "history.csv", "lines/1/nodes.csv"] {
+        assert!(se.contains(needle), "{needle:?} not in: {se}");
+    }
+    assert!(
+        !names(&out)
+            .iter()
+            .any(|n| n.ends_with(".png") || n.ends_with(".svg")),
+        "a figure was drawn: {:?}",
+        names(&out)
+    );
+}

@@ -190,6 +190,15 @@ def test_a_system_run_returns_the_tables_it_was_asked_to_write(tmp_path):
     for k, line in full.lines.items():
         assert np.array_equal(nodes.lines[k].nodes, line.nodes)
     assert_same_result(nodes, stancf.Result.read(tmp_path / "n"))
+    # From the straight start tensions.csv has no row at t = 0; the times
+    # come from nodes.csv, which has.
+    straight = bridle.with_values({"analysis.initial": "reference", "analysis.duration": 0.005})
+    full = stancf.run(straight)
+    some = stancf.run(straight.with_values({"output.files": ["tensions.csv", "nodes.csv"]}))
+    assert np.array_equal(some.t, full.t) and some.t[0] == 0.0
+    assert np.array_equal(some.lines[1].nodes, full.lines[1].nodes)
+    assert np.array_equal(some.tensions[(1, "A")]["tension"], full.tensions[(1, "A")]["tension"])
+    assert len(full.tensions[(1, "A")]["t"]) == len(full.t) - 1  # none at t = 0
 
 
 def test_from_dict_with_values_and_errors_name_the_key():

@@ -150,20 +150,26 @@ class _Memory:
 
 
 def _by_step(rows, steps, columns):
-    """A table of the same number of rows at each of `steps` written times
-    as an array steps x rows per step x columns."""
+    """A table of the same number of rows at each of its written times as
+    an array times x rows per time x columns (`steps` times where the
+    table is empty)."""
+    if len(rows):
+        steps = len(np.unique(rows[:, 0]))
     return rows.reshape(steps, len(rows) // max(steps, 1), columns)
 
 
 def _written_times(files, summary):
     """The written times: history.csv's first column; a system run that
-    leaves history.csv out (``[output] files``) has them in any table it
-    writes, each time once per point, line end or node."""
+    leaves history.csv out (``[output] files``) has them in the other
+    tables it writes, each time once per point, node or sample (but for
+    tensions.csv, which has no row at t = 0 of a run from the straight
+    start: the times of a run that writes tensions.csv alone)."""
     if files.exists("history.csv"):
         return files.table("history.csv")[1][:, 0].copy()
-    tables = ["points.csv", "tensions.csv", "channels.csv"] + [
+    tables = ["points.csv"] + [
         "lines/%s/%s" % (line["id"], name) for line in summary.get("lines", [])
-        for name in ("nodes.csv", "node_loads.csv", "stress.csv")]
+        for name in ("nodes.csv", "node_loads.csv", "stress.csv")] + [
+        "channels.csv", "tensions.csv"]
     for name in tables:
         if files.exists(name):
             if name == "tensions.csv":

@@ -115,6 +115,10 @@ pub struct Simulation {
     last_dt: Option<f64>,
     start: StepStart,
     x: Vec<f64>,
+    /// The step's predicted unknowns, kept while a system's lines are
+    /// solved apart and put back when any line fails, so a retried step
+    /// starts from the prediction (docs/method.md §11.14).
+    x_predicted: Vec<f64>,
     workspace: NewtonWorkspace,
     scratch: AssemblyScratch,
     steps: usize,

@@ -101,6 +101,7 @@ impl Simulation {
         };
         Ok(Simulation {
             x: vec![0.0; layout.size()],
+            x_predicted: vec![0.0; layout.size()],
             acceleration: vec![0.0; n],
             last_slopes: vec![0.0; 2 * n],
             last_dt: None,

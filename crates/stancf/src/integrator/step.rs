@@ -255,6 +255,18 @@ impl Simulation {
         problem.assemble_into(x, residual, jacobian, &mut self.scratch);
     }
 
+    /// Keeps the predicted unknowns (see [`Self::restore_prediction`]).
+    pub(crate) fn keep_prediction(&mut self) {
+        self.x_predicted.copy_from_slice(&self.x);
+    }
+
+    /// Puts back the unknowns kept by [`Self::keep_prediction`]: after a
+    /// failed solve the Lagrange multipliers would otherwise start the
+    /// retried step from the failed iterate's values.
+    pub(crate) fn restore_prediction(&mut self) {
+        self.x.copy_from_slice(&self.x_predicted);
+    }
+
     /// The convergence scales of the step's unknowns and rows.
     pub(crate) fn scales(&self) -> &Scales {
         &self.scales

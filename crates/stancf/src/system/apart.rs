@@ -29,11 +29,15 @@ pub const PARALLEL_LINES_ELEMENTS: usize = 48;
 /// most iterations and factorizations of a line (the step's Newton
 /// rounds, as the joint solve counts them) and the largest residual and
 /// increment. On failure, the first failing line's error (in line
-/// order); no line has finished its step.
+/// order); no line has finished its step and every line holds its
+/// prediction again.
 pub(super) fn solve_lines_apart(
     lines: &mut [Simulation],
     dt: f64,
 ) -> Result<NewtonReport, SolverError> {
+    for line in lines.iter_mut() {
+        line.keep_prediction();
+    }
     let solve = |(i, line): (usize, &mut Simulation)| line.solve_slab(dt).map_err(|e| (i, e));
     let elements: usize = lines.iter().map(|l| l.model().nodes() - 1).sum();
     let step = if lines.len() > 1 && elements >= PARALLEL_LINES_ELEMENTS {
@@ -50,6 +54,12 @@ pub(super) fn solve_lines_apart(
             .fold(Ok(NewtonReport::default()), combine)
     };
     step.map_err(|(i, mut e)| {
+        // Every line back to its prediction (the joint solve leaves the
+        // lines' unknowns untouched until it converges): a halved retry
+        // (§11.13) starts where the failed step did.
+        for line in lines.iter_mut() {
+            line.restore_prediction();
+        }
         e.detail = format!("lines[{i}]: {}", e.detail);
         e
     })
