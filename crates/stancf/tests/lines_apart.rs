@@ -5,37 +5,13 @@
 #[path = "common/rope_systems.rs"]
 mod rope_systems;
 
-use rope_systems::{line_model, G, SWING};
-use stancf::system::{straight_states, End, Line, Point, System, SystemSimulation};
+use rope_systems::independent_ropes;
+use stancf::system::{straight_states, System, SystemSimulation};
 use stancf::{StepSettings, TimeScheme};
 
-/// Line k of `lines` ropes of 12 elements from anchors on a circle to
-/// swinging fairleads (no two lines alike: each has its own direction).
-fn rope_line(k: usize, lines: usize) -> (Point, Point, stancf::Model) {
-    let angle = 0.3 + 2.0 * std::f64::consts::PI * k as f64 / lines as f64;
-    let (s, c) = angle.sin_cos();
-    let anchor = [1.2 * c, 1.2 * s, -1.0];
-    let fairlead = [0.1 * c, 0.1 * s, 0.0];
-    (
-        Point::fixed(anchor),
-        Point::coupled(fairlead, SWING),
-        line_model(anchor, fairlead, 12),
-    )
-}
-
-/// The system of the lines `which` of [`rope_line`] out of `lines`.
+/// The ropes `which` of `lines` independent ropes of 12 elements.
 fn ropes(which: &[usize], lines: usize) -> System {
-    let mut points = Vec::new();
-    let mut line_list = Vec::new();
-    for (j, &k) in which.iter().enumerate() {
-        let (anchor, fairlead, model) = rope_line(k, lines);
-        points.extend([anchor, fairlead]);
-        line_list.push(Line {
-            model,
-            ends: [End::Point(2 * j), End::Point(2 * j + 1)],
-        });
-    }
-    System::new(line_list, points, G).unwrap()
+    independent_ropes(which, lines, 12)
 }
 
 /// 30 Galerkin steps of 2 ms from the straight lines (the ropes sag and

@@ -141,3 +141,24 @@ pub fn one_line(planar_reduction: bool) -> Simulation {
     )
     .unwrap()
 }
+
+/// Independent ropes (no free point: docs/method.md §11.14): of `of`
+/// ropes of `elements` elements, each from a fixed anchor on a circle of
+/// radius 1.2 m, 1 m down, to a fairlead swinging by [`SWING`] on a
+/// circle of 0.1 m, those numbered in `which` (each keeps its direction:
+/// no two alike).
+pub fn independent_ropes(which: &[usize], of: usize, elements: usize) -> System {
+    let mut points = Vec::new();
+    let mut lines = Vec::new();
+    for (j, &k) in which.iter().enumerate() {
+        let angle = 0.3 + 2.0 * std::f64::consts::PI * k as f64 / of as f64;
+        let (s, c) = angle.sin_cos();
+        let (anchor, fairlead) = ([1.2 * c, 1.2 * s, -1.0], [0.1 * c, 0.1 * s, 0.0]);
+        points.extend([Point::fixed(anchor), Point::coupled(fairlead, SWING)]);
+        lines.push(Line {
+            model: line_model(anchor, fairlead, elements),
+            ends: [End::Point(2 * j), End::Point(2 * j + 1)],
+        });
+    }
+    System::new(lines, points, G).unwrap()
+}
