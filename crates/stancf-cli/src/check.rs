@@ -250,12 +250,20 @@ fn describe(
     s
 }
 
-/// "n x SAC-2, element length l m" for a uniform mesh; a graded one's
-/// shortest and longest elements and its grading (docs/method.md §1.6).
+/// "n x SAC-2, element length l m" for a uniform mesh; a graded or
+/// sectioned one's shortest and longest elements and its grading
+/// (docs/method.md §1.6).
 pub(crate) fn mesh_text(model: &Model) -> String {
     let c = &model.cable;
     let kind = model.element_type().name();
     match c.grading {
+        stancf::Grading::Sections(ref s) => format!(
+            "{} x {kind}, element lengths {} m (shortest) to {} m (longest), in {} sections",
+            c.elements,
+            model.shortest_element_length(),
+            model.longest_element_length(),
+            s.len()
+        ),
         stancf::Grading::Geometric { toward, ratio } if !c.grading.is_uniform() => format!(
             "{} x {kind}, element lengths {} m (shortest) to {} m (longest), graded toward {} \
              with ratio {ratio}",

@@ -288,10 +288,16 @@ pub fn stable_step(sc: &SystemScenario, system: &System) -> Option<f64> {
         .fold(None, |m: Option<f64>, s| Some(m.map_or(s, |m| m.min(s))))
 }
 
-/// "l m long" on a uniform mesh; a graded one's shortest and longest
-/// elements and its grading (docs/method.md §1.6).
+/// "l m long" on a uniform mesh; a graded or sectioned one's shortest and
+/// longest elements and its grading (docs/method.md §1.6).
 fn element_sizes(model: &stancf::Model) -> String {
     match model.cable.grading {
+        stancf::Grading::Sections(ref s) => format!(
+            "{} m to {} m long, in {} sections",
+            Sig(model.shortest_element_length()),
+            Sig(model.longest_element_length()),
+            s.len()
+        ),
         stancf::Grading::Geometric { toward, ratio } if !model.cable.grading.is_uniform() => {
             format!(
                 "{} m to {} m long, graded toward {} with ratio {}",

@@ -33,11 +33,22 @@ pub fn element_lengths_of(s: &serde_json::Value) -> Option<Vec<f64>> {
     Some(grading.element_lengths(length, n as usize))
 }
 
-/// The grading summary.json writes (`{"toward", "ratio"}`, absent for a
-/// uniform mesh); None if it cannot be read.
+/// The grading summary.json writes (`{"toward", "ratio"}` or
+/// `{"sections": [{"length", "elements"}, ...]}`, absent for a uniform
+/// mesh); None if it cannot be read.
 pub fn grading_of(g: &serde_json::Value) -> Option<stancf::Grading> {
     if g.is_null() {
         return Some(stancf::Grading::Uniform);
+    }
+    if let Some(sections) = g["sections"].as_array() {
+        let mut out = Vec::with_capacity(sections.len());
+        for s in sections {
+            out.push(stancf::MeshSection {
+                length: s["length"].as_f64()?,
+                elements: s["elements"].as_u64()? as usize,
+            });
+        }
+        return Some(stancf::Grading::Sections(out));
     }
     let toward = match g["toward"].as_str()? {
         "A" => stancf::GradedEnd::A,

@@ -115,3 +115,84 @@ fn plot_names_the_tables_a_run_left_out_and_draws_nothing() {
         names(&out)
     );
 }
+
+/// `[output] end_forces = "at_time"`: every row of tensions.csv and
+/// points.csv holds the estimate at t of (M23a) (docs/method.md §6.5),
+/// 1.5 R_k - 0.5 R_(k-1) of the step means R a run with the default
+/// writes (its first step: the mean itself), to round-off; the positions
+/// are the same bits.
+#[test]
+fn end_forces_at_time_are_the_line_through_the_last_two_step_means() {
+    let d = scratch("output-end-forces");
+    let run = |name: &str, output: &str| {
+        let out = d.join(name);
+        let sc = write_scenario(&d, &format!("{name}.toml"), &rope(output));
+        let o = run_quiet(&sc, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        out
+    };
+    let mean = run("mean", "");
+    let at_time = run("at_time", "end_forces = \"at_time\"");
+    let (_, m) = read_csv_with_blanks(&mean.join("points.csv"));
+    let (_, a) = read_csv_with_blanks(&at_time.join("points.csv"));
+    assert_eq!(m.len(), a.len());
+    // Rows: t, point, x, y, z, vx, vy, vz, fx, fy, fz; two points a time.
+    let point_rows = |rows: &[Vec<f64>], p: f64| -> Vec<Vec<f64>> {
+        rows.iter()
+            .filter(|r| r[1] == p && r[0] > 0.0)
+            .cloned()
+            .collect()
+    };
+    for p in [1.0, 2.0] {
+        let (m, a) = (point_rows(&m, p), point_rows(&a, p));
+        assert_eq!(m.len(), 20);
+        for k in 0..m.len() {
+            assert_eq!(
+                m[k][..8],
+                a[k][..8],
+                "point {p}, step {k}: the state differs"
+            );
+            for c in 8..11 {
+                let want = if k == 0 {
+                    m[0][c]
+                } else {
+                    1.5 * m[k][c] - 0.5 * m[k - 1][c]
+                };
+                let scale = m[k][c].abs().max(m[k.max(1) - 1][c].abs());
+                assert!(
+                    (a[k][c] - want).abs() <= 8.0 * f64::EPSILON * scale,
+                    "point {p}, step {k}, column {c}: {} against {want}",
+                    a[k][c]
+                );
+            }
+        }
+    }
+    let tm = read_tensions(&mean.join("tensions.csv"));
+    let ta = read_tensions(&at_time.join("tensions.csv"));
+    let last = tm.len() - 1;
+    assert!(tm.len() == ta.len() && ta[last][6] != tm[last][6]);
+    assert!(
+        (ta[last][6] - (ta[last][3].powi(2) + ta[last][4].powi(2) + ta[last][5].powi(2)).sqrt())
+            .abs()
+            <= 1e-12 * ta[last][6]
+    );
+}
+
+/// `end_forces` takes "step_mean" or "at_time" and belongs to systems:
+/// another value, or the key in a single cable's scenario, exit 2
+/// naming it.
+#[test]
+fn end_forces_other_than_the_two_or_of_a_single_cable_are_refused() {
+    expect_input_error(
+        "output-end-forces-value",
+        &rope("end_forces = \"instant\""),
+        &["output.end_forces", "\"instant\""],
+    );
+    let cable = IMPACT.replace("[output]", "[output]\nend_forces = \"at_time\"");
+    assert_ne!(cable, IMPACT);
+    expect_input_error(
+        "output-end-forces-cable",
+        &cable,
+        &["output.end_forces", "single cable"],
+    );
+}

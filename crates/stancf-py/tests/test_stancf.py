@@ -201,6 +201,23 @@ def test_a_system_run_returns_the_tables_it_was_asked_to_write(tmp_path):
     assert len(full.tensions[(1, "A")]["t"]) == len(full.t) - 1  # none at t = 0
 
 
+def test_a_line_in_sections_has_its_nodes_where_the_sections_put_them():
+    """grading = {sections = [...]} from Python: line 1 of the bridle
+    (4 m) as 1 m in 4 elements then 3 m in 4 has its nodes 0.25 m apart,
+    then 0.75 m; the summary records the sections; sections that do not
+    add up to the line are refused naming the key."""
+    sections = [{"length": 1.0, "elements": 4}, {"length": 3.0, "elements": 4}]
+    bridle = stancf.Scenario.from_file(ROOT / "examples" / "bridle.toml").with_values(
+        {"analysis.type": "static", "lines.0.elements": 8,
+         "lines.0.grading": {"sections": sections}})
+    res = stancf.run(bridle)
+    want = [0.0, 0.25, 0.5, 0.75, 1.0, 1.75, 2.5, 3.25, 4.0]
+    assert np.allclose(res.lines[1].node_s, want, rtol=0, atol=4e-16 * 4), res.lines[1].node_s
+    assert res.summary["lines"][0]["grading"]["sections"][1] == {"length": 3.0, "elements": 4}
+    with pytest.raises(stancf.ScenarioError, match=r"lines\[0\]\.grading\.sections.*add up to 5"):
+        bridle.with_values({"lines.0.grading": {"sections": [sections[0], {**sections[1], "length": 4.0}]}})
+
+
 def test_from_dict_with_values_and_errors_name_the_key():
     sc = stancf.Scenario(IMPACT)
     d = {

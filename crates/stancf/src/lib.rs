@@ -64,7 +64,8 @@ pub use element::{AxialStrain, Curvature, Measures};
 pub use error::{FailureKind, ModelError, SolverError};
 pub use integrator::{run, Simulation, StepReport, StepSettings, TimeScheme};
 pub use model::{
-    Cable, ElementType, GradedEnd, Grading, Load, Material, Model, ModelOptions, SpacePoints, State,
+    Cable, ElementType, GradedEnd, Grading, Load, Material, MeshSection, Model, ModelOptions,
+    SpacePoints, State,
 };
 pub use observe::{energies, Energies};
 pub use solver::{convergence_rate, Clock, NewtonSettings, SolverMethod, Timing};

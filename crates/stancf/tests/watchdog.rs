@@ -141,7 +141,7 @@ fn a_cable_at_rest_runs_for_ever() {
 fn the_model_energy_scale_counts_every_source() {
     let m = Material::chen2023_pvc();
     let cable = Cable::straight(4.0, 8, ElementType::Sac2);
-    let model = |loads| Model::new(cable, m, ModelOptions::default(), loads).unwrap();
+    let model = |loads| Model::new(cable.clone(), m, ModelOptions::default(), loads).unwrap();
     let ea_l = m.youngs_modulus * m.area * 4.0;
     let ei_over_l = m.youngs_modulus * m.second_moment / 4.0;
     let bare = model_energy_scale(&model(vec![]));

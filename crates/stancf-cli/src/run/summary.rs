@@ -94,7 +94,7 @@ pub(super) fn common_summary(
     m.insert("element".into(), json!(model.element_type().name()));
     m.insert("elements".into(), json!(sc.cable.elements));
     m.insert("length".into(), json_num(sc.cable.length));
-    if let Some(g) = grading_json(sc.cable.grading) {
+    if let Some(g) = grading_json(&sc.cable.grading) {
         m.insert("grading".into(), g);
     }
     m.insert("dofs".into(), json!(model.dofs()));
@@ -104,14 +104,21 @@ pub(super) fn common_summary(
     m
 }
 
-/// A graded mesh's `{"toward": "A" | "B" | "both", "ratio": R}` for
+/// A graded mesh's `{"toward": "A" | "B" | "both", "ratio": R}` or a
+/// sectioned one's `{"sections": [{"length", "elements"}, ...]}` for
 /// summary.json (docs/method.md §1.6); None for a uniform mesh, which
 /// summary.json does not mention. [`crate::figures::grading_of`] reads it.
-pub(crate) fn grading_json(grading: stancf::Grading) -> Option<Value> {
+pub(crate) fn grading_json(grading: &stancf::Grading) -> Option<Value> {
     match grading {
         stancf::Grading::Geometric { toward, ratio } if !grading.is_uniform() => {
-            Some(json!({"toward": toward.name(), "ratio": json_num(ratio)}))
+            Some(json!({"toward": toward.name(), "ratio": json_num(*ratio)}))
         }
+        stancf::Grading::Sections(sections) => Some(json!({
+            "sections": sections
+                .iter()
+                .map(|s| json!({"length": json_num(s.length), "elements": s.elements}))
+                .collect::<Vec<_>>()
+        })),
         _ => None,
     }
 }

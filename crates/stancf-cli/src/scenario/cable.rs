@@ -2,23 +2,19 @@
 //! (the section's stiffness and mass, and the diameter seen by drag).
 
 use super::context::Ctx;
-use super::raw::{RawCable, RawGrading, RawMaterial};
+use super::raw::{RawCable, RawGrading, RawMaterial, RawSection};
 use super::ScenarioError;
-use stancf::{ElementType, GradedEnd, Grading, Material};
+use stancf::{ElementType, GradedEnd, Grading, Material, MeshSection};
 
 /// `[cable]`: `length` (> 0, required), `elements` (1..=1000000,
-/// required), `element` ("SAC-2", the default, or "SAC-3"), `origin`
-/// (default [0, 0, 0]) and `direction` (default [1, 0, 0], not zero; made
-/// a unit vector), `grading` (see [`grading`]; default uniform).
+/// required unless the grading has sections), `element` ("SAC-2", the
+/// default, or "SAC-3"), `origin` (default [0, 0, 0]) and `direction`
+/// (default [1, 0, 0], not zero; made a unit vector), `grading` (see
+/// [`mesh`]; default uniform).
 pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, ScenarioError> {
     let rc = ctx.required("cable", raw)?;
     let length = ctx.required_positive("cable.length", rc.length)?;
-    let elements = ctx.count(
-        "cable.elements",
-        ctx.required("cable.elements", rc.elements)?,
-        1,
-        1_000_000,
-    )?;
+    let (elements, grading) = mesh(ctx, "cable", length, rc.elements, rc.grading.as_ref())?;
     let element_type = match ctx.choice(
         "cable.element",
         rc.element.as_deref(),
@@ -39,18 +35,118 @@ pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, S
         element_type,
         origin,
         direction: unit(direction),
-        grading: grading(ctx, "cable", rc.grading.as_ref(), elements)?,
+        grading,
     })
 }
 
-/// `<owner>.grading = { toward = "A" | "B" | "both", ratio = R }`, both
-/// keys required: the elements shortest at `toward`, the longest R times
-/// the shortest (R >= 1, finite; docs/method.md §1.6). Missing: uniform.
-/// `owner` is `cable` or `lines[i]`; the key named in an error is under it.
-pub(super) fn grading(
+/// The largest element count of a line (`elements` and the sum of
+/// `grading.sections`' elements).
+const MAX_ELEMENTS: i64 = 1_000_000;
+
+/// `<owner>.elements` and `<owner>.grading` of a line of `length`: the
+/// element count and the mesh (docs/method.md §1.6).
+///
+/// - `grading = { toward = "A" | "B" | "both", ratio = R }`, both keys
+///   required: the elements shortest at `toward`, the longest R times the
+///   shortest (R >= 1, finite; (M38)); `elements` required.
+/// - `grading = { sections = [{ length, elements }, ...] }` from end A,
+///   each in equal elements of its own length ((M38a)); the lengths add
+///   up to the line's, `elements` may be left out (it is their sum; given,
+///   it must be).
+/// - no grading: uniform, `elements` required.
+///
+/// `owner` is `cable`, `lines[i]` or `mesh[i]`; the key named in an error
+/// is under it.
+pub(super) fn mesh(
+    ctx: &Ctx,
+    owner: &str,
+    length: f64,
+    raw_elements: Option<i64>,
+    raw: Option<&RawGrading>,
+) -> Result<(usize, Grading), ScenarioError> {
+    let elements_key = format!("{owner}.elements");
+    if let Some(sections) = raw.and_then(|g| g.sections.as_ref()) {
+        let g = raw.expect("sections are in a grading");
+        for (present, k) in [(g.toward.is_some(), "toward"), (g.ratio.is_some(), "ratio")] {
+            if present {
+                return Err(ctx.err(
+                    &format!("{owner}.grading.{k}"),
+                    "a grading is either geometric (toward, ratio) or in sections, not both",
+                ));
+            }
+        }
+        let grading = self::sections(ctx, owner, sections)?;
+        let Grading::Sections(s) = &grading else {
+            unreachable!("sections give sections")
+        };
+        let count: usize = s.iter().map(|s| s.elements).sum();
+        if count as i64 > MAX_ELEMENTS {
+            return Err(ctx.err(
+                &format!("{owner}.grading.sections"),
+                format!("the sections' elements add up to {count}, more than {MAX_ELEMENTS}"),
+            ));
+        }
+        if let Some(n) = raw_elements {
+            if n != count as i64 {
+                return Err(ctx.err(
+                    &elements_key,
+                    format!(
+                        "is {n}, the sections of {owner}.grading have {count} elements (leave \
+                         elements out to take their sum)"
+                    ),
+                ));
+            }
+        }
+        check(ctx, owner, &grading, length, count)?;
+        return Ok((count, grading));
+    }
+    let elements = ctx.count(
+        &elements_key,
+        ctx.required(&elements_key, raw_elements)?,
+        1,
+        MAX_ELEMENTS,
+    )?;
+    Ok((elements, grading(ctx, owner, raw, length, elements)?))
+}
+
+/// `<owner>.grading.sections`: each `{ length, elements }` with both keys
+/// required (their values checked by [`stancf::Grading::check`]).
+fn sections(ctx: &Ctx, owner: &str, raw: &[RawSection]) -> Result<Grading, ScenarioError> {
+    let mut out = Vec::with_capacity(raw.len());
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("{owner}.grading.sections[{i}].{k}");
+        let length = ctx.required_positive(&key("length"), r.length)?;
+        let elements = ctx.count(
+            &key("elements"),
+            ctx.required(&key("elements"), r.elements)?,
+            1,
+            MAX_ELEMENTS,
+        )?;
+        out.push(MeshSection { length, elements });
+    }
+    Ok(Grading::Sections(out))
+}
+
+/// [`stancf::Grading::check`], its error's key put under `owner`.
+fn check(
+    ctx: &Ctx,
+    owner: &str,
+    grading: &Grading,
+    length: f64,
+    elements: usize,
+) -> Result<(), ScenarioError> {
+    grading.check(length, elements).map_err(|e| {
+        let under = e.key.strip_prefix("cable").unwrap_or(&e.key);
+        ctx.err(&format!("{owner}{under}"), e.message)
+    })
+}
+
+/// A geometric `<owner>.grading` (see [`mesh`]); missing: uniform.
+fn grading(
     ctx: &Ctx,
     owner: &str,
     raw: Option<&RawGrading>,
+    length: f64,
     elements: usize,
 ) -> Result<Grading, ScenarioError> {
     let Some(raw) = raw else {
@@ -69,10 +165,7 @@ pub(super) fn grading(
     };
     let ratio = ctx.required(&key("ratio"), raw.ratio)?;
     let g = Grading::Geometric { toward, ratio };
-    g.check(elements).map_err(|e| {
-        let under = e.key.strip_prefix("cable").unwrap_or(&e.key);
-        ctx.err(&format!("{owner}{under}"), e.message)
-    })?;
+    check(ctx, owner, &g, length, elements)?;
     Ok(g)
 }
 

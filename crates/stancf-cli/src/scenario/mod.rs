@@ -29,7 +29,7 @@ pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
-pub use output::{OutputFiles, SYSTEM_FILES};
+pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
 pub use system::{
     InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
@@ -195,7 +195,7 @@ impl Scenario {
     /// The library model.
     pub fn model(&self) -> Result<stancf::Model, stancf::ModelError> {
         stancf::Model::new(
-            self.cable,
+            self.cable.clone(),
             self.material,
             self.options.clone(),
             self.loads.clone(),

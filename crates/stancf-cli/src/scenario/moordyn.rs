@@ -161,6 +161,7 @@ pub(super) fn deck_scenario(
         initial,
         output_every: 1,
         output_files: super::OutputFiles::all(),
+        end_forces: super::output::EndForces::StepMean,
         notes,
         water: Some(water),
         channels,

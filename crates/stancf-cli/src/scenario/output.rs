@@ -1,5 +1,6 @@
-//! `[output]`: how often a run writes (`every`) and which of a system's
-//! result files it writes (`files`, docs/interface.md "Systems").
+//! `[output]`: how often a run writes (`every`), which of a system's
+//! result files it writes (`files`) and which end forces (`end_forces`;
+//! docs/interface.md "Systems").
 
 use super::context::Ctx;
 use super::raw::RawOutput;
@@ -47,6 +48,45 @@ impl OutputFiles {
     }
 }
 
+/// The end forces a system's dynamic run writes (points.csv, tensions.csv,
+/// the deck's tension channels and the largest tensions of summary.json).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EndForces {
+    /// The mean over the step ending at t (docs/method.md §6.5, (M23)).
+    #[default]
+    StepMean,
+    /// The estimate at t, second order in the step (M23a).
+    AtTime,
+}
+
+impl EndForces {
+    /// The scenario's name: "step_mean" or "at_time".
+    pub fn name(self) -> &'static str {
+        match self {
+            EndForces::StepMean => "step_mean",
+            EndForces::AtTime => "at_time",
+        }
+    }
+}
+
+/// `output.end_forces` of a system: "step_mean" (the default) or
+/// "at_time".
+pub(super) fn output_end_forces(
+    ctx: &Ctx,
+    raw: Option<&RawOutput>,
+) -> Result<EndForces, ScenarioError> {
+    let chosen = raw.and_then(|r| r.end_forces.as_deref());
+    match ctx.choice(
+        "output.end_forces",
+        chosen,
+        "step_mean",
+        &["step_mean", "at_time"],
+    )? {
+        "at_time" => Ok(EndForces::AtTime),
+        _ => Ok(EndForces::StepMean),
+    }
+}
+
 /// `output.every` (at least 1, default 1): the steps between two written
 /// steps.
 pub(super) fn output_every(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<usize, ScenarioError> {
@@ -84,13 +124,21 @@ pub(super) fn output_files(
     })
 }
 
-/// A single cable writes all its files: `output.files` is refused there.
+/// A single cable writes all its files, and its reactions as step means:
+/// `output.files` and `output.end_forces` are refused there.
 pub(super) fn no_output_files(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<(), ScenarioError> {
     if raw.is_some_and(|r| r.files.is_some()) {
         return Err(ctx.err(
             "output.files",
             "chooses the result files of a system of lines ([system] or [[lines]]); a single \
              cable writes all of its files",
+        ));
+    }
+    if raw.is_some_and(|r| r.end_forces.is_some()) {
+        return Err(ctx.err(
+            "output.end_forces",
+            "chooses the end forces of a system of lines ([system] or [[lines]]); a single \
+             cable's reactions.csv holds the mean over each step in this version",
         ));
     }
     Ok(())

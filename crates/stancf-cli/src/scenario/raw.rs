@@ -38,6 +38,10 @@ pub(super) struct RawScenario {
     pub(super) lines: Vec<RawLine>,
     #[serde(default)]
     pub(super) motions: Vec<RawMotion>,
+    /// The meshes of a MoorDyn deck's lines (docs/interface.md, "MoorDyn
+    /// decks").
+    #[serde(default)]
+    pub(super) mesh: Vec<RawMesh>,
     /// The water a system's lines are in (docs/interface.md, "Water").
     pub(super) water: Option<RawWater>,
 }
@@ -50,7 +54,17 @@ impl RawScenario {
             || !self.points.is_empty()
             || !self.lines.is_empty()
             || !self.motions.is_empty()
+            || !self.mesh.is_empty()
     }
+}
+
+/// One `[[mesh]]` entry: the mesh of some of a MoorDyn deck's lines.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawMesh {
+    pub(super) lines: Option<Vec<i64>>,
+    pub(super) elements: Option<i64>,
+    pub(super) grading: Option<RawGrading>,
 }
 
 /// `[system]`.
@@ -167,13 +181,23 @@ pub(super) struct RawLine {
     pub(super) grading: Option<RawGrading>,
 }
 
-/// `grading = { toward = "B", ratio = 4.0 }` of `[cable]` or a
-/// `[[lines]]` entry.
+/// `grading = { toward = "B", ratio = 4.0 }` or `grading = { sections =
+/// [{ length = 300.0, elements = 30 }, ...] }` of `[cable]`, a `[[lines]]`
+/// entry or a `[[mesh]]` entry.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawGrading {
     pub(super) toward: Option<String>,
     pub(super) ratio: Option<f64>,
+    pub(super) sections: Option<Vec<RawSection>>,
+}
+
+/// One `{ length, elements }` of `grading.sections`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSection {
+    pub(super) length: Option<f64>,
+    pub(super) elements: Option<i64>,
 }
 
 /// One `[[motions]]` entry.
@@ -251,6 +275,7 @@ pub(super) struct RawAnalysis {
 pub(super) struct RawOutput {
     pub(super) every: Option<i64>,
     pub(super) files: Option<Vec<String>>,
+    pub(super) end_forces: Option<String>,
 }
 
 /// A `[[loads]]` entry of type `"gravity"`.

@@ -6,7 +6,7 @@
 use super::analysis::{self, Others};
 use super::context::Ctx;
 use super::motions::motions;
-use super::raw::{RawAnalysis, RawLine, RawLineType, RawPoint, RawScenario};
+use super::raw::{RawAnalysis, RawLine, RawLineType, RawMesh, RawPoint, RawScenario};
 use super::water::{scenario_water, water_keys, Water};
 use super::{Analysis, ScenarioError};
 use stancf::motion::CoupledMotion;
@@ -129,6 +129,8 @@ pub struct SystemScenario {
     pub output_every: usize,
     /// The result files written (`output.files`; all by default).
     pub output_files: super::OutputFiles,
+    /// The end forces written: step means or estimates at t.
+    pub end_forces: super::output::EndForces,
     pub notes: Vec<String>,
     /// The water the lines are in (None: air).
     pub water: Option<Water>,
@@ -171,8 +173,8 @@ pub(super) fn system_scenario(
                 return Err(ctx.err(
                     key,
                     "the MoorDyn deck of system.moordyn gives the line types, points, lines \
-                     and gravity; the scenario adds motions, [water] (what the deck does not \
-                     give), [analysis] and [output]",
+                     and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
+                     [water] (what the deck does not give), [analysis] and [output]",
                 ));
             }
         }
@@ -187,6 +189,7 @@ pub(super) fn system_scenario(
             title,
             added.map(|w| (ctx, w)),
         )?;
+        deck_meshes(ctx, &raw.mesh, &mut sc.lines)?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
         let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
@@ -198,7 +201,15 @@ pub(super) fn system_scenario(
         sc.notes.extend(static_waves_note(&sc));
         sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
         sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+        sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
         return Ok(sc);
+    }
+    if !raw.mesh.is_empty() {
+        return Err(ctx.err(
+            "mesh",
+            "gives the mesh of a MoorDyn deck's lines (system.moordyn); a [[lines]] entry takes \
+             its own elements and grading",
+        ));
     }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let water = scenario_water(ctx, raw.water, gravity)?;
@@ -220,6 +231,7 @@ pub(super) fn system_scenario(
     }
     let output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     let output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+    let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let mut sc = SystemScenario {
         title,
         line_types,
@@ -231,6 +243,7 @@ pub(super) fn system_scenario(
         initial,
         output_every,
         output_files,
+        end_forces,
         notes,
         water,
         channels: Vec::new(),
@@ -454,11 +467,58 @@ fn check_clamp_route(
     Ok(())
 }
 
+/// `[[mesh]]` of a MoorDyn deck: `lines` (deck line ids, required, each
+/// line in one entry at most) take `elements` (default: the deck's
+/// NumSegs, unless the grading has sections) and `grading` (see
+/// [`super::cable::mesh`]) in place of the deck's uniform NumSegs. An
+/// entry with neither changes nothing and is refused.
+fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], lines: &mut [SystemLine]) -> Result<(), ScenarioError> {
+    let mut meshed: Vec<i64> = Vec::new();
+    for (i, m) in raw.iter().enumerate() {
+        let owner = format!("mesh[{i}]");
+        let ids = ctx.required(&format!("{owner}.lines"), m.lines.as_ref())?;
+        if ids.is_empty() {
+            return Err(ctx.err(&format!("{owner}.lines"), "names no line"));
+        }
+        if m.elements.is_none() && m.grading.is_none() {
+            return Err(ctx.err(
+                &owner,
+                "gives neither elements nor grading: it would leave the deck's mesh as it is",
+            ));
+        }
+        let sectioned = m.grading.as_ref().is_some_and(|g| g.sections.is_some());
+        for &id in ids {
+            let key = format!("{owner}.lines");
+            let Some(line) = lines.iter_mut().find(|l| l.id == id) else {
+                let known: Vec<String> = lines.iter().map(|l| l.id.to_string()).collect();
+                return Err(ctx.err(
+                    &key,
+                    format!(
+                        "the deck has no line {id} (its lines: {})",
+                        known.join(", ")
+                    ),
+                ));
+            };
+            if meshed.contains(&id) {
+                return Err(ctx.err(&key, format!("line {id} is meshed twice")));
+            }
+            meshed.push(id);
+            let elements = m.elements.or((!sectioned).then_some(line.elements as i64));
+            let (n, grading) =
+                super::cable::mesh(ctx, &owner, line.length, elements, m.grading.as_ref())?;
+            line.elements = n;
+            line.grading = grading;
+        }
+    }
+    Ok(())
+}
+
 /// `[[lines]]`: `id` (required, unique), `type` (a line type's name,
 /// required), `length` (> 0, required), `elements` (1..=1000000,
-/// required), `element` ("SAC-2", the default, or "SAC-3"), `a` and `b`
-/// (point ids; a missing one leaves that end loose, not both), `grading`
-/// (`{ toward, ratio }`, default uniform; see [`super::cable::grading`]).
+/// required unless the grading has sections), `element` ("SAC-2", the
+/// default, or "SAC-3"), `a` and `b` (point ids; a missing one leaves that
+/// end loose, not both), `grading` (`{ toward, ratio }` or `{ sections }`,
+/// default uniform; see [`super::cable::mesh`]).
 fn lines(
     ctx: &Ctx,
     raw: &[RawLine],
@@ -488,11 +548,12 @@ fn lines(
             ));
         };
         let length = ctx.required_positive(&key("length"), r.length)?;
-        let elements = ctx.count(
-            &key("elements"),
-            ctx.required(&key("elements"), r.elements)?,
-            1,
-            1_000_000,
+        let (elements, grading) = super::cable::mesh(
+            ctx,
+            &format!("lines[{i}]"),
+            length,
+            r.elements,
+            r.grading.as_ref(),
         )?;
         let element_type = match ctx.choice(
             &key("element"),
@@ -520,8 +581,6 @@ fn lines(
         if ends[0].is_some() && ends[0] == ends[1] {
             return Err(ctx.err(&key("b"), "both ends are attached to the same point"));
         }
-        let grading =
-            super::cable::grading(ctx, &format!("lines[{i}]"), r.grading.as_ref(), elements)?;
         let clamps = [
             clamp(ctx, i, "clamp_a", r.clamp_a.as_deref(), ends[0], points)?,
             clamp(ctx, i, "clamp_b", r.clamp_b.as_deref(), ends[1], points)?,

@@ -157,7 +157,7 @@ impl SystemScenario {
         let cable = Cable::straight(l.length, l.elements, l.element_type)
             .with_origin(origin)
             .with_direction(direction)
-            .with_grading(l.grading);
+            .with_grading(l.grading.clone());
         let material = section_material(t, self.bending_stiffness(i))
             .with_axial_damping(self.axial_damping(i));
         let options = ModelOptions {

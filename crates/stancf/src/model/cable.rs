@@ -36,7 +36,7 @@ impl ElementType {
 }
 
 /// A straight cable in its stress-free reference state.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Cable {
     pub length: f64,
     pub elements: usize,

@@ -39,7 +39,7 @@ mod validate;
 pub use applied_loads::Load;
 pub use cable::{Cable, ElementType};
 pub use coordinates::{coordinate, node_range, SLOT_R, SLOT_R_X, SLOT_R_XX};
-pub use grading::{GradedEnd, Grading};
+pub use grading::{GradedEnd, Grading, MeshSection};
 pub(crate) use mass::gather;
 pub use material::Material;
 pub use quadrature_choice::{ModelOptions, SpacePoints};
@@ -159,7 +159,7 @@ impl Model {
         let section = material.section();
         let measures = options.measures;
         let mesh = Mesh::build(cable.element_type, &lengths, section, measures, &rules);
-        let nodes = cable.elements + 1;
+        let dofs = (cable.elements + 1) * cable.element_type.dofs_per_node();
         Ok(Model {
             cable,
             material,
@@ -171,7 +171,7 @@ impl Model {
             seabed,
             water,
             constraints: Constraints {
-                motion: vec![None; nodes * cable.element_type.dofs_per_node()],
+                motion: vec![None; dofs],
                 ..Constraints::default()
             },
             node_x,

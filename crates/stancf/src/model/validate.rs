@@ -39,7 +39,7 @@ pub(super) fn cable(cable: Cable) -> Result<Cable, ModelError> {
             "must be at least 1, got 0",
         ));
     }
-    cable.grading.check(cable.elements)?;
+    cable.grading.check(cable.length, cable.elements)?;
     check_vector("cable.origin", &cable.origin)?;
     check_vector("cable.direction", &cable.direction)?;
     let norm = crate::element::dot(&cable.direction, &cable.direction).sqrt();

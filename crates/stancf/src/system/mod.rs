@@ -25,6 +25,7 @@
 
 mod apart;
 mod balance;
+mod end_forces;
 mod halving;
 mod layout;
 mod mass;

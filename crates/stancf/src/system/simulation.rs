@@ -7,12 +7,14 @@
 //! are independent and each is solved apart with its own solver
 //! (§11.14, [`super::apart`]).
 
+pub use super::end_forces::EndForce;
+use super::end_forces::{position_row_sum, ForcesAtTime};
 use super::layout::SystemLayout;
 use super::mass::SystemMass;
 use super::point_terms::{PointNodes, PointTerms};
 use super::step_equations::{system_scales, StepOfSystem};
 use super::{End, System};
-use crate::assembly::{Kind, Scheme, SlabLayout};
+use crate::assembly::{Kind, Scheme};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
@@ -41,19 +43,6 @@ macro_rules! step_problem {
             time: $sim.t,
         }
     };
-}
-
-/// The force a line end exerts on the point it is attached to, averaged
-/// over the last step (N); its magnitude is the effective tension there.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct EndForce {
-    pub force: [f64; 3],
-}
-
-impl EndForce {
-    pub fn tension(&self) -> f64 {
-        self.force.iter().map(|f| f * f).sum::<f64>().sqrt()
-    }
 }
 
 /// Position, velocity and predictor history of a point.
@@ -86,6 +75,8 @@ pub struct SystemSimulation {
     unknown_scale: Vec<f64>,
     equation_scale: Vec<f64>,
     end_forces: Vec<[EndForce; 2]>,
+    /// The end forces at the end of the last step (M23a).
+    forces_at_time: ForcesAtTime,
     /// The Galerkin step's system mass matrix (free points only).
     mass: Option<SystemMass>,
     /// The Galerkin step's end momenta of the free points.
@@ -174,6 +165,7 @@ impl SystemSimulation {
             point_water_work: 0.0,
             step_halvings: 0,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
+            forces_at_time: ForcesAtTime::new(lines.len()),
             point_nodes: vec![PointNodes::default(); system.points().len()],
             system,
             lines,
@@ -215,12 +207,32 @@ impl SystemSimulation {
         self.end_forces[line]
     }
 
-    /// The net force the attached lines exert on point p.
+    /// The net force the attached lines exert on point p, averaged over
+    /// the last step.
     pub fn point_force(&self, p: usize) -> [f64; 3] {
+        self.sum_at_point(p, |li| self.end_forces[li])
+    }
+
+    /// The force each end of line i exerts on its point at the end of the
+    /// last step: the second-order estimate (M23a) from the last two
+    /// steps' means (the mean itself after the first step).
+    pub fn end_forces_at_time(&self, line: usize) -> [EndForce; 2] {
+        self.forces_at_time.line(line)
+    }
+
+    /// The net force the attached lines exert on point p at the end of the
+    /// last step (M23a).
+    pub fn point_force_at_time(&self, p: usize) -> [f64; 3] {
+        self.sum_at_point(p, |li| self.forces_at_time.line(li))
+    }
+
+    /// The sum over the lines attached to point p of their ends' forces.
+    fn sum_at_point(&self, p: usize, ends: impl Fn(usize) -> [EndForce; 2]) -> [f64; 3] {
         let mut f = [0.0; 3];
         for (li, end) in self.system.attachments(p) {
+            let force = ends(li)[end].force;
             for c in 0..3 {
-                f[c] += self.end_forces[li][end].force[c];
+                f[c] += force[c];
             }
         }
         f
@@ -362,6 +374,7 @@ impl SystemSimulation {
         self.finish_lines(report);
         self.add_point_water_work();
         self.collect_end_forces(dt);
+        self.forces_at_time.update(&self.end_forces, dt);
         self.advance_points(dt);
         self.steps += 1;
         self.t += dt;
@@ -540,22 +553,6 @@ impl SystemSimulation {
             m.v = v;
         }
     }
-}
-
-/// Sum over the position rows of a step of the rows of r at `node`.
-fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -> [f64; 3] {
-    let mut out = [0.0; 3];
-    for (s, &(_, kind)) in layout.row_slots.iter().enumerate() {
-        if kind != Kind::Position {
-            continue;
-        }
-        for c in 0..3 {
-            if let Some(r) = layout.row_of_node(s, node, c) {
-                out[c] += rows[r];
-            }
-        }
-    }
-    out
 }
 
 /// The points' states at the start: free points where their first

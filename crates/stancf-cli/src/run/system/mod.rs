@@ -8,7 +8,7 @@ mod writers;
 use super::summary::{error_json, say, vec3};
 use super::{io_err, Place, RunOptions};
 use crate::output::{json_num, Dest};
-use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
+use crate::scenario::{AnalysisKind, EndForces, InitialShape, SystemScenario};
 use crate::Failure;
 use serde_json::{json, Value};
 use stancf::error::Sig;
@@ -34,14 +34,14 @@ struct Outcome {
 impl Outcome {
     /// Takes the end tensions of a simulation's last step into the
     /// largest ones (every step, without building a written row).
-    fn record_step_tensions(&mut self, sim: &SystemSimulation) {
+    fn record_step_tensions(&mut self, sim: &SystemSimulation, kind: EndForces) {
         for (i, (m, line)) in self
             .max_tension
             .iter_mut()
             .zip(sim.system().lines())
             .enumerate()
         {
-            let forces = sim.end_forces(i);
+            let forces = step_end_forces(sim, kind, i);
             for k in 0..2 {
                 if line.ends[k] != stancf::system::End::Loose {
                     m[k] = m[k].max(forces[k].tension());
@@ -175,7 +175,7 @@ pub(super) fn run_system(
     if let Some(s) = sim.as_mut() {
         if !from_static {
             writers
-                .write(&dynamic_row(s, false))
+                .write(&dynamic_row(s, None))
                 .map_err(io_err(place.shown))?;
         }
         step_through(s, &sc, opts, &mut writers, &mut outcome).map_err(io_err(place.shown))?;
@@ -253,9 +253,9 @@ fn step_through(
                 outcome.steps = k;
                 outcome.iterations += rep.newton.iterations;
                 outcome.t = sim.time();
-                outcome.record_step_tensions(sim);
+                outcome.record_step_tensions(sim, sc.end_forces);
                 if k % sc.output_every == 0 || k == steps {
-                    let mut row = dynamic_row(sim, true);
+                    let mut row = dynamic_row(sim, Some(sc.end_forces));
                     row.iterations = rep.newton.iterations;
                     row.residual = rep.newton.residual;
                     writers.write(&row)?;
@@ -273,23 +273,38 @@ fn step_through(
         }
     }
     if outcome.steps > last_written {
-        writers.write(&dynamic_row(sim, true))?;
+        writers.write(&dynamic_row(sim, Some(sc.end_forces)))?;
     }
     Ok(())
 }
 
+/// The end forces of line i of the last step: its means or their
+/// estimates at its end (docs/method.md §6.5, (M23), (M23a)).
+fn step_end_forces(sim: &SystemSimulation, kind: EndForces, i: usize) -> [EndForce; 2] {
+    match kind {
+        EndForces::StepMean => sim.end_forces(i),
+        EndForces::AtTime => sim.end_forces_at_time(i),
+    }
+}
+
 /// The row of a system simulation's current state (`forces`: the end
-/// forces of the last step; none before the first).
-fn dynamic_row(sim: &SystemSimulation, forces: bool) -> SystemRow<'_> {
+/// forces of the last step, of that kind; none before the first).
+fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> SystemRow<'_> {
     let system = sim.system();
     let lines = sim.lines().iter().map(|l| (l.model(), l.state())).collect();
     let points = (0..system.points().len())
         .map(|p| {
             let (x, v) = sim.point_state(p);
-            (x, v, if forces { sim.point_force(p) } else { [0.0; 3] })
+            let f = match forces {
+                None => [0.0; 3],
+                Some(EndForces::StepMean) => sim.point_force(p),
+                Some(EndForces::AtTime) => sim.point_force_at_time(p),
+            };
+            (x, v, f)
         })
         .collect();
-    let ends = ends_of(system, |i| sim.end_forces(i), forces);
+    let kind = forces.unwrap_or_default();
+    let ends = ends_of(system, |i| step_end_forces(sim, kind, i), forces.is_some());
     let mut en = [0.0; 3];
     for l in sim.lines() {
         let e = l.energies();
@@ -415,7 +430,7 @@ fn write_summary(
                 "max_tension_a": json_num(outcome.max_tension[i][0]),
                 "max_tension_b": json_num(outcome.max_tension[i][1]),
             });
-            if let Some(g) = super::summary::grading_json(l.grading) {
+            if let Some(g) = super::summary::grading_json(&l.grading) {
                 line["grading"] = g;
             }
             line

@@ -1,0 +1,137 @@
+//! The forces of the line ends on their points: the step means of (M23)
+//! (docs/method.md §6.5, §11.4), and their second-order estimate at the
+//! end of a step (M23a).
+//!
+//! A step's reaction is an impulse, so what it gives is the *mean* end
+//! force over the step, R_k = (1/dt_k) int R dt, which is the force at the
+//! step's middle to O(dt^2) but the force at its end t_k only to O(dt):
+//! R(t_k) = R_k + (dt_k / 2) R'(t_k) + O(dt^2). The line through the last
+//! two means, placed at their mid-times t_k - dt_k / 2 and
+//! t_(k-1) - dt_(k-1) / 2 (half a step length plus half the one before
+//! apart), gives R at t_k to O(dt^2):
+//!
+//! ```text
+//!   R(t_k) = R_k + w (R_k - R_(k-1)),   w = dt_k / (dt_k + dt_(k-1))   (M23a)
+//! ```
+//!
+//! (w = 1/2 at a constant step; halved steps and changed step lengths
+//! take their own w). The first step after a start has no step before it
+//! and gives its mean. The estimate uses only steps already taken, so a
+//! result at t_k is final when step k is.
+
+use crate::assembly::{Kind, SlabLayout};
+
+/// The force a line end exerts on the point it is attached to (N): the
+/// mean over the last step, or its estimate at the step's end (M23a); its
+/// magnitude is the effective tension there.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EndForce {
+    pub force: [f64; 3],
+}
+
+impl EndForce {
+    pub fn tension(&self) -> f64 {
+        self.force.iter().map(|f| f * f).sum::<f64>().sqrt()
+    }
+}
+
+/// Sum over the position rows of a step of the rows of r at `node`.
+pub(super) fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for (s, &(_, kind)) in layout.row_slots.iter().enumerate() {
+        if kind != Kind::Position {
+            continue;
+        }
+        for c in 0..3 {
+            if let Some(r) = layout.row_of_node(s, node, c) {
+                out[c] += rows[r];
+            }
+        }
+    }
+    out
+}
+
+/// The previous step's mean end forces and the estimate at the end of the
+/// last step.
+#[derive(Clone, Debug)]
+pub(super) struct ForcesAtTime {
+    previous_mean: Vec<[EndForce; 2]>,
+    /// The previous step's length (0: no step before the last one).
+    previous_dt: f64,
+    at_time: Vec<[EndForce; 2]>,
+}
+
+impl ForcesAtTime {
+    pub(super) fn new(lines: usize) -> Self {
+        ForcesAtTime {
+            previous_mean: vec![[EndForce::default(); 2]; lines],
+            previous_dt: 0.0,
+            at_time: vec![[EndForce::default(); 2]; lines],
+        }
+    }
+
+    /// Takes the means of a step of length `dt` just converged: (M23a)
+    /// with the step before it, or the means themselves after a start.
+    pub(super) fn update(&mut self, mean: &[[EndForce; 2]], dt: f64) {
+        let w = if self.previous_dt > 0.0 {
+            dt / (dt + self.previous_dt)
+        } else {
+            0.0
+        };
+        for ((now, m), before) in self
+            .at_time
+            .iter_mut()
+            .zip(mean)
+            .zip(self.previous_mean.iter_mut())
+        {
+            for k in 0..2 {
+                now[k].force = std::array::from_fn(|c| {
+                    m[k].force[c] + w * (m[k].force[c] - before[k].force[c])
+                });
+                before[k] = m[k];
+            }
+        }
+        self.previous_dt = dt;
+    }
+
+    /// The estimate of line `line`'s end forces at the end of the last
+    /// step.
+    pub(super) fn line(&self, line: usize) -> [EndForce; 2] {
+        self.at_time[line]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(f: f64) -> Vec<[EndForce; 2]> {
+        vec![[
+            EndForce {
+                force: [f, 0.0, 0.0],
+            },
+            EndForce::default(),
+        ]]
+    }
+
+    /// A force linear in time, R = 3 + 2 t, has the step means R at the
+    /// steps' mid-times, and (M23a) gives R at the steps' ends exactly,
+    /// at a constant step and across a change of step; the first step
+    /// gives its mean.
+    #[test]
+    fn a_force_linear_in_time_is_found_at_the_ends_of_the_steps() {
+        let force = |t: f64| 3.0 + 2.0 * t;
+        let mut f = ForcesAtTime::new(1);
+        let mut t = 0.0;
+        for (k, dt) in [0.1, 0.1, 0.05, 0.05, 0.2].into_iter().enumerate() {
+            f.update(&one(force(t + 0.5 * dt)), dt);
+            t += dt;
+            let got = f.line(0)[0].force[0];
+            let want = if k == 0 { force(t - 0.05) } else { force(t) };
+            assert!(
+                (got - want).abs() <= 4.0 * f64::EPSILON * want,
+                "step {k}: {got} {want}"
+            );
+        }
+    }
+}
