@@ -218,6 +218,21 @@ def test_a_line_in_sections_has_its_nodes_where_the_sections_put_them():
         bridle.with_values({"lines.0.grading": {"sections": [sections[0], {**sections[1], "length": 4.0}]}})
 
 
+def test_end_forces_at_time_follow_the_step_means():
+    """[output] end_forces = "at_time" from Python: the bridle's point
+    forces are 1.5 R_k - 0.5 R_(k-1) of the step means R (docs/method.md
+    (M23a)), the first step's the mean itself; the states are the same."""
+    bridle = stancf.Scenario.from_file(ROOT / "examples" / "bridle.toml").with_values(
+        {"analysis.duration": 0.01, "output.every": 1})
+    mean = stancf.run(bridle)
+    at_t = stancf.run(bridle.with_values({"output.end_forces": "at_time"}))
+    for p in mean.points:
+        m, a = mean.points[p]["force"][1:], at_t.points[p]["force"][1:]
+        assert np.array_equal(mean.points[p]["position"], at_t.points[p]["position"])
+        want = np.vstack([m[:1], 1.5 * m[1:] - 0.5 * m[:-1]])
+        assert np.allclose(a, want, rtol=0, atol=8 * np.finfo(float).eps * np.abs(m).max()), p
+
+
 def test_from_dict_with_values_and_errors_name_the_key():
     sc = stancf.Scenario(IMPACT)
     d = {
