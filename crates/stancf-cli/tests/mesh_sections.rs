@@ -107,10 +107,20 @@ fn a_cable_in_sections_takes_its_element_count_from_them() {
     );
 }
 
-/// The chain deck every deck test reads: `examples/oc4-deepcwind-
-/// moordyn.txt` (three lines of 835.35 m in 20 segments).
-fn oc4_deck() -> String {
+/// The chain deck as shipped: `examples/oc4-deepcwind-moordyn.txt`
+/// (three lines of 835.35 m in 20 segments, BA = -1, a damping ratio).
+fn oc4_deck_as_shipped() -> String {
     std::fs::read_to_string(repo_file("examples/oc4-deepcwind-moordyn.txt")).unwrap()
+}
+
+/// The chain deck every deck test reads: [`oc4_deck_as_shipped`] with BA
+/// in N s (1.224e7, what the damping ratio 1 gives at 20 segments), so
+/// that its lines may take meshes that are not uniform.
+fn oc4_deck() -> String {
+    let shipped = oc4_deck_as_shipped();
+    let deck = shipped.replace("7.536E8   -1.0 ", "7.536E8   1.224E7 ");
+    assert_ne!(deck, shipped, "the chain's BA column moved");
+    deck
 }
 
 /// A static scenario of the OC4 deck with `meshes` ([[mesh]] entries).
@@ -196,6 +206,46 @@ fn elements_at_the_touchdown_buy_the_accuracy_of_a_finer_uniform_mesh() {
     eprintln!("fairlead tension off by {sectioned:.2e} (7 in sections), {deck:.2e} (20 uniform), {coarse:.2e} (10 uniform)");
     assert!(sectioned < 5e-4 && deck < 5e-4, "{sectioned:e}, {deck:e}");
     assert!(coarse > 5e-4, "{coarse:e}");
+}
+
+/// A deck's channels of a remeshed line's ends follow the ends: with line
+/// 1 in 8 elements instead of 20 segments, `L1NBPZ` (node 20 of the deck)
+/// is the fairlead's z (-14 m, where the deck puts it) and `L1N0PZ` the
+/// anchor's (-200 m), and the shipped deck's damping ratio takes the
+/// uniform 8 elements.
+#[test]
+fn a_remeshed_deck_lines_end_channels_follow_its_ends() {
+    let d = scratch("sections-deck-channels");
+    let deck = oc4_deck_as_shipped().replace("AnchTen3\n", "AnchTen3\nL1NBPZ\nL1N0PZ\n");
+    std::fs::write(d.join("deck.txt"), deck).unwrap();
+    let sc = write_scenario(
+        &d,
+        "s.toml",
+        &oc4_scenario("[[mesh]]\nlines = [1]\nelements = 8"),
+    );
+    let out = d.join("out");
+    let o = run_to(&sc, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let last = rows.last().unwrap();
+    assert_eq!(last[col("L1NBPZ")], -14.0);
+    assert_eq!(last[col("L1N0PZ")], -200.0);
+}
+
+/// A line type's damping ratio (ba < 0) is defined on elements of one
+/// length: a `[[lines]]` entry graded or in sections with such a type is
+/// refused naming its grading.
+#[test]
+fn a_damping_ratio_on_a_mesh_that_is_not_uniform_is_refused() {
+    let rope = hanging(None, SECTIONS, "type = \"static\"");
+    let with_ratio = rope.replacen("[[line_types]]\n", "[[line_types]]\nba = -0.5\n", 1);
+    assert_ne!(with_ratio, rope);
+    expect_input_error(
+        "sections-damping-ratio",
+        &with_ratio,
+        &["lines[0].grading", "damping ratio"],
+    );
 }
 
 /// Sections that do not add up to the line, element counts that are not
@@ -294,6 +344,22 @@ fn bad_deck_meshes_are_refused_naming_the_key() {
             needles,
         );
     }
+    let sections =
+        "[[mesh]]\nlines = [2]\ngrading = { sections = [{ length = 400.0, elements = 4 }, \
+                    { length = 435.35, elements = 4 }] }";
+    expect_input_error_beside(
+        "sections-deck-damping-ratio",
+        &oc4_scenario(sections),
+        &[("deck.txt", &oc4_deck_as_shipped())],
+        &["mesh[0].grading", "damping ratio", "BA = -1"],
+    );
+    let channels = oc4_deck().replace("AnchTen3\n", "AnchTen3\nL1N7PZ\n");
+    expect_input_error_beside(
+        "sections-deck-interior-channel",
+        &oc4_scenario("[[mesh]]\nlines = [1]\nelements = 8"),
+        &[("deck.txt", &channels)],
+        &["mesh[0].lines", "L1N7PZ", "node 7"],
+    );
     let system = format!(
         "{}[[mesh]]\nlines = [7]\nelements = 4\n",
         hanging(Some(10), "", "type = \"static\"")

@@ -189,7 +189,7 @@ pub(super) fn system_scenario(
             title,
             added.map(|w| (ctx, w)),
         )?;
-        deck_meshes(ctx, &raw.mesh, &mut sc.lines)?;
+        deck_meshes(ctx, &raw.mesh, &mut sc)?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
         let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
@@ -471,8 +471,12 @@ fn check_clamp_route(
 /// line in one entry at most) take `elements` (default: the deck's
 /// NumSegs, unless the grading has sections) and `grading` (see
 /// [`super::cable::mesh`]) in place of the deck's uniform NumSegs. An
-/// entry with neither changes nothing and is refused.
-fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], lines: &mut [SystemLine]) -> Result<(), ScenarioError> {
+/// entry with neither changes nothing and is refused. The deck's output
+/// channels of a remeshed line's end B (node NumSegs) move to its new
+/// last node; a channel of an interior node is refused (that node is not
+/// on the new mesh), and so is a line type's damping ratio (BA < 0, MoorDyn's
+/// per-segment definition) on a mesh that is not uniform.
+fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], sc: &mut SystemScenario) -> Result<(), ScenarioError> {
     let mut meshed: Vec<i64> = Vec::new();
     for (i, m) in raw.iter().enumerate() {
         let owner = format!("mesh[{i}]");
@@ -489,8 +493,8 @@ fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], lines: &mut [SystemLine]) -> Result<(
         let sectioned = m.grading.as_ref().is_some_and(|g| g.sections.is_some());
         for &id in ids {
             let key = format!("{owner}.lines");
-            let Some(line) = lines.iter_mut().find(|l| l.id == id) else {
-                let known: Vec<String> = lines.iter().map(|l| l.id.to_string()).collect();
+            let Some(position) = sc.lines.iter().position(|l| l.id == id) else {
+                let known: Vec<String> = sc.lines.iter().map(|l| l.id.to_string()).collect();
                 return Err(ctx.err(
                     &key,
                     format!(
@@ -503,12 +507,61 @@ fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], lines: &mut [SystemLine]) -> Result<(
                 return Err(ctx.err(&key, format!("line {id} is meshed twice")));
             }
             meshed.push(id);
+            let line = &mut sc.lines[position];
             let elements = m.elements.or((!sectioned).then_some(line.elements as i64));
             let (n, grading) =
                 super::cable::mesh(ctx, &owner, line.length, elements, m.grading.as_ref())?;
+            let ba = sc.line_types[line.line_type].ba;
+            if ba < 0.0 && !grading.is_uniform() {
+                return Err(ctx.err(
+                    &format!("{owner}.grading"),
+                    format!(
+                        "line {id}'s type {} gives its axial damping as a damping ratio \
+                         (BA = {ba}), which MoorDyn defines on segments of one length: give BA \
+                         in N s in the deck, or mesh the line uniformly (elements alone)",
+                        sc.line_types[line.line_type].name
+                    ),
+                ));
+            }
+            let old = line.elements;
             line.elements = n;
             line.grading = grading;
+            remesh_channels(ctx, &owner, (position + 1, id), old, n, &mut sc.channels)?;
         }
+    }
+    Ok(())
+}
+
+/// The deck's channels of a line (its number in the deck, as channels
+/// name lines, and its id) after its `old` segments became `new`
+/// elements: end B's node follows the end, node 0 stays; an interior
+/// node is refused under `owner.lines`.
+fn remesh_channels(
+    ctx: &Ctx,
+    owner: &str,
+    (number, id): (usize, i64),
+    old: usize,
+    new: usize,
+    channels: &mut [OutputChannel],
+) -> Result<(), ScenarioError> {
+    for c in channels.iter_mut() {
+        let crate::moordyn::Channel::LineNode { line, node, .. } = &mut c.channel else {
+            continue;
+        };
+        if *line != number || *node == 0 {
+            continue;
+        }
+        if *node != old {
+            return Err(ctx.err(
+                &format!("{owner}.lines"),
+                format!(
+                    "the deck's output channel {} names node {node} of line {id}'s {old} \
+                     segments, which its new mesh does not have (end nodes A and B are kept)",
+                    c.name
+                ),
+            ));
+        }
+        *node = new;
     }
     Ok(())
 }
@@ -580,6 +633,17 @@ fn lines(
         }
         if ends[0].is_some() && ends[0] == ends[1] {
             return Err(ctx.err(&key("b"), "both ends are attached to the same point"));
+        }
+        if types[line_type].ba < 0.0 && !grading.is_uniform() {
+            return Err(ctx.err(
+                &key("grading"),
+                format!(
+                    "line type \"{}\" gives its axial damping as a damping ratio (ba = {}), \
+                     which is defined on elements of one length: give ba in N s, or leave the \
+                     line's mesh uniform",
+                    types[line_type].name, types[line_type].ba
+                ),
+            ));
         }
         let clamps = [
             clamp(ctx, i, "clamp_a", r.clamp_a.as_deref(), ends[0], points)?,
