@@ -133,6 +133,11 @@ fn end_forces_at_time_are_the_line_through_the_last_two_step_means() {
     };
     let mean = run("mean", "");
     let at_time = run("at_time", "end_forces = \"at_time\"");
+    let kind = |dir: &std::path::Path| read_json(&dir.join("summary.json"))["end_forces"].clone();
+    assert_eq!(
+        (kind(&mean), kind(&at_time)),
+        ("step_mean".into(), "at_time".into())
+    );
     let (_, m) = read_csv_with_blanks(&mean.join("points.csv"));
     let (_, a) = read_csv_with_blanks(&at_time.join("points.csv"));
     assert_eq!(m.len(), a.len());

@@ -468,6 +468,7 @@ fn write_summary(
             InitialShape::Static => "static",
             InitialShape::Reference => "reference",
         },
+        "end_forces": sc.end_forces.name(),
         "lines": lines,
         "points": points,
         "steps": outcome.steps,
