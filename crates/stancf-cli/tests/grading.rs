@@ -38,19 +38,6 @@ fn nodes_toward_b() -> Vec<f64> {
     .node_coordinates(10.0, 12)
 }
 
-/// The first sample of every element in stress.csv rows at one time
-/// (columns t, s, axial_stress, curvature, element): its s, x_k.
-fn element_starts(rows: &[Vec<f64>], t: f64) -> Vec<f64> {
-    let mut starts = Vec::new();
-    for r in rows.iter().filter(|r| r[0] == t) {
-        let k = r[4] as usize;
-        if starts.len() == k {
-            starts.push(r[1]);
-        }
-    }
-    starts
-}
-
 /// A graded line of a system runs (statics, and dynamics from the
 /// straight start) with exit 0; its stress.csv's s column runs through
 /// the graded node coordinates (shorter elements toward B, 17 digits

@@ -63,14 +63,7 @@ fn a_line_in_sections_runs_with_its_sections_nodes() {
     let x = sections().node_coordinates(10.0, 10);
     assert_eq!(x[6], 3.0);
     let (_, rows) = read_csv(&out.join("lines/7/stress.csv"));
-    let t0 = rows[0][0];
-    let mut starts = Vec::new();
-    for r in rows.iter().filter(|r| r[0] == t0) {
-        if starts.len() == r[4] as usize {
-            starts.push(r[1]);
-        }
-    }
-    assert_eq!(starts, x[..10].to_vec());
+    assert_eq!(element_starts(&rows, rows[0][0]), x[..10].to_vec());
     let summary = read_json(&out.join("summary.json"));
     let line = &summary["lines"][0];
     assert_eq!(line["elements"], 10);

@@ -65,8 +65,13 @@ pub(super) fn mesh(
     raw: Option<&RawGrading>,
 ) -> Result<(usize, Grading), ScenarioError> {
     let elements_key = format!("{owner}.elements");
-    if let Some(sections) = raw.and_then(|g| g.sections.as_ref()) {
-        let g = raw.expect("sections are in a grading");
+    if let Some(
+        g @ RawGrading {
+            sections: Some(sections),
+            ..
+        },
+    ) = raw
+    {
         for (present, k) in [(g.toward.is_some(), "toward"), (g.ratio.is_some(), "ratio")] {
             if present {
                 return Err(ctx.err(
@@ -75,11 +80,8 @@ pub(super) fn mesh(
                 ));
             }
         }
-        let grading = self::sections(ctx, owner, sections)?;
-        let Grading::Sections(s) = &grading else {
-            unreachable!("sections give sections")
-        };
-        let count: usize = s.iter().map(|s| s.elements).sum();
+        let sections = self::sections(ctx, owner, sections)?;
+        let count: usize = sections.iter().map(|s| s.elements).sum();
         if count as i64 > MAX_ELEMENTS {
             return Err(ctx.err(
                 &format!("{owner}.grading.sections"),
@@ -97,6 +99,7 @@ pub(super) fn mesh(
                 ));
             }
         }
+        let grading = Grading::Sections(sections);
         check(ctx, owner, &grading, length, count)?;
         return Ok((count, grading));
     }
@@ -111,7 +114,7 @@ pub(super) fn mesh(
 
 /// `<owner>.grading.sections`: each `{ length, elements }` with both keys
 /// required (their values checked by [`stancf::Grading::check`]).
-fn sections(ctx: &Ctx, owner: &str, raw: &[RawSection]) -> Result<Grading, ScenarioError> {
+fn sections(ctx: &Ctx, owner: &str, raw: &[RawSection]) -> Result<Vec<MeshSection>, ScenarioError> {
     let mut out = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
         let key = |k: &str| format!("{owner}.grading.sections[{i}].{k}");
@@ -124,7 +127,7 @@ fn sections(ctx: &Ctx, owner: &str, raw: &[RawSection]) -> Result<Grading, Scena
         )?;
         out.push(MeshSection { length, elements });
     }
-    Ok(Grading::Sections(out))
+    Ok(out)
 }
 
 /// [`stancf::Grading::check`], its error's key put under `owner`.

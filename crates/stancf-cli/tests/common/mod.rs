@@ -286,6 +286,19 @@ pub fn expect_refusal_beside(name: &str, scenario: &str, files: &[(&str, &str)],
     assert!(!out.exists(), "{name}: an output folder was created");
 }
 
+/// The first sample of every element in stress.csv rows at one time
+/// (columns t, s, axial_stress, curvature, element): its s, x_k.
+pub fn element_starts(rows: &[Vec<f64>], t: f64) -> Vec<f64> {
+    let mut starts = Vec::new();
+    for r in rows.iter().filter(|r| r[0] == t) {
+        let k = r[4] as usize;
+        if starts.len() == k {
+            starts.push(r[1]);
+        }
+    }
+    starts
+}
+
 /// A PNG file: signature, IHDR size, and a size a real figure has.
 pub fn check_png(path: &Path) {
     let b = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

@@ -295,11 +295,10 @@ fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> SystemRow<'
     let points = (0..system.points().len())
         .map(|p| {
             let (x, v) = sim.point_state(p);
-            let f = match forces {
-                None => [0.0; 3],
-                Some(EndForces::StepMean) => sim.point_force(p),
-                Some(EndForces::AtTime) => sim.point_force_at_time(p),
-            };
+            let f = forces.map_or([0.0; 3], |kind| match kind {
+                EndForces::StepMean => sim.point_force(p),
+                EndForces::AtTime => sim.point_force_at_time(p),
+            });
             (x, v, f)
         })
         .collect();
