@@ -20,7 +20,7 @@
 
 use super::slab::TimeSlab;
 use super::CableElement;
-use crate::water::{AddedMass, EntrainedAtPoint};
+use crate::water::{AddedMass, EntrainedAtPoint, EntrainedFirst};
 
 type Block<const ND: usize> = [[f64; ND]; ND];
 
@@ -68,16 +68,29 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             let r = combine(n, q);
             let rx = combine(nx, q);
             let rdot = combine(n, qdot);
-            let t = am.at_point(&r, &rx, &rdot, hessian.is_some());
+            let t = match hessian.as_mut() {
+                Some((v, x, z)) => {
+                    let t = am.at_point(&r, &rx, &rdot, true);
+                    add_point_blocks(n, nx, p.wl, &t, v, x, z);
+                    EntrainedFirst {
+                        energy: t.energy,
+                        d_v: t.d_v,
+                        d_rz: t.d_r[2],
+                        d_x: t.d_x,
+                    }
+                }
+                None => match am.first_derivatives(&r, &rx, &rdot) {
+                    Some(t) => t,
+                    None => continue,
+                },
+            };
             energy += p.wl * t.energy;
+            let d_r = [0.0, 0.0, t.d_rz];
             for k in 0..NS {
                 for i in 0..3 {
                     d_qdot[3 * k + i] += p.wl * n[k] * t.d_v[i];
-                    d_q[3 * k + i] += p.wl * (n[k] * t.d_r[i] + nx[k] * t.d_x[i]);
+                    d_q[3 * k + i] += p.wl * (n[k] * d_r[i] + nx[k] * t.d_x[i]);
                 }
-            }
-            if let Some((v, x, z)) = hessian.as_mut() {
-                add_point_blocks(n, nx, p.wl, &t, v, x, z);
             }
         }
         energy

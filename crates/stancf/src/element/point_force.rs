@@ -36,7 +36,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
             let f = force(&r, &rx, &rdot, hessian_at.is_some());
-            if f == ForceAtPoint::default() {
+            // Without a Hessian the derivatives are zero: the force says
+            // whether the point adds anything.
+            let nothing = match hessian_at {
+                Some(_) => f == ForceAtPoint::default(),
+                None => f.force == [0.0; 3],
+            };
+            if nothing {
                 continue;
             }
             work += w_dt * p.wl * (0..3).map(|i| f.force[i] * rdot[i]).sum::<f64>();

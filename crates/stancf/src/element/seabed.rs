@@ -22,8 +22,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut SlabDerivatives<ND>,
     ) {
         out.seabed_work +=
-            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot, _| {
-                contact.force(r, rx, rdot)
+            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot, d| {
+                contact.force_at(r, rx, rdot, d)
             });
     }
 

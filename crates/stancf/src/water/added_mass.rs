@@ -97,6 +97,17 @@ impl AddedMass {
         b
     }
 
+    /// T_a (W25) and its first derivatives (W26): what a residual needs.
+    /// None where the section is dry (all zero).
+    pub fn first_derivatives(
+        &self,
+        r: &[f64; 3],
+        x: &[f64; 3],
+        v: &[f64; 3],
+    ) -> Option<EntrainedFirst> {
+        self.terms(r, x, v).map(|t| t.first(self.displaced))
+    }
+
     /// T_a (W25) and, if `second`, its second derivatives (W27); the first
     /// derivatives (W26) always. All zero where the section is dry.
     pub fn at_point(
@@ -106,26 +117,21 @@ impl AddedMass {
         v: &[f64; 3],
         second: bool,
     ) -> EntrainedAtPoint {
-        let sf = super::SubmergedFraction::at(r[2], self.diameter);
         let mut out = EntrainedAtPoint::default();
-        if sf.is_dry() {
+        let Some(t) = self.terms(r, x, v) else {
             return out;
-        }
+        };
         let c = self.displaced;
-        let (s, s1, s2) = (sf.value, sf.slope, sf.curvature);
-        let (can, k) = (self.ca_normal, self.ca_axial - self.ca_normal);
-        let g = dot(x, x);
-        let u = dot(x, v) / g;
-        let bv: [f64; 3] = std::array::from_fn(|i| can * v[i] + k * u * x[i]);
-        let q = dot(v, &bv);
-        let vux: [f64; 3] = std::array::from_fn(|i| v[i] - u * x[i]);
-        out.energy = 0.5 * c * s * q;
-        out.d_v = bv.map(|b| c * s * b);
-        out.d_r[2] = 0.5 * c * s1 * q;
-        out.d_x = vux.map(|a| c * s * k * u * a);
+        let first = t.first(c);
+        out.energy = first.energy;
+        out.d_v = first.d_v;
+        out.d_r[2] = first.d_rz;
+        out.d_x = first.d_x;
         if !second {
             return out;
         }
+        let EntrainedTerms { s, s1, s2, k, g, u, bv, q, vux } = t;
+        let can = self.ca_normal;
         let (csk, csk1) = (c * s * k, c * s1 * k);
         out.rr[2][2] = 0.5 * c * s2 * q;
         for i in 0..3 {
@@ -141,6 +147,67 @@ impl AddedMass {
             }
         }
         out
+    }
+
+    /// The quantities (W25)-(W27) are made of, None where the section is
+    /// dry.
+    fn terms(&self, r: &[f64; 3], x: &[f64; 3], v: &[f64; 3]) -> Option<EntrainedTerms> {
+        let sf = super::SubmergedFraction::at(r[2], self.diameter);
+        if sf.is_dry() {
+            return None;
+        }
+        let (can, k) = (self.ca_normal, self.ca_axial - self.ca_normal);
+        let g = dot(x, x);
+        let u = dot(x, v) / g;
+        let bv: [f64; 3] = std::array::from_fn(|i| can * v[i] + k * u * x[i]);
+        Some(EntrainedTerms {
+            s: sf.value,
+            s1: sf.slope,
+            s2: sf.curvature,
+            k,
+            g,
+            u,
+            bv,
+            q: dot(v, &bv),
+            vux: std::array::from_fn(|i| v[i] - u * x[i]),
+        })
+    }
+}
+
+/// T_a (W25) and its first derivatives (W26) at a point; of dT/dr only
+/// the z component is not zero.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EntrainedFirst {
+    pub energy: f64,
+    pub d_v: [f64; 3],
+    pub d_rz: f64,
+    pub d_x: [f64; 3],
+}
+
+/// The quantities of (W25)-(W27) at a wet point: s, s', s'', k, g, u,
+/// B v, Q = v^T B v and v - u x.
+struct EntrainedTerms {
+    s: f64,
+    s1: f64,
+    s2: f64,
+    k: f64,
+    g: f64,
+    u: f64,
+    bv: [f64; 3],
+    q: f64,
+    vux: [f64; 3],
+}
+
+impl EntrainedTerms {
+    /// (W25)-(W26) with c = rho_w A.
+    fn first(&self, c: f64) -> EntrainedFirst {
+        let (s, k, u) = (self.s, self.k, self.u);
+        EntrainedFirst {
+            energy: 0.5 * c * s * self.q,
+            d_v: self.bv.map(|b| c * s * b),
+            d_rz: 0.5 * c * self.s1 * self.q,
+            d_x: self.vux.map(|a| c * s * k * u * a),
+        }
     }
 }
 

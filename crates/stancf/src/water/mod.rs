@@ -13,7 +13,7 @@ pub mod spectrum;
 pub mod submerged;
 pub mod waves;
 
-pub use added_mass::{AddedMass, EntrainedAtPoint};
+pub use added_mass::{AddedMass, EntrainedAtPoint, EntrainedFirst};
 pub use hydro::{LineInWater, Morison, Water};
 pub use point::{PointForce, PointInWater};
 pub use seabed::{ForceAtPoint, Seabed, SeabedContact};

@@ -133,6 +133,14 @@ pub struct SeabedContact {
 }
 
 /// P(g), P'(g) = S(g) and P''(g) = S'(g) of (W40)-(W41).
+/// What friction resists: the velocity (dynamics) or the displacement
+/// from the seed (statics), where its derivative goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Sliding {
+    Velocity,
+    Position,
+}
+
 fn smoothed_penetration(g: f64, delta: f64) -> (f64, f64, f64) {
     if g <= 0.0 {
         (0.0, 0.0, 0.0)
@@ -177,7 +185,21 @@ impl SeabedContact {
     /// (W45)-(W46) at position r, tangent r_x, velocity r_dot. Zero, with
     /// zero derivatives, clear of the bed.
     pub fn force(&self, r: &[f64; 3], rx: &[f64; 3], rdot: &[f64; 3]) -> ForceAtPoint {
-        self.force_with(r, rx, rdot, (rdot, self.seabed.slip_velocity), false)
+        self.force_at(r, rx, rdot, true)
+    }
+
+    /// [`Self::force`], its derivatives only when `derivatives` (else
+    /// zero): a residual without a Jacobian skips them, with the same
+    /// force to the bit.
+    pub(crate) fn force_at(
+        &self,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        derivatives: bool,
+    ) -> ForceAtPoint {
+        let slide = (rdot, self.seabed.slip_velocity);
+        self.force_with(r, rx, rdot, slide, Sliding::Velocity, derivatives)
     }
 
     /// The contact force on a line at rest whose point at `r` has slid by
@@ -188,7 +210,8 @@ impl SeabedContact {
     /// once it has moved by a few u_s. The derivatives in r include the
     /// slide's (d slide / dr = I); d_rdot is zero.
     pub fn static_force(&self, r: &[f64; 3], rx: &[f64; 3], slide: &[f64; 3]) -> ForceAtPoint {
-        let mut out = self.force_with(r, rx, &[0.0; 3], (slide, self.static_slip()), true);
+        let slide = (slide, self.static_slip());
+        let mut out = self.force_with(r, rx, &[0.0; 3], slide, Sliding::Position, true);
         out.d_rdot = [[0.0; 3]; 3];
         out
     }
@@ -196,14 +219,16 @@ impl SeabedContact {
     /// (W42)-(W46) with the normal damping on `rdot` and the friction on
     /// `slide` regularized below `slip` (a velocity in dynamics, a
     /// displacement in statics); the friction's derivative in `slide`
-    /// goes into d_r if `slide_is_position`, else into d_rdot.
+    /// goes into d_r or d_rdot as `sliding` says; the derivatives only
+    /// when `derivatives`.
     fn force_with(
         &self,
         r: &[f64; 3],
         rx: &[f64; 3],
         rdot: &[f64; 3],
         (slide, slip): (&[f64; 3], f64),
-        slide_is_position: bool,
+        sliding: Sliding,
+        derivatives: bool,
     ) -> ForceAtPoint {
         let bed = &self.seabed;
         let n = bed.normal;
@@ -215,31 +240,32 @@ impl SeabedContact {
         }
         let vn = dot(&n, rdot);
         let normal = d * (bed.stiffness * p - bed.damping * s * vn);
-        let nn = outer(&n, &n);
         out.force = n.map(|c| normal * c);
-        add_scaled(
-            &mut out.d_r,
-            -d * (bed.stiffness * s - bed.damping * ds * vn),
-            &nn,
-        );
-        add_scaled(&mut out.d_rdot, -d * bed.damping * s, &nn);
+        if derivatives {
+            let nn = outer(&n, &n);
+            let stiffness = -d * (bed.stiffness * s - bed.damping * ds * vn);
+            add_scaled(&mut out.d_r, stiffness, &nn);
+            add_scaled(&mut out.d_rdot, -d * bed.damping * s, &nn);
+        }
         if bed.has_friction() {
             let normal = (d * bed.stiffness * p, d * bed.stiffness * s);
-            self.add_friction(normal, rx, (slide, slip), slide_is_position, &mut out);
+            let slide = (slide, slip);
+            self.add_friction(normal, rx, slide, derivatives.then_some(sliding), &mut out);
         }
         out
     }
 
     /// Adds the friction (W43)-(W44) on the sliding `rdot` (a velocity,
     /// or in statics a displacement, regularized below `vs`) with elastic
-    /// normal force `ne` (and its derivative along -n, `dne`) and its
-    /// derivatives (W45)-(W46), the sliding's into d_r if `into_r`.
+    /// normal force `ne` (and its derivative along -n, `dne`) and, given
+    /// what the sliding is (`derivatives`), its derivatives (W45)-(W46),
+    /// the sliding's into d_r or d_rdot.
     fn add_friction(
         &self,
         (ne, dne): (f64, f64),
         rx: &[f64; 3],
         (rdot, vs): (&[f64; 3], f64),
-        into_r: bool,
+        derivatives: Option<Sliding>,
         out: &mut ForceAtPoint,
     ) {
         let bed = &self.seabed;
@@ -253,6 +279,17 @@ impl SeabedContact {
         }
         let a = pt.map(|c| c / len);
         let b = cross(&n, &a);
+        let Some(sliding) = derivatives else {
+            for (e, mu) in [(a, bed.friction_axial), (b, bed.friction_transverse)] {
+                if mu != 0.0 {
+                    let (phi, _) = regularized_sign(dot(&e, rdot), vs);
+                    for i in 0..3 {
+                        out.force[i] -= ne * mu * phi * e[i];
+                    }
+                }
+            }
+            return;
+        };
         // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da.
         let pn: [[f64; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|j| f64::from(u8::from(i == j)) - n[i] * n[j])
@@ -276,12 +313,11 @@ impl SeabedContact {
                 u[i] += mu * phi * e[i];
                 out.force[i] -= ne * mu * phi * e[i];
             }
-            let sliding = if into_r {
-                &mut out.d_r
-            } else {
-                &mut out.d_rdot
+            let by_sliding = match sliding {
+                Sliding::Position => &mut out.d_r,
+                Sliding::Velocity => &mut out.d_rdot,
             };
-            add_scaled(sliding, -ne * mu * dphi, &outer(&e, &e));
+            add_scaled(by_sliding, -ne * mu * dphi, &outer(&e, &e));
             // d(phi e)/dr_x = phi' e (r_dot^T De) + phi De.
             let rdot_de: [f64; 3] =
                 std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
