@@ -85,7 +85,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}",
+                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}{}",
                 t.name,
                 Sig(l.length),
                 l.elements,
@@ -95,7 +95,12 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
                 clamp_words(l.clamps[0]),
                 end_name(sc, l.ends[1]),
                 clamp_words(l.clamps[1]),
-                damping_note(sc, i)
+                damping_note(sc, i),
+                if t.compression {
+                    ""
+                } else {
+                    "; no compression (docs/method.md §2.2)"
+                }
             ),
         );
     }

@@ -602,3 +602,91 @@ fn a_rope_type_without_compression_pushes_nothing_to_its_anchor() {
     assert!(slack < 1e-2, "{slack}");
     assert!(stiff > 1.0, "{stiff}");
 }
+
+/// A MoorDyn deck's lines carry no compression, as MoorDyn's segments
+/// (Line.cpp: T = 0 where l_str <= l; docs/method.md §2.2, (M4a)). A
+/// neutrally buoyant rope (0.08 kg/m displacing 0.0805 kg/m) held its
+/// length apart 1 m under the surface hangs at a static pull of 0.27 N
+/// (its static solve keeps the compressive stiffness: without it a rope
+/// at zero tension has none); its fairlead then pushed 1 cm towards the
+/// anchor slackens it, and the anchor feels the slack rope's inertia
+/// alone (measured 0.31 N at most), where a rope carrying compression
+/// pushes it with up to EA eps = 200 N (measured 56 N before deck lines
+/// shed compression). The claim: below 1 N.
+#[test]
+fn a_moordyn_decks_line_pushed_together_pushes_nothing_to_its_anchor() {
+    let d = scratch("systems-deck-compression");
+    let deck = "--- MoorDyn v2 input file ---\nA rope pushed together\n\
+        --- LINE TYPES ---\n\
+        TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+        (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
+        rope 0.01 0.08 2.0e4 0 0 0 0 0 0\n\
+        --- POINTS ---\n\
+        ID Attachment X Y Z Mass Volume CdA Ca\n\
+        (#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+        1 Fixed 0.0 0.0 -1.0 0 0 0 0\n\
+        2 Coupled 1.0 0.0 -1.0 0 0 0 0\n\
+        --- LINES ---\n\
+        ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
+        (#) (name) (#) (#) (m) (-) (-)\n\
+        1 rope 1 2 1.0 4 -\n\
+        --- OPTIONS ---\n\
+        1.0e-4 dtM\n9.81 g\n50 WtrDpth\n\
+        --- OUTPUTS ---\nEND\n--- need this line ---\n";
+    std::fs::write(d.join("deck.txt"), deck).unwrap();
+    let path = write_scenario(
+        &d,
+        "pushed.toml",
+        "title = \"pushed rope deck\"\n[system]\nmoordyn = \"deck.txt\"\n\
+         [[motions]]\npoint = 2\namplitude = [-0.01, 0.0, 0.0]\nperiod = 0.4\n\
+         [analysis]\ntype = \"dynamic\"\ntime_step = 1.0e-4\nduration = 0.05\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let anchor: Vec<f64> = read_tensions(&out.join("tensions.csv"))
+        .iter()
+        .filter(|row| row[2] == 0.0)
+        .map(|row| row[6])
+        .collect();
+    let largest = anchor.iter().copied().fold(0.0, f64::max);
+    eprintln!("static pull {} N, largest anchor force {largest} N", anchor[0]);
+    assert!(anchor[0] > 0.1 && anchor[0] < 0.5, "{}", anchor[0]);
+    assert!(largest < 1.0, "{largest}");
+}
+
+/// A line without compression is solved at rest with its compressive
+/// stiffness kept (docs/method.md §2.2, (M4a)); where its equilibrium is
+/// shortened the run says so, naming the line and the compression the
+/// motion will shed: a weightless rope of 1 m held straight 0.99 m apart
+/// is shortened by 0.01, EA eps = 200 N. The same rope carrying
+/// compression is not reported.
+#[test]
+fn a_line_without_compression_shortened_at_rest_is_reported() {
+    let d = scratch("systems-static-compression");
+    let stderr_of = |compression: &str| -> String {
+        let mut sc = one_rope(
+            "shortened rope",
+            compression,
+            ("fixed", [0.99, 0.0, 0.0]),
+            (1, 1.0, 4),
+            "",
+        );
+        sc.push_str("[system]\ngravity = [0.0, 0.0, 0.0]\n[analysis]\ntype = \"static\"\n");
+        let path = write_scenario(&d, "shortened.toml", &sc);
+        let out = d.join(format!("out-{}", compression.len()));
+        let o = run_to(&path, &out);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        text(&o).1
+    };
+    let slack = stderr_of("compression = false");
+    assert!(
+        slack.contains("warning: lines[0] (id 1)") && slack.contains("shortens it by up to 0.01")
+            && slack.contains("200 N"),
+        "{slack}"
+    );
+    let stiff = stderr_of("");
+    assert!(!stiff.contains("shortens"), "{stiff}");
+}
+
+

@@ -161,6 +161,23 @@ pub fn stress_samples(
     }
 }
 
+/// The largest axial compression -EA eps (N) at the points of the axial
+/// rule of any element (0 if the line is nowhere shortened): what a line
+/// without compression (docs/method.md §2.2, (M4a)) would shed from a
+/// state found with its compressive stiffness kept, as its static
+/// equilibrium is.
+pub fn largest_compression(model: &Model, state: &State) -> f64 {
+    let dpn = model.dofs_per_node();
+    crate::with_elements!(&model.mesh, els => els
+        .iter()
+        .enumerate()
+        .map(|(k, el)| {
+            let q = &state.e[coordinate(dpn, k, SLOT_R, 0)..];
+            -el.section.ea * el.least_axial_strain(q)
+        })
+        .fold(0.0, f64::max))
+}
+
 /// Points of the centre line: `per_element` evenly spaced points in every
 /// element (both ends; shared nodes once), as (material coordinate, r).
 pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64, [f64; 3])> {

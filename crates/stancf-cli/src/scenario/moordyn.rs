@@ -68,10 +68,9 @@ pub(super) fn deck_scenario(
             cdax: t.cd_ax,
             caax: t.ca_ax,
             // MoorDyn's segments carry no compression (Line.cpp: T = 0
-            // when l_str <= l); a deck's lines here do, because a line
-            // without compression at exactly zero tension leaves the
-            // static solve without an axial stiffness (docs/interface.md).
-            compression: true,
+            // when l_str <= l); the static solve keeps it (docs/method.md
+            // §2.2, (M4a)).
+            compression: false,
         })
         .collect();
     let points = deck

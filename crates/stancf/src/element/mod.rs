@@ -157,6 +157,15 @@ pub struct SpaceRules {
 }
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// The least axial strain (eq. 8) at the points of the axial rule,
+    /// where the axial energy is evaluated, for coordinates `q`.
+    pub fn least_axial_strain(&self, q: &[f64]) -> f64 {
+        self.axial_points
+            .iter()
+            .map(|p| axial_strain(self.measures.axial_strain, &p.shape.gradients(q).0))
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// Builds the element. The mass matrix and weight integrals are exact
     /// (NS Gauss points integrate the degree 2 NS - 2 products); the strain
     /// energy uses `rules`.

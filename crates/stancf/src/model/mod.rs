@@ -189,6 +189,17 @@ impl Model {
         self
     }
 
+    /// The model with every element carrying compression again (what the
+    /// static solve of a line without compression takes: docs/method.md
+    /// §2.2, (M4a)).
+    pub fn with_compression(mut self) -> Self {
+        match &mut self.mesh {
+            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.tension_only = false),
+            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.tension_only = false),
+        }
+        self
+    }
+
     /// Whether the line carries compression (see
     /// [`Self::without_compression`]).
     pub fn carries_compression(&self) -> bool {

@@ -30,7 +30,13 @@ pub(crate) struct CableStatics {
 impl CableStatics {
     /// The equations of `model` starting from the state `start_e` (the
     /// reference shape for a single cable, a seed for a system's line).
+    /// A line without compression is solved with its compressive
+    /// stiffness kept (docs/method.md §2.2, (M4a)): a line at exactly zero
+    /// tension has no axial stiffness without it, and where the line is
+    /// nowhere shortened the equilibrium is the same
+    /// ([`crate::observe::largest_compression`] says where it is not).
     pub fn new(model: Model, method: ConstraintMethod, start_e: Vec<f64>) -> Self {
+        let model = model.with_compression();
         let layout = SlabLayout::new(&model, Scheme::Static, method);
         let state = State {
             t: 0.0,

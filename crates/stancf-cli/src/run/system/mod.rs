@@ -162,6 +162,7 @@ pub(super) fn run_system(
             } else {
                 0.0
             };
+            warn_of_static_compression(&sc, st);
             let row = static_row(st, t);
             outcome.record_tensions(&row.ends);
             writers.write(&row).map_err(io_err(place.shown))?;
@@ -210,6 +211,37 @@ pub(super) fn run_system(
         return Ok(String::new());
     }
     Ok(report(&sc, &outcome, wall, place))
+}
+
+/// The axial strain below which a line without compression is reported
+/// shortened at its static equilibrium: well above what the static
+/// solve's tolerance leaves (its equilibrium carries compression there,
+/// which the motion sheds).
+const STATIC_SHORTENING: f64 = 1e-6;
+
+/// Warns of every line without compression that its static equilibrium
+/// shortens anywhere by more than [`STATIC_SHORTENING`]: the static solve
+/// keeps the compressive stiffness (docs/method.md §2.2, (M4a)), so the
+/// dynamics start out of balance there.
+fn warn_of_static_compression(sc: &SystemScenario, st: &SystemStatics) {
+    for (i, line) in st.system().lines().iter().enumerate() {
+        if line.model.carries_compression() {
+            continue;
+        }
+        let ea = sc.line_types[sc.lines[i].line_type].ea;
+        let force = stancf::observe::largest_compression(&line.model, st.line_state(i));
+        if force > STATIC_SHORTENING * ea {
+            eprintln!(
+                "warning: lines[{i}] (id {}): its static equilibrium shortens it by up to {} \
+                 (a compression of {} N, which the static solve keeps: docs/method.md §2.2); \
+                 the line carries no compression in motion, so a dynamic run starts out of \
+                 balance there",
+                sc.lines[i].id,
+                Sig(force / ea),
+                Sig(force)
+            );
+        }
+    }
 }
 
 /// Follows the static path to the equilibrium; a failure or a cancel is
