@@ -73,6 +73,32 @@ fn an_unknown_or_repeated_output_file_is_refused_naming_the_key() {
     );
 }
 
+/// channels.csv holds a MoorDyn deck's OUTPUTS channels: naming it where
+/// nothing fills it (a system without a deck, a deck without channels)
+/// is refused naming the key and why.
+#[test]
+fn channels_csv_where_no_deck_gives_channels_is_refused() {
+    expect_input_error(
+        "output-files-channels-no-deck",
+        &rope("files = [\"points.csv\", \"channels.csv\"]"),
+        &["output.files", "\"channels.csv\" would stay empty", "no deck"],
+    );
+    let deck_scenario = "title = \"rope deck\"\n[system]\nmoordyn = \"deck.txt\"\n\
+        [analysis]\ntype = \"static\"\n[output]\nfiles = [\"channels.csv\"]\n";
+    expect_input_error_beside(
+        "output-files-channels-no-outputs",
+        deck_scenario,
+        &[("deck.txt", &rope_deck(""))],
+        &["output.files", "the deck lists no OUTPUTS channels"],
+    );
+    let d = scratch("output-files-channels-deck");
+    std::fs::write(d.join("deck.txt"), rope_deck("FairTen1\n")).unwrap();
+    let sc = write_scenario(&d, "deck.toml", deck_scenario);
+    let o = run_quiet(&sc, &d.join("out"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert_eq!(names(&d.join("out")), ["channels.csv", "scenario.toml", "summary.json"]);
+}
+
 #[test]
 fn a_single_cable_refuses_output_files() {
     let mut sc = pendulum("pendulum", 1e-3, 1e-2, 1);

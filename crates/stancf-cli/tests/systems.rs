@@ -616,24 +616,7 @@ fn a_rope_type_without_compression_pushes_nothing_to_its_anchor() {
 #[test]
 fn a_moordyn_decks_line_pushed_together_pushes_nothing_to_its_anchor() {
     let d = scratch("systems-deck-compression");
-    let deck = "--- MoorDyn v2 input file ---\nA rope pushed together\n\
-        --- LINE TYPES ---\n\
-        TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
-        (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
-        rope 0.01 0.08 2.0e4 0 0 0 0 0 0\n\
-        --- POINTS ---\n\
-        ID Attachment X Y Z Mass Volume CdA Ca\n\
-        (#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
-        1 Fixed 0.0 0.0 -1.0 0 0 0 0\n\
-        2 Coupled 1.0 0.0 -1.0 0 0 0 0\n\
-        --- LINES ---\n\
-        ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
-        (#) (name) (#) (#) (m) (-) (-)\n\
-        1 rope 1 2 1.0 4 -\n\
-        --- OPTIONS ---\n\
-        1.0e-4 dtM\n9.81 g\n50 WtrDpth\n\
-        --- OUTPUTS ---\nEND\n--- need this line ---\n";
-    std::fs::write(d.join("deck.txt"), deck).unwrap();
+    std::fs::write(d.join("deck.txt"), rope_deck("")).unwrap();
     let path = write_scenario(
         &d,
         "pushed.toml",

@@ -124,6 +124,29 @@ pub(super) fn output_files(
     })
 }
 
+/// `output.files` naming channels.csv where nothing would fill it: the
+/// file holds a MoorDyn deck's OUTPUTS channels, and a scenario without a
+/// deck (`deck` false) or a deck without channels has none.
+pub(super) fn channels_to_write(
+    ctx: &Ctx,
+    files: &OutputFiles,
+    deck: bool,
+    channels: usize,
+) -> Result<(), ScenarioError> {
+    if files.chosen.is_none() || !files.writes("channels.csv") || channels > 0 {
+        return Ok(());
+    }
+    let why = if deck {
+        "the deck lists no OUTPUTS channels"
+    } else {
+        "it holds a MoorDyn deck's OUTPUTS channels, and this system has no deck (system.moordyn)"
+    };
+    Err(ctx.err(
+        "output.files",
+        format!("\"channels.csv\" would stay empty: {why}"),
+    ))
+}
+
 /// A single cable writes all its files, and its reactions as step means:
 /// `output.files` and `output.end_forces` are refused there.
 pub(super) fn no_output_files(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<(), ScenarioError> {

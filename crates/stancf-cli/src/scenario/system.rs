@@ -201,6 +201,7 @@ pub(super) fn system_scenario(
         sc.notes.extend(static_waves_note(&sc));
         sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
         sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+        super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
         sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
         return Ok(sc);
     }
@@ -231,6 +232,7 @@ pub(super) fn system_scenario(
     }
     let output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     let output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+    super::output::channels_to_write(ctx, &output_files, false, 0)?;
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let mut sc = SystemScenario {
         title,

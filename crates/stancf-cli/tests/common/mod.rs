@@ -84,6 +84,34 @@ pub fn rope_type(extra_keys: &str) -> String {
     )
 }
 
+/// A MoorDyn deck of one rope (10 mm, 0.08 kg/m, EA 2e4 N, EI 0, no
+/// damping or hydrodynamic coefficients) of 1 m in 4 segments, from
+/// fixed point 1 at (0, 0, -1) to coupled point 2 at (1, 0, -1), in
+/// water 50 m deep, dtM 1e-4; `outputs` (channel names, one per line, or
+/// "") in its OUTPUTS. Displacing 0.0805 kg/m, the rope is neutrally
+/// buoyant to 0.6 %.
+pub fn rope_deck(outputs: &str) -> String {
+    format!(
+        "--- MoorDyn v2 input file ---\nA rope 1 m under the surface\n\
+         --- LINE TYPES ---\n\
+         TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+         (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
+         rope 0.01 0.08 2.0e4 0 0 0 0 0 0\n\
+         --- POINTS ---\n\
+         ID Attachment X Y Z Mass Volume CdA Ca\n\
+         (#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+         1 Fixed 0.0 0.0 -1.0 0 0 0 0\n\
+         2 Coupled 1.0 0.0 -1.0 0 0 0 0\n\
+         --- LINES ---\n\
+         ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
+         (#) (name) (#) (#) (m) (-) (-)\n\
+         1 rope 1 2 1.0 4 -\n\
+         --- OPTIONS ---\n\
+         1.0e-4 dtM\n9.81 g\n50 WtrDpth\n\
+         --- OUTPUTS ---\n{outputs}END\n--- need this line ---\n"
+    )
+}
+
 /// A `[[points]]` entry: `id`, `kind` ("fixed", "coupled", "free") and
 /// `position`.
 pub fn toml_point(id: u32, kind: &str, position: [f64; 3]) -> String {
