@@ -672,4 +672,52 @@ fn a_line_without_compression_shortened_at_rest_is_reported() {
     assert!(!stiff.contains("shortens"), "{stiff}");
 }
 
-
+/// The steep-wave cable at half the shipped elements (7, 5 and 12 of
+/// 10 m): the seed's catenaries, interpolated by elements that coarse,
+/// are shortened and stretched between their nodes by up to 2.6e-4,
+/// 1.1e5 N at EA = 5e8 N, five times the fairlead's pull. Taken off as
+/// dead loads (M32) they buckled the buoyant section on the path, which
+/// turned back at t = 0.73 (no equilibrium was reached); taken off as the
+/// elements' initial axial forces (M32b) the path runs through in 21
+/// increments. The equilibrium is the shipped deck's within the
+/// elements' error: measured 0.54 N (2.3e-5) at the fairlead and 1 mm at
+/// the free points. The claims: 1e-4 and 1 cm.
+#[test]
+fn a_coarse_steep_wave_reaches_the_fine_decks_equilibrium() {
+    let d = scratch("systems-coarse-steep-wave");
+    let fine = std::fs::read_to_string(repo_file("examples/steep-wave-moordyn.txt")).unwrap();
+    let coarse = fine
+        .replace("70.0      14 ", "70.0      7 ")
+        .replace("50.0      10 ", "50.0      5 ")
+        .replace("120.0     24 ", "120.0     12 ");
+    assert_ne!(coarse, fine);
+    let solve = |name: &str, deck: &str| -> Vec<Vec<f64>> {
+        std::fs::write(d.join(format!("{name}.txt")), deck).unwrap();
+        let sc = write_scenario(
+            &d,
+            &format!("{name}.toml"),
+            &format!(
+                "title = \"{name}\"\n[system]\nmoordyn = \"{name}.txt\"\n\
+                 [analysis]\ntype = \"static\"\n"
+            ),
+        );
+        let out = d.join(format!("out-{name}"));
+        let o = run_to(&sc, &out);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
+        read_csv(&out.join("points.csv")).1
+    };
+    let (f, c) = (solve("fine", &fine), solve("coarse", &coarse));
+    let pull = |p: &[Vec<f64>]| {
+        let r = p.iter().find(|r| r[1] == 1.0).expect("point 1");
+        (r[8] * r[8] + r[9] * r[9] + r[10] * r[10]).sqrt()
+    };
+    let (tf, tc) = (pull(&f), pull(&c));
+    eprintln!("fairlead pull: fine {tf} N, coarse {tc} N");
+    assert!((tc - tf).abs() <= 1e-4 * tf, "{tc} against {tf}");
+    for p in [2.0, 3.0] {
+        let at = |rows: &[Vec<f64>]| rows.iter().find(|r| r[1] == p).expect("point").clone();
+        let (a, b) = (at(&f), at(&c));
+        let dist = ((2..5).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>()).sqrt();
+        assert!(dist <= 0.01, "point {p}: {a:?} against {b:?}");
+    }
+}

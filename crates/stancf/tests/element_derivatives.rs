@@ -407,3 +407,73 @@ fn gradient_only_densities_equal_the_full_ones() {
         assert_eq!(bending_energy_gradient(c, 0.9, &rx, &rxx), (e, g));
     }
 }
+
+/// The initial axial forces of a system's static path (docs/method.md
+/// §11.6, (M32b)): the gradient they add is that of their potential
+/// V = sum w l N eps (constant forces N at the points of the axial rule),
+/// and the Hessian that gradient's derivative; both against central
+/// differences of the level below, for SAC-2 and SAC-3, both strain
+/// measures and two axial rules. The defects vanish where the strain is
+/// the same all along the element (a straight uniform stretch: the
+/// interpolation of a constant is exact).
+#[test]
+fn initial_axial_forces_match_finite_differences() {
+    fn check<const NS: usize, const ND: usize>(
+        el: &CableElement<NS, ND>,
+        q: &[f64; ND],
+        label: &str,
+    ) {
+        let forces: Vec<f64> = (0..el.axial_rule_points())
+            .map(|k| 1.0 + 0.7 * k as f64)
+            .collect();
+        let gradient = |q: &[f64; ND]| {
+            let mut g = [0.0; ND];
+            el.add_axial_forces(q, &forces, &mut g, None);
+            g
+        };
+        let mut grad = [0.0; ND];
+        let mut hess = [[0.0; ND]; ND];
+        el.add_axial_forces(q, &forces, &mut grad, Some(&mut hess));
+        assert_eq!(grad, gradient(q), "{label}: the gradient without the Hessian");
+        let mut g_fd = [0.0; ND];
+        let mut h_fd = vec![0.0; ND * ND];
+        for j in 0..ND {
+            let (mut p, mut m) = (*q, *q);
+            p[j] += H;
+            m[j] -= H;
+            g_fd[j] = (el.axial_force_potential(&p, &forces)
+                - el.axial_force_potential(&m, &forces))
+                / (2.0 * H);
+            let (gp, gm) = (gradient(&p), gradient(&m));
+            for i in 0..ND {
+                h_fd[ND * i + j] = (gp[i] - gm[i]) / (2.0 * H);
+            }
+        }
+        let e = rel_diff(&grad, &g_fd);
+        assert!(e < TOL, "{label}: gradient rel. error {e:e}");
+        let hv: Vec<f64> = hess.iter().flatten().copied().collect();
+        let e = rel_diff(&hv, &h_fd);
+        assert!(e < TOL, "{label}: Hessian rel. error {e:e}");
+    }
+    let mut rng = Rng(0x0a1b_2c3d_4e5f_6071);
+    for m in ALL_MEASURES {
+        for (na, nb) in [(3, 3), (5, 4)] {
+            let r = rules(na, nb);
+            let (el2, el3) = (sac2(0.45, m, &r), sac3(0.3, m, &r));
+            for _ in 0..2 {
+                let y2 = random_slab_state::<4, 12>(&mut rng, 0.45, 0.2);
+                check(&el2, &y2[0], &format!("SAC-2 {m:?} {na}/{nb}"));
+                let y3 = random_slab_state::<6, 18>(&mut rng, 0.3, 0.2);
+                check(&el3, &y3[0], &format!("SAC-3 {m:?} {na}/{nb}"));
+            }
+            // A straight element stretched by 1 % all along: no defect.
+            let stretched2: [f64; 12] = std::array::from_fn(|k| match k {
+                3 | 9 => 1.01,
+                6 => 0.45 * 1.01,
+                _ => 0.0,
+            });
+            let d = el2.axial_strain_defects(&stretched2);
+            assert!(d.iter().all(|v| v.abs() < 1e-15), "SAC-2 {m:?}: {d:?}");
+        }
+    }
+}

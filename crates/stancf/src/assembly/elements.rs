@@ -229,11 +229,18 @@ impl StepProblem<'_> {
         let gravity = self.model.gravity.map(|c| c * self.start.load_factor);
         let mut grad = [0.0; ND];
         let mut hess = [[0.0; ND]; ND];
+        let mut initial = self.start.initial_axial_force.as_slice();
         for (k, el) in elements.iter().enumerate() {
             let o = coordinate(dpn, k, SLOT_R, 0);
             let q: [f64; ND] = gather(&scratch.node_e, o);
             let want = jacobian.is_some();
             el.strain_energy_derivatives(&q, &mut grad, if want { Some(&mut hess) } else { None });
+            // The initial axial forces of a system's static path (M32b).
+            if !initial.is_empty() {
+                let (force, rest) = initial.split_at(el.axial_rule_points());
+                el.add_axial_forces(&q, force, &mut grad, want.then_some(&mut hess));
+                initial = rest;
+            }
             // A cable at rest in a moving fluid: drag f(0, r_x) is a load.
             for drag in &self.model.drag {
                 el.add_static_drag(

@@ -24,6 +24,10 @@ pub struct StepStart {
     pub fixed_v: Vec<f64>,
     /// Factor on every load (load stepping in statics; 1 in dynamics).
     pub load_factor: f64,
+    /// Statics only: initial axial forces (N) at the points of every
+    /// element's axial rule, element after element (empty: none), taken
+    /// off the elastic axial force (docs/method.md §11.6, (M32b)).
+    pub initial_axial_force: Vec<f64>,
 }
 
 impl StepStart {
@@ -37,6 +41,7 @@ impl StepStart {
             fixed_e: vec![0.0; time_nodes * n],
             fixed_v: vec![0.0; time_nodes * n],
             load_factor: 1.0,
+            initial_axial_force: Vec::new(),
         }
     }
 

@@ -119,6 +119,8 @@ pub struct Measures {
 /// quadrature weight times the element length (int dx = sum w l).
 #[derive(Clone, Copy, Debug)]
 struct SpacePoint<const NS: usize> {
+    /// Where the point is along the element, 0 to 1.
+    xi: f64,
     wl: f64,
     shape: SpatialShape<NS>,
 }
@@ -166,6 +168,75 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             .fold(f64::INFINITY, f64::min)
     }
 
+    /// The points of the axial rule.
+    pub fn axial_rule_points(&self) -> usize {
+        self.axial_points.len()
+    }
+
+    /// The interpolation defect of the axial strain (eq. 8) at the points
+    /// of the axial rule, for coordinates `q`: the strain there minus the
+    /// strains at the element's two ends (its nodes' r_x) interpolated
+    /// linearly between them (docs/method.md §11.6, (M32b)).
+    pub fn axial_strain_defects(&self, q: &[f64]) -> Vec<f64> {
+        let measure = self.measures.axial_strain;
+        let end = |o: usize| axial_strain(measure, &[q[o], q[o + 1], q[o + 2]]);
+        let (a, b) = (end(3), end(ND / 2 + 3));
+        self.axial_points
+            .iter()
+            .map(|p| {
+                axial_strain(measure, &p.shape.gradients(q).0) - ((1.0 - p.xi) * a + p.xi * b)
+            })
+            .collect()
+    }
+
+    /// The potential of constant axial forces `force` (N, one per point
+    /// of the axial rule), V = sum w l N eps, at coordinates `q`: what
+    /// [`Self::add_axial_forces`] differentiates.
+    pub fn axial_force_potential(&self, q: &[f64], force: &[f64]) -> f64 {
+        let measure = self.measures.axial_strain;
+        self.axial_points
+            .iter()
+            .zip(force)
+            .map(|(p, &n)| p.wl * n * axial_strain(measure, &p.shape.gradients(q).0))
+            .sum()
+    }
+
+    /// Adds the virtual work of the axial forces `force` (N, one per
+    /// point of the axial rule) at coordinates `q` to the gradient,
+    /// sum w l N d eps/dq, and (if asked) its derivative, sum w l N
+    /// d2 eps/dq2, to the Hessian: an initial axial force along the line.
+    pub fn add_axial_forces(
+        &self,
+        q: &[f64; ND],
+        force: &[f64],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) {
+        let mut hess = hess;
+        for (p, &n) in self.axial_points.iter().zip(force) {
+            let (rx, _) = p.shape.gradients(q);
+            let (d, h) = axial_strain_derivatives(self.measures.axial_strain, &rx);
+            let a = &p.shape.n_x;
+            for k in 0..NS {
+                for i in 0..3 {
+                    grad[3 * k + i] += p.wl * n * a[k] * d[i];
+                }
+            }
+            if let Some(hm) = hess.as_deref_mut() {
+                for k in 0..NS {
+                    for l in 0..NS {
+                        let c = p.wl * n * a[k] * a[l];
+                        for i in 0..3 {
+                            for j in 0..3 {
+                                hm[3 * k + i][3 * l + j] += c * h[i][j];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Builds the element. The mass matrix and weight integrals are exact
     /// (NS Gauss points integrate the degree 2 NS - 2 products); the strain
     /// energy uses `rules`.
@@ -180,6 +251,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let at = |rule: &GaussRule| -> Vec<SpacePoint<NS>> {
             rule.iter()
                 .map(|(xi, w)| SpacePoint {
+                    xi,
                     wl: w * length,
                     shape: shape(xi, length),
                 })

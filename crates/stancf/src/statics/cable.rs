@@ -25,6 +25,9 @@ pub(crate) struct CableStatics {
     pub reactions: Vec<(usize, [f64; 3])>,
     /// Moment each direction hold exerts on the cable (M42).
     pub clamp_moments: Vec<(usize, [f64; 3])>,
+    /// The initial axial forces of a system's static path at its start
+    /// (M32b; empty: none).
+    initial_axial_force: Vec<f64>,
 }
 
 impl CableStatics {
@@ -65,7 +68,41 @@ impl CableStatics {
                 .iter()
                 .map(|h| (h.node, [0.0; 3]))
                 .collect(),
+            initial_axial_force: Vec::new(),
             model,
+        }
+    }
+
+    /// Takes the axial strain defects of the current state (the seed's)
+    /// as the path's initial axial forces, -EA times the defect at every
+    /// point of every element's axial rule (docs/method.md §11.6, (M32b)),
+    /// whole until [`Self::scale_initial_axial_forces`] says otherwise.
+    pub fn take_strain_defects(&mut self) {
+        let dpn = self.model.dofs_per_node();
+        let e = &self.state.e;
+        let forces: Vec<f64> = crate::with_elements!(&self.model.mesh, els => els
+            .iter()
+            .enumerate()
+            .flat_map(|(k, el)| {
+                let ea = el.section.ea;
+                el.axial_strain_defects(&e[coordinate(dpn, k, SLOT_R, 0)..])
+                    .into_iter()
+                    .map(move |d| -ea * d)
+            })
+            .collect());
+        self.initial_axial_force = forces.clone();
+        self.start.initial_axial_force = forces;
+    }
+
+    /// The initial axial forces times `factor` (1 - t on the path).
+    pub fn scale_initial_axial_forces(&mut self, factor: f64) {
+        for (f, f0) in self
+            .start
+            .initial_axial_force
+            .iter_mut()
+            .zip(&self.initial_axial_force)
+        {
+            *f = factor * f0;
         }
     }
 

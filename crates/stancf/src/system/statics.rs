@@ -19,6 +19,14 @@
 //! the start, and the increments take the seed's residual away. Unlike
 //! ramping the loads from zero, no increment meets a slack line without
 //! load (whose shape nothing determines).
+//!
+//! The part of the seed's residual that its elements' interpolation
+//! makes, the axial strain between the nodes off the catenary's (large
+//! where EA is far above the tension and the elements are coarse), is
+//! taken away as an initial axial force of the elements, -(1 - t) EA
+//! times the defect at every point of the axial rule (M32b): it turns
+//! with the line, where as a dead load it buckled a buoyant section on
+//! the path (docs/method.md §11.6).
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
@@ -92,7 +100,11 @@ impl SystemStatics {
             .lines()
             .iter()
             .zip(seeds)
-            .map(|(line, seed)| CableStatics::new(line.model.clone(), method, seed.e))
+            .map(|(line, seed)| {
+                let mut line = CableStatics::new(line.model.clone(), method, seed.e);
+                line.take_strain_defects();
+                line
+            })
             .collect();
         let models: Vec<_> = lines.iter().map(|l| &l.model).collect();
         let layout = SystemLayout::new(&system, &models, crate::assembly::Scheme::Static, method);
@@ -337,6 +349,9 @@ impl StaticEquations for SystemEquations {
 
     fn set_load_factor(&mut self, t: f64) {
         self.homotopy = 1.0 - t;
+        for line in &mut self.lines {
+            line.scale_initial_axial_forces(1.0 - t);
+        }
     }
 
     fn legs(&self) -> usize {
