@@ -6,6 +6,8 @@
 # an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
 # to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
 # coupling_check.py instead (why MoorDyn is driven at its own step);
+# `--added-mass-check` runs added_mass_check.py (why the steep wave is
+# raced without added mass);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -17,6 +19,9 @@ if [ ! -x "$venv/bin/python" ]; then
   "$venv/bin/pip" install --quiet "moordyn>=2.7" numpy matplotlib scipy
 fi
 cd "$here"
+if [ "${1:-}" = "--added-mass-check" ]; then
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" added_mass_check.py
+fi
 if [ "${1:-}" = "--coupling-check" ]; then
   "$venv/bin/python" -c "import scipy" 2>/dev/null || "$venv/bin/pip" install --quiet scipy
   exec "$venv/bin/python" coupling_check.py

@@ -413,9 +413,9 @@ fn gradient_only_densities_equal_the_full_ones() {
 /// V = sum w l N eps (constant forces N at the points of the axial rule),
 /// and the Hessian that gradient's derivative; both against central
 /// differences of the level below, for SAC-2 and SAC-3, both strain
-/// measures and two axial rules. The defects vanish where the strain is
-/// the same all along the element (a straight uniform stretch: the
-/// interpolation of a constant is exact).
+/// measures and two axial rules. The defects vanish where the strain
+/// varies linearly along a straight element (its interpolation is then
+/// exact).
 #[test]
 fn initial_axial_forces_match_finite_differences() {
     fn check<const NS: usize, const ND: usize>(
@@ -466,14 +466,34 @@ fn initial_axial_forces_match_finite_differences() {
                 let y3 = random_slab_state::<6, 18>(&mut rng, 0.3, 0.2);
                 check(&el3, &y3[0], &format!("SAC-3 {m:?} {na}/{nb}"));
             }
-            // A straight element stretched by 1 % all along: no defect.
-            let stretched2: [f64; 12] = std::array::from_fn(|k| match k {
-                3 | 9 => 1.01,
-                6 => 0.45 * 1.01,
-                _ => 0.0,
-            });
-            let d = el2.axial_strain_defects(&stretched2);
-            assert!(d.iter().all(|v| v.abs() < 1e-15), "SAC-2 {m:?}: {d:?}");
+            if m.axial_strain == AxialStrain::Engineering {
+                // A straight element whose stretch grows linearly from
+                // 1 % at end A to 3 % at end B: r_x = 1 + a + b x / l is
+                // linear, r quadratic, which both elements' shapes hold
+                // exactly, and the engineering strain a + b x / l is the
+                // linear interpolation of the ends'. No defect; swapped
+                // ends or a reversed weighting would leave b (1 - 2 xi).
+                let (a, b) = (0.01, 0.02);
+                let l2 = 0.45;
+                let q2: [f64; 12] = std::array::from_fn(|k| match k {
+                    3 => 1.0 + a,
+                    6 => l2 * (1.0 + a + 0.5 * b),
+                    9 => 1.0 + a + b,
+                    _ => 0.0,
+                });
+                let d = el2.axial_strain_defects(&q2);
+                assert!(d.iter().all(|v| v.abs() < 1e-14), "SAC-2: {d:?}");
+                let l3 = 0.3;
+                let q3: [f64; 18] = std::array::from_fn(|k| match k {
+                    3 => 1.0 + a,
+                    6 | 15 => b / l3,
+                    9 => l3 * (1.0 + a + 0.5 * b),
+                    12 => 1.0 + a + b,
+                    _ => 0.0,
+                });
+                let d = el3.axial_strain_defects(&q3);
+                assert!(d.iter().all(|v| v.abs() < 1e-14), "SAC-3: {d:?}");
+            }
         }
     }
 }

@@ -33,13 +33,7 @@ pub(crate) struct CableStatics {
 impl CableStatics {
     /// The equations of `model` starting from the state `start_e` (the
     /// reference shape for a single cable, a seed for a system's line).
-    /// A line without compression is solved with its compressive
-    /// stiffness kept (docs/method.md §2.2, (M4a)): a line at exactly zero
-    /// tension has no axial stiffness without it, and where the line is
-    /// nowhere shortened the equilibrium is the same
-    /// ([`crate::observe::largest_compression`] says where it is not).
     pub fn new(model: Model, method: ConstraintMethod, start_e: Vec<f64>) -> Self {
-        let model = model.with_compression();
         let layout = SlabLayout::new(&model, Scheme::Static, method);
         let state = State {
             t: 0.0,
@@ -95,14 +89,12 @@ impl CableStatics {
     }
 
     /// The initial axial forces times `factor` (1 - t on the path).
+    /// At factor 0 (the path's end) there are none left to evaluate.
     pub fn scale_initial_axial_forces(&mut self, factor: f64) {
-        for (f, f0) in self
-            .start
-            .initial_axial_force
-            .iter_mut()
-            .zip(&self.initial_axial_force)
-        {
-            *f = factor * f0;
+        let forces = &mut self.start.initial_axial_force;
+        forces.clear();
+        if factor != 0.0 {
+            forces.extend(self.initial_axial_force.iter().map(|f0| factor * f0));
         }
     }
 

@@ -101,7 +101,14 @@ impl SystemStatics {
             .iter()
             .zip(seeds)
             .map(|(line, seed)| {
-                let mut line = CableStatics::new(line.model.clone(), method, seed.e);
+                // A line without compression is solved with its
+                // compressive stiffness kept (docs/method.md §2.2, (M4a)):
+                // at exactly zero tension it has no axial stiffness
+                // without it, and where it is nowhere shortened the
+                // equilibrium is the same (`observe::largest_compression`
+                // says where it is not).
+                let model = line.model.clone().with_compression();
+                let mut line = CableStatics::new(model, method, seed.e);
                 line.take_strain_defects();
                 line
             })

@@ -132,7 +132,6 @@ pub struct SeabedContact {
     pub diameter: f64,
 }
 
-/// P(g), P'(g) = S(g) and P''(g) = S'(g) of (W40)-(W41).
 /// What friction resists: the velocity (dynamics) or the displacement
 /// from the seed (statics), where its derivative goes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -141,6 +140,7 @@ enum Sliding {
     Position,
 }
 
+/// P(g), P'(g) = S(g) and P''(g) = S'(g) of (W40)-(W41).
 fn smoothed_penetration(g: f64, delta: f64) -> (f64, f64, f64) {
     if g <= 0.0 {
         (0.0, 0.0, 0.0)
@@ -391,6 +391,26 @@ mod tests {
             };
             for which in 0..3 {
                 check(&c, [r, rx, v], which, h);
+            }
+        }
+    }
+
+    /// A residual's contact force (no derivatives) is the full one's to
+    /// the bit, with friction along and across the line, in and past the
+    /// ramp, sliding slower and faster than the slip velocity; its
+    /// derivatives are zero.
+    #[test]
+    fn the_force_without_derivatives_is_the_full_forces_to_the_bit() {
+        let c = bed();
+        let n = c.seabed.normal;
+        for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
+            for v in [[0.03, -0.02, -0.01], [2.0, 1.5, -0.3], [-1e-4, 3e-4, 0.0]] {
+                let r: [f64; 3] = std::array::from_fn(|i| c.seabed.point[i] - below * n[i]);
+                let rx = [0.8, 0.5, -0.1];
+                let full = c.force(&r, &rx, &v);
+                let lean = c.force_at(&r, &rx, &v, false);
+                assert_eq!(lean.force, full.force, "below {below}, v {v:?}");
+                assert_eq!((lean.d_r, lean.d_rx, lean.d_rdot), Default::default());
             }
         }
     }
