@@ -86,10 +86,21 @@ fn cable_values(sc: &Scenario) -> Vec<(String, f64)> {
         (key::DURATION.into(), sc.analysis.duration),
         ("material.diameter".into(), sc.diameter),
     ];
-    if let stancf::Grading::Geometric { ratio, .. } = sc.cable.grading {
-        if !sc.cable.grading.is_uniform() {
-            values.push((key::GRADING_RATIO.into(), ratio));
+    match &sc.cable.grading {
+        stancf::Grading::Geometric { ratio, .. } if !sc.cable.grading.is_uniform() => {
+            values.push((key::GRADING_RATIO.into(), *ratio));
         }
+        stancf::Grading::Sections(sections) => {
+            let element = |s: &stancf::MeshSection| s.length / s.elements as f64;
+            let shortest = sections
+                .iter()
+                .enumerate()
+                .min_by(|a, b| element(a.1).total_cmp(&element(b.1)));
+            if let Some((i, s)) = shortest {
+                values.push((format!("{}[{i}].length", key::SECTIONS), s.length));
+            }
+        }
+        _ => {}
     }
     values
 }
@@ -225,7 +236,7 @@ fn section(f: &Figures, sc: &Scenario, model: &Model) -> Result<Section, Failure
         if sc.cable.grading.is_uniform() {
             "the element length l = length / elements"
         } else {
-            "the shortest element length l of the graded mesh"
+            "the shortest element length l of the graded or sectioned mesh"
         },
         s.l,
         " m",
@@ -353,9 +364,13 @@ fn placement(f: &Figures, sc: &Scenario, s: &Section) -> Result<Placement, Failu
     )?;
     let rounding = f64::EPSILON * place.extent;
     if rounding / s.l > sc.analysis.tolerance {
+        let (grading, which) = match f.grading_key() {
+            Some(k) => (format!(", {k}"), "the shortest element's length"),
+            None => (String::new(), "an element length"),
+        };
         return Err(Failure::Input(format!(
-            "{}: cable.origin, analysis.tolerance, cable.length, cable.elements: the \
-             coordinates (up to {} m from 0) are rounded to {} m, {} of an element length, \
+            "{}: cable.origin, analysis.tolerance, cable.length, cable.elements{grading}: the \
+             coordinates (up to {} m from 0) are rounded to {} m, {} of {which}, \
              more than analysis.tolerance = {} (a fraction of an element length): Newton could \
              not converge; place the cable nearer to the origin of coordinates or loosen \
              analysis.tolerance",

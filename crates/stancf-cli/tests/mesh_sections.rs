@@ -100,6 +100,33 @@ fn a_cable_in_sections_takes_its_element_count_from_them() {
     );
 }
 
+/// A section too short for double precision is refused naming it (the
+/// section of the shortest elements), not only the cable's length and
+/// element count. A section of 1e-18 m at end A has elements of 1e-18 m,
+/// and the coordinates' rounding (1.3e-15 m at up to 6 m from 0) is 1332
+/// of them; at end B its element is rounded away to 0 m, below the
+/// 1e-150 m the solver may divide by.
+#[test]
+fn a_section_too_short_for_double_precision_is_refused_naming_it() {
+    let tiny = "{ length = 1e-18, elements = 1 }";
+    let rest = "{ length = 4.0, elements = 7 }";
+    for (sections, key, needle) in [
+        (format!("{tiny}, {rest}"), "sections[0].length", "of the shortest element's length"),
+        (format!("{rest}, {tiny}"), "sections[1].length", "= 0 m is below 1e-150"),
+    ] {
+        let scenario = IMPACT.replace(
+            "elements = 8\n",
+            &format!("grading = {{ sections = [{sections}] }}\n"),
+        );
+        assert_ne!(scenario, IMPACT, "the impact's [cable] has 8 elements");
+        expect_input_error(
+            &format!("sections-tiny-{key}"),
+            &scenario,
+            &[&format!("cable.grading.{key}"), needle],
+        );
+    }
+}
+
 /// The chain deck as shipped: `examples/oc4-deepcwind-moordyn.txt`
 /// (three lines of 835.35 m in 20 segments, BA = -1, a damping ratio).
 fn oc4_deck_as_shipped() -> String {

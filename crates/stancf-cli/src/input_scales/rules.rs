@@ -32,6 +32,16 @@ pub(super) struct Figures<'a> {
 }
 
 impl Figures<'_> {
+    /// The key of a graded or sectioned mesh among the values (the
+    /// grading's ratio, or the section of the shortest elements), which
+    /// the shortest element length is made of too.
+    pub(super) fn grading_key(&self) -> Option<&str> {
+        self.values
+            .iter()
+            .map(|(k, _)| k.as_str())
+            .find(|k| *k == key::GRADING_RATIO || k.starts_with(key::SECTIONS))
+    }
+
     fn value(&self, key: &str) -> f64 {
         self.values
             .iter()
@@ -67,12 +77,12 @@ impl Figures<'_> {
             return Ok(());
         };
         let mut keys = keys.to_vec();
-        if keys.iter().any(|k| k == key::ELEMENTS)
-            && self.values.iter().any(|(k, _)| k == key::GRADING_RATIO)
-        {
-            // On a graded mesh the element length l (the shortest) is
-            // made of the grading's ratio too.
-            keys.push(key::GRADING_RATIO.to_string());
+        if keys.iter().any(|k| k == key::ELEMENTS) {
+            // On a graded or sectioned mesh the element length l (the
+            // shortest) is made of the grading too.
+            if let Some(grading) = self.grading_key() {
+                keys.push(grading.to_string());
+            }
         }
         let keys = self.culprits_first(&keys);
         let shown: Vec<String> = keys
@@ -131,6 +141,9 @@ pub(super) mod key {
     pub(in crate::input_scales) const ELEMENTS: &str = "cable.elements";
     /// Among the values only for a graded mesh (docs/method.md §1.6).
     pub(in crate::input_scales) const GRADING_RATIO: &str = "cable.grading.ratio";
+    /// Of a sectioned mesh: `cable.grading.sections[i].length` of the
+    /// section with the shortest elements.
+    pub(in crate::input_scales) const SECTIONS: &str = "cable.grading.sections";
     pub(in crate::input_scales) const ORIGIN: &str = "cable.origin";
     pub(in crate::input_scales) const TIME_STEP: &str = "analysis.time_step";
     pub(in crate::input_scales) const DURATION: &str = "analysis.duration";
