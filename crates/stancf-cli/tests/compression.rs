@@ -73,7 +73,9 @@ fn a_moordyn_decks_line_pushed_together_pushes_nothing_to_its_anchor() {
     let out = d.join("out");
     let checked = stancf(&["check", path.to_str().unwrap()]);
     assert_eq!(checked.status.code(), Some(0), "{}", text(&checked).1);
-    assert!(text(&checked).0.contains("no compression (docs/method.md §2.2)"));
+    assert!(text(&checked)
+        .0
+        .contains("no compression (docs/method.md §2.2)"));
     let o = run_quiet(&path, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let anchor: Vec<f64> = read_tensions(&out.join("tensions.csv"))
@@ -82,7 +84,10 @@ fn a_moordyn_decks_line_pushed_together_pushes_nothing_to_its_anchor() {
         .map(|row| row[6])
         .collect();
     let largest = anchor.iter().copied().fold(0.0, f64::max);
-    eprintln!("static pull {} N, largest anchor force {largest} N", anchor[0]);
+    eprintln!(
+        "static pull {} N, largest anchor force {largest} N",
+        anchor[0]
+    );
     assert!(anchor[0] > 0.1 && anchor[0] < 0.5, "{}", anchor[0]);
     assert!(largest < 1.0, "{largest}");
 }
@@ -113,7 +118,8 @@ fn a_line_without_compression_shortened_at_rest_is_reported() {
     };
     let slack = stderr_of("compression = false");
     assert!(
-        slack.contains("warning: lines[0] (id 1)") && slack.contains("shortens it by up to 0.01")
+        slack.contains("warning: lines[0] (id 1)")
+            && slack.contains("shortens it by up to 0.01")
             && slack.contains("200 N"),
         "{slack}"
     );

@@ -111,8 +111,16 @@ fn a_section_too_short_for_double_precision_is_refused_naming_it() {
     let tiny = "{ length = 1e-18, elements = 1 }";
     let rest = "{ length = 4.0, elements = 7 }";
     for (sections, key, needle) in [
-        (format!("{tiny}, {rest}"), "sections[0].length", "of the shortest element's length"),
-        (format!("{rest}, {tiny}"), "sections[1].length", "= 0 m is below 1e-150"),
+        (
+            format!("{tiny}, {rest}"),
+            "sections[0].length",
+            "of the shortest element's length",
+        ),
+        (
+            format!("{rest}, {tiny}"),
+            "sections[1].length",
+            "= 0 m is below 1e-150",
+        ),
     ] {
         let scenario = IMPACT.replace(
             "elements = 8\n",

@@ -81,7 +81,11 @@ fn channels_csv_where_no_deck_gives_channels_is_refused() {
     expect_input_error(
         "output-files-channels-no-deck",
         &rope("files = [\"points.csv\", \"channels.csv\"]"),
-        &["output.files", "\"channels.csv\" would stay empty", "no deck"],
+        &[
+            "output.files",
+            "\"channels.csv\" would stay empty",
+            "no deck",
+        ],
     );
     let deck_scenario = "title = \"rope deck\"\n[system]\nmoordyn = \"deck.txt\"\n\
         [analysis]\ntype = \"static\"\n[output]\nfiles = [\"channels.csv\"]\n";
@@ -96,7 +100,10 @@ fn channels_csv_where_no_deck_gives_channels_is_refused() {
     let sc = write_scenario(&d, "deck.toml", deck_scenario);
     let o = run_quiet(&sc, &d.join("out"), &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    assert_eq!(names(&d.join("out")), ["channels.csv", "scenario.toml", "summary.json"]);
+    assert_eq!(
+        names(&d.join("out")),
+        ["channels.csv", "scenario.toml", "summary.json"]
+    );
 }
 
 #[test]

@@ -434,7 +434,11 @@ fn initial_axial_forces_match_finite_differences() {
         let mut grad = [0.0; ND];
         let mut hess = [[0.0; ND]; ND];
         el.add_axial_forces(q, &forces, &mut grad, Some(&mut hess));
-        assert_eq!(grad, gradient(q), "{label}: the gradient without the Hessian");
+        assert_eq!(
+            grad,
+            gradient(q),
+            "{label}: the gradient without the Hessian"
+        );
         let mut g_fd = [0.0; ND];
         let mut h_fd = vec![0.0; ND * ND];
         for j in 0..ND {

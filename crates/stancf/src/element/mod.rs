@@ -183,9 +183,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let (a, b) = (end(3), end(ND / 2 + 3));
         self.axial_points
             .iter()
-            .map(|p| {
-                axial_strain(measure, &p.shape.gradients(q).0) - ((1.0 - p.xi) * a + p.xi * b)
-            })
+            .map(|p| axial_strain(measure, &p.shape.gradients(q).0) - ((1.0 - p.xi) * a + p.xi * b))
             .collect()
     }
 

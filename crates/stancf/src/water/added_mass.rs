@@ -130,7 +130,17 @@ impl AddedMass {
         if !second {
             return out;
         }
-        let EntrainedTerms { s, s1, s2, k, g, u, bv, q, vux } = t;
+        let EntrainedTerms {
+            s,
+            s1,
+            s2,
+            k,
+            g,
+            u,
+            bv,
+            q,
+            vux,
+        } = t;
         let can = self.ca_normal;
         let (csk, csk1) = (c * s * k, c * s1 * k);
         out.rr[2][2] = 0.5 * c * s2 * q;
