@@ -8,6 +8,16 @@ mod common;
 
 use common::*;
 
+/// A rope of 1 m in 4 elements without gravity (type keys
+/// `compression`, "" or "compression = false") from the origin to point
+/// 2 (`kind` at x = `x`), with `rest` (motions, analysis) appended.
+fn weightless_rope(title: &str, compression: &str, (kind, x): (&str, f64), rest: &str) -> String {
+    let mut sc = one_rope(title, compression, (kind, [x, 0.0, 0.0]), (1, 1.0, 4), "");
+    sc.push_str("[system]\ngravity = [0.0, 0.0, 0.0]\n");
+    sc.push_str(rest);
+    sc
+}
+
 /// `compression = false` in a line type (docs/method.md §2.2, (M4a)): a
 /// rope whose coupled end is pushed towards its fixed one transmits no
 /// elastic force to the anchor, where the same rope carrying compression
@@ -20,16 +30,11 @@ use common::*;
 fn a_rope_type_without_compression_pushes_nothing_to_its_anchor() {
     let d = scratch("systems-compression");
     let largest_anchor_force = |compression: &str| -> f64 {
-        let mut sc = one_rope(
+        let sc = weightless_rope(
             "pushed rope",
             compression,
-            ("coupled", [1.0, 0.0, 0.0]),
-            (1, 1.0, 4),
-            "",
-        );
-        sc.push_str(
-            "[system]\ngravity = [0.0, 0.0, 0.0]\n\
-             [[motions]]\npoint = 2\namplitude = [-0.01, 0.0, 0.0]\nperiod = 0.4\n\
+            ("coupled", 1.0),
+            "[[motions]]\npoint = 2\namplitude = [-0.01, 0.0, 0.0]\nperiod = 0.4\n\
              [analysis]\ntype = \"dynamic\"\ntime_step = 1.0e-4\nduration = 0.05\n",
         );
         let path = write_scenario(&d, "pushed.toml", &sc);
@@ -102,14 +107,12 @@ fn a_moordyn_decks_line_pushed_together_pushes_nothing_to_its_anchor() {
 fn a_line_without_compression_shortened_at_rest_is_reported() {
     let d = scratch("systems-static-compression");
     let stderr_of = |compression: &str| -> String {
-        let mut sc = one_rope(
+        let sc = weightless_rope(
             "shortened rope",
             compression,
-            ("fixed", [0.99, 0.0, 0.0]),
-            (1, 1.0, 4),
-            "",
+            ("fixed", 0.99),
+            "[analysis]\ntype = \"static\"\n",
         );
-        sc.push_str("[system]\ngravity = [0.0, 0.0, 0.0]\n[analysis]\ntype = \"static\"\n");
         let path = write_scenario(&d, "shortened.toml", &sc);
         let out = d.join(format!("out-{}", compression.len()));
         let o = run_to(&path, &out);

@@ -279,31 +279,23 @@ impl SeabedContact {
         }
         let a = pt.map(|c| c / len);
         let b = cross(&n, &a);
-        let Some(sliding) = derivatives else {
-            for (e, mu) in [(a, bed.friction_axial), (b, bed.friction_transverse)] {
-                if mu != 0.0 {
-                    let (phi, _) = regularized_sign(dot(&e, rdot), vs);
-                    for i in 0..3 {
-                        out.force[i] -= ne * mu * phi * e[i];
-                    }
-                }
-            }
-            return;
-        };
-        // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da.
-        let pn: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| f64::from(u8::from(i == j)) - n[i] * n[j])
+        // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da: only for the
+        // derivatives.
+        let directions = derivatives.map(|sliding| {
+            let pn: [[f64; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| f64::from(u8::from(i == j)) - n[i] * n[j])
+            });
+            let ia: [[f64; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| (f64::from(u8::from(i == j)) - a[i] * a[j]) / len)
+            });
+            let da = mat3_mul(&ia, &pn);
+            let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
+            (sliding, da, mat3_mul(&nx, &da))
         });
-        let ia: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (f64::from(u8::from(i == j)) - a[i] * a[j]) / len)
-        });
-        let da = mat3_mul(&ia, &pn);
-        let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
-        let db = mat3_mul(&nx, &da);
         let mut u = [0.0; 3];
-        for (e, de, mu) in [
-            (a, da, bed.friction_axial),
-            (b, db, bed.friction_transverse),
+        for (e, mu, axial) in [
+            (a, bed.friction_axial, true),
+            (b, bed.friction_transverse, false),
         ] {
             if mu == 0.0 {
                 continue;
@@ -313,6 +305,10 @@ impl SeabedContact {
                 u[i] += mu * phi * e[i];
                 out.force[i] -= ne * mu * phi * e[i];
             }
+            let Some((sliding, da, db)) = &directions else {
+                continue;
+            };
+            let de = if axial { da } else { db };
             let by_sliding = match sliding {
                 Sliding::Position => &mut out.d_r,
                 Sliding::Velocity => &mut out.d_rdot,
@@ -322,10 +318,12 @@ impl SeabedContact {
             let rdot_de: [f64; 3] =
                 std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
             add_scaled(&mut out.d_rx, -ne * mu * dphi, &outer(&e, &rdot_de));
-            add_scaled(&mut out.d_rx, -ne * mu * phi, &de);
+            add_scaled(&mut out.d_rx, -ne * mu * phi, de);
         }
-        // -u (dN_e/dr)^T with dN_e/dr = -dne n.
-        add_scaled(&mut out.d_r, dne, &outer(&u, &n));
+        if directions.is_some() {
+            // -u (dN_e/dr)^T with dN_e/dr = -dne n.
+            add_scaled(&mut out.d_r, dne, &outer(&u, &n));
+        }
     }
 }
 
