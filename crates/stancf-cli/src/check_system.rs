@@ -153,6 +153,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         },
     );
+    line("work", work_words(sc));
     if sc.analysis.kind == AnalysisKind::Dynamic {
         if let Some(step) = stable_step(sc, &system) {
             line(
@@ -165,6 +166,25 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         let _ = writeln!(r, "note: {n}");
     }
     Ok(r)
+}
+
+/// The elements and steps of a system against the bounds `run` applies
+/// ([`crate::work_bounds`]).
+fn work_words(sc: &SystemScenario) -> String {
+    use crate::work_bounds::{system_work, MAX_STEPS, MAX_SYSTEM_ELEMENTS};
+    let work = system_work(sc);
+    let steps = match sc.analysis.kind {
+        AnalysisKind::Dynamic => format!(
+            "; {} steps (a run takes {:e} without --allow-large)",
+            Sig(work.steps),
+            MAX_STEPS as f64
+        ),
+        AnalysisKind::Static => String::new(),
+    };
+    format!(
+        "{} elements in all (a run takes {MAX_SYSTEM_ELEMENTS} without --allow-large){steps}",
+        work.elements
+    )
 }
 
 /// The water as `check` reports it: depth, density and seabed; the

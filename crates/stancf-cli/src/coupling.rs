@@ -21,11 +21,18 @@ pub struct Coupled {
     pub point_ids: Vec<i64>,
 }
 
-/// Reads the scenario or deck at `path` and builds its coupled system.
+/// Reads the scenario or deck at `path` and builds its coupled system,
+/// within the bounds `stancf run` applies ([`crate::work_bounds`]).
 pub fn open(path: &Path) -> Result<Coupled, Failure> {
+    open_with(path, false)
+}
+
+/// [`open`], with `allow_large` the opt-in for a system beyond the bound
+/// on elements without `--allow-large` (the hard bound holds).
+pub fn open_with(path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
-    from_text(&text, path)
+    from_text_with(&text, path, allow_large)
 }
 
 /// The coupled system of scenario text (`path` names it in messages and
@@ -35,6 +42,11 @@ pub fn open(path: &Path) -> Result<Coupled, Failure> {
 /// the scenario are replaced by the coupling code's; their order in the
 /// coupling arrays is that of their ids.
 pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
+    from_text_with(text, path, false)
+}
+
+/// [`from_text`] with the opt-in for large systems of [`open_with`].
+pub fn from_text_with(text: &str, path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
     let file = path.display().to_string();
     let mut sc = match parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))? {
         Input::System(sc) => sc,
@@ -49,6 +61,9 @@ pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
     if crate::moordyn::looks_like_moordyn(text) {
         sc.analysis.time_step = deck_time_step(text, &file)?;
     }
+    // The coupling code decides the duration: the elements are bounded
+    // here, the steps of each coupling call by the handle.
+    crate::work_bounds::admit_elements(&file, &sc, allow_large)?;
     of_scenario(&sc, &file)
 }
 

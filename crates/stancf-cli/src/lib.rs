@@ -15,6 +15,7 @@ pub mod plot;
 pub mod progress;
 pub mod reproduce;
 pub mod result_folder;
+pub mod result_layout;
 pub mod results;
 pub mod run;
 pub mod scenario;

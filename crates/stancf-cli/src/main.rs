@@ -67,8 +67,12 @@ enum Command {
     /// Validate a scenario and print derived figures (DOFs, wave speed,
     /// Courant number, stable step); runs nothing.
     Check {
-        /// Scenario file (TOML).
+        /// Scenario file (TOML) or MoorDyn v2 deck.
         scenario: PathBuf,
+        /// Check a system beyond the element and step bounds, as `run
+        /// --allow-large` would run it.
+        #[arg(long)]
+        allow_large: bool,
     },
     /// Reproduce one of the paper's studies (or `all`): tables as CSV and
     /// Markdown in DIR/<study>/.
@@ -121,7 +125,10 @@ fn main() -> ExitCode {
             jobs,
             out,
         } => sweep::sweep(&scenario, &sets, jobs, out),
-        Command::Check { scenario } => check::check(&scenario),
+        Command::Check {
+            scenario,
+            allow_large,
+        } => check::check(&scenario, allow_large),
         Command::Reproduce { study, out } => reproduce::reproduce(
             &study,
             &out.unwrap_or_else(|| PathBuf::from("out").join("reproduce")),

@@ -25,16 +25,12 @@
 //! missing with the old set intact under that name, and the next run into
 //! the target (or `ResultFolder::open`) moves it back before anything else.
 
+use crate::result_layout::{contents, Contents};
 use crate::Failure;
 use std::fs::{File, OpenOptions};
 use std::io;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// Files that mark a folder as one stancf wrote: a run's summary or a
-/// sweep's table. A folder holding neither (and not empty) is a user's, and
-/// is never replaced.
-const RESULT_MARKERS: [&str; 2] = ["summary.json", "sweep.csv"];
 
 /// A result folder being written: see the module documentation.
 #[derive(Debug)]
@@ -114,9 +110,10 @@ impl ResultFolder {
     /// Locks `target` and makes an empty staging folder beside it.
     ///
     /// Refused (exit 2, nothing written) when `target` is a file, names no
-    /// folder of its own (`.`, `..`, `/`), is a folder of a user's files (not
-    /// empty and without `summary.json` or `sweep.csv`), or another run is
-    /// writing into it.
+    /// folder of its own (`.`, `..`, `/`), is a dangling symbolic link,
+    /// holds anything but a result set ([`crate::result_layout`]: one
+    /// foreign entry is enough, and is named), is read-only or another
+    /// user's, or another run is writing into it.
     pub fn open(target: &Path) -> Result<ResultFolder, Failure> {
         let target = resolve(target)?;
         let (parent, name) = split(&target)?;
@@ -145,14 +142,7 @@ impl ResultFolder {
                 ))
             })?;
         recover(&parent, &name, &target)?;
-        if !is_replaceable(&target)? {
-            return Err(Failure::Input(format!(
-                "{}: this folder holds files stancf did not write (no {}); a run replaces \
-                 its output folder whole, so choose an empty or new folder",
-                target.display(),
-                RESULT_MARKERS.join(" or ")
-            )));
-        }
+        admit_replacement(&target)?;
         remove_stale_staging(&parent, &name);
         let staging = parent.join(format!(
             "{}{}-{}",
@@ -220,12 +210,22 @@ impl Drop for ResultFolder {
     }
 }
 
-/// A symbolic link is followed: the folder it names is the target.
+/// A symbolic link is followed: the folder it names is the target; a
+/// link to nothing is refused (exit 2), naming where it points.
 fn resolve(target: &Path) -> Result<PathBuf, Failure> {
     match std::fs::symlink_metadata(target) {
-        Ok(m) if m.file_type().is_symlink() => {
-            std::fs::canonicalize(target).map_err(cannot(target))
-        }
+        Ok(m) if m.file_type().is_symlink() => match std::fs::canonicalize(target) {
+            Ok(p) => Ok(p),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => Err(Failure::Input(format!(
+                "{}: a symbolic link to {}, which does not exist; create that folder or \
+                 choose another output folder",
+                target.display(),
+                std::fs::read_link(target)
+                    .map(|p| p.display().to_string())
+                    .unwrap_or_else(|_| "?".into())
+            ))),
+            Err(e) => Err(cannot(target)(e)),
+        },
         _ => Ok(target.to_path_buf()),
     }
 }
@@ -268,17 +268,75 @@ fn old_name(name: &str) -> String {
     format!(".{name}.stancf-old")
 }
 
-/// Empty, or written by stancf.
-fn is_replaceable(target: &Path) -> Result<bool, Failure> {
-    let mut entries = match std::fs::read_dir(target) {
-        Ok(e) => e,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(true),
-        Err(e) => return Err(cannot(target)(e)),
+/// Whether a run may replace the existing folder `target` (nothing to do
+/// when it does not exist): it must hold a result set and nothing else,
+/// and each of its folders must be the user's own and writable, so that
+/// the old set can be deleted once swapped out.
+fn admit_replacement(target: &Path) -> Result<(), Failure> {
+    let refuse = |what: String| {
+        Failure::Input(format!(
+            "{}: {what}; a run replaces its output folder whole, so it replaces only a folder \
+             holding a result set of stancf's and nothing else: choose an empty or new folder",
+            target.display()
+        ))
     };
-    if entries.next().is_none() {
-        return Ok(true);
+    match contents(target) {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(cannot(target)(e)),
+        Ok(Contents::Empty) => {}
+        Ok(Contents::ResultSet) => {}
+        Ok(Contents::Foreign(path, why)) => {
+            return Err(refuse(format!(
+                "this folder holds {} ({why})",
+                path.display()
+            )))
+        }
     }
-    Ok(RESULT_MARKERS.iter().any(|m| target.join(m).is_file()))
+    match locked_folder(target).map_err(cannot(target))? {
+        None => Ok(()),
+        Some((path, why)) => Err(Failure::Input(format!(
+            "{}: {} is {why}: the old results could not be deleted once replaced; choose \
+             another output folder (or make it writable)",
+            target.display(),
+            path.display()
+        ))),
+    }
+}
+
+/// The first folder of the set under `dir` (itself included) that this
+/// process may not empty: read-only by its permissions, or another user's.
+#[cfg(unix)]
+fn locked_folder(dir: &Path) -> io::Result<Option<(PathBuf, String)>> {
+    use std::os::unix::fs::MetadataExt;
+    let m = std::fs::symlink_metadata(dir)?;
+    // SAFETY: geteuid(2) has no preconditions.
+    let me = unsafe { libc::geteuid() };
+    if m.uid() != me {
+        return Ok(Some((
+            dir.to_path_buf(),
+            format!("owned by another user (uid {})", m.uid()),
+        )));
+    }
+    if m.mode() & 0o200 == 0 {
+        return Ok(Some((dir.to_path_buf(), "read-only".into())));
+    }
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        if entry.file_type()?.is_dir() {
+            if let Some(found) = locked_folder(&entry.path())? {
+                return Ok(Some(found));
+            }
+        }
+    }
+    Ok(None)
+}
+
+#[cfg(not(unix))]
+fn locked_folder(dir: &Path) -> io::Result<Option<(PathBuf, String)>> {
+    let m = std::fs::metadata(dir)?;
+    Ok(m.permissions()
+        .readonly()
+        .then(|| (dir.to_path_buf(), "read-only".to_string())))
 }
 
 /// Undoes a swap cut between its two renames (the fallback without
@@ -428,7 +486,7 @@ mod tests {
         std::fs::write(target.join("thesis.tex"), "precious").unwrap();
         assert!(matches!(
             ResultFolder::open(&target),
-            Err(Failure::Input(m)) if m.contains("did not write")
+            Err(Failure::Input(m)) if m.contains("thesis.tex") && m.contains("not a result set")
         ));
         for bad in [".", "..", "/", "a/.."] {
             assert!(

@@ -3,7 +3,8 @@
 //! `output.every` and the mesh before anything runs; `run` refuses a run
 //! beyond them unless given `--allow-large`, and `check` warns.
 
-use crate::scenario::{AnalysisKind, Scenario};
+use crate::moordyn::SupportedOption;
+use crate::scenario::{AnalysisKind, Scenario, SystemScenario};
 use crate::Failure;
 use stancf::error::Sig;
 use std::path::Path;
@@ -22,6 +23,120 @@ pub const MAX_RESULT_BYTES: f64 = 4e9;
 /// 10 ms per element when lines rest on the seabed (the OC4 deck with one
 /// line of 2000 segments: 22 s).
 pub const MAX_SYSTEM_ELEMENTS: usize = 2000;
+
+/// The most elements a system may have even with `--allow-large` (and
+/// a library opening one with its opt-in for large systems): one line of
+/// the most a line may have ([`stancf::model::MAX_ELEMENTS`], about 9 GB
+/// to build with its simulation).
+pub const HARD_MAX_SYSTEM_ELEMENTS: usize = stancf::model::MAX_ELEMENTS;
+
+/// The work of a system, counted from its scenario before anything of it
+/// is built: its elements (all lines; the sum saturates, it never wraps)
+/// and, for a dynamic analysis, its steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SystemWork {
+    pub elements: usize,
+    /// The line with the most elements (its index).
+    pub largest_line: usize,
+    /// Steps of a dynamic analysis (0 for a static one).
+    pub steps: f64,
+}
+
+/// The work of the system of `sc` (see [`SystemWork`]).
+pub fn system_work(sc: &SystemScenario) -> SystemWork {
+    let elements = sc
+        .lines
+        .iter()
+        .fold(0usize, |n, l| n.saturating_add(l.elements));
+    let largest_line = (0..sc.lines.len())
+        .max_by_key(|&i| sc.lines[i].elements)
+        .unwrap_or(0);
+    let steps = match sc.analysis.kind {
+        AnalysisKind::Dynamic => sc.analysis.duration / sc.analysis.time_step,
+        AnalysisKind::Static => 0.0,
+    };
+    SystemWork {
+        elements,
+        largest_line,
+        steps,
+    }
+}
+
+/// Why a system is refused, or None within the bounds: its elements above
+/// [`MAX_SYSTEM_ELEMENTS`] (unless `allow_large`) or
+/// [`HARD_MAX_SYSTEM_ELEMENTS`], its steps above [`MAX_STEPS`] (unless
+/// `allow_large`). The message starts with the keys (the scenario's, or the
+/// deck's lines) and says what to do.
+pub fn system_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
+    elements_problem(sc, allow_large).or_else(|| steps_problem(sc, allow_large))
+}
+
+/// The part of [`system_problem`] on elements.
+fn elements_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
+    let work = system_work(sc);
+    if let Some(l) = sc.lines.get(work.largest_line) {
+        let limit = if allow_large {
+            HARD_MAX_SYSTEM_ELEMENTS
+        } else {
+            MAX_SYSTEM_ELEMENTS
+        };
+        if work.elements > limit {
+            let key = sc.names.line(work.largest_line, "elements", "NumSegs");
+            let what = format!(
+                "{key}: the lines have {} elements in all (the most, {}, in line {})",
+                work.elements, l.elements, l.id
+            );
+            return Some(if allow_large {
+                format!(
+                    "{what}, above the {HARD_MAX_SYSTEM_ELEMENTS} a system may have (about 9 GB \
+                     to build); mesh the lines more coarsely"
+                )
+            } else {
+                format!(
+                    "{what}, above the {MAX_SYSTEM_ELEMENTS} a system takes without \
+                     --allow-large (its static solve alone takes about 10 ms an element); mesh \
+                     the lines more coarsely or pass --allow-large"
+                )
+            });
+        }
+    }
+    None
+}
+
+/// The part of [`system_problem`] on steps.
+fn steps_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
+    let work = system_work(sc);
+    if !allow_large && work.steps > MAX_STEPS as f64 {
+        let step = sc
+            .names
+            .option("analysis.time_step", SupportedOption::TimeStep);
+        return Some(format!(
+            "analysis.duration, {step}: {} steps, above the {:e} a run takes without \
+             --allow-large; take a longer step or a shorter run, or pass --allow-large",
+            Sig(work.steps),
+            MAX_STEPS as f64
+        ));
+    }
+    None
+}
+
+/// [`system_problem`] as an input error naming `file`: `check`, `run` and
+/// the coupling library apply it before building anything of a system.
+pub fn admit_system(file: &str, sc: &SystemScenario, allow_large: bool) -> Result<(), Failure> {
+    match system_problem(sc, allow_large) {
+        None => Ok(()),
+        Some(m) => Err(Failure::Input(format!("{file}: {m}"))),
+    }
+}
+
+/// The bound on elements of [`admit_system`] alone: a coupled system's
+/// steps are bounded per coupling call, by its handle.
+pub fn admit_elements(file: &str, sc: &SystemScenario, allow_large: bool) -> Result<(), Failure> {
+    match elements_problem(sc, allow_large) {
+        None => Ok(()),
+        Some(m) => Err(Failure::Input(format!("{file}: {m}"))),
+    }
+}
 
 /// How much a run would do and write.
 pub(crate) struct Size {

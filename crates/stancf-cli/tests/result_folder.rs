@@ -223,6 +223,34 @@ fn ctrl_c_mid_run_writes_a_valid_partial_set_marked_interrupted() {
     std::fs::remove_dir_all(&d).unwrap();
 }
 
+/// A system's summary says it was interrupted, as a single cable's does
+/// (docs/interface.md, "Result folders, interruptions and exit codes").
+#[test]
+fn ctrl_c_mid_system_run_marks_its_summary_interrupted() {
+    let d = scratch("sigint-system");
+    let long = format!(
+        "{}[analysis]\ntype = \"dynamic\"\ntime_step = 1e-4\nduration = 100.0\n\
+         [output]\nevery = 7\n",
+        one_rope("long", "", ("fixed", [4.0, 0.0, 0.0]), (1, 4.0, 12), "")
+    );
+    let long = write_scenario(&d, "long.toml", &long);
+    let target = d.join("case");
+    let child = spawn_run(&long, &target);
+    wait_for("the run to step", || {
+        staging_with_history(&target, 4096).is_some()
+    });
+    signal(&child, libc::SIGINT);
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(130), "{err}");
+    let summary = read_json(&target.join("summary.json"));
+    assert_eq!(summary["interrupted"], true, "{summary}");
+    assert_eq!(summary["error"], "interrupted");
+    let t = summary["t_final"].as_f64().unwrap();
+    assert!(t > 0.0 && t < 1e2, "{t}");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
 #[test]
 fn a_new_run_leaves_nothing_of_an_older_one_in_its_folder() {
     let d = scratch("stale");

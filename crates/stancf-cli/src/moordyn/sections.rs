@@ -49,6 +49,20 @@ pub(crate) fn count(row: &Row, col: usize, what: &str) -> Result<usize, DeckErro
     }
 }
 
+/// `NumSegs`: 1 to the most elements a line may have
+/// ([`stancf::model::MAX_ELEMENTS`]).
+fn segments(row: &Row, what: &str) -> Result<usize, DeckError> {
+    let max = stancf::model::MAX_ELEMENTS;
+    let n = row.words[5];
+    match n.parse::<u128>() {
+        Ok(k) if k > max as u128 => Err(DeckError::at(
+            row.line,
+            format!("{what} is {n}, above the {max} segments a line may have"),
+        )),
+        _ => count(row, 5, what),
+    }
+}
+
 /// At least `min` words, or an error naming the columns expected.
 fn columns(row: &Row, min: usize, section: &str, names: &str) -> Result<(), DeckError> {
     if row.words.len() < min {
@@ -297,7 +311,7 @@ pub(crate) fn lines<'a>(s: &Section<'a>) -> Result<Vec<RawLine<'a>>, DeckError> 
             line_type: row.words[1],
             ends: [end(row, id, 2, "A")?, end(row, id, 3, "B")?],
             unstretched_length,
-            segments: count(row, 5, &what("NumSegs"))?,
+            segments: segments(row, &what("NumSegs"))?,
             outputs: row.words[6],
         });
     }

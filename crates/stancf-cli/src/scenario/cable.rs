@@ -40,8 +40,8 @@ pub(super) fn cable(ctx: &Ctx, raw: Option<RawCable>) -> Result<stancf::Cable, S
 }
 
 /// The largest element count of a line (`elements` and the sum of
-/// `grading.sections`' elements).
-const MAX_ELEMENTS: i64 = 1_000_000;
+/// `grading.sections`' elements): the core's.
+const MAX_ELEMENTS: i64 = stancf::model::MAX_ELEMENTS as i64;
 
 /// `<owner>.elements` and `<owner>.grading` of a line of `length`: the
 /// element count and the mesh (docs/method.md §1.6).

@@ -19,6 +19,7 @@ mod messages;
 mod moordyn;
 mod moordyn_water;
 mod motions;
+pub mod names;
 mod output;
 mod raw;
 mod system;

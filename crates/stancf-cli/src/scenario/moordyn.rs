@@ -164,6 +164,7 @@ pub(super) fn deck_scenario(
         notes,
         water: Some(water),
         channels,
+        names: super::names::Names::of_deck(deck, None),
     })
 }
 

@@ -136,6 +136,8 @@ pub struct SystemScenario {
     pub water: Option<Water>,
     /// Output channels (from a MoorDyn deck).
     pub channels: Vec<OutputChannel>,
+    /// Where its values were written (TOML keys or a deck's lines).
+    pub names: super::names::Names,
 }
 
 /// The system parts of a scenario file, in the file's order.
@@ -189,6 +191,7 @@ pub(super) fn system_scenario(
             title,
             added.map(|w| (ctx, w)),
         )?;
+        sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()));
         deck_meshes(ctx, &raw.mesh, &mut sc)?;
         let (analysis, measures, initial, notes) =
             analysis_part(ctx, raw.analysis, InitialShape::Static)?;
@@ -249,6 +252,7 @@ pub(super) fn system_scenario(
         notes,
         water,
         channels: Vec::new(),
+        names: super::names::Names::default(),
     };
     sc.notes.extend(static_waves_note(&sc));
     Ok(sc)
@@ -528,6 +532,7 @@ fn deck_meshes(ctx: &Ctx, raw: &[RawMesh], sc: &mut SystemScenario) -> Result<()
             let old = line.elements;
             line.elements = n;
             line.grading = grading;
+            sc.names.remeshed(position, i);
             remesh_channels(ctx, &owner, (position + 1, id), old, n, &mut sc.channels)?;
         }
     }

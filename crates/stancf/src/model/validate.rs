@@ -39,6 +39,16 @@ pub(super) fn cable(cable: Cable) -> Result<Cable, ModelError> {
             "must be at least 1, got 0",
         ));
     }
+    if cable.elements > super::MAX_ELEMENTS {
+        return Err(ModelError::invalid(
+            "cable.elements",
+            format!(
+                "{} is above the {} elements a cable or line may have",
+                cable.elements,
+                super::MAX_ELEMENTS
+            ),
+        ));
+    }
     cable.grading.check(cable.length, cable.elements)?;
     check_vector("cable.origin", &cable.origin)?;
     check_vector("cable.direction", &cable.direction)?;

@@ -83,27 +83,7 @@ pub(super) fn run_system(
             missing.join(", ")
         )));
     }
-    let elements: usize = sc.lines.iter().map(|l| l.elements).sum();
-    if elements > crate::work_bounds::MAX_SYSTEM_ELEMENTS && !opts.allow_large {
-        return Err(Failure::Input(format!(
-            "{}: lines: {elements} elements in all is above the {} a system run takes \
-             without --allow-large (its static solve would take minutes)",
-            path.display(),
-            crate::work_bounds::MAX_SYSTEM_ELEMENTS
-        )));
-    }
-    if sc.analysis.kind == AnalysisKind::Dynamic && !opts.allow_large {
-        let steps = sc.analysis.duration / sc.analysis.time_step;
-        if steps > crate::work_bounds::MAX_STEPS as f64 {
-            return Err(Failure::Input(format!(
-                "{}: analysis.duration, analysis.time_step: {} steps is above the {:e} a run \
-                 takes without --allow-large",
-                path.display(),
-                Sig(steps),
-                crate::work_bounds::MAX_STEPS as f64
-            )));
-        }
-    }
+    crate::work_bounds::admit_system(&path.display().to_string(), &sc, opts.allow_large)?;
     let crate::check_system::Prepared {
         system,
         statics: mut static_solve,
@@ -508,6 +488,7 @@ fn write_summary(
         "iterations": outcome.iterations,
         "wall_time_s": json_num(wall),
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
+        "interrupted": outcome.interrupted,
     });
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())

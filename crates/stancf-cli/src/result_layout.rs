@@ -1,0 +1,284 @@
+//! The layout of a result set: every name a run or a sweep writes into its
+//! output folder (docs/interface.md, "Result files", "Systems of lines").
+//!
+//! A run replaces its output folder whole ([`crate::result_folder`]), so
+//! it may only replace a folder that holds nothing but a result set: a
+//! folder that holds one foreign entry (a user's file, a subfolder of
+//! theirs, a symbolic link, a device) is never replaced. A folder is a
+//! result set when
+//! - it holds `summary.json` (a run's) or `sweep.csv` (a sweep's), and
+//! - each of its entries, followed down, is a regular file or folder
+//!   named as stancf names them: [`RUN_FILES`], the figures
+//!   ([`FIGURES`] as `.png` and `.svg`), `vtk/cable_<k>.vtp`,
+//!   `lines/<id>/` with [`LINE_FILES`] and, in a sweep's folder,
+//!   `run_<k>/` holding a run's set.
+
+use std::io;
+use std::path::{Path, PathBuf};
+
+/// The files a single cable's or a system's run writes at the top of its
+/// folder (each at most once; which ones depends on the run).
+pub const RUN_FILES: [&str; 13] = [
+    "summary.json",
+    "scenario.toml",
+    "history.csv",
+    "nodes.csv",
+    "stress.csv",
+    "reactions.csv",
+    "solver.csv",
+    "convergence.csv",
+    "points.csv",
+    "tensions.csv",
+    "channels.csv",
+    "node_loads.csv",
+    "cable.pvd",
+];
+
+/// The figures `--plot` draws (each as `<name>.png` and `<name>.svg`).
+pub const FIGURES: [&str; 6] = [
+    "shapes",
+    "energy",
+    "stress_map",
+    "convergence",
+    "tensions",
+    "curvature",
+];
+
+/// The files of a system's line, in `lines/<id>/`.
+pub const LINE_FILES: [&str; 3] = ["nodes.csv", "stress.csv", "node_loads.csv"];
+
+/// The markers of a result set: a run's summary or a sweep's table.
+pub const MARKERS: [&str; 2] = ["summary.json", "sweep.csv"];
+
+/// At most this many entries are looked at (a sweep of 10 000 runs with
+/// 100 lines each is far below): a folder with more is not taken for a
+/// result set.
+const MAX_ENTRIES: usize = 10_000_000;
+
+/// What a folder holds, as a result set or not.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Contents {
+    /// Nothing at all.
+    Empty,
+    /// A result set of stancf's, and nothing else.
+    ResultSet,
+    /// Something stancf did not write: the first foreign entry found (its
+    /// path) and what makes it foreign.
+    Foreign(PathBuf, String),
+}
+
+/// What the folder `dir` holds (see the module documentation).
+pub fn contents(dir: &Path) -> io::Result<Contents> {
+    let mut entries = std::fs::read_dir(dir)?;
+    let Some(first) = entries.next() else {
+        return Ok(Contents::Empty);
+    };
+    if !MARKERS.iter().any(|m| is_regular_file(&dir.join(m))) {
+        return Ok(Contents::Foreign(
+            first?.path(),
+            format!(
+                "and neither {}: not a result set of stancf's",
+                MARKERS.join(" nor ")
+            ),
+        ));
+    }
+    let mut seen = 0;
+    Ok(match foreign_in(dir, Level::Top, &mut seen)? {
+        Some((path, why)) => Contents::Foreign(path, why),
+        None => Contents::ResultSet,
+    })
+}
+
+/// Where in a result set a folder sits.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Level {
+    /// The output folder (a run's or a sweep's).
+    Top,
+    /// A sweep's `run_<k>/`.
+    SweepRun,
+    /// `vtk/`.
+    Vtk,
+    /// `lines/`.
+    Lines,
+    /// `lines/<id>/`.
+    Line,
+}
+
+/// The first entry of `dir` (at `level`) that stancf does not write, and
+/// why; None when every entry, followed down, is one of its.
+fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(PathBuf, String)>> {
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        *seen += 1;
+        let path = entry.path();
+        if *seen > MAX_ENTRIES {
+            return Ok(Some((path, format!("more than {MAX_ENTRIES} entries"))));
+        }
+        let kind = entry.file_type()?;
+        let name = entry.file_name();
+        let Some(name) = name.to_str() else {
+            return Ok(Some((path, "a name stancf never writes".into())));
+        };
+        if kind.is_symlink() {
+            return Ok(Some((path, "a symbolic link".into())));
+        }
+        if kind.is_file() {
+            if !is_result_file(level, name) {
+                return Ok(Some((path, "a file stancf does not write".into())));
+            }
+            continue;
+        }
+        if !kind.is_dir() {
+            return Ok(Some((path, "neither a file nor a folder".into())));
+        }
+        let Some(inner) = folder_level(level, name) else {
+            return Ok(Some((path, "a folder stancf does not write".into())));
+        };
+        if let Some(found) = foreign_in(&path, inner, seen)? {
+            return Ok(Some(found));
+        }
+    }
+    Ok(None)
+}
+
+/// Whether stancf writes a file `name` in a folder at `level`.
+fn is_result_file(level: Level, name: &str) -> bool {
+    match level {
+        Level::Top | Level::SweepRun => {
+            RUN_FILES.contains(&name)
+                || (level == Level::Top && name == "sweep.csv")
+                || is_figure(name)
+        }
+        Level::Vtk => name
+            .strip_prefix("cable_")
+            .and_then(|r| r.strip_suffix(".vtp"))
+            .is_some_and(all_digits),
+        Level::Lines => false,
+        Level::Line => LINE_FILES.contains(&name),
+    }
+}
+
+/// `<figure>.png` or `<figure>.svg`.
+fn is_figure(name: &str) -> bool {
+    let stem = name
+        .strip_suffix(".png")
+        .or_else(|| name.strip_suffix(".svg"));
+    stem.is_some_and(|s| FIGURES.contains(&s))
+}
+
+/// The level of a subfolder `name` of a folder at `level`, if stancf
+/// writes one of that name there.
+fn folder_level(level: Level, name: &str) -> Option<Level> {
+    match (level, name) {
+        (Level::Top | Level::SweepRun, "vtk") => Some(Level::Vtk),
+        (Level::Top | Level::SweepRun, "lines") => Some(Level::Lines),
+        (Level::Top, _) if name.strip_prefix("run_").is_some_and(all_digits) => {
+            Some(Level::SweepRun)
+        }
+        (Level::Lines, _) if is_line_id(name) => Some(Level::Line),
+        _ => None,
+    }
+}
+
+/// A line's id as a folder name: an integer, perhaps negative.
+fn is_line_id(name: &str) -> bool {
+    all_digits(name.strip_prefix('-').unwrap_or(name))
+}
+
+fn all_digits(s: &str) -> bool {
+    !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit())
+}
+
+fn is_regular_file(path: &Path) -> bool {
+    std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_file())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("stancf-layout-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    fn touch(dir: &Path, rel: &str) {
+        let p = dir.join(rel);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, "x").unwrap();
+    }
+
+    #[test]
+    fn a_full_system_set_and_a_sweep_of_them_are_result_sets() {
+        let d = scratch("sets");
+        for f in RUN_FILES {
+            touch(&d, f);
+        }
+        for f in ["energy.png", "energy.svg", "vtk/cable_000012.vtp"] {
+            touch(&d, f);
+        }
+        for f in LINE_FILES {
+            touch(&d, &format!("lines/-3/{f}"));
+            touch(&d, &format!("lines/17/{f}"));
+        }
+        assert_eq!(contents(&d).unwrap(), Contents::ResultSet);
+        let sweep = scratch("sweep");
+        touch(&sweep, "sweep.csv");
+        touch(&sweep, "run_0000/summary.json");
+        touch(&sweep, "run_0001/lines/1/nodes.csv");
+        touch(&sweep, "run_0001/vtk/cable_000000.vtp");
+        assert_eq!(contents(&sweep).unwrap(), Contents::ResultSet);
+        std::fs::remove_dir_all(&d).unwrap();
+        std::fs::remove_dir_all(&sweep).unwrap();
+    }
+
+    #[test]
+    fn one_foreign_entry_anywhere_makes_a_folder_foreign_and_is_named() {
+        for (rel, why) in [
+            ("thesis.tex", "a file stancf does not write"),
+            ("src/main.rs", "a folder stancf does not write"),
+            ("lines/1/notes.txt", "a file stancf does not write"),
+            ("lines/a/nodes.csv", "a folder stancf does not write"),
+            ("vtk/cable.vtp", "a file stancf does not write"),
+            ("run_0001/sweep.csv", "a file stancf does not write"),
+            (
+                "run_0001/run_0002/summary.json",
+                "a folder stancf does not write",
+            ),
+            ("energy.jpg", "a file stancf does not write"),
+        ] {
+            let d = scratch("foreign");
+            touch(&d, "summary.json");
+            touch(&d, rel);
+            match contents(&d).unwrap() {
+                Contents::Foreign(p, w) => {
+                    let first = rel.split('/').collect::<Vec<_>>();
+                    assert!(p.starts_with(d.join(first[0])), "{rel}: {p:?}");
+                    assert_eq!(w, why, "{rel}");
+                }
+                other => panic!("{rel}: {other:?}"),
+            }
+            std::fs::remove_dir_all(&d).unwrap();
+        }
+    }
+
+    #[test]
+    fn a_symbolic_link_or_a_missing_marker_is_foreign() {
+        let d = scratch("link");
+        touch(&d, "summary.json");
+        std::os::unix::fs::symlink("/", d.join("nodes.csv")).unwrap();
+        assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, w)
+            if p == d.join("nodes.csv") && w == "a symbolic link"));
+        std::fs::remove_dir_all(&d).unwrap();
+        let d = scratch("marker");
+        touch(&d, "history.csv");
+        assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, w)
+            if p == d.join("history.csv") && w.contains("neither summary.json nor sweep.csv")));
+        std::fs::remove_dir_all(&d).unwrap();
+        let d = scratch("empty");
+        assert_eq!(contents(&d).unwrap(), Contents::Empty);
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+}

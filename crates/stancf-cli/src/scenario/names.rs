@@ -1,0 +1,168 @@
+//! Where a system's values were written, so that a refusal names them as
+//! the user wrote them: TOML keys (`line_types[0].diameter`) for a
+//! system scenario, the deck's line and column (`line 7: Diam`) for the
+//! values a MoorDyn deck gives, and the `[[mesh]]` entry that remeshed a
+//! deck's line.
+
+use crate::moordyn::{Deck, OptionKind, SupportedOption};
+
+/// The names of a system's values (see the module documentation).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Names {
+    /// The deck the line types, points, lines and options come from
+    /// (None: a TOML system, every value under its key).
+    deck: Option<Box<DeckNames>>,
+}
+
+/// The lines of a deck's rows and options.
+#[derive(Clone, Debug, PartialEq)]
+struct DeckNames {
+    /// The deck as messages name it; None when it is the file the
+    /// messages are about (a deck run alone).
+    file: Option<String>,
+    line_types: Vec<usize>,
+    points: Vec<usize>,
+    lines: Vec<usize>,
+    options: Vec<(SupportedOption, String, usize)>,
+    /// The `[[mesh]]` entry that remeshed each line, if any.
+    meshes: Vec<Option<usize>>,
+}
+
+impl Names {
+    /// The names of the values of `deck`; `file` names the deck when the
+    /// messages are about another file (a scenario that takes the deck).
+    pub fn of_deck(deck: &Deck, file: Option<String>) -> Names {
+        Names {
+            deck: Some(Box::new(DeckNames {
+                file,
+                line_types: deck.line_types.iter().map(|t| t.line).collect(),
+                points: deck.points.iter().map(|p| p.line).collect(),
+                lines: deck.lines.iter().map(|l| l.line).collect(),
+                options: deck
+                    .options
+                    .iter()
+                    .filter_map(|o| match o.kind {
+                        OptionKind::Supported(s) => Some((s, o.name.clone(), o.line)),
+                        _ => None,
+                    })
+                    .collect(),
+                meshes: vec![None; deck.lines.len()],
+            })),
+        }
+    }
+
+    /// Line i of a deck was remeshed by `[[mesh]]` entry `entry`: its
+    /// elements are named `mesh[entry].elements` from now on.
+    pub fn remeshed(&mut self, line: usize, entry: usize) {
+        if let Some(d) = self.deck.as_mut() {
+            d.meshes[line] = Some(entry);
+        }
+    }
+
+    /// Whether the values come from a deck.
+    pub fn is_deck(&self) -> bool {
+        self.deck.is_some()
+    }
+
+    /// `key` of line type i (`line_types[i].<key>`), or its `column` in
+    /// the deck.
+    pub fn line_type(&self, i: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.line_types[i], column),
+            None => format!("line_types[{i}].{key}"),
+        }
+    }
+
+    /// `key` of point i, or its `column` in the deck.
+    pub fn point(&self, i: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.points[i], column),
+            None => format!("points[{i}].{key}"),
+        }
+    }
+
+    /// `key` of line i, or its `column` in the deck; a remeshed deck
+    /// line's elements are its `[[mesh]]` entry's.
+    pub fn line(&self, i: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => match d.meshes[i] {
+                Some(entry) if key == "elements" => format!("mesh[{entry}].elements"),
+                _ => d.at(d.lines[i], column),
+            },
+            None => format!("lines[{i}].{key}"),
+        }
+    }
+
+    /// The scenario key `key`, or the deck's option `which` where the
+    /// deck gives it (its name as written).
+    pub fn option(&self, key: &str, which: SupportedOption) -> String {
+        let given = self.deck.as_ref().and_then(|d| {
+            d.options
+                .iter()
+                .find(|(s, ..)| *s == which)
+                .map(|(_, name, line)| d.at(*line, name))
+        });
+        given.unwrap_or_else(|| key.to_string())
+    }
+}
+
+impl DeckNames {
+    /// "line 7: Diam", with the deck's name before it when the messages
+    /// are about another file.
+    fn at(&self, line: usize, column: &str) -> String {
+        match &self.file {
+            Some(f) => format!("{f} line {line}: {column}"),
+            None => format!("line {line}: {column}"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DECK: &str = "--- LINE TYPES ---\n\
+        TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+        (-) (m) (kg/m) (N) (Ns) (Nm2) (-) (-) (-) (-)\n\
+        rope 0.01 0.08 2e4 0 0 0 0 0 0\n\
+        --- POINTS ---\n\
+        ID Attachment X Y Z Mass Volume CdA Ca\n\
+        (#) (-) (m) (m) (m) (kg) (m3) (m2) (-)\n\
+        1 Fixed 0 0 -1 0 0 0 0\n\
+        2 Coupled 1 0 -1 0 0 0 0\n\
+        --- LINES ---\n\
+        ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
+        (#) (-) (#) (#) (m) (-) (-)\n\
+        1 rope 1 2 1.0 4 -\n\
+        --- OPTIONS ---\n\
+        50 WtrDpth\n\
+        1025 rho\n\
+        --- END ---\n";
+
+    #[test]
+    fn deck_values_are_named_by_their_line_and_column_and_toml_values_by_key() {
+        let deck = crate::moordyn::parse(DECK).unwrap();
+        let mut n = Names::of_deck(&deck, None);
+        assert_eq!(n.line_type(0, "diameter", "Diam"), "line 4: Diam");
+        assert_eq!(n.point(1, "mass", "Mass"), "line 9: Mass");
+        assert_eq!(n.line(0, "length", "UnstrLen"), "line 13: UnstrLen");
+        assert_eq!(
+            n.option("water.density", SupportedOption::WaterDensity),
+            "line 16: rho"
+        );
+        assert_eq!(
+            n.option("water.seabed.stiffness", SupportedOption::BottomStiffness),
+            "water.seabed.stiffness"
+        );
+        n.remeshed(0, 2);
+        assert_eq!(n.line(0, "elements", "NumSegs"), "mesh[2].elements");
+        let named = Names::of_deck(&deck, Some("deck.txt".into()));
+        assert_eq!(
+            named.line(0, "length", "UnstrLen"),
+            "deck.txt line 13: UnstrLen"
+        );
+        let toml = Names::default();
+        assert_eq!(toml.line(0, "elements", "NumSegs"), "lines[0].elements");
+        assert_eq!(toml.point(2, "mass", "Mass"), "points[2].mass");
+    }
+}
