@@ -284,8 +284,8 @@ pub(crate) fn mesh_text(model: &Model) -> String {
 /// what it is; `allow_large` as `run --allow-large` (a system beyond the
 /// bounds of [`crate::work_bounds`] is refused as `run` refuses it).
 pub fn check(path: &Path, allow_large: bool) -> Result<(), Failure> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    let text = crate::input_file::read_text(path)
+        .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
     let file = path.display().to_string();
     if let scenario::Input::System(sc) =
         scenario::parse_input(&text, &file, path).map_err(|e| Failure::Input(e.0))?

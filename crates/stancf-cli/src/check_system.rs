@@ -40,6 +40,8 @@ pub fn simulation(
 /// naming `path`.
 pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    crate::input_scales::system_scales(&path.display().to_string(), sc)?;
+    crate::system_geometry::check_geometry(&path.display().to_string(), sc, true)?;
     let system = sc.system().map_err(input)?;
     let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
     {

@@ -30,8 +30,8 @@ pub fn open(path: &Path) -> Result<Coupled, Failure> {
 /// [`open`], with `allow_large` the opt-in for a system beyond the bound
 /// on elements without `--allow-large` (the hard bound holds).
 pub fn open_with(path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    let text = crate::input_file::read_text(path)
+        .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
     from_text_with(&text, path, allow_large)
 }
 
@@ -90,6 +90,9 @@ fn deck_time_step(text: &str, file: &str) -> Result<f64, Failure> {
 /// The coupled system of a validated system scenario.
 pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> {
     let input = |e: stancf::ModelError| Failure::Input(format!("{file}: {e}"));
+    crate::input_scales::system_scales(file, sc)?;
+    // The coupling code places the coupled points (stancf_init).
+    crate::system_geometry::check_geometry(file, sc, false)?;
     let system = sc.system().map_err(input)?;
     let seed = sc.seed_system().map_err(input)?;
     let mut order: Vec<usize> = (0..system.points().len())

@@ -10,6 +10,9 @@
 
 mod loads;
 mod rules;
+mod system;
+
+pub(crate) use system::system_scales;
 
 use crate::scenario::{AnalysisKind, Scenario};
 use crate::Failure;

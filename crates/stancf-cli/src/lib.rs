@@ -6,8 +6,10 @@
 pub mod check;
 pub mod check_system;
 pub mod coupling;
+pub mod echo;
 pub mod figures;
 pub mod figures_system;
+pub mod input_file;
 pub mod input_scales;
 pub mod moordyn;
 pub mod output;
@@ -21,6 +23,7 @@ pub mod run;
 pub mod scenario;
 pub mod signals;
 pub mod sweep;
+pub mod system_geometry;
 pub mod vtk;
 pub mod work_bounds;
 

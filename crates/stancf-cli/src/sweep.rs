@@ -314,8 +314,8 @@ pub fn sweep(
     out: Option<PathBuf>,
 ) -> Result<(), Failure> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{file}: cannot read the file: {e}")))?;
+    let text =
+        crate::input_file::read_text(path).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
     scenario::parse(&text, &file, path).map_err(|e| Failure::Input(e.0))?;
     let base: toml::Table = text
         .parse()

@@ -5,7 +5,8 @@
 mod common;
 
 use common::{
-    expect_input_error, pendulum, read_json, repo_file, run_quiet, scratch, write_scenario,
+    expect_input_error, one_rope, pendulum, read_json, repo_file, run_quiet, scratch,
+    write_scenario,
 };
 
 /// examples/bridle.toml with Galerkin steps of 10 ms for 1.5 s: at about
@@ -23,13 +24,19 @@ fn bridle(halvings: Option<u32>) -> String {
 #[test]
 fn a_bridle_that_stops_at_a_slack_rope_runs_on_with_step_halvings() {
     let dir = scratch("step-halvings");
-    let plain = write_scenario(&dir, "plain.toml", &bridle(None));
+    let plain = write_scenario(&dir, "plain.toml", &bridle(Some(0)));
     let o = run_quiet(&plain, &dir.join("plain"), &[]);
     assert_eq!(
         o.status.code(),
         Some(3),
         "{}",
         String::from_utf8_lossy(&o.stderr)
+    );
+    // The message says no halving was tried, and how to get it.
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("analysis.step_halvings = 0") && err.contains("the default 5"),
+        "{err}"
     );
     let failed = read_json(&dir.join("plain/summary.json"));
     let t_failed = failed["t_final"].as_f64().unwrap();
@@ -53,6 +60,54 @@ fn a_bridle_that_stops_at_a_slack_rope_runs_on_with_step_halvings() {
     let b = std::fs::read_to_string(dir.join("halved/points.csv")).unwrap();
     let lines = a.lines().count();
     assert!(b.lines().take(lines).eq(a.lines()));
+}
+
+/// A 26 m rope from an anchor on the bed (20 m of water) to a fairlead at
+/// (20, 0, -2) m heaving 0.5 m every 4 s, Galerkin steps of 0.2 s, with
+/// `halvings` (None: the default).
+fn heaving_rope(halvings: Option<u32>) -> String {
+    let extra = halvings.map_or(String::new(), |h| format!("step_halvings = {h}\n"));
+    format!(
+        "{}[[motions]]\npoint = 2\namplitude = [0.0, 0.0, 0.5]\nperiod = 4.0\n\
+         [water]\ndepth = 20.0\n[analysis]\ntype = \"dynamic\"\ninitial = \"static\"\n\
+         time_step = 0.2\nduration = 20.0\ntime_scheme = \"galerkin\"\n{extra}",
+        one_rope(
+            "heaving rope",
+            "cd = 1.2\nca = 1.0",
+            ("coupled", [20.0, 0.0, -2.0]),
+            (1, 26.0, 20),
+            ""
+        )
+        .replace("diameter = 0.01", "diameter = 0.02")
+        .replace("mass_per_length = 0.08", "mass_per_length = 1.0")
+        .replace("ea = 2.0e4", "ea = 1.0e6")
+        .replace("position = [0.0, 0.0, 0.0]", "position = [0.0, 0.0, -20.0]")
+    )
+}
+
+/// Item 10 of issue 28: a valid system stopped with exit 3 where halving
+/// its failed step runs it through; a system halves by default.
+#[test]
+fn a_rope_from_the_bed_to_a_heaving_fairlead_runs_through_with_the_default_halvings() {
+    let dir = scratch("heaving-rope");
+    let plain = write_scenario(&dir, "plain.toml", &heaving_rope(Some(0)));
+    let o = run_quiet(&plain, &dir.join("plain"), &[]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(3), "{err}");
+    assert!(err.contains("analysis.step_halvings = 0"), "{err}");
+    let default = write_scenario(&dir, "default.toml", &heaving_rope(None));
+    let o = run_quiet(&default, &dir.join("default"), &[]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let done = read_json(&dir.join("default/summary.json"));
+    assert!(
+        (done["t_final"].as_f64().unwrap() - 20.0).abs() < 1e-9,
+        "{done}"
+    );
 }
 
 #[test]

@@ -147,6 +147,18 @@ enum Target {
     Marker(usize, String),
 }
 
+/// The lines of a deck, ended by `\n`, `\r\n` or a lone `\r` (the line
+/// end of classic Mac OS files, which some MoorDyn decks still carry): as
+/// a text editor shows them, so that the line numbers of messages are
+/// the editor's.
+pub(crate) fn deck_lines(text: &str) -> impl Iterator<Item = &str> {
+    text.split_inclusive('\n').flat_map(|l| {
+        let l = l.strip_suffix('\n').unwrap_or(l);
+        let l = l.strip_suffix('\r').unwrap_or(l);
+        l.split('\r')
+    })
+}
+
 /// Cuts a deck into title and sections. A line containing `---` naming
 /// no section ends the current section; rows after it (before the next
 /// header) make it an unknown section header. A line of dashes that is
@@ -157,7 +169,7 @@ pub(crate) fn split(text: &str) -> Result<Layout<'_>, DeckError> {
     let mut sections: Vec<Section> = Vec::new();
     let mut target = Target::Title;
     let mut seen_content = false;
-    for (i, raw) in text.lines().enumerate() {
+    for (i, raw) in deck_lines(text).enumerate() {
         let line = i + 1;
         if raw.contains("---") {
             target = header(raw, line, seen_content, &mut sections)?;

@@ -226,17 +226,20 @@ pub struct DeckError {
 }
 
 impl DeckError {
+    /// An error at deck line `line`; the pieces of the deck it quotes are
+    /// cut to [`crate::echo::MAX_ECHO`] characters.
     pub(crate) fn at(line: usize, message: impl Into<String>) -> DeckError {
         DeckError {
             line: Some(line),
-            message: message.into(),
+            message: crate::echo::clip_quoted(&message.into()),
         }
     }
 
+    /// An error of the whole deck (its quoted pieces cut as in [`Self::at`]).
     pub(crate) fn whole(message: impl Into<String>) -> DeckError {
         DeckError {
             line: None,
-            message: message.into(),
+            message: crate::echo::clip_quoted(&message.into()),
         }
     }
 }
@@ -286,15 +289,20 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
 /// Reads and checks the MoorDyn v2 deck in a file. A file that cannot be
 /// read is an error without a line, naming the file.
 pub fn load(path: &Path) -> Result<Deck, DeckError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| DeckError::whole(format!("{}: cannot read the file: {e}", path.display())))?;
-    parse(&text)
+    let text = crate::input_file::read_text(path)
+        .map_err(|e| DeckError::whole(format!("{}: {e}", path.display())))?;
+    // An error of the whole deck names the deck (one at a line is named
+    // with its line by the caller).
+    parse(&text).map_err(|e| match e.line {
+        Some(_) => e,
+        None => DeckError::whole(format!("{}: {}", path.display(), e.message)),
+    })
 }
 
 /// Whether a text looks like a MoorDyn deck rather than a TOML scenario:
 /// some line starts with `---` and names a MoorDyn section (`LINE
 /// TYPES`, `POINTS`, `LINES`, `OPTIONS`...).
 pub fn looks_like_moordyn(text: &str) -> bool {
-    text.lines()
+    layout::deck_lines(text)
         .any(|l| l.trim_start().starts_with("---") && layout::SectionKind::of_header(l).is_some())
 }

@@ -125,8 +125,8 @@ pub(crate) fn safe_folder_name(stem: &str) -> String {
 
 /// `stancf run`: reads the scenario file and runs it ([`run_text`]).
 pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    let text = crate::input_file::read_text(path)
+        .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
     run_text(&text, path, opts)
 }
 

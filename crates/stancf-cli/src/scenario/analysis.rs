@@ -57,7 +57,8 @@ pub(super) struct Others {
 /// `tolerance` (> 0, default 1e-10), `max_iterations` (1..=10000, default
 /// 50), `load_steps` (1..=1000000, default 20), `curvature`,
 /// `axial_strain`, `constraint_method`; `planar_reduction` defaults to
-/// true; `step_halvings` (0..=10, default 0; systems only, refused by the
+/// true; `step_halvings` (0..=10, default 0 here; a system's
+/// [`stancf::system::DEFAULT_STEP_HALVINGS`]; systems only, refused by the
 /// single cable's reader). Returns the settings, the strain measures and
 /// the notes.
 pub(super) fn analysis(

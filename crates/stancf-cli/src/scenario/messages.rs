@@ -4,17 +4,7 @@
 
 use super::ScenarioError;
 
-/// The longest piece of the user's input echoed in a message (in
-/// characters); longer pieces are cut with an ellipsis.
-pub const MAX_ECHO: usize = 200;
-
-/// `s` cut to at most `max` characters, with "..." (an ellipsis) where cut.
-pub fn clip(s: &str, max: usize) -> String {
-    match s.char_indices().nth(max) {
-        None => s.to_string(),
-        Some((end, _)) => format!("{}…", &s[..end]),
-    }
-}
+pub use crate::echo::{clip, MAX_ECHO};
 
 /// A TOML value in a message: its type and (clipped) value.
 pub(super) fn describe_value(v: &toml::Value) -> String {

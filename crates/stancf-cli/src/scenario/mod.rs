@@ -72,8 +72,8 @@ pub struct Scenario {
 /// Reads and validates a scenario file.
 pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| ScenarioError(format!("{file}: cannot read the file: {e}")))?;
+    let text =
+        crate::input_file::read_text(path).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
     parse(&text, &file, path)
 }
 
@@ -96,13 +96,28 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
         return moordyn::deck_scenario(&deck, file, path, title, None).map(Input::System);
     }
     let ctx = Ctx { file };
-    let raw: RawScenario =
-        toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
+    let raw = raw_scenario(text, file)?;
     if raw.is_system() {
         let title = title_of(raw.title.clone(), path);
         return system::system_scenario(&ctx, raw, title, path).map(Input::System);
     }
     cable_scenario(&ctx, raw, path).map(Input::Cable)
+}
+
+/// The TOML tables of a scenario; a file that is not TOML at all is told
+/// what stancf reads (a TOML scenario or a MoorDyn v2 deck, known by its
+/// dashed section headers).
+fn raw_scenario(text: &str, file: &str) -> Result<RawScenario, ScenarioError> {
+    toml::from_str(text).map_err(|e| {
+        let mut err = messages::toml_error(file, text, &e);
+        if text.parse::<toml::Table>().is_err() {
+            err.0.push_str(
+                "\n(stancf reads TOML scenarios and MoorDyn v2 decks; this file is not TOML, and \
+                 it has no MoorDyn section header, a line such as --- LINE TYPES ---)",
+            );
+        }
+        err
+    })
 }
 
 /// The title: the file's `title`, or its stem.
@@ -119,8 +134,14 @@ fn title_of(title: Option<String>, path: &Path) -> String {
 /// `path`). A system is refused (see [`parse_input`]).
 pub fn parse(text: &str, file: &str, path: &Path) -> Result<Scenario, ScenarioError> {
     let ctx = Ctx { file };
-    let raw: RawScenario =
-        toml::from_str(text).map_err(|e| messages::toml_error(file, text, &e))?;
+    if crate::moordyn::looks_like_moordyn(text) {
+        return Err(ScenarioError(format!(
+            "{file}: a MoorDyn deck describes a system of lines, which this command does not \
+             take in this version (it takes a single-cable TOML scenario; run the deck with \
+             `stancf run` or check it with `stancf check`)"
+        )));
+    }
+    let raw = raw_scenario(text, file)?;
     if raw.is_system() {
         return Err(ctx.err(
             "lines",

@@ -29,12 +29,14 @@ use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
 
-/// The deck in the file at `path`; errors name the file (and its line).
-pub(super) fn load_deck(path: &Path) -> Result<Deck, ScenarioError> {
+/// The deck in the file at `path`, as the scenario's `key` names it
+/// (under `ctx`); errors name the deck and its line, or, for a file that
+/// cannot be read at all, the scenario's key too.
+pub(super) fn load_deck(ctx: &Ctx, key: &str, path: &Path) -> Result<Deck, ScenarioError> {
     let file = path.display().to_string();
     moordyn::load(path).map_err(|e| match e.line {
         Some(_) => ScenarioError(format!("{file}: {e}")),
-        None => ScenarioError(e.message),
+        None => ctx.err(key, e.message),
     })
 }
 
@@ -147,8 +149,11 @@ pub(super) fn deck_scenario(
         kind: Some("static".into()),
         ..RawAnalysis::default()
     };
-    let (analysis, measures, initial, notes) =
+    let (mut analysis, measures, initial, notes) =
         analysis_part(&ctx, Some(raw), InitialShape::Static)?;
+    // A deck alone is static; its dtM is the step of a coupled run of it
+    // (checked with the other values, crate::input_scales).
+    analysis.time_step = deck.option(SupportedOption::TimeStep).unwrap_or(0.0);
     Ok(SystemScenario {
         title,
         line_types,

@@ -87,7 +87,7 @@ fn deck_current(deck: &Deck, file: &str, path: &Path) -> Result<Option<Current>,
 /// `z ux uy uz` (m, m/s; z up, the still surface z = 0), blank lines
 /// skipped, z strictly increasing or decreasing. Errors name the line.
 pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the file: {e}"))?;
+    let text = crate::input_file::read_text(path)?;
     let mut rows = Vec::new();
     let mut lines = Vec::new();
     for (n, l) in text.lines().enumerate().skip(CURRENT_PROFILE_HEADER_LINES) {

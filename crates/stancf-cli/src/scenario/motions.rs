@@ -149,8 +149,7 @@ pub(super) type MotionFileError = String;
 /// Reads and checks the table of `path` (as the scenario wrote it:
 /// `shown`).
 pub(super) fn read_motion_file(path: &Path, shown: &str) -> Result<MotionTable, MotionFileError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("{shown}: cannot read the motion file: {e}"))?;
+    let text = crate::input_file::read_text(path).map_err(|e| format!("{shown}: {e}"))?;
     parse_motion_table(&text, shown)
 }
 
@@ -222,11 +221,26 @@ fn header_columns(header: &str) -> Result<[usize; 4], String> {
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     let mut out = [0usize; 4];
     let mut seen = [false; 4];
+    // The line is quoted only when it looks like a table's header (a few
+    // short names between commas): a file that is no motion table at all
+    // (a password file, a binary) is not echoed.
+    let plausible = names.len() > 1
+        && names.iter().all(|n| {
+            n.len() <= 12
+                && n.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || "_ ()[]/".contains(c))
+        });
     let bad = || {
-        format!(
-            "the header must name the columns t, x, y and z (in any order), got \"{}\"",
-            super::clip(header, 60)
-        )
+        if plausible {
+            format!(
+                "the header must name the columns t, x, y and z (in any order), got \"{}\"",
+                super::clip(header, 60)
+            )
+        } else {
+            "the first line is not a header of column names: a motion file is a CSV table \
+             with the header t,x,y,z and rows of 4 numbers"
+                .to_string()
+        }
     };
     if names.len() != 4 {
         return Err(bad());
@@ -260,6 +274,10 @@ mod tests {
         for (text, want) in [
             ("", "m.csv: the motion file is empty"),
             ("t,x,y\n0,0,0\n", "m.csv line 1: the header"),
+            (
+                "root:x:0:0:root:/root:/bin/bash\n",
+                "m.csv line 1: the first line is not a header of column names",
+            ),
             ("t,x,y,x\n", "m.csv line 1: the header"),
             (
                 "t,x,y,z\n0,0,0,0\n1,0,a,0\n",

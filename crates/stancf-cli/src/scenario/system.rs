@@ -181,7 +181,7 @@ pub(super) fn system_scenario(
             }
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
-        let deck = super::moordyn::load_deck(&deck_path)?;
+        let deck = super::moordyn::load_deck(ctx, "system.moordyn", &deck_path)?;
         let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
         let deck_file = deck_path.display().to_string();
         let mut sc = super::moordyn::deck_scenario(
@@ -285,7 +285,13 @@ pub(super) fn analysis_part(
     };
     let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
     let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
-    let (analysis, mut measures, notes) = analysis::analysis(ctx, raw, others)?;
+    let halvings_given = raw.as_ref().is_some_and(|a| a.step_halvings.is_some());
+    let (mut analysis, mut measures, notes) = analysis::analysis(ctx, raw, others)?;
+    if !halvings_given {
+        // A system's failed step is halved unless the scenario says
+        // otherwise (docs/method.md §11.13).
+        analysis.step_halvings = stancf::system::DEFAULT_STEP_HALVINGS;
+    }
     if !axial_given {
         measures.axial_strain = stancf::AxialStrain::Engineering;
     }

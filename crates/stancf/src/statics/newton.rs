@@ -25,6 +25,18 @@ pub(crate) trait StaticEquations {
     fn converged(&mut self, x: &[f64]);
 }
 
+/// A static Newton iteration whose scaled residual has met the tolerance
+/// at this many iterations in a row is converged, whatever its
+/// increments. A well-conditioned iteration meets both criteria within an
+/// iteration or two of the residual's (Newton converges quadratically);
+/// one whose increments keep wandering with the forces balanced moves the
+/// unknowns along a direction the forces do not determine: a nearly
+/// singular Jacobian (a slack line's soft bending, EI_eff of (M33), a
+/// free point between slack lines) turns the residual's round-off into
+/// increments of 1e-8 to 1e-6 (the midwater bridles of docs/method.md
+/// §6.8, at residuals of 5e-15 to 4e-13).
+const SETTLED_ITERATIONS: usize = 4;
+
 /// The unknowns, the factors and the position on the load path.
 pub(crate) struct StaticNewton<F: Factorization> {
     pub x: Vec<f64>,
@@ -141,14 +153,22 @@ impl<F: Factorization> StaticNewton<F> {
         let max_step = 0.2;
         let mut radius = max_step;
         let mut increment = f64::INFINITY;
+        let mut settled = 0;
         for k in 0..=self.settings.max_iterations {
             eq.evaluate(&self.x, &mut self.residual, Some(&mut self.jacobian));
             eq.row_weights(&self.jacobian, &mut self.row_weight);
             let r = self.residual_norm();
+            if std::env::var("DBGN").is_ok() {
+                eprintln!("lambda {} k {k} r {r:e} inc {increment:e}", self.lambda);
+            }
             if !r.is_finite() {
                 return Err(FailureKind::NonFinite);
             }
             if r <= tol && increment <= tol {
+                return Ok((k, r, increment));
+            }
+            settled = if r <= tol { settled + 1 } else { 0 };
+            if settled >= SETTLED_ITERATIONS {
                 return Ok((k, r, increment));
             }
             if k == self.settings.max_iterations {

@@ -36,7 +36,7 @@ mod statics;
 mod step_equations;
 
 pub use balance::balanced_points;
-pub use halving::MAX_STEP_HALVINGS;
+pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,

@@ -163,7 +163,7 @@ impl SystemSimulation {
             mass,
             point_momentum: vec![[0.0; 3]; system.points().len()],
             point_water_work: 0.0,
-            step_halvings: 0,
+            step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             forces_at_time: ForcesAtTime::new(lines.len()),
             point_nodes: vec![PointNodes::default(); system.points().len()],

@@ -28,6 +28,8 @@ struct Outcome {
     increments: usize,
     t: f64,
     failure: Option<SolverError>,
+    /// The failure was a time step's (not the static solve's).
+    failed_stepping: bool,
     interrupted: bool,
 }
 
@@ -114,6 +116,7 @@ pub(super) fn run_system(
         increments: 0,
         t: 0.0,
         failure: None,
+        failed_stepping: false,
         interrupted: false,
     };
     // history.csv accounts for the damping's work in a damped dynamic run.
@@ -185,12 +188,44 @@ pub(super) fn run_system(
         } else {
             format!("no equilibrium was reached; {shown} holds the result files' headers")
         };
-        return Err(Failure::Solver(format!("{}: {f}; {kept}", path.display())));
+        let hint = if outcome.failed_stepping {
+            halving_hint(sc.analysis.step_halvings)
+        } else {
+            String::new()
+        };
+        return Err(Failure::Solver(format!(
+            "{}: {f}{hint}; {kept}",
+            path.display()
+        )));
     }
     if opts.quiet {
         return Ok(String::new());
     }
     Ok(report(&sc, &outcome, wall, place))
+}
+
+/// What a failed time step's message adds on its halvings
+/// (docs/method.md §11.13): that none were taken, or that `halvings` were
+/// taken and what to try next.
+fn halving_hint(halvings: u32) -> String {
+    use stancf::system::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
+    if halvings == 0 {
+        format!(
+            " (analysis.step_halvings = 0: the failed step was not taken again in halves; \
+             leave step_halvings out for the default {DEFAULT_STEP_HALVINGS}, or take a \
+             shorter analysis.time_step)"
+        )
+    } else if halvings < MAX_STEP_HALVINGS {
+        format!(
+            " (after the step was halved {halvings} times, analysis.step_halvings: raise it, \
+             up to {MAX_STEP_HALVINGS}, or take a shorter analysis.time_step)"
+        )
+    } else {
+        format!(
+            " (after the step was halved {halvings} times, the most there are: take a shorter \
+             analysis.time_step)"
+        )
+    }
 }
 
 /// The axial strain below which a line without compression is reported
@@ -276,6 +311,7 @@ fn step_through(
             }
             Err(f) => {
                 outcome.failure = Some(f);
+                outcome.failed_stepping = true;
                 break;
             }
         }

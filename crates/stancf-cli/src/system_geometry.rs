@@ -1,0 +1,135 @@
+//! The geometry of a system checked before it is solved (issue 28, item
+//! 9): a point below the seabed, or points that lines cannot reach, have
+//! no static equilibrium the solver can find, and used to end as "Newton
+//! did not converge at load factor 0". `check` and `run` name the point
+//! (how far below the bed) or the line (its span against its length)
+//! instead, as the user wrote them ([`crate::scenario::names`]).
+
+use crate::scenario::{PointType, SystemScenario};
+use crate::Failure;
+use stancf::error::Sig;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+/// The largest strain a line may need to span its points: 20 %, above the
+/// breaking strain of every mooring material (steel wire 1-2 %, chain
+/// 2-3 %, polyester 10-15 %, nylon up to 20 %).
+pub const MAX_SPAN_STRAIN: f64 = 0.2;
+
+/// How far a point may lie below the seabed (m): 1 mm and 1e-6 of the
+/// depth, the rounding of coordinates written to a few digits.
+fn bed_tolerance(depth: f64) -> f64 {
+    1e-3 + 1e-6 * depth
+}
+
+/// What `check` and `run` refuse in the geometry of `sc` (see the module
+/// documentation); `coupled_placed` is false where a coupling code, not
+/// the scenario, places the coupled points (their positions then are not
+/// checked).
+pub fn check_geometry(file: &str, sc: &SystemScenario, coupled_placed: bool) -> Result<(), Failure> {
+    let placed = |p: usize| match sc.points[p].kind {
+        PointType::Fixed => true,
+        PointType::Coupled => coupled_placed,
+        PointType::Free => false,
+    };
+    if let Some(w) = &sc.water {
+        for (p, pt) in sc.points.iter().enumerate() {
+            if !placed(p) && pt.kind != PointType::Free {
+                continue;
+            }
+            let [x, y, z] = pt.position;
+            let bed = -w.depth + w.seabed.slope[0] * x + w.seabed.slope[1] * y;
+            if bed - z > bed_tolerance(w.depth) {
+                let depth_key = sc
+                    .names
+                    .option("water.depth", crate::moordyn::SupportedOption::WaterDepth);
+                return Err(Failure::Input(format!(
+                    "{file}: {}, {depth_key}: point {} at z = {} m is {} m below the seabed \
+                     (z = {} m there): move the point up to the bed, or give the water's \
+                     depth",
+                    sc.names.point(p, "position", "Z"),
+                    pt.id,
+                    Sig(z),
+                    Sig(bed - z),
+                    Sig(bed)
+                )));
+            }
+        }
+    }
+    for a in (0..sc.points.len()).filter(|&p| placed(p)) {
+        let reach = reach_from(sc, a);
+        for (b, &(length, last_line)) in reach.iter().enumerate() {
+            if b == a || !placed(b) || !length.is_finite() {
+                continue;
+            }
+            let span = distance(sc.points[a].position, sc.points[b].position);
+            if span > (1.0 + MAX_SPAN_STRAIN) * length {
+                let line = last_line.expect("a reached point has a line to it");
+                let via = if reach_is_direct(sc, line, a, b) {
+                    format!("line {} is {} m long", sc.lines[line].id, Sig(length))
+                } else {
+                    format!(
+                        "the lines between them (through free points) are {} m long at most",
+                        Sig(length)
+                    )
+                };
+                return Err(Failure::Input(format!(
+                    "{file}: {}: points {} and {} are {} m apart and {via}: spanning them \
+                     would stretch the lines by {:.0} %, beyond the {:.0} % of any mooring \
+                     material's breaking strain; lengthen the line or move its points",
+                    sc.names.line(line, "length", "UnstrLen"),
+                    sc.points[a].id,
+                    sc.points[b].id,
+                    Sig(span),
+                    100.0 * (span / length - 1.0),
+                    100.0 * MAX_SPAN_STRAIN
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether `line` alone joins points `a` and `b`.
+fn reach_is_direct(sc: &SystemScenario, line: usize, a: usize, b: usize) -> bool {
+    let ends = sc.lines[line].ends;
+    (ends == [Some(a), Some(b)]) || (ends == [Some(b), Some(a)])
+}
+
+/// The shortest total length of lines from point `a` to each point, the
+/// path passing through free points only (a fixed or coupled point ends
+/// it), and the last line of that path (Dijkstra's algorithm; infinite
+/// where no such path goes).
+fn reach_from(sc: &SystemScenario, a: usize) -> Vec<(f64, Option<usize>)> {
+    let n = sc.points.len();
+    let mut best = vec![(f64::INFINITY, None); n];
+    best[a].0 = 0.0;
+    // Lengths are positive: their bits order as the lengths do.
+    let mut queue = BinaryHeap::from([Reverse((0u64, a))]);
+    while let Some(Reverse((bits, p))) = queue.pop() {
+        let d = f64::from_bits(bits);
+        if d > best[p].0 {
+            continue;
+        }
+        if p != a && sc.points[p].kind != PointType::Free {
+            continue;
+        }
+        for (i, l) in sc.lines.iter().enumerate() {
+            let other = match l.ends {
+                [Some(x), Some(y)] if x == p => y,
+                [Some(x), Some(y)] if y == p => x,
+                _ => continue,
+            };
+            let through = d + l.length;
+            if through < best[other].0 {
+                best[other] = (through, Some(i));
+                queue.push(Reverse((through.to_bits(), other)));
+            }
+        }
+    }
+    best
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}

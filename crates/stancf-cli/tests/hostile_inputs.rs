@@ -1,0 +1,184 @@
+//! Input files a careless or hostile user gives (issue 28, items 12, 13,
+//! 14 and 18): devices, folders and oversized files are refused before
+//! anything is read; a deck's lines are echoed at most 200 characters
+//! long; a file that is neither TOML nor a deck is told what stancf
+//! reads; a file that is no motion table is not quoted. Each is exit 2
+//! naming the file (and the key that names it), with nothing written.
+
+mod common;
+use common::*;
+use std::path::Path;
+
+/// `check` and `run` of `file` exit 2 with stderr holding each of
+/// `needles` and none of `absent`, at most `max_bytes` long; `run`
+/// writes nothing. Returns the stderr of `check`.
+fn refused(dir: &Path, file: &Path, needles: &[&str], absent: &[&str], max_bytes: usize) -> String {
+    let out = dir.join("out");
+    let mut first = String::new();
+    for cmd in ["check", "run"] {
+        let mut args = vec![cmd, file.to_str().unwrap()];
+        if cmd == "run" {
+            args.extend(["--out", out.to_str().unwrap()]);
+        }
+        let o = stancf(&args);
+        let (_, err) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{cmd} {file:?}: {err}");
+        assert!(
+            err.len() <= max_bytes,
+            "{cmd}: {} bytes of stderr",
+            err.len()
+        );
+        for n in needles {
+            assert!(err.contains(n), "{cmd}: no {n:?} in {err}");
+        }
+        for a in absent {
+            assert!(!err.contains(a), "{cmd}: {a:?} in {err}");
+        }
+        if first.is_empty() {
+            first = err;
+        }
+    }
+    assert!(!out.exists());
+    first
+}
+
+#[test]
+fn devices_folders_and_oversized_files_are_refused_by_every_reader() {
+    let d = scratch("input-files");
+    refused(
+        &d,
+        Path::new("/dev/zero"),
+        &["/dev/zero", "not a regular file (a device)"],
+        &[],
+        500,
+    );
+    refused(&d, &d, &["not a regular file (a folder)"], &[], 500);
+    let big = d.join("big.toml");
+    std::fs::File::create(&big)
+        .unwrap()
+        .set_len(64 * 1024 * 1024 + 1)
+        .unwrap();
+    refused(&d, &big, &["big.toml", "above the 64 MiB"], &[], 500);
+    // Files a scenario refers to: a deck and a motion table.
+    let deck = write_scenario(
+        &d,
+        "deck.toml",
+        "[system]\nmoordyn = \"/dev/zero\"\n[analysis]\ntype = \"static\"\n",
+    );
+    refused(
+        &d,
+        &deck,
+        &["deck.toml: system.moordyn: /dev/zero: not a regular file"],
+        &[],
+        500,
+    );
+    let motion = format!(
+        "{}[[motions]]\npoint = 2\nfile = \"/dev/zero\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 1e-3\nduration = 0.01\n",
+        one_rope("m", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
+    );
+    let motion = write_scenario(&d, "motion.toml", &motion);
+    refused(
+        &d,
+        &motion,
+        &["motion.toml", "/dev/zero", "not a regular file"],
+        &[],
+        500,
+    );
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn a_file_that_is_no_motion_table_is_not_quoted() {
+    let d = scratch("passwd-motion");
+    std::fs::write(
+        d.join("passwd"),
+        "root:x:0:0:root:/root:/bin/bash\nuser:x:1000\n",
+    )
+    .unwrap();
+    let sc = format!(
+        "{}[[motions]]\npoint = 2\nfile = \"passwd\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 1e-3\nduration = 0.01\n",
+        one_rope("m", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
+    );
+    let sc = write_scenario(&d, "bad.toml", &sc);
+    refused(
+        &d,
+        &sc,
+        &["passwd line 1: the first line is not a header of column names"],
+        &["root"],
+        1000,
+    );
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn a_deck_with_cr_line_ends_reads_and_a_huge_line_is_echoed_cut() {
+    let d = scratch("cr-deck");
+    let deck = std::fs::read_to_string(repo_file("examples/midwater-bridle-moordyn.txt")).unwrap();
+    // Classic Mac line ends: the deck reads as it does with \n.
+    let cr = write_scenario(&d, "cr.txt", &deck.replace('\n', "\r"));
+    let o = stancf(&["check", cr.to_str().unwrap()]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    // 8 MB in one word, where an option's name goes.
+    let huge = deck.replace(
+        "0.0005    dtM",
+        &format!("0.0005 {}", "x".repeat(8_000_000)),
+    );
+    let huge = write_scenario(&d, "huge.txt", &huge);
+    let err = refused(&d, &huge, &["huge.txt: line", "…"], &[], 2500);
+    assert!(err.len() < 2500, "{}", err.len());
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn a_file_neither_toml_nor_a_deck_and_a_deck_without_lines_say_so() {
+    let d = scratch("neither");
+    let table = write_scenario(
+        &d,
+        "curve.dat",
+        "Strain      Tension\n(-) (N)\n0 0\n0.1 1e5\n",
+    );
+    refused(
+        &d,
+        &table,
+        &["curve.dat", "not TOML", "no MoorDyn section header"],
+        &[],
+        2000,
+    );
+    let deck = std::fs::read_to_string(repo_file("examples/midwater-bridle-moordyn.txt")).unwrap();
+    let (head, rest) = deck
+        .split_once("-------------------------------- LINES")
+        .unwrap();
+    let options = &rest[rest
+        .find("------------------------------- OPTIONS")
+        .unwrap()..];
+    write_scenario(&d, "nolines.txt", &format!("{head}{options}"));
+    let sc = write_scenario(
+        &d,
+        "bad.toml",
+        "[system]\nmoordyn = \"nolines.txt\"\n[analysis]\ntype = \"static\"\n",
+    );
+    refused(
+        &d,
+        &sc,
+        &[
+            "bad.toml: system.moordyn:",
+            "nolines.txt: the deck defines no lines",
+        ],
+        &[],
+        2000,
+    );
+    // `sweep` takes single cables: a deck is told so, not parsed as TOML.
+    let o = stancf(&[
+        "sweep",
+        d.join("nolines.txt").to_str().unwrap(),
+        "--set",
+        "analysis.time_step=1,2",
+    ]);
+    let (_, err) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("a MoorDyn deck describes a system"), "{err}");
+    assert!(!err.contains("TOML parse error"), "{err}");
+    std::fs::remove_dir_all(&d).unwrap();
+}
