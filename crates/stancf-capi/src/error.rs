@@ -53,6 +53,9 @@ impl From<stancf::coupling::CouplingError> for Error {
         let code = match e {
             CouplingError::Input(_) => STANCF_INVALID_VALUE,
             CouplingError::Solver(_) => STANCF_NUMERICAL_ERROR,
+            // The C library never asks a call to stop: one that stopped
+            // is a bug of the library.
+            CouplingError::Interrupted { .. } => STANCF_UNHANDLED_ERROR,
         };
         Error::new(code, e.to_string())
     }

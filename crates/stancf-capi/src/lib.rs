@@ -318,7 +318,7 @@ pub unsafe extern "C" fn stancf_restore(s: *mut StancfSystem, state: *const Stan
         let state = state
             .as_ref()
             .ok_or_else(|| Error::input("the state is NULL"))?;
-        sys.coupled.handle.restore(&state.0);
+        sys.coupled.handle.restore(&state.0)?;
         sys.last = None;
         Ok(())
     })

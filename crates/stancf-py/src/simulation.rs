@@ -5,7 +5,7 @@
 //! and the static solve run without the GIL.
 
 use crate::{RunFailed, ScenarioError};
-use pyo3::exceptions::PyIndexError;
+use pyo3::exceptions::{PyIndexError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
 use stancf::coupling::{CoupledForces, CoupledState, CoupledSystem, CouplingError};
 use std::path::PathBuf;
@@ -16,6 +16,7 @@ fn coupling_err(e: CouplingError) -> PyErr {
     match e {
         CouplingError::Input(m) => ScenarioError::new_err(m.to_string()),
         CouplingError::Solver(s) => RunFailed::new_err((s.to_string(), s.time, s.step, s.residual)),
+        e @ CouplingError::Interrupted { .. } => PyKeyboardInterrupt::new_err(e.to_string()),
     }
 }
 
@@ -128,9 +129,10 @@ impl PySimulation {
         PyState(self.handle.save())
     }
 
-    fn restore(&mut self, state: &PyState) {
-        self.handle.restore(&state.0);
+    fn restore(&mut self, state: &PyState) -> PyResult<()> {
+        self.handle.restore(&state.0).map_err(coupling_err)?;
         self.last = None;
+        Ok(())
     }
 
     /// Point `index`'s (in the order of `point_ids`) position, velocity
