@@ -318,15 +318,17 @@ mod tests {
     use super::{StaticEquations, StaticNewton};
     use crate::band::{BandLu, BandMatrix};
     use crate::error::SolverError;
-    use crate::linear::{AddEntries, Jacobian};
     use crate::statics::StaticSettings;
 
-    /// R(x; t) = x - t, not finite where `admits(t, last)` says no (`last`:
-    /// the load factor of the last converged increment).
+    /// Whether Newton converges at load factor t after an increment
+    /// converged at `last`: (t, last) -> yes or no.
+    type Admits = fn(f64, f64) -> bool;
+
+    /// R(x; t) = x - t, not finite where `admits` says no.
     struct Path {
         t: f64,
         last: f64,
-        admits: fn(f64, f64) -> bool,
+        admits: Admits,
     }
 
     impl StaticEquations for Path {
@@ -359,7 +361,7 @@ mod tests {
     /// Advances along `admits`'s path (20 nominal increments) until the
     /// driver ends it, or 10^6 increments: the increments taken and the
     /// error.
-    fn walk(admits: fn(f64, f64) -> bool) -> (usize, Option<SolverError>) {
+    fn walk(admits: Admits) -> (usize, Option<SolverError>) {
         let mut eq = Path {
             t: 0.0,
             last: 0.0,
@@ -386,7 +388,7 @@ mod tests {
     fn a_load_path_that_cannot_pass_a_load_factor_ends_with_an_error_naming_it() {
         // 0.123456789 is not met by sums of 0.05 and its halves: the
         // driver used to take increments of zero below it forever.
-        let ledges: [(f64, fn(f64, f64) -> bool); 5] = [
+        let ledges: [(f64, Admits); 5] = [
             (0.5, |t, _| t <= 0.5),
             (0.3, |t, _| t <= 0.3),
             (0.7, |t, _| t <= 0.7),
