@@ -178,20 +178,37 @@ fn a_stopped_interval_stays_at_its_last_converged_step_and_the_next_call_continu
     let CouplingError::Interrupted { time } = e else {
         panic!("not an interruption: {e}")
     };
-    assert!((time - (t0 + 3e-4)).abs() < 1e-15, "{time}");
+    // Asked after steps 1 to 4, stopped after the 4th.
+    assert!((time - (t0 + 4e-4)).abs() < 1e-15, "{time}");
     assert_eq!(h.time(), time);
     // The coupled point (index 2) where the interval's line has it.
     let at = h.point(2).unwrap().position;
-    let want = start[0] + 0.3 * (end[0] - start[0]);
+    let want = start[0] + 0.4 * (end[0] - start[0]);
     assert!((at[0] - want).abs() < 1e-15, "{} vs {want}", at[0]);
     // The rest of the interval from there: the forces of one call over
     // the whole interval, to round-off of the motion's sums.
     let rest = h.step_to(t1, &end, None).unwrap();
     let all = whole.step_to(t1, &end, None).unwrap();
-    assert_eq!(rest.steps, 7);
+    assert_eq!(rest.steps, 6);
     for (a, b) in rest.last_step.iter().zip(&all.last_step) {
         assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{a} vs {b}");
     }
+}
+
+#[test]
+fn a_call_asked_to_stop_at_once_still_takes_one_step_and_asks_nothing_after_the_last() {
+    let (mut h, x) = stepped(three_to_a_point(4));
+    let t0 = h.time();
+    let e = h.step_to_with(t0 + 5e-4, &x, None, &mut || true).unwrap_err();
+    assert_eq!(e, CouplingError::Interrupted { time: h.time() });
+    assert!((h.time() - (t0 + 1e-4)).abs() < 1e-15);
+    let mut asked = 0;
+    let t1 = h.time() + 1e-4;
+    let one = h.step_to_with(t1, &x, None, &mut || {
+        asked += 1;
+        true
+    });
+    assert_eq!((one.unwrap().steps, asked), (1, 0));
 }
 
 #[test]

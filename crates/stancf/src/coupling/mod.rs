@@ -355,11 +355,12 @@ impl CoupledSystem {
         self.step_to_with(t_next, x, xd, &mut || false)
     }
 
-    /// [`Self::step_to`], asking `stop` before every internal step: when
-    /// it says true, the call ends with [`CouplingError::Interrupted`] and
-    /// the state is left as after a solver failure (at the last converged
-    /// step, the coupled points on this interval's motion), so a later
-    /// call continues from there.
+    /// [`Self::step_to`], asking `stop` between two internal steps (after
+    /// each but the last): when it says true, the call ends with
+    /// [`CouplingError::Interrupted`] and the state is left as after a
+    /// solver failure (at the last converged step, at least one step after
+    /// the time reached and before `t_next`, the coupled points on this
+    /// interval's motion), so a later call continues from there.
     pub fn step_to_with(
         &mut self,
         t_next: f64,
@@ -389,23 +390,22 @@ impl CoupledSystem {
         }
         running.sim.set_time_step(h);
         let mut impulse = vec![0.0; x.len()];
-        for _ in 0..steps {
-            let stepped = if stop() {
-                Err(CouplingError::Interrupted {
-                    time: running.sim.time(),
-                })
-            } else {
-                running.sim.step().map_err(CouplingError::from)
-            };
-            if let Err(e) = stepped {
+        for taken in 1..=steps {
+            if let Err(e) = running.sim.step() {
                 running.stop_on_motion(&coupled);
-                return Err(e);
+                return Err(e.into());
             }
             for (k, &p) in coupled.iter().enumerate() {
                 let f = running.sim.point_force(p);
                 for c in 0..3 {
                     impulse[3 * k + c] += f[c] * h;
                 }
+            }
+            if taken < steps && stop() {
+                running.stop_on_motion(&coupled);
+                return Err(CouplingError::Interrupted {
+                    time: running.sim.time(),
+                });
             }
         }
         running.position = x.to_vec();
