@@ -199,7 +199,9 @@ fn a_stopped_interval_stays_at_its_last_converged_step_and_the_next_call_continu
 fn a_call_asked_to_stop_at_once_still_takes_one_step_and_asks_nothing_after_the_last() {
     let (mut h, x) = stepped(three_to_a_point(4));
     let t0 = h.time();
-    let e = h.step_to_with(t0 + 5e-4, &x, None, &mut || true).unwrap_err();
+    let e = h
+        .step_to_with(t0 + 5e-4, &x, None, &mut || true)
+        .unwrap_err();
     assert_eq!(e, CouplingError::Interrupted { time: h.time() });
     assert!((h.time() - (t0 + 1e-4)).abs() < 1e-15);
     let mut asked = 0;
