@@ -7,29 +7,62 @@ use crate::integrator::StepSettings;
 use crate::system::System;
 use std::fmt::{self, Write};
 
+/// The part of an [`Identity`] the builders of a handle do not change:
+/// the system and its step settings, hashed once (the `Debug` text of a
+/// system of 2000 elements is about 8 MB: some 50 ms).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct SystemDigest {
+    lines: usize,
+    points: usize,
+    /// [`Fnv1a`] of the system's and the step settings' `Debug` text.
+    hash: u64,
+}
+
+impl SystemDigest {
+    /// The digest of `system` stepped with `steps`: a 64-bit FNV-1a hash
+    /// over the `Debug` text of the system (every line's model: node
+    /// count, element type, DOFs per node, material, loads, water, seabed
+    /// and constraints; every point: its kind, motion, position, mass and
+    /// load; gravity) and of the step settings, streamed into the hash
+    /// without building the text. `Debug` prints every field and floats to
+    /// the bit (Rust prints the shortest text that reads back to the same
+    /// float), so two handles built from the same scenario text get the
+    /// same value and a field added to a model later is covered without
+    /// being listed here; the system holds no map, pointer or clock whose
+    /// text could differ between two builds of it.
+    pub(super) fn of(system: &System, steps: &StepSettings) -> Self {
+        let mut hash = Fnv1a(0xcbf2_9ce4_8422_2325);
+        // Fnv1a's `write_str` cannot fail.
+        let _ = write!(hash, "{system:?}|{steps:?}");
+        SystemDigest {
+            lines: system.lines().len(),
+            points: system.points().len(),
+            hash: hash.0,
+        }
+    }
+}
+
 /// What makes the states of two handles interchangeable: the counts a
 /// message can name and a fingerprint of everything else.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) struct Identity {
     lines: usize,
     points: usize,
-    /// [`fingerprint`] of the system, the coupled order, the step
-    /// settings and the step halvings.
+    /// The [`SystemDigest`]'s hash continued over the coupled points'
+    /// order and the step halvings.
     fingerprint: u64,
 }
 
 impl Identity {
-    /// The identity of a handle of `system` with these settings.
-    pub(super) fn of(
-        system: &System,
-        coupled: &[usize],
-        steps: &StepSettings,
-        step_halvings: u32,
-    ) -> Self {
+    /// The identity of a handle of the digested system with these
+    /// coupled points' order and step halvings.
+    pub(super) fn of(digest: &SystemDigest, coupled: &[usize], step_halvings: u32) -> Self {
+        let mut hash = Fnv1a(digest.hash);
+        let _ = write!(hash, "|{coupled:?}|{step_halvings}");
         Identity {
-            lines: system.lines().len(),
-            points: system.points().len(),
-            fingerprint: fingerprint(system, coupled, steps, step_halvings),
+            lines: digest.lines,
+            points: digest.points,
+            fingerprint: hash.0,
         }
     }
 
@@ -63,29 +96,6 @@ impl Identity {
 fn counts(lines: usize, points: usize) -> String {
     let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
     format!("{}, {}", plural(lines, "line"), plural(points, "point"))
-}
-
-/// A 64-bit FNV-1a hash over the `Debug` text of the system (every
-/// line's model: node count, element type, DOFs per node, material,
-/// loads, water, seabed and constraints; every point: its kind, motion,
-/// position, mass and load; gravity), the coupled points' order, the
-/// step settings and the step halvings, streamed into the hash without
-/// building the text. `Debug` prints every field and floats to the bit
-/// (Rust prints the shortest text that reads back to the same float), so
-/// two handles built from the same scenario text get the same value and
-/// a field added to a model later is covered without being listed here;
-/// the system holds no map, pointer or clock whose text could differ
-/// between two builds of it.
-fn fingerprint(
-    system: &System,
-    coupled: &[usize],
-    steps: &StepSettings,
-    step_halvings: u32,
-) -> u64 {
-    let mut hash = Fnv1a(0xcbf2_9ce4_8422_2325);
-    // Fnv1a's `write_str` cannot fail.
-    let _ = write!(hash, "{system:?}|{coupled:?}|{steps:?}|{step_halvings}");
-    hash.0
 }
 
 /// The FNV-1a hash (64 bits) of the text written into it.

@@ -28,7 +28,7 @@ use crate::integrator::{step_count, StepSettings};
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::statics::StaticSettings;
 use crate::system::{PointKind, System, SystemSimulation, SystemStatics};
-use identity::Identity;
+use identity::{Identity, SystemDigest};
 use std::fmt;
 
 /// The most internal steps one coupling call takes unless the handle is
@@ -144,6 +144,8 @@ pub struct CoupledSystem {
     /// [`SystemSimulation::set_step_halvings`]).
     step_halvings: u32,
     coupled: Vec<usize>,
+    /// The system and step settings hashed once, for [`Self::identity`].
+    digest: SystemDigest,
     /// Whose states this handle takes (see [`CoupledState`]); set by the
     /// constructor and the builders.
     identity: Identity,
@@ -182,8 +184,10 @@ impl CoupledSystem {
                 "the system has no coupled point for a coupling code to move",
             ));
         }
+        let digest = SystemDigest::of(&system, &steps);
         Ok(CoupledSystem {
-            identity: Identity::of(&system, &coupled, &steps, 0),
+            identity: Identity::of(&digest, &coupled, 0),
+            digest,
             system,
             seed,
             statics,
@@ -208,7 +212,7 @@ impl CoupledSystem {
             ));
         }
         self.step_halvings = halvings;
-        self.identity = Identity::of(&self.system, &self.coupled, &self.steps, halvings);
+        self.identity = Identity::of(&self.digest, &self.coupled, halvings);
         Ok(self)
     }
 
@@ -227,7 +231,7 @@ impl CoupledSystem {
             ));
         }
         self.coupled = order;
-        self.identity = Identity::of(&self.system, &self.coupled, &self.steps, self.step_halvings);
+        self.identity = Identity::of(&self.digest, &self.coupled, self.step_halvings);
         Ok(self)
     }
 
