@@ -5,7 +5,7 @@
 //! instead of a read of freed memory, and a handle closed twice is
 //! refused the second time.
 //!
-//! A token is [`TOKEN_BASE`] plus 16 times a number drawn once from a
+//! A token is `TOKEN_BASE` plus 16 times a number drawn once from a
 //! counter shared by systems and states: never reused, so a stale handle
 //! never reaches a newer system, and a state's token is never a system's.
 //! A system is locked for each call: calls on one handle from several

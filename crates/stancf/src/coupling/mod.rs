@@ -144,7 +144,7 @@ pub struct CoupledSystem {
     /// [`SystemSimulation::set_step_halvings`]).
     step_halvings: u32,
     coupled: Vec<usize>,
-    /// The system and step settings hashed once, for [`Self::identity`].
+    /// The system and step settings hashed once, for `identity`.
     digest: SystemDigest,
     /// Whose states this handle takes (see [`CoupledState`]); set by the
     /// constructor and the builders.
