@@ -12,7 +12,11 @@
  * (x, y, z), the points in the order of their ids (stancf_coupled_ids).
  * Every call returns STANCF_SUCCESS (0) or an error code, and keeps its
  * message for stancf_error_message() (per thread); none aborts or unwinds
- * into the caller. One handle is used by one thread at a time; separate
+ * into the caller. The handles (StancfSystem *, StancfState *) are tokens
+ * the library looks up, never reads: a handle closed or freed already, or
+ * not from stancf_create / stancf_save, is refused with
+ * STANCF_INVALID_INPUT. A handle is meant for one thread at a time; calls
+ * on one handle from several threads wait for each other. Separate
  * handles may step in separate threads.
  *
  * Build: cargo build --release --workspace  (target/release/libstancf_c.so)
@@ -31,15 +35,20 @@ extern "C" {
 #define STANCF_SUCCESS 0
 /* The scenario or deck cannot be read or is not valid. */
 #define STANCF_INVALID_INPUT_FILE -1
-/* A call that cannot be made: NULL handle or pointer, no such line, node
-   or point, a step before stancf_init, *t not the time reached. */
+/* A call that cannot be made: a NULL pointer; a handle that is closed,
+   freed or not from stancf_create / stancf_save (or a state given for a
+   system); no such line, node or point; a step before stancf_init; *t not
+   the time reached. Nothing is written. */
 #define STANCF_INVALID_INPUT -3
 /* The solver did not converge (the message gives time, step and
    residual); the system stays at its last converged step. */
 #define STANCF_NUMERICAL_ERROR -4
-/* A refused value: a wrong number of coupled DOFs, a value not finite. */
+/* A refused value, the system untouched: a wrong number of coupled DOFs,
+   a value not finite, a state saved from another system, an interval of
+   more internal steps than the handle's bound. */
 #define STANCF_INVALID_VALUE -6
-/* An internal error caught at the boundary (please report it). */
+/* An internal error caught at the boundary (please report it); the handle
+   is unusable from then on: close it. */
 #define STANCF_UNHANDLED_ERROR -255
 
 /* A coupled system and a saved state of one (opaque). */
@@ -50,7 +59,7 @@ typedef struct StancfState StancfState;
    (the message names the file and the key or line). Writes no file. */
 StancfSystem *stancf_create(const char *path);
 
-/* Frees the system; s is not used again. */
+/* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 
 /* *n = the number of coupled degrees of freedom, 3 per coupled point. */
@@ -77,7 +86,9 @@ int stancf_init_n(StancfSystem *s, unsigned int n, const double *x, const double
    else linearly; xd may be NULL); f = the lines' force on each coupled
    point (the mean over the last internal step); then *t += *dt. The
    interval is split into the fewest equal steps no longer than the
-   scenario's time step. */
+   scenario's time step; an interval of more steps than the handle's bound
+   (100000 unless stancf_set_max_interval_steps raised it) is refused with
+   STANCF_INVALID_VALUE before anything moves. */
 int stancf_step(StancfSystem *s, const double *x, const double *xd, double *f, double *t,
                 double *dt);
 
@@ -93,8 +104,15 @@ int stancf_interval_mean_force(StancfSystem *s, double *f);
 /* *t = the time reached (0 before stancf_init). */
 int stancf_time(StancfSystem *s, double *t);
 
+/* Lets one stancf_step take up to n internal steps (n >= 1; 100000 by
+   default): for a host that steps over long intervals on purpose. */
+int stancf_set_max_interval_steps(StancfSystem *s, uint64_t n);
+
 /* The whole state (NULL on error): stancf_restore brings it back and
-   stepping on gives the same bits. Free it with stancf_free_state. */
+   stepping on gives the same bits. Free it with stancf_free_state. A
+   state restores into its own system or one opened from the same file (a
+   restart); a state of another system is refused with
+   STANCF_INVALID_VALUE, the system untouched. */
 StancfState *stancf_save(StancfSystem *s);
 int stancf_restore(StancfSystem *s, const StancfState *state);
 int stancf_free_state(StancfState *state);

@@ -12,7 +12,8 @@ pub const STANCF_SUCCESS: c_int = 0;
 /// The scenario or deck cannot be read or is not valid (MoorDyn's
 /// `MOORDYN_INVALID_INPUT_FILE`).
 pub const STANCF_INVALID_INPUT_FILE: c_int = -1;
-/// A call that cannot be made: a NULL handle or pointer, a line, node or
+/// A call that cannot be made: a NULL pointer, a handle closed or freed
+/// already or not from `stancf_create` / `stancf_save`, a line, node or
 /// point that does not exist, a step before `stancf_init`, a time that is
 /// not the time reached (MoorDyn's `MOORDYN_INVALID_INPUT`).
 pub const STANCF_INVALID_INPUT: c_int = -3;
@@ -20,10 +21,13 @@ pub const STANCF_INVALID_INPUT: c_int = -3;
 /// residual, and the system stays at its last converged step (MoorDyn's
 /// `MOORDYN_NAN_ERROR`: a numerical failure).
 pub const STANCF_NUMERICAL_ERROR: c_int = -4;
-/// A value the system refuses: a wrong number of coupled DOFs, a value
-/// that is not finite (MoorDyn's `MOORDYN_INVALID_VALUE`).
+/// A value the system refuses, untouched: a wrong number of coupled DOFs,
+/// a value that is not finite, a state saved from another system, an
+/// interval of more internal steps than the handle's bound (MoorDyn's
+/// `MOORDYN_INVALID_VALUE`).
 pub const STANCF_INVALID_VALUE: c_int = -6;
-/// A panic inside the library, caught at the boundary (MoorDyn's
+/// A panic inside the library, caught at the boundary; the handle of the
+/// call is unusable from then on, but can be closed (MoorDyn's
 /// `MOORDYN_UNHANDLED_ERROR`).
 pub const STANCF_UNHANDLED_ERROR: c_int = -255;
 
@@ -53,6 +57,9 @@ impl From<stancf::coupling::CouplingError> for Error {
         let code = match e {
             CouplingError::Input(_) => STANCF_INVALID_VALUE,
             CouplingError::Solver(_) => STANCF_NUMERICAL_ERROR,
+            // The C library never asks a call to stop: one that stopped
+            // is a bug of the library.
+            CouplingError::Interrupted { .. } => STANCF_UNHANDLED_ERROR,
         };
         Error::new(code, e.to_string())
     }

@@ -9,10 +9,13 @@
 //! [`stancf::coupling::CoupledSystem`], the same code as Rust's and
 //! Python's `stancf.Simulation`. Every function returns a code (0 is
 //! success, [`error`] lists the others) and keeps its message for
-//! `stancf_error_message`; none unwinds into C.
+//! `stancf_error_message`; none unwinds into C. The pointers C holds are
+//! tokens of a registry ([`handles`]): a closed, freed or made-up handle
+//! is refused, never read.
 
 pub mod args;
 pub mod error;
+pub mod handles;
 pub mod lines;
 
 pub use lines::*;
@@ -23,14 +26,15 @@ use stancf_cli::coupling::Coupled;
 use std::ffi::{c_char, c_int, c_uint, CStr};
 use std::path::PathBuf;
 
-/// A coupled system (opaque to C): the handle and the forces of its last
-/// step.
+/// A coupled system (opaque to C, which holds a token of it): the handle
+/// and the forces of its last step.
 pub struct StancfSystem {
     coupled: Coupled,
     last: Option<CoupledForces>,
 }
 
-/// A saved state of a system (opaque to C), from `stancf_save`.
+/// A saved state of a system (opaque to C, which holds a token of it),
+/// from `stancf_save`.
 pub struct StancfState(CoupledState);
 
 /// The path of a C string.
@@ -68,35 +72,36 @@ pub unsafe extern "C" fn stancf_create(path: *const c_char) -> *mut StancfSystem
         let path = path_of(path)?;
         let coupled = stancf_cli::coupling::open(&path)
             .map_err(|e| Error::new(STANCF_INVALID_INPUT_FILE, e.to_string()))?;
-        Ok(Box::into_raw(Box::new(StancfSystem {
+        args::open_system(StancfSystem {
             coupled,
             last: None,
-        })))
+        })
     })
 }
 
-/// Frees a system (`MoorDyn_Close`). NULL is refused with
-/// `STANCF_INVALID_INPUT` (nothing to free).
+/// Frees a system (`MoorDyn_Close`); the handle is refused from then on.
+/// NULL, a handle closed already or not from `stancf_create` is refused
+/// with `STANCF_INVALID_INPUT` (nothing to free).
 ///
 /// # Safety
-/// `s` is NULL or a handle from `stancf_create` not yet closed; it is
-/// not used again.
+/// None: `s` is looked up, never read.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_close(s: *mut StancfSystem) -> c_int {
-    guard(|| args::free(s, "the system handle"))
+    guard(|| args::close_system(s))
 }
 
 /// The number of coupled degrees of freedom, 3 per coupled point
 /// (`MoorDyn_NCoupledDOF`).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `n` is NULL or writable.
+/// `s` is looked up, never read; `n` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_ncoupled_dof(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        *args::place(n, "n")? = sys.coupled.handle.coupled_dof() as c_uint;
-        Ok(())
+        args::with_system(s, |sys| {
+            *args::place(n, "n")? = sys.coupled.handle.coupled_dof() as c_uint;
+            Ok(())
+        })
     })
 }
 
@@ -104,15 +109,16 @@ pub unsafe extern "C" fn stancf_ncoupled_dof(s: *mut StancfSystem, n: *mut c_uin
 /// (`ncoupled_dof / 3` values).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `ids` is NULL or has room for
+/// `s` is looked up, never read; `ids` is NULL or has room for
 /// `ncoupled_dof / 3` values.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let known = &sys.coupled.coupled_ids;
-        args::room(ids, known.len(), "ids")?.copy_from_slice(known);
-        Ok(())
+        args::with_system(s, |sys| {
+            let known = &sys.coupled.coupled_ids;
+            args::room(ids, known.len(), "ids")?.copy_from_slice(known);
+            Ok(())
+        })
     })
 }
 
@@ -121,18 +127,19 @@ pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64)
 /// `stancf_init`.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `x` is NULL or has room for
+/// `s` is looked up, never read; `x` is NULL or has room for
 /// `ncoupled_dof` values.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_coupled_positions(s: *mut StancfSystem, x: *mut f64) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let h = &sys.coupled.handle;
-        let out = args::room(x, h.coupled_dof(), "x")?;
-        for (k, &p) in h.coupled_points().iter().enumerate() {
-            out[3 * k..3 * k + 3].copy_from_slice(&h.system().points()[p].position);
-        }
-        Ok(())
+        args::with_system(s, |sys| {
+            let h = &sys.coupled.handle;
+            let out = args::room(x, h.coupled_dof(), "x")?;
+            for (k, &p) in h.coupled_points().iter().enumerate() {
+                out[3 * k..3 * k + 3].copy_from_slice(&h.system().points()[p].position);
+            }
+            Ok(())
+        })
     })
 }
 
@@ -142,13 +149,15 @@ pub unsafe extern "C" fn stancf_coupled_positions(s: *mut StancfSystem, x: *mut 
 /// back. Call again to start over.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold
+/// `s` is looked up, never read; `x` (and `xd` unless NULL) hold
 /// `ncoupled_dof` doubles.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_init(s: *mut StancfSystem, x: *const f64, xd: *const f64) -> c_int {
     guard(|| {
-        let n = args::system(s)?.coupled.handle.coupled_dof();
-        init(s, n, x, xd)
+        args::with_system(s, |sys| {
+            let n = sys.coupled.handle.coupled_dof();
+            init(sys, n, x, xd)
+        })
     })
 }
 
@@ -156,7 +165,7 @@ pub unsafe extern "C" fn stancf_init(s: *mut StancfSystem, x: *const f64, xd: *c
 /// `STANCF_INVALID_VALUE` unless it is `ncoupled_dof`.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold `n`
+/// `s` is looked up, never read; `x` (and `xd` unless NULL) hold `n`
 /// doubles.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_init_n(
@@ -165,11 +174,19 @@ pub unsafe extern "C" fn stancf_init_n(
     x: *const f64,
     xd: *const f64,
 ) -> c_int {
-    guard(|| init(s, n as usize, x, xd))
+    guard(|| args::with_system(s, |sys| init(sys, n as usize, x, xd)))
 }
 
-unsafe fn init(s: *mut StancfSystem, n: usize, x: *const f64, xd: *const f64) -> Result<(), Error> {
-    let sys = args::system(s)?;
+/// `stancf_init` on a locked system, with arrays of `n` values.
+///
+/// # Safety
+/// `x` (and `xd` unless NULL) are NULL or hold `n` doubles.
+unsafe fn init(
+    sys: &mut StancfSystem,
+    n: usize,
+    x: *const f64,
+    xd: *const f64,
+) -> Result<(), Error> {
     let x = args::values(x, n, "x")?;
     let xd = args::optional_values(xd, n);
     sys.coupled.handle.initialize(x, xd)?;
@@ -188,7 +205,7 @@ unsafe fn init(s: *mut StancfSystem, n: usize, x: *const f64, xd: *const f64) ->
 /// step and `*t` is unchanged.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `x` (and `xd` unless NULL) hold and `f`
+/// `s` is looked up, never read; `x` (and `xd` unless NULL) hold and `f`
 /// has room for `ncoupled_dof` doubles; `t` and `dt` are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_step(
@@ -200,8 +217,10 @@ pub unsafe extern "C" fn stancf_step(
     dt: *mut f64,
 ) -> c_int {
     guard(|| {
-        let n = args::system(s)?.coupled.handle.coupled_dof();
-        step(s, n, (x, xd, f), t, dt)
+        args::with_system(s, |sys| {
+            let n = sys.coupled.handle.coupled_dof();
+            step(sys, n, (x, xd, f), t, dt)
+        })
     })
 }
 
@@ -220,19 +239,22 @@ pub unsafe extern "C" fn stancf_step_n(
     t: *mut f64,
     dt: *mut f64,
 ) -> c_int {
-    guard(|| step(s, n as usize, (x, xd, f), t, dt))
+    guard(|| args::with_system(s, |sys| step(sys, n as usize, (x, xd, f), t, dt)))
 }
 
 type Arrays = (*const f64, *const f64, *mut f64);
 
+/// `stancf_step` on a locked system, with arrays of `n` values.
+///
+/// # Safety
+/// As `stancf_step`'s arrays and places.
 unsafe fn step(
-    s: *mut StancfSystem,
+    sys: &mut StancfSystem,
     n: usize,
     (x, xd, f): Arrays,
     t: *mut f64,
     dt: *mut f64,
 ) -> Result<(), Error> {
-    let sys = args::system(s)?;
     let x = args::values(x, n, "x")?;
     let xd = args::optional_values(xd, n);
     let f = args::room(f, n, "f")?;
@@ -262,31 +284,33 @@ unsafe fn step(
 /// Refused before the first step.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `f` is NULL or has room for
+/// `s` is looked up, never read; `f` is NULL or has room for
 /// `ncoupled_dof` doubles.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_interval_mean_force(s: *mut StancfSystem, f: *mut f64) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let last = sys
-            .last
-            .as_ref()
-            .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
-        args::room(f, last.interval_mean.len(), "f")?.copy_from_slice(&last.interval_mean);
-        Ok(())
+        args::with_system(s, |sys| {
+            let last = sys
+                .last
+                .as_ref()
+                .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
+            args::room(f, last.interval_mean.len(), "f")?.copy_from_slice(&last.interval_mean);
+            Ok(())
+        })
     })
 }
 
 /// The time reached (s; 0 before `stancf_init`).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `t` is NULL or writable.
+/// `s` is looked up, never read; `t` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_time(s: *mut StancfSystem, t: *mut f64) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        *args::place(t, "t")? = sys.coupled.handle.time();
-        Ok(())
+        args::with_system(s, |sys| {
+            *args::place(t, "t")? = sys.coupled.handle.time();
+            Ok(())
+        })
     })
 }
 
@@ -295,43 +319,63 @@ pub unsafe extern "C" fn stancf_time(s: *mut StancfSystem, t: *mut f64) -> c_int
 /// Free it with `stancf_free_state`.
 ///
 /// # Safety
-/// `s` is a live handle or NULL.
+/// None: `s` is looked up, never read.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_save(s: *mut StancfSystem) -> *mut StancfState {
     guard_ptr(|| {
-        let sys = args::system(s)?;
-        Ok(Box::into_raw(Box::new(StancfState(
-            sys.coupled.handle.save(),
-        ))))
+        let state = args::with_system(s, |sys| Ok(StancfState(sys.coupled.handle.save())))?;
+        args::save_state(state)
     })
 }
 
-/// Brings back a state saved from the same system.
+/// Brings back a state saved from this system, or from a handle opened
+/// on the same scenario or deck (a restart). A state of another system
+/// is refused with `STANCF_INVALID_VALUE` and the system is untouched; a
+/// NULL, freed or unknown state with `STANCF_INVALID_INPUT`.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `state` is NULL or from `stancf_save`
-/// of this system, not yet freed.
+/// None: `s` and `state` are looked up, never read.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_restore(s: *mut StancfSystem, state: *const StancfState) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let state = state
-            .as_ref()
-            .ok_or_else(|| Error::input("the state is NULL"))?;
-        sys.coupled.handle.restore(&state.0);
-        sys.last = None;
-        Ok(())
+        args::with_system(s, |sys| {
+            let state = args::state(state)?;
+            sys.coupled.handle.restore(&state.0)?;
+            sys.last = None;
+            Ok(())
+        })
     })
 }
 
-/// Frees a state from `stancf_save`.
+/// Frees a state from `stancf_save`; the state is refused from then on.
+/// NULL, a state freed already or not from `stancf_save` is refused with
+/// `STANCF_INVALID_INPUT`.
 ///
 /// # Safety
-/// `state` is NULL or from `stancf_save`, not yet freed; it is not used
-/// again.
+/// None: `state` is looked up, never read.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_free_state(state: *mut StancfState) -> c_int {
-    guard(|| args::free(state, "the state"))
+    guard(|| args::free_state(state))
+}
+
+/// Lets one `stancf_step` take up to `n` internal steps (at least 1; by
+/// default 100 000, `stancf::coupling::MAX_INTERVAL_STEPS`): the opt-in
+/// for a host that steps over long intervals on purpose. 0 is refused
+/// with `STANCF_INVALID_VALUE`.
+///
+/// # Safety
+/// None: `s` is looked up, never read.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_set_max_interval_steps(s: *mut StancfSystem, n: u64) -> c_int {
+    guard(|| {
+        args::with_system(s, |sys| {
+            let n = usize::try_from(n).unwrap_or(usize::MAX);
+            sys.coupled
+                .handle
+                .set_max_interval_steps(n)
+                .map_err(|e| Error::new(error::STANCF_INVALID_VALUE, e.to_string()))
+        })
+    })
 }
 
 /// The message of this thread's last failed call ("" before any): valid

@@ -13,38 +13,40 @@ use std::ffi::{c_int, c_uint};
 /// The number of lines.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `n` is NULL or writable.
+/// `s` is looked up, never read; `n` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_nlines(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        *args::place(n, "n")? = sys.coupled.line_ids.len() as c_uint;
-        Ok(())
+        args::with_system(s, |sys| {
+            *args::place(n, "n")? = sys.coupled.line_ids.len() as c_uint;
+            Ok(())
+        })
     })
 }
 
 /// The id of line `line` (0-based).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `id` is NULL or writable.
+/// `s` is looked up, never read; `id` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_id(s: *mut StancfSystem, line: c_uint, id: *mut i64) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let known = *sys
-            .coupled
-            .line_ids
-            .get(line as usize)
-            .ok_or_else(|| no_line(sys, line))?;
-        *args::place(id, "id")? = known;
-        Ok(())
+        args::with_system(s, |sys| {
+            let known = *sys
+                .coupled
+                .line_ids
+                .get(line as usize)
+                .ok_or_else(|| no_line(sys, line))?;
+            *args::place(id, "id")? = known;
+            Ok(())
+        })
     })
 }
 
 /// The number of nodes of line `line`.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `n` is NULL or writable.
+/// `s` is looked up, never read; `n` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_nnodes(
     s: *mut StancfSystem,
@@ -52,24 +54,25 @@ pub unsafe extern "C" fn stancf_line_nnodes(
     n: *mut c_uint,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let model = &sys
-            .coupled
-            .handle
-            .system()
-            .lines()
-            .get(line as usize)
-            .ok_or_else(|| no_line(sys, line))?
-            .model;
-        *args::place(n, "n")? = model.nodes() as c_uint;
-        Ok(())
+        args::with_system(s, |sys| {
+            let model = &sys
+                .coupled
+                .handle
+                .system()
+                .lines()
+                .get(line as usize)
+                .ok_or_else(|| no_line(sys, line))?
+                .model;
+            *args::place(n, "n")? = model.nodes() as c_uint;
+            Ok(())
+        })
     })
 }
 
 /// The position of node `node` of line `line` (m, 3 values).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `pos` is NULL or has room for 3.
+/// `s` is looked up, never read; `pos` is NULL or has room for 3.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_node_pos(
     s: *mut StancfSystem,
@@ -78,18 +81,19 @@ pub unsafe extern "C" fn stancf_line_node_pos(
     pos: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let nodes = node_values(sys, line, |h, i| h.line_nodes(i))?;
-        let v = vector_at(&nodes, line, node)?;
-        args::room(pos, 3, "pos")?.copy_from_slice(v);
-        Ok(())
+        args::with_system(s, |sys| {
+            let nodes = node_values(sys, line, |h, i| h.line_nodes(i))?;
+            let v = vector_at(&nodes, line, node)?;
+            args::room(pos, 3, "pos")?.copy_from_slice(v);
+            Ok(())
+        })
     })
 }
 
 /// The velocity of node `node` of line `line` (m/s, 3 values).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `vel` is NULL or has room for 3.
+/// `s` is looked up, never read; `vel` is NULL or has room for 3.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_node_vel(
     s: *mut StancfSystem,
@@ -98,11 +102,12 @@ pub unsafe extern "C" fn stancf_line_node_vel(
     vel: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let nodes = node_values(sys, line, |h, i| h.line_velocities(i))?;
-        let v = vector_at(&nodes, line, node)?;
-        args::room(vel, 3, "vel")?.copy_from_slice(v);
-        Ok(())
+        args::with_system(s, |sys| {
+            let nodes = node_values(sys, line, |h, i| h.line_velocities(i))?;
+            let v = vector_at(&nodes, line, node)?;
+            args::room(vel, 3, "vel")?.copy_from_slice(v);
+            Ok(())
+        })
     })
 }
 
@@ -110,7 +115,7 @@ pub unsafe extern "C" fn stancf_line_node_vel(
 /// where MoorDyn's `MoorDyn_GetLineNodeTen` gives a vector).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `ten` is NULL or writable.
+/// `s` is looked up, never read; `ten` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_node_ten(
     s: *mut StancfSystem,
@@ -119,17 +124,18 @@ pub unsafe extern "C" fn stancf_line_node_ten(
     ten: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let values = scalars(sys, line, |h, i| h.line_tensions(i))?;
-        *args::place(ten, "ten")? = scalar_at(&values, line, node)?;
-        Ok(())
+        args::with_system(s, |sys| {
+            let values = scalars(sys, line, |h, i| h.line_tensions(i))?;
+            *args::place(ten, "ten")? = scalar_at(&values, line, node)?;
+            Ok(())
+        })
     })
 }
 
 /// The curvature at node `node` of line `line` (1/m).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `curv` is NULL or writable.
+/// `s` is looked up, never read; `curv` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_node_curv(
     s: *mut StancfSystem,
@@ -138,17 +144,18 @@ pub unsafe extern "C" fn stancf_line_node_curv(
     curv: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let values = scalars(sys, line, |h, i| h.line_curvatures(i))?;
-        *args::place(curv, "curv")? = scalar_at(&values, line, node)?;
-        Ok(())
+        args::with_system(s, |sys| {
+            let values = scalars(sys, line, |h, i| h.line_curvatures(i))?;
+            *args::place(curv, "curv")? = scalar_at(&values, line, node)?;
+            Ok(())
+        })
     })
 }
 
 /// Every node position of line `line` at once (3 per node, m).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `pos` is NULL or has room for 3 values
+/// `s` is looked up, never read; `pos` is NULL or has room for 3 values
 /// per node.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_positions(
@@ -157,17 +164,18 @@ pub unsafe extern "C" fn stancf_line_positions(
     pos: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let nodes = node_values(sys, line, |h, i| h.line_nodes(i))?;
-        args::room(pos, nodes.len(), "pos")?.copy_from_slice(&nodes);
-        Ok(())
+        args::with_system(s, |sys| {
+            let nodes = node_values(sys, line, |h, i| h.line_nodes(i))?;
+            args::room(pos, nodes.len(), "pos")?.copy_from_slice(&nodes);
+            Ok(())
+        })
     })
 }
 
 /// Every node's axial force of line `line` at once (N, one per node).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `ten` is NULL or has room for one value
+/// `s` is looked up, never read; `ten` is NULL or has room for one value
 /// per node.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_line_tensions(
@@ -176,30 +184,32 @@ pub unsafe extern "C" fn stancf_line_tensions(
     ten: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let values = scalars(sys, line, |h, i| h.line_tensions(i))?;
-        args::room(ten, values.len(), "ten")?.copy_from_slice(&values);
-        Ok(())
+        args::with_system(s, |sys| {
+            let values = scalars(sys, line, |h, i| h.line_tensions(i))?;
+            args::room(ten, values.len(), "ten")?.copy_from_slice(&values);
+            Ok(())
+        })
     })
 }
 
 /// The number of points (fixed, coupled and free).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `n` is NULL or writable.
+/// `s` is looked up, never read; `n` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_npoints(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        *args::place(n, "n")? = sys.coupled.point_ids.len() as c_uint;
-        Ok(())
+        args::with_system(s, |sys| {
+            *args::place(n, "n")? = sys.coupled.point_ids.len() as c_uint;
+            Ok(())
+        })
     })
 }
 
 /// The id of point `point` (0-based).
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `id` is NULL or writable.
+/// `s` is looked up, never read; `id` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_point_id(
     s: *mut StancfSystem,
@@ -207,14 +217,15 @@ pub unsafe extern "C" fn stancf_point_id(
     id: *mut i64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let known = *sys
-            .coupled
-            .point_ids
-            .get(point as usize)
-            .ok_or_else(|| no_point(sys, point))?;
-        *args::place(id, "id")? = known;
-        Ok(())
+        args::with_system(s, |sys| {
+            let known = *sys
+                .coupled
+                .point_ids
+                .get(point as usize)
+                .ok_or_else(|| no_point(sys, point))?;
+            *args::place(id, "id")? = known;
+            Ok(())
+        })
     })
 }
 
@@ -223,7 +234,7 @@ pub unsafe extern "C" fn stancf_point_id(
 /// the three may be NULL.
 ///
 /// # Safety
-/// `s` is a live handle or NULL; `pos`, `vel`, `force` are each NULL or
+/// `s` is looked up, never read; `pos`, `vel`, `force` are each NULL or
 /// have room for 3 values.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_point_state(
@@ -234,22 +245,23 @@ pub unsafe extern "C" fn stancf_point_state(
     force: *mut f64,
 ) -> c_int {
     guard(|| {
-        let sys = args::system(s)?;
-        let reading = sys
-            .coupled
-            .handle
-            .point(point as usize)
-            .ok_or_else(|| no_point(sys, point))?;
-        for (out, v) in [
-            (pos, reading.position),
-            (vel, reading.velocity),
-            (force, reading.force),
-        ] {
-            if !out.is_null() {
-                std::slice::from_raw_parts_mut(out, 3).copy_from_slice(&v);
+        args::with_system(s, |sys| {
+            let reading = sys
+                .coupled
+                .handle
+                .point(point as usize)
+                .ok_or_else(|| no_point(sys, point))?;
+            for (out, v) in [
+                (pos, reading.position),
+                (vel, reading.velocity),
+                (force, reading.force),
+            ] {
+                if !out.is_null() {
+                    std::slice::from_raw_parts_mut(out, 3).copy_from_slice(&v);
+                }
             }
-        }
-        Ok(())
+            Ok(())
+        })
     })
 }
 

@@ -96,6 +96,8 @@ int main(int argc, char **argv) {
     if (stancf_coupled_ids(s, ids) || ids[0] != 2) return 14;
     if (stancf_coupled_positions(s, x) || x[0] != 6.0) return 15;
     if (stancf_init(s, x, xd) || stancf_init_n(s, 3, x, NULL)) return 16;
+    if (stancf_set_max_interval_steps(s, 1000)) return 31;
+    if (stancf_set_max_interval_steps(s, 0) != STANCF_INVALID_VALUE) return 32;
     x[0] += 0.01;
     if (stancf_step(s, x, xd, f, &t, &dt) || t != 0.01) return 17;
     if (stancf_step_n(s, 3, x, NULL, f, &t, &dt) || t != 0.02) return 18;
@@ -104,6 +106,7 @@ int main(int argc, char **argv) {
     if (stancf_interval_mean_force(s, f) || stancf_time(s, &v) || fabs(v - t) > 1e-12) return 20;
     StancfState *state = stancf_save(s);
     if (state == NULL || stancf_restore(s, state) || stancf_free_state(state)) return 21;
+    if (stancf_free_state(state) != STANCF_INVALID_INPUT) return 33;
     if (stancf_nlines(s, &lines) || lines != 2 || stancf_line_id(s, 1, &id) || id != 2) return 22;
     if (stancf_line_nnodes(s, 0, &nodes) || nodes != 17) return 23;
     if (stancf_line_node_pos(s, 0, 0, v3) || stancf_line_node_vel(s, 0, 0, v3)) return 24;
@@ -114,6 +117,9 @@ int main(int argc, char **argv) {
     if (stancf_point_state(s, 2, v3, NULL, f)) return 28;
     if (stancf_close(s) != STANCF_SUCCESS) return 29;
     if (stancf_close(NULL) != STANCF_INVALID_INPUT) return 30;
+    /* A closed handle is refused, not read. */
+    if (stancf_close(s) != STANCF_INVALID_INPUT || stancf_time(s, &v) != STANCF_INVALID_INPUT)
+        return 34;
     return 0;
 }
 "#;

@@ -7,7 +7,7 @@ mod results;
 mod simulation;
 
 use pyo3::create_exception;
-use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError};
+use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use stancf_cli::output::Collector;
@@ -20,8 +20,8 @@ use std::time::{Duration, Instant};
 create_exception!(
     _stancf,
     ScenarioError,
-    PyException,
-    "A scenario that is not valid: the message names the key."
+    PyValueError,
+    "A scenario or an argument that is not valid (a ValueError): the message names the key."
 );
 create_exception!(
     _stancf,

@@ -1,21 +1,75 @@
 //! `stancf._stancf.Simulation`: a system stepped by a coupling code, the
 //! Rust handle `stancf::coupling::CoupledSystem` (docs/method.md §13)
 //! with its arrays as Python lists (the Python class `stancf.Simulation`
-//! turns them into numpy arrays). Nothing here touches a file; stepping
-//! and the static solve run without the GIL.
+//! checks the arguments and turns the arrays into numpy arrays). Nothing
+//! here touches a file; stepping and the static solve run without the
+//! GIL and stop at Ctrl-C between two internal steps. A Simulation is
+//! used by one thread at a time: a call while another thread is inside
+//! one is refused with a RuntimeError saying so.
 
 use crate::{RunFailed, ScenarioError};
-use pyo3::exceptions::PyIndexError;
+use pyo3::exceptions::{PyIndexError, PyKeyboardInterrupt, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use stancf::coupling::{CoupledForces, CoupledState, CoupledSystem, CouplingError};
 use std::path::PathBuf;
+use std::sync::{Mutex, MutexGuard, TryLockError};
+use std::time::{Duration, Instant};
 
-/// A coupling error as a Python exception: bad input as ScenarioError,
-/// a failed step as RunFailed(message, time, step, residual).
+/// A coupling error as a Python exception: bad input as ScenarioError (a
+/// ValueError), a failed step as RunFailed(message, time, step,
+/// residual), an interruption as KeyboardInterrupt.
 fn coupling_err(e: CouplingError) -> PyErr {
     match e {
         CouplingError::Input(m) => ScenarioError::new_err(m.to_string()),
         CouplingError::Solver(s) => RunFailed::new_err((s.to_string(), s.time, s.step, s.residual)),
+        e @ CouplingError::Interrupted { .. } => PyKeyboardInterrupt::new_err(e.to_string()),
+    }
+}
+
+/// How often a call without the GIL runs Python's signal handlers: every
+/// few ms of wall time, so Ctrl-C answers at once while a step of a few
+/// microseconds does not wait for the GIL each time.
+const SIGNAL_CHECK_EVERY: Duration = Duration::from_millis(5);
+
+/// Python's signal handlers, run from a call without the GIL between its
+/// steps; the exception one raised (KeyboardInterrupt for Ctrl-C) is
+/// kept for the call to raise.
+struct Signals {
+    checked: Option<Instant>,
+    raised: Option<PyErr>,
+}
+
+impl Signals {
+    fn new() -> Self {
+        Signals {
+            checked: None,
+            raised: None,
+        }
+    }
+
+    /// Whether a signal handler raised: checked with the GIL at most every
+    /// [`SIGNAL_CHECK_EVERY`].
+    fn raised(&mut self) -> bool {
+        if self
+            .checked
+            .is_some_and(|t| t.elapsed() < SIGNAL_CHECK_EVERY)
+        {
+            return false;
+        }
+        self.checked = Some(Instant::now());
+        if let Err(e) = Python::with_gil(|py| py.check_signals()) {
+            self.raised = Some(e);
+        }
+        self.raised.is_some()
+    }
+
+    /// The error of a call that ran with these checks: the exception a
+    /// signal handler raised when the call stopped for it.
+    fn error(self, e: CouplingError) -> PyErr {
+        match (e, self.raised) {
+            (CouplingError::Interrupted { .. }, Some(raised)) => raised,
+            (e, _) => coupling_err(e),
+        }
     }
 }
 
@@ -23,19 +77,44 @@ fn coupling_err(e: CouplingError) -> PyErr {
 /// and curvatures.
 type LineArrays = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
 
-/// The native coupled system (see `stancf.Simulation`).
-#[pyclass(module = "stancf._stancf", name = "Simulation")]
+/// The native coupled system (see `stancf.Simulation`): the handle behind
+/// a lock, taken by one call at a time.
+#[pyclass(module = "stancf._stancf", name = "Simulation", frozen)]
 pub struct PySimulation {
-    handle: CoupledSystem,
+    inner: Mutex<Inner>,
     coupled_ids: Vec<i64>,
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
+}
+
+/// What a call of a Simulation changes: the handle and the forces of its
+/// last `step_to`.
+struct Inner {
+    handle: CoupledSystem,
     last: Option<CoupledForces>,
 }
 
 /// A saved state of a Simulation (opaque).
 #[pyclass(module = "stancf._stancf", name = "SimulationState")]
 pub struct PyState(CoupledState);
+
+impl PySimulation {
+    /// The handle for this call; refused while another thread is inside a
+    /// call (pyo3 would say "Already mutably borrowed").
+    fn inner(&self) -> PyResult<MutexGuard<'_, Inner>> {
+        self.inner.try_lock().map_err(|e| match e {
+            TryLockError::WouldBlock => PyRuntimeError::new_err(
+                "a Simulation is used by one thread at a time; another thread is inside one of \
+                 its calls: wait for that call to return, or give each thread its own \
+                 Simulation",
+            ),
+            TryLockError::Poisoned(_) => PyRuntimeError::new_err(
+                "this Simulation is unusable after an internal error in an earlier call (please \
+                 report it); open a new one",
+            ),
+        })
+    }
+}
 
 #[pymethods]
 impl PySimulation {
@@ -46,17 +125,19 @@ impl PySimulation {
         let opened = stancf_cli::coupling::from_text(text, &path)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
         Ok(PySimulation {
-            handle: opened.handle,
+            inner: Mutex::new(Inner {
+                handle: opened.handle,
+                last: None,
+            }),
             coupled_ids: opened.coupled_ids,
             line_ids: opened.line_ids,
             point_ids: opened.point_ids,
-            last: None,
         })
     }
 
     #[getter]
     fn coupled_dof(&self) -> usize {
-        self.handle.coupled_dof()
+        3 * self.coupled_ids.len()
     }
 
     #[getter]
@@ -75,68 +156,105 @@ impl PySimulation {
     }
 
     #[getter]
-    fn time(&self) -> f64 {
-        self.handle.time()
+    fn time(&self) -> PyResult<f64> {
+        Ok(self.inner()?.handle.time())
+    }
+
+    /// The most internal steps one `step_to` takes
+    /// (`stancf::coupling::MAX_INTERVAL_STEPS` unless set).
+    #[getter]
+    fn max_interval_steps(&self) -> PyResult<usize> {
+        Ok(self.inner()?.handle.max_interval_steps())
+    }
+
+    #[setter]
+    fn set_max_interval_steps(&self, n: usize) -> PyResult<()> {
+        self.inner()?
+            .handle
+            .set_max_interval_steps(n)
+            .map_err(|e| coupling_err(e.into()))
     }
 
     /// The mean forces of the last `step_to` over its interval (None
     /// before the first).
     #[getter]
-    fn interval_mean_force(&self) -> Option<Vec<f64>> {
-        self.last.as_ref().map(|f| f.interval_mean.clone())
+    fn interval_mean_force(&self) -> PyResult<Option<Vec<f64>>> {
+        Ok(self.inner()?.last.as_ref().map(|f| f.interval_mean.clone()))
     }
 
     /// The steps the last `step_to` took (0 before the first).
     #[getter]
-    fn last_steps(&self) -> usize {
-        self.last.as_ref().map_or(0, |f| f.steps)
+    fn last_steps(&self) -> PyResult<usize> {
+        Ok(self.inner()?.last.as_ref().map_or(0, |f| f.steps))
     }
 
     #[pyo3(signature = (x, xd = None))]
-    fn initialize(
-        &mut self,
-        py: Python<'_>,
-        x: Vec<f64>,
-        xd: Option<Vec<f64>>,
-    ) -> PyResult<Vec<f64>> {
-        let handle = &mut self.handle;
-        let forces = py
-            .allow_threads(|| handle.initialize(&x, xd.as_deref()))
-            .map_err(coupling_err)?;
-        self.last = None;
+    fn initialize(&self, py: Python<'_>, x: Vec<f64>, xd: Option<Vec<f64>>) -> PyResult<Vec<f64>> {
+        let mut guard = self.inner()?;
+        let inner = &mut *guard;
+        let mut signals = Signals::new();
+        let result = py.allow_threads(|| {
+            inner
+                .handle
+                .initialize_with(&x, xd.as_deref(), &mut || signals.raised())
+        });
+        let forces = result.map_err(|e| signals.error(e))?;
+        inner.last = None;
         Ok(forces)
     }
 
     #[pyo3(signature = (t, x, xd = None))]
     fn step_to(
-        &mut self,
+        &self,
         py: Python<'_>,
         t: f64,
         x: Vec<f64>,
         xd: Option<Vec<f64>>,
     ) -> PyResult<Vec<f64>> {
-        let handle = &mut self.handle;
-        let forces = py
-            .allow_threads(|| handle.step_to(t, &x, xd.as_deref()))
-            .map_err(coupling_err)?;
+        let mut guard = self.inner()?;
+        let inner = &mut *guard;
+        let mut signals = Signals::new();
+        let result = py.allow_threads(|| {
+            inner
+                .handle
+                .step_to_with(t, &x, xd.as_deref(), &mut || signals.raised())
+        });
+        let forces = result.map_err(|e| signals.error(e))?;
         let out = forces.last_step.clone();
-        self.last = Some(forces);
+        inner.last = Some(forces);
         Ok(out)
     }
 
-    fn save(&self) -> PyState {
-        PyState(self.handle.save())
+    fn save(&self) -> PyResult<PyState> {
+        Ok(PyState(self.inner()?.handle.save()))
     }
 
-    fn restore(&mut self, state: &PyState) {
-        self.handle.restore(&state.0);
-        self.last = None;
+    /// Brings back a state from `save()` of this Simulation or of one of
+    /// the same scenario; ValueError for a state of another system (the
+    /// Simulation untouched) or an object that is not a state.
+    fn restore(&self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let state = state.downcast::<PyState>().map_err(|_| {
+            PyValueError::new_err(format!(
+                "state: expected a state from Simulation.save(), got {}",
+                state
+                    .get_type()
+                    .name()
+                    .map_or_else(|_| "another object".into(), |n| format!("a {n}"))
+            ))
+        })?;
+        let mut inner = self.inner()?;
+        inner
+            .handle
+            .restore(&state.borrow().0)
+            .map_err(coupling_err)?;
+        inner.last = None;
+        Ok(())
     }
 
     /// Point `index`'s (in the order of `point_ids`) position, velocity
     /// and the net force of its lines on it.
     fn point_arrays(&self, index: usize) -> PyResult<([f64; 3], [f64; 3], [f64; 3])> {
-        let p = self.handle.point(index).ok_or_else(|| {
+        let p = self.inner()?.handle.point(index).ok_or_else(|| {
             PyIndexError::new_err(format!("no point {index} (or not initialized)"))
         })?;
         Ok((p.position, p.velocity, p.force))
@@ -147,7 +265,8 @@ impl PySimulation {
     fn line_arrays(&self, index: usize) -> PyResult<LineArrays> {
         let missing = || PyIndexError::new_err(format!("no line {index} (or not initialized)"));
         let flat = |v: Vec<[f64; 3]>| v.into_iter().flatten().collect::<Vec<f64>>();
-        let h = &self.handle;
+        let inner = self.inner()?;
+        let h = &inner.handle;
         Ok((
             flat(h.line_nodes(index).ok_or_else(missing)?),
             flat(h.line_velocities(index).ok_or_else(missing)?),

@@ -3,12 +3,15 @@
 restore, errors, no files, and the OC4 coupling example (also against the
 C example through the C library)."""
 
+import _thread
 import math
 import os
 import shutil
 import stat
 import subprocess
 import sys
+import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -233,3 +236,132 @@ def test_the_gil_is_released_while_stepping():
     th.join()
     assert sim.last_steps == 1000
     assert count > 10000, count
+
+
+def test_restoring_a_state_of_another_system_raises_value_error_and_changes_nothing():
+    sim = stancf.Simulation(bridle(10))
+    sim.initialize(START)
+    sim.step_to(DT, START)
+    # One line from an anchor to a fairlead at (8, 0, 4).
+    other = stancf.Simulation(EXAMPLES / "fairlead-graded.toml")
+    other.initialize([8.0, 0.0, 4.0])
+    before = (sim.time, sim.line(1).nodes.copy(), sim.line_ids)
+    with pytest.raises(ValueError, match=r"another system \(1 line, 2 points\) cannot be "
+                                         r"restored into this one \(2 lines, 3 points\)"):
+        sim.restore(other.save())
+    assert (sim.time, sim.line_ids) == (before[0], before[2])
+    assert np.array_equal(sim.line(1).nodes, before[1])
+    for not_a_state in ("state", None, 1.5, other):
+        with pytest.raises(ValueError, match=r"state: expected a state from Simulation.save\(\)"):
+            sim.restore(not_a_state)
+    # A second Simulation of the same scenario takes it: a restart.
+    again = stancf.Simulation(bridle(10))
+    again.restore(sim.save())
+    assert np.array_equal(again.step_to(2 * DT, START), sim.step_to(2 * DT, START))
+
+
+def test_an_interval_of_too_many_steps_is_refused_until_max_interval_steps_is_raised():
+    sim = stancf.Simulation(bridle(10))
+    assert sim.max_interval_steps == 100_000
+    sim.initialize(START)
+    sim.step_to(DT, START)
+    nodes = sim.line(1).nodes.copy()
+    with pytest.raises(ValueError, match="more than the 100000 one call may take") as e:
+        sim.step_to(1e6, START)
+    assert isinstance(e.value, stancf.ScenarioError)
+    assert "max_interval_steps" in str(e.value)
+    assert sim.time == DT and np.array_equal(sim.line(1).nodes, nodes)
+    few = stancf.Simulation(bridle(10), max_interval_steps=4)
+    few.initialize(START)
+    with pytest.raises(ValueError, match="takes 5 steps"):
+        few.step_to(5 * DT, START)
+    few.max_interval_steps = 5
+    few.step_to(5 * DT, START)
+    assert few.last_steps == 5
+    for bad, error in ((0, ValueError), (-3, ValueError), (2.5, TypeError), ("9", TypeError),
+                       (True, TypeError)):
+        with pytest.raises(error, match="max_interval_steps"):
+            few.max_interval_steps = bad
+    assert few.max_interval_steps == 5
+
+
+def test_arguments_that_are_not_real_numbers_or_flat_arrays_are_refused_naming_them():
+    sim = stancf.Simulation(bridle(10))
+    sim.initialize(START)
+    for t in ("1", None, 1j, [DT]):
+        with pytest.raises(TypeError, match="t: expected a real number of seconds"):
+            sim.step_to(t, START)
+    complex_x = np.array(START, dtype=complex)  # a zero imaginary part
+    with pytest.raises(TypeError, match="x: complex values are refused"):
+        sim.step_to(DT, complex_x)
+    with pytest.raises(TypeError, match="xd: complex values are refused"):
+        sim.step_to(DT, START, [0.0, 1j, 0.0])
+    with pytest.raises(TypeError, match="x: expected 3 real numbers"):
+        sim.step_to(DT, ["6", "0", "1"])
+    with pytest.raises(ValueError, match=r"x: expected a flat sequence .* shape \(3, 3\)"):
+        sim.step_to(DT, np.tile(START, (3, 1)))
+    with pytest.raises(ValueError, match=r"x: expected 3 values \(coupled_dof"):
+        sim.step_to(DT, START + [0.0])
+    with pytest.raises(ValueError, match=r"x: expected 3 real numbers"):
+        sim.step_to(DT, [[6.0, 0.0], [1.0]])
+    assert sim.time == 0.0
+    # Lists, tuples, numpy scalars and real arrays of ints or floats.
+    sim.step_to(np.float64(DT), (6, 0, 1))
+    sim.step_to(2 * DT, np.array([6, 0, 1]), np.zeros(3, dtype=np.float32))
+    sim.step_to(np.array(3 * DT), np.array(START))
+    assert sim.time == pytest.approx(3 * DT)
+
+
+def _interrupted_while_stepping():
+    """A long step_to in this (the main) thread, interrupted by a second
+    thread as Ctrl-C would: the second thread calls ``sim.time`` until it
+    is refused (the step_to holds the Simulation), then interrupts the
+    main thread. Nothing waits on a clock: the interval, 5e7 steps, cannot
+    end before the interruption (hours of work), and the second thread
+    gives up after 120 s of being let through. Returns the simulation,
+    the time reached before, the time asked for, the KeyboardInterrupt
+    and the refusal the second thread saw."""
+    sim = stancf.Simulation(bridle(10), max_interval_steps=10**8)
+    sim.initialize(START)
+    sim.step_to(DT, START)
+    start, asked = sim.time, 1e4
+    refused = []
+
+    def second():
+        end = time.monotonic() + 120.0
+        while time.monotonic() < end:
+            try:
+                sim.time
+            except RuntimeError as e:
+                refused.append(str(e))
+                break
+            time.sleep(1e-3)
+        _thread.interrupt_main()
+
+    th = threading.Thread(target=second)
+    th.start()
+    try:
+        with pytest.raises(KeyboardInterrupt) as e:
+            sim.step_to(asked, START)
+    finally:
+        th.join()
+    return sim, start, asked, e.value, refused
+
+
+def test_ctrl_c_stops_step_to_at_its_last_converged_step_and_the_next_call_goes_on():
+    sim, start, asked, _, refused = _interrupted_while_stepping()
+    assert refused, "the step_to was never seen running"
+    assert start < sim.time < asked
+    reached = sim.time
+    f = sim.step_to(reached + DT, START)
+    assert np.isfinite(f).all() and sim.time == pytest.approx(reached + DT)
+
+
+def test_a_second_thread_is_told_a_simulation_is_used_by_one_thread_at_a_time():
+    sim, _, _, _, refused = _interrupted_while_stepping()
+    assert len(refused) == 1
+    assert refused[0].startswith("a Simulation is used by one thread at a time;"), refused
+    assert "give each thread its own Simulation" in refused[0]
+    # Not pyo3's borrow message, and the Simulation answers again after.
+    assert "borrowed" not in refused[0]
+    assert sim.time > 0.0

@@ -273,6 +273,52 @@ def test_solver_failure_raises_with_the_partial_result():
     assert_same_result(part, stancf.Result.read(part.directory))
 
 
+def test_a_failed_run_without_out_names_no_deleted_folder(tmp_path):
+    # Twenty times P2's stable step: the energy watchdog stops the run.
+    sc = stancf.Scenario(IMPACT).with_values({"analysis.time_step": 2e-3, "analysis.duration": 0.2,
+                                              "output.every": 1})
+    with pytest.raises(stancf.SolverError) as e:
+        stancf.run(sc)
+    message, folder = str(e.value), str(e.value.result.directory)
+    # The run's temporary folder goes with its result: the message names
+    # where the results are instead.
+    assert folder not in message
+    assert "are in the SolverError's result (in memory: with no out folder, stancf.run keeps " \
+        "no files)" in message, message
+    # Given a folder, the message names it, and the files are there.
+    with pytest.raises(stancf.SolverError) as e:
+        stancf.run(sc, out=tmp_path / "r")
+    assert "are in %s" % (tmp_path / "r") in str(e.value)
+    assert (tmp_path / "r" / "summary.json").exists()
+
+
+def test_an_interrupted_run_without_out_names_no_deleted_folder(tmp_path, monkeypatch):
+    # The run's temporary folder (and its staging folder beside it) in
+    # tmp_path, so that a second thread sees when the run is writing.
+    import _thread
+    import tempfile
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    sc = stancf.Scenario(IMPACT).with_values({"analysis.duration": 20.0, "output.every": 200})
+
+    def interrupt_once_running():
+        end = time.monotonic() + 120.0
+        while time.monotonic() < end and not list(tmp_path.glob(".stancf-*/scenario.toml")):
+            time.sleep(1e-3)
+        _thread.interrupt_main()
+
+    th = threading.Thread(target=interrupt_once_running)
+    th.start()
+    try:
+        with pytest.raises(KeyboardInterrupt) as e:
+            stancf.run(sc)
+    finally:
+        th.join()
+    message = str(e.value)
+    assert "interrupted; results up to t = " in message, message
+    assert "are in no folder (stancf.run was given no out folder and kept no files)" in message
+    assert str(tmp_path) not in message
+
+
 def test_ctrl_c_stops_a_run_cleanly(tmp_path):
     sc = stancf.Scenario(IMPACT).with_values({"analysis.duration": 20.0, "output.every": 200})
     timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))

@@ -368,9 +368,26 @@ def run(scenario, out=None, progress=False, allow_large=False):
         message, files = e.args
         partial = Result(out, keep, files)
         failure = partial.summary.get("failure") or {}
+        if keep is not None:
+            message = _unnamed(message, out, "the SolverError's result (in memory: with "
+                               "no out folder, stancf.run keeps no files)")
         raise SolverError(message, failure.get("time"), failure.get("step"),
                           failure.get("residual"), partial) from None
+    except KeyboardInterrupt as e:
+        if keep is None or not e.args:
+            raise
+        raise KeyboardInterrupt(_unnamed(
+            str(e.args[0]), out, "no folder (stancf.run was given no out folder and kept "
+            "no files)")) from None
     return Result(out, keep, files)
+
+
+def _unnamed(message, folder, instead):
+    """A run's message without the temporary folder it ran in (deleted with
+    the run's result, or at once): "are in <folder>" becomes "are in
+    <instead>", and the folder anywhere else "<instead>"."""
+    folder = str(folder)
+    return message.replace("are in " + folder, "are in " + instead).replace(folder, instead)
 
 
 # ---- sweeps ----

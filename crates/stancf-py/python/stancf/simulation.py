@@ -2,12 +2,47 @@
 coupled points (docs/method.md §13; MoorDyn's create/init/step in memory),
 over the Rust handle `stancf::coupling::CoupledSystem`."""
 
+import numbers
+import sys
 from pathlib import Path
 
 import numpy as np
 
 from . import _stancf
 from . import Scenario, SolverError
+
+
+def _seconds(name, t):
+    """A time argument as a float: a real number (not a bool, a string or
+    None; a numpy scalar is fine)."""
+    if isinstance(t, numbers.Real) and not isinstance(t, bool):
+        return float(t)
+    if isinstance(t, np.ndarray) and t.ndim == 0 and t.dtype.kind in "iuf":
+        return float(t)
+    raise TypeError("%s: expected a real number of seconds, got %s %r"
+                    % (name, type(t).__name__, t))
+
+
+def _coupling_array(name, values, n):
+    """A coupling array argument as a list of floats: a flat list, tuple or
+    numpy array of real numbers (ints or floats). Complex values (even with
+    a zero imaginary part), other types and arrays of another shape are
+    refused, naming the argument; the count is the handle's to check."""
+    try:
+        a = np.asarray(values)
+    except (ValueError, TypeError) as e:
+        raise ValueError("%s: expected %d real numbers (coupled_dof, 3 per coupled point): %s"
+                         % (name, n, e)) from None
+    if a.dtype.kind == "c":
+        raise TypeError("%s: complex values are refused (even with a zero imaginary part); "
+                        "give the %d real coordinates" % (name, n))
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: expected %d real numbers (coupled_dof, 3 per coupled point), "
+                        "got values of type %s" % (name, n, a.dtype))
+    if a.ndim != 1:
+        raise ValueError("%s: expected a flat sequence of %d values (coupled_dof: x, y, z of "
+                         "each coupled point), got an array of shape %s" % (name, n, a.shape))
+    return a.astype(float).tolist()
 
 
 class LineState:
@@ -60,22 +95,37 @@ class Simulation:
     mean over its last step, what ``stancf run`` writes for that step);
     ``interval_mean_force`` is the interval's impulse over its length.
     ``save()`` returns a state that ``restore(state)`` brings back
-    exactly. ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
+    exactly, into this Simulation or one of the same scenario (a restart);
+    a state of another system raises ValueError and changes nothing.
+    ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
     a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``).
 
-    Nothing is written to disk. Bad input raises :class:`ScenarioError`;
-    a failed step raises :class:`SolverError` (``result`` is None) and
-    leaves the simulation at its last converged step. The solver runs
-    without the GIL.
+    One ``step_to`` takes at most ``max_interval_steps`` internal steps
+    (100 000 unless set, here or as ``Simulation(..., max_interval_steps=n)``);
+    a longer interval is refused before anything moves.
+
+    Nothing is written to disk. The arguments are checked: ``t`` a real
+    number, ``x`` and ``xd`` flat sequences or arrays of ``coupled_dof``
+    real numbers (TypeError or ValueError naming the argument). Bad input
+    raises :class:`ScenarioError` (a ValueError); a failed step raises
+    :class:`SolverError` (``result`` is None) and leaves the simulation at
+    its last converged step. The solver runs without the GIL; Ctrl-C
+    stops ``step_to`` (and ``initialize``) between two internal steps with
+    KeyboardInterrupt, the simulation at its last converged step (``time``),
+    from where the next ``step_to`` continues. A Simulation is used by one
+    thread at a time: a call while another thread is inside one raises
+    RuntimeError.
     """
 
-    def __init__(self, scenario_or_deck):
+    def __init__(self, scenario_or_deck, max_interval_steps=None):
         if isinstance(scenario_or_deck, Scenario):
             text, name = scenario_or_deck.text, scenario_or_deck.name
         else:
             path = Path(scenario_or_deck)
             text, name = path.read_text(), str(path)
         self._sim = _stancf.Simulation(text, name)
+        if max_interval_steps is not None:
+            self.max_interval_steps = max_interval_steps
 
     @property
     def coupled_dof(self):
@@ -106,11 +156,24 @@ class Simulation:
     def last_steps(self):
         return self._sim.last_steps
 
+    @property
+    def max_interval_steps(self):
+        """The most internal steps one ``step_to`` takes (at least 1)."""
+        return self._sim.max_interval_steps
+
+    @max_interval_steps.setter
+    def max_interval_steps(self, n):
+        if isinstance(n, bool) or not isinstance(n, numbers.Integral):
+            raise TypeError("max_interval_steps: expected a whole number of steps, got %r" % (n,))
+        if n < 1:
+            raise ValueError("max_interval_steps: must be at least 1, got %d" % n)
+        self._sim.max_interval_steps = min(int(n), sys.maxsize)
+
     def initialize(self, x, xd=None):
         return self._call(self._sim.initialize, x, xd)
 
     def step_to(self, t, x, xd=None):
-        return self._call(self._sim.step_to, float(t), x, xd)
+        return self._call(self._sim.step_to, _seconds("t", t), x, xd)
 
     def save(self):
         return self._sim.save()
@@ -130,11 +193,11 @@ class Simulation:
             raise KeyError("no point %r (points: %s)" % (point_id, ids))
         return PointState(*self._sim.point_arrays(ids.index(point_id)))
 
-    @staticmethod
-    def _call(method, *args):
+    def _call(self, method, *args):
         *head, x, xd = args
-        x = [float(v) for v in np.ravel(x)]
-        xd = None if xd is None else [float(v) for v in np.ravel(xd)]
+        n = self.coupled_dof
+        x = _coupling_array("x", x, n)
+        xd = None if xd is None else _coupling_array("xd", xd, n)
         try:
             return np.asarray(method(*head, x, xd), dtype=float)
         except _stancf.RunFailed as e:

@@ -232,6 +232,9 @@ impl<F: Factorization> StaticNewton<F> {
             self.step = (2.0 * self.step).min(nominal);
         }
         while self.lambda < 1.0 - 1e-12 {
+            if self.increments >= self.max_increments(eq.legs()) {
+                return Err(self.creeping(eq.legs()));
+            }
             let target = (self.lambda + self.step).min(1.0);
             let h = target - self.lambda;
             // Predictor: secant extrapolation from the last two solutions.
@@ -243,7 +246,16 @@ impl<F: Factorization> StaticNewton<F> {
                 }
             }
             eq.set_load_factor(target);
-            match self.newton(eq) {
+            // An increment below the load factor's resolution moves
+            // nothing: a failure, cut like the others (else a path that
+            // cannot pass a load factor would take such increments, double
+            // the step, fail and cut back to them forever).
+            let solved = if h > 0.0 {
+                self.newton(eq)
+            } else {
+                Err(FailureKind::NotConverged)
+            };
+            match solved {
                 Ok((iterations, residual, increment)) => {
                     self.x_prev.copy_from_slice(&self.x_saved);
                     self.previous_step = h;
@@ -285,5 +297,154 @@ impl<F: Factorization> StaticNewton<F> {
             }
         }
         Ok(None)
+    }
+
+    /// The most increments a load path takes: `max_cuts + 1` per nominal
+    /// increment (and at least 10 nominal ones' worth). A cut of c
+    /// halvings is made good by c doublings of the increments after it,
+    /// so a path whose every nominal increment were cut `max_cuts` times
+    /// would take about that many; a path that takes more creeps toward a
+    /// load factor it cannot pass, and would go on for hours.
+    fn max_increments(&self, legs: usize) -> usize {
+        (legs * self.settings.load_steps)
+            .max(10)
+            .saturating_mul(self.settings.max_cuts + 1)
+    }
+
+    /// The error of a load path past [`Self::max_increments`].
+    fn creeping(&self, legs: usize) -> SolverError {
+        SolverError {
+            kind: FailureKind::NotConverged,
+            time: self.lambda,
+            step: self.increments + 1,
+            residual: self.residual_norm(),
+            iterations: 0,
+            detail: format!(
+                "{STATIC_SOLVE}: the load path took {} increments, the most for its {} \
+                 nominal ones ({} each, with up to {} halvings), and reached load factor {} \
+                 only: it creeps toward a load it cannot pass",
+                self.increments,
+                legs * self.settings.load_steps,
+                self.settings.max_cuts + 1,
+                self.settings.max_cuts,
+                Sig(self.lambda)
+            ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{StaticEquations, StaticNewton};
+    use crate::band::{BandLu, BandMatrix};
+    use crate::error::SolverError;
+    use crate::statics::StaticSettings;
+
+    /// Whether Newton converges at load factor t after an increment
+    /// converged at `last`: (t, last) -> yes or no.
+    type Admits = fn(f64, f64) -> bool;
+
+    /// R(x; t) = x - t, not finite where `admits` says no.
+    struct Path {
+        t: f64,
+        last: f64,
+        admits: Admits,
+    }
+
+    impl StaticEquations for Path {
+        type Matrix = BandMatrix;
+        fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
+            residual[0] = if (self.admits)(self.t, self.last) {
+                x[0] - self.t
+            } else {
+                f64::NAN
+            };
+            if let Some(j) = jacobian {
+                j.clear();
+                j.add(0, 0, 1.0);
+            }
+        }
+        fn row_weights(&mut self, _jacobian: &BandMatrix, weights: &mut [f64]) {
+            weights[0] = 1.0;
+        }
+        fn set_load_factor(&mut self, t: f64) {
+            self.t = t;
+        }
+        fn legs(&self) -> usize {
+            1
+        }
+        fn converged(&mut self, _x: &[f64]) {
+            self.last = self.t;
+        }
+    }
+
+    /// Advances along `admits`'s path (20 nominal increments) until the
+    /// driver ends it, or 10^6 increments: the increments taken and the
+    /// error.
+    fn walk(admits: Admits) -> (usize, Option<SolverError>) {
+        let mut eq = Path {
+            t: 0.0,
+            last: 0.0,
+            admits,
+        };
+        let mut newton = StaticNewton::new(
+            vec![0.0],
+            vec![1.0],
+            BandLu::new(1, 0, 0),
+            BandMatrix::new(1, 0, 0),
+            StaticSettings::default(),
+        );
+        for n in 0..1_000_000 {
+            match newton.advance(&mut eq) {
+                Ok(Some(_)) => {}
+                Ok(None) => return (n, None),
+                Err(e) => return (n, Some(e)),
+            }
+        }
+        panic!("a load path still going after 10^6 increments");
+    }
+
+    #[test]
+    fn a_load_path_that_cannot_pass_a_load_factor_ends_with_an_error_naming_it() {
+        // 0.123456789 is not met by sums of 0.05 and its halves: the
+        // driver used to take increments of zero below it forever.
+        let ledges: [(f64, Admits); 5] = [
+            (0.5, |t, _| t <= 0.5),
+            (0.3, |t, _| t <= 0.3),
+            (0.7, |t, _| t <= 0.7),
+            (0.55, |t, _| t <= 0.55),
+            (0.123456789, |t, _| t <= 0.123456789),
+        ];
+        for (ledge, admits) in ledges {
+            let (n, e) = walk(admits);
+            let e = e.unwrap_or_else(|| panic!("ledge {ledge}: the path went through"));
+            assert!(n <= 220, "ledge {ledge}: {n} increments");
+            assert!((e.time - ledge).abs() <= 1e-15, "ledge {ledge}: {e}");
+            assert!(e.to_string().contains("10 halvings"), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_load_path_of_far_more_increments_than_nominal_is_refused_where_it_stands() {
+        // Newton converges only for increments up to 1e-4: 10^4 of them,
+        // 500 times the 20 nominal ones.
+        let (n, e) = walk(|t, last| t - last <= 1e-4);
+        let e = e.expect("refused");
+        assert_eq!(n, 220, "{e}");
+        let m = e.to_string();
+        assert!(
+            m.contains("took 220 increments") && m.contains("creeps"),
+            "{m}"
+        );
+        assert!(e.time > 0.0 && e.time < 0.1, "{m}");
+    }
+
+    #[test]
+    fn a_load_path_of_few_cuts_reaches_the_full_load() {
+        // Increments up to 0.02 converge (the nominal is 0.05): cut once
+        // or twice, then at 0.0125 to 0.025 each.
+        let (n, e) = walk(|t, last| t - last <= 0.02);
+        assert!(e.is_none(), "{e:?}");
+        assert!((50..=110).contains(&n), "{n}");
     }
 }

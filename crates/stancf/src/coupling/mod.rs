@@ -14,23 +14,47 @@
 //!   by its length, (K3));
 //! - [`CoupledSystem::save`] and [`CoupledSystem::restore`] keep and bring
 //!   back the whole state, so a predictor-corrector coupling can repeat an
-//!   interval and step on to the same bits (§13.4).
+//!   interval and step on to the same bits (§13.4); a state carries its
+//!   system's identity and is refused by another system;
+//! - one call takes at most [`MAX_INTERVAL_STEPS`] internal steps unless
+//!   the handle is told otherwise, and [`CoupledSystem::step_to_with`]
+//!   stops between two of them when its caller asks (Ctrl-C in Python).
 
-use crate::error::{ModelError, SolverError};
+mod identity;
+mod readings;
+
+use crate::error::{ModelError, Sig, SolverError};
 use crate::integrator::{step_count, StepSettings};
-use crate::model::{coordinate, SLOT_R};
 use crate::motion::{CoupledMotion, MotionInterval};
-use crate::observe::{cable_points, node_bending};
 use crate::statics::StaticSettings;
 use crate::system::{PointKind, System, SystemSimulation, SystemStatics};
+use identity::{Identity, SystemDigest};
 use std::fmt;
 
+/// The most internal steps one coupling call takes unless the handle is
+/// told otherwise ([`CoupledSystem::set_max_interval_steps`]). A coupling
+/// interval is typically 0.01 to 1 s and a line's time step 1e-4 to
+/// 1e-2 s, so an interval takes a few thousand steps at most; 100 000 is
+/// 10 times the longest of these (a 10 s interval at 1e-4 s), and at
+/// the 0.1 to 10 ms a step of a mooring system takes, seconds to
+/// minutes of work. An interval asking for more is a mistake of units or
+/// of the time step (dt 1e6 s, a deck's dtM 1e-7 s) that would otherwise
+/// hold the host's call for hours with no way to stop it from C.
+pub const MAX_INTERVAL_STEPS: usize = 100_000;
+
 /// Why a coupling call failed: its input (sizes, values, the order of
-/// calls), or the solver (the state stays at the last converged step).
+/// calls, a state of another system, an interval of too many steps: the
+/// handle is untouched), the solver, or its caller's request to stop
+/// (for both, the state stays at the last converged step).
 #[derive(Clone, Debug, PartialEq)]
 pub enum CouplingError {
     Input(ModelError),
     Solver(SolverError),
+    /// The caller asked to stop ([`CoupledSystem::step_to_with`]); the
+    /// system is at its last converged step, at `time` (s).
+    Interrupted {
+        time: f64,
+    },
 }
 
 impl fmt::Display for CouplingError {
@@ -38,6 +62,11 @@ impl fmt::Display for CouplingError {
         match self {
             CouplingError::Input(e) => write!(f, "{e}"),
             CouplingError::Solver(e) => write!(f, "{e}"),
+            CouplingError::Interrupted { time } => write!(
+                f,
+                "interrupted at t = {time} s, the last converged step; the next call \
+                 continues from there"
+            ),
         }
     }
 }
@@ -92,9 +121,13 @@ struct Running {
     velocity: Option<Vec<f64>>,
 }
 
-/// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`]).
+/// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`])
+/// and the identity of the system it was saved from.
 #[derive(Clone)]
-pub struct CoupledState(Option<Running>);
+pub struct CoupledState {
+    running: Option<Running>,
+    identity: Identity,
+}
 
 /// A system whose coupled points another code moves (see the module).
 #[derive(Clone)]
@@ -111,6 +144,13 @@ pub struct CoupledSystem {
     /// [`SystemSimulation::set_step_halvings`]).
     step_halvings: u32,
     coupled: Vec<usize>,
+    /// The system and step settings hashed once, for `identity`.
+    digest: SystemDigest,
+    /// Whose states this handle takes (see [`CoupledState`]); set by the
+    /// constructor and the builders.
+    identity: Identity,
+    /// The most internal steps one call may take.
+    max_interval_steps: usize,
     running: Option<Running>,
 }
 
@@ -144,19 +184,21 @@ impl CoupledSystem {
                 "the system has no coupled point for a coupling code to move",
             ));
         }
+        let digest = SystemDigest::of(&system, &steps);
         Ok(CoupledSystem {
+            identity: Identity::of(&digest, &coupled, 0),
+            digest,
             system,
             seed,
             statics,
             steps,
             step_halvings: 0,
             coupled,
+            max_interval_steps: MAX_INTERVAL_STEPS,
             running: None,
         })
     }
 
-    /// Orders the coupled points as `order` (a permutation of
-    /// [`Self::coupled_points`]; e.g. by the points' ids).
     /// The handle whose steps that Newton fails are taken again in halves,
     /// `halvings` levels deep ([`SystemSimulation::set_step_halvings`]).
     pub fn with_step_halvings(mut self, halvings: u32) -> Result<Self, ModelError> {
@@ -170,9 +212,12 @@ impl CoupledSystem {
             ));
         }
         self.step_halvings = halvings;
+        self.identity = Identity::of(&self.digest, &self.coupled, halvings);
         Ok(self)
     }
 
+    /// Orders the coupled points as `order` (a permutation of
+    /// [`Self::coupled_points`]; e.g. by the points' ids).
     pub fn with_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
         let mut sorted = order.clone();
         sorted.sort_unstable();
@@ -186,7 +231,27 @@ impl CoupledSystem {
             ));
         }
         self.coupled = order;
+        self.identity = Identity::of(&self.digest, &self.coupled, self.step_halvings);
         Ok(self)
+    }
+
+    /// The most internal steps one [`Self::step_to`] takes
+    /// ([`MAX_INTERVAL_STEPS`] unless set).
+    pub fn max_interval_steps(&self) -> usize {
+        self.max_interval_steps
+    }
+
+    /// Lets one call take up to `n` internal steps (at least 1): the
+    /// opt-in for a host that steps over long intervals on purpose.
+    pub fn set_max_interval_steps(&mut self, n: usize) -> Result<(), ModelError> {
+        if n == 0 {
+            return Err(ModelError::invalid(
+                "max_interval_steps",
+                "must be at least 1 (an interval takes at least one step)",
+            ));
+        }
+        self.max_interval_steps = n;
+        Ok(())
     }
 
     /// The coupled points (indices in the system), in the order of the
@@ -200,6 +265,8 @@ impl CoupledSystem {
         3 * self.coupled.len()
     }
 
+    /// The system: as built before [`Self::initialize`], then the running
+    /// one (its coupled points on the coupling code's motion).
     pub fn system(&self) -> &System {
         self.running
             .as_ref()
@@ -222,8 +289,21 @@ impl CoupledSystem {
     /// returns the lines' forces on the coupled points. `xd`, when given,
     /// is the points' velocity at t = 0: the start of the first interval's
     /// cubic (K2) (the lines start at rest). May be called again to start
-    /// over.
+    /// over. The solve is bounded: its load increments, their halvings and
+    /// Newton's iterations all have limits (docs/method.md §6.8).
     pub fn initialize(&mut self, x: &[f64], xd: Option<&[f64]>) -> Result<Vec<f64>, CouplingError> {
+        self.initialize_with(x, xd, &mut || false)
+    }
+
+    /// [`Self::initialize`], asking `stop` after every load increment of
+    /// the static solve: when it says true, the solve ends with
+    /// [`CouplingError::Interrupted`] and the handle is as before the call.
+    pub fn initialize_with(
+        &mut self,
+        x: &[f64],
+        xd: Option<&[f64]>,
+        stop: &mut dyn FnMut() -> bool,
+    ) -> Result<Vec<f64>, CouplingError> {
         self.check_values("x", x)?;
         if let Some(v) = xd {
             self.check_values("xd", v)?;
@@ -236,7 +316,16 @@ impl CoupledSystem {
             seed.set_point_motion(p, at)?;
         }
         let mut statics = SystemStatics::seeded(system.clone(), &seed, self.statics.clone())?;
-        statics.solve(|_, _| std::ops::ControlFlow::Continue(()))?;
+        let finished = statics.solve(|_, _| {
+            if stop() {
+                std::ops::ControlFlow::Break(())
+            } else {
+                std::ops::ControlFlow::Continue(())
+            }
+        })?;
+        if !finished {
+            return Err(CouplingError::Interrupted { time: self.time() });
+        }
         let forces = self
             .coupled
             .iter()
@@ -256,34 +345,37 @@ impl CoupledSystem {
     /// last call put them to `x` (3 per point): along the cubic (K2) when
     /// this call and the last both give velocities, else along the line
     /// (K1). The interval is split into the fewest equal steps no longer
-    /// than the scenario's (§13.3). On a solver failure the state stays at
-    /// the last converged step, with the coupled points on this interval's
-    /// motion, so a later call continues from there.
+    /// than the scenario's (§13.3); an interval of more steps than
+    /// [`Self::max_interval_steps`] is refused before anything moves. On a
+    /// solver failure the state stays at the last converged step, with
+    /// the coupled points on this interval's motion, so a later call
+    /// continues from there.
     pub fn step_to(
         &mut self,
         t_next: f64,
         x: &[f64],
         xd: Option<&[f64]>,
     ) -> Result<CoupledForces, CouplingError> {
-        self.check_values("x", x)?;
-        if let Some(v) = xd {
-            self.check_values("xd", v)?;
-        }
-        let dt = self.steps.time_step;
+        self.step_to_with(t_next, x, xd, &mut || false)
+    }
+
+    /// [`Self::step_to`], asking `stop` between two internal steps (after
+    /// each but the last): when it says true, the call ends with
+    /// [`CouplingError::Interrupted`] and the state is left as after a
+    /// solver failure (at the last converged step, at least one step after
+    /// the time reached and before `t_next`, the coupled points on this
+    /// interval's motion), so a later call continues from there.
+    pub fn step_to_with(
+        &mut self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+        stop: &mut dyn FnMut() -> bool,
+    ) -> Result<CoupledForces, CouplingError> {
+        let (steps, h) = self.interval(t_next, x, xd)?;
         let coupled = self.coupled.clone();
-        let running = self.running.as_mut().ok_or_else(|| {
-            ModelError::invalid("step", "initialize the coupled system before stepping it")
-        })?;
+        let running = self.running.as_mut().ok_or_else(not_initialized)?;
         let t0 = running.sim.time();
-        let length = t_next - t0;
-        if !t_next.is_finite() || length <= 1e-9 * dt {
-            return Err(ModelError::invalid(
-                "t",
-                format!("the next time {t_next} s must come after the time reached, {t0} s"),
-            )
-            .into());
-        }
-        let (steps, h) = interval_steps(length, dt);
         let rates = match (&running.velocity, xd) {
             (Some(v0), Some(v1)) => Some((v0.as_slice(), v1)),
             _ => None,
@@ -302,7 +394,7 @@ impl CoupledSystem {
         }
         running.sim.set_time_step(h);
         let mut impulse = vec![0.0; x.len()];
-        for _ in 0..steps {
+        for taken in 1..=steps {
             if let Err(e) = running.sim.step() {
                 running.stop_on_motion(&coupled);
                 return Err(e.into());
@@ -312,6 +404,12 @@ impl CoupledSystem {
                 for c in 0..3 {
                     impulse[3 * k + c] += f[c] * h;
                 }
+            }
+            if taken < steps && stop() {
+                running.stop_on_motion(&coupled);
+                return Err(CouplingError::Interrupted {
+                    time: running.sim.time(),
+                });
             }
         }
         running.position = x.to_vec();
@@ -327,83 +425,75 @@ impl CoupledSystem {
         })
     }
 
-    /// The whole state: the simulation (its kept factors included) and the
-    /// coupled points' last positions and velocities.
-    pub fn save(&self) -> CoupledState {
-        CoupledState(self.running.clone())
-    }
-
-    /// Brings back a state from [`Self::save`] of this handle: stepping on
-    /// from it gives the same bits as the first time.
-    pub fn restore(&mut self, state: &CoupledState) {
-        self.running.clone_from(&state.0);
-    }
-
-    /// Point p (in the system's order) at the current time: its position
-    /// and velocity (a coupled point's on its interval's motion, a free
-    /// point's from the solve) and the net force of its lines on it (the
-    /// mean over the last step, as the coupling arrays'). None before
-    /// [`Self::initialize`] or for a point that does not exist.
-    pub fn point(&self, p: usize) -> Option<PointReading> {
-        let sim = self.simulation()?;
-        if p >= self.system.points().len() {
-            return None;
+    /// The steps of the interval from the time reached to `t_next` and
+    /// their length, the arguments of a [`Self::step_to`] checked; nothing
+    /// is changed.
+    fn interval(
+        &self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+    ) -> Result<(usize, f64), CouplingError> {
+        self.check_values("x", x)?;
+        if let Some(v) = xd {
+            self.check_values("xd", v)?;
         }
-        let (position, velocity) = sim.point_state(p);
-        Some(PointReading {
-            position,
-            velocity,
-            force: sim.point_force(p),
-        })
+        let dt = self.steps.time_step;
+        let t0 = self
+            .running
+            .as_ref()
+            .ok_or_else(not_initialized)?
+            .sim
+            .time();
+        let length = t_next - t0;
+        if !t_next.is_finite() || length <= 1e-9 * dt {
+            return Err(ModelError::invalid(
+                "t",
+                format!("the next time {t_next} s must come after the time reached, {t0} s"),
+            )
+            .into());
+        }
+        let (steps, h) = interval_steps(length, dt);
+        if steps > self.max_interval_steps {
+            return Err(ModelError::invalid(
+                "t",
+                format!(
+                    "the interval of {} s from {} s to {} s takes {steps} steps of at most \
+                     the time step, {} s: more than the {} one call may take; step in \
+                     shorter intervals, or raise the bound (Rust \
+                     CoupledSystem::set_max_interval_steps, C stancf_set_max_interval_steps, \
+                     Python Simulation.max_interval_steps)",
+                    Sig(length),
+                    Sig(t0),
+                    Sig(t_next),
+                    Sig(dt),
+                    self.max_interval_steps
+                ),
+            )
+            .into());
+        }
+        Ok((steps, h))
     }
 
-    /// Positions of line i's nodes (m).
-    pub fn line_nodes(&self, line: usize) -> Option<Vec<[f64; 3]>> {
-        self.line_node_coordinates(line, false)
+    /// The whole state: the simulation (its kept factors included), the
+    /// coupled points' last positions and velocities, and this system's
+    /// identity.
+    pub fn save(&self) -> CoupledState {
+        CoupledState {
+            running: self.running.clone(),
+            identity: self.identity,
+        }
     }
 
-    /// Velocities of line i's nodes (m/s).
-    pub fn line_velocities(&self, line: usize) -> Option<Vec<[f64; 3]>> {
-        self.line_node_coordinates(line, true)
-    }
-
-    /// The axial force EA eps at line i's nodes (N; the mean of the two
-    /// elements' values at a shared node, docs/method.md §1.2).
-    pub fn line_tensions(&self, line: usize) -> Option<Vec<f64>> {
-        let l = self.simulation()?.lines().get(line)?;
-        let area = l.model().material.area;
-        Some(
-            cable_points(l.model(), l.state(), 2)
-                .iter()
-                .map(|p| p.axial_stress * area)
-                .collect(),
-        )
-    }
-
-    /// The curvature at line i's nodes (1/m).
-    pub fn line_curvatures(&self, line: usize) -> Option<Vec<f64>> {
-        let l = self.simulation()?.lines().get(line)?;
-        Some(
-            node_bending(l.model(), l.state())
-                .iter()
-                .map(|b| b.curvature)
-                .collect(),
-        )
-    }
-
-    fn line_node_coordinates(&self, line: usize, rates: bool) -> Option<Vec<[f64; 3]>> {
-        let l = self.simulation()?.lines().get(line)?;
-        let s = l.state();
-        let values = if rates { &s.v } else { &s.e };
-        let dpn = l.model().dofs_per_node();
-        Some(
-            (0..l.model().nodes())
-                .map(|j| {
-                    let o = coordinate(dpn, j, SLOT_R, 0);
-                    [values[o], values[o + 1], values[o + 2]]
-                })
-                .collect(),
-        )
+    /// Brings back a state from [`Self::save`] of this handle, or of a
+    /// handle of the same system (built from the same scenario text: a
+    /// restart): stepping on from it gives the same bits as the first
+    /// time. A state of another system is refused (an input error naming
+    /// both systems' lines and points) and the handle is untouched.
+    pub fn restore(&mut self, state: &CoupledState) -> Result<(), CouplingError> {
+        self.identity.admit(&state.identity)?;
+        self.running.clone_from(&state.running);
+        Ok(())
     }
 
     /// A coupling array: `coupled_dof` finite values.
@@ -412,7 +502,7 @@ impl CoupledSystem {
             return Err(ModelError::invalid(
                 key,
                 format!(
-                    "expected {} values (3 per coupled point), got {}",
+                    "expected {} values (coupled_dof: 3 per coupled point), got {}",
                     self.coupled_dof(),
                     values.len()
                 ),
@@ -429,7 +519,7 @@ impl CoupledSystem {
 }
 
 impl Running {
-    /// After a failed step: the coupled points' last positions and
+    /// After a failed or stopped step: the coupled points' last positions and
     /// velocities become where their interval's motion has them at the
     /// time reached, so the next interval starts from there.
     fn stop_on_motion(&mut self, coupled: &[usize]) {
@@ -442,6 +532,11 @@ impl Running {
         }
         self.velocity = self.velocity.is_some().then_some(velocity);
     }
+}
+
+/// The error of a step before [`CoupledSystem::initialize`].
+fn not_initialized() -> ModelError {
+    ModelError::invalid("step", "initialize the coupled system before stepping it")
 }
 
 /// The steps of a coupling interval of `length` (§13.3): the fewest equal
