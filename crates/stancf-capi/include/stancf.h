@@ -59,6 +59,13 @@ typedef struct StancfState StancfState;
    (the message names the file and the key or line). Writes no file. */
 StancfSystem *stancf_create(const char *path);
 
+/* stancf_create with flags: STANCF_ALLOW_LARGE opens a system of more
+   elements than `stancf run` takes without --allow-large (2000), up to the
+   hard bound (1000000); 0 is stancf_create. Beyond the bounds, and for an
+   unknown flag: NULL, the message saying which. */
+#define STANCF_ALLOW_LARGE 1u
+StancfSystem *stancf_create_with(const char *path, unsigned int flags);
+
 /* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 

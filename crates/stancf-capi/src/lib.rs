@@ -68,9 +68,40 @@ unsafe fn path_of(path: *const c_char) -> Result<PathBuf, Error> {
 /// `path` is NULL or a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_create(path: *const c_char) -> *mut StancfSystem {
+    create(path, 0)
+}
+
+/// Opens a system without the element bound `stancf run` applies without
+/// `--allow-large` ([`STANCF_ALLOW_LARGE`] in `flags`; 0 is
+/// `stancf_create`). The hard bound on elements holds whatever the flags;
+/// an unknown flag is refused.
+pub const STANCF_ALLOW_LARGE: c_uint = 1;
+
+/// `stancf_create` with `flags`: [`STANCF_ALLOW_LARGE`] opens a system of
+/// more elements than `stancf run` takes without `--allow-large` (up to
+/// the hard bound, docs/interface.md "Bounds"). NULL on error, as
+/// `stancf_create`.
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_create_with(
+    path: *const c_char,
+    flags: c_uint,
+) -> *mut StancfSystem {
+    create(path, flags)
+}
+
+unsafe fn create(path: *const c_char, flags: c_uint) -> *mut StancfSystem {
     guard_ptr(|| {
+        if flags & !STANCF_ALLOW_LARGE != 0 {
+            return Err(Error::new(
+                STANCF_INVALID_INPUT_FILE,
+                format!("unknown flags {flags:#x} (known: STANCF_ALLOW_LARGE = 1)"),
+            ));
+        }
         let path = path_of(path)?;
-        let coupled = stancf_cli::coupling::open(&path)
+        let coupled = stancf_cli::coupling::open_with(&path, flags & STANCF_ALLOW_LARGE != 0)
             .map_err(|e| Error::new(STANCF_INVALID_INPUT_FILE, e.to_string()))?;
         args::open_system(StancfSystem {
             coupled,

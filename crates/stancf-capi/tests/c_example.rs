@@ -12,7 +12,7 @@ fn the_c_example_compiles_and_prints_the_oc4_fairlead_tensions() {
     let dir = scratch("c-example");
     let exe = dir.join("oc4_surge");
     compile(&repo("examples/coupling/oc4_surge.c"), &exe, "c99");
-    let run = std::process::Command::new(&exe)
+    let run = common::c_program(&exe)
         .arg(repo("examples/oc4-deepcwind-moordyn.txt"))
         .arg("0.3")
         .output()

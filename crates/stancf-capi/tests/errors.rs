@@ -93,34 +93,43 @@ fn wrong_dof_counts_null_pointers_and_bad_calls_return_codes_and_the_handle_goes
     assert_eq!(unsafe { stancf_close(null_mut()) }, STANCF_INVALID_INPUT);
 }
 
-/// A jump of the fairlead by 1000 km in one step (the scenario's,
-/// 0.15 ms): Newton stalls at round-off of the huge coordinates; the code says so with time, step
-/// and residual, and the system stays at its last converged step.
+/// A step whose Newton cannot converge (examples/bridle.toml at a step of
+/// 1 s without halvings: its ropes of 0.08 kg/m and EA 2e4 N swing
+/// through their whole motion in one step): the code says so with time,
+/// step and residual, and the system stays at its last converged state.
+/// A jump of the fairlead by 1000 km is no motion at all: refused as a
+/// value (issue 28, item 17), the system untouched.
 #[test]
 fn a_diverging_step_returns_a_numerical_error_and_keeps_the_last_step() {
-    let s = bridle();
+    let text = std::fs::read_to_string(repo("examples/bridle.toml")).unwrap();
+    assert!(text.contains("time_step = 0.00015"));
+    let path = scratch("long-step").join("bridle.toml");
+    std::fs::write(
+        &path,
+        text.replace("time_step = 0.00015", "time_step = 1.0\nstep_halvings = 0"),
+    )
+    .unwrap();
+    let s = unsafe { stancf_create(cstring(&path).as_ptr()) };
+    assert!(!s.is_null(), "{}", message());
     let x = [6.0, 0.0, 1.0];
-    let (mut f, mut t, mut dt) = ([0.0; 3], 0.0, 1.5e-4);
+    let (mut f, mut t, mut dt) = ([0.0; 3], 0.0, 1.0);
     assert_eq!(
         unsafe { stancf_init(s, x.as_ptr(), null()) },
         STANCF_SUCCESS
     );
-    assert_eq!(
-        unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) },
-        STANCF_SUCCESS
-    );
     let far = [1e6; 3];
     let code = unsafe { stancf_step(s, far.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
-    assert_eq!(code, STANCF_NUMERICAL_ERROR);
+    assert_eq!(code, STANCF_INVALID_VALUE);
+    assert!(message().contains("above the 100 m/s"), "{}", message());
+    assert_eq!(t, 0.0);
+    let code = unsafe { stancf_step(s, x.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt) };
+    assert_eq!(code, STANCF_NUMERICAL_ERROR, "{}", message());
     let m = message();
-    assert!(
-        m.contains("did not converge") && m.contains("residual"),
-        "{m}"
-    );
-    assert_eq!(t, 1.5e-4);
+    assert!(m.contains("t = 0 s") && m.contains("residual"), "{m}");
+    assert_eq!(t, 0.0);
     let mut reached = -1.0;
     assert_eq!(unsafe { stancf_time(s, &mut reached) }, STANCF_SUCCESS);
-    assert_eq!(reached, 1.5e-4);
+    assert_eq!(reached, 0.0);
     let mut nodes = 0u32;
     assert_eq!(
         unsafe { stancf_line_nnodes(s, 0, &mut nodes) },
@@ -133,4 +142,59 @@ fn a_diverging_step_returns_a_numerical_error_and_keeps_the_last_step() {
     );
     assert!(pos.iter().all(|v| v.is_finite()));
     assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
+}
+
+/// The bridle deck of the examples with line 1's NumSegs set to `segs`,
+/// in a scratch folder; returns its path.
+fn bridle_deck_with_segments(name: &str, segs: &str) -> std::path::PathBuf {
+    let text = std::fs::read_to_string(repo("examples/midwater-bridle-moordyn.txt")).unwrap();
+    let row = "1   wire      1        3        46.0      20 ";
+    assert!(text.contains(row));
+    let deck = scratch(name).join("deck.txt");
+    let text = text
+        .replace(
+            row,
+            &format!("1   wire      1        3        46.0      {segs} "),
+        )
+        .replace("3   Free ", "3   Coupled ");
+    std::fs::write(&deck, text).unwrap();
+    deck
+}
+
+/// Item 4 of issue 28: the library applies the bounds `stancf run`
+/// applies before building anything, so a deck of 1e7 segments is a
+/// refusal with a message, not an abort of the host; a system beyond
+/// the bound without `--allow-large` opens only with its flag.
+#[test]
+fn a_deck_beyond_the_bounds_is_refused_before_it_is_built_and_large_ones_open_on_request() {
+    for segs in ["10000000", "18446744073709551615"] {
+        let deck = bridle_deck_with_segments("huge-deck", segs);
+        for flags in [0, STANCF_ALLOW_LARGE] {
+            let s = unsafe { stancf_create_with(cstring(&deck).as_ptr(), flags) };
+            assert!(s.is_null());
+            assert!(
+                message().contains("line 18: NumSegs of line 1")
+                    && message().contains("above the 1000000 segments a line may have"),
+                "{}",
+                message()
+            );
+        }
+    }
+    let deck = bridle_deck_with_segments("large-deck", "3000");
+    let s = unsafe { stancf_create(cstring(&deck).as_ptr()) };
+    assert!(s.is_null());
+    assert!(
+        message().contains("3024 elements in all") && message().contains("--allow-large"),
+        "{}",
+        message()
+    );
+    let s = unsafe { stancf_create_with(cstring(&deck).as_ptr(), STANCF_ALLOW_LARGE) };
+    assert!(!s.is_null(), "{}", message());
+    let mut n = 0u32;
+    assert_eq!(unsafe { stancf_line_nnodes(s, 0, &mut n) }, STANCF_SUCCESS);
+    assert_eq!(n, 3001);
+    assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
+    let s = unsafe { stancf_create_with(cstring(&deck).as_ptr(), 6) };
+    assert!(s.is_null());
+    assert!(message().contains("unknown flags 0x6"), "{}", message());
 }

@@ -89,6 +89,9 @@ int main(int argc, char **argv) {
     if (strstr(stancf_error_message(), "file.toml") == NULL) return 11;
     StancfSystem *s = stancf_create(argv[1]);
     if (s == NULL) { fprintf(stderr, "%s\n", stancf_error_message()); return 12; }
+    StancfSystem *large = stancf_create_with(argv[1], STANCF_ALLOW_LARGE);
+    if (large == NULL || stancf_close(large)) return 35;
+    if (stancf_create_with(argv[1], 2u) != NULL) return 36;
     unsigned int n = 0, lines = 0, nodes = 0, points = 0;
     int64_t id = 0, ids[1];
     double x[3], xd[3] = {0.0, 0.0, 0.0}, f[3], t = 0.0, dt = 0.01, v3[3], v;
@@ -131,7 +134,7 @@ fn a_c99_program_calling_every_function_compiles_and_runs_against_the_library() 
     std::fs::write(&source, EVERY_CALL).unwrap();
     let exe = dir.join("every_call");
     compile(&source, &exe, "c99");
-    let run = std::process::Command::new(&exe)
+    let run = common::c_program(&exe)
         .arg(repo("examples/bridle.toml"))
         .output()
         .unwrap();

@@ -26,7 +26,11 @@ fn bed_tolerance(depth: f64) -> f64 {
 /// documentation); `coupled_placed` is false where a coupling code, not
 /// the scenario, places the coupled points (their positions then are not
 /// checked).
-pub fn check_geometry(file: &str, sc: &SystemScenario, coupled_placed: bool) -> Result<(), Failure> {
+pub fn check_geometry(
+    file: &str,
+    sc: &SystemScenario,
+    coupled_placed: bool,
+) -> Result<(), Failure> {
     let placed = |p: usize| match sc.points[p].kind {
         PointType::Fixed => true,
         PointType::Coupled => coupled_placed,

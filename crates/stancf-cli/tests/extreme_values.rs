@@ -140,7 +140,7 @@ fn rope_in_water(water: &str) -> String {
     format!(
         "{}[water]\ndepth = 30.0\n{water}\n[analysis]\ntype = \"dynamic\"\ntime_step = 1e-3\n\
          duration = 0.01\n",
-        one_rope("w", "", ("fixed", [4.0, 0.0, -5.0]), (1, 5.0, 4), "")
+        one_rope("w", "", ("fixed", [4.0, 0.0, 0.0]), (1, 5.0, 4), "")
     )
 }
 
@@ -189,5 +189,51 @@ fn a_slow_but_plausible_slip_velocity_still_runs() {
     );
     let o = run_quiet(&file, &d.join("out"), &[]);
     assert!(o.status.success(), "{:?}", text(&o));
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// Item 17 of issue 28: a wave no sea has (a 100 m wave of 5 s in 20 m of
+/// water: steeper than 1/7 and higher than the depth lets it be) runs, and
+/// `check` and `run` say so, once each.
+#[test]
+fn a_wave_beyond_breaking_is_warned_of_once_by_check_and_run() {
+    let d = scratch("breaking-wave");
+    let sc = format!(
+        "{}[water]\ndepth = 20.0\n[[water.waves]]\namplitude = 50.0\nperiod = 5.0\n\
+         [analysis]\ntype = \"dynamic\"\ntime_step = 1e-3\nduration = 2e-3\n",
+        one_rope("w", "", ("fixed", [4.0, 0.0, -5.0]), (1, 5.0, 4), "")
+    )
+    .replace("position = [0.0, 0.0, 0.0]", "position = [0.0, 0.0, -5.0]");
+    let file = write_scenario(&d, "wave.toml", &sc);
+    for cmd in ["check", "run"] {
+        let mut args = vec![cmd, file.to_str().unwrap()];
+        let out = d.join("out");
+        if cmd == "run" {
+            args.extend(["--out", out.to_str().unwrap()]);
+        }
+        let o = stancf(&args);
+        let (so, se) = text(&o);
+        let all = format!("{so}{se}");
+        // It runs (or the solver gives up on such a sea: exit 3); it is
+        // not refused.
+        assert!(matches!(o.status.code(), Some(0) | Some(3)), "{cmd}: {all}");
+        assert_eq!(
+            all.matches("steeper than a wave can be").count(),
+            1,
+            "{cmd}: {all}"
+        );
+        assert_eq!(all.matches("H/h = 5.00 > 0.78").count(), 1, "{cmd}: {all}");
+    }
+    // A 2 m wave of 8 s there is neither.
+    let calm = sc
+        .replace("amplitude = 50.0", "amplitude = 1.0")
+        .replace("period = 5.0", "period = 8.0");
+    let file = write_scenario(&d, "calm.toml", &calm);
+    let o = stancf(&["check", file.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert!(
+        o.status.success() && !so.contains("break") && !se.contains("break"),
+        "{so}{se}"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }

@@ -4,7 +4,7 @@
 //! Galerkin scheme, and the planar reduction.
 
 mod common;
-use common::{expect_input_error, read_csv, scratch, stancf, text, write_scenario};
+use common::{expect_input_error, read_csv, repo_file, scratch, stancf, text, write_scenario};
 
 /// A small valid scenario: the transverse impact, shortened.
 const BASE: &str = common::IMPACT;
@@ -277,4 +277,58 @@ fn planar_reduction_from_a_scenario() {
         &BASE.replace("[analysis]", "[analysis]\nplanar_reduction = \"yes\""),
         &["planar_reduction"],
     );
+}
+
+/// The numbers after each of `keys` in `text`, in order.
+fn numbers_after(text: &str, keys: &[&str]) -> Vec<f64> {
+    let mut rest = text;
+    keys.iter()
+        .map(|k| {
+            let at = rest.find(k).unwrap_or_else(|| panic!("no {k:?} in {text}")) + k.len();
+            rest = &rest[at..];
+            rest.split_whitespace().next().unwrap().parse().unwrap()
+        })
+        .collect()
+}
+
+/// Item 20 of issue 28: the watchdog's message of a damped run above its
+/// stable step gives the energies of the step that made the energy grow:
+/// the mechanical energy plus what drag took out is the total, and the
+/// total less the initial energy is the growth (it used to take the work
+/// of the step before, and read as a lower energy "above" the initial).
+#[test]
+fn the_energy_watchdog_of_a_dragged_pendulum_reports_one_consistent_balance() {
+    let d = scratch("drag-watchdog");
+    let scenario = std::fs::read_to_string(repo_file("examples/pendulum-drag.toml"))
+        .unwrap()
+        .replace("drag_coefficient = 1.5", "drag_coefficient = 1e6")
+        .replace("time_step = 1.0e-4", "time_step = 5.0e-3");
+    let sc = write_scenario(&d, "dragged.toml", &scenario);
+    let o = stancf(&[
+        "run",
+        sc.to_str().unwrap(),
+        "--out",
+        d.join("out").to_str().unwrap(),
+    ]);
+    let (_, err) = text(&o);
+    assert_eq!(o.status.code(), Some(3), "{err}");
+    let v = numbers_after(
+        &err,
+        &[
+            "the mechanical energy",
+            "plus the",
+            "took out is",
+            "J,",
+            "above the initial",
+        ],
+    );
+    let (mechanical, taken, total, growth, initial) = (v[0], v[1], v[2], v[3], v[4]);
+    assert!(taken > 0.0, "{err}");
+    // Printed to 7 and 4 significant digits.
+    assert!(
+        (mechanical + taken - total).abs() <= 1e-6 * total.abs().max(taken),
+        "{err}"
+    );
+    assert!((total - initial - growth).abs() <= 1e-3 * growth, "{err}");
+    assert!(growth > 0.0 && total > initial, "{err}");
 }

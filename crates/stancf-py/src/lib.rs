@@ -49,6 +49,15 @@ fn is_moordyn(text: &str) -> bool {
     stancf_cli::moordyn::looks_like_moordyn(text)
 }
 
+/// The text of an input file as the command line reads it: a regular
+/// file of at most 64 MiB of UTF-8 (`stancf_cli::input_file`); anything
+/// else raises ScenarioError naming the file.
+#[pyfunction]
+fn read_input(path: PathBuf) -> PyResult<String> {
+    stancf_cli::input_file::read_text(&path)
+        .map_err(|e| ScenarioError::new_err(format!("{}: {e}", path.display())))
+}
+
 /// A Python value as a TOML value.
 fn to_toml(v: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
     if v.is_instance_of::<PyBool>() {
@@ -250,6 +259,7 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RunFailed", m.py().get_type::<RunFailed>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
+    m.add_function(wrap_pyfunction!(read_input, m)?)?;
     m.add_function(wrap_pyfunction!(is_moordyn, m)?)?;
     m.add_function(wrap_pyfunction!(dict_to_toml, m)?)?;
     m.add_function(wrap_pyfunction!(with_values, m)?)?;

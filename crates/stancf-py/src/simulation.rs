@@ -119,10 +119,13 @@ impl PySimulation {
 #[pymethods]
 impl PySimulation {
     /// The coupled system of scenario or deck text; `path` names it in
-    /// messages and resolves the files it refers to.
+    /// messages and resolves the files it refers to; `allow_large` opens
+    /// a system beyond the element bound `stancf run` applies without
+    /// `--allow-large` (the hard bound holds).
     #[new]
-    fn new(text: &str, path: PathBuf) -> PyResult<Self> {
-        let opened = stancf_cli::coupling::from_text(text, &path)
+    #[pyo3(signature = (text, path, allow_large = false))]
+    fn new(text: &str, path: PathBuf, allow_large: bool) -> PyResult<Self> {
+        let opened = stancf_cli::coupling::from_text_with(text, &path, allow_large)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
         Ok(PySimulation {
             inner: Mutex::new(Inner {

@@ -365,3 +365,38 @@ def test_a_second_thread_is_told_a_simulation_is_used_by_one_thread_at_a_time():
     # Not pyo3's borrow message, and the Simulation answers again after.
     assert "borrowed" not in refused[0]
     assert sim.time > 0.0
+
+
+def _bridle_deck_with_segments(tmp_path, segs):
+    """The bridle deck of the examples, its line 1 of `segs` segments and
+    its clump weight a coupled point."""
+    text = (ROOT / "examples" / "midwater-bridle-moordyn.txt").read_text()
+    row = "1   wire      1        3        46.0      20 "
+    assert row in text
+    text = text.replace(row, "1   wire      1        3        46.0      %s " % segs)
+    text = text.replace("3   Free ", "3   Coupled ")
+    deck = tmp_path / "deck.txt"
+    deck.write_text(text)
+    return deck
+
+
+def test_a_deck_beyond_the_bounds_is_refused_before_it_is_built(tmp_path):
+    # Issue 28, item 4: 1e7 segments used to abort the interpreter.
+    deck = _bridle_deck_with_segments(tmp_path, "10000000")
+    for allow in (False, True):
+        with pytest.raises(stancf.ScenarioError, match="above the 1000000 segments"):
+            stancf.Simulation(deck, allow_large=allow)
+    deck = _bridle_deck_with_segments(tmp_path, "3000")
+    with pytest.raises(stancf.ScenarioError, match="3024 elements in all"):
+        stancf.Simulation(deck)
+    sim = stancf.Simulation(deck, allow_large=True)
+    assert sim.coupled_dof == 3
+
+
+def test_a_device_or_a_folder_is_refused_naming_it(tmp_path):
+    # Issue 28, item 13: the files are read as the command line reads them.
+    for path in ("/dev/zero", str(tmp_path)):
+        with pytest.raises(stancf.ScenarioError, match="not a regular file"):
+            stancf.Simulation(path)
+        with pytest.raises(stancf.ScenarioError, match="not a regular file"):
+            stancf.Scenario.from_file(path)

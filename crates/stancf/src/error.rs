@@ -51,6 +51,10 @@ pub enum FailureKind {
     /// The mechanical energy grew without a source: the step is above the
     /// scheme's stability limit (docs/method.md §4.5 and §8).
     EnergyGrowth,
+    /// A static load path took the most increments it may and still
+    /// creeps toward a load factor it cannot pass (each increment
+    /// converged).
+    PathStalled,
 }
 
 /// A step that failed. Everything before `step` converged and is valid.
@@ -81,6 +85,7 @@ impl fmt::Display for SolverError {
             FailureKind::NonFinite => "the iteration produced a non-finite value",
             FailureKind::SingularJacobian => "the Jacobian is singular",
             FailureKind::EnergyGrowth => "the energy grows without a source (unstable step)",
+            FailureKind::PathStalled => "the static load path stalled",
         };
         if self.detail.starts_with(STATIC_SOLVE) {
             write!(f, "{what} at load factor {} (increment", Sig(self.time))?;

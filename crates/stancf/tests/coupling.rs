@@ -7,7 +7,7 @@
 mod rope_systems;
 
 use rope_systems::{independent_ropes, settings, three_to_a_point};
-use stancf::coupling::{CoupledSystem, CouplingError, MAX_INTERVAL_STEPS};
+use stancf::coupling::{CoupledSystem, CouplingError, MAX_COUPLED_SPEED, MAX_INTERVAL_STEPS};
 use stancf::system::System;
 use stancf::StaticSettings;
 
@@ -223,4 +223,27 @@ fn a_stopped_static_solve_leaves_the_handle_as_it_was() {
     let before = (h.time(), nodes(&h));
     assert!(h.initialize_with(&x, None, &mut || true).is_err());
     assert_eq!((h.time(), nodes(&h)), before);
+}
+
+/// Item 17 of issue 28: a host that moves a coupled point 1 km in 0.1 s
+/// gave a wrong position (another unit or frame), not a motion.
+#[test]
+fn a_coupled_point_moved_faster_than_the_bound_is_refused_and_nothing_moves() {
+    let (mut h, mut x) = stepped(three_to_a_point(4));
+    let t = h.time();
+    let before = nodes(&h);
+    let mut far = x.clone();
+    far[0] += 1000.0;
+    let e = h.step_to(t + 0.1, &far, None).unwrap_err();
+    let m = input_message(e);
+    assert!(
+        m.contains("x[0..3]") && m.contains("10000 m/s") && m.contains("100 m/s"),
+        "{m}"
+    );
+    assert_eq!(h.time(), t);
+    assert_eq!(nodes(&h), before);
+    // Below the bound the motion is the solver's to follow (or fail).
+    x[0] += 0.5 * MAX_COUPLED_SPEED * 1e-4;
+    let r = h.step_to(t + 1e-4, &x, None);
+    assert!(!matches!(r, Err(CouplingError::Input(_))), "{r:?}");
 }

@@ -101,6 +101,27 @@ pub fn compile(source: &Path, exe: &Path, standard: &str) {
     );
 }
 
+/// A command running the compiled C program `exe` against the library of
+/// [`library_dir`]: its folder first on `LD_LIBRARY_PATH`, which the
+/// loader searches before the program's run path (cargo puts
+/// `target/release` there, where an older `libstancf_c.so` of `cargo
+/// build` may lie).
+pub fn c_program(exe: &Path) -> Command {
+    let lib = library_dir();
+    let path = match std::env::var_os("LD_LIBRARY_PATH") {
+        Some(old) => {
+            let mut p = lib.into_os_string();
+            p.push(":");
+            p.push(old);
+            p
+        }
+        None => lib.into_os_string(),
+    };
+    let mut cmd = Command::new(exe);
+    cmd.env("LD_LIBRARY_PATH", path);
+    cmd
+}
+
 /// A fresh folder for a test's files.
 pub fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("stancf-capi-{name}-{}", std::process::id()));

@@ -48,7 +48,7 @@ class Scenario:
         """Reads and validates a scenario file. Its title defaults to the
         file's stem, as on the command line."""
         path = Path(path)
-        text = path.read_text()
+        text = _stancf.read_input(str(path))
         name = str(path)
         _stancf.validate(text, name)
         if _stancf.is_moordyn(text):

@@ -117,13 +117,13 @@ class Simulation:
     RuntimeError.
     """
 
-    def __init__(self, scenario_or_deck, max_interval_steps=None):
+    def __init__(self, scenario_or_deck, max_interval_steps=None, allow_large=False):
         if isinstance(scenario_or_deck, Scenario):
             text, name = scenario_or_deck.text, scenario_or_deck.name
         else:
             path = Path(scenario_or_deck)
-            text, name = path.read_text(), str(path)
-        self._sim = _stancf.Simulation(text, name)
+            text, name = _stancf.read_input(str(path)), str(path)
+        self._sim = _stancf.Simulation(text, name, bool(allow_large))
         if max_interval_steps is not None:
             self.max_interval_steps = max_interval_steps
 

@@ -42,6 +42,11 @@ use std::fmt;
 /// hold the host's call for hours with no way to stop it from C.
 pub const MAX_INTERVAL_STEPS: usize = 100_000;
 
+/// The fastest a coupled point may move over a coupling interval (m/s): a
+/// fairlead of a floating platform in a storm moves a few m/s, a towed
+/// body or a cable robot's winch tens; 100 m/s is no mooring's motion.
+pub const MAX_COUPLED_SPEED: f64 = 100.0;
+
 /// Why a coupling call failed: its input (sizes, values, the order of
 /// calls, a state of another system, an interval of too many steps: the
 /// handle is untouched), the solver, or its caller's request to stop
@@ -453,6 +458,7 @@ impl CoupledSystem {
             )
             .into());
         }
+        self.check_speeds(x, length)?;
         let (steps, h) = interval_steps(length, dt);
         if steps > self.max_interval_steps {
             return Err(ModelError::invalid(
@@ -493,6 +499,39 @@ impl CoupledSystem {
     pub fn restore(&mut self, state: &CoupledState) -> Result<(), CouplingError> {
         self.identity.admit(&state.identity)?;
         self.running.clone_from(&state.running);
+        Ok(())
+    }
+
+    /// The coupled points' mean speeds over an interval of `length` to
+    /// `x`, each at most [`MAX_COUPLED_SPEED`]: a point moved faster was
+    /// given a wrong position (another unit, another frame, a swapped
+    /// array), not a motion.
+    fn check_speeds(&self, x: &[f64], length: f64) -> Result<(), ModelError> {
+        let Some(running) = self.running.as_ref() else {
+            return Ok(());
+        };
+        for (k, &p) in self.coupled.iter().enumerate() {
+            let from = triple(&running.position, k);
+            let to = triple(x, k);
+            let jump =
+                ((to[0] - from[0]).powi(2) + (to[1] - from[1]).powi(2) + (to[2] - from[2]).powi(2))
+                    .sqrt();
+            let speed = jump / length;
+            if speed > MAX_COUPLED_SPEED {
+                return Err(ModelError::invalid(
+                    format!("x[{}..{}]", 3 * k, 3 * k + 3),
+                    format!(
+                        "coupled point {k} (point index {p}) would move {} m in {} s, a mean \
+                         speed of {} m/s, above the {MAX_COUPLED_SPEED} m/s a coupled point \
+                         may move (a wrong position: another unit or frame?); the system is \
+                         untouched",
+                        Sig(jump),
+                        Sig(length),
+                        Sig(speed)
+                    ),
+                ));
+            }
+        }
         Ok(())
     }
 

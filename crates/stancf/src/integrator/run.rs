@@ -51,11 +51,23 @@ where
                 sim,
             ));
         }
-        if let Err(drift) = watch.check(&en, sim.external_work()) {
+        let work = sim.external_work();
+        if let Err(drift) = watch.check(&en, work) {
+            // The message is of the step that made the energy grow: its
+            // energies and its work, taken before the step is undone.
             sim.undo_last_step();
+            // The balance compared: the mechanical energy now plus what
+            // drag and the constraints took out (their work W, negative
+            // when they take energy out), against the energy at the start.
+            // A drag that takes out more than the motion had is a growth
+            // too, though the mechanical energy itself fell.
             let detail = format!(
-                "energy {:.6e} J, {:.3e} J above the initial {:.6e} J; reduce the time step",
-                en.mechanical() - sim.external_work(),
+                "the mechanical energy {:.6e} J plus the {:.6e} J that drag and the constraints \
+                 took out is {:.6e} J, {:.3e} J above the initial {:.6e} J: energy came from \
+                 no source; reduce the time step",
+                en.mechanical(),
+                -work,
+                en.mechanical() - work,
                 drift,
                 watch.initial.mechanical()
             );

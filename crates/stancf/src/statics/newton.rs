@@ -314,7 +314,7 @@ impl<F: Factorization> StaticNewton<F> {
     /// The error of a load path past [`Self::max_increments`].
     fn creeping(&self, legs: usize) -> SolverError {
         SolverError {
-            kind: FailureKind::NotConverged,
+            kind: FailureKind::PathStalled,
             time: self.lambda,
             step: self.increments + 1,
             residual: self.residual_norm(),
