@@ -286,9 +286,12 @@ impl<F: Factorization> StaticNewton<F> {
                             iterations: self.settings.max_iterations,
                             detail: format!(
                                 "{STATIC_SOLVE}: the load increment from load factor {} could \
-                                 not be converged even after {} halvings",
+                                 not be converged even after {} halvings (converged: the scaled \
+                                 residual and increment both within the tolerance {}, or the \
+                                 residual within it {SETTLED_ITERATIONS} iterations running)",
                                 Sig(self.lambda),
-                                self.settings.max_cuts
+                                self.settings.max_cuts,
+                                Sig(self.settings.tolerance)
                             ),
                         });
                     }
