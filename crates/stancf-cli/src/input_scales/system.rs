@@ -77,7 +77,7 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
             Rule::Scale,
         )?;
     }
-    f.need("|g|", g, " m/s^2", &[g_key.clone()], Rule::Scale)?;
+    f.need("|g|", g, " m/s^2", std::slice::from_ref(&g_key), Rule::Scale)?;
     if stepped {
         f.need(
             "the time step",
@@ -223,7 +223,7 @@ fn water_figures(
             "the wave period",
             period,
             " s",
-            &[key.clone()],
+            std::slice::from_ref(&key),
             Rule::Divisor,
         )?;
         let length = g * period * period / (2.0 * std::f64::consts::PI);

@@ -36,7 +36,7 @@ pub(super) fn breaking_wave_notes(sc: &SystemScenario) -> Vec<String> {
     }
     let mut notes = Vec::new();
     for (key, height, period) in waves {
-        if height == 0.0 || !(g > 0.0) {
+        if height == 0.0 || g.is_nan() || g <= 0.0 {
             continue;
         }
         let k = stancf::water::waves::wave_number(2.0 * std::f64::consts::PI / period, w.depth, g);
