@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{bridle, cstring, message, repo};
+use common::{bridle, cstring, line_positions, message, repo};
 use stancf_c::error::*;
 use stancf_c::*;
 use std::ffi::c_int;
@@ -95,20 +95,6 @@ fn stepped_bridle() -> *mut StancfSystem {
     s
 }
 
-fn positions(s: *mut StancfSystem, line: u32) -> Vec<f64> {
-    let mut n = 0u32;
-    assert_eq!(
-        unsafe { stancf_line_nnodes(s, line, &mut n) },
-        STANCF_SUCCESS
-    );
-    let mut pos = vec![0.0; 3 * n as usize];
-    assert_eq!(
-        unsafe { stancf_line_positions(s, line, pos.as_mut_ptr()) },
-        STANCF_SUCCESS
-    );
-    pos
-}
-
 #[test]
 fn a_closed_handle_is_refused_by_every_call_and_nothing_is_written() {
     let s = stepped_bridle();
@@ -176,10 +162,10 @@ fn a_state_freed_twice_or_restored_after_freeing_is_refused() {
     assert_eq!(unsafe { stancf_free_state(state) }, STANCF_SUCCESS);
     assert_eq!(unsafe { stancf_free_state(state) }, STANCF_INVALID_INPUT);
     assert!(message().contains("freed already"), "{}", message());
-    let before = positions(s, 1);
+    let before = line_positions(s, 1);
     assert_eq!(unsafe { stancf_restore(s, state) }, STANCF_INVALID_INPUT);
     assert!(message().contains("freed already"), "{}", message());
-    assert_eq!(positions(s, 1), before);
+    assert_eq!(line_positions(s, 1), before);
     assert_eq!(
         unsafe { stancf_free_state(null_mut()) },
         STANCF_INVALID_INPUT
@@ -199,7 +185,7 @@ fn a_state_of_another_system_is_an_invalid_value_and_the_system_is_untouched() {
         assert_eq!(stancf_init(other, x.as_ptr(), null()), STANCF_SUCCESS);
     }
     let foreign = unsafe { stancf_save(other) };
-    let before: Vec<_> = (0..2).map(|l| positions(s, l)).collect();
+    let before: Vec<_> = (0..2).map(|l| line_positions(s, l)).collect();
     assert_eq!(unsafe { stancf_restore(s, foreign) }, STANCF_INVALID_VALUE);
     let m = message();
     assert!(
@@ -212,7 +198,10 @@ fn a_state_of_another_system_is_an_invalid_value_and_the_system_is_untouched() {
     let mut lines = 0u32;
     assert_eq!(unsafe { stancf_nlines(s, &mut lines) }, STANCF_SUCCESS);
     assert_eq!(lines, 2);
-    assert_eq!((0..2).map(|l| positions(s, l)).collect::<Vec<_>>(), before);
+    assert_eq!(
+        (0..2).map(|l| line_positions(s, l)).collect::<Vec<_>>(),
+        before
+    );
     unsafe {
         assert_eq!(stancf_free_state(foreign), STANCF_SUCCESS);
         assert_eq!(stancf_close(other), STANCF_SUCCESS);
@@ -233,7 +222,7 @@ fn a_state_restores_into_a_second_handle_on_the_same_file_to_the_same_bits() {
             let code = stancf_step(s, X.as_ptr(), null(), f.as_mut_ptr(), &mut t, &mut dt);
             assert_eq!(code, STANCF_SUCCESS, "{}", message());
         }
-        (f, positions(s, 1))
+        (f, line_positions(s, 1))
     };
     assert_eq!(step(first), step(second));
     unsafe {
@@ -247,7 +236,7 @@ fn a_state_restores_into_a_second_handle_on_the_same_file_to_the_same_bits() {
 fn an_interval_of_too_many_internal_steps_is_an_invalid_value_until_the_bound_is_raised() {
     let s = stepped_bridle();
     let (mut f, mut t, mut dt) = ([SENTINEL; 3], 0.0, 1e6);
-    let before = positions(s, 1);
+    let before = line_positions(s, 1);
     unsafe {
         assert_eq!(stancf_time(s, &mut t), STANCF_SUCCESS);
         let t0 = t;
@@ -259,7 +248,7 @@ fn an_interval_of_too_many_internal_steps_is_an_invalid_value_until_the_bound_is
                 && m.contains("stancf_set_max_interval_steps"),
             "{m}"
         );
-        assert_eq!((t, f, positions(s, 1)), (t0, [SENTINEL; 3], before));
+        assert_eq!((t, f, line_positions(s, 1)), (t0, [SENTINEL; 3], before));
         // The bridle's step is 0.15 ms: 0.003 s takes 20 steps.
         dt = 3e-3;
         assert_eq!(stancf_set_max_interval_steps(s, 19), STANCF_SUCCESS);
@@ -304,7 +293,7 @@ fn calls_on_one_handle_from_four_threads_wait_for_each_other() {
                     let mut t = -1.0;
                     assert_eq!(unsafe { stancf_time(s, &mut t) }, STANCF_SUCCESS);
                     assert!(t >= 0.0);
-                    assert_eq!(positions(s, 1).len(), 3 * 21);
+                    assert_eq!(line_positions(s, 1).len(), 3 * 21);
                 }
             })
         })

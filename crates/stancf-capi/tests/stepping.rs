@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{bridle, message, repo, swing};
+use common::{bridle, line_positions, message, repo, swing};
 use stancf_c::error::STANCF_SUCCESS;
 use stancf_c::*;
 use std::ptr::null;
@@ -31,20 +31,6 @@ fn advance_to(s: *mut StancfSystem, count: usize, dt: f64) -> (Vec<[f64; 3]>, f6
         out.push(f);
     }
     (out, t)
-}
-
-fn line_positions(s: *mut StancfSystem, line: u32) -> Vec<f64> {
-    let mut n = 0u32;
-    assert_eq!(
-        unsafe { stancf_line_nnodes(s, line, &mut n) },
-        STANCF_SUCCESS
-    );
-    let mut pos = vec![0.0; 3 * n as usize];
-    assert_eq!(
-        unsafe { stancf_line_positions(s, line, pos.as_mut_ptr()) },
-        STANCF_SUCCESS
-    );
-    pos
 }
 
 #[test]

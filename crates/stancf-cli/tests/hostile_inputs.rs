@@ -13,33 +13,11 @@ use std::path::Path;
 /// `needles` and none of `absent`, at most `max_bytes` long; `run`
 /// writes nothing. Returns the stderr of `check`.
 fn refused(dir: &Path, file: &Path, needles: &[&str], absent: &[&str], max_bytes: usize) -> String {
-    let out = dir.join("out");
-    let mut first = String::new();
-    for cmd in ["check", "run"] {
-        let mut args = vec![cmd, file.to_str().unwrap()];
-        if cmd == "run" {
-            args.extend(["--out", out.to_str().unwrap()]);
-        }
-        let o = stancf(&args);
-        let (_, err) = text(&o);
-        assert_eq!(o.status.code(), Some(2), "{cmd} {file:?}: {err}");
-        assert!(
-            err.len() <= max_bytes,
-            "{cmd}: {} bytes of stderr",
-            err.len()
-        );
-        for n in needles {
-            assert!(err.contains(n), "{cmd}: no {n:?} in {err}");
-        }
-        for a in absent {
-            assert!(!err.contains(a), "{cmd}: {a:?} in {err}");
-        }
-        if first.is_empty() {
-            first = err;
-        }
+    let [check, run] = refused_by_check_and_run(file, &dir.join("out"), needles, absent);
+    for err in [&check, &run] {
+        assert!(err.len() <= max_bytes, "{} bytes of stderr", err.len());
     }
-    assert!(!out.exists());
-    first
+    check
 }
 
 #[test]

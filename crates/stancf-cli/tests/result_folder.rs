@@ -75,6 +75,20 @@ fn staging_with_history(target: &Path, bytes: u64) -> Option<PathBuf> {
     })
 }
 
+/// Runs `scenario` into `target`, sends SIGINT once it is stepping (its
+/// history holds 4 kB) and checks exit code 130; its standard error.
+fn interrupted_mid_run(scenario: &Path, target: &Path) -> String {
+    let child = spawn_run(scenario, target);
+    wait_for("the run to step", || {
+        staging_with_history(target, 4096).is_some()
+    });
+    signal(&child, libc::SIGINT);
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(130), "{err}");
+    err
+}
+
 /// Asserts that `dir` holds a valid set: every CSV file parses with finite
 /// numbers, the last history row is the summary's time, the final nodes
 /// are the summary's, and the history has one row per written step.
@@ -198,14 +212,7 @@ fn ctrl_c_mid_run_writes_a_valid_partial_set_marked_interrupted() {
     let old = write_scenario(&d, "old.toml", &pendulum("old", 1e-4, 0.01, 1));
     let o = run_to(&old, &target);
     assert!(o.status.success());
-    let child = spawn_run(&long, &target);
-    wait_for("the run to step", || {
-        staging_with_history(&target, 4096).is_some()
-    });
-    signal(&child, libc::SIGINT);
-    let out = child.wait_with_output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(130), "{err}");
+    let err = interrupted_mid_run(&long, &target);
     assert!(err.contains("interrupted"), "{err}");
     let summary = assert_valid_set(&target);
     assert_eq!(summary["title"], "long");
@@ -235,14 +242,7 @@ fn ctrl_c_mid_system_run_marks_its_summary_interrupted() {
     );
     let long = write_scenario(&d, "long.toml", &long);
     let target = d.join("case");
-    let child = spawn_run(&long, &target);
-    wait_for("the run to step", || {
-        staging_with_history(&target, 4096).is_some()
-    });
-    signal(&child, libc::SIGINT);
-    let out = child.wait_with_output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(130), "{err}");
+    interrupted_mid_run(&long, &target);
     let summary = read_json(&target.join("summary.json"));
     assert_eq!(summary["interrupted"], true, "{summary}");
     assert_eq!(summary["error"], "interrupted");

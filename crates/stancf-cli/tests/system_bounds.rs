@@ -6,9 +6,7 @@
 
 mod common;
 use common::*;
-use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 /// The bridle deck of the examples with line 1's NumSegs set to `segs`.
 fn bridle_with_segments(dir: &Path, segs: &str) -> PathBuf {
@@ -27,50 +25,12 @@ fn bridle_with_segments(dir: &Path, segs: &str) -> PathBuf {
     deck
 }
 
-/// `stancf <args>` with its address space limited to 1.5 GB: a command
-/// that tried to build a system of millions of elements would abort.
-fn stancf_in_bounded_memory(args: &[&str]) -> Output {
-    let mut cmd = Command::new(BIN);
-    cmd.args(args);
-    // SAFETY: setrlimit(2) in the child before exec, async-signal-safe.
-    unsafe {
-        cmd.pre_exec(|| {
-            let limit = libc::rlimit {
-                rlim_cur: 1_500_000_000,
-                rlim_max: 1_500_000_000,
-            };
-            libc::setrlimit(libc::RLIMIT_AS, &limit);
-            Ok(())
-        });
-    }
-    cmd.output().expect("run stancf")
-}
-
 /// `check` and `run` both refuse with exit 2 and the same message, which
-/// holds `needles`; `run` writes nothing.
+/// holds `needles`, in bounded memory; `run` writes nothing.
 fn both_refuse(dir: &Path, file: &Path, needles: &[&str]) -> String {
-    let out = dir.join("out");
-    let mut messages = Vec::new();
-    for args in [
-        vec!["check", file.to_str().unwrap()],
-        vec![
-            "run",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ],
-    ] {
-        let o = stancf_in_bounded_memory(&args);
-        let (_, err) = text(&o);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        for n in needles {
-            assert!(err.contains(n), "{args:?}: no {n:?} in {err}");
-        }
-        messages.push(err);
-    }
-    assert!(!out.exists());
-    assert_eq!(messages[0], messages[1]);
-    messages.remove(0)
+    let [check, run] = refused_by_check_and_run(file, &dir.join("out"), needles, &[]);
+    assert_eq!(check, run);
+    check
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! the built library and the system C compiler.
 #![allow(dead_code)]
 
+use stancf_c::error::STANCF_SUCCESS;
 use stancf_c::*;
 use std::ffi::{CStr, CString};
 use std::path::{Path, PathBuf};
@@ -128,4 +129,20 @@ pub fn scratch(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
+}
+
+/// The node positions of line `line` of `s` (3 per node), through
+/// `stancf_line_nnodes` and `stancf_line_positions`.
+pub fn line_positions(s: *mut StancfSystem, line: u32) -> Vec<f64> {
+    let mut n = 0u32;
+    assert_eq!(
+        unsafe { stancf_line_nnodes(s, line, &mut n) },
+        STANCF_SUCCESS
+    );
+    let mut pos = vec![0.0; 3 * n as usize];
+    assert_eq!(
+        unsafe { stancf_line_positions(s, line, pos.as_mut_ptr()) },
+        STANCF_SUCCESS
+    );
+    pos
 }

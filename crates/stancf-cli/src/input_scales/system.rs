@@ -77,7 +77,13 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
             Rule::Scale,
         )?;
     }
-    f.need("|g|", g, " m/s^2", std::slice::from_ref(&g_key), Rule::Scale)?;
+    f.need(
+        "|g|",
+        g,
+        " m/s^2",
+        std::slice::from_ref(&g_key),
+        Rule::Scale,
+    )?;
     if stepped {
         f.need(
             "the time step",

@@ -298,20 +298,60 @@ pub fn expect_refusal_beside(name: &str, scenario: &str, files: &[(&str, &str)],
         std::fs::write(d.join(file), contents).unwrap();
     }
     let sc = write_scenario(&d, "bad.toml", scenario);
-    let out = d.join("never");
-    for cmd in ["run", "check"] {
-        let mut args = vec![cmd, sc.to_str().unwrap()];
-        if cmd == "run" {
-            args.extend(["--out", out.to_str().unwrap()]);
-        }
-        let o = stancf(&args);
-        let (_, se) = text(&o);
-        assert_eq!(o.status.code(), Some(2), "{name} ({cmd}): {se}");
-        for n in needles {
-            assert!(se.contains(n), "{name}: {n:?} not in: {se}");
-        }
+    refused_by_check_and_run(&sc, &d.join("never"), needles, &[]);
+}
+
+/// `stancf <args>` with its address space limited to 1.5 GB: a command
+/// that tried to build a system of millions of elements, or to read a
+/// file without end, would abort instead of taking the machine.
+pub fn stancf_in_bounded_memory(args: &[&str]) -> Output {
+    use std::os::unix::process::CommandExt;
+    let mut cmd = Command::new(BIN);
+    cmd.args(args);
+    // SAFETY: setrlimit(2) in the child before exec, async-signal-safe.
+    unsafe {
+        cmd.pre_exec(|| {
+            let limit = libc::rlimit {
+                rlim_cur: 1_500_000_000,
+                rlim_max: 1_500_000_000,
+            };
+            libc::setrlimit(libc::RLIMIT_AS, &limit);
+            Ok(())
+        });
     }
-    assert!(!out.exists(), "{name}: an output folder was created");
+    cmd.output().expect("run stancf")
+}
+
+/// `stancf check <file>` and `stancf run <file> --out <out>`, each in
+/// bounded memory, both exit 2 with standard error holding each of
+/// `needles` and none of `absent`, and `run` creates no `out`; their
+/// standard errors, check's first.
+pub fn refused_by_check_and_run(
+    file: &Path,
+    out: &Path,
+    needles: &[&str],
+    absent: &[&str],
+) -> [String; 2] {
+    let file_arg = file.to_str().unwrap();
+    let out_arg = out.to_str().unwrap();
+    let runs = [
+        vec!["check", file_arg],
+        vec!["run", file_arg, "--out", out_arg],
+    ];
+    let errors = runs.map(|args| {
+        let o = stancf_in_bounded_memory(&args);
+        let (_, err) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        for n in needles {
+            assert!(err.contains(n), "{args:?}: no {n:?} in {err}");
+        }
+        for a in absent {
+            assert!(!err.contains(a), "{args:?}: {a:?} in {err}");
+        }
+        err
+    });
+    assert!(!out.exists(), "{file:?}: an output folder was created");
+    errors
 }
 
 /// The first sample of every element in stress.csv rows at one time
