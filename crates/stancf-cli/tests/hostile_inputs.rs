@@ -20,6 +20,16 @@ fn refused(dir: &Path, file: &Path, needles: &[&str], absent: &[&str], max_bytes
     check
 }
 
+/// A rope whose coupled end moves along the motion table `file`, run for
+/// 10 steps of 1 ms.
+fn rope_moved_by(file: &str) -> String {
+    format!(
+        "{}[[motions]]\npoint = 2\nfile = \"{file}\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 1e-3\nduration = 0.01\n",
+        one_rope("m", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
+    )
+}
+
 #[test]
 fn devices_folders_and_oversized_files_are_refused_by_every_reader() {
     let d = scratch("input-files");
@@ -50,12 +60,7 @@ fn devices_folders_and_oversized_files_are_refused_by_every_reader() {
         &[],
         500,
     );
-    let motion = format!(
-        "{}[[motions]]\npoint = 2\nfile = \"/dev/zero\"\n[analysis]\ntype = \"dynamic\"\n\
-         time_step = 1e-3\nduration = 0.01\n",
-        one_rope("m", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
-    );
-    let motion = write_scenario(&d, "motion.toml", &motion);
+    let motion = write_scenario(&d, "motion.toml", &rope_moved_by("/dev/zero"));
     refused(
         &d,
         &motion,
@@ -74,12 +79,7 @@ fn a_file_that_is_no_motion_table_is_not_quoted() {
         "root:x:0:0:root:/root:/bin/bash\nuser:x:1000\n",
     )
     .unwrap();
-    let sc = format!(
-        "{}[[motions]]\npoint = 2\nfile = \"passwd\"\n[analysis]\ntype = \"dynamic\"\n\
-         time_step = 1e-3\nduration = 0.01\n",
-        one_rope("m", "", ("coupled", [1.0, 0.0, 0.0]), (1, 1.0, 4), "")
-    );
-    let sc = write_scenario(&d, "bad.toml", &sc);
+    let sc = write_scenario(&d, "bad.toml", &rope_moved_by("passwd"));
     refused(
         &d,
         &sc,
