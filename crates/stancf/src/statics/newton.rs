@@ -450,4 +450,87 @@ mod tests {
         assert!(e.is_none(), "{e:?}");
         assert!((50..=110).contains(&n), "{n}");
     }
+
+    /// R(x; t) = K x - (t, t) + s (1, -1) 1e-15 with K = [[1, 1], [1,
+    /// 1 + 1e-6]], nearly singular, and s = +1, -1, +1... at successive
+    /// iterations: round-off of 1e-15 in the residual that K turns into
+    /// increments of 2e-9 along (1, -1), above the tolerance 1e-10,
+    /// however long Newton iterates (a slack line's soft mode).
+    struct SoftMode {
+        t: f64,
+        evaluations: usize,
+    }
+
+    impl StaticEquations for SoftMode {
+        type Matrix = BandMatrix;
+        fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
+            self.evaluations += 1;
+            // Two evaluations an iteration (with the Jacobian, then the
+            // trial step): the sign changes from iteration to iteration.
+            let noise = if (self.evaluations / 2) % 2 == 0 {
+                1e-15
+            } else {
+                -1e-15
+            };
+            residual[0] = x[0] + x[1] - self.t + noise;
+            residual[1] = x[0] + (1.0 + 1e-6) * x[1] - self.t - noise;
+            if let Some(j) = jacobian {
+                j.clear();
+                j.add(0, 0, 1.0);
+                j.add(0, 1, 1.0);
+                j.add(1, 0, 1.0);
+                j.add(1, 1, 1.0 + 1e-6);
+            }
+        }
+        fn row_weights(&mut self, _jacobian: &BandMatrix, weights: &mut [f64]) {
+            weights.fill(1.0);
+        }
+        fn set_load_factor(&mut self, t: f64) {
+            self.t = t;
+        }
+        fn legs(&self) -> usize {
+            1
+        }
+        fn converged(&mut self, _x: &[f64]) {}
+    }
+
+    /// Item 10 of issue 28: a residual at its round-off floor is
+    /// converged though the increments wander in a direction the forces
+    /// do not determine; the path used to fail with "did not converge" at
+    /// a scaled residual of 1e-15.
+    #[test]
+    fn a_residual_met_four_iterations_running_is_converged_whatever_the_increments() {
+        let mut eq = SoftMode {
+            t: 0.0,
+            evaluations: 0,
+        };
+        let mut newton = StaticNewton::new(
+            vec![0.0, 0.0],
+            vec![0.0, 0.0],
+            BandLu::new(2, 1, 1),
+            BandMatrix::new(2, 1, 1),
+            StaticSettings::default(),
+        );
+        let mut increments = 0;
+        loop {
+            match newton.advance(&mut eq) {
+                Ok(Some(inc)) => {
+                    increments += 1;
+                    assert!(inc.residual <= 1e-10, "{inc:?}");
+                    // The increments wandered above the tolerance.
+                    assert!(inc.increment > 1e-10, "{inc:?}");
+                    assert!(inc.iterations <= super::SETTLED_ITERATIONS + 1, "{inc:?}");
+                }
+                Ok(None) => break,
+                Err(e) => panic!("{e}"),
+            }
+        }
+        assert_eq!(increments, 20);
+        // The forces balance: x0 + x1 = 1 to the tolerance.
+        assert!(
+            (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,
+            "{:?}",
+            newton.x
+        );
+    }
 }
