@@ -32,7 +32,8 @@
 //!   halved and the step retried (and doubled again after a success);
 //!
 //! and an increment that still fails is cut in half and retried, up to
-//! `max_cuts` times, before the solve gives up.
+//! `max_cuts` times (or until it would no longer move the load factor),
+//! before the solve gives up.
 //!
 //! Measured, and why there is no line search along the Newton direction:
 //! the tangent step of a large rotation stretches the cable (Green strain),

@@ -197,8 +197,9 @@ impl<F: Factorization> StaticNewton<F> {
 
     /// The next converged increment of the load path (None when the full
     /// load is on). An increment that fails is cut in half and retried,
-    /// up to `max_cuts` times; then the error names the load factor, and
-    /// the increments already returned stay valid.
+    /// up to `max_cuts` times or until it would no longer move the load
+    /// factor; then the error names the load factor, and the increments
+    /// already returned stay valid.
     pub fn advance<E>(&mut self, eq: &mut E) -> Result<Option<StaticIncrement>, SolverError>
     where
         E: StaticEquations<Matrix = F::Matrix>,
@@ -244,23 +245,36 @@ impl<F: Factorization> StaticNewton<F> {
                 Err(kind) => {
                     self.x.copy_from_slice(&self.x_saved);
                     self.cuts += 1;
-                    if self.cuts > self.settings.max_cuts {
-                        eq.set_load_factor(self.lambda);
-                        return Err(SolverError {
-                            kind,
-                            time: self.lambda,
-                            step: self.increments + 1,
-                            residual: self.residual_norm(),
-                            iterations: self.settings.max_iterations,
-                            detail: format!(
-                                "{STATIC_SOLVE}: the load increment from load factor {} could \
-                                 not be converged even after {} halvings",
-                                Sig(self.lambda),
-                                self.settings.max_cuts
-                            ),
-                        });
-                    }
-                    self.step *= 0.5;
+                    let why = if self.cuts > self.settings.max_cuts {
+                        format!("even after {} halvings", self.settings.max_cuts)
+                    } else {
+                        self.step *= 0.5;
+                        // Cut below the precision of the load factor, an
+                        // increment would not move it: "converging" it would
+                        // reset the cuts, the step would double, fail and be
+                        // cut back to it, for ever.
+                        if (self.lambda + self.step).min(1.0) > self.lambda {
+                            continue;
+                        }
+                        format!(
+                            "before its halvings reached the precision of the load factor ({} \
+                             since the last converged increment)",
+                            self.cuts
+                        )
+                    };
+                    eq.set_load_factor(self.lambda);
+                    return Err(SolverError {
+                        kind,
+                        time: self.lambda,
+                        step: self.increments + 1,
+                        residual: self.residual_norm(),
+                        iterations: self.settings.max_iterations,
+                        detail: format!(
+                            "{STATIC_SOLVE}: the load increment from load factor {} could not \
+                             be converged {why}",
+                            Sig(self.lambda),
+                        ),
+                    });
                 }
             }
         }
