@@ -10,14 +10,15 @@ use stancf_cli::scenario::{parse_input, Input};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-/// A file named `name` in an empty folder of its own (one per process):
-/// what a scenario refers to beside it (`Currents 1`'s
-/// `current_profile.txt`, `system.moordyn`, a motion `file`) is not there,
-/// so the scenario is refused without any file being read or written.
+/// A file named `name` in an empty folder (`stancf-fuzz-empty` in the
+/// system's temp folder, made once and never written into): what a
+/// scenario refers to beside it (`Currents 1`'s `current_profile.txt`,
+/// `system.moordyn`, a motion `file`) is not there, so the scenario is
+/// refused without any file being read or written.
 pub fn lonely_path(name: &str) -> PathBuf {
     static DIR: OnceLock<PathBuf> = OnceLock::new();
     let dir = DIR.get_or_init(|| {
-        let d = std::env::temp_dir().join(format!("stancf-fuzz-{}", std::process::id()));
+        let d = std::env::temp_dir().join("stancf-fuzz-empty");
         std::fs::create_dir_all(&d).expect("create the fuzzer's empty folder");
         d
     });
