@@ -17,7 +17,8 @@ fn number(v: &toml::Value) -> Option<f64> {
 }
 
 /// Keeps a valid scenario small: a valid step count above `MAX_STEPS` (but
-/// not absurd), more than 64 elements or 20 load steps are brought down.
+/// not absurd), more than 64 elements (a cable's, a system line's or a
+/// deck line's mesh) or 20 load steps are brought down.
 /// Text that is not TOML, or needs no change, is returned as it is.
 pub fn bound_work(text: String) -> String {
     let Ok(mut doc) = toml::from_str::<toml::Table>(&text) else {
@@ -48,6 +49,20 @@ pub fn bound_work(text: String) -> String {
             if (65..=1_000_000).contains(n) {
                 c.insert("elements".into(), toml::Value::Integer(8));
                 changed = true;
+            }
+        }
+    }
+    // A system's lines and a deck's meshes: up to the 2000 elements a
+    // system takes without --allow-large (more are refused at once).
+    for entries in ["lines", "mesh"] {
+        if let Some(toml::Value::Array(a)) = doc.get_mut(entries) {
+            for e in a.iter_mut().filter_map(toml::Value::as_table_mut) {
+                if let Some(toml::Value::Integer(n)) = e.get("elements") {
+                    if (65..=2000).contains(n) {
+                        e.insert("elements".into(), toml::Value::Integer(8));
+                        changed = true;
+                    }
+                }
             }
         }
     }

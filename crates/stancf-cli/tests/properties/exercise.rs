@@ -2,9 +2,10 @@
 //! temp folder, each process killed after a time limit, and checking what
 //! they leave: exit code 0, 2 or 3 and no panic, nothing written by `check`
 //! nor by a `run` that exits 2, and on exit 0 or 3 a summary.json that
-//! parses, no `.partial` file and CSV files of finite numbers. Also the
-//! proptest runner (fixed seed and case count) that feeds a generator's
-//! cases through these checks.
+//! parses, no `.partial` file and CSV files of finite numbers. A case is
+//! a scenario file or a MoorDyn deck and the files beside it that it
+//! refers to ([`Case`]). Also the proptest runner (fixed seed and case
+//! count) that feeds a generator's cases through these checks.
 
 use crate::common::{scratch, BIN};
 use proptest::strategy::Strategy;
@@ -210,14 +211,62 @@ pub struct Tally {
     pub run: BTreeMap<i32, usize>,
 }
 
+/// One input of `check` and `run`: the file they are given (`name`,
+/// `text`) and the files beside it that it may refer to (a deck a
+/// scenario takes as `system.moordyn`, a motion table, a deck's
+/// `current_profile.txt`).
+#[derive(Clone, Debug)]
+pub struct Case {
+    pub name: String,
+    pub text: String,
+    pub beside: Vec<(String, String)>,
+}
+
+impl Case {
+    /// A scenario file alone, `case.toml`.
+    pub fn toml(text: String) -> Case {
+        Case {
+            name: "case.toml".into(),
+            text,
+            beside: Vec::new(),
+        }
+    }
+}
+
+/// The file's text, then each file beside it under a line naming it.
+impl std::fmt::Display for Case {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text)?;
+        for (name, text) in &self.beside {
+            write!(f, "\n=== beside it, {name} ===\n{text}")?;
+        }
+        Ok(())
+    }
+}
+
 static CASE: AtomicUsize = AtomicUsize::new(0);
 
 /// Runs `check` and `run` on one scenario text and asserts the properties.
 pub fn exercise(tag: &str, text: &str, tally: &Mutex<Tally>) -> Result<(), String> {
+    exercise_case(tag, &Case::toml(text.to_string()), tally)
+}
+
+/// Runs `check` and `run` on one case (its files written into a folder of
+/// its own) and asserts the properties.
+pub fn exercise_case(tag: &str, case: &Case, tally: &Mutex<Tally>) -> Result<(), String> {
     let n = CASE.fetch_add(1, Ordering::Relaxed);
+    if let Some(dump) = std::env::var_os("STANCF_PROPTEST_DUMP") {
+        // Seeds for the fuzzers (fuzz/README.md): the case's own file.
+        let dump = Path::new(&dump).join(tag);
+        std::fs::create_dir_all(&dump).unwrap();
+        std::fs::write(dump.join(format!("{n}-{}", case.name)), &case.text).unwrap();
+    }
     let dir = scratch(&format!("properties-{tag}-{n}"));
-    let scenario = dir.join("case.toml");
-    std::fs::write(&scenario, text).unwrap();
+    let scenario = dir.join(&case.name);
+    std::fs::write(&scenario, &case.text).unwrap();
+    for (name, text) in &case.beside {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
     let result = exercise_in(&dir, &scenario, tally);
     match result {
         Ok(()) => {
@@ -361,13 +410,23 @@ fn config(cases: u32) -> Config {
 /// Runs `cases` scenarios from `strategy` through `exercise`; on a failure
 /// panics with the (shrunk) scenario text.
 pub fn property(tag: &str, strategy: impl Strategy<Value = String>, cases: u32) -> (Tally, usize) {
+    property_cases(tag, strategy.prop_map(Case::toml), cases)
+}
+
+/// Runs `cases` cases from `strategy` through `exercise_case`; on a
+/// failure panics with the (shrunk) case, its files beside it included.
+pub fn property_cases(
+    tag: &str,
+    strategy: impl Strategy<Value = Case>,
+    cases: u32,
+) -> (Tally, usize) {
     let tally = Mutex::new(Tally::default());
     let config = config(cases);
     let cases = config.cases as usize;
     let mut runner = TestRunner::new(config);
     let start = Instant::now();
-    let result = runner.run(&strategy, |text| {
-        exercise(tag, &text, &tally).map_err(TestCaseError::fail)
+    let result = runner.run(&strategy, |case| {
+        exercise_case(tag, &case, &tally).map_err(TestCaseError::fail)
     });
     let tally = tally.into_inner().unwrap();
     eprintln!(

@@ -25,28 +25,43 @@
 //! generator, `STANCF_PROPTEST_SEED=n` another seed,
 //! `STANCF_PROPTEST_TIME_LIMIT_S=n` another time limit,
 //! `STANCF_PROPTEST_KEEP_GOING=1` prints each failing case's folder and
-//! goes on, and `STANCF_PROPTEST_VERBOSE=1` prints every case.
+//! goes on, `STANCF_PROPTEST_VERBOSE=1` prints every case, and
+//! `STANCF_PROPTEST_DUMP=folder` writes each case's file into
+//! `folder/<generator>/` (seeds for the fuzzers of `fuzz/`).
 //!
 //! The parts: `grammar` draws random scenarios, `mutation` mutates the
-//! shipped examples, `bound` keeps either small enough to run, and
-//! `exercise` runs `check` and `run` on a case and checks what they leave.
+//! shipped examples, `deck_grammar` draws random MoorDyn decks and
+//! `system_grammar` random system scenarios (their own tables, or a
+//! random deck taken as `system.moordyn`), `bound` keeps them small enough
+//! to run, and `exercise` runs `check` and `run` on a case (a file and
+//! the files beside it) and checks what they leave.
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod bound;
+mod deck_grammar;
 mod exercise;
 mod grammar;
 mod mutation;
+mod system_grammar;
 
 use bound::bound_work;
-use exercise::{exercise, property, Tally};
+use deck_grammar::{random_deck, sane_deck};
+use exercise::{exercise, exercise_case, property, property_cases, Case, Tally};
 use grammar::random_scenario;
 use mutation::{apply, mutated_example, number_spans, shortened_examples, Ix, Mutation};
+use proptest::strategy::{Strategy, ValueTree};
+use proptest::test_runner::TestRunner;
 use std::sync::Mutex;
+use system_grammar::{random_system, sane_system};
 
 /// Cases per generator (each runs `check` and `run`).
 const CASES: u32 = 1000;
+
+/// Cases of the generators of decks and of system scenarios, whose
+/// cases each solve a static equilibrium or a few steps of a system.
+const SYSTEM_CASES: u32 = 500;
 
 #[test]
 fn shipped_examples_shortened_pass_check_and_run_with_clean_results() {
@@ -193,4 +208,134 @@ fn mutations_change_the_text_they_aim_at() {
     assert_eq!(bounded["analysis"]["duration"].as_float(), Some(8e-5));
     let absurd = "[analysis]\ntime_step = 1e-300\nduration = 1.0\n".to_string();
     assert_eq!(bound_work(absurd.clone()), absurd);
+}
+
+/// Writes a case's files into a new folder `dir` and reads it as `stancf
+/// check` does (`scenario::parse_input`).
+fn read_case(dir: &std::path::Path, case: &Case) -> Result<stancf_cli::scenario::Input, String> {
+    std::fs::create_dir(dir).unwrap();
+    let path = dir.join(&case.name);
+    std::fs::write(&path, &case.text).unwrap();
+    for (name, text) in &case.beside {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    let file = path.display().to_string();
+    stancf_cli::scenario::parse_input(&case.text, &file, &path).map_err(|e| e.0)
+}
+
+/// Draws `n` values of `strategy` with proptest's fixed seed.
+fn draw<T: std::fmt::Debug>(strategy: impl Strategy<Value = T>, n: usize) -> Vec<T> {
+    let mut runner = TestRunner::deterministic();
+    (0..n)
+        .map(|_| strategy.new_tree(&mut runner).unwrap().current())
+        .collect()
+}
+
+/// The grammars themselves (no process is run): what they draw without
+/// chaos is what stancf reads, so that the chaos is what gets refused.
+#[test]
+fn sane_random_decks_and_systems_read_as_systems() {
+    let dir = common::scratch("properties-sane-grammar");
+    for (n, deck) in draw(sane_deck(), 200).into_iter().enumerate() {
+        let case = deck.case();
+        if let Err(e) = stancf_cli::moordyn::parse(&case.text) {
+            panic!("{e}\n=== deck ===\n{case}\n=== end ===");
+        }
+        match read_case(&dir.join(format!("deck-{n}")), &case) {
+            Ok(stancf_cli::scenario::Input::System(_)) => {}
+            Ok(_) => panic!("read as a single cable:\n{case}"),
+            Err(e) => panic!("{e}\n=== deck ===\n{case}\n=== end ==="),
+        }
+    }
+    for (n, case) in draw(sane_system(), 200).into_iter().enumerate() {
+        match read_case(&dir.join(format!("system-{n}")), &case) {
+            Ok(stancf_cli::scenario::Input::System(_)) => {}
+            Ok(_) => panic!("read as a single cable:\n{case}"),
+            Err(e) => panic!("{e}\n=== scenario ===\n{case}\n=== end ==="),
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Minimal cases of what the deck and system generators found (issue
+/// 28): a deck or a scenario (`case.txt`, `case.toml`) that must keep the
+/// properties.
+const SYSTEM_FINDINGS: &[(&str, &str, &str)] = &[
+    (
+        "a static path stalling at load factor 0.99986: ran until killed",
+        "case.txt",
+        "--- LINE TYPES ---\n\
+         TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+         (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
+         chain 0.1 20.0 1.0e8 0 0 0 0 0 0\n\
+         --- POINTS ---\n\
+         ID Attachment X Y Z Mass Volume CdA Ca\n\
+         (#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+         1 Fixed -25.0 0.0 -50.0 0 0 0 0\n\
+         2 Coupled 0.0 0.0 -5.0 0 0 0 0\n\
+         3 Free -12.5 0.0 -32.5 2000 0 0 0\n\
+         --- LINES ---\n\
+         ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
+         (#) (name) (#) (#) (m) (-) (-)\n\
+         1 chain 1 3 27.958 1 -\n\
+         2 chain 3 2 39.27 2 -\n\
+         --- OPTIONS ---\n\
+         50.0 WtrDpth\n",
+    ),
+    (
+        "a free point's cda 3.8e18, static path stalling at load factor 1.3e-3: ran until killed",
+        "case.toml",
+        "[[line_types]]\nname = \"buoyant\"\ndiameter = 0.45\nmass_per_length = 120.0\n\
+         ea = 5.0e8\nei = 2.0e4\ncd = 1.2\n\
+         [[points]]\nid = 1\ntype = \"fixed\"\nposition = [-75.0, -37.5, -150.0]\n\
+         [[points]]\nid = 2\ntype = \"fixed\"\nposition = [-75.0, 37.5, -150.0]\n\
+         [[points]]\nid = 3\ntype = \"free\"\nposition = [-37.5, 0.0, -75.0]\nmass = 100.0\n\
+         cda = 3762470146307697448\n\
+         [[points]]\nid = 4\ntype = \"coupled\"\nposition = [0.0, 0.0, 0.0]\n\
+         [[lines]]\nid = 1\ntype = \"buoyant\"\nlength = 119.413\nelements = 3\na = 1\nb = 3\n\
+         [[lines]]\nid = 2\ntype = \"buoyant\"\nlength = 119.413\nelements = 1\na = 2\nb = 3\n\
+         [[lines]]\nid = 3\ntype = \"buoyant\"\nlength = 109.008\nelements = 4\na = 3\nb = 4\n\
+         [water]\ndepth = 150.0\n\
+         [water.current]\nprofile = [[-150.0, 0.1, 0.0, 0.0], [0.0, 0.5, 0.0, 0.0]]\n\
+         [analysis]\ntype = \"static\"\n",
+    ),
+];
+
+#[test]
+fn findings_of_the_deck_and_system_generators_never_panic_and_exit_0_2_or_3() {
+    let tally = Mutex::new(Tally::default());
+    for (what, name, text) in SYSTEM_FINDINGS {
+        let case = Case {
+            name: name.to_string(),
+            text: text.to_string(),
+            beside: Vec::new(),
+        };
+        if let Err(e) = exercise_case("system-finding", &case, &tally) {
+            panic!("{what}: {e}\n=== {name} ===\n{text}\n=== end ===");
+        }
+    }
+    // Both reach the static solve, which now fails (exit 3) instead of
+    // running for ever.
+    let tally = tally.into_inner().unwrap();
+    assert_eq!(tally.run.get(&3), Some(&2), "run exits: {:?}", tally.run);
+}
+
+#[test]
+fn random_moordyn_decks_never_panic_and_exit_0_2_or_3() {
+    let (tally, cases) = property_cases("deck", random_deck(), SYSTEM_CASES);
+    let solved: usize = [0, 3].iter().filter_map(|c| tally.run.get(c)).sum();
+    assert!(
+        solved * 4 >= cases,
+        "fewer than a quarter of the random decks reached the solver: {tally:?}"
+    );
+}
+
+#[test]
+fn random_system_scenarios_never_panic_and_exit_0_2_or_3() {
+    let (tally, cases) = property_cases("system", random_system(), SYSTEM_CASES);
+    let solved: usize = [0, 3].iter().filter_map(|c| tally.run.get(c)).sum();
+    assert!(
+        solved * 4 >= cases,
+        "fewer than a quarter of the random systems reached the solver: {tally:?}"
+    );
 }

@@ -32,7 +32,8 @@
 //!   halved and the step retried (and doubled again after a success);
 //!
 //! and an increment that still fails is cut in half and retried, up to
-//! `max_cuts` times, before the solve gives up.
+//! `max_cuts` times (an increment too short to move the load factor
+//! counts as failed), before the solve gives up.
 //!
 //! Measured, and why there is no line search along the Newton direction:
 //! the tangent step of a large rotation stretches the cable (Green strain),

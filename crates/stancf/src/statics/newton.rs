@@ -217,8 +217,9 @@ impl<F: Factorization> StaticNewton<F> {
 
     /// The next converged increment of the load path (None when the full
     /// load is on). An increment that fails is cut in half and retried,
-    /// up to `max_cuts` times; then the error names the load factor, and
-    /// the increments already returned stay valid.
+    /// up to `max_cuts` times or until it would no longer move the load
+    /// factor; then the error names the load factor, and the increments
+    /// already returned stay valid.
     pub fn advance<E>(&mut self, eq: &mut E) -> Result<Option<StaticIncrement>, SolverError>
     where
         E: StaticEquations<Matrix = F::Matrix>,
