@@ -21,11 +21,7 @@ use stancf::error::Sig;
 use stancf::model::SLOT_R;
 use stancf::{ConstraintKind, Energies, Model, State};
 
-/// The range of the derived scales of a scenario (energies, forces,
-/// lengths, masses, stiffnesses in SI units): at most `MAX_SCALE`, and the
-/// ones the solver divides by at least `1 / MAX_SCALE`, so that the product
-/// or quotient of any two stays a finite, nonzero double.
-pub const MAX_SCALE: f64 = 1e150;
+pub use crate::scale_range::MAX_SCALE;
 
 /// The largest highest-frequency estimate of a mesh (rad/s): its
 /// eigenvalue computation works with w^4.

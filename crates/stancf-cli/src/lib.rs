@@ -20,6 +20,7 @@ pub mod result_folder;
 pub mod result_layout;
 pub mod results;
 pub mod run;
+pub mod scale_range;
 pub mod scenario;
 pub mod signals;
 pub mod sweep;

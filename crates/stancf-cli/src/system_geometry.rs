@@ -23,8 +23,11 @@ fn bed_tolerance(depth: f64) -> f64 {
 }
 
 /// What `check` and `run` refuse in the geometry of `sc` (see the module
-/// documentation); `coupled_placed` is false where a coupling code, not
-/// the scenario, places the coupled points (their positions then are not
+/// documentation): a point below the bed; a fixed, coupled or free point
+/// farther from a fixed or coupled one than 1 + [`MAX_SPAN_STRAIN`] times
+/// the lines between them (a free point's position is where its lines'
+/// seeds start). `coupled_placed` is false where a coupling code, not the
+/// scenario, places the coupled points (their positions then are not
 /// checked).
 pub fn check_geometry(
     file: &str,
@@ -72,12 +75,26 @@ pub fn check_geometry(
             direct_reach(sc, &adjacent, a)
         };
         for (b, &(length, last_line)) in reach.iter().enumerate() {
-            if b == a || !placed(b) || !length.is_finite() {
+            // A free point's position is where its lines' seeds start:
+            // it must be within their reach too.
+            let free = sc.points[b].kind == PointType::Free;
+            if b == a || !(placed(b) || free) || !length.is_finite() {
                 continue;
             }
             let span = distance(sc.points[a].position, sc.points[b].position);
             if span > (1.0 + MAX_SPAN_STRAIN) * length {
                 let line = last_line.expect("a reached point has a line to it");
+                let line_key = sc.names.line(line, "length", "UnstrLen");
+                let keys = if free {
+                    format!("{}, {line_key}", sc.names.point(b, "position", "X, Y, Z"))
+                } else {
+                    line_key
+                };
+                let start = if free {
+                    format!(" (free point {} starts there)", sc.points[b].id)
+                } else {
+                    String::new()
+                };
                 let via = if reach_is_direct(sc, line, a, b) {
                     format!("line {} is {} m long", sc.lines[line].id, Sig(length))
                 } else {
@@ -87,14 +104,14 @@ pub fn check_geometry(
                     )
                 };
                 return Err(Failure::Input(format!(
-                    "{file}: {}: points {} and {} are {} m apart and {via}: spanning them \
-                     would stretch the lines by {:.0} %, beyond the {:.0} % of any mooring \
+                    "{file}: {}: points {} and {} are {} m apart{start} and {via}: spanning \
+                     them would stretch the lines by {} %, beyond the {:.0} % of any mooring \
                      material's breaking strain; lengthen the line or move its points",
-                    sc.names.line(line, "length", "UnstrLen"),
+                    keys,
                     sc.points[a].id,
                     sc.points[b].id,
                     Sig(span),
-                    100.0 * (span / length - 1.0),
+                    Sig((100.0 * (span / length - 1.0)).round()),
                     100.0 * MAX_SPAN_STRAIN
                 )));
             }

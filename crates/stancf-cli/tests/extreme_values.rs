@@ -23,7 +23,7 @@ fn line_starting(text: &str, start: &str) -> usize {
 }
 
 /// Keys of stancf's own making, which a refusal must not name.
-const INTERNAL_KEYS: [&str; 4] = ["material.", "loads[", "lines[0].", "water.gravity"];
+const INTERNAL_KEYS: [&str; 5] = ["material.", "loads[", "cable.", "water.gravity", "seed"];
 
 /// `check` and `run` of `file` both exit 2 naming `file` and each of
 /// `needles`, with no key of stancf's own making; `run` writes nothing.
@@ -154,6 +154,8 @@ fn extreme_system_values_are_refused_by_their_keys() {
             "[water.seabed]\nslip_velocity = 1e-12",
             "water.seabed.slip_velocity",
         ),
+        ("[water.seabed]\nslope = [1e300, 0.0]", "water.seabed.slope"),
+        ("[water.jonswap]\nhs = 1e150\ntp = 10.0", "water.jonswap.hs"),
     ];
     for (water, key) in cases {
         let file = write_scenario(&d, "bad.toml", &rope_in_water(water));
@@ -164,6 +166,28 @@ fn extreme_system_values_are_refused_by_their_keys() {
         + "[analysis]\ntype = \"static\"\n";
     let file = write_scenario(&d, "bad.toml", &heavy);
     refused_as_written(&d, &file, &["line_types[0].mass_per_length".into()]);
+    // A motion of a period of 5e-324 s, a line of 1e-60 m with a bending
+    // stiffness (its bending frequency 1e124 rad/s).
+    let moved = format!(
+        "{}[[motions]]\npoint = 2\namplitude = [0.1, 0.0, 0.0]\nperiod = 5e-324\n\
+         [analysis]\ntype = \"dynamic\"\ntime_step = 1e-3\nduration = 0.01\n",
+        one_rope("m", "", ("coupled", [4.0, 0.0, 0.0]), (1, 5.0, 4), "")
+    );
+    let file = write_scenario(&d, "bad.toml", &moved);
+    refused_as_written(&d, &file, &["bad.toml: motions[0].period".into()]);
+    let tiny = one_rope(
+        "t",
+        "ei = 2e4",
+        ("fixed", [1e-60, 0.0, 0.0]),
+        (1, 1e-60, 4),
+        "",
+    ) + "[analysis]\ntype = \"static\"\n";
+    let file = write_scenario(&d, "bad.toml", &tiny);
+    refused_as_written(
+        &d,
+        &file,
+        &["lines[0].length".into(), "bending frequency".into()],
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }
 

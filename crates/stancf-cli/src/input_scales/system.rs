@@ -148,6 +148,7 @@ fn water_values(sc: &SystemScenario, w: &Water, values: &mut Vec<(String, f64)>)
             b.friction_axial.max(b.friction_transverse),
         ),
         ("water.seabed.slip_velocity".into(), b.slip_velocity),
+        ("water.seabed.slope".into(), largest(&b.slope)),
         ("water.wave_ramp".into(), w.wave_ramp),
     ]);
     for (k, wave) in w.waves.iter().enumerate() {
@@ -212,6 +213,16 @@ fn water_figures(
              (MoorDyn's FricDamp of 200 s/m is 5e-3 m/s)",
             f.file
         )));
+    }
+    if let Some(j) = &water.jonswap {
+        // The spectrum's density goes with Hs^2.
+        f.need(
+            "Hs^2, which the JONSWAP spectrum goes with",
+            j.hs * j.hs,
+            " m^2",
+            &["water.jonswap.hs".into()],
+            Rule::Scale,
+        )?;
     }
     let g = magnitude(&sc.gravity);
     let periods = water
@@ -369,7 +380,18 @@ fn line_figures(
         "the highest axial frequency 2 sqrt(EA/m) / l",
         frequency,
         " rad/s",
-        &[ea, m, length, elements],
+        &[ea, m.clone(), length.clone(), elements.clone()],
+        Rule::Below(MAX_FREQUENCY),
+    )?;
+    // The fastest bending mode of an element, of the order of
+    // (2 / l)^2 sqrt(EI/m) (the bending counterpart of the axial
+    // estimate; an order-one factor is immaterial against 1e70).
+    let bending = 4.0 * (ei / t.mass_per_length).sqrt() / (element * element);
+    f.need(
+        "the highest bending frequency 4 sqrt(EI/m) / l^2",
+        bending,
+        " rad/s",
+        &[ty("ei", "EI"), m, length, elements],
         Rule::Below(MAX_FREQUENCY),
     )
 }

@@ -59,14 +59,93 @@ pub(super) fn motions(
             &key("amplitude"),
             &ctx.required(&key("amplitude"), r.amplitude.clone())?,
         )?;
-        points[p].motion = CoupledMotion::Oscillation(Oscillation {
+        let oscillation = Oscillation {
             amplitude,
             period: ctx.required_positive(&key("period"), r.period)?,
             phase: ctx
                 .finite(&key("phase"), r.phase.unwrap_or(0.0))?
                 .to_radians(),
             ramp: ctx.non_negative(&key("ramp"), r.ramp.unwrap_or(0.0))?,
-        });
+        };
+        check_oscillation_scales(ctx, &key(""), &oscillation)?;
+        points[p].motion = CoupledMotion::Oscillation(oscillation);
+    }
+    Ok(())
+}
+
+/// An oscillation's amplitude, period, ramp and peak speed |a| 2 pi / T
+/// within the range the solver computes in
+/// ([`crate::scale_range::MAX_SCALE`]); `key` is `motions[i].`.
+fn check_oscillation_scales(ctx: &Ctx, key: &str, o: &Oscillation) -> Result<(), ScenarioError> {
+    use crate::scale_range::MAX_SCALE;
+    let amplitude = o.amplitude.iter().map(|a| a.abs()).fold(0.0, f64::max);
+    let speed = amplitude * 2.0 * std::f64::consts::PI / o.period;
+    for (k, what, v, divisor) in [
+        ("amplitude", "the amplitude", amplitude, false),
+        ("period", "the period", o.period, true),
+        ("ramp", "the ramp", o.ramp, false),
+        (
+            "amplitude, period",
+            "the peak speed |a| 2 pi / T",
+            speed,
+            false,
+        ),
+    ] {
+        let out = !v.is_finite() || v > MAX_SCALE || (divisor && v < 1.0 / MAX_SCALE);
+        if out {
+            let keys: Vec<String> = k.split(", ").map(|k| format!("{key}{k}")).collect();
+            return Err(ctx.err(
+                &keys.join(", "),
+                format!(
+                    "{what} is {v:e}, out of the range the solver computes in (1e-150 to \
+                     1e150 in SI units): check the value and its unit"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A motion table's positions, time gaps and speeds between rows within
+/// the range the solver computes in ([`crate::scale_range::MAX_SCALE`]).
+fn table_scales(
+    ctx: &Ctx,
+    key: &str,
+    file: &str,
+    table: &MotionTable,
+) -> Result<(), ScenarioError> {
+    use crate::scale_range::MAX_SCALE;
+    let (times, positions) = (table.times(), table.positions());
+    let far = positions
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    let mut worst = ("the largest coordinate", far, far > MAX_SCALE);
+    for k in 1..times.len() {
+        let gap = times[k] - times[k - 1];
+        let d = (0..3)
+            .map(|c| (positions[k][c] - positions[k - 1][c]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        let speed = d / gap;
+        if gap < 1.0 / MAX_SCALE {
+            worst = ("a time step between rows", gap, true);
+            break;
+        }
+        if !speed.is_finite() || speed > MAX_SCALE {
+            worst = ("a speed between rows", speed, true);
+            break;
+        }
+    }
+    let (what, v, out) = worst;
+    if out {
+        return Err(ctx.err(
+            key,
+            format!(
+                "{file}: {what} is {v:e}, out of the range the solver computes in (1e-150 to \
+                 1e150 in SI units): check the table's values and their units"
+            ),
+        ));
     }
     Ok(())
 }
@@ -112,6 +191,7 @@ fn check_table(
     size: f64,
     analysis: &Analysis,
 ) -> Result<(), ScenarioError> {
+    table_scales(ctx, key, file, table)?;
     let (first, last) = table.span();
     let end = match analysis.kind {
         super::AnalysisKind::Dynamic => analysis.duration,
