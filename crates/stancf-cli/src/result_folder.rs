@@ -171,10 +171,28 @@ impl ResultFolder {
 
     /// Swaps the staging folder in as the target, deletes the old set and
     /// releases the lock.
+    ///
+    /// The target is checked again first: a folder that gained a user's
+    /// entry while the run wrote (or a folder a user made where there was
+    /// none) is not swapped out; the new set is kept beside it under a
+    /// name of its own, and the error says where. An entry that appears
+    /// in the instant between that check and the swap is found in the
+    /// swapped-out set, which is then kept beside the target instead of
+    /// being deleted.
     pub fn commit(mut self) -> io::Result<()> {
         sync_dir(&self.staging)?;
         let exists = std::fs::symlink_metadata(&self.target).is_ok();
         if exists {
+            if let Some((entry, why)) = foreign(&self.target)? {
+                let kept = self.keep_beside("new-results")?;
+                self.committed = true;
+                return Err(io::Error::other(format!(
+                    "{} appeared in the output folder while the run wrote ({why}); the folder \
+                     is left as it is and the new results are in {}",
+                    entry.display(),
+                    kept.display()
+                )));
+            }
             match exchange(&self.staging, &self.target) {
                 Ok(()) => {}
                 Err(e) if exchange_unsupported(&e) => {
@@ -193,10 +211,33 @@ impl ResultFolder {
         if let Some(parent) = self.target.parent() {
             sync_dir(parent)?;
         }
-        // The old set, now under the staging name (nothing if there was none).
+        // The old set, now under the staging name (nothing if there was
+        // none), deleted unless something of a user's slipped into it.
+        if exists {
+            if let Some((entry, why)) = foreign(&self.staging)? {
+                let kept = self.keep_beside("previous")?;
+                self.lock.take();
+                return Err(io::Error::other(format!(
+                    "the new results are in {}, but the folder they replaced held {} ({why}), \
+                     which appeared while the run wrote: the replaced folder is kept as {}",
+                    self.target.display(),
+                    entry.display(),
+                    kept.display()
+                )));
+            }
+        }
         let _ = std::fs::remove_dir_all(&self.staging);
         self.lock.take();
         Ok(())
+    }
+
+    /// Renames the staging folder to `<name>.<what>-<pid>` beside the
+    /// target (a name a user sees), which is returned.
+    fn keep_beside(&self, what: &str) -> io::Result<PathBuf> {
+        let (parent, name) = split(&self.target).map_err(io::Error::other)?;
+        let kept = parent.join(format!("{name}.{what}-{}", std::process::id()));
+        std::fs::rename(&self.staging, &kept)?;
+        Ok(kept)
     }
 }
 
@@ -266,6 +307,17 @@ fn is_staging_suffix(rest: &str) -> bool {
 
 fn old_name(name: &str) -> String {
     format!(".{name}.stancf-old")
+}
+
+/// The first entry of the folder `dir` that is not of a result set, and
+/// why; None for a result set, an empty folder or no folder.
+fn foreign(dir: &Path) -> io::Result<Option<(PathBuf, String)>> {
+    match contents(dir) {
+        Ok(Contents::Foreign(path, why)) => Ok(Some((path, why))),
+        Ok(_) => Ok(None),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        Err(e) => Err(e),
+    }
 }
 
 /// Whether a run may replace the existing folder `target` (nothing to do
@@ -424,6 +476,9 @@ fn exchange_unsupported(e: &io::Error) -> bool {
 mod tests {
     use super::*;
 
+    /// A summary.json of stancf's, of an older run.
+    const SUMMARY_OLD: &str = r#"{"title": "old", "analysis": "static"}"#;
+
     fn scratch(name: &str) -> PathBuf {
         let d = std::env::temp_dir().join(format!("stancf-rf-{}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
@@ -445,7 +500,7 @@ mod tests {
         let root = scratch("commit");
         let target = root.join("case");
         std::fs::create_dir(&target).unwrap();
-        std::fs::write(target.join("summary.json"), "old").unwrap();
+        std::fs::write(target.join("summary.json"), SUMMARY_OLD).unwrap();
         std::fs::write(target.join("reactions.csv"), "old").unwrap();
         let f = ResultFolder::open(&target).unwrap();
         std::fs::write(f.staging().join("summary.json"), "new").unwrap();
@@ -514,11 +569,11 @@ mod tests {
         // first rename (the old set parked, no target).
         std::fs::create_dir(root.join(".case.stancf-999999-0")).unwrap();
         std::fs::create_dir(root.join(".case.stancf-old")).unwrap();
-        std::fs::write(root.join(".case.stancf-old/summary.json"), "old").unwrap();
+        std::fs::write(root.join(".case.stancf-old/summary.json"), SUMMARY_OLD).unwrap();
         let f = ResultFolder::open(&target).unwrap();
         assert_eq!(
             std::fs::read_to_string(target.join("summary.json")).unwrap(),
-            "old"
+            SUMMARY_OLD
         );
         drop(f);
         assert_eq!(names(&root), ["case"]);

@@ -6,12 +6,15 @@
 //! folder that holds one foreign entry (a user's file, a subfolder of
 //! theirs, a symbolic link, a device) is never replaced. A folder is a
 //! result set when
-//! - it holds `summary.json` (a run's) or `sweep.csv` (a sweep's), and
+//! - it holds a run's `summary.json` (a JSON object with stancf's
+//!   `title` and `analysis`) or a sweep's `sweep.csv` (its header
+//!   starting `run,`), and
 //! - each of its entries, followed down, is a regular file or folder
 //!   named as stancf names them: [`RUN_FILES`], the figures
-//!   ([`FIGURES`] as `.png` and `.svg`), `vtk/cable_<k>.vtp`,
-//!   `lines/<id>/` with [`LINE_FILES`] and, in a sweep's folder,
-//!   `run_<k>/` holding a run's set.
+//!   ([`FIGURES`] as `.png` and `.svg`), `vtk/cable_<k>.vtp` (k of 6 to 9
+//!   digits), `lines/<id>/` with [`LINE_FILES`] and, in a sweep's folder
+//!   (one with `sweep.csv`), `run_<k>/` (k of 4 or 5 digits) holding a
+//!   run's set.
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -47,9 +50,6 @@ pub const FIGURES: [&str; 6] = [
 /// The files of a system's line, in `lines/<id>/`.
 pub const LINE_FILES: [&str; 3] = ["nodes.csv", "stress.csv", "node_loads.csv"];
 
-/// The markers of a result set: a run's summary or a sweep's table.
-pub const MARKERS: [&str; 2] = ["summary.json", "sweep.csv"];
-
 /// At most this many entries are looked at (a sweep of 10 000 runs with
 /// 100 lines each is far below): a folder with more is not taken for a
 /// result set.
@@ -73,17 +73,19 @@ pub fn contents(dir: &Path) -> io::Result<Contents> {
     let Some(first) = entries.next() else {
         return Ok(Contents::Empty);
     };
-    if !MARKERS.iter().any(|m| is_regular_file(&dir.join(m))) {
+    let sweep = is_sweep_table(&dir.join("sweep.csv"));
+    if !(sweep || is_run_summary(&dir.join("summary.json"))) {
         return Ok(Contents::Foreign(
             first?.path(),
             format!(
-                "and neither {}: not a result set of stancf's",
-                MARKERS.join(" nor ")
+                "and neither a summary.json of stancf's (title, analysis) nor a sweep.csv of \
+                 its: not a result set of stancf's"
             ),
         ));
     }
+    let top = if sweep { Level::Sweep } else { Level::Top };
     let mut seen = 0;
-    Ok(match foreign_in(dir, Level::Top, &mut seen)? {
+    Ok(match foreign_in(dir, top, &mut seen)? {
         Some((path, why)) => Contents::Foreign(path, why),
         None => Contents::ResultSet,
     })
@@ -92,8 +94,10 @@ pub fn contents(dir: &Path) -> io::Result<Contents> {
 /// Where in a result set a folder sits.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Level {
-    /// The output folder (a run's or a sweep's).
+    /// A run's output folder.
     Top,
+    /// A sweep's output folder.
+    Sweep,
     /// A sweep's `run_<k>/`.
     SweepRun,
     /// `vtk/`.
@@ -144,15 +148,14 @@ fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(
 /// Whether stancf writes a file `name` in a folder at `level`.
 fn is_result_file(level: Level, name: &str) -> bool {
     match level {
-        Level::Top | Level::SweepRun => {
-            RUN_FILES.contains(&name)
-                || (level == Level::Top && name == "sweep.csv")
-                || is_figure(name)
-        }
+        Level::Top | Level::SweepRun => RUN_FILES.contains(&name) || is_figure(name),
+        // A sweep's own files; a run's beside its runs' folders when the
+        // sweep's folder was a run's before.
+        Level::Sweep => name == "sweep.csv" || RUN_FILES.contains(&name) || is_figure(name),
         Level::Vtk => name
             .strip_prefix("cable_")
             .and_then(|r| r.strip_suffix(".vtp"))
-            .is_some_and(all_digits),
+            .is_some_and(|k| digits_between(k, 6, 9)),
         Level::Lines => false,
         Level::Line => LINE_FILES.contains(&name),
     }
@@ -170,9 +173,13 @@ fn is_figure(name: &str) -> bool {
 /// writes one of that name there.
 fn folder_level(level: Level, name: &str) -> Option<Level> {
     match (level, name) {
-        (Level::Top | Level::SweepRun, "vtk") => Some(Level::Vtk),
-        (Level::Top | Level::SweepRun, "lines") => Some(Level::Lines),
-        (Level::Top, _) if name.strip_prefix("run_").is_some_and(all_digits) => {
+        (Level::Top | Level::Sweep | Level::SweepRun, "vtk") => Some(Level::Vtk),
+        (Level::Top | Level::Sweep | Level::SweepRun, "lines") => Some(Level::Lines),
+        (Level::Sweep, _)
+            if name
+                .strip_prefix("run_")
+                .is_some_and(|k| digits_between(k, 4, 5)) =>
+        {
             Some(Level::SweepRun)
         }
         (Level::Lines, _) if is_line_id(name) => Some(Level::Line),
@@ -183,6 +190,34 @@ fn folder_level(level: Level, name: &str) -> Option<Level> {
 /// A line's id as a folder name: an integer, perhaps negative.
 fn is_line_id(name: &str) -> bool {
     all_digits(name.strip_prefix('-').unwrap_or(name))
+}
+
+/// `s` is `min` to `max` decimal digits.
+fn digits_between(s: &str, min: usize, max: usize) -> bool {
+    (min..=max).contains(&s.len()) && all_digits(s)
+}
+
+/// A run's `summary.json`: a JSON object (of at most 64 MiB) with a
+/// string `title` and an `analysis`, as every run of stancf's writes.
+fn is_run_summary(path: &Path) -> bool {
+    let Ok(text) = crate::input_file::read_text(path) else {
+        return false;
+    };
+    serde_json::from_str::<serde_json::Value>(&text).is_ok_and(|v| {
+        v.get("title").is_some_and(|t| t.is_string()) && v.get("analysis").is_some()
+    })
+}
+
+/// A sweep's `sweep.csv`: a regular file whose header starts `run,`.
+fn is_sweep_table(path: &Path) -> bool {
+    use std::io::Read;
+    if !is_regular_file(path) {
+        return false;
+    }
+    let mut head = [0u8; 4];
+    std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut head))
+        .is_ok_and(|()| &head == b"run,")
 }
 
 fn all_digits(s: &str) -> bool {
@@ -204,6 +239,9 @@ mod tests {
         d
     }
 
+    /// The least summary.json a run of stancf's writes.
+    const SUMMARY: &str = r#"{"title": "t", "analysis": "static"}"#;
+
     fn touch(dir: &Path, rel: &str) {
         let p = dir.join(rel);
         std::fs::create_dir_all(p.parent().unwrap()).unwrap();
@@ -216,6 +254,7 @@ mod tests {
         for f in RUN_FILES {
             touch(&d, f);
         }
+        std::fs::write(d.join("summary.json"), SUMMARY).unwrap();
         for f in ["energy.png", "energy.svg", "vtk/cable_000012.vtp"] {
             touch(&d, f);
         }
@@ -225,7 +264,7 @@ mod tests {
         }
         assert_eq!(contents(&d).unwrap(), Contents::ResultSet);
         let sweep = scratch("sweep");
-        touch(&sweep, "sweep.csv");
+        std::fs::write(sweep.join("sweep.csv"), "run,status\n").unwrap();
         touch(&sweep, "run_0000/summary.json");
         touch(&sweep, "run_0001/lines/1/nodes.csv");
         touch(&sweep, "run_0001/vtk/cable_000000.vtp");
@@ -248,9 +287,16 @@ mod tests {
                 "a folder stancf does not write",
             ),
             ("energy.jpg", "a file stancf does not write"),
+            ("vtk/cable_0000000000000.vtp", "a file stancf does not write"),
+            ("run_0001/summary.json", "a folder stancf does not write"),
         ] {
             let d = scratch("foreign");
-            touch(&d, "summary.json");
+            // A sweep's folder for the runs' folders, a run's for the rest.
+            if rel.starts_with("run_0001/") && rel != "run_0001/summary.json" {
+                std::fs::write(d.join("sweep.csv"), "run,status\n").unwrap();
+            } else {
+                std::fs::write(d.join("summary.json"), SUMMARY).unwrap();
+            }
             touch(&d, rel);
             match contents(&d).unwrap() {
                 Contents::Foreign(p, w) => {
@@ -265,9 +311,9 @@ mod tests {
     }
 
     #[test]
-    fn a_symbolic_link_or_a_missing_marker_is_foreign() {
+    fn a_symbolic_link_a_missing_marker_or_a_users_marker_is_foreign() {
         let d = scratch("link");
-        touch(&d, "summary.json");
+        std::fs::write(d.join("summary.json"), SUMMARY).unwrap();
         std::os::unix::fs::symlink("/", d.join("nodes.csv")).unwrap();
         assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, w)
             if p == d.join("nodes.csv") && w == "a symbolic link"));
@@ -275,8 +321,22 @@ mod tests {
         let d = scratch("marker");
         touch(&d, "history.csv");
         assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, w)
-            if p == d.join("history.csv") && w.contains("neither summary.json nor sweep.csv")));
+            if p == d.join("history.csv") && w.contains("neither a summary.json of stancf's")));
         std::fs::remove_dir_all(&d).unwrap();
+        // A user's own summary.json or sweep.csv is no marker.
+        for (name, text) in [
+            ("summary.json", "my summary"),
+            ("summary.json", "{}"),
+            ("sweep.csv", "user sweep data"),
+        ] {
+            let d = scratch("user-marker");
+            std::fs::write(d.join(name), text).unwrap();
+            assert!(
+                matches!(contents(&d).unwrap(), Contents::Foreign(..)),
+                "{name}: {text}"
+            );
+            std::fs::remove_dir_all(&d).unwrap();
+        }
         let d = scratch("empty");
         assert_eq!(contents(&d).unwrap(), Contents::Empty);
         std::fs::remove_dir_all(&d).unwrap();

@@ -19,7 +19,13 @@ fn bridle_deck(dir: &Path) -> std::path::PathBuf {
 fn users_project(dir: &Path) -> std::path::PathBuf {
     let proj = dir.join("proj");
     std::fs::create_dir_all(proj.join("src")).unwrap();
-    std::fs::write(proj.join("summary.json"), "{}").unwrap();
+    // A summary.json as stancf writes it (copied from a run, say): the
+    // folder's other entries still make it a user's.
+    std::fs::write(
+        proj.join("summary.json"),
+        r#"{"title": "copied", "analysis": "static"}"#,
+    )
+    .unwrap();
     std::fs::write(proj.join("thesis.tex"), "precious").unwrap();
     std::fs::write(proj.join("src/main.c"), "int main;").unwrap();
     proj

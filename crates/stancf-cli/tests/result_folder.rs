@@ -251,6 +251,36 @@ fn ctrl_c_mid_system_run_marks_its_summary_interrupted() {
     std::fs::remove_dir_all(&d).unwrap();
 }
 
+/// A file a user puts into the output folder while a run writes is kept
+/// (issue 28): the folder is checked again before it is swapped out, and
+/// the new results go beside it under a name of their own.
+#[test]
+fn a_file_added_to_the_output_folder_during_a_run_is_kept() {
+    let d = scratch("added-during");
+    let target = d.join("case");
+    let old = write_scenario(&d, "old.toml", &pendulum("old", 1e-4, 0.01, 1));
+    assert!(run_to(&old, &target).status.success());
+    let long = write_scenario(&d, "long.toml", &pendulum("long", 1e-4, 0.4, 7));
+    let child = spawn_run(&long, &target);
+    wait_for("the run to step", || {
+        staging_with_history(&target, 4096).is_some()
+    });
+    std::fs::write(target.join("notes.txt"), "mine").unwrap();
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("notes.txt") && err.contains("new-results"), "{err}");
+    assert_eq!(std::fs::read_to_string(target.join("notes.txt")).unwrap(), "mine");
+    // The old set is as it was, the new one whole beside it.
+    assert_eq!(read_json(&target.join("summary.json"))["title"], "old");
+    let kept = names(&d)
+        .into_iter()
+        .find(|n| n.starts_with("case.new-results-"))
+        .unwrap_or_else(|| panic!("no new results beside: {:?}", names(&d)));
+    assert_eq!(read_json(&d.join(kept).join("summary.json"))["title"], "long");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
 #[test]
 fn a_new_run_leaves_nothing_of_an_older_one_in_its_folder() {
     let d = scratch("stale");
