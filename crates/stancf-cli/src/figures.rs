@@ -63,8 +63,7 @@ pub fn grading_of(g: &serde_json::Value) -> Option<stancf::Grading> {
 impl RunInfo {
     pub fn read(dir: &Path) -> io::Result<RunInfo> {
         let path = dir.join("summary.json");
-        let text = std::fs::read_to_string(&path)
-            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let text = crate::input_file::read_result_text(&path)?;
         let s: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
             io::Error::new(
                 io::ErrorKind::InvalidData,

@@ -28,7 +28,7 @@ fn bad(path: &Path, what: &str) -> io::Error {
 /// Whether `dir` holds a system's results (summary.json's `system`).
 pub(crate) fn is_system(dir: &Path) -> io::Result<bool> {
     let path = dir.join("summary.json");
-    let text = std::fs::read_to_string(&path)?;
+    let text = crate::input_file::read_result_text(&path)?;
     let s: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
     Ok(s["system"].as_bool() == Some(true))
@@ -38,7 +38,7 @@ pub(crate) fn is_system(dir: &Path) -> io::Result<bool> {
 /// run whose `[output] files` left them out), named as in the folder.
 fn missing_tables(dir: &Path) -> io::Result<Vec<String>> {
     let path = dir.join("summary.json");
-    let text = std::fs::read_to_string(&path)?;
+    let text = crate::input_file::read_result_text(&path)?;
     let s: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
     let mut needed = vec!["tensions.csv".to_string(), "history.csv".to_string()];
@@ -56,7 +56,7 @@ fn missing_tables(dir: &Path) -> io::Result<Vec<String>> {
 /// The lines listed in summary.json with their written shapes.
 fn read_lines(dir: &Path) -> io::Result<Vec<LineShapes>> {
     let path = dir.join("summary.json");
-    let text = std::fs::read_to_string(&path)?;
+    let text = crate::input_file::read_result_text(&path)?;
     let s: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| bad(&path, &e.to_string()))?;
     let lines = s["lines"]
@@ -113,7 +113,7 @@ fn shapes_figure(lines: &[LineShapes], info: &RunInfo, count: usize) -> Lines {
 /// The tension at every line end against time, from tensions.csv.
 fn tensions_figure(dir: &Path, info: &RunInfo) -> io::Result<Lines> {
     let path = dir.join("tensions.csv");
-    let text = std::fs::read_to_string(&path)?;
+    let text = crate::input_file::read_result_text(&path)?;
     let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     for (n, row) in text.lines().enumerate().skip(1) {
         let f: Vec<&str> = row.split(',').collect();

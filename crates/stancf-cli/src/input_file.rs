@@ -15,6 +15,15 @@ pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
 /// The text of the input file at `path`, or what is wrong with it (a
 /// message to follow the file's name: "not a regular file (a folder)").
 pub fn read_text(path: &Path) -> Result<String, String> {
+    // Looked at before it is opened: opening a pipe would wait for a
+    // writer for ever.
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read the file: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "not a regular file ({}); give the path of a file",
+            kind_of(&meta)
+        ));
+    }
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read the file: {e}"))?;
     let meta = file
         .metadata()
@@ -43,6 +52,37 @@ pub fn read_text(path: &Path) -> Result<String, String> {
             e.utf8_error().valid_up_to()
         )
     })
+}
+
+/// The largest result file `stancf plot` reads back (bytes): the 4 GB a
+/// run writes at most without `--allow-large`, with room.
+pub const MAX_RESULT_FILE_BYTES: u64 = 8_000_000_000;
+
+/// The text of a result file read back (`stancf plot`, a sweep's
+/// summaries): a regular file, not a symbolic link, of at most
+/// [`MAX_RESULT_FILE_BYTES`]; an error naming the file otherwise.
+pub fn read_result_text(path: &Path) -> std::io::Result<String> {
+    use std::io::{Error, ErrorKind};
+    let refuse = |why: String| Error::new(ErrorKind::InvalidData, format!("{}: {why}", path.display()));
+    let meta = std::fs::symlink_metadata(path)
+        .map_err(|e| Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    if meta.file_type().is_symlink() {
+        return Err(refuse("a symbolic link, not a result file stancf wrote".into()));
+    }
+    if !meta.is_file() {
+        return Err(refuse(format!("not a regular file ({})", kind_of(&meta))));
+    }
+    if meta.len() > MAX_RESULT_FILE_BYTES {
+        return Err(refuse(format!(
+            "{} bytes, above the {MAX_RESULT_FILE_BYTES} a result file is read back with",
+            meta.len()
+        )));
+    }
+    let mut bytes = Vec::with_capacity(meta.len() as usize);
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_RESULT_FILE_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    String::from_utf8(bytes).map_err(|_| refuse("not UTF-8 text".into()))
 }
 
 fn too_large(bytes: u64) -> String {

@@ -254,6 +254,17 @@ impl Drop for ResultFolder {
 /// A symbolic link is followed: the folder it names is the target; a
 /// link to nothing is refused (exit 2), naming where it points.
 fn resolve(target: &Path) -> Result<PathBuf, Failure> {
+    // `o/.` names the folder `o` is in to the system, though its last
+    // named part is `o`: refused as `.` is (see `split`).
+    let text = target.to_string_lossy();
+    let trimmed = text.trim_end_matches('/');
+    if trimmed == "." || trimmed.ends_with("/.") {
+        return Err(Failure::Input(format!(
+            "{}: not a folder name of its own (it ends in \".\"); a run replaces its output \
+             folder whole, so name one (for example out/case)",
+            target.display()
+        )));
+    }
     match std::fs::symlink_metadata(target) {
         Ok(m) if m.file_type().is_symlink() => match std::fs::canonicalize(target) {
             Ok(p) => Ok(p),
@@ -265,7 +276,10 @@ fn resolve(target: &Path) -> Result<PathBuf, Failure> {
                     .map(|p| p.display().to_string())
                     .unwrap_or_else(|_| "?".into())
             ))),
-            Err(e) => Err(cannot(target)(e)),
+            Err(e) => Err(Failure::Input(format!(
+                "{}: a symbolic link that cannot be followed ({e}); choose another output folder",
+                target.display()
+            ))),
         },
         _ => Ok(target.to_path_buf()),
     }
@@ -543,7 +557,7 @@ mod tests {
             ResultFolder::open(&target),
             Err(Failure::Input(m)) if m.contains("thesis.tex") && m.contains("not a result set")
         ));
-        for bad in [".", "..", "/", "a/.."] {
+        for bad in [".", "..", "/", "a/..", "a/.", "./a/./", "a/./"] {
             assert!(
                 matches!(ResultFolder::open(Path::new(bad)), Err(Failure::Input(_))),
                 "{bad}"

@@ -14,8 +14,7 @@ pub struct Table {
 
 impl Table {
     pub fn read(path: &Path) -> io::Result<Table> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let text = crate::input_file::read_result_text(path)?;
         let flat = FlatTable::parse(&text, &path.display().to_string())?;
         let width = flat.header.len().max(1);
         Ok(Table {
@@ -114,8 +113,7 @@ pub struct TextTable {
 
 impl TextTable {
     pub fn read(path: &Path) -> io::Result<TextTable> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        let text = crate::input_file::read_result_text(path)?;
         let mut lines = text.lines().filter(|l| !l.trim().is_empty());
         let split = |l: &str| {
             l.split(',')

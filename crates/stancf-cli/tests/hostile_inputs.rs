@@ -160,3 +160,43 @@ fn a_file_neither_toml_nor_a_deck_and_a_deck_without_lines_say_so() {
     assert!(!err.contains("TOML parse error"), "{err}");
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// A pipe as an input file is refused before it is opened (opening one
+/// waits for a writer for ever), as the scenario and as a file it names.
+#[test]
+fn a_pipe_as_an_input_file_is_refused_at_once() {
+    let d = scratch("fifo");
+    let fifo = d.join("fifo.txt");
+    let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+    // SAFETY: mkfifo(3) with a valid path.
+    assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o644) }, 0);
+    let deck = write_scenario(
+        &d,
+        "deck.toml",
+        "[system]\nmoordyn = \"fifo.txt\"\n[analysis]\ntype = \"static\"\n",
+    );
+    for (file, needle) in [(&fifo, "fifo.txt: not a regular file (a pipe)"), (&deck, "system.moordyn")] {
+        // Before, `check` waited on the pipe for ever; the refusal comes
+        // before anything is opened.
+        let err = refused(&d, file, &[needle, "not a regular file (a pipe)"], &[], 1000);
+        assert!(!err.is_empty());
+    }
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// `stancf plot` reads back only regular files a run wrote: a result file
+/// replaced by a link to /dev/zero is refused, not read without end.
+#[test]
+fn plot_refuses_a_result_file_that_is_a_link_to_a_device() {
+    let d = scratch("plot-link");
+    let sc = write_scenario(&d, "p.toml", &pendulum("p", 1e-3, 4e-3, 1));
+    let out = d.join("out");
+    assert!(run_quiet(&sc, &out, &[]).status.success());
+    std::fs::remove_file(out.join("nodes.csv")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", out.join("nodes.csv")).unwrap();
+    let o = stancf_in_bounded_memory(&["plot", out.to_str().unwrap()]);
+    let (_, err) = text(&o);
+    assert!(!o.status.success(), "{err}");
+    assert!(err.contains("nodes.csv: a symbolic link"), "{err}");
+    std::fs::remove_dir_all(&d).unwrap();
+}

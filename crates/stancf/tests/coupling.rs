@@ -247,3 +247,31 @@ fn a_coupled_point_moved_faster_than_the_bound_is_refused_and_nothing_moves() {
     let r = h.step_to(t + 1e-4, &x, None);
     assert!(!matches!(r, Err(CouplingError::Input(_))), "{r:?}");
 }
+
+/// Velocities the host gives are bounded as its positions' jumps are: a
+/// fairlead at 1e6 m/s (or 1e300) is a wrong value, refused before
+/// anything moves; a position 1e300 m away too.
+#[test]
+fn a_coupled_velocity_or_position_beyond_the_bounds_is_refused_and_nothing_moves() {
+    let (mut h, x) = stepped(three_to_a_point(4));
+    let t = h.time();
+    let before = nodes(&h);
+    for speed in [1e300, 1e6, 150.0] {
+        let xd = vec![speed, 0.0, 0.0];
+        let m = input_message(h.step_to(t + 1e-4, &x, Some(&xd)).unwrap_err());
+        assert!(m.contains("xd[0..3]") && m.contains("100 m/s"), "{m}");
+    }
+    let mut far = x.clone();
+    far[2] = -1e300;
+    let m = input_message(h.step_to(t + 1e-4, &far, None).unwrap_err());
+    assert!(m.contains("x[2]") && m.contains("1e7 m"), "{m}");
+    assert_eq!(h.time(), t);
+    assert_eq!(nodes(&h), before);
+    // And at initialize, the handle untouched.
+    let (mut fresh, x0) = handle(three_to_a_point(4));
+    let mut far = x0.clone();
+    far[2] = -1e300;
+    let m = input_message(fresh.initialize(&far, None).unwrap_err());
+    assert!(m.contains("x[2]"), "{m}");
+    assert!(fresh.simulation().is_none());
+}

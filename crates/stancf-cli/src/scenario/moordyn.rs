@@ -54,6 +54,23 @@ pub(super) fn deck_scenario(
 ) -> Result<SystemScenario, ScenarioError> {
     let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
     let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
+    // g is the water's too (its pressure, its waves): out of range it is
+    // refused here by its line, before the water is built with it.
+    if !(g.is_finite() && (1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE).contains(&g))
+    {
+        let (name, line) = deck
+            .options
+            .iter()
+            .find(|o| o.kind == crate::moordyn::OptionKind::Supported(SupportedOption::Gravity))
+            .map_or(("g".to_string(), 0), |o| (o.name.clone(), o.line));
+        return Err(at(
+            line,
+            format!(
+                "{name}: {g:e} m/s^2 is out of the range the solver computes in (1e-150 to \
+                 1e150 in SI units); give the acceleration of gravity in m/s^2"
+            ),
+        ));
+    }
     let water = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
     let line_types = deck
         .line_types

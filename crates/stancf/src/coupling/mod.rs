@@ -42,7 +42,12 @@ use std::fmt;
 /// hold the host's call for hours with no way to stop it from C.
 pub const MAX_INTERVAL_STEPS: usize = 100_000;
 
-/// The fastest a coupled point may move over a coupling interval (m/s): a
+/// The farthest a coupled point may be from the origin (m), in any
+/// coordinate: ten thousand kilometres, beyond any mooring's frame.
+pub const MAX_COUPLED_COORDINATE: f64 = 1e7;
+
+/// The fastest a coupled point may move over a coupling interval, and
+/// the largest velocity a coupling code may give one (m/s): a
 /// fairlead of a floating platform in a storm moves a few m/s, a towed
 /// body or a cable robot's winch tens; 100 m/s is no mooring's motion.
 pub const MAX_COUPLED_SPEED: f64 = 100.0;
@@ -535,7 +540,9 @@ impl CoupledSystem {
         Ok(())
     }
 
-    /// A coupling array: `coupled_dof` finite values.
+    /// A coupling array: `coupled_dof` finite values; positions (`x`)
+    /// within [`MAX_COUPLED_COORDINATE`] of the origin, velocities (`xd`)
+    /// of speeds up to [`MAX_COUPLED_SPEED`].
     fn check_values(&self, key: &str, values: &[f64]) -> Result<(), ModelError> {
         if values.len() != self.coupled_dof() {
             return Err(ModelError::invalid(
@@ -551,6 +558,37 @@ impl CoupledSystem {
             return Err(ModelError::invalid(
                 format!("{key}[{i}]"),
                 format!("must be finite, got {}", values[i]),
+            ));
+        }
+        if key == "xd" {
+            // Velocities: each point's speed within the bound.
+            for k in 0..values.len() / 3 {
+                let speed = values[3 * k..3 * k + 3]
+                    .iter()
+                    .map(|v| v * v)
+                    .sum::<f64>()
+                    .sqrt();
+                if speed > MAX_COUPLED_SPEED {
+                    return Err(ModelError::invalid(
+                        format!("xd[{}..{}]", 3 * k, 3 * k + 3),
+                        format!(
+                            "coupled point {k} is given a speed of {} m/s, above the \
+                             {MAX_COUPLED_SPEED} m/s a coupled point may move (a wrong \
+                             velocity: another unit or frame?); the system is untouched",
+                            Sig(speed)
+                        ),
+                    ));
+                }
+            }
+        } else if let Some(i) = values.iter().position(|v| v.abs() > MAX_COUPLED_COORDINATE) {
+            return Err(ModelError::invalid(
+                format!("{key}[{i}]"),
+                format!(
+                    "{} m is farther from the origin than the {MAX_COUPLED_COORDINATE:e} m a \
+                     coupled point may be (a wrong position: another unit or frame?); the \
+                     system is untouched",
+                    Sig(values[i])
+                ),
             ));
         }
         Ok(())
