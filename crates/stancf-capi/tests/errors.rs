@@ -198,3 +198,51 @@ fn a_deck_beyond_the_bounds_is_refused_before_it_is_built_and_large_ones_open_on
     assert!(s.is_null());
     assert!(message().contains("unknown flags 0x6"), "{}", message());
 }
+
+/// A C host whose address space is limited (1.5 GB) gets NULL and a
+/// message for a system its opt-in allows but its memory does not take
+/// (500 024 elements, about 12.5 GB), where the allocation used to abort
+/// it (issue 28, item 4).
+#[test]
+fn a_large_system_beyond_the_hosts_memory_is_null_not_an_abort() {
+    use std::os::unix::process::CommandExt;
+    let deck = bridle_deck_with_segments("memory-host", "500000");
+    let dir = scratch("memory-host-c");
+    let source = dir.join("open_large.c");
+    std::fs::write(
+        &source,
+        "#include <stdio.h>\n#include \"stancf.h\"\n\
+         int main(int argc, char **argv) {\n\
+             (void)argc;\n\
+             StancfSystem *s = stancf_create_with(argv[1], STANCF_ALLOW_LARGE);\n\
+             if (s != NULL) return 1;\n\
+             puts(stancf_error_message());\n\
+             return 0;\n\
+         }\n",
+    )
+    .unwrap();
+    let exe = dir.join("open_large");
+    common::compile(&source, &exe, "c99");
+    let mut cmd = common::c_program(&exe);
+    cmd.arg(&deck);
+    // SAFETY: setrlimit(2) in the child before exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            let limit = libc::rlimit {
+                rlim_cur: 1_500_000_000,
+                rlim_max: 1_500_000_000,
+            };
+            libc::setrlimit(libc::RLIMIT_AS, &limit);
+            Ok(())
+        });
+    }
+    let out = cmd.output().unwrap();
+    let printed = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{printed}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(printed.contains("more than the"), "{printed}");
+}

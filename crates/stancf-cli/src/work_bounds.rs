@@ -26,9 +26,51 @@ pub const MAX_SYSTEM_ELEMENTS: usize = 2000;
 
 /// The most elements a system may have even with `--allow-large` (and
 /// a library opening one with its opt-in for large systems): one line of
-/// the most a line may have ([`stancf::model::MAX_ELEMENTS`], about 9 GB
-/// to build with its simulation).
+/// the most a line may have ([`stancf::model::MAX_ELEMENTS`], about 25 GB
+/// to build and solve, [`BYTES_PER_SYSTEM_ELEMENT`]); below it, the
+/// memory the process may take bounds it too.
 pub const HARD_MAX_SYSTEM_ELEMENTS: usize = stancf::model::MAX_ELEMENTS;
+
+/// Bytes a system's element takes to build and solve, statics and
+/// dynamics: 8.6 kB measured by `check` (its model, its static solve's and
+/// its simulation's matrices) on a line of 1e5 elements, 19 kB by a
+/// coupled system's static solve at 1e5 elements (1.93 GB); with a margin.
+pub const BYTES_PER_SYSTEM_ELEMENT: f64 = 25e3;
+
+/// The memory this process may still take (bytes): the machine's
+/// available memory (`MemAvailable` of /proc/meminfo) and what the
+/// process's address-space limit leaves (`RLIMIT_AS` less its `VmSize`),
+/// whichever is less; None where neither is known.
+pub fn memory_available() -> Option<f64> {
+    let field = |text: &str, key: &str| -> Option<f64> {
+        let line = text.lines().find(|l| l.starts_with(key))?;
+        let kb: f64 = line[key.len()..].trim().trim_end_matches("kB").trim().parse().ok()?;
+        Some(kb * 1024.0)
+    };
+    let machine = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|t| field(&t, "MemAvailable:"));
+    let mut limit = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: getrlimit(2) writes the struct it is given.
+    let limited = unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut limit) } == 0
+        && limit.rlim_cur != libc::RLIM_INFINITY;
+    let process = if limited {
+        let used = std::fs::read_to_string("/proc/self/status")
+            .ok()
+            .and_then(|t| field(&t, "VmSize:"))
+            .unwrap_or(0.0);
+        Some((limit.rlim_cur as f64 - used).max(0.0))
+    } else {
+        None
+    };
+    match (machine, process) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
+}
 
 /// The work of a system, counted from its scenario before anything of it
 /// is built: its elements (all lines; the sum saturates, it never wraps)
@@ -71,7 +113,9 @@ pub fn system_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> 
     elements_problem(sc, allow_large).or_else(|| steps_problem(sc, allow_large))
 }
 
-/// The part of [`system_problem`] on elements.
+/// The part of [`system_problem`] on elements: the bounds, and the
+/// memory the system would take against what this process may take (an
+/// allocation that fails aborts the process, a C library's host with it).
 fn elements_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
     let work = system_work(sc);
     if let Some(l) = sc.lines.get(work.largest_line) {
@@ -88,8 +132,8 @@ fn elements_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
             );
             return Some(if allow_large {
                 format!(
-                    "{what}, above the {HARD_MAX_SYSTEM_ELEMENTS} a system may have (about 9 GB \
-                     to build); mesh the lines more coarsely"
+                    "{what}, above the {HARD_MAX_SYSTEM_ELEMENTS} a system may have (about 25 GB \
+                     to build and solve); mesh the lines more coarsely"
                 )
             } else {
                 format!(
@@ -99,6 +143,18 @@ fn elements_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
                 )
             });
         }
+    }
+    let needed = work.elements as f64 * BYTES_PER_SYSTEM_ELEMENT;
+    if let Some(free) = memory_available().filter(|&free| needed > free) {
+        let key = sc.names.line(work.largest_line, "elements", "NumSegs");
+        return Some(format!(
+            "{key}: the lines have {} elements in all, which take about {} to build and \
+             solve, more than the {} this process may still take; mesh the lines more \
+             coarsely",
+            work.elements,
+            bytes_text(needed),
+            bytes_text(free)
+        ));
     }
     None
 }

@@ -159,3 +159,21 @@ fn check_reports_the_elements_and_steps_against_the_bounds() {
     );
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// A large system allowed by `--allow-large` is still refused when it
+/// would take more memory than the process may (an allocation that fails
+/// aborts the process): 500 024 elements, about 12.5 GB, under a limit
+/// of 1.5 GB.
+#[test]
+fn an_allowed_large_system_beyond_the_memory_the_process_may_take_is_refused() {
+    let d = scratch("memory-bound");
+    let deck = bridle_with_segments(&d, "500000");
+    let o = stancf_in_bounded_memory(&["check", deck.to_str().unwrap(), "--allow-large"]);
+    let (_, err) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("line 18: NumSegs") && err.contains("more than the"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&d).unwrap();
+}

@@ -137,10 +137,11 @@ impl Mesh {
     }
 }
 
-/// The most elements a cable (or a line of a system) may have: a model
-/// of this many takes about 9 GB to build with its simulation (8.6 kB per
-/// element, measured on a line of 1e5 elements), beyond what a run of a
-/// cable needs (docs/interface.md, "Bounds").
+/// The most elements a cable (or a line of a system) may have: a line of
+/// this many takes about 9 GB to build with its static solve and
+/// simulation (8.6 kB per element, measured on a line of 1e5 elements)
+/// and about 20 GB to solve statically, beyond what a run of a cable
+/// needs (docs/interface.md, "Bounds and bad input").
 pub const MAX_ELEMENTS: usize = 1_000_000;
 
 impl Model {
