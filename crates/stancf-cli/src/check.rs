@@ -141,7 +141,7 @@ fn describe(
     let a = &sc.analysis;
     let mut s = String::new();
     let mut line = |k: &str, v: String| s.push_str(&format!("{k:<28}{v}\n"));
-    line("title", sc.title.clone());
+    line("title", crate::echo::clip(&sc.title, crate::echo::MAX_ECHO));
     line("mesh", mesh_text(model));
     line("DOFs", model.dofs().to_string());
     let constrained = (0..model.dofs())

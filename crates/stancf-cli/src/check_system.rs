@@ -71,7 +71,13 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     let mut line = |k: &str, v: String| {
         let _ = writeln!(r, "{k:<28}{v}");
     };
-    line("scenario", format!("{} (a system)", sc.title));
+    line(
+        "scenario",
+        format!(
+            "{} (a system)",
+            crate::echo::clip(&sc.title, crate::echo::MAX_ECHO)
+        ),
+    );
     for (i, l) in sc.lines.iter().enumerate() {
         let t = &sc.line_types[l.line_type];
         let ei = sc.bending_stiffness(i);

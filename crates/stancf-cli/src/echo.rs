@@ -10,11 +10,24 @@ pub const MAX_ECHO: usize = 200;
 /// The longest message made of pieces of input (in characters).
 pub const MAX_MESSAGE: usize = 2000;
 
-/// `s` cut to at most `max` characters, with "…" (an ellipsis) where cut.
+/// `s` cut to at most `max` characters, with "…" (an ellipsis) where cut,
+/// and its control characters but tab and newline (a NUL byte, an escape
+/// that would drive the terminal) shown as "?".
 pub fn clip(s: &str, max: usize) -> String {
+    let shown = |t: &str| -> String {
+        t.chars()
+            .map(|c| {
+                if c.is_control() && c != '\t' && c != '\n' {
+                    '?'
+                } else {
+                    c
+                }
+            })
+            .collect()
+    };
     match s.char_indices().nth(max) {
-        None => s.to_string(),
-        Some((end, _)) => format!("{}…", &s[..end]),
+        None => shown(s),
+        Some((end, _)) => format!("{}…", shown(&s[..end])),
     }
 }
 
@@ -34,6 +47,17 @@ pub fn clip_quoted(message: &str) -> String {
         }
     }
     clip(&out, MAX_MESSAGE)
+}
+
+/// The lines of a text file, ended by `\n`, `\r\n` or a lone `\r` (the
+/// line end of classic Mac OS files): as a text editor shows them, so
+/// that the line numbers of messages are the editor's.
+pub fn text_lines(text: &str) -> impl Iterator<Item = &str> {
+    text.split_inclusive('\n').flat_map(|l| {
+        let l = l.strip_suffix('\n').unwrap_or(l);
+        let l = l.strip_suffix('\r').unwrap_or(l);
+        l.split('\r')
+    })
 }
 
 #[cfg(test)]
@@ -56,5 +80,6 @@ mod tests {
             MAX_MESSAGE + 1
         );
         assert_eq!(clip_quoted("a \"b\" c"), "a \"b\" c");
+        assert_eq!(clip("wire\0\u{1b}[2J", 200), "wire??[2J");
     }
 }

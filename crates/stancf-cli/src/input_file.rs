@@ -63,11 +63,14 @@ pub const MAX_RESULT_FILE_BYTES: u64 = 8_000_000_000;
 /// [`MAX_RESULT_FILE_BYTES`]; an error naming the file otherwise.
 pub fn read_result_text(path: &Path) -> std::io::Result<String> {
     use std::io::{Error, ErrorKind};
-    let refuse = |why: String| Error::new(ErrorKind::InvalidData, format!("{}: {why}", path.display()));
+    let refuse =
+        |why: String| Error::new(ErrorKind::InvalidData, format!("{}: {why}", path.display()));
     let meta = std::fs::symlink_metadata(path)
         .map_err(|e| Error::new(e.kind(), format!("{}: {e}", path.display())))?;
     if meta.file_type().is_symlink() {
-        return Err(refuse("a symbolic link, not a result file stancf wrote".into()));
+        return Err(refuse(
+            "a symbolic link, not a result file stancf wrote".into(),
+        ));
     }
     if !meta.is_file() {
         return Err(refuse(format!("not a regular file ({})", kind_of(&meta))));

@@ -203,9 +203,8 @@ fn is_run_summary(path: &Path) -> bool {
     let Ok(text) = crate::input_file::read_text(path) else {
         return false;
     };
-    serde_json::from_str::<serde_json::Value>(&text).is_ok_and(|v| {
-        v.get("title").is_some_and(|t| t.is_string()) && v.get("analysis").is_some()
-    })
+    serde_json::from_str::<serde_json::Value>(&text)
+        .is_ok_and(|v| v.get("title").is_some_and(|t| t.is_string()) && v.get("analysis").is_some())
 }
 
 /// A sweep's `sweep.csv`: a regular file whose header starts `run,`.
@@ -287,7 +286,10 @@ mod tests {
                 "a folder stancf does not write",
             ),
             ("energy.jpg", "a file stancf does not write"),
-            ("vtk/cable_0000000000000.vtp", "a file stancf does not write"),
+            (
+                "vtk/cable_0000000000000.vtp",
+                "a file stancf does not write",
+            ),
             ("run_0001/summary.json", "a folder stancf does not write"),
         ] {
             let d = scratch("foreign");

@@ -44,7 +44,12 @@ pub const BYTES_PER_SYSTEM_ELEMENT: f64 = 25e3;
 pub fn memory_available() -> Option<f64> {
     let field = |text: &str, key: &str| -> Option<f64> {
         let line = text.lines().find(|l| l.starts_with(key))?;
-        let kb: f64 = line[key.len()..].trim().trim_end_matches("kB").trim().parse().ok()?;
+        let kb: f64 = line[key.len()..]
+            .trim()
+            .trim_end_matches("kB")
+            .trim()
+            .parse()
+            .ok()?;
         Some(kb * 1024.0)
     };
     let machine = std::fs::read_to_string("/proc/meminfo")

@@ -98,12 +98,7 @@ fn extreme_deck_values_are_refused_by_their_line_and_column() {
             "1e300     WtrDnsty".into(),
             "WtrDnsty",
         ),
-        (
-            "g 1e-200",
-            "9.81      g".into(),
-            "1e-200    g".into(),
-            "g",
-        ),
+        ("g 1e-200", "9.81      g".into(), "1e-200    g".into(), "g"),
         (
             "dtM 1e-300",
             "0.0005    dtM".into(),

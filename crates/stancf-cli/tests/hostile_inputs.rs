@@ -175,10 +175,19 @@ fn a_pipe_as_an_input_file_is_refused_at_once() {
         "deck.toml",
         "[system]\nmoordyn = \"fifo.txt\"\n[analysis]\ntype = \"static\"\n",
     );
-    for (file, needle) in [(&fifo, "fifo.txt: not a regular file (a pipe)"), (&deck, "system.moordyn")] {
+    for (file, needle) in [
+        (&fifo, "fifo.txt: not a regular file (a pipe)"),
+        (&deck, "system.moordyn"),
+    ] {
         // Before, `check` waited on the pipe for ever; the refusal comes
         // before anything is opened.
-        let err = refused(&d, file, &[needle, "not a regular file (a pipe)"], &[], 1000);
+        let err = refused(
+            &d,
+            file,
+            &[needle, "not a regular file (a pipe)"],
+            &[],
+            1000,
+        );
         assert!(!err.is_empty());
     }
     std::fs::remove_dir_all(&d).unwrap();
@@ -198,5 +207,46 @@ fn plot_refuses_a_result_file_that_is_a_link_to_a_device() {
     let (_, err) = text(&o);
     assert!(!o.status.success(), "{err}");
     assert!(err.contains("nodes.csv: a symbolic link"), "{err}");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// What the red-team pass of issue 28 found in the echo of input: a title
+/// of megabytes is printed cut, a NUL byte of a deck shown as "?", a
+/// motion table with CR line ends read as with \n, and a number too large
+/// for TOML is not told "this file is not TOML".
+#[test]
+fn long_titles_control_characters_and_cr_tables_are_echoed_safely() {
+    let d = scratch("echo");
+    let long = pendulum("p", 1e-3, 4e-3, 1).replace(
+        "title = \"p\"",
+        &format!("title = \"{}\"", "t".repeat(100_000)),
+    );
+    assert!(long.contains("ttt"));
+    let long = write_scenario(&d, "long.toml", &long);
+    let o = stancf(&["check", long.to_str().unwrap()]);
+    let (out, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        out.len() < 5000 && out.contains("ttt…"),
+        "{} bytes",
+        out.len()
+    );
+    let deck = std::fs::read_to_string(repo_file("examples/midwater-bridle-moordyn.txt"))
+        .unwrap()
+        .replacen("1   wire      1", "1   wire\0      1", 1);
+    let deck = write_scenario(&d, "nul.txt", &deck);
+    let err = refused(&d, &deck, &["wire?"], &["\0"], 2000);
+    assert!(!err.is_empty());
+    std::fs::write(d.join("m.csv"), "t,x,y,z\r0,1,0,0\r1,1,0,0\r").unwrap();
+    let sc = write_scenario(&d, "cr.toml", &rope_moved_by("m.csv"));
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    let big = write_scenario(
+        &d,
+        "big.toml",
+        "[[mesh]]\nlines = [1]\nelements = 18446744073709551615\n",
+    );
+    let err = refused(&d, &big, &["number too large"], &["not TOML"], 2000);
+    assert!(!err.is_empty());
     std::fs::remove_dir_all(&d).unwrap();
 }

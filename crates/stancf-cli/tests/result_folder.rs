@@ -269,15 +269,24 @@ fn a_file_added_to_the_output_folder_during_a_run_is_kept() {
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
-    assert!(err.contains("notes.txt") && err.contains("new-results"), "{err}");
-    assert_eq!(std::fs::read_to_string(target.join("notes.txt")).unwrap(), "mine");
+    assert!(
+        err.contains("notes.txt") && err.contains("new-results"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(target.join("notes.txt")).unwrap(),
+        "mine"
+    );
     // The old set is as it was, the new one whole beside it.
     assert_eq!(read_json(&target.join("summary.json"))["title"], "old");
     let kept = names(&d)
         .into_iter()
         .find(|n| n.starts_with("case.new-results-"))
         .unwrap_or_else(|| panic!("no new results beside: {:?}", names(&d)));
-    assert_eq!(read_json(&d.join(kept).join("summary.json"))["title"], "long");
+    assert_eq!(
+        read_json(&d.join(kept).join("summary.json"))["title"],
+        "long"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }
 

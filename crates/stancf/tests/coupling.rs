@@ -275,3 +275,20 @@ fn a_coupled_velocity_or_position_beyond_the_bounds_is_refused_and_nothing_moves
     assert!(m.contains("x[2]"), "{m}");
     assert!(fresh.simulation().is_none());
 }
+
+/// A next time a round-off after the time reached is told so, in short
+/// numbers (it read "must come after the time reached" with 300 zeros).
+#[test]
+fn an_interval_too_short_to_step_is_told_so_in_short_numbers() {
+    let (mut h, x) = stepped(three_to_a_point(4));
+    let t = h.time();
+    for dt in [1e-17, 1e-300, 5e-324] {
+        let m = input_message(h.step_to(t + dt, &x, None).unwrap_err());
+        assert!(m.len() < 300, "{m}");
+        assert!(
+            m.contains("too short to step") || m.contains("must come after"),
+            "{m}"
+        );
+    }
+    assert_eq!(h.time(), t);
+}

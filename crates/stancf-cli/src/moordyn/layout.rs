@@ -147,16 +147,10 @@ enum Target {
     Marker(usize, String),
 }
 
-/// The lines of a deck, ended by `\n`, `\r\n` or a lone `\r` (the line
-/// end of classic Mac OS files, which some MoorDyn decks still carry): as
-/// a text editor shows them, so that the line numbers of messages are
-/// the editor's.
+/// The lines of a deck ([`crate::echo::text_lines`]: some MoorDyn decks
+/// still carry the lone `\r` line ends of classic Mac OS).
 pub(crate) fn deck_lines(text: &str) -> impl Iterator<Item = &str> {
-    text.split_inclusive('\n').flat_map(|l| {
-        let l = l.strip_suffix('\n').unwrap_or(l);
-        let l = l.strip_suffix('\r').unwrap_or(l);
-        l.split('\r')
-    })
+    crate::echo::text_lines(text)
 }
 
 /// Cuts a deck into title and sections. A line containing `---` naming

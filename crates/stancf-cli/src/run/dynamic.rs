@@ -414,7 +414,7 @@ fn dynamic_report(sc: &Scenario, sim: &Simulation, run: &Stepped, place: &Place)
     let en = sim.energies();
     say!(report,
         "{}: {} steps to t = {} s in {:.3} s wall time, {:.2} {} iterations per step, {} factorizations",
-        sc.title,
+        crate::echo::clip(&sc.title, crate::echo::MAX_ECHO),
         steps,
         Sig(state.t),
         run.wall,

@@ -202,7 +202,7 @@ fn static_report(sc: &Scenario, solver: &StaticSolver, run: &Stepping, place: &P
     let en = static_energies(model, state);
     say!(report,
         "{}: static, {} load increments ({} cuts) in {:.3} s wall time, {:.2} Newton iterations per increment",
-        sc.title,
+        crate::echo::clip(&sc.title, crate::echo::MAX_ECHO),
         run.increments,
         run.cuts,
         run.wall,

@@ -112,7 +112,13 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
 fn raw_scenario(text: &str, file: &str) -> Result<RawScenario, ScenarioError> {
     toml::from_str(text).map_err(|e| {
         let mut err = messages::toml_error(file, text, &e);
-        if text.parse::<toml::Table>().is_err() {
+        // Told only to a file with no TOML in its look: no key = value, no
+        // [table] (a number too large is a TOML file's error of its own).
+        let looks_toml = text
+            .lines()
+            .map(str::trim)
+            .any(|l| !l.starts_with('#') && (l.contains('=') || l.starts_with('[')));
+        if !looks_toml {
             err.0.push_str(
                 "\n(stancf reads TOML scenarios and MoorDyn v2 decks; this file is not TOML, and \
                  it has no MoorDyn section header, a line such as --- LINE TYPES ---)",

@@ -56,7 +56,8 @@ pub(super) fn deck_scenario(
     let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
     // g is the water's too (its pressure, its waves): out of range it is
     // refused here by its line, before the water is built with it.
-    if !(g.is_finite() && (1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE).contains(&g))
+    if !(g.is_finite()
+        && (1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE).contains(&g))
     {
         let (name, line) = deck
             .options

@@ -90,7 +90,10 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
     let text = crate::input_file::read_text(path)?;
     let mut rows = Vec::new();
     let mut lines = Vec::new();
-    for (n, l) in text.lines().enumerate().skip(CURRENT_PROFILE_HEADER_LINES) {
+    for (n, l) in crate::echo::text_lines(&text)
+        .enumerate()
+        .skip(CURRENT_PROFILE_HEADER_LINES)
+    {
         let words: Vec<&str> = l.split_whitespace().collect();
         if words.is_empty() {
             continue;

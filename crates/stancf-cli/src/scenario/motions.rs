@@ -235,8 +235,7 @@ pub(super) fn read_motion_file(path: &Path, shown: &str) -> Result<MotionTable, 
 
 /// The table in `text` (see the module's doc).
 pub(super) fn parse_motion_table(text: &str, shown: &str) -> Result<MotionTable, MotionFileError> {
-    let mut lines = text
-        .lines()
+    let mut lines = crate::echo::text_lines(text)
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty());

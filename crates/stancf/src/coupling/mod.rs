@@ -456,10 +456,27 @@ impl CoupledSystem {
             .sim
             .time();
         let length = t_next - t0;
-        if !t_next.is_finite() || length <= 1e-9 * dt {
+        if !t_next.is_finite() || length <= 0.0 {
             return Err(ModelError::invalid(
                 "t",
-                format!("the next time {t_next} s must come after the time reached, {t0} s"),
+                format!(
+                    "the next time {} s must come after the time reached, {} s",
+                    Sig(t_next),
+                    Sig(t0)
+                ),
+            )
+            .into());
+        }
+        if length <= 1e-9 * dt {
+            return Err(ModelError::invalid(
+                "t",
+                format!(
+                    "an interval of {} s from {} s is shorter than 1e-9 of the time step, {} \
+                     s: too short to step (a time in another unit?)",
+                    Sig(length),
+                    Sig(t0),
+                    Sig(dt)
+                ),
             )
             .into());
         }

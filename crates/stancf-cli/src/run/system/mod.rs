@@ -537,7 +537,7 @@ fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &Place) -> S
     say!(
         r,
         "{}: {} line{}, {} point{}; {} in {:.2} s",
-        sc.title,
+        crate::echo::clip(&sc.title, crate::echo::MAX_ECHO),
         sc.lines.len(),
         if sc.lines.len() == 1 { "" } else { "s" },
         sc.points.len(),
