@@ -77,10 +77,9 @@ pub fn contents(dir: &Path) -> io::Result<Contents> {
     if !(sweep || is_run_summary(&dir.join("summary.json"))) {
         return Ok(Contents::Foreign(
             first?.path(),
-            format!(
-                "and neither a summary.json of stancf's (title, analysis) nor a sweep.csv of \
-                 its: not a result set of stancf's"
-            ),
+            "and neither a summary.json of stancf's (title, analysis) nor a sweep.csv of its: \
+             not a result set of stancf's"
+                .to_string(),
         ));
     }
     let top = if sweep { Level::Sweep } else { Level::Top };

@@ -468,7 +468,7 @@ mod tests {
             self.evaluations += 1;
             // Two evaluations an iteration (with the Jacobian, then the
             // trial step): the sign changes from iteration to iteration.
-            let noise = if (self.evaluations / 2) % 2 == 0 {
+            let noise = if (self.evaluations / 2).is_multiple_of(2) {
                 1e-15
             } else {
                 -1e-15
