@@ -6,7 +6,7 @@
 //! (`check_system::prepare`) and the report `check` would print
 //! (`check_system::check_system`, which returns it as text).
 
-use stancf_cli::scenario::{parse_input, Input};
+use stancf_scenario::scenario::{parse_input, Input};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
@@ -34,8 +34,8 @@ pub fn check_system_text(text: &str, name: &str) {
     let Ok(Input::System(sc)) = parse_input(text, &file, &path) else {
         return;
     };
-    if stancf_cli::work_bounds::admit_system(&file, &sc, false).is_err() {
+    if stancf_scenario::work_bounds::admit_system(&file, &sc, false).is_err() {
         return;
     }
-    let _ = stancf_cli::check_system::check_system(&path, &sc);
+    let _ = stancf_scenario::check_system::check_system(&path, &sc);
 }

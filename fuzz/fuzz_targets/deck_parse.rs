@@ -1,4 +1,4 @@
-//! Fuzz target: MoorDyn v2 deck text -> `stancf_cli::moordyn::parse`, and
+//! Fuzz target: MoorDyn v2 deck text -> `stancf_scenario::moordyn::parse`, and
 //! for a deck that reads, what `stancf check` does with it short of
 //! printing: the system scenario (`scenario::parse_input` on the text as
 //! a `.txt` file in an empty folder), the bounds on its elements
@@ -16,7 +16,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    if stancf_cli::moordyn::parse(text).is_err() {
+    if stancf_scenario::moordyn::parse(text).is_err() {
         return;
     }
     common::check_system_text(text, "fuzz.txt");

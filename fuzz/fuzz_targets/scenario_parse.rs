@@ -1,4 +1,4 @@
-//! Fuzz target: scenario text -> `stancf_cli::scenario::parse`, and for a
+//! Fuzz target: scenario text -> `stancf_scenario::scenario::parse`, and for a
 //! scenario that parses, what `stancf check` does with it short of
 //! printing: the model, the initial state, the highest frequency and the
 //! step count, and the simulation (dynamic) or static solver it would
@@ -18,7 +18,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let Ok(sc) = stancf_cli::scenario::parse(text, "fuzz.toml", Path::new("fuzz.toml")) else {
+    let Ok(sc) = stancf_scenario::scenario::parse(text, "fuzz.toml", Path::new("fuzz.toml")) else {
         return;
     };
     if sc.cable.elements > MAX_ELEMENTS {
@@ -29,14 +29,14 @@ fuzz_target!(|data: &[u8]| {
     };
     let state = sc.initial_state(&model);
     match sc.analysis.kind {
-        stancf_cli::scenario::AnalysisKind::Dynamic => {
+        stancf_scenario::scenario::AnalysisKind::Dynamic => {
             let _ = stancf::stability::highest_frequency(&model, &state.e);
             let _ = stancf::integrator::step_count(sc.analysis.duration, sc.analysis.time_step);
             if let Ok(sim) = stancf::Simulation::new(model, state, sc.step_settings()) {
                 let _ = (sim.unknowns_per_step(), sim.is_planar());
             }
         }
-        stancf_cli::scenario::AnalysisKind::Static => {
+        stancf_scenario::scenario::AnalysisKind::Static => {
             let _ = stancf::StaticSolver::new(model, sc.static_settings());
         }
     }

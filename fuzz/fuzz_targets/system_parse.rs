@@ -1,6 +1,6 @@
 //! Fuzz target: system scenario TOML (`[system]`, `[[line_types]]`,
 //! `[[points]]`, `[[lines]]`, `[water]`, `[[motions]]`, `[[mesh]]`,
-//! `[analysis]`, `[output]`) -> `stancf_cli::scenario::parse_input` on the
+//! `[analysis]`, `[output]`) -> `stancf_scenario::scenario::parse_input` on the
 //! text as a `.toml` file in an empty folder (so `system.moordyn` and
 //! motion files are not found), then, for a system that parses, the
 //! bounds on its elements and steps (`work_bounds::admit_system`) and what

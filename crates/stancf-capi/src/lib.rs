@@ -5,7 +5,7 @@
 //! can switch with little change. The header is `include/stancf.h`;
 //! docs/interface.md ("C library") is the contract.
 //!
-//! A thin shell: the handle is `stancf_cli::coupling::open`'s
+//! A thin shell: the handle is `stancf_scenario::coupling::open`'s
 //! [`stancf::coupling::CoupledSystem`], the same code as Rust's and
 //! Python's `stancf.Simulation`. Every function returns a code (0 is
 //! success, [`error`] lists the others) and keeps its message for
@@ -22,7 +22,7 @@ pub use lines::*;
 
 use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT_FILE};
 use stancf::coupling::{CoupledForces, CoupledState};
-use stancf_cli::coupling::Coupled;
+use stancf_scenario::coupling::Coupled;
 use std::ffi::{c_char, c_int, c_uint, CStr};
 use std::path::PathBuf;
 
@@ -101,7 +101,7 @@ unsafe fn create(path: *const c_char, flags: c_uint) -> *mut StancfSystem {
             ));
         }
         let path = path_of(path)?;
-        let coupled = stancf_cli::coupling::open_with(&path, flags & STANCF_ALLOW_LARGE != 0)
+        let coupled = stancf_scenario::coupling::open_with(&path, flags & STANCF_ALLOW_LARGE != 0)
             .map_err(|e| Error::new(STANCF_INVALID_INPUT_FILE, e.to_string()))?;
         args::open_system(StancfSystem {
             coupled,

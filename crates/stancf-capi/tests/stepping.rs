@@ -43,7 +43,7 @@ fn stepping_through_c_equals_the_rust_handle_to_the_bit() {
     );
     let through_c = advance(s, 20, 2.5e-3);
 
-    let mut rust = stancf_cli::coupling::open(&repo("examples/bridle.toml"))
+    let mut rust = stancf_scenario::coupling::open(&repo("examples/bridle.toml"))
         .unwrap()
         .handle;
     rust.initialize(&start, Some(&[0.0; 3])).unwrap();

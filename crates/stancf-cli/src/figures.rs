@@ -5,6 +5,7 @@
 
 use crate::plot::{sequential, ColorMap, Lines, Series, PALETTE};
 use crate::results::{by_time, spread, Table};
+use crate::Failure;
 use std::io;
 use std::path::Path;
 
@@ -374,6 +375,23 @@ pub fn plot_results(dir: &Path) -> io::Result<Vec<String>> {
         put(&|d, n| crate::plot::save(&fig, d, n), "convergence")?;
     }
     Ok(written)
+}
+
+/// `stancf plot DIR`: the figures of the results already in DIR.
+pub fn plot(dir: &Path) -> Result<(), Failure> {
+    if !dir.join("summary.json").exists() {
+        return Err(Failure::Input(format!(
+            "{}: no summary.json here: not a folder of stancf results",
+            dir.display()
+        )));
+    }
+    let names = plot_results(dir).map_err(|e| Failure::Input(e.to_string()))?;
+    println!(
+        "figures: {} (PNG and SVG) in {}",
+        names.join(", "),
+        dir.display()
+    );
+    Ok(())
 }
 
 #[cfg(test)]

@@ -109,7 +109,9 @@ fn main() -> ExitCode {
             &scenario,
             run::RunOptions {
                 out,
-                plot,
+                plot: plot.then(|| {
+                    run::Figures(std::sync::Arc::new(stancf_cli::figures::plot_results))
+                }),
                 vtk,
                 quiet,
                 allow_large,
@@ -118,7 +120,7 @@ fn main() -> ExitCode {
                 collect: None,
             },
         ),
-        Command::Plot { dir } => run::plot(&dir),
+        Command::Plot { dir } => stancf_cli::figures::plot(&dir),
         Command::Sweep {
             scenario,
             sets,

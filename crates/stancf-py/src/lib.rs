@@ -1,5 +1,5 @@
 //! `stancf._stancf`: the native part of the Python package. A thin layer
-//! over `stancf_cli`: the same scenario validation, the same run, the same
+//! over `stancf_scenario`: the same scenario validation, the same run, the same
 //! result files; the Python side (`python/stancf/__init__.py`) reads the
 //! files into numpy arrays and runs sweeps on any executor.
 
@@ -10,9 +10,9 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use stancf_cli::output::Collector;
-use stancf_cli::run::{run_text, Cancel, RunOptions};
-use stancf_cli::{scenario, sweep, Failure};
+use stancf_scenario::output::Collector;
+use stancf_scenario::run::{run_text, Cancel, RunOptions};
+use stancf_scenario::{scenario, sweep, Failure};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -46,15 +46,15 @@ fn validate(text: &str, name: &str) -> PyResult<()> {
 /// Whether scenario text is a MoorDyn v2 deck (not TOML).
 #[pyfunction]
 fn is_moordyn(text: &str) -> bool {
-    stancf_cli::moordyn::looks_like_moordyn(text)
+    stancf_scenario::moordyn::looks_like_moordyn(text)
 }
 
 /// The text of an input file as the command line reads it: a regular
-/// file of at most 64 MiB of UTF-8 (`stancf_cli::input_file`); anything
+/// file of at most 64 MiB of UTF-8 (`stancf_scenario::input_file`); anything
 /// else raises ScenarioError naming the file.
 #[pyfunction]
 fn read_input(path: PathBuf) -> PyResult<String> {
-    stancf_cli::input_file::read_text(&path)
+    stancf_scenario::input_file::read_text(&path)
         .map_err(|e| ScenarioError::new_err(format!("{}: {e}", path.display())))
 }
 
@@ -202,7 +202,7 @@ fn sweep_points(keys: Vec<String>, lengths: Vec<usize>) -> PyResult<usize> {
     sweep::grid_size(&lengths).map_err(ScenarioError::new_err)
 }
 
-/// A result folder written as one transaction (`stancf_cli`'s
+/// A result folder written as one transaction (`stancf_scenario`'s
 /// `ResultFolder`, as `stancf run` and `stancf sweep` write theirs):
 /// `ResultFolder(target)` locks `target` (ScenarioError if another run or
 /// sweep is writing into it, or if it is a folder of a user's files) and
@@ -211,13 +211,13 @@ fn sweep_points(keys: Vec<String>, lengths: Vec<usize>) -> PyResult<usize> {
 /// it, is gone); `abort()`, or dropping the object, deletes it and leaves
 /// `target` as it was.
 #[pyclass(module = "stancf._stancf", name = "ResultFolder")]
-struct PyResultFolder(Option<stancf_cli::output::ResultFolder>);
+struct PyResultFolder(Option<stancf_scenario::output::ResultFolder>);
 
 #[pymethods]
 impl PyResultFolder {
     #[new]
     fn new(target: PathBuf) -> PyResult<Self> {
-        match stancf_cli::output::ResultFolder::open(&target) {
+        match stancf_scenario::output::ResultFolder::open(&target) {
             Ok(f) => Ok(PyResultFolder(Some(f))),
             Err(Failure::Input(m)) => Err(ScenarioError::new_err(m)),
             Err(e) => Err(PyOSError::new_err(e.to_string())),
@@ -246,7 +246,7 @@ impl PyResultFolder {
 }
 
 impl PyResultFolder {
-    fn open(&self) -> PyResult<&stancf_cli::output::ResultFolder> {
+    fn open(&self) -> PyResult<&stancf_scenario::output::ResultFolder> {
         self.0
             .as_ref()
             .ok_or_else(|| PyOSError::new_err("this result folder is already committed or aborted"))

@@ -1,14 +1,14 @@
 //! The result files of a run handed to Python from memory
 //! (`RunOptions::collect`): each file's name in the run's folder, its
 //! bytes (the very bytes written to disk) and, for a numeric CSV file,
-//! its table parsed in Rust (`stancf_cli::results::FlatTable`: header,
+//! its table parsed in Rust (`stancf_scenario::results::FlatTable`: header,
 //! row count and the values as little-endian f64 bytes, which numpy takes
 //! without a copy per value). Reading them is reading the files: the same
 //! bytes, parsed correctly rounded as Python's `float` parses them.
 
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
-use stancf_cli::results::FlatTable;
+use stancf_scenario::results::FlatTable;
 use std::collections::BTreeMap;
 
 /// One file: (name, bytes, numeric table or None).

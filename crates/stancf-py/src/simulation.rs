@@ -125,7 +125,7 @@ impl PySimulation {
     #[new]
     #[pyo3(signature = (text, path, allow_large = false))]
     fn new(text: &str, path: PathBuf, allow_large: bool) -> PyResult<Self> {
-        let opened = stancf_cli::coupling::from_text_with(text, &path, allow_large)
+        let opened = stancf_scenario::coupling::from_text_with(text, &path, allow_large)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
         Ok(PySimulation {
             inner: Mutex::new(Inner {

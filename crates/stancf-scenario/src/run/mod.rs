@@ -33,13 +33,26 @@ impl std::fmt::Debug for Cancel {
     }
 }
 
+/// Draws the figures of the result set in a folder; the names of the
+/// figures drawn. The command line gives its own (PNG and SVG, `stancf
+/// run --plot`); this library draws none.
+#[derive(Clone)]
+pub struct Figures(pub std::sync::Arc<dyn Fn(&Path) -> std::io::Result<Vec<String>> + Send + Sync>);
+
+impl std::fmt::Debug for Figures {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Figures")
+    }
+}
+
 /// What `stancf run` writes besides the result files.
 #[derive(Clone, Debug, Default)]
 pub struct RunOptions {
     /// Output folder (default: `out/<scenario file stem>/`).
     pub out: Option<PathBuf>,
-    /// Also draw the run's figures (PNG and SVG) next to its results.
-    pub plot: bool,
+    /// Also draw the run's figures next to its results, with this
+    /// (the command line's PNG and SVG figures).
+    pub plot: Option<Figures>,
     /// Also write ParaView files (one .vtp per written step, cable.pvd).
     pub vtk: bool,
     /// No progress bar and no summary on standard output (errors and
@@ -194,7 +207,7 @@ fn in_result_folder(
     }
     // The figures are drawn from the new files, also those of a run that
     // stopped early (they hold every converged step).
-    let figures = opts.plot.then(|| crate::figures::plot_results(place.dir));
+    let figures = opts.plot.as_ref().map(|draw| (draw.0)(place.dir));
     folder.commit().map_err(io_err(&target))?;
     if let Ok(report) = &result {
         print!("{report}");
@@ -211,19 +224,3 @@ fn in_result_folder(
     result.map(|_| ())
 }
 
-/// `stancf plot DIR`: the figures of the results already in DIR.
-pub fn plot(dir: &Path) -> Result<(), Failure> {
-    if !dir.join("summary.json").exists() {
-        return Err(Failure::Input(format!(
-            "{}: no summary.json here: not a folder of stancf results",
-            dir.display()
-        )));
-    }
-    let names = crate::figures::plot_results(dir).map_err(|e| Failure::Input(e.to_string()))?;
-    println!(
-        "figures: {} (PNG and SVG) in {}",
-        names.join(", "),
-        dir.display()
-    );
-    Ok(())
-}

@@ -77,7 +77,7 @@ pub(super) fn run_system(
         .into_iter()
         .filter(|n| !sc.output_files.writes(n))
         .collect();
-    if opts.plot && !missing.is_empty() {
+    if opts.plot.is_some() && !missing.is_empty() {
         return Err(Failure::Input(format!(
             "{}: output.files: --plot draws from {}; the scenario leaves out {}",
             path.display(),

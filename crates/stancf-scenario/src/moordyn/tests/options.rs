@@ -1,0 +1,63 @@
+//! OPTIONS: what is accepted, refused by name, or refused as given twice
+//! or not a number.
+
+use super::*;
+
+#[test]
+fn ic_generator_options_are_accepted() {
+    let deck = parse(OC4).unwrap();
+    for name in ["dtIC", "TmaxIC", "CdScaleIC", "threshIC"] {
+        let o = deck.options.iter().find(|o| o.name == name).unwrap();
+        assert_eq!(o.kind, OptionKind::Ignored, "{name}");
+    }
+    let old = "5.0 ICDfac\n0.001 ICthresh\n0 ICTmax\n1 writeLog\n0 WaveKin\n0 Currents\n0.001 dtM";
+    let deck = parse(&with("0.001 dtM", old)).unwrap();
+    assert_eq!(deck.options.len(), 7);
+    assert_eq!(deck.option(SupportedOption::TimeStep), Some(0.001));
+}
+
+#[test]
+fn an_unknown_option_is_refused_naming_its_line() {
+    let text = with("0.001 dtM", "0.001 dtM\n3 WtrDepth water depth");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "WtrDepth")));
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "line {}: unknown option \"WtrDepth\"",
+            line_of(&text, "WtrDepth")
+        )
+    );
+}
+
+#[test]
+fn options_that_change_the_physics_are_refused_by_name() {
+    for (row, words) in [
+        ("1 WaveKin", "wave files are not read"),
+        ("0.5 CFL", "Courant"),
+        ("RK4 tScheme", "time integrators"),
+        ("bathy.txt SeafloorFile", "bathymetry"),
+        ("0.3 mu_kT", "FrictionCoefficient"),
+    ] {
+        let text = with("0.001 dtM", &format!("0.001 dtM\n{row}"));
+        let e = error(&text);
+        assert_eq!(e.line, Some(line_of(&text, row)), "{row}");
+        assert!(e.message.contains(words), "{row}: {e}");
+    }
+}
+
+#[test]
+fn an_option_given_twice_under_two_names_is_refused() {
+    let text = with("0.001 dtM", "1025 rho\n0.001 dtM\n1000 WtrDnsty");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "WtrDnsty")));
+    assert!(e.message.contains("first as rho"), "{e}");
+}
+
+#[test]
+fn a_supported_option_must_be_a_finite_number() {
+    let e = error(&with("0.001 dtM", "fast dtM"));
+    assert!(e.message.contains("not a finite number"), "{e}");
+    let e = error(&with("0.001 dtM", "-1 dtM"));
+    assert!(e.message.contains("must be positive"), "{e}");
+}

@@ -1,0 +1,209 @@
+//! The tables (LINE TYPES, POINTS, LINES) and the layout of sections:
+//! their rows, columns, numbers and names, and what is refused by line.
+
+use super::*;
+
+#[test]
+fn a_misspelt_line_type_is_refused_naming_the_line() {
+    let text = BASE
+        .replace(
+            "1 chain 1 2 110 10 -",
+            "1 chain 1 2 110 10 -\n2 chain 2 1 110 10 -\n3 chian 1 2 110 10 -",
+        )
+        .replace("2 chain 2 1", "2 chain 1 2");
+    let e = error(&text);
+    let n = line_of(&text, "chian");
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "line {n}: line 3 uses line type \"chian\", which LINE TYPES does not define; known: chain"
+        )
+    );
+}
+
+#[test]
+fn a_rod_is_refused_naming_its_line() {
+    let rods = "--- RODS ---\nID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n\
+                (#) (name) (word) (m) (m) (m) (m) (m) (m) (-) (-)\n\
+                1 Can Fixed 0 0 -10 0 0 -5 4 -\n--- POINTS ---";
+    let text = with("--- POINTS ---", rods);
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "1 Can Fixed")));
+    assert!(e.message.starts_with("rods are not supported"), "{e}");
+    // An empty rod section is fine, with or without its column rows.
+    parse(&with(
+        "--- POINTS ---",
+        "--- ROD TYPES ---\n--- RODS ---\nID RodType\n(#) (-)\n--- POINTS ---",
+    ))
+    .unwrap();
+    // A line attached to a rod end.
+    let text = with("1 chain 1 2 110 10 -", "1 chain R1A 2 110 10 -");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "R1A")));
+    assert!(e.message.contains("rods are not supported"), "{e}");
+}
+
+#[test]
+fn a_body_is_refused_naming_its_line() {
+    let bodies = "--- BODIES ---\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca\n\
+                  (#) (word) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n\
+                  1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n--- POINTS ---";
+    let text = with("--- POINTS ---", bodies);
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "1 coupled")));
+    assert!(e.message.starts_with("bodies are not supported"), "{e}");
+    let text = with("2 Coupled 0 0 -5", "2 Body1 0 0 -5");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "Body1")));
+    assert!(e.message.contains("bodies are not supported"), "{e}");
+}
+
+#[test]
+fn point_attachment_synonyms_read_and_others_are_refused_by_name() {
+    for (word, kind) in [
+        ("Anchor", Attachment::Fixed),
+        ("fix", Attachment::Fixed),
+        ("Vessel", Attachment::Coupled),
+        ("FAIRLEAD", Attachment::Coupled),
+        ("Cpld", Attachment::Coupled),
+        ("Free", Attachment::Free),
+        ("Connect", Attachment::Free),
+    ] {
+        let deck = parse(&with("2 Coupled", &format!("2 {word}"))).unwrap();
+        assert_eq!(deck.points[1].attachment, kind, "{word}");
+    }
+    for (word, words) in [
+        ("Turbine2", "turbines"),
+        ("Vessel2", "turbines"),
+        ("CpldPin", "pinned"),
+        ("Floating", "unknown attachment \"Floating\""),
+    ] {
+        let e = error(&with("2 Coupled", &format!("2 {word}")));
+        assert!(e.message.contains(words), "{word}: {e}");
+    }
+}
+
+#[test]
+fn a_negative_ba_is_kept_as_a_damping_ratio() {
+    let deck = parse(BASE).unwrap();
+    assert_eq!(deck.line_types[0].ba, -0.8);
+    assert_eq!(deck.line_types[0].damping_ratio(), Some(0.8));
+    let deck = parse(&with("-0.8", "2.5e5")).unwrap();
+    assert_eq!(deck.line_types[0].ba, 2.5e5);
+    assert_eq!(deck.line_types[0].damping_ratio(), None);
+}
+
+#[test]
+fn a_non_constant_ea_is_refused_naming_the_form() {
+    for (ea, words) in [
+        ("ea_curve.dat", "nonlinear curve"),
+        ("1e8|2e8", "viscoelastic"),
+        ("SYROPE:owc.dat|0.1|0.2", "Syrope"),
+    ] {
+        let text = with("1e8 -0.8", &format!("{ea} -0.8"));
+        let e = error(&text);
+        assert_eq!(e.line, Some(line_of(&text, ea)), "{ea}");
+        assert!(e.message.starts_with("EA of line type \"chain\""), "{e}");
+        assert!(e.message.contains(words), "{ea}: {e}");
+    }
+}
+
+#[test]
+fn viv_columns_are_accepted_only_with_a_zero_lift_coefficient() {
+    parse(&with("0.4 0.5", "0.4 0.5 0")).unwrap();
+    parse(&with("0.4 0.5", "0.4 0.5 0.0 0.08 0.18")).unwrap();
+    let e = error(&with("0.4 0.5", "0.4 0.5 0.8"));
+    assert!(e.message.contains("vortex-induced"), "{e}");
+    let e = error(&with("0.4 0.5", "0.4 0.5 0 0.08"));
+    assert!(e.message.contains("this one has 12"), "{e}");
+}
+
+#[test]
+fn numbers_must_be_finite_numbers() {
+    let e = error(&with("chain 0.1 20", "chain 0.1 2O"));
+    assert_eq!(
+        e.message,
+        "Mass/m of line type \"chain\" is \"2O\", which is not a number"
+    );
+    let e = error(&with("-100 0 -50", "-100 0 NaN"));
+    assert_eq!(
+        e.message,
+        "Z of point 1 is \"NaN\", which is not a finite number"
+    );
+    let e = error(&with("-100 0 -50", "-100 0 inf"));
+    assert!(e.message.contains("not a finite number"), "{e}");
+}
+
+#[test]
+fn wrong_column_counts_and_bad_lines_are_refused_naming_the_line() {
+    let text = with("1 chain 1 2 110 10 -", "1 chain 1 2 110 10");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "1 chain 1 2 110 10")));
+    assert!(e.message.contains("LINES rows have 7 columns"), "{e}");
+    let e = error(&with(
+        "1 Fixed -100 0 -50 0 0 0 0",
+        "1 Fixed -100 0 -50 0 0",
+    ));
+    assert!(e.message.contains("POINTS rows have 9 columns"), "{e}");
+    let e = error(&with("110 10 -", "110 0 -"));
+    assert!(e.message.contains("NumSegs of line 1"), "{e}");
+    let e = error(&with("110 10 -", "0 10 -"));
+    assert!(e.message.contains("UnstrLen of line 1 is 0"), "{e}");
+    let e = error(&with("1 chain 1 2", "1 chain 1 7"));
+    assert!(
+        e.message.contains("point 7, which POINTS does not define"),
+        "{e}"
+    );
+    let e = error(&with("1 chain 1 2", "1 chain 2 2"));
+    assert!(e.message.contains("both ends of line 1"), "{e}");
+}
+
+#[test]
+fn duplicate_ids_and_type_names_are_refused() {
+    let text = with("2 Coupled", "1 Coupled");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "1 Coupled")));
+    assert!(e.message.contains("point 1 is defined twice"), "{e}");
+    let text = with(
+        "chain 0.1 20 1e8 -0.8 0 1.2 1 0.4 0.5",
+        "chain 0.1 20 1e8 -0.8 0 1.2 1 0.4 0.5\nchain 0.2 20 1e8 -0.8 0 1.2 1 0.4 0.5",
+    );
+    let e = error(&text);
+    assert!(e.message.contains("defined twice (first at line 6)"), "{e}");
+}
+
+#[test]
+fn unknown_and_repeated_section_headers_are_refused_naming_the_line() {
+    let text = with("--- LINES ---", "--- LINE LSIT ---");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "LINE LSIT")));
+    assert!(e.message.starts_with("unknown section header"), "{e}");
+    let text = format!("{BASE}--- OPTIONS ---\n1 dtM\n");
+    let e = error(&text);
+    assert_eq!(e.line, Some(text.lines().count() - 1));
+    assert!(e.message.contains("a second OPTIONS section"), "{e}");
+    let text = with("1 chain 1 2 110 10 -", "1 chain 1 2 110 10 -\n--- FAILURE ---\nID Point Lines FailTime FailTen\n() () (,) (s) (N)\n1 2 1 10 0");
+    let e = error(&text);
+    assert!(
+        e.message.starts_with("line failures are not supported"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_table_without_its_units_row_is_refused() {
+    let text = with("(#) (name) (#) (#) (m) (-) (-)\n", "");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "1 chain 1 2")));
+    assert!(
+        e.message.contains("expected the row of units of LINES"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_deck_without_lines_is_refused() {
+    let e = error(&with("1 chain 1 2 110 10 -\n", ""));
+    assert_eq!(e.line, None);
+    assert!(e.message.contains("no lines"), "{e}");
+}
