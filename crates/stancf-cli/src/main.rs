@@ -109,9 +109,8 @@ fn main() -> ExitCode {
             &scenario,
             run::RunOptions {
                 out,
-                plot: plot.then(|| {
-                    run::Figures(std::sync::Arc::new(stancf_cli::figures::plot_results))
-                }),
+                plot: plot
+                    .then(|| run::Figures(std::sync::Arc::new(stancf_cli::figures::plot_results))),
                 vtk,
                 quiet,
                 allow_large,

@@ -37,7 +37,10 @@ impl std::fmt::Debug for Cancel {
 /// figures drawn. The command line gives its own (PNG and SVG, `stancf
 /// run --plot`); this library draws none.
 #[derive(Clone)]
-pub struct Figures(pub std::sync::Arc<dyn Fn(&Path) -> std::io::Result<Vec<String>> + Send + Sync>);
+pub struct Figures(pub std::sync::Arc<DrawFigures>);
+
+/// What draws the figures of the result set in a folder.
+pub type DrawFigures = dyn Fn(&Path) -> std::io::Result<Vec<String>> + Send + Sync;
 
 impl std::fmt::Debug for Figures {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -223,4 +226,3 @@ fn in_result_folder(
     }
     result.map(|_| ())
 }
-

@@ -34,6 +34,7 @@ mod seed;
 mod simulation;
 mod statics;
 mod step_equations;
+mod stepping;
 
 pub use balance::balanced_points;
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};

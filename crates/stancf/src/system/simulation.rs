@@ -5,23 +5,24 @@
 //! and points together with the bordered Jacobian ([`BorderedLu`]), and
 //! hands each line its converged unknowns. Without free points the lines
 //! are independent and each is solved apart with its own solver
-//! (§11.14, [`super::apart`]).
+//! (§11.14, [`super::apart`]). This file holds the simulation, its
+//! construction and its readings; the step itself is `stepping.rs`.
 
 pub use super::end_forces::EndForce;
-use super::end_forces::{position_row_sum, ForcesAtTime};
+use super::end_forces::ForcesAtTime;
 use super::layout::SystemLayout;
 use super::mass::SystemMass;
-use super::point_terms::{PointNodes, PointTerms};
+use super::point_terms::PointNodes;
 use super::step_equations::{system_scales, StepOfSystem};
-use super::{End, System};
-use crate::assembly::{Kind, Scheme};
+use super::System;
+use crate::assembly::Scheme;
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
 use crate::integrator::{Simulation, StepReport, StepSettings, TimeScheme};
 use crate::model::{coordinate, State, SLOT_R};
 use crate::quadrature::GaussRule;
-use crate::solver::{solve, NewtonReport, NewtonWorkspace, NonlinearSystem};
+use crate::solver::{NewtonWorkspace, NonlinearSystem};
 
 /// The step's equations as Newton sees them, borrowing the fields of a
 /// [`SystemSimulation`] they need (and no others: Newton takes `x` and
@@ -45,13 +46,15 @@ macro_rules! step_problem {
     };
 }
 
+pub(super) use step_problem;
+
 /// Position, velocity and predictor history of a point.
 #[derive(Clone, Debug, Default)]
 pub(super) struct PointMotion {
     pub(super) e: [f64; 3],
     pub(super) v: [f64; 3],
-    previous: ([f64; 3], [f64; 3]),
-    acceleration: [f64; 3],
+    pub(super) previous: ([f64; 3], [f64; 3]),
+    pub(super) acceleration: [f64; 3],
 }
 
 /// A running simulation of a system. A clone is an independent copy of
@@ -59,35 +62,35 @@ pub(super) struct PointMotion {
 /// (a coupling code's save and restore, docs/method.md §13.4).
 #[derive(Clone)]
 pub struct SystemSimulation {
-    system: System,
-    lines: Vec<Simulation>,
-    layout: SystemLayout,
-    settings: StepSettings,
-    slab: TimeSlab,
-    points: Vec<PointMotion>,
+    pub(super) system: System,
+    pub(super) lines: Vec<Simulation>,
+    pub(super) layout: SystemLayout,
+    pub(super) settings: StepSettings,
+    pub(super) slab: TimeSlab,
+    pub(super) points: Vec<PointMotion>,
     /// Global indices of free point p's unknowns, `[3 slot + c]`.
-    point_index: Vec<Vec<usize>>,
-    point_nodes: Vec<PointNodes>,
-    x: Vec<f64>,
-    x_local: Vec<Vec<f64>>,
-    residual_local: Vec<Vec<f64>>,
-    workspace: NewtonWorkspace<BorderedLu>,
-    unknown_scale: Vec<f64>,
-    equation_scale: Vec<f64>,
-    end_forces: Vec<[EndForce; 2]>,
+    pub(super) point_index: Vec<Vec<usize>>,
+    pub(super) point_nodes: Vec<PointNodes>,
+    pub(super) x: Vec<f64>,
+    pub(super) x_local: Vec<Vec<f64>>,
+    pub(super) residual_local: Vec<Vec<f64>>,
+    pub(super) workspace: NewtonWorkspace<BorderedLu>,
+    pub(super) unknown_scale: Vec<f64>,
+    pub(super) equation_scale: Vec<f64>,
+    pub(super) end_forces: Vec<[EndForce; 2]>,
     /// The end forces at the end of the last step (M23a).
-    forces_at_time: ForcesAtTime,
+    pub(super) forces_at_time: ForcesAtTime,
     /// The Galerkin step's system mass matrix (free points only).
-    mass: Option<SystemMass>,
+    pub(super) mass: Option<SystemMass>,
     /// The Galerkin step's end momenta of the free points.
-    point_momentum: Vec<[f64; 3]>,
+    pub(super) point_momentum: Vec<[f64; 3]>,
     /// Work done on the free points by the water's drag and inertia.
-    point_water_work: f64,
+    pub(super) point_water_work: f64,
     /// How many times a step that Newton fails is halved (see
     /// [`SystemSimulation::set_step_halvings`]).
     pub(super) step_halvings: u32,
-    steps: usize,
-    t: f64,
+    pub(super) steps: usize,
+    pub(super) t: f64,
 }
 
 impl SystemSimulation {
@@ -351,207 +354,6 @@ impl SystemSimulation {
     /// step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
         self.step_halving(self.step_halvings)
-    }
-
-    /// One step of the step length, not halved.
-    pub(super) fn step_once(&mut self) -> Result<StepReport, SolverError> {
-        let dt = self.settings.time_step;
-        for line in &mut self.lines {
-            line.begin_step();
-        }
-        let report = if self.system.has_free_points() {
-            self.gather_prediction();
-            let report = self.solve_step(dt)?;
-            for (i, line) in self.lines.iter_mut().enumerate() {
-                let map = &self.layout.maps[i];
-                let xl = line.unknowns();
-                map.gather(&self.x, xl);
-            }
-            report
-        } else {
-            super::apart::solve_lines_apart(&mut self.lines, dt)?
-        };
-        self.finish_lines(report);
-        self.add_point_water_work();
-        self.collect_end_forces(dt);
-        self.forces_at_time.update(&self.end_forces, dt);
-        self.advance_points(dt);
-        self.steps += 1;
-        self.t += dt;
-        Ok(StepReport {
-            step: self.steps,
-            t: self.t,
-            newton: report,
-        })
-    }
-
-    /// Adds the step's work of the water on the free points (W34).
-    fn add_point_water_work(&mut self) {
-        let layout = &self.layout.lines[0];
-        for (p, idx) in self.point_index.iter().enumerate() {
-            let point = &self.system.points()[p];
-            if idx.is_empty() || point.water.is_none() {
-                continue;
-            }
-            let m = &self.points[p];
-            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
-            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
-            self.point_water_work += terms.water_work(&self.point_nodes[p]);
-        }
-    }
-
-    /// Completes every line's step. The Galerkin step of a system with
-    /// free points takes the end rates from the system's mass matrix
-    /// (docs/method.md §11.10), the others from each line's own.
-    fn finish_lines(&mut self, report: NewtonReport) {
-        let Some(mass) = &mut self.mass else {
-            for line in &mut self.lines {
-                line.finish_step(report);
-            }
-            return;
-        };
-        for line in &mut self.lines {
-            line.expand_step();
-        }
-        let layout = &self.layout.lines[0];
-        for (p, idx) in self.point_index.iter().enumerate() {
-            if idx.is_empty() {
-                continue;
-            }
-            let m = &self.points[p];
-            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
-            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
-            self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
-        }
-        mass.set_end_rates(&self.system, &mut self.lines, &self.point_momentum);
-        for line in &mut self.lines {
-            line.close_step(report);
-        }
-    }
-
-    /// The lines' predicted unknowns and the free points' (Taylor
-    /// expansion with the last step's acceleration, docs/method.md §4.8).
-    fn gather_prediction(&mut self) {
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let map = &self.layout.maps[i];
-            let xl = line.unknowns();
-            map.scatter(xl, &mut self.x);
-        }
-        let layout = &self.layout.lines[0];
-        let h = self.slab.dt;
-        for (p, idx) in self.point_index.iter().enumerate() {
-            if idx.is_empty() {
-                continue;
-            }
-            let m = &self.points[p];
-            for (s, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
-                let tau = h * i as f64;
-                for c in 0..3 {
-                    let (e, v, a) = (m.e[c], m.v[c], m.acceleration[c]);
-                    self.x[idx[3 * s + c]] = match kind {
-                        Kind::Position => e + tau * v + 0.5 * tau * tau * a,
-                        Kind::Velocity => v + tau * a,
-                    };
-                }
-            }
-        }
-    }
-
-    fn solve_step(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
-        let mut problem = step_problem!(self);
-        solve(
-            &mut problem,
-            &mut self.x,
-            &self.settings.newton,
-            &mut self.workspace,
-            None,
-        )
-        .map_err(|f| SolverError {
-            kind: f.kind,
-            time: self.t,
-            step: self.steps + 1,
-            residual: f.report.residual,
-            iterations: f.report.iterations,
-            detail: format!("time step {dt:e} s"),
-        })
-    }
-
-    /// The forces of the line ends on their points over the step: at a
-    /// free point the line's share of the point's position rows, summed
-    /// over the step's position rows and divided by dt (the negative of
-    /// the impulse the point gives the line, docs/method.md §11.4); at a
-    /// fixed or coupled point minus the line's reaction (§6.5).
-    fn collect_end_forces(&mut self, dt: f64) {
-        for (i, line) in self.lines.iter_mut().enumerate() {
-            let ends = self.system.lines()[i].ends;
-            let last = line.model().nodes() - 1;
-            let free_end = ends
-                .iter()
-                .any(|e| matches!(e, End::Point(p) if self.system.points()[*p].is_free()));
-            if free_end {
-                // The line's rows at the converged unknowns.
-                let map = &self.layout.maps[i];
-                let xl = &mut self.x_local[i];
-                map.gather(&self.x, xl);
-                line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
-            }
-            let layout = &self.layout.lines[i];
-            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
-                let End::Point(p) = *end else {
-                    self.end_forces[i][k] = EndForce::default();
-                    continue;
-                };
-                let force = if self.system.points()[p].is_free() {
-                    let rows = position_row_sum(layout, node, &self.residual_local[i]);
-                    let dpn = line.model().dofs_per_node();
-                    std::array::from_fn(|c| {
-                        let g = coordinate(dpn, node, SLOT_R, c);
-                        (rows[c] + line.galerkin_end_term(g)) / dt
-                    })
-                } else {
-                    let r = line
-                        .reactions()
-                        .iter()
-                        .find(|(n, _)| *n == node)
-                        .map_or([0.0; 3], |(_, f)| *f);
-                    r.map(|f| -f)
-                };
-                self.end_forces[i][k] = EndForce { force };
-            }
-        }
-    }
-
-    /// Moves the points to the end of the step: free points to their
-    /// converged unknowns, fixed and coupled ones along their motion.
-    fn advance_points(&mut self, dt: f64) {
-        let layout = &self.layout.lines[0];
-        let last = layout.layers();
-        let t_end = self.t + dt;
-        for (p, point) in self.system.points().iter().enumerate() {
-            let m = &mut self.points[p];
-            m.previous = (m.e, m.v);
-            let galerkin_rate = self.mass.as_ref().and_then(|mass| mass.point_rate(p));
-            let (e, v) = if self.point_index[p].is_empty() {
-                point.state_at(t_end)
-            } else if let Some(v) = galerkin_rate {
-                let idx = &self.point_index[p];
-                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
-                (std::array::from_fn(|c| self.x[idx[3 * se + c]]), v)
-            } else {
-                let idx = &self.point_index[p];
-                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
-                let sv = layout.unknown_slot(last, Kind::Velocity).expect("v_L");
-                (
-                    std::array::from_fn(|c| self.x[idx[3 * se + c]]),
-                    std::array::from_fn(|c| self.x[idx[3 * sv + c]]),
-                )
-            };
-            for c in 0..3 {
-                m.acceleration[c] = (v[c] - m.v[c]) / dt;
-            }
-            m.e = e;
-            m.v = v;
-        }
     }
 }
 

@@ -1,0 +1,220 @@
+//! One step of a system (docs/method.md §11.3): the lines begin their
+//! step, the prediction of every unknown is gathered, the slab equations
+//! of all lines and free points are solved together (or each line apart,
+//! §11.14), and the lines, the end forces (§6.5, (M23)) and the points
+//! take the converged step.
+
+use super::end_forces::position_row_sum;
+use super::point_terms::PointTerms;
+use super::simulation::{step_problem, SystemSimulation};
+use super::step_equations::StepOfSystem;
+use super::{End, EndForce};
+use crate::assembly::Kind;
+use crate::bordered::BorderedMatrix;
+use crate::error::SolverError;
+use crate::integrator::StepReport;
+use crate::model::{coordinate, SLOT_R};
+use crate::solver::{solve, NewtonReport};
+
+impl SystemSimulation {
+    /// One step of the step length, not halved.
+    pub(super) fn step_once(&mut self) -> Result<StepReport, SolverError> {
+        let dt = self.settings.time_step;
+        for line in &mut self.lines {
+            line.begin_step();
+        }
+        let report = if self.system.has_free_points() {
+            self.gather_prediction();
+            let report = self.solve_step(dt)?;
+            for (i, line) in self.lines.iter_mut().enumerate() {
+                let map = &self.layout.maps[i];
+                let xl = line.unknowns();
+                map.gather(&self.x, xl);
+            }
+            report
+        } else {
+            super::apart::solve_lines_apart(&mut self.lines, dt)?
+        };
+        self.finish_lines(report);
+        self.add_point_water_work();
+        self.collect_end_forces(dt);
+        self.forces_at_time.update(&self.end_forces, dt);
+        self.advance_points(dt);
+        self.steps += 1;
+        self.t += dt;
+        Ok(StepReport {
+            step: self.steps,
+            t: self.t,
+            newton: report,
+        })
+    }
+
+    /// Adds the step's work of the water on the free points (W34).
+    pub(super) fn add_point_water_work(&mut self) {
+        let layout = &self.layout.lines[0];
+        for (p, idx) in self.point_index.iter().enumerate() {
+            let point = &self.system.points()[p];
+            if idx.is_empty() || point.water.is_none() {
+                continue;
+            }
+            let m = &self.points[p];
+            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
+            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
+            self.point_water_work += terms.water_work(&self.point_nodes[p]);
+        }
+    }
+
+    /// Completes every line's step. The Galerkin step of a system with
+    /// free points takes the end rates from the system's mass matrix
+    /// (docs/method.md §11.10), the others from each line's own.
+    pub(super) fn finish_lines(&mut self, report: NewtonReport) {
+        let Some(mass) = &mut self.mass else {
+            for line in &mut self.lines {
+                line.finish_step(report);
+            }
+            return;
+        };
+        for line in &mut self.lines {
+            line.expand_step();
+        }
+        let layout = &self.layout.lines[0];
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let m = &self.points[p];
+            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
+            terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
+            self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
+        }
+        mass.set_end_rates(&self.system, &mut self.lines, &self.point_momentum);
+        for line in &mut self.lines {
+            line.close_step(report);
+        }
+    }
+
+    /// The lines' predicted unknowns and the free points' (Taylor
+    /// expansion with the last step's acceleration, docs/method.md §4.8).
+    pub(super) fn gather_prediction(&mut self) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let map = &self.layout.maps[i];
+            let xl = line.unknowns();
+            map.scatter(xl, &mut self.x);
+        }
+        let layout = &self.layout.lines[0];
+        let h = self.slab.dt;
+        for (p, idx) in self.point_index.iter().enumerate() {
+            if idx.is_empty() {
+                continue;
+            }
+            let m = &self.points[p];
+            for (s, &(i, kind)) in layout.unknown_slots.iter().enumerate() {
+                let tau = h * i as f64;
+                for c in 0..3 {
+                    let (e, v, a) = (m.e[c], m.v[c], m.acceleration[c]);
+                    self.x[idx[3 * s + c]] = match kind {
+                        Kind::Position => e + tau * v + 0.5 * tau * tau * a,
+                        Kind::Velocity => v + tau * a,
+                    };
+                }
+            }
+        }
+    }
+
+    pub(super) fn solve_step(&mut self, dt: f64) -> Result<NewtonReport, SolverError> {
+        let mut problem = step_problem!(self);
+        solve(
+            &mut problem,
+            &mut self.x,
+            &self.settings.newton,
+            &mut self.workspace,
+            None,
+        )
+        .map_err(|f| SolverError {
+            kind: f.kind,
+            time: self.t,
+            step: self.steps + 1,
+            residual: f.report.residual,
+            iterations: f.report.iterations,
+            detail: format!("time step {dt:e} s"),
+        })
+    }
+
+    /// The forces of the line ends on their points over the step: at a
+    /// free point the line's share of the point's position rows, summed
+    /// over the step's position rows and divided by dt (the negative of
+    /// the impulse the point gives the line, docs/method.md §11.4); at a
+    /// fixed or coupled point minus the line's reaction (§6.5).
+    pub(super) fn collect_end_forces(&mut self, dt: f64) {
+        for (i, line) in self.lines.iter_mut().enumerate() {
+            let ends = self.system.lines()[i].ends;
+            let last = line.model().nodes() - 1;
+            let free_end = ends
+                .iter()
+                .any(|e| matches!(e, End::Point(p) if self.system.points()[*p].is_free()));
+            if free_end {
+                // The line's rows at the converged unknowns.
+                let map = &self.layout.maps[i];
+                let xl = &mut self.x_local[i];
+                map.gather(&self.x, xl);
+                line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
+            }
+            let layout = &self.layout.lines[i];
+            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
+                let End::Point(p) = *end else {
+                    self.end_forces[i][k] = EndForce::default();
+                    continue;
+                };
+                let force = if self.system.points()[p].is_free() {
+                    let rows = position_row_sum(layout, node, &self.residual_local[i]);
+                    let dpn = line.model().dofs_per_node();
+                    std::array::from_fn(|c| {
+                        let g = coordinate(dpn, node, SLOT_R, c);
+                        (rows[c] + line.galerkin_end_term(g)) / dt
+                    })
+                } else {
+                    let r = line
+                        .reactions()
+                        .iter()
+                        .find(|(n, _)| *n == node)
+                        .map_or([0.0; 3], |(_, f)| *f);
+                    r.map(|f| -f)
+                };
+                self.end_forces[i][k] = EndForce { force };
+            }
+        }
+    }
+
+    /// Moves the points to the end of the step: free points to their
+    /// converged unknowns, fixed and coupled ones along their motion.
+    pub(super) fn advance_points(&mut self, dt: f64) {
+        let layout = &self.layout.lines[0];
+        let last = layout.layers();
+        let t_end = self.t + dt;
+        for (p, point) in self.system.points().iter().enumerate() {
+            let m = &mut self.points[p];
+            m.previous = (m.e, m.v);
+            let galerkin_rate = self.mass.as_ref().and_then(|mass| mass.point_rate(p));
+            let (e, v) = if self.point_index[p].is_empty() {
+                point.state_at(t_end)
+            } else if let Some(v) = galerkin_rate {
+                let idx = &self.point_index[p];
+                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
+                (std::array::from_fn(|c| self.x[idx[3 * se + c]]), v)
+            } else {
+                let idx = &self.point_index[p];
+                let se = layout.unknown_slot(last, Kind::Position).expect("e_L");
+                let sv = layout.unknown_slot(last, Kind::Velocity).expect("v_L");
+                (
+                    std::array::from_fn(|c| self.x[idx[3 * se + c]]),
+                    std::array::from_fn(|c| self.x[idx[3 * sv + c]]),
+                )
+            };
+            for c in 0..3 {
+                m.acceleration[c] = (v[c] - m.v[c]) / dt;
+            }
+            m.e = e;
+            m.v = v;
+        }
+    }
+}
