@@ -1,5 +1,5 @@
 //! (c) Random MoorDyn v2 decks from the grammar of the format
-//! (docs/interface.md, "MoorDyn v2 decks"; crates/stancf-cli/src/moordyn).
+//! (docs/interface.md, "MoorDyn v2 decks"; crates/stancf-scenario/src/moordyn).
 //!
 //! A deck is drawn whole and sane first: a mooring of one of a few shapes
 //! (a single line from an anchor to a fairlead, two lines through a free
