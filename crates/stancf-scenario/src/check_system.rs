@@ -179,7 +179,8 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
 /// The elements and steps of a system against the bounds `run` applies
 /// ([`crate::work_bounds`]).
 fn work_words(sc: &SystemScenario) -> String {
-    use crate::work_bounds::{system_work, MAX_STEPS, MAX_SYSTEM_ELEMENTS};
+    use crate::scenario::MAX_STEPS;
+    use crate::work_bounds::{system_work, MAX_SYSTEM_ELEMENTS};
     let work = system_work(sc);
     let steps = match sc.analysis.kind {
         AnalysisKind::Dynamic => format!(

@@ -4,14 +4,10 @@
 //! beyond them unless given `--allow-large`, and `check` warns.
 
 use crate::moordyn::SupportedOption;
-use crate::scenario::{AnalysisKind, Scenario, SystemScenario};
+use crate::scenario::{AnalysisKind, Scenario, SystemScenario, MAX_STEPS};
 use crate::Failure;
 use stancf::error::Sig;
 use std::path::Path;
-
-/// A run is refused above this many steps unless `--allow-large` is given
-/// (`check` warns).
-pub const MAX_STEPS: usize = 100_000_000;
 
 /// A run is refused when its result files would exceed this many bytes
 /// (estimated from the steps, `output.every` and the mesh) unless
@@ -299,18 +295,19 @@ pub(crate) fn size_problem(sc: &Scenario, size: &Size) -> Option<(String, String
 }
 
 /// `run`'s bound on work: a run above [`MAX_STEPS`] steps or
-/// [`MAX_RESULT_BYTES`] of result files is an input error naming the keys
-/// and `--allow-large`, unless `opts.allow_large`. Called before anything
-/// is written.
+/// [`MAX_RESULT_BYTES`] of result files (with ParaView's files if `vtk`)
+/// is an input error naming the keys and `--allow-large`, unless
+/// `allow_large`. Called before anything is written.
 pub(crate) fn admit(
     path: &Path,
     sc: &Scenario,
-    opts: &crate::run::RunOptions,
+    vtk: bool,
+    allow_large: bool,
 ) -> Result<(), Failure> {
-    if opts.allow_large {
+    if allow_large {
         return Ok(());
     }
-    let size = size(sc, opts.vtk);
+    let size = size(sc, vtk);
     match size_problem(sc, &size) {
         None => Ok(()),
         Some((keys, what)) => Err(Failure::Input(format!(
@@ -324,7 +321,6 @@ pub(crate) fn admit(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::run::RunOptions;
     use crate::scenario;
 
     fn scenario(body: &str) -> Scenario {
@@ -350,7 +346,7 @@ mod tests {
     #[test]
     fn a_run_above_the_bounds_is_refused_unless_allowed() {
         let sc = scenario("[analysis]\ntime_step = 1e-6\nduration = 200.0\n");
-        let refused = admit(Path::new("t.toml"), &sc, &RunOptions::default());
+        let refused = admit(Path::new("t.toml"), &sc, false, false);
         match refused {
             Err(Failure::Input(m)) => {
                 assert!(
@@ -364,11 +360,7 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
-        let allowed = RunOptions {
-            allow_large: true,
-            ..RunOptions::default()
-        };
-        assert!(admit(Path::new("t.toml"), &sc, &allowed).is_ok());
+        assert!(admit(Path::new("t.toml"), &sc, false, true).is_ok());
     }
 
     #[test]

@@ -45,10 +45,10 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
             (key("ea", "EA"), t.ea),
             (key("ei", "EI"), t.ei),
             (key("ba", "BA/-zeta"), t.ba.abs()),
-            (key("cd", "Cd"), t.cd),
-            (key("ca", "Ca"), t.ca),
-            (key("cdax", "CdAx"), t.cdax),
-            (key("caax", "CaAx"), t.caax),
+            (key("cd", "Cd"), t.cd_normal),
+            (key("ca", "Ca"), t.ca_normal),
+            (key("cdax", "CdAx"), t.cd_axial),
+            (key("caax", "CaAx"), t.ca_axial),
         ]);
     }
     for (j, l) in sc.lines.iter().enumerate() {

@@ -86,13 +86,13 @@ pub struct LineType {
     /// `EI`: bending stiffness (N·m²), a constant.
     pub ei: f64,
     /// `Cd`: transverse drag coefficient (on d·l).
-    pub cd: f64,
+    pub cd_normal: f64,
     /// `Ca`: transverse added-mass coefficient.
-    pub ca: f64,
+    pub ca_normal: f64,
     /// `CdAx`: tangential drag coefficient (on π·d·l).
-    pub cd_ax: f64,
+    pub cd_axial: f64,
     /// `CaAx`: tangential added-mass coefficient.
-    pub ca_ax: f64,
+    pub ca_axial: f64,
 }
 
 impl LineType {

@@ -143,10 +143,10 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         ea: non_negative(row, 3, &what("EA"), true)?,
         ba: number(row, 4, &what("BA/-zeta"))?,
         ei: non_negative(row, 5, &what("EI"), false)?,
-        cd: non_negative(row, 6, &what("Cd"), false)?,
-        ca: non_negative(row, 7, &what("Ca"), false)?,
-        cd_ax: non_negative(row, 8, &what("CdAx"), false)?,
-        ca_ax: non_negative(row, 9, &what("CaAx"), false)?,
+        cd_normal: non_negative(row, 6, &what("Cd"), false)?,
+        ca_normal: non_negative(row, 7, &what("Ca"), false)?,
+        cd_axial: non_negative(row, 8, &what("CdAx"), false)?,
+        ca_axial: non_negative(row, 9, &what("CaAx"), false)?,
     })
 }
 

@@ -162,7 +162,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
         });
     }
     let (sc, model, state) = load_text(text, path)?;
-    crate::work_bounds::admit(path, &sc, &opts)?;
+    crate::work_bounds::admit(path, &sc, opts.vtk, opts.allow_large)?;
     // Everything that can refuse the input is decided before anything is
     // written.
     let derived = match sc.analysis.kind {

@@ -12,6 +12,19 @@ use stancf::{AxialStrain, ConstraintMethod, Curvature, Measures, SolverMethod, T
 /// cannot count them (t + dt == t).
 pub const MAX_COUNTABLE_STEPS: f64 = 9_007_199_254_740_992.0;
 
+/// A run is refused above this many steps unless `--allow-large` is given
+/// (`check` warns; the bounds on work are `work_bounds.rs`).
+pub const MAX_STEPS: usize = 100_000_000;
+
+/// Where a dynamic run of a system starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InitialShape {
+    /// Every line straight between its end points, at rest.
+    Reference,
+    /// The static equilibrium (solved first).
+    Static,
+}
+
 /// Dynamic (P2 steps in time) or static (load steps).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AnalysisKind {
@@ -178,7 +191,7 @@ fn time(
                          (a run is refused above {:e} steps anyway, see `stancf check`)",
                         Sig(steps),
                         MAX_COUNTABLE_STEPS,
-                        crate::work_bounds::MAX_STEPS as f64
+                        MAX_STEPS as f64
                     ),
                 ));
             }
@@ -339,4 +352,45 @@ impl Analysis {
             ..stancf::StaticSettings::default()
         }
     }
+}
+
+/// `[analysis]` of a system: the single cable's keys and `initial`
+/// ("reference" or "static"; `default` when missing). Lines are elastic
+/// in the engineering strain (T = EA (|r'| - 1)), as MoorDyn's and the
+/// elastic catenary's are, unless `axial_strain` says otherwise.
+pub(super) fn analysis_part(
+    ctx: &Ctx,
+    raw: Option<RawAnalysis>,
+    default: InitialShape,
+) -> Result<(Analysis, Measures, InitialShape, Vec<String>), ScenarioError> {
+    let others = Others {
+        initial_velocity: false,
+        constraints: true,
+    };
+    let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
+    let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
+    let halvings_given = raw.as_ref().is_some_and(|a| a.step_halvings.is_some());
+    let (mut analysis, mut measures, notes) = analysis(ctx, raw, others)?;
+    if !halvings_given {
+        // A system's failed step is halved unless the scenario says
+        // otherwise (docs/method.md §11.13).
+        analysis.step_halvings = stancf::system::DEFAULT_STEP_HALVINGS;
+    }
+    if !axial_given {
+        measures.axial_strain = stancf::AxialStrain::Engineering;
+    }
+    let default_word = match default {
+        InitialShape::Static => "static",
+        InitialShape::Reference => "reference",
+    };
+    let initial = match ctx.choice(
+        "analysis.initial",
+        initial_key.as_deref(),
+        default_word,
+        &["reference", "static"],
+    )? {
+        "static" => InitialShape::Static,
+        _ => InitialShape::Reference,
+    };
+    Ok((analysis, measures, initial, notes))
 }

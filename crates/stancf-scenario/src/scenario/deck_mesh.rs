@@ -3,7 +3,7 @@
 
 use super::context::Ctx;
 use super::raw::RawMesh;
-use super::system::{OutputChannel, SystemScenario};
+use super::system_parts::{OutputChannel, SystemScenario};
 use super::ScenarioError;
 
 /// `[[mesh]]` of a MoorDyn deck: `lines` (deck line ids, required, each

@@ -26,17 +26,19 @@ mod raw;
 mod sea_limits;
 mod system;
 mod system_model;
+mod system_parts;
 mod water;
 
-pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS};
+pub use analysis::InitialShape;
+pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS, MAX_STEPS};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
-pub use system::{
-    InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
-};
 pub use system_model::EI_FACTOR;
+pub use system_parts::{
+    LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
+};
 pub use water::{Current, SeabedOptions, Water};
 
 use context::Ctx;

@@ -13,12 +13,12 @@
 //! docs/method.md §12.3-12.5) on the seabed at z = -WtrDpth (kBot, cBot,
 //! FrictionCoefficient; §12.2); see [`super::moordyn_water`].
 
+use super::analysis::{analysis_part, InitialShape};
 use super::context::Ctx;
 use super::moordyn_water::{deck_water, deck_water_keys};
 use super::raw::RawAnalysis;
-use super::system::{
-    analysis_part, InitialShape, LineType, OutputChannel, PointType, SystemLine, SystemPoint,
-    SystemScenario,
+use super::system_parts::{
+    LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
 use super::water::WaterKeys;
 use super::ScenarioError;
@@ -52,116 +52,9 @@ pub(super) fn deck_scenario(
     title: String,
     added: Option<(&Ctx, WaterKeys)>,
 ) -> Result<SystemScenario, ScenarioError> {
-    let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
-    let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
-    // g is the water's too (its pressure, its waves): out of range it is
-    // refused here by its line, before the water is built with it.
-    if !(g.is_finite()
-        && (1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE).contains(&g))
-    {
-        let (name, line) = deck
-            .options
-            .iter()
-            .find(|o| o.kind == crate::moordyn::OptionKind::Supported(SupportedOption::Gravity))
-            .map_or(("g".to_string(), 0), |o| (o.name.clone(), o.line));
-        return Err(at(
-            line,
-            format!(
-                "{name}: {g:e} m/s^2 is out of the range the solver computes in (1e-150 to \
-                 1e150 in SI units); give the acceleration of gravity in m/s^2"
-            ),
-        ));
-    }
+    let g = deck_gravity(deck, file)?;
     let water = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
-    let line_types = deck
-        .line_types
-        .iter()
-        .map(|t| LineType {
-            name: t.name.clone(),
-            diameter: t.diameter,
-            mass_per_length: t.mass_per_length,
-            ea: t.ea,
-            ei: t.ei,
-            ba: t.ba,
-            cd: t.cd,
-            ca: t.ca,
-            cdax: t.cd_ax,
-            caax: t.ca_ax,
-            // MoorDyn's segments carry no compression (Line.cpp: T = 0
-            // when l_str <= l); the static solve keeps it (docs/method.md
-            // §2.2, (M4a)).
-            compression: false,
-        })
-        .collect();
-    let points = deck
-        .points
-        .iter()
-        .map(|p| SystemPoint {
-            id: p.id as i64,
-            kind: match p.attachment {
-                Attachment::Fixed => PointType::Fixed,
-                Attachment::Free => PointType::Free,
-                Attachment::Coupled => PointType::Coupled,
-            },
-            position: p.position,
-            mass: if p.attachment == Attachment::Free {
-                p.mass
-            } else {
-                0.0
-            },
-            force: [0.0; 3],
-            volume: if p.attachment == Attachment::Free {
-                p.volume
-            } else {
-                0.0
-            },
-            drag_area: if p.attachment == Attachment::Free {
-                p.cda
-            } else {
-                0.0
-            },
-            ca: if p.attachment == Attachment::Free {
-                p.ca
-            } else {
-                0.0
-            },
-            motion: CoupledMotion::NONE,
-            motion_file: None,
-        })
-        .collect();
-    let lines = deck
-        .lines
-        .iter()
-        .map(|l| SystemLine {
-            id: l.id as i64,
-            line_type: l.type_index,
-            length: l.unstretched_length,
-            elements: l.segments,
-            element_type: ElementType::Sac2,
-            ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
-            grading: stancf::Grading::Uniform,
-            // MoorDyn's lines are pinned at their points.
-            clamps: [None; 2],
-        })
-        .collect();
-    let mut channels = Vec::with_capacity(deck.outputs.len());
-    for o in &deck.outputs {
-        if !computable(&o.channel) {
-            return Err(at(
-                o.line,
-                format!(
-                    "output channel {}: stancf does not compute this value in this version \
-                     (it writes line end tensions, point positions and velocities, and line \
-                     node positions and velocities)",
-                    o.name
-                ),
-            ));
-        }
-        channels.push(OutputChannel {
-            name: o.name.clone(),
-            channel: o.channel,
-        });
-    }
+    let channels = deck_channels(deck, file)?;
     let ctx = Ctx { file };
     let raw = RawAnalysis {
         kind: Some("static".into()),
@@ -174,9 +67,9 @@ pub(super) fn deck_scenario(
     analysis.time_step = deck.option(SupportedOption::TimeStep).unwrap_or(0.0);
     Ok(SystemScenario {
         title,
-        line_types,
-        points,
-        lines,
+        line_types: deck.line_types.iter().map(deck_line_type).collect(),
+        points: deck.points.iter().map(deck_point).collect(),
+        lines: deck.lines.iter().map(deck_line).collect(),
         gravity: [0.0, 0.0, -g],
         analysis,
         measures,
@@ -189,6 +82,106 @@ pub(super) fn deck_scenario(
         channels,
         names: super::names::Names::of_deck(deck, None),
     })
+}
+
+/// The deck's acceleration of gravity (m/s^2; MoorDyn's 9.80665 unless
+/// `g` is given). It is the water's too (its pressure, its waves): out of
+/// range it is refused here by its line, before the water is built with
+/// it.
+fn deck_gravity(deck: &Deck, file: &str) -> Result<f64, ScenarioError> {
+    let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
+    let range = 1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE;
+    if g.is_finite() && range.contains(&g) {
+        return Ok(g);
+    }
+    let (name, line) = deck
+        .options
+        .iter()
+        .find(|o| o.kind == crate::moordyn::OptionKind::Supported(SupportedOption::Gravity))
+        .map_or(("g".to_string(), 0), |o| (o.name.clone(), o.line));
+    Err(ScenarioError(format!(
+        "{file}: line {line}: {name}: {g:e} m/s^2 is out of the range the solver computes in \
+         (1e-150 to 1e150 in SI units); give the acceleration of gravity in m/s^2"
+    )))
+}
+
+/// A LINE TYPES row as a line type.
+fn deck_line_type(t: &crate::moordyn::LineType) -> LineType {
+    LineType {
+        name: t.name.clone(),
+        diameter: t.diameter,
+        mass_per_length: t.mass_per_length,
+        ea: t.ea,
+        ei: t.ei,
+        ba: t.ba,
+        cd_normal: t.cd_normal,
+        ca_normal: t.ca_normal,
+        cd_axial: t.cd_axial,
+        ca_axial: t.ca_axial,
+        // MoorDyn's segments carry no compression (Line.cpp: T = 0
+        // when l_str <= l); the static solve keeps it (docs/method.md
+        // §2.2, (M4a)).
+        compression: false,
+    }
+}
+
+/// A POINTS row as a point: mass, volume, CdA and Ca act on free points
+/// only (a fixed or coupled point's motion is given).
+fn deck_point(p: &crate::moordyn::DeckPoint) -> SystemPoint {
+    let free = p.attachment == Attachment::Free;
+    let if_free = |v: f64| if free { v } else { 0.0 };
+    SystemPoint {
+        id: p.id as i64,
+        kind: match p.attachment {
+            Attachment::Fixed => PointType::Fixed,
+            Attachment::Free => PointType::Free,
+            Attachment::Coupled => PointType::Coupled,
+        },
+        position: p.position,
+        mass: if_free(p.mass),
+        force: [0.0; 3],
+        volume: if_free(p.volume),
+        drag_area: if_free(p.cda),
+        ca: if_free(p.ca),
+        motion: CoupledMotion::NONE,
+        motion_file: None,
+    }
+}
+
+/// A LINES row as a line of SAC-2 elements, one per segment, pinned at
+/// its points (MoorDyn's lines are).
+fn deck_line(l: &crate::moordyn::DeckLine) -> SystemLine {
+    SystemLine {
+        id: l.id as i64,
+        line_type: l.type_index,
+        length: l.unstretched_length,
+        elements: l.segments,
+        element_type: ElementType::Sac2,
+        ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
+        grading: stancf::Grading::Uniform,
+        clamps: [None; 2],
+    }
+}
+
+/// The deck's OUTPUTS as channels; one stancf does not compute is
+/// refused by its line.
+fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, ScenarioError> {
+    let mut channels = Vec::with_capacity(deck.outputs.len());
+    for o in &deck.outputs {
+        if !computable(&o.channel) {
+            return Err(ScenarioError(format!(
+                "{file}: line {}: output channel {}: stancf does not compute this value in \
+                 this version (it writes line end tensions, point positions and velocities, \
+                 and line node positions and velocities)",
+                o.line, o.name
+            )));
+        }
+        channels.push(OutputChannel {
+            name: o.name.clone(),
+            channel: o.channel,
+        });
+    }
+    Ok(channels)
 }
 
 /// Whether stancf has the value of a channel: line end tensions, point

@@ -10,7 +10,7 @@
 use super::analysis::Analysis;
 use super::context::Ctx;
 use super::raw::RawMotion;
-use super::system::{PointType, SystemPoint};
+use super::system_parts::{PointType, SystemPoint};
 use super::ScenarioError;
 use stancf::constraints::{MotionTable, Oscillation};
 use stancf::motion::CoupledMotion;

@@ -3,142 +3,16 @@
 //! `[[motions]]`, validated into a [`SystemScenario`] that builds the
 //! library's [`stancf::system::System`].
 
-use super::analysis::{self, Others};
+use super::analysis::{analysis_part, InitialShape};
 use super::context::Ctx;
 use super::motions::motions;
-use super::raw::{RawAnalysis, RawLine, RawLineType, RawPoint, RawScenario};
-use super::water::{scenario_water, water_keys, Water};
+use super::raw::{RawLine, RawLineType, RawPoint, RawScenario};
+use super::system_parts::{LineType, PointType, SystemLine, SystemPoint, SystemScenario};
+use super::water::{scenario_water, water_keys};
 use super::{Analysis, ScenarioError};
 use stancf::motion::CoupledMotion;
-use stancf::{ElementType, Grading, Measures};
+use stancf::ElementType;
 use std::path::Path;
-
-/// A line type: the section of a line (MoorDyn's LINE TYPES row).
-#[derive(Clone, Debug, PartialEq)]
-pub struct LineType {
-    pub name: String,
-    /// Diameter (m): the area pi d^2 / 4 the mass and stiffness are
-    /// spread over, and the diameter water sees.
-    pub diameter: f64,
-    /// Mass per length (kg/m).
-    pub mass_per_length: f64,
-    /// Axial stiffness EA (N).
-    pub ea: f64,
-    /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
-    pub ei: f64,
-    /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's
-    /// convention; each line gets BA = zeta l sqrt(EA w) from its element
-    /// length l, docs/method.md §2.10, (M36); see
-    /// [`SystemScenario::axial_damping`]).
-    pub ba: f64,
-    /// Normal and axial drag and added mass coefficients (used in water).
-    pub cd: f64,
-    pub ca: f64,
-    pub cdax: f64,
-    pub caax: f64,
-    /// Whether the line carries compression (`compression`, default
-    /// true); chains and ropes do not (docs/method.md §2.2, (M4a)), nor
-    /// do a MoorDyn deck's lines.
-    pub compression: bool,
-}
-
-impl LineType {
-    /// The area pi d^2 / 4 the section is spread over (and that displaces
-    /// water).
-    pub fn area(&self) -> f64 {
-        std::f64::consts::PI * self.diameter * self.diameter / 4.0
-    }
-}
-
-/// What holds a point.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PointType {
-    Fixed,
-    Free,
-    Coupled,
-}
-
-/// A point of the system.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SystemPoint {
-    pub id: i64,
-    pub kind: PointType,
-    pub position: [f64; 3],
-    pub mass: f64,
-    pub force: [f64; 3],
-    /// Displaced volume (m^3): buoyancy and added mass in water.
-    pub volume: f64,
-    /// Drag area CdA (m^2) in water.
-    pub drag_area: f64,
-    /// Added-mass coefficient Ca on the volume.
-    pub ca: f64,
-    /// The motion of a coupled point (none: it stays put).
-    pub motion: CoupledMotion,
-    /// The file a tabulated motion was read from, as the scenario names it.
-    pub motion_file: Option<String>,
-}
-
-/// An output channel of a MoorDyn deck, written to channels.csv.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OutputChannel {
-    /// The name as the deck writes it (MoorDyn's).
-    pub name: String,
-    pub channel: crate::moordyn::Channel,
-}
-
-/// A line of the system.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SystemLine {
-    pub id: i64,
-    /// Index into the line types.
-    pub line_type: usize,
-    /// Unstretched length (m).
-    pub length: f64,
-    pub elements: usize,
-    pub element_type: ElementType,
-    /// The points (indices) ends A and B attach to; None: loose.
-    pub ends: [Option<usize>; 2],
-    /// How the elements divide the length (docs/method.md §1.6).
-    pub grading: Grading,
-    /// Ends A and B clamped in a direction (as given; the library
-    /// normalizes it): r_x held parallel to it (docs/method.md §6.10).
-    pub clamps: [Option<[f64; 3]>; 2],
-}
-
-/// Where a dynamic run of a system starts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum InitialShape {
-    /// Every line straight between its end points, at rest.
-    Reference,
-    /// The static equilibrium (solved first).
-    Static,
-}
-
-/// A validated system scenario.
-#[derive(Clone, Debug)]
-pub struct SystemScenario {
-    pub title: String,
-    pub line_types: Vec<LineType>,
-    pub points: Vec<SystemPoint>,
-    pub lines: Vec<SystemLine>,
-    /// Acceleration of gravity (m/s^2), default [0, 0, -9.81] (z up).
-    pub gravity: [f64; 3],
-    pub analysis: Analysis,
-    pub measures: Measures,
-    pub initial: InitialShape,
-    pub output_every: usize,
-    /// The result files written (`output.files`; all by default).
-    pub output_files: super::OutputFiles,
-    /// The end forces written: step means or estimates at t.
-    pub end_forces: super::output::EndForces,
-    pub notes: Vec<String>,
-    /// The water the lines are in (None: air).
-    pub water: Option<Water>,
-    /// Output channels (from a MoorDyn deck).
-    pub channels: Vec<OutputChannel>,
-    /// Where its values were written (TOML keys or a deck's lines).
-    pub names: super::names::Names,
-}
 
 /// The system parts of a scenario file, in the file's order.
 pub(super) fn system_scenario(
@@ -227,7 +101,11 @@ pub(super) fn system_scenario(
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     for (i, t) in line_types.iter().enumerate() {
-        if water.is_none() && [t.cd, t.ca, t.cdax, t.caax].iter().any(|&c| c != 0.0) {
+        if water.is_none()
+            && [t.cd_normal, t.ca_normal, t.cd_axial, t.ca_axial]
+                .iter()
+                .any(|&c| c != 0.0)
+        {
             notes.push(format!(
                 "line_types[{i}]: cd, ca, cdax and caax act in water, which this scenario \
                  does not have ([water]): unused"
@@ -272,47 +150,6 @@ fn static_waves_note(sc: &SystemScenario) -> Option<String> {
     })
 }
 
-/// `[analysis]` of a system: the single cable's keys and `initial`
-/// ("reference" or "static"; `default` when missing). Lines are elastic
-/// in the engineering strain (T = EA (|r'| - 1)), as MoorDyn's and the
-/// elastic catenary's are, unless `axial_strain` says otherwise.
-pub(super) fn analysis_part(
-    ctx: &Ctx,
-    raw: Option<RawAnalysis>,
-    default: InitialShape,
-) -> Result<(Analysis, Measures, InitialShape, Vec<String>), ScenarioError> {
-    let others = Others {
-        initial_velocity: false,
-        constraints: true,
-    };
-    let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
-    let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
-    let halvings_given = raw.as_ref().is_some_and(|a| a.step_halvings.is_some());
-    let (mut analysis, mut measures, notes) = analysis::analysis(ctx, raw, others)?;
-    if !halvings_given {
-        // A system's failed step is halved unless the scenario says
-        // otherwise (docs/method.md §11.13).
-        analysis.step_halvings = stancf::system::DEFAULT_STEP_HALVINGS;
-    }
-    if !axial_given {
-        measures.axial_strain = stancf::AxialStrain::Engineering;
-    }
-    let default_word = match default {
-        InitialShape::Static => "static",
-        InitialShape::Reference => "reference",
-    };
-    let initial = match ctx.choice(
-        "analysis.initial",
-        initial_key.as_deref(),
-        default_word,
-        &["reference", "static"],
-    )? {
-        "static" => InitialShape::Static,
-        _ => InitialShape::Reference,
-    };
-    Ok((analysis, measures, initial, notes))
-}
-
 /// `[[line_types]]`: `name` (required, unique), `diameter` (> 0),
 /// `mass_per_length` (> 0), `ea` (> 0), each required; `ei` (>= 0,
 /// default 0), `ba` (default 0; < 0: minus a damping ratio), `cd`, `ca`,
@@ -341,10 +178,10 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
                 Some(v) => ctx.finite(&key("ba"), v)?,
                 None => 0.0,
             },
-            cd: optional("cd", r.cd)?,
-            ca: optional("ca", r.ca)?,
-            cdax: optional("cdax", r.cdax)?,
-            caax: optional("caax", r.caax)?,
+            cd_normal: optional("cd", r.cd)?,
+            ca_normal: optional("ca", r.ca)?,
+            cd_axial: optional("cdax", r.cdax)?,
+            ca_axial: optional("caax", r.caax)?,
             compression: r.compression.unwrap_or(true),
             name,
         });

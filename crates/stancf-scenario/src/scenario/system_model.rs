@@ -3,7 +3,7 @@
 //! water the water's load and the seabed), every point a library point,
 //! and the seed of the static solve (docs/method.md §11.6).
 
-use super::system::{LineType, PointType, SystemScenario};
+use super::system_parts::{LineType, PointType, SystemPoint, SystemScenario};
 use super::water::Water;
 use stancf::system::{End, Line, Point, PointKind, System};
 use stancf::water::{LineInWater, Morison};
@@ -195,10 +195,10 @@ impl SystemScenario {
 fn morison(t: &LineType) -> Morison {
     Morison {
         diameter: t.diameter,
-        cd_normal: t.cd,
-        cd_axial: t.cdax,
-        ca_normal: t.ca,
-        ca_axial: t.caax,
+        cd_normal: t.cd_normal,
+        cd_axial: t.cd_axial,
+        ca_normal: t.ca_normal,
+        ca_axial: t.ca_axial,
     }
 }
 
@@ -212,7 +212,7 @@ fn norm(v: [f64; 3]) -> f64 {
 /// wet-weight seed (water given, `fluid` None) its buoyancy is a constant
 /// force -rho_w V g.
 fn library_point(
-    p: &super::system::SystemPoint,
+    p: &SystemPoint,
     water: Option<&Water>,
     fluid: Option<&Arc<stancf::water::Water>>,
     gravity: [f64; 3],

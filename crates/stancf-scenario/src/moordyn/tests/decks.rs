@@ -15,7 +15,12 @@ fn the_oc4_example_deck_reads_three_lines_and_six_points() {
         (0.0766, 113.35, 753.6e6, 0.0)
     );
     assert_eq!(
-        (chain.cd, chain.ca, chain.cd_ax, chain.ca_ax),
+        (
+            chain.cd_normal,
+            chain.ca_normal,
+            chain.cd_axial,
+            chain.ca_axial
+        ),
         (2.0, 0.8, 0.4, 0.25)
     );
     assert_eq!(chain.damping_ratio(), Some(1.0));

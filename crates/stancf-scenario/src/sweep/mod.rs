@@ -306,40 +306,16 @@ fn figure(summary: &serde_json::Value, path: &[&str]) -> String {
     }
 }
 
-/// `stancf sweep`.
+/// `stancf sweep`: every point of the grid of `sets` validated first, then
+/// run `jobs` at a time into `run_<k>` of one result folder with its
+/// sweep.csv (docs/interface.md, "stancf sweep").
 pub fn sweep(
     path: &Path,
     sets: &[String],
     jobs: Option<usize>,
     out: Option<PathBuf>,
 ) -> Result<(), Failure> {
-    let file = path.display().to_string();
-    let text =
-        crate::input_file::read_text(path).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-    scenario::parse(&text, &file, path).map_err(|e| Failure::Input(e.0))?;
-    let base: toml::Table = text
-        .parse()
-        .map_err(|e: toml::de::Error| Failure::Input(format!("{file}: {e}")))?;
-    if sets.is_empty() {
-        return Err(Failure::Input(
-            "sweep: give at least one --set key=v1,v2,...".into(),
-        ));
-    }
-    let axes: Vec<Axis> = sets
-        .iter()
-        .map(|s| parse_set(s))
-        .collect::<Result<_, _>>()
-        .map_err(Failure::Input)?;
-    let keys: Vec<&str> = axes.iter().map(|a| a.key.as_str()).collect();
-    check_keys(&keys).map_err(Failure::Input)?;
-    let lengths: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
-    let n_points = grid_size(&lengths).map_err(Failure::Input)?;
-    // Every point is built and validated before anything runs, one at a
-    // time and then dropped (its run builds the text again).
-    for k in 0..n_points {
-        let (text, name) = point_text(&base, &axes, k, &file)?;
-        scenario::parse(&text, &name, path).map_err(|e| Failure::Input(e.0))?;
-    }
+    let grid = Grid::read(path, sets)?;
     let target = out.unwrap_or_else(|| {
         let stem = path
             .file_stem()
@@ -350,242 +326,200 @@ pub fn sweep(
     // The sweep's folder is one transaction, its runs' folders inside it.
     let folder = ResultFolder::open(&target)?;
     let dir = folder.staging().to_path_buf();
-    let run_dirs: Vec<PathBuf> = (0..n_points)
-        .map(|k| dir.join(format!("run_{k:04}")))
-        .collect();
-    let cancel = crate::signals::cancel();
     let jobs = jobs
         .unwrap_or_else(|| {
             std::thread::available_parallelism()
                 .map(|n| n.get())
                 .unwrap_or(1)
         })
-        .clamp(1, n_points);
-    // Runs, `jobs` at a time; each records how it ended.
-    let next = AtomicUsize::new(0);
-    let outcomes: Mutex<Vec<Option<(&str, String)>>> = Mutex::new(vec![None; n_points]);
-    std::thread::scope(|s| {
-        for _ in 0..jobs {
-            s.spawn(|| loop {
-                // After Ctrl-C or SIGTERM no further run starts.
-                if (cancel.0)() {
-                    break;
-                }
-                let k = next.fetch_add(1, Ordering::SeqCst);
-                if k >= n_points {
-                    break;
-                }
-                // The run writes its results and its scenario.toml to run_<k>.
-                let result = point_text(&base, &axes, k, &file).and_then(|(text, _)| {
-                    run_text(
-                        &text,
-                        path,
-                        RunOptions {
-                            out: Some(run_dirs[k].clone()),
-                            quiet: true,
-                            cancel: Some(cancel.clone()),
-                            // Messages name the folder as it will be after
-                            // the sweep's commit.
-                            shown_as: Some(target.join(format!("run_{k:04}"))),
-                            ..RunOptions::default()
-                        },
-                    )
-                });
-                let outcome = match result {
-                    Ok(()) => ("ok", String::new()),
-                    Err(Failure::Interrupted(m)) => ("interrupted", m),
-                    Err(e) => ("failed", e.to_string()),
-                };
-                outcomes.lock().expect("no run panics holding it")[k] = Some(outcome);
-            });
-        }
-    });
-    let outcomes = outcomes.into_inner().expect("all runs joined");
-    // sweep.csv
-    let mut csv = String::from("run");
-    for a in &axes {
-        write!(csv, ",{}", csv_field(&a.key)).ok();
-    }
-    csv.push_str(",status");
-    for (name, _) in FIGURES {
-        write!(csv, ",{name}").ok();
-    }
-    csv.push_str(",error\n");
-    let mut failed = Vec::new();
-    let mut interrupted = false;
-    for (k, outcome) in outcomes.into_iter().enumerate() {
-        let (status, error) = outcome.unwrap_or_else(|| {
-            (
-                "not run",
-                "the sweep was interrupted before this run started".into(),
-            )
-        });
-        write!(csv, "{k}").ok();
-        for v in point(&axes, k) {
-            write!(csv, ",{}", csv_field(&cell(v))).ok();
-        }
-        let summary: Option<serde_json::Value> =
-            std::fs::read_to_string(run_dirs[k].join("summary.json"))
-                .ok()
-                .and_then(|t| serde_json::from_str(&t).ok());
-        write!(csv, ",{status}").ok();
-        for (_, p) in FIGURES {
-            write!(
-                csv,
-                ",{}",
-                summary.as_ref().map(|s| figure(s, p)).unwrap_or_default()
-            )
-            .ok();
-        }
-        writeln!(csv, ",{}", csv_field(&error)).ok();
-        match status {
-            "ok" => {}
-            "failed" => failed.push(k),
-            _ => interrupted = true,
-        }
-    }
+        .clamp(1, grid.points);
+    let outcomes = grid.run_all(path, &dir, &target, jobs);
+    let table = grid.table(&dir, outcomes);
     let cannot = |e: std::io::Error| {
         Failure::Other(format!("{}: cannot write results: {e}", target.display()))
     };
-    write_atomic(&dir, "sweep.csv", csv.as_bytes()).map_err(cannot)?;
+    write_atomic(&dir, "sweep.csv", table.csv.as_bytes()).map_err(cannot)?;
     folder.commit().map_err(cannot)?;
-    let table = target.join("sweep.csv");
-    if interrupted {
+    let shown = target.join("sweep.csv");
+    if table.interrupted {
         return Err(Failure::Interrupted(format!(
             "sweep: interrupted; the runs that finished, and those cut short up to their last \
              step, are in {} (status column)",
-            table.display()
+            shown.display()
         )));
     }
     println!(
         "sweep: {} runs ({} at a time), {} failed; table in {}",
-        n_points,
+        grid.points,
         jobs,
-        failed.len(),
-        table.display()
+        table.failed.len(),
+        shown.display()
     );
-    if failed.is_empty() {
-        Ok(())
-    } else {
-        Err(Failure::Solver(format!(
-            "sweep: runs {} failed (see the error column of {})",
-            failed
-                .iter()
-                .map(|k| k.to_string())
-                .collect::<Vec<_>>()
-                .join(", "),
-            table.display()
-        )))
+    if table.failed.is_empty() {
+        return Ok(());
+    }
+    Err(Failure::Solver(format!(
+        "sweep: runs {} failed (see the error column of {})",
+        table
+            .failed
+            .iter()
+            .map(|k| k.to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+        shown.display()
+    )))
+}
+
+/// How a run of the sweep ended: its status (`ok`, `failed`,
+/// `interrupted`) and message; None if it never started.
+type Outcome = Option<(&'static str, String)>;
+
+/// The grid of a sweep: the base scenario, its axes, how many points.
+struct Grid {
+    file: String,
+    base: toml::Table,
+    axes: Vec<Axis>,
+    points: usize,
+}
+
+/// sweep.csv's text, the runs that failed and whether any was cut short.
+struct Table {
+    csv: String,
+    failed: Vec<usize>,
+    interrupted: bool,
+}
+
+impl Grid {
+    /// The scenario at `path` and its axes from `sets`; every point is
+    /// built and validated before anything runs, one at a time and then
+    /// dropped (its run builds the text again).
+    fn read(path: &Path, sets: &[String]) -> Result<Grid, Failure> {
+        let file = path.display().to_string();
+        let text = crate::input_file::read_text(path)
+            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+        scenario::parse(&text, &file, path).map_err(|e| Failure::Input(e.0))?;
+        let base: toml::Table = text
+            .parse()
+            .map_err(|e: toml::de::Error| Failure::Input(format!("{file}: {e}")))?;
+        if sets.is_empty() {
+            return Err(Failure::Input(
+                "sweep: give at least one --set key=v1,v2,...".into(),
+            ));
+        }
+        let axes: Vec<Axis> = sets
+            .iter()
+            .map(|s| parse_set(s))
+            .collect::<Result<_, _>>()
+            .map_err(Failure::Input)?;
+        let keys: Vec<&str> = axes.iter().map(|a| a.key.as_str()).collect();
+        check_keys(&keys).map_err(Failure::Input)?;
+        let lengths: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
+        let points = grid_size(&lengths).map_err(Failure::Input)?;
+        for k in 0..points {
+            let (text, name) = point_text(&base, &axes, k, &file)?;
+            scenario::parse(&text, &name, path).map_err(|e| Failure::Input(e.0))?;
+        }
+        Ok(Grid {
+            file,
+            base,
+            axes,
+            points,
+        })
+    }
+
+    /// Runs every point into `dir/run_<k>`, `jobs` at a time; after
+    /// Ctrl-C or SIGTERM no further run starts. Messages name the folders
+    /// as they will be after the sweep's commit, under `target`.
+    fn run_all(&self, path: &Path, dir: &Path, target: &Path, jobs: usize) -> Vec<Outcome> {
+        let cancel = crate::signals::cancel();
+        let next = AtomicUsize::new(0);
+        let outcomes: Mutex<Vec<Outcome>> = Mutex::new(vec![None; self.points]);
+        std::thread::scope(|s| {
+            for _ in 0..jobs {
+                s.spawn(|| loop {
+                    if (cancel.0)() {
+                        break;
+                    }
+                    let k = next.fetch_add(1, Ordering::SeqCst);
+                    if k >= self.points {
+                        break;
+                    }
+                    // The run writes its results and its scenario.toml.
+                    let run_dir = format!("run_{k:04}");
+                    let result =
+                        point_text(&self.base, &self.axes, k, &self.file).and_then(|(text, _)| {
+                            run_text(
+                                &text,
+                                path,
+                                RunOptions {
+                                    out: Some(dir.join(&run_dir)),
+                                    quiet: true,
+                                    cancel: Some(cancel.clone()),
+                                    shown_as: Some(target.join(&run_dir)),
+                                    ..RunOptions::default()
+                                },
+                            )
+                        });
+                    let outcome = match result {
+                        Ok(()) => ("ok", String::new()),
+                        Err(Failure::Interrupted(m)) => ("interrupted", m),
+                        Err(e) => ("failed", e.to_string()),
+                    };
+                    outcomes.lock().expect("no run panics holding it")[k] = Some(outcome);
+                });
+            }
+        });
+        outcomes.into_inner().expect("all runs joined")
+    }
+
+    /// sweep.csv: a row per run with its point, status, the figures of
+    /// its summary.json ([`FIGURES`]) and its error.
+    fn table(&self, dir: &Path, outcomes: Vec<Outcome>) -> Table {
+        let mut csv = String::from("run");
+        for a in &self.axes {
+            write!(csv, ",{}", csv_field(&a.key)).ok();
+        }
+        csv.push_str(",status");
+        for (name, _) in FIGURES {
+            write!(csv, ",{name}").ok();
+        }
+        csv.push_str(",error\n");
+        let mut failed = Vec::new();
+        let mut interrupted = false;
+        for (k, outcome) in outcomes.into_iter().enumerate() {
+            let (status, error) = outcome.unwrap_or_else(|| {
+                (
+                    "not run",
+                    "the sweep was interrupted before this run started".into(),
+                )
+            });
+            write!(csv, "{k}").ok();
+            for v in point(&self.axes, k) {
+                write!(csv, ",{}", csv_field(&cell(v))).ok();
+            }
+            let summary: Option<serde_json::Value> =
+                std::fs::read_to_string(dir.join(format!("run_{k:04}")).join("summary.json"))
+                    .ok()
+                    .and_then(|t| serde_json::from_str(&t).ok());
+            write!(csv, ",{status}").ok();
+            for (_, p) in FIGURES {
+                let value = summary.as_ref().map(|s| figure(s, p)).unwrap_or_default();
+                write!(csv, ",{value}").ok();
+            }
+            writeln!(csv, ",{}", csv_field(&error)).ok();
+            match status {
+                "ok" => {}
+                "failed" => failed.push(k),
+                _ => interrupted = true,
+            }
+        }
+        Table {
+            csv,
+            failed,
+            interrupted,
+        }
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sets_parse_with_arrays_and_words() {
-        let a = parse_set("analysis.time_step=1e-4,5e-5").unwrap();
-        assert_eq!(a.key, "analysis.time_step");
-        assert_eq!(
-            a.values,
-            vec![toml::Value::Float(1e-4), toml::Value::Float(5e-5)]
-        );
-        let a = parse_set("loads.0.acceleration=[0,-9.81,0],[0,-1.62,0]").unwrap();
-        assert_eq!(a.values.len(), 2);
-        assert!(matches!(&a.values[0], toml::Value::Array(v) if v.len() == 3));
-        let a = parse_set("analysis.solver=newton,broyden").unwrap();
-        assert_eq!(a.values[1], toml::Value::String("broyden".into()));
-        let a = parse_set(r#"title="a, b","say \"hi, you\"",'c:\d, e'"#).unwrap();
-        let strings: Vec<&str> = a.values.iter().map(|v| v.as_str().unwrap()).collect();
-        assert_eq!(strings, ["a, b", "say \"hi, you\"", "c:\\d, e"]);
-        let a = parse_set("title=don't,x").unwrap();
-        assert_eq!(a.values.len(), 2);
-        assert_eq!(a.values[0].as_str(), Some("don't"));
-        assert!(parse_set("analysis.time_step").is_err());
-        assert!(parse_set("a..b=1").is_err());
-    }
-
-    #[test]
-    fn apply_reaches_tables_and_list_entries() {
-        let mut doc: toml::Table =
-            "[analysis]\ntime_step = 1.0\n[[loads]]\ntype = \"gravity\"\n[[loads]]\ntype = \"air-drag\"\ndrag_coefficient = 1.0\n"
-                .parse()
-                .unwrap();
-        apply(&mut doc, "analysis.time_step", toml::Value::Float(0.5)).unwrap();
-        apply(&mut doc, "analysis.tolerance", toml::Value::Float(1e-9)).unwrap();
-        apply(
-            &mut doc,
-            "loads.1.drag_coefficient",
-            toml::Value::Float(1.5),
-        )
-        .unwrap();
-        assert_eq!(doc["analysis"]["time_step"].as_float(), Some(0.5));
-        assert_eq!(doc["analysis"]["tolerance"].as_float(), Some(1e-9));
-        assert_eq!(doc["loads"][1]["drag_coefficient"].as_float(), Some(1.5));
-        assert!(apply(
-            &mut doc,
-            "loads.2.drag_coefficient",
-            toml::Value::Float(1.0)
-        )
-        .unwrap_err()
-        .contains("no index 2"));
-        assert!(apply(&mut doc, "analysis.time_step.x", toml::Value::Float(1.0)).is_err());
-    }
-
-    #[test]
-    fn grid_is_the_cartesian_product_first_axis_slowest() {
-        let axes = [parse_set("a=1,2").unwrap(), parse_set("b=3,4,5").unwrap()];
-        assert_eq!(grid_size(&[2, 3]), Ok(6));
-        let int = |i| toml::Value::Integer(i);
-        let g: Vec<Vec<toml::Value>> = (0..6)
-            .map(|k| point(&axes, k).into_iter().cloned().collect())
-            .collect();
-        assert_eq!(g[0], vec![int(1), int(3)]);
-        assert_eq!(g[1], vec![int(1), int(4)]);
-        assert_eq!(g[3], vec![int(2), int(3)]);
-        assert_eq!(g[5], vec![int(2), int(5)]);
-    }
-
-    #[test]
-    fn a_grid_above_the_limit_is_refused_from_its_list_lengths() {
-        assert_eq!(grid_size(&[100, 100]), Ok(MAX_POINTS));
-        let e = grid_size(&[100, 100, 2]).unwrap_err();
-        assert!(e.contains("20000 points (100 x 100 x 2)"), "{e}");
-        assert!(e.contains("limit of 10000"), "{e}");
-        // A product past usize does not wrap around to a small number.
-        let e = grid_size(&[usize::MAX, 2]).unwrap_err();
-        assert!(e.contains("more than 18446744073709551615 points"), "{e}");
-    }
-
-    #[test]
-    fn keys_given_twice_or_inside_one_another_are_refused() {
-        assert!(check_keys(&["analysis.time_step", "loads.0.drag_coefficient"]).is_ok());
-        assert!(check_keys(&["loads.1", "loads.10"]).is_ok());
-        let e = check_keys(&["a.b", "c", "a.b"]).unwrap_err();
-        assert!(e.contains("the key a.b is given twice"), "{e}");
-        let e = check_keys(&["loads.0.acceleration", "loads.0"]).unwrap_err();
-        assert!(
-            e.contains("the keys loads.0 and loads.0.acceleration overlap"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn a_list_index_has_one_spelling() {
-        let mut doc: toml::Table = "[[loads]]\ntype = \"gravity\"\n".parse().unwrap();
-        for bad in ["loads.00.type", "loads.+0.type", "loads.0x0.type"] {
-            let e = apply(&mut doc, bad, toml::Value::String("x".into())).unwrap_err();
-            assert!(e.contains("is not an index"), "{bad}: {e}");
-        }
-        apply(&mut doc, "loads.0.type", toml::Value::String("x".into())).unwrap();
-    }
-
-    #[test]
-    fn csv_fields_are_quoted_only_when_needed() {
-        assert_eq!(csv_field("5e-5"), "5e-5");
-        assert_eq!(csv_field("[0, -10, 0]"), "\"[0, -10, 0]\"");
-        assert_eq!(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
-        assert_eq!(csv_field("two\nlines"), "\"two\nlines\"");
-    }
-}
+mod tests;

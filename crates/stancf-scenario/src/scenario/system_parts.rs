@@ -1,0 +1,130 @@
+//! What a system scenario holds (docs/interface.md, "Systems"): its line
+//! types, points, lines and output channels, validated from `[[line_types]]`,
+//! `[[points]]` and `[[lines]]` (`system.rs`) or from a MoorDyn deck
+//! (`moordyn.rs`).
+
+use super::analysis::InitialShape;
+use super::water::Water;
+use super::Analysis;
+use stancf::motion::CoupledMotion;
+use stancf::{ElementType, Grading, Measures};
+
+/// A line type: the section of a line (MoorDyn's LINE TYPES row).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineType {
+    pub name: String,
+    /// Diameter (m): the area pi d^2 / 4 the mass and stiffness are
+    /// spread over, and the diameter water sees.
+    pub diameter: f64,
+    /// Mass per length (kg/m).
+    pub mass_per_length: f64,
+    /// Axial stiffness EA (N).
+    pub ea: f64,
+    /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
+    pub ei: f64,
+    /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's
+    /// convention; each line gets BA = zeta l sqrt(EA w) from its element
+    /// length l, docs/method.md §2.10, (M36); see
+    /// [`SystemScenario::axial_damping`]).
+    pub ba: f64,
+    /// Normal and axial drag and added mass coefficients (used in water;
+    /// keys `cd`, `ca`, `cdax`, `caax`, a deck's Cd, Ca, CdAx, CaAx; the
+    /// library's [`stancf::water::hydro::Morison`] under the same names).
+    pub cd_normal: f64,
+    pub ca_normal: f64,
+    pub cd_axial: f64,
+    pub ca_axial: f64,
+    /// Whether the line carries compression (`compression`, default
+    /// true); chains and ropes do not (docs/method.md §2.2, (M4a)), nor
+    /// do a MoorDyn deck's lines.
+    pub compression: bool,
+}
+
+impl LineType {
+    /// The area pi d^2 / 4 the section is spread over (and that displaces
+    /// water).
+    pub fn area(&self) -> f64 {
+        std::f64::consts::PI * self.diameter * self.diameter / 4.0
+    }
+}
+
+/// What holds a point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointType {
+    Fixed,
+    Free,
+    Coupled,
+}
+
+/// A point of the system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemPoint {
+    pub id: i64,
+    pub kind: PointType,
+    pub position: [f64; 3],
+    pub mass: f64,
+    pub force: [f64; 3],
+    /// Displaced volume (m^3): buoyancy and added mass in water.
+    pub volume: f64,
+    /// Drag area CdA (m^2) in water.
+    pub drag_area: f64,
+    /// Added-mass coefficient Ca on the volume.
+    pub ca: f64,
+    /// The motion of a coupled point (none: it stays put).
+    pub motion: CoupledMotion,
+    /// The file a tabulated motion was read from, as the scenario names it.
+    pub motion_file: Option<String>,
+}
+
+/// An output channel of a MoorDyn deck, written to channels.csv.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputChannel {
+    /// The name as the deck writes it (MoorDyn's).
+    pub name: String,
+    pub channel: crate::moordyn::Channel,
+}
+
+/// A line of the system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemLine {
+    pub id: i64,
+    /// Index into the line types.
+    pub line_type: usize,
+    /// Unstretched length (m).
+    pub length: f64,
+    pub elements: usize,
+    pub element_type: ElementType,
+    /// The points (indices) ends A and B attach to; None: loose.
+    pub ends: [Option<usize>; 2],
+    /// How the elements divide the length (docs/method.md §1.6).
+    pub grading: Grading,
+    /// Ends A and B clamped in a direction (as given; the library
+    /// normalizes it): r_x held parallel to it (docs/method.md §6.10).
+    pub clamps: [Option<[f64; 3]>; 2],
+}
+
+/// A validated system scenario.
+#[derive(Clone, Debug)]
+pub struct SystemScenario {
+    pub title: String,
+    pub line_types: Vec<LineType>,
+    pub points: Vec<SystemPoint>,
+    pub lines: Vec<SystemLine>,
+    /// Acceleration of gravity (m/s^2), default [0, 0, -9.81] (z up).
+    pub gravity: [f64; 3],
+    pub analysis: Analysis,
+    pub measures: Measures,
+    pub initial: InitialShape,
+    pub output_every: usize,
+    /// The result files written (`output.files`; all by default).
+    pub output_files: super::OutputFiles,
+    /// The end forces written: step means or estimates at t.
+    pub end_forces: super::output::EndForces,
+    pub notes: Vec<String>,
+    /// The water the lines are in (None: air).
+    pub water: Option<Water>,
+    /// Output channels (from a MoorDyn deck).
+    pub channels: Vec<OutputChannel>,
+    /// Where its values were written (TOML keys or a deck's lines).
+    pub names: super::names::Names,
+}
