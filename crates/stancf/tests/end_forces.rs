@@ -42,11 +42,13 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>().sqrt()
 }
 
-/// Against the estimate at t of steps 8 times shorter than the shortest
-/// (its own error ~1/64 of the shortest's at second order), the step
+/// Against the estimate at t of steps 4 times shorter than the shortest
+/// (its own error ~1/16 of the shortest's at second order, so an order
+/// measured against it is off by at most log2((1 + 1/64) / (1 - 1/16)) =
+/// 0.12, well inside the bounds below), the step
 /// means' error halves with the step (order 1: measured 0.95 and 0.98
 /// over the halvings from 0.25 ms to 62.5 us) and the estimate's quarters
-/// (order 2: measured 1.97 and 2.03; 9e-5 N at 62.5 us, the step mean
+/// (order 2: measured 1.98 and 2.07; 8.7e-5 N at 62.5 us, the step mean
 /// 2.6e-3 N), and the estimate is closer at every step. Longer steps do
 /// not resolve the ropes' axial waves (100 m/s over 0.3 m elements) and
 /// are not yet in the asymptotic range (orders 0.7 to 1.8 from 1 ms).
@@ -54,7 +56,7 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// claim is which order, not its digits).
 #[test]
 fn the_end_force_at_the_end_of_a_step_is_second_order_in_the_step() {
-    let (_, reference) = anchor_force_at(7.8125e-6);
+    let (_, reference) = anchor_force_at(1.5625e-5);
     let mut errors = Vec::new();
     for dt in [2.5e-4, 1.25e-4, 6.25e-5] {
         let (mean, at_time) = anchor_force_at(dt);

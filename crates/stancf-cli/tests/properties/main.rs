@@ -56,12 +56,16 @@ use proptest::test_runner::TestRunner;
 use std::sync::Mutex;
 use system_grammar::{random_system, sane_system};
 
-/// Cases per generator (each runs `check` and `run`).
-const CASES: u32 = 1000;
+/// Cases per generator (each runs `check` and `run`). The seed is
+/// fixed, so CI draws the same cases every time: more of them only widen
+/// one sample, while the fuzzers of `fuzz/` and `STANCF_PROPTEST_CASES`
+/// with other seeds explore; 500 keep the binary's run at about 20 s on
+/// two cores (issue 29).
+const CASES: u32 = 500;
 
 /// Cases of the generators of decks and of system scenarios, whose
 /// cases each solve a static equilibrium or a few steps of a system.
-const SYSTEM_CASES: u32 = 500;
+const SYSTEM_CASES: u32 = 250;
 
 #[test]
 fn shipped_examples_shortened_pass_check_and_run_with_clean_results() {
