@@ -17,7 +17,7 @@ use std::path::Path;
 /// The system parts of a scenario file, in the file's order.
 pub(super) fn system_scenario(
     ctx: &Ctx,
-    raw: RawScenario,
+    mut raw: RawScenario,
     title: String,
     path: &Path,
 ) -> Result<SystemScenario, ScenarioError> {
@@ -37,51 +37,26 @@ pub(super) fn system_scenario(
             ));
         }
     }
-    let rs = raw.system.unwrap_or_default();
+    let rs = raw.system.take().unwrap_or_default();
     if let Some(deck) = rs.moordyn.as_deref() {
-        for (present, key) in [
+        if let Some(key) = [
             (rs.gravity.is_some(), "system.gravity"),
             (!raw.line_types.is_empty(), "line_types"),
             (!raw.points.is_empty(), "points"),
             (!raw.lines.is_empty(), "lines"),
-        ] {
-            if present {
-                return Err(ctx.err(
-                    key,
-                    "the MoorDyn deck of system.moordyn gives the line types, points, lines \
-                     and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
-                     [water] (what the deck does not give), [analysis] and [output]",
-                ));
-            }
+        ]
+        .into_iter()
+        .find_map(|(present, key)| present.then_some(key))
+        {
+            return Err(ctx.err(
+                key,
+                "the MoorDyn deck of system.moordyn gives the line types, points, lines \
+                 and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
+                 [water] (what the deck does not give), [analysis] and [output]",
+            ));
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
-        let deck = super::moordyn::load_deck(ctx, "system.moordyn", &deck_path)?;
-        let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
-        let deck_file = deck_path.display().to_string();
-        let mut sc = super::moordyn::deck_scenario(
-            &deck,
-            &deck_file,
-            &deck_path,
-            title,
-            added.map(|w| (ctx, w)),
-        )?;
-        sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()));
-        super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
-        let (analysis, measures, initial, notes) =
-            analysis_part(ctx, raw.analysis, InitialShape::Static)?;
-        let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
-        motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
-        sc.analysis = analysis;
-        sc.measures = measures;
-        sc.initial = initial;
-        sc.notes.extend(notes);
-        sc.notes.extend(static_waves_note(&sc));
-        sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
-        sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
-        sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
-        super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
-        sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
-        return Ok(sc);
+        return deck_system(ctx, raw, title, path, &deck_path);
     }
     if !raw.mesh.is_empty() {
         return Err(ctx.err(
@@ -135,6 +110,45 @@ pub(super) fn system_scenario(
     };
     sc.notes.extend(static_waves_note(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    Ok(sc)
+}
+
+/// A system whose lines, points and gravity come from the MoorDyn deck at
+/// `deck_path` (`system.moordyn`), with the scenario's motions, meshes,
+/// water keys, analysis and output.
+fn deck_system(
+    ctx: &Ctx,
+    raw: RawScenario,
+    title: String,
+    path: &Path,
+    deck_path: &Path,
+) -> Result<SystemScenario, ScenarioError> {
+    let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
+    let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
+    let deck_file = deck_path.display().to_string();
+    let mut sc = super::moordyn::deck_scenario(
+        &deck,
+        &deck_file,
+        deck_path,
+        title,
+        added.map(|w| (ctx, w)),
+    )?;
+    sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()));
+    super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
+    let (analysis, measures, initial, notes) =
+        analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+    let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
+    motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
+    sc.analysis = analysis;
+    sc.measures = measures;
+    sc.initial = initial;
+    sc.notes.extend(notes);
+    sc.notes.extend(static_waves_note(&sc));
+    sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
+    sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+    super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
+    sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     Ok(sc)
 }
 
