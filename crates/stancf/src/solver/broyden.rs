@@ -38,19 +38,10 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             if report.factorizations >= settings.max_iterations {
                 return fail(FailureKind::NotConverged, report);
             }
-            let t0 = now(clock);
-            system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
-            let t1 = now(clock);
-            ws.timing.part_a += t1 - t0;
             report.factorizations += 1;
-            ws.updates = 0;
-            let ok = ws.lu.factorize().is_ok();
-            ws.timing.part_b += now(clock) - t1;
-            if !ok {
-                ws.factors_valid = false;
+            if !fresh_jacobian(system, x, ws, clock) {
                 return fail(FailureKind::SingularJacobian, report);
             }
-            ws.factors_valid = true;
             refactorize = false;
         }
         if report.iterations >= settings.max_iterations {
@@ -113,40 +104,62 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             r = r_new;
             continue;
         }
-        // y = R_new - R_old; B y; a = (s - B y) / (s . B y) with s = -dx.
         let t0 = now(clock);
-        for ((y, rn), ro) in
-            ws.y.iter_mut()
-                .zip(ws.residual.iter())
-                .zip(ws.previous.iter())
-        {
-            *y = rn - ro;
-        }
-        ws.by.copy_from_slice(&ws.y);
-        NewtonWorkspace::apply_inverse(
-            &ws.lu,
-            &ws.updates_a,
-            &ws.updates_s,
-            ws.updates,
-            &mut ws.by,
-        );
-        let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
-        let k = ws.updates;
-        if denom.abs() <= f64::EPSILON * 1e3 {
-            refactorize = true;
-        } else {
-            for (((a, s), d), b) in ws.updates_a[k]
-                .iter_mut()
-                .zip(ws.updates_s[k].iter_mut())
-                .zip(ws.dx.iter())
-                .zip(ws.by.iter())
-            {
-                *s = -d;
-                *a = (-d - b) / denom;
-            }
-            ws.updates += 1;
-        }
+        refactorize = !rank_one_update(ws);
         ws.timing.part_b += now(clock) - t0;
         r = r_new;
     }
+}
+
+/// Evaluates the Jacobian at `x` (with the residual) and factorizes it,
+/// dropping the rank-one updates; false if it is singular (the factors
+/// are then marked invalid).
+fn fresh_jacobian<F: Factorization, S: NonlinearSystem<F::Matrix>>(
+    system: &mut S,
+    x: &[f64],
+    ws: &mut NewtonWorkspace<F>,
+    clock: Option<&dyn Clock>,
+) -> bool {
+    let t0 = now(clock);
+    system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
+    let t1 = now(clock);
+    ws.timing.part_a += t1 - t0;
+    ws.updates = 0;
+    let ok = ws.lu.factorize().is_ok();
+    ws.timing.part_b += now(clock) - t1;
+    ws.factors_valid = ok;
+    ok
+}
+
+/// Broyden's rank-one update of the inverse, eq. (27) as (M28)
+/// (docs/method.md §7.3): with s = -dx and y = R_new - R_old,
+/// a = (s - B y) / (s . B y), kept as the pair (a, s) so that
+/// B+ = (I + a s^T) B. False when
+/// s . B y is round-off (no update: the caller takes a fresh Jacobian).
+fn rank_one_update<F: Factorization>(ws: &mut NewtonWorkspace<F>) -> bool {
+    for ((y, rn), ro) in
+        ws.y.iter_mut()
+            .zip(ws.residual.iter())
+            .zip(ws.previous.iter())
+    {
+        *y = rn - ro;
+    }
+    ws.by.copy_from_slice(&ws.y);
+    NewtonWorkspace::apply_inverse(&ws.lu, &ws.updates_a, &ws.updates_s, ws.updates, &mut ws.by);
+    let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
+    if denom.abs() <= f64::EPSILON * 1e3 {
+        return false;
+    }
+    let k = ws.updates;
+    for (((a, s), d), b) in ws.updates_a[k]
+        .iter_mut()
+        .zip(ws.updates_s[k].iter_mut())
+        .zip(ws.dx.iter())
+        .zip(ws.by.iter())
+    {
+        *s = -d;
+        *a = (-d - b) / denom;
+    }
+    ws.updates += 1;
+    true
 }
