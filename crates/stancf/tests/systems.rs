@@ -321,9 +321,9 @@ mod joined {
     /// From that equilibrium, with P2, the joined lines follow the one
     /// line to the elements' error again, at fourth order (measured
     /// 2.7e-7, 2.8e-8 and 2.2e-9 of the length at 20, 40 and 80 elements
-    /// per line, ratios 9.7 and 12.7, and 4.6e-10 at 120; asserted ratio
-    /// >= 8 per doubling and <= 5e-9 at 80, the bound of 1e-9 at 120
-    /// carried to 80 at fourth order, 1.5^4 = 5.1).
+    /// per line, ratios 9.7 and 12.7, and 4.6e-10 at 120; asserted: a
+    /// ratio of at least 8 per doubling, and at most 5e-9 at 80, the
+    /// bound of 1e-9 at 120 carried to 80 at fourth order, 1.5^4 = 5.1).
     #[test]
     fn two_lines_joined_at_a_free_massless_point_move_as_one_line() {
         let d: Vec<f64> = [(20usize, 2e-3), (40, 1e-3), (80, 5e-4)]
