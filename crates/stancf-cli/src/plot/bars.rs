@@ -1,7 +1,9 @@
 //! [`Bars`]: grouped bars, one group per category and one bar per series
 //! (the paper's Fig. 6; a static system's end tensions).
 
-use super::{caption_style, err, legend, tick, DrawResult, Figure, FAMILY, LABEL, PALETTE, TICK};
+use super::{
+    caption_style, err, legend, tick_on, DrawResult, Figure, FAMILY, LABEL, PALETTE, TICK,
+};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -55,7 +57,7 @@ impl Figure for Bars {
             .y_desc(&self.y_label)
             .axis_desc_style((FAMILY, LABEL))
             .label_style((FAMILY, TICK))
-            .y_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick_on(*v, top))
             .draw()
             .map_err(err)?;
         let width = 0.8 / k as f64;

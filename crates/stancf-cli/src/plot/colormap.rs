@@ -2,7 +2,7 @@
 //! space-time map of axial stress, the paper's Fig. 4), and its colour
 //! scales (viridis, or blue - white - red centred on zero).
 
-use super::{caption_style, err, tick, DrawResult, Figure, FAMILY, LABEL, TICK};
+use super::{caption_style, err, tick_on, DrawResult, Figure, FAMILY, LABEL, TICK};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::colors::colormaps::ViridisRGB;
@@ -123,8 +123,8 @@ impl Figure for ColorMap {
             .y_desc(&self.y_label)
             .axis_desc_style((FAMILY, LABEL))
             .label_style((FAMILY, TICK))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .x_label_formatter(&|v| tick_on(*v, x1 - x0))
+            .y_label_formatter(&|v| tick_on(*v, y1 - y0))
             .draw()
             .map_err(err)?;
         let mut cells = Vec::new();
@@ -156,7 +156,7 @@ impl Figure for ColorMap {
             .y_desc(&bar_label)
             .axis_desc_style((FAMILY, LABEL))
             .label_style((FAMILY, TICK))
-            .y_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick_on(*v, range.1 - range.0))
             .draw()
             .map_err(err)?;
         let n = 100;

@@ -302,7 +302,7 @@ impl Figure for Lines {
                 .x_labels(x_ticks)
                 .x_label_formatter(&|v| {
                     if !integer_x {
-                        tick(*v)
+                        tick_on(*v, xr.1 - xr.0)
                     } else if (v - v.round()).abs() < 1e-9 {
                         format!("{}", v.round() as i64)
                     } else {
@@ -328,8 +328,8 @@ impl Figure for Lines {
                 .y_desc(&self.y_label)
                 .axis_desc_style((FAMILY, LABEL))
                 .label_style((FAMILY, TICK))
-                .x_label_formatter(&|v| tick(*v))
-                .y_label_formatter(&|v| tick(*v))
+                .x_label_formatter(&|v| tick_on(*v, xr.1 - xr.0))
+                .y_label_formatter(&|v| tick_on(*v, yr.1 - yr.0))
                 .light_line_style(WHITE.mix(0.0))
                 .draw()
                 .map_err(err)?;
@@ -341,11 +341,23 @@ impl Figure for Lines {
     }
 }
 
-/// A tick label: plain for moderate numbers, exponent form otherwise.
+/// A tick label on an axis spanning `span`: a tick within 1e-9 of the
+/// span of zero is 0 (tick positions computed as sums carry round-off),
+/// however small the span (an energy balance of 1e-13 J).
+pub fn tick_on(v: f64, span: f64) -> String {
+    if v.abs() <= 1e-9 * span.abs() {
+        "0".into()
+    } else {
+        tick(v)
+    }
+}
+
+/// A number as a label: plain for moderate numbers, exponent form
+/// otherwise.
 pub fn tick(v: f64) -> String {
     let a = v.abs();
-    // Tick positions computed as sums carry round-off: -1.1e-16 is 0.
-    if a < 1e-12 {
+    // Round-off on a unit scale: -1.1e-16 is 0.
+    if a < 1e-15 {
         "0".into()
     } else if !(1e-3..1e5).contains(&a) {
         // Three significant digits at most, so that neighbouring ticks
@@ -383,7 +395,9 @@ where
     };
     let style = ShapeStyle::from(&color).stroke_width(width);
     let label_style = style;
-    if s.markers {
+    // A lone point draws no line: it gets a marker (a static run's one
+    // state).
+    if s.markers || pts.len() == 1 {
         let anno = chart
             .draw_series(pts.iter().map(|&p| Circle::new(p, 3, color.filled())))
             .map_err(err)?;
@@ -456,5 +470,25 @@ impl Figure for Panels {
             panel.draw(area)?;
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Tick labels read apart (three significant digits in exponent form)
+    /// and a small axis keeps its numbers: zero is snapped relative to the
+    /// axis' span, not absolutely.
+    #[test]
+    fn ticks_read_apart_and_small_axes_keep_their_numbers() {
+        assert_eq!(tick(1.06e6), "1.06e6");
+        assert_eq!(tick(1.08e6), "1.08e6");
+        assert_eq!(tick(1.1e6), "1.1e6");
+        assert_eq!(tick(-8.35e6), "-8.35e6");
+        assert_eq!(tick(0.0025), "0.0025");
+        assert_eq!(tick_on(-5e-14, 3e-13), "-5e-14");
+        assert_eq!(tick_on(-1.1e-16, 1.0), "0");
+        assert_eq!(tick_on(2.0e-23, 3e-13), "0");
     }
 }
