@@ -214,14 +214,14 @@ impl Lines {
             return ((x0, pad_max(x0, x1)), (y0 / 3.0, y1 * 3.0));
         }
         let (mut xr, mut yr) = (pad(x0, x1), pad(y0, y1));
-        if !self.equal_axes {
-            // Room above the data for the legend (upper right; about 19 px
-            // a label), so that it hides no curve.
-            let labels = self.series.iter().filter(|s| !s.label.is_empty()).count();
-            let legend = (19.0 * labels as f64 + 12.0).min(0.6 * plot_h);
-            if labels > 0 {
-                yr.1 += (yr.1 - yr.0) * legend / (plot_h - legend);
-            }
+        // Room above the data for the legend (upper right; about 19 px a
+        // label), so that it hides no curve; with equal axes (shapes) at
+        // most a third of the height, which the shapes keep.
+        let labels = self.series.iter().filter(|s| !s.label.is_empty()).count();
+        let cap = if self.equal_axes { 0.35 } else { 0.6 };
+        let legend = (19.0 * labels as f64 + 12.0).min(cap * plot_h);
+        if labels > 0 {
+            yr.1 += (yr.1 - yr.0) * legend / (plot_h - legend);
         }
         if self.equal_axes {
             // Units per pixel the same on both axes: widen the tighter one.
