@@ -3,7 +3,9 @@
 //! the space-time map of axial stress (Fig. 4) and the residual against the
 //! iteration (Fig. 7).
 
-use crate::plot::{sequential, ColorMap, Lines, Series, PALETTE};
+pub use crate::figures_energy::energy_figure;
+use crate::figures_energy::range_of;
+use crate::plot::{sequential, ColorMap, Lines, Series};
 use crate::results::{by_time, spread, Table};
 use crate::Failure;
 use std::io;
@@ -175,13 +177,68 @@ pub fn centre_line(
 
 pub(crate) const AXES: [&str; 3] = ["x", "y", "z"];
 
-/// Shapes at up to `count` written times, in the plane of motion.
+/// When the cable moves by less than 1 % of its size (an axial impact
+/// moves it by micrometres along its own axis), the axis d (0, 1, 2) along
+/// which its nodes move most from the first written state and the power of
+/// ten that brings that displacement to between 5 % and 50 % of its size.
+pub fn magnification(steps: &[(f64, Vec<NodeRow>)]) -> Option<(usize, f64)> {
+    let first = &steps.first()?.1;
+    let size = (0..3)
+        .map(|c| range_of(&first.iter().map(|n| n.r[c]).collect::<Vec<_>>()))
+        .fold(0.0, f64::max);
+    let mut largest = [0.0f64; 3];
+    for (_, nodes) in steps {
+        for (n, r0) in nodes.iter().zip(first) {
+            for c in 0..3 {
+                largest[c] = largest[c].max((n.r[c] - r0.r[c]).abs());
+            }
+        }
+    }
+    let d = (0..3).max_by(|&i, &j| largest[i].total_cmp(&largest[j]))?;
+    let u = largest[d];
+    if !(u > 0.0 && size > 0.0 && u < 0.01 * size) {
+        return None;
+    }
+    Some((d, 10f64.powf((0.5 * size / u).log10().floor())))
+}
+
+/// Shapes at up to `count` written times, in the plane of motion; a cable
+/// that moves by less than 1 % of its size ([`magnification`]) gets its
+/// displacement along the axis it moves most, magnified by a power of ten
+/// that the axis label and the title state, against its position at the
+/// first written time.
 pub fn shapes_figure(
     steps: &[(f64, Vec<NodeRow>)],
     info: &RunInfo,
     count: usize,
     time_label: &str,
 ) -> Lines {
+    let picks = spread(steps.len(), count);
+    let label = |t: f64| format!("{time_label} = {}", crate::plot::tick(t));
+    if let Some((d, k)) = magnification(steps) {
+        let first = &steps[0].1;
+        let (a, _) = plane_of_motion(first.iter().map(|n| n.r));
+        let factor = crate::plot::tick(k);
+        let mut fig = Lines::new(
+            format!(
+                "{}: shapes, displacement along {} magnified {factor} times",
+                info.title, AXES[d]
+            ),
+            format!("{} at t = {} (m)", AXES[a], crate::plot::tick(steps[0].0)),
+            format!("{} displacement x {factor} (m)", AXES[d]),
+        );
+        for (j, &i) in picks.iter().enumerate() {
+            let (t, nodes) = &steps[i];
+            let pts = nodes
+                .iter()
+                .zip(first)
+                .map(|(n, r0)| (r0.r[a], k * (n.r[d] - r0.r[d])))
+                .collect();
+            fig.series
+                .push(Series::line(label(*t), pts, sequential(j, picks.len())));
+        }
+        return fig;
+    }
     let (a, b) = plane_of_motion(steps.iter().flat_map(|(_, n)| n.iter().map(|r| r.r)));
     let mut fig = Lines::new(
         format!("{}: shapes", info.title),
@@ -189,52 +246,16 @@ pub fn shapes_figure(
         format!("{} (m)", AXES[b]),
     );
     fig.equal_axes = true;
-    let picks = spread(steps.len(), count);
     for (k, &i) in picks.iter().enumerate() {
         let (t, nodes) = &steps[i];
         let line = centre_line(nodes, info.element_lengths.as_deref(), 12);
         fig.series.push(Series::line(
-            format!("{time_label} = {}", crate::plot::tick(*t)),
+            label(*t),
             line.iter().map(|p| (p[a], p[b])).collect(),
             sequential(k, picks.len()),
         ));
     }
     fig
-}
-
-/// Energies against time from `history.csv`.
-pub fn energy_figure(history: &Table, info: &RunInfo) -> io::Result<Lines> {
-    let f = "history.csv";
-    let t = history.column(0);
-    let mut fig = Lines::new(
-        format!("{}: energies", info.title),
-        if info.dynamic { "t (s)" } else { "load factor" },
-        "energy (J)",
-    );
-    let names: &[(&str, &str)] = if info.dynamic {
-        &[
-            ("kinetic", "kinetic"),
-            ("strain", "strain"),
-            ("gravity", "gravity potential"),
-            ("total", "total"),
-        ]
-    } else {
-        &[("strain", "strain"), ("gravity", "gravity potential")]
-    };
-    for (k, (col, label)) in names.iter().enumerate() {
-        let c = history.need(col, f)?;
-        let v = history.column(c);
-        if *col == "gravity" && v.iter().all(|x| *x == 0.0) {
-            continue;
-        }
-        let mut s = Series::line(*label, t.iter().copied().zip(v).collect(), PALETTE[k]);
-        if *col == "total" {
-            s.color = PALETTE[6];
-            s = s.dashed();
-        }
-        fig.series.push(s);
-    }
-    Ok(fig)
 }
 
 /// The space-time map of axial stress from `stress.csv` (columns: written
@@ -364,7 +385,7 @@ pub fn plot_results(dir: &Path) -> io::Result<Vec<String>> {
     let shapes = shapes_figure(&steps, &info, 9, time_label);
     put(&|d, n| crate::plot::save(&shapes, d, n), "shapes")?;
     let history = Table::read(&dir.join("history.csv"))?;
-    let energy = energy_figure(&history, &info)?;
+    let energy = energy_figure(&history, &info, false)?;
     put(&|d, n| crate::plot::save(&energy, d, n), "energy")?;
     let stress = Table::read(&dir.join("stress.csv"))?;
     let map = stress_figure(&stress, &info, 400)?;
@@ -495,15 +516,29 @@ mod tests {
         assert_eq!(last[12], (0.9, -0.3));
         assert_eq!(*last.last().unwrap(), (1.7, -0.9));
         let history = Table::read(&dir.join("history.csv")).unwrap();
-        let energy = energy_figure(&history, &info).unwrap();
-        let labels: Vec<&str> = energy.series.iter().map(|s| s.label.as_str()).collect();
+        let energy = energy_figure(&history, &info, false).unwrap();
+        let labels =
+            |p: &Lines| -> Vec<String> { p.series.iter().map(|s| s.label.clone()).collect() };
+        assert_eq!(energy.panels.len(), 2);
         assert_eq!(
-            labels,
-            ["kinetic", "strain", "total"],
+            labels(&energy.panels[0]),
+            ["kinetic", "strain"],
             "zero gravity left out"
         );
-        assert_eq!(energy.series[0].points, vec![(0.0, 1.5), (0.5, 1.25)]);
-        assert_eq!(energy.series[1].points, vec![(0.0, 0.0), (0.5, 0.25)]);
+        assert_eq!(
+            energy.panels[0].series[0].points,
+            vec![(0.0, 1.5), (0.5, 1.25)]
+        );
+        assert_eq!(
+            energy.panels[0].series[1].points,
+            vec![(0.0, 0.0), (0.5, 0.25)]
+        );
+        // The balance E - E(0) - W: no work columns, so E - E(0).
+        assert_eq!(labels(&energy.panels[1]), ["W = 0: no work written"]);
+        assert_eq!(
+            energy.panels[1].series[0].points,
+            vec![(0.0, 0.0), (0.5, 0.0)]
+        );
         let stress = Table::read(&dir.join("stress.csv")).unwrap();
         let map = stress_figure(&stress, &info, 400).unwrap();
         // MPa; the two samples of the interior node averaged.
@@ -513,6 +548,42 @@ mod tests {
         let written = plot_results(&dir).unwrap();
         assert_eq!(written, ["shapes", "energy", "stress_map"]);
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A cable that moves by less than 1 % of its size (an axial impact)
+    /// is drawn as its displacement along the axis it moves most,
+    /// magnified by a power of ten the axis label states.
+    #[test]
+    fn a_small_displacement_is_magnified_and_the_factor_named() {
+        let at = |u: f64| -> Vec<NodeRow> {
+            (0..3)
+                .map(|i| NodeRow {
+                    r: [i as f64 + u * (i as f64 - 1.0), 0.0, 0.0],
+                    slope: Some([1.0, 0.0, 0.0]),
+                })
+                .collect()
+        };
+        let steps = vec![(0.0, at(0.0)), (1.0, at(3e-4))];
+        assert_eq!(magnification(&steps), Some((0, 1000.0)));
+        let info = RunInfo {
+            title: "axial".into(),
+            dynamic: true,
+            element_lengths: Some(vec![1.0, 1.0]),
+        };
+        let fig = shapes_figure(&steps, &info, 9, "t");
+        assert_eq!(fig.y_label, "x displacement x 1000 (m)");
+        assert!(fig.title.contains("magnified 1000 times"), "{}", fig.title);
+        let last = &fig.series[1].points;
+        for (p, want) in last.iter().zip([(0.0, -0.3), (1.0, 0.0), (2.0, 0.3)]) {
+            assert!(
+                (p.0 - want.0).abs() < 1e-12 && (p.1 - want.1).abs() < 1e-9,
+                "{p:?}"
+            );
+        }
+        // Moving by its own size: drawn as it is.
+        let steps = vec![(0.0, at(0.0)), (1.0, at(0.5))];
+        assert_eq!(magnification(&steps), None);
+        assert!(shapes_figure(&steps, &info, 9, "t").equal_axes);
     }
 
     #[test]

@@ -5,6 +5,7 @@
 pub use stancf_scenario::*;
 
 pub mod figures;
+pub mod figures_energy;
 pub mod figures_system;
 pub mod plot;
 pub mod reproduce;

@@ -150,10 +150,38 @@ fn reproduce_all_writes_the_report() {
         report.matches("**What agrees and what does not.**").count(),
         6
     );
+    // Table 3 compares magnitudes (the paper prints the 10-element
+    // circle's -18.33 mm unsigned), with the sign convention stated once
+    // above the table.
     assert!(
-        report.contains("(paper 65.3100, difference +0.0317)"),
+        report.contains("(paper 65.3100, difference in magnitude +0.0317)"),
         "Table 3 difference"
     );
+    assert!(
+        report.contains("-18.3307 (paper 18.3000, difference in magnitude +0.0307)"),
+        "Table 3 compares magnitudes"
+    );
+    assert_eq!(report.matches("Signs: x_tip is negative").count(), 1);
+    // Every table reads on a page: Table 5 in two parts, no table wider
+    // than ten columns.
+    for heading in ["### Table 5a:", "### Table 5b:"] {
+        assert!(report.contains(heading), "no {heading:?}");
+    }
+    for row in report.lines().filter(|l| l.starts_with('|')) {
+        assert!(row.matches('|').count() - 1 <= 10, "too wide: {row}");
+    }
+    // Every figure has a caption: an italic line below its image.
+    let lines: Vec<&str> = report.lines().collect();
+    for (i, l) in lines
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.starts_with("!["))
+    {
+        assert!(
+            lines[i + 1].is_empty() && lines[i + 2].starts_with("*Fig."),
+            "no caption under {l}"
+        );
+    }
     let links: Vec<&str> = report
         .lines()
         .filter_map(|l| l.strip_prefix("!["))

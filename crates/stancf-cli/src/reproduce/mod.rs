@@ -6,6 +6,7 @@ mod efficiency;
 mod impact;
 mod pendulum;
 mod report;
+mod study_figures;
 
 use crate::output::write_atomic;
 use crate::Failure;
@@ -46,7 +47,7 @@ pub fn reproduce(study: &str, out: &Path) -> Result<(), Failure> {
             "grid-refinement" => efficiency::grid_refinement(&dir)?,
             _ => unreachable!("listed in STUDIES"),
         }
-        let figures = report::study_figures(s, &dir)?;
+        let figures = study_figures::study_figures(s, &dir)?;
         println!(
             "{s}: tables{} in {}",
             if figures.is_empty() {

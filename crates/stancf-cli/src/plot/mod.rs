@@ -21,7 +21,7 @@ use std::io;
 use std::path::Path;
 use std::sync::Once;
 
-static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 const FAMILY: &str = "sans-serif";
 
@@ -214,6 +214,15 @@ impl Lines {
             return ((x0, pad_max(x0, x1)), (y0 / 3.0, y1 * 3.0));
         }
         let (mut xr, mut yr) = (pad(x0, x1), pad(y0, y1));
+        // Room above the data for the legend (upper right; about 19 px a
+        // label), so that it hides no curve; with equal axes (shapes) at
+        // most a third of the height, which the shapes keep.
+        let labels = self.series.iter().filter(|s| !s.label.is_empty()).count();
+        let cap = if self.equal_axes { 0.35 } else { 0.6 };
+        let legend = (19.0 * labels as f64 + 12.0).min(cap * plot_h);
+        if labels > 0 {
+            yr.1 += (yr.1 - yr.0) * legend / (plot_h - legend);
+        }
         if self.equal_axes {
             // Units per pixel the same on both axes: widen the tighter one.
             let (sx, sy) = ((xr.1 - xr.0) / plot_w, (yr.1 - yr.0) / plot_h);
@@ -293,7 +302,7 @@ impl Figure for Lines {
                 .x_labels(x_ticks)
                 .x_label_formatter(&|v| {
                     if !integer_x {
-                        tick(*v)
+                        tick_on(*v, xr.1 - xr.0)
                     } else if (v - v.round()).abs() < 1e-9 {
                         format!("{}", v.round() as i64)
                     } else {
@@ -319,8 +328,8 @@ impl Figure for Lines {
                 .y_desc(&self.y_label)
                 .axis_desc_style((FAMILY, LABEL))
                 .label_style((FAMILY, TICK))
-                .x_label_formatter(&|v| tick(*v))
-                .y_label_formatter(&|v| tick(*v))
+                .x_label_formatter(&|v| tick_on(*v, xr.1 - xr.0))
+                .y_label_formatter(&|v| tick_on(*v, yr.1 - yr.0))
                 .light_line_style(WHITE.mix(0.0))
                 .draw()
                 .map_err(err)?;
@@ -332,14 +341,31 @@ impl Figure for Lines {
     }
 }
 
-/// A tick label: plain for moderate numbers, exponent form otherwise.
+/// A tick label on an axis spanning `span`: a tick within 1e-9 of the
+/// span of zero is 0 (tick positions computed as sums carry round-off),
+/// however small the span (an energy balance of 1e-13 J).
+pub fn tick_on(v: f64, span: f64) -> String {
+    if v.abs() <= 1e-9 * span.abs() {
+        "0".into()
+    } else {
+        tick(v)
+    }
+}
+
+/// A number as a label: plain for moderate numbers, exponent form
+/// otherwise.
 pub fn tick(v: f64) -> String {
     let a = v.abs();
-    // Tick positions computed as sums carry round-off: -1.1e-16 is 0.
-    if a < 1e-12 {
+    // Round-off on a unit scale: -1.1e-16 is 0.
+    if a < 1e-15 {
         "0".into()
     } else if !(1e-3..1e5).contains(&a) {
-        format!("{v:.1e}")
+        // Three significant digits at most, so that neighbouring ticks
+        // (1.06e6, 1.08e6) read apart: "1.1e6" twice would not.
+        let s = format!("{v:.2e}");
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
     } else {
         let s = format!("{v:.4}");
         let s = s.trim_end_matches('0').trim_end_matches('.');
@@ -360,10 +386,18 @@ where
     // Thick polylines get miter joints that overshoot at sharp turns: a
     // dense, jagged series (energies of an impact) is drawn one pixel wide
     // so that no spike appears that is not in the data.
-    let width = if pts.len() > 300 { 1 } else { s.width };
+    // A dashed series keeps its width: it is drawn over another to show
+    // that the two coincide.
+    let width = if pts.len() > 300 && !s.dashed {
+        1
+    } else {
+        s.width
+    };
     let style = ShapeStyle::from(&color).stroke_width(width);
     let label_style = style;
-    if s.markers {
+    // A lone point draws no line: it gets a marker (a static run's one
+    // state).
+    if s.markers || pts.len() == 1 {
         let anno = chart
             .draw_series(pts.iter().map(|&p| Circle::new(p, 3, color.filled())))
             .map_err(err)?;
@@ -414,244 +448,47 @@ where
         .map_err(err)
 }
 
-/// A scalar field over a rectangle of cells, with a colour bar.
+mod bars;
+mod colormap;
+pub use bars::Bars;
+pub use colormap::{diverging, ColorMap};
+
+/// Panels of curves stacked top to bottom, each with its own y axis (the
+/// energies above and the energy balance below, whose scales differ).
 #[derive(Clone, Debug)]
-pub struct ColorMap {
-    pub title: String,
-    pub x_label: String,
-    pub y_label: String,
-    pub value_label: String,
-    /// Cell edges (n + 1 and m + 1 values).
-    pub x_edges: Vec<f64>,
-    pub y_edges: Vec<f64>,
-    /// values[i][j]: cell i along x, j along y; NaN leaves a cell blank.
-    pub values: Vec<Vec<f64>>,
-    /// A diverging map centred on zero (signed quantities such as stress)
-    /// instead of viridis.
-    pub diverging: bool,
-    /// Clip the colour scale at this quantile of |value| when the largest
-    /// value is more than twice it (a few spikes would otherwise wash out
-    /// the map); the colour bar says so.
-    pub clip_quantile: Option<f64>,
+pub struct Panels {
+    pub panels: Vec<Lines>,
 }
 
-/// Blue - white - red for v in [-1, 1].
-pub fn diverging(v: f64) -> RGBColor {
-    let v = v.clamp(-1.0, 1.0);
-    let (lo, hi) = ((33.0, 102.0, 172.0), (178.0, 24.0, 43.0));
-    let mix = |a: f64, b: f64, t: f64| (a + (b - a) * t).round() as u8;
-    if v < 0.0 {
-        let t = -v;
-        RGBColor(
-            mix(255.0, lo.0, t),
-            mix(255.0, lo.1, t),
-            mix(255.0, lo.2, t),
-        )
-    } else {
-        RGBColor(
-            mix(255.0, hi.0, v),
-            mix(255.0, hi.1, v),
-            mix(255.0, hi.2, v),
-        )
+impl Figure for Panels {
+    fn size(&self) -> (u32, u32) {
+        (1000, 380 * self.panels.len().max(1) as u32)
     }
-}
-
-impl ColorMap {
-    /// The colour scale's range, and whether it clips.
-    fn value_range(&self) -> ((f64, f64), bool) {
-        let vals = self
-            .values
-            .iter()
-            .flatten()
-            .copied()
-            .filter(|v| v.is_finite());
-        let (lo, hi) = vals.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
-        if lo > hi {
-            return ((-1.0, 1.0), false);
-        }
-        if self.diverging {
-            let m = lo.abs().max(hi.abs()).max(f64::MIN_POSITIVE);
-            if let Some(q) = self.clip_quantile {
-                let mut mags: Vec<f64> = self
-                    .values
-                    .iter()
-                    .flatten()
-                    .filter(|v| v.is_finite())
-                    .map(|v| v.abs())
-                    .collect();
-                mags.sort_by(|a, b| a.partial_cmp(b).expect("finite"));
-                let p = mags[((mags.len() - 1) as f64 * q).round() as usize];
-                if p > 0.0 && m > 2.0 * p {
-                    return ((-p, p), true);
-                }
-            }
-            ((-m, m), false)
-        } else if hi > lo {
-            ((lo, hi), false)
-        } else {
-            ((lo - 1.0, hi + 1.0), false)
-        }
-    }
-
-    fn color(&self, v: f64, range: (f64, f64)) -> RGBColor {
-        if self.diverging {
-            diverging(v / range.1)
-        } else {
-            ViridisRGB::get_color(((v - range.0) / (range.1 - range.0)).clamp(0.0, 1.0))
-        }
-    }
-}
-
-impl Figure for ColorMap {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
-        let (w, _) = root.dim_in_pixel();
-        let titled = root
-            .titled(&self.title, caption_style(&self.title, w))
-            .map_err(err)?;
-        let (main, bar) = titled.split_horizontally(w - 190);
-        let (range, clipped) = self.value_range();
-        let bar_label = if clipped {
-            format!("{} (clipped)", self.value_label)
-        } else {
-            self.value_label.clone()
-        };
-        let (x0, x1) = (self.x_edges[0], *self.x_edges.last().expect("edges"));
-        let (y0, y1) = (self.y_edges[0], *self.y_edges.last().expect("edges"));
-        let mut chart = ChartBuilder::on(&main)
-            .margin(15)
-            .x_label_area_size(60)
-            .y_label_area_size(90)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc(&self.x_label)
-            .y_desc(&self.y_label)
-            .axis_desc_style((FAMILY, LABEL))
-            .label_style((FAMILY, TICK))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
-            .draw()
-            .map_err(err)?;
-        let mut cells = Vec::new();
-        for (i, col) in self.values.iter().enumerate() {
-            for (j, &v) in col.iter().enumerate() {
-                if v.is_finite() {
-                    cells.push(Rectangle::new(
-                        [
-                            (self.x_edges[i], self.y_edges[j]),
-                            (self.x_edges[i + 1], self.y_edges[j + 1]),
-                        ],
-                        self.color(v, range).filled(),
-                    ));
-                }
-            }
+        let areas = root.split_evenly((self.panels.len().max(1), 1));
+        for (panel, area) in self.panels.iter().zip(areas.iter()) {
+            panel.draw(area)?;
         }
-        chart.draw_series(cells).map_err(err)?;
-        // The colour bar: 100 bands over the value range.
-        let mut cb = ChartBuilder::on(&bar)
-            .margin_top(15)
-            .margin_bottom(75)
-            .margin_right(10)
-            .y_label_area_size(120)
-            .build_cartesian_2d(0.0..1.0, range.0..range.1)
-            .map_err(err)?;
-        cb.configure_mesh()
-            .disable_mesh()
-            .disable_x_axis()
-            .y_desc(&bar_label)
-            .axis_desc_style((FAMILY, LABEL))
-            .label_style((FAMILY, TICK))
-            .y_label_formatter(&|v| tick(*v))
-            .draw()
-            .map_err(err)?;
-        let n = 100;
-        let dv = (range.1 - range.0) / n as f64;
-        cb.draw_series((0..n).map(|k| {
-            let a = range.0 + k as f64 * dv;
-            Rectangle::new(
-                [(0.0, a), (1.0, a + dv)],
-                self.color(a + 0.5 * dv, range).filled(),
-            )
-        }))
-        .map_err(err)?;
         Ok(())
     }
 }
 
-/// Grouped bars: one group per category, one bar per series.
-#[derive(Clone, Debug)]
-pub struct Bars {
-    pub title: String,
-    pub y_label: String,
-    pub categories: Vec<String>,
-    /// (label, one value per category).
-    pub series: Vec<(String, Vec<f64>)>,
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-impl Figure for Bars {
-    fn size(&self) -> (u32, u32) {
-        (1100, 650)
-    }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
-        let n = self.categories.len();
-        let k = self.series.len().max(1);
-        let top = self
-            .series
-            .iter()
-            .flat_map(|s| s.1.iter())
-            .copied()
-            .filter(|v| v.is_finite())
-            .fold(0.0f64, f64::max);
-        let top = if top > 0.0 { 1.15 * top } else { 1.0 };
-        let categories = self.categories.clone();
-        let (w, _) = root.dim_in_pixel();
-        let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, caption_style(&self.title, w))
-            .margin(15)
-            .x_label_area_size(60)
-            .y_label_area_size(90)
-            .build_cartesian_2d(-0.5..n as f64 - 0.5, 0.0..top)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .x_labels(n)
-            .light_line_style(WHITE.mix(0.0))
-            .x_label_formatter(&|v| {
-                let i = v.round();
-                if (v - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < categories.len() {
-                    categories[i as usize].clone()
-                } else {
-                    String::new()
-                }
-            })
-            .y_desc(&self.y_label)
-            .axis_desc_style((FAMILY, LABEL))
-            .label_style((FAMILY, TICK))
-            .y_label_formatter(&|v| tick(*v))
-            .draw()
-            .map_err(err)?;
-        let width = 0.8 / k as f64;
-        for (si, (label, values)) in self.series.iter().enumerate() {
-            let color = PALETTE[si % PALETTE.len()];
-            let bars = values
-                .iter()
-                .enumerate()
-                .filter(|(_, v)| v.is_finite())
-                .map(|(c, &v)| {
-                    let x = c as f64 - 0.4 + si as f64 * width;
-                    Rectangle::new([(x, 0.0), (x + 0.92 * width, v)], color.filled())
-                });
-            chart
-                .draw_series(bars)
-                .map_err(err)?
-                .label(label.clone())
-                .legend(move |(x, y)| {
-                    Rectangle::new([(x, y - 6), (x + 14, y + 6)], color.filled())
-                });
-        }
-        legend(&mut chart)
+    /// Tick labels read apart (three significant digits in exponent form)
+    /// and a small axis keeps its numbers: zero is snapped relative to the
+    /// axis' span, not absolutely.
+    #[test]
+    fn ticks_read_apart_and_small_axes_keep_their_numbers() {
+        assert_eq!(tick(1.06e6), "1.06e6");
+        assert_eq!(tick(1.08e6), "1.08e6");
+        assert_eq!(tick(1.1e6), "1.1e6");
+        assert_eq!(tick(-8.35e6), "-8.35e6");
+        assert_eq!(tick(0.0025), "0.0025");
+        assert_eq!(tick_on(-5e-14, 3e-13), "-5e-14");
+        assert_eq!(tick_on(-1.1e-16, 1.0), "0");
+        assert_eq!(tick_on(2.0e-23, 3e-13), "0");
     }
 }
