@@ -2,7 +2,7 @@
 //! energies and, in a panel of its own, the energy balance, drawn from
 //! `history.csv`.
 
-use crate::figures::RunInfo;
+use crate::figure_data::RunInfo;
 use crate::plot::{Lines, Panels, Series, PALETTE};
 use crate::results::Table;
 use std::io;

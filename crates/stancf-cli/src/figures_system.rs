@@ -3,9 +3,10 @@
 //! tension at every line end over time, and the curvature along every
 //! line (its envelope over the run and its first written state).
 
-use crate::figures::{
-    centre_line, element_lengths_of, energy_figure, plane_of_motion, read_nodes, RunInfo, AXES,
+use crate::figure_data::{
+    centre_line, element_lengths_of, plane_of_motion, read_nodes, NodeRow, RunInfo, AXES,
 };
+use crate::figures_energy::energy_figure;
 use crate::plot::{Bars, Lines, Series, PALETTE};
 use crate::results::{spread, Table};
 use plotters::style::RGBColor;
@@ -16,7 +17,7 @@ use std::path::Path;
 struct LineShapes {
     id: i64,
     element_lengths: Option<Vec<f64>>,
-    steps: Vec<(f64, Vec<crate::figures::NodeRow>)>,
+    steps: Vec<(f64, Vec<NodeRow>)>,
 }
 
 fn bad(path: &Path, what: &str) -> io::Error {
@@ -364,7 +365,6 @@ pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figures::NodeRow;
 
     fn info(dynamic: bool) -> RunInfo {
         RunInfo {

@@ -4,6 +4,7 @@
 
 pub use stancf_scenario::*;
 
+pub mod figure_data;
 pub mod figures;
 pub mod figures_energy;
 pub mod figures_system;

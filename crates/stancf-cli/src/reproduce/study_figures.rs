@@ -1,7 +1,8 @@
 //! The figures of the paper's studies, drawn from the CSV files each study
 //! writes, with their captions for `REPORT.md` (report.rs).
 
-use crate::figures::{stress_figure, RunInfo};
+use crate::figure_data::RunInfo;
+use crate::figures::stress_figure;
 use crate::plot::{save, sequential, Lines, Series, PALETTE};
 use crate::results::{Table, TextTable};
 use crate::Failure;

@@ -108,7 +108,7 @@ pub(super) fn common_summary(
 /// sectioned one's `{"sections": [{"length", "elements"}, ...]}` for
 /// summary.json (docs/method.md §1.6); None for a uniform mesh, which
 /// summary.json does not mention. The command line's figures read it
-/// (`stancf_cli::figures::grading_of`).
+/// (`stancf_cli::figure_data::grading_of`).
 pub(crate) fn grading_json(grading: &stancf::Grading) -> Option<Value> {
     match grading {
         stancf::Grading::Geometric { toward, ratio } if !grading.is_uniform() => {
