@@ -1,9 +1,32 @@
 //! `stancf reproduce`: each study runs, writes its tables and matches the
 //! paper or the reference within the stated tolerance, and `reproduce all`
-//! writes REPORT.md with its figures and verdicts.
+//! writes REPORT.md with its figures and verdicts. The studies' claims
+//! are checked on one run of `reproduce all` (each study's folder is the
+//! one `reproduce <study>` writes), which the tests share; one study is
+//! also run alone.
 
 mod common;
 use common::{check_png, scratch, stancf, text};
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The folder of one `stancf reproduce all`, run by the first test that
+/// asks (the others wait for it), with its standard output.
+fn report() -> &'static (PathBuf, String) {
+    static REPORT: OnceLock<(PathBuf, String)> = OnceLock::new();
+    REPORT.get_or_init(|| {
+        let d = scratch("report");
+        let o = stancf(&["reproduce", "all", "--out", d.to_str().unwrap()]);
+        let (so, se) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{se}");
+        (d, so)
+    })
+}
+
+/// The folder `reproduce all` wrote for `study`.
+fn study(name: &str) -> PathBuf {
+    report().0.join(name)
+}
 
 /// `stancf reproduce circle-bending`: its tables exist, and the SAC-3
 /// 10-element full circle closes within 1e-3 mm.
@@ -39,10 +62,7 @@ fn reproduce_circle_bending() {
 /// the same for 4 SAC-2 elements.
 #[test]
 fn reproduce_pendulum_matches_the_exudyn_reference() {
-    let d = scratch("reproduce-pendulum");
-    let o = stancf(&["reproduce", "pendulum", "--out", d.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
-    let dir = d.join("pendulum");
+    let dir = study("pendulum");
     let csv = std::fs::read_to_string(dir.join("tip_at_image_times.csv")).unwrap();
     let mut checked = 0;
     for line in csv.lines().skip(1) {
@@ -68,10 +88,7 @@ fn reproduce_pendulum_matches_the_exudyn_reference() {
 /// Newton and Broyden, and the orders are printed beside the paper's.
 #[test]
 fn reproduce_grid_refinement_orders() {
-    let d = scratch("reproduce-grid");
-    let o = stancf(&["reproduce", "grid-refinement", "--out", d.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(0), "{:?}", text(&o));
-    let dir = d.join("grid-refinement");
+    let dir = study("grid-refinement");
     let csv = std::fs::read_to_string(dir.join("table6.csv")).unwrap();
     let mut orders = Vec::new();
     for line in csv.lines().skip(1) {
@@ -93,8 +110,7 @@ fn reproduce_grid_refinement_orders() {
 /// timings are ratios and not asserted).
 #[test]
 fn reproduce_efficiency_and_impact_studies() {
-    let d = scratch("reproduce-eff");
-    for (study, files) in [
+    for (name, files) in [
         ("efficiency", vec!["efficiency.csv", "efficiency.md"]),
         (
             "impact-axial",
@@ -109,16 +125,14 @@ fn reproduce_efficiency_and_impact_studies() {
             ],
         ),
     ] {
-        let o = stancf(&["reproduce", study, "--out", d.to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(0), "{study}: {:?}", text(&o));
         for f in files {
-            let p = d.join(study).join(f);
+            let p = study(name).join(f);
             assert!(std::fs::metadata(&p).unwrap().len() > 200, "{p:?}");
         }
     }
-    let csv = std::fs::read_to_string(d.join("efficiency/efficiency.csv")).unwrap();
+    let csv = std::fs::read_to_string(study("efficiency").join("efficiency.csv")).unwrap();
     assert_eq!(csv.lines().count(), 10, "nine cases");
-    let md = std::fs::read_to_string(d.join("impact-axial/impact-axial.md")).unwrap();
+    let md = std::fs::read_to_string(study("impact-axial").join("impact-axial.md")).unwrap();
     assert!(md.contains("23.5 MPa"));
 }
 
@@ -128,10 +142,8 @@ fn reproduce_efficiency_and_impact_studies() {
 /// differences beside ours, and a verdict per study.
 #[test]
 fn reproduce_all_writes_the_report() {
-    let d = scratch("report");
-    let o = stancf(&["reproduce", "all", "--out", d.to_str().unwrap()]);
-    let (so, se) = text(&o);
-    assert_eq!(o.status.code(), Some(0), "{se}");
+    let (d, so) = report();
+    let d: &Path = d;
     assert!(so.contains("report: "), "{so}");
     let report = std::fs::read_to_string(d.join("REPORT.md")).unwrap();
     for heading in [
