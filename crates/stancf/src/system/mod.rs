@@ -30,6 +30,7 @@ mod halving;
 mod layout;
 mod mass;
 mod point_terms;
+mod run;
 mod seed;
 mod simulation;
 mod statics;
@@ -39,6 +40,7 @@ mod stepping;
 pub use balance::balanced_points;
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
+pub use run::{run, RunProgress};
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,
     static_seed_states, straight_between, straight_states,
