@@ -6,10 +6,7 @@
 use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario, Water};
 use crate::Failure;
 use stancf::error::Sig;
-use stancf::quadrature::GaussRule;
-use stancf::stability;
 use stancf::system::{straight_states, System, SystemSimulation, SystemStatics};
-use stancf::TimeScheme;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -305,21 +302,12 @@ fn damping_note(sc: &SystemScenario, i: usize) -> String {
 }
 
 /// The largest P2 step every line is stable with (None for the Galerkin
-/// step or a quadrature without a limit): the smallest over the lines of
-/// (w_max dt)_crit / w_max of its straight start.
+/// step or a quadrature without a limit): the core's
+/// [`stancf::system::stable_step`] (docs/method.md §4.6) with the
+/// scenario's time quadrature.
 pub fn stable_step(sc: &SystemScenario, system: &System) -> Option<f64> {
-    if sc.analysis.time_scheme != TimeScheme::P2 {
-        return None;
-    }
-    let rule = GaussRule::new(sc.analysis.time_points).ok()?;
-    let critical = stability::p2_critical_w_dt(&rule, sc.analysis.time_layers)?;
-    let states = straight_states(system);
-    system
-        .lines()
-        .iter()
-        .zip(&states)
-        .map(|(l, s)| critical / stability::highest_frequency(&l.model, &s.e))
-        .fold(None, |m: Option<f64>, s| Some(m.map_or(s, |m| m.min(s))))
+    let a = &sc.analysis;
+    stancf::system::stable_step(system, a.time_scheme, a.time_points, a.time_layers)
 }
 
 /// "l m long" on a uniform mesh; a graded or sectioned one's shortest and

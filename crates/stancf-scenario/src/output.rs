@@ -148,6 +148,57 @@ impl std::fmt::Display for Num {
     }
 }
 
+/// The times of a dynamic run's rows written as the decimal numbers they
+/// are: the time of step k is t0 + k dt in decimals, `14.7`, not the
+/// accumulated `14.700000000000074` (issue 29). A time is rounded to the
+/// most decimals of the shortest decimal forms of the times the user
+/// wrote (the step, the start, the duration: a shortened last step lands
+/// on the duration), which keeps every time of the run and takes off the
+/// round-off of adding the steps (far below the last decimal kept). Every
+/// result file of single cables and systems writes its times through
+/// [`TimeGrid::time`]; a static run's load factors are written as they are
+/// ([`TimeGrid::default`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TimeGrid {
+    /// 10^decimals; None: times are written as they are.
+    scale: Option<f64>,
+}
+
+/// The most decimals a [`TimeGrid`] rounds to: 10^22 is the largest power
+/// of ten an f64 holds exactly.
+const MAX_TIME_DECIMALS: usize = 22;
+
+impl TimeGrid {
+    /// The grid of the times `given` (the step, the start, the duration,
+    /// as the user wrote them).
+    pub fn of(given: &[f64]) -> Self {
+        let decimals = given.iter().map(|&x| decimals(x)).max().unwrap_or(0);
+        TimeGrid {
+            scale: (decimals <= MAX_TIME_DECIMALS).then(|| 10f64.powi(decimals as i32)),
+        }
+    }
+
+    /// `t` rounded to the grid's decimals: the f64 nearest to the decimal
+    /// number (a whole number over an exact power of ten, divided once);
+    /// `t` itself where the grid keeps every digit of it.
+    pub fn time(&self, t: f64) -> f64 {
+        match self.scale {
+            Some(p) if (t * p).abs() < 2f64.powi(52) => (t * p).round() / p,
+            _ => t,
+        }
+    }
+}
+
+/// The decimals of the shortest decimal form of `x` (0 for a whole or
+/// non-finite number).
+fn decimals(x: f64) -> usize {
+    if !x.is_finite() {
+        return 0;
+    }
+    let text = format!("{}", x.abs());
+    text.split_once('.').map_or(0, |(_, d)| d.len())
+}
+
 /// A JSON number, or null when not finite (JSON has no NaN or infinity).
 pub fn json_num(x: f64) -> serde_json::Value {
     if x.is_finite() {
@@ -178,6 +229,27 @@ mod tests {
             assert_eq!(s.parse::<f64>().unwrap(), x, "{s}");
             assert!(s.len() <= 24, "{s}");
         }
+    }
+
+    #[test]
+    fn a_time_of_k_steps_is_written_as_the_decimal_product_of_k_and_the_step() {
+        let grid = TimeGrid::of(&[0.1, 0.0, 14.7]);
+        let mut t = 0.0;
+        for k in 1..=147 {
+            t += 0.1;
+            let written = Num(grid.time(t)).to_string();
+            assert_eq!(written, format!("{}", k as f64 / 10.0));
+        }
+        assert_eq!(Num(grid.time(t)).to_string(), "14.7");
+        // The shortened last step of 0.0003 s steps over 0.001 s.
+        let grid = TimeGrid::of(&[0.0003, 0.0, 0.001]);
+        assert_eq!(
+            Num(grid.time(0.0009000000000000001 + 1e-4)).to_string(),
+            "0.001"
+        );
+        // Without a grid, and beyond the decimals an f64 holds, times stay.
+        assert_eq!(TimeGrid::default().time(0.1 + 0.2), 0.1 + 0.2);
+        assert_eq!(TimeGrid::of(&[1e-30]).time(0.1 + 0.2), 0.1 + 0.2);
     }
 
     #[test]

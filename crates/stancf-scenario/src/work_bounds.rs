@@ -7,6 +7,7 @@ use crate::moordyn::SupportedOption;
 use crate::scenario::{AnalysisKind, Scenario, SystemScenario, MAX_STEPS};
 use crate::Failure;
 use stancf::error::Sig;
+use stancf::integrator::step_count;
 use std::path::Path;
 
 /// A run is refused when its result files would exceed this many bytes
@@ -95,7 +96,7 @@ pub fn system_work(sc: &SystemScenario) -> SystemWork {
         .max_by_key(|&i| sc.lines[i].elements)
         .unwrap_or(0);
     let steps = match sc.analysis.kind {
-        AnalysisKind::Dynamic => sc.analysis.duration / sc.analysis.time_step,
+        AnalysisKind::Dynamic => step_count(sc.analysis.duration, sc.analysis.time_step) as f64,
         AnalysisKind::Static => 0.0,
     };
     SystemWork {
@@ -220,10 +221,7 @@ const BYTES_PER_VTK_ELEMENT: f64 = 2700.0;
 pub(crate) fn size(sc: &Scenario, vtk: bool) -> Size {
     let a = &sc.analysis;
     let (steps, per_step) = match a.kind {
-        AnalysisKind::Dynamic => (
-            (a.duration / a.time_step - 1e-9).ceil().max(1.0),
-            BYTES_PER_STEP,
-        ),
+        AnalysisKind::Dynamic => (step_count(a.duration, a.time_step) as f64, BYTES_PER_STEP),
         AnalysisKind::Static => (a.load_steps as f64, 0.0),
     };
     // Every k-th step, the first row at t = 0 and the last step (a static

@@ -292,3 +292,26 @@ fn an_interval_too_short_to_step_is_told_so_in_short_numbers() {
     }
     assert_eq!(h.time(), t);
 }
+
+#[test]
+fn a_coupled_system_stepped_to_a_time_ends_there_in_equal_steps() {
+    // dt 0.3 ms over 1 ms: the fewest equal steps no longer than dt, four
+    // of 0.25 ms (§13.3), ending on the time asked for, as a run does.
+    let system = three_to_a_point(4);
+    let step = stancf::StepSettings {
+        time_step: 3e-4,
+        ..settings()
+    };
+    let mut h = CoupledSystem::new(system.clone(), system, StaticSettings::default(), step)
+        .expect("handle");
+    let x: Vec<f64> = h
+        .coupled_points()
+        .iter()
+        .flat_map(|&p| h.system().points()[p].position)
+        .collect();
+    h.initialize(&x, None).expect("initialize");
+    let t0 = h.time();
+    let forces = h.step_to(t0 + 1e-3, &x, None).expect("step");
+    assert_eq!(forces.steps, 4);
+    assert!((h.time() - (t0 + 1e-3)).abs() <= 1e-18, "{}", h.time());
+}

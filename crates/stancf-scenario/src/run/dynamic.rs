@@ -40,6 +40,7 @@ pub(super) fn run_dynamic(
     let damped = sim.model().has_axial_damping();
     let mut writers = Writers::create(place.dest(), constrained, true, opts.vtk, damped)
         .map_err(io_err(place.shown))?;
+    writers.times = super::times_of(&sc.analysis);
     let e0 = sim.energies();
     let first = Row {
         state: sim.state(),
@@ -309,7 +310,10 @@ fn write_dynamic_summary(
     let steps = sim.steps();
     let mut summary = common_summary(sc, model, state, run.wall);
     summary.insert("steps".into(), json!(steps));
-    summary.insert("time".into(), json_num(state.t));
+    summary.insert(
+        "time".into(),
+        json_num(super::times_of(&sc.analysis).time(state.t)),
+    );
     summary.insert("converged".into(), json!(run.failure.is_none()));
     summary.insert("iterations".into(), tally.iterations_json(steps));
     summary.insert(

@@ -226,3 +226,10 @@ fn in_result_folder(
     }
     result.map(|_| ())
 }
+
+/// How the times of a dynamic run of `a` are written: k dt in the
+/// decimals of the step and the duration as the user wrote them (a run
+/// starts at t = 0; see [`crate::output::TimeGrid`]).
+pub(crate) fn times_of(a: &crate::scenario::Analysis) -> crate::output::TimeGrid {
+    crate::output::TimeGrid::of(&[a.time_step, a.duration])
+}

@@ -2,7 +2,7 @@
 //! nodes, stress, reactions, solver diagnostics and ParaView files, each
 //! written to its `.partial` name and committed when complete.
 
-use crate::output::{AtomicFile, Dest, Num};
+use crate::output::{AtomicFile, Dest, Num, TimeGrid};
 use stancf::model::SLOT_R_X;
 use stancf::observe::{stress_samples, Energies, StressSample};
 use stancf::{Model, State};
@@ -70,6 +70,8 @@ pub(crate) struct Writers {
     /// Whether history.csv has the `damping_work` column (a cable with
     /// axial damping).
     damping: bool,
+    /// How times are written (a dynamic run's: k dt in decimals).
+    pub(crate) times: TimeGrid,
 }
 
 /// The wall clock the library's Part A / Part B split is timed with.
@@ -137,6 +139,7 @@ impl Writers {
             },
             samples: Vec::new(),
             damping: with_damping,
+            times: TimeGrid::default(),
         };
         writeln!(
             w.history.writer(),
@@ -188,7 +191,7 @@ impl Writers {
                 format!("non-finite result at t = {}", state.t),
             ));
         }
-        let t = Num(state.t);
+        let t = Num(self.times.time(state.t));
         write!(
             self.history.writer(),
             "{t},{},{},{},{},{},{},{},{},{},{}",
@@ -210,7 +213,7 @@ impl Writers {
         node_rows(self.nodes.writer(), t, model, state)?;
         stress_rows(self.stress.writer(), t, &self.samples)?;
         if let Some(vtk) = self.vtk.as_mut() {
-            vtk.write(model, state)?;
+            vtk.write_lines(self.times.time(state.t), &[(model, state)], None)?;
         }
         if let (Some(file), Some(reactions)) = (self.reactions.as_mut(), row.reactions) {
             let w = file.writer();
@@ -229,7 +232,7 @@ impl Writers {
         let rate = stancf::convergence_rate(row.residuals, row.rate_floor)
             .map(|r| Num(r).to_string())
             .unwrap_or_default();
-        let t = Num(row.t);
+        let t = Num(self.times.time(row.t));
         let (r, inc) = (row.report.residual, row.report.increment);
         writeln!(
             solver.writer(),

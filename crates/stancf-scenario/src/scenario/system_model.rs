@@ -5,9 +5,9 @@
 
 use super::system_parts::{LineType, PointType, SystemPoint, SystemScenario};
 use super::water::Water;
-use stancf::system::{End, Line, Point, PointKind, System};
+use stancf::system::{End, Line, LineSection, Point, PointKind, System};
 use stancf::water::{LineInWater, Morison};
-use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions};
+use stancf::{Cable, Load, Model, ModelError, ModelOptions};
 use std::sync::Arc;
 
 /// The loads a line model is built with.
@@ -21,52 +21,34 @@ enum Loads {
     WetWeight,
 }
 
-/// The factor c in the bending stiffness EI = c w L^3 a line of EI = 0
-/// is given (docs/method.md §11.7): bending then changes the tensions of
-/// a line of weight w L under tension T by about c w L / T, 1e-7 at
-/// T = w L.
-pub const EI_FACTOR: f64 = 1e-7;
+pub use stancf::system::EI_FACTOR;
 
 impl SystemScenario {
     /// The bending stiffness line i is simulated with: its type's EI, or
-    /// for EI = 0 (chain, wire rope) c w L^3 with c = [`EI_FACTOR`] and w
-    /// its (wet) weight per length (without weight, c EA L^2 / 1000).
+    /// for EI = 0 (chain, wire rope) the core's c w L^3
+    /// ([`stancf::system::LineSection::bending_stiffness`],
+    /// docs/method.md §11.7, (M33)) with w its (wet) weight per length.
     pub fn bending_stiffness(&self, line: usize) -> f64 {
         let l = &self.lines[line];
         let t = &self.line_types[l.line_type];
-        if t.ei > 0.0 {
-            return t.ei;
-        }
         let g = self.gravity.iter().map(|g| g * g).sum::<f64>().sqrt();
-        let w = (t.mass_per_length * g * self.wet_weight_fraction(t)).abs();
-        let reference_tension = if w > 0.0 { w * l.length } else { 1e-3 * t.ea };
-        EI_FACTOR * reference_tension * l.length * l.length
+        section(t).bending_stiffness(t.ei, l.length, g, self.wet_weight_fraction(t))
     }
 
     /// The axial damping BA (N s) line i is simulated with: its type's
-    /// `ba` when >= 0; for `ba` < 0, minus a damping ratio zeta as in
-    /// MoorDyn, BA = zeta l sqrt(EA w) with l the line's element length
-    /// (MoorDyn's segment length) and w its mass per length
-    /// (docs/method.md §2.10, (M36)).
+    /// `ba`, or for `ba` < 0 MoorDyn's damping ratio with the line's
+    /// element length ([`stancf::system::LineSection::axial_damping`],
+    /// docs/method.md §2.10, (M36)).
     pub fn axial_damping(&self, line: usize) -> f64 {
         let l = &self.lines[line];
         let t = &self.line_types[l.line_type];
-        if t.ba >= 0.0 {
-            return t.ba;
-        }
-        let segment = l.length / l.elements as f64;
-        section_material(t, 0.0).axial_damping_for_ratio(-t.ba, segment)
+        section(t).axial_damping(t.ba, l.length / l.elements as f64)
     }
 
-    /// The fraction of a line's weight left in water: its weight per
-    /// length m g less the buoyancy rho_w (pi d^2 / 4) g of the water it
-    /// displaces, over m g (1 in air): the weight of a submerged line
-    /// that sets its catenary seed and the EI of EI = 0.
+    /// The fraction of a line's weight left in the scenario's water (1 in
+    /// air; [`stancf::system::LineSection::wet_weight_fraction`]).
     pub fn wet_weight_fraction(&self, t: &LineType) -> f64 {
-        match &self.water {
-            Some(w) => 1.0 - w.density * t.area() / t.mass_per_length,
-            None => 1.0,
-        }
+        section(t).wet_weight_fraction(self.water.as_ref().map(|w| w.density))
     }
 
     /// The library's system: the lines' models (their reference shapes
@@ -158,7 +140,8 @@ impl SystemScenario {
             .with_origin(origin)
             .with_direction(direction)
             .with_grading(l.grading.clone());
-        let material = section_material(t, self.bending_stiffness(i))
+        let material = section(t)
+            .material(self.bending_stiffness(i))
             .with_axial_damping(self.axial_damping(i));
         let options = ModelOptions {
             measures: self.measures,
@@ -242,17 +225,11 @@ fn library_point(
     }
 }
 
-/// The material of a line type's section: A = pi d^2 / 4, E = EA / A,
-/// rho = m / A, I = EI / E, without damping (the line's BA is added by
-/// its model).
-fn section_material(t: &LineType, ei: f64) -> Material {
-    let area = t.area();
-    let youngs_modulus = t.ea / area;
-    Material {
-        youngs_modulus,
-        density: t.mass_per_length / area,
-        area,
-        second_moment: ei / youngs_modulus,
-        axial_damping: 0.0,
+/// The core's section of a line type (A = pi d^2 / 4 of its diameter).
+fn section(t: &LineType) -> LineSection {
+    LineSection {
+        area: t.area(),
+        mass_per_length: t.mass_per_length,
+        ea: t.ea,
     }
 }

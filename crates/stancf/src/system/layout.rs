@@ -99,8 +99,8 @@ impl SystemLayout {
         let mut start = 0;
         for (li, layout) in layouts.iter().enumerate() {
             let line = &system.lines()[li];
-            let last = lines[li].nodes() - 1;
-            let (map, shape) = line_map(layout, &line.ends, [0, last], &point_base, start);
+            let ends = super::end_nodes(lines[li]);
+            let (map, shape) = line_map(layout, &line.ends, ends, &point_base, start);
             start += map.size;
             maps.push(map);
             shapes.push(shape);

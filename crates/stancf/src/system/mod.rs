@@ -28,8 +28,10 @@ mod balance;
 mod end_forces;
 mod halving;
 mod layout;
+mod line_type;
 mod mass;
 mod point_terms;
+mod run;
 mod seed;
 mod simulation;
 mod statics;
@@ -39,6 +41,8 @@ mod stepping;
 pub use balance::balanced_points;
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
+pub use line_type::{stable_step, LineSection, EI_FACTOR};
+pub use run::{run, RunProgress};
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,
     static_seed_states, straight_between, straight_states,
@@ -50,6 +54,21 @@ use crate::constraints::{Constraint, ConstraintKind};
 use crate::error::ModelError;
 use crate::model::Model;
 use crate::motion::{CoupledMotion, MotionTable};
+
+/// The node of line end `end` (0 = A, 1 = B) of a line of `model`: node 0
+/// and the last node (docs/method.md §11.1).
+pub fn end_node(model: &Model, end: usize) -> usize {
+    if end == 0 {
+        0
+    } else {
+        model.nodes() - 1
+    }
+}
+
+/// The nodes of a line's ends A and B ([`end_node`]).
+pub fn end_nodes(model: &Model) -> [usize; 2] {
+    [end_node(model, 0), end_node(model, 1)]
+}
 
 /// What holds a point.
 #[derive(Clone, Debug, PartialEq)]
@@ -150,7 +169,7 @@ impl Line {
     /// (checked by [`System::new`]); the direction need not be a unit
     /// vector.
     pub fn clamped(self, end: usize, direction: [f64; 3]) -> Result<Self, ModelError> {
-        let node = if end == 0 { 0 } else { self.model.nodes() - 1 };
+        let node = end_node(&self.model, end);
         let mut list = self.model.constraints.list.clone();
         list.push(Constraint {
             node,
@@ -205,8 +224,7 @@ impl System {
         let mut out = Vec::with_capacity(lines.len());
         for (li, line) in lines.into_iter().enumerate() {
             let mut list = line.model.constraints.list.clone();
-            let last = line.model.nodes() - 1;
-            for (end, node) in line.ends.iter().zip([0, last]) {
+            for (end, node) in line.ends.iter().zip(end_nodes(&line.model)) {
                 let End::Point(p) = *end else { continue };
                 let Some(point) = points.get(p) else {
                     return Err(ModelError::invalid(
@@ -302,7 +320,7 @@ impl System {
         let attached: Vec<(usize, usize)> = self.attachments(p).collect();
         for (li, end) in attached {
             let model = &mut self.lines[li].model;
-            let node = if end == 0 { 0 } else { model.nodes() - 1 };
+            let node = end_node(model, end);
             let dpn = model.dofs_per_node();
             model
                 .constraints
@@ -375,7 +393,7 @@ impl System {
 /// coupled point (whose motion translates, so the direction stays fixed
 /// in space); a clamp elsewhere is refused.
 fn check_clamps(li: usize, line: &Line, points: &[Point]) -> Result<(), ModelError> {
-    let last = line.model.nodes() - 1;
+    let last = end_node(&line.model, 1);
     for h in &line.model.constraints.directions {
         let end = match h.node {
             0 => 0,

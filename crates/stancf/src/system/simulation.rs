@@ -314,11 +314,7 @@ impl SystemSimulation {
         let attached: Vec<(usize, usize)> = self.system.attachments(p).collect();
         for (li, end) in attached {
             let line = &mut self.lines[li];
-            let node = if end == 0 {
-                0
-            } else {
-                line.model().nodes() - 1
-            };
+            let node = super::end_node(line.model(), end);
             line.set_attached_motion(node, motion.clone())
                 .map_err(|e| e.under(&format!("lines[{li}]")))?;
         }
@@ -368,7 +364,7 @@ fn point_motions(system: &System, lines: &[Simulation]) -> Result<Vec<PointMotio
             let mut at = None;
             for (li, end) in system.attachments(p) {
                 let sim = &lines[li];
-                let node = if end == 0 { 0 } else { sim.model().nodes() - 1 };
+                let node = super::end_node(sim.model(), end);
                 let o = coordinate(sim.model().dofs_per_node(), node, SLOT_R, 0);
                 let s = sim.state();
                 let here = (

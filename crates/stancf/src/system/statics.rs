@@ -392,9 +392,8 @@ impl SystemEquations {
     fn collect_end_forces(&mut self) {
         for (i, line) in self.lines.iter().enumerate() {
             let ends = self.system.lines()[i].ends;
-            let last = line.model.nodes() - 1;
             let dpn = line.model.dofs_per_node();
-            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
+            for (k, (end, node)) in ends.iter().zip(super::end_nodes(&line.model)).enumerate() {
                 let End::Point(p) = *end else {
                     self.end_forces[i][k] = EndForce::default();
                     continue;

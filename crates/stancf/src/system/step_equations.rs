@@ -34,7 +34,6 @@ pub(super) fn system_scales(
         let scales = line.scales();
         let map = &layout.maps[i];
         let mass = line.model().mass_diagonal();
-        let last = line.model().nodes() - 1;
         for (u, &g) in map.global.iter().enumerate() {
             unknown[g] = unknown[g].min(scales.unknown[u]);
             if g < border_start {
@@ -43,7 +42,11 @@ pub(super) fn system_scales(
                 inverse_equation[g] += 1.0 / scales.equation[u];
             }
         }
-        for (end, node) in system.lines()[i].ends.iter().zip([0, last]) {
+        for (end, node) in system.lines()[i]
+            .ends
+            .iter()
+            .zip(super::end_nodes(line.model()))
+        {
             let End::Point(p) = *end else { continue };
             let Some(base) = layout.point_base[p] else {
                 continue;

@@ -148,7 +148,6 @@ impl SystemSimulation {
     pub(super) fn collect_end_forces(&mut self, dt: f64) {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let ends = self.system.lines()[i].ends;
-            let last = line.model().nodes() - 1;
             let free_end = ends
                 .iter()
                 .any(|e| matches!(e, End::Point(p) if self.system.points()[*p].is_free()));
@@ -160,7 +159,7 @@ impl SystemSimulation {
                 line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
             }
             let layout = &self.layout.lines[i];
-            for (k, (end, node)) in ends.iter().zip([0, last]).enumerate() {
+            for (k, (end, node)) in ends.iter().zip(super::end_nodes(line.model())).enumerate() {
                 let End::Point(p) = *end else {
                     self.end_forces[i][k] = EndForce::default();
                     continue;

@@ -70,42 +70,11 @@ pub(super) fn run_system(
     opts: &RunOptions,
     sc: SystemScenario,
 ) -> Result<String, Failure> {
-    let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
-    // The figures of a system are drawn from these files (figures_system).
-    let drawn_from = ["nodes.csv", "node_loads.csv", "tensions.csv", "history.csv"];
-    let missing: Vec<&str> = drawn_from
-        .into_iter()
-        .filter(|n| !sc.output_files.writes(n))
-        .collect();
-    if opts.plot.is_some() && !missing.is_empty() {
-        return Err(Failure::Input(format!(
-            "{}: output.files: --plot draws from {}; the scenario leaves out {}",
-            path.display(),
-            drawn_from.join(", "),
-            missing.join(", ")
-        )));
-    }
-    crate::work_bounds::admit_system(&path.display().to_string(), &sc, opts.allow_large)?;
     let crate::check_system::Prepared {
         system,
         statics: mut static_solve,
         dynamics: mut sim,
-    } = crate::check_system::prepare(path, &sc)?;
-    for n in &sc.notes {
-        eprintln!("warning: {n}");
-    }
-    if sc.analysis.kind == AnalysisKind::Dynamic {
-        if let Some(stable) = crate::check_system::stable_step(&sc, &system) {
-            if sc.analysis.time_step > stable {
-                eprintln!(
-                    "warning: analysis.time_step: {} s is above the stable step of P2 for the \
-                     stiffest line ({} s, see `stancf check`): the run may grow unstable",
-                    Sig(sc.analysis.time_step),
-                    Sig(stable)
-                );
-            }
-        }
-    }
+    } = admit(path, opts, &sc)?;
     let line_ids: Vec<i64> = sc.lines.iter().map(|l| l.id).collect();
     let point_ids: Vec<i64> = sc.points.iter().map(|p| p.id).collect();
     let clock = Instant::now();
@@ -134,6 +103,9 @@ pub(super) fn run_system(
         wet,
     )
     .map_err(io_err(place.shown))?;
+    if sc.analysis.kind == AnalysisKind::Dynamic {
+        writers.times = super::times_of(&sc.analysis);
+    }
     let mut from_static = false;
     if let Some(st) = static_solve.as_mut() {
         solve_statics(st, opts, &mut outcome);
@@ -151,7 +123,10 @@ pub(super) fn run_system(
             writers.write(&row).map_err(io_err(place.shown))?;
             if sim.is_some() {
                 let states = st.line_states();
-                sim = Some(crate::check_system::simulation(&sc, system, states).map_err(input)?);
+                sim = Some(
+                    crate::check_system::simulation(&sc, system, states)
+                        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?,
+                );
                 from_static = true;
             }
         }
@@ -174,6 +149,61 @@ pub(super) fn run_system(
         sim.as_ref(),
         static_solve.as_ref(),
     )?;
+    ending(path, place, opts, &sc, &outcome, wall)
+}
+
+/// Admits the system of `sc` (its files for `--plot`, its work bounds)
+/// and prepares its static solve and simulation; warns of a time step
+/// above the stable one.
+fn admit(
+    path: &Path,
+    opts: &RunOptions,
+    sc: &SystemScenario,
+) -> Result<crate::check_system::Prepared, Failure> {
+    // The figures of a system are drawn from these files (figures_system).
+    let drawn_from = ["nodes.csv", "node_loads.csv", "tensions.csv", "history.csv"];
+    let missing: Vec<&str> = drawn_from
+        .into_iter()
+        .filter(|n| !sc.output_files.writes(n))
+        .collect();
+    if opts.plot.is_some() && !missing.is_empty() {
+        return Err(Failure::Input(format!(
+            "{}: output.files: --plot draws from {}; the scenario leaves out {}",
+            path.display(),
+            drawn_from.join(", "),
+            missing.join(", ")
+        )));
+    }
+    crate::work_bounds::admit_system(&path.display().to_string(), sc, opts.allow_large)?;
+    let prepared = crate::check_system::prepare(path, sc)?;
+    for n in &sc.notes {
+        eprintln!("warning: {n}");
+    }
+    if sc.analysis.kind == AnalysisKind::Dynamic {
+        if let Some(stable) = crate::check_system::stable_step(sc, &prepared.system) {
+            if sc.analysis.time_step > stable {
+                eprintln!(
+                    "warning: analysis.time_step: {} s is above the stable step of P2 for the \
+                     stiffest line ({} s, see `stancf check`): the run may grow unstable",
+                    Sig(sc.analysis.time_step),
+                    Sig(stable)
+                );
+            }
+        }
+    }
+    Ok(prepared)
+}
+
+/// How a run that wrote its files ends: interrupted, failed (with what
+/// was kept), or the text to print.
+fn ending(
+    path: &Path,
+    place: &Place,
+    opts: &RunOptions,
+    sc: &SystemScenario,
+    outcome: &Outcome,
+    wall: f64,
+) -> Result<String, Failure> {
     let shown = place.shown.display();
     if outcome.interrupted {
         return Err(Failure::Interrupted(format!(
@@ -201,7 +231,7 @@ pub(super) fn run_system(
     if opts.quiet {
         return Ok(String::new());
     }
-    Ok(report(&sc, &outcome, wall, place))
+    Ok(report(sc, outcome, wall, place))
 }
 
 /// What a failed time step's message adds on its halvings
@@ -282,7 +312,9 @@ fn solve_statics(st: &mut SystemStatics, opts: &RunOptions, outcome: &mut Outcom
     }
 }
 
-/// Steps to the end of the analysis, writing every `output.every`-th
+/// Steps to the end of the analysis with the core's run of a system
+/// (docs/method.md §11.15: the single cable's step count, the last step
+/// shortened to land on the duration), writing every `output.every`-th
 /// step and the last; a solver failure or a cancel ends it early.
 fn step_through(
     sim: &mut SystemSimulation,
@@ -291,34 +323,34 @@ fn step_through(
     writers: &mut SystemWriters,
     outcome: &mut Outcome,
 ) -> std::io::Result<()> {
-    let a = &sc.analysis;
-    let steps = (a.duration / a.time_step).round().max(1.0) as usize;
+    let times = super::times_of(&sc.analysis);
     let mut last_written = 0;
-    for k in 1..=steps {
-        match sim.step() {
-            Ok(rep) => {
-                outcome.steps = k;
-                outcome.iterations += rep.newton.iterations;
-                outcome.t = sim.time();
-                outcome.record_step_tensions(sim, sc.end_forces);
-                if k % sc.output_every == 0 || k == steps {
-                    let mut row = dynamic_row(sim, Some(sc.end_forces));
-                    row.iterations = rep.newton.iterations;
-                    row.residual = rep.newton.residual;
-                    writers.write(&row)?;
-                    last_written = k;
-                }
+    let mut written = Ok(());
+    let result = stancf::system::run(sim, sc.analysis.duration, |sim, rep, at| {
+        outcome.steps = at.step;
+        outcome.iterations += rep.newton.iterations;
+        outcome.t = times.time(sim.time());
+        outcome.record_step_tensions(sim, sc.end_forces);
+        if at.step % sc.output_every == 0 || at.is_last() {
+            let mut row = dynamic_row(sim, Some(sc.end_forces));
+            row.iterations = rep.newton.iterations;
+            row.residual = rep.newton.residual;
+            written = writers.write(&row);
+            if written.is_err() {
+                return ControlFlow::Break(());
             }
-            Err(f) => {
-                outcome.failure = Some(f);
-                outcome.failed_stepping = true;
-                break;
-            }
+            last_written = at.step;
         }
         if opts.cancelled() {
             outcome.interrupted = true;
-            break;
+            return ControlFlow::Break(());
         }
+        ControlFlow::Continue(())
+    });
+    written?;
+    if let Err(f) = result {
+        outcome.failure = Some(f);
+        outcome.failed_stepping = true;
     }
     if outcome.steps > last_written {
         writers.write(&dynamic_row(sim, Some(sc.end_forces)))?;

@@ -5,7 +5,7 @@
 //! `history.csv`.
 
 use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
-use crate::output::{AtomicFile, Dest, Num};
+use crate::output::{AtomicFile, Dest, Num, TimeGrid};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::{OutputChannel, OutputFiles};
 use stancf::model::SLOT_R;
@@ -60,6 +60,8 @@ pub(super) struct SystemWriters {
     damping: bool,
     /// Whether history.csv has the `water_work` and `seabed_work` columns.
     water: bool,
+    /// How times are written (a dynamic run's: k dt in decimals).
+    pub(super) times: TimeGrid,
 }
 
 impl SystemWriters {
@@ -155,22 +157,51 @@ impl SystemWriters {
             samples: Vec::new(),
             damping: with_damping,
             water: with_water,
+            times: TimeGrid::default(),
         })
     }
 
     /// Writes one moment. Refuses non-finite values (none may reach a
-    /// file).
+    /// file): the lines', the points', the line ends', the energies, the
+    /// works, in this order.
     pub(super) fn write(&mut self, row: &SystemRow) -> std::io::Result<()> {
-        let bad = |what: &str| {
-            std::io::Error::new(
-                std::io::ErrorKind::InvalidData,
-                format!("non-finite {what} at t = {}", row.t),
-            )
-        };
-        let t = Num(row.t);
+        let t = self.times.time(row.t);
+        self.write_lines(row, t)?;
+        self.write_points(row, t)?;
+        self.write_tensions(row, t)?;
+        let [kinetic, strain, gravity] = row.energies;
+        if ![kinetic, strain, gravity, row.residual]
+            .iter()
+            .all(|v| v.is_finite())
+        {
+            return Err(non_finite("energy or residual", row.t));
+        }
+        if let Some(vtk) = self.vtk.as_mut() {
+            vtk.write_lines(t, &row.lines, Some(&self.line_ids))?;
+        }
+        if let Some((file, channels)) = self.channels.as_mut() {
+            let w = file.writer();
+            write!(w, "{}", Num(t))?;
+            for c in channels.iter() {
+                let v = channel_value(c, row);
+                if !v.is_finite() {
+                    return Err(non_finite("output channel", row.t));
+                }
+                write!(w, ",{}", Num(v))?;
+            }
+            writeln!(w)?;
+        }
+        self.write_history(row, t)
+    }
+
+    /// Each line's nodes.csv, stress.csv and node_loads.csv rows at the
+    /// written time `t`.
+    fn write_lines(&mut self, row: &SystemRow, t: f64) -> std::io::Result<()> {
+        let bad = |what: String| non_finite(&what, row.t);
+        let t = Num(t);
         for (i, (model, state)) in row.lines.iter().enumerate() {
             if !state.e.iter().all(|v| v.is_finite()) {
-                return Err(bad(&format!("position of line {}", self.line_ids[i])));
+                return Err(bad(format!("position of line {}", self.line_ids[i])));
             }
             let files = &mut self.lines[i];
             if let Some(stress) = files.stress.as_mut() {
@@ -180,7 +211,7 @@ impl SystemWriters {
                     .iter()
                     .all(|s| s.axial_stress.is_finite() && s.curvature.is_finite())
                 {
-                    return Err(bad(&format!("stress of line {}", self.line_ids[i])));
+                    return Err(bad(format!("stress of line {}", self.line_ids[i])));
                 }
                 stress_rows(stress.writer(), t, &self.samples)?;
             }
@@ -189,12 +220,19 @@ impl SystemWriters {
             }
             if let Some(node_loads) = files.node_loads.as_mut() {
                 node_load_rows(node_loads.writer(), t, model, state)
-                    .map_err(|_| bad(&format!("node loads of line {}", self.line_ids[i])))?;
+                    .map_err(|_| bad(format!("node loads of line {}", self.line_ids[i])))?;
             }
         }
+        Ok(())
+    }
+
+    /// The rows of points.csv at the written time `t`.
+    fn write_points(&mut self, row: &SystemRow, t: f64) -> std::io::Result<()> {
+        let t = Num(t);
         for (p, (x, v, f)) in row.points.iter().enumerate() {
             if ![x, v, f].iter().all(|a| a.iter().all(|c| c.is_finite())) {
-                return Err(bad(&format!("state of point {}", self.point_ids[p])));
+                let what = format!("state of point {}", self.point_ids[p]);
+                return Err(non_finite(&what, row.t));
             }
             let Some(points) = self.points.as_mut() else {
                 continue;
@@ -214,11 +252,18 @@ impl SystemWriters {
                 Num(f[2])
             )?;
         }
+        Ok(())
+    }
+
+    /// The rows of tensions.csv at the written time `t`.
+    fn write_tensions(&mut self, row: &SystemRow, t: f64) -> std::io::Result<()> {
+        let t = Num(t);
         for (i, ends) in row.ends.iter().enumerate() {
             for (name, end) in ["A", "B"].iter().zip(ends) {
                 let Some(e) = end else { continue };
                 if !e.force.iter().all(|c| c.is_finite()) {
-                    return Err(bad(&format!("end force of line {}", self.line_ids[i])));
+                    let what = format!("end force of line {}", self.line_ids[i]);
+                    return Err(non_finite(&what, row.t));
                 }
                 let Some(tensions) = self.tensions.as_mut() else {
                     continue;
@@ -234,40 +279,26 @@ impl SystemWriters {
                 )?;
             }
         }
-        let [kinetic, strain, gravity] = row.energies;
-        if ![kinetic, strain, gravity, row.residual]
-            .iter()
-            .all(|v| v.is_finite())
-        {
-            return Err(bad("energy or residual"));
-        }
-        if let Some(vtk) = self.vtk.as_mut() {
-            vtk.write_lines(row.t, &row.lines, Some(&self.line_ids))?;
-        }
-        if let Some((file, channels)) = self.channels.as_mut() {
-            let w = file.writer();
-            write!(w, "{t}")?;
-            for c in channels.iter() {
-                let v = channel_value(c, row);
-                if !v.is_finite() {
-                    return Err(bad("output channel"));
-                }
-                write!(w, ",{}", Num(v))?;
-            }
-            writeln!(w)?;
-        }
+        Ok(())
+    }
+
+    /// The row of history.csv at the written time `t` (the energies were
+    /// checked finite).
+    fn write_history(&mut self, row: &SystemRow, t: f64) -> std::io::Result<()> {
         if !(row.damping_work.is_finite()
             && row.water_work.is_finite()
             && row.seabed_work.is_finite())
         {
-            return Err(bad("damping, water or seabed work"));
+            return Err(non_finite("damping, water or seabed work", row.t));
         }
         let Some(history) = self.history.as_mut() else {
             return Ok(());
         };
+        let [kinetic, strain, gravity] = row.energies;
         write!(
             history.writer(),
-            "{t},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{}",
+            Num(t),
             Num(kinetic),
             Num(strain),
             Num(gravity),
@@ -305,6 +336,15 @@ impl SystemWriters {
         }
         Ok(())
     }
+}
+
+/// The error of a non-finite value `what` at time `t` (none may reach a
+/// file).
+fn non_finite(what: &str, t: f64) -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::InvalidData,
+        format!("non-finite {what} at t = {t}"),
+    )
 }
 
 /// The rows of `node_loads.csv` at time `t`: per node its material
