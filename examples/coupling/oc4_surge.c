@@ -5,9 +5,10 @@
  * (the same numbers, to the bit).
  *
  *   cargo build --release --workspace
+ *   mkdir -p target/examples
  *   cc -O1 -I crates/stancf-capi/include examples/coupling/oc4_surge.c \
- *      -L target/release -lstancf_c -Wl,-rpath,$PWD/target/release -lm -o oc4_surge
- *   ./oc4_surge examples/oc4-deepcwind-moordyn.txt 40
+ *      -L target/release -lstancf_c -Wl,-rpath,$PWD/target/release -lm -o target/examples/oc4_surge
+ *   target/examples/oc4_surge examples/oc4-deepcwind-moordyn.txt 40
  *
  * The surge moves every fairlead along x by dx(t) = A/2 (1 - cos(2 pi t/T)),
  * A = 5 m, T = 20 s, from rest; the coupling interval is 0.1 s. Prints the

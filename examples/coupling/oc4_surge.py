@@ -2,13 +2,14 @@
 platform surge through stancf.Simulation, as a floating platform's solver
 would, and prints (or plots) the fairlead tensions against time.
 
-    python examples/coupling/oc4_surge.py [duration_s] [--plot tension.png]
+    .venv/bin/python examples/coupling/oc4_surge.py [duration_s] [--plot out/tension.png]
 
 The surge moves every fairlead along x by dx(t) = A/2 (1 - cos(2 pi t/T)),
 A = 5 m, T = 20 s, starting from rest; the coupling interval is 0.1 s.
 Prints the CSV ``t,tension_4,tension_5,tension_6`` (one row per coupling
 step), the same numbers as examples/coupling/oc4_surge.c prints through
-the C library.
+the C library. ``--plot`` needs matplotlib: checked at the start (exit 2
+with how to install it), not after the simulation.
 """
 
 import math
@@ -35,7 +36,7 @@ def surge(deck=DECK, duration=40.0, interval=INTERVAL):
     step."""
     sim = stancf.Simulation(deck)
     n = sim.coupled_dof
-    x0 = np.array(_positions(deck, sim.coupled_ids), dtype=float).ravel()
+    x0 = sim.initial_positions()  # the deck's fairleads, in the order of coupled_ids
     sim.initialize(x0, np.zeros(n))
     times, tensions = [], []
     steps = int(round(duration / interval))
@@ -54,26 +55,31 @@ def surge(deck=DECK, duration=40.0, interval=INTERVAL):
     return np.array(times), np.array(tensions)
 
 
-def _positions(deck, ids):
-    """The positions of points `ids` in the deck's POINTS table."""
-    rows = {}
-    section = None
-    for line in Path(deck).read_text().splitlines():
-        if line.startswith("---"):
-            section = line.strip("- ").upper()
-            continue
-        fields = line.split()
-        if section and section.startswith("POINTS") and fields and fields[0].isdigit():
-            rows[int(fields[0])] = [float(v) for v in fields[2:5]]
-    return [rows[i] for i in ids]
+def pyplot():
+    """matplotlib's pyplot (Agg), or exit 2 saying how to install it: checked
+    before the simulation, not after it."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.stderr.write("oc4_surge.py: --plot needs matplotlib, which this Python (%s) does "
+                         "not have: %s -m pip install matplotlib\n"
+                         % (sys.executable, sys.executable))
+        sys.exit(2)
+    return plt
 
 
 def main(argv):
     plot = None
     if "--plot" in argv:
         i = argv.index("--plot")
+        if i + 1 >= len(argv):
+            sys.stderr.write("oc4_surge.py: --plot needs a file name (--plot tension.png)\n")
+            sys.exit(2)
         plot = argv[i + 1]
         argv = argv[:i] + argv[i + 2:]
+    plt = pyplot() if plot else None
     duration = float(argv[0]) if argv else 40.0
     sim_ids = stancf.Simulation(DECK).coupled_ids
     t, tensions = surge(DECK, duration)
@@ -81,12 +87,6 @@ def main(argv):
     for tk, row in zip(t, tensions):
         print(",".join(repr(float(v)) for v in (tk, *row)))
     if plot:
-        try:
-            import matplotlib
-            matplotlib.use("Agg")
-            import matplotlib.pyplot as plt
-        except ImportError:
-            sys.exit("--plot needs matplotlib (pip install matplotlib)")
         fig, ax = plt.subplots(figsize=(7, 4))
         for k, i in enumerate(sim_ids):
             ax.plot(t, tensions[:, k] / 1e3, label="fairlead %d" % i)
@@ -95,8 +95,8 @@ def main(argv):
         ax.set_title("OC4 DeepCwind: 5 m surge at 20 s")
         ax.legend()
         fig.tight_layout()
+        Path(plot).parent.mkdir(parents=True, exist_ok=True)
         fig.savefig(plot, dpi=120)
-
 
 if __name__ == "__main__":
     main(sys.argv[1:])

@@ -165,10 +165,7 @@ pub unsafe extern "C" fn stancf_coupled_positions(s: *mut StancfSystem, x: *mut 
     guard(|| {
         args::with_system(s, |sys| {
             let h = &sys.coupled.handle;
-            let out = args::room(x, h.coupled_dof(), "x")?;
-            for (k, &p) in h.coupled_points().iter().enumerate() {
-                out[3 * k..3 * k + 3].copy_from_slice(&h.system().points()[p].position);
-            }
+            args::room(x, h.coupled_dof(), "x")?.copy_from_slice(&h.initial_positions());
             Ok(())
         })
     })

@@ -148,6 +148,19 @@ impl PySimulation {
         self.coupled_ids.clone()
     }
 
+    /// The coupled points' positions from the scenario or deck (3 per
+    /// point, in the order of `coupled_ids`): known before `initialize`.
+    #[getter]
+    fn initial_positions(&self) -> PyResult<Vec<f64>> {
+        Ok(self.inner()?.handle.initial_positions())
+    }
+
+    /// Whether `initialize` has run (point and line values exist).
+    #[getter]
+    fn initialized(&self) -> PyResult<bool> {
+        Ok(self.inner()?.handle.simulation().is_some())
+    }
+
     #[getter]
     fn line_ids(&self) -> Vec<i64> {
         self.line_ids.clone()

@@ -192,7 +192,7 @@ def oc4_example():
 def test_the_oc4_example_holds_the_decks_pretension_and_follows_the_surge():
     example = oc4_example()
     sim = stancf.Simulation(example.DECK)
-    x0 = np.ravel(example._positions(example.DECK, sim.coupled_ids))
+    x0 = sim.initial_positions()
     f0 = np.linalg.norm(sim.initialize(x0).reshape(-1, 3), axis=1)
     # The deck's pretension, as `stancf run` prints it (1.106e6 N).
     assert np.allclose(f0, 1.106e6, rtol=2e-3), f0
@@ -204,6 +204,55 @@ def test_the_oc4_example_holds_the_decks_pretension_and_follows_the_surge():
     assert (np.diff(tensions[:, 0]) > 0).all()
     assert (np.diff(tensions[:, 1]) < 0).all()
     assert np.allclose(tensions[:, 1], tensions[:, 2], rtol=1e-12)
+
+
+def deck_points(deck):
+    """The POINTS table of a MoorDyn deck: id -> [x, y, z]."""
+    rows, section = {}, None
+    for line in Path(deck).read_text().splitlines():
+        if line.startswith("---"):
+            section = line.strip("- ").upper()
+            continue
+        fields = line.split()
+        if section and section.startswith("POINTS") and fields and fields[0].isdigit():
+            rows[int(fields[0])] = [float(v) for v in fields[2:5]]
+    return rows
+
+
+def test_coupled_point_positions_are_known_before_initialize():
+    deck = EXAMPLES / "oc4-deepcwind-moordyn.txt"
+    sim = stancf.Simulation(deck)
+    assert sim.coupled_ids == [4, 5, 6]
+    rows = deck_points(deck)
+    x0 = sim.initial_positions()
+    assert x0.shape == (sim.coupled_dof,)
+    assert np.array_equal(x0, np.ravel([rows[i] for i in sim.coupled_ids]))
+    # Before initialize a point or a line is named by the user's id, not
+    # by an internal index, and the message says where the positions are.
+    with pytest.raises(stancf.ScenarioError, match=r"point 4: .*initialize.*initial_positions"):
+        sim.point(4)
+    with pytest.raises(stancf.ScenarioError, match=r"line 1: .*initialize"):
+        sim.line(1)
+    with pytest.raises(KeyError, match="no point 9"):
+        sim.point(9)
+    # A TOML system: its coupled fairlead (point 2) where the file puts it.
+    assert np.array_equal(stancf.Simulation(bridle(10)).initial_positions(), START)
+
+
+def test_the_oc4_example_checks_for_matplotlib_before_simulating(tmp_path):
+    # A matplotlib that cannot be imported, ahead of any installed one.
+    fake = tmp_path / "matplotlib"
+    fake.mkdir()
+    (fake / "__init__.py").write_text("raise ImportError('no matplotlib here')\n")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))
+    started = time.monotonic()
+    run = subprocess.run([sys.executable, str(EXAMPLES / "coupling" / "oc4_surge.py"), "40",
+                          "--plot", str(tmp_path / "tension.png")],
+                         capture_output=True, text=True, env=env)
+    assert run.returncode == 2, run.stderr
+    assert "--plot needs matplotlib" in run.stderr and "pip install matplotlib" in run.stderr
+    # Refused before the 40 s of simulation (about 70 s of wall time).
+    assert run.stdout == "" and time.monotonic() - started < 20
 
 
 def test_the_c_example_prints_the_python_examples_tensions():

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from . import _stancf
-from . import Scenario, SolverError
+from . import Scenario, ScenarioError, SolverError
 
 
 def _seconds(name, t):
@@ -79,6 +79,7 @@ class Simulation:
     (docs/method.md §13; MoorDyn's create/init/step in memory)::
 
         sim = stancf.Simulation("examples/oc4-deepcwind-moordyn.txt")
+        x0 = sim.initial_positions()            # the deck's fairleads (coupled_ids)
         f = sim.initialize(x0)                  # static equilibrium, t = 0
         for k in range(1, 101):
             f = sim.step_to(0.1 * k, x(0.1 * k), xd(0.1 * k))
@@ -97,8 +98,12 @@ class Simulation:
     ``save()`` returns a state that ``restore(state)`` brings back
     exactly, into this Simulation or one of the same scenario (a restart);
     a state of another system raises ValueError and changes nothing.
+    ``initial_positions()`` gives the coupled points' positions from the
+    scenario or deck, before ``initialize``. After ``initialize``,
     ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
-    a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``).
+    a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``);
+    before it they raise :class:`ScenarioError` naming the id, and an
+    unknown id raises KeyError naming it.
 
     One ``step_to`` takes at most ``max_interval_steps`` internal steps
     (100 000 unless set, here or as ``Simulation(..., max_interval_steps=n)``);
@@ -181,17 +186,36 @@ class Simulation:
     def restore(self, state):
         self._sim.restore(state)
 
+    def initial_positions(self):
+        """The coupled points' positions where the scenario or deck puts
+        them (``coupled_dof`` values, m: x, y, z of each point in the order
+        of ``coupled_ids``), known before :meth:`initialize`: the start to
+        give it."""
+        return np.asarray(self._sim.initial_positions, dtype=float)
+
     def line(self, line_id):
         ids = self.line_ids
         if line_id not in ids:
             raise KeyError("no line %r (lines: %s)" % (line_id, ids))
+        self._require_initialized("line %r" % (line_id,))
         return LineState(*self._sim.line_arrays(ids.index(line_id)))
 
     def point(self, point_id):
         ids = self.point_ids
         if point_id not in ids:
             raise KeyError("no point %r (points: %s)" % (point_id, ids))
+        self._require_initialized("point %r" % (point_id,))
         return PointState(*self._sim.point_arrays(ids.index(point_id)))
+
+    def _require_initialized(self, what):
+        """Point and line values exist from :meth:`initialize` on; before,
+        ScenarioError naming the user's id (and where the coupled points'
+        positions are)."""
+        if not self._sim.initialized:
+            raise ScenarioError(
+                "%s: no values before initialize(); initial_positions() gives the coupled "
+                "points' positions from the scenario (in the order of coupled_ids %s)"
+                % (what, self.coupled_ids))
 
     def _call(self, method, *args):
         *head, x, xd = args

@@ -210,6 +210,17 @@ impl CoupledSystem {
         &self.coupled
     }
 
+    /// The coupled points' positions where the system puts them as built
+    /// (the scenario's or deck's, m), 3 per point in the order of the
+    /// coupling arrays: known before [`Self::initialize`], a start the
+    /// coupling code may give it.
+    pub fn initial_positions(&self) -> Vec<f64> {
+        self.coupled
+            .iter()
+            .flat_map(|&p| self.system.points()[p].position)
+            .collect()
+    }
+
     /// Length of the coupling arrays: 3 per coupled point.
     pub fn coupled_dof(&self) -> usize {
         3 * self.coupled.len()

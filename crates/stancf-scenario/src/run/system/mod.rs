@@ -580,13 +580,20 @@ fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &Place) -> S
         },
         wall
     );
+    // Tensions in one form, 6 significant digits in exponent form
+    // (1.10601e6, 9.08050e5), as the cable summaries print their figures;
+    // a static run's are those at equilibrium, a dynamic run's the largest.
+    let what = match sc.analysis.kind {
+        AnalysisKind::Static => "tension at equilibrium",
+        AnalysisKind::Dynamic => "largest tension",
+    };
     for (l, m) in sc.lines.iter().zip(&outcome.max_tension) {
         say!(
             r,
-            "line {}: largest tension {} N at end A, {} N at end B",
+            "line {}: {what} {:.5e} N at end A, {:.5e} N at end B",
             l.id,
-            Sig(m[0]),
-            Sig(m[1])
+            m[0],
+            m[1]
         );
     }
     say!(r, "results in {}", place.shown.display());
