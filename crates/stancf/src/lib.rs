@@ -57,6 +57,7 @@ pub mod solver;
 pub mod stability;
 pub mod statics;
 pub mod system;
+pub mod vec3;
 pub mod water;
 
 pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};

@@ -15,7 +15,8 @@
 //!
 //! which is exact through theta = pi and 2 pi.
 
-use crate::element::{cross, dot, mat3_mul};
+use crate::element::mat3_mul;
+use crate::vec3::{cross, dot};
 
 /// Which part of the relative velocity the drag acts on.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,6 +6,7 @@
 use super::system::{LineType, PointType, SystemScenario};
 use super::water::Water;
 use stancf::system::{End, Line, Point, PointKind, System};
+use stancf::vec3::norm;
 use stancf::water::{LineInWater, Morison};
 use stancf::{Cable, Load, Material, Model, ModelError, ModelOptions};
 use std::sync::Arc;
@@ -200,10 +201,6 @@ fn morison(t: &LineType) -> Morison {
         ca_normal: t.ca,
         ca_axial: t.caax,
     }
-}
-
-fn norm(v: [f64; 3]) -> f64 {
-    v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }
 
 /// The library's point. In water (`fluid`: the library's water) a free

@@ -4,7 +4,8 @@
 //! kappa^2 = |r_x x r_xx|^2 / (|r_x|^2)^p (docs/method.md §2.3, (M5)-(M6);
 //! the second term of eq. (12), §2.4).
 
-use super::{cross, dot, Curvature};
+use super::Curvature;
+use crate::vec3::{cross, dot};
 
 /// Curvature of the centre line from r_x and r_xx (eq. 9 or the exact form).
 pub fn curvature(form: Curvature, rx: &[f64; 3], rxx: &[f64; 3]) -> f64 {

@@ -38,19 +38,9 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             if report.factorizations >= settings.max_iterations {
                 return fail(FailureKind::NotConverged, report);
             }
-            let t0 = now(clock);
-            system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
-            let t1 = now(clock);
-            ws.timing.part_a += t1 - t0;
-            report.factorizations += 1;
-            ws.updates = 0;
-            let ok = ws.lu.factorize().is_ok();
-            ws.timing.part_b += now(clock) - t1;
-            if !ok {
-                ws.factors_valid = false;
-                return fail(FailureKind::SingularJacobian, report);
+            if let Err(kind) = fresh_jacobian(system, x, ws, &mut report, clock) {
+                return fail(kind, report);
             }
-            ws.factors_valid = true;
             refactorize = false;
         }
         if report.iterations >= settings.max_iterations {
@@ -113,40 +103,69 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             r = r_new;
             continue;
         }
-        // y = R_new - R_old; B y; a = (s - B y) / (s . B y) with s = -dx.
-        let t0 = now(clock);
-        for ((y, rn), ro) in
-            ws.y.iter_mut()
-                .zip(ws.residual.iter())
-                .zip(ws.previous.iter())
-        {
-            *y = rn - ro;
-        }
-        ws.by.copy_from_slice(&ws.y);
-        NewtonWorkspace::apply_inverse(
-            &ws.lu,
-            &ws.updates_a,
-            &ws.updates_s,
-            ws.updates,
-            &mut ws.by,
-        );
-        let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
-        let k = ws.updates;
-        if denom.abs() <= f64::EPSILON * 1e3 {
-            refactorize = true;
-        } else {
-            for (((a, s), d), b) in ws.updates_a[k]
-                .iter_mut()
-                .zip(ws.updates_s[k].iter_mut())
-                .zip(ws.dx.iter())
-                .zip(ws.by.iter())
-            {
-                *s = -d;
-                *a = (-d - b) / denom;
-            }
-            ws.updates += 1;
-        }
-        ws.timing.part_b += now(clock) - t0;
+        refactorize = !broyden_update(ws, clock);
         r = r_new;
     }
+}
+
+/// A fresh Jacobian at x, factorized; the stored updates dropped
+/// (docs/method.md §7.3-7.4).
+fn fresh_jacobian<F: Factorization, S: NonlinearSystem<F::Matrix>>(
+    system: &mut S,
+    x: &[f64],
+    ws: &mut NewtonWorkspace<F>,
+    report: &mut NewtonReport,
+    clock: Option<&dyn Clock>,
+) -> Result<(), FailureKind> {
+    let t0 = now(clock);
+    system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
+    let t1 = now(clock);
+    ws.timing.part_a += t1 - t0;
+    report.factorizations += 1;
+    ws.updates = 0;
+    let ok = ws.lu.factorize().is_ok();
+    ws.timing.part_b += now(clock) - t1;
+    if !ok {
+        ws.factors_valid = false;
+        return Err(FailureKind::SingularJacobian);
+    }
+    ws.factors_valid = true;
+    Ok(())
+}
+
+/// Broyden's good update of the inverse (docs/method.md §7.3, eq. 27):
+/// y = R_new - R_old, B y, a = (s - B y) / (s . B y) with s = -dx, stored
+/// as the next rank-one pair. False when s . B y vanishes (a fresh
+/// Jacobian is needed instead).
+fn broyden_update<F: Factorization>(
+    ws: &mut NewtonWorkspace<F>,
+    clock: Option<&dyn Clock>,
+) -> bool {
+    let t0 = now(clock);
+    for ((y, rn), ro) in
+        ws.y.iter_mut()
+            .zip(ws.residual.iter())
+            .zip(ws.previous.iter())
+    {
+        *y = rn - ro;
+    }
+    ws.by.copy_from_slice(&ws.y);
+    NewtonWorkspace::apply_inverse(&ws.lu, &ws.updates_a, &ws.updates_s, ws.updates, &mut ws.by);
+    let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
+    let k = ws.updates;
+    let updated = denom.abs() > f64::EPSILON * 1e3;
+    if updated {
+        for (((a, s), d), b) in ws.updates_a[k]
+            .iter_mut()
+            .zip(ws.updates_s[k].iter_mut())
+            .zip(ws.dx.iter())
+            .zip(ws.by.iter())
+        {
+            *s = -d;
+            *a = (-d - b) / denom;
+        }
+        ws.updates += 1;
+    }
+    ws.timing.part_b += now(clock) - t0;
+    updated
 }

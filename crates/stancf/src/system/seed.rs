@@ -9,6 +9,7 @@ use crate::catenary::touchdown::{
 };
 use crate::catenary::{Catenary, CatenaryLine, LineEnd};
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
+use crate::vec3::norm;
 
 /// A straight state of `model` from a to b, at rest at t = 0:
 /// r_j = a + (b - a) x_j / L, r_x = (b - a) / L, r_xx = 0 (stretched or
@@ -292,8 +293,4 @@ impl Resting {
         let rxx = std::array::from_fn(|k| (p[k] - 2.0 * o[k] + m[k]) / (h * h));
         (r, rx, rxx)
     }
-}
-
-fn norm(v: [f64; 3]) -> f64 {
-    v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }

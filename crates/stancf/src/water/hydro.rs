@@ -26,7 +26,8 @@
 use super::kinematics::{FluidKinematics, Sea};
 use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
-use crate::element::{dot, mat3_mul};
+use crate::element::mat3_mul;
+use crate::vec3::dot;
 use std::sync::Arc;
 
 /// A line type's hydrodynamic coefficients (MoorDyn's LINE TYPES columns
