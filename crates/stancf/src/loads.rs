@@ -15,8 +15,7 @@
 //!
 //! which is exact through theta = pi and 2 pi.
 
-use crate::element::mat3_mul;
-use crate::vec3::{cross, dot};
+use crate::vec3::{cross, dot, mat3_mul};
 
 /// Which part of the relative velocity the drag acts on.
 #[derive(Clone, Copy, Debug, PartialEq)]

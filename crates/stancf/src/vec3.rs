@@ -1,4 +1,4 @@
-//! Small 3-vector kernels, one home for the whole workspace (issue 29).
+//! Small 3-vector (and 3x3) kernels, one home for the whole workspace (issue 29).
 //!
 //! Vectors are plain `[f64; 3]`. Every function takes its vectors by value
 //! or by reference (`Borrow`), so hot loops pass `&r_x` without a copy and
@@ -58,6 +58,12 @@ pub fn scale(s: f64, a: impl Borrow<[f64; 3]>) -> [f64; 3] {
 pub fn normalized(a: impl Borrow<[f64; 3]>) -> [f64; 3] {
     let a = a.borrow();
     scale(1.0 / norm(a), a)
+}
+
+/// The 3x3 product a b (rows of a times columns of b).
+#[inline]
+pub fn mat3_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
 }
 
 #[cfg(test)]

@@ -308,9 +308,3 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
 fn dot_n<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
     a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
 }
-
-/// The 3x3 product a b.
-#[inline]
-pub(crate) fn mat3_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| a[i][k] * b[k][j]).sum()))
-}

@@ -326,7 +326,7 @@ impl Simulation {
         let eliminated = !self.model.constraints.is_empty()
             && (self.layout.method == ConstraintMethod::Elimination
                 || self.model.constraints.has_inactive());
-        let galerkin = self.mass_lu.is_some();
+        let galerkin = self.settings.time_scheme.carries_momentum();
         let works = !self.model.drag.is_empty()
             || self.model.has_axial_damping()
             || self.model.seabed.is_some()
@@ -381,7 +381,7 @@ impl Simulation {
     fn advance(&mut self, dt: f64) {
         let n = self.model.dofs();
         let last = self.layout.layers();
-        let galerkin = self.mass_lu.is_some();
+        let galerkin = self.settings.time_scheme.carries_momentum();
         for g in 0..n {
             let e_new = self.scratch.node_e[last * n + g];
             let v_new = self.scratch.node_v[last * n + g];

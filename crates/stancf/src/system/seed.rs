@@ -2,7 +2,6 @@
 //! between the end points, or the elastic catenary through them, the
 //! seed of a static solve.
 
-use super::balance::balanced_points;
 use super::{End, System};
 use crate::catenary::touchdown::{
     solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
@@ -105,17 +104,10 @@ pub fn straight_states(system: &System) -> Vec<State> {
 /// starts as the closed form resting on the bed instead (§11.12): the
 /// catenary would start it metres inside the bed, where the contact's
 /// forces (and static friction's stiffness) are far from the solution's.
-/// The seed of a static solve is [`static_seed_states`].
+/// The seed of a static solve is [`super::static_seed_states`].
 pub fn catenary_states(system: &System) -> Vec<State> {
     let at_rest: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
     catenary_states_at(system, &at_rest)
-}
-
-/// The seed of a system's static solve (§11.6): [`catenary_states`] with
-/// the free points where these catenaries hold them in equilibrium
-/// ([`balanced_points`], (M32a)).
-pub fn static_seed_states(system: &System) -> Vec<State> {
-    catenary_states_at(system, &balanced_points(system))
 }
 
 /// [`catenary_states`] with point p at `positions[p]`.

@@ -26,8 +26,7 @@
 use super::kinematics::{FluidKinematics, Sea};
 use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
-use crate::element::mat3_mul;
-use crate::vec3::dot;
+use crate::vec3::{dot, mat3_mul};
 use std::sync::Arc;
 
 /// A line type's hydrodynamic coefficients (MoorDyn's LINE TYPES columns

@@ -42,8 +42,7 @@
 //!               Da = (I - a a^T) P_n / |P_n r_x|,  Db = [n]x Da          (W46)
 //! ```
 
-use crate::element::mat3_mul;
-use crate::vec3::{cross, dot};
+use crate::vec3::{cross, dot, mat3_mul};
 
 /// Force per unit length at a point and its derivatives with respect to
 /// the position r, the tangent r_x and the velocity r_dot (rows: force
