@@ -74,7 +74,7 @@ mod tests {
     fn the_right_handed_basis_crosses_and_dots_as_it_should() {
         let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
         assert_eq!(cross(x, y), z);
-        assert_eq!(cross(&y, &z), x);
+        assert_eq!(cross(y, z), x);
         assert_eq!(dot(x, y), 0.0);
         assert_eq!(norm([3.0, 4.0, 12.0]), 13.0);
         assert_eq!(sub([1.0, 2.0, 3.0], [1.0, 1.0, 1.0]), [0.0, 1.0, 2.0]);

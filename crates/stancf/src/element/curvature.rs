@@ -11,7 +11,7 @@ use crate::vec3::{cross, dot};
 pub fn curvature(form: Curvature, rx: &[f64; 3], rxx: &[f64; 3]) -> f64 {
     let c = cross(rx, rxx);
     let g = dot(rx, rx);
-    dot(&c, &c).sqrt() / g.powf(0.5 * form.power() as f64)
+    dot(c, c).sqrt() / g.powf(0.5 * form.power() as f64)
 }
 
 /// Bending energy density `1/2 EI kappa^2` (eq. 12, second term), with its

@@ -368,7 +368,7 @@ impl Model {
                         arm[i] -= center[i];
                     }
                 }
-                let w = crate::vec3::cross(&omega, &arm);
+                let w = crate::vec3::cross(omega, arm);
                 for i in 0..3 {
                     state.v[b + i] += w[i];
                 }

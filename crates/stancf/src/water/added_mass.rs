@@ -179,7 +179,7 @@ impl AddedMass {
             g,
             u,
             bv,
-            q: dot(v, &bv),
+            q: dot(v, bv),
             vux: std::array::from_fn(|i| v[i] - u * x[i]),
         })
     }
