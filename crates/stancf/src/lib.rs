@@ -50,13 +50,16 @@ pub mod linear;
 pub mod loads;
 pub mod model;
 pub mod motion;
+pub mod numbering;
 pub mod observe;
 pub mod quadrature;
+pub mod scheme;
 pub mod shape;
 pub mod solver;
 pub mod stability;
 pub mod statics;
 pub mod system;
+pub mod vec3;
 pub mod water;
 
 pub use constraints::{Constraint, ConstraintKind, ConstraintMethod};

@@ -15,7 +15,7 @@
 //!
 //! which is exact through theta = pi and 2 pi.
 
-use crate::element::{cross, dot, mat3_mul};
+use crate::vec3::{cross, dot, mat3_mul};
 
 /// Which part of the relative velocity the drag acts on.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -103,7 +103,7 @@ impl AirDrag {
                 let kt = 0.5 * tangential_coefficient * self.fluid_density * self.diameter;
                 let len = dot(rx, rx).sqrt();
                 let t = rx.map(|c| c / len);
-                let vt_s = dot(&v, &t);
+                let vt_s = dot(v, t);
                 let vt = t.map(|c| vt_s * c);
                 let vn = [v[0] - vt[0], v[1] - vt[1], v[2] - vt[2]];
                 let (fn_, qn) = quadratic_drag(k, &vn);
@@ -163,7 +163,7 @@ impl EndMoment {
 
     /// The part of r_x normal to the axis.
     fn normal_part(&self, rx: &[f64; 3]) -> [f64; 3] {
-        let a = dot(rx, &self.axis);
+        let a = dot(rx, self.axis);
         [
             rx[0] - a * self.axis[0],
             rx[1] - a * self.axis[1],
@@ -176,8 +176,8 @@ impl EndMoment {
     pub fn generalized_force(&self, rx: &[f64; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
         let n = &self.axis;
         let p = self.normal_part(rx);
-        let pp = dot(&p, &p);
-        let np = cross(n, &p);
+        let pp = dot(p, p);
+        let np = cross(n, p);
         let m = self.magnitude;
         let q = np.map(|c| m * c / pp);
         // [n]x maps v to n x v.
@@ -197,14 +197,14 @@ impl EndMoment {
     pub fn angle(&self, reference: &[f64; 3], rx: &[f64; 3]) -> f64 {
         let p0 = self.normal_part(reference);
         let p = self.normal_part(rx);
-        dot(&self.axis, &cross(&p0, &p)).atan2(dot(&p0, &p))
+        dot(self.axis, cross(p0, p)).atan2(dot(p0, p))
     }
 
     /// Whether `rx` has a part normal to the axis (a moment about the
     /// tangent itself is a torsion, which a cable cannot carry).
     pub fn acts_on(&self, rx: &[f64; 3]) -> bool {
         let p = self.normal_part(rx);
-        dot(&p, &p) > 1e-12 * dot(rx, rx)
+        dot(p, p) > 1e-12 * dot(rx, rx)
     }
 }
 

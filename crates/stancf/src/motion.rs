@@ -14,11 +14,12 @@
 //! (K1)-(K2), docs/method.md §13.2): every consumer evaluates a motion
 //! through [`CoupledMotion::state_at`] and [`CoordinateMotion`].
 
+mod coordinate;
 mod interval;
 
+pub use coordinate::{ramp_factor, CoordinateMotion, HarmonicMotion, Oscillation};
 pub use interval::{IntervalMotion, MotionInterval};
 
-use crate::constraints::{CoordinateMotion, Oscillation};
 use crate::error::ModelError;
 use std::sync::Arc;
 

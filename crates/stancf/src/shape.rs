@@ -40,32 +40,51 @@ impl<const NS: usize> SpatialShape<NS> {
     }
 }
 
-/// Cubic Hermite interpolation in space, eq. (4): coordinates
-/// `[r(0), r_x(0), r(l), r_x(l)]` (SAC-2).
-pub fn cubic_hermite(xi: f64, l: f64) -> SpatialShape<4> {
+/// The cubic Hermite basis on an interval of length h, the one kernel
+/// behind eq. (4) in space, eq. (6) in time (docs/method.md §1.2, §1.4,
+/// (M1)), a tabulated motion's interval and the step's predictor (§4.8).
+/// With s = xi in [0, 1] for `[q(0), q'(0), q(h), q'(h)]`:
+///
+/// ```text
+///   H1 = 1 - 3 s^2 + 2 s^3      H2 = h (s - 2 s^2 + s^3)
+///   H3 = 3 s^2 - 2 s^3          H4 = h (-s^2 + s^3)
+/// ```
+///
+/// Returns `[H, dH/dx, d2H/dx2]` with x = s h (the slope functions carry h,
+/// so every coordinate keeps its physical meaning; h = 1 gives the basis
+/// in s itself, bit for bit).
+#[inline]
+pub fn hermite3(xi: f64, h: f64) -> [[f64; 4]; 3] {
     let x = xi;
     let x2 = x * x;
     let x3 = x2 * x;
-    SpatialShape {
-        n: [
+    [
+        [
             1.0 - 3.0 * x2 + 2.0 * x3,
-            l * (x - 2.0 * x2 + x3),
+            h * (x - 2.0 * x2 + x3),
             3.0 * x2 - 2.0 * x3,
-            l * (-x2 + x3),
+            h * (-x2 + x3),
         ],
-        n_x: [
-            (-6.0 * x + 6.0 * x2) / l,
+        [
+            (-6.0 * x + 6.0 * x2) / h,
             1.0 - 4.0 * x + 3.0 * x2,
-            (6.0 * x - 6.0 * x2) / l,
+            (6.0 * x - 6.0 * x2) / h,
             -2.0 * x + 3.0 * x2,
         ],
-        n_xx: [
-            (-6.0 + 12.0 * x) / (l * l),
-            (-4.0 + 6.0 * x) / l,
-            (6.0 - 12.0 * x) / (l * l),
-            (-2.0 + 6.0 * x) / l,
+        [
+            (-6.0 + 12.0 * x) / (h * h),
+            (-4.0 + 6.0 * x) / h,
+            (6.0 - 12.0 * x) / (h * h),
+            (-2.0 + 6.0 * x) / h,
         ],
-    }
+    ]
+}
+
+/// Cubic Hermite interpolation in space, eq. (4): coordinates
+/// `[r(0), r_x(0), r(l), r_x(l)]` (SAC-2), the basis of [`hermite3`].
+pub fn cubic_hermite(xi: f64, l: f64) -> SpatialShape<4> {
+    let [n, n_x, n_xx] = hermite3(xi, l);
+    SpatialShape { n, n_x, n_xx }
 }
 
 /// Quintic Hermite interpolation in space, eq. (5): coordinates
@@ -114,25 +133,11 @@ pub struct TimeShape {
     pub t_dot: [f64; 4],
 }
 
-/// Evaluates eq. (6) at tau = (t - t_a) / dt.
+/// Evaluates eq. (6) at tau = (t - t_a) / dt: the basis of [`hermite3`]
+/// over the slab.
 pub fn time_hermite(tau: f64, dt: f64) -> TimeShape {
-    let s = tau;
-    let s2 = s * s;
-    let s3 = s2 * s;
-    TimeShape {
-        t: [
-            1.0 - 3.0 * s2 + 2.0 * s3,
-            dt * (s - 2.0 * s2 + s3),
-            3.0 * s2 - 2.0 * s3,
-            dt * (-s2 + s3),
-        ],
-        t_dot: [
-            (-6.0 * s + 6.0 * s2) / dt,
-            1.0 - 4.0 * s + 3.0 * s2,
-            (6.0 * s - 6.0 * s2) / dt,
-            -2.0 * s + 3.0 * s2,
-        ],
-    }
+    let [t, t_dot, _] = hermite3(tau, dt);
+    TimeShape { t, t_dot }
 }
 
 #[cfg(test)]

@@ -544,10 +544,8 @@ fn axial_impact_peak_stress_converges_to_rho_c_v0() {
         let x = model.node_coordinate(j);
         let o = j * dpn;
         let bump = |xi: f64| {
-            (
-                1.0 - 3.0 * xi * xi + 2.0 * xi.powi(3),
-                (-6.0 * xi + 6.0 * xi * xi) / width,
-            )
+            let [n, n_x, _] = stancf::shape::hermite3(xi, width);
+            (n[0], n_x[0])
         };
         if x <= width + 1e-12 {
             let (h, dh) = bump(x / width);

@@ -182,10 +182,8 @@ fn refined_peak() -> Result<f64, Failure> {
     for j in 0..model.nodes() {
         let x = model.node_coordinate(j);
         let bump = |xi: f64| {
-            (
-                1.0 - 3.0 * xi * xi + 2.0 * xi.powi(3),
-                (-6.0 * xi + 6.0 * xi * xi) / width,
-            )
+            let [n, n_x, _] = stancf::shape::hermite3(xi, width);
+            (n[0], n_x[0])
         };
         if x <= width + 1e-12 {
             let (h, dh) = bump(x / width);

@@ -6,6 +6,7 @@
 use super::system_parts::{LineType, PointType, SystemPoint, SystemScenario};
 use super::water::Water;
 use stancf::system::{End, Line, LineSection, Point, PointKind, System};
+use stancf::vec3::norm;
 use stancf::water::{LineInWater, Morison};
 use stancf::{Cable, Load, Model, ModelError, ModelOptions};
 use std::sync::Arc;
@@ -183,10 +184,6 @@ fn morison(t: &LineType) -> Morison {
         ca_normal: t.ca_normal,
         ca_axial: t.ca_axial,
     }
-}
-
-fn norm(v: [f64; 3]) -> f64 {
-    v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }
 
 /// The library's point. In water (`fluid`: the library's water) a free

@@ -159,7 +159,8 @@ mod profile;
 mod solve;
 pub mod touchdown;
 
-use profile::{any_perpendicular, dot, norm, scale, sub};
+use crate::vec3::{dot, norm, scale, sub};
+use profile::any_perpendicular;
 use solve::{solve_hanging, straight_profile, vertical_profile};
 
 /// The line: unstretched length (m), weight per unstretched length along

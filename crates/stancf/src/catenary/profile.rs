@@ -4,6 +4,7 @@
 //! the cancellation-free forms (C5); small vector helpers.
 
 use super::{Catenary, LineEnd, Profile};
+use crate::vec3::{norm, scale, sub};
 
 impl Catenary {
     /// The effective tension T(s) (N) at unstretched arc length s.
@@ -166,22 +167,6 @@ fn asinh_over_argument(y: f64) -> f64 {
     } else {
         y.asinh() / y
     }
-}
-
-pub(super) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-pub(super) fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
-
-pub(super) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    std::array::from_fn(|i| a[i] - b[i])
-}
-
-pub(super) fn scale(factor: f64, a: [f64; 3]) -> [f64; 3] {
-    a.map(|c| factor * c)
 }
 
 /// A unit vector perpendicular to the unit vector `axis`.

@@ -2,6 +2,7 @@
 //! n_1 . r_x = n_2 . r_x = 0 (docs/method.md §6.10, (M41)-(M42)).
 
 use crate::error::ModelError;
+use crate::vec3::{cross, dot, normalized, scale, sub};
 
 /// r_x of `node` held parallel to `direction` by n . r_x = 0 for both
 /// `normals` (docs/method.md §6.10, (M41)).
@@ -32,7 +33,7 @@ impl DirectionHold {
             .expect("3 axes");
         let mut e = [0.0; 3];
         e[k] = 1.0;
-        let n1 = normalized(sub(e, scale(d, dot(d, e))));
+        let n1 = normalized(sub(e, scale(dot(d, e), d)));
         let n2 = cross(d, n1);
         Ok(DirectionHold {
             node,
@@ -47,28 +48,4 @@ impl DirectionHold {
     pub fn moment(r_x: [f64; 3], q: [f64; 3]) -> [f64; 3] {
         cross(r_x, q)
     }
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
-    a.map(|c| c * s)
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn normalized(a: [f64; 3]) -> [f64; 3] {
-    scale(a, 1.0 / dot(a, a).sqrt())
 }

@@ -4,13 +4,14 @@
 //! kappa^2 = |r_x x r_xx|^2 / (|r_x|^2)^p (docs/method.md §2.3, (M5)-(M6);
 //! the second term of eq. (12), §2.4).
 
-use super::{cross, dot, Curvature};
+use super::Curvature;
+use crate::vec3::{cross, dot};
 
 /// Curvature of the centre line from r_x and r_xx (eq. 9 or the exact form).
 pub fn curvature(form: Curvature, rx: &[f64; 3], rxx: &[f64; 3]) -> f64 {
     let c = cross(rx, rxx);
     let g = dot(rx, rx);
-    dot(&c, &c).sqrt() / g.powf(0.5 * form.power() as f64)
+    dot(c, c).sqrt() / g.powf(0.5 * form.power() as f64)
 }
 
 /// Bending energy density `1/2 EI kappa^2` (eq. 12, second term), with its

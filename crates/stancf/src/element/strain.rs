@@ -4,7 +4,8 @@
 //! Green strain is the paper's; engineering strain is as in Exudyn and
 //! MoorDyn.
 
-use super::{dot, AxialStrain};
+use super::AxialStrain;
+use crate::vec3::dot;
 
 /// Axial strain and its first two derivatives with respect to r_x.
 pub fn axial_strain(measure: AxialStrain, rx: &[f64; 3]) -> f64 {

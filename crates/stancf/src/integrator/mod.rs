@@ -22,6 +22,7 @@ mod setup;
 mod step;
 mod watchdog;
 
+pub use crate::scheme::TimeScheme;
 pub use run::{run, step_count};
 pub use setup::step_unknowns;
 pub use watchdog::{energy_resolution, model_energy_scale, EnergyWatch, ENERGY_GROWTH_RATIO};
@@ -54,20 +55,6 @@ pub struct StepSettings {
     /// ([`Model::reduce_to_plane`]): the same motion, a third fewer
     /// unknowns.
     pub planar_reduction: bool,
-}
-
-/// Which equations a step solves (docs/method.md §4.2-4.3 for P2, §5 for
-/// the Galerkin step).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum TimeScheme {
-    /// Hamilton's law with the P2 formula, eq. (22): conditionally stable,
-    /// fourth order.
-    #[default]
-    P2,
-    /// The Galerkin variational integrator on the cubic slab: with 3 Gauss
-    /// points in time the 3-stage Gauss-Legendre method, unconditionally
-    /// stable, sixth order, symplectic; one layer per step.
-    Galerkin,
 }
 
 impl Default for StepSettings {

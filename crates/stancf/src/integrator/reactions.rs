@@ -27,7 +27,7 @@ impl Simulation {
                         None => -self.scratch.reaction_rows[s * n + g],
                     };
                 }
-                if self.mass_lu.is_some() {
+                if self.settings.time_scheme.carries_momentum() {
                     // Galerkin: the end part, p_b - dA/de_b with p_b = M v_b.
                     impulse += self.mass_v[g] - self.scratch.end_momentum[g];
                 }

@@ -1,8 +1,8 @@
 //! Building a [`Simulation`], and the checks it shares with
 //! [`step_unknowns`], which counts a step's unknowns without building one.
 
-use super::{Simulation, StepSettings, TimeScheme, Undo};
-use crate::assembly::{AssemblyScratch, Scales, Scheme, SlabLayout, StepStart};
+use super::{Simulation, StepSettings, Undo};
+use crate::assembly::{AssemblyScratch, Scales, SlabLayout, StepStart};
 use crate::band::BandLu;
 use crate::constraints::ConstraintMethod;
 use crate::element::TimeSlab;
@@ -45,7 +45,7 @@ impl Simulation {
         check_initial_state(&model, &initial)?;
         model.constraints.check_direction_route(
             settings.constraint_method,
-            settings.time_scheme == TimeScheme::Galerkin,
+            settings.time_scheme.carries_momentum(),
         )?;
         let n = model.dofs();
         let mut initial = initial;
@@ -55,10 +55,7 @@ impl Simulation {
             model.reduce_to_plane(&initial);
         }
         let layers = settings.time_layers;
-        let scheme = match settings.time_scheme {
-            TimeScheme::P2 => Scheme::P2 { layers },
-            TimeScheme::Galerkin => Scheme::Galerkin,
-        };
+        let scheme = settings.time_scheme.layout(layers);
         let layout = SlabLayout::new(&model, scheme, settings.constraint_method);
         let h = dt / layers as f64;
         let slab = TimeSlab::new(h, &time_rule);
@@ -82,7 +79,7 @@ impl Simulation {
             .collect();
         let mut momentum = vec![0.0; n];
         model.momentum(&initial.e, &initial.v, &mut momentum);
-        let mass_lu = if scheme == Scheme::Galerkin {
+        let mass_lu = if settings.time_scheme.carries_momentum() {
             Some(constrained_mass_lu(&model, &initial.e)?)
         } else {
             None
@@ -194,7 +191,7 @@ fn check_settings(settings: &StepSettings) -> Result<GaussRule, ModelError> {
         ));
     }
     let layers = settings.time_layers;
-    if settings.time_scheme == TimeScheme::Galerkin && layers != 1 {
+    if !settings.time_scheme.layers_allowed() && layers != 1 {
         return Err(ModelError::invalid(
             "analysis.time_layers",
             format!(
@@ -273,10 +270,7 @@ pub fn step_unknowns(
     // Model::reduce_to_plane holds the z coordinates, g = 2 mod 3.
     let reduces = settings.planar_reduction && model.planar_coordinates(&state).is_some();
     let planar = reduces || model.constraints.has_inactive();
-    let slots = match settings.time_scheme {
-        TimeScheme::P2 => 2 * settings.time_layers,
-        TimeScheme::Galerkin => 3,
-    };
+    let slots = settings.time_scheme.slots(settings.time_layers);
     let elimination = settings.constraint_method == ConstraintMethod::Elimination;
     let held = |g: usize| model.constraints.is_inactive(g) || (reduces && g % 3 == 2);
     let mut size = 0;

@@ -47,21 +47,9 @@ impl Simulation {
         let extrapolate = self.last_dt == Some(dt);
         for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
             let tau = h * i as f64;
-            // Hermite basis of the last step at s = 1 + tau / dt.
-            let s = 1.0 + tau / dt;
-            let (s2, s3) = (s * s, s * s * s);
-            let value = [
-                2.0 * s3 - 3.0 * s2 + 1.0,
-                s3 - 2.0 * s2 + s,
-                -2.0 * s3 + 3.0 * s2,
-                s3 - s2,
-            ];
-            let slope = [
-                6.0 * s2 - 6.0 * s,
-                3.0 * s2 - 4.0 * s + 1.0,
-                -6.0 * s2 + 6.0 * s,
-                3.0 * s2 - 2.0 * s,
-            ];
+            // Hermite basis of the last step at s = 1 + tau / dt (eq. 6 in
+            // s, slopes per unit s).
+            let [value, slope, _] = crate::shape::hermite3(1.0 + tau / dt, 1.0);
             for g in 0..n {
                 let Some(u) = self.layout.unknown_at(slot, g) else {
                     continue;
@@ -338,7 +326,7 @@ impl Simulation {
         let eliminated = !self.model.constraints.is_empty()
             && (self.layout.method == ConstraintMethod::Elimination
                 || self.model.constraints.has_inactive());
-        let galerkin = self.mass_lu.is_some();
+        let galerkin = self.settings.time_scheme.carries_momentum();
         let works = !self.model.drag.is_empty()
             || self.model.has_axial_damping()
             || self.model.seabed.is_some()
@@ -393,7 +381,7 @@ impl Simulation {
     fn advance(&mut self, dt: f64) {
         let n = self.model.dofs();
         let last = self.layout.layers();
-        let galerkin = self.mass_lu.is_some();
+        let galerkin = self.settings.time_scheme.carries_momentum();
         for g in 0..n {
             let e_new = self.scratch.node_e[last * n + g];
             let v_new = self.scratch.node_v[last * n + g];

@@ -102,7 +102,7 @@ pub(super) fn seabed(loads: &[Load]) -> Result<Option<crate::water::SeabedContac
         let bed = &c.seabed;
         check_vector(&format!("{k}.point"), &bed.point)?;
         check_vector(&format!("{k}.normal"), &bed.normal)?;
-        let norm = crate::element::dot(&bed.normal, &bed.normal).sqrt();
+        let norm = crate::vec3::dot(bed.normal, bed.normal).sqrt();
         if (norm - 1.0).abs() > 1e-12 {
             return Err(ModelError::invalid(
                 format!("{k}.normal"),

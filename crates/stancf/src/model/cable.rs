@@ -3,37 +3,7 @@
 //! Hermite, nodal r, r_x, r_xx), and its mesh grading (§1.6).
 
 use super::Grading;
-
-/// The two space-time elements of the paper (Table 1).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ElementType {
-    /// Cubic Hermite in space (eq. 4): nodal r, r_x.
-    Sac2,
-    /// Quintic Hermite in space (eq. 5): nodal r, r_x, r_xx.
-    Sac3,
-}
-
-impl ElementType {
-    /// Vector coordinates per node (2 or 3).
-    pub fn vectors_per_node(self) -> usize {
-        match self {
-            ElementType::Sac2 => 2,
-            ElementType::Sac3 => 3,
-        }
-    }
-
-    /// Scalar coordinates per node (6 or 9).
-    pub fn dofs_per_node(self) -> usize {
-        3 * self.vectors_per_node()
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            ElementType::Sac2 => "SAC-2",
-            ElementType::Sac3 => "SAC-3",
-        }
-    }
-}
+use crate::numbering::ElementType;
 
 /// A straight cable in its stress-free reference state.
 #[derive(Clone, Debug, PartialEq)]

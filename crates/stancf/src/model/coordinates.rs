@@ -4,34 +4,8 @@
 //! for the planar reduction (docs/method.md §6.7).
 
 use super::{Load, Model, State};
+use crate::numbering::{coordinate, node_range, SLOT_R};
 use std::ops::Range;
-
-/// Vector slot of the position r in a node's coordinates.
-pub const SLOT_R: usize = 0;
-/// Vector slot of the gradient r_x.
-pub const SLOT_R_X: usize = 1;
-/// Vector slot of the second gradient r_xx (SAC-3 only).
-pub const SLOT_R_XX: usize = 2;
-
-/// Global index of component `component` (x, y, z = 0, 1, 2) of vector
-/// `slot` ([`SLOT_R`], [`SLOT_R_X`], [`SLOT_R_XX`]) of node `node`, with
-/// `dpn` scalar coordinates per node: `node dpn + 3 slot + component`
-/// (docs/method.md §1.1). The one place the numbering is written; every
-/// index of a coordinate is computed here. An element's coordinates are
-/// contiguous from its first node's, so a slot past the node's own
-/// vectors counts on into the next node: element k's vector a (its own
-/// order, 0..NS) is `coordinate(dpn, k, a, i)`, and `coordinate(dpn, k,
-/// SLOT_R, 0)` is the start of element k's slice.
-#[inline]
-pub const fn coordinate(dpn: usize, node: usize, slot: usize, component: usize) -> usize {
-    node * dpn + 3 * slot + component
-}
-
-/// The coordinates of node `node`: `[r, r_x(, r_xx)]`.
-#[inline]
-pub const fn node_range(dpn: usize, node: usize) -> Range<usize> {
-    coordinate(dpn, node, SLOT_R, 0)..coordinate(dpn, node + 1, SLOT_R, 0)
-}
 
 impl Model {
     /// Index of the first coordinate of node j.

@@ -36,9 +36,9 @@ mod material;
 mod quadrature_choice;
 mod validate;
 
+pub use crate::numbering::{coordinate, node_range, ElementType, SLOT_R, SLOT_R_X, SLOT_R_XX};
 pub use applied_loads::Load;
-pub use cable::{Cable, ElementType};
-pub use coordinates::{coordinate, node_range, SLOT_R, SLOT_R_X, SLOT_R_XX};
+pub use cable::Cable;
 pub use grading::{GradedEnd, Grading, MeshSection};
 pub(crate) use mass::gather;
 pub use material::Material;
@@ -368,7 +368,7 @@ impl Model {
                         arm[i] -= center[i];
                     }
                 }
-                let w = crate::element::cross(&omega, &arm);
+                let w = crate::vec3::cross(omega, arm);
                 for i in 0..3 {
                     state.v[b + i] += w[i];
                 }

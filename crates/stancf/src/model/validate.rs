@@ -52,7 +52,7 @@ pub(super) fn cable(cable: Cable) -> Result<Cable, ModelError> {
     cable.grading.check(cable.length, cable.elements)?;
     check_vector("cable.origin", &cable.origin)?;
     check_vector("cable.direction", &cable.direction)?;
-    let norm = crate::element::dot(&cable.direction, &cable.direction).sqrt();
+    let norm = crate::vec3::dot(cable.direction, cable.direction).sqrt();
     if norm == 0.0 {
         return Err(ModelError::invalid(
             "cable.direction",

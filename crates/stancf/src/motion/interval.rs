@@ -43,20 +43,8 @@ impl IntervalMotion {
             let slope = (self.end - self.start) / big_t;
             return (self.start + s * (self.end - self.start), slope);
         };
-        let s2 = s * s;
-        let s3 = s2 * s;
-        let (h00, h10, h01, h11) = (
-            2.0 * s3 - 3.0 * s2 + 1.0,
-            s3 - 2.0 * s2 + s,
-            3.0 * s2 - 2.0 * s3,
-            s3 - s2,
-        );
-        let (d00, d10, d01, d11) = (
-            6.0 * s2 - 6.0 * s,
-            3.0 * s2 - 4.0 * s + 1.0,
-            6.0 * s - 6.0 * s2,
-            3.0 * s2 - 2.0 * s,
-        );
+        // The cubic Hermite basis in s (docs/method.md §1.4, eq. 6).
+        let [[h00, h10, h01, h11], [d00, d10, d01, d11], _] = crate::shape::hermite3(s, 1.0);
         let value = h00 * self.start + big_t * h10 * v0 + h01 * self.end + big_t * h11 * v1;
         let rate = (d00 * self.start + d01 * self.end) / big_t + d10 * v0 + d11 * v1;
         (value, rate)

@@ -38,9 +38,8 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             if report.factorizations >= settings.max_iterations {
                 return fail(FailureKind::NotConverged, report);
             }
-            report.factorizations += 1;
-            if !fresh_jacobian(system, x, ws, clock) {
-                return fail(FailureKind::SingularJacobian, report);
+            if let Err(kind) = fresh_jacobian(system, x, ws, &mut report, clock) {
+                return fail(kind, report);
             }
             refactorize = false;
         }
@@ -104,39 +103,45 @@ pub fn broyden<F: Factorization, S: NonlinearSystem<F::Matrix>>(
             r = r_new;
             continue;
         }
-        let t0 = now(clock);
-        refactorize = !rank_one_update(ws);
-        ws.timing.part_b += now(clock) - t0;
+        refactorize = !broyden_update(ws, clock);
         r = r_new;
     }
 }
 
-/// Evaluates the Jacobian at `x` (with the residual) and factorizes it,
-/// dropping the rank-one updates; false if it is singular (the factors
-/// are then marked invalid).
+/// A fresh Jacobian at x, factorized; the stored updates dropped
+/// (docs/method.md §7.3-7.4).
 fn fresh_jacobian<F: Factorization, S: NonlinearSystem<F::Matrix>>(
     system: &mut S,
     x: &[f64],
     ws: &mut NewtonWorkspace<F>,
+    report: &mut NewtonReport,
     clock: Option<&dyn Clock>,
-) -> bool {
+) -> Result<(), FailureKind> {
     let t0 = now(clock);
     system.evaluate(x, &mut ws.residual, Some(ws.lu.matrix_mut()));
     let t1 = now(clock);
     ws.timing.part_a += t1 - t0;
+    report.factorizations += 1;
     ws.updates = 0;
     let ok = ws.lu.factorize().is_ok();
     ws.timing.part_b += now(clock) - t1;
-    ws.factors_valid = ok;
-    ok
+    if !ok {
+        ws.factors_valid = false;
+        return Err(FailureKind::SingularJacobian);
+    }
+    ws.factors_valid = true;
+    Ok(())
 }
 
-/// Broyden's rank-one update of the inverse, eq. (27) as (M28)
-/// (docs/method.md §7.3): with s = -dx and y = R_new - R_old,
-/// a = (s - B y) / (s . B y), kept as the pair (a, s) so that
-/// B+ = (I + a s^T) B. False when
-/// s . B y is round-off (no update: the caller takes a fresh Jacobian).
-fn rank_one_update<F: Factorization>(ws: &mut NewtonWorkspace<F>) -> bool {
+/// Broyden's good update of the inverse (docs/method.md §7.3, eq. 27):
+/// y = R_new - R_old, B y, a = (s - B y) / (s . B y) with s = -dx, stored
+/// as the next rank-one pair. False when s . B y vanishes (a fresh
+/// Jacobian is needed instead).
+fn broyden_update<F: Factorization>(
+    ws: &mut NewtonWorkspace<F>,
+    clock: Option<&dyn Clock>,
+) -> bool {
+    let t0 = now(clock);
     for ((y, rn), ro) in
         ws.y.iter_mut()
             .zip(ws.residual.iter())
@@ -147,19 +152,20 @@ fn rank_one_update<F: Factorization>(ws: &mut NewtonWorkspace<F>) -> bool {
     ws.by.copy_from_slice(&ws.y);
     NewtonWorkspace::apply_inverse(&ws.lu, &ws.updates_a, &ws.updates_s, ws.updates, &mut ws.by);
     let denom: f64 = ws.dx.iter().zip(ws.by.iter()).map(|(d, b)| -d * b).sum();
-    if denom.abs() <= f64::EPSILON * 1e3 {
-        return false;
-    }
     let k = ws.updates;
-    for (((a, s), d), b) in ws.updates_a[k]
-        .iter_mut()
-        .zip(ws.updates_s[k].iter_mut())
-        .zip(ws.dx.iter())
-        .zip(ws.by.iter())
-    {
-        *s = -d;
-        *a = (-d - b) / denom;
+    let updated = denom.abs() > f64::EPSILON * 1e3;
+    if updated {
+        for (((a, s), d), b) in ws.updates_a[k]
+            .iter_mut()
+            .zip(ws.updates_s[k].iter_mut())
+            .zip(ws.dx.iter())
+            .zip(ws.by.iter())
+        {
+            *s = -d;
+            *a = (-d - b) / denom;
+        }
+        ws.updates += 1;
     }
-    ws.updates += 1;
-    true
+    ws.timing.part_b += now(clock) - t0;
+    updated
 }

@@ -90,25 +90,8 @@ pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
         if report.factorizations >= settings.max_iterations {
             return fail(FailureKind::NotConverged, report);
         }
-        let t1 = now(clock);
-        let next = ws.next.as_mut().expect("made above");
-        if !with_jacobian {
-            system.evaluate(x, &mut ws.residual, Some(next.matrix_mut()));
-        }
-        let t2 = now(clock);
-        ws.timing.part_a += t2 - t1;
-        report.factorizations += 1;
-        let factorized = next.factorize();
-        std::mem::swap(&mut ws.lu, next);
-        if factorized.is_err() {
-            return fail(FailureKind::SingularJacobian, report);
-        }
-        ws.update_with_factors(x);
-        ws.timing.part_b += now(clock) - t2;
-        report.iterations += 1;
-        report.increment = system.increment_norm(&ws.dx);
-        if !report.increment.is_finite() {
-            return fail(FailureKind::NonFinite, report);
+        if let Err(kind) = newton_update(system, x, ws, &mut report, with_jacobian, clock) {
+            return fail(kind, report);
         }
         if r <= tol && report.increment <= tol {
             // The guess was already within the tolerance and the Newton
@@ -122,4 +105,38 @@ pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
         };
         before_update = Some(r);
     }
+}
+
+/// One Newton update (docs/method.md §7.2): the Jacobian at x (unless it
+/// was evaluated with the residual), factorized and swapped into `lu`,
+/// and x <- x - J^-1 R; the increment's norm into the report.
+fn newton_update<F: Factorization, S: NonlinearSystem<F::Matrix>>(
+    system: &mut S,
+    x: &mut [f64],
+    ws: &mut NewtonWorkspace<F>,
+    report: &mut NewtonReport,
+    with_jacobian: bool,
+    clock: Option<&dyn Clock>,
+) -> Result<(), FailureKind> {
+    let t1 = now(clock);
+    let next = ws.next.as_mut().expect("made by newton");
+    if !with_jacobian {
+        system.evaluate(x, &mut ws.residual, Some(next.matrix_mut()));
+    }
+    let t2 = now(clock);
+    ws.timing.part_a += t2 - t1;
+    report.factorizations += 1;
+    let factorized = next.factorize();
+    std::mem::swap(&mut ws.lu, next);
+    if factorized.is_err() {
+        return Err(FailureKind::SingularJacobian);
+    }
+    ws.update_with_factors(x);
+    ws.timing.part_b += now(clock) - t2;
+    report.iterations += 1;
+    report.increment = system.increment_norm(&ws.dx);
+    if !report.increment.is_finite() {
+        return Err(FailureKind::NonFinite);
+    }
+    Ok(())
 }

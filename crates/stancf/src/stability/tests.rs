@@ -1,4 +1,5 @@
-//! The stable step's pieces against closed forms and the P2 limit.
+//! Claims of the stability analysis (docs/method.md §4).
+
 use super::*;
 
 /// The closed form (M20) of docs/method.md §4.5, one layer, 3 Gauss

@@ -24,9 +24,10 @@
 //! weightless lines only, no catenary through its ends), the points
 //! stay where the scenario puts them.
 
-use super::seed::{end_positions_at, seed_shape};
+use super::seed::{catenary_states_at, end_positions_at, seed_shape};
 use super::{End, System};
 use crate::band::BandLu;
+use crate::model::State;
 
 /// Newton iterations on (M32a).
 const MAX_ITERATIONS: usize = 60;
@@ -35,6 +36,13 @@ const TOLERANCE: f64 = 1e-10;
 /// Accepted after the last iteration: |G|_inf below this fraction (the
 /// static solve takes the rest of the way).
 const ACCEPTED: f64 = 1e-6;
+
+/// The seed of a system's static solve (§11.6): [`super::catenary_states`] with
+/// the free points where these catenaries hold them in equilibrium
+/// ([`balanced_points`], (M32a)).
+pub fn static_seed_states(system: &System) -> Vec<State> {
+    catenary_states_at(system, &balanced_points(system))
+}
 
 /// Every point's position at the start of a static solve: the fixed and
 /// coupled points where they are at t = 0, the free points at the

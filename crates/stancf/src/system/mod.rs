@@ -38,14 +38,14 @@ mod statics;
 mod step_equations;
 mod stepping;
 
-pub use balance::balanced_points;
+pub use balance::{balanced_points, static_seed_states};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
 pub use run::{run, RunProgress};
 pub use seed::{
-    catenary_states, catenary_states_at, end_positions, end_positions_at, shaped,
-    static_seed_states, straight_between, straight_states,
+    catenary_states, catenary_states_at, end_positions, end_positions_at, shaped, straight_between,
+    straight_states,
 };
 pub use simulation::{EndForce, SystemSimulation};
 pub use statics::SystemStatics;

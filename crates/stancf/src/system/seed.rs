@@ -2,13 +2,13 @@
 //! between the end points, or the elastic catenary through them, the
 //! seed of a static solve.
 
-use super::balance::balanced_points;
 use super::{End, System};
 use crate::catenary::touchdown::{
     solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
 };
 use crate::catenary::{Catenary, CatenaryLine, LineEnd};
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
+use crate::vec3::norm;
 
 /// A straight state of `model` from a to b, at rest at t = 0:
 /// r_j = a + (b - a) x_j / L, r_x = (b - a) / L, r_xx = 0 (stretched or
@@ -104,17 +104,10 @@ pub fn straight_states(system: &System) -> Vec<State> {
 /// starts as the closed form resting on the bed instead (§11.12): the
 /// catenary would start it metres inside the bed, where the contact's
 /// forces (and static friction's stiffness) are far from the solution's.
-/// The seed of a static solve is [`static_seed_states`].
+/// The seed of a static solve is [`super::static_seed_states`].
 pub fn catenary_states(system: &System) -> Vec<State> {
     let at_rest: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
     catenary_states_at(system, &at_rest)
-}
-
-/// The seed of a system's static solve (§11.6): [`catenary_states`] with
-/// the free points where these catenaries hold them in equilibrium
-/// ([`balanced_points`], (M32a)).
-pub fn static_seed_states(system: &System) -> Vec<State> {
-    catenary_states_at(system, &balanced_points(system))
 }
 
 /// [`catenary_states`] with point p at `positions[p]`.
@@ -292,8 +285,4 @@ impl Resting {
         let rxx = std::array::from_fn(|k| (p[k] - 2.0 * o[k] + m[k]) / (h * h));
         (r, rx, rxx)
     }
-}
-
-fn norm(v: [f64; 3]) -> f64 {
-    v.iter().map(|c| c * c).sum::<f64>().sqrt()
 }

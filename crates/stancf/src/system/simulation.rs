@@ -13,13 +13,12 @@ use super::end_forces::ForcesAtTime;
 use super::layout::SystemLayout;
 use super::mass::SystemMass;
 use super::point_terms::PointNodes;
-use super::step_equations::{system_scales, StepOfSystem};
+use super::step_equations::{system_scales, PointMotion, StepOfSystem};
 use super::System;
-use crate::assembly::Scheme;
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
-use crate::integrator::{Simulation, StepReport, StepSettings, TimeScheme};
+use crate::integrator::{Simulation, StepReport, StepSettings};
 use crate::model::{coordinate, State, SLOT_R};
 use crate::quadrature::GaussRule;
 use crate::solver::{NewtonWorkspace, NonlinearSystem};
@@ -47,15 +46,6 @@ macro_rules! step_problem {
 }
 
 pub(super) use step_problem;
-
-/// Position, velocity and predictor history of a point.
-#[derive(Clone, Debug, Default)]
-pub(super) struct PointMotion {
-    pub(super) e: [f64; 3],
-    pub(super) v: [f64; 3],
-    pub(super) previous: ([f64; 3], [f64; 3]),
-    pub(super) acceleration: [f64; 3],
-}
 
 /// A running simulation of a system. A clone is an independent copy of
 /// the whole state, kept factors included: it steps on to the same bits
@@ -131,12 +121,7 @@ impl SystemSimulation {
             })
             .collect::<Result<Vec<_>, _>>()?;
         let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
-        let scheme = match settings.time_scheme {
-            TimeScheme::P2 => Scheme::P2 {
-                layers: settings.time_layers,
-            },
-            TimeScheme::Galerkin => Scheme::Galerkin,
-        };
+        let scheme = settings.time_scheme.layout(settings.time_layers);
         let layout = SystemLayout::new(&system, &models, scheme, settings.constraint_method);
         let h = settings.time_step / settings.time_layers as f64;
         let rule = GaussRule::new(settings.time_points)
@@ -157,7 +142,7 @@ impl SystemSimulation {
         let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let (unknown_scale, equation_scale) = system_scales(&system, &lines, &layout);
-        let mass = if system.has_free_points() && scheme == Scheme::Galerkin {
+        let mass = if system.has_free_points() && settings.time_scheme.carries_momentum() {
             Some(SystemMass::new(&system, &models)?)
         } else {
             None

@@ -5,13 +5,21 @@
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
-use super::simulation::PointMotion;
 use super::{End, System};
 use crate::bordered::BorderedMatrix;
 use crate::element::TimeSlab;
 use crate::integrator::Simulation;
 use crate::model::{coordinate, SLOT_R};
 use crate::solver::NonlinearSystem;
+
+/// Position, velocity and predictor history of a point.
+#[derive(Clone, Debug, Default)]
+pub(super) struct PointMotion {
+    pub(super) e: [f64; 3],
+    pub(super) v: [f64; 3],
+    pub(super) previous: ([f64; 3], [f64; 3]),
+    pub(super) acceleration: [f64; 3],
+}
 
 /// The convergence scales of the system's unknowns and rows: each line's
 /// (docs/method.md §7.1) at its own indices; at a free point's, the

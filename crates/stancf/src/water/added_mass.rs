@@ -28,6 +28,7 @@
 //! other entries vanish: s depends on z alone.)
 
 use super::hydro::LineInWater;
+use crate::vec3::dot;
 
 type M3 = [[f64; 3]; 3];
 
@@ -178,7 +179,7 @@ impl AddedMass {
             g,
             u,
             bv,
-            q: dot(v, &bv),
+            q: dot(v, bv),
             vux: std::array::from_fn(|i| v[i] - u * x[i]),
         })
     }
@@ -219,10 +220,6 @@ impl EntrainedTerms {
             d_x: self.vux.map(|a| c * s * k * u * a),
         }
     }
-}
-
-fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 #[cfg(test)]

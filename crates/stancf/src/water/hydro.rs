@@ -26,7 +26,7 @@
 use super::kinematics::{FluidKinematics, Sea};
 use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
-use crate::element::{dot, mat3_mul};
+use crate::vec3::{dot, mat3_mul};
 use std::sync::Arc;
 
 /// A line type's hydrodynamic coefficients (MoorDyn's LINE TYPES columns
@@ -167,7 +167,7 @@ impl LineInWater {
         let t = rx.map(|c| c / len);
         // Drag (W19) on the normal and tangential relative velocities.
         let v: [f64; 3] = std::array::from_fn(|i| flow.velocity[i] - rdot[i]);
-        let vt_s = dot(&v, &t);
+        let vt_s = dot(v, t);
         let v_t = t.map(|c| vt_s * c);
         let v_n: [f64; 3] = std::array::from_fn(|i| v[i] - v_t[i]);
         let k_n = 0.5 * rho * m.diameter * m.cd_normal;
@@ -180,7 +180,7 @@ impl LineInWater {
             rho * area * (1.0 + m.ca_axial),
         );
         let a = &flow.acceleration;
-        let at_s = dot(a, &t);
+        let at_s = dot(a, t);
         let f_i0: [f64; 3] = std::array::from_fn(|i| c_n * a[i] + (c_t - c_n) * at_s * t[i]);
         // Buoyancy (W18) and the sum.
         let mut out = ForceAtPoint::default();

@@ -42,7 +42,7 @@
 //!               Da = (I - a a^T) P_n / |P_n r_x|,  Db = [n]x Da          (W46)
 //! ```
 
-use crate::element::{cross, dot, mat3_mul};
+use crate::vec3::{cross, dot, mat3_mul};
 
 /// Force per unit length at a point and its derivatives with respect to
 /// the position r, the tangent r_x and the velocity r_dot (rows: force
@@ -92,7 +92,7 @@ impl Seabed {
     /// A sloped bed: the plane through `point` with upward normal along
     /// `normal` (any length; made a unit vector here).
     pub fn plane(point: [f64; 3], normal: [f64; 3], stiffness: f64, damping: f64) -> Self {
-        let length = dot(&normal, &normal).sqrt();
+        let length = dot(normal, normal).sqrt();
         Seabed {
             point,
             normal: normal.map(|c| c / length),
@@ -120,7 +120,7 @@ impl Seabed {
             self.point[1] - r[1],
             self.point[2] - r[2],
         ];
-        dot(&self.normal, &d)
+        dot(self.normal, d)
     }
 }
 
@@ -238,7 +238,7 @@ impl SeabedContact {
         if s == 0.0 {
             return out;
         }
-        let vn = dot(&n, rdot);
+        let vn = dot(n, rdot);
         let normal = d * (bed.stiffness * p - bed.damping * s * vn);
         out.force = n.map(|c| normal * c);
         if derivatives {
@@ -271,14 +271,14 @@ impl SeabedContact {
         let bed = &self.seabed;
         let n = bed.normal;
         // P_n r_x: the tangent's part along the bed.
-        let rn = dot(&n, rx);
+        let rn = dot(n, rx);
         let pt = [rx[0] - rn * n[0], rx[1] - rn * n[1], rx[2] - rn * n[2]];
-        let len = dot(&pt, &pt).sqrt();
+        let len = dot(pt, pt).sqrt();
         if len == 0.0 || ne == 0.0 && dne == 0.0 {
             return;
         }
         let a = pt.map(|c| c / len);
-        let b = cross(&n, &a);
+        let b = cross(n, a);
         // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da: only for the
         // derivatives.
         let directions = derivatives.map(|sliding| {
@@ -300,7 +300,7 @@ impl SeabedContact {
             if mu == 0.0 {
                 continue;
             }
-            let (phi, dphi) = regularized_sign(dot(&e, rdot), vs);
+            let (phi, dphi) = regularized_sign(dot(e, rdot), vs);
             for i in 0..3 {
                 u[i] += mu * phi * e[i];
                 out.force[i] -= ne * mu * phi * e[i];
@@ -377,7 +377,7 @@ mod tests {
         // Deep in the bed, in the ramp, and clear of it.
         for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
             let along = [0.4, 0.9, 0.0];
-            let along_n = dot(&along, &n);
+            let along_n = dot(along, n);
             let r: [f64; 3] = std::array::from_fn(|i| {
                 c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
             });
@@ -454,7 +454,7 @@ mod tests {
         let rx = [0.8, 0.5, -0.1];
         for below in [0.01, 0.3 * c.ramp_width()] {
             let along = [0.4, 0.9, 0.0];
-            let along_n = dot(&along, &n);
+            let along_n = dot(along, n);
             let r: [f64; 3] = std::array::from_fn(|i| {
                 c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
             });
