@@ -3,6 +3,7 @@
 //! the start of a dynamic one with `analysis.initial = "static"`), then
 //! the time stepping; results per line, per point and per line end.
 
+mod rows;
 mod writers;
 
 use super::summary::{error_json, say, vec3};
@@ -10,14 +11,15 @@ use super::{io_err, Place, RunOptions};
 use crate::output::{json_num, Dest};
 use crate::scenario::{AnalysisKind, EndForces, InitialShape, SystemScenario};
 use crate::Failure;
+use rows::{dynamic_row, static_row, step_end_forces};
 use serde_json::{json, Value};
 use stancf::error::Sig;
-use stancf::system::{EndForce, System, SystemSimulation, SystemStatics};
-use stancf::{energies, SolverError};
+use stancf::system::{EndForce, SystemSimulation, SystemStatics};
+use stancf::SolverError;
 use std::ops::ControlFlow;
 use std::path::Path;
 use std::time::Instant;
-use writers::{SystemRow, SystemWriters};
+use writers::SystemWriters;
 
 /// How the run went: the largest tension at each line end, counts, the
 /// failure or interruption.
@@ -356,133 +358,6 @@ fn step_through(
         writers.write(&dynamic_row(sim, Some(sc.end_forces)))?;
     }
     Ok(())
-}
-
-/// The end forces of line i of the last step: its means or their
-/// estimates at its end (docs/method.md §6.5, (M23), (M23a)).
-fn step_end_forces(sim: &SystemSimulation, kind: EndForces, i: usize) -> [EndForce; 2] {
-    match kind {
-        EndForces::StepMean => sim.end_forces(i),
-        EndForces::AtTime => sim.end_forces_at_time(i),
-    }
-}
-
-/// The row of a system simulation's current state (`forces`: the end
-/// forces of the last step, of that kind; none before the first).
-fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> SystemRow<'_> {
-    let system = sim.system();
-    let lines = sim.lines().iter().map(|l| (l.model(), l.state())).collect();
-    let points = (0..system.points().len())
-        .map(|p| {
-            let (x, v) = sim.point_state(p);
-            let f = forces.map_or([0.0; 3], |kind| match kind {
-                EndForces::StepMean => sim.point_force(p),
-                EndForces::AtTime => sim.point_force_at_time(p),
-            });
-            (x, v, f)
-        })
-        .collect();
-    let kind = forces.unwrap_or_default();
-    let ends = ends_of(system, |i| step_end_forces(sim, kind, i), forces.is_some());
-    let mut en = [0.0; 3];
-    for l in sim.lines() {
-        let e = l.energies();
-        en[0] += e.kinetic;
-        en[1] += e.strain;
-        en[2] += e.gravity;
-    }
-    add_point_energies(system, |p| sim.point_state(p), &mut en);
-    SystemRow {
-        t: sim.time(),
-        lines,
-        points,
-        ends,
-        energies: en,
-        iterations: 0,
-        residual: 0.0,
-        damping_work: sim.damping_work(),
-        water_work: sim.water_work(),
-        seabed_work: sim.seabed_work(),
-    }
-}
-
-/// The row of a static solve's equilibrium, at time `t`.
-fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
-    let system = st.system();
-    let lines = system
-        .lines()
-        .iter()
-        .enumerate()
-        .map(|(i, l)| (&l.model, st.line_state(i)))
-        .collect();
-    let points = (0..system.points().len())
-        .map(|p| (st.point_position(p), [0.0; 3], st.point_force(p)))
-        .collect();
-    let ends = ends_of(system, |i| st.end_forces(i), true);
-    let mut en = [0.0; 3];
-    for (i, l) in system.lines().iter().enumerate() {
-        let e = energies(&l.model, st.line_state(i));
-        en[1] += e.strain;
-        en[2] += e.gravity;
-    }
-    add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut en);
-    SystemRow {
-        t,
-        lines,
-        points,
-        ends,
-        energies: en,
-        iterations: 0,
-        residual: 0.0,
-        damping_work: 0.0,
-        water_work: 0.0,
-        seabed_work: 0.0,
-    }
-}
-
-/// The end forces of every line, None at loose ends (and everywhere
-/// without `forces`).
-fn ends_of(
-    system: &System,
-    forces_of: impl Fn(usize) -> [EndForce; 2],
-    forces: bool,
-) -> Vec<[Option<EndForce>; 2]> {
-    system
-        .lines()
-        .iter()
-        .enumerate()
-        .map(|(i, l)| {
-            let f = forces_of(i);
-            std::array::from_fn(|k| {
-                (forces && l.ends[k] != stancf::system::End::Loose).then_some(f[k])
-            })
-        })
-        .collect()
-}
-
-/// Adds the free points' kinetic energy 1/2 m v^2 and the potential
-/// -m g . x of their weight to [kinetic, strain, gravity].
-fn add_point_energies(
-    system: &System,
-    state: impl Fn(usize) -> ([f64; 3], [f64; 3]),
-    en: &mut [f64; 3],
-) {
-    let g = system.gravity();
-    for (p, point) in system.points().iter().enumerate() {
-        if !point.is_free() {
-            continue;
-        }
-        let (x, v) = state(p);
-        // The kinetic energy of the point and the water it entrains.
-        let inertia = system.point_inertia(p);
-        en[0] += 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
-        // Its weight's potential and, in water, its buoyancy's (a
-        // constant load, the weight of the water it displaces).
-        let buoyancy = point.water.as_ref().map_or([0.0; 3], |w| w.buoyancy(&g));
-        en[2] -= (0..3)
-            .map(|k| (point.mass * g[k] + buoyancy[k]) * x[k])
-            .sum::<f64>();
-    }
 }
 
 /// summary.json of a system run.
