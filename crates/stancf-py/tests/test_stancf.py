@@ -220,8 +220,11 @@ def test_a_line_in_sections_has_its_nodes_where_the_sections_put_them():
 
 def test_end_forces_at_time_follow_the_step_means():
     """[output] end_forces = "at_time" from Python: the bridle's point
-    forces are 1.5 R_k - 0.5 R_(k-1) of the step means R (docs/method.md
-    (M23a)), the first step's the mean itself; the states are the same."""
+    forces are R_k + w (R_k - R_(k-1)) of the step means R, w = h_k /
+    (h_k + h_(k-1)) (docs/method.md (M23a)): 1.5 R_k - 0.5 R_(k-1) for
+    equal steps, and the 0.01 s run's last step is shortened to land on
+    its duration (67 steps of 0.15 ms, the last 0.1 ms); the first step's
+    is the mean itself; the states are the same."""
     bridle = stancf.Scenario.from_file(ROOT / "examples" / "bridle.toml").with_values(
         {"analysis.duration": 0.01, "output.every": 1})
     mean = stancf.run(bridle)
@@ -229,7 +232,12 @@ def test_end_forces_at_time_follow_the_step_means():
     for p in mean.points:
         m, a = mean.points[p]["force"][1:], at_t.points[p]["force"][1:]
         assert np.array_equal(mean.points[p]["position"], at_t.points[p]["position"])
-        want = np.vstack([m[:1], 1.5 * m[1:] - 0.5 * m[:-1]])
+        t = mean.points[p]["t"]
+        assert len(t) == 68 and t[-1] == 0.01 and t[-2] == 0.0099, t[-3:]
+        dt = 1.5e-4
+        h = np.array([dt] * 66 + [0.01 - 66 * dt])
+        w = (h[1:] / (h[1:] + h[:-1]))[:, None]
+        want = np.vstack([m[:1], m[1:] + w * (m[1:] - m[:-1])])
         assert np.allclose(a, want, rtol=0, atol=8 * np.finfo(float).eps * np.abs(m).max()), p
 
 
