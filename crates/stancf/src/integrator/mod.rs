@@ -23,7 +23,7 @@ mod step;
 mod watchdog;
 
 pub use crate::scheme::TimeScheme;
-pub use run::{run, step_count};
+pub use run::{run, step_count, step_length};
 pub use setup::step_unknowns;
 pub use watchdog::{energy_resolution, model_energy_scale, EnergyWatch, ENERGY_GROWTH_RATIO};
 

@@ -12,6 +12,25 @@ pub fn step_count(duration: f64, dt: f64) -> usize {
     ((duration / dt) - 1e-9).ceil().max(1.0) as usize
 }
 
+/// The length of step `k` (1-based) of the `steps` = [`step_count`] steps
+/// of `dt` that cover `duration` (docs/method.md §8, §11.15): dt, but the
+/// last lands on the duration, what is left after n - 1 steps of dt. It is
+/// taken from the grid (not from the time reached, which carries the
+/// round-off of adding the steps), and within 1e-9 of dt it is dt itself,
+/// as a coupling interval's steps are (§13.3): a whole number of steps
+/// keeps the kept factors and repeats the run of single steps to the bit.
+pub fn step_length(k: usize, steps: usize, duration: f64, dt: f64) -> f64 {
+    if k < steps {
+        return dt;
+    }
+    let h = duration - (steps - 1) as f64 * dt;
+    if (h - dt).abs() <= 1e-9 * dt {
+        dt
+    } else {
+        h
+    }
+}
+
 /// Steps `sim` until `duration` is covered (the last step is shortened to
 /// land on it), calling `observer` after every converged step; the
 /// observer may stop the run early with `ControlFlow::Break` (the result
@@ -23,16 +42,10 @@ where
     F: FnMut(&Simulation, &StepReport, &Energies) -> ControlFlow<()>,
 {
     let dt = sim.settings.time_step;
-    let t0 = sim.state.t;
     let n_steps = step_count(duration, dt);
     let mut watch = EnergyWatch::new(&sim.model, sim.energies(), ENERGY_GROWTH_RATIO);
     for k in 1..=n_steps {
-        let h = if k == n_steps {
-            t0 + duration - sim.state.t
-        } else {
-            dt
-        };
-        sim.set_time_step(h);
+        sim.set_time_step(step_length(k, n_steps, duration, dt));
         let report = sim.step()?;
         let en = sim.energies();
         let failure = |kind, detail: String, sim: &Simulation| SolverError {

@@ -4,7 +4,7 @@
 
 use super::SystemSimulation;
 use crate::error::SolverError;
-use crate::integrator::{step_count, StepReport};
+use crate::integrator::{step_count, step_length, StepReport};
 use std::ops::ControlFlow;
 
 /// Where a run is: the step just taken is the `step`-th of `steps`
@@ -49,16 +49,8 @@ where
     let steps = step_count(duration, dt);
     for step in 1..=steps {
         if step == steps {
-            // The last step lands on the duration: what is left of it
-            // after n - 1 steps of dt, shorter than dt when the duration
-            // is not a whole number of steps. It is taken from the grid
-            // (not from the time, which carries the round-off of adding
-            // the steps), and within 1e-9 of dt it is dt itself, as a
-            // coupling interval's steps are (§13.3): a whole number of
-            // steps keeps the kept factors and repeats the run of single
-            // steps to the bit.
-            let h = duration - (steps - 1) as f64 * dt;
-            if (h - dt).abs() > 1e-9 * dt {
+            let h = step_length(step, steps, duration, dt);
+            if h != dt {
                 sim.set_time_step(h);
             }
         }
