@@ -43,7 +43,7 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
     {
         let seed_system = sc.seed_system().map_err(input)?;
-        let settings = sc.analysis.static_settings();
+        let settings = sc.static_settings();
         Some(SystemStatics::seeded(system.clone(), &seed_system, settings).map_err(input)?)
     } else {
         None
@@ -210,7 +210,7 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
             "seabed",
             format!(
                 "through z = {} m, slope [{}, {}]; kBot {} Pa/m, cBot {} Pa s/m, friction {} \
-                 axial and {} transverse, regularized below {} m/s",
+                 axial and {} transverse, regularized below {} m/s{}",
                 Sig(-w.depth),
                 Sig(b.slope[0]),
                 Sig(b.slope[1]),
@@ -218,7 +218,8 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
                 Sig(b.damping),
                 Sig(b.friction_axial),
                 Sig(b.friction_transverse),
-                Sig(b.slip_velocity)
+                Sig(b.slip_velocity),
+                static_friction_note(b)
             ),
         ),
     ];
@@ -352,4 +353,23 @@ fn clamp_words(clamp: Option<[f64; 3]>) -> String {
         Sig(d[1] / n),
         Sig(d[2] / n)
     )
+}
+
+/// What friction holds at a static equilibrium, said where there is
+/// friction (docs/method.md §12.2).
+fn static_friction_note(b: &crate::scenario::SeabedOptions) -> &'static str {
+    if b.friction_axial == 0.0 && b.friction_transverse == 0.0 {
+        return "";
+    }
+    match b.static_friction {
+        stancf::system::StaticFriction::Pulled => {
+            "; at a static equilibrium each anchored line is pulled out along the bed from an \
+             unstretched lay, friction holding it towards its anchor (static_friction = \
+             \"pulled\", docs/method.md §12.2)"
+        }
+        _ => {
+            "; at a static equilibrium friction holds nothing, the lines laid as they rest \
+             (MoorDyn's; static_friction = \"as_laid\", docs/method.md §12.2)"
+        }
+    }
 }

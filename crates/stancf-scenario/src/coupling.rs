@@ -102,7 +102,7 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     let handle = CoupledSystem::new(
         system,
         seed,
-        sc.analysis.static_settings(),
+        sc.static_settings(),
         sc.analysis.step_settings(),
     )
     .map_err(input)?;

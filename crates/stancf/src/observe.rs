@@ -305,22 +305,51 @@ pub fn node_bending(model: &Model, state: &State) -> Vec<NodeBending> {
 /// `sum_e int N_k f dx` of the contact force per length f(r, r_x, r_dot)
 /// (docs/method.md §12.2), friction included: what the bed exerts on the
 /// line around each node. Zero without a seabed. Friction is the sliding
-/// friction of the state's velocities; a static result (at rest) shows
-/// none of the static friction against the slide from the seed (W48).
+/// friction of the state's velocities (W43)-(W44); for a static
+/// equilibrium, whose friction resists the slide from its targets (W48),
+/// see [`static_seabed_nodal_forces`].
 pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
-    let mut out = vec![[0.0; 3]; model.nodes()];
     let Some(contact) = &model.seabed else {
-        return out;
+        return vec![[0.0; 3]; model.nodes()];
     };
+    nodal_forces_per_length(model, &state.e, &state.v, |r, rx, rdot| {
+        contact.force(r, rx, rdot)
+    })
+}
+
+/// The seabed's consistent nodal forces (N) on a line at rest whose
+/// friction resists the slide from the coordinates `targets` (W48): the
+/// normal push and the static friction, as the static solve balances
+/// them (`crate::system::SystemStatics::seabed_nodal_forces`).
+pub fn static_seabed_nodal_forces(model: &Model, state: &State, targets: &[f64]) -> Vec<[f64; 3]> {
+    let Some(contact) = &model.seabed else {
+        return vec![[0.0; 3]; model.nodes()];
+    };
+    // The slide r - r_0 is linear in the coordinates: interpolated from
+    // e - e_0 as a velocity is from v.
+    let slide: Vec<f64> = state.e.iter().zip(targets).map(|(e, e0)| e - e0).collect();
+    nodal_forces_per_length(model, &state.e, &slide, |r, rx, slide| {
+        contact.static_force(r, rx, slide)
+    })
+}
+
+/// `sum_e int N_k f dx` on the nodes' positions of a force per length
+/// `force(r, r_x, rdot)`, r and r_x from the coordinates `e` and rdot
+/// interpolated from `rates` as a velocity.
+fn nodal_forces_per_length(
+    model: &Model,
+    e: &[f64],
+    rates: &[f64],
+    force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
+) -> Vec<[f64; 3]> {
+    let mut out = vec![[0.0; 3]; model.nodes()];
     let dpn = model.dofs_per_node();
     crate::with_elements!(&model.mesh, els => {
         for (k, el) in els.iter().enumerate() {
             let o = coordinate(dpn, k, SLOT_R, 0);
-            let q = gather(&state.e, o);
-            let qdot = gather(&state.v, o);
-            let fq = el.generalized_force_per_length(&q, &qdot, |r, rx, rdot| {
-                contact.force(r, rx, rdot)
-            });
+            let q = gather(e, o);
+            let qdot = gather(rates, o);
+            let fq = el.generalized_force_per_length(&q, &qdot, force);
             // The position slots of the element's two nodes: each node
             // holds half of the element's coordinates, r first.
             for (end, node) in [(0, k), (1, k + 1)] {

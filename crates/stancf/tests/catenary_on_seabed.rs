@@ -8,7 +8,9 @@
 use stancf::catenary::touchdown::{solve_touchdown, TouchdownLine};
 use stancf::element::{AxialStrain, Measures};
 use stancf::observe::stress_samples;
-use stancf::system::{catenary_states, shaped, End, Line, Point, System, SystemStatics};
+use stancf::system::{
+    catenary_states, shaped, End, Line, Point, StaticFriction, System, SystemStatics,
+};
 use stancf::water::kinematics::Sea;
 use stancf::water::{LineInWater, Morison, Seabed, SeabedContact, Water};
 use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings};
@@ -32,6 +34,12 @@ const K_BOT: f64 = 3.0e6;
 struct Measured {
     hf: f64,
     vf: f64,
+    /// The horizontal force of the line on its anchor.
+    ha: f64,
+    /// The bed's friction towards the anchor: minus the sum of its nodal
+    /// forces along x (the fairlead lies along +x; the bed's push is
+    /// vertical).
+    bed_friction: f64,
     /// (s, T) at the nodes (the axial force, T = EA (|r_x| - 1)).
     resting_tension: Vec<(f64, f64)>,
     /// The material coordinate of the last node the bed pushes on.
@@ -52,6 +60,13 @@ struct Measured {
 /// all but the first metre at the anchor, which costs T_A about mu w
 /// u_s EA / T_A = 0.1 kN (1.5e-4).
 fn chain_on_the_bed(elements: usize, friction: f64) -> Measured {
+    chain_laid(elements, friction, None)
+}
+
+/// [`chain_on_the_bed`], or with `policy` the chain as a scenario solves
+/// it: from the system's own seed (`SystemStatics::seeded`), friction
+/// holding what the policy says (docs/method.md §12.2).
+fn chain_laid(elements: usize, friction: f64, policy: Option<StaticFriction>) -> Measured {
     let area = 0.25 * std::f64::consts::PI * DIAMETER * DIAMETER;
     let w_dry = MASS_PER_LENGTH * G;
     let material = Material {
@@ -116,9 +131,30 @@ fn chain_on_the_bed(elements: usize, friction: f64) -> Measured {
         (b, rx, [0.0; 3])
     });
     let system = anchored_to_the_fairlead(model);
-    let mut solver = SystemStatics::new(system, vec![seed], StaticSettings::default()).unwrap();
+    let mut solver = match policy {
+        // Friction against the slide from this seed (W48).
+        None => {
+            let settings = StaticSettings {
+                seabed_friction: StaticFriction::FromSeed,
+                ..StaticSettings::default()
+            };
+            SystemStatics::new(system, vec![seed], settings).unwrap()
+        }
+        Some(policy) => {
+            let settings = StaticSettings {
+                seabed_friction: policy,
+                ..StaticSettings::default()
+            };
+            SystemStatics::seeded(system.clone(), &system, settings).unwrap()
+        }
+    };
     solver.solve(|_, _| ControlFlow::Continue(())).unwrap();
-    let [_, ff] = solver.end_forces(0);
+    let [fa, ff] = solver.end_forces(0);
+    let bed_friction = -solver
+        .seabed_nodal_forces(0)
+        .iter()
+        .map(|f| f[0])
+        .sum::<f64>();
     let m = &solver.system().lines()[0].model;
     let bed_forces = stancf::observe::seabed_nodal_forces(m, solver.line_state(0));
     let last = (0..m.nodes())
@@ -137,6 +173,8 @@ fn chain_on_the_bed(elements: usize, friction: f64) -> Measured {
     Measured {
         hf: ff.force[0].abs(),
         vf: -ff.force[2],
+        ha: fa.force[0].abs(),
+        bed_friction,
         resting_tension,
         last_node_on_bed: LENGTH * last as f64 / elements as f64,
     }
@@ -246,9 +284,35 @@ fn closed_form(friction: f64) -> (stancf::catenary::touchdown::TouchdownSolution
 /// closed form's L_B = L - V_F / w; the last node the bed pushes is within
 /// an element of it.
 fn agrees_with_the_closed_form(friction: f64) {
+    agrees_with(chain_on_the_bed(80, friction), friction, friction);
+}
+
+/// [`agrees_with_the_closed_form`] for the chain `fe` of 80 elements on a
+/// bed with coefficient `mu`, against the closed form with friction
+/// coefficient `friction` (CB; 0 for a chain that friction does not
+/// hold). And the line's horizontal balance: the bed's friction is the
+/// difference of the end forces, H_F - H_A = the sum of the bed's nodal
+/// forces towards the anchor (to 1e-9 of H_F: the solve's tolerance 1e-10 on the
+/// scaled rows).
+fn agrees_with(fe: Measured, mu: f64, friction: f64) {
     let elements = 80;
-    let fe = chain_on_the_bed(elements, friction);
     let (cf, w) = closed_form(friction);
+    let balance = fe.hf - fe.ha - fe.bed_friction;
+    assert!(
+        balance.abs() < 1e-9 * fe.hf,
+        "H_F {} - H_A {} != friction {}",
+        fe.hf,
+        fe.ha,
+        fe.bed_friction
+    );
+    // Friction holds the chain towards its anchor, by at most mu w L_B.
+    assert!(
+        fe.bed_friction >= -1e-9 * fe.hf
+            && fe.bed_friction <= mu * w * cf.resting_length * (1.0 + 1e-3),
+        "friction {} outside [0, mu w L_B = {}]",
+        fe.bed_friction,
+        mu * w * cf.resting_length
+    );
     let resting = LENGTH - fe.vf / w;
     let (s1, t1) = fe.resting_tension[1];
     for (what, measured, expected) in [
@@ -258,8 +322,8 @@ fn agrees_with_the_closed_form(friction: f64) {
         ("L_B", resting, cf.resting_length),
     ] {
         let err = (measured - expected).abs() / expected;
-        eprintln!("mu {friction}: {what} {measured:.6e}, closed form {expected:.6e} ({err:.1e})");
-        assert!(err < 1e-3, "mu {friction}: {what} {measured} vs {expected}");
+        eprintln!("mu {mu}: {what} {measured:.6e}, closed form {expected:.6e} ({err:.1e})");
+        assert!(err < 1e-3, "mu {mu}: {what} {measured} vs {expected}");
     }
     for &(s, t) in fe.resting_tension.iter().skip(1) {
         if s < 0.9 * cf.resting_length {
@@ -287,4 +351,33 @@ fn jonkman_2007_touchdown_closed_form_without_friction() {
 #[test]
 fn jonkman_2007_touchdown_closed_form_with_friction() {
     agrees_with_the_closed_form(1.0);
+}
+
+/// A chain laid on a bed with mu = 1 and solved from the system's own
+/// seed as a scenario solves it (`static_friction = "as_laid"`, MoorDyn's
+/// equilibrium): friction holds nothing, and the chain is the
+/// frictionless closed form. Before the policies, the same solve held
+/// the chain towards its fairlead (the anchor's force above the
+/// fairlead's: the settling into the bed drew the first nodes towards
+/// the anchor, docs/method.md §12.2).
+#[test]
+fn a_chain_laid_on_a_frictional_bed_is_held_by_no_friction() {
+    let fe = chain_laid(80, 1.0, Some(StaticFriction::AsLaid));
+    assert!(
+        fe.bed_friction.abs() < 1e-9 * fe.hf,
+        "friction {}",
+        fe.bed_friction
+    );
+    agrees_with(fe, 1.0, 0.0);
+}
+
+/// The same chain pulled out along its bed from an unstretched lay
+/// (`static_friction = "pulled"`, (W49)): friction holds it towards its
+/// anchor, H_A = H_F - mu w L_B, the closed form with friction (Jonkman
+/// 2007, (C14)-(C21)), to the tolerances of the solve from a hand-made
+/// unstretched seed.
+#[test]
+fn a_chain_pulled_out_along_its_bed_is_the_closed_form_with_friction() {
+    let fe = chain_laid(80, 1.0, Some(StaticFriction::Pulled));
+    agrees_with(fe, 1.0, 1.0);
 }

@@ -25,6 +25,17 @@ enum Loads {
 pub use stancf::system::EI_FACTOR;
 
 impl SystemScenario {
+    /// The static solve's settings: the analysis's, with what the
+    /// seabed's friction holds at the equilibrium (`[water.seabed]
+    /// static_friction`, docs/method.md §12.2).
+    pub fn static_settings(&self) -> stancf::StaticSettings {
+        let mut settings = self.analysis.static_settings();
+        if let Some(w) = &self.water {
+            settings.seabed_friction = w.seabed.static_friction;
+        }
+        settings
+    }
+
     /// The bending stiffness line i is simulated with: its type's EI, or
     /// for EI = 0 (chain, wire rope) the core's c w L^3
     /// ([`stancf::system::LineSection::bending_stiffness`],

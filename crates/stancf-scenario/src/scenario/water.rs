@@ -9,6 +9,7 @@
 use super::context::Ctx;
 use super::raw::{RawCurrent, RawJonswap, RawSeabed, RawWater, RawWave};
 use super::ScenarioError;
+use stancf::system::StaticFriction;
 use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
 use stancf::water::spectrum::Jonswap;
 use stancf::water::waves::AiryWave;
@@ -47,6 +48,9 @@ pub struct SeabedOptions {
     pub slip_velocity: f64,
     /// dz/dx and dz/dy of the bed plane.
     pub slope: [f64; 2],
+    /// What friction holds at a static equilibrium (docs/method.md §12.2):
+    /// nothing as laid (MoorDyn's), or the pull from an unstretched lay.
+    pub static_friction: StaticFriction,
 }
 
 impl SeabedOptions {
@@ -59,6 +63,7 @@ impl SeabedOptions {
         friction_transverse: 0.0,
         slip_velocity: 1.0e-3,
         slope: [0.0, 0.0],
+        static_friction: StaticFriction::AsLaid,
     };
 }
 
@@ -86,6 +91,7 @@ pub(super) struct WaterKeys {
     pub(super) friction_transverse: Option<f64>,
     pub(super) slip_velocity: Option<f64>,
     pub(super) slope: Option<[f64; 2]>,
+    pub(super) static_friction: Option<StaticFriction>,
     pub(super) current: Option<Current>,
     pub(super) waves: Vec<AiryWave>,
     pub(super) jonswap: Option<Jonswap>,
@@ -125,6 +131,7 @@ impl WaterKeys {
                 friction_transverse: self.friction_transverse.unwrap_or(d.friction_transverse),
                 slip_velocity: self.slip_velocity.unwrap_or(d.slip_velocity),
                 slope: self.slope.unwrap_or(d.slope),
+                static_friction: self.static_friction.unwrap_or(d.static_friction),
             },
             current: self.current,
             waves: self.waves,
@@ -147,6 +154,7 @@ impl WaterKeys {
             friction_transverse: self.friction_transverse.or(other.friction_transverse),
             slip_velocity: self.slip_velocity.or(other.slip_velocity),
             slope: self.slope.or(other.slope),
+            static_friction: self.static_friction.or(other.static_friction),
             current: self.current.or(other.current),
             waves,
             jonswap: self.jonswap.or(other.jonswap),
@@ -234,6 +242,21 @@ fn seabed_keys(ctx: &Ctx, s: RawSeabed, keys: &mut WaterKeys) -> Result<(), Scen
     keys.friction_transverse =
         non_negative("water.seabed.friction_transverse", s.friction_transverse)?;
     keys.slip_velocity = positive("water.seabed.slip_velocity", s.slip_velocity)?;
+    keys.static_friction = s
+        .static_friction
+        .map(|name| {
+            StaticFriction::from_name(&name).ok_or_else(|| {
+                ctx.err(
+                    "water.seabed.static_friction",
+                    format!(
+                        "\"{name}\" is not a policy: \"as_laid\" (friction holds nothing at \
+                         the equilibrium, MoorDyn's) or \"pulled\" (each anchored line pulled \
+                         out along the bed from an unstretched lay, the closed form's)"
+                    ),
+                )
+            })
+        })
+        .transpose()?;
     keys.slope = match s.slope {
         None => None,
         Some(v) if v.len() != 2 => {

@@ -88,6 +88,18 @@ impl CableStatics {
         self.start.initial_axial_force = forces;
     }
 
+    /// The static friction's targets (W48): where each point of the line
+    /// is taken to have been before it slid (the seed, unless set).
+    pub fn friction_targets(&self) -> &[f64] {
+        &self.start.e
+    }
+
+    /// Puts the static friction's targets at the coordinates `targets`
+    /// (docs/method.md §12.2, (W49)).
+    pub fn set_friction_targets(&mut self, targets: &[f64]) {
+        self.start.e.copy_from_slice(targets);
+    }
+
     /// The initial axial forces times `factor` (1 - t on the path).
     /// At factor 0 (the path's end) there are none left to evaluate.
     pub fn scale_initial_axial_forces(&mut self, factor: f64) {

@@ -73,6 +73,11 @@ pub struct StaticSettings {
     pub constraint_method: ConstraintMethod,
     /// Halvings of a failed increment before giving up.
     pub max_cuts: usize,
+    /// What seabed friction holds at a system's equilibrium
+    /// (docs/method.md §12.2, [`crate::system::StaticFriction`]). A single
+    /// cable's static solve resists the slide from its reference shape,
+    /// along its load path and moving supports, whatever this says.
+    pub seabed_friction: crate::system::StaticFriction,
 }
 
 impl Default for StaticSettings {
@@ -83,6 +88,7 @@ impl Default for StaticSettings {
             max_iterations: 50,
             constraint_method: ConstraintMethod::default(),
             max_cuts: 10,
+            seabed_friction: crate::system::StaticFriction::AsLaid,
         }
     }
 }

@@ -37,6 +37,24 @@ pub(crate) trait StaticEquations {
 /// §6.8, at residuals of 5e-15 to 4e-13).
 const SETTLED_ITERATIONS: usize = 4;
 
+/// A scaled residual this small is at the round-off of the rows' sums
+/// (measured floors 2e-16 to 2e-15 on MoorDyn's and MoorPy's decks, 64
+/// machine epsilons 1.4e-14): a thousandth of the default tolerance, so
+/// that a residual accepted by [`at_round_off_floor`] is a balance of the
+/// forces a Newton step closer to the solution than the tolerance asks.
+/// Above it, a residual that a Newton step does not lower is a nonlinear
+/// step on its way (the tangent step of a large rotation raises the
+/// residual, docs/method.md §6.9), not a floor.
+const ROUND_OFF_RESIDUAL: f64 = 1e-13;
+
+/// Whether a Newton step took the scaled residual from `before` to
+/// `after` without lowering it (by less than a tenth: round-off moves a
+/// residual at its floor by factors of order one, a converging Newton
+/// step lowers it by orders of magnitude).
+fn at_round_off_floor(before: f64, after: f64) -> bool {
+    after >= 0.1 * before
+}
+
 /// The unknowns, the factors and the position on the load path.
 pub(crate) struct StaticNewton<F: Factorization> {
     pub x: Vec<f64>,
@@ -158,9 +176,6 @@ impl<F: Factorization> StaticNewton<F> {
             eq.evaluate(&self.x, &mut self.residual, Some(&mut self.jacobian));
             eq.row_weights(&self.jacobian, &mut self.row_weight);
             let r = self.residual_norm();
-            if std::env::var("DBGN").is_ok() {
-                eprintln!("lambda {} k {k} r {r:e} inc {increment:e}", self.lambda);
-            }
             if !r.is_finite() {
                 return Err(FailureKind::NonFinite);
             }
@@ -208,6 +223,15 @@ impl<F: Factorization> StaticNewton<F> {
                     radius = (2.0 * radius).min(max_step);
                 }
                 break;
+            }
+            // A residual at round-off that the Newton step cannot lower is
+            // at its floor: the forces balance, and the increment is that
+            // round-off turned into motion along a direction the forces
+            // hardly determine (issue 35: a simply supported beam at
+            // 2.6e-16, a slack mooring at 9e-16). x is the equilibrium,
+            // whatever the increments do.
+            if r <= tol.min(ROUND_OFF_RESIDUAL) && at_round_off_floor(r, self.residual_norm()) {
+                return Ok((k, r, increment));
             }
             std::mem::swap(&mut self.x, &mut self.x_trial);
             increment = alpha * full;
@@ -528,6 +552,35 @@ mod tests {
         }
         assert_eq!(increments, 20);
         // The forces balance: x0 + x1 = 1 to the tolerance.
+        assert!(
+            (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,
+            "{:?}",
+            newton.x
+        );
+    }
+
+    /// Issue 35, item 3: a residual within the tolerance that the Newton
+    /// step does not lower is at its round-off floor, and converged at
+    /// once: the soft mode's path takes the first Newton step of each
+    /// increment (the linear problem's solution to round-off) and one
+    /// more to see the residual stay, not four.
+    #[test]
+    fn a_residual_the_newton_step_cannot_lower_is_converged_at_once() {
+        let mut eq = SoftMode {
+            t: 0.0,
+            evaluations: 0,
+        };
+        let mut newton = StaticNewton::new(
+            vec![0.0, 0.0],
+            vec![0.0, 0.0],
+            BandLu::new(2, 1, 1),
+            BandMatrix::new(2, 1, 1),
+            StaticSettings::default(),
+        );
+        while let Some(inc) = newton.advance(&mut eq).unwrap() {
+            assert!(inc.residual <= super::ROUND_OFF_RESIDUAL, "{inc:?}");
+            assert!(inc.iterations <= 2, "{inc:?}");
+        }
         assert!(
             (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,
             "{:?}",

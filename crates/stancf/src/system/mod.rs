@@ -34,6 +34,7 @@ mod point_terms;
 mod run;
 mod seed;
 mod simulation;
+mod static_friction;
 mod statics;
 mod step_equations;
 mod stepping;
@@ -48,6 +49,7 @@ pub use seed::{
     straight_states,
 };
 pub use simulation::{EndForce, SystemSimulation};
+pub use static_friction::StaticFriction;
 pub use statics::SystemStatics;
 
 use crate::constraints::{Constraint, ConstraintKind};

@@ -30,6 +30,7 @@
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
+use super::static_friction::{self, StaticFriction};
 use super::{End, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
@@ -48,6 +49,11 @@ pub struct SystemStatics {
     /// Seeds to start over from if the path fails (see
     /// [`SystemStatics::seeded`]).
     fallback: Option<Vec<State>>,
+    /// What the seabed's friction holds (docs/method.md §12.2).
+    friction: StaticFriction,
+    /// Whether this path is the second stage of [`StaticFriction::Pulled`]
+    /// (the pull from the equilibrium as laid).
+    pulling: bool,
 }
 
 /// The equations of a system's equilibrium on the homotopy path (M32).
@@ -71,13 +77,27 @@ struct SystemEquations {
 impl SystemStatics {
     /// The static solve of `system` from the lines' seed states (one per
     /// line, e.g. [`super::seed_states`]); the free points start where
-    /// their lines' seeds put the ends (which must agree).
+    /// their lines' seeds put the ends (which must agree). What seabed
+    /// friction holds is `settings.seabed_friction` (with
+    /// [`StaticFriction::FromSeed`], the slide from these seeds).
     pub fn new(
         system: System,
         seeds: Vec<State>,
         settings: StaticSettings,
     ) -> Result<Self, ModelError> {
+        Self::build(system, seeds, settings, None)
+    }
+
+    /// [`SystemStatics::new`], for the second stage of
+    /// [`StaticFriction::Pulled`] with the lines' friction `targets` (W49).
+    fn build(
+        system: System,
+        seeds: Vec<State>,
+        settings: StaticSettings,
+        targets: Option<Vec<Vec<f64>>>,
+    ) -> Result<Self, ModelError> {
         settings.validate()?;
+        let friction = settings.seabed_friction;
         if seeds.len() != system.lines().len() {
             return Err(ModelError::invalid(
                 "initial_state",
@@ -96,20 +116,34 @@ impl SystemStatics {
                 .check_direction_route(method, false)
                 .map_err(|e| ModelError::invalid(e.key, format!("line {i}: {}", e.message)))?;
         }
+        // Friction is off while the lines are solved as laid (the whole
+        // solve of AsLaid, the first stage of Pulled).
+        let frictionless = match friction {
+            StaticFriction::AsLaid => true,
+            StaticFriction::Pulled => targets.is_none(),
+            StaticFriction::FromSeed => false,
+        };
         let lines: Vec<CableStatics> = system
             .lines()
             .iter()
             .zip(seeds)
-            .map(|(line, seed)| {
+            .enumerate()
+            .map(|(i, (line, seed))| {
                 // A line without compression is solved with its
                 // compressive stiffness kept (docs/method.md §2.2, (M4a)):
                 // at exactly zero tension it has no axial stiffness
                 // without it, and where it is nowhere shortened the
                 // equilibrium is the same (`observe::largest_compression`
                 // says where it is not).
-                let model = line.model.clone().with_compression();
+                let mut model = line.model.clone().with_compression();
+                if frictionless {
+                    model = static_friction::without_friction(model);
+                }
                 let mut line = CableStatics::new(model, method, seed.e);
                 line.take_strain_defects();
+                if let Some(t) = &targets {
+                    line.set_friction_targets(&t[i]);
+                }
                 line
             })
             .collect();
@@ -165,6 +199,8 @@ impl SystemStatics {
             newton,
             settings,
             fallback: None,
+            pulling: friction == StaticFriction::Pulled && targets.is_some(),
+            friction,
         })
     }
 
@@ -179,14 +215,20 @@ impl SystemStatics {
     /// scenario's start stalls or ends on a rope folded in compression;
     /// the lazy-wave example's path from it turns back at t = 0.286 and
     /// the scenario's start reaches the equilibrium.
+    /// What the seabed's friction holds is `settings.seabed_friction`,
+    /// [`StaticFriction::FromSeed`] taken as [`StaticFriction::AsLaid`]:
+    /// these seeds are not where a line was laid.
     pub fn seeded(
         system: System,
         seed_system: &System,
-        settings: StaticSettings,
+        mut settings: StaticSettings,
     ) -> Result<Self, ModelError> {
+        if settings.seabed_friction == StaticFriction::FromSeed {
+            settings.seabed_friction = StaticFriction::AsLaid;
+        }
         let balanced = super::static_seed_states(seed_system);
         let given = super::catenary_states(seed_system);
-        let mut statics = SystemStatics::new(system, balanced.clone(), settings)?;
+        let mut statics = Self::build(system, balanced.clone(), settings, None)?;
         if given != balanced {
             statics.fallback = Some(given);
         }
@@ -261,7 +303,10 @@ impl SystemStatics {
                         return Ok(false);
                     }
                 }
-                Ok(None) => return Ok(true),
+                Ok(None) => match self.pull()? {
+                    Some(stage) => *self = stage,
+                    None => return Ok(true),
+                },
                 Err(e) => {
                     let Some(seeds) = self.fallback.take() else {
                         return Err(e);
@@ -269,14 +314,75 @@ impl SystemStatics {
                     let system = self.equations.system.clone();
                     // The system was accepted with the first seeds; the
                     // fallback has the same lines, so this cannot fail.
-                    let Ok(restart) = SystemStatics::new(system, seeds, self.settings.clone())
-                    else {
+                    let settings = self.settings.clone();
+                    let Ok(restart) = Self::build(system, seeds, settings, None) else {
                         return Err(e);
                     };
                     *self = restart;
                 }
             }
         }
+    }
+}
+
+impl SystemStatics {
+    /// The second stage of [`StaticFriction::Pulled`], once the first (as
+    /// laid) has converged: the path from its equilibrium with each
+    /// anchored line's friction targets where its unstretched resting
+    /// part lay (W49) and the friction on. None when there is nothing to
+    /// pull: another policy, the second stage done, or no line anchored
+    /// on a bed with friction.
+    fn pull(&self) -> Result<Option<SystemStatics>, SolverError> {
+        if self.friction != StaticFriction::Pulled || self.pulling {
+            return Ok(None);
+        }
+        let system = &self.equations.system;
+        let states = self.line_states();
+        let targets: Vec<Option<Vec<f64>>> = system
+            .lines()
+            .iter()
+            .zip(&states)
+            .map(|(line, state)| {
+                static_friction::has_friction(&line.model)
+                    .then(|| static_friction::pulled_targets(&line.model, &state.e))
+                    .flatten()
+            })
+            .collect();
+        if targets.iter().all(Option::is_none) {
+            return Ok(None);
+        }
+        let targets = targets
+            .into_iter()
+            .zip(&states)
+            .map(|(t, s)| t.unwrap_or_else(|| s.e.clone()))
+            .collect();
+        let stage = Self::build(system.clone(), states, self.settings.clone(), Some(targets))
+            .map_err(|e| SolverError {
+                kind: crate::error::FailureKind::PathStalled,
+                time: 1.0,
+                step: 0,
+                residual: f64::NAN,
+                iterations: 0,
+                detail: format!(
+                    "{}: the pull along the bed from the equilibrium as laid: {e}",
+                    crate::error::STATIC_SOLVE
+                ),
+            })?;
+        Ok(Some(stage))
+    }
+
+    /// What the seabed exerts on line i's nodes at the last converged
+    /// increment: the consistent nodal forces of the contact with its
+    /// static friction against the slide from the friction's targets
+    /// (W48; [`crate::observe::static_seabed_nodal_forces`]).
+    pub fn seabed_nodal_forces(&self, line: usize) -> Vec<[f64; 3]> {
+        let l = &self.equations.lines[line];
+        crate::observe::static_seabed_nodal_forces(&l.model, &l.state, l.friction_targets())
+    }
+
+    /// What the seabed's friction holds in this solve.
+    pub fn seabed_friction(&self) -> StaticFriction {
+        self.friction
     }
 }
 

@@ -52,6 +52,7 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
         damping_work: sim.damping_work(),
         water_work: sim.water_work(),
         seabed_work: sim.seabed_work(),
+        seabed: None,
     }
 }
 
@@ -86,6 +87,11 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         damping_work: 0.0,
         water_work: 0.0,
         seabed_work: 0.0,
+        seabed: Some(
+            (0..system.lines().len())
+                .map(|i| st.seabed_nodal_forces(i))
+                .collect(),
+        ),
     }
 }
 

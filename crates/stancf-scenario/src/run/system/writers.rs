@@ -34,6 +34,10 @@ pub(super) struct SystemRow<'a> {
     /// (written with `with_water`).
     pub water_work: f64,
     pub seabed_work: f64,
+    /// Each line's seabed nodal forces where the row knows them (a static
+    /// equilibrium, whose friction resists the slide from its targets,
+    /// (W48)); None: those of the contact at the state's velocities.
+    pub seabed: Option<Vec<Vec<[f64; 3]>>>,
 }
 
 /// The files of one line (None: left out by `output.files`).
@@ -219,7 +223,11 @@ impl SystemWriters {
                 node_rows(nodes.writer(), t, model, state)?;
             }
             if let Some(node_loads) = files.node_loads.as_mut() {
-                node_load_rows(node_loads.writer(), t, model, state)
+                let bed = match &row.seabed {
+                    Some(forces) => forces[i].clone(),
+                    None => seabed_nodal_forces(model, state),
+                };
+                node_load_rows(node_loads.writer(), t, model, state, &bed)
                     .map_err(|_| bad(format!("node loads of line {}", self.line_ids[i])))?;
             }
         }
@@ -349,12 +357,17 @@ fn non_finite(what: &str, t: f64) -> std::io::Error {
 
 /// The rows of `node_loads.csv` at time `t`: per node its material
 /// coordinate, curvature, bending moment EI kappa and the seabed's
-/// consistent nodal force (docs/interface.md). A non-finite value is an
-/// error (InvalidData, for the caller to name).
-fn node_load_rows(w: &mut impl Write, t: Num, model: &Model, state: &State) -> std::io::Result<()> {
+/// consistent nodal force `bed`, friction included (docs/interface.md).
+/// A non-finite value is an error (InvalidData, for the caller to name).
+fn node_load_rows(
+    w: &mut impl Write,
+    t: Num,
+    model: &Model,
+    state: &State,
+    bed: &[[f64; 3]],
+) -> std::io::Result<()> {
     let bending = node_bending(model, state);
-    let bed = seabed_nodal_forces(model, state);
-    for (j, (b, f)) in bending.iter().zip(&bed).enumerate() {
+    for (j, (b, f)) in bending.iter().zip(bed).enumerate() {
         let values = [b.s, b.curvature, b.bending_moment, f[0], f[1], f[2]];
         if !values.iter().all(|v| v.is_finite()) {
             return Err(std::io::Error::from(std::io::ErrorKind::InvalidData));
