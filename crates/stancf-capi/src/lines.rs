@@ -55,14 +55,11 @@ pub unsafe extern "C" fn stancf_line_nnodes(
 ) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let model = &sys
+            let model = sys
                 .coupled
                 .handle
-                .system()
-                .lines()
-                .get(line as usize)
-                .ok_or_else(|| no_line(sys, line))?
-                .model;
+                .line_model(line as usize)
+                .ok_or_else(|| no_line(sys, line))?;
             *args::place(n, "n")? = model.nodes() as c_uint;
             Ok(())
         })

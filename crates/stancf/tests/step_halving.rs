@@ -39,7 +39,7 @@ fn snapshot(sim: &SystemSimulation) -> Vec<f64> {
         out.extend_from_slice(&l.state().e);
         out.extend_from_slice(&l.state().v);
     }
-    for p in 0..sim.system().points().len() {
+    for p in 0..sim.topology().points().len() {
         let (x, v) = sim.point_state(p);
         out.extend_from_slice(&x);
         out.extend_from_slice(&v);

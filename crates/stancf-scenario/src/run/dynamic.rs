@@ -341,7 +341,7 @@ fn write_dynamic_summary(
         // P2's limit; the Galerkin step has none.
         "stable_time_step": d
             .stable_step
-            .filter(|_| sc.analysis.time_scheme == stancf::TimeScheme::P2)
+            .filter(|_| sc.analysis.time_scheme.conditionally_stable())
             .map(json_num)
             .unwrap_or(Value::Null),
         "time_scheme": match sc.analysis.time_scheme {

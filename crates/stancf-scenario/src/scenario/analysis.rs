@@ -272,7 +272,7 @@ fn time_scheme(
         "galerkin" => TimeScheme::Galerkin,
         _ => TimeScheme::P2,
     };
-    if time_scheme == TimeScheme::Galerkin && time_layers > 1 {
+    if !time_scheme.layers_allowed() && time_layers > 1 {
         return Err(ctx.err(
             "analysis.time_layers",
             format!(

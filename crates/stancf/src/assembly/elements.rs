@@ -5,7 +5,7 @@
 
 use super::layout::NONE;
 use super::system::{AssemblyScratch, StepProblem, Target};
-use super::{Kind, Scheme};
+use super::Kind;
 use crate::element::{CableElement, SlabDerivatives, SlabLoads};
 use crate::linear::AddEntries;
 use crate::model::{coordinate, gather, SLOT_R};
@@ -195,7 +195,7 @@ impl StepProblem<'_> {
             }
             out
         });
-        if layout.scheme == Scheme::Galerkin {
+        if layout.scheme.end_variation_is_momentum() {
             for (d, t) in targets[2].iter_mut().enumerate() {
                 *t = Target::Momentum(o + d);
             }

@@ -45,41 +45,6 @@ fn cell(slots: usize, dpn: usize, node: usize, slot: usize, d: usize) -> usize {
     (node * slots + slot) * dpn + d
 }
 
-/// (time node, kind) of each slot of a node's unknowns or rows.
-type Slots = Vec<(usize, Kind)>;
-
-/// The unknown slots and the row slots of a scheme (docs/method.md §4.3,
-/// §5.1, §6.8).
-fn scheme_slots(scheme: Scheme) -> (Slots, Slots) {
-    match scheme {
-        Scheme::P2 { layers } => {
-            let u: Vec<(usize, Kind)> = (1..=layers)
-                .flat_map(|i| [(i, Kind::Position), (i, Kind::Velocity)])
-                .collect();
-            let mut r = vec![(0, Kind::Position)];
-            for i in 1..layers {
-                r.push((i, Kind::Position));
-                r.push((i, Kind::Velocity));
-            }
-            r.push((layers, Kind::Position));
-            (u, r)
-        }
-        Scheme::Galerkin => (
-            vec![
-                (0, Kind::Velocity),
-                (1, Kind::Position),
-                (1, Kind::Velocity),
-            ],
-            vec![
-                (0, Kind::Position),
-                (0, Kind::Velocity),
-                (1, Kind::Velocity),
-            ],
-        ),
-        Scheme::Static => (vec![(0, Kind::Position)], vec![(0, Kind::Position)]),
-    }
-}
-
 /// Lower and upper bandwidth of a Jacobian whose node blocks start at
 /// `block_start`: a row of node n couples with unknowns of nodes
 /// n - 1 ..= n + 1.
@@ -100,7 +65,7 @@ fn block_bandwidths(block_start: &[usize]) -> (usize, usize) {
 
 impl SlabLayout {
     pub fn new(model: &Model, scheme: Scheme, method: ConstraintMethod) -> Self {
-        let (unknown_slots, row_slots) = scheme_slots(scheme);
+        let (unknown_slots, row_slots) = scheme.slots();
         let nodes = model.nodes();
         let dpn = model.dofs_per_node();
         let nu = unknown_slots.len();
@@ -219,11 +184,7 @@ impl SlabLayout {
 
     /// Element layers per step (0 for a static solve).
     pub fn layers(&self) -> usize {
-        match self.scheme {
-            Scheme::P2 { layers } => layers,
-            Scheme::Galerkin => 1,
-            Scheme::Static => 0,
-        }
+        self.scheme.layers()
     }
 
     /// Time nodes 0..=L (a static solve has one).

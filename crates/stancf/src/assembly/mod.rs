@@ -63,20 +63,6 @@ pub use matrices::stiffness_and_mass;
 pub use scaling::Scales;
 pub use system::{AssemblyScratch, StepProblem, StepStart};
 
-/// Position (e) or velocity (v) coordinates of a time node.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    Position,
-    Velocity,
-}
-
-/// What is solved for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Scheme {
-    /// A P2 step with `layers` element layers in time.
-    P2 { layers: usize },
-    /// A Galerkin step (all four variations of the slab action).
-    Galerkin,
-    /// A static solve.
-    Static,
-}
+/// The scheme and its slot kinds live in [`crate::scheme`]; their old
+/// paths here stay.
+pub use crate::scheme::{Kind, Scheme};

@@ -3,7 +3,7 @@
 //! ([`StepProblem::assemble`]; docs/method.md §4.3, §5.1, §6.8).
 
 use super::layout::SlabLayout;
-use super::{Kind, Scheme};
+use super::Kind;
 use crate::band::BandMatrix;
 use crate::element::{SlabDerivatives, TimeSlab};
 use crate::linear::{AddEntries, Jacobian};
@@ -143,7 +143,7 @@ pub(super) enum Target {
 impl StepProblem<'_> {
     /// Where the gradient entry of (time node i, kind, coordinate g) goes.
     pub(super) fn target_at(&self, i: usize, kind: Kind, g: usize) -> Target {
-        if self.layout.scheme == Scheme::Galerkin && (i, kind) == (1, Kind::Position) {
+        if self.layout.scheme.end_variation_is_momentum() && (i, kind) == (1, Kind::Position) {
             return Target::Momentum(g);
         }
         self.target(self.layout.row_slot(i, kind), g)
@@ -174,7 +174,7 @@ impl StepProblem<'_> {
                 &mut scratch.node_e[i * n..(i + 1) * n],
                 &mut scratch.node_v[i * n..(i + 1) * n],
             );
-            if i == 0 && layout.scheme != Scheme::Static {
+            if i == 0 && layout.scheme.has_known_start() {
                 // e_a is known; P2's v_a too, Galerkin's w_a is an unknown
                 // (prescribed, i.e. the start's rate, where constrained).
                 e_out.copy_from_slice(&start.e);
@@ -259,19 +259,23 @@ impl StepProblem<'_> {
         let mut derivs2 = std::mem::take(&mut scratch.derivs2);
         let mut derivs3 = std::mem::take(&mut scratch.derivs3);
         match &self.model.mesh {
-            crate::model::Mesh::Sac2(els) => match self.layout.scheme {
-                Scheme::Static => self.static_elements(els, residual, jac, scratch),
-                _ => self.slab_elements(els, &mut derivs2, residual, jac, scratch),
-            },
-            crate::model::Mesh::Sac3(els) => match self.layout.scheme {
-                Scheme::Static => self.static_elements(els, residual, jac, scratch),
-                _ => self.slab_elements(els, &mut derivs3, residual, jac, scratch),
-            },
+            crate::model::Mesh::Sac2(els) if self.layout.scheme.is_static() => {
+                self.static_elements(els, residual, jac, scratch)
+            }
+            crate::model::Mesh::Sac2(els) => {
+                self.slab_elements(els, &mut derivs2, residual, jac, scratch)
+            }
+            crate::model::Mesh::Sac3(els) if self.layout.scheme.is_static() => {
+                self.static_elements(els, residual, jac, scratch)
+            }
+            crate::model::Mesh::Sac3(els) => {
+                self.slab_elements(els, &mut derivs3, residual, jac, scratch)
+            }
         }
         scratch.derivs2 = derivs2;
         scratch.derivs3 = derivs3;
         self.nodal_loads(residual, jacobian.as_deref_mut(), scratch);
-        if self.layout.scheme != Scheme::Static {
+        if self.layout.scheme.has_inertia() {
             self.momentum_terms(residual, jacobian.as_deref_mut(), scratch);
         }
         self.constraint_terms(x, residual, jacobian);

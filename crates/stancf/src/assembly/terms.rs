@@ -5,7 +5,7 @@
 
 use super::elements::layer_slots;
 use super::system::{AssemblyScratch, StepProblem};
-use super::{Kind, Scheme};
+use super::Kind;
 use crate::constraints::ConstraintMethod;
 use crate::linear::AddEntries;
 use crate::loads::EndMoment;
@@ -28,7 +28,7 @@ impl StepProblem<'_> {
                 continue;
             };
             let g0 = coordinate(self.layout.dpn, node, SLOT_R_X, 0);
-            if self.layout.scheme == Scheme::Static {
+            if !self.layout.scheme.loads_as_work() {
                 self.static_end_moment(&moment, g0, residual, jacobian.as_deref_mut(), scratch);
             } else {
                 self.slab_end_moment(&moment, g0, residual, jacobian.as_deref_mut(), scratch);
@@ -41,12 +41,12 @@ impl StepProblem<'_> {
     fn point_forces(&self, residual: &mut [f64], scratch: &mut AssemblyScratch) {
         let layout = self.layout;
         let lf = self.start.load_factor;
-        let is_static = layout.scheme == Scheme::Static;
+        let as_work = layout.scheme.loads_as_work();
         for (node, f) in self.model.point_forces() {
             let f = f.map(|c| c * lf);
             for c in 0..3 {
                 let g = coordinate(layout.dpn, node, SLOT_R, c);
-                if is_static {
+                if !as_work {
                     let t = self.target(Some(0), g);
                     self.add(t, -f[c], residual, scratch);
                     continue;
@@ -169,7 +169,7 @@ impl StepProblem<'_> {
             let t = self.target(first_slot, g);
             self.add(t, self.start.mass_v[g], residual, scratch);
         }
-        if layout.scheme == Scheme::Galerkin {
+        if !layout.scheme.end_row_holds_momentum() {
             return;
         }
         let el = &scratch.node_e[last * n..(last + 1) * n];
@@ -218,11 +218,7 @@ impl StepProblem<'_> {
             return;
         }
         let n = self.model.dofs();
-        let sign = if layout.scheme == Scheme::Static {
-            -1.0
-        } else {
-            1.0
-        };
+        let sign = layout.scheme.multiplier_sign();
         for g in (0..n).filter(|&g| self.model.constraints.is_constrained(g)) {
             for s in 0..layout.row_slots.len() {
                 if let (Some(r), Some(m)) = (layout.row_at(s, g), layout.multiplier_at(s, g)) {

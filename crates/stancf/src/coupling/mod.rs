@@ -30,9 +30,10 @@ pub use error::CouplingError;
 
 use crate::error::ModelError;
 use crate::integrator::StepSettings;
+use crate::model::Model;
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::statics::StaticSettings;
-use crate::system::{PointKind, System, SystemSimulation, SystemStatics};
+use crate::system::{PointKind, System, SystemSimulation, SystemStatics, Topology};
 use identity::{Identity, SystemDigest};
 
 /// The forces of the lines on the coupled points after an interval,
@@ -226,12 +227,30 @@ impl CoupledSystem {
         3 * self.coupled.len()
     }
 
-    /// The system: as built before [`Self::initialize`], then the running
-    /// one (its coupled points on the coupling code's motion).
+    /// The system as built (its coupled points where the scenario puts
+    /// them, at rest; the running simulation's points and lines are
+    /// [`Self::topology`] and [`Self::line_model`]).
     pub fn system(&self) -> &System {
+        &self.system
+    }
+
+    /// The system's points and line ends: as built before
+    /// [`Self::initialize`], then the running simulation's (its coupled
+    /// points on the coupling code's motion).
+    pub fn topology(&self) -> &Topology {
         self.running
             .as_ref()
-            .map_or(&self.system, |r| r.sim.system())
+            .map_or(&self.system, |r| r.sim.topology())
+    }
+
+    /// The model of line `line` (None past the last line): the system's
+    /// as built before [`Self::initialize`], then the running line
+    /// simulation's (its attachments on the coupling code's motion).
+    pub fn line_model(&self, line: usize) -> Option<&Model> {
+        match &self.running {
+            Some(r) => r.sim.lines().get(line).map(|l| l.model()),
+            None => self.system.lines().get(line).map(|l| &l.model),
+        }
     }
 
     /// The running simulation (after [`Self::initialize`]): its lines'
@@ -416,7 +435,7 @@ impl Running {
         let t = self.sim.time();
         let mut velocity = vec![0.0; self.position.len()];
         for (k, &p) in coupled.iter().enumerate() {
-            let (r, v) = self.sim.system().points()[p].state_at(t);
+            let (r, v) = self.sim.topology().points()[p].state_at(t);
             self.position[3 * k..3 * k + 3].copy_from_slice(&r);
             velocity[3 * k..3 * k + 3].copy_from_slice(&v);
         }

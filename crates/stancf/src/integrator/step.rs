@@ -214,7 +214,7 @@ impl Simulation {
     /// `dA/de_b - M v_b` (the end row's part that P2 carries in its
     /// e_L row, docs/method.md §5.1); zero for P2.
     pub(crate) fn galerkin_end_term(&self, g: usize) -> f64 {
-        if self.layout.scheme == crate::assembly::Scheme::Galerkin {
+        if self.layout.scheme.end_variation_is_momentum() {
             self.scratch.end_momentum[g] - self.mass_v[g]
         } else {
             0.0

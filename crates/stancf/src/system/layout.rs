@@ -6,7 +6,7 @@
 //! a [`crate::bordered::BorderedMatrix`]: one band per line, bordered by
 //! the points.
 
-use super::{End, System};
+use super::{AttachedEnd, Topology};
 use crate::assembly::{Scheme, SlabLayout};
 use crate::bordered::{BlockEntries, BlockShape, BorderedMatrix};
 use crate::constraints::ConstraintMethod;
@@ -76,7 +76,7 @@ impl SystemLayout {
     /// Numbers the step of `system` whose lines are the models `lines`
     /// (the system's, as the line simulations hold them).
     pub fn new(
-        system: &System,
+        system: &Topology,
         lines: &[&Model],
         scheme: Scheme,
         method: ConstraintMethod,
@@ -98,9 +98,8 @@ impl SystemLayout {
         let mut shapes = Vec::with_capacity(lines.len());
         let mut start = 0;
         for (li, layout) in layouts.iter().enumerate() {
-            let line = &system.lines()[li];
-            let ends = super::end_nodes(lines[li]);
-            let (map, shape) = line_map(layout, &line.ends, ends, &point_base, start);
+            let ends = system.attached_ends(li, lines[li]);
+            let (map, shape) = line_map(layout, ends, &point_base, start);
             start += map.size;
             maps.push(map);
             shapes.push(shape);
@@ -142,17 +141,17 @@ impl SystemLayout {
 /// relative to the border's start (the caller shifts them).
 fn line_map(
     layout: &SlabLayout,
-    ends: &[End; 2],
-    end_nodes: [usize; 2],
+    ends: impl Iterator<Item = AttachedEnd>,
     point_base: &[Option<usize>],
     start: usize,
 ) -> (LineMap, BlockShape) {
     let n = layout.size();
     let slots = layout.unknown_slots.len();
     let mut place = vec![0usize; n];
-    for (end, node) in ends.iter().zip(end_nodes) {
-        let End::Point(p) = *end else { continue };
-        let Some(base) = point_base[p] else { continue };
+    for AttachedEnd { point, node, .. } in ends {
+        let Some(base) = point_base[point] else {
+            continue;
+        };
         for s in 0..slots {
             for c in 0..3 {
                 let u = layout

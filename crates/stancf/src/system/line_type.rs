@@ -102,7 +102,7 @@ pub fn stable_step(
     time_points: usize,
     time_layers: usize,
 ) -> Option<f64> {
-    if scheme != TimeScheme::P2 {
+    if !scheme.conditionally_stable() {
         return None;
     }
     let rule = GaussRule::new(time_points).ok()?;

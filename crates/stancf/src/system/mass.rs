@@ -20,7 +20,7 @@
 //! added mass, whose M_a(e_b) (W31) makes it refactorize at every step.
 
 use super::layout::{LineView, SystemLayout};
-use super::System;
+use super::Topology;
 use crate::assembly::Scheme;
 use crate::bordered::BorderedLu;
 use crate::constraints::ConstraintMethod;
@@ -44,7 +44,7 @@ pub(super) struct SystemMass {
 
 impl SystemMass {
     /// Numbers and factorizes M_ff of `system` with line models `lines`.
-    pub fn new(system: &System, lines: &[&Model]) -> Result<Self, ModelError> {
+    pub fn new(system: &Topology, lines: &[&Model]) -> Result<Self, ModelError> {
         let layout =
             SystemLayout::new(system, lines, Scheme::Static, ConstraintMethod::Elimination);
         let mut lu = BorderedLu::new(&layout.shapes, layout.border);
@@ -66,7 +66,7 @@ impl SystemMass {
 
     /// With added mass, refills M_ff at the lines' step-end coordinates
     /// and factorizes it (after every line's [`Simulation::expand_step`]).
-    fn refactorize(&mut self, system: &System, lines: &[Simulation]) {
+    fn refactorize(&mut self, system: &Topology, lines: &[Simulation]) {
         if !self.entrained {
             return;
         }
@@ -85,7 +85,7 @@ impl SystemMass {
     /// [`Simulation::expand_step`]).
     pub fn set_end_rates(
         &mut self,
-        system: &System,
+        system: &Topology,
         lines: &mut [Simulation],
         point_momentum: &[[f64; 3]],
     ) {
@@ -138,7 +138,7 @@ impl SystemMass {
 fn fill_mass<'a>(
     lu: &mut BorderedLu,
     layout: &SystemLayout,
-    system: &System,
+    system: &Topology,
     line: impl Fn(usize) -> (&'a Model, Option<&'a [f64]>),
 ) {
     for i in 0..layout.lines.len() {

@@ -38,6 +38,7 @@ mod static_friction;
 mod statics;
 mod step_equations;
 mod stepping;
+mod topology;
 
 pub use balance::{balanced_points, static_seed_states};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
@@ -51,6 +52,7 @@ pub use seed::{
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;
 pub use statics::SystemStatics;
+pub use topology::{attached_ends, AttachedEnd, Topology};
 
 use crate::constraints::{Constraint, ConstraintKind};
 use crate::error::ModelError;
@@ -65,11 +67,6 @@ pub fn end_node(model: &Model, end: usize) -> usize {
     } else {
         model.nodes() - 1
     }
-}
-
-/// The nodes of a line's ends A and B ([`end_node`]).
-pub fn end_nodes(model: &Model) -> [usize; 2] {
-    [end_node(model, 0), end_node(model, 1)]
 }
 
 /// What holds a point.
@@ -185,13 +182,20 @@ impl Line {
 }
 
 /// A system of lines and points, validated; the lines' models carry the
-/// constraints of their ends at fixed and coupled points.
+/// constraints of their ends at fixed and coupled points. It reads as its
+/// [`Topology`] (points, line ends, gravity) through `Deref`.
 #[derive(Clone, Debug)]
 pub struct System {
     lines: Vec<Line>,
-    points: Vec<Point>,
-    /// Acceleration of gravity on the points' masses (m/s^2).
-    gravity: [f64; 3],
+    topology: Topology,
+}
+
+impl std::ops::Deref for System {
+    type Target = Topology;
+
+    fn deref(&self) -> &Topology {
+        &self.topology
+    }
 }
 
 impl System {
@@ -226,8 +230,7 @@ impl System {
         let mut out = Vec::with_capacity(lines.len());
         for (li, line) in lines.into_iter().enumerate() {
             let mut list = line.model.constraints.list.clone();
-            for (end, node) in line.ends.iter().zip(end_nodes(&line.model)) {
-                let End::Point(p) = *end else { continue };
+            for AttachedEnd { point: p, node, .. } in attached_ends(&line.ends, &line.model) {
                 let Some(point) = points.get(p) else {
                     return Err(ModelError::invalid(
                         format!("lines[{li}]"),
@@ -272,10 +275,14 @@ impl System {
                 ));
             }
         }
-        Ok(System {
-            lines: out,
+        let topology = Topology {
+            ends: out.iter().map(|l| l.ends).collect(),
             points,
             gravity,
+        };
+        Ok(System {
+            lines: out,
+            topology,
         })
     }
 
@@ -283,42 +290,19 @@ impl System {
         &self.lines
     }
 
-    pub fn points(&self) -> &[Point] {
-        &self.points
-    }
-
-    pub fn gravity(&self) -> [f64; 3] {
-        self.gravity
-    }
-
-    /// The constant load on free point p: its weight, its constant force
-    /// and, in water, its buoyancy (W33).
-    pub fn point_load(&self, p: usize) -> [f64; 3] {
-        let pt = &self.points[p];
-        let buoyancy = pt
-            .water
-            .as_ref()
-            .map_or([0.0; 3], |w| w.buoyancy(&self.gravity));
-        std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i] + buoyancy[i])
-    }
-
-    /// The inertia of free point p: its mass and, in water, its added mass
-    /// (W35).
-    pub fn point_inertia(&self, p: usize) -> f64 {
-        let pt = &self.points[p];
-        pt.mass + pt.water.as_ref().map_or(0.0, |w| w.added_mass())
+    /// The system's topology (its points, line ends and gravity) and its
+    /// lines' models, apart: a running simulation keeps the one and hands
+    /// the models to its line simulations.
+    pub fn into_parts(self) -> (Topology, Vec<Model>) {
+        let models = self.lines.into_iter().map(|l| l.model).collect();
+        (self.topology, models)
     }
 
     /// Moves coupled point p along `motion` (a coupling code's next
     /// interval, docs/method.md §13.2): the point and the attachment
     /// constraints of its lines. Refused for a fixed or free point.
     pub fn set_point_motion(&mut self, p: usize, motion: CoupledMotion) -> Result<(), ModelError> {
-        let key = format!("points[{p}]");
-        match self.points.get(p).map(|pt| &pt.kind) {
-            Some(PointKind::Coupled(_)) => {}
-            Some(_) => return Err(ModelError::invalid(key, "is not a coupled point")),
-            None => return Err(ModelError::invalid(key, "does not exist")),
-        }
+        self.topology.check_coupled(p)?;
         let attached: Vec<(usize, usize)> = self.attachments(p).collect();
         for (li, end) in attached {
             let model = &mut self.lines[li].model;
@@ -329,65 +313,8 @@ impl System {
                 .set_attached_motion(node, dpn, motion.clone())
                 .map_err(|e| e.under(&format!("lines[{li}]")))?;
         }
-        self.points[p].kind = PointKind::Coupled(motion);
+        self.topology.set_point_motion(p, motion);
         Ok(())
-    }
-
-    /// The lines attached to point p: (line, end 0 = A or 1 = B).
-    pub fn attachments(&self, p: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
-        self.lines.iter().enumerate().flat_map(move |(li, l)| {
-            l.ends
-                .iter()
-                .enumerate()
-                .filter(move |(_, e)| **e == End::Point(p))
-                .map(move |(end, _)| (li, end))
-        })
-    }
-
-    /// Checks that every line is held: connected, through lines and free
-    /// points, to a fixed or coupled point. A static equilibrium of a
-    /// group of lines that nothing holds is not unique (it can translate).
-    pub fn check_held(&self) -> Result<(), ModelError> {
-        let n_points = self.points.len();
-        // Union-find over points (0..n_points) and lines (n_points..).
-        let mut parent: Vec<usize> = (0..n_points + self.lines.len()).collect();
-        fn root(parent: &mut [usize], mut i: usize) -> usize {
-            while parent[i] != i {
-                parent[i] = parent[parent[i]];
-                i = parent[i];
-            }
-            i
-        }
-        for (li, line) in self.lines.iter().enumerate() {
-            for end in line.ends {
-                if let End::Point(p) = end {
-                    let (a, b) = (root(&mut parent, p), root(&mut parent, n_points + li));
-                    parent[a] = b;
-                }
-            }
-        }
-        let mut held = vec![false; parent.len()];
-        for (p, point) in self.points.iter().enumerate() {
-            if !point.is_free() {
-                let r = root(&mut parent, p);
-                held[r] = true;
-            }
-        }
-        for li in 0..self.lines.len() {
-            if !held[root(&mut parent, n_points + li)] {
-                return Err(ModelError::invalid(
-                    format!("lines[{li}]"),
-                    "nothing holds this line: it is not connected, through lines and free \
-                     points, to a fixed or coupled point, so its equilibrium is not unique",
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// Whether some point is free (the lines are then solved together).
-    pub fn has_free_points(&self) -> bool {
-        self.points.iter().any(Point::is_free)
     }
 }
 

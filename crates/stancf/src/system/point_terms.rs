@@ -26,7 +26,7 @@
 //!
 //! and in statics - f of the steady current at rest.
 
-use crate::assembly::{Kind, Scheme, SlabLayout};
+use crate::assembly::{Kind, SlabLayout};
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
 use crate::water::{PointForce, PointInWater};
@@ -60,7 +60,7 @@ impl<'a> PointTerms<'a> {
     /// The terms of free point p of `system` in the step from `time`:
     /// its inertia, load and water (docs/method.md §11.2, §12.6).
     pub fn of(
-        system: &'a super::System,
+        system: &'a super::Topology,
         p: usize,
         time: f64,
         index: &'a [usize],
@@ -85,9 +85,9 @@ impl<'a> PointTerms<'a> {
         let count = layout.time_nodes();
         nodes.e.resize(count, [0.0; 3]);
         nodes.v.resize(count, [0.0; 3]);
-        let static_solve = layout.scheme == Scheme::Static;
+        let known_start = layout.scheme.has_known_start();
         for i in 0..count {
-            let (e0, v0) = if i == 0 && !static_solve {
+            let (e0, v0) = if i == 0 && known_start {
                 (e_a, v_a)
             } else {
                 ([0.0; 3], [0.0; 3])
@@ -179,7 +179,7 @@ impl<'a> PointTerms<'a> {
         mut jacobian: Option<&mut J>,
     ) {
         let layout = self.layout;
-        if layout.scheme == Scheme::Static {
+        if layout.scheme.is_static() {
             self.add_static(nodes, residual, jacobian);
             return;
         }

@@ -14,7 +14,7 @@ use super::layout::SystemLayout;
 use super::mass::SystemMass;
 use super::point_terms::PointNodes;
 use super::step_equations::{system_scales, PointMotion, StepOfSystem};
-use super::System;
+use super::{System, Topology};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
@@ -29,7 +29,7 @@ use crate::solver::{NewtonWorkspace, NonlinearSystem};
 macro_rules! step_problem {
     ($sim:expr) => {
         StepOfSystem {
-            system: &$sim.system,
+            topology: &$sim.topology,
             lines: &mut $sim.lines,
             layout: &$sim.layout,
             slab: &$sim.slab,
@@ -52,7 +52,10 @@ pub(super) use step_problem;
 /// (a coupling code's save and restore, docs/method.md §13.4).
 #[derive(Clone)]
 pub struct SystemSimulation {
-    pub(super) system: System,
+    /// The system's points and line ends; the line models are the line
+    /// simulations' (each exists once).
+    pub(super) topology: Topology,
+    /// The line simulations, owners of the line models.
     pub(super) lines: Vec<Simulation>,
     pub(super) layout: SystemLayout,
     pub(super) settings: StepSettings,
@@ -103,32 +106,32 @@ impl SystemSimulation {
             ));
         }
         let t = initial[0].t;
+        let (topology, models) = system.into_parts();
         let mut line_settings = settings.clone();
         // The planar reduction holds coordinates line by line; lines
         // joined at free points must hold the same ones, so it is left off.
-        line_settings.planar_reduction &= !system.has_free_points();
+        line_settings.planar_reduction &= !topology.has_free_points();
         // Without free points the lines are independent: each is solved
         // apart, with its own solver (docs/method.md §11.14).
-        let apart = !system.has_free_points();
-        let lines = system
-            .lines()
-            .iter()
+        let apart = !topology.has_free_points();
+        let lines = models
+            .into_iter()
             .zip(initial)
             .enumerate()
-            .map(|(i, (line, state))| {
-                Simulation::line_of_system(line.model.clone(), state, line_settings.clone(), apart)
+            .map(|(i, (model, state))| {
+                Simulation::line_of_system(model, state, line_settings.clone(), apart)
                     .map_err(|e| e.under(&format!("lines[{i}]")))
             })
             .collect::<Result<Vec<_>, _>>()?;
         let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
         let scheme = settings.time_scheme.layout(settings.time_layers);
-        let layout = SystemLayout::new(&system, &models, scheme, settings.constraint_method);
+        let layout = SystemLayout::new(&topology, &models, scheme, settings.constraint_method);
         let h = settings.time_step / settings.time_layers as f64;
         let rule = GaussRule::new(settings.time_points)
             .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
         let slab = TimeSlab::new(h, &rule);
-        let points = point_motions(&system, &lines)?;
-        let point_index = (0..system.points().len())
+        let points = point_motions(&topology, &lines)?;
+        let point_index = (0..topology.points().len())
             .map(|p| match layout.point_base[p] {
                 Some(_) => (0..3 * layout.slots)
                     .map(|k| layout.point_unknown(p, k / 3, k % 3).expect("free"))
@@ -141,21 +144,21 @@ impl SystemSimulation {
         let workspace = NewtonWorkspace::with_factors(lu, n, settings.newton.max_iterations);
         let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
-        let (unknown_scale, equation_scale) = system_scales(&system, &lines, &layout);
-        let mass = if system.has_free_points() && settings.time_scheme.carries_momentum() {
-            Some(SystemMass::new(&system, &models)?)
+        let (unknown_scale, equation_scale) = system_scales(&topology, &lines, &layout);
+        let mass = if topology.has_free_points() && settings.time_scheme.carries_momentum() {
+            Some(SystemMass::new(&topology, &models)?)
         } else {
             None
         };
         Ok(SystemSimulation {
             mass,
-            point_momentum: vec![[0.0; 3]; system.points().len()],
+            point_momentum: vec![[0.0; 3]; topology.points().len()],
             point_water_work: 0.0,
             step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             forces_at_time: ForcesAtTime::new(lines.len()),
-            point_nodes: vec![PointNodes::default(); system.points().len()],
-            system,
+            point_nodes: vec![PointNodes::default(); topology.points().len()],
+            topology,
             lines,
             layout,
             settings,
@@ -173,11 +176,14 @@ impl SystemSimulation {
         })
     }
 
-    pub fn system(&self) -> &System {
-        &self.system
+    /// The system's points, line ends and gravity (its coupled points on
+    /// their current motion); the line models are [`Self::lines`]'.
+    pub fn topology(&self) -> &Topology {
+        &self.topology
     }
 
-    /// The line simulations (their states, reactions and energies).
+    /// The line simulations (their models, states, reactions and
+    /// energies).
     pub fn lines(&self) -> &[Simulation] {
         &self.lines
     }
@@ -217,7 +223,7 @@ impl SystemSimulation {
     /// The sum over the lines attached to point p of their ends' forces.
     fn sum_at_point(&self, p: usize, ends: impl Fn(usize) -> [EndForce; 2]) -> [f64; 3] {
         let mut f = [0.0; 3];
-        for (li, end) in self.system.attachments(p) {
+        for (li, end) in self.topology.attachments(p) {
             let force = ends(li)[end].force;
             for c in 0..3 {
                 f[c] += force[c];
@@ -295,14 +301,15 @@ impl SystemSimulation {
         p: usize,
         motion: crate::motion::CoupledMotion,
     ) -> Result<(), ModelError> {
-        self.system.set_point_motion(p, motion.clone())?;
-        let attached: Vec<(usize, usize)> = self.system.attachments(p).collect();
+        self.topology.check_coupled(p)?;
+        let attached: Vec<(usize, usize)> = self.topology.attachments(p).collect();
         for (li, end) in attached {
             let line = &mut self.lines[li];
             let node = super::end_node(line.model(), end);
             line.set_attached_motion(node, motion.clone())
                 .map_err(|e| e.under(&format!("lines[{li}]")))?;
         }
+        self.topology.set_point_motion(p, motion);
         Ok(())
     }
 
@@ -325,7 +332,7 @@ impl SystemSimulation {
             line.set_time_step(dt);
         }
         (self.unknown_scale, self.equation_scale) =
-            system_scales(&self.system, &self.lines, &self.layout);
+            system_scales(&self.topology, &self.lines, &self.layout);
         self.workspace.factors_valid = false;
     }
 
@@ -341,7 +348,7 @@ impl SystemSimulation {
 /// The points' states at the start: free points where their first
 /// attached line end is (its position and velocity), the others on
 /// their motion.
-fn point_motions(system: &System, lines: &[Simulation]) -> Result<Vec<PointMotion>, ModelError> {
+fn point_motions(system: &Topology, lines: &[Simulation]) -> Result<Vec<PointMotion>, ModelError> {
     let t = lines[0].state().t;
     let mut out = Vec::with_capacity(system.points().len());
     for (p, point) in system.points().iter().enumerate() {

@@ -31,7 +31,7 @@
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::static_friction::{self, StaticFriction};
-use super::{End, System};
+use super::{AttachedEnd, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
 use crate::linear::{AddEntries, Jacobian};
@@ -497,13 +497,14 @@ impl SystemEquations {
     /// or coupled point minus the line's reaction.
     fn collect_end_forces(&mut self) {
         for (i, line) in self.lines.iter().enumerate() {
-            let ends = self.system.lines()[i].ends;
             let dpn = line.model.dofs_per_node();
-            for (k, (end, node)) in ends.iter().zip(super::end_nodes(&line.model)).enumerate() {
-                let End::Point(p) = *end else {
-                    self.end_forces[i][k] = EndForce::default();
-                    continue;
-                };
+            self.end_forces[i] = [EndForce::default(); 2];
+            for AttachedEnd {
+                end: k,
+                point: p,
+                node,
+            } in self.system.attached_ends(i, &line.model)
+            {
                 let force = if self.system.points()[p].is_free() {
                     std::array::from_fn(|c| {
                         let g = coordinate(dpn, node, SLOT_R, c);

@@ -5,7 +5,7 @@
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
-use super::{End, System};
+use super::{AttachedEnd, Topology};
 use crate::bordered::BorderedMatrix;
 use crate::element::TimeSlab;
 use crate::integrator::Simulation;
@@ -28,7 +28,7 @@ pub(super) struct PointMotion {
 /// weight is inverse to the mass on the coordinate: 1/w = sum 1/w_i,
 /// scaled by the lines' end mass over that plus the point's).
 pub(super) fn system_scales(
-    system: &System,
+    system: &Topology,
     lines: &[Simulation],
     layout: &SystemLayout,
 ) -> (Vec<f64>, Vec<f64>) {
@@ -50,13 +50,8 @@ pub(super) fn system_scales(
                 inverse_equation[g] += 1.0 / scales.equation[u];
             }
         }
-        for (end, node) in system.lines()[i]
-            .ends
-            .iter()
-            .zip(super::end_nodes(line.model()))
-        {
-            let End::Point(p) = *end else { continue };
-            let Some(base) = layout.point_base[p] else {
+        for AttachedEnd { point, node, .. } in system.attached_ends(i, line.model()) {
+            let Some(base) = layout.point_base[point] else {
                 continue;
             };
             let o = coordinate(line.model().dofs_per_node(), node, SLOT_R, 0);
@@ -86,7 +81,7 @@ pub(super) fn system_scales(
 
 /// The step of a system as Newton sees it.
 pub(super) struct StepOfSystem<'a> {
-    pub(super) system: &'a System,
+    pub(super) topology: &'a Topology,
     pub(super) lines: &'a mut [Simulation],
     pub(super) layout: &'a SystemLayout,
     pub(super) slab: &'a TimeSlab,
@@ -123,7 +118,7 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
                 continue;
             }
             let m = &self.points[p];
-            let terms = PointTerms::of(self.system, p, self.time, idx, layout, self.slab);
+            let terms = PointTerms::of(self.topology, p, self.time, idx, layout, self.slab);
             terms.expand(x, m.e, m.v, &mut self.point_nodes[p]);
             let momentum = m.v.map(|v| terms.mass * v);
             terms.add(

@@ -8,7 +8,7 @@ use super::end_forces::position_row_sum;
 use super::point_terms::PointTerms;
 use super::simulation::{step_problem, SystemSimulation};
 use super::step_equations::StepOfSystem;
-use super::{End, EndForce};
+use super::{AttachedEnd, End, EndForce};
 use crate::assembly::Kind;
 use crate::bordered::BorderedMatrix;
 use crate::error::SolverError;
@@ -23,7 +23,7 @@ impl SystemSimulation {
         for line in &mut self.lines {
             line.begin_step();
         }
-        let report = if self.system.has_free_points() {
+        let report = if self.topology.has_free_points() {
             self.gather_prediction();
             let report = self.solve_step(dt)?;
             for (i, line) in self.lines.iter_mut().enumerate() {
@@ -53,12 +53,12 @@ impl SystemSimulation {
     pub(super) fn add_point_water_work(&mut self) {
         let layout = &self.layout.lines[0];
         for (p, idx) in self.point_index.iter().enumerate() {
-            let point = &self.system.points()[p];
+            let point = &self.topology.points()[p];
             if idx.is_empty() || point.water.is_none() {
                 continue;
             }
             let m = &self.points[p];
-            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
+            let terms = PointTerms::of(&self.topology, p, self.t, idx, layout, &self.slab);
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_water_work += terms.water_work(&self.point_nodes[p]);
         }
@@ -83,11 +83,11 @@ impl SystemSimulation {
                 continue;
             }
             let m = &self.points[p];
-            let terms = PointTerms::of(&self.system, p, self.t, idx, layout, &self.slab);
+            let terms = PointTerms::of(&self.topology, p, self.t, idx, layout, &self.slab);
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
         }
-        mass.set_end_rates(&self.system, &mut self.lines, &self.point_momentum);
+        mass.set_end_rates(&self.topology, &mut self.lines, &self.point_momentum);
         for line in &mut self.lines {
             line.close_step(report);
         }
@@ -147,10 +147,10 @@ impl SystemSimulation {
     /// fixed or coupled point minus the line's reaction (§6.5).
     pub(super) fn collect_end_forces(&mut self, dt: f64) {
         for (i, line) in self.lines.iter_mut().enumerate() {
-            let ends = self.system.lines()[i].ends;
+            let ends = self.topology.line_ends()[i];
             let free_end = ends
                 .iter()
-                .any(|e| matches!(e, End::Point(p) if self.system.points()[*p].is_free()));
+                .any(|e| matches!(e, End::Point(p) if self.topology.points()[*p].is_free()));
             if free_end {
                 // The line's rows at the converged unknowns.
                 let map = &self.layout.maps[i];
@@ -159,12 +159,14 @@ impl SystemSimulation {
                 line.assemble_line::<BorderedMatrix>(xl, &mut self.residual_local[i], None);
             }
             let layout = &self.layout.lines[i];
-            for (k, (end, node)) in ends.iter().zip(super::end_nodes(line.model())).enumerate() {
-                let End::Point(p) = *end else {
-                    self.end_forces[i][k] = EndForce::default();
-                    continue;
-                };
-                let force = if self.system.points()[p].is_free() {
+            self.end_forces[i] = [EndForce::default(); 2];
+            for AttachedEnd {
+                end: k,
+                point: p,
+                node,
+            } in self.topology.attached_ends(i, line.model())
+            {
+                let force = if self.topology.points()[p].is_free() {
                     let rows = position_row_sum(layout, node, &self.residual_local[i]);
                     let dpn = line.model().dofs_per_node();
                     std::array::from_fn(|c| {
@@ -190,7 +192,7 @@ impl SystemSimulation {
         let layout = &self.layout.lines[0];
         let last = layout.layers();
         let t_end = self.t + dt;
-        for (p, point) in self.system.points().iter().enumerate() {
+        for (p, point) in self.topology.points().iter().enumerate() {
             let m = &mut self.points[p];
             m.previous = (m.e, m.v);
             let galerkin_rate = self.mass.as_ref().and_then(|mass| mass.point_rate(p));

@@ -39,15 +39,15 @@ impl Outcome {
     /// Takes the end tensions of a simulation's last step into the
     /// largest ones (every step, without building a written row).
     fn record_step_tensions(&mut self, sim: &SystemSimulation, kind: EndForces) {
-        for (i, (m, line)) in self
+        for (i, (m, ends)) in self
             .max_tension
             .iter_mut()
-            .zip(sim.system().lines())
+            .zip(sim.topology().line_ends())
             .enumerate()
         {
             let forces = step_end_forces(sim, kind, i);
             for k in 0..2 {
-                if line.ends[k] != stancf::system::End::Loose {
+                if ends[k] != stancf::system::End::Loose {
                     m[k] = m[k].max(forces[k].tension());
                 }
             }

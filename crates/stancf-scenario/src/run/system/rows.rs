@@ -5,7 +5,7 @@
 use super::writers::SystemRow;
 use crate::scenario::EndForces;
 use stancf::energies;
-use stancf::system::{EndForce, System, SystemSimulation, SystemStatics};
+use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
 
 /// The end forces of line i of the last step: its means or their
 /// estimates at its end (docs/method.md §6.5, (M23), (M23a)).
@@ -19,7 +19,7 @@ pub(super) fn step_end_forces(sim: &SystemSimulation, kind: EndForces, i: usize)
 /// The row of a system simulation's current state (`forces`: the end
 /// forces of the last step, of that kind; none before the first).
 pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> SystemRow<'_> {
-    let system = sim.system();
+    let system = sim.topology();
     let lines = sim.lines().iter().map(|l| (l.model(), l.state())).collect();
     let points = (0..system.points().len())
         .map(|p| {
@@ -98,18 +98,18 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
 /// The end forces of every line, None at loose ends (and everywhere
 /// without `forces`).
 fn ends_of(
-    system: &System,
+    system: &Topology,
     forces_of: impl Fn(usize) -> [EndForce; 2],
     forces: bool,
 ) -> Vec<[Option<EndForce>; 2]> {
     system
-        .lines()
+        .line_ends()
         .iter()
         .enumerate()
-        .map(|(i, l)| {
+        .map(|(i, ends)| {
             let f = forces_of(i);
             std::array::from_fn(|k| {
-                (forces && l.ends[k] != stancf::system::End::Loose).then_some(f[k])
+                (forces && ends[k] != stancf::system::End::Loose).then_some(f[k])
             })
         })
         .collect()
@@ -118,7 +118,7 @@ fn ends_of(
 /// Adds the free points' kinetic energy 1/2 m v^2 and the potential
 /// -m g . x of their weight to [kinetic, strain, gravity].
 fn add_point_energies(
-    system: &System,
+    system: &Topology,
     state: impl Fn(usize) -> ([f64; 3], [f64; 3]),
     en: &mut [f64; 3],
 ) {

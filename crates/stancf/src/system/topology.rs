@@ -1,0 +1,163 @@
+//! What a system is besides its lines' models (docs/method.md §11.1): its
+//! points, what each line end attaches to, and gravity on the points'
+//! masses. A [`super::System`] is its topology and its lines' models; a
+//! running [`super::SystemSimulation`] keeps the topology alone, its
+//! line simulations own the models (each model exists once).
+
+use super::{end_node, End, Point, PointKind};
+use crate::error::ModelError;
+use crate::model::Model;
+use crate::motion::CoupledMotion;
+
+/// A system's points, line ends and gravity (no line models).
+#[derive(Clone, Debug)]
+pub struct Topology {
+    /// What line i's ends A and B attach to.
+    pub(super) ends: Vec<[End; 2]>,
+    pub(super) points: Vec<Point>,
+    /// Acceleration of gravity on the points' masses (m/s^2).
+    pub(super) gravity: [f64; 3],
+}
+
+/// A line end attached to a point: the end (0 = A, 1 = B), the point and
+/// the end's node in the line ([`end_node`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AttachedEnd {
+    pub end: usize,
+    pub point: usize,
+    pub node: usize,
+}
+
+/// The attached ends of a line whose ends are `ends` and whose model is
+/// `model`: the one mapping of a line end to its point and node.
+pub fn attached_ends<'a>(
+    ends: &'a [End; 2],
+    model: &'a Model,
+) -> impl Iterator<Item = AttachedEnd> + 'a {
+    ends.iter()
+        .enumerate()
+        .filter_map(move |(end, e)| match *e {
+            End::Point(point) => Some(AttachedEnd {
+                end,
+                point,
+                node: end_node(model, end),
+            }),
+            End::Loose => None,
+        })
+}
+
+impl Topology {
+    /// What each line's ends A and B attach to (one entry per line).
+    pub fn line_ends(&self) -> &[[End; 2]] {
+        &self.ends
+    }
+
+    /// The attached ends of line `line`, whose model is `model`
+    /// ([`attached_ends`]).
+    pub fn attached_ends<'a>(
+        &'a self,
+        line: usize,
+        model: &'a Model,
+    ) -> impl Iterator<Item = AttachedEnd> + 'a {
+        attached_ends(&self.ends[line], model)
+    }
+
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    pub fn gravity(&self) -> [f64; 3] {
+        self.gravity
+    }
+
+    /// The constant load on free point p: its weight, its constant force
+    /// and, in water, its buoyancy (W33).
+    pub fn point_load(&self, p: usize) -> [f64; 3] {
+        let pt = &self.points[p];
+        let buoyancy = pt
+            .water
+            .as_ref()
+            .map_or([0.0; 3], |w| w.buoyancy(&self.gravity));
+        std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i] + buoyancy[i])
+    }
+
+    /// The inertia of free point p: its mass and, in water, its added mass
+    /// (W35).
+    pub fn point_inertia(&self, p: usize) -> f64 {
+        let pt = &self.points[p];
+        pt.mass + pt.water.as_ref().map_or(0.0, |w| w.added_mass())
+    }
+
+    /// Refuses to move point p unless it is a coupled point.
+    pub(super) fn check_coupled(&self, p: usize) -> Result<(), ModelError> {
+        let key = format!("points[{p}]");
+        match self.points.get(p).map(|pt| &pt.kind) {
+            Some(PointKind::Coupled(_)) => Ok(()),
+            Some(_) => Err(ModelError::invalid(key, "is not a coupled point")),
+            None => Err(ModelError::invalid(key, "does not exist")),
+        }
+    }
+
+    /// Moves coupled point p along `motion` (checked by
+    /// [`Self::check_coupled`]; the attachment constraints of its lines
+    /// are the models' owners' to move).
+    pub(super) fn set_point_motion(&mut self, p: usize, motion: CoupledMotion) {
+        self.points[p].kind = PointKind::Coupled(motion);
+    }
+
+    /// The lines attached to point p: (line, end 0 = A or 1 = B).
+    pub fn attachments(&self, p: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.ends.iter().enumerate().flat_map(move |(li, ends)| {
+            ends.iter()
+                .enumerate()
+                .filter(move |(_, e)| **e == End::Point(p))
+                .map(move |(end, _)| (li, end))
+        })
+    }
+
+    /// Checks that every line is held: connected, through lines and free
+    /// points, to a fixed or coupled point. A static equilibrium of a
+    /// group of lines that nothing holds is not unique (it can translate).
+    pub fn check_held(&self) -> Result<(), ModelError> {
+        let n_points = self.points.len();
+        // Union-find over points (0..n_points) and lines (n_points..).
+        let mut parent: Vec<usize> = (0..n_points + self.ends.len()).collect();
+        fn root(parent: &mut [usize], mut i: usize) -> usize {
+            while parent[i] != i {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            i
+        }
+        for (li, ends) in self.ends.iter().enumerate() {
+            for end in ends {
+                if let End::Point(p) = *end {
+                    let (a, b) = (root(&mut parent, p), root(&mut parent, n_points + li));
+                    parent[a] = b;
+                }
+            }
+        }
+        let mut held = vec![false; parent.len()];
+        for (p, point) in self.points.iter().enumerate() {
+            if !point.is_free() {
+                let r = root(&mut parent, p);
+                held[r] = true;
+            }
+        }
+        for li in 0..self.ends.len() {
+            if !held[root(&mut parent, n_points + li)] {
+                return Err(ModelError::invalid(
+                    format!("lines[{li}]"),
+                    "nothing holds this line: it is not connected, through lines and free \
+                     points, to a fixed or coupled point, so its equilibrium is not unique",
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether some point is free (the lines are then solved together).
+    pub fn has_free_points(&self) -> bool {
+        self.points.iter().any(Point::is_free)
+    }
+}
