@@ -155,9 +155,9 @@ pub(crate) fn deck_lines(text: &str) -> impl Iterator<Item = &str> {
 
 /// Cuts a deck into title and sections. A line containing `---` naming
 /// no section ends the current section; rows after it (before the next
-/// header) make it an unknown section header. A line of dashes that is
-/// the first non-blank line of the file is a banner and belongs to the
-/// title.
+/// header) make it an unknown section header. Before the first section
+/// such a line and the rows after it belong to the title (MoorDyn looks
+/// for its sections by name and reads past the rest).
 pub(crate) fn split(text: &str) -> Result<Layout<'_>, DeckError> {
     let mut title: Vec<&str> = Vec::new();
     let mut sections: Vec<Section> = Vec::new();
@@ -223,7 +223,10 @@ fn header(
     let kinds = SectionKind::matching(raw);
     let text = raw.trim().to_string();
     match kinds.as_slice() {
-        [] if !seen_content => Ok(Target::Title),
+        // Before the first section, MoorDyn reads past any line: a dashed
+        // line there (a banner, a dashed title) and what follows it are
+        // the deck's title.
+        [] if !seen_content || sections.is_empty() => Ok(Target::Title),
         [] => Ok(Target::Marker(line, text)),
         [kind] => {
             if let Some(first) = sections.iter().find(|s| s.kind == *kind) {

@@ -122,7 +122,8 @@ fn classify(lower: &str) -> Option<Class> {
             "MoorDyn-F's inertial coupled forces are not supported",
         )),
         "cfl" => Some(Class::Refused(
-            "a time step from a Courant number is not supported; give dtM",
+            "a time step from a Courant number is not supported without a dtM; give dtM \
+             (MoorDyn ignores cfl where dtM is given)",
         )),
         "tscheme" => Some(Class::Refused(
             "MoorDyn's time integrators are not supported; stancf uses its own (remove tScheme)",
@@ -142,6 +143,13 @@ fn classify(lower: &str) -> Option<Class> {
 /// The options, each name (synonyms included) at most once.
 pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
     let mut out: Vec<DeckOption> = Vec::new();
+    // MoorDyn derives dtM from cfl only without a dtM; with one, it
+    // ignores cfl (MoorDyn2.cpp, `Init`).
+    let gives_dtm = s.rows.iter().any(|r| {
+        r.words
+            .get(1)
+            .is_some_and(|n| matches!(n.to_ascii_lowercase().as_str(), "dtm" | "dt"))
+    });
     for row in &s.rows {
         if row.words.len() < 2 {
             return Err(DeckError::at(
@@ -155,7 +163,12 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
         let (text, name) = (row.words[0], row.words[1]);
         let lower = name.to_ascii_lowercase();
         let number = text.parse::<f64>().ok().filter(|v| v.is_finite());
-        let kind = match classify(&lower) {
+        let class = if lower == "cfl" && gives_dtm {
+            Some(Class::Known(OptionKind::Ignored))
+        } else {
+            classify(&lower)
+        };
+        let kind = match class {
             None => {
                 return Err(DeckError::at(
                     row.line,

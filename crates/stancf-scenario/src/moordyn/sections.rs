@@ -115,6 +115,17 @@ pub(crate) fn line_types(s: &Section) -> Result<Vec<LineType>, DeckError> {
 }
 
 fn line_type(row: &Row) -> Result<LineType, DeckError> {
+    if row.words.len() == 9 {
+        return Err(DeckError::at(
+            row.line,
+            format!(
+                "LINE TYPES rows have 10 columns ({LINE_TYPE_COLUMNS}); this one has 9, as the \
+                 LINE DICTIONARY of a MoorDyn v1 deck (Name Diam MassDenInAir EA BA/-zeta Can \
+                 Cat Cdn Cdt: no EI, the coefficients in another order), which stancf does not \
+                 read in this version: it reads MoorDyn v2 decks"
+            ),
+        ));
+    }
     columns(row, 10, "LINE TYPES", LINE_TYPE_COLUMNS)?;
     let name = row.words[0];
     match row.words.len() {

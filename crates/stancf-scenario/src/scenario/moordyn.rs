@@ -168,11 +168,9 @@ fn deck_line(l: &crate::moordyn::DeckLine) -> SystemLine {
 fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, ScenarioError> {
     let mut channels = Vec::with_capacity(deck.outputs.len());
     for o in &deck.outputs {
-        if !computable(&o.channel) {
+        if let Some(why) = not_computed(&o.channel) {
             return Err(ScenarioError(format!(
-                "{file}: line {}: output channel {}: stancf does not compute this value in \
-                 this version (it writes line end tensions, point positions and velocities, \
-                 and line node positions and velocities)",
+                "{file}: line {}: output channel {}: {why}",
                 o.line, o.name
             )));
         }
@@ -184,20 +182,24 @@ fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, Scenario
     Ok(channels)
 }
 
-/// Whether stancf has the value of a channel: line end tensions, point
-/// positions and velocities, line node positions and velocities.
-fn computable(c: &Channel) -> bool {
+/// Why stancf does not have the value of a channel, or None where it
+/// does: line end tensions, point positions, velocities and net forces
+/// (MoorDyn's `Fnet`), line node positions and velocities.
+fn not_computed(c: &Channel) -> Option<&'static str> {
+    const NOT: &str = "stancf does not compute this value in this version (it writes line end \
+                       tensions, point positions, velocities and net forces, and line node \
+                       positions and velocities)";
     match c {
         Channel::FairleadTension { .. }
         | Channel::AnchorTension { .. }
-        | Channel::LineEndTension { .. } => true,
-        Channel::LineNode { quantity, .. } => matches!(
+        | Channel::LineEndTension { .. } => None,
+        Channel::LineNode { quantity, .. } => (!matches!(
             quantity,
             LineQuantity::Position(_) | LineQuantity::Velocity(_)
-        ),
-        Channel::Point { quantity, .. } => matches!(
-            quantity,
-            PointQuantity::Position(_) | PointQuantity::Velocity(_)
-        ),
+        ))
+        .then_some(NOT),
+        Channel::Point { quantity, .. } => {
+            matches!(quantity, PointQuantity::Acceleration(_)).then_some(NOT)
+        }
     }
 }

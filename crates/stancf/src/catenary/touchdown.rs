@@ -148,6 +148,15 @@ use super::{Catenary, CatenaryError, CatenaryLine};
 mod solve;
 
 use solve::solve_resting;
+
+/// L_max of (C20): the longest line of wet weight `weight` per length
+/// (N/m) and axial stiffness `ea` (N) that hangs from a fairlead `xf`
+/// away and `zf` above its anchor on the bed and lies straight along the
+/// bed, XF + V0/W (MoorDyn's `LMax`). A longer line has no unique static
+/// shape: its excess lies slack on the bed.
+pub fn max_resting_length(weight: f64, ea: f64, xf: f64, zf: f64) -> f64 {
+    xf + solve::vertical_reach_length(weight, 1.0 / ea, zf)
+}
 pub(super) use solve::RestingLine;
 
 /// A mooring line anchored on a flat seabed: unstretched length L (m),

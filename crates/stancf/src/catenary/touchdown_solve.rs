@@ -142,7 +142,7 @@ fn asinh_minus_sine_of_angle(y: f64) -> f64 {
 
 /// V0/W of (C20): the suspended length of the "L"-shaped line (HF -> 0)
 /// reaching height ZF, 2 ZF/(1 + sqrt(1 + 2 W ZF/EA)).
-fn vertical_reach_length(weight: f64, compliance: f64, zf: f64) -> f64 {
+pub(super) fn vertical_reach_length(weight: f64, compliance: f64, zf: f64) -> f64 {
     2.0 * zf / (1.0 + (1.0 + 2.0 * weight * zf * compliance).sqrt())
 }
 

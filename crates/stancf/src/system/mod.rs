@@ -46,8 +46,8 @@ pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
 pub use run::{run, RunProgress};
 pub use seed::{
-    catenary_states, catenary_states_at, end_positions, end_positions_at, shaped, straight_between,
-    straight_states,
+    catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,
+    straight_between, straight_states, OverlongLine,
 };
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;

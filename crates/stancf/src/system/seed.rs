@@ -4,7 +4,7 @@
 
 use super::{End, System};
 use crate::catenary::touchdown::{
-    solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
+    max_resting_length, solve_touchdown, TouchdownLine, TouchdownRegime, TouchdownSolution,
 };
 use crate::catenary::{Catenary, CatenaryLine, LineEnd};
 use crate::model::{coordinate, Model, State, SLOT_R, SLOT_R_X, SLOT_R_XX};
@@ -210,6 +210,46 @@ impl SeedShape {
 /// lower end off the bed (by more than 1e-6 of the length), ends one
 /// above the other, or no resting solution (the line too long, (C20)).
 fn resting_shape(model: &Model, line: CatenaryLine, a: [f64; 3], b: [f64; 3]) -> Option<Resting> {
+    let AnchoredOnBed {
+        low,
+        high,
+        reversed,
+        span,
+    } = anchored_on_bed(model, a, b)?;
+    let length = model.cable.length;
+    let resting = TouchdownLine {
+        length,
+        weight: line.weight,
+        ea: line.ea,
+        friction: 0.0,
+    };
+    let solution = solve_touchdown(&resting, span, high[2] - low[2]).ok()?;
+    if solution.regime == TouchdownRegime::Hanging {
+        return None;
+    }
+    let horizontal = [(high[0] - low[0]) / span, (high[1] - low[1]) / span];
+    Some(Resting {
+        solution,
+        low,
+        horizontal,
+        reversed,
+        length,
+    })
+}
+
+/// A line from its lower end on its flat bed to its upper end.
+struct AnchoredOnBed {
+    low: [f64; 3],
+    high: [f64; 3],
+    /// Whether end B is the lower one.
+    reversed: bool,
+    /// The horizontal distance between the ends.
+    span: f64,
+}
+
+/// The ends a, b of a line of `model` as [`resting_shape`] takes them;
+/// None where it does not apply (see there).
+fn anchored_on_bed(model: &Model, a: [f64; 3], b: [f64; 3]) -> Option<AnchoredOnBed> {
     let bed = &model.seabed.as_ref()?.seabed;
     let g = norm(model.gravity);
     let down: [f64; 3] = model.gravity.map(|c| c / g);
@@ -229,24 +269,61 @@ fn resting_shape(model: &Model, line: CatenaryLine, a: [f64; 3], b: [f64; 3]) ->
     if span <= 1e-9 * length {
         return None;
     }
-    let resting = TouchdownLine {
-        length,
-        weight: line.weight,
-        ea: line.ea,
-        friction: 0.0,
-    };
-    let solution = solve_touchdown(&resting, span, high[2] - low[2]).ok()?;
-    if solution.regime == TouchdownRegime::Hanging {
-        return None;
-    }
-    let horizontal = [(high[0] - low[0]) / span, (high[1] - low[1]) / span];
-    Some(Resting {
-        solution,
+    Some(AnchoredOnBed {
         low,
-        horizontal,
+        high,
         reversed,
-        length,
+        span,
     })
+}
+
+/// A line anchored on its flat bed that is longer than its path to the
+/// fairlead can hold (C20).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OverlongLine {
+    /// The line's index.
+    pub line: usize,
+    /// Its unstretched length (m).
+    pub length: f64,
+    /// L_max = XF + V0/W of (C20) (m).
+    pub max_length: f64,
+}
+
+/// The lines of `system` between fixed or coupled points, anchored on its
+/// flat bed, whose length reaches L_max (C20) between the points where
+/// they are at t = 0: each would hang vertically from its fairlead and
+/// lie along the bed with length to spare, which lies slack on the bed in
+/// a shape no static solve determines (docs/method.md §11.12). A line to
+/// a free point is not judged here: the point moves until it hangs.
+/// Weights are the lines' weight per length under their models' gravity:
+/// pass the seed system (wet weights, §11.6).
+pub fn overlong_lines(system: &System) -> Vec<OverlongLine> {
+    (0..system.lines().len())
+        .filter_map(|i| {
+            let held = system.lines()[i].ends.iter().all(|e| match *e {
+                End::Point(p) => !system.points()[p].is_free(),
+                End::Loose => false,
+            });
+            if !held {
+                return None;
+            }
+            let model = &system.lines()[i].model;
+            let (a, b) = end_positions(system, i);
+            let ends = anchored_on_bed(model, a, b)?;
+            let section = model.material.section();
+            let weight = section.rho_a * norm(model.gravity);
+            let zf = ends.high[2] - ends.low[2];
+            if weight <= 0.0 || zf <= 0.0 {
+                return None;
+            }
+            let max_length = max_resting_length(weight, section.ea, ends.span, zf);
+            (model.cable.length >= max_length).then_some(OverlongLine {
+                line: i,
+                length: model.cable.length,
+                max_length,
+            })
+        })
+        .collect()
 }
 
 /// A line resting on the bed, as [`resting_shape`] solves it.

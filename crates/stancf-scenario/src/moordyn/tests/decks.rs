@@ -192,3 +192,48 @@ fn errors_display_their_line() {
         .join("../../examples/oc4-deepcwind-moordyn.txt");
     assert_eq!(load(&path).unwrap(), parse(OC4).unwrap());
 }
+
+/// A dashed line before the first section, with text after it, is part
+/// of the title: MoorDyn looks for its sections by name and reads past
+/// it (issue 35). The same after a section is an unknown section.
+#[test]
+fn a_dashed_title_before_the_first_section_is_read_past() {
+    let text = BASE.replacen(
+        "a test deck\n",
+        "a test deck\n------------- the mooring of a test ------------\nsome words about it\n",
+        1,
+    );
+    let deck = parse(&text).unwrap();
+    assert!(deck.title.contains("some words about it"), "{}", deck.title);
+    let base = parse(BASE).unwrap();
+    assert_eq!(deck.lines.len(), base.lines.len());
+    assert_eq!(
+        deck.lines[0].unstretched_length,
+        base.lines[0].unstretched_length
+    );
+    assert_eq!(deck.lines[0].line, base.lines[0].line + 2);
+    let after = BASE.replacen(
+        "--- OPTIONS ---",
+        "--- a note ---\nsome words\n--- OPTIONS ---",
+        1,
+    );
+    assert!(error(&after).message.contains("unknown section header"));
+}
+
+/// A MoorDyn v1 deck's line dictionary (9 columns, no EI) is refused
+/// saying so, not only counting its columns (issue 35).
+#[test]
+fn a_v1_line_dictionary_is_refused_as_a_v1_deck() {
+    let row = BASE
+        .lines()
+        .skip_while(|l| !l.contains("LINE TYPES"))
+        .nth(3)
+        .unwrap()
+        .to_string();
+    let words: Vec<&str> = row.split_whitespace().collect();
+    assert_eq!(words.len(), 10, "{row}");
+    let v1_row = [&words[..5], &words[6..]].concat().join(" ");
+    let e = error(&BASE.replacen(&row, &v1_row, 1));
+    assert!(e.message.contains("MoorDyn v1"), "{e}");
+    assert!(e.message.contains("has 9"), "{e}");
+}

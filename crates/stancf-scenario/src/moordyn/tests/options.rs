@@ -34,7 +34,6 @@ fn an_unknown_option_is_refused_naming_its_line() {
 fn options_that_change_the_physics_are_refused_by_name() {
     for (row, words) in [
         ("1 WaveKin", "wave files are not read"),
-        ("0.5 CFL", "Courant"),
         ("RK4 tScheme", "time integrators"),
         ("bathy.txt SeafloorFile", "bathymetry"),
         ("0.3 mu_kT", "FrictionCoefficient"),
@@ -60,4 +59,23 @@ fn a_supported_option_must_be_a_finite_number() {
     assert!(e.message.contains("not a finite number"), "{e}");
     let e = error(&with("0.001 dtM", "-1 dtM"));
     assert!(e.message.contains("must be positive"), "{e}");
+}
+
+/// MoorDyn derives its step from cfl only when the deck gives no dtM
+/// (issue 35): with a dtM, cfl is accepted and unused; without one, it
+/// is refused by name.
+#[test]
+fn cfl_is_ignored_beside_a_dtm_and_refused_without_one() {
+    let text = with("0.001 dtM", "0.5 CFL\n0.001 dtM");
+    let deck = parse(&text).unwrap();
+    let cfl = deck.options.iter().find(|o| o.name == "CFL").unwrap();
+    assert_eq!(cfl.kind, OptionKind::Ignored);
+    assert_eq!(deck.option(SupportedOption::TimeStep), Some(0.001));
+    let text = with("0.001 dtM", "0.5 CFL");
+    let e = error(&text);
+    assert_eq!(e.line, Some(line_of(&text, "CFL")));
+    assert!(
+        e.message.contains("Courant") && e.message.contains("dtM"),
+        "{e}"
+    );
 }

@@ -21,7 +21,7 @@ pub(super) fn step_end_forces(sim: &SystemSimulation, kind: EndForces, i: usize)
 pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> SystemRow<'_> {
     let system = sim.topology();
     let lines = sim.lines().iter().map(|l| (l.model(), l.state())).collect();
-    let points = (0..system.points().len())
+    let points: Vec<_> = (0..system.points().len())
         .map(|p| {
             let (x, v) = sim.point_state(p);
             let f = forces.map_or([0.0; 3], |kind| match kind {
@@ -41,8 +41,15 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
         en[2] += e.gravity;
     }
     add_point_energies(system, |p| sim.point_state(p), &mut en);
+    let point_net = net_point_forces(system, &points, |p, x, v| {
+        system.points()[p]
+            .water
+            .as_ref()
+            .map_or([0.0; 3], |w| w.force(x, v, sim.time()).force)
+    });
     SystemRow {
         t: sim.time(),
+        point_net,
         lines,
         points,
         ends,
@@ -65,7 +72,7 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         .enumerate()
         .map(|(i, l)| (&l.model, st.line_state(i)))
         .collect();
-    let points = (0..system.points().len())
+    let points: Vec<_> = (0..system.points().len())
         .map(|p| (st.point_position(p), [0.0; 3], st.point_force(p)))
         .collect();
     let ends = ends_of(system, |i| st.end_forces(i), true);
@@ -76,8 +83,15 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         en[2] += e.gravity;
     }
     add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut en);
+    let point_net = net_point_forces(system, &points, |p, x, _| {
+        system.points()[p]
+            .water
+            .as_ref()
+            .map_or([0.0; 3], |w| w.static_force(x).force)
+    });
     SystemRow {
         t,
+        point_net,
         lines,
         points,
         ends,
@@ -93,6 +107,27 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
                 .collect(),
         ),
     }
+}
+
+/// Each point's net force as MoorDyn's `Fnet`: the force of its lines
+/// (`points`' third member), its own load (weight, buoyancy, given force)
+/// and `water(p, x, v)`, the water's force on it at its position and
+/// velocity. At a free point in equilibrium it is zero to the solve's
+/// tolerance; in motion its mass and added mass times its acceleration.
+fn net_point_forces(
+    topology: &Topology,
+    points: &[([f64; 3], [f64; 3], [f64; 3])],
+    water: impl Fn(usize, &[f64; 3], &[f64; 3]) -> [f64; 3],
+) -> Vec<[f64; 3]> {
+    points
+        .iter()
+        .enumerate()
+        .map(|(p, (x, v, lines))| {
+            let own = topology.point_load(p);
+            let w = water(p, x, v);
+            std::array::from_fn(|k| lines[k] + own[k] + w[k])
+        })
+        .collect()
 }
 
 /// The end forces of every line, None at loose ends (and everywhere

@@ -21,6 +21,10 @@ pub(super) struct SystemRow<'a> {
     pub lines: Vec<(&'a Model, &'a State)>,
     /// Each point's position, velocity and the net force of its lines.
     pub points: Vec<([f64; 3], [f64; 3], [f64; 3])>,
+    /// Each point's net force as MoorDyn's `Fnet` (its lines', its
+    /// weight, buoyancy and given force, and the water's drag and the
+    /// fluid's inertia on it; not its own inertia nor its added mass's).
+    pub point_net: Vec<[f64; 3]>,
     /// Each line's end forces (A, B; None for a loose end).
     pub ends: Vec<[Option<EndForce>; 2]>,
     /// Kinetic, strain and gravity energies of lines and points.
@@ -411,10 +415,13 @@ fn channel_value(c: &Channel, row: &SystemRow) -> f64 {
         }
         Channel::Point { point, quantity } => {
             let (x, v, _) = row.points[point - 1];
+            let net = row.point_net[point - 1];
             match quantity {
                 PointQuantity::Position(a) => x[axis(a)],
                 PointQuantity::Velocity(a) => v[axis(a)],
-                _ => f64::NAN,
+                PointQuantity::Force(a) => net[axis(a)],
+                PointQuantity::Tension => net.iter().map(|f| f * f).sum::<f64>().sqrt(),
+                PointQuantity::Acceleration(_) => f64::NAN,
             }
         }
     }
