@@ -591,3 +591,54 @@ def test_a_sweep_into_a_folder_in_use_is_refused(tmp_path):
     # Once it is done, the folder is free.
     stancf.sweep(sc, {"analysis.time_step": [5e-5]}, executor=_InThisProcess(), out=out)
     assert sorted(os.listdir(out)) == ["run_0000", "sweep.csv"]
+
+
+WD0050_CHAIN = """--------------------- MoorDyn Input File ---------------------
+MoorDyn's tests/Mooring/WD0050_Chain.txt, dtM in place of cfl
+----------------------- LINE TYPES ---------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI   Cd    Ca    CdAx   CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (-)  (-)   (-)   (-)    (-)
+chain      0.252   390        1.674e9    -1.0        0    1.37  1.0   0.64   0.0
+---------------------- POINT PROPERTIES ----------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     400    0.0     -50.0    0      0       0      0
+2     Vessel    0.0     0.0     0.0     0      0       0      0
+---------------------- LINES ---------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         410       41      -
+---------------------- OPTIONS -------------------------------
+0.001    dtM
+1.0e5    kBot
+1.0e4    cBot
+1025.0   WtrDnsty
+50       WtrDpth
+0.5      FrictionCoefficient
+------------------------- need this line ---------------------
+"""
+
+
+@pytest.mark.parametrize("policy", ["as_laid", "pulled"])
+def test_static_friction_holds_what_the_policy_says(tmp_path, policy):
+    """MoorDyn's WD0050_Chain deck (mu = 0.5) under `[water.seabed]
+    static_friction` from Python (docs/method.md §12.2): as laid the
+    anchor's horizontal force is the fairlead's (friction holds nothing,
+    MoorDyn's equilibrium); pulled it is lower, by the friction the bed's
+    nodal forces hold, at most mu w L_B."""
+    (tmp_path / "wd0050.txt").write_text(WD0050_CHAIN)
+    sc = tmp_path / "friction.toml"
+    sc.write_text('[system]\nmoordyn = "wd0050.txt"\n\n[water.seabed]\n'
+                  'static_friction = "%s"\n\n[analysis]\ntype = "static"\n' % policy)
+    res = stancf.run(stancf.Scenario.from_file(sc), out=tmp_path / "out")
+    h_anchor = abs(res.tensions[(1, "A")]["force"][-1][0])
+    h_fairlead = abs(res.tensions[(1, "B")]["force"][-1][0])
+    friction = res.lines[1].seabed_force[-1][:, 0].sum()
+    assert h_fairlead - h_anchor == pytest.approx(friction, abs=1e-8 * h_fairlead)
+    w = (390.0 - 1025.0 * np.pi / 4 * 0.252**2) * 9.80665
+    v_fairlead = -res.tensions[(1, "B")]["force"][-1][2]
+    resting = 410.0 - v_fairlead / w
+    if policy == "as_laid":
+        assert abs(friction) < 1e-8 * h_fairlead
+    else:
+        assert 0.9 * 0.5 * w * resting < friction <= 0.5 * w * resting * (1 + 1e-3)

@@ -349,7 +349,7 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
     }
 }
 
-/// With a seabed (docs/method.md §12.2, (W40)-(W47)): a tilted bed
+/// With a seabed (docs/method.md §12.2, (W40)-(W49)): a tilted bed
 /// through the element's random state, so some Gauss points are in
 /// contact, sliding with friction; the slab Jacobian (velocity, tangent
 /// and position parts of the contact force) against differences of the

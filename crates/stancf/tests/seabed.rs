@@ -1,4 +1,4 @@
-//! Seabed contact (docs/method.md §12.2, (W40)-(W47)): the assembled
+//! Seabed contact (docs/method.md §12.2, (W40)-(W49)): the assembled
 //! step's Jacobian with a line in the bed, sliding with friction, against
 //! finite differences in both time schemes and in statics; a line laid on
 //! a flat bed sinks in by its weight over k d; a line dropped on the bed

@@ -1,4 +1,4 @@
-//! Seabed contact on the element (docs/method.md §12.2, (W40)-(W47)): the
+//! Seabed contact on the element (docs/method.md §12.2, (W40)-(W49)): the
 //! contact force per unit length of [`crate::water::SeabedContact`] at the
 //! points of the axial rule, its virtual work over a slab with the matrices
 //! C_g, G_g of its exact Jacobian at the time points, and its static form.

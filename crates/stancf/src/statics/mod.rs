@@ -74,10 +74,10 @@ pub struct StaticSettings {
     /// Halvings of a failed increment before giving up.
     pub max_cuts: usize,
     /// What seabed friction holds at a system's equilibrium
-    /// (docs/method.md §12.2, [`crate::system::StaticFriction`]). A single
+    /// (docs/method.md §12.2, [`StaticFriction`]). A single
     /// cable's static solve resists the slide from its reference shape,
     /// along its load path and moving supports, whatever this says.
-    pub seabed_friction: crate::system::StaticFriction,
+    pub seabed_friction: StaticFriction,
 }
 
 impl Default for StaticSettings {
@@ -88,7 +88,7 @@ impl Default for StaticSettings {
             max_iterations: 50,
             constraint_method: ConstraintMethod::default(),
             max_cuts: 10,
-            seabed_friction: crate::system::StaticFriction::AsLaid,
+            seabed_friction: StaticFriction::AsLaid,
         }
     }
 }
@@ -115,6 +115,41 @@ impl StaticSettings {
             ));
         }
         Ok(())
+    }
+}
+
+/// Where the static friction's targets are, what friction holds at a
+/// system's equilibrium (docs/method.md §12.2; the policies are
+/// accounted for in `crate::system`'s `static_friction` module).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum StaticFriction {
+    /// Laid in the equilibrium: friction holds nothing.
+    #[default]
+    AsLaid,
+    /// Pulled out along the bed from an unstretched lay towards the
+    /// fairlead (the closed form with friction).
+    Pulled,
+    /// Against the slide from the seeds the solve started from (W48).
+    FromSeed,
+}
+
+impl StaticFriction {
+    /// The policy named as a scenario names it (`as_laid`, `pulled`).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "as_laid" => Some(StaticFriction::AsLaid),
+            "pulled" => Some(StaticFriction::Pulled),
+            _ => None,
+        }
+    }
+
+    /// The scenario's name of the policy.
+    pub fn name(self) -> &'static str {
+        match self {
+            StaticFriction::AsLaid => "as_laid",
+            StaticFriction::Pulled => "pulled",
+            StaticFriction::FromSeed => "from_seed",
+        }
     }
 }
 

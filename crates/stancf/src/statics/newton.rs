@@ -230,7 +230,8 @@ impl<F: Factorization> StaticNewton<F> {
             // 2.6e-16, a slack mooring at 9e-16). x is the equilibrium,
             // whatever the increments do.
             if r <= tol.min(ROUND_OFF_RESIDUAL) && at_round_off_floor(r, self.residual_norm()) {
-                return Ok((k, r, increment));
+                // At the first iterate no increment has been taken.
+                return Ok((k, r, if k == 0 { 0.0 } else { increment }));
             }
             std::mem::swap(&mut self.x, &mut self.x_trial);
             increment = alpha * full;

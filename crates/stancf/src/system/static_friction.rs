@@ -38,41 +38,10 @@
 //! (MoorDyn 2.7: 839.3 and 839.3 kN); pulled, the anchor's is below the
 //! fairlead's by the friction of the resting part.
 
+pub use crate::statics::StaticFriction;
+
 use crate::model::{coordinate, Model, SLOT_R, SLOT_R_X};
 use crate::vec3::{dot, norm};
-
-/// Where the static friction's targets are (see the module's account).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum StaticFriction {
-    /// Laid in the equilibrium: friction holds nothing.
-    #[default]
-    AsLaid,
-    /// Pulled out along the bed from an unstretched lay towards the
-    /// fairlead (the closed form with friction).
-    Pulled,
-    /// Against the slide from the seeds the solve started from (W48).
-    FromSeed,
-}
-
-impl StaticFriction {
-    /// The policy named as a scenario names it (`as_laid`, `pulled`).
-    pub fn from_name(name: &str) -> Option<Self> {
-        match name {
-            "as_laid" => Some(StaticFriction::AsLaid),
-            "pulled" => Some(StaticFriction::Pulled),
-            _ => None,
-        }
-    }
-
-    /// The scenario's name of the policy.
-    pub fn name(self) -> &'static str {
-        match self {
-            StaticFriction::AsLaid => "as_laid",
-            StaticFriction::Pulled => "pulled",
-            StaticFriction::FromSeed => "from_seed",
-        }
-    }
-}
 
 /// `model` without seabed friction (the static copy of a line laid as in
 /// its equilibrium): the contact's normal force stays.
