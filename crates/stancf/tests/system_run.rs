@@ -80,3 +80,64 @@ fn an_observer_that_breaks_stops_the_run_after_that_step() {
     assert!(!done);
     assert_eq!(sim.steps(), 3);
 }
+
+/// The balance E - W (docs/method.md §8, §11.15) of the three ropes, the
+/// free point and the swinging anchor: the energies of lines and point,
+/// less the work of the moving anchor, drag, damping, water and bed,
+/// `sim.energies().mechanical() - sim.external_work()`. With `scheme` at
+/// steps of `dt` for 0.2 s from straight, its largest departure from
+/// the start over the largest kinetic plus strain energy seen.
+fn balance_drift(scheme: stancf::TimeScheme, dt: f64) -> f64 {
+    let system = three_to_a_point(4);
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: scheme,
+        ..settings()
+    };
+    let mut sim =
+        SystemSimulation::new(system.clone(), straight_states(&system), settings).unwrap();
+    let start = sim.energies().mechanical() - sim.external_work();
+    let (mut drift, mut scale) = (0.0f64, 0.0f64);
+    run(&mut sim, 0.2, |s, _, _| {
+        let en = s.energies();
+        drift = drift.max((en.mechanical() - s.external_work() - start).abs());
+        scale = scale.max(en.kinetic + en.strain);
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    drift / scale
+}
+
+/// The system's energy balance holds as the step's accuracy does: the
+/// work of the moving anchor is the step-mean force times its
+/// displacement ((M24), second order), so the drift falls by about 4
+/// when the step halves (P2 and Galerkin), and stays far below the
+/// watchdog's tenth of the motion's energy.
+#[test]
+fn a_systems_energy_balance_converges_with_the_step() {
+    for scheme in [stancf::TimeScheme::P2, stancf::TimeScheme::Galerkin] {
+        let coarse = balance_drift(scheme, 2e-4);
+        let fine = balance_drift(scheme, 1e-4);
+        eprintln!("{scheme:?}: drift {coarse:.3e} at 0.2 ms, {fine:.3e} at 0.1 ms");
+        assert!(coarse < 1e-2, "{scheme:?}: {coarse}");
+        assert!(fine < coarse / 3.0, "{scheme:?}: {coarse} then {fine}");
+    }
+}
+
+/// P2 far above its stable step (docs/method.md §4.5): the run stops at
+/// the step whose energy grew without a source, as a single cable's does,
+/// instead of running on to a blown-up state.
+#[test]
+fn an_unstable_step_trips_the_systems_energy_watchdog() {
+    let mut sim = simulation(2e-2);
+    sim.set_step_halvings(0).unwrap();
+    let mut observed = 0;
+    let e = run(&mut sim, 5.0, |_, _, _| {
+        observed += 1;
+        ControlFlow::Continue(())
+    })
+    .expect_err("an unstable run");
+    assert_eq!(e.kind, stancf::error::FailureKind::EnergyGrowth, "{e}");
+    assert!(e.to_string().contains("energy came from no source"), "{e}");
+    assert_eq!(observed + 1, e.step, "the growing step is not observed");
+}

@@ -25,7 +25,9 @@ mod watchdog;
 pub use crate::scheme::TimeScheme;
 pub use run::{run, step_count, step_length};
 pub use setup::step_unknowns;
-pub use watchdog::{energy_resolution, model_energy_scale, EnergyWatch, ENERGY_GROWTH_RATIO};
+pub use watchdog::{
+    energy_resolution, model_energy_scale, EnergyWatch, ENERGY_GROWTH_RATIO, ENERGY_ROUND_OFF,
+};
 
 use crate::assembly::{AssemblyScratch, Scales, SlabLayout, StepStart};
 use crate::band::BandLu;

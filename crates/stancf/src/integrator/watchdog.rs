@@ -33,7 +33,10 @@ pub fn model_energy_scale(model: &Model) -> f64 {
 /// energy balance of a step (a sum of many terms, each rounded to eps of
 /// its size): changes of the energy below this times the magnitudes
 /// involved are not resolved.
-const ROUND_OFF: f64 = 1e3 * f64::EPSILON;
+const ROUND_OFF: f64 = ENERGY_ROUND_OFF;
+
+/// [`ROUND_OFF`] for other energy units (a system's free points).
+pub const ENERGY_ROUND_OFF: f64 = 1e3 * f64::EPSILON;
 
 /// Energy changes of this model below this are round-off (J):
 /// `1e3 eps E_model` ([`model_energy_scale`]). A cable at rest, or nearly,
@@ -72,12 +75,23 @@ pub struct EnergyWatch {
 
 impl EnergyWatch {
     pub fn new(model: &Model, initial: Energies, ratio: f64) -> Self {
+        Self::with_resolution(energy_resolution(model), initial, ratio)
+    }
+
+    /// The watch with the energy unit's round-off `resolution` (J) given:
+    /// a system's, its lines' summed ([`energy_resolution`]).
+    pub fn with_resolution(resolution: f64, initial: Energies, ratio: f64) -> Self {
         EnergyWatch {
             ratio,
             initial,
             scale: initial.kinetic.abs() + initial.strain.abs(),
-            resolution: energy_resolution(model),
+            resolution,
         }
+    }
+
+    /// The energies the watch started from.
+    pub fn initial(&self) -> &Energies {
+        &self.initial
     }
 
     /// The energy scale of the motion so far.

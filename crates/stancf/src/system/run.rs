@@ -3,8 +3,8 @@
 //! (docs/method.md §11.15, as `integrator::run` does for a cable, §8).
 
 use super::SystemSimulation;
-use crate::error::SolverError;
-use crate::integrator::{step_count, step_length, StepReport};
+use crate::error::{FailureKind, SolverError};
+use crate::integrator::{step_count, step_length, EnergyWatch, StepReport};
 use std::ops::ControlFlow;
 
 /// Where a run is: the step just taken is the `step`-th of `steps`
@@ -35,8 +35,15 @@ impl RunProgress {
 ///
 /// The step length is the shortened one after a run whose last step was
 /// shortened (set it back with [`SystemSimulation::set_time_step`] to run
-/// on at the scenario's step). A system run has no energy watchdog (§8):
-/// see §11.15.
+/// on at the scenario's step).
+///
+/// The energy watchdog of a single cable's run (§8, (M29)) watches the
+/// system's balance, `energies().mechanical() - external_work()`: a step
+/// that raises it by more than a tenth of the motion's energy scale (and
+/// above round-off) is an unstable step, P2 above its stable step, and
+/// ends the run with [`FailureKind::EnergyGrowth`] (exit 3 on the command
+/// line). That step is not observed (nothing of it is written); `sim` is
+/// left after it.
 pub fn run<F>(
     sim: &mut SystemSimulation,
     duration: f64,
@@ -47,6 +54,7 @@ where
 {
     let dt = sim.time_step();
     let steps = step_count(duration, dt);
+    let mut watch = sim.energy_watch();
     for step in 1..=steps {
         if step == steps {
             let h = step_length(step, steps, duration, dt);
@@ -55,9 +63,51 @@ where
             }
         }
         let report = sim.step()?;
+        watched(sim, &report, &mut watch)?;
         if observer(sim, &report, RunProgress { step, steps }).is_break() {
             return Ok(false);
         }
     }
     Ok(true)
+}
+
+/// The energy balance after the step `report` through `watch`: an error
+/// where it is not finite or grew without a source.
+fn watched(
+    sim: &SystemSimulation,
+    report: &StepReport,
+    watch: &mut EnergyWatch,
+) -> Result<(), SolverError> {
+    let en = sim.energies();
+    let work = sim.external_work();
+    let failure = |kind, detail: String| SolverError {
+        kind,
+        time: sim.time(),
+        step: report.step,
+        residual: report.newton.residual,
+        iterations: report.newton.iterations,
+        detail,
+    };
+    if !(en.mechanical().is_finite() && work.is_finite()) {
+        return Err(failure(
+            FailureKind::NonFinite,
+            "the energy is not finite".into(),
+        ));
+    }
+    watch.check(&en, work).map_err(|drift| {
+        failure(
+            FailureKind::EnergyGrowth,
+            format!(
+                "the system's mechanical energy {:.6e} J plus the {:.6e} J that its moving \
+                 points, drag, damping, the water and the seabed took out is {:.6e} J, \
+                 {:.3e} J above the initial {:.6e} J: energy came from no source; reduce the \
+                 time step",
+                en.mechanical(),
+                -work,
+                en.mechanical() - work,
+                drift,
+                watch.initial().mechanical()
+            ),
+        )
+    })
 }

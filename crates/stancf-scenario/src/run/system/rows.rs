@@ -5,7 +5,7 @@
 use super::writers::SystemRow;
 use crate::scenario::EndForces;
 use stancf::energies;
-use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
+use stancf::system::{add_point_energies, EndForce, SystemSimulation, SystemStatics, Topology};
 
 /// The end forces of line i of the last step: its means or their
 /// estimates at its end (docs/method.md §6.5, (M23), (M23a)).
@@ -33,14 +33,8 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
         .collect();
     let kind = forces.unwrap_or_default();
     let ends = ends_of(system, |i| step_end_forces(sim, kind, i), forces.is_some());
-    let mut en = [0.0; 3];
-    for l in sim.lines() {
-        let e = l.energies();
-        en[0] += e.kinetic;
-        en[1] += e.strain;
-        en[2] += e.gravity;
-    }
-    add_point_energies(system, |p| sim.point_state(p), &mut en);
+    let e = sim.energies();
+    let en = [e.kinetic, e.strain, e.gravity];
     let point_net = net_point_forces(system, &points, |p, x, v| {
         system.points()[p]
             .water
@@ -76,13 +70,14 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         .map(|p| (st.point_position(p), [0.0; 3], st.point_force(p)))
         .collect();
     let ends = ends_of(system, |i| st.end_forces(i), true);
-    let mut en = [0.0; 3];
+    let mut e = stancf::observe::Energies::default();
     for (i, l) in system.lines().iter().enumerate() {
-        let e = energies(&l.model, st.line_state(i));
-        en[1] += e.strain;
-        en[2] += e.gravity;
+        let line = energies(&l.model, st.line_state(i));
+        e.strain += line.strain;
+        e.gravity += line.gravity;
     }
-    add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut en);
+    add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut e);
+    let en = [e.kinetic, e.strain, e.gravity];
     let point_net = net_point_forces(system, &points, |p, x, _| {
         system.points()[p]
             .water
@@ -148,29 +143,4 @@ fn ends_of(
             })
         })
         .collect()
-}
-
-/// Adds the free points' kinetic energy 1/2 m v^2 and the potential
-/// -m g . x of their weight to [kinetic, strain, gravity].
-fn add_point_energies(
-    system: &Topology,
-    state: impl Fn(usize) -> ([f64; 3], [f64; 3]),
-    en: &mut [f64; 3],
-) {
-    let g = system.gravity();
-    for (p, point) in system.points().iter().enumerate() {
-        if !point.is_free() {
-            continue;
-        }
-        let (x, v) = state(p);
-        // The kinetic energy of the point and the water it entrains.
-        let inertia = system.point_inertia(p);
-        en[0] += 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
-        // Its weight's potential and, in water, its buoyancy's (a
-        // constant load, the weight of the water it displaces).
-        let buoyancy = point.water.as_ref().map_or([0.0; 3], |w| w.buoyancy(&g));
-        en[2] -= (0..3)
-            .map(|k| (point.mass * g[k] + buoyancy[k]) * x[k])
-            .sum::<f64>();
-    }
 }
