@@ -476,14 +476,16 @@ mod tests {
         assert!((50..=110).contains(&n), "{n}");
     }
 
-    /// R(x; t) = K x - (t, t) + s (1, -1) 1e-15 with K = [[1, 1], [1,
+    /// R(x; t) = K x - (t, t) + s (1, -1) n with K = [[1, 1], [1,
     /// 1 + 1e-6]], nearly singular, and s = +1, -1, +1... at successive
-    /// iterations: round-off of 1e-15 in the residual that K turns into
-    /// increments of 2e-9 along (1, -1), above the tolerance 1e-10,
-    /// however long Newton iterates (a slack line's soft mode).
+    /// iterations: noise n in the residual that K turns into increments
+    /// of 2e6 n along (1, -1), above the tolerance 1e-10 for n = 1e-15
+    /// (round-off) and 1e-12 (above it, within the tolerance), however
+    /// long Newton iterates (a slack line's soft mode).
     struct SoftMode {
         t: f64,
         evaluations: usize,
+        noise: f64,
     }
 
     impl StaticEquations for SoftMode {
@@ -493,9 +495,9 @@ mod tests {
             // Two evaluations an iteration (with the Jacobian, then the
             // trial step): the sign changes from iteration to iteration.
             let noise = if (self.evaluations / 2).is_multiple_of(2) {
-                1e-15
+                self.noise
             } else {
-                -1e-15
+                -self.noise
             };
             residual[0] = x[0] + x[1] - self.t + noise;
             residual[1] = x[0] + (1.0 + 1e-6) * x[1] - self.t - noise;
@@ -525,9 +527,11 @@ mod tests {
     /// a scaled residual of 1e-15.
     #[test]
     fn a_residual_met_four_iterations_running_is_converged_whatever_the_increments() {
+        // Noise above the round-off floor, within the tolerance.
         let mut eq = SoftMode {
             t: 0.0,
             evaluations: 0,
+            noise: 1e-12,
         };
         let mut newton = StaticNewton::new(
             vec![0.0, 0.0],
@@ -569,6 +573,7 @@ mod tests {
         let mut eq = SoftMode {
             t: 0.0,
             evaluations: 0,
+            noise: 1e-15,
         };
         let mut newton = StaticNewton::new(
             vec![0.0, 0.0],
