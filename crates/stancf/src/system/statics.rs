@@ -27,6 +27,14 @@
 //! times the defect at every point of the axial rule (M32b): it turns
 //! with the line, where as a dead load it buckled a buoyant section on
 //! the path (docs/method.md §11.6).
+//!
+//! A line without compression is solved with its compressive stiffness
+//! kept (at zero tension its own law has none). Where the path's end
+//! shortens it, that end carries compression the line does not have (a
+//! coarse chain's touchdown element locks: MHK_RM1 line 1 on 30
+//! elements, 3.5 % on the fairlead's pull), and the path is followed
+//! again from the seed with its own law (M32c), whose end, if reached
+//! and isolated, is the equilibrium.
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
@@ -48,7 +56,24 @@ pub struct SystemStatics {
     /// Seeds to start over from if the path fails (see
     /// [`SystemStatics::seeded`]).
     fallback: Option<Vec<State>>,
+    /// The seeds this path started from (a second path, without the
+    /// compression kept, starts from them again: (M32c)).
+    seeds: Vec<State>,
+    /// Whether line i, a line without compression, is solved with its
+    /// own law (M4a) (the second path of (M32c)) instead of with its
+    /// compressive stiffness kept.
+    own_law: Vec<bool>,
+    /// Whether the path's end is still to be checked for lines to solve
+    /// again without their compression (M32c).
+    check_compression: bool,
 }
+
+/// The shortening above which the path's end of a line without
+/// compression, solved with its compressive stiffness kept, is solved
+/// again with its own law (docs/method.md §11.6, (M32c)): about the
+/// strain that the static tolerance leaves (1e-10 of the line's length
+/// over elements of a tenth to a hundredth of it).
+const KEPT_SHORTENING: f64 = 1e-9;
 
 /// The equations of a system's equilibrium on the homotopy path (M32).
 struct SystemEquations {
@@ -77,6 +102,19 @@ impl SystemStatics {
         seeds: Vec<State>,
         settings: StaticSettings,
     ) -> Result<Self, ModelError> {
+        let own_law = vec![false; system.lines().len()];
+        Self::with_laws(system, seeds, settings, own_law)
+    }
+
+    /// [`SystemStatics::new`] with the lines without compression marked
+    /// in `own_law` solved with their own law (M4a), the others with
+    /// their compressive stiffness kept (docs/method.md §2.2, §11.6).
+    fn with_laws(
+        system: System,
+        seeds: Vec<State>,
+        settings: StaticSettings,
+        own_law: Vec<bool>,
+    ) -> Result<Self, ModelError> {
         settings.validate()?;
         if seeds.len() != system.lines().len() {
             return Err(ModelError::invalid(
@@ -99,16 +137,21 @@ impl SystemStatics {
         let lines: Vec<CableStatics> = system
             .lines()
             .iter()
-            .zip(seeds)
-            .map(|(line, seed)| {
+            .zip(&seeds)
+            .zip(&own_law)
+            .map(|((line, seed), &own)| {
                 // A line without compression is solved with its
                 // compressive stiffness kept (docs/method.md §2.2, (M4a)):
                 // at exactly zero tension it has no axial stiffness
                 // without it, and where it is nowhere shortened the
-                // equilibrium is the same (`observe::largest_compression`
-                // says where it is not).
-                let model = line.model.clone().with_compression();
-                let mut line = CableStatics::new(model, method, seed.e);
+                // equilibrium is the same; where it is, the line is
+                // solved again with its own law (M32c).
+                let model = if own {
+                    line.model.clone()
+                } else {
+                    line.model.clone().with_compression()
+                };
+                let mut line = CableStatics::new(model, method, seed.e.clone());
                 line.take_strain_defects();
                 line
             })
@@ -160,11 +203,15 @@ impl SystemStatics {
         let lu = BorderedLu::new(&equations.layout.shapes, equations.layout.border);
         let jacobian = BorderedMatrix::new(&equations.layout.shapes, equations.layout.border);
         let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings.clone());
+        let check_compression = !own_law.iter().any(|&o| o);
         Ok(SystemStatics {
             equations,
             newton,
             settings,
             fallback: None,
+            seeds,
+            own_law,
+            check_compression,
         })
     }
 
@@ -244,12 +291,22 @@ impl SystemStatics {
         self.equations.layout.size
     }
 
+    /// Whether line i, a line without compression, was solved with its
+    /// own law (M4a) (docs/method.md §11.6, (M32c)): its equilibrium is
+    /// then shortened only where it is slack, carrying no compression.
+    pub fn released(&self, line: usize) -> bool {
+        self.own_law[line]
+    }
+
     /// Follows the path (M32) in `load_steps` increments, calling
     /// `observer` after each converged one (see
     /// [`crate::StaticSolver::solve`]). A solve built by
     /// [`SystemStatics::seeded`] whose path fails starts over once from
     /// its fallback seed (the observer sees both paths' increments); the
-    /// error is the last path's.
+    /// error is the last path's. A path whose end shortens a line without
+    /// compression is followed again from its seed with such lines' own
+    /// law (M32c), whose end, if it is reached and isolated, is the
+    /// equilibrium (the observer sees its increments too).
     pub fn solve<F>(&mut self, mut observer: F) -> Result<bool, SolverError>
     where
         F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
@@ -261,7 +318,7 @@ impl SystemStatics {
                         return Ok(false);
                     }
                 }
-                Ok(None) => return Ok(true),
+                Ok(None) => return Ok(self.release(&mut observer)),
                 Err(e) => {
                     let Some(seeds) = self.fallback.take() else {
                         return Err(e);
@@ -277,6 +334,57 @@ impl SystemStatics {
                 }
             }
         }
+    }
+}
+
+impl SystemStatics {
+    /// At the end of the path (M32): the lines without compression it
+    /// shortens by more than [`KEPT_SHORTENING`] carry compression there,
+    /// which their law (M4a) does not. The path is then followed again
+    /// from the same seeds with those lines' own law (docs/method.md
+    /// §11.6, (M32c)), and its end replaces this one if it is reached and
+    /// isolated: its Jacobian regular (a line slack at zero tension along
+    /// its whole length has no stiffness against shortening, and its
+    /// equilibria under (M4a) are a continuum, of which the first path's
+    /// end is one). False if the observer stopped the second path (this
+    /// end is kept).
+    fn release<F>(&mut self, observer: &mut F) -> bool
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        if !std::mem::take(&mut self.check_compression) {
+            return true;
+        }
+        let eq = &self.equations;
+        let own_law: Vec<bool> = (0..eq.lines.len())
+            .map(|i| {
+                let own = &eq.system.lines()[i].model;
+                !own.carries_compression()
+                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
+            })
+            .collect();
+        if !own_law.iter().any(|&o| o) {
+            return true;
+        }
+        let (system, seeds) = (eq.system.clone(), self.seeds.clone());
+        let Ok(mut second) = Self::with_laws(system, seeds, self.settings.clone(), own_law) else {
+            return true;
+        };
+        loop {
+            match second.newton.advance(&mut second.equations) {
+                Ok(Some(inc)) => {
+                    if observer(&second, &inc).is_break() {
+                        return false;
+                    }
+                }
+                Ok(None) => break,
+                Err(_) => return true,
+            }
+        }
+        if second.newton.regular_at(&mut second.equations) {
+            *self = second;
+        }
+        true
     }
 }
 
