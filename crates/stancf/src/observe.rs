@@ -178,6 +178,18 @@ pub fn largest_compression(model: &Model, state: &State) -> f64 {
         .fold(0.0, f64::max))
 }
 
+/// The largest shortening -eps at the points of the axial rule of any
+/// element (0 if the line is nowhere shortened; see
+/// [`largest_compression`]).
+pub fn largest_shortening(model: &Model, state: &State) -> f64 {
+    let dpn = model.dofs_per_node();
+    crate::with_elements!(&model.mesh, els => els
+        .iter()
+        .enumerate()
+        .map(|(k, el)| -el.least_axial_strain(&state.e[coordinate(dpn, k, SLOT_R, 0)..]))
+        .fold(0.0, f64::max))
+}
+
 /// Points of the centre line: `per_element` evenly spaced points in every
 /// element (both ends; shared nodes once), as (material coordinate, r).
 pub fn centre_line(model: &Model, state: &State, per_element: usize) -> Vec<(f64, [f64; 3])> {

@@ -109,6 +109,19 @@ impl<F: Factorization> StaticNewton<F> {
         }
     }
 
+    /// Whether the Jacobian of `eq` at the current x factorizes without
+    /// the Levenberg shift: the equilibrium there is isolated (a line
+    /// with a direction that nothing stiffens, e.g. one at zero tension
+    /// without compression, gives a zero pivot).
+    pub fn regular_at<E>(&mut self, eq: &mut E) -> bool
+    where
+        E: StaticEquations<Matrix = F::Matrix>,
+    {
+        eq.evaluate(&self.x, &mut self.residual, Some(&mut self.jacobian));
+        self.lu.matrix_mut().copy_from(&self.jacobian);
+        self.lu.factorize().is_ok()
+    }
+
     /// Scaled residual: each row as the coordinate change |R_i| / |K_ii|
     /// would cause, as a fraction of the cable length; constraint rows are
     /// already positions.

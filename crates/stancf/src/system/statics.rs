@@ -27,6 +27,14 @@
 //! times the defect at every point of the axial rule (M32b): it turns
 //! with the line, where as a dead load it buckled a buoyant section on
 //! the path (docs/method.md §11.6).
+//!
+//! A line without compression is solved with its compressive stiffness
+//! kept (at zero tension its own law has none). Where the path's end
+//! shortens it, that end carries compression the line does not have (a
+//! coarse chain's touchdown element locks: MHK_RM1 line 1 on 30
+//! elements, 3.5 % on the fairlead's pull), and the path is followed
+//! again from the seed with its own law (M32c), whose end, if reached
+//! and isolated, is the equilibrium.
 
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
@@ -54,7 +62,26 @@ pub struct SystemStatics {
     /// Whether this path is the second stage of [`StaticFriction::Pulled`]
     /// (the pull from the equilibrium as laid).
     pulling: bool,
+    /// The friction's targets of this path (W49), None: the seeds.
+    targets: Option<Vec<Vec<f64>>>,
+    /// The seeds this path started from (a second path, without the
+    /// compression kept, starts from them again: (M32c)).
+    seeds: Vec<State>,
+    /// Whether line i, a line without compression, is solved with its
+    /// own law (M4a) (the second path of (M32c)) instead of with its
+    /// compressive stiffness kept.
+    own_law: Vec<bool>,
+    /// Whether the path's end is still to be checked for lines to solve
+    /// again without their compression (M32c).
+    check_compression: bool,
 }
+
+/// The shortening above which the path's end of a line without
+/// compression, solved with its compressive stiffness kept, is solved
+/// again with its own law (docs/method.md §11.6, (M32c)): about the
+/// strain that the static tolerance leaves (1e-10 of the line's length
+/// over elements of a tenth to a hundredth of it).
+const KEPT_SHORTENING: f64 = 1e-9;
 
 /// The equations of a system's equilibrium on the homotopy path (M32).
 struct SystemEquations {
@@ -85,15 +112,20 @@ impl SystemStatics {
         seeds: Vec<State>,
         settings: StaticSettings,
     ) -> Result<Self, ModelError> {
-        Self::build(system, seeds, settings, None)
+        let own_law = vec![false; system.lines().len()];
+        Self::build(system, seeds, settings, own_law, None)
     }
 
-    /// [`SystemStatics::new`], for the second stage of
-    /// [`StaticFriction::Pulled`] with the lines' friction `targets` (W49).
+    /// [`SystemStatics::new`] with the lines without compression marked
+    /// in `own_law` solved with their own law (M4a), the others with
+    /// their compressive stiffness kept (docs/method.md §2.2, §11.6), and
+    /// for the second stage of [`StaticFriction::Pulled`] the lines'
+    /// friction `targets` (W49).
     fn build(
         system: System,
         seeds: Vec<State>,
         settings: StaticSettings,
+        own_law: Vec<bool>,
         targets: Option<Vec<Vec<f64>>>,
     ) -> Result<Self, ModelError> {
         settings.validate()?;
@@ -126,20 +158,25 @@ impl SystemStatics {
         let lines: Vec<CableStatics> = system
             .lines()
             .iter()
-            .zip(seeds)
+            .zip(&seeds)
+            .zip(&own_law)
             .enumerate()
-            .map(|(i, (line, seed))| {
+            .map(|(i, ((line, seed), &own))| {
                 // A line without compression is solved with its
                 // compressive stiffness kept (docs/method.md §2.2, (M4a)):
                 // at exactly zero tension it has no axial stiffness
                 // without it, and where it is nowhere shortened the
-                // equilibrium is the same (`observe::largest_compression`
-                // says where it is not).
-                let mut model = line.model.clone().with_compression();
+                // equilibrium is the same; where it is, the line is
+                // solved again with its own law (M32c).
+                let mut model = if own {
+                    line.model.clone()
+                } else {
+                    line.model.clone().with_compression()
+                };
                 if frictionless {
                     model = static_friction::without_friction(model);
                 }
-                let mut line = CableStatics::new(model, method, seed.e);
+                let mut line = CableStatics::new(model, method, seed.e.clone());
                 line.take_strain_defects();
                 if let Some(t) = &targets {
                     line.set_friction_targets(&t[i]);
@@ -194,6 +231,7 @@ impl SystemStatics {
         let lu = BorderedLu::new(&equations.layout.shapes, equations.layout.border);
         let jacobian = BorderedMatrix::new(&equations.layout.shapes, equations.layout.border);
         let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings.clone());
+        let check_compression = !own_law.iter().any(|&o| o);
         Ok(SystemStatics {
             equations,
             newton,
@@ -201,6 +239,10 @@ impl SystemStatics {
             fallback: None,
             pulling: friction == StaticFriction::Pulled && targets.is_some(),
             friction,
+            targets,
+            seeds,
+            own_law,
+            check_compression,
         })
     }
 
@@ -228,7 +270,8 @@ impl SystemStatics {
         }
         let balanced = super::static_seed_states(seed_system);
         let given = super::catenary_states(seed_system);
-        let mut statics = Self::build(system, balanced.clone(), settings, None)?;
+        let own_law = vec![false; system.lines().len()];
+        let mut statics = Self::build(system, balanced.clone(), settings, own_law, None)?;
         if given != balanced {
             statics.fallback = Some(given);
         }
@@ -286,12 +329,22 @@ impl SystemStatics {
         self.equations.layout.size
     }
 
+    /// Whether line i, a line without compression, was solved with its
+    /// own law (M4a) (docs/method.md §11.6, (M32c)): its equilibrium is
+    /// then shortened only where it is slack, carrying no compression.
+    pub fn released(&self, line: usize) -> bool {
+        self.own_law[line]
+    }
+
     /// Follows the path (M32) in `load_steps` increments, calling
     /// `observer` after each converged one (see
     /// [`crate::StaticSolver::solve`]). A solve built by
     /// [`SystemStatics::seeded`] whose path fails starts over once from
     /// its fallback seed (the observer sees both paths' increments); the
-    /// error is the last path's.
+    /// error is the last path's. A path whose end shortens a line without
+    /// compression is followed again from its seed with such lines' own
+    /// law (M32c), whose end, if it is reached and isolated, is the
+    /// equilibrium (the observer sees its increments too).
     pub fn solve<F>(&mut self, mut observer: F) -> Result<bool, SolverError>
     where
         F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
@@ -303,10 +356,15 @@ impl SystemStatics {
                         return Ok(false);
                     }
                 }
-                Ok(None) => match self.pull()? {
-                    Some(stage) => *self = stage,
-                    None => return Ok(true),
-                },
+                Ok(None) => {
+                    if !self.release(&mut observer) {
+                        return Ok(false);
+                    }
+                    match self.pull()? {
+                        Some(stage) => *self = stage,
+                        None => return Ok(true),
+                    }
+                }
                 Err(e) => {
                     let Some(seeds) = self.fallback.take() else {
                         return Err(e);
@@ -315,7 +373,8 @@ impl SystemStatics {
                     // The system was accepted with the first seeds; the
                     // fallback has the same lines, so this cannot fail.
                     let settings = self.settings.clone();
-                    let Ok(restart) = Self::build(system, seeds, settings, None) else {
+                    let own_law = vec![false; system.lines().len()];
+                    let Ok(restart) = Self::build(system, seeds, settings, own_law, None) else {
                         return Err(e);
                     };
                     *self = restart;
@@ -356,17 +415,20 @@ impl SystemStatics {
             .zip(&states)
             .map(|(t, s)| t.unwrap_or_else(|| s.e.clone()))
             .collect();
-        let stage = Self::build(system.clone(), states, self.settings.clone(), Some(targets))
-            .map_err(|e| SolverError {
-                kind: crate::error::FailureKind::PathStalled,
-                time: 1.0,
-                step: 0,
-                residual: f64::NAN,
-                iterations: 0,
-                detail: format!(
-                    "{}: the pull along the bed from the equilibrium as laid: {e}",
-                    crate::error::STATIC_SOLVE
-                ),
+        let (settings, own_law) = (self.settings.clone(), self.own_law.clone());
+        let stage =
+            Self::build(system.clone(), states, settings, own_law, Some(targets)).map_err(|e| {
+                SolverError {
+                    kind: crate::error::FailureKind::PathStalled,
+                    time: 1.0,
+                    step: 0,
+                    residual: f64::NAN,
+                    iterations: 0,
+                    detail: format!(
+                        "{}: the pull along the bed from the equilibrium as laid: {e}",
+                        crate::error::STATIC_SOLVE
+                    ),
+                }
             })?;
         Ok(Some(stage))
     }
@@ -383,6 +445,56 @@ impl SystemStatics {
     /// What the seabed's friction holds in this solve.
     pub fn seabed_friction(&self) -> StaticFriction {
         self.friction
+    }
+
+    /// At the end of the path (M32): the lines without compression it
+    /// shortens by more than [`KEPT_SHORTENING`] carry compression there,
+    /// which their law (M4a) does not. The path is then followed again
+    /// from the same seeds with those lines' own law (docs/method.md
+    /// §11.6, (M32c)), and its end replaces this one if it is reached and
+    /// isolated: its Jacobian regular (a line slack at zero tension along
+    /// its whole length has no stiffness against shortening, and its
+    /// equilibria under (M4a) are a continuum, of which the first path's
+    /// end is one). False if the observer stopped the second path (this
+    /// end is kept).
+    fn release<F>(&mut self, observer: &mut F) -> bool
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        if !std::mem::take(&mut self.check_compression) {
+            return true;
+        }
+        let eq = &self.equations;
+        let own_law: Vec<bool> = (0..eq.lines.len())
+            .map(|i| {
+                let own = &eq.system.lines()[i].model;
+                !own.carries_compression()
+                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
+            })
+            .collect();
+        if !own_law.iter().any(|&o| o) {
+            return true;
+        }
+        let (system, seeds) = (eq.system.clone(), self.seeds.clone());
+        let (settings, targets) = (self.settings.clone(), self.targets.clone());
+        let Ok(mut second) = Self::build(system, seeds, settings, own_law, targets) else {
+            return true;
+        };
+        loop {
+            match second.newton.advance(&mut second.equations) {
+                Ok(Some(inc)) => {
+                    if observer(&second, &inc).is_break() {
+                        return false;
+                    }
+                }
+                Ok(None) => break,
+                Err(_) => return true,
+            }
+        }
+        if second.newton.regular_at(&mut second.equations) {
+            *self = second;
+        }
+        true
     }
 }
 

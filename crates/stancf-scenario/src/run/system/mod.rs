@@ -267,12 +267,14 @@ fn halving_hint(halvings: u32) -> String {
 const STATIC_SHORTENING: f64 = 1e-6;
 
 /// Warns of every line without compression that its static equilibrium
-/// shortens anywhere by more than [`STATIC_SHORTENING`]: the static solve
-/// keeps the compressive stiffness (docs/method.md §2.2, (M4a)), so the
-/// dynamics start out of balance there.
+/// shortens anywhere by more than [`STATIC_SHORTENING`] with the
+/// compressive stiffness kept (docs/method.md §2.2, (M4a)): the static
+/// solve could not release it (§11.6, (M32c)), so the dynamics start out
+/// of balance there. A released line is slack where it is shortened and
+/// carries no compression.
 fn warn_of_static_compression(sc: &SystemScenario, st: &SystemStatics) {
     for (i, line) in st.system().lines().iter().enumerate() {
-        if line.model.carries_compression() {
+        if line.model.carries_compression() || st.released(i) {
             continue;
         }
         let ea = sc.line_types[sc.lines[i].line_type].ea;
