@@ -242,9 +242,14 @@ impl<F: Factorization> StaticNewton<F> {
             // hardly determine (issue 35: a simply supported beam at
             // 2.6e-16, a slack mooring at 9e-16). x is the equilibrium,
             // whatever the increments do.
-            if r <= tol.min(ROUND_OFF_RESIDUAL) && at_round_off_floor(r, self.residual_norm()) {
-                // At the first iterate no increment has been taken.
-                return Ok((k, r, if k == 0 { 0.0 } else { increment }));
+            // After one Newton step at least: the first iterate is the
+            // predictor, whose residual may be small only because the
+            // increment's load is (a slack line at zero force).
+            if k > 0
+                && r <= tol.min(ROUND_OFF_RESIDUAL)
+                && at_round_off_floor(r, self.residual_norm())
+            {
+                return Ok((k, r, increment));
             }
             std::mem::swap(&mut self.x, &mut self.x_trial);
             increment = alpha * full;
@@ -576,11 +581,12 @@ mod tests {
         );
     }
 
-    /// Issue 35, item 3: a residual within the tolerance that the Newton
-    /// step does not lower is at its round-off floor, and converged at
-    /// once: the soft mode's path takes the first Newton step of each
-    /// increment (the linear problem's solution to round-off) and one
-    /// more to see the residual stay, not four.
+    /// Issue 35, item 3: a residual at round-off that the Newton step
+    /// does not lower is at its floor, and converged at once: the soft
+    /// mode's path takes the first Newton step of each increment (the
+    /// linear problem's solution to round-off) and stops as soon as a
+    /// step leaves the residual where it was, before it could have
+    /// settled four iterations running.
     #[test]
     fn a_residual_the_newton_step_cannot_lower_is_converged_at_once() {
         let mut eq = SoftMode {
@@ -597,7 +603,8 @@ mod tests {
         );
         while let Some(inc) = newton.advance(&mut eq).unwrap() {
             assert!(inc.residual <= super::ROUND_OFF_RESIDUAL, "{inc:?}");
-            assert!(inc.iterations <= 2, "{inc:?}");
+            // Before the residual could have settled four iterations.
+            assert!(inc.iterations < super::SETTLED_ITERATIONS, "{inc:?}");
         }
         assert!(
             (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,

@@ -36,6 +36,7 @@ mod run;
 mod seed;
 mod simulation;
 mod static_friction;
+mod static_paths;
 mod statics;
 mod step_equations;
 mod stepping;

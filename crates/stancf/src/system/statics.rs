@@ -51,29 +51,29 @@ use std::ops::ControlFlow;
 
 /// A static solve of a system.
 pub struct SystemStatics {
-    equations: SystemEquations,
-    newton: StaticNewton<BorderedLu>,
-    settings: StaticSettings,
+    pub(super) equations: SystemEquations,
+    pub(super) newton: StaticNewton<BorderedLu>,
+    pub(super) settings: StaticSettings,
     /// Seeds to start over from if the path fails (see
     /// [`SystemStatics::seeded`]).
-    fallback: Option<Vec<State>>,
+    pub(super) fallback: Option<Vec<State>>,
     /// What the seabed's friction holds (docs/method.md §12.2).
-    friction: StaticFriction,
+    pub(super) friction: StaticFriction,
     /// Whether this path is the second stage of [`StaticFriction::Pulled`]
     /// (the pull from the equilibrium as laid).
-    pulling: bool,
+    pub(super) pulling: bool,
     /// The friction's targets of this path (W49), None: the seeds.
-    targets: Option<Vec<Vec<f64>>>,
+    pub(super) targets: Option<Vec<Vec<f64>>>,
     /// The seeds this path started from (a second path, without the
     /// compression kept, starts from them again: (M32c)).
-    seeds: Vec<State>,
+    pub(super) seeds: Vec<State>,
     /// Whether line i, a line without compression, is solved with its
     /// own law (M4a) (the second path of (M32c)) instead of with its
     /// compressive stiffness kept.
-    own_law: Vec<bool>,
+    pub(super) own_law: Vec<bool>,
     /// Whether the path's end is still to be checked for lines to solve
     /// again without their compression (M32c).
-    check_compression: bool,
+    pub(super) check_compression: bool,
 }
 
 /// The shortening above which the path's end of a line without
@@ -81,24 +81,24 @@ pub struct SystemStatics {
 /// again with its own law (docs/method.md §11.6, (M32c)): about the
 /// strain that the static tolerance leaves (1e-10 of the line's length
 /// over elements of a tenth to a hundredth of it).
-const KEPT_SHORTENING: f64 = 1e-9;
+pub(super) const KEPT_SHORTENING: f64 = 1e-9;
 
 /// The equations of a system's equilibrium on the homotopy path (M32).
-struct SystemEquations {
-    system: System,
-    lines: Vec<CableStatics>,
-    layout: SystemLayout,
-    x_local: Vec<Vec<f64>>,
-    residual_local: Vec<Vec<f64>>,
+pub(super) struct SystemEquations {
+    pub(super) system: System,
+    pub(super) lines: Vec<CableStatics>,
+    pub(super) layout: SystemLayout,
+    pub(super) x_local: Vec<Vec<f64>>,
+    pub(super) residual_local: Vec<Vec<f64>>,
     /// R(x0): the seed's residual.
-    offset: Vec<f64>,
+    pub(super) offset: Vec<f64>,
     /// 1 - t.
-    homotopy: f64,
+    pub(super) homotopy: f64,
     /// Global indices of free point p's x, y, z (empty for the others).
-    point_index: Vec<Vec<usize>>,
+    pub(super) point_index: Vec<Vec<usize>>,
     /// Positions of the points at the last converged increment.
-    point_position: Vec<[f64; 3]>,
-    end_forces: Vec<[EndForce; 2]>,
+    pub(super) point_position: Vec<[f64; 3]>,
+    pub(super) end_forces: Vec<[EndForce; 2]>,
 }
 
 impl SystemStatics {
@@ -121,7 +121,7 @@ impl SystemStatics {
     /// their compressive stiffness kept (docs/method.md §2.2, §11.6), and
     /// for the second stage of [`StaticFriction::Pulled`] the lines'
     /// friction `targets` (W49).
-    fn build(
+    pub(super) fn build(
         system: System,
         seeds: Vec<State>,
         settings: StaticSettings,
@@ -148,42 +148,7 @@ impl SystemStatics {
                 .check_direction_route(method, false)
                 .map_err(|e| ModelError::invalid(e.key, format!("line {i}: {}", e.message)))?;
         }
-        // Friction is off while the lines are solved as laid (the whole
-        // solve of AsLaid, the first stage of Pulled).
-        let frictionless = match friction {
-            StaticFriction::AsLaid => true,
-            StaticFriction::Pulled => targets.is_none(),
-            StaticFriction::FromSeed => false,
-        };
-        let lines: Vec<CableStatics> = system
-            .lines()
-            .iter()
-            .zip(&seeds)
-            .zip(&own_law)
-            .enumerate()
-            .map(|(i, ((line, seed), &own))| {
-                // A line without compression is solved with its
-                // compressive stiffness kept (docs/method.md §2.2, (M4a)):
-                // at exactly zero tension it has no axial stiffness
-                // without it, and where it is nowhere shortened the
-                // equilibrium is the same; where it is, the line is
-                // solved again with its own law (M32c).
-                let mut model = if own {
-                    line.model.clone()
-                } else {
-                    line.model.clone().with_compression()
-                };
-                if frictionless {
-                    model = static_friction::without_friction(model);
-                }
-                let mut line = CableStatics::new(model, method, seed.e.clone());
-                line.take_strain_defects();
-                if let Some(t) = &targets {
-                    line.set_friction_targets(&t[i]);
-                }
-                line
-            })
-            .collect();
+        let lines = line_statics(&system, &seeds, &own_law, targets.as_deref(), &settings);
         let models: Vec<_> = lines.iter().map(|l| &l.model).collect();
         let layout = SystemLayout::new(&system, &models, crate::assembly::Scheme::Static, method);
         let n = layout.size;
@@ -384,120 +349,6 @@ impl SystemStatics {
     }
 }
 
-impl SystemStatics {
-    /// The second stage of [`StaticFriction::Pulled`], once the first (as
-    /// laid) has converged: the path from its equilibrium with each
-    /// anchored line's friction targets where its unstretched resting
-    /// part lay (W49) and the friction on. None when there is nothing to
-    /// pull: another policy, the second stage done, or no line anchored
-    /// on a bed with friction.
-    fn pull(&self) -> Result<Option<SystemStatics>, SolverError> {
-        if self.friction != StaticFriction::Pulled || self.pulling {
-            return Ok(None);
-        }
-        let system = &self.equations.system;
-        let states = self.line_states();
-        let targets: Vec<Option<Vec<f64>>> = system
-            .lines()
-            .iter()
-            .zip(&states)
-            .map(|(line, state)| {
-                static_friction::has_friction(&line.model)
-                    .then(|| static_friction::pulled_targets(&line.model, &state.e))
-                    .flatten()
-            })
-            .collect();
-        if targets.iter().all(Option::is_none) {
-            return Ok(None);
-        }
-        let targets = targets
-            .into_iter()
-            .zip(&states)
-            .map(|(t, s)| t.unwrap_or_else(|| s.e.clone()))
-            .collect();
-        let (settings, own_law) = (self.settings.clone(), self.own_law.clone());
-        let stage =
-            Self::build(system.clone(), states, settings, own_law, Some(targets)).map_err(|e| {
-                SolverError {
-                    kind: crate::error::FailureKind::PathStalled,
-                    time: 1.0,
-                    step: 0,
-                    residual: f64::NAN,
-                    iterations: 0,
-                    detail: format!(
-                        "{}: the pull along the bed from the equilibrium as laid: {e}",
-                        crate::error::STATIC_SOLVE
-                    ),
-                }
-            })?;
-        Ok(Some(stage))
-    }
-
-    /// What the seabed exerts on line i's nodes at the last converged
-    /// increment: the consistent nodal forces of the contact with its
-    /// static friction against the slide from the friction's targets
-    /// (W48; [`crate::observe::static_seabed_nodal_forces`]).
-    pub fn seabed_nodal_forces(&self, line: usize) -> Vec<[f64; 3]> {
-        let l = &self.equations.lines[line];
-        crate::observe::static_seabed_nodal_forces(&l.model, &l.state, l.friction_targets())
-    }
-
-    /// What the seabed's friction holds in this solve.
-    pub fn seabed_friction(&self) -> StaticFriction {
-        self.friction
-    }
-
-    /// At the end of the path (M32): the lines without compression it
-    /// shortens by more than [`KEPT_SHORTENING`] carry compression there,
-    /// which their law (M4a) does not. The path is then followed again
-    /// from the same seeds with those lines' own law (docs/method.md
-    /// §11.6, (M32c)), and its end replaces this one if it is reached and
-    /// isolated: its Jacobian regular (a line slack at zero tension along
-    /// its whole length has no stiffness against shortening, and its
-    /// equilibria under (M4a) are a continuum, of which the first path's
-    /// end is one). False if the observer stopped the second path (this
-    /// end is kept).
-    fn release<F>(&mut self, observer: &mut F) -> bool
-    where
-        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
-    {
-        if !std::mem::take(&mut self.check_compression) {
-            return true;
-        }
-        let eq = &self.equations;
-        let own_law: Vec<bool> = (0..eq.lines.len())
-            .map(|i| {
-                let own = &eq.system.lines()[i].model;
-                !own.carries_compression()
-                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
-            })
-            .collect();
-        if !own_law.iter().any(|&o| o) {
-            return true;
-        }
-        let (system, seeds) = (eq.system.clone(), self.seeds.clone());
-        let (settings, targets) = (self.settings.clone(), self.targets.clone());
-        let Ok(mut second) = Self::build(system, seeds, settings, own_law, targets) else {
-            return true;
-        };
-        loop {
-            match second.newton.advance(&mut second.equations) {
-                Ok(Some(inc)) => {
-                    if observer(&second, &inc).is_break() {
-                        return false;
-                    }
-                }
-                Ok(None) => break,
-                Err(_) => return true,
-            }
-        }
-        if second.newton.regular_at(&mut second.equations) {
-            *self = second;
-        }
-        true
-    }
-}
-
 impl SystemEquations {
     /// Each line's rows at x into `residual` and their Jacobians into
     /// `jacobian` (both cleared first).
@@ -635,4 +486,52 @@ impl SystemEquations {
             }
         }
     }
+}
+
+/// Each line's static equations from its seed (docs/method.md §11.6): a
+/// line without compression with its compressive stiffness kept (§2.2,
+/// (M4a)), or, marked in `own_law`, with its own law (M32c); the
+/// seabed's friction off while the lines are solved as laid (the whole
+/// solve of [`StaticFriction::AsLaid`], the first stage of
+/// [`StaticFriction::Pulled`]), and its targets at `targets` in the
+/// pull (W49).
+fn line_statics(
+    system: &System,
+    seeds: &[State],
+    own_law: &[bool],
+    targets: Option<&[Vec<f64>]>,
+    settings: &StaticSettings,
+) -> Vec<CableStatics> {
+    let frictionless = match settings.seabed_friction {
+        StaticFriction::AsLaid => true,
+        StaticFriction::Pulled => targets.is_none(),
+        StaticFriction::FromSeed => false,
+    };
+    system
+        .lines()
+        .iter()
+        .zip(seeds)
+        .zip(own_law)
+        .enumerate()
+        .map(|(i, ((line, seed), &own))| {
+            // At exactly zero tension a line without compression has no
+            // axial stiffness without it, and where it is nowhere
+            // shortened the equilibrium is the same; where it is, the
+            // line is solved again with its own law (M32c).
+            let mut model = if own {
+                line.model.clone()
+            } else {
+                line.model.clone().with_compression()
+            };
+            if frictionless {
+                model = static_friction::without_friction(model);
+            }
+            let mut line = CableStatics::new(model, settings.constraint_method, seed.e.clone());
+            line.take_strain_defects();
+            if let Some(t) = targets {
+                line.set_friction_targets(&t[i]);
+            }
+            line
+        })
+        .collect()
 }

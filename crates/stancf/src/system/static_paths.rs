@@ -1,0 +1,125 @@
+//! The second paths of a system's static solve (docs/method.md §11.6,
+//! §12.2): a line without compression that the path leaves shortened is
+//! solved again with its own law (M32c), and with `pulled` seabed
+//! friction every anchored line is pulled along its bed from the
+//! equilibrium as laid (W49). What the bed holds at the end.
+
+use super::static_friction::{self, StaticFriction};
+use super::statics::{SystemStatics, KEPT_SHORTENING};
+use crate::error::SolverError;
+use crate::statics::StaticIncrement;
+use std::ops::ControlFlow;
+
+impl SystemStatics {
+    /// The second stage of [`StaticFriction::Pulled`], once the first (as
+    /// laid) has converged: the path from its equilibrium with each
+    /// anchored line's friction targets where its unstretched resting
+    /// part lay (W49) and the friction on. None when there is nothing to
+    /// pull: another policy, the second stage done, or no line anchored
+    /// on a bed with friction.
+    pub(super) fn pull(&self) -> Result<Option<SystemStatics>, SolverError> {
+        if self.friction != StaticFriction::Pulled || self.pulling {
+            return Ok(None);
+        }
+        let system = &self.equations.system;
+        let states = self.line_states();
+        let targets: Vec<Option<Vec<f64>>> = system
+            .lines()
+            .iter()
+            .zip(&states)
+            .map(|(line, state)| {
+                static_friction::has_friction(&line.model)
+                    .then(|| static_friction::pulled_targets(&line.model, &state.e))
+                    .flatten()
+            })
+            .collect();
+        if targets.iter().all(Option::is_none) {
+            return Ok(None);
+        }
+        let targets = targets
+            .into_iter()
+            .zip(&states)
+            .map(|(t, s)| t.unwrap_or_else(|| s.e.clone()))
+            .collect();
+        let (settings, own_law) = (self.settings.clone(), self.own_law.clone());
+        let stage =
+            Self::build(system.clone(), states, settings, own_law, Some(targets)).map_err(|e| {
+                SolverError {
+                    kind: crate::error::FailureKind::PathStalled,
+                    time: 1.0,
+                    step: 0,
+                    residual: f64::NAN,
+                    iterations: 0,
+                    detail: format!(
+                        "{}: the pull along the bed from the equilibrium as laid: {e}",
+                        crate::error::STATIC_SOLVE
+                    ),
+                }
+            })?;
+        Ok(Some(stage))
+    }
+
+    /// What the seabed exerts on line i's nodes at the last converged
+    /// increment: the consistent nodal forces of the contact with its
+    /// static friction against the slide from the friction's targets
+    /// (W48; [`crate::observe::static_seabed_nodal_forces`]).
+    pub fn seabed_nodal_forces(&self, line: usize) -> Vec<[f64; 3]> {
+        let l = &self.equations.lines[line];
+        crate::observe::static_seabed_nodal_forces(&l.model, &l.state, l.friction_targets())
+    }
+
+    /// What the seabed's friction holds in this solve.
+    pub fn seabed_friction(&self) -> StaticFriction {
+        self.friction
+    }
+
+    /// At the end of the path (M32): the lines without compression it
+    /// shortens by more than [`KEPT_SHORTENING`] carry compression there,
+    /// which their law (M4a) does not. The path is then followed again
+    /// from the same seeds with those lines' own law (docs/method.md
+    /// §11.6, (M32c)), and its end replaces this one if it is reached and
+    /// isolated: its Jacobian regular (a line slack at zero tension along
+    /// its whole length has no stiffness against shortening, and its
+    /// equilibria under (M4a) are a continuum, of which the first path's
+    /// end is one). False if the observer stopped the second path (this
+    /// end is kept).
+    pub(super) fn release<F>(&mut self, observer: &mut F) -> bool
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        if !std::mem::take(&mut self.check_compression) {
+            return true;
+        }
+        let eq = &self.equations;
+        let own_law: Vec<bool> = (0..eq.lines.len())
+            .map(|i| {
+                let own = &eq.system.lines()[i].model;
+                !own.carries_compression()
+                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
+            })
+            .collect();
+        if !own_law.iter().any(|&o| o) {
+            return true;
+        }
+        let (system, seeds) = (eq.system.clone(), self.seeds.clone());
+        let (settings, targets) = (self.settings.clone(), self.targets.clone());
+        let Ok(mut second) = Self::build(system, seeds, settings, own_law, targets) else {
+            return true;
+        };
+        loop {
+            match second.newton.advance(&mut second.equations) {
+                Ok(Some(inc)) => {
+                    if observer(&second, &inc).is_break() {
+                        return false;
+                    }
+                }
+                Ok(None) => break,
+                Err(_) => return true,
+            }
+        }
+        if second.newton.regular_at(&mut second.equations) {
+            *self = second;
+        }
+        true
+    }
+}
