@@ -101,25 +101,95 @@ impl SystemStatics {
         if !own_law.iter().any(|&o| o) {
             return true;
         }
-        let (system, seeds) = (eq.system.clone(), self.seeds.clone());
+        match self.own_law_path(own_law, observer) {
+            OwnLawPath::Stopped => false,
+            OwnLawPath::Done(second) => {
+                *self = *second;
+                true
+            }
+            OwnLawPath::Failed | OwnLawPath::Singular => true,
+        }
+    }
+
+    /// Where the path fails and a line without compression is solved
+    /// with its compressive stiffness kept: the path again from the same
+    /// seeds with every such line's own law (M4a) (docs/method.md §11.6,
+    /// (M32c)), kept if it reaches the end and its equilibrium is
+    /// isolated. Measured: MoorDyn's MHK_RM1_Floating deck (six slack
+    /// chains of 152 and 160 m to fairlead 40 m up and 118 to 128 m away,
+    /// 30 elements each) stalls at load factor 0.41 with the compression
+    /// kept and reaches its equilibrium this way. Ok(true): `self` is that
+    /// path, at its end; Ok(false): the observer stopped it; Err(()):
+    /// there is no such path, or it failed too.
+    pub(super) fn own_law_after_failure<F>(&mut self, observer: &mut F) -> Result<bool, ()>
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        if self.own_law.iter().any(|&o| o) {
+            return Err(());
+        }
+        let own_law: Vec<bool> = self
+            .equations
+            .system
+            .lines()
+            .iter()
+            .map(|l| !l.model.carries_compression())
+            .collect();
+        if !own_law.iter().any(|&o| o) {
+            return Err(());
+        }
+        match self.own_law_path(own_law, observer) {
+            OwnLawPath::Stopped => Ok(false),
+            OwnLawPath::Done(second) => {
+                *self = *second;
+                Ok(true)
+            }
+            OwnLawPath::Failed | OwnLawPath::Singular => Err(()),
+        }
+    }
+
+    /// The path from this one's seeds with the lines marked in `own_law`
+    /// solved with their own law (M4a), followed to its end (the observer
+    /// sees its increments), and whether its end is an isolated
+    /// equilibrium: its Jacobian regular (a line slack at zero tension
+    /// along its whole length has no stiffness against shortening, and
+    /// its equilibria under (M4a) are a continuum).
+    fn own_law_path<F>(&self, own_law: Vec<bool>, observer: &mut F) -> OwnLawPath
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        let (system, seeds) = (self.equations.system.clone(), self.seeds.clone());
         let (settings, targets) = (self.settings.clone(), self.targets.clone());
         let Ok(mut second) = Self::build(system, seeds, settings, own_law, targets) else {
-            return true;
+            return OwnLawPath::Failed;
         };
         loop {
             match second.newton.advance(&mut second.equations) {
                 Ok(Some(inc)) => {
                     if observer(&second, &inc).is_break() {
-                        return false;
+                        return OwnLawPath::Stopped;
                     }
                 }
                 Ok(None) => break,
-                Err(_) => return true,
+                Err(_) => return OwnLawPath::Failed,
             }
         }
         if second.newton.regular_at(&mut second.equations) {
-            *self = second;
+            OwnLawPath::Done(Box::new(second))
+        } else {
+            OwnLawPath::Singular
         }
-        true
     }
+}
+
+/// How a path with lines solved with their own law (M4a) ended.
+enum OwnLawPath {
+    /// The observer stopped it.
+    Stopped,
+    /// It failed, or could not be built.
+    Failed,
+    /// It ended at an equilibrium that is not isolated.
+    Singular,
+    /// It ended at an isolated equilibrium.
+    Done(Box<SystemStatics>),
 }

@@ -332,7 +332,11 @@ impl SystemStatics {
                 }
                 Err(e) => {
                     let Some(seeds) = self.fallback.take() else {
-                        return Err(e);
+                        match self.own_law_after_failure(&mut observer) {
+                            Ok(true) => continue,
+                            Ok(false) => return Ok(false),
+                            Err(()) => return Err(e),
+                        }
                     };
                     let system = self.equations.system.clone();
                     // The system was accepted with the first seeds; the
