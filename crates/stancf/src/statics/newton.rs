@@ -539,6 +539,23 @@ mod tests {
         fn converged(&mut self, _x: &[f64]) {}
     }
 
+    /// The soft mode with noise `noise` and its Newton from x = 0.
+    fn soft_mode(noise: f64) -> (SoftMode, StaticNewton<BandLu>) {
+        let eq = SoftMode {
+            t: 0.0,
+            evaluations: 0,
+            noise,
+        };
+        let newton = StaticNewton::new(
+            vec![0.0, 0.0],
+            vec![0.0, 0.0],
+            BandLu::new(2, 1, 1),
+            BandMatrix::new(2, 1, 1),
+            StaticSettings::default(),
+        );
+        (eq, newton)
+    }
+
     /// Item 10 of issue 28: a residual at its round-off floor is
     /// converged though the increments wander in a direction the forces
     /// do not determine; the path used to fail with "did not converge" at
@@ -546,18 +563,7 @@ mod tests {
     #[test]
     fn a_residual_met_four_iterations_running_is_converged_whatever_the_increments() {
         // Noise above the round-off floor, within the tolerance.
-        let mut eq = SoftMode {
-            t: 0.0,
-            evaluations: 0,
-            noise: 1e-12,
-        };
-        let mut newton = StaticNewton::new(
-            vec![0.0, 0.0],
-            vec![0.0, 0.0],
-            BandLu::new(2, 1, 1),
-            BandMatrix::new(2, 1, 1),
-            StaticSettings::default(),
-        );
+        let (mut eq, mut newton) = soft_mode(1e-12);
         let mut increments = 0;
         loop {
             match newton.advance(&mut eq) {
@@ -589,18 +595,7 @@ mod tests {
     /// settled four iterations running.
     #[test]
     fn a_residual_the_newton_step_cannot_lower_is_converged_at_once() {
-        let mut eq = SoftMode {
-            t: 0.0,
-            evaluations: 0,
-            noise: 1e-15,
-        };
-        let mut newton = StaticNewton::new(
-            vec![0.0, 0.0],
-            vec![0.0, 0.0],
-            BandLu::new(2, 1, 1),
-            BandMatrix::new(2, 1, 1),
-            StaticSettings::default(),
-        );
+        let (mut eq, mut newton) = soft_mode(1e-15);
         while let Some(inc) = newton.advance(&mut eq).unwrap() {
             assert!(inc.residual <= super::ROUND_OFF_RESIDUAL, "{inc:?}");
             // Before the residual could have settled four iterations.
