@@ -4,9 +4,12 @@
 //! One driver for a single cable (a band) and a system of lines (bands
 //! bordered by the free points), through [`StaticEquations`].
 
+mod convergence;
+
 use super::{StaticIncrement, StaticSettings};
 use crate::error::{FailureKind, Sig, SolverError, STATIC_SOLVE};
 use crate::linear::{AddEntries, Factorization, Jacobian};
+use convergence::Convergence;
 
 /// The static equations R(x; t) = 0 along a load path t in [0, 1], as the
 /// driver sees them.
@@ -23,35 +26,6 @@ pub(crate) trait StaticEquations {
     fn legs(&self) -> usize;
     /// Takes the converged unknowns of an increment (states, reactions).
     fn converged(&mut self, x: &[f64]);
-}
-
-/// A static Newton iteration whose scaled residual has met the tolerance
-/// at this many iterations in a row is converged, whatever its
-/// increments. A well-conditioned iteration meets both criteria within an
-/// iteration or two of the residual's (Newton converges quadratically);
-/// one whose increments keep wandering with the forces balanced moves the
-/// unknowns along a direction the forces do not determine: a nearly
-/// singular Jacobian (a slack line's soft bending, EI_eff of (M33), a
-/// free point between slack lines) turns the residual's round-off into
-/// increments of 1e-8 to 1e-6 (the midwater bridles of docs/method.md
-/// §6.8, at residuals of 5e-15 to 4e-13).
-const SETTLED_ITERATIONS: usize = 4;
-
-/// A scaled residual this small is at the round-off of the rows' sums:
-/// 64 machine epsilons, 1.4e-14 (measured floors 2e-16 to 2e-15 on
-/// MoorDyn's and MoorPy's decks, issue 35). Above it, a residual that a
-/// Newton step does not lower is a nonlinear step on its way (the
-/// tangent step of a large rotation raises the residual, docs/method.md
-/// §6.9) or an ill-conditioned one whose unknowns still move (a slender
-/// cantilever at 1e-13 whose clamp moment is off by 5e-8), not a floor.
-const ROUND_OFF_RESIDUAL: f64 = 64.0 * f64::EPSILON;
-
-/// Whether a Newton step took the scaled residual from `before` to
-/// `after` without lowering it by half (round-off moves a residual at
-/// its floor by factors of order one either way, a converging Newton
-/// step lowers it by orders of magnitude).
-fn at_round_off_floor(before: f64, after: f64) -> bool {
-    after >= 0.5 * before
 }
 
 /// The unknowns, the factors and the position on the load path.
@@ -179,11 +153,10 @@ impl<F: Factorization> StaticNewton<F> {
     where
         E: StaticEquations<Matrix = F::Matrix>,
     {
-        let tol = self.settings.tolerance;
+        let mut convergence = Convergence::new(self.settings.tolerance);
         let max_step = 0.2;
         let mut radius = max_step;
         let mut increment = f64::INFINITY;
-        let mut settled = 0;
         for k in 0..=self.settings.max_iterations {
             eq.evaluate(&self.x, &mut self.residual, Some(&mut self.jacobian));
             eq.row_weights(&self.jacobian, &mut self.row_weight);
@@ -191,11 +164,7 @@ impl<F: Factorization> StaticNewton<F> {
             if !r.is_finite() {
                 return Err(FailureKind::NonFinite);
             }
-            if r <= tol && increment <= tol {
-                return Ok((k, r, increment));
-            }
-            settled = if r <= tol { settled + 1 } else { 0 };
-            if settled >= SETTLED_ITERATIONS {
+            if convergence.at_iterate(r, increment) {
                 return Ok((k, r, increment));
             }
             if k == self.settings.max_iterations {
@@ -236,19 +205,7 @@ impl<F: Factorization> StaticNewton<F> {
                 }
                 break;
             }
-            // A residual at round-off that the Newton step cannot lower is
-            // at its floor: the forces balance, and the increment is that
-            // round-off turned into motion along a direction the forces
-            // hardly determine (issue 35: a simply supported beam at
-            // 2.6e-16, a slack mooring at 9e-16). x is the equilibrium,
-            // whatever the increments do.
-            // After one Newton step at least: the first iterate is the
-            // predictor, whose residual may be small only because the
-            // increment's load is (a slack line at zero force).
-            if k > 0
-                && r <= tol.min(ROUND_OFF_RESIDUAL)
-                && at_round_off_floor(r, self.residual_norm())
-            {
+            if convergence.at_floor(k, r, self.residual_norm()) {
                 return Ok((k, r, increment));
             }
             std::mem::swap(&mut self.x, &mut self.x_trial);
@@ -331,10 +288,11 @@ impl<F: Factorization> StaticNewton<F> {
                                 "{STATIC_SOLVE}: the load increment from load factor {} could \
                                  not be converged even after {} halvings (converged: the scaled \
                                  residual and increment both within the tolerance {}, or the \
-                                 residual within it {SETTLED_ITERATIONS} iterations running)",
+                                 residual within it {} iterations running)",
                                 Sig(self.lambda),
                                 self.settings.max_cuts,
-                                Sig(self.settings.tolerance)
+                                Sig(self.settings.tolerance),
+                                convergence::SETTLED_ITERATIONS
                             ),
                         });
                     }
@@ -380,231 +338,4 @@ impl<F: Factorization> StaticNewton<F> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::{StaticEquations, StaticNewton};
-    use crate::band::{BandLu, BandMatrix};
-    use crate::error::SolverError;
-    use crate::statics::StaticSettings;
-
-    /// Whether Newton converges at load factor t after an increment
-    /// converged at `last`: (t, last) -> yes or no.
-    type Admits = fn(f64, f64) -> bool;
-
-    /// R(x; t) = x - t, not finite where `admits` says no.
-    struct Path {
-        t: f64,
-        last: f64,
-        admits: Admits,
-    }
-
-    impl StaticEquations for Path {
-        type Matrix = BandMatrix;
-        fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
-            residual[0] = if (self.admits)(self.t, self.last) {
-                x[0] - self.t
-            } else {
-                f64::NAN
-            };
-            if let Some(j) = jacobian {
-                j.clear();
-                j.add(0, 0, 1.0);
-            }
-        }
-        fn row_weights(&mut self, _jacobian: &BandMatrix, weights: &mut [f64]) {
-            weights[0] = 1.0;
-        }
-        fn set_load_factor(&mut self, t: f64) {
-            self.t = t;
-        }
-        fn legs(&self) -> usize {
-            1
-        }
-        fn converged(&mut self, _x: &[f64]) {
-            self.last = self.t;
-        }
-    }
-
-    /// Advances along `admits`'s path (20 nominal increments) until the
-    /// driver ends it, or 10^6 increments: the increments taken and the
-    /// error.
-    fn walk(admits: Admits) -> (usize, Option<SolverError>) {
-        let mut eq = Path {
-            t: 0.0,
-            last: 0.0,
-            admits,
-        };
-        let mut newton = StaticNewton::new(
-            vec![0.0],
-            vec![1.0],
-            BandLu::new(1, 0, 0),
-            BandMatrix::new(1, 0, 0),
-            StaticSettings::default(),
-        );
-        for n in 0..1_000_000 {
-            match newton.advance(&mut eq) {
-                Ok(Some(_)) => {}
-                Ok(None) => return (n, None),
-                Err(e) => return (n, Some(e)),
-            }
-        }
-        panic!("a load path still going after 10^6 increments");
-    }
-
-    #[test]
-    fn a_load_path_that_cannot_pass_a_load_factor_ends_with_an_error_naming_it() {
-        // 0.123456789 is not met by sums of 0.05 and its halves: the
-        // driver used to take increments of zero below it forever.
-        let ledges: [(f64, Admits); 5] = [
-            (0.5, |t, _| t <= 0.5),
-            (0.3, |t, _| t <= 0.3),
-            (0.7, |t, _| t <= 0.7),
-            (0.55, |t, _| t <= 0.55),
-            (0.123456789, |t, _| t <= 0.123456789),
-        ];
-        for (ledge, admits) in ledges {
-            let (n, e) = walk(admits);
-            let e = e.unwrap_or_else(|| panic!("ledge {ledge}: the path went through"));
-            assert!(n <= 220, "ledge {ledge}: {n} increments");
-            assert!((e.time - ledge).abs() <= 1e-15, "ledge {ledge}: {e}");
-            assert!(e.to_string().contains("10 halvings"), "{e}");
-        }
-    }
-
-    #[test]
-    fn a_load_path_of_far_more_increments_than_nominal_is_refused_where_it_stands() {
-        // Newton converges only for increments up to 1e-4: 10^4 of them,
-        // 500 times the 20 nominal ones.
-        let (n, e) = walk(|t, last| t - last <= 1e-4);
-        let e = e.expect("refused");
-        assert_eq!(n, 220, "{e}");
-        let m = e.to_string();
-        assert!(
-            m.contains("took 220 increments") && m.contains("creeps"),
-            "{m}"
-        );
-        assert!(e.time > 0.0 && e.time < 0.1, "{m}");
-    }
-
-    #[test]
-    fn a_load_path_of_few_cuts_reaches_the_full_load() {
-        // Increments up to 0.02 converge (the nominal is 0.05): cut once
-        // or twice, then at 0.0125 to 0.025 each.
-        let (n, e) = walk(|t, last| t - last <= 0.02);
-        assert!(e.is_none(), "{e:?}");
-        assert!((50..=110).contains(&n), "{n}");
-    }
-
-    /// R(x; t) = K x - (t, t) + s (1, -1) n with K = [[1, 1], [1,
-    /// 1 + 1e-6]], nearly singular, and s = +1, -1, +1... at successive
-    /// iterations: noise n in the residual that K turns into increments
-    /// of 2e6 n along (1, -1), above the tolerance 1e-10 for n = 1e-15
-    /// (round-off) and 1e-12 (above it, within the tolerance), however
-    /// long Newton iterates (a slack line's soft mode).
-    struct SoftMode {
-        t: f64,
-        evaluations: usize,
-        noise: f64,
-    }
-
-    impl StaticEquations for SoftMode {
-        type Matrix = BandMatrix;
-        fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
-            self.evaluations += 1;
-            // Two evaluations an iteration (with the Jacobian, then the
-            // trial step): the sign changes from iteration to iteration.
-            let noise = if (self.evaluations / 2).is_multiple_of(2) {
-                self.noise
-            } else {
-                -self.noise
-            };
-            residual[0] = x[0] + x[1] - self.t + noise;
-            residual[1] = x[0] + (1.0 + 1e-6) * x[1] - self.t - noise;
-            if let Some(j) = jacobian {
-                j.clear();
-                j.add(0, 0, 1.0);
-                j.add(0, 1, 1.0);
-                j.add(1, 0, 1.0);
-                j.add(1, 1, 1.0 + 1e-6);
-            }
-        }
-        fn row_weights(&mut self, _jacobian: &BandMatrix, weights: &mut [f64]) {
-            weights.fill(1.0);
-        }
-        fn set_load_factor(&mut self, t: f64) {
-            self.t = t;
-        }
-        fn legs(&self) -> usize {
-            1
-        }
-        fn converged(&mut self, _x: &[f64]) {}
-    }
-
-    /// The soft mode with noise `noise` and its Newton from x = 0.
-    fn soft_mode(noise: f64) -> (SoftMode, StaticNewton<BandLu>) {
-        let eq = SoftMode {
-            t: 0.0,
-            evaluations: 0,
-            noise,
-        };
-        let newton = StaticNewton::new(
-            vec![0.0, 0.0],
-            vec![0.0, 0.0],
-            BandLu::new(2, 1, 1),
-            BandMatrix::new(2, 1, 1),
-            StaticSettings::default(),
-        );
-        (eq, newton)
-    }
-
-    /// Item 10 of issue 28: a residual at its round-off floor is
-    /// converged though the increments wander in a direction the forces
-    /// do not determine; the path used to fail with "did not converge" at
-    /// a scaled residual of 1e-15.
-    #[test]
-    fn a_residual_met_four_iterations_running_is_converged_whatever_the_increments() {
-        // Noise above the round-off floor, within the tolerance.
-        let (mut eq, mut newton) = soft_mode(1e-12);
-        let mut increments = 0;
-        loop {
-            match newton.advance(&mut eq) {
-                Ok(Some(inc)) => {
-                    increments += 1;
-                    assert!(inc.residual <= 1e-10, "{inc:?}");
-                    // The increments wandered above the tolerance.
-                    assert!(inc.increment > 1e-10, "{inc:?}");
-                    assert!(inc.iterations <= super::SETTLED_ITERATIONS + 1, "{inc:?}");
-                }
-                Ok(None) => break,
-                Err(e) => panic!("{e}"),
-            }
-        }
-        assert_eq!(increments, 20);
-        // The forces balance: x0 + x1 = 1 to the tolerance.
-        assert!(
-            (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,
-            "{:?}",
-            newton.x
-        );
-    }
-
-    /// Issue 35, item 3: a residual at round-off that the Newton step
-    /// does not lower is at its floor, and converged at once: the soft
-    /// mode's path takes the first Newton step of each increment (the
-    /// linear problem's solution to round-off) and stops as soon as a
-    /// step leaves the residual where it was, before it could have
-    /// settled four iterations running.
-    #[test]
-    fn a_residual_the_newton_step_cannot_lower_is_converged_at_once() {
-        let (mut eq, mut newton) = soft_mode(1e-15);
-        while let Some(inc) = newton.advance(&mut eq).unwrap() {
-            assert!(inc.residual <= super::ROUND_OFF_RESIDUAL, "{inc:?}");
-            // Before the residual could have settled four iterations.
-            assert!(inc.iterations < super::SETTLED_ITERATIONS, "{inc:?}");
-        }
-        assert!(
-            (newton.x[0] + newton.x[1] - 1.0).abs() <= 1e-10,
-            "{:?}",
-            newton.x
-        );
-    }
-}
+mod tests;
