@@ -2,9 +2,9 @@
 //! its energies (the lines' and the free points'), the work of everything
 //! that is not a potential, and the run's watchdog on them.
 
-use super::{SystemSimulation, Topology};
+use super::{SystemSimulation, SystemStatics, Topology};
 use crate::integrator::{energy_resolution, EnergyWatch, ENERGY_GROWTH_RATIO};
-use crate::observe::Energies;
+use crate::observe::{energies, Energies};
 use crate::vec3::{dot, norm};
 
 /// Adds the energies of the free points of `topology` at the positions
@@ -12,7 +12,7 @@ use crate::vec3::{dot, norm};
 /// |v|^2 of the point and the water it entrains (W35), the potential
 /// -(m g + B) . x of its weight and buoyancy (a constant load, (W33)) in
 /// `gravity`, and -F . x of its given force in `load_potential`.
-pub fn add_point_energies(
+pub(super) fn add_point_energies(
     topology: &Topology,
     state: impl Fn(usize) -> ([f64; 3], [f64; 3]),
     en: &mut Energies,
@@ -29,6 +29,26 @@ pub fn add_point_energies(
             .map(|k| (point.mass * g[k] + buoyancy[k]) * x[k])
             .sum::<f64>();
         en.load_potential -= dot(point.force, x);
+    }
+}
+
+impl SystemStatics {
+    /// The energies of the equilibrium at the last converged increment:
+    /// every line's strain and gravity energy ([`energies`]), with the
+    /// model the scenario gave it, and the free points' potentials
+    /// ([`add_point_energies`], at rest).
+    pub fn energies(&self) -> Energies {
+        let mut en = Energies::default();
+        for (i, l) in self.system().lines().iter().enumerate() {
+            let e = energies(&l.model, self.line_state(i));
+            en.kinetic += e.kinetic;
+            en.strain += e.strain;
+            en.gravity += e.gravity;
+            en.load_potential += e.load_potential;
+        }
+        let at_rest = |p| (self.point_position(p), [0.0; 3]);
+        add_point_energies(self.system(), at_rest, &mut en);
+        en
     }
 }
 

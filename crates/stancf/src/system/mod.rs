@@ -43,7 +43,6 @@ mod stepping;
 mod topology;
 
 pub use balance::{balanced_points, static_seed_states};
-pub use energy::add_point_energies;
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};

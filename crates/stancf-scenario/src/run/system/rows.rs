@@ -4,8 +4,8 @@
 
 use super::writers::SystemRow;
 use crate::scenario::EndForces;
-use stancf::energies;
-use stancf::system::{add_point_energies, EndForce, SystemSimulation, SystemStatics, Topology};
+use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
+use stancf::water::PointInWater;
 
 /// The end forces of line i of the last step: its means or their
 /// estimates at its end (docs/method.md §6.5, (M23), (M23a)).
@@ -35,12 +35,7 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
     let ends = ends_of(system, |i| step_end_forces(sim, kind, i), forces.is_some());
     let e = sim.energies();
     let en = [e.kinetic, e.strain, e.gravity];
-    let point_net = net_point_forces(system, &points, |p, x, v| {
-        system.points()[p]
-            .water
-            .as_ref()
-            .map_or([0.0; 3], |w| w.force(x, v, sim.time()).force)
-    });
+    let point_net = net_point_forces(system, &points, |w, x, v| w.force(x, v, sim.time()).force);
     SystemRow {
         t: sim.time(),
         point_net,
@@ -70,20 +65,9 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         .map(|p| (st.point_position(p), [0.0; 3], st.point_force(p)))
         .collect();
     let ends = ends_of(system, |i| st.end_forces(i), true);
-    let mut e = stancf::observe::Energies::default();
-    for (i, l) in system.lines().iter().enumerate() {
-        let line = energies(&l.model, st.line_state(i));
-        e.strain += line.strain;
-        e.gravity += line.gravity;
-    }
-    add_point_energies(system, |p| (st.point_position(p), [0.0; 3]), &mut e);
+    let e = st.energies();
     let en = [e.kinetic, e.strain, e.gravity];
-    let point_net = net_point_forces(system, &points, |p, x, _| {
-        system.points()[p]
-            .water
-            .as_ref()
-            .map_or([0.0; 3], |w| w.static_force(x).force)
-    });
+    let point_net = net_point_forces(system, &points, |w, x, _| w.static_force(x).force);
     SystemRow {
         t,
         point_net,
@@ -106,20 +90,22 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
 
 /// Each point's net force as MoorDyn's `Fnet`: the force of its lines
 /// (`points`' third member), its own load (weight, buoyancy, given force)
-/// and `water(p, x, v)`, the water's force on it at its position and
-/// velocity. At a free point in equilibrium it is zero to the solve's
-/// tolerance; in motion its mass and added mass times its acceleration.
+/// and, in water, `water(w, x, v)`, the water's force on it at its
+/// position and velocity. At a free point in equilibrium it is zero to
+/// the solve's tolerance; in motion its mass and added mass times its
+/// acceleration.
 fn net_point_forces(
     topology: &Topology,
     points: &[([f64; 3], [f64; 3], [f64; 3])],
-    water: impl Fn(usize, &[f64; 3], &[f64; 3]) -> [f64; 3],
+    water: impl Fn(&PointInWater, &[f64; 3], &[f64; 3]) -> [f64; 3],
 ) -> Vec<[f64; 3]> {
     points
         .iter()
         .enumerate()
         .map(|(p, (x, v, lines))| {
             let own = topology.point_load(p);
-            let w = water(p, x, v);
+            let in_water = topology.points()[p].water.as_ref();
+            let w = in_water.map_or([0.0; 3], |w| water(w, x, v));
             std::array::from_fn(|k| lines[k] + own[k] + w[k])
         })
         .collect()

@@ -227,11 +227,15 @@ impl SystemWriters {
                 node_rows(nodes.writer(), t, model, state)?;
             }
             if let Some(node_loads) = files.node_loads.as_mut() {
+                let computed;
                 let bed = match &row.seabed {
-                    Some(forces) => forces[i].clone(),
-                    None => seabed_nodal_forces(model, state),
+                    Some(forces) => &forces[i],
+                    None => {
+                        computed = seabed_nodal_forces(model, state);
+                        &computed
+                    }
                 };
-                node_load_rows(node_loads.writer(), t, model, state, &bed)
+                node_load_rows(node_loads.writer(), t, model, state, bed)
                     .map_err(|_| bad(format!("node loads of line {}", self.line_ids[i])))?;
             }
         }
