@@ -63,24 +63,18 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
 }
 
 /// Refuses a static solve of a system with a line anchored on its bed
-/// that is longer than its path to the fairlead can hold (C20): its
-/// excess lies slack on the bed in a shape no static solve determines,
-/// so the equilibrium is not unique (issue 35; MoorDyn's dynamic
-/// relaxation does not settle there either).
+/// that is longer than its path to the fairlead can hold (C20), naming
+/// the line by its id and saying what to do (the core refuses it too,
+/// by index: `SystemStatics::seeded`).
 fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Result<(), Failure> {
     let Some(l) = stancf::system::overlong_lines(seed).into_iter().next() else {
         return Ok(());
     };
     Err(Failure::Input(format!(
-        "{}: line {}: its {} m are at least the {} m that can hang from its fairlead and lie \
-         straight along the bed to its anchor (L_max = XF + V0/W, docs/method.md (C20)); the \
-         rest would lie slack on the bed in a shape no static solve determines, so the line \
-         has no unique equilibrium. Shorten it, move its ends apart, or start a dynamic run \
-         from the straight lines ([analysis] initial = \"reference\")",
+        "{}: line {}: {l}. Shorten it, move its ends apart, or start a dynamic run from the \
+         straight lines ([analysis] initial = \"reference\")",
         path.display(),
         sc.lines[l.line].id,
-        Sig(l.length),
-        Sig(l.max_length)
     )))
 }
 

@@ -202,8 +202,9 @@ fn anchored_to_the_fairlead(model: Model) -> System {
 /// no node below the bed, the nodes of the resting part on it, the ends
 /// at their points. The elastic catenary through the ends without the
 /// bed, the seed before, dips 5 m into it.
-#[test]
-fn a_line_anchored_on_the_bed_is_seeded_resting_on_it() {
+/// The chain of `length` (m) in 40 SAC-2 as the command line seeds it:
+/// its wet weight as gravity, the bed's contact without friction.
+fn seed_chain(length: f64) -> Model {
     let area = 0.25 * std::f64::consts::PI * DIAMETER * DIAMETER;
     let wet = (MASS_PER_LENGTH - RHO_W * area) / MASS_PER_LENGTH;
     let material = Material {
@@ -224,8 +225,13 @@ fn a_line_anchored_on_the_bed_is_seeded_resting_on_it() {
         },
         Load::Seabed(bed),
     ];
-    let cable = Cable::straight(LENGTH, 40, ElementType::Sac2).with_origin([0.0, 0.0, -DEPTH]);
-    let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
+    let cable = Cable::straight(length, 40, ElementType::Sac2).with_origin([0.0, 0.0, -DEPTH]);
+    Model::new(cable, material, ModelOptions::default(), loads).unwrap()
+}
+
+#[test]
+fn a_line_anchored_on_the_bed_is_seeded_resting_on_it() {
+    let model = seed_chain(LENGTH);
     let system = anchored_to_the_fairlead(model);
     let seed = &catenary_states(&system)[0];
     let m = &system.lines()[0].model;
@@ -380,4 +386,24 @@ fn a_chain_laid_on_a_frictional_bed_is_held_by_no_friction() {
 fn a_chain_pulled_out_along_its_bed_is_the_closed_form_with_friction() {
     let fe = chain_laid(80, 1.0, Some(StaticFriction::Pulled));
     agrees_with(fe, 1.0, 1.0);
+}
+
+/// A chain longer than can hang from its fairlead and lie straight to its
+/// anchor (L_max = XF + V0/W = 983 m here, (C20)) has no unique
+/// equilibrium: the library's seeded static solve refuses it naming the
+/// line and (C20), before its path would stall at load factor 0; the
+/// chain of the deck (835.35 m) is accepted.
+#[test]
+fn a_chain_longer_than_its_path_can_hold_is_refused_by_the_static_solve() {
+    let long = anchored_to_the_fairlead(seed_chain(1000.0));
+    let e = SystemStatics::seeded(long.clone(), &long, StaticSettings::default())
+        .err()
+        .expect("refused");
+    let m = e.to_string();
+    assert!(
+        m.contains("lines[0]") && m.contains("(C20)") && m.contains("1000 m"),
+        "{m}"
+    );
+    let ok = anchored_to_the_fairlead(seed_chain(LENGTH));
+    assert!(SystemStatics::seeded(ok.clone(), &ok, StaticSettings::default()).is_ok());
 }

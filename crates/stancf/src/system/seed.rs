@@ -289,6 +289,21 @@ pub struct OverlongLine {
     pub max_length: f64,
 }
 
+impl std::fmt::Display for OverlongLine {
+    /// Why the line has no unique equilibrium (its subject is the line).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "its {} m are at least the {} m that can hang from its fairlead and lie straight \
+             along the bed to its anchor (L_max = XF + V0/W, docs/method.md (C20)); the rest \
+             would lie slack on the bed in a shape no static solve determines, so the line has \
+             no unique equilibrium",
+            crate::error::Sig(self.length),
+            crate::error::Sig(self.max_length)
+        )
+    }
+}
+
 /// The lines of `system` between fixed or coupled points, anchored on its
 /// flat bed, whose length reaches L_max (C20) between the points where
 /// they are at t = 0: each would hang vertically from its fairlead and

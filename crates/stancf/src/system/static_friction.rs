@@ -28,7 +28,7 @@
 //!   [`super::SystemStatics::new`], for a caller who knows how the lines
 //!   were laid.
 //!
-//! Measured on MoorDyn's WD0050_Chain deck (mu = 0.5, 240 m on the bed):
+//! Measured on MoorDyn's WD0050_Chain deck (mu = 0.5, 243 m on the bed):
 //! the targets at the seed on the bed's surface, as before these
 //! policies, put the anchor's horizontal force 42.5 kN *above* the
 //! fairlead's: the line settles 0.13 m into the soft bed while its anchor

@@ -224,7 +224,9 @@ impl SystemStatics {
     /// the scenario's start reaches the equilibrium.
     /// What the seabed's friction holds is `settings.seabed_friction`,
     /// [`StaticFriction::FromSeed`] taken as [`StaticFriction::AsLaid`]:
-    /// these seeds are not where a line was laid.
+    /// these seeds are not where a line was laid. A line anchored on the
+    /// bed longer than its path can hold ([`super::overlong_lines`],
+    /// (C20)) is refused.
     pub fn seeded(
         system: System,
         seed_system: &System,
@@ -232,6 +234,14 @@ impl SystemStatics {
     ) -> Result<Self, ModelError> {
         if settings.seabed_friction == StaticFriction::FromSeed {
             settings.seabed_friction = StaticFriction::AsLaid;
+        }
+        // A line longer than its path can hold has no unique equilibrium
+        // (C20): refused before the path stalls at load factor 0.
+        if let Some(l) = super::overlong_lines(seed_system).first() {
+            return Err(ModelError::invalid(
+                format!("lines[{}]", l.line),
+                l.to_string(),
+            ));
         }
         let balanced = super::static_seed_states(seed_system);
         let given = super::catenary_states(seed_system);
