@@ -5,7 +5,7 @@
 
 use stancf::system::{End, Line, Point, System};
 
-#[path = "../../../crates/stancf/tests/common/rope_systems.rs"]
+#[path = "../../../crates/stancf/tests/library/common/rope_systems.rs"]
 mod rope_systems;
 pub use rope_systems::{line_model, one_line, one_line_end, settings, G, SWING};
 

@@ -14,7 +14,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stancf::system::{straight_states, End, Line, Point, System, SystemSimulation};
 use stancf::{StepSettings, TimeScheme};
 
-#[path = "../tests/common/rope_systems.rs"]
+#[path = "../tests/library/common/rope_systems.rs"]
 mod rope_systems;
 use rope_systems::{line_model, G, SWING};
 

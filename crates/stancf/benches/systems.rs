@@ -12,7 +12,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use stancf::system::{straight_states, SystemSimulation};
 
-#[path = "../tests/common/rope_systems.rs"]
+#[path = "../tests/library/common/rope_systems.rs"]
 mod rope_systems;
 use rope_systems::{one_line, settings, three_to_a_point};
 

@@ -5,6 +5,7 @@
 use super::{md_num, write_files};
 use crate::output::Num;
 use crate::Failure;
+use rayon::prelude::*;
 use stancf::loads::{AirDrag, DragModel};
 use stancf::observe::centre_line;
 use stancf::{
@@ -206,10 +207,11 @@ pub fn pendulum(dir: &Path) -> Result<(), Failure> {
         cases.push(coarse_eng(d));
         cases.push(refined(AxialStrain::Engineering, d));
     }
-    let mut results = Vec::new();
-    for c in &cases {
-        results.push((*c, simulate(c)?));
-    }
+    // The cases are independent: simulated side by side on the cores.
+    let results: Vec<(Case, Outcome)> = cases
+        .par_iter()
+        .map(|c| simulate(c).map(|o| (*c, o)))
+        .collect::<Result<_, _>>()?;
     let find = |c: &Case| -> &Outcome {
         &results
             .iter()

@@ -36,7 +36,7 @@
 //! to run, and `exercise` runs `check` and `run` on a case (a file and
 //! the files beside it) and checks what they leave.
 
-#[path = "../common/mod.rs"]
+#[path = "../cli/common/mod.rs"]
 mod common;
 
 mod bound;

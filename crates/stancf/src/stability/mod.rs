@@ -484,7 +484,7 @@ pub fn highest_frequency(model: &Model, e: &[f64]) -> f64 {
 /// this value and no further: the paper's transverse impact at ten times
 /// P2's step agrees with P2 at a tenth of P2's step within the Galerkin
 /// step's own step-doubling error estimate, energy error 1.5e-2
-/// (`transverse_impact_at_ten_times_the_p2_limit`, tests/galerkin.rs).
+/// (`transverse_impact_at_ten_times_the_p2_limit`, tests/library/galerkin.rs).
 /// Beyond it the examples (impacts, pendulums, with `stancf run`) stop
 /// with an energy jump in one step (Newton lands on a spurious solution of
 /// the step's equations) erratically from w_max dt = 25 on, almost all by

@@ -20,7 +20,7 @@ pub const MAX_STEP_HALVINGS: u32 = 10;
 /// without halvings, to the bit, so the default costs nothing where it is
 /// not needed; where it is, a line touching down or going slack at a long
 /// step runs on (a 26 m rope from the bed to a fairlead heaving 0.5 m at
-/// dt 0.1 s, tests/step_halvings.rs of stancf-cli) instead of stopping.
+/// dt 0.1 s, tests/cli/step_halvings.rs of stancf-cli) instead of stopping.
 pub const DEFAULT_STEP_HALVINGS: u32 = 5;
 
 impl SystemSimulation {

@@ -1,0 +1,146 @@
+//! Line ends clamped in a direction from the command line
+//! (docs/interface.md, "Systems": `[[lines]] clamp_a`, `clamp_b`): a
+//! clamped end leaves its point along the clamp, and every misplaced or
+//! malformed clamp is refused with exit 2 naming its key.
+
+use crate::common::*;
+
+/// A 4 m rope with some bending stiffness between fixed points at the
+/// origin and at [3, 0, -1], end A clamped by `clamp` (a TOML line, or
+/// empty); `point2` is the type of point 2 and `analysis` the
+/// `[analysis]` body.
+fn riser(clamp: &str, point2: &str, analysis: &str) -> String {
+    format!(
+        "{}[analysis]\n{analysis}\n",
+        one_rope(
+            "riser",
+            "ei = 0.05",
+            (point2, [3.0, 0.0, -1.0]),
+            (1, 4.0, 16),
+            clamp
+        )
+    )
+}
+
+/// The static equilibrium of a rope clamped at A along (1, 0, -1): the
+/// tangent of node 0 in nodes.csv is along the clamp to round-off,
+/// while the same rope pinned there leaves at another angle, and `stancf
+/// check` shows the clamp.
+#[test]
+fn a_clamped_end_leaves_its_point_along_the_clamp() {
+    let d = scratch("clamp-runs");
+    let sc = write_scenario(
+        &d,
+        "riser.toml",
+        &riser("clamp_a = [1.0, 0.0, -1.0]", "fixed", "type = \"static\""),
+    );
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        so.contains("ends point 1 (clamped along [0.707107, 0, -0.707107])"),
+        "{so}"
+    );
+    let tangent = |scenario: &str, name: &str| {
+        let sc = write_scenario(&d, name, scenario);
+        let out = d.join(format!("out-{name}"));
+        let o = run_quiet(&sc, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        let (header, rows) = read_csv(&out.join("lines/1/nodes.csv"));
+        assert_eq!(header.join(","), "t,node,x,y,z,dx_ds,dy_ds,dz_ds");
+        let last_t = rows.last().unwrap()[0];
+        let r = rows.iter().find(|r| r[0] == last_t && r[1] == 0.0).unwrap();
+        [r[5], r[6], r[7]]
+    };
+    let t = tangent(
+        &riser("clamp_a = [1.0, 0.0, -1.0]", "fixed", "type = \"static\""),
+        "c.toml",
+    );
+    assert!(
+        (t[0] + t[2]).abs() <= 1e-12 * t[0].abs() && t[1].abs() <= 1e-14,
+        "{t:?}"
+    );
+    let pinned = tangent(&riser("", "fixed", "type = \"static\""), "p.toml");
+    assert!((pinned[0] + pinned[2]).abs() > 1e-2, "{pinned:?}");
+}
+
+/// A dynamic run from the equilibrium with a clamped end at a coupled
+/// point runs (exit 0), the clamp held at every written step.
+#[test]
+fn a_clamped_end_at_a_moving_point_runs() {
+    let d = scratch("clamp-dynamic");
+    let analysis = "type = \"dynamic\"\ninitial = \"static\"\ntime_step = 1e-4\nduration = 2e-3";
+    let clamp_and_motion =
+        "clamp_b = [1.0, 0.0, 1.0]\n[[motions]]\npoint = 2\namplitude = [0.0, 0.1, 0.0]\nperiod = 0.5";
+    let scenario = riser(clamp_and_motion, "coupled", analysis);
+    let sc = write_scenario(&d, "moving.toml", &scenario);
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}\n{scenario}", text(&o).1);
+    let (_, rows) = read_csv(&out.join("lines/1/nodes.csv"));
+    let ends: Vec<&Vec<f64>> = rows.iter().filter(|r| r[1] == 16.0).collect();
+    assert!(ends.len() >= 2);
+    for r in ends {
+        assert!(
+            (r[5] - r[7]).abs() <= 1e-12 * r[5].abs() && r[6].abs() <= 1e-13,
+            "{r:?}"
+        );
+    }
+}
+
+#[test]
+fn a_zero_or_malformed_clamp_is_refused_naming_its_key() {
+    let st = "type = \"static\"";
+    expect_input_error(
+        "clamp-zero",
+        &riser("clamp_a = [0.0, 0.0, 0.0]", "fixed", st),
+        &["lines[0].clamp_a", "zero vector"],
+    );
+    expect_input_error(
+        "clamp-two",
+        &riser("clamp_b = [1.0, 0.0]", "fixed", st),
+        &["lines[0].clamp_b", "3 components"],
+    );
+}
+
+#[test]
+fn a_clamp_at_a_free_point_or_a_loose_end_is_refused_naming_its_key() {
+    let st = "type = \"static\"";
+    let free = riser("clamp_b = [1.0, 0.0, 0.0]", "free", st).replace(
+        "position = [3.0, 0.0, -1.0]",
+        "position = [3.0, 0.0, -1.0]\nmass = 1.0",
+    );
+    expect_input_error("clamp-free", &free, &["lines[0].clamp_b", "free point 2"]);
+    let loose = riser("clamp_b = [1.0, 0.0, 0.0]", "fixed", st).replace("b = 2\n", "");
+    let loose = loose.replace(
+        "[[points]]\nid = 2\ntype = \"fixed\"\nposition = [3.0, 0.0, -1.0]\n",
+        "",
+    );
+    expect_input_error(
+        "clamp-loose",
+        &loose,
+        &["lines[0].clamp_b", "end B is loose"],
+    );
+}
+
+#[test]
+fn a_clamp_with_elimination_or_the_galerkin_step_is_refused_naming_its_key() {
+    expect_input_error(
+        "clamp-elimination",
+        &riser(
+            "clamp_a = [1.0, 0.0, -1.0]",
+            "fixed",
+            "type = \"static\"\nconstraint_method = \"elimination\"",
+        ),
+        &["lines[0].clamp_a", "multiplier"],
+    );
+    expect_input_error(
+        "clamp-galerkin",
+        &riser(
+            "clamp_a = [1.0, 0.0, -1.0]",
+            "fixed",
+            "type = \"dynamic\"\ntime_step = 1e-3\nduration = 1e-2\ntime_scheme = \"galerkin\"",
+        ),
+        &["lines[0].clamp_a", "Galerkin"],
+    );
+}

@@ -1,0 +1,142 @@
+//! A MoorDyn deck's static equilibrium as users check it (issue 35): the
+//! forces on its points in MoorDyn's output channels, and a line with no
+//! unique equilibrium refused saying which and why.
+
+use crate::common::*;
+
+/// Two chains in 50 m of water: from an anchor on the bed to a free
+/// clump weight (500 kg, 0.02 m^3) and on to a coupled fairlead, with
+/// the channels of every point's net force.
+const CLUMP_DECK: &str = "--------------------- MoorDyn v2 input file ---------------------
+Two chains and a clump weight
+------------------------------ LINE TYPES ------------------------------
+TypeName  Diam    Mass/m   EA        BA/-zeta  EI       Cd    Ca    CdAx  CaAx
+(name)    (m)     (kg/m)   (N)       (N-s/-)   (N-m^2)  (-)   (-)   (-)   (-)
+chain     0.05    12.0     2.0E7     -0.8      0        1.2   1.0   0.01  0.5
+-------------------------------- POINTS --------------------------------
+ID  Attachment  X        Y        Z        Mass    Volume  CdA    Ca
+(#) (-)         (m)      (m)      (m)      (kg)    (m^3)   (m^2)  (-)
+1   Fixed       -80.0    0.0      -50.0    0       0       0      0
+2   Free        -20.0    0.0      -35.0    500     0.02    0      0
+3   Coupled     20.0     0.0      -5.0     0       0       0      0
+-------------------------------- LINES ---------------------------------
+ID  LineType  AttachA  AttachB  UnstrLen  NumSegs  Outputs
+(#) (name)    (#)      (#)      (m)       (-)      (-)
+1   chain     1        2        62.0      15       -
+2   chain     2        3        48.0      10       -
+------------------------------- OPTIONS --------------------------------
+0.001     dtM
+9.81      g
+50        WtrDpth
+1025      WtrDnsty
+------------------------------- OUTPUTS --------------------------------
+Con1fx Con1fz Point2FX P2FY p2fz Con3FX Con3fz Con3T
+------------------------- need this line -------------------------------
+";
+
+/// The columns of channels.csv and the rows of points.csv (t, point, x,
+/// y, z, vx, vy, vz, fx, fy, fz) of a static run of `deck`.
+fn run_channels(name: &str, deck: &str) -> (Vec<(String, f64)>, Vec<Vec<f64>>) {
+    let dir = scratch(name);
+    let path = write_scenario(&dir, "clump.txt", deck);
+    let out = dir.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert!(o.status.success(), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    assert_eq!(rows.len(), 1);
+    let channels = header.into_iter().zip(rows[0].iter().copied()).collect();
+    (channels, read_csv(&out.join("points.csv")).1)
+}
+
+/// MoorDyn's point channels `Con<n>FX`, `Point<n>FX`, `P<n>FX` (any
+/// case) and `Con<n>T` are the net force on the point, `Fnet`: at a
+/// fixed or coupled point without mass or volume the force of its lines
+/// (points.csv's), at a free point in equilibrium zero (its lines'
+/// force, weight and buoyancy balance, to the solve's tolerance 1e-10 of
+/// the scaled rows: 1e-6 of its weight here).
+#[test]
+fn moordyn_point_force_channels_are_the_net_forces_on_the_points() {
+    let (channels, points) = run_channels("point_force_channels", CLUMP_DECK);
+    let value = |name: &str| {
+        channels
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap_or_else(|| panic!("no channel {name}"))
+            .1
+    };
+    let point = |id: f64| points.iter().find(|r| r[1] == id).unwrap();
+    let (anchor, fairlead) = (point(1.0), point(3.0));
+    assert_eq!(value("Con1fx"), anchor[8]);
+    assert_eq!(value("Con1fz"), anchor[10]);
+    assert_eq!(value("Con3FX"), fairlead[8]);
+    assert_eq!(value("Con3fz"), fairlead[10]);
+    let t3 = (fairlead[8].powi(2) + fairlead[9].powi(2) + fairlead[10].powi(2)).sqrt();
+    assert!((value("Con3T") - t3).abs() <= 1e-12 * t3);
+    let weight = 500.0 * 9.81;
+    for c in ["Point2FX", "P2FY", "p2fz"] {
+        assert!(value(c).abs() < 1e-6 * weight, "{c} = {} N", value(c));
+    }
+    // The clump's lines hold its wet weight.
+    let clump = point(2.0);
+    let wet = weight - 1025.0 * 0.02 * 9.81;
+    assert!(
+        (clump[10] - wet).abs() < 1e-6 * weight,
+        "{} vs {wet}",
+        clump[10]
+    );
+}
+
+/// MoorDyn's r-test md_case5 (OpenFAST): 850 m of chain from an anchor
+/// on the bed at 400 m to a fairlead at the surface, in 200 m of water.
+/// Hanging from the fairlead and lying straight to the anchor it needs at
+/// most L_max = XF + V0/W = 600 m (C20); the other 250 m would lie slack
+/// on the bed in no determined shape. `check` and `run` refuse it naming
+/// the line, both lengths and (C20) (exit 2, nothing written); MoorDyn's
+/// dynamic relaxation does not settle there either.
+#[test]
+fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
+    let deck = "MoorDyn Input File
+Near vertical line, hitting bottom
+----------------------- LINE TYPES ------------------------------------------
+TypeName  Diam  MassDen  EA       BA/-zeta   EI    Cd    Ca   CdAx   CaAx
+(-)   (m)   (kg/m)   (N)      (N-s/-)   (-)   (-)   (-)   (-)   (-)
+main  0.333  685.00  3.27E+09  -1        0     1    0.27  1      0.20
+---------------------- POINTS --------------------------------
+ID Attachment      X     Y      Z     M    V   CdA   CA
+(-)  (-)      (m)   (m)    (m)   (kg) (m^3)  (m^2) (-)
+1   Fixed  -400.0   0.0  -200.0    0    0    0    0
+2   Coupled   0.0   0.0     0.0    0    0    0    0
+---------------------- LINES --------------------------------------
+ID  LineType AttachAnch  NodeFair UnstrLen  NumSegs    LineOutputs
+(-)   (-)      (-)       (-)      (m)       (-)        (-)
+1     main      1         2       850.00    40          p
+---------------------- SOLVER OPTIONS ---------------------------------------
+200      WtrDpth
+0.001    dtM       - time step to use in mooring integration (s)
+3.0e6    kBot      - bottom stiffness (Pa/m)
+3.0e5    cBot      - bottom damping (Pa-s/m)
+------------------------ OUTPUTS --------------------------------------------
+FAIRTEN1
+------------------------- need this line --------------------------------------
+";
+    let dir = scratch("overlong_line");
+    let path = write_scenario(&dir, "md_case5.dat", deck);
+    refused_by_check_and_run(
+        &path,
+        &dir.join("out"),
+        &[
+            "md_case5.dat",
+            "line 1",
+            "850 m",
+            "599.96",
+            "(C20)",
+            "no unique equilibrium",
+        ],
+        &[],
+    );
+    // 590 m fit: the same deck runs.
+    let dir = scratch("overlong_line_shortened");
+    let path = write_scenario(&dir, "md.dat", &deck.replace("850.00", "590.00"));
+    let o = run_quiet(&path, &dir.join("out"), &[]);
+    assert!(o.status.success(), "{}", text(&o).1);
+}

@@ -1,0 +1,37 @@
+//! The command line's tests, one module per subject, in one test binary
+//! (one build and one link for all of them: the test command's build on
+//! two cores is dominated by per-binary work). Run one subject with
+//! `cargo test --release -p stancf-cli --test cli <module>::`.
+
+mod common;
+
+mod axial_damping;
+mod bad_input;
+mod clamped_lines;
+mod compression;
+mod coupling;
+mod deck_statics;
+mod extreme_values;
+mod figures_and_vtk;
+mod grading;
+mod hostile_inputs;
+mod hostile_scenarios;
+mod mesh_sections;
+mod motion_files;
+mod output_files;
+mod output_folder_safety;
+mod reproduce;
+mod result_folder;
+mod run_and_check;
+mod seabed_friction;
+mod solver_and_schemes;
+mod step_halvings;
+mod sweep;
+mod system_bounds;
+mod system_geometry;
+mod system_summary;
+mod systems;
+mod time_loop;
+mod watchdog;
+mod water;
+mod water_refusals;

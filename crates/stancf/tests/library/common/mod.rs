@@ -1,0 +1,218 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+pub mod rope_systems;
+pub mod step_checks;
+pub mod water_lines;
+
+use stancf::element::{CableElement, Measures, Section, SpaceRules, TimeSlab};
+use stancf::quadrature::GaussRule;
+use stancf::shape::{cubic_hermite, quintic_hermite};
+use stancf::{AxialStrain, Curvature, Material, NewtonSettings, StepSettings, TimeScheme};
+
+/// Deterministic pseudo-random numbers in [-1, 1) (xorshift64).
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+/// Relative difference |a - b| / max(|b|, floor) of two vectors (2-norm).
+pub fn rel_diff(a: &[f64], b: &[f64]) -> f64 {
+    let num: f64 = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let den: f64 = b.iter().map(|y| y * y).sum::<f64>().sqrt();
+    num / den.max(1e-300)
+}
+
+pub const ALL_MEASURES: [Measures; 4] = [
+    Measures {
+        axial_strain: AxialStrain::Green,
+        curvature: Curvature::Paper,
+    },
+    Measures {
+        axial_strain: AxialStrain::Green,
+        curvature: Curvature::Exact,
+    },
+    Measures {
+        axial_strain: AxialStrain::Engineering,
+        curvature: Curvature::Paper,
+    },
+    Measures {
+        axial_strain: AxialStrain::Engineering,
+        curvature: Curvature::Exact,
+    },
+];
+
+pub fn section() -> Section {
+    Section {
+        ea: 3.0,
+        ei: 0.2,
+        rho_a: 1.3,
+        ba: 0.0,
+        tension_only: false,
+    }
+}
+
+pub fn rules(axial: usize, bending: usize) -> SpaceRules {
+    SpaceRules {
+        axial: GaussRule::new(axial).unwrap(),
+        bending: GaussRule::new(bending).unwrap(),
+    }
+}
+
+pub fn sac2(l: f64, m: Measures, r: &SpaceRules) -> CableElement<4, 12> {
+    CableElement::new(cubic_hermite, l, section(), m, r)
+}
+
+pub fn sac3(l: f64, m: Measures, r: &SpaceRules) -> CableElement<6, 18> {
+    CableElement::new(quintic_hermite, l, section(), m, r)
+}
+
+pub fn slab(dt: f64, points: usize) -> TimeSlab {
+    TimeSlab::new(dt, &GaussRule::new(points).unwrap())
+}
+
+/// Random slab unknowns near a bent, stretched, moving element: the
+/// straight reference plus perturbations of size `amp`, velocities of
+/// order 1.
+pub fn random_slab_state<const NS: usize, const ND: usize>(
+    rng: &mut Rng,
+    l: f64,
+    amp: f64,
+) -> [[f64; ND]; 4] {
+    let vpn = NS / 2;
+    let mut y = [[0.0; ND]; 4];
+    for t in [0, 2] {
+        for a in 0..NS {
+            let node = a / vpn;
+            let kind = a % vpn;
+            for i in 0..3 {
+                let base = match (kind, i) {
+                    (0, 0) => node as f64 * l,
+                    (1, 0) => 1.0,
+                    _ => 0.0,
+                };
+                y[t][3 * a + i] = base + amp * rng.next();
+            }
+        }
+    }
+    for t in [1, 3] {
+        for d in 0..ND {
+            y[t][d] = rng.next();
+        }
+    }
+    y
+}
+
+/// Eigenvalues of the symmetric matrix `a` (dense, n x n), ascending, by
+/// the cyclic Jacobi method (rotations until the off-diagonal part is
+/// below 1e-16 of the whole): slow, simple and independent of the
+/// library's eigenvalue code.
+pub fn symmetric_eigenvalues(mut a: Vec<Vec<f64>>) -> Vec<f64> {
+    let n = a.len();
+    let total: f64 = a.iter().flatten().map(|v| v * v).sum();
+    for _sweep in 0..100 {
+        let off: f64 = (0..n)
+            .flat_map(|i| (0..n).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| a[i][j] * a[i][j])
+            .sum();
+        if off <= 1e-32 * total {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[p][q] == 0.0 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta == 0.0 { 1.0 } else { t };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                for k in 0..n {
+                    let (akp, akq) = (a[k][p], a[k][q]);
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for k in 0..n {
+                    let (apk, aqk) = (a[p][k], a[q][k]);
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+            }
+        }
+    }
+    let mut ev: Vec<f64> = (0..n).map(|i| a[i][i]).collect();
+    ev.sort_by(f64::total_cmp);
+    ev
+}
+
+/// Largest lambda of K x = lambda M x (K symmetric, M symmetric positive
+/// definite, dense): Cholesky M = L L^T, then the eigenvalues of
+/// L^-1 K L^-T by [`symmetric_eigenvalues`].
+pub fn generalized_max_eigenvalue(k: &[Vec<f64>], m: &[Vec<f64>]) -> f64 {
+    let n = k.len();
+    let mut l = vec![vec![0.0; n]; n];
+    for i in 0..n {
+        for j in 0..=i {
+            let s = m[i][j] - (0..j).map(|p| l[i][p] * l[j][p]).sum::<f64>();
+            l[i][j] = if i == j { s.sqrt() } else { s / l[j][j] };
+        }
+    }
+    // C = L^-1 K L^-T: solve L Y = K, then L C^T = Y^T.
+    let lower_solve = |b: &[f64]| {
+        let mut x = vec![0.0; n];
+        for i in 0..n {
+            x[i] = (b[i] - (0..i).map(|p| l[i][p] * x[p]).sum::<f64>()) / l[i][i];
+        }
+        x
+    };
+    let y: Vec<Vec<f64>> = (0..n)
+        .map(|j| lower_solve(&(0..n).map(|i| k[i][j]).collect::<Vec<_>>()))
+        .collect(); // y[j] = column j of L^-1 K
+    let c: Vec<Vec<f64>> = (0..n)
+        .map(|i| lower_solve(&(0..n).map(|j| y[j][i]).collect::<Vec<_>>()))
+        .collect(); // c[i] = column i of L^-1 (L^-1 K)^T = row i of C
+    let c: Vec<Vec<f64>> = (0..n)
+        .map(|i| (0..n).map(|j| 0.5 * (c[i][j] + c[j][i])).collect())
+        .collect();
+    *symmetric_eigenvalues(c).last().expect("n > 0")
+}
+
+/// A light rope: 2 mm^2 at 1 MPa (EA 2 N: 1 % strain under its own weight
+/// over a metre, wave speed 32 m/s), 2 g/m, bending stiffness 1e-6 of its
+/// axial one over a metre squared, no damping.
+pub fn light_rope() -> Material {
+    Material {
+        youngs_modulus: 1e6,
+        density: 1000.0,
+        area: 2e-6,
+        second_moment: 2e-12,
+        axial_damping: 0.0,
+    }
+}
+
+/// A step of `dt` in `scheme` with Newton to `tolerance` in at most 50
+/// iterations (the rest as [`StepSettings::default`]).
+pub fn step_settings(dt: f64, scheme: TimeScheme, tolerance: f64) -> StepSettings {
+    StepSettings {
+        time_step: dt,
+        time_scheme: scheme,
+        newton: NewtonSettings {
+            tolerance,
+            max_iterations: 50,
+            ..NewtonSettings::default()
+        },
+        ..StepSettings::default()
+    }
+}

@@ -1,0 +1,43 @@
+//! The library's tests, one module per subject, in one test binary (one
+//! build and one link for all of them: the test command's build on two
+//! cores is dominated by per-binary work). Run one subject with
+//! `cargo test --release -p stancf --test library <module>::`.
+
+mod common;
+
+mod added_mass;
+mod added_mass_derivatives;
+mod added_mass_systems;
+mod axial_damping;
+mod broyden;
+mod catenary_on_seabed;
+mod clamped_ends;
+mod compression;
+mod constrained_dynamics;
+mod coupling;
+mod drag;
+mod element_derivatives;
+mod end_forces;
+mod free_cable;
+mod galerkin;
+mod grading;
+mod highest_frequency;
+mod lines_apart;
+mod mhk_rm1_lines;
+mod motion_tables;
+mod no_allocation;
+mod parallel_elements;
+mod planar;
+mod points_in_water;
+mod quadrature_rank;
+mod seabed;
+mod statics;
+mod step_assembly;
+mod step_halving;
+mod step_unknowns;
+mod system_momentum;
+mod system_run;
+mod system_statics;
+mod systems;
+mod watchdog;
+mod water;
