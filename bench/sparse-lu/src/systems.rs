@@ -39,7 +39,7 @@ pub fn star(anchors: &[[f64; 3]], elements: usize) -> System {
     System::new(lines, points, G).unwrap()
 }
 
-/// The 3 x 40 system of `crates/stancf/benches/systems.rs`: two fixed
+/// The 3 x 40 system of `bench/criterion/benches/systems.rs`: two fixed
 /// anchors and a swinging one, to a free point.
 pub fn three_to_a_point() -> System {
     rope_systems::three_to_a_point(40)

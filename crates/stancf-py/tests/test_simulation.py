@@ -281,15 +281,16 @@ def test_the_gil_is_released_while_stepping():
     sim = stancf.Simulation(bridle(10))
     sim.initialize(START)
     done = threading.Event()
-    # One long call: 1000 steps inside a single coupling interval.
-    th = threading.Thread(target=lambda: (sim.step_to(1000 * DT, swing(1000 * DT)[0]),
+    # One long call: 200 steps inside a single coupling interval (about a
+    # second; a loop holding the GIL would count nothing until it ends).
+    th = threading.Thread(target=lambda: (sim.step_to(200 * DT, swing(200 * DT)[0]),
                                           done.set()))
     th.start()
     count = 0
     while not done.is_set():
         count += 1
     th.join()
-    assert sim.last_steps == 1000
+    assert sim.last_steps == 200
     assert count > 10000, count
 
 

@@ -339,16 +339,18 @@ mod joined {
     /// point come from the system's mass matrix (docs/method.md §11.10):
     /// fourth order in the elements again (measured 2.4e-6, 2.7e-7 and
     /// 2.8e-8 of the length at 10, 20 and 40 elements per line, as P2 to
-    /// three digits: the difference is the elements', not the schemes';
-    /// asserted as for P2).
+    /// three digits: the difference is the elements', not the schemes').
+    /// Asserted at 10 and 20 (40 costs three times both): a ratio of at
+    /// least 8, and at most 1.3e-6 at 20, P2's bound at 40 carried to 20
+    /// at fourth order (2^4 = 16).
     #[test]
     fn two_lines_joined_at_a_free_massless_point_move_as_one_line_with_the_galerkin_step() {
-        let d: Vec<f64> = [(10usize, 4e-3), (20, 2e-3), (40, 1e-3)]
+        let d: Vec<f64> = [(10usize, 4e-3), (20, 2e-3)]
             .iter()
             .map(|&(n, dt)| moving_difference(n, dt, TimeScheme::Galerkin))
             .collect();
-        eprintln!("Galerkin: one vs two lines over 1 s at 10, 20, 40 elements per line: {d:?}");
-        assert!(d[0] / d[1] >= 8.0 && d[1] / d[2] >= 8.0, "{d:?}");
-        assert!(d[2] <= 8e-8, "{d:?}");
+        eprintln!("Galerkin: one vs two lines over 1 s at 10, 20 elements per line: {d:?}");
+        assert!(d[0] / d[1] >= 8.0, "{d:?}");
+        assert!(d[1] <= 1.3e-6, "{d:?}");
     }
 }

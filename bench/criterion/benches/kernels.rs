@@ -2,7 +2,7 @@
 //! one-layer P2 step uses) and one whole P2 step for 8, 64 and 512
 //! elements. Report ratios measured in one run (the machine is shared).
 //!
-//! cargo bench -p stancf --bench kernels
+//! cargo bench --manifest-path bench/criterion/Cargo.toml --bench kernels
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use stancf::element::{CableElement, SlabDerivatives, SlabLoads, SpaceRules, TimeSlab};

@@ -7,12 +7,12 @@
 //! issue's bound: the system's step within 1.5x of the single line's.
 //! Report the ratio of one run (the machine is shared).
 //!
-//! cargo bench -p stancf --bench systems
+//! cargo bench --manifest-path bench/criterion/Cargo.toml --bench systems
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use stancf::system::{straight_states, SystemSimulation};
 
-#[path = "../tests/library/common/rope_systems.rs"]
+#[path = "../../../crates/stancf/tests/library/common/rope_systems.rs"]
 mod rope_systems;
 use rope_systems::{one_line, settings, three_to_a_point};
 

@@ -8,13 +8,13 @@
 //! iterations per step (a cost per element that grows because Newton
 //! needs more iterations is the physics, not the linear algebra).
 //!
-//! cargo bench -p stancf --bench scale
+//! cargo bench --manifest-path bench/criterion/Cargo.toml --bench scale
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stancf::system::{straight_states, End, Line, Point, System, SystemSimulation};
 use stancf::{StepSettings, TimeScheme};
 
-#[path = "../tests/library/common/rope_systems.rs"]
+#[path = "../../../crates/stancf/tests/library/common/rope_systems.rs"]
 mod rope_systems;
 use rope_systems::{line_model, G, SWING};
 
