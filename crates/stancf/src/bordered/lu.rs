@@ -93,7 +93,7 @@ impl Factorization for BorderedLu {
 /// (LAPACK `dgetf2`: whole rows swapped, unit L below the diagonal). A
 /// pivot below `max|s| max(1e-300, 1e-8 eps)` or not finite is singular:
 /// `Err(column)`.
-pub(super) fn dense_lu(s: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), usize> {
+pub(crate) fn dense_lu(s: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), usize> {
     let tiny = max_abs(s) * 1e-300_f64.max(f64::EPSILON * 1e-8);
     for k in 0..n {
         let mut p = k;
@@ -128,7 +128,7 @@ pub(super) fn dense_lu(s: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<
 }
 
 /// x <- S^-1 x with the factors of [`dense_lu`].
-pub(super) fn dense_solve(s: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
+pub(crate) fn dense_solve(s: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
     for (k, &p) in pivots.iter().enumerate() {
         x.swap(k, p);
     }

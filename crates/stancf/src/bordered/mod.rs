@@ -50,6 +50,7 @@ mod lu;
 mod tests;
 
 pub use lu::BorderedLu;
+pub(crate) use lu::{dense_lu, dense_solve};
 
 use crate::band::BandLu;
 use crate::linear::{AddEntries, Jacobian};

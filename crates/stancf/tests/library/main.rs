@@ -30,6 +30,7 @@ mod parallel_elements;
 mod planar;
 mod points_in_water;
 mod quadrature_rank;
+mod rigid_bodies;
 mod seabed;
 mod statics;
 mod step_assembly;
