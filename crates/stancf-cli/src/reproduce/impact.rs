@@ -7,7 +7,9 @@ use crate::Failure;
 use rayon::prelude::*;
 use stancf::model::{SLOT_R, SLOT_R_X};
 use stancf::observe::stress_samples;
-use stancf::{Cable, ElementType, Material, Model, ModelOptions, Simulation, StepSettings};
+use stancf::{
+    Cable, ElementType, Energies, Material, Model, ModelOptions, Simulation, StepSettings,
+};
 use std::fmt::Write as _;
 use std::ops::ControlFlow;
 use std::path::Path;
@@ -105,15 +107,7 @@ pub fn axial(dir: &Path) -> Result<(), Failure> {
                     )
                     .ok();
                 }
-                writeln!(
-                    energy,
-                    "{},{},{},{}",
-                    Num(rep.t),
-                    Num(en.kinetic),
-                    Num(en.strain),
-                    Num(en.mechanical())
-                )
-                .ok();
+                energy_row(&mut energy, rep.t, en);
             }
             drift = drift.max(((en.mechanical() - e0) / e0).abs());
             mid = mid.max(sim.model().node_position(&sim.state().e, 4)[0].abs());
@@ -302,15 +296,7 @@ fn transverse_run(kind: ElementType) -> Result<TransverseRun, Failure> {
         let (_, p, _) = stancf::observe::momentum(sim.model(), sim.state());
         p_max = p_max.max(p[0].abs().max(p[1].abs()));
         if rep.step % 40 == 0 {
-            writeln!(
-                energy,
-                "{},{},{},{}",
-                Num(rep.t),
-                Num(en.kinetic),
-                Num(en.strain),
-                Num(en.mechanical())
-            )
-            .ok();
+            energy_row(&mut energy, rep.t, en);
             writeln!(midpoint, "{},{},{}", Num(rep.t), Num(r[0]), Num(r[1])).ok();
         }
         ControlFlow::Continue(())
@@ -344,4 +330,17 @@ fn transverse_run(kind: ElementType) -> Result<TransverseRun, Failure> {
         energy,
         midpoint,
     })
+}
+
+/// One row `t,kinetic,strain,total` of the studies' energy files.
+fn energy_row(out: &mut String, t: f64, en: &Energies) {
+    writeln!(
+        out,
+        "{},{},{},{}",
+        Num(t),
+        Num(en.kinetic),
+        Num(en.strain),
+        Num(en.mechanical())
+    )
+    .ok();
 }
