@@ -33,7 +33,7 @@
 //! | [`coupling`] | a system stepped by another code that moves its coupled points (MoorDyn's step API) |
 //! | [`catenary`] | the closed-form elastic catenary of a line between two points (Irvine) |
 //! | [`water`] | the sea: density, depth, currents, waves, and the loads of water on a line |
-//! | [`body`] | rigid bodies in natural coordinates: inertia, orthonormality conditions, a free body's step |
+//! | [`body`] | rigid bodies: inertia, rotations over a step, a free body's Galerkin step |
 //!
 //! The physics never touches files, terminals or the clock; the `stancf`
 //! command-line tool (crate `stancf-cli`) does.

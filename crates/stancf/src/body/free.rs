@@ -1,40 +1,44 @@
-//! A free rigid body's Galerkin step (docs/method.md §15.4).
+//! A free rigid body's Galerkin step (docs/method.md §15.3-§15.4).
 //!
-//! Over a step the natural coordinates move along the cubic of eq. (6),
-//! `q(t) = T1 q_a + T2 w_a + T3 q_b + T4 w_b`, with end slopes w internal
-//! to the step as in the cables' Galerkin step (M22). The body's action
-//! (M13) with the constant mass Q (x) I_3 of (B2) and the generalized
-//! force f of constant forces F_j at body points xi_j,
-//!
-//! ```text
-//!   A = sum_g w_g dt [ 1/2 q_dot_g^T M q_dot_g + f . q_g ],   f_k = sum_j s_k(xi_j) F_j     (B4)
-//!   dA/dy_m = sum_n C_mn M y_n + b_m f,      d2A/dy_m dy_n = C_mn M
-//! ```
-//!
-//! and the conditions (B5) held at the step's ends with multipliers
-//! (the RATTLE form of a constrained variational integrator):
+//! The centre of mass r_G moves along the cubic of eq. (6), like a free
+//! point (M31); the rotation is R(t) = R_a exp([theta(t)]) with theta the
+//! cubic `T2 u_a + T3 theta_b + T4 u_b` (theta_a = 0: the step's start is
+//! the chart's origin), so R(t) is a rotation at every t. The action at
+//! the time Gauss points,
 //!
 //! ```text
-//!   dA/dq_a + p_a + G(q_a)^T lambda = 0,   dA/dw_a = 0,   dA/dw_b = 0,   g(q_b) = 0    (B6)
-//!   p_b = dA/dq_b + G(q_b)^T mu,   G(q_b) M^-1 p_b = 0,   v_b = M^-1 p_b                (B7)
+//!   A = sum_g w_g dt [ m/2 |r_G_dot|^2 + F . r_G
+//!                      + 1/2 Omega . I_G Omega + sum_j F_j . R_a exp([theta]) xi'_j ]   (B5)
 //! ```
 //!
-//! (B6) are 42 equations in w_a, q_b, w_b (12 each) and lambda (6),
-//! solved by Newton with the exact Jacobian (linear but for g); (B7) is a
-//! 6 x 6 projection of the end momentum onto the rates that keep the
-//! columns orthonormal. The action and the conditions are invariant under
-//! rotations and translations, so the discrete momentum maps hold: the
-//! angular momentum of a body without torque and the linear momentum of
-//! one without force are kept to round-off.
+//! (Omega = J_r(theta) theta_dot (B9), F = sum_j F_j, xi'_j = xi_j - c the
+//! force's point from the centre of mass), gives the rows of the Galerkin
+//! step (M22) in the chart:
+//!
+//! ```text
+//!   dA/dr_a + p_a = 0,      dA/dw_a = 0,  dA/dw_b = 0
+//!   dA/dtheta_a + Pi_a = 0, dA/du_a = 0,  dA/du_b = 0                              (B6)
+//!   p_b = dA/dr_b,   Pi_b = J_r(theta_b)^-T dA/dtheta_b,   R_b = R_a exp([theta_b]) (B7)
+//! ```
+//!
+//! (Pi the angular momentum in body axes: Hamilton's law's end terms are
+//! Pi . eta with eta the virtual rotation in body axes, eta = J_r dtheta).
+//! The translational rows are linear; the rotational ones are evaluated
+//! on jets ([`super::jet`]), which give their exact Jacobian. The linear
+//! momentum is a discrete momentum map (the cubic's variations hold the
+//! translations) and is kept to round-off; the angular momentum is not
+//! (a rotation of the whole path is not a cubic in the chart), and is
+//! kept to the step's error, sixth order.
 
 use super::inertia::RigidInertia;
-use super::natural::{self, column, Natural};
-use super::orthonormality;
+use super::jet::{cross, dot, Jet, JetVec};
+use super::pose::{self, rotate, rotate_back};
+use super::rotation::{body_rate, exp_map, right_jacobian, series};
 use crate::bordered::{dense_lu, dense_solve};
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, SolverError};
 use crate::quadrature::GaussRule;
-use crate::vec3::{add, cross, scale};
+use crate::vec3::{add, scale, sub};
 
 /// Constant forces on a body, each at a body-fixed point (body axes, from
 /// the reference point): weight and buoyancy at the centre of mass
@@ -58,56 +62,39 @@ impl BodyForces {
         }
     }
 
-    /// The generalized force f of (B4).
-    pub fn generalized(&self) -> Natural {
-        let mut f = [0.0; 12];
-        for (force, xi) in &self.forces {
-            let s = natural::point_weights(*xi);
-            for k in 0..4 {
-                for i in 0..3 {
-                    f[3 * k + i] += s[k] * force[i];
-                }
-            }
-        }
-        f
+    fn total(&self) -> [f64; 3] {
+        self.forces.iter().fold([0.0; 3], |s, (f, _)| add(s, *f))
     }
 }
 
-/// Unknowns of a step: w_a, q_b, w_b and the six multipliers.
-const N: usize = 42;
+/// Unknowns of a step: w_a, r_b - r_a, w_b of the centre; u_a, theta_b,
+/// u_b of the rotation.
+const N: usize = 18;
+/// Jet variables of the rotational action: theta_a, u_a, theta_b, u_b.
+const NJ: usize = 12;
 /// Newton iterations a step may take.
 const MAX_ITERATIONS: usize = 30;
 
-/// One rigid body moving freely under constant forces, stepped by (B6)-(B7).
+/// One rigid body moving freely under constant forces, stepped by
+/// (B6)-(B7).
 #[derive(Clone, Debug)]
 pub struct FreeBody {
-    mass: [[f64; 4]; 4],
-    mass_inverse: [[f64; 4]; 4],
-    force: Natural,
+    inertia: RigidInertia,
+    inertia_inverse: [[f64; 3]; 3],
+    forces: BodyForces,
     slab: TimeSlab,
     time: f64,
-    q: Natural,
-    v: Natural,
-    p: Natural,
+    centre: [f64; 3],
+    momentum: [f64; 3],
+    rotation: [[f64; 3]; 3],
+    /// Pi, the angular momentum in body axes.
+    body_momentum: [f64; 3],
     last_iterations: usize,
 }
 
-/// (Q (x) I_3) y.
-fn times(q4: &[[f64; 4]; 4], y: &Natural) -> Natural {
-    let mut out = [0.0; 12];
-    for k in 0..4 {
-        for l in 0..4 {
-            for i in 0..3 {
-                out[3 * k + i] += q4[k][l] * y[3 * l + i];
-            }
-        }
-    }
-    out
-}
-
 impl FreeBody {
-    /// A body at `position` with `rotation` (body axes to global), its
-    /// reference point moving at `velocity` and turning at
+    /// A body whose reference point is at `position` with `rotation`
+    /// (body axes to global), moving at `velocity` and turning at
     /// `angular_velocity` (global), stepped with steps of `dt`.
     pub fn new(
         inertia: &RigidInertia,
@@ -125,30 +112,22 @@ impl FreeBody {
                 "must be positive and finite",
             ));
         }
-        let mass = inertia.generalized_mass();
-        let mass_inverse = invert4(&mass)
-            .ok_or_else(|| ModelError::invalid("body", "the generalized mass (B2) is singular"))?;
-        let q = natural::from_pose(position, rotation);
-        let off = orthonormality::conditions(&q)
-            .iter()
-            .fold(0.0f64, |m, g| m.max(g.abs()));
-        if off > 1e-12 {
-            return Err(ModelError::invalid(
-                "body.rotation",
-                format!("not a rotation: its columns are off orthonormal by {off:e}"),
-            ));
-        }
-        let v = natural::rates_from(velocity, angular_velocity, &q);
-        let p = times(&mass, &v);
+        let inertia_inverse = invert3(&inertia.inertia_at_centre)
+            .ok_or_else(|| ModelError::invalid("body", "the inertia tensor is singular"))?;
+        let c = rotate(rotation, inertia.centre_of_mass);
+        let centre = add(position, c);
+        let v_g = add(velocity, crate::vec3::cross(angular_velocity, c));
+        let omega_body = rotate_back(rotation, angular_velocity);
         Ok(FreeBody {
-            mass,
-            mass_inverse,
-            force: forces.generalized(),
+            inertia: inertia.clone(),
+            inertia_inverse,
+            forces: forces.clone(),
             slab: TimeSlab::new(dt, &GaussRule::new(3)?),
             time: 0.0,
-            q,
-            v,
-            p,
+            centre,
+            momentum: scale(inertia.mass, v_g),
+            rotation: *rotation,
+            body_momentum: mat_vec(&inertia.inertia_at_centre, omega_body),
             last_iterations: 0,
         })
     }
@@ -156,204 +135,235 @@ impl FreeBody {
     pub fn time(&self) -> f64 {
         self.time
     }
-    pub fn coordinates(&self) -> &Natural {
-        &self.q
-    }
-    pub fn rates(&self) -> &Natural {
-        &self.v
-    }
     /// Newton iterations of the last step.
     pub fn last_iterations(&self) -> usize {
         self.last_iterations
     }
     /// The rotation matrix (body axes to global).
     pub fn rotation(&self) -> [[f64; 3]; 3] {
-        natural::rotation(&self.q)
+        self.rotation
     }
-    /// The angular velocity, global (B8).
+    /// The reference point, `r_G - R c`.
+    pub fn position(&self) -> [f64; 3] {
+        sub(
+            self.centre,
+            rotate(&self.rotation, self.inertia.centre_of_mass),
+        )
+    }
+    /// The global position of the body point `xi` (B1).
+    pub fn point(&self, xi: [f64; 3]) -> [f64; 3] {
+        pose::point(self.position(), &self.rotation, xi)
+    }
+    /// The angular velocity in body axes, `I_G^-1 Pi`.
+    pub fn body_angular_velocity(&self) -> [f64; 3] {
+        mat_vec(&self.inertia_inverse, self.body_momentum)
+    }
+    /// The angular velocity, global: `R Omega`.
     pub fn angular_velocity(&self) -> [f64; 3] {
-        natural::angular_velocity(&self.q, &self.v)
+        rotate(&self.rotation, self.body_angular_velocity())
     }
-
-    /// Kinetic energy 1/2 v^T M v and the potential -f . q of the
-    /// constant forces.
+    /// Linear momentum `m v_G`.
+    pub fn linear_momentum(&self) -> [f64; 3] {
+        self.momentum
+    }
+    /// Angular momentum about the global origin, `r_G x p + R Pi`.
+    pub fn angular_momentum(&self) -> [f64; 3] {
+        add(
+            crate::vec3::cross(self.centre, self.momentum),
+            rotate(&self.rotation, self.body_momentum),
+        )
+    }
+    /// Kinetic energy `|p|^2 / 2m + 1/2 Pi . I_G^-1 Pi` and the potential
+    /// of the constant forces, `-sum_j F_j . x(xi_j)`.
     pub fn energies(&self) -> (f64, f64) {
-        let mv = times(&self.mass, &self.v);
-        let kinetic = 0.5 * (0..12).map(|i| self.v[i] * mv[i]).sum::<f64>();
-        let potential = -(0..12).map(|i| self.force[i] * self.q[i]).sum::<f64>();
+        let p = self.momentum;
+        let kinetic = 0.5 * crate::vec3::dot(p, p) / self.inertia.mass
+            + 0.5 * crate::vec3::dot(self.body_momentum, self.body_angular_velocity());
+        let potential = -self
+            .forces
+            .forces
+            .iter()
+            .map(|(f, xi)| crate::vec3::dot(*f, self.point(*xi)))
+            .sum::<f64>();
         (kinetic, potential)
     }
 
-    /// Linear momentum `sum_l Q_0l v_l` (m times the centre's velocity).
-    pub fn linear_momentum(&self) -> [f64; 3] {
-        let mut p = [0.0; 3];
-        for l in 0..4 {
-            p = add(p, scale(self.mass[0][l], column(&self.v, l)));
-        }
-        p
-    }
-
-    /// Angular momentum about the global origin,
-    /// `sum_kl Q_kl q_k x v_l` (the integral of x x x_dot dm over (B1)).
-    pub fn angular_momentum(&self) -> [f64; 3] {
-        let mut h = [0.0; 3];
-        for k in 0..4 {
-            for l in 0..4 {
-                let c = cross(column(&self.q, k), column(&self.v, l));
-                h = add(h, scale(self.mass[k][l], c));
-            }
-        }
-        h
-    }
-
-    /// dA/dy_m of (B4) for the slab's values y = [q_a, w_a, q_b, w_b].
-    fn action_gradient(&self, m: usize, y: &[Natural; 4]) -> Natural {
+    /// The translational gradient dA/dy_m (M31) for y = [r_a, w_a, r_b, w_b].
+    fn translation_gradient(&self, m: usize, y: &[[f64; 3]; 4]) -> [f64; 3] {
         let c = &self.slab.kinetic;
-        let mut mixed = [0.0; 12];
-        for n in 0..4 {
-            for i in 0..12 {
-                mixed[i] += c[m][n] * y[n][i];
-            }
-        }
-        let mut g = times(&self.mass, &mixed);
-        for i in 0..12 {
-            g[i] += self.slab.load[m] * self.force[i];
-        }
-        g
+        let total = self.forces.total();
+        std::array::from_fn(|i| {
+            self.inertia.mass * (0..4).map(|n| c[m][n] * y[n][i]).sum::<f64>()
+                + self.slab.load[m] * total[i]
+        })
     }
 
-    /// The rows (B6) at the unknowns x = [w_a, q_b, w_b, lambda].
-    pub fn residual(&self, x: &[f64; N]) -> [f64; N] {
-        let y = self.slab_values(x);
-        let ga = orthonormality::jacobian(&self.q);
+    /// The rotational action (B5) on jets over [theta_a, u_a, theta_b, u_b]
+    /// (theta_a = 0).
+    fn rotational_action(&self, x: &[f64; N]) -> Jet<NJ> {
+        let var = |start: usize, value: [f64; 3]| -> JetVec<NJ> {
+            std::array::from_fn(|i| Jet::variable(value[i], start + i))
+        };
+        let slots = [
+            var(0, [0.0; 3]),
+            var(3, [x[9], x[10], x[11]]),
+            var(6, [x[12], x[13], x[14]]),
+            var(9, [x[15], x[16], x[17]]),
+        ];
+        // The forces in the start's body axes, at their points from G.
+        let loads: Vec<([f64; 3], [f64; 3])> = self
+            .forces
+            .forces
+            .iter()
+            .map(|(f, xi)| {
+                (
+                    rotate_back(&self.rotation, *f),
+                    sub(*xi, self.inertia.centre_of_mass),
+                )
+            })
+            .collect();
+        let i_g = &self.inertia.inertia_at_centre;
+        let mut action = Jet::constant(0.0);
+        for point in &self.slab.points {
+            let mut theta: JetVec<NJ> = [Jet::constant(0.0); 3];
+            let mut theta_dot: JetVec<NJ> = [Jet::constant(0.0); 3];
+            for m in 0..4 {
+                for i in 0..3 {
+                    theta[i] = theta[i] + slots[m][i].scale(point.shape.t[m]);
+                    theta_dot[i] = theta_dot[i] + slots[m][i].scale(point.shape.t_dot[m]);
+                }
+            }
+            let omega = body_rate(&theta, &theta_dot);
+            let i_omega: JetVec<NJ> = std::array::from_fn(|r| {
+                omega[0].scale(i_g[r][0]) + omega[1].scale(i_g[r][1]) + omega[2].scale(i_g[r][2])
+            });
+            let mut density = dot(&omega, &i_omega).scale(0.5);
+            if !loads.is_empty() {
+                let s = dot(&theta, &theta);
+                let (f0, d0, dd0) = series(0, s.v);
+                let (f1, d1, dd1) = series(1, s.v);
+                let (f0, f1) = (s.compose(f0, d0, dd0), s.compose(f1, d1, dd1));
+                for (f, xi) in &loads {
+                    // F . exp([theta]) xi' (B10), F and xi' in the start's axes.
+                    let v: JetVec<NJ> = xi.map(Jet::constant);
+                    let t_x_v = cross(&theta, &v);
+                    let t_x_t_x_v = cross(&theta, &t_x_v);
+                    let turned: JetVec<NJ> =
+                        std::array::from_fn(|i| v[i] + f0 * t_x_v[i] + f1 * t_x_t_x_v[i]);
+                    density = density + dot(&f.map(Jet::constant), &turned);
+                }
+            }
+            action = action + density.scale(point.w_dt);
+        }
+        action
+    }
+
+    /// The centre's slots [r_a, w_a, r_b, w_b] measured from r_a: the
+    /// rows are invariant under translation (T1 + T3 = 1), and without r_a
+    /// in them m C r, of size m |r| / dt, does not swamp the momentum's
+    /// digits. x holds r_b - r_a.
+    fn translation_slots(&self, x: &[f64; N]) -> [[f64; 3]; 4] {
+        let part = |a: usize| -> [f64; 3] { [x[a], x[a + 1], x[a + 2]] };
+        [[0.0; 3], part(0), part(3), part(6)]
+    }
+
+    /// The rows (B6) at x = [w_a, r_b - r_a, w_b, u_a, theta_b, u_b] and their
+    /// exact Jacobian (row-major N x N).
+    pub fn rows_and_jacobian(&self, x: &[f64; N]) -> ([f64; N], Vec<f64>) {
         let mut r = [0.0; N];
-        let row_a = self.action_gradient(0, &y);
-        for i in 0..12 {
-            let constraint: f64 = (0..6).map(|j| ga[j][i] * x[36 + j]).sum();
-            r[i] = row_a[i] + self.p[i] + constraint;
-        }
-        r[12..24].copy_from_slice(&self.action_gradient(1, &y));
-        r[24..36].copy_from_slice(&self.action_gradient(3, &y));
-        r[36..42].copy_from_slice(&orthonormality::conditions(&y[2]));
-        r
-    }
-
-    /// The exact Jacobian of (B6), row-major 42 x 42.
-    pub fn jacobian(&self, x: &[f64; N]) -> Vec<f64> {
-        let y = self.slab_values(x);
-        let c = &self.slab.kinetic;
         let mut jac = vec![0.0; N * N];
-        // Kinetic blocks C_mn M for rows m = q_a, w_a, w_b and unknowns
-        // n = w_a, q_b, w_b.
-        for (row_block, m) in [(0usize, 0usize), (1, 1), (2, 3)] {
-            for (col_block, n) in [(0usize, 1usize), (1, 2), (2, 3)] {
-                for k in 0..4 {
-                    for l in 0..4 {
-                        let v = c[m][n] * self.mass[k][l];
-                        for i in 0..3 {
-                            jac[(12 * row_block + 3 * k + i) * N + 12 * col_block + 3 * l + i] = v;
-                        }
-                    }
+        let y = self.translation_slots(x);
+        let c = &self.slab.kinetic;
+        for (block, m) in [(0usize, 0usize), (1, 1), (2, 3)] {
+            let g = self.translation_gradient(m, &y);
+            for i in 0..3 {
+                r[3 * block + i] = g[i] + if m == 0 { self.momentum[i] } else { 0.0 };
+                for (col, n) in [(0usize, 1usize), (1, 2), (2, 3)] {
+                    jac[(3 * block + i) * N + 3 * col + i] = self.inertia.mass * c[m][n];
                 }
             }
         }
-        let ga = orthonormality::jacobian(&self.q);
-        let gb = orthonormality::jacobian(&y[2]);
-        for j in 0..6 {
-            for i in 0..12 {
-                jac[i * N + 36 + j] = ga[j][i];
-                jac[(36 + j) * N + 12 + i] = gb[j][i];
+        let a = self.rotational_action(x);
+        // Rows: theta_a (jet 0..3), u_a (3..6), u_b (9..12); unknowns u_a,
+        // theta_b, u_b (jet 3..12).
+        for (block, start) in [(0usize, 0usize), (1, 3), (2, 9)] {
+            for i in 0..3 {
+                let row = 9 + 3 * block + i;
+                r[row] = a.g[start + i]
+                    + if start == 0 {
+                        self.body_momentum[i]
+                    } else {
+                        0.0
+                    };
+                for k in 0..9 {
+                    jac[row * N + 9 + k] = a.h[start + i][3 + k];
+                }
             }
         }
-        jac
-    }
-
-    fn slab_values(&self, x: &[f64; N]) -> [Natural; 4] {
-        let part = |a: usize| -> Natural { std::array::from_fn(|i| x[a + i]) };
-        [self.q, part(0), part(12), part(24)]
+        (r, jac)
     }
 
     /// One step of (B6)-(B7).
     pub fn step(&mut self) -> Result<(), SolverError> {
         let dt = self.slab.dt;
+        let v_g = scale(1.0 / self.inertia.mass, self.momentum);
+        let omega = self.body_angular_velocity();
         let mut x = [0.0; N];
-        for i in 0..12 {
-            x[i] = self.v[i];
-            x[12 + i] = self.q[i] + dt * self.v[i];
-            x[24 + i] = self.v[i];
+        for i in 0..3 {
+            x[i] = v_g[i];
+            x[3 + i] = dt * v_g[i];
+            x[6 + i] = v_g[i];
+            x[9 + i] = omega[i];
+            x[12 + i] = dt * omega[i];
+            x[15 + i] = omega[i];
         }
+        let scale_r = 1.0 + self.centre.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let mut pivots = [0usize; N];
-        let scale_q = 1.0 + self.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let mut converged = false;
-        let mut last_change = f64::INFINITY;
+        let mut change = f64::INFINITY;
         for k in 1..=MAX_ITERATIONS {
-            let mut delta = self.residual(&x);
+            let (mut delta, mut jac) = self.rows_and_jacobian(&x);
             if delta.iter().any(|v| !v.is_finite()) {
                 return Err(self.failure(FailureKind::NonFinite, k, f64::NAN));
             }
-            let mut jac = self.jacobian(&x);
             if dense_lu(&mut jac, N, &mut pivots).is_err() {
                 return Err(self.failure(FailureKind::SingularJacobian, k, f64::NAN));
             }
             dense_solve(&jac, N, &pivots, &mut delta);
-            // The motion's change: positions and dt times the slopes.
-            let mut change = 0.0f64;
-            for i in 0..36 {
+            // Changes as lengths and angles: slopes times dt.
+            change = 0.0;
+            for i in 0..N {
                 x[i] -= delta[i];
-                let size = if (12..24).contains(&i) {
-                    delta[i]
-                } else {
-                    dt * delta[i]
-                };
-                change = change.max(size.abs());
+                let is_slope = !(3..6).contains(&i) && !(12..15).contains(&i);
+                let size = if is_slope { dt * delta[i] } else { delta[i] };
+                let unit = if i < 9 { scale_r } else { 1.0 };
+                change = change.max(size.abs() / unit);
             }
-            for j in 36..N {
-                x[j] -= delta[j];
-            }
-            last_change = change;
             self.last_iterations = k;
-            if change <= 1e-14 * scale_q {
+            if change <= 1e-14 {
                 converged = true;
                 break;
             }
         }
         if !converged {
-            return Err(self.failure(FailureKind::NotConverged, MAX_ITERATIONS, last_change));
+            return Err(self.failure(FailureKind::NotConverged, MAX_ITERATIONS, change));
         }
-        let y = self.slab_values(&x);
-        let end = self.action_gradient(2, &y);
-        self.p = self.project_momentum(&y[2], &end);
-        self.v = times(&self.mass_inverse, &self.p);
-        self.q = y[2];
+        let y = self.translation_slots(&x);
+        self.momentum = self.translation_gradient(2, &y);
+        self.centre = add(self.centre, y[2]);
+        let a = self.rotational_action(&x);
+        let theta_b = [x[12], x[13], x[14]];
+        let end = [a.g[6], a.g[7], a.g[8]];
+        // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
+        let jr = right_jacobian(theta_b);
+        let jr_t: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| jr[j][i]));
+        let inverse =
+            invert3(&jr_t).ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, 0.0))?;
+        self.body_momentum = mat_vec(&inverse, end);
+        self.rotation =
+            pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(theta_b)));
         self.time += dt;
         Ok(())
-    }
-
-    /// (B7): p_b = p~ + G^T mu with G M^-1 p_b = 0.
-    fn project_momentum(&self, q_b: &Natural, p: &Natural) -> Natural {
-        let g = orthonormality::jacobian(q_b);
-        let m_inv_p = times(&self.mass_inverse, p);
-        let m_inv_gt: Vec<Natural> = (0..6).map(|j| times(&self.mass_inverse, &g[j])).collect();
-        let mut s = [0.0; 36];
-        let mut mu = [0.0; 6];
-        for a in 0..6 {
-            mu[a] = -(0..12).map(|i| g[a][i] * m_inv_p[i]).sum::<f64>();
-            for b in 0..6 {
-                s[6 * a + b] = (0..12).map(|i| g[a][i] * m_inv_gt[b][i]).sum();
-            }
-        }
-        let mut pivots = [0usize; 6];
-        if dense_lu(&mut s, 6, &mut pivots).is_err() {
-            return *p;
-        }
-        dense_solve(&s, 6, &pivots, &mut mu);
-        let mut out = *p;
-        for j in 0..6 {
-            for i in 0..12 {
-                out[i] += g[j][i] * mu[j];
-            }
-        }
-        out
     }
 
     fn failure(&self, kind: FailureKind, iterations: usize, residual: f64) -> SolverError {
@@ -368,20 +378,23 @@ impl FreeBody {
     }
 }
 
-/// The inverse of a 4 x 4 matrix by Gauss-Jordan with partial pivoting
-/// (None if singular).
-fn invert4(a: &[[f64; 4]; 4]) -> Option<[[f64; 4]; 4]> {
-    let mut lu: Vec<f64> = a.iter().flatten().copied().collect();
-    let mut pivots = [0usize; 4];
-    dense_lu(&mut lu, 4, &mut pivots).ok()?;
-    let mut inv = [[0.0; 4]; 4];
-    for c in 0..4 {
-        let mut e = [0.0; 4];
-        e[c] = 1.0;
-        dense_solve(&lu, 4, &pivots, &mut e);
-        for r in 0..4 {
-            inv[r][c] = e[r];
-        }
+fn mat_vec(a: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    rotate(a, v)
+}
+
+/// The inverse of a 3 x 3 matrix by its adjugate (None if singular).
+fn invert3(a: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
+    let cof = |r: usize, c: usize| {
+        let (r1, r2) = ((r + 1) % 3, (r + 2) % 3);
+        let (c1, c2) = ((c + 1) % 3, (c + 2) % 3);
+        a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]
+    };
+    let det: f64 = (0..3).map(|c| a[0][c] * cof(0, c)).sum();
+    let size = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(det.abs() > 1e-300 && det.abs() > 1e-14 * size.powi(3)) {
+        return None;
     }
-    Some(inv)
+    Some(std::array::from_fn(|i| {
+        std::array::from_fn(|j| cof(j, i) / det)
+    }))
 }

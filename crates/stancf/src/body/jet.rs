@@ -1,0 +1,144 @@
+//! Numbers that carry their first and second derivatives with respect to
+//! N variables (forward-mode automatic differentiation to second order):
+//! a body's rotational action is a composition of products and smooth
+//! functions of |theta|^2 (docs/method.md §15.4), and evaluating it on
+//! jets gives its gradient and its exact Hessian, to round-off, in one
+//! pass.
+
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A value with its gradient and Hessian with respect to N variables.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Jet<const N: usize> {
+    pub v: f64,
+    pub g: [f64; N],
+    pub h: [[f64; N]; N],
+}
+
+impl<const N: usize> Jet<N> {
+    /// A constant.
+    pub fn constant(v: f64) -> Self {
+        Jet {
+            v,
+            g: [0.0; N],
+            h: [[0.0; N]; N],
+        }
+    }
+
+    /// Variable number `i` at value `v`.
+    pub fn variable(v: f64, i: usize) -> Self {
+        let mut j = Self::constant(v);
+        j.g[i] = 1.0;
+        j
+    }
+
+    /// f(self) from f and its first two derivatives at self's value
+    /// (the chain rule to second order).
+    pub fn compose(self, f: f64, df: f64, d2f: f64) -> Self {
+        let mut out = Self::constant(f);
+        for i in 0..N {
+            out.g[i] = df * self.g[i];
+            for k in 0..N {
+                out.h[i][k] = df * self.h[i][k] + d2f * self.g[i] * self.g[k];
+            }
+        }
+        out
+    }
+
+    pub fn scale(self, s: f64) -> Self {
+        let mut out = self;
+        out.v *= s;
+        for i in 0..N {
+            out.g[i] *= s;
+            for k in 0..N {
+                out.h[i][k] *= s;
+            }
+        }
+        out
+    }
+}
+
+impl<const N: usize> Add for Jet<N> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        let mut out = self;
+        out.v += o.v;
+        for i in 0..N {
+            out.g[i] += o.g[i];
+            for k in 0..N {
+                out.h[i][k] += o.h[i][k];
+            }
+        }
+        out
+    }
+}
+
+impl<const N: usize> Sub for Jet<N> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        self + (-o)
+    }
+}
+
+impl<const N: usize> Neg for Jet<N> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        self.scale(-1.0)
+    }
+}
+
+/// The product rule to second order: (ab)'' = a'' b + a' b'^T + b' a'^T + a b''.
+impl<const N: usize> Mul for Jet<N> {
+    type Output = Self;
+    fn mul(self, o: Self) -> Self {
+        let mut out = Self::constant(self.v * o.v);
+        for i in 0..N {
+            out.g[i] = self.g[i] * o.v + self.v * o.g[i];
+            for k in 0..N {
+                out.h[i][k] = self.h[i][k] * o.v
+                    + self.g[i] * o.g[k]
+                    + o.g[i] * self.g[k]
+                    + self.v * o.h[i][k];
+            }
+        }
+        out
+    }
+}
+
+/// A 3-vector of jets.
+pub type JetVec<const N: usize> = [Jet<N>; 3];
+
+pub fn dot<const N: usize>(a: &JetVec<N>, b: &JetVec<N>) -> Jet<N> {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub fn cross<const N: usize>(a: &JetVec<N>, b: &JetVec<N>) -> JetVec<N> {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// f(x, y) = x^2 y + sin(x y) against its derivatives by hand.
+    #[test]
+    fn jets_carry_exact_second_derivatives() {
+        let (x0, y0) = (0.7, -1.3);
+        let x = Jet::<2>::variable(x0, 0);
+        let y = Jet::<2>::variable(y0, 1);
+        let xy = x * y;
+        let f = x * x * y + xy.compose(xy.v.sin(), xy.v.cos(), -xy.v.sin());
+        let (s, c) = ((x0 * y0).sin(), (x0 * y0).cos());
+        assert!((f.v - (x0 * x0 * y0 + s)).abs() < 1e-15);
+        assert!((f.g[0] - (2.0 * x0 * y0 + y0 * c)).abs() < 1e-14);
+        assert!((f.g[1] - (x0 * x0 + x0 * c)).abs() < 1e-14);
+        assert!((f.h[0][0] - (2.0 * y0 - y0 * y0 * s)).abs() < 1e-14);
+        assert!((f.h[0][1] - (2.0 * x0 + c - x0 * y0 * s)).abs() < 1e-14);
+        assert!((f.h[1][1] - (-x0 * x0 * s)).abs() < 1e-14);
+        assert_eq!(f.h[0][1], f.h[1][0]);
+    }
+}

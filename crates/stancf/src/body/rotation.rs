@@ -1,0 +1,167 @@
+//! Rotations over a step as a rotation vector from the step's start
+//! (docs/method.md §15.4): R(t) = R_a exp([theta(t)]), theta(0) = 0, and
+//! the angular velocity in body axes
+//!
+//! ```text
+//!   Omega = J_r(theta) theta_dot,
+//!   J_r(theta) = I - f_1(s) [theta] + f_2(s) [theta]^2,   s = |theta|^2           (B9)
+//!   f_0(s) = sin x / x,  f_1(s) = (1 - cos x) / x^2,  f_2(s) = (x - sin x) / x^3,  x = sqrt(s)
+//!   exp([theta]) = I + f_0(s) [theta] + f_1(s) [theta]^2                          (B10)
+//! ```
+//!
+//! The f_k are entire functions of s = |theta|^2,
+//! `f_k(s) = sum_j (-1)^j s^j / (2 j + k + 1)!`, so they and their
+//! derivatives are evaluated by their series, smooth through theta = 0
+//! (where sqrt is not), for every rotation a step may take (|theta| <= pi).
+
+use super::jet::{cross, Jet, JetVec};
+
+/// Terms of the series: at |theta| = pi the last one is below 1e-30 of
+/// the first.
+const TERMS: usize = 24;
+
+/// f_k(s) and its first two derivatives in s (B9)-(B10): the sums of
+/// `c_j s^j`, `c_j j s^(j-1)` and `c_j j (j-1) s^(j-2)`,
+/// `c_j = (-1)^j / (2 j + k + 1)!`.
+pub fn series(k: usize, s: f64) -> (f64, f64, f64) {
+    let (mut f, mut df, mut d2f) = (0.0, 0.0, 0.0);
+    let mut c = 1.0 / (1..=k + 1).map(|i| i as f64).product::<f64>();
+    for j in 0..TERMS {
+        let jf = j as f64;
+        f += c * s.powi(j as i32);
+        if j >= 1 {
+            df += c * jf * s.powi(j as i32 - 1);
+        }
+        if j >= 2 {
+            d2f += c * jf * (jf - 1.0) * s.powi(j as i32 - 2);
+        }
+        c /= -(((2 * j + k + 2) * (2 * j + k + 3)) as f64);
+    }
+    (f, df, d2f)
+}
+
+/// f_k(s) on a jet.
+fn series_jet<const N: usize>(k: usize, s: Jet<N>) -> Jet<N> {
+    let (f, df, d2f) = series(k, s.v);
+    s.compose(f, df, d2f)
+}
+
+/// (B9): the angular velocity in body axes of R_a exp([theta]) moving
+/// at theta_dot, on jets.
+pub fn body_rate<const N: usize>(theta: &JetVec<N>, theta_dot: &JetVec<N>) -> JetVec<N> {
+    let s = super::jet::dot(theta, theta);
+    let f1 = series_jet(1, s);
+    let f2 = series_jet(2, s);
+    let t_x_td = cross(theta, theta_dot);
+    let t_x_t_x_td = cross(theta, &t_x_td);
+    std::array::from_fn(|i| theta_dot[i] - f1 * t_x_td[i] + f2 * t_x_t_x_td[i])
+}
+
+/// [v], the cross-product matrix.
+fn hat(v: [f64; 3]) -> [[f64; 3]; 3] {
+    [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]]
+}
+
+fn combine(a: f64, b: f64, theta: [f64; 3]) -> [[f64; 3]; 3] {
+    let h = hat(theta);
+    let h2 = crate::vec3::mat3_mul(&h, &h);
+    std::array::from_fn(|r| {
+        std::array::from_fn(|c| if r == c { 1.0 } else { 0.0 } + a * h[r][c] + b * h2[r][c])
+    })
+}
+
+/// (B10): exp([theta]).
+pub fn exp_map(theta: [f64; 3]) -> [[f64; 3]; 3] {
+    let s = crate::vec3::dot(theta, theta);
+    combine(series(0, s).0, series(1, s).0, theta)
+}
+
+/// J_r(theta) of (B9).
+pub fn right_jacobian(theta: [f64; 3]) -> [[f64; 3]; 3] {
+    let s = crate::vec3::dot(theta, theta);
+    combine(-series(1, s).0, series(2, s).0, theta)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_series_are_the_closed_forms_and_their_derivatives() {
+        for &x in &[1e-3, 0.3, 1.0, 2.5, std::f64::consts::PI] {
+            let s: f64 = x * x;
+            let closed = [
+                x.sin() / x,
+                (1.0 - x.cos()) / (x * x),
+                (x - x.sin()) / (x * x * x),
+            ];
+            for k in 0..3 {
+                let (f, df, d2f) = series(k, s);
+                let tol = if x < 0.01 { 1e-9 } else { 1e-14 };
+                assert!(
+                    (f - closed[k]).abs() < tol,
+                    "f_{k}({x}) {f} vs {}",
+                    closed[k]
+                );
+                let h = 1e-4 * s.max(1e-2);
+                let (fu, dfu, _) = series(k, s + h);
+                let (fd, dfd, _) = series(k, s - h);
+                assert!((df - (fu - fd) / (2.0 * h)).abs() < 1e-8, "f_{k}' at {x}");
+                assert!(
+                    (d2f - (dfu - dfd) / (2.0 * h)).abs() < 1e-7,
+                    "f_{k}'' at {x}"
+                );
+            }
+        }
+    }
+
+    /// (B9) is R^T R_dot of (B10) along a path theta(t), by central
+    /// differences, and exp is a rotation.
+    #[test]
+    fn the_body_rate_is_the_derivative_of_the_exponential() {
+        let path = |t: f64| [0.9 * t, -0.4 + 0.7 * t * t, 1.3 * t.sin()];
+        let t = 0.8;
+        let h = 1e-6;
+        let (up, down) = (exp_map(path(t + h)), exp_map(path(t - h)));
+        let r = exp_map(path(t));
+        let rt_rdot: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                (0..3)
+                    .map(|k| r[k][i] * (up[k][j] - down[k][j]) / (2.0 * h))
+                    .sum()
+            })
+        });
+        let omega_fd = [rt_rdot[2][1], rt_rdot[0][2], rt_rdot[1][0]];
+        let theta = path(t);
+        let theta_dot = [
+            (path(t + h)[0] - path(t - h)[0]) / (2.0 * h),
+            1.4 * t,
+            1.3 * t.cos(),
+        ];
+        let jr = right_jacobian(theta);
+        let omega: [f64; 3] =
+            std::array::from_fn(|i| (0..3).map(|k| jr[i][k] * theta_dot[k]).sum());
+        for i in 0..3 {
+            assert!(
+                (omega[i] - omega_fd[i]).abs() < 1e-8,
+                "{omega:?} vs {omega_fd:?}"
+            );
+        }
+        let jets: JetVec<1> = theta.map(Jet::constant);
+        let jet_rates: JetVec<1> = theta_dot.map(Jet::constant);
+        let rate = body_rate(&jets, &jet_rates);
+        for i in 0..3 {
+            assert!((rate[i].v - omega[i]).abs() < 1e-14);
+        }
+        let rrt = crate::vec3::mat3_mul(
+            &r,
+            &std::array::from_fn(|i| std::array::from_fn(|j| r[j][i])),
+        );
+        for i in 0..3 {
+            for j in 0..3 {
+                let e = if i == j { 1.0 } else { 0.0 };
+                assert!((rrt[i][j] - e).abs() < 1e-15);
+            }
+        }
+    }
+}
