@@ -23,6 +23,14 @@
 //!
 //! (Pi the angular momentum in body axes: Hamilton's law's end terms are
 //! Pi . eta with eta the virtual rotation in body axes, eta = J_r dtheta).
+//! The P2 step (eq. 22) keeps the position variations and ties the end
+//! slopes to the carried rates:
+//!
+//! ```text
+//!   dA/dr_a + p_a = 0,        dA/dr_b - m v_b = 0
+//!   dA/dtheta_a + Pi_a = 0,   dA/dtheta_b - J_r(theta_b)^T I_G J_r(theta_b) u_b = 0     (B11)
+//!   u_a = Omega_a,   Omega_b = J_r(theta_b) u_b,   unknowns r_b, v_b, theta_b, u_b
+//! ```
 //! The translational rows are linear; the rotational ones are evaluated
 //! on jets ([`super::jet`]), which give their exact Jacobian. The linear
 //! momentum is a discrete momentum map (the cubic's variations hold the
@@ -38,6 +46,7 @@ use crate::bordered::{dense_lu, dense_solve};
 use crate::element::TimeSlab;
 use crate::error::{FailureKind, ModelError, SolverError};
 use crate::quadrature::GaussRule;
+use crate::scheme::TimeScheme;
 use crate::vec3::{add, scale, sub};
 
 /// Constant forces on a body, each at a body-fixed point (body axes, from
@@ -89,6 +98,7 @@ pub struct FreeBody {
     rotation: [[f64; 3]; 3],
     /// Pi, the angular momentum in body axes.
     body_momentum: [f64; 3],
+    scheme: TimeScheme,
     last_iterations: usize,
 }
 
@@ -128,8 +138,15 @@ impl FreeBody {
             momentum: scale(inertia.mass, v_g),
             rotation: *rotation,
             body_momentum: mat_vec(&inertia.inertia_at_centre, omega_body),
+            scheme: TimeScheme::Galerkin,
             last_iterations: 0,
         })
+    }
+
+    /// The same body stepped by `scheme` (Galerkin by default).
+    pub fn with_scheme(mut self, scheme: TimeScheme) -> Self {
+        self.scheme = scheme;
+        self
     }
 
     pub fn time(&self) -> f64 {
@@ -199,16 +216,13 @@ impl FreeBody {
     }
 
     /// The rotational action (B5) on jets over [theta_a, u_a, theta_b, u_b]
-    /// (theta_a = 0).
-    fn rotational_action(&self, x: &[f64; N]) -> Jet<NJ> {
-        let var = |start: usize, value: [f64; 3]| -> JetVec<NJ> {
-            std::array::from_fn(|i| Jet::variable(value[i], start + i))
-        };
+    /// (theta_a = 0) at the slopes u_a, u_b and the end's theta_b.
+    fn rotational_action(&self, u_a: [f64; 3], theta_b: [f64; 3], u_b: [f64; 3]) -> Jet<NJ> {
         let slots = [
-            var(0, [0.0; 3]),
-            var(3, [x[9], x[10], x[11]]),
-            var(6, [x[12], x[13], x[14]]),
-            var(9, [x[15], x[16], x[17]]),
+            variables(0, [0.0; 3]),
+            variables(3, u_a),
+            variables(6, theta_b),
+            variables(9, u_b),
         ];
         // The forces in the start's body axes, at their points from G.
         let loads: Vec<([f64; 3], [f64; 3])> = self
@@ -258,21 +272,12 @@ impl FreeBody {
         action
     }
 
-    /// The centre's slots [r_a, w_a, r_b, w_b] measured from r_a: the
-    /// rows are invariant under translation (T1 + T3 = 1), and without r_a
-    /// in them m C r, of size m |r| / dt, does not swamp the momentum's
-    /// digits. x holds r_b - r_a.
-    fn translation_slots(&self, x: &[f64; N]) -> [[f64; 3]; 4] {
-        let part = |a: usize| -> [f64; 3] { [x[a], x[a + 1], x[a + 2]] };
-        [[0.0; 3], part(0), part(3), part(6)]
-    }
-
-    /// The rows (B6) at x = [w_a, r_b - r_a, w_b, u_a, theta_b, u_b] and their
-    /// exact Jacobian (row-major N x N).
-    pub fn rows_and_jacobian(&self, x: &[f64; N]) -> ([f64; N], Vec<f64>) {
-        let mut r = [0.0; N];
+    /// The Galerkin rows (B6) at x = [w_a, r_b - r_a, w_b, u_a, theta_b,
+    /// u_b] and their exact Jacobian (row-major, 18 x 18).
+    pub fn galerkin_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        let mut r = vec![0.0; N];
         let mut jac = vec![0.0; N * N];
-        let y = self.translation_slots(x);
+        let y = [[0.0; 3], part(x, 0), part(x, 3), part(x, 6)];
         let c = &self.slab.kinetic;
         for (block, m) in [(0usize, 0usize), (1, 1), (2, 3)] {
             let g = self.translation_gradient(m, &y);
@@ -283,18 +288,18 @@ impl FreeBody {
                 }
             }
         }
-        let a = self.rotational_action(x);
+        let a = self.rotational_action(part(x, 9), part(x, 12), part(x, 15));
         // Rows: theta_a (jet 0..3), u_a (3..6), u_b (9..12); unknowns u_a,
         // theta_b, u_b (jet 3..12).
         for (block, start) in [(0usize, 0usize), (1, 3), (2, 9)] {
             for i in 0..3 {
                 let row = 9 + 3 * block + i;
-                r[row] = a.g[start + i]
-                    + if start == 0 {
-                        self.body_momentum[i]
-                    } else {
-                        0.0
-                    };
+                let momentum = if start == 0 {
+                    self.body_momentum[i]
+                } else {
+                    0.0
+                };
+                r[row] = a.g[start + i] + momentum;
                 for k in 0..9 {
                     jac[row * N + 9 + k] = a.h[start + i][3 + k];
                 }
@@ -303,67 +308,145 @@ impl FreeBody {
         (r, jac)
     }
 
-    /// One step of (B6)-(B7).
+    /// The P2 rows (B11) at x = [r_b - r_a, v_b, theta_b, u_b] and their
+    /// exact Jacobian (row-major, 12 x 12): the end slopes are the carried
+    /// rates (u_a = Omega_a, J_r(0) = I; u_b = J_r(theta_b)^-1 Omega_b).
+    pub fn p2_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        const M: usize = 12;
+        let mut r = vec![0.0; M];
+        let mut jac = vec![0.0; M * M];
+        let mass = self.inertia.mass;
+        let v_a = scale(1.0 / mass, self.momentum);
+        let y = [[0.0; 3], v_a, part(x, 0), part(x, 3)];
+        let c = &self.slab.kinetic;
+        for (block, m) in [(0usize, 0usize), (1, 2)] {
+            let g = self.translation_gradient(m, &y);
+            for i in 0..3 {
+                let row = 3 * block + i;
+                r[row] = g[i]
+                    + if m == 0 {
+                        self.momentum[i]
+                    } else {
+                        -mass * x[3 + i]
+                    };
+                jac[row * M + i] = mass * c[m][2];
+                jac[row * M + 3 + i] = mass * c[m][3] - if m == 2 { mass } else { 0.0 };
+            }
+        }
+        let omega_a = self.body_angular_velocity();
+        let (theta_b, u_b) = (part(x, 6), part(x, 9));
+        let a = self.rotational_action(omega_a, theta_b, u_b);
+        // J_r(theta_b)^T I_G J_r(theta_b) u_b = J_r^T Pi_b, on jets (its
+        // first derivatives are the row's): J_r^T v is (B9) at -theta.
+        let (theta, rate) = (variables(6, theta_b), variables(9, u_b));
+        let omega_b = body_rate(&theta, &rate);
+        let pi_b: JetVec<NJ> = std::array::from_fn(|row| {
+            let i_g = &self.inertia.inertia_at_centre[row];
+            omega_b[0].scale(i_g[0]) + omega_b[1].scale(i_g[1]) + omega_b[2].scale(i_g[2])
+        });
+        let end = body_rate(&theta.map(|t| -t), &pi_b);
+        for i in 0..3 {
+            r[6 + i] = a.g[i] + self.body_momentum[i];
+            r[9 + i] = a.g[6 + i] - end[i].v;
+            for k in 0..6 {
+                jac[(6 + i) * M + 6 + k] = a.h[i][6 + k];
+                jac[(9 + i) * M + 6 + k] = a.h[6 + i][6 + k] - end[i].g[6 + k];
+            }
+        }
+        (r, jac)
+    }
+
+    /// One step of (B6)-(B7) (Galerkin) or (B11) (P2).
     pub fn step(&mut self) -> Result<(), SolverError> {
         let dt = self.slab.dt;
         let v_g = scale(1.0 / self.inertia.mass, self.momentum);
         let omega = self.body_angular_velocity();
-        let mut x = [0.0; N];
-        for i in 0..3 {
-            x[i] = v_g[i];
-            x[3 + i] = dt * v_g[i];
-            x[6 + i] = v_g[i];
-            x[9 + i] = omega[i];
-            x[12 + i] = dt * omega[i];
-            x[15 + i] = omega[i];
-        }
+        let guess = |position: bool, v: [f64; 3]| if position { scale(dt, v) } else { v };
+        // The unknowns' order and which are positions (lengths, angles)
+        // rather than rates.
+        let layout: &[(bool, bool)] = match self.scheme {
+            TimeScheme::Galerkin => &[
+                (false, false),
+                (true, false),
+                (false, false),
+                (false, true),
+                (true, true),
+                (false, true),
+            ],
+            TimeScheme::P2 => &[(true, false), (false, false), (true, true), (false, true)],
+        };
+        let mut x: Vec<f64> = layout
+            .iter()
+            .flat_map(|&(position, turning)| guess(position, if turning { omega } else { v_g }))
+            .collect();
+        self.newton(&mut x, layout)?;
+        let rotated = match self.scheme {
+            TimeScheme::Galerkin => {
+                let y = [[0.0; 3], part(&x, 0), part(&x, 3), part(&x, 6)];
+                self.momentum = self.translation_gradient(2, &y);
+                self.centre = add(self.centre, y[2]);
+                let a = self.rotational_action(part(&x, 9), part(&x, 12), part(&x, 15));
+                let theta_b = part(&x, 12);
+                // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
+                let jr = right_jacobian(theta_b);
+                let jr_t: [[f64; 3]; 3] =
+                    std::array::from_fn(|i| std::array::from_fn(|j| jr[j][i]));
+                let inverse = invert3(&jr_t)
+                    .ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, 0.0))?;
+                self.body_momentum = mat_vec(&inverse, [a.g[6], a.g[7], a.g[8]]);
+                theta_b
+            }
+            TimeScheme::P2 => {
+                self.momentum = scale(self.inertia.mass, part(&x, 3));
+                self.centre = add(self.centre, part(&x, 0));
+                let theta_b = part(&x, 6);
+                let omega_b = mat_vec(&right_jacobian(theta_b), part(&x, 9));
+                self.body_momentum = mat_vec(&self.inertia.inertia_at_centre, omega_b);
+                theta_b
+            }
+        };
+        self.rotation =
+            pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(rotated)));
+        self.time += dt;
+        Ok(())
+    }
+
+    /// Newton on the scheme's rows from x; `layout` says which blocks of
+    /// three are positions (else rates, whose change counts times dt) and
+    /// which are the rotation's (else the centre's, whose change counts
+    /// relative to the centre's size).
+    fn newton(&mut self, x: &mut [f64], layout: &[(bool, bool)]) -> Result<(), SolverError> {
+        let n = x.len();
+        let dt = self.slab.dt;
         let scale_r = 1.0 + self.centre.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let mut pivots = [0usize; N];
-        let mut converged = false;
+        let mut pivots = vec![0usize; n];
         let mut change = f64::INFINITY;
         for k in 1..=MAX_ITERATIONS {
-            let (mut delta, mut jac) = self.rows_and_jacobian(&x);
+            let (mut delta, mut jac) = match self.scheme {
+                TimeScheme::Galerkin => self.galerkin_rows_and_jacobian(x),
+                TimeScheme::P2 => self.p2_rows_and_jacobian(x),
+            };
             if delta.iter().any(|v| !v.is_finite()) {
                 return Err(self.failure(FailureKind::NonFinite, k, f64::NAN));
             }
-            if dense_lu(&mut jac, N, &mut pivots).is_err() {
+            if dense_lu(&mut jac, n, &mut pivots).is_err() {
                 return Err(self.failure(FailureKind::SingularJacobian, k, f64::NAN));
             }
-            dense_solve(&jac, N, &pivots, &mut delta);
-            // Changes as lengths and angles: slopes times dt.
+            dense_solve(&jac, n, &pivots, &mut delta);
             change = 0.0;
-            for i in 0..N {
+            for i in 0..n {
                 x[i] -= delta[i];
-                let is_slope = !(3..6).contains(&i) && !(12..15).contains(&i);
-                let size = if is_slope { dt * delta[i] } else { delta[i] };
-                let unit = if i < 9 { scale_r } else { 1.0 };
+                let (position, turning) = layout[i / 3];
+                let size = if position { delta[i] } else { dt * delta[i] };
+                let unit = if turning { 1.0 } else { scale_r };
                 change = change.max(size.abs() / unit);
             }
             self.last_iterations = k;
             if change <= 1e-14 {
-                converged = true;
-                break;
+                return Ok(());
             }
         }
-        if !converged {
-            return Err(self.failure(FailureKind::NotConverged, MAX_ITERATIONS, change));
-        }
-        let y = self.translation_slots(&x);
-        self.momentum = self.translation_gradient(2, &y);
-        self.centre = add(self.centre, y[2]);
-        let a = self.rotational_action(&x);
-        let theta_b = [x[12], x[13], x[14]];
-        let end = [a.g[6], a.g[7], a.g[8]];
-        // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
-        let jr = right_jacobian(theta_b);
-        let jr_t: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| jr[j][i]));
-        let inverse =
-            invert3(&jr_t).ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, 0.0))?;
-        self.body_momentum = mat_vec(&inverse, end);
-        self.rotation =
-            pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(theta_b)));
-        self.time += dt;
-        Ok(())
+        Err(self.failure(FailureKind::NotConverged, MAX_ITERATIONS, change))
     }
 
     fn failure(&self, kind: FailureKind, iterations: usize, residual: f64) -> SolverError {
@@ -376,6 +459,16 @@ impl FreeBody {
             detail: "free body step (B6)".into(),
         }
     }
+}
+
+/// Jet variables `start..start + 3` at `value`.
+fn variables(start: usize, value: [f64; 3]) -> JetVec<NJ> {
+    std::array::from_fn(|i| Jet::variable(value[i], start + i))
+}
+
+/// x[a..a + 3].
+fn part(x: &[f64], a: usize) -> [f64; 3] {
+    [x[a], x[a + 1], x[a + 2]]
 }
 
 fn mat_vec(a: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {

@@ -15,7 +15,7 @@
 //! | [`pose`] | points of a body (B1), MoorDyn's angles |
 //! | [`rotation`] | the exponential (B10) and the body rate (B9) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
-//! | [`free`] | a free body's Galerkin step (B5)-(B7) |
+//! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B11) |
 
 pub mod free;
 pub mod inertia;
