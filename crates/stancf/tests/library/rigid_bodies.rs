@@ -81,7 +81,7 @@ fn a_free_bodys_step_jacobian_is_the_derivative_of_its_rows() {
 /// rate is (I_3 - I_1)/I_1 w_3 = -1 rad/s) the rate in the body's axes
 /// follows Euler's closed form at the Galerkin step's sixth order
 /// (measured 6.0e-10, 1.2e-11, 2.0e-13 at dt 0.2, 0.1, 0.05 s: orders
-/// 5.71, 5.85; asserted above 5, the pre-asymptotic margin of a sixth-order
+/// 5.71, 5.8, the last near round-off; asserted above 5, the margin of a sixth-order
 /// method); the angular momentum about the origin and the energy are kept
 /// to the step's error (1.5e-10 and 5.4e-10 at 0.2 s, orders 6.7 and 7.0),
 /// the linear momentum to round-off (a discrete momentum map: measured 0),
