@@ -31,19 +31,23 @@
 //!   dA/dtheta_a + Pi_a = 0,   dA/dtheta_b - J_r(theta_b)^T I_G J_r(theta_b) u_b = 0     (B11)
 //!   u_a = Omega_a,   Omega_b = J_r(theta_b) u_b,   unknowns r_b, v_b, theta_b, u_b
 //! ```
-//! The translational rows are linear; the rotational ones are evaluated
-//! on jets ([`super::jet`]), which give their exact Jacobian. The linear
+//! In water the body's added mass joins T and its drag adds its virtual
+//! work ([`super::terms`], (B12)-(B13)). The integrand at a time point
+//! is a function of v_G, theta and theta_dot, evaluated on jets
+//! ([`super::jet`]) and carried to the slots by the chain rule: the rows'
+//! exact Jacobian. The linear
 //! momentum is a discrete momentum map (the cubic's variations hold the
 //! translations) and is kept to round-off; the angular momentum is not
 //! (a rotation of the whole path is not a cubic in the chart), and is
 //! kept to the step's error, sixth order.
 
 use super::inertia::RigidInertia;
-use super::jet::{cross, dot, Jet, JetVec};
+use super::jet::{Jet, JetVec};
 use super::pose::{self, rotate, rotate_back};
-use super::rotation::{body_rate, exp_map, right_jacobian, series};
+use super::rotation::{exp_map, right_jacobian};
+use super::terms::{BodyWater, Context, NV};
 use crate::bordered::{dense_lu, dense_solve};
-use crate::element::TimeSlab;
+use crate::element::{TimePoint, TimeSlab};
 use crate::error::{FailureKind, ModelError, SolverError};
 use crate::quadrature::GaussRule;
 use crate::scheme::TimeScheme;
@@ -76,30 +80,58 @@ impl BodyForces {
     }
 }
 
-/// Unknowns of a step: w_a, r_b - r_a, w_b of the centre; u_a, theta_b,
-/// u_b of the rotation.
-const N: usize = 18;
-/// Jet variables of the rotational action: theta_a, u_a, theta_b, u_b.
-const NJ: usize = 12;
+/// Slots of the slab: the centre's four (from r_a: r_a, w_a, r_b, w_b) and
+/// the rotation's four (theta_a = 0, u_a, theta_b, u_b), 3 numbers each.
+const SLOTS: usize = 24;
 /// Newton iterations a step may take.
 const MAX_ITERATIONS: usize = 30;
+/// The slot blocks (of three) of the Galerkin step's unknowns and rows.
+const GALERKIN_UNKNOWNS: [usize; 6] = [1, 2, 3, 5, 6, 7];
+const GALERKIN_ROWS: [usize; 6] = [0, 1, 3, 4, 5, 7];
+/// P2's unknowns and rows (its slopes at the start are the carried rates).
+const P2_UNKNOWNS: [usize; 4] = [2, 3, 6, 7];
+const P2_ROWS: [usize; 4] = [0, 2, 4, 6];
 
-/// One rigid body moving freely under constant forces, stepped by
-/// (B6)-(B7).
+/// One rigid body moving freely under constant forces and, in water, its
+/// drag and added mass, stepped by (B6)-(B7) or (B11).
 #[derive(Clone, Debug)]
 pub struct FreeBody {
     inertia: RigidInertia,
-    inertia_inverse: [[f64; 3]; 3],
     forces: BodyForces,
+    water: Option<BodyWater>,
     slab: TimeSlab,
     time: f64,
     centre: [f64; 3],
-    momentum: [f64; 3],
     rotation: [[f64; 3]; 3],
-    /// Pi, the angular momentum in body axes.
+    /// p = dT/dv_G (global) and Pi = dT/dOmega (body axes).
+    momentum: [f64; 3],
     body_momentum: [f64; 3],
+    /// v_G and Omega, kept with the momenta.
+    velocity: [f64; 3],
+    body_rate: [f64; 3],
     scheme: TimeScheme,
     last_iterations: usize,
+}
+
+/// The slab's rows over the 24 slots and their derivatives (row-major).
+struct SlabRows {
+    rows: [f64; SLOTS],
+    jacobian: Vec<f64>,
+}
+
+/// d(variable k at a time point)/d(slot block m): which slot and weight.
+fn variable_slot(k: usize, m: usize, point: &TimePoint) -> (usize, f64) {
+    let (t, t_dot) = (point.shape.t[m], point.shape.t_dot[m]);
+    match k {
+        0..=2 => (3 * m + k, t_dot),
+        3..=5 => (12 + 3 * m + k - 3, t),
+        _ => (12 + 3 * m + k - 6, t_dot),
+    }
+}
+
+/// The nine variables of [`super::terms`] at values v, as jets.
+fn variables(v: [[f64; 3]; 3]) -> [JetVec<NV>; 3] {
+    std::array::from_fn(|b| std::array::from_fn(|i| Jet::variable(v[b][i], 3 * b + i)))
 }
 
 impl FreeBody {
@@ -122,30 +154,36 @@ impl FreeBody {
                 "must be positive and finite",
             ));
         }
-        let inertia_inverse = invert3(&inertia.inertia_at_centre)
-            .ok_or_else(|| ModelError::invalid("body", "the inertia tensor is singular"))?;
         let c = rotate(rotation, inertia.centre_of_mass);
-        let centre = add(position, c);
-        let v_g = add(velocity, crate::vec3::cross(angular_velocity, c));
-        let omega_body = rotate_back(rotation, angular_velocity);
-        Ok(FreeBody {
+        let mut body = FreeBody {
             inertia: inertia.clone(),
-            inertia_inverse,
             forces: forces.clone(),
+            water: None,
             slab: TimeSlab::new(dt, &GaussRule::new(3)?),
             time: 0.0,
-            centre,
-            momentum: scale(inertia.mass, v_g),
+            centre: add(position, c),
             rotation: *rotation,
-            body_momentum: mat_vec(&inertia.inertia_at_centre, omega_body),
+            momentum: [0.0; 3],
+            body_momentum: [0.0; 3],
+            velocity: add(velocity, crate::vec3::cross(angular_velocity, c)),
+            body_rate: rotate_back(rotation, angular_velocity),
             scheme: TimeScheme::Galerkin,
             last_iterations: 0,
-        })
+        };
+        body.momenta_from_rates();
+        Ok(body)
     }
 
     /// The same body stepped by `scheme` (Galerkin by default).
     pub fn with_scheme(mut self, scheme: TimeScheme) -> Self {
         self.scheme = scheme;
+        self
+    }
+
+    /// The same body in water: its drag and added mass (B12)-(B13).
+    pub fn with_water(mut self, water: BodyWater) -> Self {
+        self.water = Some(water);
+        self.momenta_from_rates();
         self
     }
 
@@ -171,15 +209,19 @@ impl FreeBody {
     pub fn point(&self, xi: [f64; 3]) -> [f64; 3] {
         pose::point(self.position(), &self.rotation, xi)
     }
-    /// The angular velocity in body axes, `I_G^-1 Pi`.
+    /// The centre of mass's velocity.
+    pub fn centre_velocity(&self) -> [f64; 3] {
+        self.velocity
+    }
+    /// The angular velocity in body axes, Omega.
     pub fn body_angular_velocity(&self) -> [f64; 3] {
-        mat_vec(&self.inertia_inverse, self.body_momentum)
+        self.body_rate
     }
     /// The angular velocity, global: `R Omega`.
     pub fn angular_velocity(&self) -> [f64; 3] {
-        rotate(&self.rotation, self.body_angular_velocity())
+        rotate(&self.rotation, self.body_rate)
     }
-    /// Linear momentum `m v_G`.
+    /// Linear momentum `dT/dv_G` (with the added mass's, in water).
     pub fn linear_momentum(&self) -> [f64; 3] {
         self.momentum
     }
@@ -190,12 +232,13 @@ impl FreeBody {
             rotate(&self.rotation, self.body_momentum),
         )
     }
-    /// Kinetic energy `|p|^2 / 2m + 1/2 Pi . I_G^-1 Pi` and the potential
-    /// of the constant forces, `-sum_j F_j . x(xi_j)`.
+    /// Kinetic energy (B12) (with the added mass's) and the potential of
+    /// the constant forces, `-sum_j F_j . x(xi_j)`.
     pub fn energies(&self) -> (f64, f64) {
-        let p = self.momentum;
-        let kinetic = 0.5 * crate::vec3::dot(p, p) / self.inertia.mass
-            + 0.5 * crate::vec3::dot(self.body_momentum, self.body_angular_velocity());
+        let kinetic = self
+            .context(&[])
+            .kinetic(&variables([self.velocity, [0.0; 3], self.body_rate]))
+            .v;
         let potential = -self
             .forces
             .forces
@@ -205,29 +248,21 @@ impl FreeBody {
         (kinetic, potential)
     }
 
-    /// The translational gradient dA/dy_m (M31) for y = [r_a, w_a, r_b, w_b].
-    fn translation_gradient(&self, m: usize, y: &[[f64; 3]; 4]) -> [f64; 3] {
-        let c = &self.slab.kinetic;
-        let total = self.forces.total();
-        std::array::from_fn(|i| {
-            self.inertia.mass * (0..4).map(|n| c[m][n] * y[n][i]).sum::<f64>()
-                + self.slab.load[m] * total[i]
-        })
+    fn context<'a>(&'a self, loads: &'a [([f64; 3], [f64; 3])]) -> Context<'a> {
+        Context {
+            mass: self.inertia.mass,
+            inertia_at_centre: &self.inertia.inertia_at_centre,
+            centre_of_mass: self.inertia.centre_of_mass,
+            rotation_a: &self.rotation,
+            loads,
+            water: self.water.as_ref(),
+        }
     }
 
-    /// The rotational action (B5) on jets over [theta_a, u_a, theta_b, u_b]
-    /// (theta_a = 0) at the slopes u_a, u_b and the end's theta_b.
-    ///
-    /// At a time point the density depends on theta_g and theta_dot_g
-    /// alone, linear in the slots (theta_g = sum_m T_m y_m, theta_dot_g =
-    /// sum_m T_m' y_m): it is evaluated on jets over those six numbers and
-    /// its gradient and Hessian carried to the slots by the chain rule
-    /// (four times fewer jet operations than jets over the twelve slots).
-    fn rotational_action(&self, u_a: [f64; 3], theta_b: [f64; 3], u_b: [f64; 3]) -> Jet<NJ> {
-        let slots = [[0.0; 3], u_a, theta_b, u_b];
-        // The forces in the start's body axes, at their points from G.
-        let loads: Vec<([f64; 3], [f64; 3])> = self
-            .forces
+    /// The constant forces in the start's body axes, at their points from
+    /// the centre of mass.
+    fn loads(&self) -> Vec<([f64; 3], [f64; 3])> {
+        self.forces
             .forces
             .iter()
             .map(|(f, xi)| {
@@ -236,152 +271,156 @@ impl FreeBody {
                     sub(*xi, self.inertia.centre_of_mass),
                 )
             })
-            .collect();
-        let mut action = Jet::constant(0.0);
+            .collect()
+    }
+
+    /// p and Pi from v_G and Omega (the kinetic energy's gradient in the
+    /// rates at theta = 0, where theta_dot = Omega).
+    fn momenta_from_rates(&mut self) {
+        let t = self
+            .context(&[])
+            .kinetic(&variables([self.velocity, [0.0; 3], self.body_rate]));
+        self.momentum = [t.g[0], t.g[1], t.g[2]];
+        self.body_momentum = [t.g[6], t.g[7], t.g[8]];
+    }
+
+    /// v_G and Omega from p and Pi: the kinetic energy is quadratic in
+    /// the rates, `[p; Pi] = g0 + H [v_G; Omega]` (g0 from the current).
+    fn rates_from_momenta(&mut self) -> Result<(), SolverError> {
+        let t = self.context(&[]).kinetic(&variables([[0.0; 3]; 3]));
+        let rate_index = [0, 1, 2, 6, 7, 8];
+        let mut h = [0.0; 36];
+        let mut rhs = [0.0; 6];
+        for (a, &ka) in rate_index.iter().enumerate() {
+            let target = if a < 3 {
+                self.momentum[a]
+            } else {
+                self.body_momentum[a - 3]
+            };
+            rhs[a] = target - t.g[ka];
+            for (b, &kb) in rate_index.iter().enumerate() {
+                h[6 * a + b] = t.h[ka][kb];
+            }
+        }
+        let mut pivots = [0usize; 6];
+        if dense_lu(&mut h, 6, &mut pivots).is_err() {
+            return Err(self.failure(FailureKind::SingularJacobian, 0, f64::NAN));
+        }
+        dense_solve(&h, 6, &pivots, &mut rhs);
+        self.velocity = [rhs[0], rhs[1], rhs[2]];
+        self.body_rate = [rhs[3], rhs[4], rhs[5]];
+        Ok(())
+    }
+
+    /// (B5) and (B13) over the slab: the action's gradient plus the drag's
+    /// virtual work, per slot, and their derivatives. `slots` holds the
+    /// eight blocks (the centre's from r_a).
+    fn slab_rows(&self, slots: &[[f64; 3]; 8]) -> SlabRows {
+        let loads = self.loads();
+        let ctx = self.context(&loads);
+        let mut out = SlabRows {
+            rows: [0.0; SLOTS],
+            jacobian: vec![0.0; SLOTS * SLOTS],
+        };
+        let total = self.forces.total();
+        for m in 0..4 {
+            for i in 0..3 {
+                out.rows[3 * m + i] += self.slab.load[m] * total[i];
+            }
+        }
         for point in &self.slab.points {
+            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
+                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
+            };
             let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
-            let at = |w: &[f64; 4], i: usize| (0..4).map(|m| w[m] * slots[m][i]).sum::<f64>();
-            let theta: JetVec<6> = std::array::from_fn(|i| Jet::variable(at(t, i), i));
-            let theta_dot: JetVec<6> = std::array::from_fn(|i| Jet::variable(at(t_dot, i), 3 + i));
-            let density = self.rotational_density(&theta, &theta_dot, &loads);
-            // d theta_g / d y_(m, i) = T_m, d theta_dot_g / d y_(m, i) = T_m'.
-            let weight = |m: usize, k: usize| if k < 3 { t[m] } else { t_dot[m] };
-            action.v += point.w_dt * density.v;
+            let v = variables([at(t_dot, 0), at(t, 4), at(t_dot, 4)]);
+            let density = ctx.density(&v);
+            let wdt = point.w_dt;
             for m in 0..4 {
-                for i in 0..3 {
-                    let row = 3 * m + i;
-                    action.g[row] += point.w_dt
-                        * (weight(m, i) * density.g[i] + weight(m, 3 + i) * density.g[3 + i]);
+                for k in 0..NV {
+                    let (s, wk) = variable_slot(k, m, point);
+                    out.rows[s] += wdt * wk * density.g[k];
                     for n in 0..4 {
-                        for j in 0..3 {
-                            let mut h = 0.0;
-                            for (a, wa) in [(i, weight(m, i)), (3 + i, weight(m, 3 + i))] {
-                                for (b, wb) in [(j, weight(n, j)), (3 + j, weight(n, 3 + j))] {
-                                    h += wa * wb * density.h[a][b];
+                        for l in 0..NV {
+                            let (s2, wl) = variable_slot(l, n, point);
+                            out.jacobian[s * SLOTS + s2] += wdt * wk * wl * density.h[k][l];
+                        }
+                    }
+                }
+            }
+            if let Some((on_centre, on_theta)) = ctx.drag(&v) {
+                for m in 0..4 {
+                    for (first, q) in [(0usize, &on_centre), (12, &on_theta)] {
+                        for i in 0..3 {
+                            let s = first + 3 * m + i;
+                            out.rows[s] += wdt * t[m] * q[i].v;
+                            for n in 0..4 {
+                                for l in 0..NV {
+                                    let (s2, wl) = variable_slot(l, n, point);
+                                    out.jacobian[s * SLOTS + s2] += wdt * t[m] * wl * q[i].g[l];
                                 }
                             }
-                            action.h[row][3 * n + j] += point.w_dt * h;
                         }
                     }
                 }
             }
         }
-        action
+        out
     }
 
-    /// The integrand of (B5)'s rotational part at one time point:
-    /// 1/2 Omega . I_G Omega + sum_j F_j . exp([theta]) xi'_j (F_j and xi'_j
-    /// in the start's body axes).
-    fn rotational_density(
-        &self,
-        theta: &JetVec<6>,
-        theta_dot: &JetVec<6>,
-        loads: &[([f64; 3], [f64; 3])],
-    ) -> Jet<6> {
-        let i_g = &self.inertia.inertia_at_centre;
-        let omega = body_rate(theta, theta_dot);
-        let i_omega: JetVec<6> = std::array::from_fn(|r| {
-            omega[0].scale(i_g[r][0]) + omega[1].scale(i_g[r][1]) + omega[2].scale(i_g[r][2])
-        });
-        let mut density = dot(&omega, &i_omega).scale(0.5);
-        if !loads.is_empty() {
-            let s = dot(theta, theta);
-            let (f0, d0, dd0) = series(0, s.v);
-            let (f1, d1, dd1) = series(1, s.v);
-            let (f0, f1) = (s.compose(f0, d0, dd0), s.compose(f1, d1, dd1));
-            for (f, xi) in loads {
-                // F . exp([theta]) xi' (B10).
-                let v: JetVec<6> = xi.map(Jet::constant);
-                let t_x_v = cross(theta, &v);
-                let t_x_t_x_v = cross(theta, &t_x_v);
-                let turned: JetVec<6> =
-                    std::array::from_fn(|i| v[i] + f0 * t_x_v[i] + f1 * t_x_t_x_v[i]);
-                density = density + dot(&f.map(Jet::constant), &turned);
+    /// The slot blocks of a step from its unknowns x.
+    fn slots(&self, x: &[f64]) -> [[f64; 3]; 8] {
+        let mut slots = [[0.0; 3]; 8];
+        match self.scheme {
+            TimeScheme::Galerkin => {
+                for (k, &b) in GALERKIN_UNKNOWNS.iter().enumerate() {
+                    slots[b] = part(x, 3 * k);
+                }
+            }
+            TimeScheme::P2 => {
+                slots[1] = self.velocity;
+                slots[5] = self.body_rate;
+                for (k, &b) in P2_UNKNOWNS.iter().enumerate() {
+                    slots[b] = part(x, 3 * k);
+                }
             }
         }
-        density
+        slots
     }
 
     /// The Galerkin rows (B6) at x = [w_a, r_b - r_a, w_b, u_a, theta_b,
     /// u_b] and their exact Jacobian (row-major, 18 x 18).
     pub fn galerkin_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
-        let mut r = vec![0.0; N];
-        let mut jac = vec![0.0; N * N];
-        let y = [[0.0; 3], part(x, 0), part(x, 3), part(x, 6)];
-        let c = &self.slab.kinetic;
-        for (block, m) in [(0usize, 0usize), (1, 1), (2, 3)] {
-            let g = self.translation_gradient(m, &y);
-            for i in 0..3 {
-                r[3 * block + i] = g[i] + if m == 0 { self.momentum[i] } else { 0.0 };
-                for (col, n) in [(0usize, 1usize), (1, 2), (2, 3)] {
-                    jac[(3 * block + i) * N + 3 * col + i] = self.inertia.mass * c[m][n];
-                }
-            }
-        }
-        let a = self.rotational_action(part(x, 9), part(x, 12), part(x, 15));
-        // Rows: theta_a (jet 0..3), u_a (3..6), u_b (9..12); unknowns u_a,
-        // theta_b, u_b (jet 3..12).
-        for (block, start) in [(0usize, 0usize), (1, 3), (2, 9)] {
-            for i in 0..3 {
-                let row = 9 + 3 * block + i;
-                let momentum = if start == 0 {
-                    self.body_momentum[i]
-                } else {
-                    0.0
-                };
-                r[row] = a.g[start + i] + momentum;
-                for k in 0..9 {
-                    jac[row * N + 9 + k] = a.h[start + i][3 + k];
-                }
-            }
+        let slab = self.slab_rows(&self.slots(x));
+        let (mut r, jac) = pick(&slab, &GALERKIN_ROWS, &GALERKIN_UNKNOWNS);
+        for i in 0..3 {
+            r[i] += self.momentum[i];
+            r[9 + i] += self.body_momentum[i];
         }
         (r, jac)
     }
 
     /// The P2 rows (B11) at x = [r_b - r_a, v_b, theta_b, u_b] and their
     /// exact Jacobian (row-major, 12 x 12): the end slopes are the carried
-    /// rates (u_a = Omega_a, J_r(0) = I; u_b = J_r(theta_b)^-1 Omega_b).
+    /// rates (u_a = Omega_a, J_r(0) = I; u_b = J_r(theta_b)^-1 Omega_b),
+    /// the end momenta the kinetic energy's gradient in the end's rates.
     pub fn p2_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         const M: usize = 12;
-        let mut r = vec![0.0; M];
-        let mut jac = vec![0.0; M * M];
-        let mass = self.inertia.mass;
-        let v_a = scale(1.0 / mass, self.momentum);
-        let y = [[0.0; 3], v_a, part(x, 0), part(x, 3)];
-        let c = &self.slab.kinetic;
-        for (block, m) in [(0usize, 0usize), (1, 2)] {
-            let g = self.translation_gradient(m, &y);
-            for i in 0..3 {
-                let row = 3 * block + i;
-                r[row] = g[i]
-                    + if m == 0 {
-                        self.momentum[i]
-                    } else {
-                        -mass * x[3 + i]
-                    };
-                jac[row * M + i] = mass * c[m][2];
-                jac[row * M + 3 + i] = mass * c[m][3] - if m == 2 { mass } else { 0.0 };
-            }
-        }
-        let omega_a = self.body_angular_velocity();
-        let (theta_b, u_b) = (part(x, 6), part(x, 9));
-        let a = self.rotational_action(omega_a, theta_b, u_b);
-        // J_r(theta_b)^T I_G J_r(theta_b) u_b = J_r^T Pi_b, on jets (its
-        // first derivatives are the row's): J_r^T v is (B9) at -theta.
-        let theta: JetVec<6> = std::array::from_fn(|i| Jet::variable(theta_b[i], i));
-        let rate: JetVec<6> = std::array::from_fn(|i| Jet::variable(u_b[i], 3 + i));
-        let omega_b = body_rate(&theta, &rate);
-        let pi_b: JetVec<6> = std::array::from_fn(|row| {
-            let i_g = &self.inertia.inertia_at_centre[row];
-            omega_b[0].scale(i_g[0]) + omega_b[1].scale(i_g[1]) + omega_b[2].scale(i_g[2])
-        });
-        let end = body_rate(&theta.map(|t| -t), &pi_b);
+        let slab = self.slab_rows(&self.slots(x));
+        let (mut r, mut jac) = pick(&slab, &P2_ROWS, &P2_UNKNOWNS);
+        let end = self
+            .context(&[])
+            .kinetic(&variables([part(x, 3), part(x, 6), part(x, 9)]));
         for i in 0..3 {
-            r[6 + i] = a.g[i] + self.body_momentum[i];
-            r[9 + i] = a.g[6 + i] - end[i].v;
-            for k in 0..6 {
-                jac[(6 + i) * M + 6 + k] = a.h[i][6 + k];
-                jac[(9 + i) * M + 6 + k] = a.h[6 + i][6 + k] - end[i].g[k];
+            r[i] += self.momentum[i];
+            r[6 + i] += self.body_momentum[i];
+            // -dT/dv_G and -dT/dtheta_dot at the end; their derivatives in
+            // v_b (x 3..6), theta_b (6..9), u_b (9..12).
+            r[3 + i] -= end.g[i];
+            r[9 + i] -= end.g[6 + i];
+            for k in 0..NV {
+                jac[(3 + i) * M + 3 + k] -= end.h[i][k];
+                jac[(9 + i) * M + 3 + k] -= end.h[6 + i][k];
             }
         }
         (r, jac)
@@ -390,11 +429,10 @@ impl FreeBody {
     /// One step of (B6)-(B7) (Galerkin) or (B11) (P2).
     pub fn step(&mut self) -> Result<(), SolverError> {
         let dt = self.slab.dt;
-        let v_g = scale(1.0 / self.inertia.mass, self.momentum);
-        let omega = self.body_angular_velocity();
+        let (v_g, omega) = (self.velocity, self.body_rate);
         let guess = |position: bool, v: [f64; 3]| if position { scale(dt, v) } else { v };
-        // The unknowns' order and which are positions (lengths, angles)
-        // rather than rates.
+        // The unknowns' blocks: whether a position (else a rate) and
+        // whether the rotation's (else the centre's).
         let layout: &[(bool, bool)] = match self.scheme {
             TimeScheme::Galerkin => &[
                 (false, false),
@@ -411,33 +449,29 @@ impl FreeBody {
             .flat_map(|&(position, turning)| guess(position, if turning { omega } else { v_g }))
             .collect();
         self.newton(&mut x, layout)?;
-        let rotated = match self.scheme {
+        let slots = self.slots(&x);
+        let theta_b = slots[6];
+        match self.scheme {
             TimeScheme::Galerkin => {
-                let y = [[0.0; 3], part(&x, 0), part(&x, 3), part(&x, 6)];
-                self.momentum = self.translation_gradient(2, &y);
-                self.centre = add(self.centre, y[2]);
-                let a = self.rotational_action(part(&x, 9), part(&x, 12), part(&x, 15));
-                let theta_b = part(&x, 12);
+                let slab = self.slab_rows(&slots);
+                self.momentum = part(&slab.rows, 6);
                 // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
-                let jr = right_jacobian(theta_b);
-                let jr_t: [[f64; 3]; 3] =
-                    std::array::from_fn(|i| std::array::from_fn(|j| jr[j][i]));
-                let inverse = invert3(&jr_t)
-                    .ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, 0.0))?;
-                self.body_momentum = mat_vec(&inverse, [a.g[6], a.g[7], a.g[8]]);
-                theta_b
+                self.body_momentum =
+                    solve_transposed(&right_jacobian(theta_b), part(&slab.rows, 18))
+                        .ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, f64::NAN))?;
             }
             TimeScheme::P2 => {
-                self.momentum = scale(self.inertia.mass, part(&x, 3));
-                self.centre = add(self.centre, part(&x, 0));
-                let theta_b = part(&x, 6);
-                let omega_b = mat_vec(&right_jacobian(theta_b), part(&x, 9));
-                self.body_momentum = mat_vec(&self.inertia.inertia_at_centre, omega_b);
-                theta_b
+                self.velocity = slots[3];
+                self.body_rate = rotate(&right_jacobian(theta_b), slots[7]);
             }
-        };
+        }
+        self.centre = add(self.centre, slots[2]);
         self.rotation =
-            pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(rotated)));
+            pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(theta_b)));
+        match self.scheme {
+            TimeScheme::Galerkin => self.rates_from_momenta()?,
+            TimeScheme::P2 => self.momenta_from_rates(),
+        }
         self.time += dt;
         Ok(())
     }
@@ -492,28 +526,37 @@ impl FreeBody {
     }
 }
 
+/// The rows of the slot blocks `rows` and their derivatives in the slot
+/// blocks `unknowns`.
+fn pick(slab: &SlabRows, rows: &[usize], unknowns: &[usize]) -> (Vec<f64>, Vec<f64>) {
+    let n = 3 * rows.len();
+    let mut r = vec![0.0; n];
+    let mut jac = vec![0.0; n * n];
+    for (a, &ra) in rows.iter().enumerate() {
+        for i in 0..3 {
+            r[3 * a + i] = slab.rows[3 * ra + i];
+            for (b, &ub) in unknowns.iter().enumerate() {
+                for j in 0..3 {
+                    jac[(3 * a + i) * n + 3 * b + j] =
+                        slab.jacobian[(3 * ra + i) * SLOTS + 3 * ub + j];
+                }
+            }
+        }
+    }
+    (r, jac)
+}
+
 /// x[a..a + 3].
 fn part(x: &[f64], a: usize) -> [f64; 3] {
     [x[a], x[a + 1], x[a + 2]]
 }
 
-fn mat_vec(a: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
-    rotate(a, v)
-}
-
-/// The inverse of a 3 x 3 matrix by its adjugate (None if singular).
-fn invert3(a: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
-    let cof = |r: usize, c: usize| {
-        let (r1, r2) = ((r + 1) % 3, (r + 2) % 3);
-        let (c1, c2) = ((c + 1) % 3, (c + 2) % 3);
-        a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]
-    };
-    let det: f64 = (0..3).map(|c| a[0][c] * cof(0, c)).sum();
-    let size = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !(det.abs() > 1e-300 && det.abs() > 1e-14 * size.powi(3)) {
-        return None;
-    }
-    Some(std::array::from_fn(|i| {
-        std::array::from_fn(|j| cof(j, i) / det)
-    }))
+/// y with A^T y = b (None if A is singular).
+fn solve_transposed(a: &[[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+    let mut m: Vec<f64> = (0..9).map(|k| a[k % 3][k / 3]).collect();
+    let mut pivots = [0usize; 3];
+    dense_lu(&mut m, 3, &mut pivots).ok()?;
+    let mut y = b;
+    dense_solve(&m, 3, &pivots, &mut y);
+    Some(y)
 }

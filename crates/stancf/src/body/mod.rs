@@ -15,6 +15,7 @@
 //! | [`pose`] | points of a body (B1), MoorDyn's angles |
 //! | [`rotation`] | the exponential (B10) and the body rate (B9) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
+//! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B12)-(B13) |
 //! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B11) |
 
 pub mod free;
@@ -22,6 +23,8 @@ pub mod inertia;
 pub mod jet;
 pub mod pose;
 pub mod rotation;
+pub mod terms;
 
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;
+pub use terms::BodyWater;

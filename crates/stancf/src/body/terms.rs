@@ -1,0 +1,147 @@
+//! What a body's slab action and the water's virtual work are at one
+//! time point (docs/method.md §15.4, §15.6), as functions of the nine
+//! numbers the slab gives there: the centre's velocity v_G (global), the
+//! rotation vector theta and its rate theta_dot (the step's chart,
+//! R = R_a exp([theta])). Evaluated on jets, they carry their exact
+//! derivatives to the step's rows.
+//!
+//! ```text
+//!   T = m/2 |v_G|^2 + 1/2 Omega . I_G Omega + 1/2 u . A u,            (B5), (B12)
+//!   u = R^T (v_ref - U) = R^T (v_G - U) + c x Omega,   A = rho V diag(Ca)
+//!   f = 1/2 rho diag(CdA) u_r |u_r|,   u_r = -u,    M = -1/2 rho diag(CdA_r) Omega |Omega|   (B13)
+//!   Q_r = R f,   Q_theta = J_r(theta)^T (f x c + M)
+//! ```
+//!
+//! (body axes but for Q_r; U the current; f the drag at the reference
+//! point and M the rotational drag; Q the generalized forces on r_G and on
+//! theta: the virtual rotation in body axes is eta = J_r dtheta, and the
+//! reference point moves by dr_G + R (c x eta)).
+
+use super::jet::{cross, dot, Jet, JetVec};
+use super::rotation::{body_rate, series};
+
+/// Variables at a time point: v_G (0..3), theta (3..6), theta_dot (6..9).
+pub const NV: usize = 9;
+
+/// A body's water: MoorDyn's Volume, Ca and CdA (body axes; the rotational
+/// drag area multiplies Omega |Omega|, as MoorDyn's does), with the
+/// water's density and a uniform steady current.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BodyWater {
+    pub density: f64,
+    pub volume: f64,
+    pub added_mass_coefficients: [f64; 3],
+    pub drag_areas: [f64; 3],
+    pub rotational_drag_areas: [f64; 3],
+    pub current: [f64; 3],
+}
+
+/// What the terms need of the body and the step.
+pub struct Context<'a> {
+    pub mass: f64,
+    pub inertia_at_centre: &'a [[f64; 3]; 3],
+    pub centre_of_mass: [f64; 3],
+    /// R_a, the rotation at the step's start.
+    pub rotation_a: &'a [[f64; 3]; 3],
+    /// Constant forces and their points from the centre of mass, both in
+    /// the start's body axes.
+    pub loads: &'a [([f64; 3], [f64; 3])],
+    pub water: Option<&'a BodyWater>,
+}
+
+fn constant(v: [f64; 3]) -> JetVec<NV> {
+    v.map(Jet::constant)
+}
+
+/// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B10).
+fn turn(theta: &JetVec<NV>, v: &JetVec<NV>, sign: f64) -> JetVec<NV> {
+    let s = dot(theta, theta);
+    let (f0, d0, dd0) = series(0, s.v);
+    let (f1, d1, dd1) = series(1, s.v);
+    let (f0, f1) = (s.compose(f0, d0, dd0), s.compose(f1, d1, dd1));
+    let t_x_v = cross(theta, v);
+    let t_x_t_x_v = cross(theta, &t_x_v);
+    std::array::from_fn(|i| v[i] + (f0 * t_x_v[i]).scale(sign) + f1 * t_x_t_x_v[i])
+}
+
+/// A x with a constant 3 x 3 (or diagonal) matrix.
+fn times(a: &[[f64; 3]; 3], x: &JetVec<NV>) -> JetVec<NV> {
+    std::array::from_fn(|r| x[0].scale(a[r][0]) + x[1].scale(a[r][1]) + x[2].scale(a[r][2]))
+}
+
+fn transpose(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[j][i]))
+}
+
+/// |x| on jets, with zero derivatives at x = 0 (where x |x| has them).
+fn length(x: &JetVec<NV>) -> Jet<NV> {
+    let s = dot(x, x);
+    if s.v <= 0.0 {
+        return Jet::constant(0.0);
+    }
+    let r = s.v.sqrt();
+    s.compose(r, 0.5 / r, -0.25 / (r * s.v))
+}
+
+impl Context<'_> {
+    /// Omega and u of (B12) (body axes).
+    fn rates(&self, v: &[JetVec<NV>; 3]) -> (JetVec<NV>, JetVec<NV>) {
+        let [v_g, theta, theta_dot] = v;
+        let omega = body_rate(theta, theta_dot);
+        let current = self.water.map_or([0.0; 3], |w| w.current);
+        let relative: JetVec<NV> = std::array::from_fn(|i| v_g[i] - Jet::constant(current[i]));
+        let start_axes = times(&transpose(self.rotation_a), &relative);
+        let body_axes = turn(theta, &start_axes, -1.0);
+        let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
+        let u = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);
+        (omega, u)
+    }
+
+    /// The kinetic energy T of (B12).
+    pub fn kinetic(&self, v: &[JetVec<NV>; 3]) -> Jet<NV> {
+        let (omega, u) = self.rates(v);
+        let mut t = dot(&v[0], &v[0]).scale(0.5 * self.mass)
+            + dot(&omega, &times(self.inertia_at_centre, &omega)).scale(0.5);
+        if let Some(w) = self.water {
+            let a: [f64; 3] =
+                std::array::from_fn(|i| w.density * w.volume * w.added_mass_coefficients[i]);
+            for i in 0..3 {
+                t = t + (u[i] * u[i]).scale(0.5 * a[i]);
+            }
+        }
+        t
+    }
+
+    /// The integrand of (B5) without the centre's linear load term:
+    /// T + sum_j F_j . exp([theta]) xi'_j.
+    pub fn density(&self, v: &[JetVec<NV>; 3]) -> Jet<NV> {
+        let mut density = self.kinetic(v);
+        for (f, xi) in self.loads {
+            let turned = turn(&v[1], &constant(*xi), 1.0);
+            density = density + dot(&constant(*f), &turned);
+        }
+        density
+    }
+
+    /// The drag's generalized forces (B13): on r_G (global) and on theta.
+    pub fn drag(&self, v: &[JetVec<NV>; 3]) -> Option<(JetVec<NV>, JetVec<NV>)> {
+        let w = self.water?;
+        let (omega, u) = self.rates(v);
+        let half_rho = 0.5 * w.density;
+        let speed = length(&u);
+        let f: JetVec<NV> =
+            std::array::from_fn(|i| (u[i] * speed).scale(-half_rho * w.drag_areas[i]));
+        let spin = length(&omega);
+        let moment: JetVec<NV> = std::array::from_fn(|i| {
+            (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
+        });
+        let f_x_c = cross(&f, &constant(self.centre_of_mass));
+        let on_eta: JetVec<NV> = std::array::from_fn(|i| f_x_c[i] + moment[i]);
+        // J_r^T q is (B9) at -theta.
+        let minus_theta = v[1].map(|t| -t);
+        let on_theta = body_rate(&minus_theta, &on_eta);
+        let start_axes = turn(&v[1], &f, 1.0);
+        let on_centre = times(self.rotation_a, &start_axes);
+        Some((on_centre, on_theta))
+    }
+}
