@@ -145,3 +145,68 @@ impl Context<'_> {
         Some((on_centre, on_theta))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The drag's generalized forces (B13) do the drag's power: with the
+    /// start's chart (theta = 0, J_r = I), Q_r . v_G + Q_theta . Omega =
+    /// f . u_ref + M . Omega, u_ref the reference point's velocity in body
+    /// axes, the force f acting at the reference point, off the centre.
+    #[test]
+    fn the_drags_generalized_forces_do_the_drags_power() {
+        let rotation = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
+        let water = BodyWater {
+            density: 1025.0,
+            volume: 0.7,
+            added_mass_coefficients: [0.5, 0.5, 0.5],
+            drag_areas: [0.8, 1.3, 2.1],
+            rotational_drag_areas: [0.4, 0.6, 0.9],
+            current: [0.2, -0.1, 0.05],
+        };
+        let ctx = Context {
+            mass: 800.0,
+            inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
+            centre_of_mass: [0.3, -0.4, 0.5],
+            rotation_a: &rotation,
+            loads: &[],
+            water: Some(&water),
+        };
+        let (v_g, omega) = ([0.7, -0.3, 0.4], [0.2, 0.5, -0.6]);
+        let vars: [JetVec<NV>; 3] = [
+            v_g.map(Jet::constant),
+            [0.0; 3].map(Jet::constant),
+            omega.map(Jet::constant),
+        ];
+        let (q_r, q_theta) = ctx.drag(&vars).unwrap();
+        let power_q: f64 = (0..3)
+            .map(|i| q_r[i].v * v_g[i] + q_theta[i].v * omega[i])
+            .sum();
+        // The same from the forces: u = R^T (v_G - U) + c x Omega (B12).
+        let rel = crate::vec3::sub(v_g, water.current);
+        let c_x_w = crate::vec3::cross(ctx.centre_of_mass, omega);
+        let u: [f64; 3] = std::array::from_fn(|i| {
+            (0..3).map(|k| rotation[k][i] * rel[k]).sum::<f64>() + c_x_w[i]
+        });
+        let speed = crate::vec3::norm(u);
+        let spin = crate::vec3::norm(omega);
+        let f: [f64; 3] =
+            std::array::from_fn(|i| -0.5 * 1025.0 * water.drag_areas[i] * u[i] * speed);
+        let m: [f64; 3] = std::array::from_fn(|i| {
+            -0.5 * 1025.0 * water.rotational_drag_areas[i] * omega[i] * spin
+        });
+        // The reference point moves at u + U (in body axes) over the ground:
+        // the power against the ground is f . (u + R^T U) + M . Omega.
+        let current_body: [f64; 3] =
+            std::array::from_fn(|i| (0..3).map(|k| rotation[k][i] * water.current[k]).sum());
+        let power: f64 = (0..3)
+            .map(|i| f[i] * (u[i] + current_body[i]) + m[i] * omega[i])
+            .sum();
+        assert!(power < 0.0);
+        assert!(
+            (power_q - power).abs() < 1e-12 * power.abs(),
+            "{power_q} vs {power}"
+        );
+    }
+}
