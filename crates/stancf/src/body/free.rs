@@ -11,7 +11,7 @@
 //!                      + 1/2 Omega . I_G Omega + sum_j F_j . R_a exp([theta]) xi'_j ]   (B5)
 //! ```
 //!
-//! (Omega = J_r(theta) theta_dot (B9), F = sum_j F_j, xi'_j = xi_j - c the
+//! (Omega = J_r(theta) theta_dot (B3), F = sum_j F_j, xi'_j = xi_j - c the
 //! force's point from the centre of mass), gives the rows of the Galerkin
 //! step (M22) in the chart:
 //!
@@ -28,11 +28,11 @@
 //!
 //! ```text
 //!   dA/dr_a + p_a = 0,        dA/dr_b - m v_b = 0
-//!   dA/dtheta_a + Pi_a = 0,   dA/dtheta_b - J_r(theta_b)^T I_G J_r(theta_b) u_b = 0     (B11)
+//!   dA/dtheta_a + Pi_a = 0,   dA/dtheta_b - J_r(theta_b)^T I_G J_r(theta_b) u_b = 0     (B8)
 //!   u_a = Omega_a,   Omega_b = J_r(theta_b) u_b,   unknowns r_b, v_b, theta_b, u_b
 //! ```
 //! In water the body's added mass joins T and its drag adds its virtual
-//! work ([`super::terms`], (B12)-(B13)). The integrand at a time point
+//! work ([`super::terms`], (B9)-(B10)). The integrand at a time point
 //! is a function of v_G, theta and theta_dot, evaluated on jets
 //! ([`super::jet`]) and carried to the slots by the chain rule: the rows'
 //! exact Jacobian. The linear
@@ -93,7 +93,7 @@ const P2_UNKNOWNS: [usize; 4] = [2, 3, 6, 7];
 const P2_ROWS: [usize; 4] = [0, 2, 4, 6];
 
 /// One rigid body moving freely under constant forces and, in water, its
-/// drag and added mass, stepped by (B6)-(B7) or (B11).
+/// drag and added mass, stepped by (B6)-(B7) or (B8).
 #[derive(Clone, Debug)]
 pub struct FreeBody {
     inertia: RigidInertia,
@@ -180,7 +180,7 @@ impl FreeBody {
         self
     }
 
-    /// The same body in water: its drag and added mass (B12)-(B13).
+    /// The same body in water: its drag and added mass (B9)-(B10).
     pub fn with_water(mut self, water: BodyWater) -> Self {
         self.water = Some(water);
         self.momenta_from_rates();
@@ -232,7 +232,7 @@ impl FreeBody {
             rotate(&self.rotation, self.body_momentum),
         )
     }
-    /// Kinetic energy (B12) (with the added mass's) and the potential of
+    /// Kinetic energy (B9) (with the added mass's) and the potential of
     /// the constant forces, `-sum_j F_j . x(xi_j)`.
     pub fn energies(&self) -> (f64, f64) {
         let kinetic = self
@@ -312,7 +312,7 @@ impl FreeBody {
         Ok(())
     }
 
-    /// (B5) and (B13) over the slab: the action's gradient plus the drag's
+    /// (B5) and (B10) over the slab: the action's gradient plus the drag's
     /// virtual work, per slot, and their derivatives. `slots` holds the
     /// eight blocks (the centre's from r_a).
     fn slab_rows(&self, slots: &[[f64; 3]; 8]) -> SlabRows {
@@ -400,7 +400,7 @@ impl FreeBody {
         (r, jac)
     }
 
-    /// The P2 rows (B11) at x = [r_b - r_a, v_b, theta_b, u_b] and their
+    /// The P2 rows (B8) at x = [r_b - r_a, v_b, theta_b, u_b] and their
     /// exact Jacobian (row-major, 12 x 12): the end slopes are the carried
     /// rates (u_a = Omega_a, J_r(0) = I; u_b = J_r(theta_b)^-1 Omega_b),
     /// the end momenta the kinetic energy's gradient in the end's rates.
@@ -426,7 +426,7 @@ impl FreeBody {
         (r, jac)
     }
 
-    /// One step of (B6)-(B7) (Galerkin) or (B11) (P2).
+    /// One step of (B6)-(B7) (Galerkin) or (B8) (P2).
     pub fn step(&mut self) -> Result<(), SolverError> {
         let dt = self.slab.dt;
         let (v_g, omega) = (self.velocity, self.body_rate);

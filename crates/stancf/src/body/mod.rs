@@ -13,10 +13,10 @@
 //! |---|---|
 //! | [`inertia`] | mass, centre of mass and inertia tensor; what no body has is refused (B2) |
 //! | [`pose`] | points of a body (B1), MoorDyn's angles |
-//! | [`rotation`] | the exponential (B10) and the body rate (B9) of a rotation vector |
+//! | [`rotation`] | the exponential (B4) and the body rate (B3) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
-//! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B12)-(B13) |
-//! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B11) |
+//! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B9)-(B10) |
+//! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B8) |
 
 pub mod free;
 pub mod inertia;

@@ -4,9 +4,9 @@
 //!
 //! ```text
 //!   Omega = J_r(theta) theta_dot,
-//!   J_r(theta) = I - f_1(s) [theta] + f_2(s) [theta]^2,   s = |theta|^2           (B9)
+//!   J_r(theta) = I - f_1(s) [theta] + f_2(s) [theta]^2,   s = |theta|^2           (B3)
 //!   f_0(s) = sin x / x,  f_1(s) = (1 - cos x) / x^2,  f_2(s) = (x - sin x) / x^3,  x = sqrt(s)
-//!   exp([theta]) = I + f_0(s) [theta] + f_1(s) [theta]^2                          (B10)
+//!   exp([theta]) = I + f_0(s) [theta] + f_1(s) [theta]^2                          (B4)
 //! ```
 //!
 //! The f_k are entire functions of s = |theta|^2,
@@ -20,7 +20,7 @@ use super::jet::{cross, Jet, JetVec};
 /// the first.
 const TERMS: usize = 24;
 
-/// f_k(s) and its first two derivatives in s (B9)-(B10): the sums of
+/// f_k(s) and its first two derivatives in s (B3)-(B4): the sums of
 /// `c_j s^j`, `c_j j s^(j-1)` and `c_j j (j-1) s^(j-2)`,
 /// `c_j = (-1)^j / (2 j + k + 1)!`.
 pub fn series(k: usize, s: f64) -> (f64, f64, f64) {
@@ -46,7 +46,7 @@ fn series_jet<const N: usize>(k: usize, s: Jet<N>) -> Jet<N> {
     s.compose(f, df, d2f)
 }
 
-/// (B9): the angular velocity in body axes of R_a exp([theta]) moving
+/// (B3): the angular velocity in body axes of R_a exp([theta]) moving
 /// at theta_dot, on jets.
 pub fn body_rate<const N: usize>(theta: &JetVec<N>, theta_dot: &JetVec<N>) -> JetVec<N> {
     let s = super::jet::dot(theta, theta);
@@ -70,13 +70,13 @@ fn combine(a: f64, b: f64, theta: [f64; 3]) -> [[f64; 3]; 3] {
     })
 }
 
-/// (B10): exp([theta]).
+/// (B4): exp([theta]).
 pub fn exp_map(theta: [f64; 3]) -> [[f64; 3]; 3] {
     let s = crate::vec3::dot(theta, theta);
     combine(series(0, s).0, series(1, s).0, theta)
 }
 
-/// J_r(theta) of (B9).
+/// J_r(theta) of (B3).
 pub fn right_jacobian(theta: [f64; 3]) -> [[f64; 3]; 3] {
     let s = crate::vec3::dot(theta, theta);
     combine(-series(1, s).0, series(2, s).0, theta)
@@ -115,7 +115,7 @@ mod tests {
         }
     }
 
-    /// (B9) is R^T R_dot of (B10) along a path theta(t), by central
+    /// (B3) is R^T R_dot of (B4) along a path theta(t), by central
     /// differences, and exp is a rotation.
     #[test]
     fn the_body_rate_is_the_derivative_of_the_exponential() {

@@ -6,9 +6,9 @@
 //! derivatives to the step's rows.
 //!
 //! ```text
-//!   T = m/2 |v_G|^2 + 1/2 Omega . I_G Omega + 1/2 u . A u,            (B5), (B12)
+//!   T = m/2 |v_G|^2 + 1/2 Omega . I_G Omega + 1/2 u . A u,            (B5), (B9)
 //!   u = R^T (v_ref - U) = R^T (v_G - U) + c x Omega,   A = rho V diag(Ca)
-//!   f = 1/2 rho diag(CdA) u_r |u_r|,   u_r = -u,    M = -1/2 rho diag(CdA_r) Omega |Omega|   (B13)
+//!   f = 1/2 rho diag(CdA) u_r |u_r|,   u_r = -u,    M = -1/2 rho diag(CdA_r) Omega |Omega|   (B10)
 //!   Q_r = R f,   Q_theta = J_r(theta)^T (f x c + M)
 //! ```
 //!
@@ -53,7 +53,7 @@ fn constant(v: [f64; 3]) -> JetVec<NV> {
     v.map(Jet::constant)
 }
 
-/// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B10).
+/// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B4).
 fn turn(theta: &JetVec<NV>, v: &JetVec<NV>, sign: f64) -> JetVec<NV> {
     let s = dot(theta, theta);
     let (f0, d0, dd0) = series(0, s.v);
@@ -84,7 +84,7 @@ fn length(x: &JetVec<NV>) -> Jet<NV> {
 }
 
 impl Context<'_> {
-    /// Omega and u of (B12) (body axes).
+    /// Omega and u of (B9) (body axes).
     fn rates(&self, v: &[JetVec<NV>; 3]) -> (JetVec<NV>, JetVec<NV>) {
         let [v_g, theta, theta_dot] = v;
         let omega = body_rate(theta, theta_dot);
@@ -97,7 +97,7 @@ impl Context<'_> {
         (omega, u)
     }
 
-    /// The kinetic energy T of (B12).
+    /// The kinetic energy T of (B9).
     pub fn kinetic(&self, v: &[JetVec<NV>; 3]) -> Jet<NV> {
         let (omega, u) = self.rates(v);
         let mut t = dot(&v[0], &v[0]).scale(0.5 * self.mass)
@@ -123,7 +123,7 @@ impl Context<'_> {
         density
     }
 
-    /// The drag's generalized forces (B13): on r_G (global) and on theta.
+    /// The drag's generalized forces (B10): on r_G (global) and on theta.
     pub fn drag(&self, v: &[JetVec<NV>; 3]) -> Option<(JetVec<NV>, JetVec<NV>)> {
         let w = self.water?;
         let (omega, u) = self.rates(v);
@@ -137,7 +137,7 @@ impl Context<'_> {
         });
         let f_x_c = cross(&f, &constant(self.centre_of_mass));
         let on_eta: JetVec<NV> = std::array::from_fn(|i| f_x_c[i] + moment[i]);
-        // J_r^T q is (B9) at -theta.
+        // J_r^T q is (B3) at -theta.
         let minus_theta = v[1].map(|t| -t);
         let on_theta = body_rate(&minus_theta, &on_eta);
         let start_axes = turn(&v[1], &f, 1.0);
@@ -150,7 +150,7 @@ impl Context<'_> {
 mod tests {
     use super::*;
 
-    /// The drag's generalized forces (B13) do the drag's power: with the
+    /// The drag's generalized forces (B10) do the drag's power: with the
     /// start's chart (theta = 0, J_r = I), Q_r . v_G + Q_theta . Omega =
     /// f . u_ref + M . Omega, u_ref the reference point's velocity in body
     /// axes, the force f acting at the reference point, off the centre.
@@ -183,7 +183,7 @@ mod tests {
         let power_q: f64 = (0..3)
             .map(|i| q_r[i].v * v_g[i] + q_theta[i].v * omega[i])
             .sum();
-        // The same from the forces: u = R^T (v_G - U) + c x Omega (B12).
+        // The same from the forces: u = R^T (v_G - U) + c x Omega (B9).
         let rel = crate::vec3::sub(v_g, water.current);
         let c_x_w = crate::vec3::cross(ctx.centre_of_mass, omega);
         let u: [f64; 3] = std::array::from_fn(|i| {

@@ -189,7 +189,7 @@ fn a_sinking_spinning_body_gains_momentum_at_its_net_weight() {
     assert!(off < 1e-12, "{off}");
 }
 
-/// The P2 rows (B11) and their Jacobian, checked the same way.
+/// The P2 rows (B8) and their Jacobian, checked the same way.
 #[test]
 fn a_free_bodys_p2_jacobian_is_the_derivative_of_its_rows() {
     let inertia = RigidInertia {
@@ -323,7 +323,7 @@ fn a_body_released_in_still_water_accelerates_with_its_added_mass() {
     }
 }
 
-/// Sinking with MoorDyn's translational drag (B13) and its added mass:
+/// Sinking with MoorDyn's translational drag (B10) and its added mass:
 /// (m + m_a) v' = W - 1/2 rho CdA v |v|, so v(t) = -v_t tanh(t / tau),
 /// v_t = sqrt(2 |W| / (rho CdA)), tau = (m + m_a) v_t / |W|. The step's
 /// error at t = 4 s falls at the scheme's order (measured, of v_t:
@@ -355,7 +355,7 @@ fn a_sinking_body_approaches_its_terminal_velocity_as_the_closed_form_says() {
     }
 }
 
-/// Spinning down under MoorDyn's rotational drag (B13):
+/// Spinning down under MoorDyn's rotational drag (B10):
 /// I w' = -1/2 rho CdA_r w |w|, so w(t) = w0 / (1 + k w0 t),
 /// k = rho CdA_r / (2 I), about a principal axis, with the centre of mass
 /// off the reference point (which the spin about the centre leaves
