@@ -181,10 +181,13 @@ impl FreeBody {
     }
 
     /// The same body in water: its drag and added mass (B9)-(B10).
-    pub fn with_water(mut self, water: BodyWater) -> Self {
+    /// Refuses a density, volume or coefficient that is negative or not
+    /// finite.
+    pub fn with_water(mut self, water: BodyWater) -> Result<Self, ModelError> {
+        water.validate("body.water")?;
         self.water = Some(water);
         self.momenta_from_rates();
-        self
+        Ok(self)
     }
 
     pub fn time(&self) -> f64 {
@@ -451,6 +454,18 @@ impl FreeBody {
         self.newton(&mut x, layout)?;
         let slots = self.slots(&x);
         let theta_b = slots[6];
+        // The chart (B3)-(B4) holds a step's turn below pi (J_r is
+        // singular at 2 pi): a longer turn is a step too long for the
+        // body's rotation.
+        let turn = crate::vec3::norm(theta_b);
+        if turn > std::f64::consts::PI {
+            let mut e = self.failure(FailureKind::NotConverged, self.last_iterations, f64::NAN);
+            e.detail = format!(
+                "{}: the body turns by {turn:.3} rad in one step, more than pi; take a shorter step",
+                e.detail
+            );
+            return Err(e);
+        }
         match self.scheme {
             TimeScheme::Galerkin => {
                 let slab = self.slab_rows(&slots);
@@ -486,6 +501,7 @@ impl FreeBody {
         let scale_r = 1.0 + self.centre.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let mut pivots = vec![0usize; n];
         let mut change = f64::INFINITY;
+        let mut previous = f64::INFINITY;
         for k in 1..=MAX_ITERATIONS {
             let (mut delta, mut jac) = match self.scheme {
                 TimeScheme::Galerkin => self.galerkin_rows_and_jacobian(x),
@@ -507,9 +523,13 @@ impl FreeBody {
                 change = change.max(size.abs() / unit);
             }
             self.last_iterations = k;
-            if change <= 1e-14 {
+            // Converged: the change at round-off, or below 1e-10 and no
+            // longer halving (the round-off floor of a body whose
+            // couplings amplify the rows' round-off).
+            if change <= 1e-14 || (change <= 1e-10 && change > 0.5 * previous) {
                 return Ok(());
             }
+            previous = change;
         }
         Err(self.failure(FailureKind::NotConverged, MAX_ITERATIONS, change))
     }
@@ -521,7 +541,10 @@ impl FreeBody {
             step: (self.time / self.slab.dt).round() as usize + 1,
             residual,
             iterations,
-            detail: "free body step (B6)".into(),
+            detail: match self.scheme {
+                TimeScheme::Galerkin => "free body's Galerkin step (B6)".into(),
+                TimeScheme::P2 => "free body's P2 step (B8)".into(),
+            },
         }
     }
 }

@@ -73,9 +73,13 @@ impl RigidInertia {
             ));
         }
         let i = &self.inertia_at_centre;
+        // Tolerances relative to the tensor's size (its trace): a tensor
+        // built as R D R^T has off-diagonal pairs that differ by round-off
+        // of the whole tensor, not of themselves.
+        let scale = (i[0][0].abs() + i[1][1].abs() + i[2][2].abs()).max(f64::MIN_POSITIVE);
         for r in 0..3 {
             for c in 0..r {
-                if (i[r][c] - i[c][r]).abs() > 1e-12 * (i[r][c].abs() + i[c][r].abs()) {
+                if (i[r][c] - i[c][r]).abs() > 1e-12 * scale {
                     return Err(ModelError::invalid(
                         key,
                         "the inertia tensor is not symmetric",
@@ -89,8 +93,10 @@ impl RigidInertia {
             j[0][0] * j[1][1] - j[0][1] * j[1][0],
             determinant(&j),
         ];
-        let scale = (i[0][0].abs() + i[1][1].abs() + i[2][2].abs()).max(f64::MIN_POSITIVE);
-        if minors[0] <= 0.0 || minors[1] <= 0.0 || minors[2] <= 1e-12 * scale.powi(3) {
+        // Sylvester's criterion, each leading minor against the trace to
+        // its power (a minor is a product of that many eigenvalues).
+        let tolerance = [1e-12 * scale, 1e-12 * scale.powi(2), 1e-12 * scale.powi(3)];
+        if (0..3).any(|k| minors[k] <= tolerance[k]) {
             return Err(ModelError::invalid(
                 key,
                 format!(
@@ -119,11 +125,23 @@ mod tests {
     fn moments_no_body_has_are_refused() {
         let ok = RigidInertia::principal(2.0, [0.0; 3], [1.0, 1.0, 1.9]);
         assert!(ok.validate("bodies[0]").is_ok());
-        let rod_like = RigidInertia::principal(2.0, [0.0; 3], [1.0, 1.0, 2.0]);
+        let flat_disc = RigidInertia::principal(2.0, [0.0; 3], [1.0, 1.0, 2.0]);
         assert!(
-            rod_like.validate("bodies[0]").is_err(),
+            flat_disc.validate("bodies[0]").is_err(),
             "a flat disc has no thickness"
         );
+        // A principal tensor turned, R D R^T: symmetric to round-off only.
+        let r = crate::body::pose::rotation_from_moordyn_angles([33.0, -71.0, 12.5]);
+        let d = [1.3, 1.7, 2.1];
+        let turned: [[f64; 3]; 3] = std::array::from_fn(|a| {
+            std::array::from_fn(|b| (0..3).map(|k| r[a][k] * d[k] * r[b][k]).sum())
+        });
+        let body = RigidInertia {
+            mass: 2.0,
+            centre_of_mass: [0.0; 3],
+            inertia_at_centre: turned,
+        };
+        assert!(body.validate("bodies[0]").is_ok());
         let bad = RigidInertia::principal(2.0, [0.0; 3], [1.0, 1.0, 3.0]);
         let e = bad.validate("bodies[0]").unwrap_err();
         assert!(e.to_string().contains("less than the sum"), "{e}");

@@ -36,6 +36,38 @@ pub struct BodyWater {
     pub current: [f64; 3],
 }
 
+impl BodyWater {
+    /// Refuses a density, volume or coefficient that is negative or not
+    /// finite, naming it.
+    pub fn validate(&self, key: &str) -> Result<(), crate::error::ModelError> {
+        let named = [
+            ("density", vec![self.density]),
+            ("volume", vec![self.volume]),
+            (
+                "added_mass_coefficients",
+                self.added_mass_coefficients.to_vec(),
+            ),
+            ("drag_areas", self.drag_areas.to_vec()),
+            ("rotational_drag_areas", self.rotational_drag_areas.to_vec()),
+        ];
+        for (name, values) in named {
+            if values.iter().any(|v| !(v.is_finite() && *v >= 0.0)) {
+                return Err(crate::error::ModelError::invalid(
+                    format!("{key}.{name}"),
+                    format!("{values:?}: must be finite and not negative"),
+                ));
+            }
+        }
+        if self.current.iter().any(|v| !v.is_finite()) {
+            return Err(crate::error::ModelError::invalid(
+                format!("{key}.current"),
+                "must be finite",
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// What the terms need of the body and the step.
 pub struct Context<'a> {
     pub mass: f64,
@@ -150,13 +182,14 @@ impl Context<'_> {
 mod tests {
     use super::*;
 
-    /// The drag's generalized forces (B10) do the drag's power: with the
-    /// start's chart (theta = 0, J_r = I), Q_r . v_G + Q_theta . Omega =
-    /// f . u_ref + M . Omega, u_ref the reference point's velocity in body
-    /// axes, the force f acting at the reference point, off the centre.
+    /// The drag's generalized forces (B10) do the drag's power, at a point
+    /// of the chart away from the step's start (theta != 0, so J_r^T and
+    /// the turned moment arm count): Q_r . v_G + Q_theta . theta_dot =
+    /// f . v_ref + M . Omega, the force f acting at the reference point,
+    /// off the centre.
     #[test]
     fn the_drags_generalized_forces_do_the_drags_power() {
-        let rotation = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
+        let rotation_a = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
         let water = BodyWater {
             density: 1025.0,
             volume: 0.7,
@@ -169,20 +202,27 @@ mod tests {
             mass: 800.0,
             inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
             centre_of_mass: [0.3, -0.4, 0.5],
-            rotation_a: &rotation,
+            rotation_a: &rotation_a,
             loads: &[],
             water: Some(&water),
         };
-        let (v_g, omega) = ([0.7, -0.3, 0.4], [0.2, 0.5, -0.6]);
+        // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r
+        // theta_dot; the power is Q_r . v_G + Q_theta . theta_dot.
+        let (v_g, theta, theta_dot) = ([0.7, -0.3, 0.4], [0.3, -0.5, 0.8], [0.2, 0.5, -0.6]);
         let vars: [JetVec<NV>; 3] = [
             v_g.map(Jet::constant),
-            [0.0; 3].map(Jet::constant),
-            omega.map(Jet::constant),
+            theta.map(Jet::constant),
+            theta_dot.map(Jet::constant),
         ];
         let (q_r, q_theta) = ctx.drag(&vars).unwrap();
         let power_q: f64 = (0..3)
-            .map(|i| q_r[i].v * v_g[i] + q_theta[i].v * omega[i])
+            .map(|i| q_r[i].v * v_g[i] + q_theta[i].v * theta_dot[i])
             .sum();
+        let turned = crate::vec3::mat3_mul(&rotation_a, &crate::body::rotation::exp_map(theta));
+        let rotation = turned;
+        let jr = crate::body::rotation::right_jacobian(theta);
+        let omega: [f64; 3] =
+            std::array::from_fn(|i| (0..3).map(|k| jr[i][k] * theta_dot[k]).sum());
         // The same from the forces: u = R^T (v_G - U) + c x Omega (B9).
         let rel = crate::vec3::sub(v_g, water.current);
         let c_x_w = crate::vec3::cross(ctx.centre_of_mass, omega);
