@@ -49,8 +49,7 @@ pub fn moordyn_angles(r: &[[f64; 3]; 3]) -> [f64; 3] {
 /// Newton iteration, `R (3 I - R^T R) / 2`: an R off orthonormal by e
 /// (round-off of a product of steps) comes back to e^2.
 pub fn reorthonormalized(r: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    let rt: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| r[j][i]));
-    let rtr = mat3_mul(&rt, r);
+    let rtr = mat3_mul(&crate::vec3::mat3_transpose(r), r);
     let c: [[f64; 3]; 3] = std::array::from_fn(|i| {
         std::array::from_fn(|j| 0.5 * (if i == j { 3.0 } else { 0.0 } - rtr[i][j]))
     });

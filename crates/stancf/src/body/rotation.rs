@@ -153,10 +153,7 @@ mod tests {
         for i in 0..3 {
             assert!((rate[i].v - omega[i]).abs() < 1e-14);
         }
-        let rrt = crate::vec3::mat3_mul(
-            &r,
-            &std::array::from_fn(|i| std::array::from_fn(|j| r[j][i])),
-        );
+        let rrt = crate::vec3::mat3_mul(&r, &crate::vec3::mat3_transpose(&r));
         for i in 0..3 {
             for j in 0..3 {
                 let e = if i == j { 1.0 } else { 0.0 };

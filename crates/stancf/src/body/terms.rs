@@ -101,10 +101,6 @@ fn times(a: &[[f64; 3]; 3], x: &JetVec<NV>) -> JetVec<NV> {
     std::array::from_fn(|r| x[0].scale(a[r][0]) + x[1].scale(a[r][1]) + x[2].scale(a[r][2]))
 }
 
-fn transpose(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
-    std::array::from_fn(|i| std::array::from_fn(|j| a[j][i]))
-}
-
 /// |x| on jets, with zero derivatives at x = 0 (where x |x| has them).
 fn length(x: &JetVec<NV>) -> Jet<NV> {
     let s = dot(x, x);
@@ -122,7 +118,7 @@ impl Context<'_> {
         let omega = body_rate(theta, theta_dot);
         let current = self.water.map_or([0.0; 3], |w| w.current);
         let relative: JetVec<NV> = std::array::from_fn(|i| v_g[i] - Jet::constant(current[i]));
-        let start_axes = times(&transpose(self.rotation_a), &relative);
+        let start_axes = times(&crate::vec3::mat3_transpose(self.rotation_a), &relative);
         let body_axes = turn(theta, &start_axes, -1.0);
         let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
         let u = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);

@@ -33,50 +33,6 @@ fn euler_closed_form(t: f64) -> [f64; 3] {
     [t.cos(), -t.sin(), 2.0]
 }
 
-/// The step's Jacobian is the derivative of its rows (B6), checked by
-/// central differences at an iterate away from the solution, with a force
-/// off the centre of mass (its torque turns with the body).
-#[test]
-fn a_free_bodys_step_jacobian_is_the_derivative_of_its_rows() {
-    let inertia = RigidInertia {
-        mass: 2.5,
-        centre_of_mass: [0.3, -0.2, 0.6],
-        inertia_at_centre: [[2.0, 0.1, 0.0], [0.1, 1.6, -0.2], [0.0, -0.2, 1.2]],
-    };
-    let mut forces = BodyForces::weight_and_buoyancy(&inertia, 0.001, 1025.0, [0.0, 0.0, -9.81]);
-    forces.forces.push(([3.0, -1.0, 2.0], [1.0, 0.5, -0.7]));
-    let b = FreeBody::new(
-        &inertia,
-        &forces,
-        [0.0; 3],
-        &rotation_from_moordyn_angles([5.0, 10.0, 15.0]),
-        [0.1, 0.2, 0.3],
-        [0.5, -0.4, 0.9],
-        0.05,
-    )
-    .unwrap();
-    let x: [f64; 18] = std::array::from_fn(|i| ((i * 13 + 5) % 17) as f64 * 0.07 - 0.5);
-    let (_, jac) = b.galerkin_rows_and_jacobian(&x);
-    let h = 1e-6;
-    let mut worst = 0.0f64;
-    for c in 0..18 {
-        let (mut up, mut down) = (x, x);
-        up[c] += h;
-        down[c] -= h;
-        let (ru, rd) = (
-            b.galerkin_rows_and_jacobian(&up).0,
-            b.galerkin_rows_and_jacobian(&down).0,
-        );
-        for r in 0..18 {
-            let fd = (ru[r] - rd[r]) / (2.0 * h);
-            worst = worst.max((fd - jac[r * 18 + c]).abs() / (1.0 + fd.abs()));
-        }
-    }
-    // Central differences of smooth rows: error ~h^2 |r'''| ~ 1e-12 plus
-    // round-off eps |r| / h ~ 1e-10.
-    assert!(worst < 1e-8, "largest difference {worst:e}");
-}
-
 /// Over 6 s (about one precession of the spin axis in the body, whose
 /// rate is (I_3 - I_1)/I_1 w_3 = -1 rad/s) the rate in the body's axes
 /// follows Euler's closed form at the Galerkin step's sixth order
@@ -187,47 +143,6 @@ fn a_sinking_spinning_body_gains_momentum_at_its_net_weight() {
     // Measured 3e-14 m: the centre's rows are a free point's (M31), exact
     // for a parabola.
     assert!(off < 1e-12, "{off}");
-}
-
-/// The P2 rows (B8) and their Jacobian, checked the same way.
-#[test]
-fn a_free_bodys_p2_jacobian_is_the_derivative_of_its_rows() {
-    let inertia = RigidInertia {
-        mass: 2.5,
-        centre_of_mass: [0.3, -0.2, 0.6],
-        inertia_at_centre: [[2.0, 0.1, 0.0], [0.1, 1.6, -0.2], [0.0, -0.2, 1.2]],
-    };
-    let mut forces = BodyForces::weight_and_buoyancy(&inertia, 0.001, 1025.0, [0.0, 0.0, -9.81]);
-    forces.forces.push(([3.0, -1.0, 2.0], [1.0, 0.5, -0.7]));
-    let b = FreeBody::new(
-        &inertia,
-        &forces,
-        [0.0; 3],
-        &rotation_from_moordyn_angles([5.0, 10.0, 15.0]),
-        [0.1, 0.2, 0.3],
-        [0.5, -0.4, 0.9],
-        0.05,
-    )
-    .unwrap()
-    .with_scheme(TimeScheme::P2);
-    let x: [f64; 12] = std::array::from_fn(|i| ((i * 13 + 5) % 17) as f64 * 0.07 - 0.5);
-    let (_, jac) = b.p2_rows_and_jacobian(&x);
-    let h = 1e-6;
-    let mut worst = 0.0f64;
-    for c in 0..12 {
-        let (mut up, mut down) = (x, x);
-        up[c] += h;
-        down[c] -= h;
-        let (ru, rd) = (
-            b.p2_rows_and_jacobian(&up).0,
-            b.p2_rows_and_jacobian(&down).0,
-        );
-        for r in 0..12 {
-            let fd = (ru[r] - rd[r]) / (2.0 * h);
-            worst = worst.max((fd - jac[r * 12 + c]).abs() / (1.0 + fd.abs()));
-        }
-    }
-    assert!(worst < 1e-8, "largest difference {worst:e}");
 }
 
 /// The top of the Galerkin test stepped by P2: fourth order (P2's, §4.7:
@@ -395,6 +310,84 @@ fn a_spinning_body_slows_as_the_closed_form_of_its_rotational_drag_says() {
     assert!(orders.iter().all(|&o| o > 5.5), "{errors:?}");
 }
 
+/// A step's rows and their Jacobian (row-major) at the unknowns.
+type RowsAndJacobian = (Vec<f64>, Vec<f64>);
+
+/// The Jacobian of a scheme's rows at x by central differences (row-major).
+fn central_differences(rows: &dyn Fn(&[f64]) -> RowsAndJacobian, x: &[f64]) -> Vec<f64> {
+    let n = x.len();
+    let h = 1e-6;
+    let mut fd = vec![0.0; n * n];
+    for c in 0..n {
+        let (mut up, mut down) = (x.to_vec(), x.to_vec());
+        up[c] += h;
+        down[c] -= h;
+        let (ru, rd) = (rows(&up).0, rows(&down).0);
+        for r in 0..n {
+            fd[r * n + c] = (ru[r] - rd[r]) / (2.0 * h);
+        }
+    }
+    fd
+}
+
+/// The rows of `scheme` of body `b` as a function of the unknowns, and an
+/// iterate away from the solution.
+fn rows_of(
+    b: &FreeBody,
+    scheme: TimeScheme,
+) -> (impl Fn(&[f64]) -> RowsAndJacobian + '_, Vec<f64>) {
+    let n = if scheme == TimeScheme::Galerkin {
+        18
+    } else {
+        12
+    };
+    let x = (0..n)
+        .map(|i| ((i * 13 + 5) % 17) as f64 * 0.07 - 0.5)
+        .collect();
+    let rows = move |x: &[f64]| match scheme {
+        TimeScheme::Galerkin => b.galerkin_rows_and_jacobian(x),
+        TimeScheme::P2 => b.p2_rows_and_jacobian(x),
+    };
+    (rows, x)
+}
+
+/// Each scheme's Jacobian is the derivative of its rows ((B6), (B8)),
+/// checked by central differences at an iterate away from the solution,
+/// with a full inertia tensor and a force off the centre of mass (its
+/// torque turns with the body). Central differences of smooth rows err
+/// by ~h^2 |r'''| ~ 1e-12 plus round-off eps |r| / h ~ 1e-10.
+#[test]
+fn a_free_bodys_jacobian_is_the_derivative_of_its_rows_in_both_schemes() {
+    let inertia = RigidInertia {
+        mass: 2.5,
+        centre_of_mass: [0.3, -0.2, 0.6],
+        inertia_at_centre: [[2.0, 0.1, 0.0], [0.1, 1.6, -0.2], [0.0, -0.2, 1.2]],
+    };
+    let mut forces = BodyForces::weight_and_buoyancy(&inertia, 0.001, 1025.0, [0.0, 0.0, -9.81]);
+    forces.forces.push(([3.0, -1.0, 2.0], [1.0, 0.5, -0.7]));
+    for scheme in [TimeScheme::Galerkin, TimeScheme::P2] {
+        let b = FreeBody::new(
+            &inertia,
+            &forces,
+            [0.0; 3],
+            &rotation_from_moordyn_angles([5.0, 10.0, 15.0]),
+            [0.1, 0.2, 0.3],
+            [0.5, -0.4, 0.9],
+            0.05,
+        )
+        .unwrap()
+        .with_scheme(scheme);
+        let (rows, x) = rows_of(&b, scheme);
+        let (_, jac) = rows(&x);
+        let fd = central_differences(&rows, &x);
+        let worst = fd
+            .iter()
+            .zip(&jac)
+            .fold(0.0f64, |m, (f, j)| m.max((f - j).abs() / (1.0 + f.abs())));
+        assert!(worst < 1e-8, "{scheme:?}: largest difference {worst:e}");
+    }
+}
+
 /// The rows with drag, added mass and a current, for both schemes,
 /// against central differences, at an offset centre of mass and a
 /// turned start.
@@ -418,34 +411,17 @@ fn a_body_in_water_has_the_exact_jacobian_in_both_schemes() {
         .with_scheme(scheme)
         .with_water(w.clone())
         .unwrap();
-        let n = if scheme == TimeScheme::Galerkin {
-            18
-        } else {
-            12
-        };
-        let rows = |x: &[f64]| match scheme {
-            TimeScheme::Galerkin => b.galerkin_rows_and_jacobian(x),
-            TimeScheme::P2 => b.p2_rows_and_jacobian(x),
-        };
-        let x: Vec<f64> = (0..n)
-            .map(|i| ((i * 13 + 5) % 17) as f64 * 0.07 - 0.5)
-            .collect();
+        let (rows, x) = rows_of(&b, scheme);
+        let n = x.len();
         let (_, jac) = rows(&x);
+        let fd = central_differences(&rows, &x);
         // Each row's scale: its largest derivative (the mass rows' m C is
         // 2e4 here, and central differences lose eps |r| / h of it).
-        let row_scale: Vec<f64> = (0..n)
-            .map(|r| (0..n).fold(1.0f64, |m, c| m.max(jac[r * n + c].abs())))
-            .collect();
-        let h = 1e-6;
         let mut worst = 0.0f64;
-        for c in 0..n {
-            let (mut up, mut down) = (x.clone(), x.clone());
-            up[c] += h;
-            down[c] -= h;
-            let (ru, rd) = (rows(&up).0, rows(&down).0);
-            for r in 0..n {
-                let fd = (ru[r] - rd[r]) / (2.0 * h);
-                worst = worst.max((fd - jac[r * n + c]).abs() / row_scale[r]);
+        for r in 0..n {
+            let scale = (0..n).fold(1.0f64, |m, c| m.max(jac[r * n + c].abs()));
+            for c in 0..n {
+                worst = worst.max((fd[r * n + c] - jac[r * n + c]).abs() / scale);
             }
         }
         eprintln!("{scheme:?}: largest difference {worst:e} of the row's scale");
