@@ -98,6 +98,31 @@ pub fn momentum(model: &Model, state: &State) -> (f64, [f64; 3], [f64; 3]) {
     (mass, p, s)
 }
 
+/// Angular momentum about the origin, int rho A r x r_dot dx: with r and
+/// r_dot interpolated by the same shape functions, the consistent mass
+/// matrix gives it exactly, sum_ab M_ab e_a x v_b (docs/method.md §2.1).
+pub fn angular_momentum(model: &Model, state: &State) -> [f64; 3] {
+    let dpn = model.dofs_per_node();
+    let mut l = [0.0; 3];
+    crate::with_elements!(&model.mesh, els => {
+        for (k, el) in els.iter().enumerate() {
+            for (a, row) in el.mass.iter().enumerate() {
+                let oa = coordinate(dpn, k, a, 0);
+                let e = [state.e[oa], state.e[oa + 1], state.e[oa + 2]];
+                for (b, &m_ab) in row.iter().enumerate() {
+                    let ob = coordinate(dpn, k, b, 0);
+                    let v = [state.v[ob], state.v[ob + 1], state.v[ob + 2]];
+                    let exv = crate::vec3::cross(e, v);
+                    for i in 0..3 {
+                        l[i] += m_ab * exv[i];
+                    }
+                }
+            }
+        }
+    });
+    l
+}
+
 /// Centre of mass.
 pub fn center_of_mass(model: &Model, state: &State) -> [f64; 3] {
     let (m, _, s) = momentum(model, state);

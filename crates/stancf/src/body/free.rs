@@ -454,9 +454,36 @@ impl FreeBody {
         self.newton(&mut x, layout)?;
         let slots = self.slots(&x);
         let theta_b = slots[6];
-        // The chart (B3)-(B4) holds a step's turn below pi (J_r is
-        // singular at 2 pi): a longer turn is a step too long for the
-        // body's rotation.
+        match self.scheme {
+            TimeScheme::Galerkin => {
+                let (p, dtheta) = self.galerkin_end_gradient(&x);
+                // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
+                let pi = solve_transposed(&right_jacobian(theta_b), dtheta)
+                    .ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, f64::NAN))?;
+                self.advance(&x)?;
+                self.momentum = p;
+                self.body_momentum = pi;
+                self.rates_from_momenta()?;
+            }
+            TimeScheme::P2 => {
+                self.advance(&x)?;
+                self.velocity = slots[3];
+                self.body_rate = rotate(&right_jacobian(theta_b), slots[7]);
+                self.momenta_from_rates();
+            }
+        }
+        Ok(())
+    }
+
+    /// Moves the body to the end of the step whose unknowns are x (the
+    /// centre by r_b - r_a, the rotation to R_a exp([theta_b]), brought
+    /// back to orthonormal) and its clock on; the rates are the caller's
+    /// to set. The chart (B3)-(B4) holds a step's turn below pi (J_r is
+    /// singular at 2 pi): a longer turn is refused as a step too long for
+    /// the body's rotation.
+    pub fn advance(&mut self, x: &[f64]) -> Result<(), SolverError> {
+        let slots = self.slots(x);
+        let theta_b = slots[6];
         let turn = crate::vec3::norm(theta_b);
         if turn > std::f64::consts::PI {
             let mut e = self.failure(FailureKind::NotConverged, self.last_iterations, f64::NAN);
@@ -466,29 +493,62 @@ impl FreeBody {
             );
             return Err(e);
         }
-        match self.scheme {
-            TimeScheme::Galerkin => {
-                let slab = self.slab_rows(&slots);
-                self.momentum = part(&slab.rows, 6);
-                // Pi_b solves J_r(theta_b)^T Pi_b = dA/dtheta_b.
-                self.body_momentum =
-                    solve_transposed(&right_jacobian(theta_b), part(&slab.rows, 18))
-                        .ok_or_else(|| self.failure(FailureKind::SingularJacobian, 0, f64::NAN))?;
-            }
-            TimeScheme::P2 => {
-                self.velocity = slots[3];
-                self.body_rate = rotate(&right_jacobian(theta_b), slots[7]);
-            }
-        }
         self.centre = add(self.centre, slots[2]);
         self.rotation =
             pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(theta_b)));
-        match self.scheme {
-            TimeScheme::Galerkin => self.rates_from_momenta()?,
-            TimeScheme::P2 => self.momenta_from_rates(),
-        }
-        self.time += dt;
+        self.time += self.slab.dt;
         Ok(())
+    }
+
+    /// The Galerkin step's end gradients at its unknowns x: dA/dr_b (the
+    /// end momentum p_b of (B7)) and dA/dtheta_b (= J_r(theta_b)^T Pi_b).
+    pub fn galerkin_end_gradient(&self, x: &[f64]) -> ([f64; 3], [f64; 3]) {
+        let slab = self.slab_rows(&self.slots(x));
+        (part(&slab.rows, 6), part(&slab.rows, 18))
+    }
+
+    /// The first guess of a Galerkin step's unknowns [w_a, r_b - r_a, w_b,
+    /// u_a, theta_b, u_b]: at the carried rates.
+    pub fn galerkin_guess(&self) -> [f64; 18] {
+        let dt = self.slab.dt;
+        let (v, w) = (self.velocity, self.body_rate);
+        let blocks = [v, scale(dt, v), v, w, scale(dt, w), w];
+        std::array::from_fn(|i| blocks[i / 3][i % 3])
+    }
+
+    /// Sets the rates v_G and Omega (body axes) and the momenta they
+    /// carry (a system's step solves them with its lines', §15.7).
+    pub fn set_rates(&mut self, velocity: [f64; 3], body_rate: [f64; 3]) {
+        self.velocity = velocity;
+        self.body_rate = body_rate;
+        self.momenta_from_rates();
+    }
+
+    /// The kinetic energy's gradient at zero rates and its Hessian in the
+    /// rates [v_G; Omega] at the current pose: [p; Pi] = g0 + H [v_G; Omega].
+    pub fn rate_hessian(&self) -> ([f64; 6], [[f64; 6]; 6]) {
+        let t = self.context(&[]).kinetic(&variables([[0.0; 3]; 3]));
+        let index = [0, 1, 2, 6, 7, 8];
+        (
+            index.map(|k| t.g[k]),
+            index.map(|a| index.map(|b| t.h[a][b])),
+        )
+    }
+
+    /// The centre of mass r_G.
+    pub fn centre(&self) -> [f64; 3] {
+        self.centre
+    }
+
+    /// The body's mass, centre of mass and inertia.
+    pub fn inertia(&self) -> &RigidInertia {
+        &self.inertia
+    }
+
+    /// Steps of `dt` from now on (a halved step).
+    pub fn set_time_step(&mut self, dt: f64) {
+        let rule = GaussRule::new(3).expect("three Gauss points");
+        self.slab = TimeSlab::new(dt, &rule);
     }
 
     /// Newton on the scheme's rows from x; `layout` says which blocks of
@@ -575,7 +635,7 @@ fn part(x: &[f64], a: usize) -> [f64; 3] {
 }
 
 /// y with A^T y = b (None if A is singular).
-fn solve_transposed(a: &[[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+pub(crate) fn solve_transposed(a: &[[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     let mut m: Vec<f64> = (0..9).map(|k| a[k % 3][k / 3]).collect();
     let mut pivots = [0usize; 3];
     dense_lu(&mut m, 3, &mut pivots).ok()?;

@@ -16,8 +16,10 @@
 //! | [`rotation`] | the exponential (B4) and the body rate (B3) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
 //! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B9)-(B10) |
+//! | [`attach`] | a point fixed to a body over a step (B11), on jets |
 //! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B8) |
 
+pub mod attach;
 pub mod free;
 pub mod inertia;
 pub mod jet;

@@ -57,6 +57,20 @@ pub fn body_rate<const N: usize>(theta: &JetVec<N>, theta_dot: &JetVec<N>) -> Je
     std::array::from_fn(|i| theta_dot[i] - f1 * t_x_td[i] + f2 * t_x_t_x_td[i])
 }
 
+/// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B4), on jets.
+pub fn turn<const N: usize>(theta: &JetVec<N>, v: &JetVec<N>, sign: f64) -> JetVec<N> {
+    let s = super::jet::dot(theta, theta);
+    let (f0, f1) = (series_jet(0, s), series_jet(1, s));
+    let t_x_v = cross(theta, v);
+    let t_x_t_x_v = cross(theta, &t_x_v);
+    std::array::from_fn(|i| v[i] + (f0 * t_x_v[i]).scale(sign) + f1 * t_x_t_x_v[i])
+}
+
+/// A x with a constant 3 x 3 matrix, on jets.
+pub fn times<const N: usize>(a: &[[f64; 3]; 3], x: &JetVec<N>) -> JetVec<N> {
+    std::array::from_fn(|r| x[0].scale(a[r][0]) + x[1].scale(a[r][1]) + x[2].scale(a[r][2]))
+}
+
 /// [v], the cross-product matrix.
 fn hat(v: [f64; 3]) -> [[f64; 3]; 3] {
     [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]]

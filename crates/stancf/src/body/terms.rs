@@ -18,7 +18,7 @@
 //! reference point moves by dr_G + R (c x eta)).
 
 use super::jet::{cross, dot, Jet, JetVec};
-use super::rotation::{body_rate, series};
+use super::rotation::{body_rate, times, turn};
 
 /// Variables at a time point: v_G (0..3), theta (3..6), theta_dot (6..9).
 pub const NV: usize = 9;
@@ -83,22 +83,6 @@ pub struct Context<'a> {
 
 fn constant(v: [f64; 3]) -> JetVec<NV> {
     v.map(Jet::constant)
-}
-
-/// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B4).
-fn turn(theta: &JetVec<NV>, v: &JetVec<NV>, sign: f64) -> JetVec<NV> {
-    let s = dot(theta, theta);
-    let (f0, d0, dd0) = series(0, s.v);
-    let (f1, d1, dd1) = series(1, s.v);
-    let (f0, f1) = (s.compose(f0, d0, dd0), s.compose(f1, d1, dd1));
-    let t_x_v = cross(theta, v);
-    let t_x_t_x_v = cross(theta, &t_x_v);
-    std::array::from_fn(|i| v[i] + (f0 * t_x_v[i]).scale(sign) + f1 * t_x_t_x_v[i])
-}
-
-/// A x with a constant 3 x 3 (or diagonal) matrix.
-fn times(a: &[[f64; 3]; 3], x: &JetVec<NV>) -> JetVec<NV> {
-    std::array::from_fn(|r| x[0].scale(a[r][0]) + x[1].scale(a[r][1]) + x[2].scale(a[r][2]))
 }
 
 /// |x| on jets, with zero derivatives at x = 0 (where x |x| has them).

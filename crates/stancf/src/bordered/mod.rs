@@ -210,6 +210,44 @@ impl BorderedMatrix {
         }
     }
 
+    /// Row `to` += w row `from`, both border rows (global indices): a
+    /// change of the border's equations (a point's rows carried to its
+    /// body's, docs/method.md §15.7). Every block that touches `from`
+    /// must touch `to`.
+    pub fn add_border_row(&mut self, to: usize, from: usize, w: f64) {
+        let (t, f) = (to - self.border_start, from - self.border_start);
+        assert!(t != f, "a border row added to itself");
+        for blk in &mut self.blocks {
+            let (kt, kf) = (blk.local_of[t], blk.local_of[f]);
+            if kf == UNTOUCHED {
+                continue;
+            }
+            assert!(kt != UNTOUCHED, "border row {to} is outside block's structure");
+            let n = blk.n;
+            for j in 0..n {
+                blk.c[kt * n + j] += w * blk.c[kf * n + j];
+            }
+        }
+        let nb = self.nb;
+        for j in 0..nb {
+            self.d[t * nb + j] += w * self.d[f * nb + j];
+        }
+    }
+
+    /// Sets border row `row` (a global index) to zero.
+    pub fn clear_border_row(&mut self, row: usize) {
+        let r = row - self.border_start;
+        for blk in &mut self.blocks {
+            let k = blk.local_of[r];
+            if k != UNTOUCHED {
+                let n = blk.n;
+                blk.c[k * n..(k + 1) * n].fill(0.0);
+            }
+        }
+        let nb = self.nb;
+        self.d[r * nb..(r + 1) * nb].fill(0.0);
+    }
+
     /// The block holding global unknown `i` (below the border) and its
     /// local index.
     #[inline]

@@ -351,3 +351,36 @@ fn borders_at_a_blocks_end_or_start_solve_like_a_dense_lu_with_pivoting() {
         solve_and_check(&mut lu, &a, seed + 20);
     }
 }
+
+/// A row operation on the border and a cleared row give the matrix a
+/// dense row operation gives.
+#[test]
+fn border_row_operations_act_on_every_block_and_the_corner() {
+    let shapes = three_blocks();
+    let nb = 7;
+    let n: usize = shapes.iter().map(|s| s.size).sum::<usize>() + nb;
+    let mut a = dense_matrix(&shapes, nb, 7);
+    // Every block touching a border row touches the others it is added
+    // to: use rows the blocks share, or whose blocks are a superset.
+    let bs = n - nb;
+    let mut m = BorderedMatrix::new(&shapes, nb);
+    fill_global(&mut m, &a);
+    let (to, from) = (bs + shapes[0].border[0], bs + shapes[0].border[1]);
+    let shares = shapes
+        .iter()
+        .all(|s| !s.border.contains(&(from - bs)) || s.border.contains(&(to - bs)));
+    assert!(shares, "the test's rows must be shared");
+    m.add_border_row(to, from, 0.75);
+    m.clear_border_row(from);
+    for j in 0..n {
+        let v = a[from][j];
+        a[to][j] += 0.75 * v;
+        a[from][j] = 0.0;
+    }
+    let got = dense_of(&m);
+    for i in 0..n {
+        for j in 0..n {
+            assert!((got[i][j] - a[i][j]).abs() < 1e-15, "({i}, {j})");
+        }
+    }
+}

@@ -53,8 +53,9 @@ impl SystemStatics {
 }
 
 impl SystemSimulation {
-    /// The system's energies: every line's ([`crate::Simulation::energies`])
-    /// and the free points' ([`add_point_energies`]).
+    /// The system's energies: every line's ([`crate::Simulation::energies`]),
+    /// the free points' ([`add_point_energies`]) and the free bodies'
+    /// (kinetic (B9), and the potential of their weight and buoyancy).
     pub fn energies(&self) -> Energies {
         let mut en = Energies::default();
         for l in &self.lines {
@@ -65,6 +66,11 @@ impl SystemSimulation {
             en.load_potential += e.load_potential;
         }
         add_point_energies(&self.topology, |p| self.point_state(p), &mut en);
+        for body in &self.bodies {
+            let (kinetic, potential) = body.body.energies();
+            en.kinetic += kinetic;
+            en.gravity += potential;
+        }
         en
     }
 

@@ -62,8 +62,12 @@ pub struct SystemLayout {
     pub maps: Vec<LineMap>,
     /// The block shapes of the bordered matrix.
     pub shapes: Vec<BlockShape>,
-    /// Border index of point p's first unknown (free points only).
+    /// Border index of point p's first unknown (free points and points
+    /// on free bodies).
     pub point_base: Vec<Option<usize>>,
+    /// Border index of body b's first unknown (free bodies only): 6 per
+    /// slot, the centre's 3 then the rotation's 3 (docs/method.md §15.7).
+    pub body_base: Vec<Option<usize>>,
     /// Unknown slots (= row slots) per coordinate.
     pub slots: usize,
     /// Unknowns of the border (3 per slot per free point).
@@ -89,17 +93,35 @@ impl SystemLayout {
         let mut point_base = vec![None; system.points().len()];
         let mut border = 0;
         for (p, pt) in system.points().iter().enumerate() {
-            if pt.is_free() {
+            if pt.is_unknown() {
                 point_base[p] = Some(border);
                 border += 3 * slots;
             }
+        }
+        let mut body_base = vec![None; system.bodies().len()];
+        for b in system.free_bodies() {
+            body_base[b] = Some(border);
+            border += 6 * slots;
         }
         let mut maps = Vec::with_capacity(lines.len());
         let mut shapes = Vec::with_capacity(lines.len());
         let mut start = 0;
         for (li, layout) in layouts.iter().enumerate() {
             let ends = system.attached_ends(li, lines[li]);
-            let (map, shape) = line_map(layout, ends, &point_base, start);
+            // A line end on a free body's point loads the body's rows
+            // (§15.7): the line's block couples with the body's unknowns.
+            let bodies: Vec<usize> = system
+                .attached_ends(li, lines[li])
+                .filter_map(|e| system.points()[e.point].body())
+                .filter_map(|b| body_base[b])
+                .flat_map(|base| base..base + 6 * slots)
+                .collect();
+            let (map, mut shape) = line_map(layout, ends, &point_base, start);
+            // The bodies' indices follow every point's, so the points'
+            // places in the sorted border (the map's) stay as they are.
+            shape.border.extend(bodies);
+            shape.border.sort_unstable();
+            shape.border.dedup();
             start += map.size;
             maps.push(map);
             shapes.push(shape);
@@ -117,6 +139,7 @@ impl SystemLayout {
             maps,
             shapes,
             point_base,
+            body_base,
             slots,
             border,
             size: border_start + border,
@@ -132,6 +155,12 @@ impl SystemLayout {
     /// point p.
     pub fn point_unknown(&self, p: usize, slot: usize, c: usize) -> Option<usize> {
         self.point_base[p].map(|b| self.border_start() + b + 3 * slot + c)
+    }
+
+    /// Global index of unknown (and row) slot s, component k of free
+    /// body b: k 0..3 its centre's, 3..6 its rotation's.
+    pub fn body_unknown(&self, b: usize, slot: usize, k: usize) -> Option<usize> {
+        self.body_base[b].map(|base| self.border_start() + base + 6 * slot + k)
     }
 }
 

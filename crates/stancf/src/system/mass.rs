@@ -18,7 +18,15 @@
 //! by 3 unknowns per free point, factorized once by block elimination
 //! ([`BorderedLu`]): M is constant (docs/method.md §2.1), unless a line has
 //! added mass, whose M_a(e_b) (W31) makes it refactorize at every step.
+//!
+//! A free body adds its rates nu = [v_G; Omega] (6 unknowns) and its
+//! kinetic energy's Hessian H; a point P on it moves with it, v_P = G_P nu,
+//! G_P = [I, -R_b [xi' x]] (B11), so P's rows (the lines' mass rows there)
+//! are carried to the body's by G_P^T and replaced by v_P - G_P nu = 0
+//! (docs/method.md §15.7, (B14)); G_P turns with the body, so M_ff is
+//! refactorized at every step.
 
+use super::body_terms::StepBody;
 use super::layout::{LineView, SystemLayout};
 use super::Topology;
 use crate::assembly::Scheme;
@@ -40,15 +48,25 @@ pub(super) struct SystemMass {
     /// Whether a line has added mass: M_ff is then M + M_a(e_b) (W31),
     /// refactorized at every step's end.
     entrained: bool,
+    /// Whether the system has a free body: M_ff is then refactorized at
+    /// every step's end (its points' G_P turn with it).
+    turning: bool,
 }
 
 impl SystemMass {
     /// Numbers and factorizes M_ff of `system` with line models `lines`.
-    pub fn new(system: &Topology, lines: &[&Model]) -> Result<Self, ModelError> {
+    pub fn new(
+        system: &Topology,
+        lines: &[&Model],
+        bodies: &[StepBody],
+    ) -> Result<Self, ModelError> {
         let layout =
             SystemLayout::new(system, lines, Scheme::Static, ConstraintMethod::Elimination);
         let mut lu = BorderedLu::new(&layout.shapes, layout.border);
         fill_mass(&mut lu, &layout, system, |i| (lines[i], None));
+        for body in bodies {
+            add_body_mass(lu.matrix_mut(), &layout, body);
+        }
         lu.factorize().map_err(|_| {
             ModelError::invalid(
                 "lines",
@@ -59,6 +77,7 @@ impl SystemMass {
         Ok(SystemMass {
             rates: vec![0.0; layout.size],
             entrained: lines.iter().any(|m| m.added_mass().is_some()),
+            turning: system.has_free_bodies(),
             layout,
             lu,
         })
@@ -66,30 +85,47 @@ impl SystemMass {
 
     /// With added mass, refills M_ff at the lines' step-end coordinates
     /// and factorizes it (after every line's [`Simulation::expand_step`]).
-    fn refactorize(&mut self, system: &Topology, lines: &[Simulation]) {
-        if !self.entrained {
-            return;
+    fn refactorize(
+        &mut self,
+        system: &Topology,
+        lines: &[Simulation],
+        bodies: &[StepBody],
+    ) -> Result<(), crate::band::SingularMatrix> {
+        if !self.entrained && !self.turning {
+            return Ok(());
         }
         self.lu.matrix_mut().clear();
         fill_mass(&mut self.lu, &self.layout, system, |i| {
-            (lines[i].model(), Some(lines[i].end_coordinates()))
+            (
+                lines[i].model(),
+                self.entrained.then(|| lines[i].end_coordinates()),
+            )
         });
-        self.lu
-            .factorize()
-            .expect("M + M_a is positive definite (Ca >= 0, validated)");
+        for body in bodies {
+            add_body_mass(self.lu.matrix_mut(), &self.layout, body);
+        }
+        self.lu.factorize()
     }
 
     /// Solves M_ff v_f = p_f from the lines' expanded steps and the free
     /// points' end momenta `point_momentum[p]` (dA_point/de_b), and sets
     /// every line's end rates (each line after its
     /// [`Simulation::expand_step`]).
+    ///
+    /// The free bodies (already moved to the step's end) take part with
+    /// `body_momentum[k]`, body k's generalized momentum less its points'
+    /// share ([`StepBody::end_momentum`]); their rates are set too. Fails
+    /// only if M_ff is singular (a free body without mass or inertia on
+    /// lines without mass).
     pub fn set_end_rates(
         &mut self,
         system: &Topology,
         lines: &mut [Simulation],
         point_momentum: &[[f64; 3]],
-    ) {
-        self.refactorize(system, lines);
+        bodies: &mut [StepBody],
+        body_momentum: &[[f64; 6]],
+    ) -> Result<(), crate::band::SingularMatrix> {
+        self.refactorize(system, lines, bodies)?;
         self.rates.fill(0.0);
         for (i, line) in lines.iter_mut().enumerate() {
             let q = line.free_end_momentum();
@@ -108,7 +144,17 @@ impl SystemMass {
                 }
             }
         }
+        for (body, momentum) in bodies.iter().zip(body_momentum) {
+            carry_body_momentum(&mut self.rates, &self.layout, body, momentum);
+        }
         self.lu.solve(&mut self.rates);
+        for body in bodies.iter_mut() {
+            let nu: [f64; 6] = std::array::from_fn(|k| {
+                self.rates[self.layout.body_unknown(body.index, 0, k).expect("free body")]
+            });
+            body.body
+                .set_rates([nu[0], nu[1], nu[2]], [nu[3], nu[4], nu[5]]);
+        }
         for (i, line) in lines.iter_mut().enumerate() {
             let numbering = &self.layout.lines[i];
             let map = &self.layout.maps[i];
@@ -121,6 +167,7 @@ impl SystemMass {
                     .map_or(0.0, |u| rates[map.global[u]])
             });
         }
+        Ok(())
     }
 
     /// v_b of free point p after [`Self::set_end_rates`].
@@ -129,6 +176,88 @@ impl SystemMass {
         Some(std::array::from_fn(|c| {
             self.rates[self.layout.point_unknown(p, 0, c).expect("free point")]
         }))
+    }
+}
+
+/// G_P of a point at `arm` from the centre of a body turned by `rotation`:
+/// v_P = G_P [v_G; Omega], G_P = [I, -R [arm x]] (B11).
+fn point_rate_map(rotation: &[[f64; 3]; 3], arm: [f64; 3]) -> [[f64; 6]; 3] {
+    std::array::from_fn(|c| {
+        std::array::from_fn(|k| {
+            if k < 3 {
+                if k == c {
+                    1.0
+                } else {
+                    0.0
+                }
+            } else {
+                // -(R [arm x])_cj = -r_c . (arm x e_j) = (arm x r_c)_j, r_c row c of R
+                let e: [f64; 3] = std::array::from_fn(|i| rotation[c][i]);
+                crate::vec3::cross(arm, e)[k - 3]
+            }
+        })
+    })
+}
+
+/// Body `body`'s share of M_ff: its points' rows carried to its own by
+/// G_P^T and replaced by v_P - G_P nu = 0, and its kinetic Hessian H.
+fn add_body_mass(m: &mut crate::bordered::BorderedMatrix, layout: &SystemLayout, body: &StepBody) {
+    let q = |k: usize| layout.body_unknown(body.index, 0, k).expect("free body");
+    let rotation = body.body.rotation();
+    for bp in &body.points {
+        let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
+        let g = point_rate_map(&rotation, bp.arm);
+        for (c, row) in g.iter().enumerate() {
+            for (k, &w) in row.iter().enumerate() {
+                if w != 0.0 {
+                    m.add_border_row(q(k), y(c), w);
+                }
+            }
+        }
+        for (c, row) in g.iter().enumerate() {
+            m.clear_border_row(y(c));
+            m.add(y(c), y(c), 1.0);
+            for (k, &w) in row.iter().enumerate() {
+                if w != 0.0 {
+                    m.add(y(c), q(k), -w);
+                }
+            }
+        }
+    }
+    let (_, h) = body.body.rate_hessian();
+    for (a, row) in h.iter().enumerate() {
+        for (b, &v) in row.iter().enumerate() {
+            m.add(q(a), q(b), v);
+        }
+    }
+}
+
+/// The right side of the body's rows: the lines' end momenta at its
+/// points carried by G_P^T (their rows become constraints, right side
+/// 0), plus the body's own `momentum` less the kinetic energy's gradient
+/// at rest g0 (a current's share, (B9)).
+fn carry_body_momentum(
+    rates: &mut [f64],
+    layout: &SystemLayout,
+    body: &StepBody,
+    momentum: &[f64; 6],
+) {
+    let q = |k: usize| layout.body_unknown(body.index, 0, k).expect("free body");
+    let rotation = body.body.rotation();
+    for bp in &body.points {
+        let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
+        let g = point_rate_map(&rotation, bp.arm);
+        for (c, row) in g.iter().enumerate() {
+            let raw = rates[y(c)];
+            for (k, &w) in row.iter().enumerate() {
+                rates[q(k)] += w * raw;
+            }
+            rates[y(c)] = 0.0;
+        }
+    }
+    let (g0, _) = body.body.rate_hessian();
+    for k in 0..6 {
+        rates[q(k)] += momentum[k] - g0[k];
     }
 }
 

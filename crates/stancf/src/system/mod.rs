@@ -25,6 +25,8 @@
 
 mod apart;
 mod balance;
+mod bodies;
+mod body_terms;
 mod end_forces;
 mod energy;
 mod halving;
@@ -43,6 +45,7 @@ mod stepping;
 mod topology;
 
 pub use balance::{balanced_points, static_seed_states};
+pub use bodies::{Body, BodyKind};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
@@ -81,6 +84,10 @@ pub enum PointKind {
     /// Moved along a given motion (a fairlead): an oscillation about its
     /// position (M30) or a table (M39).
     Coupled(CoupledMotion),
+    /// Fixed on body `body` at `local` (body axes, from its reference
+    /// point; docs/method.md §15.7). On a fixed body it becomes a fixed
+    /// point; on a free body it moves with the body (B11).
+    Body { body: usize, local: [f64; 3] },
 }
 
 /// A point of a system.
@@ -132,8 +139,36 @@ impl Point {
         }
     }
 
+    /// A point on body `body` at `local` (body axes, from the body's
+    /// reference point); its position is set from the body's by
+    /// [`System::with_bodies`].
+    pub fn on_body(body: usize, local: [f64; 3]) -> Self {
+        Point {
+            kind: PointKind::Body { body, local },
+            position: [0.0; 3],
+            mass: 0.0,
+            force: [0.0; 3],
+            water: None,
+        }
+    }
+
     pub fn is_free(&self) -> bool {
         self.kind == PointKind::Free
+    }
+
+    /// The free body this point is on, if any.
+    pub fn body(&self) -> Option<usize> {
+        match self.kind {
+            PointKind::Body { body, .. } => Some(body),
+            _ => None,
+        }
+    }
+
+    /// Whether the point's position is an unknown of the step: a free
+    /// point, or a point on a free body (whose position follows the
+    /// body's unknowns, §15.7).
+    pub fn is_unknown(&self) -> bool {
+        self.is_free() || self.body().is_some()
     }
 
     /// Position and velocity of a fixed or coupled point at time t (a
@@ -209,6 +244,20 @@ impl System {
         points: Vec<Point>,
         gravity: [f64; 3],
     ) -> Result<Self, ModelError> {
+        Self::with_bodies(lines, points, Vec::new(), gravity)
+    }
+
+    /// [`System::new`] with rigid bodies (docs/method.md §15.7): points of
+    /// kind [`PointKind::Body`] are placed where their body puts them (on
+    /// a fixed body they become fixed points). Keys in errors also
+    /// `bodies[i]`.
+    pub fn with_bodies(
+        lines: Vec<Line>,
+        mut points: Vec<Point>,
+        bodies: Vec<Body>,
+        gravity: [f64; 3],
+    ) -> Result<Self, ModelError> {
+        bodies::place_points(&bodies, &mut points)?;
         if lines.is_empty() {
             return Err(ModelError::invalid(
                 "lines",
@@ -241,7 +290,7 @@ impl System {
                 };
                 attached[p] += 1;
                 let motion = match &point.kind {
-                    PointKind::Free => continue,
+                    PointKind::Free | PointKind::Body { .. } => continue,
                     PointKind::Fixed => CoupledMotion::NONE,
                     PointKind::Coupled(m) => m.clone(),
                 };
@@ -280,6 +329,7 @@ impl System {
         let topology = Topology {
             ends: out.iter().map(|l| l.ends).collect(),
             points,
+            bodies,
             gravity,
         };
         Ok(System {
@@ -338,7 +388,7 @@ fn check_clamps(li: usize, line: &Line, points: &[Point]) -> Result<(), ModelErr
         };
         let name = ["A", "B"][end];
         let held = match line.ends[end] {
-            End::Point(p) => !points[p].is_free(),
+            End::Point(p) => !points[p].is_unknown(),
             End::Loose => false,
         };
         if !held {

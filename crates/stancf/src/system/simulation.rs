@@ -11,10 +11,11 @@
 pub use super::end_forces::EndForce;
 use super::end_forces::ForcesAtTime;
 use super::layout::SystemLayout;
+use super::body_terms::{BodyPoint, StepBody};
 use super::mass::SystemMass;
 use super::point_terms::PointNodes;
 use super::step_equations::{system_scales, PointMotion, StepOfSystem};
-use super::{System, Topology};
+use super::{PointKind, System, Topology};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::element::TimeSlab;
 use crate::error::{ModelError, SolverError};
@@ -34,6 +35,7 @@ macro_rules! step_problem {
             layout: &$sim.layout,
             slab: &$sim.slab,
             points: &$sim.points,
+            bodies: &$sim.bodies,
             point_index: &$sim.point_index,
             point_nodes: &mut $sim.point_nodes,
             x_local: &mut $sim.x_local,
@@ -61,6 +63,12 @@ pub struct SystemSimulation {
     pub(super) settings: StepSettings,
     pub(super) slab: TimeSlab,
     pub(super) points: Vec<PointMotion>,
+    /// The free bodies and their points (docs/method.md §15.7).
+    pub(super) bodies: Vec<StepBody>,
+    /// The lines' rows at the body points' slots (a step's end, B14).
+    pub(super) body_rows: Vec<f64>,
+    /// The free bodies' generalized momenta at a step's end (B14).
+    pub(super) body_momentum: Vec<[f64; 6]>,
     /// Global indices of free point p's unknowns, `[3 slot + c]`.
     pub(super) point_index: Vec<Vec<usize>>,
     pub(super) point_nodes: Vec<PointNodes>,
@@ -107,6 +115,14 @@ impl SystemSimulation {
         }
         let t = initial[0].t;
         let (topology, models) = system.into_parts();
+        if topology.has_free_bodies() && !settings.time_scheme.carries_momentum() {
+            return Err(ModelError::invalid(
+                "analysis.scheme",
+                "a system with a free body is stepped by the Galerkin scheme; the P2 step of \
+                 bodies in a system is not built",
+            ));
+        }
+        let bodies = step_bodies(&topology, settings.time_step)?;
         let mut line_settings = settings.clone();
         // The planar reduction holds coordinates line by line; lines
         // joined at free points must hold the same ones, so it is left off.
@@ -144,14 +160,18 @@ impl SystemSimulation {
         let workspace = NewtonWorkspace::with_factors(lu, n, settings.newton.max_iterations);
         let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
-        let (unknown_scale, equation_scale) = system_scales(&topology, &lines, &layout);
+        let (unknown_scale, equation_scale) =
+            system_scales(&topology, &lines, &layout, &bodies, settings.time_step);
         let mass = if topology.has_free_points() && settings.time_scheme.carries_momentum() {
-            Some(SystemMass::new(&topology, &models)?)
+            Some(SystemMass::new(&topology, &models, &bodies)?)
         } else {
             None
         };
         Ok(SystemSimulation {
             mass,
+            body_rows: vec![0.0; n],
+            body_momentum: vec![[0.0; 6]; bodies.len()],
+            bodies,
             point_momentum: vec![[0.0; 3]; topology.points().len()],
             point_water_work: 0.0,
             step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
@@ -193,6 +213,12 @@ impl SystemSimulation {
     pub fn point_state(&self, p: usize) -> ([f64; 3], [f64; 3]) {
         let m = &self.points[p];
         (m.e, m.v)
+    }
+
+    /// Free body b's state (its pose, rates and energies); None for a
+    /// fixed body.
+    pub fn free_body(&self, b: usize) -> Option<&crate::body::FreeBody> {
+        self.bodies.iter().find(|s| s.index == b).map(|s| &s.body)
     }
 
     /// The force each end of line i exerts on its point (zero at a loose
@@ -331,8 +357,16 @@ impl SystemSimulation {
         for line in &mut self.lines {
             line.set_time_step(dt);
         }
-        (self.unknown_scale, self.equation_scale) =
-            system_scales(&self.topology, &self.lines, &self.layout);
+        for body in &mut self.bodies {
+            body.body.set_time_step(dt);
+        }
+        (self.unknown_scale, self.equation_scale) = system_scales(
+            &self.topology,
+            &self.lines,
+            &self.layout,
+            &self.bodies,
+            dt,
+        );
         self.workspace.factors_valid = false;
     }
 
@@ -352,7 +386,12 @@ fn point_motions(system: &Topology, lines: &[Simulation]) -> Result<Vec<PointMot
     let t = lines[0].state().t;
     let mut out = Vec::with_capacity(system.points().len());
     for (p, point) in system.points().iter().enumerate() {
-        let (e, v) = if point.is_free() {
+        let (e, v) = if let PointKind::Body { body, local } = point.kind {
+            let b = &system.bodies()[body];
+            let here = (b.point(local), b.point_velocity(local));
+            check_ends_on_body(system, lines, p, here)?;
+            here
+        } else if point.is_free() {
             let mut at = None;
             for (li, end) in system.attachments(p) {
                 let sim = &lines[li];
@@ -390,4 +429,74 @@ fn point_motions(system: &Topology, lines: &[Simulation]) -> Result<Vec<PointMot
         });
     }
     Ok(out)
+}
+
+/// The free bodies of `system` as a step holds them: each one's state
+/// (stepped with steps of `dt`) and its points with their arms from its
+/// centre of mass.
+fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> {
+    system
+        .free_bodies()
+        .map(|b| {
+            let body = &system.bodies()[b];
+            let state = body
+                .free_body(system.gravity(), dt)
+                .map_err(|e| e.under(&format!("bodies[{b}]")))?;
+            let c = body.inertia.centre_of_mass;
+            let points = system
+                .points()
+                .iter()
+                .enumerate()
+                .filter_map(|(p, pt)| match pt.kind {
+                    PointKind::Body { body: on, local } if on == b => Some(BodyPoint {
+                        point: p,
+                        arm: crate::vec3::sub(local, c),
+                    }),
+                    _ => None,
+                })
+                .collect();
+            Ok(StepBody {
+                index: b,
+                body: state,
+                points,
+            })
+        })
+        .collect()
+}
+
+/// The line ends at point p on a body start where the body puts the
+/// point and move with it (`here`: its position and velocity), to 1e-9
+/// of the system's size (round-off of a state written and read back).
+fn check_ends_on_body(
+    system: &Topology,
+    lines: &[Simulation],
+    p: usize,
+    here: ([f64; 3], [f64; 3]),
+) -> Result<(), ModelError> {
+    let size = super::extent(
+        lines.iter().map(|l| l.model().cable.length),
+        system.points().iter().map(|pt| pt.position),
+    );
+    for (li, end) in system.attachments(p) {
+        let sim = &lines[li];
+        let node = super::end_node(sim.model(), end);
+        let o = coordinate(sim.model().dofs_per_node(), node, SLOT_R, 0);
+        let s = sim.state();
+        let gap = (0..3)
+            .map(|c| (s.e[o + c] - here.0[c]).abs().max((s.v[o + c] - here.1[c]).abs()))
+            .fold(0.0, f64::max);
+        if gap > 1e-9 * size.max(1.0) {
+            return Err(ModelError::invalid(
+                format!("points[{p}]"),
+                format!(
+                    "line {li}'s end {} does not start where its body puts the point and as it \
+                     moves it (position {:?} and velocity {:?} against the line's)",
+                    ["A", "B"][end],
+                    here.0,
+                    here.1
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

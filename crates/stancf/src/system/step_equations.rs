@@ -3,6 +3,7 @@
 //! bordered numbering and the free points' own rows, with the
 //! convergence scales of the system's unknowns and rows (§7.1).
 
+use super::body_terms::StepBody;
 use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
 use super::{AttachedEnd, Topology};
@@ -27,10 +28,18 @@ pub(super) struct PointMotion {
 /// lines' weights combined as the point's total mass demands (a row
 /// weight is inverse to the mass on the coordinate: 1/w = sum 1/w_i,
 /// scaled by the lines' end mass over that plus the point's).
+///
+/// A point on a free body: its rows are its constraints (B13), weighted
+/// like its unknowns. A free body: its centre like a point of the
+/// shortest attached line's length L, its rotation by the arm rho of its
+/// farthest point (a turn dtheta moves it rho dtheta); its rows like a
+/// line's, with its mass m and its moment I + m rho^2 about the centre.
 pub(super) fn system_scales(
     system: &Topology,
     lines: &[Simulation],
     layout: &SystemLayout,
+    bodies: &[StepBody],
+    dt: f64,
 ) -> (Vec<f64>, Vec<f64>) {
     let n = layout.size;
     let border_start = layout.border_start();
@@ -71,12 +80,62 @@ pub(super) fn system_scales(
             equation[g] = share / inverse_equation[g];
         }
     }
+    for body in bodies {
+        body_scales(system, lines, layout, body, dt, (&mut unknown, &mut equation));
+    }
     for u in unknown.iter_mut() {
         if !u.is_finite() {
             *u = 0.0;
         }
     }
     (unknown, equation)
+}
+
+/// The scales of a free body's unknowns and rows and of its points' rows
+/// (see [`system_scales`]).
+fn body_scales(
+    system: &Topology,
+    lines: &[Simulation],
+    layout: &SystemLayout,
+    body: &StepBody,
+    dt: f64,
+    (unknown, equation): (&mut [f64], &mut [f64]),
+) {
+    let mut length = f64::INFINITY;
+    let mut arm = 0.0f64;
+    for bp in &body.points {
+        arm = arm.max(crate::vec3::norm(bp.arm));
+        for (li, _) in system.attachments(bp.point) {
+            length = length.min(lines[li].model().cable.length);
+        }
+        for k in 0..3 * layout.slots {
+            let g = layout
+                .point_unknown(bp.point, k / 3, k % 3)
+                .expect("border");
+            equation[g] = unknown[g];
+        }
+    }
+    let length = if length.is_finite() { length } else { 1.0 };
+    let arm = if arm > 0.0 { arm } else { length };
+    let inertia = body.body.inertia();
+    let mass = inertia.mass;
+    let moment = inertia.inertia_at_centre[0][0]
+        + inertia.inertia_at_centre[1][1]
+        + inertia.inertia_at_centre[2][2]
+        + mass * arm * arm;
+    // Unknown slots (0,w), (1,e), (1,w); row slots (0,e), (0,w), (1,w).
+    let rate = [true, false, true];
+    let row_is_rate = [false, true, true];
+    for slot in 0..3 {
+        for k in 0..6 {
+            let (reach, inert) = if k < 3 { (1.0, mass) } else { (arm, moment) };
+            let u = reach / length * if rate[slot] { dt } else { 1.0 };
+            let e = reach / (length * inert) * if row_is_rate[slot] { 1.0 } else { dt };
+            let g = layout.body_unknown(body.index, slot, k).expect("free body");
+            unknown[g] = u;
+            equation[g] = e;
+        }
+    }
 }
 
 /// The step of a system as Newton sees it.
@@ -86,6 +145,7 @@ pub(super) struct StepOfSystem<'a> {
     pub(super) layout: &'a SystemLayout,
     pub(super) slab: &'a TimeSlab,
     pub(super) points: &'a [PointMotion],
+    pub(super) bodies: &'a [StepBody],
     pub(super) point_index: &'a [Vec<usize>],
     pub(super) point_nodes: &'a mut [PointNodes],
     pub(super) x_local: &'a mut [Vec<f64>],
@@ -127,6 +187,9 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
                 residual,
                 jacobian.as_deref_mut(),
             );
+        }
+        for body in self.bodies {
+            body.add(self.layout, x, residual, jacobian.as_deref_mut());
         }
     }
 

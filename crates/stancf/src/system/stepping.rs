@@ -5,6 +5,7 @@
 //! take the converged step.
 
 use super::end_forces::position_row_sum;
+use super::layout::add_lines_rows;
 use super::point_terms::PointTerms;
 use super::simulation::{step_problem, SystemSimulation};
 use super::step_equations::StepOfSystem;
@@ -26,6 +27,7 @@ impl SystemSimulation {
         let report = if self.topology.has_free_points() {
             self.gather_prediction();
             let report = self.solve_step(dt)?;
+            self.check_body_turns()?;
             for (i, line) in self.lines.iter_mut().enumerate() {
                 let map = &self.layout.maps[i];
                 let xl = line.unknowns();
@@ -35,7 +37,7 @@ impl SystemSimulation {
         } else {
             super::apart::solve_lines_apart(&mut self.lines, dt)?
         };
-        self.finish_lines(report);
+        self.finish_lines(report)?;
         self.add_point_water_work();
         self.collect_end_forces(dt);
         self.forces_at_time.update(&self.end_forces, dt);
@@ -67,12 +69,12 @@ impl SystemSimulation {
     /// Completes every line's step. The Galerkin step of a system with
     /// free points takes the end rates from the system's mass matrix
     /// (docs/method.md §11.10), the others from each line's own.
-    pub(super) fn finish_lines(&mut self, report: NewtonReport) {
+    pub(super) fn finish_lines(&mut self, report: NewtonReport) -> Result<(), SolverError> {
         let Some(mass) = &mut self.mass else {
             for line in &mut self.lines {
                 line.finish_step(report);
             }
-            return;
+            return Ok(());
         };
         for line in &mut self.lines {
             line.expand_step();
@@ -87,10 +89,68 @@ impl SystemSimulation {
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
             self.point_momentum[p] = terms.end_momentum(&self.point_nodes[p]);
         }
-        mass.set_end_rates(&self.topology, &mut self.lines, &self.point_momentum);
+        // The bodies' end momenta (B14) from the lines' rows at their
+        // points, then the bodies move to the step's end.
+        if !self.bodies.is_empty() {
+            add_lines_rows(
+                &mut self.lines,
+                &self.layout.maps,
+                (&mut self.x_local, &mut self.residual_local),
+                &self.x,
+                &mut self.body_rows,
+                None,
+                |line, xl, rl, view| line.assemble_line(xl, rl, view),
+            );
+        }
+        for (k, body) in self.bodies.iter_mut().enumerate() {
+            let xb = body.unknowns(&self.layout, &self.x);
+            let (layout, rows) = (&self.layout, &self.body_rows);
+            let end_rows = |p: usize| -> [f64; 3] {
+                std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
+            };
+            self.body_momentum[k] = body.end_momentum(&xb, end_rows).ok_or_else(|| {
+                singular(self.t, self.steps, "a body's J_r(theta_b) is singular")
+            })?;
+            body.body.advance(&xb)?;
+        }
+        mass.set_end_rates(
+            &self.topology,
+            &mut self.lines,
+            &self.point_momentum,
+            &mut self.bodies,
+            &self.body_momentum,
+        )
+        .map_err(|_| {
+            singular(
+                self.t,
+                self.steps,
+                "the system's mass matrix is singular (a free body without mass or inertia?)",
+            )
+        })?;
         for line in &mut self.lines {
             line.close_step(report);
         }
+        Ok(())
+    }
+
+    /// Refuses a step in which a free body turns by more than pi: its
+    /// chart (B3)-(B4) would near its singularity (docs/method.md §15.4).
+    fn check_body_turns(&self) -> Result<(), SolverError> {
+        for body in &self.bodies {
+            let xb = body.unknowns(&self.layout, &self.x);
+            let turn = crate::vec3::norm([xb[12], xb[13], xb[14]]);
+            if turn > std::f64::consts::PI {
+                let mut e = singular(self.t, self.steps, "");
+                e.kind = crate::error::FailureKind::NotConverged;
+                e.detail = format!(
+                    "body {} turns by {turn:.3} rad in one step, more than pi; take a shorter \
+                     step",
+                    body.index
+                );
+                return Err(e);
+            }
+        }
+        Ok(())
     }
 
     /// The lines' predicted unknowns and the free points' (Taylor
@@ -116,6 +176,21 @@ impl SystemSimulation {
                         Kind::Position => e + tau * v + 0.5 * tau * tau * a,
                         Kind::Velocity => v + tau * a,
                     };
+                }
+            }
+        }
+        // A free body at its carried rates, its points where it puts them
+        // (B13).
+        for body in &self.bodies {
+            let xb = body.body.galerkin_guess();
+            body.set_unknowns(&self.layout, &xb, &mut self.x);
+            for bp in &body.points {
+                let slots = body.point_slots(&body.maps(bp.arm, &xb), &xb);
+                for (s, values) in slots.iter().enumerate() {
+                    for (c, &v) in values.iter().enumerate() {
+                        let g = self.layout.point_unknown(bp.point, s, c).expect("border");
+                        self.x[g] = v;
+                    }
                 }
             }
         }
@@ -150,7 +225,7 @@ impl SystemSimulation {
             let ends = self.topology.line_ends()[i];
             let free_end = ends
                 .iter()
-                .any(|e| matches!(e, End::Point(p) if self.topology.points()[*p].is_free()));
+                .any(|e| matches!(e, End::Point(p) if self.topology.points()[*p].is_unknown()));
             if free_end {
                 // The line's rows at the converged unknowns.
                 let map = &self.layout.maps[i];
@@ -166,7 +241,7 @@ impl SystemSimulation {
                 node,
             } in self.topology.attached_ends(i, line.model())
             {
-                let force = if self.topology.points()[p].is_free() {
+                let force = if self.topology.points()[p].is_unknown() {
                     let rows = position_row_sum(layout, node, &self.residual_local[i]);
                     let dpn = line.model().dofs_per_node();
                     std::array::from_fn(|c| {
@@ -217,5 +292,17 @@ impl SystemSimulation {
             m.e = e;
             m.v = v;
         }
+    }
+}
+
+/// A singular-matrix failure of the step from t (after `steps` steps).
+fn singular(t: f64, steps: usize, detail: &str) -> SolverError {
+    SolverError {
+        kind: crate::error::FailureKind::SingularJacobian,
+        time: t,
+        step: steps + 1,
+        residual: f64::NAN,
+        iterations: 0,
+        detail: detail.into(),
     }
 }

@@ -15,6 +15,8 @@ pub struct Topology {
     /// What line i's ends A and B attach to.
     pub(super) ends: Vec<[End; 2]>,
     pub(super) points: Vec<Point>,
+    /// Rigid bodies (docs/method.md §15.7).
+    pub(super) bodies: Vec<super::Body>,
     /// Acceleration of gravity on the points' masses (m/s^2).
     pub(super) gravity: [f64; 3],
 }
@@ -64,6 +66,15 @@ impl Topology {
 
     pub fn points(&self) -> &[Point] {
         &self.points
+    }
+
+    pub fn bodies(&self) -> &[super::Body] {
+        &self.bodies
+    }
+
+    /// The free bodies' indices, in order.
+    pub fn free_bodies(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.bodies.len()).filter(|&b| self.bodies[b].kind == super::BodyKind::Free)
     }
 
     pub fn gravity(&self) -> [f64; 3] {
@@ -120,8 +131,10 @@ impl Topology {
     /// group of lines that nothing holds is not unique (it can translate).
     pub fn check_held(&self) -> Result<(), ModelError> {
         let n_points = self.points.len();
-        // Union-find over points (0..n_points) and lines (n_points..).
-        let mut parent: Vec<usize> = (0..n_points + self.ends.len()).collect();
+        // Union-find over points (0..n_points), lines (n_points..) and
+        // bodies (after the lines): a body joins its points.
+        let n_nodes = n_points + self.ends.len();
+        let mut parent: Vec<usize> = (0..n_nodes + self.bodies.len()).collect();
         fn root(parent: &mut [usize], mut i: usize) -> usize {
             while parent[i] != i {
                 parent[i] = parent[parent[i]];
@@ -137,9 +150,15 @@ impl Topology {
                 }
             }
         }
+        for (p, point) in self.points.iter().enumerate() {
+            if let Some(b) = point.body() {
+                let (a, r) = (root(&mut parent, p), root(&mut parent, n_nodes + b));
+                parent[a] = r;
+            }
+        }
         let mut held = vec![false; parent.len()];
         for (p, point) in self.points.iter().enumerate() {
-            if !point.is_free() {
+            if !point.is_unknown() {
                 let r = root(&mut parent, p);
                 held[r] = true;
             }
@@ -148,16 +167,23 @@ impl Topology {
             if !held[root(&mut parent, n_points + li)] {
                 return Err(ModelError::invalid(
                     format!("lines[{li}]"),
-                    "nothing holds this line: it is not connected, through lines and free \
-                     points, to a fixed or coupled point, so its equilibrium is not unique",
+                    "nothing holds this line: it is not connected, through lines, free \
+                     points and free bodies, to a fixed or coupled point, so its equilibrium \
+                     is not unique",
                 ));
             }
         }
         Ok(())
     }
 
-    /// Whether some point is free (the lines are then solved together).
+    /// Whether some point's position is an unknown, a free point or a
+    /// point on a free body (the lines are then solved together).
     pub fn has_free_points(&self) -> bool {
-        self.points.iter().any(Point::is_free)
+        self.points.iter().any(Point::is_unknown)
+    }
+
+    /// Whether the system has a free body.
+    pub fn has_free_bodies(&self) -> bool {
+        self.free_bodies().next().is_some()
     }
 }

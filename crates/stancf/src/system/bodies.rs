@@ -1,0 +1,173 @@
+//! Rigid bodies in a system (docs/method.md §15.7): a floating platform,
+//! a buoy, a clump weight with a size. Lines attach to points fixed on
+//! a body (a point of kind [`PointKind::Body`], given in the body's axes
+//! from its reference point).
+//!
+//! - A *fixed* body holds its points where its pose puts them: they
+//!   become fixed points (anchors on a seabed template).
+//! - A *free* body has six unknowns per time slot: its centre of mass
+//!   and its rotation vector over the step (§15.3-15.4), stepped with its
+//!   lines by the Galerkin step. Its points' positions are functions of
+//!   them (B11): a line end there moves with the body, and its rows
+//!   load the body through the chain rule (§15.7).
+
+use super::{Point, PointKind};
+use crate::body::{BodyForces, BodyWater, FreeBody, RigidInertia};
+use crate::error::ModelError;
+use crate::scheme::TimeScheme;
+
+/// What holds a body.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BodyKind {
+    /// Held at its pose: its points are fixed points.
+    Fixed,
+    /// Six unknowns: moved by its weight, its buoyancy, its water and its
+    /// lines.
+    Free,
+}
+
+/// A rigid body of a system.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body {
+    pub kind: BodyKind,
+    /// The reference point at t = 0 (m): the origin of the body's axes,
+    /// where its points are given from.
+    pub position: [f64; 3],
+    /// Body axes to global at t = 0.
+    pub rotation: [[f64; 3]; 3],
+    /// Mass, centre of mass (body axes, from the reference point) and
+    /// inertia tensor at the centre of mass (body axes).
+    pub inertia: RigidInertia,
+    /// The body's velocity at its reference point and its angular
+    /// velocity (global) at t = 0.
+    pub velocity: [f64; 3],
+    pub angular_velocity: [f64; 3],
+    /// The water on the body: buoyancy of its volume at the centre of
+    /// mass (MoorDyn's), added mass and drag (B9)-(B10); None in air.
+    pub water: Option<BodyWater>,
+}
+
+impl Body {
+    /// A body at rest, in air.
+    pub fn new(
+        kind: BodyKind,
+        position: [f64; 3],
+        rotation: [[f64; 3]; 3],
+        inertia: RigidInertia,
+    ) -> Self {
+        Body {
+            kind,
+            position,
+            rotation,
+            inertia,
+            velocity: [0.0; 3],
+            angular_velocity: [0.0; 3],
+            water: None,
+        }
+    }
+
+    /// The global position of the body point `local` (body axes, from
+    /// the reference point) at t = 0 (B1).
+    pub fn point(&self, local: [f64; 3]) -> [f64; 3] {
+        crate::body::pose::point(self.position, &self.rotation, local)
+    }
+
+    /// The velocity of the body point `local` at t = 0.
+    pub fn point_velocity(&self, local: [f64; 3]) -> [f64; 3] {
+        let arm = crate::body::pose::rotate(&self.rotation, local);
+        crate::vec3::add(self.velocity, crate::vec3::cross(self.angular_velocity, arm))
+    }
+
+    /// The body's state for stepping with steps of `dt` under `gravity`:
+    /// its weight and buoyancy at the centre of mass (B5).
+    pub(super) fn free_body(&self, gravity: [f64; 3], dt: f64) -> Result<FreeBody, ModelError> {
+        let (volume, density) = self
+            .water
+            .as_ref()
+            .map_or((0.0, 0.0), |w| (w.volume, w.density));
+        let forces = BodyForces::weight_and_buoyancy(&self.inertia, volume, density, gravity);
+        let body = FreeBody::new(
+            &self.inertia,
+            &forces,
+            self.position,
+            &self.rotation,
+            self.velocity,
+            self.angular_velocity,
+            dt,
+        )?
+        .with_scheme(TimeScheme::Galerkin);
+        match &self.water {
+            Some(w) => body.with_water(w.clone()),
+            None => Ok(body),
+        }
+    }
+
+    fn check(&self, key: &str) -> Result<(), ModelError> {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        if !finite(&self.position) || !finite(&self.velocity) || !finite(&self.angular_velocity)
+        {
+            return Err(ModelError::invalid(
+                key,
+                "position and velocities must be finite",
+            ));
+        }
+        let r = &self.rotation;
+        let rrt = crate::vec3::mat3_mul(r, &crate::vec3::mat3_transpose(r));
+        let det = crate::vec3::dot(r[0], crate::vec3::cross(r[1], r[2]));
+        let off = (0..9)
+            .map(|k| (rrt[k / 3][k % 3] - if k / 3 == k % 3 { 1.0 } else { 0.0 }).abs())
+            .fold(0.0, f64::max);
+        if !(off <= 1e-9 && det > 0.0) {
+            return Err(ModelError::invalid(
+                format!("{key}.rotation"),
+                "is not a rotation (orthonormal, determinant +1)",
+            ));
+        }
+        if self.kind == BodyKind::Free {
+            self.inertia.validate(key)?;
+            if let Some(w) = &self.water {
+                w.validate(&format!("{key}.water"))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Validates the bodies and places the points on them: a point on a
+/// fixed body becomes a fixed point where the body puts it; a point on a
+/// free body gets its position at t = 0. Keys: `bodies[i]`, `points[i]`.
+pub(super) fn place_points(bodies: &[Body], points: &mut [Point]) -> Result<(), ModelError> {
+    for (i, b) in bodies.iter().enumerate() {
+        b.check(&format!("bodies[{i}]"))?;
+    }
+    for (i, p) in points.iter_mut().enumerate() {
+        let PointKind::Body { body, local } = p.kind else {
+            continue;
+        };
+        let key = format!("points[{i}]");
+        let Some(b) = bodies.get(body) else {
+            return Err(ModelError::invalid(
+                key,
+                format!("is on body {body}, which does not exist"),
+            ));
+        };
+        if local.iter().any(|x| !x.is_finite()) {
+            return Err(ModelError::invalid(
+                format!("{key}.local"),
+                "must be finite",
+            ));
+        }
+        if p.mass != 0.0 || p.force != [0.0; 3] || p.water.is_some() {
+            return Err(ModelError::invalid(
+                key,
+                "a point on a body carries no mass, force or water of its own: give them to \
+                 the body",
+            ));
+        }
+        p.position = b.point(local);
+        if b.kind == BodyKind::Fixed {
+            p.kind = PointKind::Fixed;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,386 @@
+//! Free rigid bodies holding lines (docs/method.md §15.7): a body's
+//! points move with it (B11), the lines' rows at them load it through the
+//! chain rule (B12)-(B13), and the step's end rates come from the system's
+//! mass matrix with the body's rates in it (B14).
+
+use crate::common::{light_rope, rel_diff};
+use stancf::body::RigidInertia;
+use stancf::linear::Jacobian;
+use stancf::observe::{angular_momentum as angular_momentum_of_line, momentum};
+use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation};
+use stancf::{Cable, ElementType, Model, ModelOptions, StepSettings, TimeScheme};
+
+const BODY_MASS: f64 = 0.2;
+const SPIN: f64 = 3.0;
+
+/// Three 1 m lines at 120 degrees in the x-y plane, line k from the
+/// point `arms[k]` on `on` (ends A) out along its direction, ends B
+/// loose; the lines turn at `spin` about the origin and drift at `drift`.
+fn star(
+    arms: [[f64; 3]; 3],
+    spin: [f64; 3],
+    drift: [f64; 3],
+    on: impl Fn([f64; 3]) -> Point,
+) -> (Vec<Line>, Vec<Point>, Vec<stancf::State>) {
+    let (mut lines, mut points, mut states) = (Vec::new(), Vec::new(), Vec::new());
+    for (k, &start) in arms.iter().enumerate() {
+        let angle = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
+        let d = [angle.cos(), angle.sin(), 0.0];
+        let cable = Cable::straight(1.0, 8, ElementType::Sac2)
+            .with_direction(d)
+            .with_origin(start);
+        let model =
+            Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
+        let mut state = model.initial_state();
+        model.add_rigid_rotation(&mut state, spin, [0.0; 3]);
+        for node in 0..model.nodes() {
+            let o = model.coordinate(node, 0, 0);
+            for c in 0..3 {
+                state.v[o + c] += drift[c];
+            }
+        }
+        states.push(state);
+        points.push(on(start));
+        lines.push(Line {
+            model,
+            ends: [End::Point(k), End::Loose],
+        });
+    }
+    (lines, points, states)
+}
+
+/// A free body of 0.2 kg at the origin with `moments` about its centre
+/// `centre`, moving as the star's lines do.
+fn star_body(moments: [f64; 3], centre: [f64; 3], spin: [f64; 3], drift: [f64; 3]) -> Body {
+    let mut body = Body::new(
+        BodyKind::Free,
+        [0.0; 3],
+        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        RigidInertia::principal(BODY_MASS, centre, moments),
+    );
+    body.velocity = drift;
+    body.angular_velocity = spin;
+    body
+}
+
+fn galerkin(dt: f64) -> StepSettings {
+    let mut settings = StepSettings {
+        time_step: dt,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    settings.newton.tolerance = 1e-13;
+    settings
+}
+
+/// Linear momentum of the lines and the body.
+fn linear_momentum(sim: &SystemSimulation) -> [f64; 3] {
+    let mut p = sim.free_body(0).expect("free body").linear_momentum();
+    for line in sim.lines() {
+        let (_, pl, _) = momentum(line.model(), line.state());
+        for c in 0..3 {
+            p[c] += pl[c];
+        }
+    }
+    p
+}
+
+/// Lines held at a body's centre of mass put no moment on it, so the body
+/// moves as a point of its mass would: the star of lines on a body whose
+/// three points are its centre follows the star on a free point of
+/// 0.2 kg to round-off over 300 steps (Newton to 1e-13), though the
+/// body's step solves six more unknowns and its points' rows are its
+/// constraints (B13) while the point's are its balance.
+#[test]
+fn lines_held_at_a_bodys_centre_move_it_as_a_point_of_its_mass() {
+    let drift = [0.5, -0.2, 0.1];
+    let spin = [0.0, 0.0, SPIN];
+    let (lines, _, states) = star([[0.0; 3]; 3], spin, drift, |_| {
+        Point::free([0.0; 3], BODY_MASS)
+    });
+    let lines: Vec<Line> = lines
+        .into_iter()
+        .map(|l| Line {
+            model: l.model,
+            ends: [End::Point(0), End::Loose],
+        })
+        .collect();
+    let point = System::new(lines.clone(), vec![Point::free([0.0; 3], BODY_MASS)], [0.0; 3])
+        .expect("point system");
+    let body = System::with_bodies(
+        lines,
+        vec![Point::on_body(0, [0.0; 3])],
+        vec![star_body([0.02, 0.03, 0.04], [0.0; 3], spin, drift)],
+        [0.0; 3],
+    )
+    .expect("body system");
+    let mut body_sim = SystemSimulation::new(body, states.clone(), galerkin(1e-3)).unwrap();
+    let mut point_sim = SystemSimulation::new(point, states, galerkin(1e-3)).unwrap();
+    let mut worst = 0.0f64;
+    for _ in 0..300 {
+        body_sim.step().expect("body step");
+        point_sim.step().expect("point step");
+        let (xb, vb) = body_sim.point_state(0);
+        let (xp, vp) = point_sim.point_state(0);
+        for c in 0..3 {
+            worst = worst.max((xb[c] - xp[c]).abs()).max(1e-3 * (vb[c] - vp[c]).abs());
+        }
+    }
+    let centre = body_sim.free_body(0).unwrap().centre();
+    let (xp, _) = point_sim.point_state(0);
+    eprintln!("body against point: largest difference {worst:.1e} m; centre {centre:?}, point {xp:?}");
+    assert!(worst < 1e-12, "{worst:e}");
+    for c in 0..3 {
+        assert!((centre[c] - xp[c]).abs() < 1e-12);
+    }
+}
+
+/// Angular momentum about the origin of the lines and the body.
+fn angular_momentum(sim: &SystemSimulation) -> [f64; 3] {
+    let mut l = sim.free_body(0).expect("free body").angular_momentum();
+    for line in sim.lines() {
+        let ll = angular_momentum_of_line(line.model(), line.state());
+        for c in 0..3 {
+            l[c] += ll[c];
+        }
+    }
+    l
+}
+
+/// The star of lines on a body, held at three body points at different
+/// distances and heights, the centre of mass off the reference point,
+/// spinning about a tilted axis and drifting in empty space: the body
+/// tumbles and the lines whip. The whole keeps its linear momentum to
+/// round-off (the cubic's variations hold the translations, for the
+/// body as for the lines; Newton to 1e-13), and its angular momentum
+/// and energy to the step's error, which falls with the step.
+#[test]
+fn a_spinning_star_of_lines_on_a_body_keeps_its_momenta_and_energy() {
+    let drift = [0.5, -0.2, 0.1];
+    let run = |dt: f64, steps: usize| {
+        let spin = [1.0, -0.5, SPIN];
+        let arms = [[0.1, 0.0, 0.05], [-0.075, 0.13, -0.03], [-0.1, -0.17, 0.0]];
+        let (lines, points, states) = star(arms, spin, drift, |x| Point::on_body(0, x));
+        let body = star_body([0.002, 0.003, 0.004], [0.0, 0.02, 0.01], spin, drift);
+        let system = System::with_bodies(lines, points, vec![body], [0.0; 3]).expect("system");
+        let mut sim = SystemSimulation::new(system, states, galerkin(dt)).unwrap();
+        let (p0, l0, e0) = (
+            linear_momentum(&sim),
+            angular_momentum(&sim),
+            sim.energies().mechanical(),
+        );
+        for _ in 0..steps {
+            sim.step().expect("step");
+        }
+        let (p1, l1, e1) = (
+            linear_momentum(&sim),
+            angular_momentum(&sim),
+            sim.energies().mechanical(),
+        );
+        let dp = (0..3).map(|c| (p1[c] - p0[c]).abs()).fold(0.0, f64::max);
+        let dl = (0..3).map(|c| (l1[c] - l0[c]).abs()).fold(0.0, f64::max);
+        (dp, dl, (e1 - e0).abs(), e0)
+    };
+    let mut errors = Vec::new();
+    for (dt, steps) in [(8e-3, 50), (4e-3, 100), (2e-3, 200)] {
+        let (dp, dl, de, e0) = run(dt, steps);
+        eprintln!("dt {dt:e}: momentum {dp:.1e}, angular momentum {dl:.1e}, energy {de:.1e} of {e0:.3e} J");
+        assert!(dp < 1e-12, "linear momentum drifts by {dp:e}");
+        errors.push((dl, de));
+    }
+    // Measured: orders 4.0 and 3.9 (angular momentum), 4.6 and 3.7
+    // (energy); the end of the last pair is near round-off. The point's
+    // path is matched to the body's at the step's ends, position and
+    // slope (B13), and between them the line end follows their cubic
+    // (docs/method.md §15.7): fourth order, as P2.
+    for (dl, de) in &errors {
+        assert!(*dl < 1e-12 && *de < 1e-10, "{dl:e} {de:e}");
+    }
+    let order_l = (errors[0].0 / errors[1].0).log2();
+    let order_e = (errors[0].1 / errors[1].1).log2();
+    eprintln!("orders from dt 8e-3 to 4e-3: angular momentum {order_l:.2}, energy {order_e:.2}");
+    assert!(order_l > 3.5 && order_e > 3.5, "{order_l} {order_e}");
+}
+
+/// The step's Jacobian with a free body is the derivative of its rows
+/// (the body's own, the lines' carried to it by (B12), the points'
+/// constraints (B13)), by central differences: a body turned at the
+/// start, its centre off its reference point, hanging in gravity from a
+/// fixed anchor by one line and holding a second, slack one, moving.
+#[test]
+fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
+    let rotation = stancf::body::pose::rotation_from_moordyn_angles([20.0, -35.0, 50.0]);
+    let mut body = Body::new(
+        BodyKind::Free,
+        [0.3, 0.1, -1.0],
+        rotation,
+        RigidInertia::principal(2.0, [0.05, -0.1, 0.2], [0.02, 0.03, 0.04]),
+    );
+    body.velocity = [0.2, -0.1, 0.3];
+    body.angular_velocity = [0.5, 1.0, -0.7];
+    let local = [[0.2, 0.1, 0.3], [-0.1, 0.25, 0.0]];
+    let places = local.map(|l| body.point(l));
+    let mut lines = Vec::new();
+    let mut states = Vec::new();
+    for (k, end) in places.iter().enumerate() {
+        let start = [0.1 - 0.5 * k as f64, 0.4, 0.0];
+        let chord = (0..3).map(|c| (end[c] - start[c]).powi(2)).sum::<f64>().sqrt();
+        let d: [f64; 3] = std::array::from_fn(|c| (end[c] - start[c]) / chord);
+        let cable = Cable::straight(chord, 4, ElementType::Sac2)
+            .with_direction(d)
+            .with_origin(start);
+        let model =
+            Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
+        let mut state = model.initial_state();
+        // The line end B moves with the body point; the rest of the line
+        // as a linear blend from the anchor (still) to B.
+        let vb = body.point_velocity(local[k]);
+        for node in 0..model.nodes() {
+            let o = model.coordinate(node, 0, 0);
+            let s = node as f64 / (model.nodes() - 1) as f64;
+            for c in 0..3 {
+                state.v[o + c] = s * vb[c];
+            }
+        }
+        states.push(state);
+        lines.push(Line {
+            model,
+            ends: [if k == 0 { End::Point(2) } else { End::Loose }, End::Point(k)],
+        });
+    }
+    let points = vec![
+        Point::on_body(0, local[0]),
+        Point::on_body(0, local[1]),
+        Point::fixed([0.1, 0.4, 0.0]),
+    ];
+    let system =
+        System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let mut sim = SystemSimulation::new(system, states, galerkin(0.01)).unwrap();
+    let (jac, x) = sim.next_step_jacobian();
+    let n = x.len();
+    let h = 1e-6;
+    let mut analytic = Vec::with_capacity(n * n);
+    let mut fd = Vec::with_capacity(n * n);
+    for c in 0..n {
+        let (mut xp, mut xm) = (x.clone(), x.clone());
+        xp[c] += h;
+        xm[c] -= h;
+        let (rp, rm) = (sim.next_step_residual(&xp), sim.next_step_residual(&xm));
+        for r in 0..n {
+            fd.push((rp[r] - rm[r]) / (2.0 * h));
+            analytic.push(jac.get(r, c));
+        }
+    }
+    let err = rel_diff(&analytic, &fd);
+    eprintln!("step Jacobian with a free body: rel. error {err:.1e}");
+    assert!(err < 1e-7, "{err:e}");
+}
+
+
+/// A body of 10 kg (moment 0.5 kg m^2 about its centre) hanging by a
+/// point 0.5 m above its centre from a 1 m line to a fixed anchor: for
+/// small swings a double pendulum whose line is a rigid massless rod,
+///
+/// ```text
+///   [ M L^2   M L d       ] [phi1'']   [ M g L   0     ] [phi1]
+///   [ M L d   M d^2 + I_G ] [phi2''] + [ 0       M g d ] [phi2] = 0
+/// ```
+///
+/// (phi1 the line's angle, phi2 the body's; periods 2.49 s and 0.51 s).
+/// Released at rest from (0.001, -0.0015) rad, the centre's sideways
+/// motion L phi1 + d phi2 is the sum of the two modes' cosines. The line
+/// (EA 1e5 N, 1 g/m) starts stretched to 1 m by the body's weight, so the
+/// rod's model holds to about 1e-4 (the line's mass against the body's,
+/// its stretch's change with the swing); over 6 s, 74 radians of the
+/// fast mode, that is a phase of 7e-3 at most. Measured: 1.7e-3 of the
+/// modes' amplitude, the same at half the amplitude (so not the swing's
+/// nonlinearity, which at 0.01 rad gave 1.5e-2), at half the step (so
+/// not the step's error) and with EA ten times larger.
+#[test]
+fn a_body_hanging_from_a_line_swings_as_a_double_pendulum() {
+    let (m, inertia, l, d, g) = (10.0, 0.5, 1.0, 0.5, 9.81);
+    let (phi1, phi2) = (0.001f64, -0.0015f64);
+    let line = stancf::Material {
+        youngs_modulus: 1e9,
+        density: 10.0,
+        area: 1e-4,
+        second_moment: 1e-14,
+        axial_damping: 0.0,
+    };
+    let top = [l * phi1.sin(), 0.0, -l * phi1.cos()];
+    let centre = [top[0] + d * phi2.sin(), 0.0, top[2] - d * phi2.cos()];
+    // Unstretched so that the body's weight stretches it to l.
+    let stretch = 1.0 + m * g / (line.youngs_modulus * line.area);
+    let cable = Cable::straight(l / stretch, 4, ElementType::Sac2)
+        .with_direction([phi1.sin(), 0.0, -phi1.cos()]);
+    let model = Model::new(cable, line, ModelOptions::default(), vec![]).expect("model");
+    let mut state = model.initial_state();
+    for node in 0..model.nodes() {
+        for slot in 0..2 {
+            let o = model.coordinate(node, slot, 0);
+            for c in 0..3 {
+                state.e[o + c] *= stretch;
+            }
+        }
+    }
+    // Body axes: the point is 0.5 m up the body's z axis, turned by phi2
+    // about y (R_y(-phi2) takes +z to (-sin phi2, 0, cos phi2)).
+    let body = Body::new(
+        BodyKind::Free,
+        centre,
+        stancf::body::pose::rotation_from_moordyn_angles([0.0, -phi2.to_degrees(), 0.0]),
+        RigidInertia::principal(m, [0.0; 3], [inertia; 3]),
+    );
+    let system = System::with_bodies(
+        vec![Line {
+            model,
+            ends: [End::Point(0), End::Point(1)],
+        }],
+        vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0, 0.0, d])],
+        vec![body],
+        [0.0, 0.0, -g],
+    )
+    .expect("system");
+    let settings = StepSettings {
+        time_step: 0.005,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, vec![state], settings).unwrap();
+    // The modes: det(K - w^2 M) = 0, a quadratic in w^2.
+    let (m11, m12, m22) = (m * l * l, m * l * d, m * d * d + inertia);
+    let (k11, k22) = (m * g * l, m * g * d);
+    let a = m11 * m22 - m12 * m12;
+    let b = -(k11 * m22 + k22 * m11);
+    let c = k11 * k22;
+    let root = (b * b - 4.0 * a * c).sqrt();
+    let w2 = [(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)];
+    // Mode shapes (1, r_i): (k11 - w^2 m11) - w^2 m12 r = 0.
+    let r = w2.map(|w| (k11 - w * m11) / (w * m12));
+    // q0 = c1 (1, r1) + c2 (1, r2).
+    let c2 = (phi2 - r[0] * phi1) / (r[1] - r[0]);
+    let c1 = phi1 - c2;
+    let sideways = |t: f64| {
+        let q1 = c1 * (w2[0].sqrt() * t).cos() + c2 * (w2[1].sqrt() * t).cos();
+        let q2 = c1 * r[0] * (w2[0].sqrt() * t).cos() + c2 * r[1] * (w2[1].sqrt() * t).cos();
+        l * q1 + d * q2
+    };
+    let amplitude = (c1 * (l + d * r[0])).abs() + (c2 * (l + d * r[1])).abs();
+    let mut worst = 0.0f64;
+    for _ in 0..1200 {
+        sim.step().expect("step");
+        let x = sim.free_body(0).unwrap().centre()[0];
+        worst = worst.max((x - sideways(sim.time())).abs());
+    }
+    eprintln!(
+        "periods {:.3} s and {:.3} s; largest difference from the modes {worst:.2e} m \
+         ({:.1e} of the modes' sideways amplitude {amplitude:.1e} m)",
+        2.0 * std::f64::consts::PI / w2[0].sqrt(),
+        2.0 * std::f64::consts::PI / w2[1].sqrt(),
+        worst / amplitude
+    );
+    assert!(worst < 5e-3 * amplitude, "{worst:e}");
+}
+
+
+
