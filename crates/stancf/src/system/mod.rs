@@ -26,6 +26,7 @@
 mod apart;
 mod balance;
 mod bodies;
+mod body_statics;
 mod body_terms;
 mod end_forces;
 mod energy;
@@ -340,6 +341,22 @@ impl System {
 
     pub fn lines(&self) -> &[Line] {
         &self.lines
+    }
+
+    /// Moves body b to `position` (its reference point) and `rotation`,
+    /// with its points (a free body at a static equilibrium).
+    pub fn set_body_pose(&mut self, b: usize, position: [f64; 3], rotation: [[f64; 3]; 3]) {
+        let body = &mut self.topology.bodies[b];
+        body.position = position;
+        body.rotation = rotation;
+        let body = body.clone();
+        for p in &mut self.topology.points {
+            if let PointKind::Body { body: on, local } = p.kind {
+                if on == b {
+                    p.position = body.point(local);
+                }
+            }
+        }
     }
 
     /// The system's topology (its points, line ends and gravity) and its

@@ -36,6 +36,8 @@
 //! again from the seed with its own law (M32c), whose end, if reached
 //! and isolated, is the equilibrium.
 
+use super::body_statics::StaticBody;
+use super::body_terms::BodyPoint;
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::static_friction::{self, StaticFriction};
@@ -99,6 +101,8 @@ pub(super) struct SystemEquations {
     /// Positions of the points at the last converged increment.
     pub(super) point_position: Vec<[f64; 3]>,
     pub(super) end_forces: Vec<[EndForce; 2]>,
+    /// The free bodies (docs/method.md §15.8).
+    pub(super) bodies: Vec<StaticBody>,
 }
 
 impl SystemStatics {
@@ -168,6 +172,17 @@ impl SystemStatics {
                 unknown_weight[g] = unknown_weight[g].min(wl[u]);
             }
         }
+        let bodies = static_bodies(&system);
+        for body in &bodies {
+            let b = &system.bodies()[body.index];
+            let centre = b.point(b.inertia.centre_of_mass);
+            let weights = body.unknown_weights();
+            for k in 0..6 {
+                let g = layout.body_unknown(body.index, 0, k).expect("a free body");
+                x[g] = if k < 3 { centre[k] } else { 0.0 };
+                unknown_weight[g] = weights[k];
+            }
+        }
         let point_index = (0..system.points().len())
             .map(|p| {
                 (0..3)
@@ -184,6 +199,7 @@ impl SystemStatics {
             end_forces: vec![[EndForce::default(); 2]; system.lines().len()],
             point_index,
             point_position,
+            bodies,
             system,
             lines,
             layout,
@@ -286,6 +302,29 @@ impl SystemStatics {
     /// the equilibrium; before, they include the seed's share (M32).
     pub fn end_forces(&self, line: usize) -> [EndForce; 2] {
         self.equations.end_forces[line]
+    }
+
+    /// Free body b's pose at the last converged increment: its reference
+    /// point and its rotation (body axes to global); None for a fixed body.
+    pub fn body_pose(&self, b: usize) -> Option<([f64; 3], [[f64; 3]; 3])> {
+        let eq = &self.equations;
+        let body = eq.bodies.iter().find(|s| s.index == b)?;
+        let q = body.converged;
+        let rotation = body.rotation_at(&q);
+        let arm = crate::body::pose::rotate(&rotation, body.centre_of_mass);
+        Some((crate::vec3::sub([q[0], q[1], q[2]], arm), rotation))
+    }
+
+    /// The system with its free bodies where the last converged increment
+    /// put them (and their points with them): the system a dynamic run
+    /// from this equilibrium starts from, with [`Self::line_states`].
+    pub fn system_at_equilibrium(&self) -> System {
+        let mut system = self.equations.system.clone();
+        for body in &self.equations.bodies {
+            let (position, rotation) = self.body_pose(body.index).expect("a free body");
+            system.set_body_pose(body.index, position, rotation);
+        }
+        system
     }
 
     /// The net force the attached lines exert on point p.
@@ -416,6 +455,9 @@ impl StaticEquations for SystemEquations {
                 }
             }
         }
+        for body in &mut self.bodies {
+            body.add(&self.layout, x, residual, jacobian.as_deref_mut());
+        }
         for (r, r0) in residual.iter_mut().zip(&self.offset) {
             *r -= self.homotopy * r0;
         }
@@ -433,6 +475,12 @@ impl StaticEquations for SystemEquations {
             line.row_weights(|r| jacobian.get(map.global[r], map.global[r]), kmax, wl);
             for (u, &g) in map.global.iter().enumerate() {
                 weights[g] = weights[g].min(wl[u]);
+            }
+        }
+        for body in &self.bodies {
+            let w = body.row_weights();
+            for (k, &wk) in w.iter().enumerate() {
+                weights[self.layout.body_unknown(body.index, 0, k).expect("free body")] = wk;
             }
         }
     }
@@ -463,6 +511,9 @@ impl StaticEquations for SystemEquations {
                 [x[idx[0]], x[idx[1]], x[idx[2]]]
             };
         }
+        for body in &mut self.bodies {
+            body.converged = body.unknowns(&self.layout, x);
+        }
         self.collect_end_forces();
     }
 }
@@ -482,7 +533,7 @@ impl SystemEquations {
                 node,
             } in self.system.attached_ends(i, &line.model)
             {
-                let force = if self.system.points()[p].is_free() {
+                let force = if self.system.points()[p].is_unknown() {
                     std::array::from_fn(|c| {
                         let g = coordinate(dpn, node, SLOT_R, c);
                         let u = line.layout.row_at(0, g).expect("a free end's row");
@@ -546,6 +597,59 @@ fn line_statics(
                 line.set_friction_targets(&t[i]);
             }
             line
+        })
+        .collect()
+}
+
+/// The free bodies of `system` as a static solve holds them: their
+/// weight and buoyancy at the centre of mass, their points' arms from it,
+/// and the scales of §15.8.
+fn static_bodies(system: &System) -> Vec<StaticBody> {
+    system
+        .free_bodies()
+        .map(|b| {
+            let body = &system.bodies()[b];
+            let c = body.inertia.centre_of_mass;
+            let (volume, density) = body
+                .water
+                .as_ref()
+                .map_or((0.0, 0.0), |w| (w.volume, w.density));
+            let g = system.gravity();
+            let net = g.map(|gc| (body.inertia.mass - density * volume) * gc);
+            let mut length = f64::INFINITY;
+            let mut arm = 0.0f64;
+            let points: Vec<BodyPoint> = system
+                .points()
+                .iter()
+                .enumerate()
+                .filter(|(_, pt)| pt.body() == Some(b))
+                .map(|(p, pt)| {
+                    let super::PointKind::Body { local, .. } = pt.kind else {
+                        unreachable!("a point on a body")
+                    };
+                    for (li, _) in system.attachments(p) {
+                        length = length.min(system.lines()[li].model.cable.length);
+                    }
+                    let arm_p = crate::vec3::sub(local, c);
+                    arm = arm.max(crate::vec3::norm(arm_p));
+                    BodyPoint {
+                        point: p,
+                        arm: arm_p,
+                    }
+                })
+                .collect();
+            let length = if length.is_finite() { length } else { 1.0 };
+            StaticBody {
+                index: b,
+                rotation: body.rotation,
+                centre_of_mass: c,
+                forces: vec![(net, [0.0; 3])],
+                points,
+                length,
+                arm: if arm > 0.0 { arm } else { length },
+                stiffness: 0.0,
+                converged: [0.0; 6],
+            }
         })
         .collect()
 }

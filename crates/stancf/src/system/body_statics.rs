@@ -1,0 +1,154 @@
+//! A free body in a system's static solve (docs/method.md §15.8): its
+//! centre of mass r_G and its rotation vector theta from the rotation it
+//! was given, R = R_0 exp([theta]) (B4), are six unknowns in the border
+//! after the points'. Its own rows are the variation of the potential of
+//! its constant forces F_j at xi'_j from its centre,
+//!
+//! ```text
+//!   V = - F . r_G - sum_j F_j . R_0 exp([theta]) xi'_j,     F = sum_j F_j      (B15)
+//! ```
+//!
+//! (weight and buoyancy act at the centre of mass, MoorDyn's convention,
+//! so they give no moment); a point P on it at xi' is at
+//! y_P = r_G + R_0 exp([theta]) xi' (B11 at rest), the lines' rows there
+//! are carried to the body's by (dy_P/dq)^T (B12), and P's rows become
+//! y_P - (B11) = 0 (B13), as in a step (§15.7).
+
+use super::body_terms::BodyPoint;
+use super::layout::SystemLayout;
+use crate::body::attach::{offsets, project};
+use crate::bordered::BorderedMatrix;
+use crate::linear::{AddEntries, Jacobian};
+
+/// A free body of a static solve.
+#[derive(Clone, Debug)]
+pub(super) struct StaticBody {
+    pub index: usize,
+    /// The rotation theta is measured from.
+    pub rotation: [[f64; 3]; 3],
+    /// The centre of mass in body axes, from the reference point.
+    pub centre_of_mass: [f64; 3],
+    /// Constant forces (global) at their arms from the centre (body axes).
+    pub forces: Vec<([f64; 3], [f64; 3])>,
+    pub points: Vec<BodyPoint>,
+    /// The shortest attached line's length and the farthest point's arm
+    /// (the scales of the unknowns, as in a step).
+    pub length: f64,
+    pub arm: f64,
+    /// The stiffness of the lines at its points, the largest diagonal of
+    /// their rows there at the last Jacobian (the rows' weights).
+    pub stiffness: f64,
+    /// [r_G; theta] at the last converged increment.
+    pub converged: [f64; 6],
+}
+
+impl StaticBody {
+    /// The body's unknowns [r_G; theta] from x.
+    pub fn unknowns(&self, layout: &SystemLayout, x: &[f64]) -> [f64; 6] {
+        std::array::from_fn(|k| x[self.global(layout, k)])
+    }
+
+    fn global(&self, layout: &SystemLayout, k: usize) -> usize {
+        layout.body_unknown(self.index, 0, k).expect("a free body")
+    }
+
+    /// The body's rotation at unknowns q.
+    pub fn rotation_at(&self, q: &[f64; 6]) -> [[f64; 3]; 3] {
+        crate::vec3::mat3_mul(
+            &self.rotation,
+            &crate::body::rotation::exp_map([q[3], q[4], q[5]]),
+        )
+    }
+
+    /// Adds the body's rows (B15), carries its points' rows to them (B12)
+    /// and sets its points' rows to their constraints (B13). Call after
+    /// the lines and points have added theirs.
+    pub fn add(
+        &mut self,
+        layout: &SystemLayout,
+        x: &[f64],
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        let q = self.unknowns(layout, x);
+        let theta = [q[3], q[4], q[5]];
+        let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
+        for (force, arm) in &self.forces {
+            let (p, _) = offsets(&self.rotation, *arm, theta, [0.0; 3]);
+            let work = project(*force, &p);
+            for c in 0..3 {
+                residual[g(c)] -= force[c];
+                residual[g(3 + c)] -= work.g[c];
+            }
+            if let Some(m) = jacobian.as_deref_mut() {
+                for j in 0..3 {
+                    for i in 0..3 {
+                        m.add(g(3 + j), g(3 + i), -work.h[j][i]);
+                    }
+                }
+            }
+        }
+        if jacobian.is_some() {
+            self.stiffness = 0.0;
+        }
+        for bp in &self.points {
+            let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
+            let (p, _) = offsets(&self.rotation, bp.arm, theta, [0.0; 3]);
+            let raw: [f64; 3] = std::array::from_fn(|c| residual[y(c)]);
+            let moment = project(raw, &p);
+            for c in 0..3 {
+                residual[g(c)] += raw[c];
+                residual[g(3 + c)] += moment.g[c];
+            }
+            if let Some(m) = jacobian.as_deref_mut() {
+                for c in 0..3 {
+                    self.stiffness = self.stiffness.max(m.get(y(c), y(c)).abs());
+                    m.add_border_row(g(c), y(c), 1.0);
+                    for j in 0..3 {
+                        m.add_border_row(g(3 + j), y(c), p[c].g[j]);
+                    }
+                }
+                for c in 0..3 {
+                    m.clear_border_row(y(c));
+                }
+                for j in 0..3 {
+                    for i in 0..3 {
+                        m.add(g(3 + j), g(3 + i), moment.h[j][i]);
+                    }
+                }
+            }
+            for c in 0..3 {
+                residual[y(c)] = x[y(c)] - (q[c] + p[c].v);
+            }
+            if let Some(m) = jacobian.as_deref_mut() {
+                for c in 0..3 {
+                    m.add(y(c), y(c), 1.0);
+                    m.add(y(c), g(c), -1.0);
+                    for j in 0..3 {
+                        m.add(y(c), g(3 + j), -p[c].g[j]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The weights of the body's unknowns: its centre like a point of
+    /// the shortest line's length L, its rotation by its farthest arm.
+    pub fn unknown_weights(&self) -> [f64; 6] {
+        std::array::from_fn(|k| if k < 3 { 1.0 } else { self.arm } / self.length)
+    }
+
+    /// The weights of the body's rows: the displacement a row's force (or
+    /// moment) would cause on the lines' stiffness at its points, as a
+    /// fraction of L.
+    pub fn row_weights(&self) -> [f64; 6] {
+        let k = self.stiffness.max(f64::MIN_POSITIVE);
+        std::array::from_fn(|i| {
+            if i < 3 {
+                1.0 / (k * self.length)
+            } else {
+                1.0 / (k * self.arm * self.length)
+            }
+        })
+    }
+}

@@ -1,0 +1,192 @@
+//! The static equilibrium of free bodies held by lines (docs/method.md
+//! §15.8): the body's weight and buoyancy against its lines' forces and
+//! moments, the lines being catenaries between their anchors and the
+//! body's points.
+
+use stancf::body::{BodyWater, RigidInertia};
+use stancf::catenary::{Catenary, CatenaryLine, LineEnd};
+use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
+use stancf::{
+    AxialStrain, Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
+    TimeScheme,
+};
+
+const G: [f64; 3] = [0.0, 0.0, -9.81];
+const RHO: f64 = 1025.0;
+/// The lines: 2 kg/m, EA 1e7 N, EI 1e-7 w L^3 of the longest (the
+/// EI = 0 rule of docs/method.md §11.7).
+const MASS_PER_LENGTH: f64 = 2.0;
+const EA: f64 = 1e7;
+
+fn chain(a: [f64; 3], b: [f64; 3], length: f64) -> Model {
+    let w = MASS_PER_LENGTH * 9.81;
+    let area = 1e-3;
+    let material = Material {
+        youngs_modulus: EA / area,
+        density: MASS_PER_LENGTH / area,
+        area,
+        second_moment: 1e-7 * w * 64.0f64.powi(3) / (EA / area),
+        axial_damping: 0.0,
+    };
+    let d: [f64; 3] = std::array::from_fn(|i| b[i] - a[i]);
+    let cable = Cable::straight(length, 40, ElementType::Sac2)
+        .with_origin(a)
+        .with_direction(d);
+    // The engineering strain, Irvine's (and MoorDyn's): T = EA (lam - 1).
+    let mut options = ModelOptions::default();
+    options.measures.axial_strain = AxialStrain::Engineering;
+    Model::new(
+        cable,
+        material,
+        options,
+        vec![Load::Gravity { acceleration: G }],
+    )
+    .expect("model")
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// A buoy of 500 kg and 2 m^3 (net lift 15.2 kN) near 10 m depth, held
+/// taut by three lines of 60, 62 and 64 m from anchors 50 m out at 50 m
+/// depth to three points on its underside 1 m from its axis, its centre
+/// of mass 0.3 m below its reference point: the uneven lines pull it
+/// sideways and tilt it.
+fn moored_buoy() -> System {
+    let rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let mut body = Body::new(
+        BodyKind::Free,
+        [0.0, 0.0, -10.0],
+        rotation,
+        RigidInertia::principal(500.0, [0.0, 0.0, -0.3], [300.0, 300.0, 200.0]),
+    );
+    body.water = Some(BodyWater {
+        density: RHO,
+        volume: 2.0,
+        ..BodyWater::default()
+    });
+    let mut lines = Vec::new();
+    let mut points = Vec::new();
+    for k in 0..3 {
+        let angle = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
+        let (c, s) = (angle.cos(), angle.sin());
+        let local = [c, s, -0.5];
+        let anchor = [50.0 * c, 50.0 * s, -50.0];
+        let top = body.point(local);
+        points.push(Point::on_body(0, local));
+        points.push(Point::fixed(anchor));
+        lines.push(Line {
+            model: chain(anchor, top, 60.0 + 2.0 * k as f64),
+            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+        });
+    }
+    System::with_bodies(lines, points, vec![body], G).expect("system")
+}
+
+/// At the equilibrium every line's pull on the buoy is the elastic
+/// catenary's (Irvine's closed form between the line's anchor and the
+/// buoy's point, crate::catenary) to 1e-5, the elements' and the EI = 0
+/// rule's accuracy (as for a line alone, system_statics.rs); and the
+/// buoy is balanced: the lines' forces against its net lift and their
+/// moments about its centre of mass, to 1e-9 of the lift (the static
+/// tolerance, 1e-12, on the lines' rows).
+#[test]
+fn a_buoy_held_by_three_lines_balances_their_catenaries() {
+    let system = moored_buoy();
+    let seeds = stancf::system::catenary_states(&system);
+    let settings = StaticSettings {
+        tolerance: 1e-12,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let (position, rotation) = statics.body_pose(0).expect("a free body");
+    let centre = stancf::body::pose::point(position, &rotation, [0.0, 0.0, -0.3]);
+    let lift = (RHO * 2.0 - 500.0) * 9.81;
+    let mut force = [0.0, 0.0, lift];
+    let mut moment = [0.0; 3];
+    let mut worst = 0.0f64;
+    for k in 0..3 {
+        let [anchor_end, body_end] = statics.end_forces(k);
+        let top = statics.point_position(2 * k);
+        let anchor = statics.point_position(2 * k + 1);
+        let exact = Catenary::between(
+            CatenaryLine {
+                length: 60.0 + 2.0 * k as f64,
+                weight: MASS_PER_LENGTH * 9.81,
+                ea: EA,
+            },
+            anchor,
+            top,
+            G,
+        )
+        .expect("catenary");
+        for (got, end) in [(anchor_end.force, LineEnd::A), (body_end.force, LineEnd::B)] {
+            let want = exact.end_force(end);
+            let err = norm(std::array::from_fn(|c| got[c] - want[c])) / norm(want);
+            eprintln!("line {k} end {end:?}: {got:?} against {want:?}: {err:.1e}");
+            worst = worst.max(err);
+        }
+        let arm: [f64; 3] = std::array::from_fn(|c| top[c] - centre[c]);
+        let m = stancf::vec3::cross(arm, body_end.force);
+        for c in 0..3 {
+            force[c] += body_end.force[c];
+            moment[c] += m[c];
+        }
+    }
+    let angles = stancf::body::pose::moordyn_angles(&rotation);
+    eprintln!(
+        "buoy at {position:?}, roll pitch yaw {angles:?} deg; unbalanced force {:.1e} N, \
+         moment {:.1e} N m (lift {lift:.0} N)",
+        norm(force),
+        norm(moment)
+    );
+    assert!(worst < 1e-5, "{worst:e}");
+    assert!(position[0].abs() > 0.1 && angles[0].abs() + angles[1].abs() > 0.1, "the uneven lines move and tilt the buoy");
+    assert!(norm(force) < 1e-9 * lift, "{force:?}");
+    assert!(norm(moment) < 1e-9 * lift, "{moment:?}");
+}
+
+
+/// A dynamic run from the buoy's equilibrium (the system with the buoy
+/// where the static solve left it, the lines in their static shapes,
+/// at rest) stays there: over 2 s its centre moves less than 1e-6 m, the
+/// equilibrium's residual (1e-12 of the lines' scale) and the time
+/// discretization's share of the static shape (the slab's action at rest
+/// is the static potential, exactly) being far below that.
+#[test]
+fn a_moored_buoy_started_at_its_equilibrium_stays_put() {
+    let system = moored_buoy();
+    let seeds = stancf::system::catenary_states(&system);
+    let settings = StaticSettings {
+        tolerance: 1e-12,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let at_rest = statics.system_at_equilibrium();
+    let (position, _) = statics.body_pose(0).unwrap();
+    let steps = StepSettings {
+        time_step: 0.02,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(at_rest, statics.line_states(), steps).expect("simulation");
+    let start = sim.free_body(0).unwrap().position();
+    for k in 0..3 {
+        assert!((start[k] - position[k]).abs() < 1e-12);
+    }
+    let mut moved = 0.0f64;
+    for _ in 0..100 {
+        sim.step().expect("step");
+        let now = sim.free_body(0).unwrap().position();
+        moved = moved.max(norm(std::array::from_fn(|c| now[c] - start[c])));
+    }
+    eprintln!("the buoy moved at most {moved:.1e} m in 2 s");
+    assert!(moved < 1e-6, "{moved:e}");
+}
