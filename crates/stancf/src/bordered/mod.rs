@@ -234,6 +234,22 @@ impl BorderedMatrix {
         }
     }
 
+    /// Sets border column `column` (a global index) to zero.
+    pub fn clear_border_column(&mut self, column: usize) {
+        let c = column - self.border_start;
+        for blk in &mut self.blocks {
+            let k = blk.local_of[c];
+            if k != UNTOUCHED {
+                let n = blk.n;
+                blk.b[k * n..(k + 1) * n].fill(0.0);
+            }
+        }
+        let nb = self.nb;
+        for r in 0..nb {
+            self.d[r * nb + c] = 0.0;
+        }
+    }
+
     /// Sets border row `row` (a global index) to zero.
     pub fn clear_border_row(&mut self, row: usize) {
         let r = row - self.border_start;

@@ -352,8 +352,8 @@ fn borders_at_a_blocks_end_or_start_solve_like_a_dense_lu_with_pivoting() {
     }
 }
 
-/// A row operation on the border and a cleared row give the matrix a
-/// dense row operation gives.
+/// A row operation on the border, a cleared row and a cleared column give
+/// the matrix the dense operations give.
 #[test]
 fn border_row_operations_act_on_every_block_and_the_corner() {
     let shapes = three_blocks();
@@ -372,10 +372,14 @@ fn border_row_operations_act_on_every_block_and_the_corner() {
     assert!(shares, "the test's rows must be shared");
     m.add_border_row(to, from, 0.75);
     m.clear_border_row(from);
+    m.clear_border_column(to);
     for j in 0..n {
         let v = a[from][j];
         a[to][j] += 0.75 * v;
         a[from][j] = 0.0;
+    }
+    for row in a.iter_mut() {
+        row[to] = 0.0;
     }
     let got = dense_of(&m);
     for i in 0..n {

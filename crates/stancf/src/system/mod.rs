@@ -41,6 +41,7 @@ mod simulation;
 mod static_friction;
 mod static_paths;
 mod statics;
+mod stiffness;
 mod step_equations;
 mod stepping;
 mod topology;

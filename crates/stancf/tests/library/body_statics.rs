@@ -55,9 +55,14 @@ fn norm(v: [f64; 3]) -> f64 {
 /// sideways and tilt it.
 fn moored_buoy() -> System {
     let rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    buoy_at(BodyKind::Free, [0.0, 0.0, -10.0], rotation)
+}
+
+/// The buoy of [`moored_buoy`], `kind`, at `position` turned by `rotation`.
+fn buoy_at(kind: BodyKind, position: [f64; 3], rotation: [[f64; 3]; 3]) -> System {
     let mut body = Body::new(
-        BodyKind::Free,
-        [0.0, 0.0, -10.0],
+        kind,
+        position,
         rotation,
         RigidInertia::principal(500.0, [0.0, 0.0, -0.3], [300.0, 300.0, 200.0]),
     );
@@ -189,4 +194,86 @@ fn a_moored_buoy_started_at_its_equilibrium_stays_put() {
     }
     eprintln!("the buoy moved at most {moved:.1e} m in 2 s");
     assert!(moved < 1e-6, "{moved:e}");
+}
+
+fn solved(system: System) -> SystemStatics {
+    let seeds = stancf::system::catenary_states(&system);
+    let settings = StaticSettings {
+        tolerance: 1e-12,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    statics
+}
+
+/// The lines' force and moment about `reference` on the buoy's three
+/// points (points 0, 2, 4).
+fn mooring_load(statics: &SystemStatics, reference: [f64; 3]) -> [f64; 6] {
+    let mut load = [0.0; 6];
+    for k in 0..3 {
+        let p = 2 * k;
+        let f = statics.point_force(p);
+        let arm: [f64; 3] = std::array::from_fn(|c| statics.point_position(p)[c] - reference[c]);
+        let m = stancf::vec3::cross(arm, f);
+        for c in 0..3 {
+            load[c] += f[c];
+            load[3 + c] += m[c];
+        }
+    }
+    load
+}
+
+/// The buoy's mooring stiffness (B16), from the condensed tangent at its
+/// equilibrium, against differences of the lines' static force and
+/// moment with the buoy held (a fixed body) at poses h from the
+/// equilibrium, along and about global axes through its reference point.
+/// Central differences fall to the matrix as h^2 (measured 3.3e-5,
+/// 8.3e-6, 2.1e-6, 5.2e-7 of its size at h = 2, 1, 0.5, 0.25 mm or mrad);
+/// their Richardson extrapolation from h = 1 and 0.5 removes that term
+/// and agrees to 1e-7 of the matrix's size (the static tolerance's force
+/// error, ~1e-4 N, over 2 h is 5e-7 of it at h = 0.5 mm, and the
+/// extrapolation weighs it by 5/3).
+#[test]
+fn a_moored_buoys_stiffness_matrix_is_the_derivative_of_its_mooring_load() {
+    let mut statics = solved(moored_buoy());
+    let (position, rotation) = statics.body_pose(0).expect("free body");
+    let k = statics.body_stiffness(0).expect("stiffness");
+    let differences = |h: f64| {
+        let mut fd = [[0.0; 6]; 6];
+        for j in 0..6 {
+            let load = |sign: f64| {
+                let mut at = position;
+                let mut turned = rotation;
+                if j < 3 {
+                    at[j] += sign * h;
+                } else {
+                    let mut phi = [0.0; 3];
+                    phi[j - 3] = sign * h;
+                    turned =
+                        stancf::vec3::mat3_mul(&stancf::body::rotation::exp_map(phi), &rotation);
+                }
+                mooring_load(&solved(buoy_at(BodyKind::Fixed, at, turned)), at)
+            };
+            let (up, down) = (load(1.0), load(-1.0));
+            for i in 0..6 {
+                fd[i][j] = -(up[i] - down[i]) / (2.0 * h);
+            }
+        }
+        fd
+    };
+    let (coarse, fine) = (differences(1e-3), differences(5e-4));
+    let size = k.iter().flatten().map(|v| v * v).sum::<f64>().sqrt();
+    let mut worst = 0.0f64;
+    for i in 0..6 {
+        eprintln!("{:?}", k[i].map(|v| (v * 10.0).round() / 10.0));
+        for j in 0..6 {
+            let extrapolated = (4.0 * fine[i][j] - coarse[i][j]) / 3.0;
+            worst = worst.max((k[i][j] - extrapolated).abs());
+        }
+    }
+    eprintln!("stiffness against extrapolated differences: {:.1e} of {size:.3e}", worst / size);
+    assert!(worst < 1e-7 * size, "{:e}", worst / size);
 }

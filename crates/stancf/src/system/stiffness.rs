@@ -1,0 +1,148 @@
+//! The mooring stiffness of a free body at a static equilibrium
+//! (docs/method.md §15.9, (B16)): how the force and moment of its lines
+//! change as the body is moved, everything else (lines, free points,
+//! other free bodies) staying in equilibrium.
+//!
+//! The lines' condensed stiffness at the body's points, K_PQ = d(rows at
+//! P)/d x_Q = -d f_P / d x_Q (f_P the lines' force on P), is the Schur
+//! complement of the static Jacobian onto the points' unknowns, with the
+//! body taken out (its points' rows left as the lines' rows). Moving the
+//! body's reference point by dr and turning it by a small rotation dphi
+//! (global axes, about the reference point) moves P by dr + dphi x a_P
+//! (a_P = x_P - r) and turns the arm, so the lines' force F = sum f_P and
+//! moment M = sum a_P x f_P about the reference point change by
+//!
+//! ```text
+//!   K = -d[F; M]/d[dr; dphi]
+//!     = sum_PQ [ K_PQ          -K_PQ [a_Q x]        ]
+//!              [ [a_P x] K_PQ  -[a_P x] K_PQ [a_Q x] ]  -  sum_P [ 0  0                        ]   (B16)
+//!                                                               [ 0  a_P f_P^T - (a_P . f_P) I ]
+//! ```
+//!
+//! exact (the derivatives of the lines' rows, not differences), the
+//! matrix designers take from MoorPy's finite differences; not symmetric
+//! where the lines pull (the last term is the moment of the pull turning
+//! with the body).
+
+use super::SystemStatics;
+use crate::bordered::{BorderedLu, BorderedMatrix};
+use crate::linear::{AddEntries, Factorization, Jacobian};
+use crate::statics::StaticEquations;
+use crate::vec3::{dot, sub};
+
+/// [a x], the cross-product matrix.
+fn hat(a: [f64; 3]) -> [[f64; 3]; 3] {
+    [[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]]
+}
+
+fn mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    crate::vec3::mat3_mul(a, b)
+}
+
+impl SystemStatics {
+    /// The mooring stiffness (B16) of free body b at the last converged
+    /// increment (the equilibrium once [`SystemStatics::solve`] is done):
+    /// rows F_x, F_y, F_z, M_x, M_y, M_z of the lines' force and moment
+    /// about its reference point (global axes), columns its reference
+    /// point's displacement and its small rotation about global axes
+    /// through the reference point; N/m, N/rad, N m/m, N m/rad. None for a
+    /// fixed body, or if the rest of the system is singular with the
+    /// body held.
+    pub fn body_stiffness(&mut self, b: usize) -> Option<[[f64; 6]; 6]> {
+        let (reference, _) = self.body_pose(b)?;
+        let k = self.equations.bodies.iter().position(|s| s.index == b)?;
+        let x = self.newton.x.clone();
+        let eq = &mut self.equations;
+        let n = eq.layout.size;
+        let mut jac = BorderedMatrix::new(&eq.layout.shapes, eq.layout.border);
+        let mut residual = vec![0.0; n];
+        let body = eq.bodies.remove(k);
+        eq.evaluate(&x, &mut residual, Some(&mut jac));
+        eq.bodies.insert(k, body);
+        let body = &eq.bodies[k];
+        let layout = &eq.layout;
+        let ys: Vec<usize> = body
+            .points
+            .iter()
+            .flat_map(|bp| (0..3).map(move |c| (bp.point, c)))
+            .map(|(p, c)| layout.point_unknown(p, 0, c).expect("border"))
+            .collect();
+        let held: Vec<usize> = ys
+            .iter()
+            .copied()
+            .chain((0..6).map(|q| layout.body_unknown(b, 0, q).expect("a free body")))
+            .collect();
+        let column = |j: usize| -> Vec<f64> { (0..n).map(|i| jac.get(i, j)).collect() };
+        let row = |i: usize| -> Vec<f64> { (0..n).map(|j| jac.get(i, j)).collect() };
+        let columns: Vec<Vec<f64>> = ys.iter().map(|&j| column(j)).collect();
+        let rows: Vec<Vec<f64>> = ys.iter().map(|&i| row(i)).collect();
+        // The rest of the system with the points and the body held: their
+        // rows and columns made the identity.
+        for &i in &held {
+            jac.clear_border_row(i);
+            jac.clear_border_column(i);
+            jac.add(i, i, 1.0);
+        }
+        let mut lu = BorderedLu::new(&layout.shapes, layout.border);
+        lu.matrix_mut().copy_from(&jac);
+        lu.factorize().ok()?;
+        let m = ys.len();
+        let mut kpq = vec![0.0; m * m];
+        for (c, col) in columns.iter().enumerate() {
+            let mut w = col.clone();
+            for &i in &held {
+                w[i] = 0.0;
+            }
+            lu.solve(&mut w);
+            for (r, row) in rows.iter().enumerate() {
+                kpq[r * m + c] = row[ys[c]] - dot_all(row, &w);
+            }
+        }
+        let points: Vec<usize> = body.points.iter().map(|bp| bp.point).collect();
+        let arms: Vec<[f64; 3]> = points
+            .iter()
+            .map(|&p| sub(self.point_position(p), reference))
+            .collect();
+        let forces: Vec<[f64; 3]> = points.iter().map(|&p| self.point_force(p)).collect();
+        Some(assemble_stiffness(&kpq, &arms, &forces))
+    }
+}
+
+/// sum_i a_i b_i.
+fn dot_all(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// (B16) from the condensed K_PQ (row-major over the points' 3 n
+/// coordinates), the arms a_P and the lines' forces f_P.
+fn assemble_stiffness(kpq: &[f64], arms: &[[f64; 3]], forces: &[[f64; 3]]) -> [[f64; 6]; 6] {
+    let m = 3 * arms.len();
+    let mut k6 = [[0.0; 6]; 6];
+    for (p, ap) in arms.iter().enumerate() {
+        for (q, aq) in arms.iter().enumerate() {
+            let block: [[f64; 3]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|j| kpq[(3 * p + i) * m + 3 * q + j]));
+            let (hp, hq) = (hat(*ap), hat(*aq));
+            let k_aq = mul(&block, &hq);
+            let ap_k = mul(&hp, &block);
+            let ap_k_aq = mul(&hp, &k_aq);
+            for i in 0..3 {
+                for j in 0..3 {
+                    k6[i][j] += block[i][j];
+                    k6[i][3 + j] -= k_aq[i][j];
+                    k6[3 + i][j] += ap_k[i][j];
+                    k6[3 + i][3 + j] -= ap_k_aq[i][j];
+                }
+            }
+        }
+        let f = forces[p];
+        let af = dot(*ap, f);
+        for i in 0..3 {
+            for j in 0..3 {
+                let identity = if i == j { af } else { 0.0 };
+                k6[3 + i][3 + j] -= ap[i] * f[j] - identity;
+            }
+        }
+    }
+    k6
+}
