@@ -117,16 +117,18 @@ impl CoupledSystem {
         let Some(running) = self.running.as_ref() else {
             return Ok(());
         };
+        let to_all = self.layout.positions(x, self.coupled.len());
         for (k, &p) in self.coupled.iter().enumerate() {
             let from = triple(&running.position, k);
-            let to = triple(x, k);
+            let to = triple(&to_all, k);
             let jump =
                 ((to[0] - from[0]).powi(2) + (to[1] - from[1]).powi(2) + (to[2] - from[2]).powi(2))
                     .sqrt();
             let speed = jump / length;
             if speed > MAX_COUPLED_SPEED {
+                let (start, count) = self.layout.array_range(k);
                 return Err(ModelError::invalid(
-                    format!("x[{}..{}]", 3 * k, 3 * k + 3),
+                    format!("x[{}..{}]", start, start + count),
                     format!(
                         "coupled point {k} (point index {p}) would move {} m in {} s, a mean \
                          speed of {} m/s, above the {MAX_COUPLED_SPEED} m/s a coupled point \
@@ -150,7 +152,7 @@ impl CoupledSystem {
             return Err(ModelError::invalid(
                 key,
                 format!(
-                    "expected {} values (coupled_dof: 3 per coupled point), got {}",
+                    "expected {} values (coupled_dof: 6 per coupled body, 3 per coupled point), got {}",
                     self.coupled_dof(),
                     values.len()
                 ),

@@ -20,6 +20,7 @@
 //!   the handle is told otherwise, and [`CoupledSystem::step_to_with`]
 //!   stops between two of them when its caller asks (Ctrl-C in Python).
 
+mod bodies;
 mod bounds;
 mod error;
 mod identity;
@@ -34,6 +35,7 @@ use crate::model::Model;
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::statics::StaticSettings;
 use crate::system::{PointKind, System, SystemSimulation, SystemStatics, Topology};
+use bodies::{ArrayLayout, CoupledBody};
 use identity::{Identity, SystemDigest};
 
 /// The forces of the lines on the coupled points after an interval,
@@ -67,9 +69,13 @@ pub struct PointReading {
 #[derive(Clone)]
 struct Running {
     sim: SystemSimulation,
-    /// Positions and (when given) velocities of the last call.
+    /// Positions and (when given) velocities of the last call, 3 per
+    /// coupled point (those on coupled bodies included).
     position: Vec<f64>,
     velocity: Option<Vec<f64>>,
+    /// The coupled bodies' reference points and their velocities.
+    reference: Vec<[f64; 3]>,
+    reference_rate: Option<Vec<[f64; 3]>>,
 }
 
 /// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`])
@@ -94,7 +100,13 @@ pub struct CoupledSystem {
     /// Halvings of a step that Newton fails (see
     /// [`SystemSimulation::set_step_halvings`]).
     step_halvings: u32,
+    /// Every coupled point (those on coupled bodies included), in the
+    /// system's order: the simulation's moving points.
     coupled: Vec<usize>,
+    /// The coupling arrays' layout: coupled bodies, then coupled points.
+    layout: ArrayLayout,
+    /// The coupled points of the arrays (not on a body), in their order.
+    array_points: Vec<usize>,
     /// The system and step settings hashed once, for `identity`.
     digest: SystemDigest,
     /// Whose states this handle takes (see [`CoupledState`]); set by the
@@ -129,15 +141,17 @@ impl CoupledSystem {
         let coupled: Vec<usize> = (0..system.points().len())
             .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
             .collect();
-        if coupled.is_empty() {
+        let layout = array_layout(&system, &coupled);
+        if layout.dof() == 0 {
             return Err(ModelError::invalid(
                 "points",
-                "the system has no coupled point for a coupling code to move",
+                "the system has no coupled point or coupled body for a coupling code to move",
             ));
         }
+        let array_points: Vec<usize> = layout.plain.iter().map(|&k| coupled[k]).collect();
         let digest = SystemDigest::of(&system, &steps);
         Ok(CoupledSystem {
-            identity: Identity::of(&digest, &coupled, 0),
+            identity: Identity::of(&digest, &identity_order(&layout, &array_points), 0),
             digest,
             system,
             seed,
@@ -145,6 +159,8 @@ impl CoupledSystem {
             steps,
             step_halvings: 0,
             coupled,
+            layout,
+            array_points,
             max_interval_steps: MAX_INTERVAL_STEPS,
             running: None,
         })
@@ -163,26 +179,40 @@ impl CoupledSystem {
             ));
         }
         self.step_halvings = halvings;
-        self.identity = Identity::of(&self.digest, &self.coupled, halvings);
+        self.identity = Identity::of(
+            &self.digest,
+            &identity_order(&self.layout, &self.array_points),
+            halvings,
+        );
         Ok(self)
     }
 
-    /// Orders the coupled points as `order` (a permutation of
-    /// [`Self::coupled_points`]; e.g. by the points' ids).
+    /// Orders the coupled points of the arrays as `order` (a permutation
+    /// of [`Self::coupled_points`]; e.g. by the points' ids).
     pub fn with_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
         let mut sorted = order.clone();
         sorted.sort_unstable();
-        if sorted != self.coupled {
+        let mut own = self.array_points.clone();
+        own.sort_unstable();
+        if sorted != own {
             return Err(ModelError::invalid(
                 "order",
                 format!(
                     "must list the coupled points {:?} once each, got {order:?}",
-                    self.coupled
+                    own
                 ),
             ));
         }
-        self.coupled = order;
-        self.identity = Identity::of(&self.digest, &self.coupled, self.step_halvings);
+        self.layout.plain = order
+            .iter()
+            .map(|p| self.coupled.iter().position(|q| q == p).expect("a coupled point"))
+            .collect();
+        self.array_points = order;
+        self.identity = Identity::of(
+            &self.digest,
+            &identity_order(&self.layout, &self.array_points),
+            self.step_halvings,
+        );
         Ok(self)
     }
 
@@ -205,26 +235,41 @@ impl CoupledSystem {
         Ok(())
     }
 
-    /// The coupled points (indices in the system), in the order of the
-    /// coupling arrays.
+    /// The coupled points not on a body (indices in the system), in the
+    /// order of the coupling arrays (after the coupled bodies).
     pub fn coupled_points(&self) -> &[usize] {
-        &self.coupled
+        &self.array_points
     }
 
-    /// The coupled points' positions where the system puts them as built
-    /// (the scenario's or deck's, m), 3 per point in the order of the
-    /// coupling arrays: known before [`Self::initialize`], a start the
-    /// coupling code may give it.
+    /// The coupled bodies (indices in the system), in the order of the
+    /// coupling arrays (first, 6 numbers each).
+    pub fn coupled_bodies(&self) -> Vec<usize> {
+        self.layout.bodies.iter().map(|b| b.body).collect()
+    }
+
+    /// The coupled bodies' poses (their reference points and MoorDyn's
+    /// roll, pitch and yaw in radians) and the coupled points' positions
+    /// where the system puts them as built (the scenario's or deck's), in
+    /// the order of the coupling arrays: known before
+    /// [`Self::initialize`], a start the coupling code may give it.
     pub fn initial_positions(&self) -> Vec<f64> {
-        self.coupled
-            .iter()
-            .flat_map(|&p| self.system.points()[p].position)
-            .collect()
+        let mut x = Vec::with_capacity(self.coupled_dof());
+        for b in &self.layout.bodies {
+            let body = &self.system.bodies()[b.body];
+            x.extend(body.position);
+            let angles = crate::body::pose::moordyn_angles(&body.rotation);
+            x.extend(angles.map(f64::to_radians));
+        }
+        for &p in &self.array_points {
+            x.extend(self.system.points()[p].position);
+        }
+        x
     }
 
-    /// Length of the coupling arrays: 3 per coupled point.
+    /// Length of the coupling arrays: 6 per coupled body, 3 per coupled
+    /// point.
     pub fn coupled_dof(&self) -> usize {
-        3 * self.coupled.len()
+        self.layout.dof()
     }
 
     /// The system as built (its coupled points where the scenario puts
@@ -290,8 +335,11 @@ impl CoupledSystem {
         }
         let mut system = self.system.clone();
         let mut seed = self.seed.clone();
+        let n = self.coupled.len();
+        let position = self.layout.positions(x, n);
+        let velocity = xd.map(|v| self.layout.velocities(x, v, n));
         for (k, &p) in self.coupled.iter().enumerate() {
-            let at = CoupledMotion::Interval(MotionInterval::at_rest(triple(x, k)));
+            let at = CoupledMotion::Interval(MotionInterval::at_rest(triple(&position, k)));
             system.set_point_motion(p, at.clone())?;
             seed.set_point_motion(p, at)?;
         }
@@ -306,17 +354,23 @@ impl CoupledSystem {
         if !finished {
             return Err(CouplingError::Interrupted { time: self.time() });
         }
-        let forces = self
-            .coupled
-            .iter()
-            .flat_map(|&p| statics.point_force(p))
-            .collect();
-        let mut sim = SystemSimulation::new(system, statics.line_states(), self.steps.clone())?;
+        let coupled = &self.coupled;
+        let forces = self.layout.forces(
+            |k| statics.point_force(coupled[k]),
+            |k| statics.point_position(coupled[k]),
+            |b| self.layout.reference(x, b),
+        );
+        // Free bodies start where the static solve left them.
+        let at_rest = statics.system_at_equilibrium();
+        let mut sim = SystemSimulation::new(at_rest, statics.line_states(), self.steps.clone())?;
         sim.set_step_halvings(self.step_halvings)?;
+        let bodies = 0..self.layout.bodies.len();
         self.running = Some(Running {
             sim,
-            position: x.to_vec(),
-            velocity: xd.map(<[f64]>::to_vec),
+            position,
+            velocity,
+            reference: bodies.clone().map(|b| self.layout.reference(x, b)).collect(),
+            reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
         });
         Ok(forces)
     }
@@ -354,52 +408,76 @@ impl CoupledSystem {
     ) -> Result<CoupledForces, CouplingError> {
         let (steps, h) = self.interval(t_next, x, xd)?;
         let coupled = self.coupled.clone();
+        let layout = self.layout.clone();
+        let n = coupled.len();
+        let end = layout.positions(x, n);
+        let end_rate = xd.map(|v| layout.velocities(x, v, n));
         let running = self.running.as_mut().ok_or_else(not_initialized)?;
         let t0 = running.sim.time();
-        let rates = match (&running.velocity, xd) {
-            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1)),
+        let span = steps as f64 * h;
+        let rates = match (&running.velocity, &end_rate) {
+            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1.as_slice())),
             _ => None,
         };
         for (k, &p) in coupled.iter().enumerate() {
             let interval = MotionInterval {
                 t0,
-                duration: steps as f64 * h,
+                duration: span,
                 start: triple(&running.position, k),
-                end: triple(x, k),
+                end: triple(&end, k),
                 rates: rates.map(|(a, b)| (triple(a, k), triple(b, k))),
             };
             running
                 .sim
                 .set_point_motion(p, CoupledMotion::Interval(interval))?;
         }
+        // The bodies' reference points on the same motion (the moments'
+        // arms).
+        let references: Vec<MotionInterval> = (0..layout.bodies.len())
+            .map(|b| MotionInterval {
+                t0,
+                duration: span,
+                start: running.reference[b],
+                end: layout.reference(x, b),
+                rates: match (&running.reference_rate, xd) {
+                    (Some(r0), Some(v)) => Some((r0[b], layout.reference(v, b))),
+                    _ => None,
+                },
+            })
+            .collect();
         running.sim.set_time_step(h);
+        let loads = |sim: &SystemSimulation| {
+            layout.forces(
+                |k| sim.point_force(coupled[k]),
+                |k| sim.point_state(coupled[k]).0,
+                |b| references[b].state(sim.time()).0,
+            )
+        };
         let mut impulse = vec![0.0; x.len()];
         for taken in 1..=steps {
             if let Err(e) = running.sim.step() {
-                running.stop_on_motion(&coupled);
+                running.stop_on_motion(&coupled, &references);
                 return Err(e.into());
             }
-            for (k, &p) in coupled.iter().enumerate() {
-                let f = running.sim.point_force(p);
-                for c in 0..3 {
-                    impulse[3 * k + c] += f[c] * h;
-                }
+            for (i, f) in loads(&running.sim).iter().enumerate() {
+                impulse[i] += f * h;
             }
             if taken < steps && stop() {
-                running.stop_on_motion(&coupled);
+                running.stop_on_motion(&coupled, &references);
                 return Err(CouplingError::Interrupted {
                     time: running.sim.time(),
                 });
             }
         }
-        running.position = x.to_vec();
-        running.velocity = xd.map(<[f64]>::to_vec);
-        let span = steps as f64 * h;
+        running.position = end;
+        running.velocity = end_rate;
+        running.reference = (0..layout.bodies.len())
+            .map(|b| layout.reference(x, b))
+            .collect();
+        running.reference_rate =
+            xd.map(|v| (0..layout.bodies.len()).map(|b| layout.reference(v, b)).collect());
         Ok(CoupledForces {
-            last_step: coupled
-                .iter()
-                .flat_map(|&p| running.sim.point_force(p))
-                .collect(),
+            last_step: loads(&running.sim),
             interval_mean: impulse.iter().map(|i| i / span).collect(),
             steps,
         })
@@ -431,7 +509,7 @@ impl Running {
     /// After a failed or stopped step: the coupled points' last positions and
     /// velocities become where their interval's motion has them at the
     /// time reached, so the next interval starts from there.
-    fn stop_on_motion(&mut self, coupled: &[usize]) {
+    fn stop_on_motion(&mut self, coupled: &[usize], references: &[MotionInterval]) {
         let t = self.sim.time();
         let mut velocity = vec![0.0; self.position.len()];
         for (k, &p) in coupled.iter().enumerate() {
@@ -440,6 +518,11 @@ impl Running {
             velocity[3 * k..3 * k + 3].copy_from_slice(&v);
         }
         self.velocity = self.velocity.is_some().then_some(velocity);
+        let states: Vec<_> = references.iter().map(|m| m.state(t)).collect();
+        self.reference = states.iter().map(|s| s.0).collect();
+        if self.reference_rate.is_some() {
+            self.reference_rate = Some(states.iter().map(|s| s.1).collect());
+        }
     }
 }
 
@@ -450,4 +533,39 @@ fn not_initialized() -> ModelError {
 
 fn triple(values: &[f64], k: usize) -> [f64; 3] {
     [values[3 * k], values[3 * k + 1], values[3 * k + 2]]
+}
+
+/// The coupling arrays' layout of `system` whose coupled points are
+/// `coupled` (system order): its coupled bodies in body order, their
+/// points' places in `coupled`, then the other coupled points.
+fn array_layout(system: &System, coupled: &[usize]) -> ArrayLayout {
+    let place = |p: usize| coupled.iter().position(|&q| q == p).expect("a coupled point");
+    let bodies: Vec<CoupledBody> = (0..system.bodies().len())
+        .filter(|&b| system.bodies()[b].kind == crate::system::BodyKind::Coupled)
+        .map(|b| CoupledBody {
+            body: b,
+            points: system
+                .body_points(b)
+                .iter()
+                .map(|&(p, local)| (place(p), local))
+                .collect(),
+        })
+        .collect();
+    let on_body: Vec<usize> = bodies
+        .iter()
+        .flat_map(|b| b.points.iter().map(|&(k, _)| k))
+        .collect();
+    let plain = (0..coupled.len()).filter(|k| !on_body.contains(k)).collect();
+    ArrayLayout { bodies, plain }
+}
+
+/// What a state's identity records of the arrays' order: the coupled
+/// bodies (as usize::MAX - b) and the coupled points.
+fn identity_order(layout: &ArrayLayout, points: &[usize]) -> Vec<usize> {
+    layout
+        .bodies
+        .iter()
+        .map(|b| usize::MAX - b.body)
+        .chain(points.iter().copied())
+        .collect()
 }

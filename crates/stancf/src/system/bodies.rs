@@ -5,6 +5,9 @@
 //!
 //! - A *fixed* body holds its points where its pose puts them: they
 //!   become fixed points (anchors on a seabed template).
+//! - A *coupled* body is moved by another code (a floating platform's
+//!   solver, docs/method.md §13): its points become coupled points, each
+//!   on the motion of the body point (`crate::coupling`).
 //! - A *free* body has six unknowns per time slot: its centre of mass
 //!   and its rotation vector over the step (§15.3-15.4), stepped with its
 //!   lines by the Galerkin step. Its points' positions are functions of
@@ -24,6 +27,9 @@ pub enum BodyKind {
     /// Six unknowns: moved by its weight, its buoyancy, its water and its
     /// lines.
     Free,
+    /// Moved by a coupling code: its points are coupled points (its mass,
+    /// inertia and water are the coupling code's, as in MoorDyn).
+    Coupled,
 }
 
 /// A rigid body of a system.
@@ -134,9 +140,16 @@ impl Body {
 }
 
 /// Validates the bodies and places the points on them: a point on a
-/// fixed body becomes a fixed point where the body puts it; a point on a
-/// free body gets its position at t = 0. Keys: `bodies[i]`, `points[i]`.
-pub(super) fn place_points(bodies: &[Body], points: &mut [Point]) -> Result<(), ModelError> {
+/// fixed body becomes a fixed point where the body puts it, a point on a
+/// coupled body a coupled point there (at rest until a coupling code
+/// moves the body); a point on a free body gets its position at t = 0.
+/// Returns every body's points with their body coordinates. Keys:
+/// `bodies[i]`, `points[i]`.
+pub(super) fn place_points(
+    bodies: &[Body],
+    points: &mut [Point],
+) -> Result<Vec<Vec<(usize, [f64; 3])>>, ModelError> {
+    let mut on_body = vec![Vec::new(); bodies.len()];
     for (i, b) in bodies.iter().enumerate() {
         b.check(&format!("bodies[{i}]"))?;
     }
@@ -165,9 +178,16 @@ pub(super) fn place_points(bodies: &[Body], points: &mut [Point]) -> Result<(), 
             ));
         }
         p.position = b.point(local);
-        if b.kind == BodyKind::Fixed {
-            p.kind = PointKind::Fixed;
+        on_body[body].push((i, local));
+        match b.kind {
+            BodyKind::Fixed => p.kind = PointKind::Fixed,
+            BodyKind::Coupled => {
+                p.kind = PointKind::Coupled(crate::motion::CoupledMotion::Interval(
+                    crate::motion::MotionInterval::at_rest(p.position),
+                ))
+            }
+            BodyKind::Free => {}
         }
     }
-    Ok(())
+    Ok(on_body)
 }

@@ -259,7 +259,7 @@ impl System {
         bodies: Vec<Body>,
         gravity: [f64; 3],
     ) -> Result<Self, ModelError> {
-        bodies::place_points(&bodies, &mut points)?;
+        let body_points = bodies::place_points(&bodies, &mut points)?;
         if lines.is_empty() {
             return Err(ModelError::invalid(
                 "lines",
@@ -332,6 +332,7 @@ impl System {
             ends: out.iter().map(|l| l.ends).collect(),
             points,
             bodies,
+            body_points,
             gravity,
         };
         Ok(System {

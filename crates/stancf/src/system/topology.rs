@@ -17,6 +17,8 @@ pub struct Topology {
     pub(super) points: Vec<Point>,
     /// Rigid bodies (docs/method.md §15.7).
     pub(super) bodies: Vec<super::Body>,
+    /// Every body's points (indices) and their body coordinates.
+    pub(super) body_points: Vec<Vec<(usize, [f64; 3])>>,
     /// Acceleration of gravity on the points' masses (m/s^2).
     pub(super) gravity: [f64; 3],
 }
@@ -70,6 +72,12 @@ impl Topology {
 
     pub fn bodies(&self) -> &[super::Body] {
         &self.bodies
+    }
+
+    /// Body b's points (indices) and their coordinates in its axes from
+    /// its reference point.
+    pub fn body_points(&self, b: usize) -> &[(usize, [f64; 3])] {
+        &self.body_points[b]
     }
 
     /// The free bodies' indices, in order.

@@ -16,6 +16,7 @@ mod catenary_on_seabed;
 mod clamped_ends;
 mod compression;
 mod constrained_dynamics;
+mod coupled_bodies;
 mod coupling;
 mod drag;
 mod element_derivatives;

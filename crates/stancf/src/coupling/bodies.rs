@@ -1,0 +1,190 @@
+//! Coupled bodies in the coupling arrays (docs/method.md §13.6): a
+//! floating platform moved by another code, as OpenFAST moves MoorDyn's
+//! coupled bodies. In MoorDyn's order the arrays hold the coupled
+//! bodies' 6 numbers each, then the coupled points' 3:
+//!
+//! - x: the reference point's position (m) and the roll, pitch and yaw
+//!   (radians) of MoorDyn's convention, R = R_x(roll) R_y(pitch) R_z(yaw)
+//!   (docs/method.md §15.1);
+//! - xd: the reference point's velocity (m/s) and the angular velocity
+//!   w (rad/s, global axes; MoorDyn passes the angles' rates and uses
+//!   them as w, the same for the small rotations of a platform);
+//! - the forces returned: the lines' force on the body and its moment
+//!   about the reference point (global axes), summed over the body's
+//!   points, f = sum f_P, m = sum (x_P - r) x f_P.
+//!
+//! Inside, every point on a coupled body is a coupled point moving along
+//! the body point's position r + R xi and velocity v + w x R xi at the
+//! interval's ends, (K1)-(K2) per point, as a coupled point does.
+
+use crate::body::pose::{point, rotate, rotation_from_moordyn_angles};
+use crate::vec3::{add, cross, sub};
+
+/// A coupled body of the arrays: its index among the system's bodies and
+/// its points (their places in the coupled points' list and their body
+/// coordinates).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct CoupledBody {
+    pub body: usize,
+    pub points: Vec<(usize, [f64; 3])>,
+}
+
+/// The arrays' layout: the coupled bodies, then the coupled points not on
+/// a body (places in the coupled points' list, in the arrays' order).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct ArrayLayout {
+    pub bodies: Vec<CoupledBody>,
+    pub plain: Vec<usize>,
+}
+
+/// The pose of a body from its 6 numbers: the reference point and R.
+fn pose(x: &[f64]) -> ([f64; 3], [[f64; 3]; 3]) {
+    let degrees = [x[3], x[4], x[5]].map(f64::to_degrees);
+    ([x[0], x[1], x[2]], rotation_from_moordyn_angles(degrees))
+}
+
+impl ArrayLayout {
+    /// Length of the arrays: 6 per coupled body, 3 per coupled point.
+    pub fn dof(&self) -> usize {
+        6 * self.bodies.len() + 3 * self.plain.len()
+    }
+
+    /// Start of body k's numbers and of plain point k's.
+    fn body_start(&self, k: usize) -> usize {
+        6 * k
+    }
+    fn point_start(&self, k: usize) -> usize {
+        6 * self.bodies.len() + 3 * k
+    }
+
+    /// The coupled points' positions (3 each, in the list's order, `n`
+    /// points) from the arrays' x.
+    pub fn positions(&self, x: &[f64], n: usize) -> Vec<f64> {
+        let mut out = vec![0.0; 3 * n];
+        for (k, body) in self.bodies.iter().enumerate() {
+            let s = self.body_start(k);
+            let (r, rotation) = pose(&x[s..s + 6]);
+            for &(place, local) in &body.points {
+                out[3 * place..3 * place + 3].copy_from_slice(&point(r, &rotation, local));
+            }
+        }
+        for (k, &place) in self.plain.iter().enumerate() {
+            let s = self.point_start(k);
+            out[3 * place..3 * place + 3].copy_from_slice(&x[s..s + 3]);
+        }
+        out
+    }
+
+    /// The coupled points' velocities from the arrays' x and xd.
+    pub fn velocities(&self, x: &[f64], xd: &[f64], n: usize) -> Vec<f64> {
+        let mut out = vec![0.0; 3 * n];
+        for (k, body) in self.bodies.iter().enumerate() {
+            let s = self.body_start(k);
+            let (_, rotation) = pose(&x[s..s + 6]);
+            let (v, w) = ([xd[s], xd[s + 1], xd[s + 2]], [xd[s + 3], xd[s + 4], xd[s + 5]]);
+            for &(place, local) in &body.points {
+                let arm = rotate(&rotation, local);
+                out[3 * place..3 * place + 3].copy_from_slice(&add(v, cross(w, arm)));
+            }
+        }
+        for (k, &place) in self.plain.iter().enumerate() {
+            let s = self.point_start(k);
+            out[3 * place..3 * place + 3].copy_from_slice(&xd[s..s + 3]);
+        }
+        out
+    }
+
+    /// The arrays' forces: a coupled body's force and moment about its
+    /// reference point `reference(k)` from its points' forces and
+    /// positions, a coupled point's force.
+    pub fn forces(
+        &self,
+        force: impl Fn(usize) -> [f64; 3],
+        position: impl Fn(usize) -> [f64; 3],
+        reference: impl Fn(usize) -> [f64; 3],
+    ) -> Vec<f64> {
+        let mut out = vec![0.0; self.dof()];
+        for (k, body) in self.bodies.iter().enumerate() {
+            let s = self.body_start(k);
+            let r = reference(k);
+            for &(place, _) in &body.points {
+                let f = force(place);
+                let m = cross(sub(position(place), r), f);
+                for c in 0..3 {
+                    out[s + c] += f[c];
+                    out[s + 3 + c] += m[c];
+                }
+            }
+        }
+        for (k, &place) in self.plain.iter().enumerate() {
+            let s = self.point_start(k);
+            out[s..s + 3].copy_from_slice(&force(place));
+        }
+        out
+    }
+
+    /// Where the numbers that move coupled point `place` are in the
+    /// arrays: its body's 6, or its own 3.
+    pub fn array_range(&self, place: usize) -> (usize, usize) {
+        for (k, body) in self.bodies.iter().enumerate() {
+            if body.points.iter().any(|&(p, _)| p == place) {
+                return (self.body_start(k), 6);
+            }
+        }
+        let k = self.plain.iter().position(|&p| p == place).expect("a coupled point");
+        (self.point_start(k), 3)
+    }
+
+    /// Body k's reference point in the arrays' x.
+    pub fn reference(&self, x: &[f64], k: usize) -> [f64; 3] {
+        let s = self.body_start(k);
+        [x[s], x[s + 1], x[s + 2]]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A body's points where its pose puts them and moving with it, and
+    /// its points' forces summed into a force and a moment about the
+    /// reference point (a couple of two opposite forces: no force, their
+    /// moment).
+    #[test]
+    fn a_coupled_bodys_numbers_move_its_points_and_sum_their_forces() {
+        let layout = ArrayLayout {
+            bodies: vec![CoupledBody {
+                body: 0,
+                points: vec![(0, [1.0, 0.0, 0.0]), (2, [-1.0, 0.0, 0.0])],
+            }],
+            plain: vec![1],
+        };
+        assert_eq!(layout.dof(), 9);
+        let yaw = std::f64::consts::FRAC_PI_2;
+        let x = [10.0, 0.0, -5.0, 0.0, 0.0, yaw, 7.0, 8.0, 9.0];
+        let p = layout.positions(&x, 3);
+        let expect = [10.0, 1.0, -5.0, 7.0, 8.0, 9.0, 10.0, -1.0, -5.0];
+        for (a, b) in p.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-14, "{p:?}");
+        }
+        let xd = [0.5, 0.0, 0.0, 0.0, 0.0, 2.0, 1.0, 1.0, 1.0];
+        let v = layout.velocities(&x, &xd, 3);
+        // w x arm: 2 z x (0, 1, 0) = (-2, 0, 0); at the other point (2, 0, 0).
+        let expect = [-1.5, 0.0, 0.0, 1.0, 1.0, 1.0, 2.5, 0.0, 0.0];
+        for (a, b) in v.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-14, "{v:?}");
+        }
+        let pos = |k: usize| [p[3 * k], p[3 * k + 1], p[3 * k + 2]];
+        let f = |k: usize| match k {
+            0 => [3.0, 0.0, 0.0],
+            2 => [-3.0, 0.0, 0.0],
+            _ => [0.0, 0.0, 4.0],
+        };
+        let out = layout.forces(f, pos, |_| [10.0, 0.0, -5.0]);
+        // (0, 1, 0) x (3, 0, 0) + (0, -1, 0) x (-3, 0, 0) = (0, 0, -6).
+        let expect = [0.0, 0.0, 0.0, 0.0, 0.0, -6.0, 0.0, 0.0, 4.0];
+        for (a, b) in out.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-13, "{out:?}");
+        }
+    }
+}

@@ -1,0 +1,157 @@
+//! Coupled bodies (docs/method.md §13.6): a host moves a platform by its
+//! six numbers, and gets back the force and the moment of its lines
+//! about the platform's reference point.
+
+use crate::common::rope_systems::{line_model, settings};
+use stancf::body::pose::{point, rotate, rotation_from_moordyn_angles};
+use stancf::body::RigidInertia;
+use stancf::coupling::CoupledSystem;
+use stancf::system::{Body, BodyKind, End, Line, Point, System};
+use stancf::vec3::{add, cross, sub};
+use stancf::StaticSettings;
+
+const G: [f64; 3] = [0.0, 0.0, -9.81];
+
+/// The fairleads in the platform's axes and the anchors below them.
+fn fairleads() -> [([f64; 3], [f64; 3]); 3] {
+    std::array::from_fn(|k| {
+        let a = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
+        (
+            [1.5 * a.cos(), 1.5 * a.sin(), -0.5],
+            [4.0 * a.cos(), 4.0 * a.sin(), -3.0],
+        )
+    })
+}
+
+/// Three rope lines from anchors to the fairleads, on a coupled
+/// platform at the origin (`on_body`) or at three coupled points.
+fn moored(on_body: bool) -> System {
+    let mut lines = Vec::new();
+    let mut points = Vec::new();
+    for (k, (local, anchor)) in fairleads().iter().enumerate() {
+        points.push(if on_body {
+            Point::on_body(0, *local)
+        } else {
+            Point::coupled(*local, stancf::motion::CoupledMotion::NONE)
+        });
+        points.push(Point::fixed(*anchor));
+        lines.push(Line {
+            model: line_model(*anchor, *local, 4),
+            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+        });
+    }
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let bodies = if on_body {
+        vec![Body::new(
+            BodyKind::Coupled,
+            [0.0; 3],
+            identity,
+            RigidInertia::principal(1.0, [0.0; 3], [1.0; 3]),
+        )]
+    } else {
+        vec![]
+    };
+    System::with_bodies(lines, points, bodies, G).expect("system")
+}
+
+fn handle(system: System) -> CoupledSystem {
+    CoupledSystem::new(system.clone(), system, StaticSettings::default(), settings())
+        .expect("handle")
+}
+
+/// The platform's pose and velocity at t (MoorDyn's angles in radians,
+/// the angular velocity global).
+fn platform(t: f64) -> ([f64; 6], [f64; 6]) {
+    let x = [0.02 * t, -0.01 * t, 0.005 * t, 0.03 * t, -0.02 * t, 0.04 * t];
+    // The angles turn slowly: w is given as the host gives it.
+    let xd = [0.02, -0.01, 0.005, 0.03, -0.02, 0.04];
+    (x, xd)
+}
+
+/// The three fairleads' positions and velocities for the platform at x,
+/// xd: r + R xi and v + w x R xi.
+fn fairlead_arrays(x: &[f64; 6], xd: &[f64; 6]) -> (Vec<f64>, Vec<f64>) {
+    let rotation = rotation_from_moordyn_angles([x[3], x[4], x[5]].map(f64::to_degrees));
+    let (r, v, w) = ([x[0], x[1], x[2]], [xd[0], xd[1], xd[2]], [xd[3], xd[4], xd[5]]);
+    let mut p = Vec::new();
+    let mut pd = Vec::new();
+    for (local, _) in fairleads() {
+        p.extend(point(r, &rotation, local));
+        pd.extend(add(v, cross(w, rotate(&rotation, local))));
+    }
+    (p, pd)
+}
+
+/// The platform moved by its six numbers and the same platform's three
+/// fairleads moved as coupled points along the same motion give the same
+/// lines: the platform's force is the fairleads' sum and its moment their
+/// moments about the reference point, after the static start and over
+/// three intervals of two steps, to round-off (1e-12 of the force).
+#[test]
+fn a_coupled_platform_takes_its_fairleads_force_and_moment() {
+    let mut body = handle(moored(true));
+    let mut points = handle(moored(false));
+    assert_eq!((body.coupled_dof(), points.coupled_dof()), (6, 9));
+    assert_eq!(body.initial_positions(), vec![0.0; 6]);
+    let (x0, xd0) = platform(0.0);
+    let (p0, pd0) = fairlead_arrays(&x0, &xd0);
+    let fb = body.initialize(&x0, Some(&xd0)).expect("initialize body");
+    let fp = points.initialize(&p0, Some(&pd0)).expect("initialize points");
+    let check = |fb: &[f64], fp: &[f64], x: &[f64; 6], p: &[f64]| {
+        let mut force = [0.0; 3];
+        let mut moment = [0.0; 3];
+        for k in 0..3 {
+            let f = [fp[3 * k], fp[3 * k + 1], fp[3 * k + 2]];
+            let arm = sub([p[3 * k], p[3 * k + 1], p[3 * k + 2]], [x[0], x[1], x[2]]);
+            force = add(force, f);
+            moment = add(moment, cross(arm, f));
+        }
+        let size = force.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        for c in 0..3 {
+            assert!((fb[c] - force[c]).abs() < 1e-12 * size, "{fb:?} {force:?}");
+            assert!((fb[3 + c] - moment[c]).abs() < 1e-12 * size, "{fb:?} {moment:?}");
+        }
+        size
+    };
+    let size = check(&fb, &fp, &x0, &p0);
+    assert!(size > 1e-3, "the lines pull: {size}");
+    for k in 1..=3 {
+        let t = 2e-4 * k as f64;
+        let (x, xd) = platform(t);
+        let (p, pd) = fairlead_arrays(&x, &xd);
+        let fb = body.step_to(t, &x, Some(&xd)).expect("body step");
+        let fp = points.step_to(t, &p, Some(&pd)).expect("points step");
+        check(&fb.last_step, &fp.last_step, &x, &p);
+        assert_eq!(fb.steps, 2);
+    }
+}
+
+/// MoorDyn's convention through the arrays: a roll of +0.1 rad lifts the
+/// +y side (the fairlead at 120 degrees, y > 0, rises by 1.5 sin 120 deg
+/// sin 0.1 and comes in), a pitch puts +x down, a yaw turns +x toward +y
+/// (docs/method.md §15.1).
+#[test]
+fn a_coupled_platform_turns_as_moordyns_angles_say() {
+    for (angles, point_index, check) in [
+        ([0.1, 0.0, 0.0], 2usize, [None, None, Some(1.0)]),
+        ([0.0, 0.1, 0.0], 0, [None, None, Some(-1.0)]),
+        ([0.0, 0.0, 0.1], 0, [None, Some(1.0), None]),
+    ] {
+        let mut body = handle(moored(true));
+        let x = [0.0, 0.0, 0.0, angles[0], angles[1], angles[2]];
+        body.initialize(&x, None).expect("initialize");
+        let sim = body.simulation().expect("running");
+        let (local, _) = fairleads()[point_index / 2];
+        let at = sim.point_state(point_index).0;
+        let moved = sub(at, local);
+        for c in 0..3 {
+            if let Some(sign) = check[c] {
+                assert!(sign * moved[c] > 0.01, "{angles:?}: point moved by {moved:?}");
+            }
+        }
+        let expect = point([0.0; 3], &rotation_from_moordyn_angles(angles.map(f64::to_degrees)), local);
+        for c in 0..3 {
+            assert!((at[c] - expect[c]).abs() < 1e-14);
+        }
+    }
+}
