@@ -34,6 +34,34 @@ impl RigidInertia {
         }
     }
 
+    /// The body with a point mass m added at `at` (body axes, from the
+    /// reference point): the masses add, the centre moves to their
+    /// barycentre and each part's inertia is carried to it (the parallel
+    /// axis theorem, I + m (|d|^2 1 - d d^T)).
+    pub fn with_point_mass(&self, m: f64, at: [f64; 3]) -> RigidInertia {
+        let total = self.mass + m;
+        if total <= 0.0 {
+            return self.clone();
+        }
+        let centre: [f64; 3] =
+            std::array::from_fn(|i| (self.mass * self.centre_of_mass[i] + m * at[i]) / total);
+        let shift = |mass: f64, from: [f64; 3]| -> [[f64; 3]; 3] {
+            let d: [f64; 3] = std::array::from_fn(|i| from[i] - centre[i]);
+            let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            std::array::from_fn(|i| {
+                std::array::from_fn(|j| mass * (if i == j { dd } else { 0.0 } - d[i] * d[j]))
+            })
+        };
+        let (a, b) = (shift(self.mass, self.centre_of_mass), shift(m, at));
+        RigidInertia {
+            mass: total,
+            centre_of_mass: centre,
+            inertia_at_centre: std::array::from_fn(|i| {
+                std::array::from_fn(|j| self.inertia_at_centre[i][j] + a[i][j] + b[i][j])
+            }),
+        }
+    }
+
     /// (B2): the second moment of the mass about the centre,
     /// `J_G = int xi xi^T dm = 1/2 tr(I_G) 1 - I_G`.
     pub fn second_moment_at_centre(&self) -> [[f64; 3]; 3] {
@@ -148,5 +176,25 @@ mod tests {
         assert!(RigidInertia::principal(0.0, [0.0; 3], [1.0; 3])
             .validate("b")
             .is_err());
+    }
+
+    /// Two bodies' inertia about their common centre is each one's about
+    /// its own plus the reduced mass times the squared distance across
+    /// the line between them: M m / (M + m) d^2 (and nothing along it).
+    #[test]
+    fn a_point_mass_joins_by_the_parallel_axis_theorem() {
+        let body = RigidInertia::principal(3.0, [0.0, 0.0, -1.0], [2.0, 3.0, 4.0]);
+        let joined = body.with_point_mass(1.0, [2.0, 0.0, -1.0]);
+        let reduced = 3.0 * 1.0 / 4.0;
+        assert_eq!(joined.mass, 4.0);
+        assert!((joined.centre_of_mass[0] - 0.5).abs() < 1e-15);
+        assert!((joined.centre_of_mass[2] + 1.0).abs() < 1e-15);
+        let i = joined.inertia_at_centre;
+        assert!((i[0][0] - 2.0).abs() < 1e-14);
+        assert!((i[1][1] - (3.0 + reduced * 4.0)).abs() < 1e-14);
+        assert!((i[2][2] - (4.0 + reduced * 4.0)).abs() < 1e-14);
+        for (r, c) in [(0, 1), (0, 2), (1, 2)] {
+            assert!(i[r][c].abs() < 1e-15 && i[c][r].abs() < 1e-15);
+        }
     }
 }

@@ -51,6 +51,10 @@ pub struct Body {
     /// The water on the body: buoyancy of its volume at the centre of
     /// mass (MoorDyn's), added mass and drag (B9)-(B10); None in air.
     pub water: Option<BodyWater>,
+    /// Constant forces (global, N) at body points (body axes, from the
+    /// reference point): a point's weight, buoyancy and given force when
+    /// the point is on the body (see [`super::System::with_bodies`]).
+    pub loads: Vec<([f64; 3], [f64; 3])>,
 }
 
 impl Body {
@@ -69,6 +73,7 @@ impl Body {
             velocity: [0.0; 3],
             angular_velocity: [0.0; 3],
             water: None,
+            loads: Vec::new(),
         }
     }
 
@@ -91,7 +96,8 @@ impl Body {
             .water
             .as_ref()
             .map_or((0.0, 0.0), |w| (w.volume, w.density));
-        let forces = BodyForces::weight_and_buoyancy(&self.inertia, volume, density, gravity);
+        let mut forces = BodyForces::weight_and_buoyancy(&self.inertia, volume, density, gravity);
+        forces.forces.extend(self.loads.iter().copied());
         let body = FreeBody::new(
             &self.inertia,
             &forces,
@@ -142,14 +148,24 @@ impl Body {
 /// Validates the bodies and places the points on them: a point on a
 /// fixed body becomes a fixed point where the body puts it, a point on a
 /// coupled body a coupled point there (at rest until a coupling code
-/// moves the body); a point on a free body gets its position at t = 0.
-/// Returns every body's points with their body coordinates. Keys:
-/// `bodies[i]`, `points[i]`.
+/// moves the body); a point on a free body gets its position at t = 0,
+/// and its mass, weight, buoyancy and given force become the body's
+/// ([`fold_point`]). Returns every body's points with their body
+/// coordinates. Keys: `bodies[i]`, `points[i]`.
 pub(super) fn place_points(
-    bodies: &[Body],
+    bodies: &mut [Body],
     points: &mut [Point],
+    gravity: [f64; 3],
 ) -> Result<Vec<Vec<(usize, [f64; 3])>>, ModelError> {
     let mut on_body = vec![Vec::new(); bodies.len()];
+    for (i, p) in points.iter_mut().enumerate() {
+        let PointKind::Body { body, local } = p.kind else {
+            continue;
+        };
+        if let Some(b) = bodies.get_mut(body) {
+            fold_point(b, p, local, gravity).map_err(|e| e.under(&format!("points[{i}]")))?;
+        }
+    }
     for (i, b) in bodies.iter().enumerate() {
         b.check(&format!("bodies[{i}]"))?;
     }
@@ -170,13 +186,6 @@ pub(super) fn place_points(
                 "must be finite",
             ));
         }
-        if p.mass != 0.0 || p.force != [0.0; 3] || p.water.is_some() {
-            return Err(ModelError::invalid(
-                key,
-                "a point on a body carries no mass, force or water of its own: give them to \
-                 the body",
-            ));
-        }
         p.position = b.point(local);
         on_body[body].push((i, local));
         match b.kind {
@@ -190,4 +199,59 @@ pub(super) fn place_points(
         }
     }
     Ok(on_body)
+}
+
+/// A point on a free body with a mass m, a force F or water (a volume V
+/// in water of density rho): the point mass joins the body's inertia
+/// ([`RigidInertia::with_point_mass`]), so its weight acts at the body's
+/// new centre of mass with the body's, and F - rho V g acts at the point,
+/// a constant force (MoorDyn's point on a body: its weight and its whole
+/// buoyancy at the point, docs/moordyn-bodies-rods.md §2.3). Its
+/// drag and added mass are not built and are refused; so is anything of
+/// its own on a fixed or coupled body (whose loads are not stepped).
+fn fold_point(
+    body: &mut Body,
+    p: &mut Point,
+    local: [f64; 3],
+    gravity: [f64; 3],
+) -> Result<(), ModelError> {
+    let own = p.mass != 0.0 || p.force != [0.0; 3] || p.water.is_some();
+    if !own {
+        return Ok(());
+    }
+    if body.kind != BodyKind::Free {
+        return Err(ModelError::invalid(
+            "",
+            "a point on a fixed or coupled body carries no mass, force or water of its own",
+        ));
+    }
+    if !p.mass.is_finite() || p.mass < 0.0 || p.force.iter().any(|f| !f.is_finite()) {
+        return Err(ModelError::invalid(
+            "",
+            "the mass must be finite and not negative, the force finite",
+        ));
+    }
+    let mut load = p.force;
+    if let Some(w) = &p.water {
+        w.check("water")?;
+        if w.drag_area != 0.0 || w.ca != 0.0 {
+            return Err(ModelError::invalid(
+                "",
+                "the drag and added mass of a point on a body are not built; give the body \
+                 its drag area and added mass",
+            ));
+        }
+        let b = w.buoyancy(&gravity);
+        for k in 0..3 {
+            load[k] += b[k];
+        }
+    }
+    body.inertia = body.inertia.with_point_mass(p.mass, local);
+    if load != [0.0; 3] {
+        body.loads.push((load, local));
+    }
+    p.mass = 0.0;
+    p.force = [0.0; 3];
+    p.water = None;
+    Ok(())
 }

@@ -152,3 +152,92 @@ impl StaticBody {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::body::RigidInertia;
+    use crate::linear::Jacobian;
+    use crate::statics::StaticEquations;
+    use crate::system::{Body, BodyKind, End, Line, Point, System, SystemStatics};
+    use crate::{Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings};
+
+    /// The static rows' Jacobian with a free body (its own forces' moment,
+    /// its points' rows carried to it, their constraints) against central
+    /// differences, away from the equilibrium and with the body turned.
+    #[test]
+    fn the_static_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
+        let g = [0.0, 0.0, -9.81];
+        let rotation = crate::body::pose::rotation_from_moordyn_angles([10.0, -20.0, 30.0]);
+        let mut body = Body::new(
+            BodyKind::Free,
+            [0.0, 0.0, -10.0],
+            rotation,
+            RigidInertia::principal(400.0, [0.1, 0.0, -1.0], [50.0, 60.0, 70.0]),
+        );
+        body.loads.push(([30.0, -20.0, 500.0], [0.5, 0.5, 0.2]));
+        let mut points = Vec::new();
+        let mut lines = Vec::new();
+        for (k, local) in [[0.0, -1.0, 0.0], [0.0, 1.0, 0.3]].iter().enumerate() {
+            let anchor = [0.5 * k as f64, 2.0 * local[1], 0.0];
+            let end = body.point(*local);
+            points.push(Point::fixed(anchor));
+            points.push(Point::on_body(0, *local));
+            let d: [f64; 3] = std::array::from_fn(|i| end[i] - anchor[i]);
+            let material = Material {
+                youngs_modulus: 1e9,
+                density: 2000.0,
+                area: 1e-3,
+                second_moment: 1e-9,
+                axial_damping: 0.0,
+            };
+            let cable = Cable::straight(10.5, 6, ElementType::Sac2)
+                .with_origin(anchor)
+                .with_direction(d);
+            let model = Model::new(
+                cable,
+                material,
+                ModelOptions::default(),
+                vec![Load::Gravity { acceleration: g }],
+            )
+            .unwrap();
+            lines.push(Line {
+                model,
+                ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+            });
+        }
+        let system = System::with_bodies(lines, points, vec![body], g).unwrap();
+        let seeds = crate::system::catenary_states(&system);
+        let mut statics = SystemStatics::new(system, seeds, StaticSettings::default()).unwrap();
+        let eq = &mut statics.equations;
+        eq.homotopy = 0.0;
+        let mut x = statics.newton.x.clone();
+        // Away from the seed: the body turned and moved a little.
+        for k in 0..6 {
+            x[eq.layout.body_unknown(0, 0, k).unwrap()] += 0.05 * (k as f64 + 1.0);
+        }
+        let n = x.len();
+        let mut jac = crate::bordered::BorderedMatrix::new(&eq.layout.shapes, eq.layout.border);
+        let mut r = vec![0.0; n];
+        eq.evaluate(&x, &mut r, Some(&mut jac));
+        let h = 1e-6;
+        let mut worst = 0.0f64;
+        let mut size = 0.0f64;
+        for c in 0..n {
+            let (mut xp, mut xm) = (x.clone(), x.clone());
+            xp[c] += h;
+            xm[c] -= h;
+            let (mut rp, mut rm) = (vec![0.0; n], vec![0.0; n]);
+            eq.evaluate(&xp, &mut rp, None);
+            eq.evaluate(&xm, &mut rm, None);
+            for i in 0..n {
+                let fd = (rp[i] - rm[i]) / (2.0 * h);
+                let a = jac.get(i, c);
+                size = size.max(a.abs());
+                worst = worst.max((fd - a).abs());
+            }
+        }
+        eprintln!("static Jacobian against differences: {worst:.1e} of {size:.1e}");
+        assert!(worst < 1e-6 * size, "{worst:e} of {size:e}");
+
+    }
+}

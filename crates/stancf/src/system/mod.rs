@@ -256,10 +256,10 @@ impl System {
     pub fn with_bodies(
         lines: Vec<Line>,
         mut points: Vec<Point>,
-        bodies: Vec<Body>,
+        mut bodies: Vec<Body>,
         gravity: [f64; 3],
     ) -> Result<Self, ModelError> {
-        let body_points = bodies::place_points(&bodies, &mut points)?;
+        let body_points = bodies::place_points(&mut bodies, &mut points, gravity)?;
         if lines.is_empty() {
             return Err(ModelError::invalid(
                 "lines",

@@ -174,6 +174,18 @@ impl SystemStatics {
         }
         let bodies = static_bodies(&system);
         for body in &bodies {
+            // A point on the body that no line holds: where the body puts
+            // it, weighted like the body's centre.
+            for bp in &body.points {
+                let at = system.points()[bp.point].position;
+                for c in 0..3 {
+                    let g = layout.point_unknown(bp.point, 0, c).expect("border");
+                    if x[g].is_nan() {
+                        x[g] = at[c];
+                        unknown_weight[g] = 1.0 / body.length;
+                    }
+                }
+            }
             let b = &system.bodies()[body.index];
             let centre = b.point(b.inertia.centre_of_mass);
             let weights = body.unknown_weights();
@@ -478,6 +490,13 @@ impl StaticEquations for SystemEquations {
             }
         }
         for body in &self.bodies {
+            // Its points' rows are their constraints: weighted as positions.
+            for bp in &body.points {
+                for c in 0..3 {
+                    let g = self.layout.point_unknown(bp.point, 0, c).expect("border");
+                    weights[g] = weights[g].min(1.0 / body.length);
+                }
+            }
             let w = body.row_weights();
             for (k, &wk) in w.iter().enumerate() {
                 weights[self.layout.body_unknown(body.index, 0, k).expect("free body")] = wk;
@@ -643,7 +662,13 @@ fn static_bodies(system: &System) -> Vec<StaticBody> {
                 index: b,
                 rotation: body.rotation,
                 centre_of_mass: c,
-                forces: vec![(net, [0.0; 3])],
+                forces: std::iter::once((net, [0.0; 3]))
+                    .chain(
+                        body.loads
+                            .iter()
+                            .map(|&(f, at)| (f, crate::vec3::sub(at, c))),
+                    )
+                    .collect(),
                 points,
                 length,
                 arm: if arm > 0.0 { arm } else { length },

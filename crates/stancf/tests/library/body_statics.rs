@@ -277,3 +277,56 @@ fn a_moored_buoys_stiffness_matrix_is_the_derivative_of_its_mooring_load() {
     eprintln!("stiffness against extrapolated differences: {:.1e} of {size:.3e}", worst / size);
     assert!(worst < 1e-7 * size, "{:e}", worst / size);
 }
+
+/// A body hanging by two lines from points 1 m either side of its
+/// reference point along its y axis, its own centre of mass 1 m below
+/// that point and a point of 1/4 of its mass 1 m out along its x axis (a
+/// point on the body with a mass: the body's, at the point): at rest the
+/// common centre of mass hangs below the axis through the two points, so
+/// the body pitches by atan(m / M) = atan(1/4), its +x side down (a
+/// positive pitch, MoorDyn's convention), to the static tolerance. The
+/// lines (9.99 m) start stretched to the body's points 10 m below: from
+/// lines that carry none of the body's weight the path's first Newton
+/// step has no pendulum stiffness to turn the body against (see
+/// docs/method.md §15.8).
+#[test]
+fn a_bodys_heavy_point_tilts_it_until_their_centre_hangs_below_the_line() {
+    let (big, small) = (400.0, 100.0);
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let body = Body::new(
+        BodyKind::Free,
+        [0.0, 0.0, -10.0],
+        identity,
+        RigidInertia::principal(big, [0.0, 0.0, -1.0], [50.0, 50.0, 50.0]),
+    );
+    let mut heavy = Point::on_body(0, [1.0, 0.0, 0.0]);
+    heavy.mass = small;
+    let points = vec![
+        Point::fixed([0.0, -1.0, 0.0]),
+        Point::on_body(0, [0.0, -1.0, 0.0]),
+        Point::fixed([0.0, 1.0, 0.0]),
+        Point::on_body(0, [0.0, 1.0, 0.0]),
+        heavy,
+    ];
+    let lines = (0..2)
+        .map(|k| {
+            let y = [-1.0, 1.0][k];
+            Line {
+                model: chain([0.0, y, 0.0], [0.0, y, -10.0], 9.99),
+                ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+            }
+        })
+        .collect();
+    let system = System::with_bodies(lines, points, vec![body], G).expect("system");
+    let statics = solved(system);
+    let (position, rotation) = statics.body_pose(0).expect("free body");
+    let angles = stancf::body::pose::moordyn_angles(&rotation);
+    let expected = (small / big).atan().to_degrees();
+    eprintln!("pitch {:.9} deg (expected {expected:.9}), at {position:?}", angles[1]);
+    assert!((angles[1] - expected).abs() < 1e-7, "{angles:?}");
+    assert!(angles[0].abs() < 1e-9 && angles[2].abs() < 1e-9);
+    // The lines hold both masses and their own weight.
+    let pull = statics.end_forces(0)[0].force[2] + statics.end_forces(1)[0].force[2];
+    let weight = (big + small + 2.0 * MASS_PER_LENGTH * 9.99) * 9.81;
+    assert!((-pull - weight).abs() < 1e-6 * weight, "{pull} {weight}");
+}
