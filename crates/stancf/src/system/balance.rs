@@ -9,7 +9,17 @@
 //! ```
 //!
 //! (F_p: weight, buoyancy and constant force; F_w,p: the steady current's
-//! drag; f_end: the catenary's end force (C12)). Started from the points
+//! drag; f_end: the catenary's end force (C12)). A free body is balanced
+//! the same way in force and in moment about its centre of mass, its
+//! points where its pose puts them (its centre r_G and a rotation vector
+//! phi from its rotation as given, R = exp([phi]) R_0, global axes):
+//!
+//! ```text
+//!   G_b = [ F_b + sum_P f_end,P ;  sum_j (x_j - r_G) x F_j + sum_P (x_P - r_G) x f_end,P ] = 0
+//! ```
+//!
+//! (F_b its weight and buoyancy at the centre, F_j its constant loads at
+//! their points x_j). Started from the points
 //! where the scenario puts them, the homotopy (M32) would have to carry
 //! a free point from there to its equilibrium; when its lines start
 //! slack and the point falls until they pull, the path can turn back
@@ -45,33 +55,108 @@ pub fn static_seed_states(system: &System) -> Vec<State> {
 }
 
 /// Every point's position at the start of a static solve: the fixed and
-/// coupled points where they are at t = 0, the free points at the
-/// equilibrium (M32a) of the catenary network, or where the scenario puts
-/// them when (M32a) has none that Newton reaches from there.
+/// coupled points where they are at t = 0, the free points and the free
+/// bodies' points at the equilibrium (M32a) of the catenary network, or
+/// where the scenario puts them when (M32a) has none that Newton reaches
+/// from there.
 pub fn balanced_points(system: &System) -> Vec<[f64; 3]> {
-    let mut positions: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
-    let free: Vec<usize> = (0..positions.len())
-        .filter(|&p| system.points()[p].is_free())
-        .collect();
-    if free.is_empty() {
-        return positions;
-    }
-    if let Some(x) = solve_network(system, &free, &positions) {
-        for (k, &p) in free.iter().enumerate() {
-            positions[p] = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
-        }
-    }
-    positions
+    balanced(system).0
 }
 
-/// Newton on (M32a) from `start`; the free points' coordinates (3 per
-/// point of `free`), or None if it does not converge.
-fn solve_network(system: &System, free: &[usize], start: &[[f64; 3]]) -> Option<Vec<f64>> {
-    let n = 3 * free.len();
+/// A free body's pose (reference point, rotation) at the catenary
+/// network's equilibrium (M32a), or as given where it has none; one per
+/// body (fixed and coupled bodies as given).
+pub fn balanced_bodies(system: &System) -> Vec<([f64; 3], [[f64; 3]; 3])> {
+    balanced(system).1
+}
+
+/// The points' positions and the bodies' poses of [`balanced_points`] and
+/// [`balanced_bodies`].
+fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<([f64; 3], [[f64; 3]; 3])>) {
+    let mut positions: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
+    let mut poses: Vec<_> = system
+        .bodies()
+        .iter()
+        .map(|b| (b.position, b.rotation))
+        .collect();
+    let net = Network {
+        free: (0..positions.len())
+            .filter(|&p| system.points()[p].is_free())
+            .collect(),
+        bodies: system.free_bodies().collect(),
+    };
+    if net.free.is_empty() && net.bodies.is_empty() {
+        return (positions, poses);
+    }
+    let start = net.start(system, &positions);
+    if let Some(x) = solve_network(system, &net, &positions, start) {
+        net.place(system, &x, &mut positions);
+        for (k, &b) in net.bodies.iter().enumerate() {
+            poses[b] = net.pose(system, &x, k);
+        }
+    }
+    (positions, poses)
+}
+
+/// The unknowns of (M32a): the free points' coordinates (3 each), then
+/// the free bodies' centres and rotation vectors (6 each).
+struct Network {
+    free: Vec<usize>,
+    bodies: Vec<usize>,
+}
+
+impl Network {
+    fn size(&self) -> usize {
+        3 * self.free.len() + 6 * self.bodies.len()
+    }
+
+    /// The unknowns where the system puts the points and bodies.
+    fn start(&self, system: &System, positions: &[[f64; 3]]) -> Vec<f64> {
+        let mut x: Vec<f64> = self.free.iter().flat_map(|&p| positions[p]).collect();
+        for &b in &self.bodies {
+            let body = &system.bodies()[b];
+            x.extend(body.point(body.inertia.centre_of_mass));
+            x.extend([0.0; 3]);
+        }
+        x
+    }
+
+    /// Body k's reference point and rotation at x.
+    fn pose(&self, system: &System, x: &[f64], k: usize) -> ([f64; 3], [[f64; 3]; 3]) {
+        let body = &system.bodies()[self.bodies[k]];
+        let o = 3 * self.free.len() + 6 * k;
+        let phi = [x[o + 3], x[o + 4], x[o + 5]];
+        let rotation = crate::vec3::mat3_mul(&crate::body::rotation::exp_map(phi), &body.rotation);
+        let arm = crate::body::pose::rotate(&rotation, body.inertia.centre_of_mass);
+        (crate::vec3::sub([x[o], x[o + 1], x[o + 2]], arm), rotation)
+    }
+
+    /// Writes the free points' and the bodies' points' positions at x.
+    fn place(&self, system: &System, x: &[f64], positions: &mut [[f64; 3]]) {
+        for (k, &p) in self.free.iter().enumerate() {
+            positions[p] = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
+        }
+        for (k, &b) in self.bodies.iter().enumerate() {
+            let (r, rotation) = self.pose(system, x, k);
+            for &(p, local) in system.body_points(b) {
+                positions[p] = crate::body::pose::point(r, &rotation, local);
+            }
+        }
+    }
+}
+
+/// Newton on (M32a) from `x`; the unknowns of `net`, or None if it does
+/// not converge.
+fn solve_network(
+    system: &System,
+    net: &Network,
+    start: &[[f64; 3]],
+    mut x: Vec<f64>,
+) -> Option<Vec<f64>> {
+    let n = net.size();
     let mut positions = start.to_vec();
-    let mut x: Vec<f64> = free.iter().flat_map(|&p| start[p]).collect();
-    let length = length_scale(system, free);
-    let (mut g, force_scale) = imbalance(system, free, &mut positions, &x)?;
+    let length = length_scale(system, net);
+    let (mut g, force_scale) = imbalance(system, net, &mut positions, &x)?;
     let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
     let mut lu = BandLu::new(n, n - 1, n - 1);
     for _ in 0..MAX_ITERATIONS {
@@ -80,61 +165,139 @@ fn solve_network(system: &System, free: &[usize], start: &[[f64; 3]]) -> Option<
         }
         // dG/dx by central differences of the closed forms.
         let h = 1e-6 * length;
-        let a = lu.matrix_mut();
-        a.clear();
+        let mut jac = vec![0.0; n * n];
         for j in 0..n {
             let mut xp = x.clone();
             xp[j] += h;
-            let (gp, _) = imbalance(system, free, &mut positions, &xp)?;
+            let (gp, _) = imbalance(system, net, &mut positions, &xp)?;
             xp[j] -= 2.0 * h;
-            let (gm, _) = imbalance(system, free, &mut positions, &xp)?;
+            let (gm, _) = imbalance(system, net, &mut positions, &xp)?;
             for i in 0..n {
-                a.add(i, j, (gp[i] - gm[i]) / (2.0 * h));
+                jac[i * n + j] = (gp[i] - gm[i]) / (2.0 * h);
             }
         }
-        lu.factorize().ok()?;
-        let mut dx = g.clone();
-        lu.solve(&mut dx);
-        // A step of at most a quarter of the lines' length, halved until
-        // the imbalance falls.
-        let full = inf(&dx);
-        let mut alpha = if full > 0.25 * length {
-            0.25 * length / full
-        } else {
+        // The Newton step, cut to at most a quarter of the lines' length
+        // and half a radian of turn and halved until |G| falls. Where no
+        // cut of it lowers |G| (a network without stiffness in some
+        // direction: a body hanging on lines that do not yet pull, no
+        // pendulum, no sway, and a step without bound there), the
+        // diagonal is shifted (Levenberg), 1e-10 ... 1e2 of its size with
+        // its sign (G is a force: a stable network's dG/dx is negative).
+        let size = (0..n).fold(0.0f64, |m, i| m.max(jac[i * n + i].abs()));
+        let sign = if (0..n).map(|i| jac[i * n + i]).sum::<f64>() > 0.0 {
             1.0
+        } else {
+            -1.0
         };
-        let mut accepted = None;
-        for _ in 0..30 {
-            let trial: Vec<f64> = x.iter().zip(&dx).map(|(xi, d)| xi - alpha * d).collect();
-            if let Some((gt, _)) = imbalance(system, free, &mut positions, &trial) {
-                if inf(&gt) < inf(&g) {
-                    accepted = Some((trial, gt));
-                    break;
-                }
+        let mut shift = 0.0;
+        let (trial, gt) = loop {
+            let step = shifted_step(&mut lu, &jac, sign * shift, &g)
+                .and_then(|dx| descend(system, net, &mut positions, &x, &dx, &g, length));
+            if let Some(found) = step {
+                break found;
             }
-            alpha *= 0.5;
-        }
-        let (trial, gt) = accepted?;
+            if size == 0.0 || shift > 1e2 * size {
+                return None;
+            }
+            shift = if shift == 0.0 { 1e-10 * size } else { 100.0 * shift };
+        };
         x = trial;
         g = gt;
     }
     (inf(&g) <= ACCEPTED * force_scale).then_some(x)
 }
 
-/// G(x) of (M32a) with the free points at `x` (written into `positions`),
-/// and the scale of the forces at play (the largest load or end force);
-/// None if a line has a non-finite force.
+/// The step dx of (J + shift I) dx = g, or None if singular or not
+/// finite.
+fn shifted_step(lu: &mut BandLu, jac: &[f64], shift: f64, g: &[f64]) -> Option<Vec<f64>> {
+    let n = g.len();
+    let a = lu.matrix_mut();
+    a.clear();
+    for i in 0..n {
+        for j in 0..n {
+            a.add(i, j, jac[i * n + j] + if i == j { shift } else { 0.0 });
+        }
+    }
+    lu.factorize().ok()?;
+    let mut dx = g.to_vec();
+    lu.solve(&mut dx);
+    dx.iter().all(|d| d.is_finite()).then_some(dx)
+}
+
+/// x - alpha dx with alpha the largest of 1, 1/2, ... (30 halvings, at
+/// most a quarter of `length` and half a radian of turn) that lowers
+/// |G|_inf below |g|_inf; the trial and its G, or None.
+fn descend(
+    system: &System,
+    net: &Network,
+    positions: &mut [[f64; 3]],
+    x: &[f64],
+    dx: &[f64],
+    g: &[f64],
+    length: f64,
+) -> Option<(Vec<f64>, Vec<f64>)> {
+    let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let full = inf(dx);
+    let mut alpha = if full > 0.25 * length {
+        0.25 * length / full
+    } else {
+        1.0
+    };
+    let turn = (0..net.bodies.len())
+        .flat_map(|k| (3..6).map(move |c| 3 * net.free.len() + 6 * k + c))
+        .fold(0.0f64, |m, i| m.max(dx[i].abs()));
+    if alpha * turn > 0.5 {
+        alpha = 0.5 / turn;
+    }
+    for _ in 0..30 {
+        let trial: Vec<f64> = x.iter().zip(dx).map(|(xi, d)| xi - alpha * d).collect();
+        if let Some((gt, _)) = imbalance(system, net, positions, &trial) {
+            if inf(&gt) < inf(g) {
+                return Some((trial, gt));
+            }
+        }
+        alpha *= 0.5;
+    }
+    None
+}
+
+/// G(x) of (M32a) with the free points and bodies at `x` (the points
+/// written into `positions`), and the scale of the forces at play (the
+/// largest load or end force); None if a line has a non-finite force.
 fn imbalance(
     system: &System,
-    free: &[usize],
+    net: &Network,
     positions: &mut [[f64; 3]],
     x: &[f64],
 ) -> Option<(Vec<f64>, f64)> {
-    for (k, &p) in free.iter().enumerate() {
-        positions[p] = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
-    }
+    let free = &net.free;
+    net.place(system, x, positions);
     let mut g = vec![0.0; x.len()];
     let mut scale = 0.0f64;
+    // Where a force at point p goes: a free point's 3 rows, or a body's
+    // force and its moment about the body's centre (k, its centre).
+    let mut centres = Vec::with_capacity(net.bodies.len());
+    for (k, &b) in net.bodies.iter().enumerate() {
+        let body = &system.bodies()[b];
+        let (r, rotation) = net.pose(system, x, k);
+        let centre = crate::body::pose::point(r, &rotation, body.inertia.centre_of_mass);
+        centres.push(centre);
+        let (volume, density) = body.water.as_ref().map_or((0.0, 0.0), |w| (w.volume, w.density));
+        let net_weight = system.gravity().map(|gc| (body.inertia.mass - density * volume) * gc);
+        let mut loads = vec![(net_weight, centre)];
+        for &(f, local) in &body.loads {
+            loads.push((f, crate::body::pose::point(r, &rotation, local)));
+        }
+        let o = 3 * free.len() + 6 * k;
+        for (f, at) in loads {
+            add_at(&mut g, o, f, crate::vec3::sub(at, centre), &mut scale);
+        }
+    }
+    let body_of = |p: usize| {
+        system.points()[p]
+            .body()
+            .and_then(|b| net.bodies.iter().position(|&q| q == b))
+    };
     let slot = |p: usize| free.iter().position(|&q| q == p);
     for (k, &p) in free.iter().enumerate() {
         let mut f = system.point_load(p);
@@ -155,8 +318,8 @@ fn imbalance(
             .iter()
             .enumerate()
             .filter_map(|(end, e)| match e {
-                End::Point(p) => slot(*p).map(|k| (end, k)),
-                End::Loose => None,
+                End::Point(p) if slot(*p).is_some() || body_of(*p).is_some() => Some((end, *p)),
+                _ => None,
             })
             .collect();
         if ends.is_empty() {
@@ -164,30 +327,48 @@ fn imbalance(
         }
         let (a, b) = end_positions_at(system, li, positions);
         let shape = seed_shape(system, li, a, b);
-        for (end, k) in ends {
+        for (end, p) in ends {
             let f = shape.end_force(end);
-            for c in 0..3 {
-                if !f[c].is_finite() {
-                    return None;
+            if f.iter().any(|v| !v.is_finite()) {
+                return None;
+            }
+            if let Some(k) = slot(p) {
+                for c in 0..3 {
+                    g[3 * k + c] += f[c];
+                    scale = scale.max(f[c].abs());
                 }
-                g[3 * k + c] += f[c];
-                scale = scale.max(f[c].abs());
+            } else if let Some(k) = body_of(p) {
+                let o = 3 * free.len() + 6 * k;
+                add_at(&mut g, o, f, crate::vec3::sub(positions[p], centres[k]), &mut scale);
             }
         }
     }
     Some((g, scale.max(f64::MIN_POSITIVE)))
 }
 
-/// The mean length of the lines attached to the free points: the scale
-/// of the finite differences and of the largest step.
-fn length_scale(system: &System, free: &[usize]) -> f64 {
+/// Adds force f at `arm` from a body's centre to the body's rows at o:
+/// the force, then its moment arm x f.
+fn add_at(g: &mut [f64], o: usize, f: [f64; 3], arm: [f64; 3], scale: &mut f64) {
+    let m = crate::vec3::cross(arm, f);
+    for c in 0..3 {
+        g[o + c] += f[c];
+        g[o + 3 + c] += m[c];
+        *scale = scale.max(f[c].abs());
+    }
+}
+
+/// The mean length of the lines attached to the free points and bodies:
+/// the scale of the finite differences and of the largest step.
+fn length_scale(system: &System, net: &Network) -> f64 {
     let lengths: Vec<f64> = system
         .lines()
         .iter()
         .filter(|l| {
-            l.ends
-                .iter()
-                .any(|e| matches!(e, End::Point(p) if free.contains(p)))
+            l.ends.iter().any(|e| {
+                matches!(e, End::Point(p)
+                    if net.free.contains(p)
+                        || system.points()[*p].body().is_some_and(|b| net.bodies.contains(&b)))
+            })
         })
         .map(|l| l.model.cable.length)
         .collect();

@@ -46,7 +46,7 @@ mod step_equations;
 mod stepping;
 mod topology;
 
-pub use balance::{balanced_points, static_seed_states};
+pub use balance::{balanced_bodies, balanced_points, static_seed_states};
 pub use bodies::{Body, BodyKind};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;

@@ -58,7 +58,7 @@ pub struct SystemStatics {
     pub(super) settings: StaticSettings,
     /// Seeds to start over from if the path fails (see
     /// [`SystemStatics::seeded`]).
-    pub(super) fallback: Option<Vec<State>>,
+    pub(super) fallback: Option<(Vec<State>, System)>,
     /// What the seabed's friction holds (docs/method.md §12.2).
     pub(super) friction: StaticFriction,
     /// Whether this path is the second stage of [`StaticFriction::Pulled`]
@@ -260,6 +260,16 @@ impl SystemStatics {
         seed_system: &System,
         mut settings: StaticSettings,
     ) -> Result<Self, ModelError> {
+        let given_system = system.clone();
+        let mut system = system;
+        // The free bodies start where the network balances them too.
+        let poses = super::balanced_bodies(seed_system);
+        for b in seed_system.free_bodies().collect::<Vec<_>>() {
+            let (position, rotation) = poses[b];
+            if b < system.bodies().len() {
+                system.set_body_pose(b, position, rotation);
+            }
+        }
         if settings.seabed_friction == StaticFriction::FromSeed {
             settings.seabed_friction = StaticFriction::AsLaid;
         }
@@ -276,7 +286,7 @@ impl SystemStatics {
         let own_law = vec![false; system.lines().len()];
         let mut statics = Self::build(system, balanced.clone(), settings, own_law, None)?;
         if given != balanced {
-            statics.fallback = Some(given);
+            statics.fallback = Some((given, given_system));
         }
         Ok(statics)
     }
@@ -392,14 +402,13 @@ impl SystemStatics {
                     }
                 }
                 Err(e) => {
-                    let Some(seeds) = self.fallback.take() else {
+                    let Some((seeds, system)) = self.fallback.take() else {
                         match self.own_law_after_failure(&mut observer) {
                             Ok(true) => continue,
                             Ok(false) => return Ok(false),
                             Err(()) => return Err(e),
                         }
                     };
-                    let system = self.equations.system.clone();
                     // The system was accepted with the first seeds; the
                     // fallback has the same lines, so this cannot fail.
                     let settings = self.settings.clone();
