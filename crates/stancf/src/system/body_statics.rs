@@ -9,7 +9,11 @@
 //! ```
 //!
 //! (weight and buoyancy act at the centre of mass, MoorDyn's convention,
-//! so they give no moment); a point P on it at xi' is at
+//! so they give no moment), and in a steady uniform current U the drag
+//! of (B10) at rest, f = 1/2 rho diag(CdA) w |w|, w = R^T U (body axes,
+//! at the reference point, -c from the centre), whose generalized forces
+//! are R f on r_G and J_r(theta)^T (-c x f) on theta (J_r^T = J_r(-theta));
+//! a point P on it at xi' is at
 //! y_P = r_G + R_0 exp([theta]) xi' (B11 at rest), the lines' rows there
 //! are carried to the body's by (dy_P/dq)^T (B12), and P's rows become
 //! y_P - (B11) = 0 (B13), as in a step (§15.7).
@@ -40,6 +44,8 @@ pub(super) struct StaticBody {
     pub stiffness: f64,
     /// [r_G; theta] at the last converged increment.
     pub converged: [f64; 6],
+    /// The steady current's drag: (1/2 rho CdA per body axis, U).
+    pub drag: Option<([f64; 3], [f64; 3])>,
 }
 
 impl StaticBody {
@@ -88,6 +94,9 @@ impl StaticBody {
                 }
             }
         }
+        if let Some((half_rho_cda, current)) = self.drag {
+            self.add_drag(layout, theta, (half_rho_cda, current), residual, jacobian.as_deref_mut());
+        }
         if jacobian.is_some() {
             self.stiffness = 0.0;
         }
@@ -127,6 +136,43 @@ impl StaticBody {
                     for j in 0..3 {
                         m.add(y(c), g(3 + j), -p[c].g[j]);
                     }
+                }
+            }
+        }
+    }
+
+    /// The current's drag at rest (B10) in the rows, -Q, and its
+    /// derivatives in theta (on jets).
+    fn add_drag(
+        &self,
+        layout: &SystemLayout,
+        theta: [f64; 3],
+        (half_rho_cda, current): ([f64; 3], [f64; 3]),
+        residual: &mut [f64],
+        jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        use crate::body::jet::{cross, Jet, JetVec};
+        use crate::body::rotation::{body_rate, times, turn};
+        let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
+        let th: JetVec<3> = std::array::from_fn(|i| Jet::variable(theta[i], i));
+        let start_axes = crate::vec3::mat3_transpose(&self.rotation);
+        let u0: JetVec<3> = crate::body::pose::rotate(&start_axes, current).map(Jet::constant);
+        let w = turn(&th, &u0, -1.0);
+        let speed = crate::vec3::norm(current);
+        let f: JetVec<3> = std::array::from_fn(|i| w[i].scale(half_rho_cda[i] * speed));
+        let on_centre = times(&self.rotation, &turn(&th, &f, 1.0));
+        let arm: JetVec<3> = self.centre_of_mass.map(|c| Jet::constant(-c));
+        let minus_theta: JetVec<3> = th.map(|t| t.scale(-1.0));
+        let on_theta = body_rate(&minus_theta, &cross(&arm, &f));
+        for c in 0..3 {
+            residual[g(c)] -= on_centre[c].v;
+            residual[g(3 + c)] -= on_theta[c].v;
+        }
+        if let Some(m) = jacobian {
+            for c in 0..3 {
+                for j in 0..3 {
+                    m.add(g(c), g(3 + j), -on_centre[c].g[j]);
+                    m.add(g(3 + c), g(3 + j), -on_theta[c].g[j]);
                 }
             }
         }
@@ -175,6 +221,14 @@ mod tests {
             RigidInertia::principal(400.0, [0.1, 0.0, -1.0], [50.0, 60.0, 70.0]),
         );
         body.loads.push(([30.0, -20.0, 500.0], [0.5, 0.5, 0.2]));
+        // A current's drag with different areas on the body's axes.
+        body.water = Some(crate::body::BodyWater {
+            density: 1025.0,
+            volume: 0.05,
+            drag_areas: [1.0, 2.0, 0.5],
+            current: [0.8, -0.3, 0.1],
+            ..crate::body::BodyWater::default()
+        });
         let mut points = Vec::new();
         let mut lines = Vec::new();
         for (k, local) in [[0.0, -1.0, 0.0], [0.0, 1.0, 0.3]].iter().enumerate() {

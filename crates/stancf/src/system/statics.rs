@@ -683,6 +683,10 @@ fn static_bodies(system: &System) -> Vec<StaticBody> {
                 arm: if arm > 0.0 { arm } else { length },
                 stiffness: 0.0,
                 converged: [0.0; 6],
+                drag: body.water.as_ref().and_then(|w| {
+                    (w.drag_areas != [0.0; 3] && w.current != [0.0; 3])
+                        .then(|| (w.drag_areas.map(|a| 0.5 * w.density * a), w.current))
+                }),
             }
         })
         .collect()

@@ -60,6 +60,16 @@ fn moored_buoy() -> System {
 
 /// The buoy of [`moored_buoy`], `kind`, at `position` turned by `rotation`.
 fn buoy_at(kind: BodyKind, position: [f64; 3], rotation: [[f64; 3]; 3]) -> System {
+    buoy_in(kind, position, rotation, BodyWater::default())
+}
+
+/// The buoy with `water`'s drag areas and current.
+fn buoy_in(
+    kind: BodyKind,
+    position: [f64; 3],
+    rotation: [[f64; 3]; 3],
+    water: BodyWater,
+) -> System {
     let mut body = Body::new(
         kind,
         position,
@@ -69,7 +79,7 @@ fn buoy_at(kind: BodyKind, position: [f64; 3], rotation: [[f64; 3]; 3]) -> Syste
     body.water = Some(BodyWater {
         density: RHO,
         volume: 2.0,
-        ..BodyWater::default()
+        ..water
     });
     let mut lines = Vec::new();
     let mut points = Vec::new();
@@ -338,4 +348,42 @@ fn a_bodys_heavy_point_tilts_it_until_their_centre_hangs_below_the_line() {
     let pull = statics.end_forces(0)[0].force[2] + statics.end_forces(1)[0].force[2];
     let weight = (big + small + 2.0 * MASS_PER_LENGTH * 10.0) * 9.81;
     assert!((-pull - weight).abs() < 1e-6 * weight, "{pull} {weight}");
+}
+
+/// In a steady current of 0.5 m/s along x and 0.2 m/s along y the buoy
+/// (drag area 2 m^2 on each of its axes, so its drag does not turn with
+/// it: D = 1/2 rho CdA |U| U) moves down-current until its lines hold its
+/// drag with its net lift: their pull on it is -(D + lift) to 1e-9 of the
+/// lift (the static tolerance on the lines' rows).
+#[test]
+fn a_buoy_in_a_current_is_held_against_its_drag_and_lift() {
+    let current = [0.5, 0.2, 0.0];
+    let water = BodyWater {
+        drag_areas: [2.0; 3],
+        current,
+        ..BodyWater::default()
+    };
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let still = solved(moored_buoy());
+    let statics = solved(buoy_in(BodyKind::Free, [0.0, 0.0, -10.0], identity, water));
+    let speed = norm(current);
+    let drag = current.map(|u| 0.5 * RHO * 2.0 * speed * u);
+    let lift = (RHO * 2.0 - 500.0) * 9.81;
+    let mut pull = [0.0; 3];
+    for k in 0..3 {
+        let f = statics.end_forces(k)[1].force;
+        for c in 0..3 {
+            pull[c] += f[c];
+        }
+    }
+    let expected = [-drag[0], -drag[1], -lift];
+    let err = norm(std::array::from_fn(|c| pull[c] - expected[c]));
+    let (moved, _) = statics.body_pose(0).unwrap();
+    let (before, _) = still.body_pose(0).unwrap();
+    eprintln!(
+        "drag {drag:?} N; the lines pull {pull:?} N ({err:.1e} off); the buoy moved by {:?} m",
+        std::array::from_fn::<f64, 3, _>(|c| moved[c] - before[c])
+    );
+    assert!(moved[0] > before[0] && moved[1] > before[1], "down-current");
+    assert!(err < 1e-9 * lift, "{err:e}");
 }
