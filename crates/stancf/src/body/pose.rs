@@ -4,6 +4,10 @@
 
 use crate::vec3::{add, mat3_mul};
 
+/// A body's pose: its reference point and its rotation (body axes to
+/// global).
+pub type Pose = ([f64; 3], [[f64; 3]; 3]);
+
 /// `R v`.
 pub fn rotate(r: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
     std::array::from_fn(|i| (0..3).map(|k| r[i][k] * v[k]).sum())

@@ -222,7 +222,10 @@ impl BorderedMatrix {
             if kf == UNTOUCHED {
                 continue;
             }
-            assert!(kt != UNTOUCHED, "border row {to} is outside block's structure");
+            assert!(
+                kt != UNTOUCHED,
+                "border row {to} is outside block's structure"
+            );
             let n = blk.n;
             for j in 0..n {
                 blk.c[kt * n + j] += w * blk.c[kf * n + j];

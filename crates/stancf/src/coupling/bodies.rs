@@ -81,7 +81,10 @@ impl ArrayLayout {
         for (k, body) in self.bodies.iter().enumerate() {
             let s = self.body_start(k);
             let (_, rotation) = pose(&x[s..s + 6]);
-            let (v, w) = ([xd[s], xd[s + 1], xd[s + 2]], [xd[s + 3], xd[s + 4], xd[s + 5]]);
+            let (v, w) = (
+                [xd[s], xd[s + 1], xd[s + 2]],
+                [xd[s + 3], xd[s + 4], xd[s + 5]],
+            );
             for &(place, local) in &body.points {
                 let arm = rotate(&rotation, local);
                 out[3 * place..3 * place + 3].copy_from_slice(&add(v, cross(w, arm)));
@@ -131,7 +134,11 @@ impl ArrayLayout {
                 return (self.body_start(k), 6);
             }
         }
-        let k = self.plain.iter().position(|&p| p == place).expect("a coupled point");
+        let k = self
+            .plain
+            .iter()
+            .position(|&p| p == place)
+            .expect("a coupled point");
         (self.point_start(k), 3)
     }
 

@@ -205,7 +205,12 @@ impl CoupledSystem {
         }
         self.layout.plain = order
             .iter()
-            .map(|p| self.coupled.iter().position(|q| q == p).expect("a coupled point"))
+            .map(|p| {
+                self.coupled
+                    .iter()
+                    .position(|q| q == p)
+                    .expect("a coupled point")
+            })
             .collect();
         self.array_points = order;
         self.identity = Identity::of(
@@ -369,7 +374,10 @@ impl CoupledSystem {
             sim,
             position,
             velocity,
-            reference: bodies.clone().map(|b| self.layout.reference(x, b)).collect(),
+            reference: bodies
+                .clone()
+                .map(|b| self.layout.reference(x, b))
+                .collect(),
             reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
         });
         Ok(forces)
@@ -474,8 +482,11 @@ impl CoupledSystem {
         running.reference = (0..layout.bodies.len())
             .map(|b| layout.reference(x, b))
             .collect();
-        running.reference_rate =
-            xd.map(|v| (0..layout.bodies.len()).map(|b| layout.reference(v, b)).collect());
+        running.reference_rate = xd.map(|v| {
+            (0..layout.bodies.len())
+                .map(|b| layout.reference(v, b))
+                .collect()
+        });
         Ok(CoupledForces {
             last_step: loads(&running.sim),
             interval_mean: impulse.iter().map(|i| i / span).collect(),
@@ -539,7 +550,12 @@ fn triple(values: &[f64], k: usize) -> [f64; 3] {
 /// `coupled` (system order): its coupled bodies in body order, their
 /// points' places in `coupled`, then the other coupled points.
 fn array_layout(system: &System, coupled: &[usize]) -> ArrayLayout {
-    let place = |p: usize| coupled.iter().position(|&q| q == p).expect("a coupled point");
+    let place = |p: usize| {
+        coupled
+            .iter()
+            .position(|&q| q == p)
+            .expect("a coupled point")
+    };
     let bodies: Vec<CoupledBody> = (0..system.bodies().len())
         .filter(|&b| system.bodies()[b].kind == crate::system::BodyKind::Coupled)
         .map(|b| CoupledBody {
@@ -555,7 +571,9 @@ fn array_layout(system: &System, coupled: &[usize]) -> ArrayLayout {
         .iter()
         .flat_map(|b| b.points.iter().map(|&(k, _)| k))
         .collect();
-    let plain = (0..coupled.len()).filter(|k| !on_body.contains(k)).collect();
+    let plain = (0..coupled.len())
+        .filter(|k| !on_body.contains(k))
+        .collect();
     ArrayLayout { bodies, plain }
 }
 

@@ -37,6 +37,7 @@
 use super::seed::{catenary_states_at, end_positions_at, seed_shape};
 use super::{End, System};
 use crate::band::BandLu;
+use crate::body::pose::Pose;
 use crate::model::State;
 
 /// Newton iterations on (M32a).
@@ -66,13 +67,13 @@ pub fn balanced_points(system: &System) -> Vec<[f64; 3]> {
 /// A free body's pose (reference point, rotation) at the catenary
 /// network's equilibrium (M32a), or as given where it has none; one per
 /// body (fixed and coupled bodies as given).
-pub fn balanced_bodies(system: &System) -> Vec<([f64; 3], [[f64; 3]; 3])> {
+pub fn balanced_bodies(system: &System) -> Vec<Pose> {
     balanced(system).1
 }
 
 /// The points' positions and the bodies' poses of [`balanced_points`] and
 /// [`balanced_bodies`].
-fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<([f64; 3], [[f64; 3]; 3])>) {
+fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
     let mut positions: Vec<[f64; 3]> = system.points().iter().map(|p| p.state_at(0.0).0).collect();
     let mut poses: Vec<_> = system
         .bodies()
@@ -122,7 +123,7 @@ impl Network {
     }
 
     /// Body k's reference point and rotation at x.
-    fn pose(&self, system: &System, x: &[f64], k: usize) -> ([f64; 3], [[f64; 3]; 3]) {
+    fn pose(&self, system: &System, x: &[f64], k: usize) -> Pose {
         let body = &system.bodies()[self.bodies[k]];
         let o = 3 * self.free.len() + 6 * k;
         let phi = [x[o + 3], x[o + 4], x[o + 5]];
@@ -199,7 +200,11 @@ fn solve_network(
             if size == 0.0 || shift > 1e2 * size {
                 return None;
             }
-            shift = if shift == 0.0 { 1e-10 * size } else { 100.0 * shift };
+            shift = if shift == 0.0 {
+                1e-10 * size
+            } else {
+                100.0 * shift
+            };
         };
         x = trial;
         g = gt;
@@ -282,8 +287,13 @@ fn imbalance(
         let (r, rotation) = net.pose(system, x, k);
         let centre = crate::body::pose::point(r, &rotation, body.inertia.centre_of_mass);
         centres.push(centre);
-        let (volume, density) = body.water.as_ref().map_or((0.0, 0.0), |w| (w.volume, w.density));
-        let net_weight = system.gravity().map(|gc| (body.inertia.mass - density * volume) * gc);
+        let (volume, density) = body
+            .water
+            .as_ref()
+            .map_or((0.0, 0.0), |w| (w.volume, w.density));
+        let net_weight = system
+            .gravity()
+            .map(|gc| (body.inertia.mass - density * volume) * gc);
         let mut loads = vec![(net_weight, centre)];
         for &(f, local) in &body.loads {
             loads.push((f, crate::body::pose::point(r, &rotation, local)));
@@ -339,7 +349,13 @@ fn imbalance(
                 }
             } else if let Some(k) = body_of(p) {
                 let o = 3 * free.len() + 6 * k;
-                add_at(&mut g, o, f, crate::vec3::sub(positions[p], centres[k]), &mut scale);
+                add_at(
+                    &mut g,
+                    o,
+                    f,
+                    crate::vec3::sub(positions[p], centres[k]),
+                    &mut scale,
+                );
             }
         }
     }

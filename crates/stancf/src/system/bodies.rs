@@ -86,7 +86,10 @@ impl Body {
     /// The velocity of the body point `local` at t = 0.
     pub fn point_velocity(&self, local: [f64; 3]) -> [f64; 3] {
         let arm = crate::body::pose::rotate(&self.rotation, local);
-        crate::vec3::add(self.velocity, crate::vec3::cross(self.angular_velocity, arm))
+        crate::vec3::add(
+            self.velocity,
+            crate::vec3::cross(self.angular_velocity, arm),
+        )
     }
 
     /// The body's state for stepping with steps of `dt` under `gravity`:
@@ -116,8 +119,7 @@ impl Body {
 
     fn check(&self, key: &str) -> Result<(), ModelError> {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-        if !finite(&self.position) || !finite(&self.velocity) || !finite(&self.angular_velocity)
-        {
+        if !finite(&self.position) || !finite(&self.velocity) || !finite(&self.angular_velocity) {
             return Err(ModelError::invalid(
                 key,
                 "position and velocities must be finite",
@@ -145,6 +147,9 @@ impl Body {
     }
 }
 
+/// Every body's points: (point index, body coordinates).
+pub(super) type BodyPoints = Vec<Vec<(usize, [f64; 3])>>;
+
 /// Validates the bodies and places the points on them: a point on a
 /// fixed body becomes a fixed point where the body puts it, a point on a
 /// coupled body a coupled point there (at rest until a coupling code
@@ -156,7 +161,7 @@ pub(super) fn place_points(
     bodies: &mut [Body],
     points: &mut [Point],
     gravity: [f64; 3],
-) -> Result<Vec<Vec<(usize, [f64; 3])>>, ModelError> {
+) -> Result<BodyPoints, ModelError> {
     let mut on_body = vec![Vec::new(); bodies.len()];
     for (i, p) in points.iter_mut().enumerate() {
         let PointKind::Body { body, local } = p.kind else {

@@ -20,6 +20,7 @@
 
 use super::body_terms::BodyPoint;
 use super::layout::SystemLayout;
+use super::{System, SystemStatics};
 use crate::body::attach::{offsets, project};
 use crate::bordered::BorderedMatrix;
 use crate::linear::{AddEntries, Jacobian};
@@ -95,7 +96,13 @@ impl StaticBody {
             }
         }
         if let Some((half_rho_cda, current)) = self.drag {
-            self.add_drag(layout, theta, (half_rho_cda, current), residual, jacobian.as_deref_mut());
+            self.add_drag(
+                layout,
+                theta,
+                (half_rho_cda, current),
+                residual,
+                jacobian.as_deref_mut(),
+            );
         }
         if jacobian.is_some() {
             self.stiffness = 0.0;
@@ -199,6 +206,94 @@ impl StaticBody {
     }
 }
 
+impl SystemStatics {
+    /// Free body b's pose at the last converged increment: its reference
+    /// point and its rotation (body axes to global); None for a fixed body.
+    pub fn body_pose(&self, b: usize) -> Option<([f64; 3], [[f64; 3]; 3])> {
+        let eq = &self.equations;
+        let body = eq.bodies.iter().find(|s| s.index == b)?;
+        let q = body.converged;
+        let rotation = body.rotation_at(&q);
+        let arm = crate::body::pose::rotate(&rotation, body.centre_of_mass);
+        Some((crate::vec3::sub([q[0], q[1], q[2]], arm), rotation))
+    }
+
+    /// The system with its free bodies where the last converged increment
+    /// put them (and their points with them): the system a dynamic run
+    /// from this equilibrium starts from, with [`Self::line_states`].
+    pub fn system_at_equilibrium(&self) -> System {
+        let mut system = self.equations.system.clone();
+        for body in &self.equations.bodies {
+            let (position, rotation) = self.body_pose(body.index).expect("a free body");
+            system.set_body_pose(body.index, position, rotation);
+        }
+        system
+    }
+}
+
+/// The free bodies of `system` as a static solve holds them: their
+/// weight and buoyancy at the centre of mass, their points' arms from it,
+/// and the scales of §15.8.
+pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
+    system
+        .free_bodies()
+        .map(|b| {
+            let body = &system.bodies()[b];
+            let c = body.inertia.centre_of_mass;
+            let (volume, density) = body
+                .water
+                .as_ref()
+                .map_or((0.0, 0.0), |w| (w.volume, w.density));
+            let g = system.gravity();
+            let net = g.map(|gc| (body.inertia.mass - density * volume) * gc);
+            let mut length = f64::INFINITY;
+            let mut arm = 0.0f64;
+            let points: Vec<BodyPoint> = system
+                .points()
+                .iter()
+                .enumerate()
+                .filter(|(_, pt)| pt.body() == Some(b))
+                .map(|(p, pt)| {
+                    let super::PointKind::Body { local, .. } = pt.kind else {
+                        unreachable!("a point on a body")
+                    };
+                    for (li, _) in system.attachments(p) {
+                        length = length.min(system.lines()[li].model.cable.length);
+                    }
+                    let arm_p = crate::vec3::sub(local, c);
+                    arm = arm.max(crate::vec3::norm(arm_p));
+                    BodyPoint {
+                        point: p,
+                        arm: arm_p,
+                    }
+                })
+                .collect();
+            let length = if length.is_finite() { length } else { 1.0 };
+            StaticBody {
+                index: b,
+                rotation: body.rotation,
+                centre_of_mass: c,
+                forces: std::iter::once((net, [0.0; 3]))
+                    .chain(
+                        body.loads
+                            .iter()
+                            .map(|&(f, at)| (f, crate::vec3::sub(at, c))),
+                    )
+                    .collect(),
+                points,
+                length,
+                arm: if arm > 0.0 { arm } else { length },
+                stiffness: 0.0,
+                converged: [0.0; 6],
+                drag: body.water.as_ref().and_then(|w| {
+                    (w.drag_areas != [0.0; 3] && w.current != [0.0; 3])
+                        .then(|| (w.drag_areas.map(|a| 0.5 * w.density * a), w.current))
+                }),
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use crate::body::RigidInertia;
@@ -292,6 +387,5 @@ mod tests {
         }
         eprintln!("static Jacobian against differences: {worst:.1e} of {size:.1e}");
         assert!(worst < 1e-6 * size, "{worst:e} of {size:e}");
-
     }
 }

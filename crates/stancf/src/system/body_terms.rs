@@ -138,7 +138,8 @@ impl StepBody {
         }
         let q = |slot: usize, k: usize| layout.body_unknown(b, slot, k).expect("free body");
         for bp in &self.points {
-            let y = |slot: usize, c: usize| layout.point_unknown(bp.point, slot, c).expect("border");
+            let y =
+                |slot: usize, c: usize| layout.point_unknown(bp.point, slot, c).expect("border");
             let maps = self.maps(bp.arm, &xb);
             let (pa, va) = &maps.start;
             let (pb, vb) = &maps.end;

@@ -150,7 +150,10 @@ impl SystemMass {
         self.lu.solve(&mut self.rates);
         for body in bodies.iter_mut() {
             let nu: [f64; 6] = std::array::from_fn(|k| {
-                self.rates[self.layout.body_unknown(body.index, 0, k).expect("free body")]
+                self.rates[self
+                    .layout
+                    .body_unknown(body.index, 0, k)
+                    .expect("free body")]
             });
             body.body
                 .set_rates([nu[0], nu[1], nu[2]], [nu[3], nu[4], nu[5]]);

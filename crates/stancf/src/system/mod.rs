@@ -41,9 +41,9 @@ mod simulation;
 mod static_friction;
 mod static_paths;
 mod statics;
-mod stiffness;
 mod step_equations;
 mod stepping;
+mod stiffness;
 mod topology;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};

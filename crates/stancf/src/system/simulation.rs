@@ -8,10 +8,10 @@
 //! (§11.14, [`super::apart`]). This file holds the simulation, its
 //! construction and its readings; the step itself is `stepping.rs`.
 
+use super::body_terms::{BodyPoint, StepBody};
 pub use super::end_forces::EndForce;
 use super::end_forces::ForcesAtTime;
 use super::layout::SystemLayout;
-use super::body_terms::{BodyPoint, StepBody};
 use super::mass::SystemMass;
 use super::point_terms::PointNodes;
 use super::step_equations::{system_scales, PointMotion, StepOfSystem};
@@ -360,13 +360,8 @@ impl SystemSimulation {
         for body in &mut self.bodies {
             body.body.set_time_step(dt);
         }
-        (self.unknown_scale, self.equation_scale) = system_scales(
-            &self.topology,
-            &self.lines,
-            &self.layout,
-            &self.bodies,
-            dt,
-        );
+        (self.unknown_scale, self.equation_scale) =
+            system_scales(&self.topology, &self.lines, &self.layout, &self.bodies, dt);
         self.workspace.factors_valid = false;
     }
 
@@ -483,7 +478,11 @@ fn check_ends_on_body(
         let o = coordinate(sim.model().dofs_per_node(), node, SLOT_R, 0);
         let s = sim.state();
         let gap = (0..3)
-            .map(|c| (s.e[o + c] - here.0[c]).abs().max((s.v[o + c] - here.1[c]).abs()))
+            .map(|c| {
+                (s.e[o + c] - here.0[c])
+                    .abs()
+                    .max((s.v[o + c] - here.1[c]).abs())
+            })
             .fold(0.0, f64::max);
         if gap > 1e-9 * size.max(1.0) {
             return Err(ModelError::invalid(

@@ -40,7 +40,10 @@
 
 pub use crate::statics::StaticFriction;
 
+use super::System;
+use crate::model::State;
 use crate::model::{coordinate, Model, SLOT_R, SLOT_R_X};
+use crate::statics::{CableStatics, StaticSettings};
 use crate::vec3::{dot, norm};
 
 /// `model` without seabed friction (the static copy of a line laid as in
@@ -145,4 +148,52 @@ pub(super) fn pulled_targets(model: &Model, e: &[f64]) -> Option<Vec<f64>> {
         }
     }
     Some(targets)
+}
+
+/// Each line's static equations from its seed (docs/method.md §11.6): a
+/// line without compression with its compressive stiffness kept (§2.2,
+/// (M4a)), or, marked in `own_law`, with its own law (M32c); the
+/// seabed's friction off while the lines are solved as laid (the whole
+/// solve of [`StaticFriction::AsLaid`], the first stage of
+/// [`StaticFriction::Pulled`]), and its targets at `targets` in the
+/// pull (W49).
+pub(super) fn line_statics(
+    system: &System,
+    seeds: &[State],
+    own_law: &[bool],
+    targets: Option<&[Vec<f64>]>,
+    settings: &StaticSettings,
+) -> Vec<CableStatics> {
+    let frictionless = match settings.seabed_friction {
+        StaticFriction::AsLaid => true,
+        StaticFriction::Pulled => targets.is_none(),
+        StaticFriction::FromSeed => false,
+    };
+    system
+        .lines()
+        .iter()
+        .zip(seeds)
+        .zip(own_law)
+        .enumerate()
+        .map(|(i, ((line, seed), &own))| {
+            // At exactly zero tension a line without compression has no
+            // axial stiffness without it, and where it is nowhere
+            // shortened the equilibrium is the same; where it is, the
+            // line is solved again with its own law (M32c).
+            let mut model = if own {
+                line.model.clone()
+            } else {
+                line.model.clone().with_compression()
+            };
+            if frictionless {
+                model = without_friction(model);
+            }
+            let mut line = CableStatics::new(model, settings.constraint_method, seed.e.clone());
+            line.take_strain_defects();
+            if let Some(t) = targets {
+                line.set_friction_targets(&t[i]);
+            }
+            line
+        })
+        .collect()
 }

@@ -36,11 +36,10 @@
 //! again from the seed with its own law (M32c), whose end, if reached
 //! and isolated, is the equilibrium.
 
-use super::body_statics::StaticBody;
-use super::body_terms::BodyPoint;
+use super::body_statics::{static_bodies, StaticBody};
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
-use super::static_friction::{self, StaticFriction};
+use super::static_friction::{line_statics, StaticFriction};
 use super::{AttachedEnd, System};
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
@@ -326,29 +325,6 @@ impl SystemStatics {
         self.equations.end_forces[line]
     }
 
-    /// Free body b's pose at the last converged increment: its reference
-    /// point and its rotation (body axes to global); None for a fixed body.
-    pub fn body_pose(&self, b: usize) -> Option<([f64; 3], [[f64; 3]; 3])> {
-        let eq = &self.equations;
-        let body = eq.bodies.iter().find(|s| s.index == b)?;
-        let q = body.converged;
-        let rotation = body.rotation_at(&q);
-        let arm = crate::body::pose::rotate(&rotation, body.centre_of_mass);
-        Some((crate::vec3::sub([q[0], q[1], q[2]], arm), rotation))
-    }
-
-    /// The system with its free bodies where the last converged increment
-    /// put them (and their points with them): the system a dynamic run
-    /// from this equilibrium starts from, with [`Self::line_states`].
-    pub fn system_at_equilibrium(&self) -> System {
-        let mut system = self.equations.system.clone();
-        for body in &self.equations.bodies {
-            let (position, rotation) = self.body_pose(body.index).expect("a free body");
-            system.set_body_pose(body.index, position, rotation);
-        }
-        system
-    }
-
     /// The net force the attached lines exert on point p.
     pub fn point_force(&self, p: usize) -> [f64; 3] {
         let mut f = [0.0; 3];
@@ -508,7 +484,10 @@ impl StaticEquations for SystemEquations {
             }
             let w = body.row_weights();
             for (k, &wk) in w.iter().enumerate() {
-                weights[self.layout.body_unknown(body.index, 0, k).expect("free body")] = wk;
+                weights[self
+                    .layout
+                    .body_unknown(body.index, 0, k)
+                    .expect("free body")] = wk;
             }
         }
     }
@@ -579,115 +558,4 @@ impl SystemEquations {
             }
         }
     }
-}
-
-/// Each line's static equations from its seed (docs/method.md §11.6): a
-/// line without compression with its compressive stiffness kept (§2.2,
-/// (M4a)), or, marked in `own_law`, with its own law (M32c); the
-/// seabed's friction off while the lines are solved as laid (the whole
-/// solve of [`StaticFriction::AsLaid`], the first stage of
-/// [`StaticFriction::Pulled`]), and its targets at `targets` in the
-/// pull (W49).
-fn line_statics(
-    system: &System,
-    seeds: &[State],
-    own_law: &[bool],
-    targets: Option<&[Vec<f64>]>,
-    settings: &StaticSettings,
-) -> Vec<CableStatics> {
-    let frictionless = match settings.seabed_friction {
-        StaticFriction::AsLaid => true,
-        StaticFriction::Pulled => targets.is_none(),
-        StaticFriction::FromSeed => false,
-    };
-    system
-        .lines()
-        .iter()
-        .zip(seeds)
-        .zip(own_law)
-        .enumerate()
-        .map(|(i, ((line, seed), &own))| {
-            // At exactly zero tension a line without compression has no
-            // axial stiffness without it, and where it is nowhere
-            // shortened the equilibrium is the same; where it is, the
-            // line is solved again with its own law (M32c).
-            let mut model = if own {
-                line.model.clone()
-            } else {
-                line.model.clone().with_compression()
-            };
-            if frictionless {
-                model = static_friction::without_friction(model);
-            }
-            let mut line = CableStatics::new(model, settings.constraint_method, seed.e.clone());
-            line.take_strain_defects();
-            if let Some(t) = targets {
-                line.set_friction_targets(&t[i]);
-            }
-            line
-        })
-        .collect()
-}
-
-/// The free bodies of `system` as a static solve holds them: their
-/// weight and buoyancy at the centre of mass, their points' arms from it,
-/// and the scales of §15.8.
-fn static_bodies(system: &System) -> Vec<StaticBody> {
-    system
-        .free_bodies()
-        .map(|b| {
-            let body = &system.bodies()[b];
-            let c = body.inertia.centre_of_mass;
-            let (volume, density) = body
-                .water
-                .as_ref()
-                .map_or((0.0, 0.0), |w| (w.volume, w.density));
-            let g = system.gravity();
-            let net = g.map(|gc| (body.inertia.mass - density * volume) * gc);
-            let mut length = f64::INFINITY;
-            let mut arm = 0.0f64;
-            let points: Vec<BodyPoint> = system
-                .points()
-                .iter()
-                .enumerate()
-                .filter(|(_, pt)| pt.body() == Some(b))
-                .map(|(p, pt)| {
-                    let super::PointKind::Body { local, .. } = pt.kind else {
-                        unreachable!("a point on a body")
-                    };
-                    for (li, _) in system.attachments(p) {
-                        length = length.min(system.lines()[li].model.cable.length);
-                    }
-                    let arm_p = crate::vec3::sub(local, c);
-                    arm = arm.max(crate::vec3::norm(arm_p));
-                    BodyPoint {
-                        point: p,
-                        arm: arm_p,
-                    }
-                })
-                .collect();
-            let length = if length.is_finite() { length } else { 1.0 };
-            StaticBody {
-                index: b,
-                rotation: body.rotation,
-                centre_of_mass: c,
-                forces: std::iter::once((net, [0.0; 3]))
-                    .chain(
-                        body.loads
-                            .iter()
-                            .map(|&(f, at)| (f, crate::vec3::sub(at, c))),
-                    )
-                    .collect(),
-                points,
-                length,
-                arm: if arm > 0.0 { arm } else { length },
-                stiffness: 0.0,
-                converged: [0.0; 6],
-                drag: body.water.as_ref().and_then(|w| {
-                    (w.drag_areas != [0.0; 3] && w.current != [0.0; 3])
-                        .then(|| (w.drag_areas.map(|a| 0.5 * w.density * a), w.current))
-                }),
-            }
-        })
-        .collect()
 }

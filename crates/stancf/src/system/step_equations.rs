@@ -81,7 +81,14 @@ pub(super) fn system_scales(
         }
     }
     for body in bodies {
-        body_scales(system, lines, layout, body, dt, (&mut unknown, &mut equation));
+        body_scales(
+            system,
+            lines,
+            layout,
+            body,
+            dt,
+            (&mut unknown, &mut equation),
+        );
     }
     for u in unknown.iter_mut() {
         if !u.is_finite() {

@@ -108,9 +108,9 @@ impl SystemSimulation {
             let end_rows = |p: usize| -> [f64; 3] {
                 std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
             };
-            self.body_momentum[k] = body.end_momentum(&xb, end_rows).ok_or_else(|| {
-                singular(self.t, self.steps, "a body's J_r(theta_b) is singular")
-            })?;
+            self.body_momentum[k] = body
+                .end_momentum(&xb, end_rows)
+                .ok_or_else(|| singular(self.t, self.steps, "a body's J_r(theta_b) is singular"))?;
             body.body.advance(&xb)?;
         }
         mass.set_end_rates(

@@ -105,8 +105,12 @@ fn lines_held_at_a_bodys_centre_move_it_as_a_point_of_its_mass() {
             ends: [End::Point(0), End::Loose],
         })
         .collect();
-    let point = System::new(lines.clone(), vec![Point::free([0.0; 3], BODY_MASS)], [0.0; 3])
-        .expect("point system");
+    let point = System::new(
+        lines.clone(),
+        vec![Point::free([0.0; 3], BODY_MASS)],
+        [0.0; 3],
+    )
+    .expect("point system");
     let body = System::with_bodies(
         lines,
         vec![Point::on_body(0, [0.0; 3])],
@@ -123,12 +127,16 @@ fn lines_held_at_a_bodys_centre_move_it_as_a_point_of_its_mass() {
         let (xb, vb) = body_sim.point_state(0);
         let (xp, vp) = point_sim.point_state(0);
         for c in 0..3 {
-            worst = worst.max((xb[c] - xp[c]).abs()).max(1e-3 * (vb[c] - vp[c]).abs());
+            worst = worst
+                .max((xb[c] - xp[c]).abs())
+                .max(1e-3 * (vb[c] - vp[c]).abs());
         }
     }
     let centre = body_sim.free_body(0).unwrap().centre();
     let (xp, _) = point_sim.point_state(0);
-    eprintln!("body against point: largest difference {worst:.1e} m; centre {centre:?}, point {xp:?}");
+    eprintln!(
+        "body against point: largest difference {worst:.1e} m; centre {centre:?}, point {xp:?}"
+    );
     assert!(worst < 1e-12, "{worst:e}");
     for c in 0..3 {
         assert!((centre[c] - xp[c]).abs() < 1e-12);
@@ -224,7 +232,10 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
     let mut states = Vec::new();
     for (k, end) in places.iter().enumerate() {
         let start = [0.1 - 0.5 * k as f64, 0.4, 0.0];
-        let chord = (0..3).map(|c| (end[c] - start[c]).powi(2)).sum::<f64>().sqrt();
+        let chord = (0..3)
+            .map(|c| (end[c] - start[c]).powi(2))
+            .sum::<f64>()
+            .sqrt();
         let d: [f64; 3] = std::array::from_fn(|c| (end[c] - start[c]) / chord);
         let cable = Cable::straight(chord, 4, ElementType::Sac2)
             .with_direction(d)
@@ -245,7 +256,10 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
         states.push(state);
         lines.push(Line {
             model,
-            ends: [if k == 0 { End::Point(2) } else { End::Loose }, End::Point(k)],
+            ends: [
+                if k == 0 { End::Point(2) } else { End::Loose },
+                End::Point(k),
+            ],
         });
     }
     let points = vec![
@@ -253,8 +267,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
         Point::on_body(0, local[1]),
         Point::fixed([0.1, 0.4, 0.0]),
     ];
-    let system =
-        System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
     let mut sim = SystemSimulation::new(system, states, galerkin(0.01)).unwrap();
     let (jac, x) = sim.next_step_jacobian();
     let n = x.len();
@@ -275,7 +288,6 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
     eprintln!("step Jacobian with a free body: rel. error {err:.1e}");
     assert!(err < 1e-7, "{err:e}");
 }
-
 
 /// A body of 10 kg (moment 0.5 kg m^2 about its centre) hanging by a
 /// point 0.5 m above its centre from a 1 m line to a fixed anchor: for
@@ -311,8 +323,11 @@ fn a_body_hanging_from_a_line_swings_as_a_double_pendulum() {
     let centre = [top[0] + d * phi2.sin(), 0.0, top[2] - d * phi2.cos()];
     // Unstretched so that the body's weight stretches it to l.
     let stretch = 1.0 + m * g / (line.youngs_modulus * line.area);
-    let cable = Cable::straight(l / stretch, 4, ElementType::Sac2)
-        .with_direction([phi1.sin(), 0.0, -phi1.cos()]);
+    let cable = Cable::straight(l / stretch, 4, ElementType::Sac2).with_direction([
+        phi1.sin(),
+        0.0,
+        -phi1.cos(),
+    ]);
     let model = Model::new(cable, line, ModelOptions::default(), vec![]).expect("model");
     let mut state = model.initial_state();
     for node in 0..model.nodes() {
@@ -381,6 +396,3 @@ fn a_body_hanging_from_a_line_swings_as_a_double_pendulum() {
     );
     assert!(worst < 5e-3 * amplitude, "{worst:e}");
 }
-
-
-

@@ -7,8 +7,8 @@ use stancf::body::{BodyWater, RigidInertia};
 use stancf::catenary::{Catenary, CatenaryLine, LineEnd};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
 use stancf::{
-    AxialStrain, Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
-    TimeScheme,
+    AxialStrain, Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings,
+    StepSettings, TimeScheme,
 };
 
 const G: [f64; 3] = [0.0, 0.0, -9.81];
@@ -160,11 +160,13 @@ fn a_buoy_held_by_three_lines_balances_their_catenaries() {
         norm(moment)
     );
     assert!(worst < 1e-5, "{worst:e}");
-    assert!(position[0].abs() > 0.1 && angles[0].abs() + angles[1].abs() > 0.1, "the uneven lines move and tilt the buoy");
+    assert!(
+        position[0].abs() > 0.1 && angles[0].abs() + angles[1].abs() > 0.1,
+        "the uneven lines move and tilt the buoy"
+    );
     assert!(norm(force) < 1e-9 * lift, "{force:?}");
     assert!(norm(moment) < 1e-9 * lift, "{moment:?}");
 }
-
 
 /// A dynamic run from the buoy's equilibrium (the system with the buoy
 /// where the static solve left it, the lines in their static shapes,
@@ -284,7 +286,10 @@ fn a_moored_buoys_stiffness_matrix_is_the_derivative_of_its_mooring_load() {
             worst = worst.max((k[i][j] - extrapolated).abs());
         }
     }
-    eprintln!("stiffness against extrapolated differences: {:.1e} of {size:.3e}", worst / size);
+    eprintln!(
+        "stiffness against extrapolated differences: {:.1e} of {size:.3e}",
+        worst / size
+    );
     assert!(worst < 1e-7 * size, "{:e}", worst / size);
 }
 
@@ -341,7 +346,10 @@ fn a_bodys_heavy_point_tilts_it_until_their_centre_hangs_below_the_line() {
     let (position, rotation) = statics.body_pose(0).expect("free body");
     let angles = stancf::body::pose::moordyn_angles(&rotation);
     let expected = (small / big).atan().to_degrees();
-    eprintln!("pitch {:.9} deg (expected {expected:.9}), at {position:?}", angles[1]);
+    eprintln!(
+        "pitch {:.9} deg (expected {expected:.9}), at {position:?}",
+        angles[1]
+    );
     assert!((angles[1] - expected).abs() < 1e-7, "{angles:?}");
     assert!(angles[0].abs() < 1e-9 && angles[2].abs() < 1e-9);
     // The lines hold both masses and their own weight.

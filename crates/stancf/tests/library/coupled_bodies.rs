@@ -55,14 +55,26 @@ fn moored(on_body: bool) -> System {
 }
 
 fn handle(system: System) -> CoupledSystem {
-    CoupledSystem::new(system.clone(), system, StaticSettings::default(), settings())
-        .expect("handle")
+    CoupledSystem::new(
+        system.clone(),
+        system,
+        StaticSettings::default(),
+        settings(),
+    )
+    .expect("handle")
 }
 
 /// The platform's pose and velocity at t (MoorDyn's angles in radians,
 /// the angular velocity global).
 fn platform(t: f64) -> ([f64; 6], [f64; 6]) {
-    let x = [0.02 * t, -0.01 * t, 0.005 * t, 0.03 * t, -0.02 * t, 0.04 * t];
+    let x = [
+        0.02 * t,
+        -0.01 * t,
+        0.005 * t,
+        0.03 * t,
+        -0.02 * t,
+        0.04 * t,
+    ];
     // The angles turn slowly: w is given as the host gives it.
     let xd = [0.02, -0.01, 0.005, 0.03, -0.02, 0.04];
     (x, xd)
@@ -72,7 +84,11 @@ fn platform(t: f64) -> ([f64; 6], [f64; 6]) {
 /// xd: r + R xi and v + w x R xi.
 fn fairlead_arrays(x: &[f64; 6], xd: &[f64; 6]) -> (Vec<f64>, Vec<f64>) {
     let rotation = rotation_from_moordyn_angles([x[3], x[4], x[5]].map(f64::to_degrees));
-    let (r, v, w) = ([x[0], x[1], x[2]], [xd[0], xd[1], xd[2]], [xd[3], xd[4], xd[5]]);
+    let (r, v, w) = (
+        [x[0], x[1], x[2]],
+        [xd[0], xd[1], xd[2]],
+        [xd[3], xd[4], xd[5]],
+    );
     let mut p = Vec::new();
     let mut pd = Vec::new();
     for (local, _) in fairleads() {
@@ -96,7 +112,9 @@ fn a_coupled_platform_takes_its_fairleads_force_and_moment() {
     let (x0, xd0) = platform(0.0);
     let (p0, pd0) = fairlead_arrays(&x0, &xd0);
     let fb = body.initialize(&x0, Some(&xd0)).expect("initialize body");
-    let fp = points.initialize(&p0, Some(&pd0)).expect("initialize points");
+    let fp = points
+        .initialize(&p0, Some(&pd0))
+        .expect("initialize points");
     let check = |fb: &[f64], fp: &[f64], x: &[f64; 6], p: &[f64]| {
         let mut force = [0.0; 3];
         let mut moment = [0.0; 3];
@@ -109,7 +127,10 @@ fn a_coupled_platform_takes_its_fairleads_force_and_moment() {
         let size = force.iter().map(|v| v.abs()).fold(0.0, f64::max);
         for c in 0..3 {
             assert!((fb[c] - force[c]).abs() < 1e-12 * size, "{fb:?} {force:?}");
-            assert!((fb[3 + c] - moment[c]).abs() < 1e-12 * size, "{fb:?} {moment:?}");
+            assert!(
+                (fb[3 + c] - moment[c]).abs() < 1e-12 * size,
+                "{fb:?} {moment:?}"
+            );
         }
         size
     };
@@ -146,10 +167,17 @@ fn a_coupled_platform_turns_as_moordyns_angles_say() {
         let moved = sub(at, local);
         for c in 0..3 {
             if let Some(sign) = check[c] {
-                assert!(sign * moved[c] > 0.01, "{angles:?}: point moved by {moved:?}");
+                assert!(
+                    sign * moved[c] > 0.01,
+                    "{angles:?}: point moved by {moved:?}"
+                );
             }
         }
-        let expect = point([0.0; 3], &rotation_from_moordyn_angles(angles.map(f64::to_degrees)), local);
+        let expect = point(
+            [0.0; 3],
+            &rotation_from_moordyn_angles(angles.map(f64::to_degrees)),
+            local,
+        );
         for c in 0..3 {
             assert!((at[c] - expect[c]).abs() < 1e-14);
         }
