@@ -115,12 +115,15 @@ pub struct FreeBody {
     body_rate: [f64; 3],
     scheme: TimeScheme,
     last_iterations: usize,
+    /// The constant forces in the step's start axes at their arms from
+    /// the centre of mass ([`FreeBody::refresh_loads`]).
+    start_loads: Vec<([f64; 3], [f64; 3])>,
 }
 
 /// The slab's rows over the 24 slots and their derivatives (row-major).
 struct SlabRows {
     rows: [f64; SLOTS],
-    jacobian: Vec<f64>,
+    jacobian: [f64; SLOTS * SLOTS],
 }
 
 /// d(variable k at a time point)/d(slot block m): which slot and weight.
@@ -173,7 +176,9 @@ impl FreeBody {
             body_rate: rotate_back(rotation, angular_velocity),
             scheme: TimeScheme::Galerkin,
             last_iterations: 0,
+            start_loads: Vec::with_capacity(forces.forces.len()),
         };
+        body.refresh_loads();
         body.momenta_from_rates();
         Ok(body)
     }
@@ -267,18 +272,16 @@ impl FreeBody {
     }
 
     /// The constant forces in the start's body axes, at their points from
-    /// the centre of mass.
-    fn loads(&self) -> Vec<([f64; 3], [f64; 3])> {
-        self.forces
-            .forces
-            .iter()
-            .map(|(f, xi)| {
-                (
-                    rotate_back(&self.rotation, *f),
-                    sub(*xi, self.inertia.centre_of_mass),
-                )
-            })
-            .collect()
+    /// the centre of mass: kept for the step (the same number each time,
+    /// so no allocation after the first).
+    fn refresh_loads(&mut self) {
+        self.start_loads.clear();
+        for (f, xi) in &self.forces.forces {
+            self.start_loads.push((
+                rotate_back(&self.rotation, *f),
+                sub(*xi, self.inertia.centre_of_mass),
+            ));
+        }
     }
 
     /// p and Pi from v_G and Omega (the kinetic energy's gradient in the

@@ -122,7 +122,8 @@ impl StepBody {
     ) {
         let b = self.index;
         let xb = self.unknowns(layout, x);
-        let (rows, jac) = self.body.galerkin_rows_and_jacobian(&xb);
+        let (mut rows, mut jac) = ([0.0; 18], [0.0; 18 * 18]);
+        self.body.galerkin_rows_into(&xb, &mut rows, &mut jac);
         for i in 0..18 {
             residual[global(layout, b, i)] += rows[i];
         }

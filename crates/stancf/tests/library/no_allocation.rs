@@ -54,6 +54,7 @@ fn stepping_a_cable_or_a_system_allocates_nothing() {
     COUNTED.with(|c| c.set(true));
     stepping_a_cable_allocates_nothing();
     stepping_a_system_with_a_free_point_allocates_nothing();
+    stepping_a_system_with_a_free_body_allocates_nothing();
     stepping_lines_apart_allocates_nothing();
 }
 
@@ -267,6 +268,49 @@ fn stepping_a_system_with_a_free_point_allocates_nothing() {
             "{method:?} {solver:?} {scheme:?} (table: {table}): {allocations} allocations in 50 steps"
         );
     }
+}
+
+/// A free body holding three lines (docs/method.md §15.7): the three
+/// lines of [`crate::common::rope_systems::three_to_a_point`] held at
+/// three points of a free body instead of at the free point, stepped by
+/// the Galerkin scheme (the body's rows, its points' constraints, the
+/// system's mass matrix refactorized with the body's rates at every
+/// step's end): after the first step nothing is allocated.
+fn stepping_a_system_with_a_free_body_allocates_nothing() {
+    use crate::common::rope_systems::{line_model, settings};
+    use stancf::body::RigidInertia;
+    use stancf::system::SystemSimulation;
+    use stancf::system::{straight_states, Body, BodyKind, End, Line, Point, System};
+    let anchors: [[f64; 3]; 3] = [[2.0, 0.0, 0.0], [-1.0, 1.7, 0.0], [-1.0, -1.7, 0.5]];
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let body = Body::new(
+        BodyKind::Free,
+        [0.0, 0.0, -1.0],
+        identity,
+        RigidInertia::principal(0.2, [0.0, 0.0, -0.05], [1e-3, 1e-3, 1.5e-3]),
+    );
+    let mut points = Vec::new();
+    let mut lines = Vec::new();
+    for (k, a) in anchors.iter().enumerate() {
+        let local = a.map(|c| 0.05 * c);
+        points.push(Point::fixed(*a));
+        points.push(Point::on_body(0, local));
+        lines.push(Line {
+            model: line_model(*a, body.point(local), 10),
+            ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+        });
+    }
+    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).unwrap();
+    let start = straight_states(&system);
+    let settings = StepSettings {
+        time_scheme: stancf::TimeScheme::Galerkin,
+        ..settings()
+    };
+    let mut sim = SystemSimulation::new(system, start, settings).unwrap();
+    let allocations = allocations_in_50_steps(&mut sim, |sim| {
+        std::hint::black_box(sim.free_body(0).map(|b| b.position()));
+    });
+    assert_eq!(allocations, 0, "{allocations} allocations in 50 steps");
 }
 
 /// The allocations of this thread in 50 steps of `sim` after its first

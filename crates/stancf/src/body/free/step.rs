@@ -9,11 +9,10 @@ impl FreeBody {
     /// virtual work, per slot, and their derivatives. `slots` holds the
     /// eight blocks (the centre's from r_a).
     fn slab_rows(&self, slots: &[[f64; 3]; 8]) -> SlabRows {
-        let loads = self.loads();
-        let ctx = self.context(&loads);
+        let ctx = self.context(&self.start_loads);
         let mut out = SlabRows {
             rows: [0.0; SLOTS],
-            jacobian: vec![0.0; SLOTS * SLOTS],
+            jacobian: [0.0; SLOTS * SLOTS],
         };
         let total = self.forces.total();
         for m in 0..4 {
@@ -84,13 +83,20 @@ impl FreeBody {
     /// The Galerkin rows (B6) at x = [w_a, r_b - r_a, w_b, u_a, theta_b,
     /// u_b] and their exact Jacobian (row-major, 18 x 18).
     pub fn galerkin_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
-        let slab = self.slab_rows(&self.slots(x));
-        let (mut r, jac) = pick(&slab, &GALERKIN_ROWS, &GALERKIN_UNKNOWNS);
-        for i in 0..3 {
-            r[i] += self.momentum[i];
-            r[9 + i] += self.body_momentum[i];
-        }
+        let (mut r, mut jac) = (vec![0.0; 18], vec![0.0; 18 * 18]);
+        self.galerkin_rows_into(x, &mut r, &mut jac);
         (r, jac)
+    }
+
+    /// [`Self::galerkin_rows_and_jacobian`] into `rows` (18) and `jac`
+    /// (18 x 18, row-major), allocating nothing.
+    pub fn galerkin_rows_into(&self, x: &[f64], rows: &mut [f64], jac: &mut [f64]) {
+        let slab = self.slab_rows(&self.slots(x));
+        pick(&slab, &GALERKIN_ROWS, &GALERKIN_UNKNOWNS, rows, jac);
+        for i in 0..3 {
+            rows[i] += self.momentum[i];
+            rows[9 + i] += self.body_momentum[i];
+        }
     }
 
     /// The P2 rows (B8) at x = [r_b - r_a, v_b, theta_b, u_b] and their
@@ -100,7 +106,8 @@ impl FreeBody {
     pub fn p2_rows_and_jacobian(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         const M: usize = 12;
         let slab = self.slab_rows(&self.slots(x));
-        let (mut r, mut jac) = pick(&slab, &P2_ROWS, &P2_UNKNOWNS);
+        let (mut r, mut jac) = (vec![0.0; M], vec![0.0; M * M]);
+        pick(&slab, &P2_ROWS, &P2_UNKNOWNS, &mut r, &mut jac);
         let end = self
             .context(&[])
             .kinetic(&variables([part(x, 3), part(x, 6), part(x, 9)]));
@@ -186,6 +193,7 @@ impl FreeBody {
         self.centre = add(self.centre, slots[2]);
         self.rotation =
             pose::reorthonormalized(&crate::vec3::mat3_mul(&self.rotation, &exp_map(theta_b)));
+        self.refresh_loads();
         self.time += self.slab.dt;
         Ok(())
     }
@@ -269,12 +277,10 @@ impl FreeBody {
     }
 }
 
-/// The rows of the slot blocks `rows` and their derivatives in the slot
-/// blocks `unknowns`.
-fn pick(slab: &SlabRows, rows: &[usize], unknowns: &[usize]) -> (Vec<f64>, Vec<f64>) {
+/// The rows of the slot blocks `rows` into `r` and their derivatives in
+/// the slot blocks `unknowns` into `jac` (row-major).
+fn pick(slab: &SlabRows, rows: &[usize], unknowns: &[usize], r: &mut [f64], jac: &mut [f64]) {
     let n = 3 * rows.len();
-    let mut r = vec![0.0; n];
-    let mut jac = vec![0.0; n * n];
     for (a, &ra) in rows.iter().enumerate() {
         for i in 0..3 {
             r[3 * a + i] = slab.rows[3 * ra + i];
@@ -286,7 +292,6 @@ fn pick(slab: &SlabRows, rows: &[usize], unknowns: &[usize]) -> (Vec<f64>, Vec<f
             }
         }
     }
-    (r, jac)
 }
 
 /// x[a..a + 3].
@@ -296,7 +301,7 @@ fn part(x: &[f64], a: usize) -> [f64; 3] {
 
 /// y with A^T y = b (None if A is singular).
 pub(crate) fn solve_transposed(a: &[[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
-    let mut m: Vec<f64> = (0..9).map(|k| a[k % 3][k / 3]).collect();
+    let mut m: [f64; 9] = std::array::from_fn(|k| a[k % 3][k / 3]);
     let mut pivots = [0usize; 3];
     dense_lu(&mut m, 3, &mut pivots).ok()?;
     let mut y = b;
