@@ -1,7 +1,8 @@
 //! `stancf check` of a system scenario: the system built as a run builds
 //! it (every refusal of `run` is a refusal here), then what it is: lines
-//! with the bending stiffness each is simulated with, points, and for a
-//! dynamic analysis each line's stable P2 step.
+//! with the bending stiffness each is simulated with, bodies, points, the
+//! degrees of freedom, and for a dynamic analysis each line's stable P2
+//! step.
 
 use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario, Water};
 use crate::Failure;
@@ -22,15 +23,57 @@ pub struct Prepared {
 }
 
 /// The dynamic simulation of `system` from the lines' `states` with the
-/// scenario's step settings and step halvings.
+/// scenario's step settings and step halvings; the lines attached to a
+/// body that starts moving move with it ([`move_with_bodies`]).
 pub fn simulation(
     sc: &SystemScenario,
     system: System,
-    states: Vec<stancf::State>,
+    mut states: Vec<stancf::State>,
 ) -> Result<SystemSimulation, stancf::ModelError> {
+    move_with_bodies(&system, &mut states);
     let mut sim = SystemSimulation::new(system, states, sc.analysis.step_settings())?;
     sim.set_step_halvings(sc.analysis.step_halvings)?;
     Ok(sim)
+}
+
+/// Gives every line attached to a body that starts moving (`velocity`,
+/// `angular_velocity`) the velocity field linear in its material
+/// coordinate s between its ends' velocities, v(s) = v_A + (v_B - v_A)
+/// s / L (its slope's rate (v_B - v_A) / L): its ends move with their
+/// points (at rest at fixed and free points; a loose end as the other),
+/// as the core requires of the ends on a body. Lines of bodies at rest
+/// keep their states.
+fn move_with_bodies(system: &System, states: &mut [stancf::State]) {
+    use stancf::numbering::{SLOT_R, SLOT_R_X};
+    use stancf::system::{End, PointKind};
+    let end_velocity = |e: End| match e {
+        End::Point(p) => match system.points()[p].kind {
+            PointKind::Body { body, local } => Some(system.bodies()[body].point_velocity(local)),
+            _ => Some([0.0; 3]),
+        },
+        End::Loose => None,
+    };
+    for (line, state) in system.lines().iter().zip(states.iter_mut()) {
+        let [a, b] = line.ends.map(end_velocity);
+        let (va, vb) = match (a, b) {
+            (Some(a), Some(b)) => (a, b),
+            (Some(a), None) => (a, a),
+            (None, Some(b)) => (b, b),
+            (None, None) => continue,
+        };
+        if va == [0.0; 3] && vb == [0.0; 3] {
+            continue;
+        }
+        let model = &line.model;
+        let length = model.cable.length;
+        for node in 0..model.nodes() {
+            let s = model.node_coordinate(node) / length;
+            for c in 0..3 {
+                state.v[model.coordinate(node, SLOT_R, c)] = va[c] + (vb[c] - va[c]) * s;
+                state.v[model.coordinate(node, SLOT_R_X, c)] = (vb[c] - va[c]) / length;
+            }
+        }
+    }
 }
 
 /// Builds what `sc` runs (see [`Prepared`]); errors are input errors
@@ -126,33 +169,11 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         );
     }
-    for p in &sc.points {
-        let kind = match p.kind {
-            PointType::Fixed => "fixed".to_string(),
-            PointType::Coupled => match (&p.motion_file, p.motion.table()) {
-                (Some(file), Some(table)) => {
-                    let (first, last) = table.span();
-                    format!(
-                        "coupled, moving along the table {file} ({} rows, t = {} to {} s)",
-                        table.len(),
-                        Sig(first),
-                        Sig(last)
-                    )
-                }
-                _ if p.motion.moves() => "coupled, moving".to_string(),
-                _ => "coupled, at rest".to_string(),
-            },
-            PointType::Free => format!("free, mass {} kg", Sig(p.mass)),
-        };
-        line(
-            &format!("point {}", p.id),
-            format!(
-                "{kind} at [{}, {}, {}] m",
-                Sig(p.position[0]),
-                Sig(p.position[1]),
-                Sig(p.position[2])
-            ),
-        );
+    for (k, v) in crate::check_bodies::body_words(sc) {
+        line(&k, v);
+    }
+    for (k, v) in point_words(sc) {
+        line(&k, v);
     }
     if let Some(w) = &sc.water {
         for (k, v) in water_words(w) {
@@ -175,6 +196,10 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         },
     );
+    line(
+        "degrees of freedom",
+        crate::check_bodies::dof_words(sc, &system),
+    );
     line("work", work_words(sc));
     if sc.analysis.kind == AnalysisKind::Dynamic {
         if let Some(step) = stable_step(sc, &system) {
@@ -188,6 +213,55 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         let _ = writeln!(r, "note: {n}");
     }
     Ok(r)
+}
+
+/// One line per point: what holds it (a coupled point's motion, a free
+/// point's mass, a body point's body and body coordinates) and where it
+/// is at t = 0.
+fn point_words(sc: &SystemScenario) -> Vec<(String, String)> {
+    sc.points
+        .iter()
+        .map(|p| {
+            let kind = match p.kind {
+                PointType::Fixed => "fixed".to_string(),
+                PointType::Body { body, local } => format!(
+                    "on {} body {} at [{}, {}, {}] m in its axes,",
+                    if sc.bodies[body].is_free() {
+                        "free"
+                    } else {
+                        "fixed"
+                    },
+                    sc.bodies[body].id,
+                    Sig(local[0]),
+                    Sig(local[1]),
+                    Sig(local[2])
+                ),
+                PointType::Coupled => match (&p.motion_file, p.motion.table()) {
+                    (Some(file), Some(table)) => {
+                        let (first, last) = table.span();
+                        format!(
+                            "coupled, moving along the table {file} ({} rows, t = {} to {} s)",
+                            table.len(),
+                            Sig(first),
+                            Sig(last)
+                        )
+                    }
+                    _ if p.motion.moves() => "coupled, moving".to_string(),
+                    _ => "coupled, at rest".to_string(),
+                },
+                PointType::Free => format!("free, mass {} kg", Sig(p.mass)),
+            };
+            (
+                format!("point {}", p.id),
+                format!(
+                    "{kind} at [{}, {}, {}] m",
+                    Sig(p.position[0]),
+                    Sig(p.position[1]),
+                    Sig(p.position[2])
+                ),
+            )
+        })
+        .collect()
 }
 
 /// The elements and steps of a system against the bounds `run` applies

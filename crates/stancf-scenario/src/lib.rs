@@ -7,6 +7,7 @@
 //! command line.
 
 pub mod check;
+pub mod check_bodies;
 pub mod check_system;
 pub mod coupling;
 pub mod echo;

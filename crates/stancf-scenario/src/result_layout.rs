@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 
 /// The files a single cable's or a system's run writes at the top of its
 /// folder (each at most once; which ones depends on the run).
-pub const RUN_FILES: [&str; 13] = [
+pub const RUN_FILES: [&str; 14] = [
     "summary.json",
     "scenario.toml",
     "history.csv",
@@ -34,6 +34,7 @@ pub const RUN_FILES: [&str; 13] = [
     "tensions.csv",
     "channels.csv",
     "node_loads.csv",
+    "bodies.csv",
     "cable.pvd",
 ];
 

@@ -34,14 +34,16 @@ pub fn check_geometry(
     sc: &SystemScenario,
     coupled_placed: bool,
 ) -> Result<(), Failure> {
+    // A point on a fixed body is placed as a fixed point; one on a free
+    // body starts where the body puts it, as a free point where its
+    // lines' seeds start.
     let placed = |p: usize| match sc.points[p].kind {
-        PointType::Fixed => true,
         PointType::Coupled => coupled_placed,
-        PointType::Free => false,
+        _ => sc.point_is_fixed(p),
     };
     if let Some(w) = &sc.water {
         for (p, pt) in sc.points.iter().enumerate() {
-            if !placed(p) && pt.kind != PointType::Free {
+            if !placed(p) && !sc.point_moves(p) {
                 continue;
             }
             let [x, y, z] = pt.position;
@@ -77,7 +79,7 @@ pub fn check_geometry(
         for (b, &(length, last_line)) in reach.iter().enumerate() {
             // A free point's position is where its lines' seeds start:
             // it must be within their reach too.
-            let free = sc.points[b].kind == PointType::Free;
+            let free = sc.point_moves(b);
             if b == a || !(placed(b) || free) || !length.is_finite() {
                 continue;
             }
@@ -91,7 +93,14 @@ pub fn check_geometry(
                     line_key
                 };
                 let start = if free {
-                    format!(" (free point {} starts there)", sc.points[b].id)
+                    let id = sc.points[b].id;
+                    match sc.points[b].kind {
+                        PointType::Body { body, .. } => format!(
+                            " (point {id}, on free body {}, starts there)",
+                            sc.bodies[body].id
+                        ),
+                        _ => format!(" (free point {id} starts there)"),
+                    }
                 } else {
                     String::new()
                 };
@@ -181,7 +190,7 @@ fn reach_from(
         if d > best[p].0 {
             continue;
         }
-        if p != a && sc.points[p].kind != PointType::Free {
+        if p != a && !sc.point_moves(p) {
             continue;
         }
         for &(i, other) in &adjacent[p] {

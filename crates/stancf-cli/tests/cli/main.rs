@@ -7,6 +7,7 @@ mod common;
 
 mod axial_damping;
 mod bad_input;
+mod bodies;
 mod clamped_lines;
 mod compression;
 mod coupling;

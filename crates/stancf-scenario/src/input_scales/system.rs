@@ -66,6 +66,28 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
             (key("force", "FX, FY, FZ"), magnitude(&pt.force)),
         ]);
     }
+    for (b, body) in sc.bodies.iter().enumerate() {
+        let key = |k: &str, c: &str| n.body(b, k, c);
+        values.extend([
+            (key("position", "X0, Y0, Z0"), largest(&body.position)),
+            (key("angles", "r0, p0, y0"), largest(&body.angles)),
+            (key("mass", "Mass"), body.mass),
+            (key("centre_of_mass", "CG"), largest(&body.centre_of_mass)),
+            (key("inertia", "I"), largest(&body.moments)),
+            (key("volume", "Volume"), body.volume),
+            (key("cda", "CdA"), largest(&body.drag_areas)),
+            (
+                key("rotational_cda", "CdA"),
+                largest(&body.rotational_drag_areas),
+            ),
+            (key("ca", "Ca"), largest(&body.ca)),
+            (key("velocity", "velocity"), magnitude(&body.velocity)),
+            (
+                key("angular_velocity", "angular velocity"),
+                magnitude(&body.angular_velocity),
+            ),
+        ]);
+    }
     let f = Figures { file, values };
     // Every value as given.
     for (k, v) in &f.values {
@@ -104,6 +126,43 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
     }
     for p in 0..sc.points.len() {
         point_figures(&f, sc, p, &g_key, water.as_ref())?;
+    }
+    for b in 0..sc.bodies.len() {
+        body_figures(&f, sc, b, &g_key, water.as_ref())?;
+    }
+    Ok(())
+}
+
+/// Body b's weight and buoyancy.
+fn body_figures(
+    f: &Figures,
+    sc: &SystemScenario,
+    b: usize,
+    g_key: &str,
+    water: Option<&WaterKeys>,
+) -> Result<(), Failure> {
+    let body = &sc.bodies[b];
+    let g = magnitude(&sc.gravity);
+    let key = |k: &str, c: &str| sc.names.body(b, k, c);
+    f.need(
+        "the body's weight m g",
+        body.mass * g,
+        " N",
+        &[key("mass", "Mass"), g_key.to_string()],
+        Rule::Scale,
+    )?;
+    if let (Some(w), Some(water)) = (water, sc.water.as_ref()) {
+        f.need(
+            "the body's buoyancy rho_w g V",
+            water.density * g * body.volume,
+            " N",
+            &[
+                key("volume", "Volume"),
+                w.density.clone(),
+                g_key.to_string(),
+            ],
+            Rule::Scale,
+        )?;
     }
     Ok(())
 }

@@ -3,7 +3,7 @@
 //! case-insensitive.
 
 use super::layout::Section;
-use super::{DeckError, DeckLine, DeckPoint, Output};
+use super::{DeckBody, DeckError, DeckLine, DeckPoint, Output};
 
 /// A component of a vector, in the global frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -51,6 +51,30 @@ pub enum PointQuantity {
     Tension,
 }
 
+/// What MoorDyn outputs of a body (`Body::GetBodyOutput`): of its
+/// reference point and its rotation, about the reference point, global.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BodyQuantity {
+    /// `PX` `PY` `PZ` (m): the reference point.
+    Position(Axis),
+    /// `RX` `RY` `RZ` (deg): roll, pitch and yaw, MoorDyn's angles.
+    Rotation(Axis),
+    /// `VX` `VY` `VZ` (m/s): the reference point's velocity.
+    Velocity(Axis),
+    /// `RVX` `RVY` `RVZ` (deg/s): the angular velocity, global.
+    AngularVelocity(Axis),
+    /// `AX` `AY` `AZ` (m/s^2).
+    Acceleration(Axis),
+    /// `RAX` `RAY` `RAZ` (deg/s^2).
+    AngularAcceleration(Axis),
+    /// `FX` `FY` `FZ` (N): the net force on the body.
+    Force(Axis),
+    /// `MX` `MY` `MZ` (N m): the net moment about the reference point.
+    Moment(Axis),
+    /// `T` or `TEN` (N): the magnitude of the net force.
+    Tension,
+}
+
 /// An output channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Channel {
@@ -75,6 +99,8 @@ pub enum Channel {
         point: usize,
         quantity: PointQuantity,
     },
+    /// `B<n><q>` or `Body<n><q>`.
+    Body { body: usize, quantity: BodyQuantity },
 }
 
 /// A channel name before the lines and points are known.
@@ -116,15 +142,16 @@ pub(crate) fn words<'a>(s: &Section<'a>) -> Result<Vec<RawOutput<'a>>, DeckError
     Ok(out)
 }
 
-/// The channels, checked against the deck's lines and points.
+/// The channels, checked against the deck's lines, points and bodies.
 pub(crate) fn resolve(
     raw: Vec<RawOutput>,
     lines: &[DeckLine],
     points: &[DeckPoint],
+    bodies: &[DeckBody],
 ) -> Result<Vec<Output>, DeckError> {
     raw.into_iter()
         .map(|r| {
-            let channel = channel(r.name, lines, points).map_err(|m| {
+            let channel = channel(r.name, lines, points, bodies.len()).map_err(|m| {
                 DeckError::at(r.line, format!("output channel \"{}\": {m}", r.name))
             })?;
             Ok(Output {
@@ -148,13 +175,20 @@ fn head(upper: &str) -> (&str, &str, &str) {
     (&upper[..a], &upper[a..b], &upper[b..])
 }
 
-fn channel(name: &str, lines: &[DeckLine], points: &[DeckPoint]) -> Result<Channel, String> {
+fn channel(
+    name: &str,
+    lines: &[DeckLine],
+    points: &[DeckPoint],
+    bodies: usize,
+) -> Result<Channel, String> {
     if !name.chars().all(|c| c.is_ascii_alphanumeric()) {
         return Err("a channel name is made of letters and digits".into());
     }
     let upper = name.to_ascii_uppercase();
     let (kind, id, rest) = head(&upper);
-    let known = "known: FairTen<n>, AnchTen<n>, L<n>N<k><q> (Line...), P<n><q> (Point..., Con...)";
+    let known =
+        "known: FairTen<n>, AnchTen<n>, L<n>N<k><q> (Line...), P<n><q> (Point..., Con...), \
+                 B<n><q> (Body...)";
     if id.is_empty() {
         return Err(format!("no object number; {known}"));
     }
@@ -183,7 +217,15 @@ fn channel(name: &str, lines: &[DeckLine], points: &[DeckPoint]) -> Result<Chann
             })
         }
         "R" | "ROD" => Err("rods are not supported".into()),
-        "B" | "BODY" => Err("bodies are not supported".into()),
+        "B" | "BODY" => {
+            if id == 0 || id > bodies {
+                return Err(format!("there is no body {id} ({bodies} bodies)"));
+            }
+            Ok(Channel::Body {
+                body: id,
+                quantity: body_quantity(rest)?,
+            })
+        }
         _ => Err(format!("unknown channel; {known}")),
     }
 }
@@ -263,6 +305,35 @@ fn point_quantity(q: &str) -> Result<PointQuantity, String> {
         Q::Other => {
             return Err(format!(
                 "MoorDyn outputs no \"{q}\" at points (only PX PY PZ VX VY VZ AX AY AZ FX FY FZ T)"
+            ))
+        }
+    })
+}
+
+fn body_quantity(q: &str) -> Result<BodyQuantity, String> {
+    let b = q.as_bytes();
+    let axis = |c: Option<&u8>| match c {
+        Some(b'X') => Some(Axis::X),
+        Some(b'Y') => Some(Axis::Y),
+        Some(b'Z') => Some(Axis::Z),
+        _ => None,
+    };
+    let last = axis(b.last());
+    Ok(match (&q[..q.len().saturating_sub(1)], last) {
+        ("P", Some(a)) => BodyQuantity::Position(a),
+        ("R", Some(a)) => BodyQuantity::Rotation(a),
+        ("V", Some(a)) => BodyQuantity::Velocity(a),
+        ("RV", Some(a)) => BodyQuantity::AngularVelocity(a),
+        ("A", Some(a)) => BodyQuantity::Acceleration(a),
+        ("RA", Some(a)) => BodyQuantity::AngularAcceleration(a),
+        ("F", Some(a)) => BodyQuantity::Force(a),
+        ("M", Some(a)) => BodyQuantity::Moment(a),
+        _ if q == "T" || q == "TEN" => BodyQuantity::Tension,
+        _ if q.is_empty() => return Err("no quantity (e.g. PX, RY, FZ)".into()),
+        _ => {
+            return Err(format!(
+                "MoorDyn outputs no \"{q}\" of a body (only PX PY PZ RX RY RZ VX VY VZ RVX RVY \
+                 RVZ AX AY AZ RAX RAY RAZ FX FY FZ MX MY MZ T)"
             ))
         }
     })

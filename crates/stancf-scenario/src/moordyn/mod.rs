@@ -1,9 +1,10 @@
 //! MoorDyn v2 input files ("decks") read into a neutral, validated
 //! [`Deck`]. Only what stancf can represent is accepted: line types with
-//! constant coefficients, fixed, free and coupled points, lines between
-//! points, the options of [`SupportedOption`] (plus MoorDyn's initial
-//! condition, logging and output switches, accepted and ignored) and the
-//! output channels of [`Channel`]. Everything else (rods, bodies,
+//! constant coefficients, fixed and free bodies, fixed, free and coupled
+//! points and points on bodies, lines between points, the options of
+//! [`SupportedOption`] (plus MoorDyn's initial condition, logging and
+//! output switches, accepted and ignored) and the output channels of
+//! [`Channel`]. Everything else (rods, coupled and pinned bodies,
 //! failures, nonlinear or viscoelastic stiffness, VIV, wave files,
 //! MoorDyn-F water kinematics, bathymetry files...) is refused by name,
 //! naming the line of the file.
@@ -28,6 +29,7 @@
 //!   as MoorDyn ignores them, except in `LINE TYPES`, where MoorDyn
 //!   refuses rows of other than 10, 11 or 13 words.
 
+mod bodies;
 mod channels;
 mod layout;
 mod options;
@@ -38,7 +40,8 @@ mod tests;
 use std::fmt;
 use std::path::Path;
 
-pub use channels::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
+pub use bodies::{BodyAttachment, DeckBody};
+pub use channels::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
 pub use options::{OptionKind, OptionValue, SupportedOption};
 
 /// A MoorDyn v2 input file, read and checked.
@@ -49,6 +52,8 @@ pub struct Deck {
     pub title: String,
     /// `LINE TYPES` (or `LINE DICTIONARY`), in file order.
     pub line_types: Vec<LineType>,
+    /// `BODIES` (or `BODY LIST`, `BODY PROPERTIES`); the n-th has id n.
+    pub bodies: Vec<DeckBody>,
     /// `POINTS` (or `POINT LIST`, `POINT PROPERTIES`, `CONNECTION
     /// PROPERTIES`, `NODE PROPERTIES`); the n-th has id n.
     pub points: Vec<DeckPoint>,
@@ -113,6 +118,9 @@ pub enum Attachment {
     /// `Coupled`, `Cpld`, `Vessel`, `Ves` or `Fairlead`: moved by the
     /// caller (the vessel).
     Coupled,
+    /// `Body<n>`: fixed on body n (its id, from 1), `X Y Z` in the body's
+    /// axes from its reference point.
+    Body(usize),
 }
 
 /// A row of `POINTS`: `ID Attachment X Y Z Mass Volume CdA Ca` (a
@@ -126,7 +134,8 @@ pub struct DeckPoint {
     pub id: usize,
     /// `Attachment` (MoorDyn also calls the column `Type`).
     pub attachment: Attachment,
-    /// `X Y Z` (m), global frame, z up from the still water line.
+    /// `X Y Z` (m), global frame, z up from the still water line; on a
+    /// body, in the body's axes from its reference point.
     pub position: [f64; 3],
     /// `Mass` (kg), a clump weight.
     pub mass: f64,
@@ -259,6 +268,7 @@ impl std::error::Error for DeckError {}
 pub fn parse(text: &str) -> Result<Deck, DeckError> {
     let layout = layout::split(text)?;
     let mut line_types = Vec::new();
+    let mut bodies = Vec::new();
     let mut points = Vec::new();
     let mut raw_lines = Vec::new();
     let mut options = Vec::new();
@@ -267,6 +277,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         use layout::SectionKind as K;
         match section.kind {
             K::LineTypes => line_types = sections::line_types(section)?,
+            K::Bodies => bodies = bodies::bodies(section)?,
             K::Points => points = sections::points(section)?,
             K::Lines => raw_lines = sections::lines(section)?,
             K::Options => options = options::read(section)?,
@@ -274,11 +285,13 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
             other => sections::refuse_rows(section, other)?,
         }
     }
+    bodies::check_body_points(&points, &bodies)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
-    let outputs = channels::resolve(raw_outputs, &lines, &points)?;
+    let outputs = channels::resolve(raw_outputs, &lines, &points, &bodies)?;
     Ok(Deck {
         title: layout.title,
         line_types,
+        bodies,
         points,
         lines,
         options,

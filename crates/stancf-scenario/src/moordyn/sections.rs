@@ -1,5 +1,5 @@
-//! The table sections: `LINE TYPES`, `POINTS`, `LINES`, and the refusal
-//! of the sections stancf cannot represent.
+//! The table sections: `LINE TYPES`, `POINTS`, `LINES` (`BODIES` is
+//! `bodies.rs`), and the refusal of the sections stancf cannot represent.
 
 use super::layout::{Row, Section, SectionKind};
 use super::{Attachment, DeckError, DeckLine, DeckPoint, LineType};
@@ -21,7 +21,12 @@ pub(crate) fn number(row: &Row, col: usize, what: &str) -> Result<f64, DeckError
 }
 
 /// A number that must be ≥ 0 (`strict`: > 0).
-fn non_negative(row: &Row, col: usize, what: &str, strict: bool) -> Result<f64, DeckError> {
+pub(crate) fn non_negative(
+    row: &Row,
+    col: usize,
+    what: &str,
+    strict: bool,
+) -> Result<f64, DeckError> {
     let v = number(row, col, what)?;
     if v < 0.0 || (strict && v == 0.0) {
         let bound = if strict {
@@ -64,7 +69,7 @@ fn segments(row: &Row, what: &str) -> Result<usize, DeckError> {
 }
 
 /// At least `min` words, or an error naming the columns expected.
-fn columns(row: &Row, min: usize, section: &str, names: &str) -> Result<(), DeckError> {
+pub(crate) fn columns(row: &Row, min: usize, section: &str, names: &str) -> Result<(), DeckError> {
     if row.words.len() < min {
         return Err(DeckError::at(
             row.line,
@@ -78,7 +83,12 @@ fn columns(row: &Row, min: usize, section: &str, names: &str) -> Result<(), Deck
 }
 
 /// The ids of a table must be 1, 2, 3... in order, as MoorDyn requires.
-fn sequential(row: &Row, id: usize, expected: usize, what: &str) -> Result<(), DeckError> {
+pub(crate) fn sequential(
+    row: &Row,
+    id: usize,
+    expected: usize,
+    what: &str,
+) -> Result<(), DeckError> {
     if id != expected {
         let detail = if id < expected {
             format!("{what} {id} is defined twice or out of order")
@@ -254,9 +264,7 @@ fn attachment(row: &Row, id: usize) -> Result<Attachment, DeckError> {
         "ANCHOR" | "FIXED" | "FIX" if !numbered => Attachment::Fixed,
         "POINT" | "CONNECT" | "CON" | "FREE" if !numbered => Attachment::Free,
         "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" if !numbered => Attachment::Coupled,
-        _ if letters.starts_with("BODY") => {
-            return Err(refused(row, id, w, "bodies are not supported"))
-        }
+        _ if upper.starts_with("BODY") => return body_attachment(row, id, w),
         "TURBINE" | "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" => {
             return Err(refused(
                 row,
@@ -273,12 +281,49 @@ fn attachment(row: &Row, id: usize) -> Result<Attachment, DeckError> {
                 row.line,
                 format!(
                     "point {id} has the unknown attachment \"{w}\"; known: Fixed (Anchor, Fix), \
-                     Free (Point, Connect, Con), Coupled (Vessel, Ves, Fairlead, Cpld)"
+                     Free (Point, Connect, Con), Coupled (Vessel, Ves, Fairlead, Cpld), \
+                     Body<n> (on body n)"
                 ),
             ))
         }
     };
     Ok(kind)
+}
+
+/// `Body<n>` (any case, as MoorDyn's `decomposeString` reads it): a
+/// point on body n. Words after the number (`Body1Pinned`), which
+/// MoorDyn ignores for a point, are refused.
+fn body_attachment(row: &Row, id: usize, w: &str) -> Result<Attachment, DeckError> {
+    let rest = &w[4..];
+    let digits = rest
+        .find(|c: char| !c.is_ascii_digit())
+        .unwrap_or(rest.len());
+    if digits == 0 {
+        return Err(refused(
+            row,
+            id,
+            w,
+            "a point on a body names the body's number, e.g. Body1",
+        ));
+    }
+    if digits < rest.len() {
+        return Err(refused(
+            row,
+            id,
+            w,
+            &format!(
+                "a point on a body is fixed to it; MoorDyn reads this as Body{} and ignores \"{}\": \
+                 write Body{}",
+                &rest[..digits],
+                &rest[digits..],
+                &rest[..digits]
+            ),
+        ));
+    }
+    match rest.parse::<usize>() {
+        Ok(n) => Ok(Attachment::Body(n)),
+        Err(_) => Err(refused(row, id, w, "the body number is too large")),
+    }
 }
 
 fn refused(row: &Row, id: usize, word: &str, why: &str) -> DeckError {
@@ -434,7 +479,6 @@ pub(crate) fn refuse_rows(s: &Section, kind: SectionKind) -> Result<(), DeckErro
     };
     let why = match kind {
         SectionKind::RodTypes | SectionKind::Rods => "rods are not supported",
-        SectionKind::Bodies => "bodies are not supported",
         SectionKind::Failure => "line failures are not supported",
         SectionKind::Control => "line length control is not supported",
         SectionKind::ExternalLoads => "external loads are not supported",

@@ -357,16 +357,22 @@ impl Analysis {
 /// `[analysis]` of a system: the single cable's keys and `initial`
 /// ("reference" or "static"; `default` when missing). Lines are elastic
 /// in the engineering strain (T = EA (|r'| - 1)), as MoorDyn's and the
-/// elastic catenary's are, unless `axial_strain` says otherwise.
+/// elastic catenary's are, unless `axial_strain` says otherwise. A
+/// system with a free body (`free_bodies`) is stepped by the Galerkin
+/// scheme, its default there; "p2" is refused (docs/method.md §15.7).
 pub(super) fn analysis_part(
     ctx: &Ctx,
-    raw: Option<RawAnalysis>,
+    mut raw: Option<RawAnalysis>,
     default: InitialShape,
+    free_bodies: bool,
 ) -> Result<(Analysis, Measures, InitialShape, Vec<String>), ScenarioError> {
     let others = Others {
         initial_velocity: false,
         constraints: true,
     };
+    if free_bodies {
+        galerkin_for_bodies(ctx, &mut raw)?;
+    }
     let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
     let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
     let halvings_given = raw.as_ref().is_some_and(|a| a.step_halvings.is_some());
@@ -393,4 +399,30 @@ pub(super) fn analysis_part(
         _ => InitialShape::Reference,
     };
     Ok((analysis, measures, initial, notes))
+}
+
+/// A system with a free body is stepped by the Galerkin scheme: the
+/// default `analysis.time_scheme` there; "p2" is refused, and so are the
+/// time layers the Galerkin step does not take, naming the keys.
+fn galerkin_for_bodies(ctx: &Ctx, raw: &mut Option<RawAnalysis>) -> Result<(), ScenarioError> {
+    let ra = raw.get_or_insert_with(RawAnalysis::default);
+    match ra.time_scheme.as_deref() {
+        Some("p2") => Err(ctx.err(
+            "analysis.time_scheme",
+            "\"p2\": a system with a free body is stepped by the Galerkin scheme (the P2 step \
+             of bodies in a system is not built); leave time_scheme out, or give \"galerkin\"",
+        )),
+        Some(_) => Ok(()),
+        None => {
+            if ra.time_layers.is_some_and(|n| n > 1) {
+                return Err(ctx.err(
+                    "analysis.time_layers",
+                    "a system with a free body is stepped by the Galerkin scheme, which takes \
+                     one layer per step",
+                ));
+            }
+            ra.time_scheme = Some("galerkin".into());
+            Ok(())
+        }
+    }
 }

@@ -10,6 +10,8 @@
 //! they share are in `context`, the words of the messages in `messages`.
 
 mod analysis;
+mod bodies;
+mod body_water;
 mod cable;
 mod constraints;
 mod context;
@@ -31,6 +33,7 @@ mod water;
 
 pub use analysis::InitialShape;
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS, MAX_STEPS};
+pub use bodies::{moments_of_a_body, uniform_current, BodyType, SystemBody};
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
@@ -97,7 +100,9 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
-        return moordyn::deck_scenario(&deck, file, path, title, None).map(Input::System);
+        let sc = moordyn::deck_scenario(&deck, file, path, title, None)?;
+        body_water::check_body_water(file, &sc)?;
+        return Ok(Input::System(sc));
     }
     let ctx = Ctx { file };
     let raw = raw_scenario(text, file)?;

@@ -1,6 +1,7 @@
 //! A MoorDyn v2 deck ([`crate::moordyn::Deck`]) as a system scenario:
-//! LINE TYPES become line types, POINTS points (Fixed, Free with their
-//! mass and buoyant volume, Coupled at rest), LINES lines of NumSegs
+//! LINE TYPES become line types, BODIES bodies (fixed, or free with their
+//! mass, inertia and water), POINTS points (Fixed, Free with their mass
+//! and buoyant volume, Coupled at rest, on a body), LINES lines of NumSegs
 //! SAC-2 elements, OPTIONS gravity and water, OUTPUTS the channels of
 //! channels.csv. MoorDyn's frame is ours: z up, the still water surface
 //! at z = 0, the seabed at z = -WtrDpth.
@@ -14,6 +15,7 @@
 //! FrictionCoefficient; §12.2); see [`super::moordyn_water`].
 
 use super::analysis::{analysis_part, InitialShape};
+use super::bodies::{moments_of_a_body, BodyType, SystemBody};
 use super::context::Ctx;
 use super::moordyn_water::{deck_water, deck_water_keys};
 use super::raw::RawAnalysis;
@@ -23,7 +25,8 @@ use super::system_parts::{
 use super::water::WaterKeys;
 use super::ScenarioError;
 use crate::moordyn::{
-    self, Attachment, Channel, Deck, LineQuantity, PointQuantity, SupportedOption,
+    self, Attachment, BodyAttachment, BodyQuantity, Channel, Deck, DeckBody, LineQuantity,
+    PointQuantity, SupportedOption,
 };
 use stancf::motion::CoupledMotion;
 use stancf::ElementType;
@@ -60,15 +63,23 @@ pub(super) fn deck_scenario(
         kind: Some("static".into()),
         ..RawAnalysis::default()
     };
-    let (mut analysis, measures, initial, notes) =
-        analysis_part(&ctx, Some(raw), InitialShape::Static)?;
+    let bodies = deck
+        .bodies
+        .iter()
+        .map(|b| deck_body(b, file))
+        .collect::<Result<Vec<_>, _>>()?;
+    let free_bodies = bodies.iter().any(SystemBody::is_free);
+    let (mut analysis, measures, initial, mut notes) =
+        analysis_part(&ctx, Some(raw), InitialShape::Static, free_bodies)?;
+    notes.extend(deck.bodies.iter().filter_map(free_word_note));
     // A deck alone is static; its dtM is the step of a coupled run of it
     // (checked with the other values, crate::input_scales).
     analysis.time_step = deck.option(SupportedOption::TimeStep).unwrap_or(0.0);
     Ok(SystemScenario {
         title,
         line_types: deck.line_types.iter().map(deck_line_type).collect(),
-        points: deck.points.iter().map(deck_point).collect(),
+        points: deck.points.iter().map(|p| deck_point(p, &bodies)).collect(),
+        bodies,
         lines: deck.lines.iter().map(deck_line).collect(),
         gravity: [0.0, 0.0, -g],
         analysis,
@@ -126,18 +137,28 @@ fn deck_line_type(t: &crate::moordyn::LineType) -> LineType {
 }
 
 /// A POINTS row as a point: mass, volume, CdA and Ca act on free points
-/// only (a fixed or coupled point's motion is given).
-fn deck_point(p: &crate::moordyn::DeckPoint) -> SystemPoint {
+/// only (a fixed or coupled point's motion is given; a point on a body
+/// has none, checked on reading). A point on a body (`bodies`: the
+/// deck's) is where the body's pose puts its X, Y, Z.
+fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoint {
     let free = p.attachment == Attachment::Free;
     let if_free = |v: f64| if free { v } else { 0.0 };
+    let (kind, position) = match p.attachment {
+        Attachment::Fixed => (PointType::Fixed, p.position),
+        Attachment::Free => (PointType::Free, p.position),
+        Attachment::Coupled => (PointType::Coupled, p.position),
+        Attachment::Body(n) => {
+            let kind = PointType::Body {
+                body: n - 1,
+                local: p.position,
+            };
+            (kind, bodies[n - 1].point(p.position))
+        }
+    };
     SystemPoint {
         id: p.id as i64,
-        kind: match p.attachment {
-            Attachment::Fixed => PointType::Fixed,
-            Attachment::Free => PointType::Free,
-            Attachment::Coupled => PointType::Coupled,
-        },
-        position: p.position,
+        kind,
+        position,
         mass: if_free(p.mass),
         force: [0.0; 3],
         volume: if_free(p.volume),
@@ -146,6 +167,80 @@ fn deck_point(p: &crate::moordyn::DeckPoint) -> SystemPoint {
         motion: CoupledMotion::NONE,
         motion_file: None,
     }
+}
+
+/// A BODIES row as a body. A fixed body's mass, inertia and water are
+/// zero, as MoorDyn's `Body::setup` zeroes them. A free body needs what
+/// stancf's rigid body has (docs/method.md §15.2): a positive mass and
+/// moments of a body with extent in all three directions; MoorDyn also
+/// takes a zero mass or zero moments, its body's mass matrix holding the
+/// masses of the line ends and rods attached to it
+/// (docs/moordyn-bodies-rods.md §2.3): refused naming the deck's line.
+fn deck_body(b: &DeckBody, file: &str) -> Result<SystemBody, ScenarioError> {
+    let fixed = SystemBody {
+        id: b.id as i64,
+        kind: BodyType::Fixed,
+        position: b.position,
+        angles: b.angles,
+        mass: 0.0,
+        centre_of_mass: [0.0; 3],
+        moments: [0.0; 3],
+        volume: 0.0,
+        drag_areas: [0.0; 3],
+        rotational_drag_areas: [0.0; 3],
+        ca: [0.0; 3],
+        velocity: [0.0; 3],
+        angular_velocity: [0.0; 3],
+    };
+    if b.attachment == BodyAttachment::Fixed {
+        return Ok(fixed);
+    }
+    let moordyn_differs = "MoorDyn accepts it, its body's mass matrix also holding the masses \
+                           of the line ends and rods attached to the body; stancf's body \
+                           carries its own mass and inertia (the lines' ends are the lines')";
+    if b.mass <= 0.0 {
+        return Err(ScenarioError(format!(
+            "{file}: line {}: Mass: free body {} has mass {} kg; a free body needs a positive \
+             mass ({moordyn_differs})",
+            b.line, b.id, b.mass
+        )));
+    }
+    if !moments_of_a_body(b.moments) {
+        return Err(ScenarioError(format!(
+            "{file}: line {}: I: free body {} has the moments of inertia {:?} kg m^2; a free \
+             body needs those of a body with extent in all three directions, each less than \
+             the sum of the other two ({moordyn_differs})",
+            b.line, b.id, b.moments
+        )));
+    }
+    Ok(SystemBody {
+        kind: BodyType::Free,
+        mass: b.mass,
+        centre_of_mass: b.centre_of_mass,
+        moments: b.moments,
+        volume: b.volume,
+        drag_areas: b.drag_areas,
+        rotational_drag_areas: b.rotational_drag_areas,
+        ca: b.ca,
+        ..fixed
+    })
+}
+
+/// A note for a free body whose attachment word is neither `Free` nor
+/// `Body`: MoorDyn-C takes every word it does not know as free, and so
+/// does stancf, saying so.
+fn free_word_note(b: &DeckBody) -> Option<String> {
+    let upper = b.attachment_word.to_ascii_uppercase();
+    let plain = ["FREE", "BODY"].iter().any(|w| upper.starts_with(w));
+    (b.attachment == BodyAttachment::Free && !plain).then(|| {
+        format!(
+            "line {}: body {} is attached to \"{}\", which MoorDyn-C (and stancf) take as a \
+             free body",
+            b.line,
+            b.id,
+            crate::echo::clip(&b.attachment_word, 60)
+        )
+    })
 }
 
 /// A LINES row as a line of SAC-2 elements, one per segment, pinned at
@@ -187,8 +282,9 @@ fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, Scenario
 /// (MoorDyn's `Fnet`), line node positions and velocities.
 fn not_computed(c: &Channel) -> Option<&'static str> {
     const NOT: &str = "stancf does not compute this value in this version (it writes line end \
-                       tensions, point positions, velocities and net forces, and line node \
-                       positions and velocities)";
+                       tensions, point positions, velocities and net forces, line node \
+                       positions and velocities, and body poses, velocities, net forces and \
+                       moments)";
     match c {
         Channel::FairleadTension { .. }
         | Channel::AnchorTension { .. }
@@ -201,5 +297,10 @@ fn not_computed(c: &Channel) -> Option<&'static str> {
         Channel::Point { quantity, .. } => {
             matches!(quantity, PointQuantity::Acceleration(_)).then_some(NOT)
         }
+        Channel::Body { quantity, .. } => matches!(
+            quantity,
+            BodyQuantity::Acceleration(_) | BodyQuantity::AngularAcceleration(_)
+        )
+        .then_some(NOT),
     }
 }

@@ -21,6 +21,7 @@ struct DeckNames {
     /// messages are about (a deck run alone).
     file: Option<String>,
     line_types: Vec<usize>,
+    bodies: Vec<usize>,
     points: Vec<usize>,
     lines: Vec<usize>,
     options: Vec<(SupportedOption, String, usize)>,
@@ -36,6 +37,7 @@ impl Names {
             deck: Some(Box::new(DeckNames {
                 file,
                 line_types: deck.line_types.iter().map(|t| t.line).collect(),
+                bodies: deck.bodies.iter().map(|b| b.line).collect(),
                 points: deck.points.iter().map(|p| p.line).collect(),
                 lines: deck.lines.iter().map(|l| l.line).collect(),
                 options: deck
@@ -70,6 +72,14 @@ impl Names {
         match &self.deck {
             Some(d) => d.at(d.line_types[i], column),
             None => format!("line_types[{i}].{key}"),
+        }
+    }
+
+    /// `key` of body i (`bodies[i].<key>`), or its `column` in the deck.
+    pub fn body(&self, i: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.bodies[i], column),
+            None => format!("bodies[{i}].{key}"),
         }
     }
 

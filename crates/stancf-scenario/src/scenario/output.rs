@@ -7,9 +7,10 @@ use super::raw::RawOutput;
 use super::ScenarioError;
 
 /// The result tables of a system run `files` may name (docs/interface.md,
-/// "Systems"): the last three are written for every line, in
-/// `lines/<id>/`. summary.json and scenario.toml are always written.
-pub const SYSTEM_FILES: [&str; 7] = [
+/// "Systems"): nodes.csv, stress.csv and node_loads.csv are written for
+/// every line, in `lines/<id>/`; bodies.csv where the system has bodies.
+/// summary.json and scenario.toml are always written.
+pub const SYSTEM_FILES: [&str; 8] = [
     "points.csv",
     "tensions.csv",
     "history.csv",
@@ -17,6 +18,7 @@ pub const SYSTEM_FILES: [&str; 7] = [
     "nodes.csv",
     "stress.csv",
     "node_loads.csv",
+    "bodies.csv",
 ];
 
 /// Which of a system's result tables a run writes (all by default).
@@ -144,6 +146,23 @@ pub(super) fn channels_to_write(
     Err(ctx.err(
         "output.files",
         format!("\"channels.csv\" would stay empty: {why}"),
+    ))
+}
+
+/// `output.files` naming bodies.csv for a system without bodies (it
+/// would stay empty).
+pub(super) fn bodies_to_write(
+    ctx: &Ctx,
+    files: &OutputFiles,
+    bodies: usize,
+) -> Result<(), ScenarioError> {
+    if files.chosen.is_none() || !files.writes("bodies.csv") || bodies > 0 {
+        return Ok(());
+    }
+    Err(ctx.err(
+        "output.files",
+        "\"bodies.csv\" would stay empty: it holds the system's rigid bodies, and this system \
+         has none",
     ))
 }
 

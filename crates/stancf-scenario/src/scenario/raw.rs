@@ -34,6 +34,9 @@ pub(super) struct RawScenario {
     pub(super) line_types: Vec<RawLineType>,
     #[serde(default)]
     pub(super) points: Vec<RawPoint>,
+    /// Rigid bodies (docs/interface.md, "Rigid bodies").
+    #[serde(default)]
+    pub(super) bodies: Vec<RawBody>,
     #[serde(default)]
     pub(super) lines: Vec<RawLine>,
     #[serde(default)]
@@ -52,6 +55,7 @@ impl RawScenario {
         self.system.is_some()
             || !self.line_types.is_empty()
             || !self.points.is_empty()
+            || !self.bodies.is_empty()
             || !self.lines.is_empty()
             || !self.motions.is_empty()
             || !self.mesh.is_empty()
@@ -163,6 +167,47 @@ pub(super) struct RawPoint {
     pub(super) volume: Option<f64>,
     pub(super) cda: Option<f64>,
     pub(super) ca: Option<f64>,
+    /// The id of the body a point of type "body" is on.
+    pub(super) body: Option<i64>,
+}
+
+/// One `[[bodies]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawBody {
+    pub(super) id: Option<i64>,
+    #[serde(rename = "type")]
+    pub(super) kind: Option<String>,
+    pub(super) position: Option<Vector>,
+    pub(super) angles: Option<Vector>,
+    pub(super) mass: Option<f64>,
+    pub(super) centre_of_mass: Option<Vector>,
+    pub(super) inertia: Option<Vector>,
+    pub(super) volume: Option<f64>,
+    pub(super) cda: Option<Vector>,
+    pub(super) rotational_cda: Option<Vector>,
+    pub(super) ca: Option<Vector>,
+    pub(super) velocity: Option<Vector>,
+    pub(super) angular_velocity: Option<Vector>,
+}
+
+impl RawBody {
+    /// Whether each key only a free body takes is given, in the order
+    /// mass, centre_of_mass, inertia, volume, cda, rotational_cda, ca,
+    /// velocity, angular_velocity.
+    pub(super) fn free_keys(&self) -> [bool; 9] {
+        [
+            self.mass.is_some(),
+            self.centre_of_mass.is_some(),
+            self.inertia.is_some(),
+            self.volume.is_some(),
+            self.cda.is_some(),
+            self.rotational_cda.is_some(),
+            self.ca.is_some(),
+            self.velocity.is_some(),
+            self.angular_velocity.is_some(),
+        ]
+    }
 }
 
 /// One `[[lines]]` entry.

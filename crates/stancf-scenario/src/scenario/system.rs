@@ -1,9 +1,10 @@
 //! A system of lines joined at points (docs/interface.md, "Systems"):
-//! `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` and
-//! `[[motions]]`, validated into a [`SystemScenario`] that builds the
+//! `[system]`, `[[line_types]]`, `[[bodies]]`, `[[points]]`, `[[lines]]`
+//! and `[[motions]]`, validated into a [`SystemScenario`] that builds the
 //! library's [`stancf::system::System`].
 
 use super::analysis::{analysis_part, InitialShape};
+use super::bodies::SystemBody;
 use super::context::Ctx;
 use super::motions::motions;
 use super::raw::{RawLine, RawLineType, RawPoint, RawScenario};
@@ -42,6 +43,7 @@ pub(super) fn system_scenario(
         if let Some(key) = [
             (rs.gravity.is_some(), "system.gravity"),
             (!raw.line_types.is_empty(), "line_types"),
+            (!raw.bodies.is_empty(), "bodies"),
             (!raw.points.is_empty(), "points"),
             (!raw.lines.is_empty(), "lines"),
         ]
@@ -68,11 +70,13 @@ pub(super) fn system_scenario(
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let water = scenario_water(ctx, raw.water, gravity)?;
     let line_types = line_types(ctx, &raw.line_types)?;
-    let mut points = points(ctx, &raw.points)?;
-    let lines = lines(ctx, &raw.lines, &line_types, &points)?;
+    let bodies = super::bodies::bodies(ctx, &raw.bodies)?;
+    let mut points = points(ctx, &raw.points, &bodies)?;
+    let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
+    let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (analysis, measures, initial, mut notes) =
-        analysis_part(ctx, raw.analysis, InitialShape::Reference)?;
-    check_clamp_route(ctx, &lines, &analysis)?;
+        analysis_part(ctx, raw.analysis, InitialShape::Reference, free_bodies)?;
+    check_clamp_route(ctx, &lines, &analysis, free_bodies)?;
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     for (i, t) in line_types.iter().enumerate() {
@@ -90,10 +94,12 @@ pub(super) fn system_scenario(
     let output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     let output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &output_files, false, 0)?;
+    super::output::bodies_to_write(ctx, &output_files, bodies.len())?;
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let mut sc = SystemScenario {
         title,
         line_types,
+        bodies,
         points,
         lines,
         gravity,
@@ -110,6 +116,8 @@ pub(super) fn system_scenario(
     };
     sc.notes.extend(static_waves_note(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    super::body_water::refuse_water_in_air(ctx.file, &sc)?;
+    super::body_water::check_body_water(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -135,8 +143,12 @@ fn deck_system(
     )?;
     sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()));
     super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
-    let (analysis, measures, initial, notes) =
-        analysis_part(ctx, raw.analysis, InitialShape::Static)?;
+    let (analysis, measures, initial, notes) = analysis_part(
+        ctx,
+        raw.analysis,
+        InitialShape::Static,
+        sc.has_free_bodies(),
+    )?;
     let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
     sc.analysis = analysis;
@@ -149,6 +161,8 @@ fn deck_system(
     sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
     sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
+    super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
+    super::body_water::check_body_water(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -203,10 +217,16 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
     Ok(out)
 }
 
-/// `[[points]]`: `id` (required, unique), `type` ("fixed", "free" or
-/// "coupled", required), `position` (required); a free point's `mass`
-/// (>= 0, default 0) and `force` (default 0).
-fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError> {
+/// `[[points]]`: `id` (required, unique), `type` ("fixed", "free",
+/// "coupled" or "body", required), `position` (required; on a body, in
+/// the body's axes from its reference point); a free point's `mass` (>= 0,
+/// default 0) and `force` (default 0); a body point's `body` (a body's
+/// id, required).
+fn points(
+    ctx: &Ctx,
+    raw: &[RawPoint],
+    bodies: &[SystemBody],
+) -> Result<Vec<SystemPoint>, ScenarioError> {
     let mut out: Vec<SystemPoint> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
         let key = |k: &str| format!("points[{i}].{k}");
@@ -214,20 +234,35 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
         if out.iter().any(|p| p.id == id) {
             return Err(ctx.err(&key("id"), format!("point {id} is defined twice")));
         }
-        let kind = match ctx.choice(
+        let word = ctx.choice(
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["fixed", "free", "coupled"],
-        )? {
-            "fixed" => PointType::Fixed,
-            "free" => PointType::Free,
-            _ => PointType::Coupled,
-        };
+            &["fixed", "free", "coupled", "body"],
+        )?;
         let position = ctx.vector(
             &key("position"),
             &ctx.required(&key("position"), r.position.clone())?,
         )?;
+        let (kind, position) = match word {
+            "fixed" => (PointType::Fixed, position),
+            "free" => (PointType::Free, position),
+            "coupled" => (PointType::Coupled, position),
+            _ => {
+                let body = body_of(ctx, i, r.body, bodies)?;
+                let kind = PointType::Body {
+                    body,
+                    local: position,
+                };
+                (kind, bodies[body].point(position))
+            }
+        };
+        if word != "body" && r.body.is_some() {
+            return Err(ctx.err(
+                &key("body"),
+                format!("names the body of a point of type \"body\"; this point is \"{word}\""),
+            ));
+        }
         let given = [
             ("mass", r.mass.is_some()),
             ("force", r.force.is_some()),
@@ -236,11 +271,14 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
             ("ca", r.ca.is_some()),
         ];
         if let (false, Some((k, _))) = (kind == PointType::Free, given.iter().find(|g| g.1)) {
-            return Err(ctx.err(
-                &key(k),
+            let why = if word == "body" {
+                "a point on a body with its own mass, force, volume or drag is not built yet \
+                 (give them to the body)"
+            } else {
                 "only a free point carries a mass, a force or water loads (a fixed or coupled \
-                 point's position is given)",
-            ));
+                 point's position is given)"
+            };
+            return Err(ctx.err(&key(k), why));
         }
         let non_negative = |name: &str, v: Option<f64>| match v {
             Some(v) => ctx.non_negative(&key(name), v),
@@ -265,6 +303,27 @@ fn points(ctx: &Ctx, raw: &[RawPoint]) -> Result<Vec<SystemPoint>, ScenarioError
     Ok(out)
 }
 
+/// The body (its index) a point of type "body" is on: `body`, a body's
+/// id, required.
+fn body_of(
+    ctx: &Ctx,
+    i: usize,
+    id: Option<i64>,
+    bodies: &[SystemBody],
+) -> Result<usize, ScenarioError> {
+    let key = format!("points[{i}].body");
+    let id = ctx.required(&key, id)?;
+    bodies.iter().position(|b| b.id == id).ok_or_else(|| {
+        let known: Vec<String> = bodies.iter().map(|b| b.id.to_string()).collect();
+        let known = if known.is_empty() {
+            "there are no [[bodies]]".to_string()
+        } else {
+            format!("known: {}", known.join(", "))
+        };
+        ctx.err(&key, format!("body {id} is not defined ({known})"))
+    })
+}
+
 /// `[[lines]]` `clamp_a` / `clamp_b` of line i: a direction (a vector,
 /// not zero) for an end attached to a fixed or coupled point.
 fn clamp(
@@ -273,7 +332,7 @@ fn clamp(
     name: &str,
     raw: Option<&[f64]>,
     end: Option<usize>,
-    points: &[SystemPoint],
+    (points, bodies): (&[SystemPoint], &[SystemBody]),
 ) -> Result<Option<[f64; 3]>, ScenarioError> {
     let Some(raw) = raw else { return Ok(None) };
     let key = format!("lines[{i}].{name}");
@@ -295,6 +354,18 @@ fn clamp(
                 p.id
             ),
         )),
+        Some(SystemPoint {
+            kind: PointType::Body { body, .. },
+            id,
+            ..
+        }) if bodies[*body].is_free() => Err(ctx.err(
+            &key,
+            format!(
+                "end {end_name} is at point {id} on free body {}: a clamp on a free body is \
+                 not built (a clamp needs a fixed or coupled point, or a point on a fixed body)",
+                bodies[*body].id
+            ),
+        )),
         Some(_) => Ok(Some(d)),
     }
 }
@@ -306,6 +377,7 @@ fn check_clamp_route(
     ctx: &Ctx,
     lines: &[SystemLine],
     analysis: &Analysis,
+    free_bodies: bool,
 ) -> Result<(), ScenarioError> {
     let Some((i, name)) = lines.iter().enumerate().find_map(|(i, l)| {
         let k = l.clamps.iter().position(Option::is_some)?;
@@ -322,6 +394,14 @@ fn check_clamp_route(
         ));
     }
     let dynamic = analysis.kind == super::AnalysisKind::Dynamic;
+    if dynamic && free_bodies {
+        return Err(ctx.err(
+            &key,
+            "a clamp in a direction is held by the P2 step only, and a system with a free body \
+             is stepped by the Galerkin step only: the two are not available together in this \
+             version",
+        ));
+    }
     if dynamic && analysis.time_scheme == stancf::TimeScheme::Galerkin {
         return Err(ctx.err(
             &key,
@@ -342,7 +422,7 @@ fn lines(
     ctx: &Ctx,
     raw: &[RawLine],
     types: &[LineType],
-    points: &[SystemPoint],
+    (points, bodies): (&[SystemPoint], &[SystemBody]),
 ) -> Result<Vec<SystemLine>, ScenarioError> {
     if raw.is_empty() {
         return Err(ctx.err("lines", "a system needs at least one line"));
@@ -412,8 +492,22 @@ fn lines(
             ));
         }
         let clamps = [
-            clamp(ctx, i, "clamp_a", r.clamp_a.as_deref(), ends[0], points)?,
-            clamp(ctx, i, "clamp_b", r.clamp_b.as_deref(), ends[1], points)?,
+            clamp(
+                ctx,
+                i,
+                "clamp_a",
+                r.clamp_a.as_deref(),
+                ends[0],
+                (points, bodies),
+            )?,
+            clamp(
+                ctx,
+                i,
+                "clamp_b",
+                r.clamp_b.as_deref(),
+                ends[1],
+                (points, bodies),
+            )?,
         ];
         out.push(SystemLine {
             id,

@@ -1,11 +1,14 @@
 //! The library's system from a [`SystemScenario`]: every line a cable
 //! model of its line type's section under its loads (gravity, and in
-//! water the water's load and the seabed), every point a library point,
-//! and the seed of the static solve (docs/method.md §11.6).
+//! water the water's load and the seabed), every point and body a
+//! library point and body, and the seed of the static solve
+//! (docs/method.md §11.6).
 
+use super::bodies::SystemBody;
 use super::system_parts::{LineType, PointType, SystemPoint, SystemScenario};
 use super::water::Water;
-use stancf::system::{End, Line, LineSection, Point, PointKind, System};
+use stancf::body::{BodyWater, RigidInertia};
+use stancf::system::{Body, BodyKind, End, Line, LineSection, Point, PointKind, System};
 use stancf::vec3::norm;
 use stancf::water::{LineInWater, Morison};
 use stancf::{Cable, Load, Model, ModelError, ModelOptions};
@@ -110,7 +113,41 @@ impl SystemScenario {
                 Ok(line)
             })
             .collect::<Result<Vec<_>, ModelError>>()?;
-        System::new(lines, points, self.gravity)
+        let bodies = self.bodies.iter().map(|b| self.library_body(b)).collect();
+        System::with_bodies(lines, points, bodies, self.gravity)
+    }
+
+    /// The library's body: in water, a free body's volume, added mass and
+    /// drag with the water's density and its current where it is uniform
+    /// (a body with drag in a current that varies with depth is refused
+    /// on reading, [`super::body_water::check_body_water`]).
+    fn library_body(&self, b: &SystemBody) -> Body {
+        let (kind, inertia) = match b.kind {
+            super::BodyType::Free => (
+                BodyKind::Free,
+                RigidInertia::principal(b.mass, b.centre_of_mass, b.moments),
+            ),
+            // A fixed body's inertia is not used (its points are fixed).
+            super::BodyType::Fixed => (
+                BodyKind::Fixed,
+                RigidInertia::principal(0.0, [0.0; 3], [0.0; 3]),
+            ),
+        };
+        let mut body = Body::new(kind, b.position, b.rotation(), inertia);
+        body.velocity = b.velocity;
+        body.angular_velocity = b.angular_velocity;
+        body.water = match (&self.water, b.kind) {
+            (Some(w), super::BodyType::Free) => Some(BodyWater {
+                density: w.density,
+                volume: b.volume,
+                added_mass_coefficients: b.ca,
+                drag_areas: b.drag_areas,
+                rotational_drag_areas: b.rotational_drag_areas,
+                current: super::bodies::uniform_current(w).unwrap_or([0.0; 3]),
+            }),
+            _ => None,
+        };
+        body
     }
 
     /// Line i's cable model: its type's section over the area pi d^2 / 4,
@@ -197,7 +234,8 @@ fn morison(t: &LineType) -> Morison {
     }
 }
 
-/// The library's point. In water (`fluid`: the library's water) a free
+/// The library's point (a point on a body where the body puts it at
+/// t = 0). In water (`fluid`: the library's water) a free
 /// point carries its volume's buoyancy, drag on its CdA, the fluid's
 /// inertia and its added mass Ca rho_w V (docs/method.md §12.6); for the
 /// wet-weight seed (water given, `fluid` None) its buoyancy is a constant
@@ -210,6 +248,11 @@ fn library_point(
 ) -> Point {
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
+        // At its position at t = 0 already: the lines' models start there.
+        PointType::Body { body, local } => Point {
+            position: p.position,
+            ..Point::on_body(body, local)
+        },
         PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
         PointType::Free => {
             let in_water = fluid.map(|f| stancf::water::PointInWater {

@@ -1,9 +1,10 @@
 //! What a system scenario holds (docs/interface.md, "Systems"): its line
-//! types, points, lines and output channels, validated from `[[line_types]]`,
-//! `[[points]]` and `[[lines]]` (`system.rs`) or from a MoorDyn deck
-//! (`moordyn.rs`).
+//! types, bodies, points, lines and output channels, validated from
+//! `[[line_types]]`, `[[bodies]]`, `[[points]]` and `[[lines]]`
+//! (`system.rs`, `bodies.rs`) or from a MoorDyn deck (`moordyn.rs`).
 
 use super::analysis::InitialShape;
+use super::bodies::SystemBody;
 use super::water::Water;
 use super::Analysis;
 use stancf::motion::CoupledMotion;
@@ -54,6 +55,12 @@ pub enum PointType {
     Fixed,
     Free,
     Coupled,
+    /// Fixed on body `body` (its index in [`SystemScenario::bodies`]) at
+    /// `local` (body axes, from its reference point).
+    Body {
+        body: usize,
+        local: [f64; 3],
+    },
 }
 
 /// A point of the system.
@@ -61,6 +68,8 @@ pub enum PointType {
 pub struct SystemPoint {
     pub id: i64,
     pub kind: PointType,
+    /// The position at t = 0 (m), global (on a body, where the body's
+    /// pose puts the point).
     pub position: [f64; 3],
     pub mass: f64,
     pub force: [f64; 3],
@@ -108,6 +117,8 @@ pub struct SystemLine {
 pub struct SystemScenario {
     pub title: String,
     pub line_types: Vec<LineType>,
+    /// Rigid bodies (docs/method.md §15).
+    pub bodies: Vec<SystemBody>,
     pub points: Vec<SystemPoint>,
     pub lines: Vec<SystemLine>,
     /// Acceleration of gravity (m/s^2), default [0, 0, -9.81] (z up).
@@ -127,4 +138,31 @@ pub struct SystemScenario {
     pub channels: Vec<OutputChannel>,
     /// Where its values were written (TOML keys or a deck's lines).
     pub names: super::names::Names,
+}
+
+impl SystemScenario {
+    /// Whether the system has a free body.
+    pub fn has_free_bodies(&self) -> bool {
+        self.bodies.iter().any(SystemBody::is_free)
+    }
+
+    /// Whether point p moves with the system's unknowns: a free point or
+    /// a point on a free body.
+    pub fn point_moves(&self, p: usize) -> bool {
+        match self.points[p].kind {
+            PointType::Free => true,
+            PointType::Body { body, .. } => self.bodies[body].is_free(),
+            PointType::Fixed | PointType::Coupled => false,
+        }
+    }
+
+    /// Whether point p is held where it is: a fixed point or a point on
+    /// a fixed body.
+    pub fn point_is_fixed(&self, p: usize) -> bool {
+        match self.points[p].kind {
+            PointType::Fixed => true,
+            PointType::Body { body, .. } => !self.bodies[body].is_free(),
+            PointType::Free | PointType::Coupled => false,
+        }
+    }
 }

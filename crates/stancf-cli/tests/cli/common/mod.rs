@@ -3,6 +3,11 @@
 //! non-finite number.
 #![allow(dead_code)]
 
+mod bodies;
+// The properties binary shares this module and uses none of them.
+#[allow(unused_imports)]
+pub use bodies::*;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};

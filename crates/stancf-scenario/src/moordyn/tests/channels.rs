@@ -54,7 +54,7 @@ fn unknown_or_impossible_channels_are_refused_naming_the_line() {
         ("L1N5", "no quantity"),
         ("L1N5QQ", "unknown quantity \"QQ\""),
         ("Rod1PX", "rods are not supported"),
-        ("Body1PX", "bodies are not supported"),
+        ("Body1PX", "there is no body 1 (0 bodies)"),
         ("Tension1", "unknown channel"),
         ("FairTen", "no object number"),
         ("L1N5TA", "take no node"),

@@ -3,6 +3,7 @@
 
 use super::*;
 
+mod bodies;
 mod channels;
 mod decks;
 mod options;

@@ -44,21 +44,6 @@ fn a_rod_is_refused_naming_its_line() {
 }
 
 #[test]
-fn a_body_is_refused_naming_its_line() {
-    let bodies = "--- BODIES ---\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca\n\
-                  (#) (word) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n\
-                  1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n--- POINTS ---";
-    let text = with("--- POINTS ---", bodies);
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "1 coupled")));
-    assert!(e.message.starts_with("bodies are not supported"), "{e}");
-    let text = with("2 Coupled 0 0 -5", "2 Body1 0 0 -5");
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "Body1")));
-    assert!(e.message.contains("bodies are not supported"), "{e}");
-}
-
-#[test]
 fn point_attachment_synonyms_read_and_others_are_refused_by_name() {
     for (word, kind) in [
         ("Anchor", Attachment::Fixed),

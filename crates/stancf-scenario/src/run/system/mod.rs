@@ -3,6 +3,7 @@
 //! the start of a dynamic one with `analysis.initial = "static"`), then
 //! the time stepping; results per line, per point and per line end.
 
+mod bodies;
 mod rows;
 mod writers;
 
@@ -79,6 +80,7 @@ pub(super) fn run_system(
     } = admit(path, opts, &sc)?;
     let line_ids: Vec<i64> = sc.lines.iter().map(|l| l.id).collect();
     let point_ids: Vec<i64> = sc.points.iter().map(|p| p.id).collect();
+    let body_ids: Vec<i64> = sc.bodies.iter().map(|b| b.id).collect();
     let clock = Instant::now();
     let mut outcome = Outcome {
         max_tension: vec![[0.0; 2]; sc.lines.len()],
@@ -97,7 +99,7 @@ pub(super) fn run_system(
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let mut writers = SystemWriters::create(
         place.dest(),
-        (&line_ids, &point_ids),
+        (&line_ids, &point_ids, &body_ids),
         &sc.channels,
         &sc.output_files,
         opts.vtk,
@@ -120,17 +122,21 @@ pub(super) fn run_system(
                 0.0
             };
             warn_of_static_compression(&sc, st);
-            let row = static_row(st, t);
+            let mut row = static_row(st, t);
             outcome.record_tensions(&row.ends);
-            writers.write(&row).map_err(io_err(place.shown))?;
             if sim.is_some() {
+                // The free bodies where the equilibrium put them, with
+                // their points: the lines' static shapes end there.
                 let states = st.line_states();
-                sim = Some(
-                    crate::check_system::simulation(&sc, system, states)
-                        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?,
-                );
+                let start =
+                    crate::check_system::simulation(&sc, st.system_at_equilibrium(), states)
+                        .map_err(|e| Failure::Input(format!("{}: {}", path.display(), e)))?;
+                // The run's start: the equilibrium with the bodies' starting rates.
+                rows::with_start_rates(&mut row, &start);
+                sim = Some(start);
                 from_static = true;
             }
+            writers.write(&row).map_err(io_err(place.shown))?;
         }
     }
     if let Some(s) = sim.as_mut() {
@@ -408,12 +414,13 @@ fn write_summary(
                     crate::scenario::PointType::Fixed => "fixed",
                     crate::scenario::PointType::Free => "free",
                     crate::scenario::PointType::Coupled => "coupled",
+                    crate::scenario::PointType::Body { .. } => "body",
                 },
                 "position_final": vec3(position),
             })
         })
         .collect();
-    let summary = json!({
+    let mut summary = json!({
         "title": sc.title,
         "analysis": match sc.analysis.kind {
             AnalysisKind::Dynamic => "dynamic",
@@ -435,6 +442,9 @@ fn write_summary(
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
         "interrupted": outcome.interrupted,
     });
+    if !sc.bodies.is_empty() {
+        summary["bodies"] = Value::Array(bodies::bodies_json(sc, sim, statics));
+    }
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())
         .map_err(io_err(dest.dir))
@@ -443,9 +453,14 @@ fn write_summary(
 /// The printed report: the largest end tensions and where the results are.
 fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &Place) -> String {
     let mut r = String::new();
+    let bodies = match sc.bodies.len() {
+        0 => String::new(),
+        1 => ", 1 body".to_string(),
+        n => format!(", {n} bodies"),
+    };
     say!(
         r,
-        "{}: {} line{}, {} point{}; {} in {:.2} s",
+        "{}: {} line{}, {} point{}{bodies}; {} in {:.2} s",
         crate::echo::clip(&sc.title, crate::echo::MAX_ECHO),
         sc.lines.len(),
         if sc.lines.len() == 1 { "" } else { "s" },

@@ -1,7 +1,8 @@
 //! The rows a system run writes: its state after a step or at its static
-//! equilibrium as one [`SystemRow`] (lines, points, end forces, energies
-//! and works), from a simulation or a static solve.
+//! equilibrium as one [`SystemRow`] (lines, points, bodies, end forces,
+//! energies and works), from a simulation or a static solve.
 
+use super::bodies::{at_rest, body_rows, stepped};
 use super::writers::SystemRow;
 use crate::scenario::EndForces;
 use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
@@ -36,9 +37,18 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
     let e = sim.energies();
     let en = [e.kinetic, e.strain, e.gravity];
     let point_net = net_point_forces(system, &points, |w, x, v| w.force(x, v, sim.time()).force);
+    let bodies = body_rows(
+        system,
+        |b| match sim.free_body(b) {
+            Some(free) => stepped(free),
+            None => at_rest(&system.bodies()[b]),
+        },
+        &points,
+    );
     SystemRow {
         t: sim.time(),
         point_net,
+        bodies,
         lines,
         points,
         ends,
@@ -66,11 +76,31 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         .collect();
     let ends = ends_of(system, |i| st.end_forces(i), true);
     let e = st.energies();
-    let en = [e.kinetic, e.strain, e.gravity];
+    // The core's static energies leave out the free bodies' potential,
+    // which a simulation's hold: added here, so that a dynamic run's
+    // history.csv starts where its steps go on.
+    let gravity = if system.has_free_bodies() {
+        e.gravity + body_potential(st)
+    } else {
+        e.gravity
+    };
+    let en = [e.kinetic, e.strain, gravity];
     let point_net = net_point_forces(system, &points, |w, x, _| w.static_force(x).force);
+    let bodies = body_rows(
+        system,
+        |b| {
+            let mut m = at_rest(&system.bodies()[b]);
+            if let Some((position, rotation)) = st.body_pose(b) {
+                (m.position, m.rotation) = (position, rotation);
+            }
+            m
+        },
+        &points,
+    );
     SystemRow {
         t,
         point_net,
+        bodies,
         lines,
         points,
         ends,
@@ -86,6 +116,57 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
                 .collect(),
         ),
     }
+}
+
+/// The potential of the free bodies' constant forces at a static
+/// equilibrium, -sum_j F_j . x_j (their weight and buoyancy at the
+/// centre of mass, their loads at their points): the
+/// [`stancf::body::FreeBody::energies`] potential of a body at rest there.
+fn body_potential(st: &SystemStatics) -> f64 {
+    let system = st.system();
+    let g = system.gravity();
+    system
+        .free_bodies()
+        .filter_map(|b| {
+            let body = &system.bodies()[b];
+            let (position, rotation) = st.body_pose(b)?;
+            let at = |local| stancf::body::pose::point(position, &rotation, local);
+            let displaced = body.water.as_ref().map_or(0.0, |w| w.density * w.volume);
+            let weight = g.map(|gc| (body.inertia.mass - displaced) * gc);
+            let forces = std::iter::once((weight, body.inertia.centre_of_mass))
+                .chain(body.loads.iter().copied());
+            Some(
+                -forces
+                    .map(|(f, local)| stancf::vec3::dot(f, at(local)))
+                    .sum::<f64>(),
+            )
+        })
+        .sum()
+}
+
+/// The static row `row` as the start of a dynamic run `sim`: where a body
+/// is given a starting velocity, the velocities the run starts with (the
+/// body's, its points', zero elsewhere) and its kinetic energy (its, its
+/// lines').
+pub(super) fn with_start_rates(row: &mut SystemRow, sim: &SystemSimulation) {
+    let pushed = sim.topology().bodies().iter().any(|b| {
+        b.kind == stancf::system::BodyKind::Free
+            && (b.velocity != [0.0; 3] || b.angular_velocity != [0.0; 3])
+    });
+    if !pushed {
+        return;
+    }
+    for (p, point) in row.points.iter_mut().enumerate() {
+        point.1 = sim.point_state(p).1;
+    }
+    for (b, body) in row.bodies.iter_mut().enumerate() {
+        if let Some(free) = sim.free_body(b) {
+            let start = stepped(free);
+            body.motion.velocity = start.velocity;
+            body.motion.angular_velocity = start.angular_velocity;
+        }
+    }
+    row.energies[0] = sim.energies().kinetic;
 }
 
 /// Each point's net force as MoorDyn's `Fnet`: the force of its lines

@@ -1,10 +1,11 @@
 //! The streamed result files of a system (docs/interface.md, "Systems"):
 //! `lines/<id>/nodes.csv` and `lines/<id>/stress.csv` in the single
 //! cable's columns, `lines/<id>/node_loads.csv` (curvature, bending moment
-//! and the seabed's force at every node), `points.csv`, `tensions.csv` and
-//! `history.csv`.
+//! and the seabed's force at every node), `points.csv`, `bodies.csv`,
+//! `tensions.csv` and `history.csv`.
 
-use crate::moordyn::{Axis, Channel, LineEnd, LineQuantity, PointQuantity};
+use super::bodies::BodyRow;
+use crate::moordyn::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Dest, Num, TimeGrid};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::{OutputChannel, OutputFiles};
@@ -25,6 +26,8 @@ pub(super) struct SystemRow<'a> {
     /// weight, buoyancy and given force, and the water's drag and the
     /// fluid's inertia on it; not its own inertia nor its added mass's).
     pub point_net: Vec<[f64; 3]>,
+    /// Each body's pose, velocities and loads.
+    pub bodies: Vec<BodyRow>,
     /// Each line's end forces (A, B; None for a loose end).
     pub ends: Vec<[Option<EndForce>; 2]>,
     /// Kinetic, strain and gravity energies of lines and points.
@@ -56,7 +59,10 @@ pub(super) struct SystemWriters {
     lines: Vec<LineFiles>,
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
+    body_ids: Vec<i64>,
     points: Option<AtomicFile>,
+    /// bodies.csv (None: no bodies, or left out by `output.files`).
+    bodies: Option<AtomicFile>,
     tensions: Option<AtomicFile>,
     history: Option<AtomicFile>,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
@@ -75,7 +81,7 @@ pub(super) struct SystemWriters {
 impl SystemWriters {
     pub(super) fn create(
         dest: Dest,
-        (line_ids, point_ids): (&[i64], &[i64]),
+        (line_ids, point_ids, body_ids): (&[i64], &[i64], &[i64]),
         channels: &[OutputChannel],
         files: &OutputFiles,
         with_vtk: bool,
@@ -123,6 +129,11 @@ impl SystemWriters {
             "points.csv",
             "t,point,x,y,z,vx,vy,vz,fx,fy,fz",
         )?;
+        let bodies = if body_ids.is_empty() {
+            None
+        } else {
+            table("bodies.csv", "bodies.csv", super::bodies::HEADER)?
+        };
         let tensions = table(
             "tensions.csv",
             "tensions.csv",
@@ -159,7 +170,9 @@ impl SystemWriters {
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
+            body_ids: body_ids.to_vec(),
             points,
+            bodies,
             tensions,
             history,
             samples: Vec::new(),
@@ -176,6 +189,11 @@ impl SystemWriters {
         let t = self.times.time(row.t);
         self.write_lines(row, t)?;
         self.write_points(row, t)?;
+        super::bodies::check_finite(&row.bodies, &self.body_ids)
+            .map_err(|what| non_finite(&what, row.t))?;
+        if let Some(bodies) = self.bodies.as_mut() {
+            super::bodies::write_rows(bodies.writer(), t, &self.body_ids, &row.bodies)?;
+        }
         self.write_tensions(row, t)?;
         let [kinetic, strain, gravity] = row.energies;
         if ![kinetic, strain, gravity, row.residual]
@@ -340,6 +358,7 @@ impl SystemWriters {
             .flat_map(|l| [l.nodes, l.stress, l.node_loads]);
         let tables = [
             self.points,
+            self.bodies,
             self.tensions,
             self.history,
             self.channels.map(|(f, _)| f),
@@ -428,5 +447,28 @@ fn channel_value(c: &Channel, row: &SystemRow) -> f64 {
                 PointQuantity::Acceleration(_) => f64::NAN,
             }
         }
+        Channel::Body { body, quantity } => body_value(&row.bodies[body - 1], quantity),
+    }
+}
+
+/// The value of a body channel (MoorDyn's units: rotations in degrees and
+/// degrees per second; forces MoorDyn's net force, see
+/// [`super::bodies`]); accelerations are refused on reading (NaN here).
+fn body_value(b: &BodyRow, q: BodyQuantity) -> f64 {
+    let axis = |a: Axis| match a {
+        Axis::X => 0,
+        Axis::Y => 1,
+        Axis::Z => 2,
+    };
+    let m = &b.motion;
+    match q {
+        BodyQuantity::Position(a) => m.position[axis(a)],
+        BodyQuantity::Rotation(a) => b.angles[axis(a)],
+        BodyQuantity::Velocity(a) => m.velocity[axis(a)],
+        BodyQuantity::AngularVelocity(a) => m.angular_velocity[axis(a)].to_degrees(),
+        BodyQuantity::Force(a) => b.net_force[axis(a)],
+        BodyQuantity::Moment(a) => b.net_moment[axis(a)],
+        BodyQuantity::Tension => stancf::vec3::norm(b.net_force),
+        BodyQuantity::Acceleration(_) | BodyQuantity::AngularAcceleration(_) => f64::NAN,
     }
 }

@@ -1,0 +1,221 @@
+//! The bodies of a system's written moment (docs/interface.md,
+//! "Rigid bodies"): each body's pose, velocities and the loads on it, for
+//! `bodies.csv` and a deck's `Body<n>` channels.
+//!
+//! - The lines' force on a body and their moment about its reference
+//!   point, global: f = sum f_P, m = sum (x_P - x_ref) x f_P over its
+//!   points P (f_P the net force of the lines at P, as in points.csv).
+//! - MoorDyn's net force (`getFnet` of a free body, its `Body<n>FX..MZ`,
+//!   docs/moordyn-bodies-rods.md §2.3): the lines', the body's weight and
+//!   buoyancy (m - rho V) g at its centre of mass, and the water's drag
+//!   (B10); not its inertia, nor its added mass's. A fixed body's is its
+//!   lines' (MoorDyn-C writes 0 there, never computing it, §7.12 of the
+//!   note).
+
+use crate::output::Num;
+use stancf::body::pose::{moordyn_angles, rotate, rotate_back};
+use stancf::system::{Body, BodyKind, Topology};
+use stancf::vec3::{add, cross, norm, scale, sub};
+use std::io::Write;
+
+/// A body's pose and velocities at a written moment.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BodyMotion {
+    /// The reference point (m), global.
+    pub position: [f64; 3],
+    /// Body axes to global.
+    pub rotation: [[f64; 3]; 3],
+    /// The reference point's velocity (m/s).
+    pub velocity: [f64; 3],
+    /// The angular velocity (rad/s), global.
+    pub angular_velocity: [f64; 3],
+}
+
+/// One body at a written moment (see the module documentation).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BodyRow {
+    pub motion: BodyMotion,
+    /// MoorDyn's roll, pitch and yaw (degrees).
+    pub angles: [f64; 3],
+    /// The lines' force and their moment about the reference point.
+    pub force: [f64; 3],
+    pub moment: [f64; 3],
+    /// MoorDyn's net force and moment about the reference point.
+    pub net_force: [f64; 3],
+    pub net_moment: [f64; 3],
+}
+
+impl BodyRow {
+    /// Every value, for the check that none is non-finite.
+    fn values(&self) -> impl Iterator<Item = f64> + '_ {
+        let m = &self.motion;
+        [
+            m.position,
+            self.angles,
+            m.velocity,
+            m.angular_velocity,
+            self.force,
+            self.moment,
+            self.net_force,
+            self.net_moment,
+        ]
+        .into_iter()
+        .flatten()
+        .chain(m.rotation.into_iter().flatten())
+    }
+}
+
+/// The motion of a body held at its pose.
+pub(super) fn at_rest(body: &Body) -> BodyMotion {
+    BodyMotion {
+        position: body.position,
+        rotation: body.rotation,
+        velocity: [0.0; 3],
+        angular_velocity: [0.0; 3],
+    }
+}
+
+/// The motion of a free body stepped by the core: its reference point's
+/// velocity v_G + w x (r_ref - r_G).
+pub(super) fn stepped(body: &stancf::body::FreeBody) -> BodyMotion {
+    let position = body.position();
+    let w = body.angular_velocity();
+    BodyMotion {
+        position,
+        rotation: body.rotation(),
+        velocity: add(
+            body.centre_velocity(),
+            cross(w, sub(position, body.centre())),
+        ),
+        angular_velocity: w,
+    }
+}
+
+/// Each body's row: `motion(b)` its pose and velocities, `points` every
+/// point's (position, velocity, net force of its lines).
+pub(super) fn body_rows(
+    topology: &Topology,
+    motion: impl Fn(usize) -> BodyMotion,
+    points: &[([f64; 3], [f64; 3], [f64; 3])],
+) -> Vec<BodyRow> {
+    (0..topology.bodies().len())
+        .map(|b| {
+            let m = motion(b);
+            let mut force = [0.0; 3];
+            let mut moment = [0.0; 3];
+            for &(p, _) in topology.body_points(b) {
+                let (x, _, f) = points[p];
+                force = add(force, f);
+                moment = add(moment, cross(sub(x, m.position), f));
+            }
+            let body = &topology.bodies()[b];
+            let (own_force, own_moment) = match body.kind {
+                BodyKind::Free => own_loads(body, &m, topology.gravity()),
+                _ => ([0.0; 3], [0.0; 3]),
+            };
+            BodyRow {
+                motion: m,
+                angles: moordyn_angles(&m.rotation),
+                force,
+                moment,
+                net_force: add(force, own_force),
+                net_moment: add(moment, own_moment),
+            }
+        })
+        .collect()
+}
+
+/// A free body's own loads about its reference point: its weight and
+/// buoyancy (m - rho V) g at its centre of mass, and in water the drag
+/// of (B10): -1/2 rho diag(CdA) u |u| at the reference point, u = R^T
+/// (v_ref - U) its velocity in the water (body axes), and the moment
+/// -1/2 rho diag(CdA_r) Omega |Omega|.
+fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let water = body.water.as_ref();
+    let (density, volume) = water.map_or((0.0, 0.0), |w| (w.density, w.volume));
+    let weight = scale(body.inertia.mass - density * volume, gravity);
+    let arm = rotate(&m.rotation, body.inertia.centre_of_mass);
+    let mut force = weight;
+    let mut moment = cross(arm, weight);
+    if let Some(w) = water {
+        let u = rotate_back(&m.rotation, sub(m.velocity, w.current));
+        let omega = rotate_back(&m.rotation, m.angular_velocity);
+        let (speed, spin) = (norm(u), norm(omega));
+        let drag: [f64; 3] =
+            std::array::from_fn(|k| -0.5 * w.density * w.drag_areas[k] * u[k] * speed);
+        let turning: [f64; 3] = std::array::from_fn(|k| {
+            -0.5 * w.density * w.rotational_drag_areas[k] * omega[k] * spin
+        });
+        force = add(force, rotate(&m.rotation, drag));
+        moment = add(moment, rotate(&m.rotation, turning));
+    }
+    (force, moment)
+}
+
+/// The header of bodies.csv.
+pub(super) const HEADER: &str = "t,body,x,y,z,roll,pitch,yaw,vx,vy,vz,wx,wy,wz,fx,fy,fz,mx,my,mz";
+
+/// Refuses a body row with a value that is not finite (none may reach a
+/// file): the body's id, for the message.
+pub(super) fn check_finite(rows: &[BodyRow], ids: &[i64]) -> Result<(), String> {
+    match rows.iter().position(|r| !r.values().all(f64::is_finite)) {
+        Some(b) => Err(format!("state of body {}", ids[b])),
+        None => Ok(()),
+    }
+}
+
+/// The rows of bodies.csv at the written time `t` (each body once, by
+/// its id).
+pub(super) fn write_rows(
+    w: &mut impl Write,
+    t: f64,
+    ids: &[i64],
+    rows: &[BodyRow],
+) -> std::io::Result<()> {
+    for (id, r) in ids.iter().zip(rows) {
+        let m = &r.motion;
+        write!(w, "{},{id}", Num(t))?;
+        for v in [
+            m.position,
+            r.angles,
+            m.velocity,
+            m.angular_velocity,
+            r.force,
+            r.moment,
+        ] {
+            write!(w, ",{},{},{}", Num(v[0]), Num(v[1]), Num(v[2]))?;
+        }
+        writeln!(w)?;
+    }
+    Ok(())
+}
+
+/// summary.json's `bodies`: each body's id, type, and its reference point
+/// and MoorDyn angles (degrees) at the end of the run (`sim`) or of the
+/// static solve (`statics`), else where the scenario puts it.
+pub(super) fn bodies_json(
+    sc: &crate::scenario::SystemScenario,
+    sim: Option<&stancf::system::SystemSimulation>,
+    statics: Option<&stancf::system::SystemStatics>,
+) -> Vec<serde_json::Value> {
+    sc.bodies
+        .iter()
+        .enumerate()
+        .map(|(b, body)| {
+            let (position, rotation) = match (sim, statics) {
+                (Some(s), _) => match s.free_body(b) {
+                    Some(free) => (free.position(), free.rotation()),
+                    None => (body.position, body.rotation()),
+                },
+                (None, Some(st)) => st.body_pose(b).unwrap_or((body.position, body.rotation())),
+                _ => (body.position, body.rotation()),
+            };
+            serde_json::json!({
+                "id": body.id,
+                "type": if body.is_free() { "free" } else { "fixed" },
+                "position_final": super::vec3(position),
+                "angles_final": super::vec3(moordyn_angles(&rotation)),
+            })
+        })
+        .collect()
+}

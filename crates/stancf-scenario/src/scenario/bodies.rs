@@ -1,0 +1,246 @@
+//! Rigid bodies of a system (docs/interface.md, "Rigid bodies";
+//! docs/method.md §15): `[[bodies]]` of a TOML system or a MoorDyn deck's
+//! BODIES, fixed (its points are fixed points where its pose puts them)
+//! or free (six degrees of freedom, moved by its weight, its buoyancy,
+//! its water and its lines). What the water they are in may be is
+//! `body_water.rs`.
+
+use super::context::Ctx;
+use super::raw::RawBody;
+use super::water::Water;
+use super::ScenarioError;
+use stancf::body::pose;
+
+/// What holds a body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BodyType {
+    /// Held at its pose.
+    Fixed,
+    /// Six degrees of freedom.
+    Free,
+}
+
+/// A rigid body of a system. A fixed body's inertia, water and
+/// velocities are zero (its pose is given).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemBody {
+    /// The body's id (a deck's BODIES ID; `id` of `[[bodies]]`).
+    pub id: i64,
+    pub kind: BodyType,
+    /// The reference point at t = 0 (m), global.
+    pub position: [f64; 3],
+    /// MoorDyn's roll, pitch and yaw (degrees): R = R_x R_y R_z.
+    pub angles: [f64; 3],
+    /// Mass (kg).
+    pub mass: f64,
+    /// The centre of mass, body axes from the reference point (m).
+    pub centre_of_mass: [f64; 3],
+    /// Principal moments of inertia about the centre of mass along the
+    /// body axes (kg m^2).
+    pub moments: [f64; 3],
+    /// Displaced volume (m^3): buoyancy at the centre of mass and the
+    /// added mass's volume, in water.
+    pub volume: f64,
+    /// Translational drag areas CdA (m^2), body axes.
+    pub drag_areas: [f64; 3],
+    /// Rotational drag areas (multiplying Omega |Omega|, MoorDyn's).
+    pub rotational_drag_areas: [f64; 3],
+    /// Added-mass coefficients along the body axes, on the volume.
+    pub ca: [f64; 3],
+    /// The reference point's velocity and the angular velocity (global)
+    /// at t = 0.
+    pub velocity: [f64; 3],
+    pub angular_velocity: [f64; 3],
+}
+
+impl SystemBody {
+    /// Body axes to global at t = 0.
+    pub fn rotation(&self) -> [[f64; 3]; 3] {
+        pose::rotation_from_moordyn_angles(self.angles)
+    }
+
+    /// The global position at t = 0 of the body point `local` (body axes,
+    /// from the reference point).
+    pub fn point(&self, local: [f64; 3]) -> [f64; 3] {
+        pose::point(self.position, &self.rotation(), local)
+    }
+
+    pub fn is_free(&self) -> bool {
+        self.kind == BodyType::Free
+    }
+
+    /// Whether any of the body's water values (volume, drag areas, added
+    /// mass) is not zero.
+    pub fn has_water_values(&self) -> bool {
+        self.volume != 0.0 || self.has_drag() || self.ca != [0.0; 3]
+    }
+
+    /// Whether the body has a drag area, translational or rotational.
+    pub fn has_drag(&self) -> bool {
+        self.drag_areas != [0.0; 3] || self.rotational_drag_areas != [0.0; 3]
+    }
+
+    /// Whether the body starts moving.
+    pub fn moves_at_start(&self) -> bool {
+        self.velocity != [0.0; 3] || self.angular_velocity != [0.0; 3]
+    }
+}
+
+/// Whether principal moments `m` are those of a body with extent in
+/// every direction: J_k = (m_a + m_b - m_k) / 2 positive, as the core's
+/// [`stancf::body::RigidInertia::validate`] requires (the same leading
+/// minors of the diagonal J_G against the trace).
+pub fn moments_of_a_body(m: [f64; 3]) -> bool {
+    let trace = m[0] + m[1] + m[2];
+    if !trace.is_finite() || trace <= 0.0 {
+        return false;
+    }
+    let j = [0, 1, 2].map(|k| 0.5 * trace - m[k]);
+    let minors = [j[0], j[0] * j[1], j[0] * j[1] * j[2]];
+    (0..3).all(|k| minors[k] > 1e-12 * trace.powi(k as i32 + 1))
+}
+
+/// The keys of `[[bodies]]` that only a free body takes.
+const FREE_KEYS: [&str; 9] = [
+    "mass",
+    "centre_of_mass",
+    "inertia",
+    "volume",
+    "cda",
+    "rotational_cda",
+    "ca",
+    "velocity",
+    "angular_velocity",
+];
+
+/// `[[bodies]]`: `id` (required, unique), `type` ("free" or "fixed",
+/// required), `position` (required), `angles` (degrees, default 0); a
+/// free body's `mass` (> 0) and `inertia` (the three moments, each less
+/// than the sum of the other two), required, `centre_of_mass`,
+/// `volume`, `cda`, `rotational_cda`, `ca` (>= 0), `velocity` and
+/// `angular_velocity` (default 0). A fixed body is held at its pose: the
+/// keys of a free body are refused there, naming the key.
+pub(super) fn bodies(ctx: &Ctx, raw: &[RawBody]) -> Result<Vec<SystemBody>, ScenarioError> {
+    let mut out: Vec<SystemBody> = Vec::with_capacity(raw.len());
+    for (i, r) in raw.iter().enumerate() {
+        let key = |k: &str| format!("bodies[{i}].{k}");
+        let id = ctx.required(&key("id"), r.id)?;
+        if out.iter().any(|b| b.id == id) {
+            return Err(ctx.err(&key("id"), format!("body {id} is defined twice")));
+        }
+        let kind = match ctx.choice(
+            &key("type"),
+            Some(ctx.required(&key("type"), r.kind.as_deref())?),
+            "",
+            &["free", "fixed"],
+        )? {
+            "free" => BodyType::Free,
+            _ => BodyType::Fixed,
+        };
+        let position = ctx.vector(
+            &key("position"),
+            &ctx.required(&key("position"), r.position.clone())?,
+        )?;
+        let angles = ctx.vector_or(&key("angles"), r.angles.as_deref(), [0.0; 3])?;
+        let fixed = SystemBody {
+            id,
+            kind,
+            position,
+            angles,
+            mass: 0.0,
+            centre_of_mass: [0.0; 3],
+            moments: [0.0; 3],
+            volume: 0.0,
+            drag_areas: [0.0; 3],
+            rotational_drag_areas: [0.0; 3],
+            ca: [0.0; 3],
+            velocity: [0.0; 3],
+            angular_velocity: [0.0; 3],
+        };
+        if kind == BodyType::Fixed {
+            if let Some(k) = FREE_KEYS.iter().zip(r.free_keys()).find(|(_, g)| *g) {
+                return Err(ctx.err(
+                    &key(k.0),
+                    "a fixed body is held at its pose: its mass, inertia, water and \
+                     velocities do nothing (give them to a free body, type = \"free\")",
+                ));
+            }
+            out.push(fixed);
+            continue;
+        }
+        out.push(free_body(ctx, i, r, fixed)?);
+    }
+    Ok(out)
+}
+
+/// The free body of `[[bodies]]` entry i (`body`: its id, type and pose).
+fn free_body(
+    ctx: &Ctx,
+    i: usize,
+    r: &RawBody,
+    body: SystemBody,
+) -> Result<SystemBody, ScenarioError> {
+    let key = |k: &str| format!("bodies[{i}].{k}");
+    let mass = ctx.required_positive(&key("mass"), r.mass)?;
+    let moments = non_negative_vector(
+        ctx,
+        &key("inertia"),
+        &ctx.required(&key("inertia"), r.inertia.clone())?,
+    )?;
+    if !moments_of_a_body(moments) {
+        return Err(ctx.err(
+            &key("inertia"),
+            format!(
+                "the moments {moments:?} kg m^2 about the centre of mass are not those of a body \
+                 with extent in all three directions: each must be less than the sum of the \
+                 other two (zero moments, a point mass or a rod, are not a body's)"
+            ),
+        ));
+    }
+    let optional = |k: &str, v: &Option<Vec<f64>>| match v {
+        Some(v) => non_negative_vector(ctx, &key(k), v),
+        None => Ok([0.0; 3]),
+    };
+    Ok(SystemBody {
+        mass,
+        centre_of_mass: ctx.vector_or(
+            &key("centre_of_mass"),
+            r.centre_of_mass.as_deref(),
+            [0.0; 3],
+        )?,
+        moments,
+        volume: match r.volume {
+            Some(v) => ctx.non_negative(&key("volume"), v)?,
+            None => 0.0,
+        },
+        drag_areas: optional("cda", &r.cda)?,
+        rotational_drag_areas: optional("rotational_cda", &r.rotational_cda)?,
+        ca: optional("ca", &r.ca)?,
+        velocity: ctx.vector_or(&key("velocity"), r.velocity.as_deref(), [0.0; 3])?,
+        angular_velocity: ctx.vector_or(
+            &key("angular_velocity"),
+            r.angular_velocity.as_deref(),
+            [0.0; 3],
+        )?,
+        ..body
+    })
+}
+
+/// A vector of 3 finite numbers, each >= 0.
+fn non_negative_vector(ctx: &Ctx, key: &str, v: &[f64]) -> Result<[f64; 3], ScenarioError> {
+    let v = ctx.vector(key, v)?;
+    if let Some(c) = v.iter().position(|&c| c < 0.0) {
+        return Err(ctx.err(key, format!("component {c} is {}; it must be >= 0", v[c])));
+    }
+    Ok(v)
+}
+
+/// The water's current where it is the same at every depth (zero
+/// without one); None where it varies with depth.
+pub fn uniform_current(w: &Water) -> Option<[f64; 3]> {
+    let Some(c) = &w.current else {
+        return Some([0.0; 3]);
+    };
+    let first = c.rows[0].velocity;
+    c.rows.iter().all(|r| r.velocity == first).then_some(first)
+}
