@@ -118,6 +118,8 @@ pub struct FreeBody {
     /// The constant forces in the step's start axes at their arms from
     /// the centre of mass ([`FreeBody::refresh_loads`]).
     start_loads: Vec<([f64; 3], [f64; 3])>,
+    /// The work of the water's drag so far (B10).
+    water_work: f64,
 }
 
 /// The slab's rows over the 24 slots and their derivatives (row-major).
@@ -177,6 +179,7 @@ impl FreeBody {
             scheme: TimeScheme::Galerkin,
             last_iterations: 0,
             start_loads: Vec::with_capacity(forces.forces.len()),
+            water_work: 0.0,
         };
         body.refresh_loads();
         body.momenta_from_rates();
@@ -339,6 +342,13 @@ impl FreeBody {
             index.map(|k| t.g[k]),
             index.map(|a| index.map(|b| t.h[a][b])),
         )
+    }
+
+    /// The work done on the body by the water's drag so far (B10): the
+    /// drag's power Q_r . v_G + Q_theta . theta_dot at the slab's time
+    /// points, with their weights, step by step.
+    pub fn water_work(&self) -> f64 {
+        self.water_work
     }
 
     /// The centre of mass r_G.

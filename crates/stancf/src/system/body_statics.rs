@@ -207,6 +207,27 @@ impl StaticBody {
 }
 
 impl SystemStatics {
+    /// The potential of the free bodies' constant forces at the last
+    /// converged increment, -sum_j F_j . x_j (weight and buoyancy at the
+    /// centre of mass, loads at their points).
+    pub(super) fn body_potential(&self) -> f64 {
+        let eq = &self.equations;
+        eq.bodies
+            .iter()
+            .map(|body| {
+                let q = body.converged;
+                let rotation = body.rotation_at(&q);
+                body.forces
+                    .iter()
+                    .map(|(f, arm)| {
+                        let at = crate::body::pose::point([q[0], q[1], q[2]], &rotation, *arm);
+                        -crate::vec3::dot(*f, at)
+                    })
+                    .sum::<f64>()
+            })
+            .sum()
+    }
+
     /// Free body b's pose at the last converged increment: its reference
     /// point and its rotation (body axes to global); None for a fixed body.
     pub fn body_pose(&self, b: usize) -> Option<([f64; 3], [[f64; 3]; 3])> {

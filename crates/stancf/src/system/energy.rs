@@ -35,8 +35,9 @@ pub(super) fn add_point_energies(
 impl SystemStatics {
     /// The energies of the equilibrium at the last converged increment:
     /// every line's strain and gravity energy ([`energies`]), with the
-    /// model the scenario gave it, and the free points' potentials
-    /// ([`add_point_energies`], at rest).
+    /// model the scenario gave it, the free points' potentials
+    /// ([`add_point_energies`], at rest) and the free bodies' (the
+    /// potential of their constant forces, as [`crate::body::FreeBody::energies`]).
     pub fn energies(&self) -> Energies {
         let mut en = Energies::default();
         for (i, l) in self.system().lines().iter().enumerate() {
@@ -48,6 +49,7 @@ impl SystemStatics {
         }
         let at_rest = |p| (self.point_position(p), [0.0; 3]);
         add_point_energies(self.system(), at_rest, &mut en);
+        en.gravity += self.body_potential();
         en
     }
 }
@@ -78,10 +80,20 @@ impl SystemSimulation {
     /// on the lines, their moving attachments (fixed and coupled points),
     /// drag, axial damping, the seabed and the water
     /// ([`crate::Simulation::external_work`]); on the free points, the
-    /// water's drag and inertia (W34). `energies().mechanical() -
-    /// external_work()` stays at its start value up to the scheme's error.
+    /// water's drag and inertia (W34); on the free bodies, their drag
+    /// (B10). `energies().mechanical() - external_work()` stays at its
+    /// start value up to the scheme's error (in a current with added mass
+    /// the body's kinetic energy (B9) is not the conserved quantity,
+    /// docs/method.md §15.6).
     pub fn external_work(&self) -> f64 {
-        self.lines.iter().map(|l| l.external_work()).sum::<f64>() + self.point_water_work
+        self.lines.iter().map(|l| l.external_work()).sum::<f64>()
+            + self.point_water_work
+            + self.body_water_work()
+    }
+
+    /// The work of the free bodies' drag so far (B10).
+    pub(super) fn body_water_work(&self) -> f64 {
+        self.bodies.iter().map(|b| b.body.water_work()).sum()
     }
 
     /// The energy watchdog of a run from the current state (docs/method.md

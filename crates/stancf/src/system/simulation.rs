@@ -273,11 +273,13 @@ impl SystemSimulation {
         self.lines.iter().map(Simulation::seabed_work).sum()
     }
 
-    /// Work done by the water so far: on the lines (W24) and on the free
-    /// points by their drag and inertia (W34) (the points' buoyancy is a
-    /// constant load, a potential).
+    /// Work done by the water so far: on the lines (W24), on the free
+    /// points by their drag and inertia (W34) and on the free bodies by
+    /// their drag (B10) (buoyancy is a constant load, a potential).
     pub fn water_work(&self) -> f64 {
-        self.lines.iter().map(Simulation::water_work).sum::<f64>() + self.point_water_work
+        self.lines.iter().map(Simulation::water_work).sum::<f64>()
+            + self.point_water_work
+            + self.body_water_work()
     }
 
     pub fn steps(&self) -> usize {

@@ -76,15 +76,9 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
         .collect();
     let ends = ends_of(system, |i| st.end_forces(i), true);
     let e = st.energies();
-    // The core's static energies leave out the free bodies' potential,
-    // which a simulation's hold: added here, so that a dynamic run's
-    // history.csv starts where its steps go on.
-    let gravity = if system.has_free_bodies() {
-        e.gravity + body_potential(st)
-    } else {
-        e.gravity
-    };
-    let en = [e.kinetic, e.strain, gravity];
+    // The free bodies' potential is in the core's static energies, as in a
+    // simulation's: a dynamic run's history.csv starts where its steps go on.
+    let en = [e.kinetic, e.strain, e.gravity];
     let point_net = net_point_forces(system, &points, |w, x, _| w.static_force(x).force);
     let bodies = body_rows(
         system,
@@ -116,32 +110,6 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
                 .collect(),
         ),
     }
-}
-
-/// The potential of the free bodies' constant forces at a static
-/// equilibrium, -sum_j F_j . x_j (their weight and buoyancy at the
-/// centre of mass, their loads at their points): the
-/// [`stancf::body::FreeBody::energies`] potential of a body at rest there.
-fn body_potential(st: &SystemStatics) -> f64 {
-    let system = st.system();
-    let g = system.gravity();
-    system
-        .free_bodies()
-        .filter_map(|b| {
-            let body = &system.bodies()[b];
-            let (position, rotation) = st.body_pose(b)?;
-            let at = |local| stancf::body::pose::point(position, &rotation, local);
-            let displaced = body.water.as_ref().map_or(0.0, |w| w.density * w.volume);
-            let weight = g.map(|gc| (body.inertia.mass - displaced) * gc);
-            let forces = std::iter::once((weight, body.inertia.centre_of_mass))
-                .chain(body.loads.iter().copied());
-            Some(
-                -forces
-                    .map(|(f, local)| stancf::vec3::dot(f, at(local)))
-                    .sum::<f64>(),
-            )
-        })
-        .sum()
 }
 
 /// The static row `row` as the start of a dynamic run `sim`: where a body

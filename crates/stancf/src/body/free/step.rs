@@ -180,6 +180,7 @@ impl FreeBody {
     /// the body's rotation.
     pub fn advance(&mut self, x: &[f64]) -> Result<(), SolverError> {
         let slots = self.slots(x);
+        self.water_work += self.drag_work(&slots);
         let theta_b = slots[6];
         let turn = crate::vec3::norm(theta_b);
         if turn > std::f64::consts::PI {
@@ -196,6 +197,32 @@ impl FreeBody {
         self.refresh_loads();
         self.time += self.slab.dt;
         Ok(())
+    }
+
+    /// The drag's work over the step whose slot blocks are `slots`: its
+    /// power at the time points (the same quadrature as its virtual work
+    /// in the rows).
+    fn drag_work(&self, slots: &[[f64; 3]; 8]) -> f64 {
+        if self.water.is_none() {
+            return 0.0;
+        }
+        let ctx = self.context(&self.start_loads);
+        let mut work = 0.0;
+        for point in &self.slab.points {
+            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
+                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
+            };
+            let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
+            let rates = [at(t_dot, 0), at(t, 4), at(t_dot, 4)];
+            let v = variables(rates);
+            if let Some((on_centre, on_theta)) = ctx.drag(&v) {
+                let power: f64 = (0..3)
+                    .map(|i| on_centre[i].v * rates[0][i] + on_theta[i].v * rates[2][i])
+                    .sum();
+                work += point.w_dt * power;
+            }
+        }
+        work
     }
 
     /// The Galerkin step's end gradients at its unknowns x: dA/dr_b (the
