@@ -202,14 +202,31 @@ fn point_rate_map(rotation: &[[f64; 3]; 3], arm: [f64; 3]) -> [[f64; 6]; 3] {
     })
 }
 
+/// A body point's rate unknowns (global indices) and its G_P (B14).
+type PointRateMap = ([usize; 3], [[f64; 6]; 3]);
+
+/// Body `body`'s rate unknowns (global indices) and its points'
+/// [`PointRateMap`]s.
+fn body_rate_maps<'a>(
+    layout: &'a SystemLayout,
+    body: &'a StepBody,
+) -> ([usize; 6], impl Iterator<Item = PointRateMap> + 'a) {
+    let q = std::array::from_fn(|k| layout.body_unknown(body.index, 0, k).expect("free body"));
+    let rotation = body.body.rotation();
+    let points = body.points.iter().map(move |bp| {
+        let y = std::array::from_fn(|c| layout.point_unknown(bp.point, 0, c).expect("border"));
+        (y, point_rate_map(&rotation, bp.arm))
+    });
+    (q, points)
+}
+
 /// Body `body`'s share of M_ff: its points' rows carried to its own by
 /// G_P^T and replaced by v_P - G_P nu = 0, and its kinetic Hessian H.
 fn add_body_mass(m: &mut crate::bordered::BorderedMatrix, layout: &SystemLayout, body: &StepBody) {
-    let q = |k: usize| layout.body_unknown(body.index, 0, k).expect("free body");
-    let rotation = body.body.rotation();
-    for bp in &body.points {
-        let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
-        let g = point_rate_map(&rotation, bp.arm);
+    let (q, points) = body_rate_maps(layout, body);
+    let q = |k: usize| q[k];
+    for (ys, g) in points {
+        let y = |c: usize| ys[c];
         for (c, row) in g.iter().enumerate() {
             for (k, &w) in row.iter().enumerate() {
                 if w != 0.0 {
@@ -245,11 +262,10 @@ fn carry_body_momentum(
     body: &StepBody,
     momentum: &[f64; 6],
 ) {
-    let q = |k: usize| layout.body_unknown(body.index, 0, k).expect("free body");
-    let rotation = body.body.rotation();
-    for bp in &body.points {
-        let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
-        let g = point_rate_map(&rotation, bp.arm);
+    let (q, points) = body_rate_maps(layout, body);
+    let q = |k: usize| q[k];
+    for (ys, g) in points {
+        let y = |c: usize| ys[c];
         for (c, row) in g.iter().enumerate() {
             let raw = rates[y(c)];
             for (k, &w) in row.iter().enumerate() {

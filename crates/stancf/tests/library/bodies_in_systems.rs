@@ -3,9 +3,8 @@
 //! chain rule (B12)-(B13), and the step's end rates come from the system's
 //! mass matrix with the body's rates in it (B14).
 
-use crate::common::{light_rope, rel_diff};
+use crate::common::light_rope;
 use stancf::body::RigidInertia;
-use stancf::linear::Jacobian;
 use stancf::observe::{angular_momentum as angular_momentum_of_line, momentum};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation};
 use stancf::{Cable, ElementType, Model, ModelOptions, StepSettings, TimeScheme};
@@ -280,24 +279,39 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
     ];
     let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
     let mut sim = SystemSimulation::new(system, states, galerkin(0.01)).unwrap();
-    let (jac, x) = sim.next_step_jacobian();
-    let n = x.len();
-    let h = 1e-6;
-    let mut analytic = Vec::with_capacity(n * n);
-    let mut fd = Vec::with_capacity(n * n);
-    for c in 0..n {
-        let (mut xp, mut xm) = (x.clone(), x.clone());
-        xp[c] += h;
-        xm[c] -= h;
-        let (rp, rm) = (sim.next_step_residual(&xp), sim.next_step_residual(&xm));
-        for r in 0..n {
-            fd.push((rp[r] - rm[r]) / (2.0 * h));
-            analytic.push(jac.get(r, c));
-        }
-    }
-    let err = rel_diff(&analytic, &fd);
+    let err = crate::common::step_jacobian_error(&mut sim, 1e-6);
     eprintln!("step Jacobian with a free body: rel. error {err:.1e}");
     assert!(err < 1e-7, "{err:e}");
+}
+
+/// A light, stiff line (EA 1e5 N, 1 g/m, EI 1e-5 N m^2) hanging from the
+/// origin at `phi` from the vertical, `l` long under `tension`: its
+/// reference is unstretched and its state stretched to l.
+fn pendulum_line(l: f64, phi: f64, tension: f64) -> (Model, stancf::State) {
+    let line = stancf::Material {
+        youngs_modulus: 1e9,
+        density: 10.0,
+        area: 1e-4,
+        second_moment: 1e-14,
+        axial_damping: 0.0,
+    };
+    let stretch = 1.0 + tension / (line.youngs_modulus * line.area);
+    let cable = Cable::straight(l / stretch, 4, ElementType::Sac2).with_direction([
+        phi.sin(),
+        0.0,
+        -phi.cos(),
+    ]);
+    let model = Model::new(cable, line, ModelOptions::default(), vec![]).expect("model");
+    let mut state = model.initial_state();
+    for node in 0..model.nodes() {
+        for slot in 0..2 {
+            let o = model.coordinate(node, slot, 0);
+            for c in 0..3 {
+                state.e[o + c] *= stretch;
+            }
+        }
+    }
+    (model, state)
 }
 
 /// A body of 10 kg (moment 0.5 kg m^2 about its centre) hanging by a
@@ -323,32 +337,10 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
 fn a_body_hanging_from_a_line_swings_as_a_double_pendulum() {
     let (m, inertia, l, d, g) = (10.0, 0.5, 1.0, 0.5, 9.81);
     let (phi1, phi2) = (0.001f64, -0.0015f64);
-    let line = stancf::Material {
-        youngs_modulus: 1e9,
-        density: 10.0,
-        area: 1e-4,
-        second_moment: 1e-14,
-        axial_damping: 0.0,
-    };
     let top = [l * phi1.sin(), 0.0, -l * phi1.cos()];
     let centre = [top[0] + d * phi2.sin(), 0.0, top[2] - d * phi2.cos()];
     // Unstretched so that the body's weight stretches it to l.
-    let stretch = 1.0 + m * g / (line.youngs_modulus * line.area);
-    let cable = Cable::straight(l / stretch, 4, ElementType::Sac2).with_direction([
-        phi1.sin(),
-        0.0,
-        -phi1.cos(),
-    ]);
-    let model = Model::new(cable, line, ModelOptions::default(), vec![]).expect("model");
-    let mut state = model.initial_state();
-    for node in 0..model.nodes() {
-        for slot in 0..2 {
-            let o = model.coordinate(node, slot, 0);
-            for c in 0..3 {
-                state.e[o + c] *= stretch;
-            }
-        }
-    }
+    let (model, state) = pendulum_line(l, phi1, m * g);
     // Body axes: the point is 0.5 m up the body's z axis, turned by phi2
     // about y (R_y(-phi2) takes +z to (-sin phi2, 0, cos phi2)).
     let body = Body::new(
@@ -421,31 +413,9 @@ fn a_body_hanging_from_a_line_swings_as_a_double_pendulum() {
 fn a_swinging_body_in_water_loses_what_its_drag_takes() {
     let run = |dt: f64| {
         let (m, l, g, volume) = (10.0, 1.0, 9.81, 0.004);
-        let line = stancf::Material {
-            youngs_modulus: 1e9,
-            density: 10.0,
-            area: 1e-4,
-            second_moment: 1e-14,
-            axial_damping: 0.0,
-        };
         let phi = 0.3f64;
         let net = (m - 1025.0 * volume) * g;
-        let stretch = 1.0 + net * phi.cos() / (line.youngs_modulus * line.area);
-        let cable = Cable::straight(l / stretch, 4, ElementType::Sac2).with_direction([
-            phi.sin(),
-            0.0,
-            -phi.cos(),
-        ]);
-        let model = Model::new(cable, line, ModelOptions::default(), vec![]).expect("model");
-        let mut state = model.initial_state();
-        for node in 0..model.nodes() {
-            for slot in 0..2 {
-                let o = model.coordinate(node, slot, 0);
-                for c in 0..3 {
-                    state.e[o + c] *= stretch;
-                }
-            }
-        }
+        let (model, state) = pendulum_line(l, phi, net * phi.cos());
         let top = [l * phi.sin(), 0.0, -l * phi.cos()];
         let mut body = Body::new(
             BodyKind::Free,

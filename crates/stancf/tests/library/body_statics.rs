@@ -108,16 +108,7 @@ fn buoy_in(
 /// tolerance, 1e-12, on the lines' rows).
 #[test]
 fn a_buoy_held_by_three_lines_balances_their_catenaries() {
-    let system = moored_buoy();
-    let seeds = stancf::system::catenary_states(&system);
-    let settings = StaticSettings {
-        tolerance: 1e-12,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = solved(moored_buoy());
     let (position, rotation) = statics.body_pose(0).expect("a free body");
     let centre = stancf::body::pose::point(position, &rotation, [0.0, 0.0, -0.3]);
     let lift = (RHO * 2.0 - 500.0) * 9.81;
@@ -176,16 +167,7 @@ fn a_buoy_held_by_three_lines_balances_their_catenaries() {
 /// is the static potential, exactly) being far below that.
 #[test]
 fn a_moored_buoy_started_at_its_equilibrium_stays_put() {
-    let system = moored_buoy();
-    let seeds = stancf::system::catenary_states(&system);
-    let settings = StaticSettings {
-        tolerance: 1e-12,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = solved(moored_buoy());
     let at_rest = statics.system_at_equilibrium();
     let (position, _) = statics.body_pose(0).unwrap();
     let steps = StepSettings {

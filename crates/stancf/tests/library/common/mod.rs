@@ -216,3 +216,25 @@ pub fn step_settings(dt: f64, scheme: TimeScheme, tolerance: f64) -> StepSetting
         ..StepSettings::default()
     }
 }
+
+/// The relative difference (as [`rel_diff`]) between the next step's
+/// Jacobian of `sim` at its predicted unknowns and central differences
+/// of its rows with step h.
+pub fn step_jacobian_error(sim: &mut stancf::system::SystemSimulation, h: f64) -> f64 {
+    use stancf::linear::Jacobian;
+    let (jac, x) = sim.next_step_jacobian();
+    let n = x.len();
+    let mut analytic = Vec::with_capacity(n * n);
+    let mut fd = Vec::with_capacity(n * n);
+    for c in 0..n {
+        let (mut xp, mut xm) = (x.clone(), x.clone());
+        xp[c] += h;
+        xm[c] -= h;
+        let (rp, rm) = (sim.next_step_residual(&xp), sim.next_step_residual(&xm));
+        for r in 0..n {
+            fd.push((rp[r] - rm[r]) / (2.0 * h));
+            analytic.push(jac.get(r, c));
+        }
+    }
+    rel_diff(&analytic, &fd)
+}
