@@ -270,19 +270,46 @@ fn a_deck_with_a_free_body_passes_check_and_runs_statics_and_motion() {
     assert!(moved < 1e-9, "{moved:e}");
 }
 
-/// The deck's refusals name its line: a coupled body, a point on a body
-/// with a mass of its own, a free body without moments of inertia (which
-/// MoorDyn takes, its body's inertia holding the line ends').
+/// A point on a deck's free body with a mass and a volume of its own (10
+/// kg, 4 litres) adds its weight and its buoyancy to the body's (as
+/// MoorDyn's point on a body does: docs/method.md §15.8): at the static
+/// equilibrium the line holds (21244 + 10 - 1025 x 0.004) g, to the
+/// static tolerance (1e-9 of it).
 #[test]
-fn a_coupled_body_a_heavy_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
+fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
+    let d = scratch("body-heavy-point");
+    let deck = write_scenario(
+        &d,
+        "deck.dat",
+        &body_deck(
+            "",
+            " 1        Body1     0        0         0        10        0.004        0        0",
+            "",
+        ),
+    );
+    let out = d.join("static");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let weight = (21244.0 + 10.0 - 1025.0 * 0.004) * 9.80665;
+    let (_, rows) = read_csv(&out.join("bodies.csv"));
+    let fz = rows[0][16];
+    eprintln!("the line holds {fz} N, the body and its point weigh {weight} N in water");
+    assert!((fz - weight).abs() < 1e-9 * weight, "{fz} against {weight}");
+}
+
+/// The deck's refusals name its line: a coupled body, a point on a body
+/// with a drag area of its own, a free body without moments of inertia
+/// (which MoorDyn takes, its body's inertia holding the line ends').
+#[test]
+fn a_coupled_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
     let coupled = body_deck(
         " 1     Coupled    0      0    -50     0      0      0    2.1244e4    0    1.0e4    0     0        0",
         "",
         "",
     );
-    let heavy_point = body_deck(
+    let dragging_point = body_deck(
         "",
-        " 1        Body1     0        0         0        10        0        0        0",
+        " 1        Body1     0        0         0        0        0        1.5        0",
         "",
     );
     let no_inertia = body_deck(
@@ -298,10 +325,10 @@ fn a_coupled_body_a_heavy_body_point_or_a_body_without_inertia_in_a_deck_is_refu
             "coupled bodies are not built yet",
         ),
         (
-            "heavy-point",
-            heavy_point,
-            "Body1     0        0         0        10",
-            "a point on a body with its own mass, volume or drag is not built yet",
+            "dragging-point",
+            dragging_point,
+            "Body1     0        0         0        0        0        1.5",
+            "the drag and added mass of a point on a body are not built",
         ),
         ("no-inertia", no_inertia, "1     free", "MoorDyn accepts it"),
     ] {

@@ -211,7 +211,8 @@ fn drag_areas(row: &Row, what: &str) -> Result<([f64; 3], [f64; 3]), DeckError> 
 }
 
 /// Checks the points on bodies (`Body<n>`, [`Attachment::Body`]): body n
-/// exists, and the point carries no mass, volume or drag of its own.
+/// exists, and the point carries no drag or added mass of its own (nor a
+/// mass or volume on a fixed body).
 pub(crate) fn check_body_points(
     points: &[DeckPoint],
     bodies: &[DeckBody],
@@ -230,14 +231,30 @@ pub(crate) fn check_body_points(
                 ),
             ));
         }
-        if [p.mass, p.volume, p.cda, p.ca].iter().any(|&v| v != 0.0) {
+        // Its mass and volume join a free body (docs/method.md §15.8);
+        // its drag and added mass are not built.
+        let free = bodies[n - 1].attachment == BodyAttachment::Free;
+        let own = if free {
+            [p.cda, p.ca]
+        } else {
+            [p.mass + p.volume.abs(), p.cda.abs() + p.ca.abs()]
+        };
+        if own.iter().any(|&v| v != 0.0) {
             return Err(DeckError::at(
                 p.line,
                 format!(
-                    "point {} is on body {n} with Mass {}, Volume {}, CdA {} and Ca {}: a point \
-                     on a body with its own mass, volume or drag is not built yet (give them to \
-                     the body, or set them to 0)",
-                    p.id, p.mass, p.volume, p.cda, p.ca
+                    "point {} is on body {n} with Mass {}, Volume {}, CdA {} and Ca {}: {}",
+                    p.id,
+                    p.mass,
+                    p.volume,
+                    p.cda,
+                    p.ca,
+                    if free {
+                        "the drag and added mass of a point on a body are not built (give them \
+                         to the body, or set CdA and Ca to 0)"
+                    } else {
+                        "a point on a fixed body carries no mass, volume or drag of its own"
+                    }
                 ),
             ));
         }

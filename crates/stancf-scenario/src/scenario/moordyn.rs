@@ -141,7 +141,9 @@ fn deck_line_type(t: &crate::moordyn::LineType) -> LineType {
 /// has none, checked on reading). A point on a body (`bodies`: the
 /// deck's) is where the body's pose puts its X, Y, Z.
 fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoint {
-    let free = p.attachment == Attachment::Free;
+    // A free point's mass and water, and a point's on a body (its mass
+    // and volume, which become the body's; checked on reading).
+    let free = matches!(p.attachment, Attachment::Free | Attachment::Body(_));
     let if_free = |v: f64| if free { v } else { 0.0 };
     let (kind, position) = match p.attachment {
         Attachment::Fixed => (PointType::Fixed, p.position),

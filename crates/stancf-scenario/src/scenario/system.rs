@@ -270,10 +270,18 @@ fn points(
             ("cda", r.cda.is_some()),
             ("ca", r.ca.is_some()),
         ];
-        if let (false, Some((k, _))) = (kind == PointType::Free, given.iter().find(|g| g.1)) {
-            let why = if word == "body" {
-                "a point on a body with its own mass, force, volume or drag is not built yet \
-                 (give them to the body)"
+        // A point on a free body may carry a mass, a force and a volume:
+        // they become the body's (docs/method.md §15.8); its drag and added
+        // mass are not built.
+        let on_free_body = matches!(kind, PointType::Body { body, .. } if bodies[body].is_free());
+        let allowed =
+            |k: &str| kind == PointType::Free || (on_free_body && !matches!(k, "cda" | "ca"));
+        if let Some((k, _)) = given.iter().find(|g| g.1 && !allowed(g.0)) {
+            let why = if word == "body" && on_free_body {
+                "the drag and added mass of a point on a body are not built (give them to the \
+                 body)"
+            } else if word == "body" {
+                "a point on a fixed body carries no mass, force or water of its own"
             } else {
                 "only a free point carries a mass, a force or water loads (a fixed or coupled \
                  point's position is given)"

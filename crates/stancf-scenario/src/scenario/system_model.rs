@@ -249,31 +249,57 @@ fn library_point(
     match p.kind {
         PointType::Fixed => Point::fixed(p.position),
         // At its position at t = 0 already: the lines' models start there.
-        PointType::Body { body, local } => Point {
-            position: p.position,
-            ..Point::on_body(body, local)
-        },
+        // Its mass, force and volume become the body's (the core folds
+        // them, docs/method.md §15.8).
+        PointType::Body { body, local } => {
+            let (mass, force, water) = own_loads(p, water, fluid, gravity, false);
+            Point {
+                position: p.position,
+                mass,
+                force,
+                water,
+                ..Point::on_body(body, local)
+            }
+        }
         PointType::Coupled => Point::coupled(p.position, p.motion.clone()),
         PointType::Free => {
-            let in_water = fluid.map(|f| stancf::water::PointInWater {
-                water: Arc::clone(f),
-                volume: p.volume,
-                drag_area: p.drag_area,
-                ca: p.ca,
-            });
-            let buoyancy = match (water, &in_water) {
-                (Some(w), None) => w.density * p.volume,
-                _ => 0.0,
-            };
+            let (mass, force, water) = own_loads(p, water, fluid, gravity, true);
             Point {
                 kind: PointKind::Free,
                 position: p.position,
-                mass: p.mass,
-                force: std::array::from_fn(|k| p.force[k] - buoyancy * gravity[k]),
-                water: in_water,
+                mass,
+                force,
+                water,
             }
         }
     }
+}
+
+/// A point's own mass, force and water: in water (`fluid`) its volume's
+/// buoyancy, drag and added mass (a free point's always, `always`; a
+/// body's point's only if it has any); for the wet-weight seed (water
+/// given, `fluid` None) its buoyancy as a constant force -rho_w V g.
+fn own_loads(
+    p: &SystemPoint,
+    water: Option<&Water>,
+    fluid: Option<&Arc<stancf::water::Water>>,
+    gravity: [f64; 3],
+    always: bool,
+) -> (f64, [f64; 3], Option<stancf::water::PointInWater>) {
+    let in_water = fluid
+        .filter(|_| always || p.volume != 0.0 || p.drag_area != 0.0 || p.ca != 0.0)
+        .map(|f| stancf::water::PointInWater {
+            water: Arc::clone(f),
+            volume: p.volume,
+            drag_area: p.drag_area,
+            ca: p.ca,
+        });
+    let buoyancy = match (water, &in_water) {
+        (Some(w), None) => w.density * p.volume,
+        _ => 0.0,
+    };
+    let force = std::array::from_fn(|k| p.force[k] - buoyancy * gravity[k]);
+    (p.mass, force, in_water)
 }
 
 /// The core's section of a line type (A = pi d^2 / 4 of its diameter).
