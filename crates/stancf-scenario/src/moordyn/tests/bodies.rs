@@ -166,21 +166,30 @@ fn a_point_on_a_body_is_read_in_the_bodys_axes_and_checked() {
             .contains("which BODIES does not define (0 bodies)"),
         "{e}"
     );
-    // Its own mass, volume or drag.
-    for row in [
-        "2 Body1 0 0 -1 5 0 0 0",
-        "2 Body1 0 0 -1 0 1 0 0",
-        "2 Body1 0 0 -1 0 0 0 1",
-    ] {
+    // Its own drag or added mass are refused; its mass and volume are
+    // read (they become the free body's).
+    for row in ["2 Body1 0 0 -1 0 0 1.5 0", "2 Body1 0 0 -1 0 0 0 1"] {
         let text = with_body(body_row).replace("2 Coupled 0 0 -5 0 0 0 0", row);
         let e = error(&text);
         assert_eq!(e.line, Some(line_of(&text, row)), "{row}");
         assert!(
             e.message
-                .contains("a point on a body with its own mass, volume or drag is not built yet"),
+                .contains("the drag and added mass of a point on a body are not built"),
             "{e}"
         );
     }
+    let text = with_body(body_row).replace("2 Coupled 0 0 -5 0 0 0 0", "2 Body1 0 0 -1 5 0.2 0 0");
+    let deck = parse(&text).unwrap();
+    assert_eq!((deck.points[1].mass, deck.points[1].volume), (5.0, 0.2));
+    // On a fixed body even its mass is refused.
+    let fixed = with_body("1 Fixed 0 0 -3 0 0 0 0 0 0 0 0 0")
+        .replace("2 Coupled 0 0 -5 0 0 0 0", "2 Body1 0 0 -1 5 0 0 0");
+    let e = error(&fixed);
+    assert!(
+        e.message
+            .contains("a point on a fixed body carries no mass, volume or drag of its own"),
+        "{e}"
+    );
 }
 
 #[test]
