@@ -125,43 +125,27 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
         line_figures(&f, sc, j, &g_key, water.as_ref())?;
     }
     for p in 0..sc.points.len() {
-        point_figures(&f, sc, p, &g_key, water.as_ref())?;
+        let pt = &sc.points[p];
+        let key = |k: &str, c: &str| sc.names.point(p, k, c);
+        weight_figures(
+            &f,
+            sc,
+            ("point", pt.mass, pt.volume),
+            key,
+            &g_key,
+            water.as_ref(),
+        )?;
     }
     for b in 0..sc.bodies.len() {
-        body_figures(&f, sc, b, &g_key, water.as_ref())?;
-    }
-    Ok(())
-}
-
-/// Body b's weight and buoyancy.
-fn body_figures(
-    f: &Figures,
-    sc: &SystemScenario,
-    b: usize,
-    g_key: &str,
-    water: Option<&WaterKeys>,
-) -> Result<(), Failure> {
-    let body = &sc.bodies[b];
-    let g = magnitude(&sc.gravity);
-    let key = |k: &str, c: &str| sc.names.body(b, k, c);
-    f.need(
-        "the body's weight m g",
-        body.mass * g,
-        " N",
-        &[key("mass", "Mass"), g_key.to_string()],
-        Rule::Scale,
-    )?;
-    if let (Some(w), Some(water)) = (water, sc.water.as_ref()) {
-        f.need(
-            "the body's buoyancy rho_w g V",
-            water.density * g * body.volume,
-            " N",
-            &[
-                key("volume", "Volume"),
-                w.density.clone(),
-                g_key.to_string(),
-            ],
-            Rule::Scale,
+        let body = &sc.bodies[b];
+        let key = |k: &str, c: &str| sc.names.body(b, k, c);
+        weight_figures(
+            &f,
+            sc,
+            ("body", body.mass, body.volume),
+            key,
+            &g_key,
+            water.as_ref(),
         )?;
     }
     Ok(())
@@ -455,28 +439,28 @@ fn line_figures(
     )
 }
 
-/// Point p's weight and buoyancy.
-fn point_figures(
+/// The weight m g and, in water, the buoyancy rho_w g V of a point or a
+/// body (`what`), their keys named by `key(key, deck column)`.
+fn weight_figures(
     f: &Figures,
     sc: &SystemScenario,
-    p: usize,
+    (what, mass, volume): (&str, f64, f64),
+    key: impl Fn(&str, &str) -> String,
     g_key: &str,
     water: Option<&WaterKeys>,
 ) -> Result<(), Failure> {
-    let pt = &sc.points[p];
     let g = magnitude(&sc.gravity);
-    let key = |k: &str, c: &str| sc.names.point(p, k, c);
     f.need(
-        "the point's weight m g",
-        pt.mass * g,
+        &format!("the {what}'s weight m g"),
+        mass * g,
         " N",
         &[key("mass", "Mass"), g_key.to_string()],
         Rule::Scale,
     )?;
     if let (Some(w), Some(water)) = (water, sc.water.as_ref()) {
         f.need(
-            "the point's buoyancy rho_w g V",
-            water.density * g * pt.volume,
+            &format!("the {what}'s buoyancy rho_w g V"),
+            water.density * g * volume,
             " N",
             &[
                 key("volume", "Volume"),

@@ -54,6 +54,26 @@ pub struct SystemBody {
 }
 
 impl SystemBody {
+    /// A fixed body `id` at `position` turned by MoorDyn's `angles`
+    /// (degrees): its inertia, water and velocities zero.
+    pub fn fixed(id: i64, position: [f64; 3], angles: [f64; 3]) -> Self {
+        SystemBody {
+            id,
+            kind: BodyType::Fixed,
+            position,
+            angles,
+            mass: 0.0,
+            centre_of_mass: [0.0; 3],
+            moments: [0.0; 3],
+            volume: 0.0,
+            drag_areas: [0.0; 3],
+            rotational_drag_areas: [0.0; 3],
+            ca: [0.0; 3],
+            velocity: [0.0; 3],
+            angular_velocity: [0.0; 3],
+        }
+    }
+
     /// Body axes to global at t = 0.
     pub fn rotation(&self) -> [[f64; 3]; 3] {
         pose::rotation_from_moordyn_angles(self.angles)
@@ -143,19 +163,8 @@ pub(super) fn bodies(ctx: &Ctx, raw: &[RawBody]) -> Result<Vec<SystemBody>, Scen
         )?;
         let angles = ctx.vector_or(&key("angles"), r.angles.as_deref(), [0.0; 3])?;
         let fixed = SystemBody {
-            id,
             kind,
-            position,
-            angles,
-            mass: 0.0,
-            centre_of_mass: [0.0; 3],
-            moments: [0.0; 3],
-            volume: 0.0,
-            drag_areas: [0.0; 3],
-            rotational_drag_areas: [0.0; 3],
-            ca: [0.0; 3],
-            velocity: [0.0; 3],
-            angular_velocity: [0.0; 3],
+            ..SystemBody::fixed(id, position, angles)
         };
         if kind == BodyType::Fixed {
             if let Some(k) = FREE_KEYS.iter().zip(r.free_keys()).find(|(_, g)| *g) {

@@ -179,21 +179,7 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
 /// masses of the line ends and rods attached to it
 /// (docs/moordyn-bodies-rods.md §2.3): refused naming the deck's line.
 fn deck_body(b: &DeckBody, file: &str) -> Result<SystemBody, ScenarioError> {
-    let fixed = SystemBody {
-        id: b.id as i64,
-        kind: BodyType::Fixed,
-        position: b.position,
-        angles: b.angles,
-        mass: 0.0,
-        centre_of_mass: [0.0; 3],
-        moments: [0.0; 3],
-        volume: 0.0,
-        drag_areas: [0.0; 3],
-        rotational_drag_areas: [0.0; 3],
-        ca: [0.0; 3],
-        velocity: [0.0; 3],
-        angular_velocity: [0.0; 3],
-    };
+    let fixed = SystemBody::fixed(b.id as i64, b.position, b.angles);
     if b.attachment == BodyAttachment::Fixed {
         return Ok(fixed);
     }

@@ -5,7 +5,7 @@
 //! take the converged step.
 
 use super::end_forces::position_row_sum;
-use super::layout::add_lines_rows;
+use super::layout::add_line_rows;
 use super::point_terms::PointTerms;
 use super::simulation::{step_problem, SystemSimulation};
 use super::step_equations::StepOfSystem;
@@ -91,16 +91,25 @@ impl SystemSimulation {
         }
         // The bodies' end momenta (B14) from the lines' rows at their
         // points, then the bodies move to the step's end.
+        // (only the lines with an end on a body's point are assembled again)
         if !self.bodies.is_empty() {
-            add_lines_rows(
-                &mut self.lines,
-                &self.layout.maps,
-                (&mut self.x_local, &mut self.residual_local),
-                &self.x,
-                &mut self.body_rows,
-                None,
-                |line, xl, rl, view| line.assemble_line(xl, rl, view),
-            );
+            self.body_rows.fill(0.0);
+            for (i, line) in self.lines.iter_mut().enumerate() {
+                let on_body = self.topology.line_ends()[i].iter().any(
+                    |e| matches!(e, End::Point(p) if self.topology.points()[*p].body().is_some()),
+                );
+                if on_body {
+                    add_line_rows(
+                        &self.layout.maps[i],
+                        i,
+                        &self.x,
+                        (&mut self.x_local[i][..], &mut self.residual_local[i][..]),
+                        &mut self.body_rows,
+                        None,
+                        |xl, rl, view| line.assemble_line(xl, rl, view),
+                    );
+                }
+            }
         }
         for (k, body) in self.bodies.iter_mut().enumerate() {
             let xb = body.unknowns(&self.layout, &self.x);
