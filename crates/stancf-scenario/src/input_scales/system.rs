@@ -124,30 +124,7 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
     for j in 0..sc.lines.len() {
         line_figures(&f, sc, j, &g_key, water.as_ref())?;
     }
-    for p in 0..sc.points.len() {
-        let pt = &sc.points[p];
-        let key = |k: &str, c: &str| sc.names.point(p, k, c);
-        weight_figures(
-            &f,
-            sc,
-            ("point", pt.mass, pt.volume),
-            key,
-            &g_key,
-            water.as_ref(),
-        )?;
-    }
-    for b in 0..sc.bodies.len() {
-        let body = &sc.bodies[b];
-        let key = |k: &str, c: &str| sc.names.body(b, k, c);
-        weight_figures(
-            &f,
-            sc,
-            ("body", body.mass, body.volume),
-            key,
-            &g_key,
-            water.as_ref(),
-        )?;
-    }
+    weights_of_points_and_bodies(&f, sc, &g_key, water.as_ref())?;
     Ok(())
 }
 
@@ -437,6 +414,25 @@ fn line_figures(
         &[ty("ei", "EI"), m, length, elements],
         Rule::Below(MAX_FREQUENCY),
     )
+}
+
+/// Every point's and every body's weight and buoyancy
+/// ([`weight_figures`]).
+fn weights_of_points_and_bodies(
+    f: &Figures,
+    sc: &SystemScenario,
+    g_key: &str,
+    water: Option<&WaterKeys>,
+) -> Result<(), Failure> {
+    for (p, pt) in sc.points.iter().enumerate() {
+        let key = |k: &str, c: &str| sc.names.point(p, k, c);
+        weight_figures(f, sc, ("point", pt.mass, pt.volume), key, g_key, water)?;
+    }
+    for (b, body) in sc.bodies.iter().enumerate() {
+        let key = |k: &str, c: &str| sc.names.body(b, k, c);
+        weight_figures(f, sc, ("body", body.mass, body.volume), key, g_key, water)?;
+    }
+    Ok(())
 }
 
 /// The weight m g and, in water, the buoyancy rho_w g V of a point or a
