@@ -55,6 +55,10 @@ pub enum FailureKind {
     /// creeps toward a load factor it cannot pass (each increment
     /// converged).
     PathStalled,
+    /// The motion left what the model covers (a rod under water reached
+    /// the surface, where its buoyancy and water are not built): the
+    /// steps before are valid, the run cannot go on.
+    OutsideModel,
 }
 
 /// A step that failed. Everything before `step` converged and is valid.
@@ -86,6 +90,7 @@ impl fmt::Display for SolverError {
             FailureKind::SingularJacobian => "the Jacobian is singular",
             FailureKind::EnergyGrowth => "the energy grows without a source (unstable step)",
             FailureKind::PathStalled => "the static load path stalled",
+            FailureKind::OutsideModel => "the motion left what the model covers",
         };
         if self.detail.starts_with(STATIC_SOLVE) {
             write!(f, "{what} at load factor {} (increment", Sig(self.time))?;

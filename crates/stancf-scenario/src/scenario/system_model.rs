@@ -144,6 +144,7 @@ impl SystemScenario {
                 drag_areas: b.drag_areas,
                 rotational_drag_areas: b.rotational_drag_areas,
                 current: super::bodies::uniform_current(w).unwrap_or([0.0; 3]),
+                rods: Vec::new(),
             }),
             _ => None,
         };

@@ -357,6 +357,9 @@ impl FreeBody {
     }
 
     /// The body's mass, centre of mass and inertia.
+    pub fn water(&self) -> Option<&BodyWater> {
+        self.water.as_ref()
+    }
     pub fn inertia(&self) -> &RigidInertia {
         &self.inertia
     }

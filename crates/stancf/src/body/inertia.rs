@@ -35,16 +35,27 @@ impl RigidInertia {
     }
 
     /// The body with a point mass m added at `at` (body axes, from the
-    /// reference point): the masses add, the centre moves to their
-    /// barycentre and each part's inertia is carried to it (the parallel
-    /// axis theorem, I + m (|d|^2 1 - d d^T)).
+    /// reference point): [`Self::with_part`] with a part of no size.
     pub fn with_point_mass(&self, m: f64, at: [f64; 3]) -> RigidInertia {
-        let total = self.mass + m;
+        self.with_part(&RigidInertia {
+            mass: m,
+            centre_of_mass: at,
+            inertia_at_centre: [[0.0; 3]; 3],
+        })
+    }
+
+    /// The body with a rigid part joined to it (a rod, a point mass): the
+    /// masses add, the centre moves to their barycentre and each part's
+    /// inertia is carried to it (the parallel axis theorem,
+    /// I + m (|d|^2 1 - d d^T)).
+    pub fn with_part(&self, part: &RigidInertia) -> RigidInertia {
+        let total = self.mass + part.mass;
         if total <= 0.0 {
             return self.clone();
         }
-        let centre: [f64; 3] =
-            std::array::from_fn(|i| (self.mass * self.centre_of_mass[i] + m * at[i]) / total);
+        let centre: [f64; 3] = std::array::from_fn(|i| {
+            (self.mass * self.centre_of_mass[i] + part.mass * part.centre_of_mass[i]) / total
+        });
         let shift = |mass: f64, from: [f64; 3]| -> [[f64; 3]; 3] {
             let d: [f64; 3] = std::array::from_fn(|i| from[i] - centre[i]);
             let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -52,12 +63,18 @@ impl RigidInertia {
                 std::array::from_fn(|j| mass * (if i == j { dd } else { 0.0 } - d[i] * d[j]))
             })
         };
-        let (a, b) = (shift(self.mass, self.centre_of_mass), shift(m, at));
+        let a = shift(self.mass, self.centre_of_mass);
+        let b = shift(part.mass, part.centre_of_mass);
         RigidInertia {
             mass: total,
             centre_of_mass: centre,
             inertia_at_centre: std::array::from_fn(|i| {
-                std::array::from_fn(|j| self.inertia_at_centre[i][j] + a[i][j] + b[i][j])
+                std::array::from_fn(|j| {
+                    self.inertia_at_centre[i][j]
+                        + part.inertia_at_centre[i][j]
+                        + a[i][j]
+                        + b[i][j]
+                })
             }),
         }
     }

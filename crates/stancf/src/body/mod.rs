@@ -16,6 +16,7 @@
 //! | [`rotation`] | the exponential (B4) and the body rate (B3) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
 //! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B9)-(B10) |
+//! | [`rod`] | a rigid cylinder in a body: its inertia, added mass and drag (B17)-(B19) |
 //! | [`attach`] | a point fixed to a body over a step (B11), on jets |
 //! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B8) |
 
@@ -24,9 +25,11 @@ pub mod free;
 pub mod inertia;
 pub mod jet;
 pub mod pose;
+pub mod rod;
 pub mod rotation;
 pub mod terms;
 
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;
+pub use rod::Rod;
 pub use terms::BodyWater;

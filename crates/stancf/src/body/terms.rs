@@ -18,6 +18,7 @@
 //! reference point moves by dr_G + R (c x eta)).
 
 use super::jet::{cross, dot, Jet, JetVec};
+use super::rod::length;
 use super::rotation::{body_rate, times, turn};
 
 /// Variables at a time point: v_G (0..3), theta (3..6), theta_dot (6..9).
@@ -25,7 +26,10 @@ pub const NV: usize = 9;
 
 /// A body's water: MoorDyn's Volume, Ca and CdA (body axes; the rotational
 /// drag area multiplies Omega |Omega|, as MoorDyn's does), with the
-/// water's density and a uniform steady current.
+/// water's density and a uniform steady current, and the body's rods
+/// under water, whose added mass and drag the water adds (B18)-(B19;
+/// their buoyancy is a constant force of the body's, their mass in its
+/// inertia: [`crate::system::Body`] puts them there).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct BodyWater {
     pub density: f64,
@@ -34,6 +38,7 @@ pub struct BodyWater {
     pub drag_areas: [f64; 3],
     pub rotational_drag_areas: [f64; 3],
     pub current: [f64; 3],
+    pub rods: Vec<super::Rod>,
 }
 
 impl BodyWater {
@@ -57,6 +62,9 @@ impl BodyWater {
                     format!("{values:?}: must be finite and not negative"),
                 ));
             }
+        }
+        for (k, rod) in self.rods.iter().enumerate() {
+            rod.validate(&format!("{key}.rods[{k}]"))?;
         }
         if self.current.iter().any(|v| !v.is_finite()) {
             return Err(crate::error::ModelError::invalid(
@@ -85,16 +93,6 @@ fn constant(v: [f64; 3]) -> JetVec<NV> {
     v.map(Jet::constant)
 }
 
-/// |x| on jets, with zero derivatives at x = 0 (where x |x| has them).
-fn length(x: &JetVec<NV>) -> Jet<NV> {
-    let s = dot(x, x);
-    if s.v <= 0.0 {
-        return Jet::constant(0.0);
-    }
-    let r = s.v.sqrt();
-    s.compose(r, 0.5 / r, -0.25 / (r * s.v))
-}
-
 impl Context<'_> {
     /// Omega and u of (B9) (body axes).
     fn rates(&self, v: &[JetVec<NV>; 3]) -> (JetVec<NV>, JetVec<NV>) {
@@ -120,6 +118,9 @@ impl Context<'_> {
             for i in 0..3 {
                 t = t + (u[i] * u[i]).scale(0.5 * a[i]);
             }
+            for rod in &w.rods {
+                t = t + rod.added_mass_energy(&u, &omega, w.density);
+            }
         }
         t
     }
@@ -135,20 +136,29 @@ impl Context<'_> {
         density
     }
 
-    /// The drag's generalized forces (B10): on r_G (global) and on theta.
+    /// The drag's generalized forces (B10), (B19): on r_G (global) and on
+    /// theta, from the drag's resultant f and its moment about the centre
+    /// of mass M_G (body axes): Q_r = R f, Q_theta = J_r^T M_G.
     pub fn drag(&self, v: &[JetVec<NV>; 3]) -> Option<(JetVec<NV>, JetVec<NV>)> {
         let w = self.water?;
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
         let speed = length(&u);
-        let f: JetVec<NV> =
+        let mut f: JetVec<NV> =
             std::array::from_fn(|i| (u[i] * speed).scale(-half_rho * w.drag_areas[i]));
         let spin = length(&omega);
-        let moment: JetVec<NV> = std::array::from_fn(|i| {
-            (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
-        });
+        // The reference point is at -c from the centre: (-c) x f = f x c.
         let f_x_c = cross(&f, &constant(self.centre_of_mass));
-        let on_eta: JetVec<NV> = std::array::from_fn(|i| f_x_c[i] + moment[i]);
+        let mut on_eta: JetVec<NV> = std::array::from_fn(|i| {
+            f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
+        });
+        for rod in &w.rods {
+            let (force, moment) = rod.drag(&u, &omega, w.density, self.centre_of_mass);
+            for i in 0..3 {
+                f[i] = f[i] + force[i];
+                on_eta[i] = on_eta[i] + moment[i];
+            }
+        }
         // J_r^T q is (B3) at -theta.
         let minus_theta = v[1].map(|t| -t);
         let on_theta = body_rate(&minus_theta, &on_eta);
@@ -177,6 +187,7 @@ mod tests {
             drag_areas: [0.8, 1.3, 2.1],
             rotational_drag_areas: [0.4, 0.6, 0.9],
             current: [0.2, -0.1, 0.05],
+            rods: Vec::new(),
         };
         let ctx = Context {
             mass: 800.0,
@@ -228,5 +239,63 @@ mod tests {
             (power_q - power).abs() < 1e-12 * power.abs(),
             "{power_q} vs {power}"
         );
+    }
+
+    /// The drag's generalized forces with a rod (B19) carry their exact
+    /// derivatives in the nine variables: against central differences of
+    /// their values.
+    #[test]
+    fn the_drags_derivatives_with_a_rod_are_exact() {
+        let rotation_a = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
+        let water = BodyWater {
+            density: 1025.0,
+            drag_areas: [0.8, 1.3, 2.1],
+            current: [0.2, -0.1, 0.05],
+            rods: vec![super::super::Rod {
+                end_a: [0.2, -0.3, -0.5],
+                end_b: [0.9, 0.4, -1.8],
+                diameter: 0.3,
+                mass_per_length: 40.0,
+                drag_coefficient: 1.2,
+                added_mass_coefficient: 1.0,
+                end_drag_coefficient: 0.8,
+                end_added_mass_coefficient: 0.5,
+                segments: 3,
+            }],
+            ..BodyWater::default()
+        };
+        let ctx = Context {
+            mass: 800.0,
+            inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
+            centre_of_mass: [0.3, -0.4, 0.5],
+            rotation_a: &rotation_a,
+            loads: &[],
+            water: Some(&water),
+        };
+        let at = [0.7, -0.3, 0.4, 0.3, -0.5, 0.8, 0.2, 0.5, -0.6];
+        let eval = |x: &[f64; 9]| {
+            let v: [JetVec<NV>; 3] =
+                std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i)));
+            let (a, b) = ctx.drag(&v).unwrap();
+            [a[0], a[1], a[2], b[0], b[1], b[2]]
+        };
+        let exact = eval(&at);
+        let h = 1e-6;
+        let mut worst = 0.0f64;
+        for j in 0..9 {
+            let (mut p, mut m) = (at, at);
+            p[j] += h;
+            m[j] -= h;
+            let (fp, fm) = (eval(&p), eval(&m));
+            for r in 0..6 {
+                let fd = (fp[r].v - fm[r].v) / (2.0 * h);
+                worst = worst.max((fd - exact[r].g[j]).abs() / exact[r].v.abs().max(1.0));
+                for k in 0..9 {
+                    let fd2 = (fp[r].g[k] - fm[r].g[k]) / (2.0 * h);
+                    worst = worst.max((fd2 - exact[r].h[k][j]).abs() / exact[r].v.abs().max(1.0));
+                }
+            }
+        }
+        assert!(worst < 1e-6, "{worst:e}");
     }
 }

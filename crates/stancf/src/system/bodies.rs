@@ -15,7 +15,7 @@
 //!   load the body through the chain rule (§15.7).
 
 use super::{Point, PointKind};
-use crate::body::{BodyForces, BodyWater, FreeBody, RigidInertia};
+use crate::body::{BodyForces, BodyWater, FreeBody, RigidInertia, Rod};
 use crate::error::ModelError;
 use crate::scheme::TimeScheme;
 
@@ -55,6 +55,11 @@ pub struct Body {
     /// reference point): a point's weight, buoyancy and given force when
     /// the point is on the body (see [`super::System::with_bodies`]).
     pub loads: Vec<([f64; 3], [f64; 3])>,
+    /// Rods fixed in the body (body axes, from the reference point): on a
+    /// free body their mass joins its inertia, and under water their
+    /// buoyancy joins its loads and their added mass and drag its water
+    /// (docs/method.md §15.10; [`super::System::with_bodies`] folds them).
+    pub rods: Vec<Rod>,
 }
 
 impl Body {
@@ -74,7 +79,25 @@ impl Body {
             angular_velocity: [0.0; 3],
             water: None,
             loads: Vec::new(),
+            rods: Vec::new(),
         }
+    }
+
+    /// A body that is one rod (MoorDyn's free, fixed or coupled rod): its
+    /// reference point at the rod's end A, its axes the global ones at
+    /// t = 0; `rod` is given from end A (its `end_a` is moved to 0).
+    pub fn rod(kind: BodyKind, end_a: [f64; 3], mut rod: Rod) -> Self {
+        rod.end_b = crate::vec3::sub(rod.end_b, rod.end_a);
+        rod.end_a = [0.0; 3];
+        let nothing = RigidInertia {
+            mass: 0.0,
+            centre_of_mass: [0.0; 3],
+            inertia_at_centre: [[0.0; 3]; 3],
+        };
+        let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut body = Body::new(kind, end_a, identity, nothing);
+        body.rods.push(rod);
+        body
     }
 
     /// The global position of the body point `local` (body axes, from
@@ -163,6 +186,9 @@ pub(super) fn place_points(
     gravity: [f64; 3],
 ) -> Result<BodyPoints, ModelError> {
     let mut on_body = vec![Vec::new(); bodies.len()];
+    for (i, b) in bodies.iter_mut().enumerate() {
+        fold_rods(b, gravity).map_err(|e| e.under(&format!("bodies[{i}]")))?;
+    }
     for (i, p) in points.iter_mut().enumerate() {
         let PointKind::Body { body, local } = p.kind else {
             continue;
@@ -258,5 +284,55 @@ fn fold_point(
     p.mass = 0.0;
     p.force = [0.0; 3];
     p.water = None;
+    Ok(())
+}
+
+/// A body's rods (docs/method.md §15.10): on a free body each rod's mass
+/// joins its inertia ((B17), [`RigidInertia::with_part`]); in water its
+/// buoyancy rho V g is a constant force at its middle and its added mass
+/// and drag join the body's water (B18)-(B19). A rod in water must lie
+/// under the surface z = 0 at both ends: one that crosses it or stands
+/// above it is refused (its waterplane is not built). A fixed body's
+/// rods hold nothing that moves; a coupled body's would be loads of the
+/// host's and are refused. The rods are moved out of `rods`, so a second
+/// fold finds none.
+fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
+    for (k, rod) in body.rods.iter().enumerate() {
+        rod.validate(&format!("rods[{k}]"))?;
+    }
+    match body.kind {
+        BodyKind::Fixed => {
+            body.rods.clear();
+            return Ok(());
+        }
+        BodyKind::Coupled if !body.rods.is_empty() => {
+            return Err(ModelError::invalid(
+                "rods",
+                "rods on a coupled body are not built (their loads would be the host's)",
+            ));
+        }
+        _ => {}
+    }
+    let rods = std::mem::take(&mut body.rods);
+    for (k, rod) in rods.iter().enumerate() {
+        body.inertia = body.inertia.with_part(&rod.inertia());
+        let ends = [body.point(rod.end_a)[2], body.point(rod.end_b)[2]];
+        let Some(water) = &mut body.water else {
+            continue;
+        };
+        if ends.iter().any(|z| *z >= 0.0) {
+            return Err(ModelError::invalid(
+                format!("rods[{k}]"),
+                format!(
+                    "its ends are at z = {} and {} m: a rod in water must lie under the surface \
+                     z = 0 (a rod that crosses the surface or stands above it is not built yet)",
+                    ends[0], ends[1]
+                ),
+            ));
+        }
+        let buoyancy = crate::vec3::scale(-water.density * rod.volume(), gravity);
+        body.loads.push((buoyancy, rod.middle()));
+        water.rods.push(rod.clone());
+    }
     Ok(())
 }

@@ -10,9 +10,10 @@
 //!
 //! (weight and buoyancy act at the centre of mass, MoorDyn's convention,
 //! so they give no moment), and in a steady uniform current U the drag
-//! of (B10) at rest, f = 1/2 rho diag(CdA) w |w|, w = R^T U (body axes,
-//! at the reference point, -c from the centre), whose generalized forces
-//! are R f on r_G and J_r(theta)^T (-c x f) on theta (J_r^T = J_r(-theta));
+//! of (B10) and of its rods (B19) at rest (at the reference point
+//! f = 1/2 rho diag(CdA) w |w|, w = R^T U in body axes, -c from the
+//! centre), whose generalized forces are R f on r_G and J_r(theta)^T M_G
+//! on theta (M_G the drag's moment about the centre, J_r^T = J_r(-theta));
 //! a point P on it at xi' is at
 //! y_P = r_G + R_0 exp([theta]) xi' (B11 at rest), the lines' rows there
 //! are carried to the body's by (dy_P/dq)^T (B12), and P's rows become
@@ -22,6 +23,8 @@ use super::body_terms::BodyPoint;
 use super::layout::SystemLayout;
 use super::{System, SystemStatics};
 use crate::body::attach::{offsets, project};
+use crate::body::terms::Context;
+use crate::body::BodyWater;
 use crate::bordered::BorderedMatrix;
 use crate::linear::{AddEntries, Jacobian};
 
@@ -45,8 +48,12 @@ pub(super) struct StaticBody {
     pub stiffness: f64,
     /// [r_G; theta] at the last converged increment.
     pub converged: [f64; 6],
-    /// The steady current's drag: (1/2 rho CdA per body axis, U).
-    pub drag: Option<([f64; 3], [f64; 3])>,
+    /// The body's water where a steady current drags it (B10), (B19).
+    pub drag: Option<BodyWater>,
+    /// Where everything that loads the body lies on one line through it
+    /// (a free rod held at its ends), the line (body axes) and the
+    /// stiffness of the spin hold about it ([`spin_axis`]).
+    pub spin_hold: Option<([f64; 3], f64)>,
 }
 
 impl StaticBody {
@@ -95,14 +102,19 @@ impl StaticBody {
                 }
             }
         }
-        if let Some((half_rho_cda, current)) = self.drag {
-            self.add_drag(
-                layout,
-                theta,
-                (half_rho_cda, current),
-                residual,
-                jacobian.as_deref_mut(),
-            );
+        if let Some(water) = &self.drag {
+            self.add_drag(layout, theta, water, residual, jacobian.as_deref_mut());
+        }
+        if let Some((a, k)) = self.spin_hold {
+            let along = a[0] * theta[0] + a[1] * theta[1] + a[2] * theta[2];
+            for i in 0..3 {
+                residual[g(3 + i)] += k * a[i] * along;
+                if let Some(m) = jacobian.as_deref_mut() {
+                    for j in 0..3 {
+                        m.add(g(3 + i), g(3 + j), k * a[i] * a[j]);
+                    }
+                }
+            }
         }
         if jacobian.is_some() {
             self.stiffness = 0.0;
@@ -148,29 +160,30 @@ impl StaticBody {
         }
     }
 
-    /// The current's drag at rest (B10) in the rows, -Q, and its
-    /// derivatives in theta (on jets).
+    /// The current's drag at rest (B10), (B19) in the rows, -Q, and its
+    /// derivatives in theta: the step's drag ([`Context::drag`]) at
+    /// v_G = 0, theta_dot = 0, on jets.
     fn add_drag(
         &self,
         layout: &SystemLayout,
         theta: [f64; 3],
-        (half_rho_cda, current): ([f64; 3], [f64; 3]),
+        water: &BodyWater,
         residual: &mut [f64],
         jacobian: Option<&mut BorderedMatrix>,
     ) {
-        use crate::body::jet::{cross, Jet, JetVec};
-        use crate::body::rotation::{body_rate, times, turn};
+        use crate::body::jet::Jet;
         let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
-        let th: JetVec<3> = std::array::from_fn(|i| Jet::variable(theta[i], i));
-        let start_axes = crate::vec3::mat3_transpose(&self.rotation);
-        let u0: JetVec<3> = crate::body::pose::rotate(&start_axes, current).map(Jet::constant);
-        let w = turn(&th, &u0, -1.0);
-        let speed = crate::vec3::norm(current);
-        let f: JetVec<3> = std::array::from_fn(|i| w[i].scale(half_rho_cda[i] * speed));
-        let on_centre = times(&self.rotation, &turn(&th, &f, 1.0));
-        let arm: JetVec<3> = self.centre_of_mass.map(|c| Jet::constant(-c));
-        let minus_theta: JetVec<3> = th.map(|t| t.scale(-1.0));
-        let on_theta = body_rate(&minus_theta, &cross(&arm, &f));
+        let ctx = Context {
+            mass: 0.0,
+            inertia_at_centre: &[[0.0; 3]; 3],
+            centre_of_mass: self.centre_of_mass,
+            rotation_a: &self.rotation,
+            loads: &[],
+            water: Some(water),
+        };
+        let at = [[0.0; 3], theta, [0.0; 3]];
+        let v = std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(at[k][i], 3 * k + i)));
+        let (on_centre, on_theta) = ctx.drag(&v).expect("a body in water");
         for c in 0..3 {
             residual[g(c)] -= on_centre[c].v;
             residual[g(3 + c)] -= on_theta[c].v;
@@ -178,8 +191,8 @@ impl StaticBody {
         if let Some(m) = jacobian {
             for c in 0..3 {
                 for j in 0..3 {
-                    m.add(g(c), g(3 + j), -on_centre[c].g[j]);
-                    m.add(g(3 + c), g(3 + j), -on_theta[c].g[j]);
+                    m.add(g(c), g(3 + j), -on_centre[c].g[3 + j]);
+                    m.add(g(3 + c), g(3 + j), -on_theta[c].g[3 + j]);
                 }
             }
         }
@@ -306,13 +319,71 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 arm: if arm > 0.0 { arm } else { length },
                 stiffness: 0.0,
                 converged: [0.0; 6],
-                drag: body.water.as_ref().and_then(|w| {
-                    (w.drag_areas != [0.0; 3] && w.current != [0.0; 3])
-                        .then(|| (w.drag_areas.map(|a| 0.5 * w.density * a), w.current))
+                drag: body
+                    .water
+                    .as_ref()
+                    .filter(|w| w.current != [0.0; 3])
+                    .cloned(),
+                spin_hold: spin_axis(body, &points_local(system, b)).map(|a| {
+                    let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
+                    (a, weight * length)
                 }),
             }
         })
         .collect()
+}
+
+/// The body points of body b (body axes, from the reference point).
+fn points_local(system: &System, b: usize) -> Vec<[f64; 3]> {
+    system
+        .points()
+        .iter()
+        .filter_map(|p| match p.kind {
+            super::PointKind::Body { body, local } if body == b => Some(local),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The line (a unit vector in body axes) on which the body's centre of
+/// mass, its loads' points, its points and its rods under water all lie,
+/// if they do (to 1e-9 of their span) and no lumped drag of the body's
+/// acts in a current: then nothing turns the body about that line, its
+/// static rows are singular there (a free rod held at its ends spins
+/// freely), and the solve holds the spin, theta . a = 0, with a spring
+/// k a (a . theta) in its rotation rows. Every moment about the line
+/// being zero at any pose, the spring's moment is zero at the solution:
+/// the equilibrium is the one without it (docs/method.md §15.10).
+fn spin_axis(body: &super::Body, points: &[[f64; 3]]) -> Option<[f64; 3]> {
+    use crate::vec3::{cross, norm, scale, sub};
+    if let Some(w) = &body.water {
+        if w.current != [0.0; 3] && w.drag_areas != [0.0; 3] {
+            return None;
+        }
+    }
+    let mut all = vec![body.inertia.centre_of_mass];
+    all.extend(body.loads.iter().map(|(_, at)| *at));
+    all.extend_from_slice(points);
+    if let Some(w) = &body.water {
+        all.extend(w.rods.iter().flat_map(|r| [r.end_a, r.end_b]));
+    }
+    let (mut from, mut to, mut span) = (all[0], all[0], 0.0);
+    for p in &all {
+        for q in &all {
+            let d = norm(sub(*p, *q));
+            if d > span {
+                (from, to, span) = (*p, *q, d);
+            }
+        }
+    }
+    if span == 0.0 {
+        return None;
+    }
+    let axis = scale(1.0 / span, sub(to, from));
+    let on_line = all
+        .iter()
+        .all(|p| norm(cross(sub(*p, from), axis)) <= 1e-9 * span);
+    on_line.then_some(axis)
 }
 
 #[cfg(test)]
@@ -324,8 +395,9 @@ mod tests {
     use crate::{Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings};
 
     /// The static rows' Jacobian with a free body (its own forces' moment,
-    /// its points' rows carried to it, their constraints) against central
-    /// differences, away from the equilibrium and with the body turned.
+    /// its points' rows carried to it, their constraints, the current's
+    /// drag on it and on its rod) against central differences, away from
+    /// the equilibrium and with the body turned.
     #[test]
     fn the_static_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
         let g = [0.0, 0.0, -9.81];
@@ -343,7 +415,20 @@ mod tests {
             volume: 0.05,
             drag_areas: [1.0, 2.0, 0.5],
             current: [0.8, -0.3, 0.1],
+            rods: Vec::new(),
             ..crate::body::BodyWater::default()
+        });
+        // And a rod's drag across it and on its caps (B19).
+        body.rods.push(crate::body::Rod {
+            end_a: [0.2, -0.3, -0.5],
+            end_b: [0.9, 0.4, -1.8],
+            diameter: 0.3,
+            mass_per_length: 40.0,
+            drag_coefficient: 1.2,
+            added_mass_coefficient: 1.0,
+            end_drag_coefficient: 0.8,
+            end_added_mass_coefficient: 0.5,
+            segments: 3,
         });
         let mut points = Vec::new();
         let mut lines = Vec::new();

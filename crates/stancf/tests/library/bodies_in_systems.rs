@@ -234,6 +234,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             drag_areas: [0.05, 0.08, 0.03],
             rotational_drag_areas: [0.01, 0.01, 0.01],
             current: [0.0; 3],
+            rods: Vec::new(),
         });
     }
     let local = [[0.2, 0.1, 0.3], [-0.1, 0.25, 0.0]];
@@ -430,6 +431,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             drag_areas: [0.05, 0.08, 0.03],
             rotational_drag_areas: [0.01, 0.01, 0.01],
             current: [0.0; 3],
+            rods: Vec::new(),
         });
         let system = System::with_bodies(
             vec![Line {

@@ -34,6 +34,7 @@ mod planar;
 mod points_in_water;
 mod quadrature_rank;
 mod rigid_bodies;
+mod rods_in_systems;
 mod seabed;
 mod statics;
 mod step_assembly;

@@ -208,6 +208,7 @@ fn water(ca: [f64; 3], cda: [f64; 3], cda_r: [f64; 3]) -> BodyWater {
         drag_areas: cda,
         rotational_drag_areas: cda_r,
         current: [0.0; 3],
+        rods: Vec::new(),
     }
 }
 
