@@ -70,10 +70,7 @@ impl RigidInertia {
             centre_of_mass: centre,
             inertia_at_centre: std::array::from_fn(|i| {
                 std::array::from_fn(|j| {
-                    self.inertia_at_centre[i][j]
-                        + part.inertia_at_centre[i][j]
-                        + a[i][j]
-                        + b[i][j]
+                    self.inertia_at_centre[i][j] + part.inertia_at_centre[i][j] + a[i][j] + b[i][j]
                 })
             }),
         }

@@ -134,7 +134,10 @@ impl Rod {
             ("drag_coefficient", self.drag_coefficient),
             ("added_mass_coefficient", self.added_mass_coefficient),
             ("end_drag_coefficient", self.end_drag_coefficient),
-            ("end_added_mass_coefficient", self.end_added_mass_coefficient),
+            (
+                "end_added_mass_coefficient",
+                self.end_added_mass_coefficient,
+            ),
         ];
         for (name, v) in named {
             if !(v.is_finite() && v >= 0.0) {
@@ -185,7 +188,10 @@ impl Rod {
                 t = t + dot(&u_p, &u_p).scale(side * wl);
             }
         }
-        let cap = 0.5 * density * self.end_added_mass_coefficient * std::f64::consts::PI
+        let cap = 0.5
+            * density
+            * self.end_added_mass_coefficient
+            * std::f64::consts::PI
             * self.diameter.powi(3)
             / 12.0;
         if cap != 0.0 {
@@ -249,6 +255,22 @@ fn split<const N: usize>(u: &JetVec<N>, q: &JetVec<N>) -> (Jet<N>, JetVec<N>) {
     (along, std::array::from_fn(|i| u[i] - along * q[i]))
 }
 
+/// A rod of every coefficient, off a body's axes (for tests).
+#[cfg(test)]
+pub(crate) fn sample() -> Rod {
+    Rod {
+        end_a: [0.2, -0.3, -0.5],
+        end_b: [0.9, 0.4, -1.8],
+        diameter: 0.3,
+        mass_per_length: 40.0,
+        drag_coefficient: 1.2,
+        added_mass_coefficient: 1.0,
+        end_drag_coefficient: 0.8,
+        end_added_mass_coefficient: 0.5,
+        segments: 3,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -295,13 +317,12 @@ mod tests {
                     let p: [f64; 3] = std::array::from_fn(|c| {
                         along * q[c] + rho * (phi.cos() * e1[c] + phi.sin() * e2[c])
                     });
-                    let dm = density * w * l * rho * dr * 2.0 * std::f64::consts::PI
-                        / spokes as f64;
+                    let dm =
+                        density * w * l * rho * dr * 2.0 * std::f64::consts::PI / spokes as f64;
                     let pp = crate::vec3::dot(p, p);
                     for a in 0..3 {
                         for b in 0..3 {
-                            sampled[a][b] +=
-                                dm * (if a == b { pp } else { 0.0 } - p[a] * p[b]);
+                            sampled[a][b] += dm * (if a == b { pp } else { 0.0 } - p[a] * p[b]);
                         }
                     }
                 }
@@ -310,7 +331,10 @@ mod tests {
         for a in 0..3 {
             for b in 0..3 {
                 let e = (sampled[a][b] - i.inertia_at_centre[a][b]).abs();
-                assert!(e < 1e-5 * i.inertia_at_centre[0][0].abs().max(1.0), "{a}{b}: {e:e}");
+                assert!(
+                    e < 1e-5 * i.inertia_at_centre[0][0].abs().max(1.0),
+                    "{a}{b}: {e:e}"
+                );
             }
         }
     }
@@ -359,7 +383,11 @@ mod tests {
         let (f, m) = r.drag(&z, &constant([0.0, 0.0, w]), rho, middle);
         let want = -rho * 1.2 * 0.2 * w * w / 64.0;
         assert!(f.iter().all(|c| c.v.abs() < 1e-12), "{:?}", f.map(|c| c.v));
-        assert!((m[2].v - want).abs() < 1e-12 * want.abs(), "{} {want}", m[2].v);
+        assert!(
+            (m[2].v - want).abs() < 1e-12 * want.abs(),
+            "{} {want}",
+            m[2].v
+        );
         // Along its axis both caps drag: 2 x 1/2 rho CdEnd A v^2.
         let (f, _) = r.drag(&constant([v, 0.0, 0.0]), &z, rho, middle);
         let want = -rho * 0.6 * r.area() * v * v;

@@ -172,6 +172,18 @@ impl Context<'_> {
 mod tests {
     use super::*;
 
+    /// A body of 800 kg, its centre off its reference point, in `water`.
+    fn test_context<'a>(rotation_a: &'a [[f64; 3]; 3], water: &'a BodyWater) -> Context<'a> {
+        Context {
+            mass: 800.0,
+            inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
+            centre_of_mass: [0.3, -0.4, 0.5],
+            rotation_a,
+            loads: &[],
+            water: Some(water),
+        }
+    }
+
     /// The drag's generalized forces (B10) do the drag's power, at a point
     /// of the chart away from the step's start (theta != 0, so J_r^T and
     /// the turned moment arm count): Q_r . v_G + Q_theta . theta_dot =
@@ -189,14 +201,7 @@ mod tests {
             current: [0.2, -0.1, 0.05],
             rods: Vec::new(),
         };
-        let ctx = Context {
-            mass: 800.0,
-            inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
-            centre_of_mass: [0.3, -0.4, 0.5],
-            rotation_a: &rotation_a,
-            loads: &[],
-            water: Some(&water),
-        };
+        let ctx = test_context(&rotation_a, &water);
         // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r
         // theta_dot; the power is Q_r . v_G + Q_theta . theta_dot.
         let (v_g, theta, theta_dot) = ([0.7, -0.3, 0.4], [0.3, -0.5, 0.8], [0.2, 0.5, -0.6]);
@@ -251,31 +256,15 @@ mod tests {
             density: 1025.0,
             drag_areas: [0.8, 1.3, 2.1],
             current: [0.2, -0.1, 0.05],
-            rods: vec![super::super::Rod {
-                end_a: [0.2, -0.3, -0.5],
-                end_b: [0.9, 0.4, -1.8],
-                diameter: 0.3,
-                mass_per_length: 40.0,
-                drag_coefficient: 1.2,
-                added_mass_coefficient: 1.0,
-                end_drag_coefficient: 0.8,
-                end_added_mass_coefficient: 0.5,
-                segments: 3,
-            }],
+            rods: vec![super::super::rod::sample()],
             ..BodyWater::default()
         };
-        let ctx = Context {
-            mass: 800.0,
-            inertia_at_centre: &[[50.0, 0.0, 0.0], [0.0, 60.0, 0.0], [0.0, 0.0, 70.0]],
-            centre_of_mass: [0.3, -0.4, 0.5],
-            rotation_a: &rotation_a,
-            loads: &[],
-            water: Some(&water),
-        };
+        let ctx = test_context(&rotation_a, &water);
         let at = [0.7, -0.3, 0.4, 0.3, -0.5, 0.8, 0.2, 0.5, -0.6];
         let eval = |x: &[f64; 9]| {
-            let v: [JetVec<NV>; 3] =
-                std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i)));
+            let v: [JetVec<NV>; 3] = std::array::from_fn(|k| {
+                std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i))
+            });
             let (a, b) = ctx.drag(&v).unwrap();
             [a[0], a[1], a[2], b[0], b[1], b[2]]
         };

@@ -182,7 +182,8 @@ impl StaticBody {
             water: Some(water),
         };
         let at = [[0.0; 3], theta, [0.0; 3]];
-        let v = std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(at[k][i], 3 * k + i)));
+        let v =
+            std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(at[k][i], 3 * k + i)));
         let (on_centre, on_theta) = ctx.drag(&v).expect("a body in water");
         for c in 0..3 {
             residual[g(c)] -= on_centre[c].v;
@@ -419,17 +420,7 @@ mod tests {
             ..crate::body::BodyWater::default()
         });
         // And a rod's drag across it and on its caps (B19).
-        body.rods.push(crate::body::Rod {
-            end_a: [0.2, -0.3, -0.5],
-            end_b: [0.9, 0.4, -1.8],
-            diameter: 0.3,
-            mass_per_length: 40.0,
-            drag_coefficient: 1.2,
-            added_mass_coefficient: 1.0,
-            end_drag_coefficient: 0.8,
-            end_added_mass_coefficient: 0.5,
-            segments: 3,
-        });
+        body.rods.push(crate::body::rod::sample());
         let mut points = Vec::new();
         let mut lines = Vec::new();
         for (k, local) in [[0.0, -1.0, 0.0], [0.0, 1.0, 0.3]].iter().enumerate() {

@@ -443,30 +443,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             [0.0, 0.0, -g],
         )
         .expect("system");
-        let settings = StepSettings {
-            time_step: dt,
-            time_scheme: TimeScheme::Galerkin,
-            ..StepSettings::default()
-        };
-        let mut sim = SystemSimulation::new(system, vec![state], settings).unwrap();
-        let e0 = sim.energies().mechanical();
-        let mut drift = 0.0f64;
-        for _ in 0..(1.0 / dt).round() as usize {
-            sim.step().expect("step");
-            drift = drift.max((sim.energies().mechanical() - sim.external_work() - e0).abs());
-        }
-        (drift, -sim.water_work())
+        crate::common::galerkin_energy_drift(system, vec![state], dt)
     };
-    let (coarse, lost) = run(0.02);
-    let (fine, _) = run(0.01);
-    eprintln!(
-        "energy less the water's work: drift {coarse:.1e} and {fine:.1e} J (ratio {:.1}); \
-         the water took {lost:.3} J",
-        coarse / fine
-    );
-    assert!(lost > 0.01, "the drag does work: {lost}");
-    assert!(
-        coarse > 8.0 * fine && fine < 1e-4 * lost,
-        "{coarse:e} {fine:e}"
-    );
+    crate::common::assert_energy_balance_falls_at_fourth_order(run, 0.01);
 }

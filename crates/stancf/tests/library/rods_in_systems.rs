@@ -91,7 +91,11 @@ fn a_free_rod_rises_at_moordyns_added_mass_rate() {
         };
         // The line hangs from the rod's middle across, from its end A
         // along: a point on its axis.
-        let local = if name == "across" { [0.0, 1.0, 0.0] } else { [0.0; 3] };
+        let local = if name == "across" {
+            [0.0, 1.0, 0.0]
+        } else {
+            [0.0; 3]
+        };
         let top: [f64; 3] = std::array::from_fn(|c| a[c] + local[c]);
         let (line, state) = hanging_line(top);
         let m_line = 2e-3;
@@ -117,7 +121,10 @@ fn a_free_rod_rises_at_moordyns_added_mass_rate() {
         let rise = sim.free_body(0).unwrap().centre()[2] - z0;
         let accel = (RHO * volume - m - m_line) * G / (m + added + m_line);
         let want = 0.5 * accel * sim.time() * sim.time();
-        eprintln!("{name}: rise {rise:.6} m in {:.2} s, expected {want:.6} m", sim.time());
+        eprintln!(
+            "{name}: rise {rise:.6} m in {:.2} s, expected {want:.6} m",
+            sim.time()
+        );
         assert!((rise - want).abs() < 5e-5, "{name}: {rise} against {want}");
     }
 }
@@ -181,8 +188,7 @@ fn a_systems_jacobian_with_a_free_rod_is_the_derivative_of_its_rows() {
         Point::on_body(0, local[1]),
         Point::fixed([0.1, 0.4, -1.0]),
     ];
-    let system =
-        System::with_bodies(lines, points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -G]).expect("system");
     let settings = StepSettings {
         time_step: 0.01,
         time_scheme: TimeScheme::Galerkin,
@@ -259,32 +265,9 @@ fn a_swinging_rod_in_water_loses_what_its_drag_takes() {
             [0.0, 0.0, -G],
         )
         .expect("system");
-        let settings = StepSettings {
-            time_step: dt,
-            time_scheme: TimeScheme::Galerkin,
-            ..StepSettings::default()
-        };
-        let mut sim = SystemSimulation::new(system, vec![state], settings).unwrap();
-        let e0 = sim.energies().mechanical();
-        let mut drift = 0.0f64;
-        for _ in 0..(1.0 / dt).round() as usize {
-            sim.step().expect("step");
-            drift = drift.max((sim.energies().mechanical() - sim.external_work() - e0).abs());
-        }
-        (drift, -sim.water_work())
+        crate::common::galerkin_energy_drift(system, vec![state], dt)
     };
-    let (coarse, lost) = run(0.02);
-    let (fine, _) = run(0.01);
-    eprintln!(
-        "energy less the water's work: drift {coarse:.1e} and {fine:.1e} J (ratio {:.1}); \
-         the water took {lost:.3} J",
-        coarse / fine
-    );
-    assert!(lost > 0.1, "the drag does work: {lost}");
-    assert!(
-        coarse > 8.0 * fine && fine < 1e-4 * lost,
-        "{coarse:e} {fine:e}"
-    );
+    crate::common::assert_energy_balance_falls_at_fourth_order(run, 0.1);
 }
 
 /// A buoyant rod (4 m, 0.3 m across, 20 kg/m) held at its end A by three
@@ -372,7 +355,10 @@ fn a_tethered_rod_leans_in_a_current_until_its_lift_balances_its_drag() {
         let slope = lift * want.cos() + 2.0 * drag * want.cos() * want.sin();
         want -= balance(want) / slope;
     }
-    eprintln!("lean {alpha:.10} rad, balance {want:.10} rad; sideways {:.1e}", axis[1]);
+    eprintln!(
+        "lean {alpha:.10} rad, balance {want:.10} rad; sideways {:.1e}",
+        axis[1]
+    );
     assert!((alpha - want).abs() < 1e-8, "{alpha} against {want}");
     assert!(axis[1].abs() < 1e-10);
 }

@@ -238,3 +238,48 @@ pub fn step_jacobian_error(sim: &mut stancf::system::SystemSimulation, h: f64) -
     }
     rel_diff(&analytic, &fd)
 }
+
+/// A system with a free body stepped by the Galerkin scheme for 1 s at
+/// `dt`: the largest drift of its energy less the external work from its
+/// start, and the energy the water took (-water work).
+pub fn galerkin_energy_drift(
+    system: stancf::system::System,
+    states: Vec<stancf::State>,
+    dt: f64,
+) -> (f64, f64) {
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = stancf::system::SystemSimulation::new(system, states, settings).unwrap();
+    let e0 = sim.energies().mechanical();
+    let mut drift = 0.0f64;
+    for _ in 0..(1.0 / dt).round() as usize {
+        sim.step().expect("step");
+        drift = drift.max((sim.energies().mechanical() - sim.external_work() - e0).abs());
+    }
+    (drift, -sim.water_work())
+}
+
+/// The energy balance of [`galerkin_energy_drift`] at dt 0.02 and 0.01 s
+/// (`run(dt)`) holds to the step's error at fourth order: asserts that
+/// the water took more than `least_lost`, a drift ratio above 8 and a
+/// drift at 0.01 s below 1e-4 of what the water took.
+pub fn assert_energy_balance_falls_at_fourth_order(
+    run: impl Fn(f64) -> (f64, f64),
+    least_lost: f64,
+) {
+    let (coarse, lost) = run(0.02);
+    let (fine, _) = run(0.01);
+    eprintln!(
+        "energy less the water's work: drift {coarse:.1e} and {fine:.1e} J (ratio {:.1}); \
+         the water took {lost:.3} J",
+        coarse / fine
+    );
+    assert!(lost > least_lost, "the drag does work: {lost}");
+    assert!(
+        coarse > 8.0 * fine && fine < 1e-4 * lost,
+        "{coarse:e} {fine:e}"
+    );
+}
