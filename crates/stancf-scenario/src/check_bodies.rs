@@ -1,7 +1,7 @@
 //! What `stancf check` says of a system's rigid bodies (docs/method.md
 //! §15) and of its degrees of freedom.
 
-use crate::scenario::{PointType, SystemScenario};
+use crate::scenario::{PointType, RodHolder, SystemScenario};
 use stancf::error::Sig;
 use stancf::system::System;
 
@@ -24,7 +24,26 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
                 .filter(|p| matches!(p.kind, PointType::Body { body: on, .. } if on == b))
                 .map(|p| p.id.to_string())
                 .collect::<Vec<_>>();
-            let what = if body.is_free() {
+            let rods: Vec<String> = sc
+                .rods
+                .iter()
+                .filter(|r| matches!(r.holder, RodHolder::Body { body } if body == b))
+                .map(|r| r.id.to_string())
+                .collect();
+            let rods = match rods.len() {
+                0 => String::new(),
+                _ => format!("; rods {} fixed in it", rods.join(", ")),
+            };
+            let own_rod = sc
+                .rods
+                .iter()
+                .find(|r| r.holder == RodHolder::Free { body: b });
+            let what = if let Some(r) = own_rod {
+                format!(
+                    "free rod {} (6 degrees of freedom; its mass and water are the rod's)",
+                    r.id
+                )
+            } else if body.is_free() {
                 let water = if sc.water.is_some() {
                     format!(
                         ", volume {} m^3, CdA {} m^2, rotational CdA {}, Ca {}",
@@ -54,7 +73,7 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
             (
                 format!("body {}", body.id),
                 format!(
-                    "{what}; reference point at {} m, roll, pitch, yaw {} deg; {points}",
+                    "{what}; reference point at {} m, roll, pitch, yaw {} deg; {points}{rods}",
                     v3(body.position),
                     v3(body.angles)
                 ),
@@ -98,4 +117,68 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
         parts.push(format!("less 2 per clamped end ({clamps})"));
     }
     format!("{dofs} ({})", parts.join(", "))
+}
+
+/// The rods: how many, then one line per rod: what holds it, its type,
+/// length and mass, whether it lies under the water (its water acts on
+/// what moves), its ends and the points at them.
+pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
+    if sc.rods.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![("rods".to_string(), sc.rods.len().to_string())];
+    for r in &sc.rods {
+        let holder = match r.holder {
+            RodHolder::Fixed => "fixed (held where it is)".to_string(),
+            RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
+            RodHolder::Body { body } => format!(
+                "fixed in {} body {}",
+                if sc.bodies[body].is_free() {
+                    "free"
+                } else {
+                    "fixed"
+                },
+                sc.bodies[body].id
+            ),
+            RodHolder::Point { point } => format!(
+                "free of zero length (NumSegs 0): point {}, of no mass, carrying its lines",
+                sc.points[point].id
+            ),
+        };
+        let size = match &r.rod {
+            Some(rod) => format!(
+                ", length {} m, diameter {} m, mass {} kg",
+                Sig(rod.length()),
+                Sig(rod.diameter),
+                Sig(rod.mass_per_length * rod.length())
+            ),
+            None => String::new(),
+        };
+        let water = match (&sc.water, &r.rod) {
+            (None, _) => "in air",
+            (Some(_), None) => "in water (no volume)",
+            (Some(_), Some(_)) if !r.moves(&sc.bodies) => "its water unused (it does not move)",
+            (Some(_), Some(_)) if r.submerged() => "submerged",
+            (Some(_), Some(_)) => "not submerged",
+        };
+        let points: Vec<String> = ["A", "B"]
+            .iter()
+            .zip(r.points)
+            .filter_map(|(e, p)| p.map(|p| format!("point {} at {e}", sc.points[p].id)))
+            .collect();
+        let points = match points.len() {
+            0 => "no line attached".to_string(),
+            _ => points.join(", "),
+        };
+        out.push((
+            format!("rod {}", r.id),
+            format!(
+                "{holder}; type {}{size}; {water}; ends {} and {} m; {points}",
+                crate::echo::clip(&r.type_name, 60),
+                v3(r.ends[0]),
+                v3(r.ends[1])
+            ),
+        ));
+    }
+    out
 }

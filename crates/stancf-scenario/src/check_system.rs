@@ -172,6 +172,9 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     for (k, v) in crate::check_bodies::body_words(sc) {
         line(&k, v);
     }
+    for (k, v) in crate::check_bodies::rod_words(sc) {
+        line(&k, v);
+    }
     for (k, v) in point_words(sc) {
         line(&k, v);
     }

@@ -82,6 +82,20 @@ pub struct SolverError {
     pub detail: String,
 }
 
+impl SolverError {
+    /// Whether Newton failed the step (no convergence, a value that is not
+    /// finite, a singular Jacobian): what a system takes again in halves
+    /// (docs/method.md §11.13). Not the energy watchdog's unstable step, a
+    /// stalled static path, or a motion outside the model, which a
+    /// shorter step does not mend.
+    pub fn newton_failed(&self) -> bool {
+        matches!(
+            self.kind,
+            FailureKind::NotConverged | FailureKind::NonFinite | FailureKind::SingularJacobian
+        )
+    }
+}
+
 impl fmt::Display for SolverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let what = match self.kind {

@@ -23,6 +23,7 @@ mod output_files;
 mod output_folder_safety;
 mod reproduce;
 mod result_folder;
+mod rods;
 mod run_and_check;
 mod seabed_friction;
 mod solver_and_schemes;

@@ -88,6 +88,7 @@ pub(crate) fn system_scales(file: &str, sc: &SystemScenario) -> Result<(), Failu
             ),
         ]);
     }
+    rod_values(sc, &mut values);
     let f = Figures { file, values };
     // Every value as given.
     for (k, v) in &f.values {
@@ -432,7 +433,37 @@ fn weights_of_points_and_bodies(
         let key = |k: &str, c: &str| sc.names.body(b, k, c);
         weight_figures(f, sc, ("body", body.mass, body.volume), key, g_key, water)?;
     }
+    for r in &sc.rods {
+        let Some(rod) = &r.rod else { continue };
+        // Its weight is its type's Mass/m's, its volume its Diam's.
+        let key = |k: &str, _: &str| match k {
+            "mass" => sc.names.rod_type(r.type_index, "mass_per_length", "Mass/m"),
+            _ => sc.names.rod_type(r.type_index, "diameter", "Diam"),
+        };
+        let (mass, volume) = (rod.mass_per_length * rod.length(), rod.volume());
+        weight_figures(f, sc, ("rod", mass, volume), key, g_key, water)?;
+    }
     Ok(())
+}
+
+/// Each rod's values (its ends, its type's numbers), named by their keys
+/// or deck columns.
+fn rod_values(sc: &SystemScenario, values: &mut Vec<(String, f64)>) {
+    let n = &sc.names;
+    for (k, r) in sc.rods.iter().enumerate() {
+        let Some(rod) = &r.rod else { continue };
+        let key = |k_: &str, c: &str| n.rod_type(r.type_index, k_, c);
+        values.extend([
+            (n.rod_key(k, "end_a", "Xa, Ya, Za"), largest(&r.ends[0])),
+            (n.rod_key(k, "end_b", "Xb, Yb, Zb"), largest(&r.ends[1])),
+            (key("diameter", "Diam"), rod.diameter),
+            (key("mass_per_length", "Mass/m"), rod.mass_per_length),
+            (key("cd", "Cd"), rod.drag_coefficient),
+            (key("ca", "Ca"), rod.added_mass_coefficient),
+            (key("cd_end", "CdEnd"), rod.end_drag_coefficient),
+            (key("ca_end", "CaEnd"), rod.end_added_mass_coefficient),
+        ]);
+    }
 }
 
 /// The weight m g and, in water, the buoyancy rho_w g V of a point or a

@@ -216,7 +216,11 @@ fn channel(
                 quantity,
             })
         }
-        "R" | "ROD" => Err("rods are not supported".into()),
+        "R" | "ROD" => Err(
+            "rod channels are not written in this version (a free rod is a body: \
+                             its pose is in bodies.csv, summary.json's rods names its body)"
+                .into(),
+        ),
         "B" | "BODY" => {
             if id == 0 || id > bodies {
                 return Err(format!("there is no body {id} ({bodies} bodies)"));

@@ -1,10 +1,11 @@
 //! MoorDyn v2 input files ("decks") read into a neutral, validated
 //! [`Deck`]. Only what stancf can represent is accepted: line types with
 //! constant coefficients, fixed and free bodies, fixed, free and coupled
-//! points and points on bodies, lines between points, the options of
+//! points and points on bodies, fixed, free and body rods, lines between
+//! points and rod ends, the options of
 //! [`SupportedOption`] (plus MoorDyn's initial condition, logging and
 //! output switches, accepted and ignored) and the output channels of
-//! [`Channel`]. Everything else (rods, coupled and pinned bodies,
+//! [`Channel`]. Everything else (pinned and coupled rods and bodies,
 //! failures, nonlinear or viscoelastic stiffness, VIV, wave files,
 //! MoorDyn-F water kinematics, bathymetry files...) is refused by name,
 //! naming the line of the file.
@@ -31,8 +32,10 @@
 
 mod bodies;
 mod channels;
+mod ends;
 mod layout;
 mod options;
+mod rods;
 mod sections;
 #[cfg(test)]
 mod tests;
@@ -42,7 +45,9 @@ use std::path::Path;
 
 pub use bodies::{BodyAttachment, DeckBody};
 pub use channels::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
+pub use ends::{LineAttachment, RodEnd};
 pub use options::{OptionKind, OptionValue, SupportedOption};
+pub use rods::{DeckRod, RodAttachment, RodType};
 
 /// A MoorDyn v2 input file, read and checked.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,6 +59,10 @@ pub struct Deck {
     pub line_types: Vec<LineType>,
     /// `BODIES` (or `BODY LIST`, `BODY PROPERTIES`); the n-th has id n.
     pub bodies: Vec<DeckBody>,
+    /// `ROD TYPES` (or `ROD DICTIONARY`), in file order.
+    pub rod_types: Vec<RodType>,
+    /// `RODS` (or `ROD LIST`, `ROD PROPERTIES`); the n-th has id n.
+    pub rods: Vec<DeckRod>,
     /// `POINTS` (or `POINT LIST`, `POINT PROPERTIES`, `CONNECTION
     /// PROPERTIES`, `NODE PROPERTIES`); the n-th has id n.
     pub points: Vec<DeckPoint>,
@@ -159,11 +168,11 @@ pub struct DeckLine {
     pub line_type: String,
     /// Index of the line type in [`Deck::line_types`].
     pub type_index: usize,
-    /// `AttachA`: id of the point at end A (node 0, the anchor end).
-    pub end_a: usize,
-    /// `AttachB`: id of the point at end B (node `segments`, the fairlead
-    /// end).
-    pub end_b: usize,
+    /// `AttachA`: the point or rod end at end A (node 0, the anchor end).
+    pub end_a: LineAttachment,
+    /// `AttachB`: the point or rod end at end B (node `segments`, the
+    /// fairlead end).
+    pub end_b: LineAttachment,
     /// `UnstrLen` (m), > 0.
     pub unstretched_length: f64,
     /// `NumSegs`, ≥ 1; the line has `segments + 1` nodes.
@@ -219,6 +228,11 @@ impl Deck {
         &self.line_types[line.type_index]
     }
 
+    /// The type of a rod.
+    pub fn rod_type_of(&self, rod: &DeckRod) -> &RodType {
+        &self.rod_types[rod.type_index]
+    }
+
     /// The point with this id (ids start at 1).
     pub fn point(&self, id: usize) -> Option<&DeckPoint> {
         id.checked_sub(1).and_then(|i| self.points.get(i))
@@ -269,6 +283,8 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     let layout = layout::split(text)?;
     let mut line_types = Vec::new();
     let mut bodies = Vec::new();
+    let mut rod_types = Vec::new();
+    let mut rod_rows = None;
     let mut points = Vec::new();
     let mut raw_lines = Vec::new();
     let mut options = Vec::new();
@@ -278,6 +294,9 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         match section.kind {
             K::LineTypes => line_types = sections::line_types(section)?,
             K::Bodies => bodies = bodies::bodies(section)?,
+            K::RodTypes => rod_types = rods::rod_types(section)?,
+            // Read once the types are (ROD TYPES may follow RODS).
+            K::Rods => rod_rows = Some(section),
             K::Points => points = sections::points(section)?,
             K::Lines => raw_lines = sections::lines(section)?,
             K::Options => options = options::read(section)?,
@@ -285,13 +304,20 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
             other => sections::refuse_rows(section, other)?,
         }
     }
+    let rods = match rod_rows {
+        Some(section) => rods::rods(section, &rod_types)?,
+        None => Vec::new(),
+    };
     bodies::check_body_points(&points, &bodies)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
+    rods::check_rods(&rods, bodies.len(), &lines)?;
     let outputs = channels::resolve(raw_outputs, &lines, &points, &bodies)?;
     Ok(Deck {
         title: layout.title,
         line_types,
         bodies,
+        rod_types,
+        rods,
         points,
         lines,
         options,

@@ -1,6 +1,7 @@
 //! The table sections: `LINE TYPES`, `POINTS`, `LINES` (`BODIES` is
-//! `bodies.rs`), and the refusal of the sections stancf cannot represent.
+//! `bodies.rs`, `ROD TYPES` and `RODS` `rods.rs`), and the refusal of the sections stancf cannot represent.
 
+use super::ends::{rod_end, LineAttachment};
 use super::layout::{Row, Section, SectionKind};
 use super::{Attachment, DeckError, DeckLine, DeckPoint, LineType};
 
@@ -338,7 +339,7 @@ pub(crate) struct RawLine<'a> {
     line: usize,
     id: usize,
     line_type: &'a str,
-    ends: [usize; 2],
+    ends: [LineAttachment; 2],
     unstretched_length: f64,
     segments: usize,
     outputs: &'a str,
@@ -375,8 +376,11 @@ pub(crate) fn lines<'a>(s: &Section<'a>) -> Result<Vec<RawLine<'a>>, DeckError> 
 }
 
 /// An attachment of a line end: a point id, written `4`, `P4`, `Point4`,
-/// `C4` or `Con4` (`MoorDyn2.cpp`); `R1A`/`Rod1B` (rod ends) are refused.
-fn end(row: &Row, id: usize, col: usize, which: &str) -> Result<usize, DeckError> {
+/// `C4` or `Con4`, or a rod end, `R1A`, `Rod1B` (`MoorDyn2.cpp`).
+fn end(row: &Row, id: usize, col: usize, which: &str) -> Result<LineAttachment, DeckError> {
+    if let Some(rod) = rod_end(row, id, col, which)? {
+        return Ok(rod);
+    }
     let w = row.words[col];
     let upper = w.to_ascii_uppercase();
     let digits_at = upper
@@ -387,20 +391,14 @@ fn end(row: &Row, id: usize, col: usize, which: &str) -> Result<usize, DeckError
         .find(|c: char| !c.is_ascii_digit())
         .unwrap_or(rest.len());
     let (digits, tail) = rest.split_at(digits_end);
-    if matches!(letters, "R" | "ROD") {
-        return Err(DeckError::at(
-            row.line,
-            format!("Attach{which} of line {id} is \"{w}\", a rod end: rods are not supported"),
-        ));
-    }
     let point = matches!(letters, "" | "C" | "CON" | "P" | "POINT") && tail.is_empty();
     match digits.parse::<usize>() {
-        Ok(n) if point && n >= 1 => Ok(n),
+        Ok(n) if point && n >= 1 => Ok(LineAttachment::Point(n)),
         _ => Err(DeckError::at(
             row.line,
             format!(
-                "Attach{which} of line {id} is \"{w}\"; expected a point ID such as 4 or P4 \
-                 (columns: {LINE_COLUMNS})"
+                "Attach{which} of line {id} is \"{w}\"; expected a point ID such as 4 or P4, or a rod \
+                 end such as R1A (columns: {LINE_COLUMNS})"
             ),
         )),
     }
@@ -414,7 +412,9 @@ pub(crate) fn link_lines(
 ) -> Result<Vec<DeckLine>, DeckError> {
     if raw.is_empty() {
         return Err(DeckError::whole(
-            "the deck defines no lines (a LINES section with at least one row is required)",
+            "the deck defines no lines (a LINES section with at least one row is required: \
+             stancf builds a system of lines with the points, bodies and rods they hold, and \
+             a deck of rods or bodies alone is not built)",
         ));
     }
     let mut out = Vec::new();
@@ -434,7 +434,10 @@ pub(crate) fn link_lines(
                 ),
             ));
         };
-        for (end, p) in ["A", "B"].into_iter().zip(l.ends) {
+        for (end, a) in ["A", "B"].into_iter().zip(l.ends) {
+            let LineAttachment::Point(p) = a else {
+                continue;
+            };
             if p > points.len() {
                 return Err(DeckError::at(
                     l.line,
@@ -451,8 +454,12 @@ pub(crate) fn link_lines(
             return Err(DeckError::at(
                 l.line,
                 format!(
-                    "both ends of line {} are attached to point {}",
-                    l.id, l.ends[0]
+                    "both ends of line {} are attached to {}",
+                    l.id,
+                    match l.ends[0] {
+                        LineAttachment::Point(p) => format!("point {p}"),
+                        LineAttachment::Rod(r, e) => format!("end {} of rod {r}", e.letter()),
+                    }
                 ),
             ));
         }
@@ -478,7 +485,6 @@ pub(crate) fn refuse_rows(s: &Section, kind: SectionKind) -> Result<(), DeckErro
         return Ok(());
     };
     let why = match kind {
-        SectionKind::RodTypes | SectionKind::Rods => "rods are not supported",
         SectionKind::Failure => "line failures are not supported",
         SectionKind::Control => "line length control is not supported",
         SectionKind::ExternalLoads => "external loads are not supported",

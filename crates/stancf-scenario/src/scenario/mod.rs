@@ -25,6 +25,9 @@ mod motions;
 pub mod names;
 mod output;
 mod raw;
+mod rod_parts;
+mod rod_toml;
+mod rods;
 mod sea_limits;
 mod system;
 mod system_model;
@@ -38,6 +41,7 @@ pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
+pub use rod_parts::{RodHolder, RodTypeValues, SystemRod};
 pub use system_model::EI_FACTOR;
 pub use system_parts::{
     LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
@@ -102,6 +106,7 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
         let title = title_of(None, path);
         let sc = moordyn::deck_scenario(&deck, file, path, title, None)?;
         body_water::check_body_water(file, &sc)?;
+        rods::check_rod_water(file, &sc)?;
         return Ok(Input::System(sc));
     }
     let ctx = Ctx { file };

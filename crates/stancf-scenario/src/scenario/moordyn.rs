@@ -1,6 +1,7 @@
 //! A MoorDyn v2 deck ([`crate::moordyn::Deck`]) as a system scenario:
 //! LINE TYPES become line types, BODIES bodies (fixed, or free with their
-//! mass, inertia and water), POINTS points (Fixed, Free with their mass
+//! mass, inertia and water), ROD TYPES and RODS rods (super::rods),
+//! POINTS points (Fixed, Free with their mass
 //! and buoyant volume, Coupled at rest, on a body), LINES lines of NumSegs
 //! SAC-2 elements, OPTIONS gravity and water, OUTPUTS the channels of
 //! channels.csv. MoorDyn's frame is ours: z up, the still water surface
@@ -63,24 +64,36 @@ pub(super) fn deck_scenario(
         kind: Some("static".into()),
         ..RawAnalysis::default()
     };
-    let bodies = deck
+    let mut bodies = deck
         .bodies
         .iter()
-        .map(|b| deck_body(b, file))
+        .map(|b| {
+            let rods = deck.rods.iter().any(|r| {
+                r.attachment == crate::moordyn::RodAttachment::Body(b.id) && r.segments > 0
+            });
+            deck_body(b, rods, file)
+        })
         .collect::<Result<Vec<_>, _>>()?;
+    let mut points: Vec<SystemPoint> = deck.points.iter().map(|p| deck_point(p, &bodies)).collect();
+    // Rods after the deck's bodies and points: a free rod's body and the
+    // points at rod ends come after them (super::rods).
+    let (rods, ends) = super::rods::deck_rods(deck, file, &mut bodies, &mut points, true)?;
     let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (mut analysis, measures, initial, mut notes) =
         analysis_part(&ctx, Some(raw), InitialShape::Static, free_bodies)?;
     notes.extend(deck.bodies.iter().filter_map(free_word_note));
+    notes.extend(super::rods::rod_file_notes(deck));
     // A deck alone is static; its dtM is the step of a coupled run of it
     // (checked with the other values, crate::input_scales).
     analysis.time_step = deck.option(SupportedOption::TimeStep).unwrap_or(0.0);
+    let names = super::names::Names::of_deck(deck, None).with_rods(&rods, deck.points.len());
     Ok(SystemScenario {
         title,
         line_types: deck.line_types.iter().map(deck_line_type).collect(),
-        points: deck.points.iter().map(|p| deck_point(p, &bodies)).collect(),
+        points,
         bodies,
-        lines: deck.lines.iter().map(deck_line).collect(),
+        rods,
+        lines: deck.lines.iter().zip(ends).map(deck_line).collect(),
         gravity: [0.0, 0.0, -g],
         analysis,
         measures,
@@ -91,7 +104,7 @@ pub(super) fn deck_scenario(
         notes,
         water: Some(water),
         channels,
-        names: super::names::Names::of_deck(deck, None),
+        names,
     })
 }
 
@@ -177,8 +190,11 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
 /// moments of a body with extent in all three directions; MoorDyn also
 /// takes a zero mass or zero moments, its body's mass matrix holding the
 /// masses of the line ends and rods attached to it
-/// (docs/moordyn-bodies-rods.md §2.3): refused naming the deck's line.
-fn deck_body(b: &DeckBody, file: &str) -> Result<SystemBody, ScenarioError> {
+/// (docs/moordyn-bodies-rods.md §2.3): refused naming the deck's line,
+/// unless rods of the body's (`rods`) give it their mass and inertia
+/// (a float made of rods, MoorDyn's md_float; the library folds them in
+/// and refuses a sum that is no body's).
+fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, ScenarioError> {
     let fixed = SystemBody::fixed(b.id as i64, b.position, b.angles);
     if b.attachment == BodyAttachment::Fixed {
         return Ok(fixed);
@@ -186,14 +202,14 @@ fn deck_body(b: &DeckBody, file: &str) -> Result<SystemBody, ScenarioError> {
     let moordyn_differs = "MoorDyn accepts it, its body's mass matrix also holding the masses \
                            of the line ends and rods attached to the body; stancf's body \
                            carries its own mass and inertia (the lines' ends are the lines')";
-    if b.mass <= 0.0 {
+    if b.mass < 0.0 || (b.mass == 0.0 && !rods) {
         return Err(ScenarioError(format!(
             "{file}: line {}: Mass: free body {} has mass {} kg; a free body needs a positive \
              mass ({moordyn_differs})",
             b.line, b.id, b.mass
         )));
     }
-    if !moments_of_a_body(b.moments) {
+    if !(moments_of_a_body(b.moments) || (rods && b.moments.iter().all(|m| *m >= 0.0))) {
         return Err(ScenarioError(format!(
             "{file}: line {}: I: free body {} has the moments of inertia {:?} kg m^2; a free \
              body needs those of a body with extent in all three directions, each less than \
@@ -232,15 +248,16 @@ fn free_word_note(b: &DeckBody) -> Option<String> {
 }
 
 /// A LINES row as a line of SAC-2 elements, one per segment, pinned at
-/// its points (MoorDyn's lines are).
-fn deck_line(l: &crate::moordyn::DeckLine) -> SystemLine {
+/// its points (MoorDyn's lines are), `ends` their indices (a rod end's
+/// point, super::rods).
+fn deck_line((l, ends): (&crate::moordyn::DeckLine, [usize; 2])) -> SystemLine {
     SystemLine {
         id: l.id as i64,
         line_type: l.type_index,
         length: l.unstretched_length,
         elements: l.segments,
         element_type: ElementType::Sac2,
-        ends: [Some(l.end_a - 1), Some(l.end_b - 1)],
+        ends: ends.map(Some),
         grading: stancf::Grading::Uniform,
         clamps: [None; 2],
     }

@@ -12,6 +12,17 @@ pub struct Names {
     /// The deck the line types, points, lines and options come from
     /// (None: a TOML system, every value under its key).
     deck: Option<Box<DeckNames>>,
+    /// The parts rods add (boxed: most systems have none).
+    rods: Box<RodNames>,
+}
+
+/// The bodies and points rods add.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct RodNames {
+    /// The bodies of free rods: (body index, rod index).
+    bodies: Vec<(usize, usize)>,
+    /// A deck's points at rod ends: (point index, rod index).
+    points: Vec<(usize, usize)>,
 }
 
 /// The lines of a deck's rows and options.
@@ -22,6 +33,8 @@ struct DeckNames {
     file: Option<String>,
     line_types: Vec<usize>,
     bodies: Vec<usize>,
+    rod_types: Vec<usize>,
+    rods: Vec<usize>,
     points: Vec<usize>,
     lines: Vec<usize>,
     options: Vec<(SupportedOption, String, usize)>,
@@ -38,6 +51,8 @@ impl Names {
                 file,
                 line_types: deck.line_types.iter().map(|t| t.line).collect(),
                 bodies: deck.bodies.iter().map(|b| b.line).collect(),
+                rod_types: deck.rod_types.iter().map(|t| t.line).collect(),
+                rods: deck.rods.iter().map(|r| r.line).collect(),
                 points: deck.points.iter().map(|p| p.line).collect(),
                 lines: deck.lines.iter().map(|l| l.line).collect(),
                 options: deck
@@ -50,6 +65,36 @@ impl Names {
                     .collect(),
                 meshes: vec![None; deck.lines.len()],
             })),
+            ..Names::default()
+        }
+    }
+
+    /// The names of the parts rods add: a free rod's body is named by the
+    /// rod (`rods[k].end_a` for its position, `rods[k].rod_type` for the
+    /// rest; a deck's rod's line), a point from `first_point` on at a
+    /// rod's end by the rod.
+    pub fn with_rods(mut self, rods: &[super::rod_parts::SystemRod], first_point: usize) -> Names {
+        for (k, r) in rods.iter().enumerate() {
+            if let super::rod_parts::RodHolder::Free { body } = r.holder {
+                self.rods.bodies.push((body, k));
+            }
+            for p in r.points.iter().flatten().filter(|p| **p >= first_point) {
+                self.rods.points.push((*p, k));
+            }
+        }
+        self
+    }
+
+    /// The name of rod k's value: `position` is its end A, the rest its
+    /// type.
+    pub fn rod(&self, k: usize, key: &str) -> String {
+        let (key, column) = match key {
+            "position" => ("end_a", "Xa, Ya, Za"),
+            _ => ("rod_type", "RodType"),
+        };
+        match &self.deck {
+            Some(d) => d.at(d.rods[k], column),
+            None => format!("rods[{k}].{key}"),
         }
     }
 
@@ -66,6 +111,31 @@ impl Names {
         self.deck.is_some()
     }
 
+    /// `key` of rod type i (`rod_types[i].<key>`), or its `column` in
+    /// the deck.
+    pub fn rod_type(&self, i: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.rod_types[i], column),
+            None => format!("rod_types[{i}].{key}"),
+        }
+    }
+
+    /// Rod k: `rods[k]`, or its deck line (`line 12: rod 1`).
+    pub fn rod_place(&self, k: usize) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.rods[k], &format!("rod {}", k + 1)),
+            None => format!("rods[{k}]"),
+        }
+    }
+
+    /// `key` of rod k (`rods[k].<key>`), or its `column` in the deck.
+    pub fn rod_key(&self, k: usize, key: &str, column: &str) -> String {
+        match &self.deck {
+            Some(d) => d.at(d.rods[k], column),
+            None => format!("rods[{k}].{key}"),
+        }
+    }
+
     /// `key` of line type i (`line_types[i].<key>`), or its `column` in
     /// the deck.
     pub fn line_type(&self, i: usize, key: &str, column: &str) -> String {
@@ -77,6 +147,9 @@ impl Names {
 
     /// `key` of body i (`bodies[i].<key>`), or its `column` in the deck.
     pub fn body(&self, i: usize, key: &str, column: &str) -> String {
+        if let Some(&(_, k)) = self.rods.bodies.iter().find(|(b, _)| *b == i) {
+            return self.rod(k, key);
+        }
         match &self.deck {
             Some(d) => d.at(d.bodies[i], column),
             None => format!("bodies[{i}].{key}"),
@@ -85,6 +158,9 @@ impl Names {
 
     /// `key` of point i, or its `column` in the deck.
     pub fn point(&self, i: usize, key: &str, column: &str) -> String {
+        if let Some(&(_, k)) = self.rods.points.iter().find(|(p, _)| *p == i) {
+            return self.rod(k, key);
+        }
         match &self.deck {
             Some(d) => d.at(d.points[i], column),
             None => format!("points[{i}].{key}"),

@@ -37,6 +37,11 @@ pub(super) struct RawScenario {
     /// Rigid bodies (docs/interface.md, "Rigid bodies").
     #[serde(default)]
     pub(super) bodies: Vec<RawBody>,
+    /// Rod types and rods (docs/interface.md, "Rods").
+    #[serde(default)]
+    pub(super) rod_types: Vec<RawRodType>,
+    #[serde(default)]
+    pub(super) rods: Vec<RawRod>,
     #[serde(default)]
     pub(super) lines: Vec<RawLine>,
     #[serde(default)]
@@ -56,6 +61,8 @@ impl RawScenario {
             || !self.line_types.is_empty()
             || !self.points.is_empty()
             || !self.bodies.is_empty()
+            || !self.rod_types.is_empty()
+            || !self.rods.is_empty()
             || !self.lines.is_empty()
             || !self.motions.is_empty()
             || !self.mesh.is_empty()
@@ -169,6 +176,38 @@ pub(super) struct RawPoint {
     pub(super) ca: Option<f64>,
     /// The id of the body a point of type "body" is on.
     pub(super) body: Option<i64>,
+    /// The id of the rod a point of type "rod" is at, and which end
+    /// ("A" or "B").
+    pub(super) rod: Option<i64>,
+    pub(super) end: Option<String>,
+}
+
+/// One `[[rod_types]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawRodType {
+    pub(super) name: Option<String>,
+    pub(super) diameter: Option<f64>,
+    pub(super) mass_per_length: Option<f64>,
+    pub(super) cd: Option<f64>,
+    pub(super) ca: Option<f64>,
+    pub(super) cd_end: Option<f64>,
+    pub(super) ca_end: Option<f64>,
+}
+
+/// One `[[rods]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawRod {
+    pub(super) id: Option<i64>,
+    #[serde(rename = "type")]
+    pub(super) kind: Option<String>,
+    /// The id of the body a rod of type "body" is fixed in.
+    pub(super) body: Option<i64>,
+    pub(super) rod_type: Option<String>,
+    pub(super) end_a: Option<Vector>,
+    pub(super) end_b: Option<Vector>,
+    pub(super) segments: Option<i64>,
 }
 
 /// One `[[bodies]]` entry.

@@ -44,6 +44,8 @@ pub(super) fn system_scenario(
             (rs.gravity.is_some(), "system.gravity"),
             (!raw.line_types.is_empty(), "line_types"),
             (!raw.bodies.is_empty(), "bodies"),
+            (!raw.rod_types.is_empty(), "rod_types"),
+            (!raw.rods.is_empty(), "rods"),
             (!raw.points.is_empty(), "points"),
             (!raw.lines.is_empty(), "lines"),
         ]
@@ -70,8 +72,11 @@ pub(super) fn system_scenario(
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let water = scenario_water(ctx, raw.water, gravity)?;
     let line_types = line_types(ctx, &raw.line_types)?;
-    let bodies = super::bodies::bodies(ctx, &raw.bodies)?;
-    let mut points = points(ctx, &raw.points, &bodies)?;
+    let mut bodies = super::bodies::bodies(ctx, &raw.bodies)?;
+    let rod_types = super::rod_toml::rod_types(ctx, &raw.rod_types)?;
+    let mut rods =
+        super::rod_toml::rods(ctx, (&rod_types, &raw.rods), &mut bodies, water.is_some())?;
+    let mut points = points(ctx, &raw.points, &bodies, &mut rods)?;
     let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
     let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (analysis, measures, initial, mut notes) =
@@ -79,6 +84,10 @@ pub(super) fn system_scenario(
     check_clamp_route(ctx, &lines, &analysis, free_bodies)?;
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
+    notes.extend(super::rod_toml::rod_types_in_air(
+        &rod_types,
+        water.is_some(),
+    ));
     for (i, t) in line_types.iter().enumerate() {
         if water.is_none()
             && [t.cd_normal, t.ca_normal, t.cd_axial, t.ca_axial]
@@ -96,10 +105,12 @@ pub(super) fn system_scenario(
     super::output::channels_to_write(ctx, &output_files, false, 0)?;
     super::output::bodies_to_write(ctx, &output_files, bodies.len())?;
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
+    let names = super::names::Names::default().with_rods(&rods, usize::MAX);
     let mut sc = SystemScenario {
         title,
         line_types,
         bodies,
+        rods,
         points,
         lines,
         gravity,
@@ -112,12 +123,13 @@ pub(super) fn system_scenario(
         notes,
         water,
         channels: Vec::new(),
-        names: super::names::Names::default(),
+        names,
     };
     sc.notes.extend(static_waves_note(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     super::body_water::check_body_water(ctx.file, &sc)?;
+    super::rods::check_rod_water(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -141,7 +153,8 @@ fn deck_system(
         title,
         added.map(|w| (ctx, w)),
     )?;
-    sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()));
+    sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
+        .with_rods(&sc.rods, deck.points.len());
     super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
     let (analysis, measures, initial, notes) = analysis_part(
         ctx,
@@ -163,6 +176,7 @@ fn deck_system(
     sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
     super::body_water::check_body_water(ctx.file, &sc)?;
+    super::rods::check_rod_water(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -218,14 +232,17 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
 }
 
 /// `[[points]]`: `id` (required, unique), `type` ("fixed", "free",
-/// "coupled" or "body", required), `position` (required; on a body, in
-/// the body's axes from its reference point); a free point's `mass` (>= 0,
-/// default 0) and `force` (default 0); a body point's `body` (a body's
-/// id, required).
+/// "coupled", "body" or "rod", required), `position` (required but for a
+/// rod's point; on a body, in the body's axes from its reference point);
+/// a free point's `mass` (>= 0, default 0) and `force` (default 0); a
+/// body point's `body` (a body's id, required); a rod point's `rod` (a
+/// rod's id) and `end` ("A" or "B"), required (the point is recorded
+/// at that end of `rods`).
 fn points(
     ctx: &Ctx,
     raw: &[RawPoint],
     bodies: &[SystemBody],
+    rods: &mut [super::rod_parts::SystemRod],
 ) -> Result<Vec<SystemPoint>, ScenarioError> {
     let mut out: Vec<SystemPoint> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
@@ -238,16 +255,25 @@ fn points(
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["fixed", "free", "coupled", "body"],
+            &["fixed", "free", "coupled", "body", "rod"],
         )?;
-        let position = ctx.vector(
-            &key("position"),
-            &ctx.required(&key("position"), r.position.clone())?,
-        )?;
+        super::rod_toml::refuse_rod_keys(ctx, i, r, word)?;
+        let position = match word {
+            "rod" => [0.0; 3],
+            _ => ctx.vector(
+                &key("position"),
+                &ctx.required(&key("position"), r.position.clone())?,
+            )?,
+        };
         let (kind, position) = match word {
             "fixed" => (PointType::Fixed, position),
             "free" => (PointType::Free, position),
             "coupled" => (PointType::Coupled, position),
+            "rod" => {
+                let at = super::rod_toml::rod_point(ctx, i, r, rods)?;
+                rods[at.rod].points[at.end].get_or_insert(out.len());
+                (at.kind, at.position)
+            }
             _ => {
                 let body = body_of(ctx, i, r.body, bodies)?;
                 let kind = PointType::Body {
@@ -273,11 +299,15 @@ fn points(
         // A point on a free body may carry a mass, a force and a volume:
         // they become the body's (docs/method.md §15.8); its drag and added
         // mass are not built.
-        let on_free_body = matches!(kind, PointType::Body { body, .. } if bodies[body].is_free());
+        let on_free_body = word == "body"
+            && matches!(kind, PointType::Body { body, .. } if bodies[body].is_free());
         let allowed =
             |k: &str| kind == PointType::Free || (on_free_body && !matches!(k, "cda" | "ca"));
         if let Some((k, _)) = given.iter().find(|g| g.1 && !allowed(g.0)) {
-            let why = if word == "body" && on_free_body {
+            let why = if word == "rod" {
+                "a point at a rod's end carries no mass, force or water of its own (the rod's \
+                 type gives the rod's)"
+            } else if word == "body" && on_free_body {
                 "the drag and added mass of a point on a body are not built (give them to the \
                  body)"
             } else if word == "body" {

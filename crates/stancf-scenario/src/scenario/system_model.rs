@@ -4,7 +4,6 @@
 //! library point and body, and the seed of the static solve
 //! (docs/method.md §11.6).
 
-use super::bodies::SystemBody;
 use super::system_parts::{LineType, PointType, SystemPoint, SystemScenario};
 use super::water::Water;
 use stancf::body::{BodyWater, RigidInertia};
@@ -113,15 +112,20 @@ impl SystemScenario {
                 Ok(line)
             })
             .collect::<Result<Vec<_>, ModelError>>()?;
-        let bodies = self.bodies.iter().map(|b| self.library_body(b)).collect();
+        let bodies = (0..self.bodies.len())
+            .map(|b| self.library_body(b))
+            .collect();
         System::with_bodies(lines, points, bodies, self.gravity)
+            .map_err(|e| super::rods::rod_error(self, e))
     }
 
     /// The library's body: in water, a free body's volume, added mass and
     /// drag with the water's density and its current where it is uniform
     /// (a body with drag in a current that varies with depth is refused
-    /// on reading, [`super::body_water::check_body_water`]).
-    fn library_body(&self, b: &SystemBody) -> Body {
+    /// on reading, [`super::body_water::check_body_water`]); its rods
+    /// (a free rod's body: the rod), which the core folds in.
+    fn library_body(&self, i: usize) -> Body {
+        let b = &self.bodies[i];
         let (kind, inertia) = match b.kind {
             super::BodyType::Free => (
                 BodyKind::Free,
@@ -148,6 +152,7 @@ impl SystemScenario {
             }),
             _ => None,
         };
+        body.rods = super::rods::rods_of_body(self, i);
         body
     }
 

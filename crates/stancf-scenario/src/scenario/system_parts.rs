@@ -117,8 +117,11 @@ pub struct SystemLine {
 pub struct SystemScenario {
     pub title: String,
     pub line_types: Vec<LineType>,
-    /// Rigid bodies (docs/method.md §15).
+    /// Rigid bodies (docs/method.md §15); a free rod's body among them.
     pub bodies: Vec<SystemBody>,
+    /// Rods (docs/method.md §15.10): free (a body of `bodies`), on a body,
+    /// fixed, or (a deck's, of zero length) a free point.
+    pub rods: Vec<super::rod_parts::SystemRod>,
     pub points: Vec<SystemPoint>,
     pub lines: Vec<SystemLine>,
     /// Acceleration of gravity (m/s^2), default [0, 0, -9.81] (z up).

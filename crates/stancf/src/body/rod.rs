@@ -116,7 +116,7 @@ impl Rod {
         if self.end_a.iter().chain(&self.end_b).any(|x| !x.is_finite()) {
             return Err(ModelError::invalid(key, "its ends must be finite"));
         }
-        if !(self.length() > 0.0) {
+        if self.length().is_nan() || self.length() <= 0.0 {
             return Err(ModelError::invalid(
                 key,
                 "its ends are one point: a rod of zero length has no axis (give it a length, \

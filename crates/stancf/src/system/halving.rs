@@ -9,7 +9,7 @@
 //! it is the step the scenario chose, reported as such.
 
 use super::SystemSimulation;
-use crate::error::{FailureKind, ModelError, SolverError};
+use crate::error::{ModelError, SolverError};
 use crate::integrator::StepReport;
 
 /// The most halvings a step may take (a step cut into 2^10 parts).
@@ -51,7 +51,7 @@ impl SystemSimulation {
     /// deepest failed part's (its time, step and residual).
     pub(super) fn step_halving(&mut self, halvings: u32) -> Result<StepReport, SolverError> {
         match self.step_once() {
-            Err(e) if halvings > 0 && newton_failed(&e) => {}
+            Err(e) if halvings > 0 && e.newton_failed() => {}
             done => return done,
         }
         let dt = self.time_step();
@@ -66,12 +66,4 @@ impl SystemSimulation {
         report.newton.factorizations += a.newton.factorizations;
         Ok(report)
     }
-}
-
-/// Whether Newton failed (not the energy watchdog).
-fn newton_failed(e: &SolverError) -> bool {
-    matches!(
-        e.kind,
-        FailureKind::NotConverged | FailureKind::NonFinite | FailureKind::SingularJacobian
-    )
 }

@@ -38,7 +38,10 @@ fn the_oc4_example_deck_reads_three_lines_and_six_points() {
             assert_eq!(p.position[2], z);
         }
         let line = &deck.lines[k];
-        assert_eq!((line.end_a, line.end_b), (k + 1, k + 4));
+        assert_eq!(
+            (line.end_a, line.end_b),
+            (LineAttachment::Point(k + 1), LineAttachment::Point(k + 4))
+        );
         assert_eq!((line.unstretched_length, line.segments), (835.35, 20));
         assert_eq!(deck.line_type_of(line).name, "chain");
         assert!(!line.wants_line_file());

@@ -7,6 +7,7 @@ mod bodies;
 mod channels;
 mod decks;
 mod options;
+mod rods;
 mod tables;
 
 const OC4: &str = include_str!("../../../../../examples/oc4-deepcwind-moordyn.txt");

@@ -22,28 +22,6 @@ fn a_misspelt_line_type_is_refused_naming_the_line() {
 }
 
 #[test]
-fn a_rod_is_refused_naming_its_line() {
-    let rods = "--- RODS ---\nID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n\
-                (#) (name) (word) (m) (m) (m) (m) (m) (m) (-) (-)\n\
-                1 Can Fixed 0 0 -10 0 0 -5 4 -\n--- POINTS ---";
-    let text = with("--- POINTS ---", rods);
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "1 Can Fixed")));
-    assert!(e.message.starts_with("rods are not supported"), "{e}");
-    // An empty rod section is fine, with or without its column rows.
-    parse(&with(
-        "--- POINTS ---",
-        "--- ROD TYPES ---\n--- RODS ---\nID RodType\n(#) (-)\n--- POINTS ---",
-    ))
-    .unwrap();
-    // A line attached to a rod end.
-    let text = with("1 chain 1 2 110 10 -", "1 chain R1A 2 110 10 -");
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "R1A")));
-    assert!(e.message.contains("rods are not supported"), "{e}");
-}
-
-#[test]
 fn point_attachment_synonyms_read_and_others_are_refused_by_name() {
     for (word, kind) in [
         ("Anchor", Attachment::Fixed),

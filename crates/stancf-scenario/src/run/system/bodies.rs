@@ -219,3 +219,25 @@ pub(super) fn bodies_json(
         })
         .collect()
 }
+
+/// summary.json's `rods`: each rod's id, what holds it ("free", "body",
+/// "fixed", or "point" for a deck's free rod of zero length), the body
+/// it is (a free rod) or is fixed in, by its index in `bodies` and its
+/// id in bodies.csv, and the ids of the points at its ends A and B
+/// (null where no line attaches).
+pub(super) fn rods_json(sc: &crate::scenario::SystemScenario) -> Vec<serde_json::Value> {
+    sc.rods
+        .iter()
+        .map(|r| {
+            let point = |p: Option<usize>| p.map(|p| sc.points[p].id);
+            serde_json::json!({
+                "id": r.id,
+                "type": r.holder_word(),
+                "rod_type": r.type_name,
+                "body": r.body(),
+                "body_id": r.body().map(|b| sc.bodies[b].id),
+                "points": [point(r.points[0]), point(r.points[1])],
+            })
+        })
+        .collect()
+}

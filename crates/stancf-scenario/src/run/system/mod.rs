@@ -226,7 +226,7 @@ fn ending(
         } else {
             format!("no equilibrium was reached; {shown} holds the result files' headers")
         };
-        let hint = if outcome.failed_stepping {
+        let hint = if outcome.failed_stepping && f.newton_failed() {
             halving_hint(sc.analysis.step_halvings)
         } else {
             String::new()
@@ -444,6 +444,9 @@ fn write_summary(
     });
     if !sc.bodies.is_empty() {
         summary["bodies"] = Value::Array(bodies::bodies_json(sc, sim, statics));
+    }
+    if !sc.rods.is_empty() {
+        summary["rods"] = Value::Array(bodies::rods_json(sc));
     }
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())

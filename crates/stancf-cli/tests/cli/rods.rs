@@ -1,0 +1,568 @@
+//! Rods in systems (docs/interface.md, "Rods"): a TOML free rod rising
+//! in still water as a body of its mass and added mass, MoorDyn decks'
+//! free, body and zero-length rods with lines at their ends held at the
+//! balance of their weights, what `check` and summary.json say of them,
+//! and what is not built refused naming the key or the deck's line.
+
+use crate::common::*;
+use std::f64::consts::PI;
+
+/// A horizontal free rod (MoorDyn's `rod_tests/AddedMass.txt`: 2 m
+/// long, 0.5 m across, 100 kg/m, Ca 1, every other coefficient 0) at
+/// z = -10 m in still water, with a light thread (1 m, 1 mm, 0.01 kg/m,
+/// no drag or added mass) hanging from each end; `analysis` the
+/// `[analysis]` body.
+fn rising_rod(analysis: &str) -> String {
+    format!(
+        "title = \"rising rod\"\n[water]\ndepth = 50.0\ndensity = 1025.0\n\
+         [[line_types]]\nname = \"thread\"\ndiameter = 0.001\nmass_per_length = 0.01\nea = 1.0e3\n\
+         [[rod_types]]\nname = \"can\"\ndiameter = 0.5\nmass_per_length = 100.0\nca = 1.0\n\
+         [[rods]]\nid = 7\ntype = \"free\"\nrod_type = \"can\"\nend_a = [-1.0, 0.0, -10.0]\n\
+         end_b = [1.0, 0.0, -10.0]\nsegments = 4\n\
+         [[points]]\nid = 1\ntype = \"rod\"\nrod = 7\nend = \"A\"\n\
+         [[points]]\nid = 2\ntype = \"rod\"\nrod = 7\nend = \"B\"\n\
+         [[lines]]\nid = 1\ntype = \"thread\"\nlength = 1.0\nelements = 2\na = 1\n\
+         [[lines]]\nid = 2\ntype = \"thread\"\nlength = 1.0\nelements = 2\na = 2\n\
+         [analysis]\n{analysis}\n"
+    )
+}
+
+/// The rising rod: MoorDyn's analytic z(t) = z0 + a t^2 / 2 with
+/// a = (rho V - m) g / (m + Ca rho V), here with the threads, which only
+/// translate with it (their mass m_l and volume V_l, no added mass):
+/// a = (rho V - m + rho V_l - m_l) g / (m + Ca rho V + m_l). Across its
+/// axis the rod's added mass is Ca rho V and its caps carry none; the
+/// Galerkin step integrates a constant acceleration exactly. What is
+/// left is the threads' axial ringing (they start unstretched): their
+/// force varies by a part of their 0.18 N wet weight against the rod's
+/// 1987 N lift, and averages out; measured 2.7e-9 m of the 1.65 m rise.
+/// The claim is 1e-6 m: leaving the threads out of a moves z(1) by
+/// 2e-4 m, and a wrong added mass (Ca on the caps, or none) by far more.
+/// The rod does not turn, and summary.json names its body.
+#[test]
+fn a_free_rod_rises_in_still_water_as_a_body_of_its_mass_and_added_mass() {
+    let d = scratch("rising-rod");
+    let sc = write_scenario(
+        &d,
+        "rod.toml",
+        &rising_rod("type = \"dynamic\"\ntime_step = 0.01\nduration = 1.0"),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (rho, g) = (1025.0, 9.81);
+    let (m, v) = (200.0, PI * 0.25 * 0.25 * 2.0);
+    let (m_l, v_l) = (2.0 * 0.01, 2.0 * PI * 0.0005 * 0.0005);
+    let a = (rho * v - m + rho * v_l - m_l) * g / (m + rho * v + m_l);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    assert_eq!(rows.len(), 101);
+    for r in &rows {
+        let t = r[col("t")];
+        let want = -10.0 + 0.5 * a * t * t;
+        assert!(
+            (r[col("z")] - want).abs() < 1e-6,
+            "t = {t}: z {} against {want}",
+            r[col("z")]
+        );
+        assert!(
+            (r[col("vz")] - a * t).abs() < 1e-5,
+            "t = {t}: vz {}",
+            r[col("vz")]
+        );
+        for c in ["x", "y", "roll", "pitch", "yaw"] {
+            let want = if c == "x" { -1.0 } else { 0.0 };
+            assert!(
+                (r[col(c)] - want).abs() < 1e-9,
+                "t = {t}: {c} {}",
+                r[col(c)]
+            );
+        }
+    }
+    let s = read_json(&out.join("summary.json"));
+    let rods = s["rods"].as_array().unwrap();
+    assert_eq!(rods.len(), 1);
+    assert_eq!(rods[0]["id"], 7);
+    assert_eq!(rods[0]["type"], "free");
+    assert_eq!(rods[0]["body"], 0);
+    assert_eq!(rods[0]["body_id"], 1);
+    assert_eq!(rods[0]["points"], serde_json::json!([1, 2]));
+    assert_eq!(s["bodies"][0]["id"], 1);
+    // check lists the rod: its holder, length, mass and water.
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    let rod_line = so.lines().find(|l| l.starts_with("rod 7")).expect("rod 7");
+    for w in [
+        "free, body 1",
+        "length 2 m",
+        "mass 200 kg",
+        "submerged",
+        "point 1 at A",
+    ] {
+        assert!(rod_line.contains(w), "{w}: {rod_line}");
+    }
+    assert!(
+        so.lines()
+            .any(|l| l.starts_with("rods") && l.ends_with(" 1")),
+        "{so}"
+    );
+}
+
+/// MoorDyn's `tests/Mooring/RodHanging.txt` (examples/): a free rod of
+/// 20 m, 77.7 kg/m and 0.25 m at z = -75 m hung by two ropes from the
+/// surface at x = -450 and 450 m. At the static equilibrium the ropes
+/// hold its wet weight, (w L - rho pi d^2/4 L) g with MoorDyn's g and
+/// rho, at its middle, 10 m from its reference point end A: force and
+/// moment to the static tolerance (1e-6 of the weight here), and it does
+/// not turn (MoorDyn's test: it "should not rotate at all").
+#[test]
+fn moordyns_hanging_rod_hangs_level_at_the_balance_of_its_wet_weight() {
+    let d = scratch("rod-hanging");
+    let deck = repo_file("examples/rod-hanging-moordyn.txt");
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let r = rows.last().unwrap();
+    let (l, dia, w) = (20.0, 0.25, 77.7066);
+    let wet = (w * l - 1025.0 * PI * dia * dia / 4.0 * l) * 9.80665;
+    assert!(
+        (r[col("fz")] - wet).abs() < 1e-6 * wet,
+        "fz {} against {wet}",
+        r[col("fz")]
+    );
+    assert!(r[col("fx")].abs() < 1e-6 * wet, "fx {}", r[col("fx")]);
+    assert!(
+        (r[col("my")] + 10.0 * wet).abs() < 1e-5 * wet,
+        "my {}",
+        r[col("my")]
+    );
+    for c in ["roll", "pitch", "yaw"] {
+        assert!(r[col(c)].abs() < 1e-6, "{c} {}", r[col(c)]);
+    }
+    let s = read_json(&out.join("summary.json"));
+    assert_eq!(s["rods"][0]["type"], "free");
+    // The points at R1A and R1B come after the deck's two.
+    assert_eq!(s["rods"][0]["points"], serde_json::json!([3, 4]));
+}
+
+/// A free body carrying a rod (`Body1`, 4 m, 100 kg/m, 0.5 m) hung from
+/// the surface by lines at the rod's ends, one line running through a
+/// free rod of zero length (`NumSegs` 0, a point); `rod_outputs` the
+/// zero-length rod's RodOutputs, `ei` the ropes' EI.
+fn body_rod_deck(rod_outputs: &str, ei: &str) -> String {
+    format!(
+        "--------------------- MoorDyn Input File ---------------------------------------
+A free body carrying a rod, hung by lines at the rod's ends
+----------------------- LINE TYPES ------------------------------------------
+TypeName Diam  Mass/m   EA         BA/-zeta EI      Cd  Ca  CdAx CaAx
+(name)   (m)   (kg/m)   (N)        (N-s/-)  (N-m^2) (-) (-) (-)  (-)
+rope     0.05  10.0     1.0E8      -0.5     {ei}    1.2 1.0 0.1  0.0
+---------------------- ROD TYPES -----------------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+can           0.5      100       1.2    1.0     0.6      0.5
+conn          0.1      5         1.0    1.0     1.0      1.0
+---------------------------- BODIES -----------------------------------------------------
+ID   Attachment  X0     Y0    Z0     r0      p0     y0     Mass  CG*   I*      Volume   CdA*    Ca
+(#)     (-)      (m)    (m)   (m)   (deg)   (deg)  (deg)   (kg)  (m)  (kg-m^2)  (m^3)   (m^2)   (-)
+1      Free      0.0    0    -20.0   0       0      0      1000   0    1000     0        0       0
+---------------------- RODS ----------------------------------------------------
+ID   RodType   Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs RodOutputs
+(#)  (name)     (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)     (-)
+1    can       Body1       -2    0     0     2     0     0    4       -
+2    conn      Free        15    0     -10   15    0     -10  0       {rod_outputs}
+---------------------- POINTS --------------------------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     -30     0       0       0      0       0      0
+2     Fixed      30     0       0       0      0       0      0
+---------------------- LINES ---------------------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     rope       1        R1A       36        12      -
+2     rope       2        R2A       18        6       -
+3     rope       r2b      Rod1B     20        6       -
+---------------------- OPTIONS -------------------------------------------------
+0.002         dtM                  time step (s)
+100           WtrDpth              water depth (m)
+------------------------- need this line --------------------------------------
+"
+    )
+}
+
+/// The body and its rod settle where the lines hold their weight less
+/// the rod's buoyancy, (1000 + 400 - 1025 pi 0.25^2 4) g, both acting at
+/// the body's reference point (its centre of mass and the rod's middle):
+/// the lines' force to the static tolerance, and no moment about it.
+/// The zero-length rod is a free point joining lines 2 and 3; check lists
+/// both rods and notes the per-rod file that is not written.
+#[test]
+fn a_deck_with_a_rod_on_a_body_and_lines_at_its_ends_runs_to_the_balance() {
+    let d = scratch("body-rod");
+    let deck = write_scenario(&d, "body-rod.txt", &body_rod_deck("p", "0"));
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let r = rows.last().unwrap();
+    let wet = (1000.0 + 400.0 - 1025.0 * PI * 0.0625 * 4.0) * 9.80665;
+    assert!(
+        (r[col("fz")] - wet).abs() < 1e-6 * wet,
+        "fz {} against {wet}",
+        r[col("fz")]
+    );
+    for c in ["fx", "mx", "my", "mz"] {
+        assert!(r[col(c)].abs() < 1e-6 * wet, "{c} {}", r[col(c)]);
+    }
+    let s = read_json(&out.join("summary.json"));
+    let rods = s["rods"].as_array().unwrap();
+    assert_eq!(
+        (&rods[0]["type"], &rods[0]["body"]),
+        (&"body".into(), &0.into())
+    );
+    assert_eq!(rods[0]["points"], serde_json::json!([4, 5]));
+    assert_eq!(rods[1]["type"], "point");
+    assert_eq!(rods[1]["body"], serde_json::Value::Null);
+    assert_eq!(rods[1]["points"], serde_json::json!([3, 3]));
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    let line = |start: &str| {
+        so.lines()
+            .find(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("{start}: {so}"))
+            .to_string()
+    };
+    assert!(
+        line("rod 1").contains("fixed in free body 1; type can, length 4 m"),
+        "{so}"
+    );
+    assert!(line("rod 1").contains("mass 400 kg; submerged"), "{so}");
+    assert!(
+        line("rod 2").contains("free of zero length (NumSegs 0): point 3"),
+        "{so}"
+    );
+    assert!(line("body 1").contains("rods 1 fixed in it"), "{so}");
+    assert!(
+        so.contains(
+            "rod 2 asks for a file of its own (RodOutputs \"p\"), which stancf does not write"
+        ),
+        "{so}"
+    );
+    // A dynamic run from that equilibrium stays there: the core steps
+    // the zero-length rod, a free point of no mass between two lines
+    // (nothing moves: velocities are round-off, 1e-13 m/s measured).
+    let dynamic = write_scenario(
+        &d,
+        "dynamic.toml",
+        "[system]\nmoordyn = \"body-rod.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 0.01\nduration = 0.5\n",
+    );
+    let o = run_quiet(&dynamic, &d.join("dyn"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (_, moving) = read_csv(&d.join("dyn").join("bodies.csv"));
+    for m in &moving {
+        for c in ["x", "z", "pitch"] {
+            assert!(
+                (m[col(c)] - r[col(c)]).abs() < 1e-9,
+                "t = {}: {c} {}",
+                m[0],
+                m[col(c)]
+            );
+        }
+        for c in ["vx", "vz", "wy"] {
+            assert!(m[col(c)].abs() < 1e-9, "t = {}: {c} {}", m[0], m[col(c)]);
+        }
+    }
+    // RodOutputs without a file letter: no note.
+    let quiet = write_scenario(&d, "quiet.txt", &body_rod_deck("-", "0"));
+    let (so, _) = text(&stancf(&["check", quiet.to_str().unwrap()]));
+    assert!(!so.contains("file of its own"), "{so}");
+}
+
+/// What is not built is refused naming the deck's line: a line with
+/// bending stiffness at a rod end, a pinned or coupled rod, a rod in
+/// water that reaches the surface, a zero-length free rod without lines,
+/// a rod output channel, a rod type's value out of the solver's range;
+/// a deck of rods alone (no lines) is refused saying why.
+#[test]
+fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
+    let d = scratch("rod-refusals");
+    let base = body_rod_deck("-", "0");
+    let line_of =
+        |text: &str, needle: &str| text.lines().position(|l| l.contains(needle)).unwrap() + 1;
+    let cases: Vec<(String, &str, String)> =
+        vec![
+        (
+            body_rod_deck("-", "1e3"),
+            "1     rope       1        R1A",
+            "AttachB of line 1 is end A of rod 1, and its line type has bending stiffness EI = \
+             1000 N m^2: a line with bending stiffness at a rod end (MoorDyn clamps it to the \
+             rod's axis) is not built yet"
+                .into(),
+        ),
+        (
+            base.replace("1    can       Body1 ", "1    can       Body1Pinned "),
+            "Body1Pinned",
+            "pinned rods are not built yet".into(),
+        ),
+        (
+            base.replace("1    can       Body1 ", "1    can       Coupled "),
+            "1    can       Coupled",
+            "coupled rods are not built yet".into(),
+        ),
+        (
+            base.replace(
+                "2    conn      Free        15    0     -10   15    0     -10  0",
+                "2    conn      Free        15    0     -1    15    0     1    2",
+            ),
+            "2    conn      Free",
+            "rod 2 has its ends at z = -1 and 1 m: a rod in water must lie under the surface"
+                .into(),
+        ),
+        (
+            base.replace(
+                "2     rope       2        R2A       18        6",
+                "2     rope       2        R1B       40        6",
+            )
+            .replace(
+                "3     rope       r2b      Rod1B     20        6       -\n",
+                "",
+            ),
+            "2    conn      Free",
+            "rod 2 is free with NumSegs 0".into(),
+        ),
+        (
+            base.replace(
+                "100           WtrDpth",
+                "100           WtrDpth\n--- OUTPUTS ---\nRod1PX",
+            ),
+            "Rod1PX",
+            "rod channels are not written in this version".into(),
+        ),
+        (
+            base.replace("can           0.5      100 ", "can           0.5      1e160 "),
+            "can           0.5      1e160",
+            "Mass/m: the value given = 1e160 is beyond 1e150".into(),
+        ),
+    ];
+    for (k, (deck, at, words)) in cases.iter().enumerate() {
+        let file = write_scenario(&d, &format!("bad{k}.txt"), deck);
+        let n = line_of(deck, at);
+        let errs =
+            refused_by_check_and_run(&file, &d.join(format!("never{k}")), &[words.as_str()], &[]);
+        assert!(
+            errs[0].contains(&format!("bad{k}.txt: line {n}: ")),
+            "{k}: {}",
+            errs[0]
+        );
+    }
+    // MoorDyn's rod_tests/AddedMass.txt has rods and no lines.
+    let no_lines = base
+        .split("---------------------- LINES")
+        .next()
+        .unwrap()
+        .to_string()
+        + "---------------------- OPTIONS -----\n100 WtrDpth\n--- END ---\n";
+    let file = write_scenario(&d, "nolines.txt", &no_lines);
+    refused_by_check_and_run(
+        &file,
+        &d.join("never-nl"),
+        &[
+            "the deck defines no lines",
+            "a deck of rods or bodies alone is not built",
+        ],
+        &[],
+    );
+}
+
+/// A TOML rod's keys are checked as the reader checks every key: unknown
+/// keys, a rod type not defined, a body rod's body, a point at a rod end
+/// given a position, an end or a mass, a rod above the water, segments
+/// below 1, a rod of zero length, one too thin to have a body's inertia
+/// (the core's refusal named by the rod), a value out of range.
+#[test]
+fn toml_rod_keys_are_checked_naming_the_key() {
+    let base = rising_rod("type = \"dynamic\"\ntime_step = 0.01\nduration = 1.0");
+    for (name, scenario, needles) in [
+        (
+            "rod-unknown-key",
+            base.replace("segments = 4\n", "segments = 4\nlength = 2.0\n"),
+            vec!["unknown field `length`"],
+        ),
+        (
+            "rod-type-unknown-key",
+            base.replace("ca = 1.0\n[[rods]]", "ca = 1.0\ncdax = 1.0\n[[rods]]"),
+            vec!["unknown field `cdax`"],
+        ),
+        (
+            "rod-type-undefined",
+            base.replace("rod_type = \"can\"", "rod_type = \"cann\""),
+            vec![
+                "rods[0].rod_type",
+                "rod type \"cann\" is not defined (known: can)",
+            ],
+        ),
+        (
+            "rod-body-undefined",
+            base.replace(
+                "type = \"free\"\nrod_type",
+                "type = \"body\"\nbody = 3\nrod_type",
+            ),
+            vec![
+                "rods[0].body",
+                "body 3 is not defined (there are no [[bodies]])",
+            ],
+        ),
+        (
+            "rod-point-position",
+            base.replace("end = \"A\"\n", "end = \"A\"\nposition = [0.0, 0.0, 0.0]\n"),
+            vec!["points[0].position", "leave the position out"],
+        ),
+        (
+            "rod-point-end",
+            base.replace("end = \"A\"\n", "end = \"C\"\n"),
+            vec!["points[0].end", "unknown value \"C\""],
+        ),
+        (
+            "rod-point-mass",
+            base.replace("end = \"A\"\n", "end = \"A\"\nmass = 1.0\n"),
+            vec!["points[0].mass", "a point at a rod's end carries no mass"],
+        ),
+        (
+            "rod-above-water",
+            base.replace("end_b = [1.0, 0.0, -10.0]", "end_b = [1.0, 0.0, 0.5]"),
+            vec!["rods[0]", "a rod in water must lie under the surface"],
+        ),
+        (
+            "rod-no-segments",
+            base.replace("segments = 4", "segments = 0"),
+            vec!["rods[0].segments", "must be between 1 and 10000, got 0"],
+        ),
+        (
+            "rod-too-thin",
+            base.replace("diameter = 0.5", "diameter = 1e-200"),
+            vec!["rods[0]: moments of inertia"],
+        ),
+        (
+            "rod-too-heavy",
+            base.replace("mass_per_length = 100.0", "mass_per_length = 1e160"),
+            vec!["rod_types[0].mass_per_length", "beyond 1e150"],
+        ),
+        (
+            "rod-zero-length",
+            base.replace("end_b = [1.0, 0.0, -10.0]", "end_b = [-1.0, 0.0, -10.0]"),
+            vec!["rods[0]", "a rod of zero length has no axis"],
+        ),
+    ] {
+        expect_input_error(name, &scenario, &needles);
+    }
+}
+
+/// The rising rod reaches the surface at t* = sqrt(2 x 10 / a) = 2.463 s
+/// (its ends at z = -10 m): a rod crossing the surface is not built, so
+/// the run stops there as a solver failure (exit 3) after writing every
+/// step before, the last at t = 2.46 s, and says why.
+#[test]
+fn a_free_rod_that_reaches_the_surface_stops_the_run_with_exit_3() {
+    let d = scratch("rod-surface");
+    let sc = write_scenario(
+        &d,
+        "rod.toml",
+        &rising_rod("type = \"dynamic\"\ntime_step = 0.01\nduration = 3.0"),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(3), "{se}");
+    assert!(se.contains("reaches the water surface"), "{se}");
+    let (_, rows) = read_csv(&out.join("bodies.csv"));
+    let last = rows.last().unwrap();
+    assert!((last[0] - 2.46).abs() < 1e-9, "last row at t = {}", last[0]);
+    assert!(last[4] < 0.0, "z {}", last[4]);
+    let s = read_json(&out.join("summary.json"));
+    let error = s["error"].as_str().unwrap();
+    assert!(
+        error.contains("the motion left what the model covers at t = 2.46"),
+        "{error}"
+    );
+}
+
+/// A rod fixed in a TOML body (`type = "body"`) joins the body: hung by
+/// lines at the rod's ends, body and rod settle where the lines hold
+/// (1000 + 400 - 1025 pi 0.25^2 4) g (TOML's g = 9.81), to the static
+/// tolerance.
+#[test]
+fn a_toml_rod_on_a_body_adds_its_weight_and_buoyancy_to_the_body() {
+    let scenario = "title = \"body rod\"\n[water]\ndepth = 100.0\ndensity = 1025.0\n\
+        [[line_types]]\nname = \"rope\"\ndiameter = 0.05\nmass_per_length = 10.0\nea = 1.0e8\n\
+        [[rod_types]]\nname = \"can\"\ndiameter = 0.5\nmass_per_length = 100.0\ncd = 1.2\nca = 1.0\n\
+        [[bodies]]\nid = 4\ntype = \"free\"\nposition = [0.0, 0.0, -20.0]\nmass = 1000.0\n\
+        inertia = [1000.0, 1000.0, 1000.0]\n\
+        [[rods]]\nid = 1\ntype = \"body\"\nbody = 4\nrod_type = \"can\"\n\
+        end_a = [-2.0, 0.0, 0.0]\nend_b = [2.0, 0.0, 0.0]\n\
+        [[points]]\nid = 1\ntype = \"fixed\"\nposition = [-30.0, 0.0, 0.0]\n\
+        [[points]]\nid = 2\ntype = \"fixed\"\nposition = [30.0, 0.0, 0.0]\n\
+        [[points]]\nid = 3\ntype = \"rod\"\nrod = 1\nend = \"A\"\n\
+        [[points]]\nid = 4\ntype = \"rod\"\nrod = 1\nend = \"B\"\n\
+        [[lines]]\nid = 1\ntype = \"rope\"\nlength = 36.0\nelements = 12\na = 1\nb = 3\n\
+        [[lines]]\nid = 2\ntype = \"rope\"\nlength = 36.0\nelements = 12\na = 2\nb = 4\n\
+        [analysis]\ntype = \"static\"\n";
+    let d = scratch("toml-body-rod");
+    let sc = write_scenario(&d, "rod.toml", scenario);
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let r = rows.last().unwrap();
+    let wet = (1000.0 + 400.0 - 1025.0 * PI * 0.0625 * 4.0) * 9.81;
+    assert!(
+        (r[col("fz")] - wet).abs() < 1e-6 * wet,
+        "fz {} against {wet}",
+        r[col("fz")]
+    );
+    let s = read_json(&out.join("summary.json"));
+    assert_eq!(s["rods"][0]["type"], "body");
+    assert_eq!(s["rods"][0]["body_id"], 4);
+}
+
+/// A deck's free body with Mass 0 and I 0 that carries a rod (MoorDyn's
+/// floats made of rods, OpenFAST's md_float): the rod's mass and inertia
+/// make the body, and at the balance the lines hold the rod's wet weight
+/// alone, (400 - 1025 pi 0.25^2 4) g, to the static tolerance. Without
+/// a rod such a body is refused, naming its line.
+#[test]
+fn a_deck_body_of_no_mass_of_its_own_takes_its_rods_mass() {
+    let d = scratch("massless-body-rod");
+    let text = body_rod_deck("-", "0").replace(
+        "1      Free      0.0    0    -20.0   0       0      0      1000   0    1000",
+        "1      Free      0.0    0    -20.0   0       0      0      0      0    0   ",
+    );
+    let deck = write_scenario(&d, "body-rod.txt", &text);
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text_of(&o));
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let wet = (400.0 - 1025.0 * PI * 0.0625 * 4.0) * 9.80665;
+    let fz = rows.last().unwrap()[col("fz")];
+    assert!((fz - wet).abs() < 1e-6 * wet.abs(), "fz {fz} against {wet}");
+    let bare = text.replace(
+        "1    can       Body1       -2    0     0     2     0     0    4       -",
+        "1    can       Fixed       -2    0     0     2     0     0    4       -",
+    );
+    let deck = write_scenario(&d, "bare.txt", &bare);
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text_of(&o).contains("line 15: Mass"), "{}", text_of(&o));
+}
+
+fn text_of(o: &std::process::Output) -> String {
+    let (so, se) = text(o);
+    format!("{so}{se}")
+}

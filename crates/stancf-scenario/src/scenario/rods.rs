@@ -1,0 +1,318 @@
+//! Rods of a system (docs/interface.md, "Rods"; docs/method.md §15.10):
+//! a deck's ROD TYPES and RODS, or `[[rod_types]]` and `[[rods]]`
+//! (`rod_toml.rs`). A rod is a rigid cylinder held three ways:
+//!
+//! - free: a body of its own (six degrees of freedom), its reference
+//!   point at end A, its axes the global ones at t = 0, its mass and
+//!   water the rod's ([`stancf::system::Body::rod`]);
+//! - on a body: fixed in it, its mass and water joining the body's;
+//! - fixed: held where it is, its ends fixed points.
+//!
+//! A deck's free rod of zero length (`NumSegs` = 0, MoorDyn's 3-DOF
+//! point carrying only its lines, docs/moordyn-bodies-rods.md §1.3) is a
+//! free point of no mass, volume or drag.
+//!
+//! Lines attach at a rod's end through a point there: a point on the
+//! rod's body at the end's body coordinates, or a fixed point for a
+//! fixed rod (a deck's line ends at `R<n>A`, `R<n>B` get such a point,
+//! numbered after the deck's points; a TOML scenario writes them as
+//! `[[points]]` of type "rod"). Points are pinned: MoorDyn clamps a
+//! line's end to the rod's axis, which for a line without bending
+//! stiffness is the same; a deck's line with bending stiffness at a rod
+//! end is refused.
+
+use super::bodies::SystemBody;
+use super::rod_parts::{
+    free_rod_body, next_body_id, not_submerged, rod_of, RodHolder, RodTypeValues, SystemRod,
+};
+use super::system_parts::{PointType, SystemPoint, SystemScenario};
+use super::ScenarioError;
+use crate::moordyn::{Deck, DeckRod, LineAttachment, RodAttachment, RodEnd};
+use stancf::body::Rod;
+use stancf::motion::CoupledMotion;
+use stancf::vec3::sub;
+
+/// The point at end `end` of `rod` (its holder and ends placed): on the
+/// rod's body, a fixed point for a fixed rod, the rod's free point for
+/// one of zero length; `id` its id.
+pub(super) fn end_point(
+    rod: &SystemRod,
+    local: [f64; 3],
+    global: [f64; 3],
+    id: i64,
+) -> SystemPoint {
+    let kind = match rod.holder {
+        RodHolder::Fixed => PointType::Fixed,
+        RodHolder::Point { .. } => PointType::Free,
+        RodHolder::Free { body } | RodHolder::Body { body } => PointType::Body { body, local },
+    };
+    SystemPoint {
+        id,
+        kind,
+        position: global,
+        mass: 0.0,
+        force: [0.0; 3],
+        volume: 0.0,
+        drag_area: 0.0,
+        ca: 0.0,
+        motion: CoupledMotion::NONE,
+        motion_file: None,
+    }
+}
+
+/// The deck's rods and the points their line ends need: the bodies of
+/// free rods pushed onto `bodies` (ids after the deck's), the points
+/// onto `points` (which holds the deck's, ids 1 to n: ids n + 1...), and the point (index) at each
+/// line's ends. Refused naming the deck's line: a rod of a length
+/// MoorDyn gives none with segments (or none with length), a line with
+/// bending stiffness at a rod end, a zero-length free rod no line is
+/// attached to, a rod in water that moves (free, or on a free body) and
+/// does not lie under the surface (a fixed rod's water acts on nothing).
+pub(super) fn deck_rods(
+    deck: &Deck,
+    file: &str,
+    bodies: &mut Vec<SystemBody>,
+    points: &mut Vec<SystemPoint>,
+    in_water: bool,
+) -> Result<(Vec<SystemRod>, Vec<[usize; 2]>), ScenarioError> {
+    let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
+    let mut rods = Vec::with_capacity(deck.rods.len());
+    for r in &deck.rods {
+        let rod = deck_rod(deck, r, bodies, points).map_err(|m| at(r.line, m))?;
+        if in_water && rod.rod.is_some() && rod.moves(bodies) && !rod.submerged() {
+            return Err(at(r.line, not_submerged(&rod)));
+        }
+        rods.push(rod);
+    }
+    let mut ends = Vec::with_capacity(deck.lines.len());
+    for l in &deck.lines {
+        let mut pair = [0; 2];
+        for (k, a) in [l.end_a, l.end_b].into_iter().enumerate() {
+            pair[k] = match a {
+                LineAttachment::Point(p) => p - 1,
+                LineAttachment::Rod(n, end) => {
+                    if deck.line_type_of(l).ei > 0.0 {
+                        return Err(at(
+                            l.line,
+                            format!(
+                                "{} of line {} is end {} of rod {n}, and its line type has \
+                                 bending stiffness EI = {} N m^2: a line with bending \
+                                 stiffness at a rod end (MoorDyn clamps it to the rod's axis) \
+                                 is not built yet",
+                                ["AttachA", "AttachB"][k],
+                                l.id,
+                                end.letter(),
+                                deck.line_type_of(l).ei
+                            ),
+                        ));
+                    }
+                    rod_end_point(&mut rods[n - 1], end, points)
+                }
+            };
+        }
+        ends.push(pair);
+    }
+    for (r, rod) in deck.rods.iter().zip(&rods) {
+        let attached = deck.lines.iter().any(|l| {
+            [l.end_a, l.end_b]
+                .iter()
+                .any(|a| matches!(a, LineAttachment::Rod(n, _) if *n == r.id))
+        });
+        if matches!(rod.holder, RodHolder::Point { .. }) && !attached {
+            return Err(at(
+                r.line,
+                format!(
+                    "rod {} is free with NumSegs 0, a point of no mass that carries only the \
+                     lines attached to it, and no line is attached to it (R{}A, R{}B)",
+                    r.id, r.id, r.id
+                ),
+            ));
+        }
+    }
+    Ok((rods, ends))
+}
+
+/// One RODS row as a rod (a free rod's body or a zero-length rod's point
+/// pushed); the message of its refusal.
+fn deck_rod(
+    deck: &Deck,
+    r: &DeckRod,
+    bodies: &mut Vec<SystemBody>,
+    points: &mut Vec<SystemPoint>,
+) -> Result<SystemRod, String> {
+    let t = RodTypeValues::of_deck(deck.rod_type_of(r));
+    let zero = r.segments == 0;
+    let (holder, rod, ends) = match r.attachment {
+        RodAttachment::Fixed => (RodHolder::Fixed, [r.end_a, r.end_b], [r.end_a, r.end_b]),
+        RodAttachment::Free if zero => {
+            let holder = RodHolder::Point {
+                point: points.len(),
+            };
+            (holder, [r.end_a; 2], [r.end_a; 2])
+        }
+        RodAttachment::Free => {
+            let body = bodies.len();
+            bodies.push(free_rod_body(next_body_id(bodies), r.end_a));
+            let local = [[0.0; 3], sub(r.end_b, r.end_a)];
+            (RodHolder::Free { body }, local, [r.end_a, r.end_b])
+        }
+        RodAttachment::Body(n) => {
+            let b = &bodies[n - 1];
+            let ends = [b.point(r.end_a), b.point(r.end_b)];
+            (RodHolder::Body { body: n - 1 }, [r.end_a, r.end_b], ends)
+        }
+    };
+    let built = (!zero).then(|| rod_of(&t, rod[0], rod[1], r.segments));
+    if let Some(built) = &built {
+        built
+            .validate(&format!("rod {}", r.id))
+            .map_err(|e| format!("{}: {}", e.key, e.message))?;
+    } else if r.attachment != RodAttachment::Free && r.end_a != r.end_b {
+        // A fixed or body rod of zero length is where its end A is; its
+        // end B would be ignored.
+        return Err(format!(
+            "rod {} has NumSegs 0 (a rod of zero length) but its ends differ: give it \
+             segments, or end B = end A",
+            r.id
+        ));
+    }
+    let mut out = SystemRod {
+        id: r.id as i64,
+        holder,
+        type_name: deck.rod_type_of(r).name.clone(),
+        type_index: r.type_index,
+        rod: built,
+        ends,
+        points: [None; 2],
+    };
+    if let RodHolder::Point { .. } = holder {
+        let id = points.len() as i64 + 1;
+        points.push(end_point(&out, [0.0; 3], r.end_a, id));
+        out.points = [Some(points.len() - 1); 2];
+    }
+    Ok(out)
+}
+
+/// The point (index) at end `end` of `rod`, pushed onto `points` (after
+/// the deck's, its id one more than their count) the first time an end
+/// asks for it.
+fn rod_end_point(rod: &mut SystemRod, end: RodEnd, points: &mut Vec<SystemPoint>) -> usize {
+    let k = match end {
+        RodEnd::A => 0,
+        RodEnd::B => 1,
+    };
+    if let Some(p) = rod.points[k] {
+        return p;
+    }
+    let local = match &rod.rod {
+        Some(r) => [r.end_a, r.end_b][k],
+        None => [0.0; 3],
+    };
+    let id = points.len() as i64 + 1;
+    points.push(end_point(rod, local, rod.ends[k], id));
+    rod.points[k] = Some(points.len() - 1);
+    points.len() - 1
+}
+
+/// Notes for the deck's rods that ask MoorDyn for a file of their own
+/// (RodOutputs with one of `pvUDctsd`), which stancf does not write.
+pub(super) fn rod_file_notes(deck: &Deck) -> Vec<String> {
+    deck.rods
+        .iter()
+        .filter(|r| r.wants_rod_file())
+        .map(|r| {
+            format!(
+                "line {}: rod {} asks for a file of its own (RodOutputs \"{}\"), which stancf \
+                 does not write (a free rod's pose is in bodies.csv)",
+                r.line,
+                r.id,
+                crate::echo::clip(&r.outputs, 40)
+            )
+        })
+        .collect()
+}
+
+/// The rods of body `b` as the library takes them (body axes from its
+/// reference point).
+pub(super) fn rods_of_body(sc: &SystemScenario, b: usize) -> Vec<Rod> {
+    sc.rods
+        .iter()
+        .filter(|r| r.body() == Some(b))
+        .filter_map(|r| r.rod.clone())
+        .collect()
+}
+
+/// Refuses a moving rod's water this version does not build, as for a
+/// body ([`super::body_water::check_body_water`]): drag or added mass in
+/// a current that varies with depth or that a ramp starts, drag in waves
+/// in a dynamic analysis. The rod's water sees a steady uniform current.
+pub(super) fn check_rod_water(file: &str, sc: &SystemScenario) -> Result<(), ScenarioError> {
+    let Some(w) = &sc.water else { return Ok(()) };
+    let dynamic = sc.analysis.kind == super::AnalysisKind::Dynamic;
+    let waves = !w.waves.is_empty() || w.jonswap.is_some();
+    for (k, r) in sc.rods.iter().enumerate() {
+        let Some(rod) = r.rod.as_ref().filter(|_| r.moves(&sc.bodies)) else {
+            continue;
+        };
+        let drag = rod.drag_coefficient != 0.0 || rod.end_drag_coefficient != 0.0;
+        let added = rod.added_mass_coefficient != 0.0 || rod.end_added_mass_coefficient != 0.0;
+        let why = match &w.current {
+            Some(_) if (drag || added) && super::bodies::uniform_current(w).is_none() => Some(
+                "has drag or added mass in a current that varies with depth: a rod's water in \
+                 waves or a sheared current is not built (a uniform current is)",
+            ),
+            Some(c) if (drag || added) && c.ramp > 0.0 => Some(
+                "has drag or added mass in a current started by a ramp: a rod sees a steady \
+                 current only in this version",
+            ),
+            _ if waves && dynamic && drag => {
+                Some("has drag in waves: a rod's water in waves or a sheared current is not built")
+            }
+            _ => None,
+        };
+        if let Some(why) = why {
+            return Err(ScenarioError(format!(
+                "{file}: {}: rod {} {why}",
+                sc.names.rod(k, "rod_type"),
+                r.id
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// A core error about a free rod's body (`bodies[i]...`) or a rod of a
+/// body (`bodies[i].rods[j]...`) named by the rod (`rods[k]`, or its
+/// deck line); any other error as it is.
+pub(super) fn rod_error(sc: &SystemScenario, e: stancf::ModelError) -> stancf::ModelError {
+    let Some(rest) = e.key.strip_prefix("bodies[") else {
+        return e;
+    };
+    let Some((b, rest)) = rest.split_once(']') else {
+        return e;
+    };
+    let Ok(b) = b.parse::<usize>() else { return e };
+    let on_body = |r: &&SystemRod| r.body() == Some(b) && r.rod.is_some();
+    let found = match rest.strip_prefix(".rods[").and_then(|r| r.split_once(']')) {
+        Some((j, tail)) => j
+            .parse::<usize>()
+            .ok()
+            .and_then(|j| sc.rods.iter().filter(on_body).nth(j))
+            .map(|r| (r, tail)),
+        None => sc
+            .rods
+            .iter()
+            .find(|r| r.holder == RodHolder::Free { body: b })
+            .map(|r| (r, rest)),
+    };
+    let Some((rod, tail)) = found else { return e };
+    let k = sc
+        .rods
+        .iter()
+        .position(|r| std::ptr::eq(r, rod))
+        .unwrap_or(0);
+    stancf::ModelError {
+        key: format!("{}{tail}", sc.names.rod_place(k)),
+        message: e.message,
+    }
+}
