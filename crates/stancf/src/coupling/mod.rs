@@ -25,6 +25,7 @@ mod bounds;
 mod error;
 mod identity;
 mod readings;
+mod stiffness;
 
 pub use bounds::{interval_steps, MAX_COUPLED_COORDINATE, MAX_COUPLED_SPEED, MAX_INTERVAL_STEPS};
 pub use error::CouplingError;
@@ -76,6 +77,8 @@ struct Running {
     /// The coupled bodies' reference points and their velocities.
     reference: Vec<[f64; 3]>,
     reference_rate: Option<Vec<[f64; 3]>>,
+    /// The free bodies' mooring stiffness at the initial equilibrium.
+    stiffness: Vec<(usize, Option<[[f64; 6]; 6]>)>,
 }
 
 /// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`])
@@ -365,6 +368,7 @@ impl CoupledSystem {
             |k| statics.point_position(coupled[k]),
             |b| self.layout.reference(x, b),
         );
+        let stiffness = stiffness::free_body_stiffness(&mut statics);
         // Free bodies start where the static solve left them.
         let at_rest = statics.system_at_equilibrium();
         let mut sim = SystemSimulation::new(at_rest, statics.line_states(), self.steps.clone())?;
@@ -379,6 +383,7 @@ impl CoupledSystem {
                 .map(|b| self.layout.reference(x, b))
                 .collect(),
             reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
+            stiffness,
         });
         Ok(forces)
     }

@@ -183,3 +183,67 @@ fn a_coupled_platform_turns_as_moordyns_angles_say() {
         }
     }
 }
+
+/// A coupled system with a free platform (hanging on its three ropes, a
+/// fourth rope from it to a coupled point) gives the platform's mooring
+/// stiffness (B16) at the equilibrium its initialization finds: the
+/// matrix of the static solve of the same system (the library's, whose
+/// derivatives are checked against differences in body_statics.rs), to
+/// round-off; None before initialization and for a body index that is
+/// not a free body.
+#[test]
+fn a_coupled_system_gives_its_free_platforms_mooring_stiffness() {
+    let mut lines = Vec::new();
+    let mut points = Vec::new();
+    for (k, (local, anchor)) in fairleads().iter().enumerate() {
+        points.push(Point::on_body(0, *local));
+        points.push(Point::fixed(*anchor));
+        lines.push(Line {
+            model: line_model(*anchor, *local, 4),
+            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+        });
+    }
+    let host = [0.0, 0.0, 2.0];
+    points.push(Point::coupled(host, stancf::motion::CoupledMotion::NONE));
+    points.push(Point::on_body(0, [0.0, 0.0, 0.5]));
+    lines.push(Line {
+        model: line_model([0.0, 0.0, 0.5], host, 4),
+        ends: [End::Point(7), End::Point(6)],
+    });
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let body = Body::new(
+        BodyKind::Free,
+        [0.0; 3],
+        identity,
+        RigidInertia::principal(0.5, [0.0, 0.0, -0.2], [0.02, 0.02, 0.03]),
+    );
+    let system = System::with_bodies(lines, points, vec![body], G).expect("system");
+    let mut steps = settings();
+    steps.time_scheme = stancf::TimeScheme::Galerkin;
+    let mut coupled = CoupledSystem::new(
+        system.clone(),
+        system.clone(),
+        StaticSettings::default(),
+        steps,
+    )
+    .expect("handle");
+    assert!(coupled.body_stiffness(0).is_none());
+    coupled.initialize(&host, None).expect("initialize");
+    let from_handle = coupled.body_stiffness(0).expect("a free body's stiffness");
+    assert!(coupled.body_stiffness(1).is_none());
+    let mut statics =
+        stancf::system::SystemStatics::seeded(system.clone(), &system, StaticSettings::default())
+            .expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let direct = statics.body_stiffness(0).expect("stiffness");
+    let size = direct.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let worst = (0..36)
+        .map(|k| (from_handle[k / 6][k % 6] - direct[k / 6][k % 6]).abs())
+        .fold(0.0f64, f64::max);
+    eprintln!("stiffness from the handle against the static solve's: {worst:.1e} of {size:.1e}");
+    assert!(size > 0.0 && worst <= 1e-12 * size, "{worst:e} of {size:e}");
+    // Heave: pulling the platform down stretches its ropes.
+    assert!(from_handle[2][2] > 0.0);
+}
