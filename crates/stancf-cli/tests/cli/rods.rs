@@ -301,8 +301,8 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             body_rod_deck("-", "1e3"),
             "1     rope       1        R1A",
             "AttachB of line 1 is end A of rod 1, and its line type has bending stiffness EI = \
-             1000 N m^2: a line with bending stiffness at a rod end (MoorDyn clamps it to the \
-             rod's axis) is not built yet"
+             1000 N m^2: a line with bending stiffness at the end of a rod that moves (MoorDyn \
+             clamps it to the rod's axis) is not built yet (at a fixed rod it is clamped)"
                 .into(),
         ),
         (
@@ -565,4 +565,71 @@ fn a_deck_body_of_no_mass_of_its_own_takes_its_rods_mass() {
 fn text_of(o: &std::process::Output) -> String {
     let (so, se) = text(o);
     format!("{so}{se}")
+}
+
+/// MoorDyn's cantilevered beam (tests/Mooring/BeamCantilevered.txt, its
+/// tests/beam.cpp): a 10 m line of EI 1e7 N m^2 and 100 kg/m leaves a
+/// fixed rod's end B along the rod's axis (a clamp) and hangs free at
+/// its other end, in air (z = 10 m). At its static equilibrium every
+/// node sags as the closed form of a cantilever under its weight p,
+/// z - 10 = -p x^2 (6 L^2 - 4 x L + x^2) / (24 EI) (0.123 m at the
+/// tip), to 5e-4 of the tip's sag: the beam's slope (0.016) makes the
+/// linear theory's error (w')^2 ~ 3e-4, the 19 cubic elements' far less.
+/// The deck's `cfl` (issue 31) is replaced by a `dtM`; nothing else.
+#[test]
+fn moordyns_cantilevered_beam_sags_as_the_closed_form() {
+    let deck = "--------------------- MoorDyn Input File ------------------------------------
+MoorDyn input file of the mooring system for FD validation cases
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+beam      0.05     100.0      1.5e9      -1.0        1e7        0.0    0.0    0.1     0.0
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+cantilever    0.25     100.0     0.0    0.0     0.0      0.0
+---------------------- RODS ----------------------------------------
+ID   RodType   Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs  RodOutputs
+(#)  (name)     (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)       (-)
+1    cantilever Fixed      -10.0 0     10.0  0.0   0     10.0 1         -
+---------------------- POINT PROPERTIES --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Free      10      0.0     9.9     0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     beam       R1B      1         10        19      -
+---------------------- OPTIONS -----------------------------------------
+2             writeLog             Write a log file
+0.001         dtM                  time step (the deck's cfl 0.1, issue 31)
+10            WtrDpth              water depth (m)
+1.0           dtIC                 time interval for analyzing convergence during IC gen (s)
+40.0          TmaxIC               max time for ic gen (s)
+1e-5          threshIC             threshold for IC convergence (-)
+1       disableOutTime
+------------------------- need this line --------------------------------------
+";
+    let d = scratch("cantilever");
+    let path = write_scenario(&d, "BeamCantilevered.txt", deck);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text_of(&o));
+    let s = read_json(&out.join("summary.json"));
+    let g = s["gravity"]
+        .as_array()
+        .map_or(9.80665, |v| -v[2].as_f64().unwrap());
+    let (header, rows) = read_csv(&out.join("lines/1/nodes.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let last_t = rows.last().unwrap()[0];
+    let (l, ei, p) = (10.0, 1e7, 100.0 * g);
+    let sag = |x: f64| -p * x * x * (6.0 * l * l - 4.0 * x * l + x * x) / (24.0 * ei);
+    let tip = sag(l).abs();
+    let mut worst = 0.0f64;
+    for r in rows.iter().filter(|r| r[0] == last_t) {
+        let (x, z) = (r[col("x")], r[col("z")]);
+        worst = worst.max((z - 10.0 - sag(x)).abs());
+    }
+    eprintln!("cantilever: largest difference {worst:.2e} m of a tip sag of {tip:.4} m");
+    assert!(worst < 5e-4 * tip, "{worst:e} of {tip}");
 }

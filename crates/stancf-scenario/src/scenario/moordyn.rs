@@ -248,18 +248,18 @@ fn free_word_note(b: &DeckBody) -> Option<String> {
 }
 
 /// A LINES row as a line of SAC-2 elements, one per segment, pinned at
-/// its points (MoorDyn's lines are), `ends` their indices (a rod end's
-/// point, super::rods).
-fn deck_line((l, ends): (&crate::moordyn::DeckLine, [usize; 2])) -> SystemLine {
+/// its points (MoorDyn's lines are) but where clamped to a fixed rod's
+/// axis; `ends` its points' indices (a rod end's point, super::rods).
+fn deck_line((l, ends): (&crate::moordyn::DeckLine, super::rods::DeckLineEnds)) -> SystemLine {
     SystemLine {
         id: l.id as i64,
         line_type: l.type_index,
         length: l.unstretched_length,
         elements: l.segments,
         element_type: ElementType::Sac2,
-        ends: ends.map(Some),
+        ends: ends.points.map(Some),
         grading: stancf::Grading::Uniform,
-        clamps: [None; 2],
+        clamps: ends.clamps,
     }
 }
 

@@ -18,8 +18,9 @@
 //! numbered after the deck's points; a TOML scenario writes them as
 //! `[[points]]` of type "rod"). Points are pinned: MoorDyn clamps a
 //! line's end to the rod's axis, which for a line without bending
-//! stiffness is the same; a deck's line with bending stiffness at a rod
-//! end is refused.
+//! stiffness is the same. A deck's line with bending stiffness at a
+//! fixed rod's end is clamped along the rod's axis (its cantilever); at
+//! the end of a rod that moves it is refused.
 
 use super::bodies::SystemBody;
 use super::rod_parts::{
@@ -74,7 +75,7 @@ pub(super) fn deck_rods(
     bodies: &mut Vec<SystemBody>,
     points: &mut Vec<SystemPoint>,
     in_water: bool,
-) -> Result<(Vec<SystemRod>, Vec<[usize; 2]>), ScenarioError> {
+) -> Result<(Vec<SystemRod>, Vec<DeckLineEnds>), ScenarioError> {
     let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
     let mut rods = Vec::with_capacity(deck.rods.len());
     for r in &deck.rods {
@@ -87,18 +88,24 @@ pub(super) fn deck_rods(
     let mut ends = Vec::with_capacity(deck.lines.len());
     for l in &deck.lines {
         let mut pair = [0; 2];
+        let mut clamps = [None; 2];
         for (k, a) in [l.end_a, l.end_b].into_iter().enumerate() {
             pair[k] = match a {
                 LineAttachment::Point(p) => p - 1,
                 LineAttachment::Rod(n, end) => {
-                    if deck.line_type_of(l).ei > 0.0 {
+                    let ei = deck.line_type_of(l).ei;
+                    if let (true, Some(axis)) = (ei > 0.0, fixed_axis(&rods[n - 1])) {
+                        // MoorDyn's cantilever: the line leaves a fixed rod
+                        // along its axis (§1.5 of the note), a clamp.
+                        clamps[k] = Some(axis);
+                    } else if ei > 0.0 {
                         return Err(at(
                             l.line,
                             format!(
                                 "{} of line {} is end {} of rod {n}, and its line type has \
                                  bending stiffness EI = {} N m^2: a line with bending \
-                                 stiffness at a rod end (MoorDyn clamps it to the rod's axis) \
-                                 is not built yet",
+                                 stiffness at the end of a rod that moves (MoorDyn clamps it to \
+                                 the rod's axis) is not built yet (at a fixed rod it is clamped)",
                                 ["AttachA", "AttachB"][k],
                                 l.id,
                                 end.letter(),
@@ -110,7 +117,10 @@ pub(super) fn deck_rods(
                 }
             };
         }
-        ends.push(pair);
+        ends.push(DeckLineEnds {
+            points: pair,
+            clamps,
+        });
     }
     for (r, rod) in deck.rods.iter().zip(&rods) {
         let attached = deck.lines.iter().any(|l| {
@@ -130,6 +140,20 @@ pub(super) fn deck_rods(
         }
     }
     Ok((rods, ends))
+}
+
+/// A deck line's end points (indices) and the directions its ends are
+/// clamped in (a line with bending stiffness at a fixed rod's end).
+pub(super) struct DeckLineEnds {
+    pub points: [usize; 2],
+    pub clamps: [Option<[f64; 3]>; 2],
+}
+
+/// The axis of a fixed rod with a length (global), where a line with
+/// bending stiffness is clamped; None for any other rod.
+fn fixed_axis(rod: &SystemRod) -> Option<[f64; 3]> {
+    let built = rod.rod.as_ref()?;
+    matches!(rod.holder, RodHolder::Fixed).then(|| built.axis())
 }
 
 /// One RODS row as a rod (a free rod's body or a zero-length rod's point
