@@ -334,6 +334,29 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
         .collect()
 }
 
+/// Refuses a free body that no line holds (none of its points has a
+/// line): its weight and buoyancy have nothing to balance them, so it
+/// has no static equilibrium (it sinks or rises for ever, and drifts
+/// sideways on nothing); a dynamic run from its given pose is its
+/// motion. Key `bodies[b]`.
+pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError> {
+    for b in system.free_bodies() {
+        let held = system
+            .points()
+            .iter()
+            .enumerate()
+            .any(|(p, pt)| pt.body() == Some(b) && system.attachments(p).next().is_some());
+        if !held {
+            return Err(crate::error::ModelError::invalid(
+                format!("bodies[{b}]"),
+                "is free and no line holds it: it has no static equilibrium (nothing balances \
+                 its weight and buoyancy); start a dynamic run from its given pose instead",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The body points of body b (body axes, from the reference point).
 fn points_local(system: &System, b: usize) -> Vec<[f64; 3]> {
     system

@@ -377,3 +377,36 @@ fn a_buoy_in_a_current_is_held_against_its_drag_and_lift() {
     assert!(moved[0] > before[0] && moved[1] > before[1], "down-current");
     assert!(err < 1e-9 * lift, "{err:e}");
 }
+
+/// A free body that no line holds (none, or a point of its own with no
+/// line at it) has no static equilibrium: the static solve refuses it,
+/// naming the body, before any iteration.
+#[test]
+fn a_free_body_no_line_holds_is_refused_by_the_static_solve() {
+    for with_point in [false, true] {
+        let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let body = Body::new(
+            BodyKind::Free,
+            [5.0, 0.0, -10.0],
+            identity,
+            RigidInertia::principal(100.0, [0.0; 3], [10.0; 3]),
+        );
+        let mut points = vec![
+            Point::fixed([0.0, 0.0, -50.0]),
+            Point::fixed([40.0, 0.0, -10.0]),
+        ];
+        if with_point {
+            points.push(Point::on_body(0, [0.0, 0.0, 1.0]));
+        }
+        let line = Line {
+            model: chain([0.0, 0.0, -50.0], [40.0, 0.0, -10.0], 60.0),
+            ends: [End::Point(0), End::Point(1)],
+        };
+        let system = System::with_bodies(vec![line], points, vec![body], G).expect("system");
+        let refused = SystemStatics::seeded(system.clone(), &system, StaticSettings::default())
+            .err()
+            .expect("refused");
+        assert_eq!(refused.key, "bodies[0]", "{refused}");
+        assert!(refused.message.contains("no line holds it"), "{refused}");
+    }
+}
