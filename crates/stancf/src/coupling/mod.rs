@@ -321,7 +321,9 @@ impl CoupledSystem {
     /// point), at rest, and starts the simulation there at t = 0 (§13.1);
     /// returns the lines' forces on the coupled points. `xd`, when given,
     /// is the points' velocity at t = 0: the start of the first interval's
-    /// cubic (K2) (the lines start at rest). May be called again to start
+    /// cubic (K2) (the lines start at rest, but for those on a free body
+    /// that starts moving: [`System::start_lines_with_bodies`]). May be
+    /// called again to start
     /// over. The solve is bounded: its load increments, their halvings and
     /// Newton's iterations all have limits (docs/method.md §6.8).
     pub fn initialize(&mut self, x: &[f64], xd: Option<&[f64]>) -> Result<Vec<f64>, CouplingError> {
@@ -371,7 +373,9 @@ impl CoupledSystem {
         let stiffness = stiffness::free_body_stiffness(&mut statics);
         // Free bodies start where the static solve left them.
         let at_rest = statics.system_at_equilibrium();
-        let mut sim = SystemSimulation::new(at_rest, statics.line_states(), self.steps.clone())?;
+        let mut states = statics.line_states();
+        at_rest.start_lines_with_bodies(&mut states);
+        let mut sim = SystemSimulation::new(at_rest, states, self.steps.clone())?;
         sim.set_step_halvings(self.step_halvings)?;
         let bodies = 0..self.layout.bodies.len();
         self.running = Some(Running {

@@ -14,7 +14,7 @@
 //!   them (B11): a line end there moves with the body, and its rows
 //!   load the body through the chain rule (§15.7).
 
-use super::{Point, PointKind};
+use super::{End, Point, PointKind};
 use crate::body::{BodyForces, BodyWater, FreeBody, RigidInertia, Rod};
 use crate::error::ModelError;
 use crate::scheme::TimeScheme;
@@ -335,4 +335,46 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
         water.rods.push(rod.clone());
     }
     Ok(())
+}
+
+impl super::System {
+    /// Starts every line attached to a body that moves at t = 0 (its
+    /// `velocity`, `angular_velocity`) with the velocity field linear in
+    /// its material coordinate s between its ends' velocities,
+    /// v(s) = v_A + (v_B - v_A) s / L (the slope's rate (v_B - v_A) / L):
+    /// its ends move with their points, as a step requires of the ends on
+    /// a body (at rest at fixed, coupled and free points; a loose end as
+    /// the other end). Lines whose ends are both at rest keep `states`.
+    /// What a static equilibrium's line states (at rest) need before a
+    /// run that starts its bodies moving.
+    pub fn start_lines_with_bodies(&self, states: &mut [crate::State]) {
+        use crate::model::{SLOT_R, SLOT_R_X};
+        let end_velocity = |e: End| match e {
+            End::Point(p) => match self.points()[p].kind {
+                PointKind::Body { body, local } => Some(self.bodies()[body].point_velocity(local)),
+                _ => Some([0.0; 3]),
+            },
+            End::Loose => None,
+        };
+        for (line, state) in self.lines().iter().zip(states.iter_mut()) {
+            let (va, vb) = match line.ends.map(end_velocity) {
+                [Some(a), Some(b)] => (a, b),
+                [Some(a), None] => (a, a),
+                [None, Some(b)] => (b, b),
+                [None, None] => continue,
+            };
+            if va == [0.0; 3] && vb == [0.0; 3] {
+                continue;
+            }
+            let model = &line.model;
+            let length = model.cable.length;
+            for node in 0..model.nodes() {
+                let s = model.node_coordinate(node) / length;
+                for c in 0..3 {
+                    state.v[model.coordinate(node, SLOT_R, c)] = va[c] + (vb[c] - va[c]) * s;
+                    state.v[model.coordinate(node, SLOT_R_X, c)] = (vb[c] - va[c]) / length;
+                }
+            }
+        }
+    }
 }

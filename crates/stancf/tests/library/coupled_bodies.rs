@@ -193,40 +193,8 @@ fn a_coupled_platform_turns_as_moordyns_angles_say() {
 /// not a free body.
 #[test]
 fn a_coupled_system_gives_its_free_platforms_mooring_stiffness() {
-    let mut lines = Vec::new();
-    let mut points = Vec::new();
-    for (k, (local, anchor)) in fairleads().iter().enumerate() {
-        points.push(Point::on_body(0, *local));
-        points.push(Point::fixed(*anchor));
-        lines.push(Line {
-            model: line_model(*anchor, *local, 4),
-            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
-        });
-    }
-    let host = [0.0, 0.0, 2.0];
-    points.push(Point::coupled(host, stancf::motion::CoupledMotion::NONE));
-    points.push(Point::on_body(0, [0.0, 0.0, 0.5]));
-    lines.push(Line {
-        model: line_model([0.0, 0.0, 0.5], host, 4),
-        ends: [End::Point(7), End::Point(6)],
-    });
-    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    let body = Body::new(
-        BodyKind::Free,
-        [0.0; 3],
-        identity,
-        RigidInertia::principal(0.5, [0.0, 0.0, -0.2], [0.02, 0.02, 0.03]),
-    );
-    let system = System::with_bodies(lines, points, vec![body], G).expect("system");
-    let mut steps = settings();
-    steps.time_scheme = stancf::TimeScheme::Galerkin;
-    let mut coupled = CoupledSystem::new(
-        system.clone(),
-        system.clone(),
-        StaticSettings::default(),
-        steps,
-    )
-    .expect("handle");
+    let (system, host) = hanging_platform([0.0; 3]);
+    let mut coupled = galerkin_handle(system.clone());
     assert!(coupled.body_stiffness(0).is_none());
     coupled.initialize(&host, None).expect("initialize");
     let from_handle = coupled.body_stiffness(0).expect("a free body's stiffness");
@@ -246,4 +214,63 @@ fn a_coupled_system_gives_its_free_platforms_mooring_stiffness() {
     assert!(size > 0.0 && worst <= 1e-12 * size, "{worst:e} of {size:e}");
     // Heave: pulling the platform down stretches its ropes.
     assert!(from_handle[2][2] > 0.0);
+}
+
+/// The free platform of [`hanging_platform`] given a start velocity
+/// initializes (its lines start moving with it, linear in their length
+/// from their anchors at rest: `System::start_lines_with_bodies`; the
+/// core refused the lines at rest before) and steps.
+#[test]
+fn a_free_platform_that_starts_moving_starts_its_lines_with_it() {
+    let (system, host) = hanging_platform([0.05, -0.02, 0.0]);
+    let mut coupled = galerkin_handle(system);
+    coupled.initialize(&host, None).expect("initialize");
+    let body = coupled
+        .simulation()
+        .expect("running")
+        .free_body(0)
+        .expect("free body");
+    assert!((body.centre_velocity()[0] - 0.05).abs() < 1e-12);
+    coupled.step_to(0.01, &host, None).expect("step");
+}
+
+fn galerkin_handle(system: System) -> CoupledSystem {
+    let mut steps = settings();
+    steps.time_scheme = stancf::TimeScheme::Galerkin;
+    CoupledSystem::new(system.clone(), system, StaticSettings::default(), steps).expect("handle")
+}
+
+/// A free platform of 0.5 kg hanging on ropes from the anchors of
+/// [`fairleads`], a fourth rope from it up to a coupled point at `host`
+/// (returned), moving at `velocity` at t = 0.
+fn hanging_platform(velocity: [f64; 3]) -> (System, [f64; 3]) {
+    let mut lines = Vec::new();
+    let mut points = Vec::new();
+    for (k, (local, anchor)) in fairleads().iter().enumerate() {
+        points.push(Point::on_body(0, *local));
+        points.push(Point::fixed(*anchor));
+        lines.push(Line {
+            model: line_model(*anchor, *local, 4),
+            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+        });
+    }
+    let host = [0.0, 0.0, 2.0];
+    points.push(Point::coupled(host, stancf::motion::CoupledMotion::NONE));
+    points.push(Point::on_body(0, [0.0, 0.0, 0.5]));
+    lines.push(Line {
+        model: line_model([0.0, 0.0, 0.5], host, 4),
+        ends: [End::Point(7), End::Point(6)],
+    });
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let mut body = Body::new(
+        BodyKind::Free,
+        [0.0; 3],
+        identity,
+        RigidInertia::principal(0.5, [0.0, 0.0, -0.2], [0.02, 0.02, 0.03]),
+    );
+    body.velocity = velocity;
+    (
+        System::with_bodies(lines, points, vec![body], G).expect("system"),
+        host,
+    )
 }
