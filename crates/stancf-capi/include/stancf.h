@@ -8,8 +8,13 @@
  * MoorDyn_Init, MoorDyn_Step, MoorDyn_Close). See docs/interface.md
  * ("C library") and docs/method.md section 13.
  *
- * Units: m, s, N. The coupling arrays hold 3 values per coupled point
- * (x, y, z), the points in the order of their ids (stancf_coupled_ids).
+ * Units: m, s, N. The coupling arrays hold first 6 values per coupled
+ * body (stancf_coupled_body_ids, in body order): in x its reference
+ * point's x, y, z and MoorDyn's roll, pitch, yaw in radians; in xd the
+ * reference point's velocity and the angular velocity (rad/s, global); in
+ * f the lines' force on the body and their moment about the reference
+ * point (global). Then 3 values per coupled point not on a body (x, y, z),
+ * the points in the order of their ids (stancf_coupled_ids).
  * Every call returns STANCF_SUCCESS (0) or an error code, and keeps its
  * message for stancf_error_message() (per thread); none aborts or unwinds
  * into the caller. The handles (StancfSystem *, StancfState *) are tokens
@@ -69,14 +74,22 @@ StancfSystem *stancf_create_with(const char *path, unsigned int flags);
 /* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 
-/* *n = the number of coupled degrees of freedom, 3 per coupled point. */
+/* *n = the number of coupled degrees of freedom, 6 per coupled body and 3
+   per coupled point. */
 int stancf_ncoupled_dof(StancfSystem *s, unsigned int *n);
 
-/* ids[k] = the id of coupled point k (ncoupled_dof / 3 values). */
+/* ids[k] = the id of coupled point k, after the bodies in the arrays
+   ((ncoupled_dof - 6 nb) / 3 values, nb the coupled bodies). */
 int stancf_coupled_ids(StancfSystem *s, int64_t *ids);
 
-/* x = the coupled points' positions as the scenario or deck places them
-   (ncoupled_dof values): a start for stancf_init. */
+/* *n = nb, the number of coupled bodies (6 values each, first in the
+   arrays); ids[k] = the id of coupled body k (nb values). */
+int stancf_coupled_body_count(StancfSystem *s, unsigned int *n);
+int stancf_coupled_body_ids(StancfSystem *s, int64_t *ids);
+
+/* x = the coupled bodies' poses and the coupled points' positions as the
+   scenario or deck places them (ncoupled_dof values): a start for
+   stancf_init. */
 int stancf_coupled_positions(StancfSystem *s, double *x);
 
 /* Solves the static equilibrium with the coupled points at x (their
@@ -149,6 +162,20 @@ int stancf_npoints(StancfSystem *s, unsigned int *n);
 int stancf_point_id(StancfSystem *s, unsigned int point, int64_t *id);
 int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double *vel,
                        double *force);
+
+/* Free body body_id's (the scenario's or deck's id) 6 x 6 mooring stiffness
+   at the static equilibrium of the last stancf_init, docs/method.md
+   section 15.9; row-major in out (36 values): rows the lines' force
+   F_x, F_y, F_z and moment M_x, M_y, M_z about the body's reference point
+   (global axes), columns the reference point's displacement dx, dy, dz and
+   a small rotation about global x, y, z through it (N/m, N/rad, N m/m,
+   N m/rad); K = -d[F; M]/d[dr; dphi], a positive diagonal restoring. The
+   lines' stiffness only (not the body's own hydrostatics); not symmetric in
+   general. STANCF_INVALID_INPUT for an unknown id, a body that is not
+   free, a call before stancf_init or a NULL out; STANCF_NUMERICAL_ERROR
+   where the rest of the system is singular with the body held. Nothing is
+   written on an error. */
+int stancf_body_stiffness(StancfSystem *s, int64_t body_id, double *out);
 
 /* The message of this thread's last failed call ("" before any). */
 const char *stancf_error_message(void);

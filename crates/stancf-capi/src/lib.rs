@@ -14,10 +14,12 @@
 //! is refused, never read.
 
 pub mod args;
+pub mod bodies;
 pub mod error;
 pub mod handles;
 pub mod lines;
 
+pub use bodies::*;
 pub use lines::*;
 
 use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT_FILE};
@@ -121,8 +123,8 @@ pub unsafe extern "C" fn stancf_close(s: *mut StancfSystem) -> c_int {
     guard(|| args::close_system(s))
 }
 
-/// The number of coupled degrees of freedom, 3 per coupled point
-/// (`MoorDyn_NCoupledDOF`).
+/// The number of coupled degrees of freedom, 6 per coupled body and 3
+/// per coupled point (`MoorDyn_NCoupledDOF`).
 ///
 /// # Safety
 /// `s` is looked up, never read; `n` is NULL or writable.
@@ -136,12 +138,13 @@ pub unsafe extern "C" fn stancf_ncoupled_dof(s: *mut StancfSystem, n: *mut c_uin
     })
 }
 
-/// The coupled points' ids, in the order of the coupling arrays
-/// (`ncoupled_dof / 3` values).
+/// The coupled points' ids (not those on coupled bodies), in the order
+/// of the coupling arrays after the bodies (`(ncoupled_dof - 6 nb) / 3`
+/// values, nb from `stancf_coupled_body_count`).
 ///
 /// # Safety
 /// `s` is looked up, never read; `ids` is NULL or has room for
-/// `ncoupled_dof / 3` values.
+/// `(ncoupled_dof - 6 nb) / 3` values.
 #[no_mangle]
 pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64) -> c_int {
     guard(|| {
@@ -153,9 +156,41 @@ pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64)
     })
 }
 
-/// The coupled points' positions where the scenario or deck puts them
-/// (m; `ncoupled_dof` values): the start a coupling code may give
-/// `stancf_init`.
+/// The number of coupled bodies, whose 6 numbers each come first in the
+/// coupling arrays.
+///
+/// # Safety
+/// `s` is looked up, never read; `n` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_coupled_body_count(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
+    guard(|| {
+        args::with_system(s, |sys| {
+            *args::place(n, "n")? = sys.coupled.coupled_body_ids.len() as c_uint;
+            Ok(())
+        })
+    })
+}
+
+/// The coupled bodies' ids, in the order of the coupling arrays
+/// (`stancf_coupled_body_count` values).
+///
+/// # Safety
+/// `s` is looked up, never read; `ids` is NULL or has room for
+/// `stancf_coupled_body_count` values.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_coupled_body_ids(s: *mut StancfSystem, ids: *mut i64) -> c_int {
+    guard(|| {
+        args::with_system(s, |sys| {
+            let known = &sys.coupled.coupled_body_ids;
+            args::room(ids, known.len(), "ids")?.copy_from_slice(known);
+            Ok(())
+        })
+    })
+}
+
+/// The coupled bodies' poses (m and radians) and the coupled points'
+/// positions (m) where the scenario or deck puts them (`ncoupled_dof`
+/// values): the start a coupling code may give `stancf_init`.
 ///
 /// # Safety
 /// `s` is looked up, never read; `x` is NULL or has room for

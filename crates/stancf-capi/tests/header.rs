@@ -24,7 +24,7 @@ fn header_prototypes() -> BTreeMap<String, usize> {
 /// crate's sources.
 fn exported_functions() -> BTreeMap<String, usize> {
     let mut all = BTreeMap::new();
-    for file in ["lib.rs", "lines.rs"] {
+    for file in ["lib.rs", "lines.rs", "bodies.rs"] {
         let text = std::fs::read_to_string(repo("crates/stancf-capi/src").join(file)).unwrap();
         let code = text
             .split("extern \"C\" fn ")
@@ -97,6 +97,9 @@ int main(int argc, char **argv) {
     double x[3], xd[3] = {0.0, 0.0, 0.0}, f[3], t = 0.0, dt = 0.01, v3[3], v;
     if (stancf_ncoupled_dof(s, &n) || n != 3) return 13;
     if (stancf_coupled_ids(s, ids) || ids[0] != 2) return 14;
+    /* The bridle has no coupled body. */
+    unsigned int nb = 1;
+    if (stancf_coupled_body_count(s, &nb) || nb != 0 || stancf_coupled_body_ids(s, ids)) return 38;
     if (stancf_coupled_positions(s, x) || x[0] != 6.0) return 15;
     if (stancf_init(s, x, xd) || stancf_init_n(s, 3, x, NULL)) return 16;
     if (stancf_set_max_interval_steps(s, 1000)) return 31;
@@ -118,6 +121,9 @@ int main(int argc, char **argv) {
     if (stancf_line_positions(s, 0, pos) || stancf_line_tensions(s, 0, ten)) return 26;
     if (stancf_npoints(s, &points) || points != 3 || stancf_point_id(s, 2, &id) || id != 3) return 27;
     if (stancf_point_state(s, 2, v3, NULL, f)) return 28;
+    /* The bridle has no body: its id 1 is refused. */
+    double k[36];
+    if (stancf_body_stiffness(s, 1, k) != STANCF_INVALID_INPUT) return 37;
     if (stancf_close(s) != STANCF_SUCCESS) return 29;
     if (stancf_close(NULL) != STANCF_INVALID_INPUT) return 30;
     /* A closed handle is refused, not read. */

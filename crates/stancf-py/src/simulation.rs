@@ -82,9 +82,11 @@ type LineArrays = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
 #[pyclass(module = "stancf._stancf", name = "Simulation", frozen)]
 pub struct PySimulation {
     inner: Mutex<Inner>,
+    coupled_body_ids: Vec<i64>,
     coupled_ids: Vec<i64>,
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
+    body_ids: Vec<i64>,
 }
 
 /// What a call of a Simulation changes: the handle and the forces of its
@@ -132,15 +134,25 @@ impl PySimulation {
                 handle: opened.handle,
                 last: None,
             }),
+            coupled_body_ids: opened.coupled_body_ids,
             coupled_ids: opened.coupled_ids,
             line_ids: opened.line_ids,
             point_ids: opened.point_ids,
+            body_ids: opened.body_ids,
         })
     }
 
+    /// 6 per coupled body, then 3 per coupled point.
     #[getter]
     fn coupled_dof(&self) -> usize {
-        3 * self.coupled_ids.len()
+        6 * self.coupled_body_ids.len() + 3 * self.coupled_ids.len()
+    }
+
+    /// The coupled bodies' ids, in the order of the coupling arrays
+    /// (first, 6 numbers each).
+    #[getter]
+    fn coupled_body_ids(&self) -> Vec<i64> {
+        self.coupled_body_ids.clone()
     }
 
     #[getter]
@@ -148,8 +160,11 @@ impl PySimulation {
         self.coupled_ids.clone()
     }
 
-    /// The coupled points' positions from the scenario or deck (3 per
-    /// point, in the order of `coupled_ids`): known before `initialize`.
+    /// The coupled bodies' poses (reference point, MoorDyn's roll, pitch
+    /// and yaw in radians; in the order of `coupled_body_ids`), then the
+    /// coupled points' positions (3 per point, in the order of
+    /// `coupled_ids`), from the scenario or deck: known before
+    /// `initialize`.
     #[getter]
     fn initial_positions(&self) -> PyResult<Vec<f64>> {
         Ok(self.inner()?.handle.initial_positions())
@@ -169,6 +184,20 @@ impl PySimulation {
     #[getter]
     fn point_ids(&self) -> Vec<i64> {
         self.point_ids.clone()
+    }
+
+    /// The bodies' ids (fixed, coupled and free; a free rod is a body),
+    /// in the system's order.
+    #[getter]
+    fn body_ids(&self) -> Vec<i64> {
+        self.body_ids.clone()
+    }
+
+    /// The indices (in the order of `body_ids`) of the free bodies, those
+    /// with a mooring stiffness.
+    #[getter]
+    fn free_bodies(&self) -> PyResult<Vec<usize>> {
+        Ok(self.inner()?.handle.system().free_bodies().collect())
     }
 
     #[getter]
@@ -274,6 +303,15 @@ impl PySimulation {
             PyIndexError::new_err(format!("no point {index} (or not initialized)"))
         })?;
         Ok((p.position, p.velocity, p.force))
+    }
+
+    /// Free body `index`'s (in the order of `body_ids`) mooring stiffness
+    /// at the equilibrium of the last `initialize` (docs/method.md §15.9,
+    /// (B16)): 6 rows of 6, None before `initialize`, for a body that is
+    /// not free, or where the rest of the system is singular with the
+    /// body held.
+    fn body_stiffness(&self, index: usize) -> PyResult<Option<[[f64; 6]; 6]>> {
+        Ok(self.inner()?.handle.body_stiffness(index))
     }
 
     /// Line `index`'s (in the order of `line_ids`) node positions, node

@@ -62,6 +62,8 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
                     v3(body.centre_of_mass),
                     v3(body.moments)
                 )
+            } else if body.is_coupled() {
+                "coupled (moved by a coupling code; held at its pose in a run)".to_string()
             } else {
                 "fixed".to_string()
             };
@@ -133,11 +135,7 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
             RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
             RodHolder::Body { body } => format!(
                 "fixed in {} body {}",
-                if sc.bodies[body].is_free() {
-                    "free"
-                } else {
-                    "fixed"
-                },
+                sc.bodies[body].type_word(),
                 sc.bodies[body].id
             ),
             RodHolder::Point { point } => format!(

@@ -24,56 +24,17 @@ pub struct Prepared {
 
 /// The dynamic simulation of `system` from the lines' `states` with the
 /// scenario's step settings and step halvings; the lines attached to a
-/// body that starts moving move with it ([`move_with_bodies`]).
+/// body that starts moving move with it
+/// ([`stancf::system::System::start_lines_with_bodies`]).
 pub fn simulation(
     sc: &SystemScenario,
     system: System,
     mut states: Vec<stancf::State>,
 ) -> Result<SystemSimulation, stancf::ModelError> {
-    move_with_bodies(&system, &mut states);
+    system.start_lines_with_bodies(&mut states);
     let mut sim = SystemSimulation::new(system, states, sc.analysis.step_settings())?;
     sim.set_step_halvings(sc.analysis.step_halvings)?;
     Ok(sim)
-}
-
-/// Gives every line attached to a body that starts moving (`velocity`,
-/// `angular_velocity`) the velocity field linear in its material
-/// coordinate s between its ends' velocities, v(s) = v_A + (v_B - v_A)
-/// s / L (its slope's rate (v_B - v_A) / L): its ends move with their
-/// points (at rest at fixed and free points; a loose end as the other),
-/// as the core requires of the ends on a body. Lines of bodies at rest
-/// keep their states.
-fn move_with_bodies(system: &System, states: &mut [stancf::State]) {
-    use stancf::numbering::{SLOT_R, SLOT_R_X};
-    use stancf::system::{End, PointKind};
-    let end_velocity = |e: End| match e {
-        End::Point(p) => match system.points()[p].kind {
-            PointKind::Body { body, local } => Some(system.bodies()[body].point_velocity(local)),
-            _ => Some([0.0; 3]),
-        },
-        End::Loose => None,
-    };
-    for (line, state) in system.lines().iter().zip(states.iter_mut()) {
-        let [a, b] = line.ends.map(end_velocity);
-        let (va, vb) = match (a, b) {
-            (Some(a), Some(b)) => (a, b),
-            (Some(a), None) => (a, a),
-            (None, Some(b)) => (b, b),
-            (None, None) => continue,
-        };
-        if va == [0.0; 3] && vb == [0.0; 3] {
-            continue;
-        }
-        let model = &line.model;
-        let length = model.cable.length;
-        for node in 0..model.nodes() {
-            let s = model.node_coordinate(node) / length;
-            for c in 0..3 {
-                state.v[model.coordinate(node, SLOT_R, c)] = va[c] + (vb[c] - va[c]) * s;
-                state.v[model.coordinate(node, SLOT_R_X, c)] = (vb[c] - va[c]) / length;
-            }
-        }
-    }
 }
 
 /// Builds what `sc` runs (see [`Prepared`]); errors are input errors
@@ -229,11 +190,7 @@ fn point_words(sc: &SystemScenario) -> Vec<(String, String)> {
                 PointType::Fixed => "fixed".to_string(),
                 PointType::Body { body, local } => format!(
                     "on {} body {} at [{}, {}, {}] m in its axes,",
-                    if sc.bodies[body].is_free() {
-                        "free"
-                    } else {
-                        "fixed"
-                    },
+                    sc.bodies[body].type_word(),
                     sc.bodies[body].id,
                     Sig(local[0]),
                     Sig(local[1]),

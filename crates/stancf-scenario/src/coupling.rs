@@ -4,7 +4,7 @@
 //! [`stancf::coupling::CoupledSystem`]. The Python `stancf.Simulation`
 //! and the C library `stancf_c` open their systems here.
 
-use crate::scenario::{parse_input, Input, SystemScenario};
+use crate::scenario::{parse_input, Input, PointType, SystemScenario};
 use crate::Failure;
 use stancf::coupling::CoupledSystem;
 use stancf::system::PointKind;
@@ -13,12 +13,22 @@ use std::path::Path;
 /// A coupled system with the ids its scenario gives its points and lines.
 pub struct Coupled {
     pub handle: CoupledSystem,
-    /// The coupled points' ids, in the order of the coupling arrays.
+    /// The coupled bodies' ids, in the order of the coupling arrays
+    /// (first, 6 numbers each): the order of the scenario's `[[bodies]]`,
+    /// a deck's by id (its BODIES are numbered in order).
+    pub coupled_body_ids: Vec<i64>,
+    /// The coupled points' ids (points on coupled bodies are not among
+    /// them: their bodies move them), in the order of the coupling arrays
+    /// after the bodies.
     pub coupled_ids: Vec<i64>,
     /// The lines' ids, in the order of the system's lines.
     pub line_ids: Vec<i64>,
     /// The points' ids, in the order of the system's points.
     pub point_ids: Vec<i64>,
+    /// The bodies' ids (fixed, coupled and free; a free rod is a body),
+    /// in the order of the system's bodies: index b here is body b of
+    /// [`CoupledSystem::body_stiffness`].
+    pub body_ids: Vec<i64>,
 }
 
 /// Reads the scenario or deck at `path` and builds its coupled system,
@@ -38,9 +48,10 @@ pub fn open_with(path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
 /// The coupled system of scenario text (`path` names it in messages and
 /// resolves the files it refers to); a MoorDyn deck steps with its
 /// `dtM`. Refused: a single cable (no points)
-/// and a system without coupled points. The coupled points' motions in
-/// the scenario are replaced by the coupling code's; their order in the
-/// coupling arrays is that of their ids.
+/// and a system without coupled points or coupled bodies. The coupled
+/// points' motions in the scenario are replaced by the coupling code's;
+/// the coupling arrays hold the coupled bodies first, in body order,
+/// then the coupled points in the order of their ids.
 pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
     from_text_with(text, path, false)
 }
@@ -95,8 +106,11 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     crate::system_geometry::check_geometry(file, sc, false)?;
     let system = sc.system().map_err(input)?;
     let seed = sc.seed_system().map_err(input)?;
+    // The coupled points not on a body: the core orders the coupled
+    // bodies (by body index) and their points itself.
     let mut order: Vec<usize> = (0..system.points().len())
         .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
+        .filter(|&p| sc.points[p].kind == PointType::Coupled)
         .collect();
     order.sort_by_key(|&p| sc.points[p].id);
     let handle = CoupledSystem::new(
@@ -107,9 +121,15 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     )
     .map_err(input)?;
     Ok(Coupled {
+        coupled_body_ids: handle
+            .coupled_bodies()
+            .iter()
+            .map(|&b| sc.bodies[b].id)
+            .collect(),
         coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
         line_ids: sc.lines.iter().map(|l| l.id).collect(),
         point_ids: sc.points.iter().map(|p| p.id).collect(),
+        body_ids: sc.bodies.iter().map(|b| b.id).collect(),
         handle: handle
             .with_order(order)
             .and_then(|h| h.with_step_halvings(sc.analysis.step_halvings))

@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 
 /// The files a single cable's or a system's run writes at the top of its
 /// folder (each at most once; which ones depends on the run).
-pub const RUN_FILES: [&str; 14] = [
+pub const RUN_FILES: [&str; 15] = [
     "summary.json",
     "scenario.toml",
     "history.csv",
@@ -35,6 +35,7 @@ pub const RUN_FILES: [&str; 14] = [
     "channels.csv",
     "node_loads.csv",
     "bodies.csv",
+    "stiffness.csv",
     "cable.pvd",
 ];
 

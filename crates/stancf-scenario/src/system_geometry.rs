@@ -34,12 +34,15 @@ pub fn check_geometry(
     sc: &SystemScenario,
     coupled_placed: bool,
 ) -> Result<(), Failure> {
-    // A point on a fixed body is placed as a fixed point; one on a free
-    // body starts where the body puts it, as a free point where its
-    // lines' seeds start.
-    let placed = |p: usize| match sc.points[p].kind {
-        PointType::Coupled => coupled_placed,
-        _ => sc.point_is_fixed(p),
+    // A point on a fixed body is placed as a fixed point, one on a
+    // coupled body as a coupled point; one on a free body starts where
+    // the body puts it, as a free point where its lines' seeds start.
+    let placed = |p: usize| {
+        if sc.point_is_coupled(p) {
+            coupled_placed
+        } else {
+            sc.point_is_fixed(p)
+        }
     };
     if let Some(w) = &sc.water {
         for (p, pt) in sc.points.iter().enumerate() {

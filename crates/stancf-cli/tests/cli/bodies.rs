@@ -297,13 +297,13 @@ fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
     assert!((fz - weight).abs() < 1e-9 * weight, "{fz} against {weight}");
 }
 
-/// The deck's refusals name its line: a coupled body, a point on a body
+/// The deck's refusals name its line: a pinned body, a point on a body
 /// with a drag area of its own, a free body without moments of inertia
 /// (which MoorDyn takes, its body's inertia holding the line ends').
 #[test]
-fn a_coupled_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
-    let coupled = body_deck(
-        " 1     Coupled    0      0    -50     0      0      0    2.1244e4    0    1.0e4    0     0        0",
+fn a_pinned_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
+    let pinned = body_deck(
+        " 1     CoupledPinned    0      0    -50     0      0      0    2.1244e4    0    1.0e4    0     0        0",
         "",
         "",
     );
@@ -319,10 +319,10 @@ fn a_coupled_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_r
     );
     for (name, deck, needle, words) in [
         (
-            "coupled-body",
-            coupled,
-            " 1     Coupled",
-            "coupled bodies are not built yet",
+            "pinned-body",
+            pinned,
+            " 1     CoupledPinned",
+            "pinned bodies are not built yet",
         ),
         (
             "dragging-point",

@@ -230,6 +230,17 @@ class Line:
         return "Line(%d steps, %d nodes)" % self.nodes.shape[:2]
 
 
+def _stiffness(text):
+    """stiffness.csv as a dict body id -> 6 x 6 array (its rows in the
+    file's order, fx to mz)."""
+    out = {}
+    with io.StringIO(text) as f:
+        next(f)
+        for row in csv.reader(f):
+            out.setdefault(int(row[0]), []).append([float(v) for v in row[2:]])
+    return {body: np.array(rows, dtype=float) for body, rows in out.items()}
+
+
 class Result:
     """The results of a run (docs/interface.md), read from its folder or,
     from :func:`run`, taken from memory as the run wrote them (the same
@@ -255,7 +266,10 @@ class Result:
     - ``tensions``: dict (line id, "A" or "B") -> dict of ``t``, ``force``
       (the force that end exerts on its point, k x 3) and ``tension`` (k,);
     - ``channels``: dict name -> array over ``channels_t`` (a MoorDyn
-      deck's OUTPUTS; empty otherwise).
+      deck's OUTPUTS; empty otherwise);
+    - ``stiffness``: dict body id -> 6 x 6 array, each free body's mooring
+      stiffness at the static equilibrium (stiffness.csv: rows fx, fy, fz,
+      mx, my, mz, columns dx, dy, dz, rx, ry, rz; empty without one).
     """
 
     def __init__(self, directory, _keep=None, _files=None):
@@ -272,6 +286,7 @@ class Result:
         self.reactions = {}
         self.reactions_t = np.zeros(0)
         self.lines, self.points, self.tensions, self.channels = {}, {}, {}, {}
+        self.stiffness = {}
         self.channels_t = np.zeros(0)
         if self.is_system:
             self._read_system(files)
@@ -316,6 +331,8 @@ class Result:
         for entry in self.tensions.values():
             for k in entry:
                 entry[k] = np.array(entry[k], dtype=float)
+        if files.exists("stiffness.csv"):
+            self.stiffness = _stiffness(files.text("stiffness.csv"))
         if files.exists("channels.csv"):
             h, c = files.table("channels.csv")
             self.channels_t = c[:, 0].copy()

@@ -31,17 +31,20 @@ def _coupling_array(name, values, n):
     try:
         a = np.asarray(values)
     except (ValueError, TypeError) as e:
-        raise ValueError("%s: expected %d real numbers (coupled_dof, 3 per coupled point): %s"
+        raise ValueError("%s: expected %d real numbers (coupled_dof: 6 per coupled body, "
+                         "3 per coupled point): %s"
                          % (name, n, e)) from None
     if a.dtype.kind == "c":
         raise TypeError("%s: complex values are refused (even with a zero imaginary part); "
                         "give the %d real coordinates" % (name, n))
     if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected %d real numbers (coupled_dof, 3 per coupled point), "
+        raise TypeError("%s: expected %d real numbers (coupled_dof: 6 per coupled body, "
+                        "3 per coupled point), "
                         "got values of type %s" % (name, n, a.dtype))
     if a.ndim != 1:
-        raise ValueError("%s: expected a flat sequence of %d values (coupled_dof: x, y, z of "
-                         "each coupled point), got an array of shape %s" % (name, n, a.shape))
+        raise ValueError("%s: expected a flat sequence of %d values (coupled_dof: 6 per "
+                         "coupled body, then x, y, z of each coupled point), got an array of "
+                         "shape %s" % (name, n, a.shape))
     return a.astype(float).tolist()
 
 
@@ -86,8 +89,14 @@ class Simulation:
 
     `scenario_or_deck`: a path (TOML system scenario or MoorDyn v2 deck)
     or a :class:`Scenario`. The coupling arrays have ``coupled_dof``
-    values: x, y, z of each coupled point, in the order of their ids
-    (``coupled_ids``). ``initialize(x, xd=None)`` solves the static
+    values: first 6 per coupled body (``coupled_body_ids``, in the order
+    of the bodies: x holds its reference point's x, y, z and MoorDyn's
+    roll, pitch, yaw in radians, xd the reference point's velocity and
+    the angular velocity in rad/s, global; the forces returned, the
+    lines' force on the body and their moment about the reference point,
+    global), then x, y, z of each coupled point not on a body, in the
+    order of their ids (``coupled_ids``). A point on a coupled body
+    moves with it (docs/method.md §13.6). ``initialize(x, xd=None)`` solves the static
     equilibrium with the coupled points at x and starts at t = 0;
     ``step_to(t, x, xd=None)`` moves them to x at t (cubically when this
     call and the last gave velocities, else linearly), taking the fewest
@@ -101,8 +110,9 @@ class Simulation:
     ``initial_positions()`` gives the coupled points' positions from the
     scenario or deck, before ``initialize``. After ``initialize``,
     ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
-    a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``);
-    before it they raise :class:`ScenarioError` naming the id, and an
+    a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``),
+    ``body_stiffness(body_id)`` a free body's 6 x 6 mooring stiffness at
+    the equilibrium (``body_ids``); before it they raise :class:`ScenarioError` naming the id, and an
     unknown id raises KeyError naming it.
 
     One ``step_to`` takes at most ``max_interval_steps`` internal steps
@@ -138,7 +148,15 @@ class Simulation:
 
     @property
     def coupled_ids(self):
+        """The coupled points' ids (not those on coupled bodies), in the
+        order of the coupling arrays after the bodies."""
         return list(self._sim.coupled_ids)
+
+    @property
+    def coupled_body_ids(self):
+        """The coupled bodies' ids, in the order of the coupling arrays
+        (first, 6 numbers each)."""
+        return list(self._sim.coupled_body_ids)
 
     @property
     def line_ids(self):
@@ -147,6 +165,11 @@ class Simulation:
     @property
     def point_ids(self):
         return list(self._sim.point_ids)
+
+    @property
+    def body_ids(self):
+        """The bodies' ids (fixed, coupled and free; a free rod is a body)."""
+        return list(self._sim.body_ids)
 
     @property
     def time(self):
@@ -187,10 +210,12 @@ class Simulation:
         self._sim.restore(state)
 
     def initial_positions(self):
-        """The coupled points' positions where the scenario or deck puts
-        them (``coupled_dof`` values, m: x, y, z of each point in the order
-        of ``coupled_ids``), known before :meth:`initialize`: the start to
-        give it."""
+        """The coupled bodies' poses and the coupled points' positions
+        where the scenario or deck puts them (``coupled_dof`` values: per
+        body in the order of ``coupled_body_ids`` its reference point (m)
+        and MoorDyn's roll, pitch, yaw (radians), then x, y, z of each
+        point in the order of ``coupled_ids``), known before
+        :meth:`initialize`: the start to give it."""
         return np.asarray(self._sim.initial_positions, dtype=float)
 
     def line(self, line_id):
@@ -206,6 +231,36 @@ class Simulation:
             raise KeyError("no point %r (points: %s)" % (point_id, ids))
         self._require_initialized("point %r" % (point_id,))
         return PointState(*self._sim.point_arrays(ids.index(point_id)))
+
+    def body_stiffness(self, body_id):
+        """Free body `body_id`'s mooring stiffness at the static
+        equilibrium of the last :meth:`initialize` (docs/method.md §15.9):
+        a 6 x 6 array K = -d[F; M]/d[dr; dphi], rows the lines' force F_x,
+        F_y, F_z and moment M_x, M_y, M_z about the body's reference point
+        (global axes), columns the reference point's displacement dx, dy,
+        dz and a small rotation about global x, y, z through it (N/m,
+        N/rad, N m/m, N m/rad); a positive diagonal restores. The lines'
+        stiffness only (not the body's own hydrostatics); not symmetric in
+        general. An unknown id raises KeyError; before :meth:`initialize`,
+        for a body that is not free (fixed or coupled), or where the rest
+        of the system is singular with the body held, ScenarioError naming
+        the id."""
+        ids = self.body_ids
+        if body_id not in ids:
+            raise KeyError("no body %r (bodies: %s)" % (body_id, ids))
+        index = ids.index(body_id)
+        free = [ids[b] for b in self._sim.free_bodies]
+        if body_id not in free:
+            raise ScenarioError(
+                "body %r is not free (fixed or coupled): only a free body has a mooring "
+                "stiffness (free bodies: %s)" % (body_id, free))
+        self._require_initialized("body %r" % (body_id,))
+        k = self._sim.body_stiffness(index)
+        if k is None:
+            raise ScenarioError(
+                "body %r: no mooring stiffness: the rest of the system is singular with the "
+                "body held" % (body_id,))
+        return np.asarray(k, dtype=float)
 
     def _require_initialized(self, what):
         """Point and line values exist from :meth:`initialize` on; before,
@@ -229,5 +284,5 @@ class Simulation:
             raise SolverError(message, time, step, residual, None) from None
 
     def __repr__(self):
-        return "Simulation(%d coupled points, %d lines, t = %g s)" % (
-            len(self.coupled_ids), len(self.line_ids), self.time)
+        return "Simulation(%d coupled bodies, %d coupled points, %d lines, t = %g s)" % (
+            len(self.coupled_body_ids), len(self.coupled_ids), len(self.line_ids), self.time)

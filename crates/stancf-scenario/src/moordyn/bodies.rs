@@ -11,10 +11,11 @@
 //!   three- or six-value CdA (its loop starts at the second, §1.1 of the
 //!   note); stancf takes them as documented.
 //! - The attachment, matched on its first run of letters as MoorDyn's
-//!   `decomposeString` does: `Fixed`, `Fix`, `Anchor` hold the body; the
-//!   coupled and pinned words (`Coupled`, `Vessel`, `Ves`, `Cpld`,
-//!   `CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin`) are refused, as
-//!   coupled bodies are not built yet; every other word is a free body, as
+//!   `decomposeString` does: `Fixed`, `Fix`, `Anchor` hold the body;
+//!   `Coupled`, `Vessel`, `Ves`, `Cpld` make a coupled body, moved by a
+//!   coupling code (docs/method.md §13.6); the pinned words
+//!   (`CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin`) are refused, as
+//!   pinned bodies are not built yet; every other word is a free body, as
 //!   MoorDyn-C takes it.
 
 use super::layout::{Row, Section};
@@ -26,6 +27,9 @@ use super::{Attachment, DeckError, DeckPoint};
 pub enum BodyAttachment {
     /// `Fixed`, `Fix` or `Anchor`: held at its pose.
     Fixed,
+    /// `Coupled`, `Vessel`, `Ves` or `Cpld`: moved by a coupling code (its
+    /// mass, inertia and water are the host's, as MoorDyn zeroes them).
+    Coupled,
     /// Any other word MoorDyn-C reads as free (`Free`, `Body`, ...).
     Free,
 }
@@ -121,8 +125,8 @@ pub(crate) fn bodies(s: &Section) -> Result<Vec<DeckBody>, DeckError> {
     Ok(out)
 }
 
-/// The attachment of a body: fixed, free, or refused (coupled and
-/// pinned bodies are not built yet).
+/// The attachment of a body: fixed, coupled, free, or refused (pinned
+/// bodies are not built yet).
 fn attachment(row: &Row, id: usize) -> Result<BodyAttachment, DeckError> {
     let w = row.words[1];
     let upper = w.to_ascii_uppercase();
@@ -132,12 +136,13 @@ fn attachment(row: &Row, id: usize) -> Result<BodyAttachment, DeckError> {
         .collect();
     match letters.as_str() {
         "ANCHOR" | "FIXED" | "FIX" => Ok(BodyAttachment::Fixed),
-        "VESSEL" | "VES" | "COUPLED" | "CPLD" | "VESSELPINNED" | "VESPIN" | "CPLDPIN"
-        | "COUPLEDPINNED" => Err(DeckError::at(
+        "VESSEL" | "VES" | "COUPLED" | "CPLD" => Ok(BodyAttachment::Coupled),
+        "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => Err(DeckError::at(
             row.line,
             format!(
-                "body {id} is \"{w}\", a body moved by a coupling code: coupled bodies are not \
-                 built yet (a Fixed or Free body is)"
+                "body {id} is \"{w}\", a body pinned to a coupling code's motion (coupled in \
+                 position, free in rotation): pinned bodies are not built yet (a Fixed, \
+                 Coupled or Free body is)"
             ),
         )),
         _ => Ok(BodyAttachment::Free),
@@ -212,7 +217,7 @@ fn drag_areas(row: &Row, what: &str) -> Result<([f64; 3], [f64; 3]), DeckError> 
 
 /// Checks the points on bodies (`Body<n>`, [`Attachment::Body`]): body n
 /// exists, and the point carries no drag or added mass of its own (nor a
-/// mass or volume on a fixed body).
+/// mass or volume on a fixed or coupled body).
 pub(crate) fn check_body_points(
     points: &[DeckPoint],
     bodies: &[DeckBody],
@@ -253,7 +258,8 @@ pub(crate) fn check_body_points(
                         "the drag and added mass of a point on a body are not built (give them \
                          to the body, or set CdA and Ca to 0)"
                     } else {
-                        "a point on a fixed body carries no mass, volume or drag of its own"
+                        "a point on a fixed or coupled body carries no mass, volume or drag of \
+                         its own (a coupled body's are the coupling code's)"
                     }
                 ),
             ));

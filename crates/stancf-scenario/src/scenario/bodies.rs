@@ -1,8 +1,9 @@
 //! Rigid bodies of a system (docs/interface.md, "Rigid bodies";
 //! docs/method.md §15): `[[bodies]]` of a TOML system or a MoorDyn deck's
-//! BODIES, fixed (its points are fixed points where its pose puts them)
-//! or free (six degrees of freedom, moved by its weight, its buoyancy,
-//! its water and its lines). What the water they are in may be is
+//! BODIES, fixed (its points are fixed points where its pose puts them),
+//! coupled (moved by a coupling code, docs/method.md §13.6; held at its
+//! pose in a run of its own) or free (six degrees of freedom, moved by its
+//! weight, its buoyancy, its water and its lines). What the water they are in may be is
 //! `body_water.rs`.
 
 use super::context::Ctx;
@@ -16,12 +17,16 @@ use stancf::body::pose;
 pub enum BodyType {
     /// Held at its pose.
     Fixed,
+    /// Moved by a coupling code (its 6 numbers in the coupling arrays);
+    /// held at its pose in a run of its own. Its mass, inertia and water
+    /// are the host's.
+    Coupled,
     /// Six degrees of freedom.
     Free,
 }
 
-/// A rigid body of a system. A fixed body's inertia, water and
-/// velocities are zero (its pose is given).
+/// A rigid body of a system. A fixed or coupled body's inertia, water
+/// and velocities are zero (its pose is given).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SystemBody {
     /// The body's id (a deck's BODIES ID; `id` of `[[bodies]]`).
@@ -89,6 +94,19 @@ impl SystemBody {
         self.kind == BodyType::Free
     }
 
+    pub fn is_coupled(&self) -> bool {
+        self.kind == BodyType::Coupled
+    }
+
+    /// "free", "fixed" or "coupled", as `type` of `[[bodies]]` says it.
+    pub fn type_word(&self) -> &'static str {
+        match self.kind {
+            BodyType::Free => "free",
+            BodyType::Fixed => "fixed",
+            BodyType::Coupled => "coupled",
+        }
+    }
+
     /// Whether any of the body's water values (volume, drag areas, added
     /// mass) is not zero.
     pub fn has_water_values(&self) -> bool {
@@ -133,13 +151,15 @@ const FREE_KEYS: [&str; 9] = [
     "angular_velocity",
 ];
 
-/// `[[bodies]]`: `id` (required, unique), `type` ("free" or "fixed",
-/// required), `position` (required), `angles` (degrees, default 0); a
+/// `[[bodies]]`: `id` (required, unique), `type` ("free", "fixed" or
+/// "coupled", required), `position` (required), `angles` (degrees, default 0); a
 /// free body's `mass` (> 0) and `inertia` (the three moments, each less
 /// than the sum of the other two), required, `centre_of_mass`,
 /// `volume`, `cda`, `rotational_cda`, `ca` (>= 0), `velocity` and
-/// `angular_velocity` (default 0). A fixed body is held at its pose: the
-/// keys of a free body are refused there, naming the key.
+/// `angular_velocity` (default 0). A fixed body is held at its pose, a
+/// coupled body moved by a coupling code (the host carries its mass,
+/// inertia and water): the keys of a free body are refused there, naming
+/// the key.
 pub(super) fn bodies(ctx: &Ctx, raw: &[RawBody]) -> Result<Vec<SystemBody>, ScenarioError> {
     let mut out: Vec<SystemBody> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
@@ -152,9 +172,10 @@ pub(super) fn bodies(ctx: &Ctx, raw: &[RawBody]) -> Result<Vec<SystemBody>, Scen
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["free", "fixed"],
+            &["free", "fixed", "coupled"],
         )? {
             "free" => BodyType::Free,
+            "coupled" => BodyType::Coupled,
             _ => BodyType::Fixed,
         };
         let position = ctx.vector(
@@ -166,13 +187,18 @@ pub(super) fn bodies(ctx: &Ctx, raw: &[RawBody]) -> Result<Vec<SystemBody>, Scen
             kind,
             ..SystemBody::fixed(id, position, angles)
         };
-        if kind == BodyType::Fixed {
+        if kind != BodyType::Free {
             if let Some(k) = FREE_KEYS.iter().zip(r.free_keys()).find(|(_, g)| *g) {
-                return Err(ctx.err(
-                    &key(k.0),
+                let why = if kind == BodyType::Coupled {
+                    "a coupled body is moved by the coupling code, which carries its mass, \
+                     inertia and water (MoorDyn's coupled body: the lines' force and moment \
+                     only are returned); give them to the host, or make the body free, \
+                     type = \"free\""
+                } else {
                     "a fixed body is held at its pose: its mass, inertia, water and \
-                     velocities do nothing (give them to a free body, type = \"free\")",
-                ));
+                     velocities do nothing (give them to a free body, type = \"free\")"
+                };
+                return Err(ctx.err(&key(k.0), why));
             }
             out.push(fixed);
             continue;

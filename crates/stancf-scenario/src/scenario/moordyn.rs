@@ -1,6 +1,6 @@
 //! A MoorDyn v2 deck ([`crate::moordyn::Deck`]) as a system scenario:
-//! LINE TYPES become line types, BODIES bodies (fixed, or free with their
-//! mass, inertia and water), ROD TYPES and RODS rods (super::rods),
+//! LINE TYPES become line types, BODIES bodies (fixed, coupled, or free
+//! with their mass, inertia and water), ROD TYPES and RODS rods (super::rods),
 //! POINTS points (Fixed, Free with their mass
 //! and buoyant volume, Coupled at rest, on a body), LINES lines of NumSegs
 //! SAC-2 elements, OPTIONS gravity and water, OUTPUTS the channels of
@@ -68,6 +68,9 @@ pub(super) fn deck_scenario(
         .bodies
         .iter()
         .map(|b| {
+            if b.attachment == BodyAttachment::Coupled {
+                refuse_coupled_body_rods(deck, b, file)?;
+            }
             let rods = deck.rods.iter().any(|r| {
                 r.attachment == crate::moordyn::RodAttachment::Body(b.id) && r.segments > 0
             });
@@ -184,8 +187,9 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
     }
 }
 
-/// A BODIES row as a body. A fixed body's mass, inertia and water are
-/// zero, as MoorDyn's `Body::setup` zeroes them. A free body needs what
+/// A BODIES row as a body. A fixed or coupled body's mass, inertia and
+/// water are zero, as MoorDyn's `Body::setup` zeroes them (a coupled
+/// body's are the coupling code's). A free body needs what
 /// stancf's rigid body has (docs/method.md §15.2): a positive mass and
 /// moments of a body with extent in all three directions; MoorDyn also
 /// takes a zero mass or zero moments, its body's mass matrix holding the
@@ -196,8 +200,15 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
 /// and refuses a sum that is no body's).
 fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, ScenarioError> {
     let fixed = SystemBody::fixed(b.id as i64, b.position, b.angles);
-    if b.attachment == BodyAttachment::Fixed {
-        return Ok(fixed);
+    match b.attachment {
+        BodyAttachment::Fixed => return Ok(fixed),
+        BodyAttachment::Coupled => {
+            return Ok(SystemBody {
+                kind: BodyType::Coupled,
+                ..fixed
+            })
+        }
+        BodyAttachment::Free => {}
     }
     let moordyn_differs = "MoorDyn accepts it, its body's mass matrix also holding the masses \
                            of the line ends and rods attached to the body; stancf's body \
@@ -228,6 +239,22 @@ fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, Scenari
         ca: b.ca,
         ..fixed
     })
+}
+
+/// Refuses the rods fixed in coupled body `b`, naming the first one's
+/// line: their weight and water would be loads of the coupling code's,
+/// which carries the body (the core refuses them too).
+fn refuse_coupled_body_rods(deck: &Deck, b: &DeckBody, file: &str) -> Result<(), ScenarioError> {
+    let on_body = crate::moordyn::RodAttachment::Body(b.id);
+    match deck.rods.iter().find(|r| r.attachment == on_body) {
+        Some(r) => Err(ScenarioError(format!(
+            "{file}: line {}: rod {} is fixed in body {}, which is coupled (\"{}\"): rods on a \
+             coupled body are not built (their weight and water would be the coupling code's \
+             loads; give them to the host, or fix the rod to a fixed or free body)",
+            r.line, r.id, b.id, b.attachment_word
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// A note for a free body whose attachment word is neither `Free` nor

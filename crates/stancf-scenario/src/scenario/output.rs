@@ -8,9 +8,10 @@ use super::ScenarioError;
 
 /// The result tables of a system run `files` may name (docs/interface.md,
 /// "Systems"): nodes.csv, stress.csv and node_loads.csv are written for
-/// every line, in `lines/<id>/`; bodies.csv where the system has bodies.
+/// every line, in `lines/<id>/`; bodies.csv where the system has bodies;
+/// stiffness.csv where it has free bodies and a static equilibrium.
 /// summary.json and scenario.toml are always written.
-pub const SYSTEM_FILES: [&str; 8] = [
+pub const SYSTEM_FILES: [&str; 9] = [
     "points.csv",
     "tensions.csv",
     "history.csv",
@@ -19,6 +20,7 @@ pub const SYSTEM_FILES: [&str; 8] = [
     "stress.csv",
     "node_loads.csv",
     "bodies.csv",
+    "stiffness.csv",
 ];
 
 /// Which of a system's result tables a run writes (all by default).
@@ -163,6 +165,32 @@ pub(super) fn bodies_to_write(
         "output.files",
         "\"bodies.csv\" would stay empty: it holds the system's rigid bodies, and this system \
          has none",
+    ))
+}
+
+/// `output.files` naming stiffness.csv where nothing would fill it: a
+/// system without free bodies (`free_bodies` false), or a run without a
+/// static equilibrium (`statics` false: a dynamic run from the reference
+/// shape).
+pub(super) fn stiffness_to_write(
+    ctx: &Ctx,
+    files: &OutputFiles,
+    free_bodies: bool,
+    statics: bool,
+) -> Result<(), ScenarioError> {
+    if files.chosen.is_none() || !files.writes("stiffness.csv") || (free_bodies && statics) {
+        return Ok(());
+    }
+    let why = if free_bodies {
+        "it holds the free bodies' mooring stiffness at the static equilibrium, and this run \
+         has none (a dynamic run from the reference shape: analysis.initial = \"static\" \
+         starts from the equilibrium)"
+    } else {
+        "it holds the free bodies' mooring stiffness, and this system has no free body"
+    };
+    Err(ctx.err(
+        "output.files",
+        format!("\"stiffness.csv\" would stay empty: {why}"),
     ))
 }
 

@@ -111,6 +111,17 @@ pub(super) fn rods(
             }
             _ => {
                 let body = body_index(ctx, &key("body"), r.body, bodies)?;
+                if bodies[body].is_coupled() {
+                    return Err(ctx.err(
+                        &key("body"),
+                        format!(
+                            "body {} is coupled: rods on a coupled body are not built (their \
+                             weight and water would be the coupling code's loads; give them \
+                             to the host, or fix the rod in a fixed or free body)",
+                            bodies[body].id
+                        ),
+                    ));
+                }
                 let ends = [bodies[body].point(a), bodies[body].point(b)];
                 (RodHolder::Body { body }, [a, b], ends)
             }

@@ -3,7 +3,7 @@
 //! and `[[motions]]`, validated into a [`SystemScenario`] that builds the
 //! library's [`stancf::system::System`].
 
-use super::analysis::{analysis_part, InitialShape};
+use super::analysis::{analysis_part, AnalysisKind, InitialShape};
 use super::bodies::SystemBody;
 use super::context::Ctx;
 use super::motions::motions;
@@ -104,6 +104,8 @@ pub(super) fn system_scenario(
     let output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &output_files, false, 0)?;
     super::output::bodies_to_write(ctx, &output_files, bodies.len())?;
+    let statics = analysis.kind == AnalysisKind::Static || initial == InitialShape::Static;
+    super::output::stiffness_to_write(ctx, &output_files, free_bodies, statics)?;
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
     let mut sc = SystemScenario {
@@ -175,6 +177,8 @@ fn deck_system(
     super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
     sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
+    let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
+    super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
     super::body_water::check_body_water(ctx.file, &sc)?;
     super::rods::check_rod_water(ctx.file, &sc)?;
     Ok(sc)
@@ -311,7 +315,8 @@ fn points(
                 "the drag and added mass of a point on a body are not built (give them to the \
                  body)"
             } else if word == "body" {
-                "a point on a fixed body carries no mass, force or water of its own"
+                "a point on a fixed or coupled body carries no mass, force or water of its own \
+                 (a coupled body's are the coupling code's)"
             } else {
                 "only a free point carries a mass, a force or water loads (a fixed or coupled \
                  point's position is given)"
@@ -396,11 +401,13 @@ fn clamp(
             kind: PointType::Body { body, .. },
             id,
             ..
-        }) if bodies[*body].is_free() => Err(ctx.err(
+        }) if bodies[*body].kind != super::BodyType::Fixed => Err(ctx.err(
             &key,
             format!(
-                "end {end_name} is at point {id} on free body {}: a clamp on a free body is \
-                 not built (a clamp needs a fixed or coupled point, or a point on a fixed body)",
+                "end {end_name} is at point {id} on {} body {}: a clamp on a body that turns \
+                 is not built (a clamp needs a fixed or coupled point, or a point on a fixed \
+                 body)",
+                bodies[*body].type_word(),
                 bodies[*body].id
             ),
         )),

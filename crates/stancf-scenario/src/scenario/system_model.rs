@@ -131,9 +131,14 @@ impl SystemScenario {
                 BodyKind::Free,
                 RigidInertia::principal(b.mass, b.centre_of_mass, b.moments),
             ),
-            // A fixed body's inertia is not used (its points are fixed).
+            // A fixed body's inertia is not used (its points are fixed),
+            // nor a coupled body's (the host's; its points are coupled).
             super::BodyType::Fixed => (
                 BodyKind::Fixed,
+                RigidInertia::principal(0.0, [0.0; 3], [0.0; 3]),
+            ),
+            super::BodyType::Coupled => (
+                BodyKind::Coupled,
                 RigidInertia::principal(0.0, [0.0; 3], [0.0; 3]),
             ),
         };

@@ -164,8 +164,18 @@ impl SystemScenario {
     pub fn point_is_fixed(&self, p: usize) -> bool {
         match self.points[p].kind {
             PointType::Fixed => true,
-            PointType::Body { body, .. } => !self.bodies[body].is_free(),
+            PointType::Body { body, .. } => self.bodies[body].kind == super::BodyType::Fixed,
             PointType::Free | PointType::Coupled => false,
+        }
+    }
+
+    /// Whether point p is moved by a coupling code: a coupled point or a
+    /// point on a coupled body.
+    pub fn point_is_coupled(&self, p: usize) -> bool {
+        match self.points[p].kind {
+            PointType::Coupled => true,
+            PointType::Body { body, .. } => self.bodies[body].is_coupled(),
+            PointType::Fixed | PointType::Free => false,
         }
     }
 }

@@ -322,7 +322,7 @@ fn a_tethered_rod_leans_in_a_current_until_its_lift_balances_its_drag() {
             .with_direction(stancf::vec3::normalized(chord));
         let model = Model::new(
             cable,
-            material.clone(),
+            material,
             ModelOptions::default(),
             vec![Load::Gravity {
                 acceleration: [0.0, 0.0, -G],

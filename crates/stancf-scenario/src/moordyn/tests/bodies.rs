@@ -70,11 +70,18 @@ fn ca_takes_one_or_three_values() {
 }
 
 #[test]
-fn fixed_words_hold_a_body_and_every_other_word_but_coupled_frees_it() {
+fn fixed_words_hold_a_body_coupled_words_couple_it_and_every_other_but_pinned_frees_it() {
     for (word, kind) in [
         ("Fixed", BodyAttachment::Fixed),
         ("anchor", BodyAttachment::Fixed),
         ("FIX2", BodyAttachment::Fixed),
+        // MoorDyn's four coupled words (docs/moordyn-bodies-rods.md §1.1),
+        // any case, matched on their first run of letters.
+        ("Coupled", BodyAttachment::Coupled),
+        ("vessel", BodyAttachment::Coupled),
+        ("VES", BodyAttachment::Coupled),
+        ("Cpld", BodyAttachment::Coupled),
+        ("cpld2", BodyAttachment::Coupled),
         ("Free", BodyAttachment::Free),
         ("Body", BodyAttachment::Free),
         ("Turbine1", BodyAttachment::Free),
@@ -83,19 +90,13 @@ fn fixed_words_hold_a_body_and_every_other_word_but_coupled_frees_it() {
         assert_eq!(b.attachment, kind, "{word}");
         assert_eq!(b.attachment_word, word);
     }
-    for word in [
-        "Coupled",
-        "vessel",
-        "Cpld",
-        "CoupledPinned",
-        "VesPin",
-        "CpldPin",
-    ] {
+    for word in ["CoupledPinned", "vesselpinned", "VesPin", "CpldPin"] {
         let text = with_body(&format!("1 {word} 0 0 -3 0 0 0 500 0 100 0 0 0"));
         let e = error(&text);
         assert_eq!(e.line, Some(line_of(&text, word)), "{word}");
         assert!(
-            e.message.contains("coupled bodies are not built yet"),
+            e.message.contains(&format!("body 1 is \"{word}\""))
+                && e.message.contains("pinned bodies are not built yet"),
             "{e}"
         );
     }
@@ -181,15 +182,20 @@ fn a_point_on_a_body_is_read_in_the_bodys_axes_and_checked() {
     let text = with_body(body_row).replace("2 Coupled 0 0 -5 0 0 0 0", "2 Body1 0 0 -1 5 0.2 0 0");
     let deck = parse(&text).unwrap();
     assert_eq!((deck.points[1].mass, deck.points[1].volume), (5.0, 0.2));
-    // On a fixed body even its mass is refused.
-    let fixed = with_body("1 Fixed 0 0 -3 0 0 0 0 0 0 0 0 0")
-        .replace("2 Coupled 0 0 -5 0 0 0 0", "2 Body1 0 0 -1 5 0 0 0");
-    let e = error(&fixed);
-    assert!(
-        e.message
-            .contains("a point on a fixed body carries no mass, volume or drag of its own"),
-        "{e}"
-    );
+    // On a fixed or coupled body even its mass is refused.
+    for holder in ["Fixed", "Coupled"] {
+        let row = "2 Body1 0 0 -1 5 0 0 0";
+        let held = with_body(&format!("1 {holder} 0 0 -3 0 0 0 0 0 0 0 0 0"))
+            .replace("2 Coupled 0 0 -5 0 0 0 0", row);
+        let e = error(&held);
+        assert_eq!(e.line, Some(line_of(&held, row)), "{holder}");
+        assert!(
+            e.message.contains(
+                "a point on a fixed or coupled body carries no mass, volume or drag of its own"
+            ),
+            "{holder}: {e}"
+        );
+    }
 }
 
 #[test]

@@ -212,7 +212,7 @@ pub(super) fn bodies_json(
             };
             serde_json::json!({
                 "id": body.id,
-                "type": if body.is_free() { "free" } else { "fixed" },
+                "type": body.type_word(),
                 "position_final": super::vec3(position),
                 "angles_final": super::vec3(moordyn_angles(&rotation)),
             })

@@ -5,6 +5,7 @@
 
 mod bodies;
 mod rows;
+mod stiffness;
 mod writers;
 
 use super::summary::{error_json, say, vec3};
@@ -111,6 +112,7 @@ pub(super) fn run_system(
         writers.times = super::times_of(&sc.analysis);
     }
     let mut from_static = false;
+    let mut matrices = Vec::new();
     if let Some(st) = static_solve.as_mut() {
         solve_statics(st, opts, &mut outcome);
         if outcome.failure.is_some() || outcome.interrupted {
@@ -122,6 +124,8 @@ pub(super) fn run_system(
                 0.0
             };
             warn_of_static_compression(&sc, st);
+            matrices = stiffness::at_equilibrium(st, &sc);
+            stiffness::write_csv(place.dest(), &sc, &matrices).map_err(io_err(place.shown))?;
             let mut row = static_row(st, t);
             outcome.record_tensions(&row.ends);
             if sim.is_some() {
@@ -154,8 +158,8 @@ pub(super) fn run_system(
         &sc,
         &outcome,
         wall,
-        sim.as_ref(),
-        static_solve.as_ref(),
+        (sim.as_ref(), static_solve.as_ref()),
+        &matrices,
     )?;
     ending(path, place, opts, &sc, &outcome, wall)
 }
@@ -368,14 +372,16 @@ fn step_through(
     Ok(())
 }
 
-/// summary.json of a system run.
+/// summary.json of a system run: `sim` the simulation and `statics` the
+/// static solve of the run (either may be absent), `matrices` the free
+/// bodies' mooring stiffness at the equilibrium.
 fn write_summary(
     dest: Dest,
     sc: &SystemScenario,
     outcome: &Outcome,
     wall: f64,
-    sim: Option<&SystemSimulation>,
-    statics: Option<&SystemStatics>,
+    (sim, statics): (Option<&SystemSimulation>, Option<&SystemStatics>),
+    matrices: &[stiffness::BodyStiffness],
 ) -> Result<(), Failure> {
     let lines: Vec<Value> = sc
         .lines
@@ -443,7 +449,9 @@ fn write_summary(
         "interrupted": outcome.interrupted,
     });
     if !sc.bodies.is_empty() {
-        summary["bodies"] = Value::Array(bodies::bodies_json(sc, sim, statics));
+        let mut entries = bodies::bodies_json(sc, sim, statics);
+        stiffness::add_to_summary(&mut entries, matrices);
+        summary["bodies"] = Value::Array(entries);
     }
     if !sc.rods.is_empty() {
         summary["rods"] = Value::Array(bodies::rods_json(sc));
