@@ -371,12 +371,7 @@ impl CoupledSystem {
             |b| self.layout.reference(x, b),
         );
         let stiffness = stiffness::free_body_stiffness(&mut statics);
-        // Free bodies start where the static solve left them.
-        let at_rest = statics.system_at_equilibrium();
-        let mut states = statics.line_states();
-        at_rest.start_lines_with_bodies(&mut states);
-        let mut sim = SystemSimulation::new(at_rest, states, self.steps.clone())?;
-        sim.set_step_halvings(self.step_halvings)?;
+        let sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
         let bodies = 0..self.layout.bodies.len();
         self.running = Some(Running {
             sim,

@@ -70,6 +70,13 @@ impl ForcesAtTime {
         }
     }
 
+    /// The forces at t = 0, before any step (a static equilibrium's): read
+    /// until the first step, which does not use them (its estimate is its
+    /// means themselves).
+    pub(super) fn start(&mut self, forces: &[[EndForce; 2]]) {
+        self.at_time.copy_from_slice(forces);
+    }
+
     /// Takes the means of a step of length `dt` just converged: (M23a)
     /// with the step before it, or the means themselves after a start.
     pub(super) fn update(&mut self, mean: &[[EndForce; 2]], dt: f64) {

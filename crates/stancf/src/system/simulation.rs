@@ -227,6 +227,28 @@ impl SystemSimulation {
         self.end_forces[line]
     }
 
+    /// Sets the lines' end forces read before the first step (both the
+    /// step mean and the force at the time) to `forces`, one pair per
+    /// line: a static equilibrium's, where the run starts from it. Refused
+    /// after a step or with a count that is not the lines'.
+    pub fn set_start_forces(&mut self, forces: &[[EndForce; 2]]) -> Result<(), ModelError> {
+        if self.steps > 0 || forces.len() != self.end_forces.len() {
+            return Err(ModelError::invalid(
+                "start_forces",
+                format!(
+                    "{} pairs given for {} lines, after {} steps: only before the first step, \
+                     one pair per line",
+                    forces.len(),
+                    self.end_forces.len(),
+                    self.steps
+                ),
+            ));
+        }
+        self.end_forces.copy_from_slice(forces);
+        self.forces_at_time.start(forces);
+        Ok(())
+    }
+
     /// The net force the attached lines exert on point p, averaged over
     /// the last step.
     pub fn point_force(&self, p: usize) -> [f64; 3] {

@@ -274,3 +274,23 @@ fn hanging_platform(velocity: [f64; 3]) -> (System, [f64; 3]) {
         host,
     )
 }
+
+/// Right after initialization, before any step, the handle reads the
+/// static equilibrium's forces: a coupled point's force is the one
+/// `initialize` returned, to round-off (it read zero before the first
+/// step).
+#[test]
+fn before_the_first_step_a_coupled_point_reads_the_equilibriums_force() {
+    let (system, host) = hanging_platform([0.0; 3]);
+    let mut coupled = galerkin_handle(system);
+    let returned = coupled.initialize(&host, None).expect("initialize");
+    let read = coupled.point(6).expect("a point").force;
+    let size = returned.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for c in 0..3 {
+        assert!(
+            (read[c] - returned[c]).abs() <= 1e-12 * size,
+            "{read:?} against {returned:?}"
+        );
+    }
+    assert!(size > 0.0);
+}
