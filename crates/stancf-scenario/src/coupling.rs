@@ -14,8 +14,7 @@ use std::path::Path;
 pub struct Coupled {
     pub handle: CoupledSystem,
     /// The coupled bodies' ids, in the order of the coupling arrays
-    /// (first, 6 numbers each): the order of the scenario's `[[bodies]]`,
-    /// a deck's by id (its BODIES are numbered in order).
+    /// (first, 6 numbers each): by id, as MoorDyn orders them.
     pub coupled_body_ids: Vec<i64>,
     /// The coupled points' ids (points on coupled bodies are not among
     /// them: their bodies move them), in the order of the coupling arrays
@@ -50,8 +49,8 @@ pub fn open_with(path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
 /// `dtM`. Refused: a single cable (no points)
 /// and a system without coupled points or coupled bodies. The coupled
 /// points' motions in the scenario are replaced by the coupling code's;
-/// the coupling arrays hold the coupled bodies first, in body order,
-/// then the coupled points in the order of their ids.
+/// the coupling arrays hold the coupled bodies first, in the order of
+/// their ids, then the coupled points in the order of theirs.
 pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
     from_text_with(text, path, false)
 }
@@ -120,12 +119,13 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
         sc.analysis.step_settings(),
     )
     .map_err(input)?;
+    // The coupled bodies by id, as MoorDyn orders them (a deck's BODIES
+    // are numbered in order; a TOML file's `[[bodies]]` may not be).
+    let mut bodies = handle.coupled_bodies();
+    bodies.sort_by_key(|&b| sc.bodies[b].id);
+    let handle = handle.with_body_order(bodies.clone()).map_err(input)?;
     Ok(Coupled {
-        coupled_body_ids: handle
-            .coupled_bodies()
-            .iter()
-            .map(|&b| sc.bodies[b].id)
-            .collect(),
+        coupled_body_ids: bodies.iter().map(|&b| sc.bodies[b].id).collect(),
         coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
         line_ids: sc.lines.iter().map(|l| l.id).collect(),
         point_ids: sc.points.iter().map(|p| p.id).collect(),

@@ -320,3 +320,20 @@ fn what_a_coupled_body_does_not_take_is_refused_by_name() {
         &["point 1 on coupled body 7", "a clamp on a body that turns"],
     );
 }
+
+/// A TOML system whose coupled bodies are written with their ids out of
+/// order (9, then 4) puts them in the arrays by id, as MoorDyn does: body
+/// 4's pose first in `initial_positions`.
+#[test]
+fn coupled_bodies_come_in_the_arrays_by_id() {
+    let text = coupled_body_toml("", DYNAMIC);
+    let two =
+        format!("{text}\n[[bodies]]\nid = 4\ntype = \"coupled\"\nposition = [30.0, 0.0, -10.0]\n")
+            .replace("[[bodies]]\nid = 7", "[[bodies]]\nid = 9");
+    let two = two.replace("body = 7", "body = 9");
+    let opened = coupling::from_text(&two, Path::new("coupled.toml")).unwrap();
+    assert_eq!(opened.coupled_body_ids, vec![4, 9]);
+    let x0 = opened.handle.initial_positions();
+    assert_eq!(&x0[0..3], &[30.0, 0.0, -10.0]);
+    assert_eq!(&x0[6..9], &[0.0, 0.0, -10.0]);
+}

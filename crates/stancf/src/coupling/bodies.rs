@@ -17,7 +17,10 @@
 //! the body point's position r + R xi and velocity v + w x R xi at the
 //! interval's ends, (K1)-(K2) per point, as a coupled point does.
 
+use super::identity::Identity;
+use super::{identity_order, CoupledSystem};
 use crate::body::pose::{point, rotate, rotation_from_moordyn_angles};
+use crate::error::ModelError;
 use crate::vec3::{add, cross, sub};
 
 /// A coupled body of the arrays: its index among the system's bodies and
@@ -35,6 +38,41 @@ pub(super) struct CoupledBody {
 pub(super) struct ArrayLayout {
     pub bodies: Vec<CoupledBody>,
     pub plain: Vec<usize>,
+}
+
+impl CoupledSystem {
+    /// Orders the coupled bodies of the arrays as `order` (a permutation
+    /// of [`Self::coupled_bodies`]; e.g. by the bodies' ids, as MoorDyn
+    /// orders its coupled bodies). Their 6 numbers stay first.
+    pub fn with_body_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
+        let mut own: Vec<usize> = self.layout.bodies.iter().map(|b| b.body).collect();
+        let mut sorted = order.clone();
+        own.sort_unstable();
+        sorted.sort_unstable();
+        if sorted != own {
+            return Err(ModelError::invalid(
+                "body_order",
+                format!("must list the coupled bodies {own:?} once each, got {order:?}"),
+            ));
+        }
+        let mut bodies = std::mem::take(&mut self.layout.bodies);
+        self.layout.bodies = order
+            .iter()
+            .map(|&b| {
+                let k = bodies
+                    .iter()
+                    .position(|c| c.body == b)
+                    .expect("a coupled body");
+                bodies.swap_remove(k)
+            })
+            .collect();
+        self.identity = Identity::of(
+            &self.digest,
+            &identity_order(&self.layout, &self.array_points),
+            self.step_halvings,
+        );
+        Ok(self)
+    }
 }
 
 /// The pose of a body from its 6 numbers: the reference point and R.

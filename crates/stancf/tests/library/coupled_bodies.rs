@@ -294,3 +294,46 @@ fn before_the_first_step_a_coupled_point_reads_the_equilibriums_force() {
     }
     assert!(size > 0.0);
 }
+
+/// Two coupled platforms, each on one rope to an anchor below it: put in
+/// the arrays in the other order (`with_body_order`, as a scenario orders
+/// them by id), their 6 numbers and their 6 forces swap places and are
+/// otherwise the same, bit for bit; an order that is not a permutation
+/// of the coupled bodies is refused.
+#[test]
+fn coupled_bodies_take_the_order_they_are_given_in_the_arrays() {
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let build = || {
+        let mut lines = Vec::new();
+        let mut points = Vec::new();
+        let mut bodies = Vec::new();
+        for (k, x) in [0.0f64, 6.0].into_iter().enumerate() {
+            let anchor = [x + 2.0, 0.0, -3.0];
+            let fairlead = [x, 0.0, -0.5];
+            points.push(Point::on_body(k, [0.0, 0.0, -0.5]));
+            points.push(Point::fixed(anchor));
+            lines.push(Line {
+                model: line_model(anchor, fairlead, 4),
+                ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+            });
+            bodies.push(Body::new(
+                BodyKind::Coupled,
+                [x, 0.0, 0.0],
+                identity,
+                RigidInertia::principal(1.0, [0.0; 3], [1.0; 3]),
+            ));
+        }
+        handle(System::with_bodies(lines, points, bodies, G).expect("system"))
+    };
+    let mut natural = build();
+    let mut swapped = build().with_body_order(vec![1, 0]).expect("a permutation");
+    assert_eq!(swapped.coupled_bodies(), vec![1, 0]);
+    let x = natural.initial_positions();
+    let y = swapped.initial_positions();
+    assert_eq!((&x[0..6], &x[6..12]), (&y[6..12], &y[0..6]));
+    let f = natural.initialize(&x, None).expect("initialize");
+    let g = swapped.initialize(&y, None).expect("initialize");
+    assert_eq!((&f[0..6], &f[6..12]), (&g[6..12], &g[0..6]));
+    assert!(build().with_body_order(vec![1, 1]).is_err());
+    assert!(build().with_body_order(vec![0]).is_err());
+}
