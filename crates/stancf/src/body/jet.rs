@@ -120,6 +120,17 @@ pub fn cross<const N: usize>(a: &JetVec<N>, b: &JetVec<N>) -> JetVec<N> {
     ]
 }
 
+/// |x| on jets, with zero derivatives at x = 0 (where the drags' x |x|
+/// has them).
+pub fn norm<const N: usize>(x: &JetVec<N>) -> Jet<N> {
+    let s = dot(x, x);
+    if s.v <= 0.0 {
+        return Jet::constant(0.0);
+    }
+    let r = s.v.sqrt();
+    s.compose(r, 0.5 / r, -0.25 / (r * s.v))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -17,10 +17,10 @@
 //!
 //! (A = pi d^2/4, V_end = pi d^3/12, a hemisphere of the rod's diameter,
 //! both as MoorDyn takes them; like MoorDyn, both caps carry their added
-//! mass and drag, and the side carries none along the axis). The
-//! integrals go by Gauss's rule, three points on each of the rod's
-//! segments: exact for T_a (u_p is linear in s), to the rule's error for
-//! the drag's |u_p| u_p.
+//! mass and drag, and the side carries none along the axis). T_a's
+//! integrand is quadratic in s (u_p is linear): two Gauss points over the
+//! rod are exact. The drag's |u_p| u_p goes by three Gauss points on each
+//! of the rod's segments, to the rule's error.
 
 use super::inertia::RigidInertia;
 use super::jet::{cross, dot, Jet, JetVec};
@@ -52,16 +52,6 @@ const STATIONS: [(f64, f64); 3] = [
 
 fn constant<const N: usize>(v: [f64; 3]) -> JetVec<N> {
     v.map(Jet::constant)
-}
-
-/// |x| on jets, with zero derivatives at x = 0 (where x |x| has them).
-pub(crate) fn length<const N: usize>(x: &JetVec<N>) -> Jet<N> {
-    let s = dot(x, x);
-    if s.v <= 0.0 {
-        return Jet::constant(0.0);
-    }
-    let r = s.v.sqrt();
-    s.compose(r, 0.5 / r, -0.25 / (r * s.v))
 }
 
 impl Rod {
@@ -183,9 +173,12 @@ impl Rod {
         let mut t = Jet::constant(0.0);
         let side = 0.5 * density * self.added_mass_coefficient * self.area();
         if side != 0.0 {
-            for (xi, wl) in self.stations() {
+            // |u_p|^2 is quadratic along the rod: two Gauss points are exact.
+            let step = sub(self.end_b, self.end_a);
+            for x in [0.5 - 0.5 / 3f64.sqrt(), 0.5 + 0.5 / 3f64.sqrt()] {
+                let xi = add(self.end_a, scale(x, step));
                 let (_, u_p) = split(&point_velocity(u, omega, xi), &q);
-                t = t + dot(&u_p, &u_p).scale(side * wl);
+                t = t + dot(&u_p, &u_p).scale(side * 0.5 * self.length());
             }
         }
         let cap = 0.5
@@ -227,7 +220,7 @@ impl Rod {
         if side != 0.0 {
             for (xi, wl) in self.stations() {
                 let (_, u_p) = split(&point_velocity(u, omega, xi), &q);
-                let speed = length(&u_p);
+                let speed = super::jet::norm(&u_p);
                 add_at(xi, u_p.map(|c| (c * speed).scale(side * wl)));
             }
         }

@@ -17,8 +17,7 @@
 //! theta: the virtual rotation in body axes is eta = J_r dtheta, and the
 //! reference point moves by dr_G + R (c x eta)).
 
-use super::jet::{cross, dot, Jet, JetVec};
-use super::rod::length;
+use super::jet::{cross, dot, norm, Jet, JetVec};
 use super::rotation::{body_rate, times, turn};
 
 /// Variables at a time point: v_G (0..3), theta (3..6), theta_dot (6..9).
@@ -143,10 +142,10 @@ impl Context<'_> {
         let w = self.water?;
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
-        let speed = length(&u);
+        let speed = norm(&u);
         let mut f: JetVec<NV> =
             std::array::from_fn(|i| (u[i] * speed).scale(-half_rho * w.drag_areas[i]));
-        let spin = length(&omega);
+        let spin = norm(&omega);
         // The reference point is at -c from the centre: (-c) x f = f x c.
         let f_x_c = cross(&f, &constant(self.centre_of_mass));
         let mut on_eta: JetVec<NV> = std::array::from_fn(|i| {
