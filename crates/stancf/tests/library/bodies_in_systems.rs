@@ -237,48 +237,8 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             rods: Vec::new(),
         });
     }
-    let local = [[0.2, 0.1, 0.3], [-0.1, 0.25, 0.0]];
-    let places = local.map(|l| body.point(l));
-    let mut lines = Vec::new();
-    let mut states = Vec::new();
-    for (k, end) in places.iter().enumerate() {
-        let start = [0.1 - 0.5 * k as f64, 0.4, 0.0];
-        let chord = (0..3)
-            .map(|c| (end[c] - start[c]).powi(2))
-            .sum::<f64>()
-            .sqrt();
-        let d: [f64; 3] = std::array::from_fn(|c| (end[c] - start[c]) / chord);
-        let cable = Cable::straight(chord, 4, ElementType::Sac2)
-            .with_direction(d)
-            .with_origin(start);
-        let model =
-            Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
-        let mut state = model.initial_state();
-        // The line end B moves with the body point; the rest of the line
-        // as a linear blend from the anchor (still) to B.
-        let vb = body.point_velocity(local[k]);
-        for node in 0..model.nodes() {
-            let o = model.coordinate(node, 0, 0);
-            let s = node as f64 / (model.nodes() - 1) as f64;
-            for c in 0..3 {
-                state.v[o + c] = s * vb[c];
-            }
-        }
-        states.push(state);
-        lines.push(Line {
-            model,
-            ends: [
-                if k == 0 { End::Point(2) } else { End::Loose },
-                End::Point(k),
-            ],
-        });
-    }
-    let points = vec![
-        Point::on_body(0, local[0]),
-        Point::on_body(0, local[1]),
-        Point::fixed([0.1, 0.4, 0.0]),
-    ];
-    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let (system, states) =
+        crate::common::two_ropes_on_a_body(body, [[0.2, 0.1, 0.3], [-0.1, 0.25, 0.0]], 0.0);
     let mut sim = SystemSimulation::new(system, states, galerkin(0.01)).unwrap();
     let err = crate::common::step_jacobian_error(&mut sim, 1e-6);
     eprintln!("step Jacobian with a free body: rel. error {err:.1e}");

@@ -152,43 +152,8 @@ fn a_systems_jacobian_with_a_free_rod_is_the_derivative_of_its_rows() {
     body.water = Some(water([0.3, -0.2, 0.05]));
     body.velocity = [0.2, -0.1, 0.3];
     body.angular_velocity = [0.5, 1.0, -0.7];
-    let local = [[0.8, 0.6, 0.6], [0.3, 0.25, 0.1]];
-    let mut lines = Vec::new();
-    let mut states = Vec::new();
-    for (k, l) in local.iter().enumerate() {
-        let end = body.point(*l);
-        let start = [0.1 - 0.5 * k as f64, 0.4, -1.0];
-        let chord = stancf::vec3::norm(stancf::vec3::sub(end, start));
-        let d = stancf::vec3::scale(1.0 / chord, stancf::vec3::sub(end, start));
-        let cable = Cable::straight(chord, 4, ElementType::Sac2)
-            .with_direction(d)
-            .with_origin(start);
-        let model =
-            Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
-        let mut state = model.initial_state();
-        let vb = body.point_velocity(*l);
-        for node in 0..model.nodes() {
-            let o = model.coordinate(node, 0, 0);
-            let s = node as f64 / (model.nodes() - 1) as f64;
-            for c in 0..3 {
-                state.v[o + c] = s * vb[c];
-            }
-        }
-        states.push(state);
-        lines.push(Line {
-            model,
-            ends: [
-                if k == 0 { End::Point(2) } else { End::Loose },
-                End::Point(k),
-            ],
-        });
-    }
-    let points = vec![
-        Point::on_body(0, local[0]),
-        Point::on_body(0, local[1]),
-        Point::fixed([0.1, 0.4, -1.0]),
-    ];
-    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let (system, states) =
+        crate::common::two_ropes_on_a_body(body, [[0.8, 0.6, 0.6], [0.3, 0.25, 0.1]], -1.0);
     let settings = StepSettings {
         time_step: 0.01,
         time_scheme: TimeScheme::Galerkin,

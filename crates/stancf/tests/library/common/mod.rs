@@ -283,3 +283,45 @@ pub fn assert_energy_balance_falls_at_fourth_order(
         "{coarse:e} {fine:e}"
     );
 }
+
+/// `body` (body 0) holding two light ropes at its points `local` (points
+/// 0 and 1): rope 0 from a fixed point at [0.1, 0.4, z] (point 2), rope 1
+/// from a loose end at [-0.4, 0.4, z], both straight, starting to move
+/// with the body (`System::start_lines_with_bodies`); in gravity 9.81.
+pub fn two_ropes_on_a_body(
+    body: stancf::system::Body,
+    local: [[f64; 3]; 2],
+    z: f64,
+) -> (stancf::system::System, Vec<stancf::State>) {
+    use stancf::system::{End, Line, Point, System};
+    use stancf::vec3::{norm, scale, sub};
+    let lines: Vec<Line> = (0..2)
+        .map(|k| {
+            let (start, end) = ([0.1 - 0.5 * k as f64, 0.4, z], body.point(local[k]));
+            let chord = norm(sub(end, start));
+            let cable = stancf::Cable::straight(chord, 4, stancf::ElementType::Sac2)
+                .with_direction(scale(1.0 / chord, sub(end, start)))
+                .with_origin(start);
+            let model =
+                stancf::Model::new(cable, light_rope(), Default::default(), vec![]).expect("model");
+            let first = if k == 0 { End::Point(2) } else { End::Loose };
+            Line {
+                model,
+                ends: [first, End::Point(k)],
+            }
+        })
+        .collect();
+    let points = vec![
+        Point::on_body(0, local[0]),
+        Point::on_body(0, local[1]),
+        Point::fixed([0.1, 0.4, z]),
+    ];
+    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let mut states: Vec<stancf::State> = system
+        .lines()
+        .iter()
+        .map(|l| l.model.initial_state())
+        .collect();
+    system.start_lines_with_bodies(&mut states);
+    (system, states)
+}
