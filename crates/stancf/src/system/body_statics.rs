@@ -323,7 +323,13 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 drag: body
                     .water
                     .as_ref()
-                    .filter(|w| w.current != [0.0; 3])
+                    .filter(|w| {
+                        w.current != [0.0; 3]
+                            && (w.drag_areas != [0.0; 3]
+                                || w.rods.iter().any(|r| {
+                                    r.drag_coefficient != 0.0 || r.end_drag_coefficient != 0.0
+                                }))
+                    })
                     .cloned(),
                 spin_hold: spin_axis(body, &points_local(system, b)).map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
