@@ -156,8 +156,7 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
             (None, _) => "in air",
             (Some(_), None) => "in water (no volume)",
             (Some(_), Some(_)) if !r.moves(&sc.bodies) => "its water unused (it does not move)",
-            (Some(_), Some(_)) if r.submerged() => "submerged",
-            (Some(_), Some(_)) => "not submerged",
+            (Some(_), Some(_)) => r.waterline(),
         };
         let points: Vec<String> = ["A", "B"]
             .iter()

@@ -80,7 +80,7 @@ pub(super) fn deck_scenario(
     let mut points: Vec<SystemPoint> = deck.points.iter().map(|p| deck_point(p, &bodies)).collect();
     // Rods after the deck's bodies and points: a free rod's body and the
     // points at rod ends come after them (super::rods).
-    let (rods, ends) = super::rods::deck_rods(deck, file, &mut bodies, &mut points, true)?;
+    let (rods, ends) = super::rods::deck_rods(deck, file, &mut bodies, &mut points)?;
     let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (mut analysis, measures, initial, mut notes) =
         analysis_part(&ctx, Some(raw), InitialShape::Static, free_bodies)?;

@@ -85,9 +85,17 @@ impl SystemRod {
         }
     }
 
-    /// Whether it lies under the surface z = 0 at t = 0 (both ends).
-    pub fn submerged(&self) -> bool {
-        self.ends.iter().all(|e| e[2] < 0.0)
+    /// Where it lies against the surface z = 0 at t = 0: "submerged",
+    /// "crossing the surface" or "above the surface".
+    pub fn waterline(&self) -> &'static str {
+        let [a, b] = self.ends.map(|e| e[2]);
+        if a < 0.0 && b < 0.0 {
+            "submerged"
+        } else if a > 0.0 && b > 0.0 {
+            "above the surface"
+        } else {
+            "crossing the surface"
+        }
     }
 
     /// Whether its water (in a scenario with water) acts on something
@@ -131,13 +139,4 @@ pub(super) fn next_body_id(bodies: &[SystemBody]) -> i64 {
         .max()
         .unwrap_or(0)
         .saturating_add(1)
-}
-
-/// Why a rod in water that does not lie under the surface is refused.
-pub(super) fn not_submerged(rod: &SystemRod) -> String {
-    format!(
-        "rod {} has its ends at z = {} and {} m: a rod in water must lie under the surface \
-         z = 0 (a rod that crosses the surface or stands above it is not built yet)",
-        rod.id, rod.ends[0][2], rod.ends[1][2]
-    )
 }

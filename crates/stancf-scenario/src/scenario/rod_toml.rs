@@ -4,9 +4,7 @@
 use super::bodies::SystemBody;
 use super::context::Ctx;
 use super::raw::{RawPoint, RawRod, RawRodType};
-use super::rod_parts::{
-    free_rod_body, next_body_id, not_submerged, rod_of, RodHolder, RodTypeValues, SystemRod,
-};
+use super::rod_parts::{free_rod_body, next_body_id, rod_of, RodHolder, RodTypeValues, SystemRod};
 use super::system_parts::PointType;
 use super::ScenarioError;
 use stancf::vec3::sub;
@@ -51,13 +49,11 @@ pub(super) fn rod_types(
 /// (required, apart; global, or in the body's axes from its reference
 /// point for type "body"), `segments` (>= 1, default 1: the drag's
 /// quadrature). A free rod's body is pushed onto `bodies`, its id one
-/// more than the largest there. `in_water`: its rods that move (free, or
-/// on a free body) must lie under the surface.
+/// more than the largest there.
 pub(super) fn rods(
     ctx: &Ctx,
     (types, raw): (&[RodTypeValues], &[RawRod]),
     bodies: &mut Vec<SystemBody>,
-    in_water: bool,
 ) -> Result<Vec<SystemRod>, ScenarioError> {
     let mut out: Vec<SystemRod> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
@@ -138,9 +134,6 @@ pub(super) fn rods(
             ends,
             points: [None; 2],
         };
-        if in_water && rod.moves(bodies) && !rod.submerged() {
-            return Err(ctx.err(&format!("rods[{i}]"), not_submerged(&rod)));
-        }
         out.push(rod);
     }
     Ok(out)

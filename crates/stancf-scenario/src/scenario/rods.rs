@@ -23,9 +23,7 @@
 //! the end of a rod that moves it is refused.
 
 use super::bodies::SystemBody;
-use super::rod_parts::{
-    free_rod_body, next_body_id, not_submerged, rod_of, RodHolder, RodTypeValues, SystemRod,
-};
+use super::rod_parts::{free_rod_body, next_body_id, rod_of, RodHolder, RodTypeValues, SystemRod};
 use super::system_parts::{PointType, SystemPoint, SystemScenario};
 use super::ScenarioError;
 use crate::moordyn::{Deck, DeckRod, LineAttachment, RodAttachment, RodEnd};
@@ -67,22 +65,17 @@ pub(super) fn end_point(
 /// line's ends. Refused naming the deck's line: a rod of a length
 /// MoorDyn gives none with segments (or none with length), a line with
 /// bending stiffness at a rod end, a zero-length free rod no line is
-/// attached to, a rod in water that moves (free, or on a free body) and
-/// does not lie under the surface (a fixed rod's water acts on nothing).
+/// attached to.
 pub(super) fn deck_rods(
     deck: &Deck,
     file: &str,
     bodies: &mut Vec<SystemBody>,
     points: &mut Vec<SystemPoint>,
-    in_water: bool,
 ) -> Result<(Vec<SystemRod>, Vec<DeckLineEnds>), ScenarioError> {
     let at = |line: usize, msg: String| ScenarioError(format!("{file}: line {line}: {msg}"));
     let mut rods = Vec::with_capacity(deck.rods.len());
     for r in &deck.rods {
         let rod = deck_rod(deck, r, bodies, points).map_err(|m| at(r.line, m))?;
-        if in_water && rod.rod.is_some() && rod.moves(bodies) && !rod.submerged() {
-            return Err(at(r.line, not_submerged(&rod)));
-        }
         rods.push(rod);
     }
     let mut ends = Vec::with_capacity(deck.lines.len());

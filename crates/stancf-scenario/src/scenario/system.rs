@@ -74,8 +74,7 @@ pub(super) fn system_scenario(
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut bodies = super::bodies::bodies(ctx, &raw.bodies)?;
     let rod_types = super::rod_toml::rod_types(ctx, &raw.rod_types)?;
-    let mut rods =
-        super::rod_toml::rods(ctx, (&rod_types, &raw.rods), &mut bodies, water.is_some())?;
+    let mut rods = super::rod_toml::rods(ctx, (&rod_types, &raw.rods), &mut bodies)?;
     let mut points = points(ctx, &raw.points, &bodies, &mut rods)?;
     let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
     let free_bodies = bodies.iter().any(SystemBody::is_free);

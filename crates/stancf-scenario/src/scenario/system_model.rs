@@ -154,6 +154,8 @@ impl SystemScenario {
                 rotational_drag_areas: b.rotational_drag_areas,
                 current: super::bodies::uniform_current(w).unwrap_or([0.0; 3]),
                 rods: Vec::new(),
+                // The system's g, set with the rods (System::with_bodies).
+                gravity: 0.0,
             }),
             _ => None,
         };

@@ -134,12 +134,14 @@ fn variable_slot(k: usize, m: usize, point: &TimePoint) -> (usize, f64) {
     match k {
         0..=2 => (3 * m + k, t_dot),
         3..=5 => (12 + 3 * m + k - 3, t),
-        _ => (12 + 3 * m + k - 6, t_dot),
+        6..=8 => (12 + 3 * m + k - 6, t_dot),
+        _ => (3 * m + k - 9, t),
     }
 }
 
-/// The nine variables of [`super::terms`] at values v, as jets.
-fn variables(v: [[f64; 3]; 3]) -> [JetVec<NV>; 3] {
+/// The twelve variables of [`super::terms`] at values v (v_G, theta,
+/// theta_dot, r_G), as jets.
+fn variables(v: [[f64; 3]; 4]) -> [JetVec<NV>; 4] {
     std::array::from_fn(|b| std::array::from_fn(|i| Jet::variable(v[b][i], 3 * b + i)))
 }
 
@@ -248,18 +250,19 @@ impl FreeBody {
         )
     }
     /// Kinetic energy (B9) (with the added mass's) and the potential of
-    /// the constant forces, `-sum_j F_j . x(xi_j)`.
+    /// the constant forces and of the rods' buoyancy,
+    /// `-sum_j F_j . x(xi_j) - rho g sum I` (B20).
     pub fn energies(&self) -> (f64, f64) {
-        let kinetic = self
-            .context(&[])
-            .kinetic(&variables([self.velocity, [0.0; 3], self.body_rate]))
-            .v;
-        let potential = -self
-            .forces
-            .forces
-            .iter()
-            .map(|(f, xi)| crate::vec3::dot(*f, self.point(*xi)))
-            .sum::<f64>();
+        let ctx = self.context(&[]);
+        let now = variables([self.velocity, [0.0; 3], self.body_rate, self.centre]);
+        let kinetic = ctx.kinetic(&now).v;
+        let potential = ctx.buoyancy_potential(&now).v
+            - self
+                .forces
+                .forces
+                .iter()
+                .map(|(f, xi)| crate::vec3::dot(*f, self.point(*xi)))
+                .sum::<f64>();
         (kinetic, potential)
     }
 
@@ -272,6 +275,11 @@ impl FreeBody {
             loads,
             water: self.water.as_ref(),
         }
+    }
+
+    /// The variables at the current pose, at rest.
+    fn at_rest(&self) -> [JetVec<NV>; 4] {
+        variables([[0.0; 3], [0.0; 3], [0.0; 3], self.centre])
     }
 
     /// The constant forces in the start's body axes, at their points from
@@ -290,9 +298,12 @@ impl FreeBody {
     /// p and Pi from v_G and Omega (the kinetic energy's gradient in the
     /// rates at theta = 0, where theta_dot = Omega).
     fn momenta_from_rates(&mut self) {
-        let t = self
-            .context(&[])
-            .kinetic(&variables([self.velocity, [0.0; 3], self.body_rate]));
+        let t = self.context(&[]).kinetic(&variables([
+            self.velocity,
+            [0.0; 3],
+            self.body_rate,
+            self.centre,
+        ]));
         self.momentum = [t.g[0], t.g[1], t.g[2]];
         self.body_momentum = [t.g[6], t.g[7], t.g[8]];
     }
@@ -300,7 +311,7 @@ impl FreeBody {
     /// v_G and Omega from p and Pi: the kinetic energy is quadratic in
     /// the rates, `[p; Pi] = g0 + H [v_G; Omega]` (g0 from the current).
     fn rates_from_momenta(&mut self) -> Result<(), SolverError> {
-        let t = self.context(&[]).kinetic(&variables([[0.0; 3]; 3]));
+        let t = self.context(&[]).kinetic(&self.at_rest());
         let rate_index = [0, 1, 2, 6, 7, 8];
         let mut h = [0.0; 36];
         let mut rhs = [0.0; 6];
@@ -336,7 +347,7 @@ impl FreeBody {
     /// The kinetic energy's gradient at zero rates and its Hessian in the
     /// rates [v_G; Omega] at the current pose: [p; Pi] = g0 + H [v_G; Omega].
     pub fn rate_hessian(&self) -> ([f64; 6], [[f64; 6]; 6]) {
-        let t = self.context(&[]).kinetic(&variables([[0.0; 3]; 3]));
+        let t = self.context(&[]).kinetic(&self.at_rest());
         let index = [0, 1, 2, 6, 7, 8];
         (
             index.map(|k| t.g[k]),

@@ -17,6 +17,8 @@
 //! | [`jet`] | numbers with their exact first and second derivatives |
 //! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B9)-(B10) |
 //! | [`rod`] | a rigid cylinder in a body: its inertia, added mass and drag (B17)-(B19) |
+//! | [`waterline`] | the part of a rod under the surface: its volume and first moment (B20)-(B21) |
+//! | [`wet`] | what of a rod the water wets: its sections' and caps' wet fractions and their rates (B22) |
 //! | [`attach`] | a point fixed to a body over a step (B11), on jets |
 //! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B8) |
 
@@ -28,6 +30,8 @@ pub mod pose;
 pub mod rod;
 pub mod rotation;
 pub mod terms;
+pub mod waterline;
+pub mod wet;
 
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;

@@ -24,6 +24,8 @@
 
 use super::inertia::RigidInertia;
 use super::jet::{cross, dot, Jet, JetVec};
+use super::waterline::Submerged;
+use super::wet::WetPart;
 use crate::error::ModelError;
 use crate::vec3::{add, norm, scale, sub};
 
@@ -42,6 +44,12 @@ pub struct Rod {
     pub end_added_mass_coefficient: f64,
     pub segments: usize,
 }
+
+/// Two-point Gauss-Legendre on [0, 1].
+const PAIR: [(f64, f64); 2] = [
+    (0.211_324_865_405_187_1, 0.5),
+    (0.788_675_134_594_812_9, 0.5),
+];
 
 /// Three-point Gauss-Legendre on [0, 1].
 const STATIONS: [(f64, f64); 3] = [
@@ -146,25 +154,38 @@ impl Rod {
         Ok(())
     }
 
-    /// Each Gauss station along the rod: its point (body axes, from the
-    /// reference point) and its weight times its length.
-    fn stations(&self) -> impl Iterator<Item = ([f64; 3], f64)> + '_ {
-        let n = self.segments;
-        let step = sub(self.end_b, self.end_a);
-        let piece = self.length() / n as f64;
-        (0..n).flat_map(move |k| {
-            STATIONS.iter().map(move |&(x, w)| {
-                let s = (k as f64 + x) / n as f64;
-                (add(self.end_a, scale(s, step)), w * piece)
-            })
-        })
+    /// The whole rod under water: what a rod deep under the surface
+    /// wets (B18)-(B19).
+    #[cfg(test)]
+    pub(crate) fn all_wet<const N: usize>(&self) -> WetPart<N> {
+        WetPart::all(self.end_a, self.end_b)
     }
 
-    /// The rod's added mass's kinetic energy (B18), from the reference
-    /// point's velocity through the water `u` and the rate `omega` (body
-    /// axes).
+    /// The rod's part under the surface z = 0 (B20) and what it wets
+    /// (B22), from the height of its end A, `z_a`, and the vertical
+    /// component of its axis, `c` (global), on jets in the pose.
+    pub(crate) fn wet_part<const N: usize>(
+        &self,
+        z_a: Jet<N>,
+        c: Jet<N>,
+    ) -> (WetPart<N>, Submerged<N>) {
+        let (l, a) = (self.length(), 0.5 * self.diameter);
+        let under = super::waterline::submerged(z_a, c, l, a);
+        (WetPart::at(self.end_a, self.end_b, a, z_a, c), under)
+    }
+
+    /// A cap's added mass, rho CaEnd V_end (V_end = pi d^3 / 12).
+    fn cap_added_mass(&self, density: f64) -> f64 {
+        density * self.end_added_mass_coefficient * std::f64::consts::PI * self.diameter.powi(3)
+            / 12.0
+    }
+
+    /// The rod's added mass's kinetic energy (B18) over its wet part
+    /// (B22), from the reference point's velocity through the water `u`
+    /// and the rate `omega` (body axes).
     pub(crate) fn added_mass_energy<const N: usize>(
         &self,
+        wet: &WetPart<N>,
         u: &JetVec<N>,
         omega: &JetVec<N>,
         density: f64,
@@ -173,33 +194,30 @@ impl Rod {
         let mut t = Jet::constant(0.0);
         let side = 0.5 * density * self.added_mass_coefficient * self.area();
         if side != 0.0 {
-            // |u_p|^2 is quadratic along the rod: two Gauss points are exact.
-            let step = sub(self.end_b, self.end_a);
-            for x in [0.5 - 0.5 / 3f64.sqrt(), 0.5 + 0.5 / 3f64.sqrt()] {
-                let xi = add(self.end_a, scale(x, step));
-                let (_, u_p) = split(&point_velocity(u, omega, xi), &q);
-                t = t + dot(&u_p, &u_p).scale(side * 0.5 * self.length());
+            // |u_p|^2 is quadratic along the rod: two Gauss points are
+            // exact on the wet run.
+            for station in wet.stations(&PAIR, 1) {
+                let (_, u_p) = split(&point_velocity(u, omega, &station.point), &q);
+                t = t + dot(&u_p, &u_p) * station.weight.scale(side);
             }
         }
-        let cap = 0.5
-            * density
-            * self.end_added_mass_coefficient
-            * std::f64::consts::PI
-            * self.diameter.powi(3)
-            / 12.0;
+        let cap = 0.5 * self.cap_added_mass(density);
         if cap != 0.0 {
-            for end in [self.end_a, self.end_b] {
-                let (u_q, _) = split(&point_velocity(u, omega, end), &q);
-                t = t + (u_q * u_q).scale(cap);
+            for end in wet.caps.iter().filter(|e| e.wetness.v > 0.0) {
+                let (u_q, _) = split(&point_velocity(u, omega, &constant(end.centre)), &q);
+                t = t + (u_q * u_q * end.wetness).scale(cap);
             }
         }
         t
     }
 
-    /// The rod's drag (B19): its resultant force and its moment about the
-    /// body's centre of mass `centre` (body axes).
+    /// The rod's drag (B19) over its wet part (B22) and the momentum the
+    /// water keeps as the rod's added mass changes (B23): their resultant
+    /// force and their moment about the body's centre of mass `centre`
+    /// (body axes).
     pub(crate) fn drag<const N: usize>(
         &self,
+        wet: &WetPart<N>,
         u: &JetVec<N>,
         omega: &JetVec<N>,
         density: f64,
@@ -208,8 +226,8 @@ impl Rod {
         let q = constant(self.axis());
         let mut force = constant::<N>([0.0; 3]);
         let mut moment = constant::<N>([0.0; 3]);
-        let mut add_at = |xi: [f64; 3], f: JetVec<N>| {
-            let arm = constant(sub(xi, centre));
+        let mut add_at = |xi: &JetVec<N>, f: JetVec<N>| {
+            let arm: JetVec<N> = std::array::from_fn(|i| xi[i] - Jet::constant(centre[i]));
             let m = cross(&arm, &f);
             for i in 0..3 {
                 force[i] = force[i] + f[i];
@@ -217,28 +235,51 @@ impl Rod {
             }
         };
         let side = -0.5 * density * self.drag_coefficient * self.diameter;
-        if side != 0.0 {
-            for (xi, wl) in self.stations() {
-                let (_, u_p) = split(&point_velocity(u, omega, xi), &q);
+        let side_mass = -0.5 * density * self.added_mass_coefficient * self.area();
+        for station in wet.stations(&STATIONS, self.segments) {
+            let (_, u_p) = split(&point_velocity(u, omega, &station.point), &q);
+            let mut f = constant::<N>([0.0; 3]);
+            if side != 0.0 {
                 let speed = super::jet::norm(&u_p);
-                add_at(xi, u_p.map(|c| (c * speed).scale(side * wl)));
+                f = u_p.map(|c| (c * speed * station.weight).scale(side));
             }
+            if side_mass != 0.0 && station.wetting.v != 0.0 {
+                let rate = absolute(station.wetting);
+                for i in 0..3 {
+                    f[i] = f[i] + (u_p[i] * rate).scale(side_mass);
+                }
+            }
+            add_at(&station.point, f);
+        }
+        if let (true, Some((xi, rate))) = (side_mass != 0.0, wet.waterline()) {
+            let (_, u_p) = split(&point_velocity(u, omega, &xi), &q);
+            let rate = absolute(rate);
+            add_at(&xi, u_p.map(|c| (c * rate).scale(side_mass)));
         }
         let cap = -0.5 * density * self.end_drag_coefficient * self.area();
-        if cap != 0.0 {
-            for end in [self.end_a, self.end_b] {
-                let (u_q, _) = split(&point_velocity(u, omega, end), &q);
-                let magnitude = u_q * u_q.compose(u_q.v.abs(), u_q.v.signum(), 0.0);
-                add_at(end, q.map(|c| (c * magnitude).scale(cap)));
+        let cap_mass = -0.5 * self.cap_added_mass(density);
+        for end in &wet.caps {
+            if end.wetness.v == 0.0 && end.rate.v == 0.0 {
+                continue;
             }
+            let centre = constant(end.centre);
+            let (u_q, _) = split(&point_velocity(u, omega, &centre), &q);
+            let along = u_q * absolute(u_q) * end.wetness.scale(cap)
+                + u_q * absolute(end.rate).scale(cap_mass);
+            add_at(&centre, q.map(|c| c * along));
         }
         (force, moment)
     }
 }
 
+/// |x| on a jet (its derivative the sign, zero at zero).
+fn absolute<const N: usize>(x: Jet<N>) -> Jet<N> {
+    x.compose(x.v.abs(), x.v.signum(), 0.0)
+}
+
 /// u + Omega x xi.
-fn point_velocity<const N: usize>(u: &JetVec<N>, omega: &JetVec<N>, xi: [f64; 3]) -> JetVec<N> {
-    let turn = cross(omega, &constant(xi));
+fn point_velocity<const N: usize>(u: &JetVec<N>, omega: &JetVec<N>, xi: &JetVec<N>) -> JetVec<N> {
+    let turn = cross(omega, xi);
     std::array::from_fn(|i| u[i] + turn[i])
 }
 
@@ -343,14 +384,14 @@ mod tests {
         let (rho, v, w) = (1025.0, 0.7, 0.9);
         let z = constant::<1>([0.0; 3]);
         let (a, l) = (r.area(), r.length());
-        let across = r.added_mass_energy(&constant([0.0, v, 0.0]), &z, rho);
+        let across = r.added_mass_energy(&r.all_wet(), &constant([0.0, v, 0.0]), &z, rho);
         let want = 0.5 * rho * 1.0 * a * l * v * v;
         assert!((across.v - want).abs() < 1e-12 * want);
-        let along = r.added_mass_energy(&constant([v, 0.0, 0.0]), &z, rho);
+        let along = r.added_mass_energy(&r.all_wet(), &constant([v, 0.0, 0.0]), &z, rho);
         let v_end = std::f64::consts::PI * 0.2f64.powi(3) / 12.0;
         let want = 0.5 * rho * 0.5 * 2.0 * v_end * v * v;
         assert!((along.v - want).abs() < 1e-12 * want);
-        let turning = r.added_mass_energy(&z, &constant([0.0, 0.0, w]), rho);
+        let turning = r.added_mass_energy(&r.all_wet(), &z, &constant([0.0, 0.0, w]), rho);
         let want = 0.5 * rho * 1.0 * a * w * w * l.powi(3) / 12.0;
         assert!((turning.v - want).abs() < 1e-12 * want);
     }
@@ -369,11 +410,11 @@ mod tests {
         let (rho, v, w) = (1025.0, 0.7, 0.9);
         let z = constant::<1>([0.0; 3]);
         let middle = r.middle();
-        let (f, m) = r.drag(&constant([0.0, v, 0.0]), &z, rho, middle);
+        let (f, m) = r.drag(&r.all_wet(), &constant([0.0, v, 0.0]), &z, rho, middle);
         let want = -0.5 * rho * 1.2 * 0.2 * 1.0 * v * v;
         assert!((f[1].v - want).abs() < 1e-12 * want.abs());
         assert!(f[0].v.abs() < 1e-12 && m.iter().all(|c| c.v.abs() < 1e-12));
-        let (f, m) = r.drag(&z, &constant([0.0, 0.0, w]), rho, middle);
+        let (f, m) = r.drag(&r.all_wet(), &z, &constant([0.0, 0.0, w]), rho, middle);
         let want = -rho * 1.2 * 0.2 * w * w / 64.0;
         assert!(f.iter().all(|c| c.v.abs() < 1e-12), "{:?}", f.map(|c| c.v));
         assert!(
@@ -382,7 +423,7 @@ mod tests {
             m[2].v
         );
         // Along its axis both caps drag: 2 x 1/2 rho CdEnd A v^2.
-        let (f, _) = r.drag(&constant([v, 0.0, 0.0]), &z, rho, middle);
+        let (f, _) = r.drag(&r.all_wet(), &constant([v, 0.0, 0.0]), &z, rho, middle);
         let want = -rho * 0.6 * r.area() * v * v;
         assert!((f[0].v - want).abs() < 1e-12 * want.abs());
     }

@@ -1,8 +1,9 @@
 //! What a body's slab action and the water's virtual work are at one
-//! time point (docs/method.md §15.4, §15.6), as functions of the nine
-//! numbers the slab gives there: the centre's velocity v_G (global), the
-//! rotation vector theta and its rate theta_dot (the step's chart,
-//! R = R_a exp([theta])). Evaluated on jets, they carry their exact
+//! time point (docs/method.md §15.4, §15.6, §15.11), as functions of the
+//! twelve numbers the slab gives there: the centre's velocity v_G
+//! (global), the rotation vector theta and its rate theta_dot (the step's
+//! chart, R = R_a exp([theta])) and the centre r_G (where the body's rods
+//! meet the surface). Evaluated on jets, they carry their exact
 //! derivatives to the step's rows.
 //!
 //! ```text
@@ -18,17 +19,22 @@
 //! reference point moves by dr_G + R (c x eta)).
 
 use super::jet::{cross, dot, norm, Jet, JetVec};
+use super::rod::Rod;
 use super::rotation::{body_rate, times, turn};
+use super::waterline::Submerged;
+use super::wet::WetPart;
 
-/// Variables at a time point: v_G (0..3), theta (3..6), theta_dot (6..9).
-pub const NV: usize = 9;
+/// Variables at a time point: v_G (0..3), theta (3..6), theta_dot
+/// (6..9), r_G (9..12).
+pub const NV: usize = 12;
 
 /// A body's water: MoorDyn's Volume, Ca and CdA (body axes; the rotational
 /// drag area multiplies Omega |Omega|, as MoorDyn's does), with the
-/// water's density and a uniform steady current, and the body's rods
-/// under water, whose added mass and drag the water adds (B18)-(B19;
-/// their buoyancy is a constant force of the body's, their mass in its
-/// inertia: [`crate::system::Body`] puts them there).
+/// water's density and a uniform steady current, and the body's rods,
+/// whose buoyancy, added mass and drag the water adds over their parts
+/// under the surface z = 0 (B18)-(B21; their mass is in the body's
+/// inertia: [`crate::system::Body`] puts it there). `gravity` is g, along
+/// -z: the rods' buoyancy is rho g times their wet volume.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct BodyWater {
     pub density: f64,
@@ -38,6 +44,7 @@ pub struct BodyWater {
     pub rotational_drag_areas: [f64; 3],
     pub current: [f64; 3],
     pub rods: Vec<super::Rod>,
+    pub gravity: f64,
 }
 
 impl BodyWater {
@@ -53,6 +60,7 @@ impl BodyWater {
             ),
             ("drag_areas", self.drag_areas.to_vec()),
             ("rotational_drag_areas", self.rotational_drag_areas.to_vec()),
+            ("gravity", vec![self.gravity]),
         ];
         for (name, values) in named {
             if values.iter().any(|v| !(v.is_finite() && *v >= 0.0)) {
@@ -88,14 +96,31 @@ pub struct Context<'a> {
     pub water: Option<&'a BodyWater>,
 }
 
+/// dx/dt of a function x of the pose (theta, r_G) along the motion
+/// (theta_dot, v_G) of `v`: sum_k (dx/dq_k) q_k_dot, with its value and
+/// first derivatives (its second would need x's third derivatives; the
+/// water's virtual work, where it enters, takes none).
+fn rate_along(x: &Jet<NV>, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+    let mut rate = Jet::constant(0.0);
+    for i in 0..3 {
+        for (k, speed) in [(3 + i, v[2][i]), (9 + i, v[0][i])] {
+            let mut slope = Jet::constant(x.g[k]);
+            slope.g = x.h[k];
+            rate = rate + slope * speed;
+        }
+    }
+    rate.h = [[0.0; NV]; NV];
+    rate
+}
+
 fn constant(v: [f64; 3]) -> JetVec<NV> {
     v.map(Jet::constant)
 }
 
 impl Context<'_> {
     /// Omega and u of (B9) (body axes).
-    fn rates(&self, v: &[JetVec<NV>; 3]) -> (JetVec<NV>, JetVec<NV>) {
-        let [v_g, theta, theta_dot] = v;
+    fn rates(&self, v: &[JetVec<NV>; 4]) -> (JetVec<NV>, JetVec<NV>) {
+        let [v_g, theta, theta_dot, _] = v;
         let omega = body_rate(theta, theta_dot);
         let current = self.water.map_or([0.0; 3], |w| w.current);
         let relative: JetVec<NV> = std::array::from_fn(|i| v_g[i] - Jet::constant(current[i]));
@@ -106,8 +131,59 @@ impl Context<'_> {
         (omega, u)
     }
 
+    /// Each rod of the body's water with its wet part and its part under
+    /// the surface (B20) at the pose (r_G, theta) of `v`: end A's height
+    /// z_A = e_z . (r_G + R_a exp([theta]) (xi_A - c)) and the axis's
+    /// vertical component e_z . R_a exp([theta]) q.
+    fn rods_in_water<'b>(
+        &'b self,
+        v: &'b [JetVec<NV>; 4],
+    ) -> impl Iterator<Item = (&'b Rod, WetPart<NV>, Submerged<NV>)> + 'b {
+        let rods = self.water.map_or(&[][..], |w| &w.rods[..]);
+        let up = self.rotation_a[2];
+        let height = move |x: [f64; 3]| {
+            let turned = turn(&v[1], &constant(x), 1.0);
+            turned[0].scale(up[0]) + turned[1].scale(up[1]) + turned[2].scale(up[2])
+        };
+        rods.iter().map(move |rod| {
+            let arm = crate::vec3::sub(rod.end_a, self.centre_of_mass);
+            let z_a = v[3][2] + height(arm);
+            let (wet, under) = rod.wet_part(z_a, height(rod.axis()));
+            (rod, wet.with_rates(|x| rate_along(x, v)), under)
+        })
+    }
+
+    /// The buoyancy's potential of the body's rods, -rho g sum I (B20):
+    /// zero in air.
+    pub fn buoyancy_potential(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+        let Some(w) = self.water else {
+            return Jet::constant(0.0);
+        };
+        let mut u = Jet::constant(0.0);
+        for (_, _, under) in self.rods_in_water(v) {
+            u = u + under.first_moment.scale(-w.density * w.gravity);
+        }
+        u
+    }
+
+    /// The rods' buoyancy (B20) on the body at rest with its centre at
+    /// `centre` and the rotation R_a: the force -dU_b/dr_G and the moment
+    /// about the centre, R_a (-dU_b/dtheta) (global; at theta = 0 a
+    /// virtual rotation in body axes is dtheta).
+    pub fn buoyancy_at(&self, centre: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+        let mut v = [[Jet::constant(0.0); 3]; 4];
+        for i in 0..3 {
+            v[1][i] = Jet::variable(0.0, 3 + i);
+            v[3][i] = Jet::variable(centre[i], 9 + i);
+        }
+        let u = self.buoyancy_potential(&v);
+        let force = std::array::from_fn(|i| -u.g[9 + i]);
+        let moment = std::array::from_fn(|i| -u.g[3 + i]);
+        (force, super::pose::rotate(self.rotation_a, moment))
+    }
+
     /// The kinetic energy T of (B9).
-    pub fn kinetic(&self, v: &[JetVec<NV>; 3]) -> Jet<NV> {
+    pub fn kinetic(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
         let (omega, u) = self.rates(v);
         let mut t = dot(&v[0], &v[0]).scale(0.5 * self.mass)
             + dot(&omega, &times(self.inertia_at_centre, &omega)).scale(0.5);
@@ -117,17 +193,17 @@ impl Context<'_> {
             for i in 0..3 {
                 t = t + (u[i] * u[i]).scale(0.5 * a[i]);
             }
-            for rod in &w.rods {
-                t = t + rod.added_mass_energy(&u, &omega, w.density);
+            for (rod, wet, _) in self.rods_in_water(v) {
+                t = t + rod.added_mass_energy(&wet, &u, &omega, w.density);
             }
         }
         t
     }
 
     /// The integrand of (B5) without the centre's linear load term:
-    /// T + sum_j F_j . exp([theta]) xi'_j.
-    pub fn density(&self, v: &[JetVec<NV>; 3]) -> Jet<NV> {
-        let mut density = self.kinetic(v);
+    /// T + sum_j F_j . exp([theta]) xi'_j - U_b (B20).
+    pub fn density(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+        let mut density = self.kinetic(v) - self.buoyancy_potential(v);
         for (f, xi) in self.loads {
             let turned = turn(&v[1], &constant(*xi), 1.0);
             density = density + dot(&constant(*f), &turned);
@@ -138,7 +214,7 @@ impl Context<'_> {
     /// The drag's generalized forces (B10), (B19): on r_G (global) and on
     /// theta, from the drag's resultant f and its moment about the centre
     /// of mass M_G (body axes): Q_r = R f, Q_theta = J_r^T M_G.
-    pub fn drag(&self, v: &[JetVec<NV>; 3]) -> Option<(JetVec<NV>, JetVec<NV>)> {
+    pub fn drag(&self, v: &[JetVec<NV>; 4]) -> Option<(JetVec<NV>, JetVec<NV>)> {
         let w = self.water?;
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
@@ -151,8 +227,8 @@ impl Context<'_> {
         let mut on_eta: JetVec<NV> = std::array::from_fn(|i| {
             f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
         });
-        for rod in &w.rods {
-            let (force, moment) = rod.drag(&u, &omega, w.density, self.centre_of_mass);
+        for (rod, wet, _) in self.rods_in_water(v) {
+            let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass);
             for i in 0..3 {
                 f[i] = f[i] + force[i];
                 on_eta[i] = on_eta[i] + moment[i];
@@ -199,15 +275,17 @@ mod tests {
             rotational_drag_areas: [0.4, 0.6, 0.9],
             current: [0.2, -0.1, 0.05],
             rods: Vec::new(),
+            gravity: 9.81,
         };
         let ctx = test_context(&rotation_a, &water);
         // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r
         // theta_dot; the power is Q_r . v_G + Q_theta . theta_dot.
         let (v_g, theta, theta_dot) = ([0.7, -0.3, 0.4], [0.3, -0.5, 0.8], [0.2, 0.5, -0.6]);
-        let vars: [JetVec<NV>; 3] = [
+        let vars: [JetVec<NV>; 4] = [
             v_g.map(Jet::constant),
             theta.map(Jet::constant),
             theta_dot.map(Jet::constant),
+            [0.0, 0.0, -10.0].map(Jet::constant),
         ];
         let (q_r, q_theta) = ctx.drag(&vars).unwrap();
         let power_q: f64 = (0..3)
@@ -245,45 +323,72 @@ mod tests {
         );
     }
 
-    /// The drag's generalized forces with a rod (B19) carry their exact
-    /// derivatives in the nine variables: against central differences of
-    /// their values.
+    /// The drag's generalized forces (with the momentum the water keeps,
+    /// (B23)) and the action's density with a rod (B18)-(B22) carry their
+    /// exact derivatives in the twelve variables,
+    /// against central differences of their values: the rod deep under
+    /// water, crossing the surface (its wet length and its buoyancy's
+    /// potential then move with the pose), and with a cap at the surface
+    /// (its wetness moves too).
     #[test]
-    fn the_drags_derivatives_with_a_rod_are_exact() {
+    fn the_terms_derivatives_with_a_rod_are_exact() {
         let rotation_a = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
+        let rod = super::super::rod::sample();
         let water = BodyWater {
             density: 1025.0,
+            added_mass_coefficients: [0.5, 0.3, 0.2],
             drag_areas: [0.8, 1.3, 2.1],
             current: [0.2, -0.1, 0.05],
-            rods: vec![super::super::rod::sample()],
+            rods: vec![rod.clone()],
+            gravity: 9.81,
             ..BodyWater::default()
         };
         let ctx = test_context(&rotation_a, &water);
-        let at = [0.7, -0.3, 0.4, 0.3, -0.5, 0.8, 0.2, 0.5, -0.6];
-        let eval = |x: &[f64; 9]| {
-            let v: [JetVec<NV>; 3] = std::array::from_fn(|k| {
-                std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i))
-            });
-            let (a, b) = ctx.drag(&v).unwrap();
-            [a[0], a[1], a[2], b[0], b[1], b[2]]
-        };
-        let exact = eval(&at);
-        let h = 1e-6;
-        let mut worst = 0.0f64;
-        for j in 0..9 {
-            let (mut p, mut m) = (at, at);
-            p[j] += h;
-            m[j] -= h;
-            let (fp, fm) = (eval(&p), eval(&m));
-            for r in 0..6 {
-                let fd = (fp[r].v - fm[r].v) / (2.0 * h);
-                worst = worst.max((fd - exact[r].g[j]).abs() / exact[r].v.abs().max(1.0));
-                for k in 0..9 {
-                    let fd2 = (fp[r].g[k] - fm[r].g[k]) / (2.0 * h);
-                    worst = worst.max((fd2 - exact[r].h[k][j]).abs() / exact[r].v.abs().max(1.0));
+        let theta = [0.3, -0.5, 0.8];
+        let turned = crate::vec3::mat3_mul(&rotation_a, &crate::body::rotation::exp_map(theta));
+        let middle = crate::vec3::sub(rod.middle(), ctx.centre_of_mass);
+        let middle_z = crate::body::pose::rotate(&turned, middle)[2];
+        let end_a = crate::vec3::sub(rod.end_a, ctx.centre_of_mass);
+        let end_a_z = crate::body::pose::rotate(&turned, end_a)[2];
+        // Deep; its middle at the surface; its cap A half a radius under.
+        for centre_z in [-20.0, -middle_z, -0.075 - end_a_z] {
+            let mut at = [
+                0.7, -0.3, 0.4, 0.0, 0.0, 0.0, 0.2, 0.5, -0.6, 0.4, -0.2, centre_z,
+            ];
+            at[3..6].copy_from_slice(&theta);
+            let eval = |x: &[f64; NV]| {
+                let v: [JetVec<NV>; 4] = std::array::from_fn(|k| {
+                    std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i))
+                });
+                let (a, b) = ctx.drag(&v).unwrap();
+                [a[0], a[1], a[2], b[0], b[1], b[2], ctx.density(&v)]
+            };
+            let exact = eval(&at);
+            let h = 1e-6;
+            let mut worst = 0.0f64;
+            for j in 0..NV {
+                let (mut p, mut m) = (at, at);
+                p[j] += h;
+                m[j] -= h;
+                let (fp, fm) = (eval(&p), eval(&m));
+                for r in 0..7 {
+                    let size = exact[r].v.abs().max(1.0);
+                    let fd = (fp[r].v - fm[r].v) / (2.0 * h);
+                    worst = worst.max((fd - exact[r].g[j]).abs() / size);
+                    // The drag's virtual work enters the rows by its value
+                    // and their Jacobian by its first derivatives; the
+                    // action's density by its first and second.
+                    if r < 6 {
+                        continue;
+                    }
+                    for k in 0..NV {
+                        let fd2 = (fp[r].g[k] - fm[r].g[k]) / (2.0 * h);
+                        worst = worst.max((fd2 - exact[r].h[k][j]).abs() / size);
+                    }
                 }
             }
+            eprintln!("the terms' jets at centre z {centre_z:.3}: {worst:.1e}");
+            assert!(worst < 1e-6, "{worst:e}");
         }
-        assert!(worst < 1e-6, "{worst:e}");
     }
 }

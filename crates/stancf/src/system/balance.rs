@@ -302,6 +302,22 @@ fn imbalance(
         for (f, at) in loads {
             add_at(&mut g, o, f, crate::vec3::sub(at, centre), &mut scale);
         }
+        if let Some(water) = body.water.as_ref().filter(|w| !w.rods.is_empty()) {
+            let ctx = crate::body::terms::Context {
+                mass: 0.0,
+                inertia_at_centre: &[[0.0; 3]; 3],
+                centre_of_mass: body.inertia.centre_of_mass,
+                rotation_a: &rotation,
+                loads: &[],
+                water: Some(water),
+            };
+            let (f, m) = ctx.buoyancy_at(centre);
+            for c in 0..3 {
+                g[o + c] += f[c];
+                g[o + 3 + c] += m[c];
+                scale = scale.max(f[c].abs());
+            }
+        }
     }
     let body_of = |p: usize| {
         system.points()[p]

@@ -56,9 +56,10 @@ pub struct Body {
     /// the point is on the body (see [`super::System::with_bodies`]).
     pub loads: Vec<([f64; 3], [f64; 3])>,
     /// Rods fixed in the body (body axes, from the reference point): on a
-    /// free body their mass joins its inertia, and under water their
-    /// buoyancy joins its loads and their added mass and drag its water
-    /// (docs/method.md §15.10; [`super::System::with_bodies`] folds them).
+    /// free body their mass joins its inertia, and in water they join its
+    /// water, which gives them the buoyancy, added mass and drag of their
+    /// parts under the surface (docs/method.md §15.10-§15.11;
+    /// [`super::System::with_bodies`] folds them).
     pub rods: Vec<Rod>,
 }
 
@@ -287,15 +288,15 @@ fn fold_point(
     Ok(())
 }
 
-/// A body's rods (docs/method.md §15.10): on a free body each rod's mass
-/// joins its inertia ((B17), [`RigidInertia::with_part`]); in water its
-/// buoyancy rho V g is a constant force at its middle and its added mass
-/// and drag join the body's water (B18)-(B19). A rod in water must lie
-/// under the surface z = 0 at both ends: one that crosses it or stands
-/// above it is refused (its waterplane is not built). A fixed body's
-/// rods hold nothing that moves; a coupled body's would be loads of the
-/// host's and are refused. The rods are moved out of `rods`, so a second
-/// fold finds none.
+/// A body's rods (docs/method.md §15.10-§15.11): on a free body each
+/// rod's mass joins its inertia ((B17), [`RigidInertia::with_part`]); in
+/// water the rod joins the body's water, which gives it the buoyancy of
+/// its part under the surface z = 0 (B20)-(B21), its added mass and its
+/// drag (B18)-(B19) at every pose, so the water's `gravity` is set to the
+/// system's g, which must then point along -z. A fixed body's rods hold
+/// nothing that moves; a coupled body's would be loads of the host's and
+/// are refused. The rods are moved out of `rods`, so a second fold finds
+/// none.
 fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
     for (k, rod) in body.rods.iter().enumerate() {
         rod.validate(&format!("rods[{k}]"))?;
@@ -314,26 +315,25 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
         _ => {}
     }
     let rods = std::mem::take(&mut body.rods);
-    for (k, rod) in rods.iter().enumerate() {
+    for rod in &rods {
         body.inertia = body.inertia.with_part(&rod.inertia());
-        let ends = [body.point(rod.end_a)[2], body.point(rod.end_b)[2]];
-        let Some(water) = &mut body.water else {
-            continue;
-        };
-        if ends.iter().any(|z| *z >= 0.0) {
+    }
+    let Some(water) = &mut body.water else {
+        return Ok(());
+    };
+    if !rods.is_empty() {
+        if !(gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] < 0.0) {
             return Err(ModelError::invalid(
-                format!("rods[{k}]"),
+                "rods",
                 format!(
-                    "its ends are at z = {} and {} m: a rod in water must lie under the surface \
-                     z = 0 (a rod that crosses the surface or stands above it is not built yet)",
-                    ends[0], ends[1]
+                    "rods in water need gravity along -z (the water's surface is z = 0), \
+                     not {gravity:?}"
                 ),
             ));
         }
-        let buoyancy = crate::vec3::scale(-water.density * rod.volume(), gravity);
-        body.loads.push((buoyancy, rod.middle()));
-        water.rods.push(rod.clone());
+        water.gravity = -gravity[2];
     }
+    water.rods.extend(rods);
     Ok(())
 }
 

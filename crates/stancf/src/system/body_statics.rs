@@ -9,7 +9,8 @@
 //! ```
 //!
 //! (weight and buoyancy act at the centre of mass, MoorDyn's convention,
-//! so they give no moment), and in a steady uniform current U the drag
+//! so they give no moment) and the buoyancy's potential of its rods,
+//! -rho g I(r_G, theta) (B20), and in a steady uniform current U the drag
 //! of (B10) and of its rods (B19) at rest (at the reference point
 //! f = 1/2 rho diag(CdA) w |w|, w = R^T U in body axes, -c from the
 //! centre), whose generalized forces are R f on r_G and J_r(theta)^T M_G
@@ -23,10 +24,26 @@ use super::body_terms::BodyPoint;
 use super::layout::SystemLayout;
 use super::{System, SystemStatics};
 use crate::body::attach::{offsets, project};
+use crate::body::jet::{Jet, JetVec};
 use crate::body::terms::Context;
+use crate::body::terms::NV;
 use crate::body::BodyWater;
 use crate::bordered::BorderedMatrix;
 use crate::linear::{AddEntries, Jacobian};
+
+/// Where the static unknowns [r_G; theta] sit among the terms' variables
+/// ([`crate::body::terms::NV`]: r_G at 9..12, theta at 3..6).
+const POSE: [usize; 6] = [9, 10, 11, 3, 4, 5];
+
+/// The terms' variables at pose q = [r_G; theta], at rest: jets in the
+/// pose.
+fn at_rest(q: &[f64; 6]) -> [JetVec<NV>; 4] {
+    let mut v = [[Jet::constant(0.0); 3]; 4];
+    for (k, &j) in POSE.iter().enumerate() {
+        v[j / 3][j % 3] = Jet::variable(q[k], j);
+    }
+    v
+}
 
 /// A free body of a static solve.
 #[derive(Clone, Debug)]
@@ -50,6 +67,9 @@ pub(super) struct StaticBody {
     pub converged: [f64; 6],
     /// The body's water where a steady current drags it (B10), (B19).
     pub drag: Option<BodyWater>,
+    /// The body's water where it has rods, whose buoyancy is a potential
+    /// of the pose (B20).
+    pub rods_water: Option<BodyWater>,
     /// Where everything that loads the body lies on one line through it
     /// (a free rod held at its ends), the line (body axes) and the
     /// stiffness of the spin hold about it ([`spin_axis`]).
@@ -103,7 +123,10 @@ impl StaticBody {
             }
         }
         if let Some(water) = &self.drag {
-            self.add_drag(layout, theta, water, residual, jacobian.as_deref_mut());
+            self.add_drag(layout, &q, water, residual, jacobian.as_deref_mut());
+        }
+        if let Some(water) = &self.rods_water {
+            self.add_buoyancy(layout, &q, water, residual, jacobian.as_deref_mut());
         }
         if let Some((a, k)) = self.spin_hold {
             let along = a[0] * theta[0] + a[1] * theta[1] + a[2] * theta[2];
@@ -160,43 +183,76 @@ impl StaticBody {
         }
     }
 
-    /// The current's drag at rest (B10), (B19) in the rows, -Q, and its
-    /// derivatives in theta: the step's drag ([`Context::drag`]) at
-    /// v_G = 0, theta_dot = 0, on jets.
-    fn add_drag(
-        &self,
-        layout: &SystemLayout,
-        theta: [f64; 3],
-        water: &BodyWater,
-        residual: &mut [f64],
-        jacobian: Option<&mut BorderedMatrix>,
-    ) {
-        use crate::body::jet::Jet;
-        let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
-        let ctx = Context {
+    /// The terms of a body in `water` at pose q = [r_G; theta], at rest.
+    fn context<'a>(&'a self, water: &'a BodyWater) -> Context<'a> {
+        Context {
             mass: 0.0,
             inertia_at_centre: &[[0.0; 3]; 3],
             centre_of_mass: self.centre_of_mass,
             rotation_a: &self.rotation,
             loads: &[],
             water: Some(water),
-        };
-        let at = [[0.0; 3], theta, [0.0; 3]];
-        let v =
-            std::array::from_fn(|k| std::array::from_fn(|i| Jet::variable(at[k][i], 3 * k + i)));
-        let (on_centre, on_theta) = ctx.drag(&v).expect("a body in water");
+        }
+    }
+
+    /// The current's drag at rest (B10), (B19) in the rows, -Q, and its
+    /// derivatives in the pose: the step's drag ([`Context::drag`]) at
+    /// v_G = 0, theta_dot = 0, on jets.
+    fn add_drag(
+        &self,
+        layout: &SystemLayout,
+        q: &[f64; 6],
+        water: &BodyWater,
+        residual: &mut [f64],
+        jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
+        let (on_centre, on_theta) = self
+            .context(water)
+            .drag(&at_rest(q))
+            .expect("a body in water");
         for c in 0..3 {
             residual[g(c)] -= on_centre[c].v;
             residual[g(3 + c)] -= on_theta[c].v;
         }
         if let Some(m) = jacobian {
             for c in 0..3 {
-                for j in 0..3 {
-                    m.add(g(c), g(3 + j), -on_centre[c].g[3 + j]);
-                    m.add(g(3 + c), g(3 + j), -on_theta[c].g[3 + j]);
+                for (k, j) in POSE.iter().enumerate() {
+                    m.add(g(c), g(k), -on_centre[c].g[*j]);
+                    m.add(g(3 + c), g(k), -on_theta[c].g[*j]);
                 }
             }
         }
+    }
+
+    /// The rods' buoyancy (B20) in the rows, dU_b/dq, and its Hessian.
+    fn add_buoyancy(
+        &self,
+        layout: &SystemLayout,
+        q: &[f64; 6],
+        water: &BodyWater,
+        residual: &mut [f64],
+        jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        let g = |k: usize| layout.body_unknown(self.index, 0, k).expect("a free body");
+        let u = self.context(water).buoyancy_potential(&at_rest(q));
+        for (k, &j) in POSE.iter().enumerate() {
+            residual[g(k)] += u.g[j];
+        }
+        if let Some(m) = jacobian {
+            for (k, &j) in POSE.iter().enumerate() {
+                for (l, &i) in POSE.iter().enumerate() {
+                    m.add(g(k), g(l), u.h[j][i]);
+                }
+            }
+        }
+    }
+
+    /// The rods' buoyancy's potential -rho g I (B20) at pose q.
+    fn buoyancy_potential(&self, q: &[f64; 6]) -> f64 {
+        self.rods_water
+            .as_ref()
+            .map_or(0.0, |w| self.context(w).buoyancy_potential(&at_rest(q)).v)
     }
 
     /// The weights of the body's unknowns: its centre like a point of
@@ -231,13 +287,15 @@ impl SystemStatics {
             .map(|body| {
                 let q = body.converged;
                 let rotation = body.rotation_at(&q);
-                body.forces
-                    .iter()
-                    .map(|(f, arm)| {
-                        let at = crate::body::pose::point([q[0], q[1], q[2]], &rotation, *arm);
-                        -crate::vec3::dot(*f, at)
-                    })
-                    .sum::<f64>()
+                body.buoyancy_potential(&q)
+                    + body
+                        .forces
+                        .iter()
+                        .map(|(f, arm)| {
+                            let at = crate::body::pose::point([q[0], q[1], q[2]], &rotation, *arm);
+                            -crate::vec3::dot(*f, at)
+                        })
+                        .sum::<f64>()
             })
             .sum()
     }
@@ -331,6 +389,7 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                                 }))
                     })
                     .cloned(),
+                rods_water: body.water.as_ref().filter(|w| !w.rods.is_empty()).cloned(),
                 spin_hold: spin_axis(body, &points_local(system, b)).map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
                     (a, weight * length)

@@ -211,23 +211,6 @@ impl StepBody {
         }
     }
 
-    /// The highest end of the body's rods under water at the step's end
-    /// (r_b + R_a exp([theta_b]) (xi - c)), or None without such rods.
-    pub fn rods_top(&self, xb: &[f64; 18]) -> Option<f64> {
-        let rods = &self.body.water()?.rods;
-        let centre = self.body.centre();
-        let c = self.body.inertia().centre_of_mass;
-        let r_b = crate::body::rotation::exp_map([xb[12], xb[13], xb[14]]);
-        let turned = crate::vec3::mat3_mul(&self.body.rotation(), &r_b);
-        rods.iter()
-            .flat_map(|rod| [rod.end_a, rod.end_b])
-            .map(|end| {
-                let arm = crate::body::pose::rotate(&turned, crate::vec3::sub(end, c));
-                centre[2] + xb[5] + arm[2]
-            })
-            .reduce(f64::max)
-    }
-
     /// The generalized momentum of the body and its lines at the step's
     /// end, in (v_G, Omega) at the end's pose, less the points' share
     /// (which the lines' end momenta bring, §15.7 (B14)): the body's

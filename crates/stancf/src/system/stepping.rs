@@ -28,7 +28,6 @@ impl SystemSimulation {
             self.gather_prediction();
             let report = self.solve_step(dt)?;
             self.check_body_turns()?;
-            self.check_rods_submerged()?;
             for (i, line) in self.lines.iter_mut().enumerate() {
                 let map = &self.layout.maps[i];
                 let xl = line.unknowns();
@@ -139,29 +138,6 @@ impl SystemSimulation {
         })?;
         for line in &mut self.lines {
             line.close_step(report);
-        }
-        Ok(())
-    }
-
-    /// Stops where a rod under water reaches the surface z = 0 by the
-    /// step's end: its buoyancy and water there are not built
-    /// (docs/method.md §15.10); the steps before stand.
-    fn check_rods_submerged(&self) -> Result<(), SolverError> {
-        for body in &self.bodies {
-            let xb = body.unknowns(&self.layout, &self.x);
-            match body.rods_top(&xb) {
-                Some(z) if z >= 0.0 => {
-                    let mut e = singular(self.t, self.steps, "");
-                    e.kind = crate::error::FailureKind::OutsideModel;
-                    e.detail = format!(
-                        "a rod of body {} reaches the water surface (an end at z = {z:.4} m); \
-                         rods crossing the surface are not built yet",
-                        body.index
-                    );
-                    return Err(e);
-                }
-                _ => {}
-            }
         }
         Ok(())
     }

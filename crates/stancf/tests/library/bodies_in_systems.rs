@@ -235,6 +235,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             rotational_drag_areas: [0.01, 0.01, 0.01],
             current: [0.0; 3],
             rods: Vec::new(),
+            gravity: 0.0,
         });
     }
     let (system, states) =
@@ -392,6 +393,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             rotational_drag_areas: [0.01, 0.01, 0.01],
             current: [0.0; 3],
             rods: Vec::new(),
+            gravity: 0.0,
         });
         let system = System::with_bodies(
             vec![Line {

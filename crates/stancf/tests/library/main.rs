@@ -21,6 +21,7 @@ mod coupling;
 mod drag;
 mod element_derivatives;
 mod end_forces;
+mod floating_rods;
 mod free_cable;
 mod galerkin;
 mod grading;

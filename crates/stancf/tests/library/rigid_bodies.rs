@@ -209,6 +209,7 @@ fn water(ca: [f64; 3], cda: [f64; 3], cda_r: [f64; 3]) -> BodyWater {
         rotational_drag_areas: cda_r,
         current: [0.0; 3],
         rods: Vec::new(),
+        gravity: 0.0,
     }
 }
 

@@ -25,7 +25,12 @@ impl FreeBody {
                 std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
             };
             let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
-            let v = variables([at(t_dot, 0), at(t, 4), at(t_dot, 4)]);
+            let v = variables([
+                at(t_dot, 0),
+                at(t, 4),
+                at(t_dot, 4),
+                add(self.centre, at(t, 0)),
+            ]);
             let density = ctx.density(&v);
             let wdt = point.w_dt;
             for m in 0..4 {
@@ -108,19 +113,23 @@ impl FreeBody {
         let slab = self.slab_rows(&self.slots(x));
         let (mut r, mut jac) = (vec![0.0; M], vec![0.0; M * M]);
         pick(&slab, &P2_ROWS, &P2_UNKNOWNS, &mut r, &mut jac);
-        let end = self
-            .context(&[])
-            .kinetic(&variables([part(x, 3), part(x, 6), part(x, 9)]));
+        let end = self.context(&[]).kinetic(&variables([
+            part(x, 3),
+            part(x, 6),
+            part(x, 9),
+            add(self.centre, part(x, 0)),
+        ]));
         for i in 0..3 {
             r[i] += self.momentum[i];
             r[6 + i] += self.body_momentum[i];
             // -dT/dv_G and -dT/dtheta_dot at the end; their derivatives in
-            // v_b (x 3..6), theta_b (6..9), u_b (9..12).
+            // v_b (x 3..6), theta_b (6..9), u_b (9..12) and r_b (0..3).
             r[3 + i] -= end.g[i];
             r[9 + i] -= end.g[6 + i];
             for k in 0..NV {
-                jac[(3 + i) * M + 3 + k] -= end.h[i][k];
-                jac[(9 + i) * M + 3 + k] -= end.h[6 + i][k];
+                let column = if k < 9 { 3 + k } else { k - 9 };
+                jac[(3 + i) * M + column] -= end.h[i][k];
+                jac[(9 + i) * M + column] -= end.h[6 + i][k];
             }
         }
         (r, jac)
@@ -214,7 +223,7 @@ impl FreeBody {
             };
             let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
             let rates = [at(t_dot, 0), at(t, 4), at(t_dot, 4)];
-            let v = variables(rates);
+            let v = variables([rates[0], rates[1], rates[2], add(self.centre, at(t, 0))]);
             if let Some((on_centre, on_theta)) = ctx.drag(&v) {
                 let power: f64 = (0..3)
                     .map(|i| on_centre[i].v * rates[0][i] + on_theta[i].v * rates[2][i])

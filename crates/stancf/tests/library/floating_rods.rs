@@ -1,0 +1,247 @@
+//! Rods crossing the water surface (docs/method.md §15.11): the buoyancy
+//! of the part under z = 0 as a potential of the pose (B20)-(B21), with
+//! its waterplane's stiffness, and the added mass and drag of the wet
+//! part, checked against a floating spar's closed forms.
+
+use crate::common::{
+    assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, light_rope,
+};
+use stancf::body::{BodyWater, RigidInertia, Rod};
+use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
+use stancf::vec3::{add, cross, norm, scale, sub};
+use stancf::{
+    Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
+    TimeScheme,
+};
+
+const RHO: f64 = 1025.0;
+const G: f64 = 9.81;
+const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+/// A spar: a rod 20 m long and 2 m across (500 kg/m, Ca 1, CaEnd 1, Cd
+/// `cd`) standing on its end A, the body's reference point, with 40 t of
+/// ballast 1 m above it: 50 t in all, floating upright at a draft of
+/// 15.53 m, its centre of mass 4.98 m under its centre of buoyancy
+/// (stable: GM = I_wp / V + z_B - z_G = 4.99 m); every length times
+/// `size` (and every mass times its cube).
+fn spar(bottom: [f64; 3], cd: f64, size: f64) -> Body {
+    let ballast = RigidInertia::principal(40_000.0 * size.powi(3), [0.0, 0.0, size], [0.0; 3]);
+    let mut body = Body::new(BodyKind::Free, bottom, IDENTITY, ballast);
+    body.rods.push(Rod {
+        end_a: [0.0; 3],
+        end_b: [0.0, 0.0, 20.0 * size],
+        diameter: 2.0 * size,
+        mass_per_length: 500.0 * size * size,
+        drag_coefficient: cd,
+        added_mass_coefficient: 1.0,
+        end_drag_coefficient: 0.0,
+        end_added_mass_coefficient: 1.0,
+        segments: 6,
+    });
+    body.water = Some(BodyWater {
+        density: RHO,
+        ..BodyWater::default()
+    });
+    body
+}
+
+const SPAR_MASS: f64 = 50_000.0;
+const SPAR_AREA: f64 = std::f64::consts::PI;
+
+/// A 1 m light line (2 g) hanging from `top`, its end A on point 0, its
+/// end B loose.
+fn hanging_line(top: [f64; 3]) -> (Line, stancf::State) {
+    let cable = Cable::straight(1.0, 4, ElementType::Sac2)
+        .with_origin(top)
+        .with_direction([0.0, 0.0, -1.0]);
+    let model = Model::new(
+        cable,
+        light_rope(),
+        ModelOptions::default(),
+        vec![Load::Gravity {
+            acceleration: [0.0, 0.0, -G],
+        }],
+    )
+    .expect("model");
+    let state = model.initial_state();
+    (
+        Line {
+            model,
+            ends: [End::Point(0), End::Loose],
+        },
+        state,
+    )
+}
+
+/// The spar with a light line hanging from its bottom.
+fn spar_system(body: Body) -> (System, Vec<stancf::State>) {
+    let (line, state) = hanging_line(body.position);
+    let system = System::with_bodies(
+        vec![line],
+        vec![Point::on_body(0, [0.0; 3])],
+        vec![body],
+        [0.0, 0.0, -G],
+    )
+    .expect("system");
+    let mut states = vec![state];
+    system.start_lines_with_bodies(&mut states);
+    (system, states)
+}
+
+/// A spar released 1 m above its floating draft heaves as the linear
+/// oscillator z(t) = z_eq + Z cos(omega t): its waterplane's stiffness
+/// rho g A (B21) against its mass, the bottom cap's added mass rho CaEnd
+/// pi d^3 / 12 and the line's 2 g (which, hanging, moves with it); the
+/// wet length changes, the side's added mass does not act in heave. The
+/// line's own stretch changes its pull by at most its weight (2e-2 N
+/// against a stiffness of 32 kN/m): under 1e-6 m. The step's error at
+/// omega dt = 0.04 is far below; the bound 1e-5 m (of an amplitude of 1
+/// m) is the line's, tenfold.
+#[test]
+fn a_spar_heaves_at_its_waterplanes_closed_form_frequency() {
+    let m_line = 2e-3;
+    let draft = (SPAR_MASS + m_line) / (RHO * SPAR_AREA);
+    let lift = 1.0;
+    let (system, states) = spar_system(spar([0.0, 0.0, -draft + lift], 0.0, 1.0));
+    let settings = StepSettings {
+        time_step: 0.05,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, states, settings).expect("simulation");
+    let added = RHO * std::f64::consts::PI * 8.0 / 12.0;
+    let omega = (RHO * G * SPAR_AREA / (SPAR_MASS + added + m_line)).sqrt();
+    let z_eq = -draft + 1.0 * 40_000.0 / SPAR_MASS + 10.0 * 10_000.0 / SPAR_MASS;
+    let mut worst = 0.0f64;
+    // Two periods (8.1 s each).
+    while sim.time() < 16.2 {
+        sim.step().expect("step");
+        let z = sim.free_body(0).unwrap().centre()[2];
+        let want = z_eq + lift * (omega * sim.time()).cos();
+        worst = worst.max((z - want).abs());
+    }
+    eprintln!(
+        "heave against the closed form (period {:.4} s): {worst:.1e} m",
+        2.0 * std::f64::consts::PI / omega
+    );
+    assert!(worst < 1e-5, "{worst:e}");
+}
+
+/// A spar a twentieth of the size (1 m long, heaving at 1.8 s) heaving,
+/// pitching and drifting in still water with a drag across its wet
+/// part: its energy less the drag's work is kept to the step's error at
+/// fourth order, its wet length, its waterplane moment and the added
+/// mass of its wet side all moving with its pose (the Lagrangian of (B5)
+/// with the potential -rho g I of (B20) and the added mass over the wet
+/// length h = V_w / A).
+#[test]
+fn a_rocking_spar_keeps_its_energy_less_the_drags_work() {
+    let size = 0.05;
+    let draft = SPAR_MASS * size / (RHO * SPAR_AREA);
+    assert_energy_balance_falls_at_fourth_order(
+        |dt| {
+            let mut body = spar([0.0, 0.0, -draft + 0.05], 0.8, size);
+            body.velocity = [0.1, -0.05, 0.2];
+            body.angular_velocity = [0.6, 0.4, 0.2];
+            let (system, states) = spar_system(body);
+            galerkin_energy_drift(system, states, dt)
+        },
+        1e-3,
+    );
+}
+
+/// A spar moored by two catenaries from opposite sides, one at its
+/// bottom and one 8 m up, in static equilibrium (their pulls' couple
+/// heels it): the buoyancy rho g V_w of its tilted wet part (no cap cut:
+/// V_w = A h_c, h_c the axis's wet length) carries its weight and the
+/// lines' pull, and the buoyancy acting at the wet part's centroid
+/// balances the lines' moment about the centre of mass; the centroid of
+/// a cylinder cut obliquely at tilt alpha lies h_c / 2 + a^2
+/// tan^2(alpha) / (8 h_c) up the axis and a^2 tan(alpha) / (4 h_c)
+/// across it towards the deeper side (the classical geometry, not the
+/// potential's formula). Both to 1e-8 of the buoyancy (and its radius),
+/// above the static solve's tolerance of 1e-10.
+#[test]
+fn a_moored_spar_floats_where_archimedes_puts_it() {
+    let draft = SPAR_MASS / (RHO * SPAR_AREA);
+    let bottom = [0.0, 0.0, -draft];
+    let material = Material {
+        youngs_modulus: 2e11,
+        density: 7850.0,
+        area: 3e-3,
+        second_moment: 1e-9,
+        axial_damping: 0.0,
+    };
+    let fairleads = [[0.0, 0.0, 0.0], [0.0, 0.0, 8.0]];
+    let anchors = [[150.0, 0.0, -80.0], [-150.0, 10.0, -80.0]];
+    let mut lines = Vec::new();
+    let mut points = Vec::new();
+    for k in 0..2 {
+        let end = add(bottom, fairleads[k]);
+        let chord = sub(end, anchors[k]);
+        let cable = Cable::straight(1.02 * norm(chord), 20, ElementType::Sac2)
+            .with_origin(anchors[k])
+            .with_direction(stancf::vec3::normalized(chord));
+        let model = Model::new(
+            cable,
+            material,
+            ModelOptions::default(),
+            vec![Load::Gravity {
+                acceleration: [0.0, 0.0, -G],
+            }],
+        )
+        .expect("model");
+        points.push(Point::on_body(0, fairleads[k]));
+        points.push(Point::fixed(anchors[k]));
+        lines.push(Line {
+            model,
+            ends: [End::Point(2 * k + 1), End::Point(2 * k)],
+        });
+    }
+    let system = System::with_bodies(lines, points, vec![spar(bottom, 0.0, 1.0)], [0.0, 0.0, -G])
+        .expect("system");
+    let settings = StaticSettings {
+        tolerance: 1e-10,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let (reference, rotation) = statics.body_pose(0).expect("a free body");
+    let q = [rotation[0][2], rotation[1][2], rotation[2][2]];
+    let (c, s) = (q[2], (1.0 - q[2] * q[2]).sqrt());
+    assert!(s > 1e-3, "the lines heel the spar: {s}");
+    let wet = -reference[2] / c;
+    let a = 1.0;
+    let volume = SPAR_AREA * wet;
+    let tan = s / c;
+    let up = scale(1.0 / s, sub([0.0, 0.0, 1.0], scale(c, q)));
+    let centroid = add(
+        reference,
+        add(
+            scale(wet / 2.0 + a * a * tan * tan / (8.0 * wet), q),
+            scale(-a * a * tan / (4.0 * wet), up),
+        ),
+    );
+    let centre = stancf::body::pose::point(reference, &rotation, [0.0, 0.0, 2.8]);
+    let buoyancy = [0.0, 0.0, RHO * G * volume];
+    let weight = [0.0, 0.0, -SPAR_MASS * G];
+    let mut force = add(buoyancy, weight);
+    let mut moment = cross(sub(centroid, centre), buoyancy);
+    for (k, local) in fairleads.iter().enumerate() {
+        let pull = statics.point_force(2 * k);
+        let at = stancf::body::pose::point(reference, &rotation, *local);
+        force = add(force, pull);
+        moment = add(moment, cross(sub(at, centre), pull));
+    }
+    let scale_f = RHO * G * volume;
+    eprintln!(
+        "tilt {:.6} rad, wet length {wet:.6} m; force {:.1e} N, moment {:.1e} N m of {scale_f:.3e} N",
+        s.atan2(c),
+        norm(force),
+        norm(moment)
+    );
+    assert!(norm(force) < 1e-8 * scale_f, "{force:?}");
+    assert!(norm(moment) < 1e-8 * scale_f * a, "{moment:?}");
+}
