@@ -174,6 +174,21 @@ impl Rod {
         (WetPart::at(self.end_a, self.end_b, a, z_a, c), under)
     }
 
+    /// The volume of the rod under the surface z = 0 (B20)-(B21) when its
+    /// end A is at height `z_a` and its axis (from A to B) has the
+    /// vertical component `axis_z` (global): V where it is all under, 0
+    /// above.
+    pub fn submerged_volume(&self, z_a: f64, axis_z: f64) -> f64 {
+        let (l, a) = (self.length(), 0.5 * self.diameter);
+        let under = super::waterline::submerged::<1>(
+            Jet::constant(z_a),
+            Jet::constant(axis_z.clamp(-1.0, 1.0)),
+            l,
+            a,
+        );
+        under.volume.v.clamp(0.0, self.volume())
+    }
+
     /// A cap's added mass, rho CaEnd V_end (V_end = pi d^3 / 12).
     fn cap_added_mass(&self, density: f64) -> f64 {
         density * self.end_added_mass_coefficient * std::f64::consts::PI * self.diameter.powi(3)
@@ -426,5 +441,24 @@ mod tests {
         let (f, _) = r.drag(&r.all_wet(), &constant([v, 0.0, 0.0]), &z, rho, middle);
         let want = -rho * 0.6 * r.area() * v * v;
         assert!((f[0].v - want).abs() < 1e-12 * want.abs());
+    }
+
+    /// A rod standing half out of the water has half its volume under;
+    /// level and half under, half; deep, all; above, none; upside down,
+    /// the same (its end A is then the upper end).
+    #[test]
+    fn a_rods_submerged_volume_is_its_part_under_the_surface() {
+        let r = rod();
+        let (l, v) = (r.length(), r.volume());
+        for (z_a, c, want) in [
+            (-0.5 * l, 1.0, 0.5),
+            (0.0, 0.0, 0.5),
+            (-10.0, 0.3, 1.0),
+            (1.0, 0.3, 0.0),
+            (0.5 * l, -1.0, 0.5),
+        ] {
+            let got = r.submerged_volume(z_a, c) / v;
+            assert!((got - want).abs() < 1e-12, "{z_a} {c}: {got}");
+        }
     }
 }
