@@ -163,7 +163,7 @@ int stancf_point_id(StancfSystem *s, unsigned int point, int64_t *id);
 int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double *vel,
                        double *force);
 
-/* Free body body_id's (the scenario's or deck's id) 6 x 6 mooring stiffness
+/* Free or coupled body body_id's (the scenario's or deck's id) 6 x 6 mooring stiffness
    at the static equilibrium of the last stancf_init, docs/method.md
    section 15.9; row-major in out (36 values): rows the lines' force
    F_x, F_y, F_z and moment M_x, M_y, M_z about the body's reference point
@@ -171,11 +171,20 @@ int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double 
    a small rotation about global x, y, z through it (N/m, N/rad, N m/m,
    N m/rad); K = -d[F; M]/d[dr; dphi], a positive diagonal restoring. The
    lines' stiffness only (not the body's own hydrostatics); not symmetric in
-   general. STANCF_INVALID_INPUT for an unknown id, a body that is not
-   free, a call before stancf_init or a NULL out; STANCF_NUMERICAL_ERROR
-   where the rest of the system is singular with the body held. Nothing is
-   written on an error. */
+   general. STANCF_INVALID_INPUT for an unknown id, a fixed body, a call
+   before stancf_init or a NULL out; STANCF_NUMERICAL_ERROR where the rest
+   of the system is singular with the body held. Nothing is written on an
+   error. */
 int stancf_body_stiffness(StancfSystem *s, int64_t body_id, double *out);
+
+/* Coupled point point_id's (the scenario's or deck's id; a coupled point
+   not on a body) 3 x 3 mooring stiffness at the static equilibrium of the
+   last stancf_init, row-major in out (9 values): K = -df/dx of the lines'
+   force on it (N/m, global axes), the rest of the system in equilibrium.
+   STANCF_INVALID_INPUT for an unknown id, a point that is not coupled, a
+   call before stancf_init or a NULL out; STANCF_NUMERICAL_ERROR where the
+   rest is singular with the point held. Nothing is written on an error. */
+int stancf_point_stiffness(StancfSystem *s, int64_t point_id, double *out);
 
 /* The message of this thread's last failed call ("" before any). */
 const char *stancf_error_message(void);

@@ -1,8 +1,8 @@
-//! A free body's mooring stiffness through the C library
-//! (`stancf_body_stiffness`, docs/interface.md "C library"): the 36
-//! values are the Rust handle's matrix row-major, to the bit, and every
-//! call that has no matrix to give returns a code with a message and
-//! writes nothing.
+//! A free body's and a coupled point's mooring stiffness through the C
+//! library (`stancf_body_stiffness`, `stancf_point_stiffness`,
+//! docs/interface.md "C library"): the values are the Rust handle's
+//! matrices row-major, to the bit, and every call that has no matrix to
+//! give returns a code with a message and writes nothing.
 
 mod common;
 
@@ -70,11 +70,45 @@ fn no_stiffness_before_init_for_an_unknown_or_fixed_body_or_into_null() {
     assert_eq!(call(3, out.as_mut_ptr()), STANCF_INVALID_INPUT);
     assert!(message().contains("no body of id 3"), "{}", message());
     assert_eq!(call(7, out.as_mut_ptr()), STANCF_INVALID_INPUT);
-    assert!(message().contains("body 7 is not free"), "{}", message());
+    assert!(message().contains("body 7 is fixed"), "{}", message());
     assert_eq!(call(1, null_mut()), STANCF_INVALID_INPUT);
     assert!(message().contains("out is NULL"), "{}", message());
     assert!(out.iter().all(|&v| v == -1.0), "nothing written: {out:?}");
     assert_eq!(call(1, out.as_mut_ptr()), STANCF_SUCCESS);
     unsafe { stancf_close(s) };
     assert_eq!(call(1, out.as_mut_ptr()), STANCF_INVALID_INPUT);
+}
+
+/// The buoy's coupled anchor 4 (the system's point 3): its 9 values are
+/// the Rust handle's 3 x 3, row-major, to the bit, a restoring diagonal
+/// (the taut line pulls it back); a point on the buoy and a call before
+/// `stancf_init` are refused, writing nothing.
+#[test]
+fn a_coupled_anchors_stiffness_is_the_handles_matrix_row_major() {
+    let path = coupled_buoy("point-stiffness");
+    let s = unsafe { stancf_create(cstring(&path).as_ptr()) };
+    assert!(!s.is_null(), "{}", message());
+    let mut out = [-1.0; 9];
+    let call = |id: i64, out: *mut f64| unsafe { stancf_point_stiffness(s, id, out) };
+    assert_eq!(call(4, out.as_mut_ptr()), STANCF_INVALID_INPUT);
+    assert!(message().contains("before stancf_init"), "{}", message());
+    let mut x = [0.0; 9];
+    unsafe {
+        assert_eq!(stancf_coupled_positions(s, x.as_mut_ptr()), STANCF_SUCCESS);
+        assert_eq!(stancf_init(s, x.as_ptr(), null_mut()), STANCF_SUCCESS);
+    }
+    assert_eq!(call(1, out.as_mut_ptr()), STANCF_INVALID_INPUT);
+    assert!(message().contains("not a coupled point"), "{}", message());
+    assert!(out.iter().all(|&v| v == -1.0), "nothing written: {out:?}");
+    assert_eq!(call(4, out.as_mut_ptr()), STANCF_SUCCESS, "{}", message());
+    let mut rust = stancf_scenario::coupling::open(&path).unwrap();
+    rust.handle.initialize(&x, None).unwrap();
+    let k = rust.handle.point_stiffness(3).unwrap();
+    for i in 0..3 {
+        for j in 0..3 {
+            assert_eq!(out[3 * i + j], k[i][j], "row {i}, column {j}");
+        }
+    }
+    assert!(out[0] > 0.0 && out[4] > 0.0 && out[8] > 0.0, "{out:?}");
+    unsafe { stancf_close(s) };
 }

@@ -124,6 +124,9 @@ int main(int argc, char **argv) {
     /* The bridle has no body: its id 1 is refused. */
     double k[36];
     if (stancf_body_stiffness(s, 1, k) != STANCF_INVALID_INPUT) return 37;
+    /* Its anchor 1 is fixed, its fairlead 2 coupled: a 3 x 3 of the lines'. */
+    if (stancf_point_stiffness(s, 1, k) != STANCF_INVALID_INPUT) return 38;
+    if (stancf_point_stiffness(s, 2, k) != STANCF_SUCCESS || !(k[0] > 0.0)) return 39;
     if (stancf_close(s) != STANCF_SUCCESS) return 29;
     if (stancf_close(NULL) != STANCF_INVALID_INPUT) return 30;
     /* A closed handle is refused, not read. */

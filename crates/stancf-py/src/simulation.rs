@@ -305,13 +305,22 @@ impl PySimulation {
         Ok((p.position, p.velocity, p.force))
     }
 
-    /// Free body `index`'s (in the order of `body_ids`) mooring stiffness
-    /// at the equilibrium of the last `initialize` (docs/method.md §15.9,
-    /// (B16)): 6 rows of 6, None before `initialize`, for a body that is
-    /// not free, or where the rest of the system is singular with the
-    /// body held.
+    /// Free or coupled body `index`'s (in the order of `body_ids`)
+    /// mooring stiffness at the equilibrium of the last `initialize`
+    /// (docs/method.md §15.9, (B16)): 6 rows of 6, None before
+    /// `initialize`, for a fixed body, or where the rest of the system is
+    /// singular with the body held.
     fn body_stiffness(&self, index: usize) -> PyResult<Option<[[f64; 6]; 6]>> {
         Ok(self.inner()?.handle.body_stiffness(index))
+    }
+
+    /// Coupled point `index`'s (in the order of `point_ids`; a coupled
+    /// point not on a body) mooring stiffness at the equilibrium of the
+    /// last `initialize`: 3 rows of 3, -df/dx of its lines' force (N/m),
+    /// None before `initialize`, for another point, or where the rest of
+    /// the system is singular with it held.
+    fn point_stiffness(&self, index: usize) -> PyResult<Option<[[f64; 3]; 3]>> {
+        Ok(self.inner()?.handle.point_stiffness(index))
     }
 
     /// Line `index`'s (in the order of `line_ids`) node positions, node

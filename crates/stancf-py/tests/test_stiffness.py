@@ -1,4 +1,4 @@
-"""A free body's mooring stiffness from Python (docs/interface.md,
+"""A free body's and a coupled point's mooring stiffness from Python (docs/interface.md,
 "Systems" and "Coupling"; docs/method.md §15.9): ``Result.stiffness``
 of a run (its stiffness.csv) and ``Simulation.body_stiffness`` after
 ``initialize``, on the moored buoy of examples/moored-buoy.toml."""
@@ -66,6 +66,24 @@ def test_body_stiffness_refuses_before_initialize_an_unknown_id_and_a_fixed_body
     sim.initialize(sim.initial_positions())
     with pytest.raises(KeyError, match="no body 3"):
         sim.body_stiffness(3)
-    with pytest.raises(stancf.ScenarioError, match="body 7 is not free"):
+    with pytest.raises(stancf.ScenarioError, match="body 7 is fixed"):
         sim.body_stiffness(7)
     assert sim.body_stiffness(1).shape == (6, 6)
+
+
+def test_a_coupled_anchors_stiffness_restores_and_a_body_point_has_none():
+    # Anchor 4 holds one taut line: its 3 x 3 is the lines' condensed
+    # stiffness there, symmetric (a conservative line, to 1e-8 of it, the
+    # static solve converging to 1e-10) and restoring.
+    sim = stancf.Simulation(stancf.Scenario(COUPLED, "coupled.toml"))
+    with pytest.raises(stancf.ScenarioError, match="point 4: no values before initialize"):
+        sim.point_stiffness(4)
+    sim.initialize(sim.initial_positions())
+    k = sim.point_stiffness(4)
+    assert isinstance(k, np.ndarray) and k.shape == (3, 3)
+    assert np.abs(k - k.T).max() < 1e-8 * np.abs(k).max()
+    assert (np.diag(k) > 0).all()
+    with pytest.raises(stancf.ScenarioError, match="point 1: no mooring stiffness"):
+        sim.point_stiffness(1)
+    with pytest.raises(KeyError, match="no point 9"):
+        sim.point_stiffness(9)

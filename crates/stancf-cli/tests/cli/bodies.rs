@@ -274,7 +274,8 @@ fn a_deck_with_a_free_body_passes_check_and_runs_statics_and_motion() {
 /// kg, 4 litres) adds its weight and its buoyancy to the body's (as
 /// MoorDyn's point on a body does: docs/method.md §15.8): at the static
 /// equilibrium the line holds (21244 + 10 - 1025 x 0.004) g, to the
-/// static tolerance (1e-9 of it).
+/// static tolerance (1e-9 of it), and the body's net force (Body1FZ,
+/// the point's buoyancy in it) is zero to the same.
 #[test]
 fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
     let d = scratch("body-heavy-point");
@@ -284,7 +285,7 @@ fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
         &body_deck(
             "",
             " 1        Body1     0        0         0        10        0.004        0        0",
-            "",
+            "Body1FZ\n",
         ),
     );
     let out = d.join("static");
@@ -295,6 +296,9 @@ fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
     let fz = rows[0][16];
     eprintln!("the line holds {fz} N, the body and its point weigh {weight} N in water");
     assert!((fz - weight).abs() < 1e-9 * weight, "{fz} against {weight}");
+    let (_, channels) = read_csv(&out.join("channels.csv"));
+    let net = channels[0][1];
+    assert!(net.abs() < 1e-9 * weight, "net force {net}");
 }
 
 /// The deck's refusals name its line: a pinned body, a point on a body

@@ -111,7 +111,7 @@ class Simulation:
     scenario or deck, before ``initialize``. After ``initialize``,
     ``line(line_id)`` gives a :class:`LineState`, ``point(point_id)``
     a :class:`PointState` (any point: fixed, coupled or free; ``point_ids``),
-    ``body_stiffness(body_id)`` a free body's 6 x 6 mooring stiffness at
+    ``body_stiffness(body_id)`` a free or coupled body's 6 x 6 mooring stiffness at
     the equilibrium (``body_ids``); before it they raise :class:`ScenarioError` naming the id, and an
     unknown id raises KeyError naming it.
 
@@ -233,7 +233,7 @@ class Simulation:
         return PointState(*self._sim.point_arrays(ids.index(point_id)))
 
     def body_stiffness(self, body_id):
-        """Free body `body_id`'s mooring stiffness at the static
+        """Free or coupled body `body_id`'s mooring stiffness at the static
         equilibrium of the last :meth:`initialize` (docs/method.md §15.9):
         a 6 x 6 array K = -d[F; M]/d[dr; dphi], rows the lines' force F_x,
         F_y, F_z and moment M_x, M_y, M_z about the body's reference point
@@ -242,24 +242,43 @@ class Simulation:
         N/rad, N m/m, N m/rad); a positive diagonal restores. The lines'
         stiffness only (not the body's own hydrostatics); not symmetric in
         general. An unknown id raises KeyError; before :meth:`initialize`,
-        for a body that is not free (fixed or coupled), or where the rest
-        of the system is singular with the body held, ScenarioError naming
-        the id."""
+        for a fixed body, or where the rest of the system is singular with
+        the body held, ScenarioError naming the id."""
         ids = self.body_ids
         if body_id not in ids:
             raise KeyError("no body %r (bodies: %s)" % (body_id, ids))
         index = ids.index(body_id)
-        free = [ids[b] for b in self._sim.free_bodies]
-        if body_id not in free:
+        moving = [ids[b] for b in self._sim.free_bodies] + list(self.coupled_body_ids)
+        if body_id not in moving:
             raise ScenarioError(
-                "body %r is not free (fixed or coupled): only a free body has a mooring "
-                "stiffness (free bodies: %s)" % (body_id, free))
+                "body %r is fixed: only a free or coupled body has a mooring stiffness "
+                "(free and coupled bodies: %s)" % (body_id, moving))
         self._require_initialized("body %r" % (body_id,))
         k = self._sim.body_stiffness(index)
         if k is None:
             raise ScenarioError(
                 "body %r: no mooring stiffness: the rest of the system is singular with the "
                 "body held" % (body_id,))
+        return np.asarray(k, dtype=float)
+
+    def point_stiffness(self, point_id):
+        """Coupled point `point_id`'s (a coupled point not on a body)
+        mooring stiffness at the static equilibrium of the last
+        :meth:`initialize` (docs/method.md §15.9): a 3 x 3 array
+        K = -df/dx of its lines' force (N/m, global axes), the rest of the
+        system in equilibrium. An unknown id raises KeyError; before
+        :meth:`initialize`, for a point that is not coupled, or where the
+        rest is singular with the point held, ScenarioError naming the id."""
+        ids = self.point_ids
+        if point_id not in ids:
+            raise KeyError("no point %r (points: %s)" % (point_id, ids))
+        self._require_initialized("point %r" % (point_id,))
+        k = self._sim.point_stiffness(ids.index(point_id))
+        if k is None:
+            raise ScenarioError(
+                "point %r: no mooring stiffness: it is not a coupled point of its own (fixed, "
+                "free or on a body), or the rest of the system is singular with it held"
+                % (point_id,))
         return np.asarray(k, dtype=float)
 
     def _require_initialized(self, what):

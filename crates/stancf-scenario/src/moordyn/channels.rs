@@ -3,7 +3,7 @@
 //! case-insensitive.
 
 use super::layout::Section;
-use super::{DeckBody, DeckError, DeckLine, DeckPoint, Output};
+use super::{DeckBody, DeckError, DeckLine, DeckPoint, DeckRod, Output};
 
 /// A component of a vector, in the global frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -75,6 +75,37 @@ pub enum BodyQuantity {
     Tension,
 }
 
+/// What MoorDyn outputs of a rod as a whole (`Rod::GetRodOutput`, its
+/// channels without a node): of its end A (its reference point) and its
+/// axis, global. MoorDyn has no rotation about a rod's axis: no `RZ`,
+/// `RVZ` or `RAZ`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RodQuantity {
+    /// `PX` `PY` `PZ` (m): end A.
+    Position(Axis),
+    /// `RX` `RY` (deg): MoorDyn's "roll" -phi sin(beta) and "pitch"
+    /// phi cos(beta) of the axis (phi its angle from the vertical, beta
+    /// its heading); only `X` and `Y`.
+    Rotation(Axis),
+    /// `VX` `VY` `VZ` (m/s): end A's velocity.
+    Velocity(Axis),
+    /// `RVX` `RVY` (deg/s): the angular velocity, global; only `X`, `Y`.
+    AngularVelocity(Axis),
+    /// `AX` `AY` `AZ` (m/s^2).
+    Acceleration(Axis),
+    /// `RAX` `RAY` (deg/s^2).
+    AngularAcceleration(Axis),
+    /// `FX` `FY` `FZ` (N): the net force on the rod.
+    Force(Axis),
+    /// `MX` `MY` `MZ` (N m): the net moment about end A.
+    Moment(Axis),
+    /// `TA`/`TENA`, `TB`/`TENB` (N): the magnitude of the net force of
+    /// the lines attached at that end.
+    EndTension(LineEnd),
+    /// `SUB`: the fraction of the rod under the water surface.
+    Submerged,
+}
+
 /// An output channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Channel {
@@ -101,6 +132,9 @@ pub enum Channel {
     },
     /// `B<n><q>` or `Body<n><q>`.
     Body { body: usize, quantity: BodyQuantity },
+    /// `R<n><q>` or `Rod<n><q>`: the rod as a whole (node-level rod
+    /// channels, `R<n>N<k><q>`, are refused).
+    Rod { rod: usize, quantity: RodQuantity },
 }
 
 /// A channel name before the lines and points are known.
@@ -142,16 +176,21 @@ pub(crate) fn words<'a>(s: &Section<'a>) -> Result<Vec<RawOutput<'a>>, DeckError
     Ok(out)
 }
 
-/// The channels, checked against the deck's lines, points and bodies.
+/// The channels, checked against the deck's lines, points, bodies and
+/// rods.
 pub(crate) fn resolve(
     raw: Vec<RawOutput>,
     lines: &[DeckLine],
     points: &[DeckPoint],
-    bodies: &[DeckBody],
+    (bodies, rods): (&[DeckBody], &[DeckRod]),
 ) -> Result<Vec<Output>, DeckError> {
+    let counts = Counts {
+        bodies: bodies.len(),
+        rods: rods.len(),
+    };
     raw.into_iter()
         .map(|r| {
-            let channel = channel(r.name, lines, points, bodies.len()).map_err(|m| {
+            let channel = channel(r.name, lines, points, counts).map_err(|m| {
                 DeckError::at(r.line, format!("output channel \"{}\": {m}", r.name))
             })?;
             Ok(Output {
@@ -175,11 +214,18 @@ fn head(upper: &str) -> (&str, &str, &str) {
     (&upper[..a], &upper[a..b], &upper[b..])
 }
 
+/// How many bodies and rods the deck defines.
+#[derive(Clone, Copy)]
+struct Counts {
+    bodies: usize,
+    rods: usize,
+}
+
 fn channel(
     name: &str,
     lines: &[DeckLine],
     points: &[DeckPoint],
-    bodies: usize,
+    Counts { bodies, rods }: Counts,
 ) -> Result<Channel, String> {
     if !name.chars().all(|c| c.is_ascii_alphanumeric()) {
         return Err("a channel name is made of letters and digits".into());
@@ -188,7 +234,7 @@ fn channel(
     let (kind, id, rest) = head(&upper);
     let known =
         "known: FairTen<n>, AnchTen<n>, L<n>N<k><q> (Line...), P<n><q> (Point..., Con...), \
-                 B<n><q> (Body...)";
+                 B<n><q> (Body...), R<n><q> (Rod...)";
     if id.is_empty() {
         return Err(format!("no object number; {known}"));
     }
@@ -216,11 +262,15 @@ fn channel(
                 quantity,
             })
         }
-        "R" | "ROD" => Err(
-            "rod channels are not written in this version (a free rod is a body: \
-                             its pose is in bodies.csv, summary.json's rods names its body)"
-                .into(),
-        ),
+        "R" | "ROD" => {
+            if id == 0 || id > rods {
+                return Err(format!("there is no rod {id} ({rods} rods)"));
+            }
+            Ok(Channel::Rod {
+                rod: id,
+                quantity: rod_quantity(rest)?,
+            })
+        }
         "B" | "BODY" => {
             if id == 0 || id > bodies {
                 return Err(format!("there is no body {id} ({bodies} bodies)"));
@@ -341,6 +391,52 @@ fn body_quantity(q: &str) -> Result<BodyQuantity, String> {
             ))
         }
     })
+}
+
+/// The part after `R<n>`: a quantity of the rod as a whole. A node
+/// (`N<k>`, `NA`, `NB`: no quantity starts with N) is refused, and so are
+/// what MoorDyn has no value for: a rotation about the rod's axis (`RZ`,
+/// `RVZ`, `RAZ`, none in `Rod::GetRodOutput`), `T` (MoorDyn writes 0).
+fn rod_quantity(q: &str) -> Result<RodQuantity, String> {
+    if q.starts_with('N') {
+        return Err(
+            "node-level rod channels are not written (R<n>N<k><q>, R<n>NA<q>, \
+                    R<n>NB<q>); the rod as a whole is (R<n><q>)"
+                .into(),
+        );
+    }
+    if let Some(end) = end_tension(q) {
+        return Ok(RodQuantity::EndTension(end));
+    }
+    if q == "SUB" {
+        return Ok(RodQuantity::Submerged);
+    }
+    let only = "only PX PY PZ RX RY VX VY VZ RVX RVY AX AY AZ RAX RAY FX FY FZ MX MY MZ TENA \
+                TENB SUB";
+    if matches!(q, "RZ" | "RVZ" | "RAZ") {
+        return Err(format!(
+            "MoorDyn has no \"{q}\" of a rod (no rotation about its axis; {only})"
+        ));
+    }
+    let quantity = match body_quantity(q) {
+        Ok(BodyQuantity::Position(a)) => RodQuantity::Position(a),
+        Ok(BodyQuantity::Rotation(a)) => RodQuantity::Rotation(a),
+        Ok(BodyQuantity::Velocity(a)) => RodQuantity::Velocity(a),
+        Ok(BodyQuantity::AngularVelocity(a)) => RodQuantity::AngularVelocity(a),
+        Ok(BodyQuantity::Acceleration(a)) => RodQuantity::Acceleration(a),
+        Ok(BodyQuantity::AngularAcceleration(a)) => RodQuantity::AngularAcceleration(a),
+        Ok(BodyQuantity::Force(a)) => RodQuantity::Force(a),
+        Ok(BodyQuantity::Moment(a)) => RodQuantity::Moment(a),
+        Ok(BodyQuantity::Tension) => {
+            return Err(format!(
+                "MoorDyn writes 0 for \"{q}\" of a rod (TENA and TENB are its ends' line \
+                 forces; {only})"
+            ))
+        }
+        Err(_) if q.is_empty() => return Err("no quantity (e.g. PX, RY, TENA, SUB)".into()),
+        Err(_) => return Err(format!("MoorDyn outputs no \"{q}\" of a rod ({only})")),
+    };
+    Ok(quantity)
 }
 
 /// The quantity suffixes of `MoorDyn2.cpp`, those of no line or point

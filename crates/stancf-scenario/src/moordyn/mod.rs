@@ -44,7 +44,9 @@ use std::fmt;
 use std::path::Path;
 
 pub use bodies::{BodyAttachment, DeckBody};
-pub use channels::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
+pub use channels::{
+    Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity, RodQuantity,
+};
 pub use ends::{LineAttachment, RodEnd};
 pub use options::{OptionKind, OptionValue, SupportedOption};
 pub use rods::{DeckRod, RodAttachment, RodType};
@@ -311,7 +313,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     bodies::check_body_points(&points, &bodies)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
     rods::check_rods(&rods, bodies.len(), &lines)?;
-    let outputs = channels::resolve(raw_outputs, &lines, &points, &bodies)?;
+    let outputs = channels::resolve(raw_outputs, &lines, &points, (&bodies, &rods))?;
     Ok(Deck {
         title: layout.title,
         line_types,

@@ -26,8 +26,8 @@ use super::system_parts::{
 use super::water::WaterKeys;
 use super::ScenarioError;
 use crate::moordyn::{
-    self, Attachment, BodyAttachment, BodyQuantity, Channel, Deck, DeckBody, LineQuantity,
-    PointQuantity, SupportedOption,
+    self, Attachment, BodyAttachment, BodyQuantity, Channel, Deck, DeckBody, DeckRod, LineQuantity,
+    PointQuantity, RodAttachment, RodQuantity, SupportedOption,
 };
 use stancf::motion::CoupledMotion;
 use stancf::ElementType;
@@ -295,7 +295,11 @@ fn deck_line((l, ends): (&crate::moordyn::DeckLine, super::rods::DeckLineEnds)) 
 fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, ScenarioError> {
     let mut channels = Vec::with_capacity(deck.outputs.len());
     for o in &deck.outputs {
-        if let Some(why) = not_computed(&o.channel) {
+        let why = match o.channel {
+            Channel::Rod { rod, quantity } => rod_not_computed(&deck.rods[rod - 1], quantity),
+            _ => not_computed(&o.channel).map(str::to_string),
+        };
+        if let Some(why) = why {
             return Err(ScenarioError(format!(
                 "{file}: line {}: output channel {}: {why}",
                 o.line, o.name
@@ -309,14 +313,17 @@ fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, Scenario
     Ok(channels)
 }
 
+/// What stancf does not compute in this version.
+const NOT: &str = "stancf does not compute this value in this version (it writes line end \
+                   tensions, point positions, velocities and net forces, line node positions \
+                   and velocities, body poses, velocities, net forces and moments, and rods' \
+                   poses, velocities, end tensions and submerged fractions)";
+
 /// Why stancf does not have the value of a channel, or None where it
 /// does: line end tensions, point positions, velocities and net forces
-/// (MoorDyn's `Fnet`), line node positions and velocities.
+/// (MoorDyn's `Fnet`), line node positions and velocities, bodies' all
+/// but accelerations (rods: [`rod_not_computed`]).
 fn not_computed(c: &Channel) -> Option<&'static str> {
-    const NOT: &str = "stancf does not compute this value in this version (it writes line end \
-                       tensions, point positions, velocities and net forces, line node \
-                       positions and velocities, and body poses, velocities, net forces and \
-                       moments)";
     match c {
         Channel::FairleadTension { .. }
         | Channel::AnchorTension { .. }
@@ -334,5 +341,34 @@ fn not_computed(c: &Channel) -> Option<&'static str> {
             BodyQuantity::Acceleration(_) | BodyQuantity::AngularAcceleration(_)
         )
         .then_some(NOT),
+        Channel::Rod { .. } => None,
+    }
+}
+
+/// Why stancf does not have the value of quantity `q` of rod `r`, or
+/// None where it does: accelerations are not computed (as a body's); a
+/// rod of zero length (NumSegs 0) is a point, with a position and a
+/// velocity only; a rod fixed in a body has no net force of its own, its
+/// loads being its body's.
+fn rod_not_computed(r: &DeckRod, q: RodQuantity) -> Option<String> {
+    use RodQuantity as Q;
+    match q {
+        Q::Acceleration(_) | Q::AngularAcceleration(_) => Some(NOT.to_string()),
+        Q::Position(_) | Q::Velocity(_) => None,
+        _ if r.segments == 0 => Some(format!(
+            "rod {} has NumSegs 0, a rod of zero length that stancf builds as a point: it \
+             has a position and a velocity (PX PY PZ VX VY VZ), no axis, volume or ends of \
+             its own",
+            r.id
+        )),
+        Q::Force(_) | Q::Moment(_) => match r.attachment {
+            RodAttachment::Body(b) => Some(format!(
+                "rod {} is fixed in body {b}: its share of the body's loads is not separated \
+                 in this version (the body's net force and moment are Body{b}FX ... Body{b}MZ)",
+                r.id
+            )),
+            _ => None,
+        },
+        _ => None,
     }
 }

@@ -77,8 +77,10 @@ struct Running {
     /// The coupled bodies' reference points and their velocities.
     reference: Vec<[f64; 3]>,
     reference_rate: Option<Vec<[f64; 3]>>,
-    /// The free bodies' mooring stiffness at the initial equilibrium.
+    /// The free and coupled bodies' mooring stiffness at the initial
+    /// equilibrium, and the coupled points' not on a body.
     stiffness: Vec<(usize, Option<[[f64; 6]; 6]>)>,
+    point_stiffness: Vec<(usize, Option<[[f64; 3]; 3]>)>,
 }
 
 /// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`])
@@ -370,7 +372,8 @@ impl CoupledSystem {
             |k| statics.point_position(coupled[k]),
             |b| self.layout.reference(x, b),
         );
-        let stiffness = stiffness::free_body_stiffness(&mut statics);
+        let stiffness = stiffness::body_stiffness(&mut statics, &self.layout, x);
+        let point_stiffness = stiffness::point_stiffness(&statics, &self.layout, &self.coupled);
         let sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
         let bodies = 0..self.layout.bodies.len();
         self.running = Some(Running {
@@ -383,6 +386,7 @@ impl CoupledSystem {
                 .collect(),
             reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
             stiffness,
+            point_stiffness,
         });
         Ok(forces)
     }

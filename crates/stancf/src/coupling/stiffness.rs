@@ -32,33 +32,79 @@ pub(super) fn start_at(
     Ok(sim)
 }
 
-/// Each free body's (B16) at the converged equilibrium of `statics`:
-/// (body index, 6 x 6), None where the rest of the system is singular
-/// with the body held.
-pub(super) fn free_body_stiffness(
+/// Each free and coupled body's (B16) at the converged equilibrium of
+/// `statics`, a coupled body's about its reference point where the
+/// host's `x` holds it: (body index, 6 x 6), None where the rest of the
+/// system is singular with the body held.
+pub(super) fn body_stiffness(
     statics: &mut SystemStatics,
+    layout: &super::bodies::ArrayLayout,
+    x: &[f64],
 ) -> Vec<(usize, Option<[[f64; 6]; 6]>)> {
     let free: Vec<usize> = statics.system().free_bodies().collect();
-    free.into_iter()
+    let mut out: Vec<(usize, Option<[[f64; 6]; 6]>)> = free
+        .into_iter()
         .map(|b| (b, statics.body_stiffness(b)))
+        .collect();
+    for (k, body) in layout.bodies.iter().enumerate() {
+        let reference = layout.reference(x, k);
+        out.push((
+            body.body,
+            statics.coupled_body_stiffness(body.body, reference),
+        ));
+    }
+    out
+}
+
+/// Each coupled point's (not on a body) 3 x 3 mooring stiffness at the
+/// equilibrium of `statics`: (point index, 3 x 3), the points those of
+/// `layout.plain` (`coupled[place]`).
+pub(super) fn point_stiffness(
+    statics: &SystemStatics,
+    layout: &super::bodies::ArrayLayout,
+    coupled: &[usize],
+) -> Vec<(usize, Option<[[f64; 3]; 3]>)> {
+    layout
+        .plain
+        .iter()
+        .map(|&place| {
+            let p = coupled[place];
+            (p, statics.coupled_point_stiffness(p))
+        })
         .collect()
 }
 
 impl CoupledSystem {
-    /// The mooring stiffness (B16) of free body `b` at the static
-    /// equilibrium of the last [`Self::initialize`]: rows F_x, F_y, F_z,
-    /// M_x, M_y, M_z of the lines' force and moment about the body's
-    /// reference point (global axes), columns the reference point's
-    /// displacement and a small rotation about global axes through it
-    /// ([`SystemStatics::body_stiffness`]). None before initialization,
-    /// for a body that is not free, or where the rest of the system is
-    /// singular with the body held.
+    /// The mooring stiffness (B16) of free or coupled body `b` at the
+    /// static equilibrium of the last [`Self::initialize`]: rows F_x,
+    /// F_y, F_z, M_x, M_y, M_z of the lines' force and moment about the
+    /// body's reference point (global axes), columns the reference
+    /// point's displacement and a small rotation about global axes
+    /// through it ([`SystemStatics::body_stiffness`],
+    /// [`SystemStatics::coupled_body_stiffness`]). None before
+    /// initialization, for a fixed body, or where the rest of the system
+    /// is singular with the body held.
     pub fn body_stiffness(&self, b: usize) -> Option<[[f64; 6]; 6]> {
         let running = self.running.as_ref()?;
         running
             .stiffness
             .iter()
             .find(|(k, _)| *k == b)
+            .and_then(|(_, k)| *k)
+    }
+
+    /// The mooring stiffness of coupled point `p` (the system's point
+    /// index; a coupled point not on a body) at the static equilibrium of
+    /// the last [`Self::initialize`]: -d f / d x of the lines' force on it
+    /// (N/m, global axes), the rest in equilibrium
+    /// ([`SystemStatics::coupled_point_stiffness`]). None before
+    /// initialization, for another point, or where the rest is singular.
+    pub fn point_stiffness(&self, p: usize) -> Option<[[f64; 3]; 3]> {
+        let running = self.running.as_ref()?;
+        running
+            .point_stiffness
+            .iter()
+            .find(|(q, _)| *q == p)
             .and_then(|(_, k)| *k)
     }
 }

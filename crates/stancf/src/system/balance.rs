@@ -84,7 +84,11 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
         free: (0..positions.len())
             .filter(|&p| system.points()[p].is_free())
             .collect(),
-        bodies: system.free_bodies().collect(),
+        // A pinned body keeps its given pose (its pin holds it there).
+        bodies: system
+            .free_bodies()
+            .filter(|&b| system.bodies()[b].pin.is_none())
+            .collect(),
     };
     if net.free.is_empty() && net.bodies.is_empty() {
         return (positions, poses);

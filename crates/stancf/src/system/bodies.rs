@@ -61,6 +61,18 @@ pub struct Body {
     /// parts under the surface (docs/method.md §15.10-§15.11;
     /// [`super::System::with_bodies`] folds them).
     pub rods: Vec<Rod>,
+    /// The body's point pinned to a fixed point, if it is: it turns freely
+    /// about it (docs/method.md §15.12; MoorDyn's pinned rod).
+    pub pin: Option<Pin>,
+}
+
+/// A body's point `local` (body axes, from the reference point) held at
+/// point `point` of the system, a fixed point (an anchor, or a point of
+/// a fixed body), the body turning freely about it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pin {
+    pub local: [f64; 3],
+    pub point: usize,
 }
 
 impl Body {
@@ -81,6 +93,7 @@ impl Body {
             water: None,
             loads: Vec::new(),
             rods: Vec::new(),
+            pin: None,
         }
     }
 
@@ -230,7 +243,70 @@ pub(super) fn place_points(
             BodyKind::Free => {}
         }
     }
+    for (i, b) in bodies.iter_mut().enumerate() {
+        check_pin(b, points).map_err(|e| e.under(&format!("bodies[{i}].pin")))?;
+    }
     Ok(on_body)
+}
+
+/// Checks a body's pin: a free body's point held at a fixed point, where
+/// the body puts that point at t = 0 and at rest there (to 1e-9 of the
+/// point's distance from the origin, or of 1 m). A fixed body's pin
+/// holds nothing and goes; a coupled body's, a pin to a point that is
+/// not fixed, are refused (not built).
+fn check_pin(body: &mut Body, points: &[Point]) -> Result<(), ModelError> {
+    let Some(pin) = body.pin else {
+        return Ok(());
+    };
+    match body.kind {
+        BodyKind::Fixed => {
+            body.pin = None;
+            return Ok(());
+        }
+        BodyKind::Coupled => {
+            return Err(ModelError::invalid(
+                "",
+                "a coupled body pinned (MoorDyn's CoupledPinned) is not built yet",
+            ))
+        }
+        BodyKind::Free => {}
+    }
+    let Some(point) = points.get(pin.point) else {
+        return Err(ModelError::invalid(
+            "point",
+            format!("{} names no point", pin.point),
+        ));
+    };
+    if point.kind != PointKind::Fixed {
+        return Err(ModelError::invalid(
+            "point",
+            format!(
+                "point {} is not fixed: a body pinned to a free, coupled or moving point is not \
+                 built yet (a pin holds to a fixed point or a fixed body's point)",
+                pin.point
+            ),
+        ));
+    }
+    let at = body.point(pin.local);
+    let off = crate::vec3::norm(crate::vec3::sub(at, point.position));
+    if off.is_nan() || off > 1e-9 * (1.0 + crate::vec3::norm(point.position)) {
+        return Err(ModelError::invalid(
+            "local",
+            format!(
+                "the body puts its pinned point at {at:?}, {off:.3e} m from point {} at {:?}: \
+                 a pin starts where it holds",
+                pin.point, point.position
+            ),
+        ));
+    }
+    let moving = crate::vec3::norm(body.point_velocity(pin.local));
+    if moving.is_nan() || moving > 1e-12 * (1.0 + crate::vec3::norm(body.velocity)) {
+        return Err(ModelError::invalid(
+            "local",
+            format!("its pinned point moves at {moving:.3e} m/s at t = 0: a pin holds it at rest"),
+        ));
+    }
+    Ok(())
 }
 
 /// A point on a free body with a mass m, a force F or water (a volume V

@@ -74,6 +74,9 @@ pub(super) struct StaticBody {
     /// (a free rod held at its ends), the line (body axes) and the
     /// stiffness of the spin hold about it ([`spin_axis`]).
     pub spin_hold: Option<([f64; 3], f64)>,
+    /// A pin (§15.12): the pinned point from the centre of mass (body
+    /// axes) and where it is held.
+    pub pin: Option<([f64; 3], [f64; 3])>,
 }
 
 impl StaticBody {
@@ -181,6 +184,46 @@ impl StaticBody {
                 }
             }
         }
+        self.add_pin(&q, &g, residual, jacobian);
+    }
+
+    /// A pin (B24) at rest: the centre's rows carried to the rotation's
+    /// through r_G = P - R_0 exp([theta]) xi' (their derivatives too), and
+    /// replaced by r_G + R_0 exp([theta]) xi' - P = 0.
+    fn add_pin(
+        &self,
+        q: &[f64; 6],
+        g: &impl Fn(usize) -> usize,
+        residual: &mut [f64],
+        jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        let Some((arm, at)) = self.pin else { return };
+        let (p, _) = offsets(&self.rotation, arm, [q[3], q[4], q[5]], [0.0; 3]);
+        let raw: [f64; 3] = std::array::from_fn(|c| residual[g(c)]);
+        let moment = project(raw, &p);
+        for j in 0..3 {
+            residual[g(3 + j)] -= moment.g[j];
+        }
+        for c in 0..3 {
+            residual[g(c)] = q[c] + p[c].v - at[c];
+        }
+        if let Some(m) = jacobian {
+            for j in 0..3 {
+                for c in 0..3 {
+                    m.add_border_row(g(3 + j), g(c), -p[c].g[j]);
+                }
+                for i in 0..3 {
+                    m.add(g(3 + j), g(3 + i), -moment.h[j][i]);
+                }
+            }
+            for c in 0..3 {
+                m.clear_border_row(g(c));
+                m.add(g(c), g(c), 1.0);
+                for j in 0..3 {
+                    m.add(g(c), g(3 + j), p[c].g[j]);
+                }
+            }
+        }
     }
 
     /// The terms of a body in `water` at pose q = [r_G; theta], at rest.
@@ -267,7 +310,10 @@ impl StaticBody {
     pub fn row_weights(&self) -> [f64; 6] {
         let k = self.stiffness.max(f64::MIN_POSITIVE);
         std::array::from_fn(|i| {
-            if i < 3 {
+            if i < 3 && self.pin.is_some() {
+                // The pin's rows are positions.
+                1.0 / self.length
+            } else if i < 3 {
                 1.0 / (k * self.length)
             } else {
                 1.0 / (k * self.arm * self.length)
@@ -390,6 +436,12 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                     })
                     .cloned(),
                 rods_water: body.water.as_ref().filter(|w| !w.rods.is_empty()).cloned(),
+                pin: body.pin.map(|pin| {
+                    (
+                        crate::vec3::sub(pin.local, c),
+                        system.points()[pin.point].position,
+                    )
+                }),
                 spin_hold: spin_axis(body, &points_local(system, b)).map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
                     (a, weight * length)
@@ -406,11 +458,12 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
 /// motion. Key `bodies[b]`.
 pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError> {
     for b in system.free_bodies() {
-        let held = system
-            .points()
-            .iter()
-            .enumerate()
-            .any(|(p, pt)| pt.body() == Some(b) && system.attachments(p).next().is_some());
+        let held = system.bodies()[b].pin.is_some()
+            || system
+                .points()
+                .iter()
+                .enumerate()
+                .any(|(p, pt)| pt.body() == Some(b) && system.attachments(p).next().is_some());
         if !held {
             return Err(crate::error::ModelError::invalid(
                 format!("bodies[{b}]"),
@@ -451,6 +504,7 @@ fn spin_axis(body: &super::Body, points: &[[f64; 3]]) -> Option<[f64; 3]> {
         }
     }
     let mut all = vec![body.inertia.centre_of_mass];
+    all.extend(body.pin.map(|pin| pin.local));
     all.extend(body.loads.iter().map(|(_, at)| *at));
     all.extend_from_slice(points);
     if let Some(w) = &body.water {

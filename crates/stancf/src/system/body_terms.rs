@@ -53,6 +53,16 @@ pub(super) struct StepBody {
     pub index: usize,
     pub body: FreeBody,
     pub points: Vec<BodyPoint>,
+    /// Where the body is pinned, if it is (§15.12).
+    pub pin: Option<StepPin>,
+}
+
+/// A body's pin in a step (§15.12, `system/pins.rs`): the pinned point
+/// from the centre of mass (body axes) and where it is held (global).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct StepPin {
+    pub arm: [f64; 3],
+    pub at: [f64; 3],
 }
 
 /// Global index of the FreeBody's Galerkin unknown (or row) i: its blocks
@@ -228,6 +238,14 @@ impl StepBody {
             let end = project(end_rows(bp.point), &maps.end.1);
             for j in 0..3 {
                 dtheta[j] += end.g[j];
+            }
+        }
+        if self.pin.is_some() {
+            let (mut rows, mut jac) = ([0.0; 18], [0.0; 18 * 18]);
+            self.body.galerkin_rows_into(xb, &mut rows, &mut jac);
+            let share = self.pin_end_share(xb, [rows[6], rows[7], rows[8]], &end_rows);
+            for j in 0..3 {
+                dtheta[j] += share[j];
             }
         }
         let theta_b = [xb[12], xb[13], xb[14]];

@@ -250,6 +250,9 @@ fn add_body_mass(m: &mut crate::bordered::BorderedMatrix, layout: &SystemLayout,
             m.add(q(a), q(b), v);
         }
     }
+    if let Some(g) = body.pin_rate_map() {
+        super::pins::pin_mass(m, std::array::from_fn(q), &g);
+    }
 }
 
 /// The right side of the body's rows: the lines' end momenta at its
@@ -277,6 +280,9 @@ fn carry_body_momentum(
     let (g0, _) = body.body.rate_hessian();
     for k in 0..6 {
         rates[q(k)] += momentum[k] - g0[k];
+    }
+    if let Some(g) = body.pin_rate_map() {
+        super::pins::pin_momentum(rates, std::array::from_fn(q), &g);
     }
 }
 

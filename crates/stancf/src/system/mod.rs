@@ -34,6 +34,7 @@ mod halving;
 mod layout;
 mod line_type;
 mod mass;
+mod pins;
 mod point_terms;
 mod run;
 mod seed;
@@ -47,7 +48,7 @@ mod stiffness;
 mod topology;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};
-pub use bodies::{Body, BodyKind};
+pub use bodies::{Body, BodyKind, Pin};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
@@ -367,6 +368,50 @@ impl System {
     pub fn into_parts(self) -> (Topology, Vec<Model>) {
         let models = self.lines.into_iter().map(|l| l.model).collect();
         (self.topology, models)
+    }
+
+    /// The same system with the fixed or coupled points `points` made
+    /// free points of nothing of their own where they are at t = 0, their
+    /// lines' attachments there released: where a coupled point's
+    /// mooring stiffness is read (docs/method.md §15.9).
+    pub fn with_points_freed(&self, points: &[usize]) -> Result<System, ModelError> {
+        let mut all = self.topology.points.clone();
+        for &p in points {
+            let point = all
+                .get_mut(p)
+                .ok_or_else(|| ModelError::invalid(format!("points[{p}]"), "does not exist"))?;
+            *point = Point::free(point.state_at(0.0).0, 0.0);
+        }
+        let lines = self
+            .lines
+            .iter()
+            .map(|line| {
+                let released: Vec<usize> = attached_ends(&line.ends, &line.model)
+                    .map(|a| a.node)
+                    .collect();
+                let own: Vec<Constraint> = line
+                    .model
+                    .constraints
+                    .list
+                    .iter()
+                    .filter(|c| {
+                        !(released.contains(&c.node)
+                            && matches!(c.kind, ConstraintKind::Attached { .. }))
+                    })
+                    .cloned()
+                    .collect();
+                Ok(Line {
+                    model: line.model.clone().with_constraints(own)?,
+                    ends: line.ends,
+                })
+            })
+            .collect::<Result<Vec<Line>, ModelError>>()?;
+        System::with_bodies(
+            lines,
+            all,
+            self.topology.bodies.clone(),
+            self.topology.gravity,
+        )
     }
 
     /// Moves coupled point p along `motion` (a coupling code's next

@@ -124,12 +124,15 @@ impl SystemSimulation {
         }
         let bodies = step_bodies(&topology, settings.time_step)?;
         let mut line_settings = settings.clone();
+        // Free points or free bodies (a body that holds no line too) are
+        // unknowns of the system's step beside its lines'.
+        let joined = topology.has_free_points() || topology.has_free_bodies();
         // The planar reduction holds coordinates line by line; lines
         // joined at free points must hold the same ones, so it is left off.
-        line_settings.planar_reduction &= !topology.has_free_points();
-        // Without free points the lines are independent: each is solved
-        // apart, with its own solver (docs/method.md §11.14).
-        let apart = !topology.has_free_points();
+        line_settings.planar_reduction &= !joined;
+        // Without free points or bodies the lines are independent: each is
+        // solved apart, with its own solver (docs/method.md §11.14).
+        let apart = !joined;
         let lines = models
             .into_iter()
             .zip(initial)
@@ -162,7 +165,7 @@ impl SystemSimulation {
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let (unknown_scale, equation_scale) =
             system_scales(&topology, &lines, &layout, &bodies, settings.time_step);
-        let mass = if topology.has_free_points() && settings.time_scheme.carries_momentum() {
+        let mass = if joined && settings.time_scheme.carries_momentum() {
             Some(SystemMass::new(&topology, &models, &bodies)?)
         } else {
             None
@@ -474,10 +477,15 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                     _ => None,
                 })
                 .collect();
+            let pin = body.pin.map(|pin| super::body_terms::StepPin {
+                arm: crate::vec3::sub(pin.local, c),
+                at: system.points()[pin.point].position,
+            });
             Ok(StepBody {
                 index: b,
                 body: state,
                 points,
+                pin,
             })
         })
         .collect()

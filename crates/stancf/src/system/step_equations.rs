@@ -197,6 +197,7 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
         }
         for body in self.bodies {
             body.add(self.layout, x, residual, jacobian.as_deref_mut());
+            body.add_pin(self.layout, x, residual, jacobian.as_deref_mut());
         }
     }
 

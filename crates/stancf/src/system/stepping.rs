@@ -24,7 +24,7 @@ impl SystemSimulation {
         for line in &mut self.lines {
             line.begin_step();
         }
-        let report = if self.topology.has_free_points() {
+        let report = if self.topology.has_free_points() || self.topology.has_free_bodies() {
             self.gather_prediction();
             let report = self.solve_step(dt)?;
             self.check_body_turns()?;

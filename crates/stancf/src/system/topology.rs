@@ -164,6 +164,13 @@ impl Topology {
                 parent[a] = r;
             }
         }
+        // A pinned body joins its pin's point.
+        for (b, body) in self.bodies.iter().enumerate() {
+            if let Some(pin) = body.pin {
+                let (a, r) = (root(&mut parent, pin.point), root(&mut parent, n_nodes + b));
+                parent[a] = r;
+            }
+        }
         let mut held = vec![false; parent.len()];
         for (p, point) in self.points.iter().enumerate() {
             if !point.is_unknown() {

@@ -19,6 +19,11 @@ const MASS_PER_LENGTH: f64 = 2.0;
 const EA: f64 = 1e7;
 
 fn chain(a: [f64; 3], b: [f64; 3], length: f64) -> Model {
+    line_model(a, b, length, vec![Load::Gravity { acceleration: G }])
+}
+
+/// The lines' model from `a` towards `b`, of `length`, under `loads`.
+fn line_model(a: [f64; 3], b: [f64; 3], length: f64, loads: Vec<Load>) -> Model {
     let w = MASS_PER_LENGTH * 9.81;
     let area = 1e-3;
     let material = Material {
@@ -35,13 +40,7 @@ fn chain(a: [f64; 3], b: [f64; 3], length: f64) -> Model {
     // The engineering strain, Irvine's (and MoorDyn's): T = EA (lam - 1).
     let mut options = ModelOptions::default();
     options.measures.axial_strain = AxialStrain::Engineering;
-    Model::new(
-        cable,
-        material,
-        options,
-        vec![Load::Gravity { acceleration: G }],
-    )
-    .expect("model")
+    Model::new(cable, material, options, loads).expect("model")
 }
 
 fn norm(v: [f64; 3]) -> f64 {
@@ -273,6 +272,75 @@ fn a_moored_buoys_stiffness_matrix_is_the_derivative_of_its_mooring_load() {
         worst / size
     );
     assert!(worst < 1e-7 * size, "{:e}", worst / size);
+}
+
+/// The mooring stiffness is the lines': the buoy made a coupled body (a
+/// host holds it) at the free buoy's equilibrium pose has the same 6 x 6
+/// as the free buoy there, which the test above checks against
+/// differences; here through the coupled points made free
+/// (`SystemStatics::coupled_body_stiffness`): both condense the same
+/// Jacobian at the same equilibrium (the coupled one solved anew to
+/// 1e-12), so they agree to the solves' round-off (measured 2.6e-12 of
+/// the matrix's size; asserted 1e-9).
+#[test]
+fn a_coupled_buoys_stiffness_is_the_free_buoys_at_the_same_pose() {
+    let mut free = solved(moored_buoy());
+    let (position, rotation) = free.body_pose(0).expect("free body");
+    let want = free.body_stiffness(0).expect("free stiffness");
+    let mut coupled = solved(buoy_at(BodyKind::Coupled, position, rotation));
+    let got = coupled.body_stiffness(0).expect("coupled stiffness");
+    let size = want.iter().flatten().map(|v| v * v).sum::<f64>().sqrt();
+    let worst = (0..36)
+        .map(|k| (want[k / 6][k % 6] - got[k / 6][k % 6]).abs())
+        .fold(0.0, f64::max);
+    eprintln!(
+        "coupled against free stiffness: {:.1e} of {size:.3e}",
+        worst / size
+    );
+
+    assert!(worst < 1e-9 * size, "{:e}", worst / size);
+    assert!(
+        coupled.coupled_point_stiffness(1).is_none(),
+        "an anchor is not coupled"
+    );
+}
+
+/// A coupled point holding one straight line, weightless, stretched to
+/// l = 1.01 L0 from an anchor: its stiffness is the elastic string's,
+/// K = EA / L0 e e^T + T / l (1 - e e^T) (T = EA (l - L0) / L0 the
+/// tension, e along the line), exact for the straight line the elements
+/// represent; to round-off (1e-9 of EA / L0).
+#[test]
+fn a_coupled_points_stiffness_is_a_stretched_strings() {
+    let (l0, stretch) = (20.0, 1.01);
+    let e = [0.6, 0.0, 0.8];
+    let top: [f64; 3] = std::array::from_fn(|c| stretch * l0 * e[c]);
+    let points = vec![
+        Point::fixed([0.0; 3]),
+        Point::coupled(top, stancf::motion::CoupledMotion::NONE),
+    ];
+    let line = Line {
+        model: line_model([0.0; 3], top, l0, Vec::new()),
+        ends: [End::Point(0), End::Point(1)],
+    };
+    let system = System::new(vec![line], points, [0.0; 3]).expect("system");
+    let statics = solved(system);
+    let k = statics.coupled_point_stiffness(1).expect("stiffness");
+    let tension = EA * (stretch - 1.0);
+    let mut worst = 0.0f64;
+    for i in 0..3 {
+        for j in 0..3 {
+            let delta = if i == j { 1.0 } else { 0.0 };
+            let want = EA / l0 * e[i] * e[j] + tension / (stretch * l0) * (delta - e[i] * e[j]);
+            worst = worst.max((k[i][j] - want).abs());
+        }
+    }
+    eprintln!(
+        "stretched string's stiffness: {worst:.1e} of {:.3e} N/m",
+        EA / l0
+    );
+    assert!(worst < 1e-9 * EA / l0, "{worst:e}");
+    assert!(statics.coupled_point_stiffness(0).is_none());
 }
 
 /// A body hanging by two lines from points 1 m either side of its

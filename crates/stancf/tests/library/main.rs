@@ -31,6 +31,7 @@ mod mhk_rm1_lines;
 mod motion_tables;
 mod no_allocation;
 mod parallel_elements;
+mod pinned_bodies;
 mod planar;
 mod points_in_water;
 mod quadrature_rank;

@@ -53,7 +53,7 @@ fn unknown_or_impossible_channels_are_refused_naming_the_line() {
         ("P1RX", "no \"RX\" at points"),
         ("L1N5", "no quantity"),
         ("L1N5QQ", "unknown quantity \"QQ\""),
-        ("Rod1PX", "rod channels are not written"),
+        ("Rod1PX", "there is no rod 1 (0 rods)"),
         ("Body1PX", "there is no body 1 (0 bodies)"),
         ("Tension1", "unknown channel"),
         ("FairTen", "no object number"),

@@ -204,15 +204,73 @@ fn line_ends_at_rod_ends_are_read_in_any_case_and_checked() {
 }
 
 #[test]
-fn empty_rod_sections_are_fine_and_rod_channels_are_refused() {
+fn empty_rod_sections_are_fine() {
     let deck = parse(&with(
         "--- POINTS ---",
         "--- ROD TYPES ---\n--- RODS ---\nID RodType\n(#) (-)\n--- POINTS ---",
     ))
     .unwrap();
     assert!(deck.rods.is_empty() && deck.rod_types.is_empty());
-    let text = with_rod("1 Can Free 0 0 -5 1 0 -5 2 -").replace("FairTen1", "FairTen1\nRod1PX");
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "Rod1PX")));
-    assert!(e.message.contains("rod channels are not written"), "{e}");
+}
+
+/// `R<n><q>` and `Rod<n><q>` (any case) as `MoorDyn2.cpp` reads them,
+/// the rod as a whole (`Rod::GetRodOutput` with no node).
+#[test]
+fn rod_channels_parse_as_moordyn_reads_them() {
+    let outputs = "Rod1PX R1PZ rod1ry R1RVX Rod1VZ R1AY R1RAX Rod1TenA R1TB rod1sub R1FZ \
+                   Rod1MY";
+    let text = with_rod("1 Can Free 0 0 -5 1 0 -5 2 -").replace("FairTen1", outputs);
+    let deck = parse(&text).unwrap();
+    use Axis::*;
+    use RodQuantity as Q;
+    let got: Vec<Channel> = deck.outputs.iter().map(|o| o.channel).collect();
+    let want = [
+        Q::Position(X),
+        Q::Position(Z),
+        Q::Rotation(Y),
+        Q::AngularVelocity(X),
+        Q::Velocity(Z),
+        Q::Acceleration(Y),
+        Q::AngularAcceleration(X),
+        Q::EndTension(LineEnd::A),
+        Q::EndTension(LineEnd::B),
+        Q::Submerged,
+        Q::Force(Z),
+        Q::Moment(Y),
+    ]
+    .map(|quantity| Channel::Rod { rod: 1, quantity });
+    assert_eq!(got, want);
+}
+
+/// What MoorDyn has no value for, a node, a rod RODS does not define:
+/// refused naming the line.
+#[test]
+fn rod_channels_moordyn_has_no_value_for_are_refused_naming_the_line() {
+    for (name, words) in [
+        (
+            "Rod1RZ",
+            "MoorDyn has no \"RZ\" of a rod (no rotation about its axis",
+        ),
+        ("R1RVZ", "no \"RVZ\" of a rod"),
+        ("R1RAZ", "no \"RAZ\" of a rod"),
+        ("Rod1N2PX", "node-level rod channels are not written"),
+        ("R1NAPZ", "node-level rod channels are not written"),
+        ("R1NBFX", "node-level rod channels are not written"),
+        ("Rod1T", "MoorDyn writes 0 for \"T\" of a rod"),
+        ("Rod1Ten", "MoorDyn writes 0 for \"TEN\" of a rod"),
+        ("Rod1QQ", "MoorDyn outputs no \"QQ\" of a rod"),
+        ("Rod1", "no quantity"),
+        ("Rod2PX", "there is no rod 2 (1 rods)"),
+        ("R0PX", "there is no rod 0 (1 rods)"),
+    ] {
+        let text = with_rod("1 Can Free 0 0 -5 1 0 -5 2 -")
+            .replace("FairTen1", &format!("FairTen1\n{name}"));
+        let e = error(&text);
+        assert_eq!(e.line, Some(line_of(&text, name)), "{name}");
+        assert!(
+            e.message.starts_with(&format!("output channel \"{name}\"")),
+            "{e}"
+        );
+        assert!(e.message.contains(words), "{name}: {e}");
+    }
 }

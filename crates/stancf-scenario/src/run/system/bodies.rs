@@ -7,15 +7,19 @@
 //!   points P (f_P the net force of the lines at P, as in points.csv).
 //! - MoorDyn's net force (`getFnet` of a free body, its `Body<n>FX..MZ`,
 //!   docs/moordyn-bodies-rods.md §2.3): the lines', the body's weight and
-//!   buoyancy (m - rho V) g at its centre of mass, and the water's drag
-//!   (B10); not its inertia, nor its added mass's. A fixed body's is its
-//!   lines' (MoorDyn-C writes 0 there, never computing it, §7.12 of the
-//!   note).
+//!   buoyancy (m - rho V) g at its centre of mass, its points' buoyancy
+//!   and given forces, its rods' buoyancy (B20)-(B21), and the water's
+//!   drag on it and its rods (B10), (B19), (B23); not its inertia, nor
+//!   its added mass's. A fixed body's is its lines' (MoorDyn-C writes 0
+//!   there, never computing it, §7.12 of the note).
 
 use crate::output::Num;
+use stancf::body::jet::{Jet, JetVec};
 use stancf::body::pose::{moordyn_angles, rotate, rotate_back};
+use stancf::body::terms::{Context, NV};
+use stancf::body::BodyWater;
 use stancf::system::{Body, BodyKind, Topology};
-use stancf::vec3::{add, cross, norm, scale, sub};
+use stancf::vec3::{add, cross, scale, sub};
 use std::io::Write;
 
 /// A body's pose and velocities at a written moment.
@@ -126,10 +130,9 @@ pub(super) fn body_rows(
 }
 
 /// A free body's own loads about its reference point: its weight and
-/// buoyancy (m - rho V) g at its centre of mass, and in water the drag
-/// of (B10): -1/2 rho diag(CdA) u |u| at the reference point, u = R^T
-/// (v_ref - U) its velocity in the water (body axes), and the moment
-/// -1/2 rho diag(CdA_r) Omega |Omega|.
+/// buoyancy (m - rho V) g at its centre of mass, the constant forces at
+/// its points (a point's buoyancy and given force, folded into the body),
+/// and in water [`water_loads`].
 fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     let water = body.water.as_ref();
     let (density, volume) = water.map_or((0.0, 0.0), |w| (w.density, w.volume));
@@ -137,17 +140,53 @@ fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64;
     let arm = rotate(&m.rotation, body.inertia.centre_of_mass);
     let mut force = weight;
     let mut moment = cross(arm, weight);
+    for (f, xi) in &body.loads {
+        force = add(force, *f);
+        moment = add(moment, cross(rotate(&m.rotation, *xi), *f));
+    }
     if let Some(w) = water {
-        let u = rotate_back(&m.rotation, sub(m.velocity, w.current));
-        let omega = rotate_back(&m.rotation, m.angular_velocity);
-        let (speed, spin) = (norm(u), norm(omega));
-        let drag: [f64; 3] =
-            std::array::from_fn(|k| -0.5 * w.density * w.drag_areas[k] * u[k] * speed);
-        let turning: [f64; 3] = std::array::from_fn(|k| {
-            -0.5 * w.density * w.rotational_drag_areas[k] * omega[k] * spin
-        });
-        force = add(force, rotate(&m.rotation, drag));
-        moment = add(moment, rotate(&m.rotation, turning));
+        let (f, about_centre) = water_loads(body, m, w);
+        force = add(force, f);
+        moment = add(moment, add(about_centre, cross(arm, f)));
+    }
+    (force, moment)
+}
+
+/// The water's loads on a free body at its motion `m`, as the core's step
+/// takes them (stancf::body::terms): the buoyancy of its rods' parts
+/// under the surface (B20)-(B21), and the drag of (B10) (-1/2 rho
+/// diag(CdA) u |u| at the reference point, u = R^T (v_ref - U), and the
+/// moment -1/2 rho diag(CdA_r) Omega |Omega|) with its rods' (B19) and
+/// the momentum the water keeps as their wet part changes (B23). The
+/// force and its moment about the centre of mass, global.
+fn water_loads(body: &Body, m: &BodyMotion, w: &BodyWater) -> ([f64; 3], [f64; 3]) {
+    let c = body.inertia.centre_of_mass;
+    let ctx = Context {
+        mass: body.inertia.mass,
+        inertia_at_centre: &body.inertia.inertia_at_centre,
+        centre_of_mass: c,
+        rotation_a: &m.rotation,
+        loads: &[],
+        water: Some(w),
+    };
+    let arm = rotate(&m.rotation, c);
+    let centre = add(m.position, arm);
+    let (mut force, mut moment) = ctx.buoyancy_at(centre);
+    // The twelve variables at theta = 0 (R = R_a, Omega = theta_dot), the
+    // pose's as variables: the rates of the rods' wet parts (B23) are
+    // their derivatives along the motion.
+    let v_g = add(m.velocity, cross(m.angular_velocity, arm));
+    let omega = rotate_back(&m.rotation, m.angular_velocity);
+    let mut v: [JetVec<NV>; 4] = [[Jet::constant(0.0); 3]; 4];
+    for i in 0..3 {
+        v[0][i] = Jet::constant(v_g[i]);
+        v[1][i] = Jet::variable(0.0, 3 + i);
+        v[2][i] = Jet::constant(omega[i]);
+        v[3][i] = Jet::variable(centre[i], 9 + i);
+    }
+    if let Some((on_centre, on_theta)) = ctx.drag(&v) {
+        force = add(force, on_centre.map(|f| f.v));
+        moment = add(moment, rotate(&m.rotation, on_theta.map(|f| f.v)));
     }
     (force, moment)
 }

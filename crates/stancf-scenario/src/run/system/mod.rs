@@ -4,6 +4,7 @@
 //! the time stepping; results per line, per point and per line end.
 
 mod bodies;
+mod rods;
 mod rows;
 mod stiffness;
 mod writers;
@@ -111,6 +112,7 @@ pub(super) fn run_system(
     if sc.analysis.kind == AnalysisKind::Dynamic {
         writers.times = super::times_of(&sc.analysis);
     }
+    writers.rods = rods::frames(&sc);
     let mut from_static = false;
     let mut matrices = Vec::new();
     if let Some(st) = static_solve.as_mut() {

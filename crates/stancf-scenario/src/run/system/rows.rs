@@ -2,11 +2,43 @@
 //! equilibrium as one [`SystemRow`] (lines, points, bodies, end forces,
 //! energies and works), from a simulation or a static solve.
 
-use super::bodies::{at_rest, body_rows, stepped};
-use super::writers::SystemRow;
+use super::bodies::{at_rest, body_rows, stepped, BodyRow};
 use crate::scenario::EndForces;
 use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
 use stancf::water::PointInWater;
+use stancf::{Model, State};
+
+/// One written moment of a system.
+pub(super) struct SystemRow<'a> {
+    pub t: f64,
+    /// Each line's model and state.
+    pub lines: Vec<(&'a Model, &'a State)>,
+    /// Each point's position, velocity and the net force of its lines.
+    pub points: Vec<([f64; 3], [f64; 3], [f64; 3])>,
+    /// Each point's net force as MoorDyn's `Fnet` (its lines', its
+    /// weight, buoyancy and given force, and the water's drag and the
+    /// fluid's inertia on it; not its own inertia nor its added mass's).
+    pub point_net: Vec<[f64; 3]>,
+    /// Each body's pose, velocities and loads.
+    pub bodies: Vec<BodyRow>,
+    /// Each line's end forces (A, B; None for a loose end).
+    pub ends: Vec<[Option<EndForce>; 2]>,
+    /// Kinetic, strain and gravity energies of lines and points.
+    pub energies: [f64; 3],
+    pub iterations: usize,
+    pub residual: f64,
+    /// Work of the lines' axial damping so far (written with
+    /// `with_damping`).
+    pub damping_work: f64,
+    /// Work of the water and the seabed on lines and points so far
+    /// (written with `with_water`).
+    pub water_work: f64,
+    pub seabed_work: f64,
+    /// Each line's seabed nodal forces where the row knows them (a static
+    /// equilibrium, whose friction resists the slide from its targets,
+    /// (W48)); None: those of the contact at the state's velocities.
+    pub seabed: Option<Vec<Vec<[f64; 3]>>>,
+}
 
 /// The end forces of line i of the last step: its means or their
 /// estimates at its end (docs/method.md §6.5, (M23), (M23a)).

@@ -1,6 +1,8 @@
-//! The free bodies' mooring stiffness at a system's static equilibrium
-//! (docs/interface.md, "Systems"; docs/method.md §15.9, (B16)):
-//! `stiffness.csv` and summary.json's `stiffness` of each free body.
+//! The free and coupled bodies' mooring stiffness at a system's static
+//! equilibrium (docs/interface.md, "Systems"; docs/method.md §15.9,
+//! (B16)): `stiffness.csv` and summary.json's `stiffness` of each free
+//! or coupled body (a coupled body's about its reference point where the
+//! scenario puts it).
 //!
 //! K = -d[F; M]/d[dr; dphi]: rows the lines' force F and moment M about
 //! the body's reference point (global axes), columns the reference
@@ -32,8 +34,11 @@ const MISSING: &str = "no mooring stiffness: the rest of the system is singular 
 /// Each free body's matrix at the equilibrium `st` has converged to (in
 /// the order of the system's bodies); warns of a body without one.
 pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec<BodyStiffness> {
-    let free: Vec<usize> = st.system().free_bodies().collect();
-    free.into_iter()
+    let moving: Vec<usize> = (0..st.system().bodies().len())
+        .filter(|&b| st.system().bodies()[b].kind != stancf::system::BodyKind::Fixed)
+        .collect();
+    moving
+        .into_iter()
         .map(|b| {
             let k = st
                 .body_stiffness(b)

@@ -5,47 +5,16 @@
 //! `tensions.csv` and `history.csv`.
 
 use super::bodies::BodyRow;
+use super::rods::{rod_value, RodFrame};
+use super::rows::SystemRow;
 use crate::moordyn::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
 use crate::output::{AtomicFile, Dest, Num, TimeGrid};
 use crate::run::writers::{node_rows, stress_rows, STRESS_POINTS_PER_ELEMENT};
 use crate::scenario::{OutputChannel, OutputFiles};
 use stancf::model::SLOT_R;
 use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
-use stancf::system::EndForce;
 use stancf::{Model, State};
 use std::io::Write;
-
-/// One written moment of a system.
-pub(super) struct SystemRow<'a> {
-    pub t: f64,
-    /// Each line's model and state.
-    pub lines: Vec<(&'a Model, &'a State)>,
-    /// Each point's position, velocity and the net force of its lines.
-    pub points: Vec<([f64; 3], [f64; 3], [f64; 3])>,
-    /// Each point's net force as MoorDyn's `Fnet` (its lines', its
-    /// weight, buoyancy and given force, and the water's drag and the
-    /// fluid's inertia on it; not its own inertia nor its added mass's).
-    pub point_net: Vec<[f64; 3]>,
-    /// Each body's pose, velocities and loads.
-    pub bodies: Vec<BodyRow>,
-    /// Each line's end forces (A, B; None for a loose end).
-    pub ends: Vec<[Option<EndForce>; 2]>,
-    /// Kinetic, strain and gravity energies of lines and points.
-    pub energies: [f64; 3],
-    pub iterations: usize,
-    pub residual: f64,
-    /// Work of the lines' axial damping so far (written with
-    /// `with_damping`).
-    pub damping_work: f64,
-    /// Work of the water and the seabed on lines and points so far
-    /// (written with `with_water`).
-    pub water_work: f64,
-    pub seabed_work: f64,
-    /// Each line's seabed nodal forces where the row knows them (a static
-    /// equilibrium, whose friction resists the slide from its targets,
-    /// (W48)); None: those of the contact at the state's velocities.
-    pub seabed: Option<Vec<Vec<[f64; 3]>>>,
-}
 
 /// The files of one line (None: left out by `output.files`).
 struct LineFiles {
@@ -76,6 +45,8 @@ pub(super) struct SystemWriters {
     water: bool,
     /// How times are written (a dynamic run's: k dt in decimals).
     pub(super) times: TimeGrid,
+    /// The scenario's rods, for `Rod<n>` channels ([`super::rods::frames`]).
+    pub(super) rods: Vec<RodFrame>,
 }
 
 impl SystemWriters {
@@ -179,6 +150,7 @@ impl SystemWriters {
             damping: with_damping,
             water: with_water,
             times: TimeGrid::default(),
+            rods: Vec::new(),
         })
     }
 
@@ -209,7 +181,7 @@ impl SystemWriters {
             let w = file.writer();
             write!(w, "{}", Num(t))?;
             for c in channels.iter() {
-                let v = channel_value(c, row);
+                let v = channel_value(c, row, &self.rods);
                 if !v.is_finite() {
                     return Err(non_finite("output channel", row.t));
                 }
@@ -408,8 +380,8 @@ fn node_load_rows(
 /// The value of a MoorDyn output channel at a row (ids are 1-based, as
 /// the deck's): line end tensions (0 before the first step of a run from
 /// the straight shape, where no end force is known yet), point and line
-/// node positions and velocities.
-fn channel_value(c: &Channel, row: &SystemRow) -> f64 {
+/// node positions and velocities, bodies' and rods' (`rods`) values.
+fn channel_value(c: &Channel, row: &SystemRow, rods: &[RodFrame]) -> f64 {
     let axis = |a: Axis| match a {
         Axis::X => 0,
         Axis::Y => 1,
@@ -448,6 +420,7 @@ fn channel_value(c: &Channel, row: &SystemRow) -> f64 {
             }
         }
         Channel::Body { body, quantity } => body_value(&row.bodies[body - 1], quantity),
+        Channel::Rod { rod, quantity } => rod_value(&rods[rod - 1], quantity, row),
     }
 }
 

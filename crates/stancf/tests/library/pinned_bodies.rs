@@ -1,0 +1,247 @@
+//! Bodies pinned at a point to a fixed point (docs/method.md §15.12,
+//! (B24)-(B26)): MoorDyn's pinned rods, turning freely about their end A.
+
+use crate::common::{
+    assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, light_rope,
+};
+use stancf::body::{BodyWater, Rod};
+use stancf::system::{
+    Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation, SystemStatics,
+};
+use stancf::vec3::{norm, scale, sub};
+use stancf::{Cable, ElementType, Material, Model, StaticSettings, StepSettings, TimeScheme};
+
+const G: f64 = 9.81;
+const RHO: f64 = 1025.0;
+
+/// A rod of `length` and 0.1 m across, 10 kg/m, from `a` along `axis`
+/// (unit), drag and added mass `cd`, `ca` (and on its caps).
+fn rod(a: [f64; 3], axis: [f64; 3], length: f64, cd: f64, ca: f64) -> Rod {
+    Rod {
+        end_a: a,
+        end_b: std::array::from_fn(|c| a[c] + length * axis[c]),
+        diameter: 0.1,
+        mass_per_length: 10.0,
+        drag_coefficient: cd,
+        added_mass_coefficient: ca,
+        end_drag_coefficient: cd,
+        end_added_mass_coefficient: ca,
+        segments: 4,
+    }
+}
+
+/// A straight light rope (4 elements, no weight) from `start` to `end`.
+fn rope(start: [f64; 3], end: [f64; 3]) -> Model {
+    let chord = norm(sub(end, start));
+    let cable = Cable::straight(chord, 4, ElementType::Sac2)
+        .with_direction(scale(1.0 / chord, sub(end, start)))
+        .with_origin(start);
+    Model::new(cable, light_rope(), Default::default(), vec![]).expect("model")
+}
+
+/// `body` (body 0) pinned at its reference point to a fixed point there
+/// (point 1), holding a light rope at its point `local` from a fixed
+/// point at `anchor` (point 2), the lines starting to move with it.
+fn pinned(mut body: Body, local: [f64; 3], anchor: [f64; 3]) -> (System, Vec<stancf::State>) {
+    let at = body.position;
+    body.pin = Some(Pin {
+        local: [0.0; 3],
+        point: 1,
+    });
+    let line = Line {
+        model: rope(anchor, body.point(local)),
+        ends: [End::Point(2), End::Point(0)],
+    };
+    let points = vec![
+        Point::on_body(0, local),
+        Point::fixed(at),
+        Point::fixed(anchor),
+    ];
+    let system =
+        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let mut states: Vec<stancf::State> = system
+        .lines()
+        .iter()
+        .map(|l| l.model.initial_state())
+        .collect();
+    system.start_lines_with_bodies(&mut states);
+    (system, states)
+}
+
+/// A rod 2 m long hanging from a pin at its end A, released 0.01 rad
+/// from the vertical in air, swings as the physical pendulum:
+/// T = 2 pi sqrt(I_A / (m g L/2)) (1 + theta0^2/16 + 11 theta0^4/3072),
+/// I_A = m (L^2/3 + d^2/16) the solid cylinder's about its end; the
+/// rope it holds is slack and weighs nothing (2 g of the rod's 20 kg pull
+/// on it through its 1 % stretch at most, 1e-4 of the period). The
+/// period from three zero crossings of its angle (linearly between
+/// steps: the angle is straight there to (omega dt)^2 / 6 of a step,
+/// 1e-5 s) to 1e-4 of it; the pinned end stays at the pin to 1e-12 m.
+#[test]
+fn a_pinned_rod_swings_as_a_physical_pendulum() {
+    let (l, d, theta0) = (2.0, 0.1, 0.01f64);
+    let axis = [theta0.sin(), 0.0, -theta0.cos()];
+    let top = [0.0, 0.0, 5.0];
+    let body = Body::rod(BodyKind::Free, top, rod(top, axis, l, 0.0, 0.0));
+    let (system, states) = pinned(body, [0.0; 3], [0.0, 0.5, 5.0]);
+    let m = 10.0 * l;
+    let inertia = m * (l * l / 3.0 + d * d / 16.0);
+    let t0 = 2.0 * std::f64::consts::PI * (inertia / (m * G * l / 2.0)).sqrt();
+    let want = t0 * (1.0 + theta0.powi(2) / 16.0 + 11.0 * theta0.powi(4) / 3072.0);
+    let dt = t0 / 200.0;
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, states, settings).expect("simulation");
+    let angle = |sim: &SystemSimulation| {
+        let body = sim.free_body(0).unwrap();
+        let b = body.point([l * axis[0], 0.0, l * axis[2]]);
+        let a = body.point([0.0; 3]);
+        (b[0] - a[0]).atan2(a[2] - b[2])
+    };
+    let (mut before, mut crossings, mut drift) = (angle(&sim), Vec::new(), 0.0f64);
+    while crossings.len() < 7 {
+        let t = sim.time();
+        sim.step().expect("step");
+        let now = angle(&sim);
+        if before * now < 0.0 {
+            crossings.push(t + dt * before / (before - now));
+        }
+        before = now;
+        drift = drift.max(norm(sub(sim.free_body(0).unwrap().point([0.0; 3]), top)));
+    }
+    let period = (crossings[6] - crossings[0]) / 3.0;
+    eprintln!(
+        "pinned rod: period {period:.6} s against {want:.6} s ({:.1e}); the pin moved {drift:.1e} m",
+        (period - want).abs() / want
+    );
+    assert!((period - want).abs() < 1e-4 * want, "{period} {want}");
+    assert!(drift < 1e-12, "{drift:e}");
+}
+
+/// A rod pinned at its end A 5 m under water, swinging wide and turning
+/// about its axis with its drag and added mass (in still water: in a
+/// current the added mass's kinetic energy of the relative flow is not
+/// conserved, pinned or not): its energy less the water's work is kept to
+/// the step's error at fourth order (the pin does no work).
+#[test]
+fn a_pinned_rod_in_water_keeps_its_energy_less_the_waters_work() {
+    assert_energy_balance_falls_at_fourth_order(
+        |dt| {
+            let a = [0.0, 0.0, -5.0];
+            let axis = [0.6, 0.0, -0.8];
+            let mut body = Body::rod(BodyKind::Free, a, rod(a, axis, 1.5, 1.0, 1.0));
+            body.water = Some(BodyWater {
+                density: RHO,
+                ..BodyWater::default()
+            });
+            body.angular_velocity = [0.4, 1.5, 0.8];
+            let (system, states) = pinned(body, [0.75 * 0.6, 0.0, -0.75 * 0.8], [1.0, 1.0, -6.0]);
+            galerkin_energy_drift(system, states, dt)
+        },
+        1e-3,
+    );
+}
+
+/// The step's Jacobian with a pinned rod of every coefficient, turning
+/// in a current and holding a rope: the derivative of its rows
+/// ((B25)'s carried rows and (B24)'s constraints), by central
+/// differences.
+#[test]
+fn the_steps_jacobian_with_a_pinned_rod_is_the_derivative_of_its_rows() {
+    let a = [0.2, -0.1, -3.0];
+    let axis = stancf::vec3::normalized([0.8, 0.6, 0.6]);
+    let mut body = Body::rod(BodyKind::Free, a, rod(a, axis, 1.2, 1.2, 1.0));
+    body.water = Some(BodyWater {
+        density: RHO,
+        current: [0.3, -0.2, 0.05],
+        ..BodyWater::default()
+    });
+    body.angular_velocity = [0.5, 1.0, -0.7];
+    let (system, states) = pinned(body, scale(0.8, axis), [1.5, 0.5, -2.0]);
+    let settings = StepSettings {
+        time_step: 0.01,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, states, settings).unwrap();
+    let err = crate::common::step_jacobian_error(&mut sim, 1e-6);
+    eprintln!("step Jacobian with a pinned rod: rel. error {err:.1e}");
+    assert!(err < 1e-7, "{err:e}");
+}
+
+/// A buoyant rod pinned at its foot in a current leans until its lift's
+/// moment about the pin balances its drag's: (rho V - m) g sin(a) =
+/// 1/2 rho Cd d L U^2 cos^2(a) (the drag across it, 1/2 rho Cd d (U
+/// cos a)^2 per length, has the moment L^2/2 of it; the lift acts at L/2),
+/// to the static tolerance (1e-10 rad).
+#[test]
+fn a_buoyant_rod_pinned_at_its_foot_leans_in_a_current() {
+    let (l, d, u) = (4.0, 0.3, 0.5);
+    let a = [0.0, 0.0, -18.0];
+    let mut r = rod(a, [0.0, 0.0, 1.0], l, 1.2, 1.0);
+    r.diameter = d;
+    r.end_drag_coefficient = 0.0;
+    let lift = (RHO * r.volume() - 10.0 * l) * G;
+    let mut body = Body::rod(BodyKind::Free, a, r);
+    body.water = Some(BodyWater {
+        density: RHO,
+        current: [u, 0.0, 0.0],
+        ..BodyWater::default()
+    });
+    let material = Material {
+        youngs_modulus: 1e9,
+        density: 1000.0,
+        area: 1e-4,
+        second_moment: 1e-12,
+        axial_damping: 0.0,
+    };
+    // A light line from the rod's top to a buoy point far up, slack: it
+    // holds nothing (the pin does), but a system needs a line.
+    let top = [0.0, 0.0, -18.0 + l];
+    let cable = Cable::straight(3.0, 4, ElementType::Sac2)
+        .with_origin(top)
+        .with_direction([0.0, 0.0, 1.0]);
+    let model = Model::new(cable, material, Default::default(), vec![]).expect("model");
+    body.pin = Some(Pin {
+        local: [0.0; 3],
+        point: 1,
+    });
+    let points = vec![Point::on_body(0, [0.0, 0.0, l]), Point::fixed(a)];
+    let line = Line {
+        model,
+        ends: [End::Point(0), End::Loose],
+    };
+    let system =
+        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let settings = StaticSettings {
+        tolerance: 1e-10,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let (reference, rotation) = statics.body_pose(0).expect("a free body");
+    let q = [rotation[0][2], rotation[1][2], rotation[2][2]];
+    let alpha = q[0].atan2(q[2]);
+    let drag = 0.5 * RHO * 1.2 * d * l * u * u;
+    let balance = |x: f64| lift * x.sin() - drag * x.cos().powi(2);
+    let mut want = 0.0f64;
+    for _ in 0..50 {
+        let slope = lift * want.cos() + 2.0 * drag * want.cos() * want.sin();
+        want -= balance(want) / slope;
+    }
+    eprintln!("pinned lean {alpha:.10} rad, balance {want:.10} rad; the foot at {reference:?}");
+    assert!((alpha - want).abs() < 1e-8, "{alpha} against {want}");
+    assert!(
+        norm(sub(reference, a)) < 1e-10,
+        "the pin holds: {reference:?}"
+    );
+    assert!(
+        statics.body_stiffness(0).is_none(),
+        "a pinned body has no 6 x 6"
+    );
+}
