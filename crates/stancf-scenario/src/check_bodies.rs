@@ -34,15 +34,19 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
                 0 => String::new(),
                 _ => format!("; rods {} fixed in it", rods.join(", ")),
             };
-            let own_rod = sc
-                .rods
-                .iter()
-                .find(|r| r.holder == RodHolder::Free { body: b });
+            let own_rod = sc.rods.iter().find(|r| r.own_body() == Some(b));
             let what = if let Some(r) = own_rod {
-                format!(
-                    "free rod {} (6 degrees of freedom; its mass and water are the rod's)",
-                    r.id
-                )
+                match r.pin_point() {
+                    Some(p) => format!(
+                        "pinned rod {} (3 degrees of freedom, turning about its end A held at \
+                         point {}; its mass and water are the rod's)",
+                        r.id, sc.points[p].id
+                    ),
+                    None => format!(
+                        "free rod {} (6 degrees of freedom; its mass and water are the rod's)",
+                        r.id
+                    ),
+                }
             } else if body.is_free() {
                 let water = if sc.water.is_some() {
                     format!(
@@ -86,8 +90,8 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
 
 /// The system's degrees of freedom: the lines' nodal coordinates, less 3
 /// at every attached line end (its position is its point's), plus 3 per
-/// free point and 6 per free body, less 2 per clamped end (its
-/// direction).
+/// free point and 6 per free body, less 3 per pinned body (its pinned
+/// point's position) and 2 per clamped end (its direction).
 pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
     let coordinates: usize = system.lines().iter().map(|l| l.model.dofs()).sum();
     let ends: usize = sc
@@ -101,12 +105,13 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
         .filter(|p| p.kind == PointType::Free)
         .count();
     let free_bodies = sc.bodies.iter().filter(|b| b.is_free()).count();
+    let pins = sc.rods.iter().filter_map(|r| r.pin_point()).count();
     let clamps: usize = sc
         .lines
         .iter()
         .map(|l| l.clamps.iter().flatten().count())
         .sum();
-    let dofs = coordinates + 3 * free_points + 6 * free_bodies - 3 * ends - 2 * clamps;
+    let dofs = coordinates + 3 * free_points + 6 * free_bodies - 3 * ends - 3 * pins - 2 * clamps;
     let mut parts = vec![format!("{coordinates} nodal coordinates of the lines")];
     parts.push(format!("less 3 at each of {ends} attached line ends"));
     if free_points > 0 {
@@ -114,6 +119,9 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
     }
     if free_bodies > 0 {
         parts.push(format!("6 per free body ({free_bodies})"));
+    }
+    if pins > 0 {
+        parts.push(format!("less 3 per pinned body ({pins})"));
     }
     if clamps > 0 {
         parts.push(format!("less 2 per clamped end ({clamps})"));
@@ -133,6 +141,11 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
         let holder = match r.holder {
             RodHolder::Fixed => "fixed (held where it is)".to_string(),
             RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
+            RodHolder::Pinned { body } => format!(
+                "pinned at end A to point {} (fixed; the rod turns freely about it), body {}",
+                r.pin_point().map_or(0, |p| sc.points[p].id),
+                sc.bodies[body].id
+            ),
             RodHolder::Body { body } => format!(
                 "fixed in {} body {}",
                 sc.bodies[body].type_word(),

@@ -127,6 +127,50 @@ fn a_static_analysis_writes_the_bodys_equilibrium_at_t_1() {
     }
 }
 
+/// A constant force at the buoy's reference point and a constant moment
+/// (`force`, `moment`, docs/method.md §15.13, (B27)): at the equilibrium
+/// the lines' force and moment about the reference point balance them
+/// with the net lift at the centre of mass, to 1e-6 of the lift (the
+/// static tolerance); the force pulls it 2.5 m sideways, the moment turns
+/// it. On a fixed body the keys are refused naming them.
+#[test]
+fn a_constant_force_and_moment_on_the_buoy_are_held_by_its_lines() {
+    let (fx, mz) = (3000.0, 2000.0);
+    let keys = format!("force = [{fx:?}, 0.0, 0.0]\nmoment = [0.0, 0.0, {mz:?}]");
+    let out = run_ok("buoy-force", &moored_buoy(&keys, "type = \"static\""));
+    let (_, rows) = read_csv(&out.join("bodies.csv"));
+    let row = &rows[0];
+    let (force, moment) = (three(row, 14), three(row, 17));
+    let r = rotation_of_angles(three(row, 5));
+    let arm: [f64; 3] = std::array::from_fn(|i| -0.3 * r[i][2]);
+    let lift = [0.0, 0.0, LIFT];
+    let m_lift = cross(arm, lift);
+    let f: [f64; 3] = std::array::from_fn(|i| force[i] + lift[i] + [fx, 0.0, 0.0][i]);
+    let m: [f64; 3] = std::array::from_fn(|i| moment[i] + m_lift[i] + [0.0, 0.0, mz][i]);
+    eprintln!(
+        "buoy under a force and a moment: x {:.3} m, yaw {:.3} deg; imbalance {:.1e}, {:.1e}",
+        row[2],
+        row[7],
+        norm(f) / LIFT,
+        norm(m) / LIFT
+    );
+    assert!(
+        norm(f) < 1e-6 * LIFT && norm(m) < 1e-6 * LIFT,
+        "{f:?} {m:?}"
+    );
+    assert!(row[2] > 0.1 && row[7].abs() > 0.1, "it moves and turns");
+    let fixed = moored_buoy("", "type = \"static\"").replace("type = \"free\"", "type = \"fixed\"");
+    let fixed = fixed.replace(
+        "mass = 500.0\ncentre_of_mass = [0.0, 0.0, -0.3]\ninertia = [300.0, 300.0, 200.0]\nvolume = 2.0\n",
+        "moment = [0.0, 0.0, 1.0]\n",
+    );
+    expect_input_error(
+        "fixed-body-moment",
+        &fixed,
+        &["bodies[0].moment", "a fixed body"],
+    );
+}
+
 /// In a uniform current of 0.5 m/s along x the buoy's lines hold its
 /// drag 1/2 rho CdA |U| U (CdA 1 m^2 on every axis: 128.1 N whatever its
 /// tilt) with its lift, to 1e-6 of the lift, as at rest (the static

@@ -8,10 +8,12 @@
 //!   The attachment is read as MoorDyn's `decomposeString` splits it
 //!   (letters, digits, letters): `Fixed`, `Fix`, `Anchor` hold the rod
 //!   (global ends); `Free`, `Point`, `Con` free it; `Body<n>` fixes it in
-//!   body n (ends in the body's axes from its reference point). Pinned
-//!   (`Pinned`, `Pin`, `Body<n>Pinned`) and coupled (`Coupled`, `Vessel`,
-//!   `Cpld`, `CoupledPinned`...) rods are refused by name, as is any
-//!   other word.
+//!   body n (ends in the body's axes from its reference point);
+//!   `Pinned`, `Pin` (digits after it ignored: `Pinned1`) pin its end A
+//!   where it is (global ends), `Body<n>Pinned`, `Body<n>Pin` at body
+//!   n's point (body axes), the rod turning freely about it (§1.3).
+//!   Coupled rods (`Coupled`, `Vessel`, `Cpld`, `CoupledPinned`...) are
+//!   refused by name, as is any other word.
 
 use super::ends::{decompose, LineAttachment};
 use super::layout::{Row, Section};
@@ -50,6 +52,13 @@ pub enum RodAttachment {
     /// `Body<n>`: fixed in body n (its id, from 1), its ends in the
     /// body's axes from its reference point.
     Body(usize),
+    /// `Pinned` or `Pin`: end A held where it is (global ends), the rod
+    /// turning freely about it (three degrees of freedom).
+    Pinned,
+    /// `Body<n>Pinned` or `Body<n>Pin`: end A held at body n's point
+    /// (its ends in the body's axes from its reference point), the rod
+    /// turning freely about it.
+    BodyPinned(usize),
 }
 
 /// A row of `RODS`.
@@ -179,24 +188,27 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
     let (let1, num1, let2) = decompose(w);
     let refuse =
         |why: &str| DeckError::at(row.line, format!("rod {id} is attached to \"{w}\": {why}"));
-    const PINNED: &str = "pinned rods are not built yet (a Fixed, Free or Body<n> rod is)";
-    const COUPLED: &str = "coupled rods are not built yet (a Fixed, Free or Body<n> rod is)";
+    const COUPLED: &str = "coupled rods are not built yet (a Fixed, Free, Pinned, Body<n> or \
+                           Body<n>Pinned rod is; a rod pinned to a host's motion is not)";
     match let1.as_str() {
         "ANCHOR" | "FIXED" | "FIX" => Ok(RodAttachment::Fixed),
         "POINT" | "CON" | "FREE" => Ok(RodAttachment::Free),
-        "PINNED" | "PIN" => Err(refuse(PINNED)),
+        // MoorDyn-C reads `Pinned1` as `Pinned` (the digits ignored).
+        "PINNED" | "PIN" => Ok(RodAttachment::Pinned),
         "VESSEL" | "VES" | "COUPLED" | "CPLD" | "VESSELPINNED" | "VESPIN" | "CPLDPIN"
         | "COUPLEDPINNED" => Err(refuse(COUPLED)),
         "BODY" => {
-            if matches!(let2.as_str(), "PINNED" | "PIN") {
-                return Err(refuse(PINNED));
-            }
-            if !let2.is_empty() {
-                return Err(refuse(
-                    "a rod on a body is written Body<n> (fixed in body n) or Body<n>Pinned",
-                ));
-            }
+            let pinned = match let2.as_str() {
+                "" => false,
+                "PINNED" | "PIN" => true,
+                _ => {
+                    return Err(refuse(
+                        "a rod on a body is written Body<n> (fixed in body n) or Body<n>Pinned",
+                    ))
+                }
+            };
             match num1.parse::<usize>() {
+                Ok(n) if n >= 1 && pinned => Ok(RodAttachment::BodyPinned(n)),
                 Ok(n) if n >= 1 => Ok(RodAttachment::Body(n)),
                 _ => Err(refuse(
                     "a rod on a body names the body's number, e.g. Body1",
@@ -204,13 +216,14 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
             }
         }
         _ => Err(refuse(
-            "unknown attachment; known: Fixed (Anchor, Fix), Free (Point, Con), Body<n> \
-             (fixed in body n)",
+            "unknown attachment; known: Fixed (Anchor, Fix), Free (Point, Con), Pinned (Pin), \
+             Body<n> (fixed in body n), Body<n>Pinned",
         )),
     }
 }
 
-/// Checks what stands on the rods: the body of a `Body<n>` rod exists,
+/// Checks what stands on the rods: the body of a `Body<n>` or
+/// `Body<n>Pinned` rod exists,
 /// and every rod a line end names exists.
 pub(crate) fn check_rods(
     rods: &[DeckRod],
@@ -218,7 +231,7 @@ pub(crate) fn check_rods(
     lines: &[DeckLine],
 ) -> Result<(), DeckError> {
     for r in rods {
-        if let RodAttachment::Body(n) = r.attachment {
+        if let RodAttachment::Body(n) | RodAttachment::BodyPinned(n) = r.attachment {
             if n > bodies {
                 return Err(DeckError::at(
                     r.line,

@@ -56,6 +56,10 @@ pub struct SystemBody {
     /// at t = 0.
     pub velocity: [f64; 3],
     pub angular_velocity: [f64; 3],
+    /// A constant force at the reference point and a constant moment
+    /// (global, N and N m; docs/method.md §15.13).
+    pub force: [f64; 3],
+    pub moment: [f64; 3],
 }
 
 impl SystemBody {
@@ -76,6 +80,8 @@ impl SystemBody {
             ca: [0.0; 3],
             velocity: [0.0; 3],
             angular_velocity: [0.0; 3],
+            force: [0.0; 3],
+            moment: [0.0; 3],
         }
     }
 
@@ -139,7 +145,7 @@ pub fn moments_of_a_body(m: [f64; 3]) -> bool {
 }
 
 /// The keys of `[[bodies]]` that only a free body takes.
-const FREE_KEYS: [&str; 9] = [
+const FREE_KEYS: [&str; 11] = [
     "mass",
     "centre_of_mass",
     "inertia",
@@ -149,14 +155,17 @@ const FREE_KEYS: [&str; 9] = [
     "ca",
     "velocity",
     "angular_velocity",
+    "force",
+    "moment",
 ];
 
 /// `[[bodies]]`: `id` (required, unique), `type` ("free", "fixed" or
 /// "coupled", required), `position` (required), `angles` (degrees, default 0); a
 /// free body's `mass` (> 0) and `inertia` (the three moments, each less
 /// than the sum of the other two), required, `centre_of_mass`,
-/// `volume`, `cda`, `rotational_cda`, `ca` (>= 0), `velocity` and
-/// `angular_velocity` (default 0). A fixed body is held at its pose, a
+/// `volume`, `cda`, `rotational_cda`, `ca` (>= 0), `velocity`,
+/// `angular_velocity`, and a constant `force` (at the reference point)
+/// and `moment` (global, N and N m) (default 0). A fixed body is held at its pose, a
 /// coupled body moved by a coupling code (the host carries its mass,
 /// inertia and water): the keys of a free body are refused there, naming
 /// the key.
@@ -257,6 +266,8 @@ fn free_body(
             r.angular_velocity.as_deref(),
             [0.0; 3],
         )?,
+        force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
+        moment: ctx.vector_or(&key("moment"), r.moment.as_deref(), [0.0; 3])?,
         ..body
     })
 }

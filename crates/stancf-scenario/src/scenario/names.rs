@@ -75,7 +75,7 @@ impl Names {
     /// rod's end by the rod.
     pub fn with_rods(mut self, rods: &[super::rod_parts::SystemRod], first_point: usize) -> Names {
         for (k, r) in rods.iter().enumerate() {
-            if let super::rod_parts::RodHolder::Free { body } = r.holder {
+            if let Some(body) = r.own_body() {
                 self.rods.bodies.push((body, k));
             }
             for p in r.points.iter().flatten().filter(|p| **p >= first_point) {

@@ -228,13 +228,15 @@ pub(super) struct RawBody {
     pub(super) ca: Option<Vector>,
     pub(super) velocity: Option<Vector>,
     pub(super) angular_velocity: Option<Vector>,
+    pub(super) force: Option<Vector>,
+    pub(super) moment: Option<Vector>,
 }
 
 impl RawBody {
     /// Whether each key only a free body takes is given, in the order
     /// mass, centre_of_mass, inertia, volume, cda, rotational_cda, ca,
-    /// velocity, angular_velocity.
-    pub(super) fn free_keys(&self) -> [bool; 9] {
+    /// velocity, angular_velocity, force, moment.
+    pub(super) fn free_keys(&self) -> [bool; 11] {
         [
             self.mass.is_some(),
             self.centre_of_mass.is_some(),
@@ -245,6 +247,8 @@ impl RawBody {
             self.ca.is_some(),
             self.velocity.is_some(),
             self.angular_velocity.is_some(),
+            self.force.is_some(),
+            self.moment.is_some(),
         ]
     }
 }

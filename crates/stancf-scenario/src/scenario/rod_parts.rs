@@ -41,6 +41,10 @@ pub enum RodHolder {
     Free { body: usize },
     /// Fixed in body `body` (its index).
     Body { body: usize },
+    /// Pinned at its end A: body `body` (its index) is the rod, as a free
+    /// rod's, its end A held at the fixed point at that end (the rod's
+    /// `points[0]`, always there), turning freely about it.
+    Pinned { body: usize },
     /// A deck's free rod of zero length: free point `point` (its index).
     Point { point: usize },
 }
@@ -66,12 +70,30 @@ pub struct SystemRod {
 }
 
 impl SystemRod {
-    /// The body the rod is a part of (a free rod's own body, or the body
-    /// it is fixed in).
+    /// The body the rod is a part of (a free or pinned rod's own body, or
+    /// the body it is fixed in).
     pub fn body(&self) -> Option<usize> {
         match self.holder {
-            RodHolder::Free { body } | RodHolder::Body { body } => Some(body),
+            RodHolder::Free { body } | RodHolder::Pinned { body } | RodHolder::Body { body } => {
+                Some(body)
+            }
             RodHolder::Fixed | RodHolder::Point { .. } => None,
+        }
+    }
+
+    /// The body that is the rod (a free or pinned rod's), if it is one.
+    pub fn own_body(&self) -> Option<usize> {
+        match self.holder {
+            RodHolder::Free { body } | RodHolder::Pinned { body } => Some(body),
+            _ => None,
+        }
+    }
+
+    /// The point (index) a pinned rod's end A is held at.
+    pub fn pin_point(&self) -> Option<usize> {
+        match self.holder {
+            RodHolder::Pinned { .. } => self.points[0],
+            _ => None,
         }
     }
 
@@ -80,6 +102,7 @@ impl SystemRod {
         match self.holder {
             RodHolder::Fixed => "fixed",
             RodHolder::Free { .. } => "free",
+            RodHolder::Pinned { .. } => "pinned",
             RodHolder::Body { .. } => "body",
             RodHolder::Point { .. } => "point",
         }
@@ -99,7 +122,7 @@ impl SystemRod {
     }
 
     /// Whether its water (in a scenario with water) acts on something
-    /// that moves: a free rod, or a rod on a free body.
+    /// that moves: a free or pinned rod, or a rod on a free body.
     pub fn moves(&self, bodies: &[SystemBody]) -> bool {
         self.body().is_some_and(|b| bodies[b].is_free())
     }

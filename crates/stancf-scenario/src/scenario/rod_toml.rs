@@ -5,7 +5,7 @@ use super::bodies::SystemBody;
 use super::context::Ctx;
 use super::raw::{RawPoint, RawRod, RawRodType};
 use super::rod_parts::{free_rod_body, next_body_id, rod_of, RodHolder, RodTypeValues, SystemRod};
-use super::system_parts::PointType;
+use super::system_parts::{PointType, SystemPoint};
 use super::ScenarioError;
 use stancf::vec3::sub;
 
@@ -43,13 +43,14 @@ pub(super) fn rod_types(
     Ok(out)
 }
 
-/// `[[rods]]`: `id` (required, unique), `type` ("free", "fixed" or
-/// "body", required), `body` (a body's id, for type "body" only),
-/// `rod_type` (a `[[rod_types]]` name, required), `end_a`, `end_b`
+/// `[[rods]]`: `id` (required, unique), `type` ("free", "fixed",
+/// "pinned" or "body", required), `body` (a body's id, for type "body"
+/// only), `rod_type` (a `[[rod_types]]` name, required), `end_a`, `end_b`
 /// (required, apart; global, or in the body's axes from its reference
 /// point for type "body"), `segments` (>= 1, default 1: the drag's
-/// quadrature). A free rod's body is pushed onto `bodies`, its id one
-/// more than the largest there.
+/// quadrature). A free or pinned rod's body is pushed onto `bodies`, its
+/// id one more than the largest there; a pinned rod's end A is held at a
+/// fixed point there ([`pin_points`]).
 pub(super) fn rods(
     ctx: &Ctx,
     (types, raw): (&[RodTypeValues], &[RawRod]),
@@ -66,7 +67,7 @@ pub(super) fn rods(
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["free", "fixed", "body"],
+            &["free", "fixed", "pinned", "body"],
         )?;
         let type_name = ctx.required(&key("rod_type"), r.rod_type.as_deref())?;
         let Some(type_index) = types.iter().position(|t| t.name == type_name) else {
@@ -92,6 +93,15 @@ pub(super) fn rods(
             Some(n) => ctx.count(&key("segments"), n, 1, 10_000)?,
             None => 1,
         };
+        if word == "pinned" && r.body.is_some() {
+            return Err(ctx.err(
+                &key("body"),
+                "a pinned rod's end A is held where end_a puts it (global): a rod pinned to a \
+                 body is not built in a TOML scenario (one pinned to a fixed body is a rod \
+                 pinned at that body's point, given globally; the joint between a rod and a \
+                 free or coupled body is future work)",
+            ));
+        }
         if word != "body" && r.body.is_some() {
             return Err(ctx.err(
                 &key("body"),
@@ -100,10 +110,14 @@ pub(super) fn rods(
         }
         let (holder, local, ends) = match word {
             "fixed" => (RodHolder::Fixed, [a, b], [a, b]),
-            "free" => {
+            "free" | "pinned" => {
                 let body = bodies.len();
                 bodies.push(free_rod_body(next_body_id(bodies), a));
-                (RodHolder::Free { body }, [[0.0; 3], sub(b, a)], [a, b])
+                let holder = match word {
+                    "free" => RodHolder::Free { body },
+                    _ => RodHolder::Pinned { body },
+                };
+                (holder, [[0.0; 3], sub(b, a)], [a, b])
             }
             _ => {
                 let body = body_index(ctx, &key("body"), r.body, bodies)?;
@@ -203,20 +217,32 @@ pub(super) fn rod_point(
         "A" => 0,
         _ => 1,
     };
-    let rod = &rods[k];
-    let built = rod.rod.as_ref().expect("a TOML rod has a length");
-    let local = [built.end_a, built.end_b][end];
-    let kind = match rod.holder {
-        RodHolder::Fixed => PointType::Fixed,
-        RodHolder::Free { body } | RodHolder::Body { body } => PointType::Body { body, local },
-        RodHolder::Point { .. } => unreachable!("a TOML rod is not a point"),
-    };
     Ok(RodPoint {
-        kind,
-        position: rod.ends[end],
+        kind: super::rods::end_kind(&rods[k], end),
+        position: rods[k].ends[end],
         rod: k,
         end,
     })
+}
+
+/// The fixed point each pinned rod's end A is held at: the `[[points]]`
+/// entry of type "rod" at that end if there is one, else a fixed point
+/// pushed onto `points` there, its id one more than the largest (call
+/// after the lines are read: no line can name it).
+pub(super) fn pin_points(rods: &mut [SystemRod], points: &mut Vec<SystemPoint>) {
+    for rod in rods.iter_mut() {
+        if !matches!(rod.holder, RodHolder::Pinned { .. }) || rod.points[0].is_some() {
+            continue;
+        }
+        let id = points
+            .iter()
+            .map(|p| p.id)
+            .max()
+            .unwrap_or(0)
+            .saturating_add(1);
+        points.push(super::rods::end_point(rod, 0, id));
+        rod.points[0] = Some(points.len() - 1);
+    }
 }
 
 /// Refuses `rod` and `end` on a point whose type is not "rod".

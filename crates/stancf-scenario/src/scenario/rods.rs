@@ -1,10 +1,14 @@
 //! Rods of a system (docs/interface.md, "Rods"; docs/method.md §15.10):
 //! a deck's ROD TYPES and RODS, or `[[rod_types]]` and `[[rods]]`
-//! (`rod_toml.rs`). A rod is a rigid cylinder held three ways:
+//! (`rod_toml.rs`). A rod is a rigid cylinder held four ways:
 //!
 //! - free: a body of its own (six degrees of freedom), its reference
 //!   point at end A, its axes the global ones at t = 0, its mass and
 //!   water the rod's ([`stancf::system::Body::rod`]);
+//! - pinned (`Pinned`, `Body<n>Pinned` on a fixed body n): a free rod's
+//!   body whose end A is held at a fixed point there (the body's
+//!   [`stancf::system::Pin`], docs/method.md §15.12), turning freely
+//!   about it; a line at end A ends at that fixed point;
 //! - on a body: fixed in it, its mass and water joining the body's;
 //! - fixed: held where it is, its ends fixed points.
 //!
@@ -22,7 +26,7 @@
 //! fixed rod's end is clamped along the rod's axis (its cantilever); at
 //! the end of a rod that moves it is refused.
 
-use super::bodies::SystemBody;
+use super::bodies::{BodyType, SystemBody};
 use super::rod_parts::{free_rod_body, next_body_id, rod_of, RodHolder, RodTypeValues, SystemRod};
 use super::system_parts::{PointType, SystemPoint, SystemScenario};
 use super::ScenarioError;
@@ -31,24 +35,29 @@ use stancf::body::Rod;
 use stancf::motion::CoupledMotion;
 use stancf::vec3::sub;
 
-/// The point at end `end` of `rod` (its holder and ends placed): on the
-/// rod's body, a fixed point for a fixed rod, the rod's free point for
-/// one of zero length; `id` its id.
-pub(super) fn end_point(
-    rod: &SystemRod,
-    local: [f64; 3],
-    global: [f64; 3],
-    id: i64,
-) -> SystemPoint {
-    let kind = match rod.holder {
+/// The kind of the point at end `k` (0 for A, 1 for B) of `rod` (its
+/// holder and ends placed): on the rod's body at the end's body
+/// coordinates, a fixed point at a fixed rod's end or a pinned rod's end
+/// A (its pin), the rod's free point for one of zero length.
+pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
+    let local = rod.rod.as_ref().map_or([0.0; 3], |r| [r.end_a, r.end_b][k]);
+    match rod.holder {
         RodHolder::Fixed => PointType::Fixed,
+        RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
         RodHolder::Point { .. } => PointType::Free,
-        RodHolder::Free { body } | RodHolder::Body { body } => PointType::Body { body, local },
-    };
+        RodHolder::Free { body } | RodHolder::Pinned { body } | RodHolder::Body { body } => {
+            PointType::Body { body, local }
+        }
+    }
+}
+
+/// The point at end `k` of `rod` ([`end_kind`]), where the rod's ends
+/// put it at t = 0; `id` its id.
+pub(super) fn end_point(rod: &SystemRod, k: usize, id: i64) -> SystemPoint {
     SystemPoint {
         id,
-        kind,
-        position: global,
+        kind: end_kind(rod, k),
+        position: rod.ends[k],
         mass: 0.0,
         force: [0.0; 3],
         volume: 0.0,
@@ -178,6 +187,13 @@ fn deck_rod(
             let ends = [b.point(r.end_a), b.point(r.end_b)];
             (RodHolder::Body { body: n - 1 }, [r.end_a, r.end_b], ends)
         }
+        RodAttachment::Pinned | RodAttachment::BodyPinned(_) => {
+            let ends = pinned_ends(r, bodies)?;
+            let body = bodies.len();
+            bodies.push(free_rod_body(next_body_id(bodies), ends[0]));
+            let local = [[0.0; 3], sub(ends[1], ends[0])];
+            (RodHolder::Pinned { body }, local, ends)
+        }
     };
     let built = (!zero).then(|| rod_of(&t, rod[0], rod[1], r.segments));
     if let Some(built) = &built {
@@ -202,12 +218,49 @@ fn deck_rod(
         ends,
         points: [None; 2],
     };
-    if let RodHolder::Point { .. } = holder {
-        let id = points.len() as i64 + 1;
-        points.push(end_point(&out, [0.0; 3], r.end_a, id));
-        out.points = [Some(points.len() - 1); 2];
+    match holder {
+        RodHolder::Point { .. } => {
+            let id = points.len() as i64 + 1;
+            points.push(end_point(&out, 0, id));
+            out.points = [Some(points.len() - 1); 2];
+        }
+        // The pin's fixed point, whether or not a line attaches there.
+        RodHolder::Pinned { .. } => {
+            rod_end_point(&mut out, RodEnd::A, points);
+        }
+        _ => {}
     }
     Ok(out)
+}
+
+/// The global ends of a pinned rod: as written for `Pinned`, where its
+/// fixed body's pose puts them for `Body<n>Pinned`. Refused: a rod of
+/// zero length (nothing to turn), a rod pinned to a free or coupled
+/// body.
+fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<[[f64; 3]; 2], String> {
+    if r.segments == 0 {
+        return Err(format!(
+            "rod {} is pinned with NumSegs 0, a rod of zero length, which has nothing to turn \
+             about its pin: give it segments, or make it Fixed",
+            r.id
+        ));
+    }
+    match r.attachment {
+        RodAttachment::BodyPinned(n) => {
+            let b = &bodies[n - 1];
+            if b.kind != BodyType::Fixed {
+                return Err(format!(
+                    "rod {} is pinned to body {n}, which is {}: a rod pinned to a free or \
+                     coupled body is not built yet (the joint between two bodies; a rod \
+                     pinned to a fixed body is, and Body<n> fixes the rod in a free body)",
+                    r.id,
+                    b.type_word()
+                ));
+            }
+            Ok([b.point(r.end_a), b.point(r.end_b)])
+        }
+        _ => Ok([r.end_a, r.end_b]),
+    }
 }
 
 /// The point (index) at end `end` of `rod`, pushed onto `points` (after
@@ -221,12 +274,8 @@ fn rod_end_point(rod: &mut SystemRod, end: RodEnd, points: &mut Vec<SystemPoint>
     if let Some(p) = rod.points[k] {
         return p;
     }
-    let local = match &rod.rod {
-        Some(r) => [r.end_a, r.end_b][k],
-        None => [0.0; 3],
-    };
     let id = points.len() as i64 + 1;
-    points.push(end_point(rod, local, rod.ends[k], id));
+    points.push(end_point(rod, k, id));
     rod.points[k] = Some(points.len() - 1);
     points.len() - 1
 }
@@ -240,7 +289,7 @@ pub(super) fn rod_file_notes(deck: &Deck) -> Vec<String> {
         .map(|r| {
             format!(
                 "line {}: rod {} asks for a file of its own (RodOutputs \"{}\"), which stancf \
-                 does not write (a free rod's pose is in bodies.csv)",
+                 does not write (a free or pinned rod's pose is in bodies.csv)",
                 r.line,
                 r.id,
                 crate::echo::clip(&r.outputs, 40)
@@ -257,6 +306,19 @@ pub(super) fn rods_of_body(sc: &SystemScenario, b: usize) -> Vec<Rod> {
         .filter(|r| r.body() == Some(b))
         .filter_map(|r| r.rod.clone())
         .collect()
+}
+
+/// The pin of body `b` if it is a pinned rod: its end A (the body's
+/// reference point) held at the fixed point there.
+pub(super) fn pin_of_body(sc: &SystemScenario, b: usize) -> Option<stancf::system::Pin> {
+    sc.rods
+        .iter()
+        .find(|r| r.own_body() == Some(b))
+        .and_then(SystemRod::pin_point)
+        .map(|point| stancf::system::Pin {
+            local: [0.0; 3],
+            point,
+        })
 }
 
 /// Refuses a moving rod's water this version does not build, as for a
@@ -319,7 +381,7 @@ pub(super) fn rod_error(sc: &SystemScenario, e: stancf::ModelError) -> stancf::M
         None => sc
             .rods
             .iter()
-            .find(|r| r.holder == RodHolder::Free { body: b })
+            .find(|r| r.own_body() == Some(b))
             .map(|r| (r, rest)),
     };
     let Some((rod, tail)) = found else { return e };

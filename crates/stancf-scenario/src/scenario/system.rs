@@ -77,6 +77,7 @@ pub(super) fn system_scenario(
     let mut rods = super::rod_toml::rods(ctx, (&rod_types, &raw.rods), &mut bodies)?;
     let mut points = points(ctx, &raw.points, &bodies, &mut rods)?;
     let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
+    super::rod_toml::pin_points(&mut rods, &mut points);
     let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference, free_bodies)?;

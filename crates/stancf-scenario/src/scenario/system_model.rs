@@ -123,7 +123,8 @@ impl SystemScenario {
     /// drag with the water's density and its current where it is uniform
     /// (a body with drag in a current that varies with depth is refused
     /// on reading, [`super::body_water::check_body_water`]); its rods
-    /// (a free rod's body: the rod), which the core folds in.
+    /// (a free rod's body: the rod), which the core folds in; a pinned
+    /// rod's body's pin.
     fn library_body(&self, i: usize) -> Body {
         let b = &self.bodies[i];
         let (kind, inertia) = match b.kind {
@@ -145,6 +146,10 @@ impl SystemScenario {
         let mut body = Body::new(kind, b.position, b.rotation(), inertia);
         body.velocity = b.velocity;
         body.angular_velocity = b.angular_velocity;
+        if b.force != [0.0; 3] {
+            body.loads.push((b.force, [0.0; 3]));
+        }
+        body.moment = b.moment;
         body.water = match (&self.water, b.kind) {
             (Some(w), super::BodyType::Free) => Some(BodyWater {
                 density: w.density,
@@ -160,6 +165,7 @@ impl SystemScenario {
             _ => None,
         };
         body.rods = super::rods::rods_of_body(self, i);
+        body.pin = super::rods::pin_of_body(self, i);
         body
     }
 

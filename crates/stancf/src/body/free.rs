@@ -120,6 +120,9 @@ pub struct FreeBody {
     start_loads: Vec<([f64; 3], [f64; 3])>,
     /// The work of the water's drag so far (B10).
     water_work: f64,
+    /// A constant moment on the body (global) and its work so far (B27).
+    moment: [f64; 3],
+    moment_work: f64,
 }
 
 /// The slab's rows over the 24 slots and their derivatives (row-major).
@@ -182,6 +185,8 @@ impl FreeBody {
             last_iterations: 0,
             start_loads: Vec::with_capacity(forces.forces.len()),
             water_work: 0.0,
+            moment: [0.0; 3],
+            moment_work: 0.0,
         };
         body.refresh_loads();
         body.momenta_from_rates();
@@ -192,6 +197,19 @@ impl FreeBody {
     pub fn with_scheme(mut self, scheme: TimeScheme) -> Self {
         self.scheme = scheme;
         self
+    }
+
+    /// The same body under a constant moment `moment` (global, N m) beside
+    /// its forces (B27): a load that turns with nothing, whose work is
+    /// external.
+    pub fn with_moment(mut self, moment: [f64; 3]) -> Self {
+        self.moment = moment;
+        self
+    }
+
+    /// The work done on the body by its constant moment so far (B27).
+    pub fn moment_work(&self) -> f64 {
+        self.moment_work
     }
 
     /// The same body in water: its drag and added mass (B9)-(B10).

@@ -113,6 +113,21 @@ fn rate_along(x: &Jet<NV>, v: &[JetVec<NV>; 4]) -> Jet<NV> {
     rate
 }
 
+/// A constant moment `moment` (global) on a body as generalized forces on
+/// theta (B27): its virtual work M . (R eta), eta = J_r(theta) dtheta the
+/// virtual rotation in body axes and R = R_a exp([theta]), is
+/// Q_theta . dtheta with Q_theta = J_r^T R^T M (J_r^T is (B3) at -theta).
+pub fn moment_on_theta<const N: usize>(
+    rotation_a: &[[f64; 3]; 3],
+    moment: [f64; 3],
+    theta: &JetVec<N>,
+) -> JetVec<N> {
+    let start_axes = super::pose::rotate_back(rotation_a, moment).map(Jet::constant);
+    let body_axes = turn(theta, &start_axes, -1.0);
+    let minus_theta = theta.map(|t| -t);
+    body_rate(&minus_theta, &body_axes)
+}
+
 fn constant(v: [f64; 3]) -> JetVec<NV> {
     v.map(Jet::constant)
 }

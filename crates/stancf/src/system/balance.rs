@@ -306,6 +306,9 @@ fn imbalance(
         for (f, at) in loads {
             add_at(&mut g, o, f, crate::vec3::sub(at, centre), &mut scale);
         }
+        for c in 0..3 {
+            g[o + 3 + c] += body.moment[c];
+        }
         if let Some(water) = body.water.as_ref().filter(|w| !w.rods.is_empty()) {
             let ctx = crate::body::terms::Context {
                 mass: 0.0,

@@ -64,6 +64,10 @@ pub struct Body {
     /// The body's point pinned to a fixed point, if it is: it turns freely
     /// about it (docs/method.md §15.12; MoorDyn's pinned rod).
     pub pin: Option<Pin>,
+    /// A constant moment on a free body (global, N m; B27), beside the
+    /// constant forces of `loads` (a force on the body is a load at its
+    /// reference point).
+    pub moment: [f64; 3],
 }
 
 /// A body's point `local` (body axes, from the reference point) held at
@@ -94,6 +98,7 @@ impl Body {
             loads: Vec::new(),
             rods: Vec::new(),
             pin: None,
+            moment: [0.0; 3],
         }
     }
 
@@ -147,7 +152,8 @@ impl Body {
             self.angular_velocity,
             dt,
         )?
-        .with_scheme(TimeScheme::Galerkin);
+        .with_scheme(TimeScheme::Galerkin)
+        .with_moment(self.moment);
         match &self.water {
             Some(w) => body.with_water(w.clone()),
             None => Ok(body),
@@ -156,10 +162,14 @@ impl Body {
 
     fn check(&self, key: &str) -> Result<(), ModelError> {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-        if !finite(&self.position) || !finite(&self.velocity) || !finite(&self.angular_velocity) {
+        if !finite(&self.position)
+            || !finite(&self.velocity)
+            || !finite(&self.angular_velocity)
+            || !finite(&self.moment)
+        {
             return Err(ModelError::invalid(
                 key,
-                "position and velocities must be finite",
+                "position, velocities and moment must be finite",
             ));
         }
         let r = &self.rotation;

@@ -77,6 +77,13 @@ pub(super) struct StaticBody {
     /// A pin (§15.12): the pinned point from the centre of mass (body
     /// axes) and where it is held.
     pub pin: Option<([f64; 3], [f64; 3])>,
+    /// The holds of a body that floats on its rods alone.
+    pub float_hold: Option<super::body_holds::FloatHold>,
+    /// A constant moment (global, B27).
+    pub moment: [f64; 3],
+    /// The stiffness scale of a body that its lines do not give one (a
+    /// floating or pinned body without lines): its rows' weights.
+    pub own_stiffness: f64,
 }
 
 impl StaticBody {
@@ -142,8 +149,24 @@ impl StaticBody {
                 }
             }
         }
+        if self.moment != [0.0; 3] {
+            // -Q_theta of (B27) and its derivative in theta.
+            let th: JetVec<3> = std::array::from_fn(|i| Jet::variable(theta[i], i));
+            let on_theta = crate::body::terms::moment_on_theta(&self.rotation, self.moment, &th);
+            for c in 0..3 {
+                residual[g(3 + c)] -= on_theta[c].v;
+                if let Some(m) = jacobian.as_deref_mut() {
+                    for j in 0..3 {
+                        m.add(g(3 + c), g(3 + j), -on_theta[c].g[j]);
+                    }
+                }
+            }
+        }
+        if let Some(hold) = self.float_hold {
+            self.add_float_hold(&hold, &q, &g, residual, jacobian.as_deref_mut());
+        }
         if jacobian.is_some() {
-            self.stiffness = 0.0;
+            self.stiffness = self.own_stiffness;
         }
         for bp in &self.points {
             let y = |c: usize| layout.point_unknown(bp.point, 0, c).expect("border");
@@ -185,6 +208,33 @@ impl StaticBody {
             }
         }
         self.add_pin(&q, &g, residual, jacobian);
+    }
+
+    /// The springs of [`super::body_holds::FloatHold`] in the rows.
+    fn add_float_hold(
+        &self,
+        hold: &super::body_holds::FloatHold,
+        q: &[f64; 6],
+        g: &impl Fn(usize) -> usize,
+        residual: &mut [f64],
+        mut jacobian: Option<&mut BorderedMatrix>,
+    ) {
+        let a = hold.vertical;
+        let along = a[0] * q[3] + a[1] * q[4] + a[2] * q[5];
+        for c in 0..2 {
+            residual[g(c)] += hold.translation * (q[c] - hold.at[c]);
+            if let Some(m) = jacobian.as_deref_mut() {
+                m.add(g(c), g(c), hold.translation);
+            }
+        }
+        for i in 0..3 {
+            residual[g(3 + i)] += hold.rotation * a[i] * along;
+            if let Some(m) = jacobian.as_deref_mut() {
+                for j in 0..3 {
+                    m.add(g(3 + i), g(3 + j), hold.rotation * a[i] * a[j]);
+                }
+            }
+        }
     }
 
     /// A pin (B24) at rest: the centre's rows carried to the rotation's
@@ -370,6 +420,24 @@ impl SystemStatics {
     }
 }
 
+/// The stiffness scale of a body without lines, for its rows' weights:
+/// its net weight over its size (the farthest of its pin, its rods' ends
+/// and its centre of mass from one another; 1 m for a point-like body).
+fn own_stiffness(body: &super::Body, net: [f64; 3]) -> f64 {
+    let mut size = 0.0f64;
+    let c = body.inertia.centre_of_mass;
+    if let Some(pin) = body.pin {
+        size = size.max(crate::vec3::norm(crate::vec3::sub(pin.local, c)));
+    }
+    if let Some(w) = &body.water {
+        for r in &w.rods {
+            size = size.max(r.length());
+        }
+    }
+    let size = if size > 0.0 { size } else { 1.0 };
+    crate::vec3::norm(net) / size
+}
+
 /// The free bodies of `system` as a static solve holds them: their
 /// weight and buoyancy at the centre of mass, their points' arms from it,
 /// and the scales of §15.8.
@@ -442,91 +510,20 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                         system.points()[pin.point].position,
                     )
                 }),
-                spin_hold: spin_axis(body, &points_local(system, b)).map(|a| {
+                float_hold: super::body_holds::float_hold(system, b),
+                moment: body.moment,
+                own_stiffness: own_stiffness(body, net),
+                spin_hold: super::body_holds::spin_axis(
+                    body,
+                    &super::body_holds::points_local(system, b),
+                )
+                .map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
                     (a, weight * length)
                 }),
             }
         })
         .collect()
-}
-
-/// Refuses a free body that no line holds (none of its points has a
-/// line): its weight and buoyancy have nothing to balance them, so it
-/// has no static equilibrium (it sinks or rises for ever, and drifts
-/// sideways on nothing); a dynamic run from its given pose is its
-/// motion. Key `bodies[b]`.
-pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError> {
-    for b in system.free_bodies() {
-        let held = system.bodies()[b].pin.is_some()
-            || system
-                .points()
-                .iter()
-                .enumerate()
-                .any(|(p, pt)| pt.body() == Some(b) && system.attachments(p).next().is_some());
-        if !held {
-            return Err(crate::error::ModelError::invalid(
-                format!("bodies[{b}]"),
-                "is free and no line holds it: it has no static equilibrium (nothing balances \
-                 its weight and buoyancy); start a dynamic run from its given pose instead",
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// The body points of body b (body axes, from the reference point).
-fn points_local(system: &System, b: usize) -> Vec<[f64; 3]> {
-    system
-        .points()
-        .iter()
-        .filter_map(|p| match p.kind {
-            super::PointKind::Body { body, local } if body == b => Some(local),
-            _ => None,
-        })
-        .collect()
-}
-
-/// The line (a unit vector in body axes) on which the body's centre of
-/// mass, its loads' points, its points and its rods under water all lie,
-/// if they do (to 1e-9 of their span) and no lumped drag of the body's
-/// acts in a current: then nothing turns the body about that line, its
-/// static rows are singular there (a free rod held at its ends spins
-/// freely), and the solve holds the spin, theta . a = 0, with a spring
-/// k a (a . theta) in its rotation rows. Every moment about the line
-/// being zero at any pose, the spring's moment is zero at the solution:
-/// the equilibrium is the one without it (docs/method.md §15.10).
-fn spin_axis(body: &super::Body, points: &[[f64; 3]]) -> Option<[f64; 3]> {
-    use crate::vec3::{cross, norm, scale, sub};
-    if let Some(w) = &body.water {
-        if w.current != [0.0; 3] && w.drag_areas != [0.0; 3] {
-            return None;
-        }
-    }
-    let mut all = vec![body.inertia.centre_of_mass];
-    all.extend(body.pin.map(|pin| pin.local));
-    all.extend(body.loads.iter().map(|(_, at)| *at));
-    all.extend_from_slice(points);
-    if let Some(w) = &body.water {
-        all.extend(w.rods.iter().flat_map(|r| [r.end_a, r.end_b]));
-    }
-    let (mut from, mut to, mut span) = (all[0], all[0], 0.0);
-    for p in &all {
-        for q in &all {
-            let d = norm(sub(*p, *q));
-            if d > span {
-                (from, to, span) = (*p, *q, d);
-            }
-        }
-    }
-    if span == 0.0 {
-        return None;
-    }
-    let axis = scale(1.0 / span, sub(to, from));
-    let on_line = all
-        .iter()
-        .all(|p| norm(cross(sub(*p, from), axis)) <= 1e-9 * span);
-    on_line.then_some(axis)
 }
 
 #[cfg(test)]

@@ -91,9 +91,13 @@ impl SystemSimulation {
             + self.body_water_work()
     }
 
-    /// The work of the free bodies' drag so far (B10).
+    /// The work of the free bodies' drag so far (B10), and of their
+    /// constant moments (B27).
     pub(super) fn body_water_work(&self) -> f64 {
-        self.bodies.iter().map(|b| b.body.water_work()).sum()
+        self.bodies
+            .iter()
+            .map(|b| b.body.water_work() + b.body.moment_work())
+            .sum()
     }
 
     /// The energy watchdog of a run from the current state (docs/method.md

@@ -26,6 +26,7 @@
 mod apart;
 mod balance;
 mod bodies;
+mod body_holds;
 mod body_statics;
 mod body_terms;
 mod end_forces;

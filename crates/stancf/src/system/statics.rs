@@ -132,7 +132,7 @@ impl SystemStatics {
         targets: Option<Vec<Vec<f64>>>,
     ) -> Result<Self, ModelError> {
         settings.validate()?;
-        super::body_statics::check_held(&system)?;
+        super::body_holds::check_held(&system)?;
         let friction = settings.seabed_friction;
         if seeds.len() != system.lines().len() {
             return Err(ModelError::invalid(

@@ -245,3 +245,81 @@ fn a_moored_spar_floats_where_archimedes_puts_it() {
     assert!(norm(force) < 1e-8 * scale_f, "{force:?}");
     assert!(norm(moment) < 1e-8 * scale_f * a, "{moment:?}");
 }
+
+/// The spar on no line (beside a line between two anchors, which a
+/// system needs) has a static equilibrium of its own: started 2 m high
+/// and heeled by 0.1 rad, the static solve stands it upright at the
+/// draft where its buoyancy carries its weight, m = rho A h, its centre
+/// over where it was (still water's loads do not move it sideways or turn
+/// it about the vertical: the solve holds those, docs/method.md §15.11),
+/// to the static tolerance.
+#[test]
+fn a_spar_on_no_line_floats_upright_at_its_draft() {
+    let draft = SPAR_MASS / (RHO * SPAR_AREA);
+    let heel = stancf::body::rotation::exp_map([0.1, 0.0, 0.0]);
+    let mut body = spar([0.0, 0.0, -draft + 2.0], 0.0, 1.0);
+    body.rotation = heel;
+    let start = body.point([0.0, 0.0, 2.8]);
+    let line = {
+        let (line, _) = hanging_line([30.0, 0.0, -1.0]);
+        Line {
+            ends: [End::Point(0), End::Point(1)],
+            ..line
+        }
+    };
+    let points = vec![
+        Point::fixed([30.0, 0.0, -1.0]),
+        Point::fixed([30.0, 0.0, -2.0]),
+    ];
+    let system =
+        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let settings = StaticSettings {
+        tolerance: 1e-10,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let (reference, rotation) = statics.body_pose(0).expect("a free body");
+    let centre = stancf::body::pose::point(reference, &rotation, [0.0, 0.0, 2.8]);
+    let tilt = (rotation[0][2].powi(2) + rotation[1][2].powi(2)).sqrt();
+    eprintln!(
+        "floating spar: bottom at {:.9} m (draft {draft:.9}), tilt {tilt:.1e}, centre moved {:.1e} m",
+        reference[2],
+        ((centre[0] - start[0]).powi(2) + (centre[1] - start[1]).powi(2)).sqrt()
+    );
+    assert!(
+        (reference[2] + draft).abs() < 1e-9 * draft,
+        "{}",
+        reference[2]
+    );
+    assert!(tilt < 1e-9, "{tilt:e}");
+    assert!((centre[0] - start[0]).abs() < 1e-9 && (centre[1] - start[1]).abs() < 1e-9);
+}
+
+/// A spar on no line that its rods' whole buoyancy cannot carry (ballast
+/// doubled: 90 t against 64 t of displacement) sinks: the static solve
+/// refuses it, naming the body and both forces (it has no equilibrium; a
+/// body has no seabed contact).
+#[test]
+fn a_spar_on_no_line_too_heavy_to_float_is_refused_by_the_static_solve() {
+    let mut body = spar([0.0, 0.0, -15.0], 0.0, 1.0);
+    body.inertia = body.inertia.with_point_mass(40_000.0, [0.0, 0.0, 1.0]);
+    let (line, _) = hanging_line([30.0, 0.0, -1.0]);
+    let line = Line {
+        ends: [End::Point(0), End::Point(1)],
+        ..line
+    };
+    let points = vec![
+        Point::fixed([30.0, 0.0, -1.0]),
+        Point::fixed([30.0, 0.0, -2.0]),
+    ];
+    let system =
+        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let err = SystemStatics::seeded(system.clone(), &system, StaticSettings::default())
+        .err()
+        .expect("refused");
+    assert_eq!(err.key, "bodies[0]");
+    assert!(err.message.contains("sinks"), "{}", err.message);
+}

@@ -198,21 +198,24 @@ fn a_buoyant_rod_pinned_at_its_foot_leans_in_a_current() {
         second_moment: 1e-12,
         axial_damping: 0.0,
     };
-    // A light line from the rod's top to a buoy point far up, slack: it
-    // holds nothing (the pin does), but a system needs a line.
-    let top = [0.0, 0.0, -18.0 + l];
+    // No line on the rod (the pin holds it); a system needs a line: one
+    // between two anchors aside.
     let cable = Cable::straight(3.0, 4, ElementType::Sac2)
-        .with_origin(top)
+        .with_origin([10.0, 0.0, -10.0])
         .with_direction([0.0, 0.0, 1.0]);
     let model = Model::new(cable, material, Default::default(), vec![]).expect("model");
     body.pin = Some(Pin {
         local: [0.0; 3],
-        point: 1,
+        point: 0,
     });
-    let points = vec![Point::on_body(0, [0.0, 0.0, l]), Point::fixed(a)];
+    let points = vec![
+        Point::fixed(a),
+        Point::fixed([10.0, 0.0, -10.0]),
+        Point::fixed([10.0, 0.0, -7.0]),
+    ];
     let line = Line {
         model,
-        ends: [End::Point(0), End::Loose],
+        ends: [End::Point(1), End::Point(2)],
     };
     let system =
         System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
@@ -243,5 +246,80 @@ fn a_buoyant_rod_pinned_at_its_foot_leans_in_a_current() {
     assert!(
         statics.body_stiffness(0).is_none(),
         "a pinned body has no 6 x 6"
+    );
+}
+
+/// A rod 2 m long (20 kg) hanging from a pin at its top end in air, under
+/// a constant moment M = 30 N m about the pin's horizontal axis (B27):
+/// - at rest it hangs at the angle where its weight's moment balances M,
+///   m g (L/2) sin(phi) = M (0.1538 rad), to the static tolerance;
+/// - released hanging straight down it swings about that angle, the
+///   moment's work is M times the angle turned (a rotation about a fixed
+///   axis: Q_theta = M, the power M phi_dot, quadratic in time, which the
+///   Gauss points integrate exactly) to round-off, and its energy less
+///   that work is kept to the step's error at fourth order (dt = T/100
+///   and T/200).
+#[test]
+fn a_hanging_rod_under_a_constant_moment_turns_to_its_balance() {
+    let (l, moment) = (2.0, 30.0);
+    let top = [0.0, 0.0, 5.0];
+    let m = 10.0 * l;
+    let want = (moment / (m * G * l / 2.0)).asin();
+    let build = || {
+        let mut body = Body::rod(BodyKind::Free, top, rod(top, [0.0, 0.0, -1.0], l, 0.0, 0.0));
+        body.moment = [0.0, moment, 0.0];
+        // The rope holds the body at its pin, where the body turns in place.
+        pinned(body, [0.0; 3], [0.0, 0.0, 6.0])
+    };
+    let (system, _) = build();
+    let settings = StaticSettings {
+        tolerance: 1e-10,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    let (_, rotation) = statics.body_pose(0).expect("a free body");
+    // The turn about y: R = R_y(phi), r_02 = sin(phi), r_22 = cos(phi)
+    // (the rod, along body -z, swings towards -x).
+    let phi = rotation[0][2].atan2(rotation[2][2]);
+    eprintln!("under the moment: {phi:.10} rad, balance {want:.10} rad");
+    assert!((phi - want).abs() < 1e-8, "{phi} against {want}");
+
+    let inertia = m * (l * l / 3.0 + 0.01 / 16.0);
+    let period = 2.0 * std::f64::consts::PI * (inertia / (m * G * l / 2.0)).sqrt();
+    let run = |steps: usize| {
+        let (system, states) = build();
+        let settings = StepSettings {
+            time_step: period / steps as f64,
+            time_scheme: TimeScheme::Galerkin,
+            ..StepSettings::default()
+        };
+        let mut sim = SystemSimulation::new(system, states, settings).expect("simulation");
+        let e0 = sim.energies().mechanical();
+        let (mut drift, mut worst, mut most) = (0.0f64, 0.0f64, 0.0f64);
+        for _ in 0..steps {
+            sim.step().expect("step");
+            let body = sim.free_body(0).unwrap();
+            let r = body.rotation();
+            let turned = r[0][2].atan2(r[2][2]);
+            worst = worst.max((body.moment_work() - moment * turned).abs());
+            most = most.max(body.moment_work().abs());
+            drift = drift.max((sim.energies().mechanical() - sim.external_work() - e0).abs());
+        }
+        (drift, worst, most)
+    };
+    let (coarse, _, _) = run(100);
+    let (fine, worst, most) = run(200);
+    eprintln!(
+        "moment's work up to {most:.3} J, against M phi {worst:.1e}; energy less work \
+         {coarse:.1e} and {fine:.1e} J (ratio {:.1})",
+        coarse / fine
+    );
+    assert!(worst < 1e-9 * moment, "{worst:e}");
+    assert!(
+        coarse > 8.0 * fine && fine < 1e-6 * most,
+        "{coarse:e} {fine:e}"
     );
 }

@@ -68,6 +68,11 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
         ("Con", RodAttachment::Free),
         ("Body1", RodAttachment::Body(1)),
         ("body1", RodAttachment::Body(1)),
+        ("Pinned", RodAttachment::Pinned),
+        ("Pinned1", RodAttachment::Pinned),
+        ("pin", RodAttachment::Pinned),
+        ("Body1Pinned", RodAttachment::BodyPinned(1)),
+        ("body1pin", RodAttachment::BodyPinned(1)),
     ] {
         assert_eq!(
             rod(&format!("1 Can {word} 0 0 -5 1 0 -5 2 -")).attachment,
@@ -80,13 +85,8 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
 }
 
 #[test]
-fn pinned_coupled_and_unknown_rods_are_refused_by_name_with_their_line() {
+fn coupled_and_unknown_rods_are_refused_by_name_with_their_line() {
     for (word, words) in [
-        ("Pinned", "pinned rods are not built yet"),
-        ("Pinned1", "pinned rods are not built yet"),
-        ("Pin", "pinned rods are not built yet"),
-        ("Body1Pinned", "pinned rods are not built yet"),
-        ("Body1Pin", "pinned rods are not built yet"),
         ("Coupled", "coupled rods are not built yet"),
         ("Vessel", "coupled rods are not built yet"),
         ("Cpld", "coupled rods are not built yet"),
@@ -95,6 +95,10 @@ fn pinned_coupled_and_unknown_rods_are_refused_by_name_with_their_line() {
         ("Turbine1", "unknown attachment"),
         ("Body", "names the body's number"),
         ("Body1Foo", "written Body<n>"),
+        (
+            "Body2Pinned",
+            "on body 2, which BODIES does not define (1 bodies)",
+        ),
         (
             "Body2",
             "on body 2, which BODIES does not define (1 bodies)",

@@ -259,11 +259,12 @@ pub(super) fn bodies_json(
         .collect()
 }
 
-/// summary.json's `rods`: each rod's id, what holds it ("free", "body",
-/// "fixed", or "point" for a deck's free rod of zero length), the body
-/// it is (a free rod) or is fixed in, by its index in `bodies` and its
-/// id in bodies.csv, and the ids of the points at its ends A and B
-/// (null where no line attaches).
+/// summary.json's `rods`: each rod's id, what holds it ("free",
+/// "pinned", "body", "fixed", or "point" for a deck's free rod of zero
+/// length), the body it is (a free or pinned rod) or is fixed in, by its
+/// index in `bodies` and its id in bodies.csv, and the ids of the points
+/// at its ends A and B (null where no line attaches; a pinned rod's end
+/// A always has its pin's point).
 pub(super) fn rods_json(sc: &crate::scenario::SystemScenario) -> Vec<serde_json::Value> {
     sc.rods
         .iter()

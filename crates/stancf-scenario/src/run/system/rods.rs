@@ -42,7 +42,10 @@ pub(super) fn frames(sc: &SystemScenario) -> Vec<RodFrame> {
 fn frame(sc: &SystemScenario, r: &SystemRod) -> RodFrame {
     let end_a = match (&r.rod, r.holder) {
         (Some(rod), _) => rod.end_a,
-        (None, RodHolder::Body { body } | RodHolder::Free { body }) => {
+        (
+            None,
+            RodHolder::Body { body } | RodHolder::Free { body } | RodHolder::Pinned { body },
+        ) => {
             let b = &sc.bodies[body];
             rotate_back(&b.rotation(), sub(r.ends[0], b.position))
         }
@@ -85,7 +88,7 @@ impl RodFrame {
                     ..still(x)
                 }
             }
-            RodHolder::Free { body } | RodHolder::Body { body } => {
+            RodHolder::Free { body } | RodHolder::Pinned { body } | RodHolder::Body { body } => {
                 let m = &row.bodies[body].motion;
                 let arm = rotate(&m.rotation, self.end_a);
                 RodState {
@@ -110,7 +113,7 @@ impl RodFrame {
     /// reading (NaN here).
     fn net(&self, bodies: &[BodyRow], at: [f64; 3]) -> ([f64; 3], [f64; 3]) {
         match self.holder {
-            RodHolder::Free { body } => {
+            RodHolder::Free { body } | RodHolder::Pinned { body } => {
                 let b = &bodies[body];
                 let arm = sub(b.motion.position, at);
                 (b.net_force, add(b.net_moment, cross(arm, b.net_force)))

@@ -31,8 +31,27 @@ pub(super) type BodyStiffness = (usize, Option<[[f64; 6]; 6]>);
 const MISSING: &str = "no mooring stiffness: the rest of the system is singular with the body \
                        held (or the matrix is not finite); stiffness.csv has no rows for it";
 
+/// Why a pinned rod's body has none: the core gives a pinned body no
+/// 6 x 6 matrix (its translation is its pin's).
+const PINNED: &str = "no mooring stiffness: a pinned rod's body turns about its pin, which \
+                      holds its translation (no 6 x 6 matrix); stiffness.csv has no rows for it";
+
+/// Why body b has no matrix.
+fn missing(sc: &SystemScenario, b: usize) -> &'static str {
+    let pinned = sc
+        .rods
+        .iter()
+        .any(|r| r.own_body() == Some(b) && r.pin_point().is_some());
+    if pinned {
+        PINNED
+    } else {
+        MISSING
+    }
+}
+
 /// Each free body's matrix at the equilibrium `st` has converged to (in
-/// the order of the system's bodies); warns of a body without one.
+/// the order of the system's bodies); warns of a body without one (not
+/// of a pinned rod's, which has none by construction).
 pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec<BodyStiffness> {
     let moving: Vec<usize> = (0..st.system().bodies().len())
         .filter(|&b| st.system().bodies()[b].kind != stancf::system::BodyKind::Fixed)
@@ -43,7 +62,7 @@ pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec
             let k = st
                 .body_stiffness(b)
                 .filter(|k| k.iter().flatten().all(|v| v.is_finite()));
-            if k.is_none() {
+            if k.is_none() && missing(sc, b) == MISSING {
                 eprintln!("warning: bodies (id {}): {MISSING}", sc.bodies[b].id);
             }
             (b, k)
@@ -82,7 +101,11 @@ pub(super) fn write_csv(
 /// of stiffness.csv) to its entry of summary.json's `bodies` (in the
 /// order of the scenario's bodies); a body without a matrix gets
 /// `stiffness: null` and a `stiffness_note` saying why.
-pub(super) fn add_to_summary(bodies: &mut [Value], matrices: &[BodyStiffness]) {
+pub(super) fn add_to_summary(
+    bodies: &mut [Value],
+    matrices: &[BodyStiffness],
+    sc: &SystemScenario,
+) {
     for (b, k) in matrices {
         let Some(entry) = bodies.get_mut(*b) else {
             continue;
@@ -97,7 +120,7 @@ pub(super) fn add_to_summary(bodies: &mut [Value], matrices: &[BodyStiffness]) {
             }
             None => {
                 entry["stiffness"] = Value::Null;
-                entry["stiffness_note"] = Value::String(MISSING.to_string());
+                entry["stiffness_note"] = Value::String(missing(sc, *b).to_string());
             }
         }
     }

@@ -3,6 +3,7 @@
 //! Newton, and the move to the step's end.
 
 use super::*;
+use crate::body::terms::moment_on_theta;
 
 impl FreeBody {
     /// (B5) and (B10) over the slab: the action's gradient plus the drag's
@@ -41,6 +42,21 @@ impl FreeBody {
                         for l in 0..NV {
                             let (s2, wl) = variable_slot(l, n, point);
                             out.jacobian[s * SLOTS + s2] += wdt * wk * wl * density.h[k][l];
+                        }
+                    }
+                }
+            }
+            if self.moment != [0.0; 3] {
+                let q = moment_on_theta(&self.rotation, self.moment, &v[1]);
+                for m in 0..4 {
+                    for i in 0..3 {
+                        let s = 12 + 3 * m + i;
+                        out.rows[s] += wdt * t[m] * q[i].v;
+                        for n in 0..4 {
+                            for l in 0..NV {
+                                let (s2, wl) = variable_slot(l, n, point);
+                                out.jacobian[s * SLOTS + s2] += wdt * t[m] * wl * q[i].g[l];
+                            }
                         }
                     }
                 }
@@ -190,6 +206,7 @@ impl FreeBody {
     pub fn advance(&mut self, x: &[f64]) -> Result<(), SolverError> {
         let slots = self.slots(x);
         self.water_work += self.drag_work(&slots);
+        self.moment_work += self.moment_power_integral(&slots);
         let theta_b = slots[6];
         let turn = crate::vec3::norm(theta_b);
         if turn > std::f64::consts::PI {
@@ -230,6 +247,24 @@ impl FreeBody {
                     .sum();
                 work += point.w_dt * power;
             }
+        }
+        work
+    }
+
+    /// The constant moment's work over the step whose slot blocks are
+    /// `slots` (B27): Q_theta . theta_dot at the time points.
+    fn moment_power_integral(&self, slots: &[[f64; 3]; 8]) -> f64 {
+        if self.moment == [0.0; 3] {
+            return 0.0;
+        }
+        let mut work = 0.0;
+        for point in &self.slab.points {
+            let at = |w: &[f64; 4]| -> [f64; 3] {
+                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[4 + m][i]).sum())
+            };
+            let (theta, theta_dot) = (at(&point.shape.t), at(&point.shape.t_dot));
+            let q = moment_on_theta::<1>(&self.rotation, self.moment, &theta.map(Jet::constant));
+            work += point.w_dt * (0..3).map(|i| q[i].v * theta_dot[i]).sum::<f64>();
         }
         work
     }

@@ -1,0 +1,175 @@
+//! What holds a free body in a system's static solve (docs/method.md
+//! §15.8, §15.10-§15.12) where nothing gives it a stiffness: a body no
+//! line holds is refused unless a pin holds it or it floats on its rods;
+//! a spin about a line through everything that loads it, and a floating
+//! body's surge, sway and yaw, are held by springs whose forces vanish at
+//! the solution.
+
+use super::System;
+
+/// Whether a line holds free body b (one of its points has a line).
+fn on_lines(system: &System, b: usize) -> bool {
+    system
+        .points()
+        .iter()
+        .enumerate()
+        .any(|(p, pt)| pt.body() == Some(b) && system.attachments(p).next().is_some())
+}
+
+/// Whether free body b floats on its rods alone: no line and no pin hold
+/// it, it has rods in water (their buoyancy a potential of the pose, with
+/// a waterplane's stiffness where they cross the surface, §15.11) and no
+/// current drags it (which would push it away for ever).
+fn floats(system: &System, b: usize) -> bool {
+    let body = &system.bodies()[b];
+    let Some(w) = &body.water else { return false };
+    let dragged = w.current != [0.0; 3]
+        && (w.drag_areas != [0.0; 3]
+            || w.rods
+                .iter()
+                .any(|r| r.drag_coefficient != 0.0 || r.end_drag_coefficient != 0.0));
+    body.pin.is_none() && !on_lines(system, b) && !w.rods.is_empty() && !dragged
+}
+
+/// Refuses a free body that no line or pin holds and that does not float
+/// on its rods ([`floats`]): its weight and buoyancy have nothing to
+/// balance them, so it has no static equilibrium (it sinks or rises for
+/// ever, and drifts sideways on nothing); a dynamic run from its given
+/// pose is its motion. Key `bodies[b]`.
+pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError> {
+    for b in system.free_bodies() {
+        let held = system.bodies()[b].pin.is_some() || on_lines(system, b) || floats(system, b);
+        if held && floats(system, b) {
+            check_afloat(system, b)?;
+        }
+        if !held {
+            return Err(crate::error::ModelError::invalid(
+                format!("bodies[{b}]"),
+                "is free and no line holds it: it has no static equilibrium (nothing balances \
+                 its weight and buoyancy); start a dynamic run from its given pose instead",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a body floating on its rods alone that their whole buoyancy
+/// (with its own volume's) cannot carry: it sinks, and has no static
+/// equilibrium (a body has no seabed contact). Key `bodies[b]`.
+fn check_afloat(system: &System, b: usize) -> Result<(), crate::error::ModelError> {
+    let body = &system.bodies()[b];
+    let Some(w) = &body.water else { return Ok(()) };
+    let g = crate::vec3::norm(system.gravity());
+    let volume = w.volume + w.rods.iter().map(|r| r.volume()).sum::<f64>();
+    let (lift, weight) = (w.density * volume * g, body.inertia.mass * g);
+    if lift < weight {
+        return Err(crate::error::ModelError::invalid(
+            format!("bodies[{b}]"),
+            format!(
+                "floats on no line and sinks: its buoyancy under water, {lift:.6e} N, is less \
+                 than its weight, {weight:.6e} N, so it has no static equilibrium (a body has no \
+                 seabed contact); start a dynamic run from its given pose instead"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The holds of a body that floats on its rods alone ([`floats`]): still
+/// water's buoyancy and gravity are vertical and the same at any
+/// horizontal position and heading, so its surge, sway and yaw have no
+/// stiffness and its static rows are singular there. The solve holds them
+/// with springs k_t (x_G - x_0, y_G - y_0) on the centre's horizontal rows
+/// and k_r a (a . theta) on the rotation's, a = R_0^T e_z the vertical in
+/// its axes: every such force and moment is zero at any pose, so the
+/// springs' are zero at the solution, which is the one without them (the
+/// body where it is given, over its heave, roll and pitch equilibrium;
+/// docs/method.md §15.11).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct FloatHold {
+    pub at: [f64; 2],
+    pub vertical: [f64; 3],
+    pub translation: f64,
+    pub rotation: f64,
+}
+
+/// [`FloatHold`] of free body b if it floats on its rods alone: its
+/// centre's horizontal position at t = 0, and springs of its weight over
+/// (and times) its longest rod's length.
+pub(super) fn float_hold(system: &System, b: usize) -> Option<FloatHold> {
+    if !floats(system, b) {
+        return None;
+    }
+    let body = &system.bodies()[b];
+    let centre = body.point(body.inertia.centre_of_mass);
+    let length = body
+        .water
+        .as_ref()?
+        .rods
+        .iter()
+        .map(|r| r.length())
+        .fold(0.0f64, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let weight = (body.inertia.mass * crate::vec3::norm(system.gravity())).max(f64::MIN_POSITIVE);
+    let r = &body.rotation;
+    Some(FloatHold {
+        at: [centre[0], centre[1]],
+        vertical: [r[2][0], r[2][1], r[2][2]],
+        translation: weight / length,
+        rotation: weight * length,
+    })
+}
+
+/// The body points of body b (body axes, from the reference point).
+pub(super) fn points_local(system: &System, b: usize) -> Vec<[f64; 3]> {
+    system
+        .points()
+        .iter()
+        .filter_map(|p| match p.kind {
+            super::PointKind::Body { body, local } if body == b => Some(local),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The line (a unit vector in body axes) on which the body's centre of
+/// mass, its loads' points, its points and its rods under water all lie,
+/// if they do (to 1e-9 of their span) and no lumped drag of the body's
+/// acts in a current: then nothing turns the body about that line, its
+/// static rows are singular there (a free rod held at its ends spins
+/// freely), and the solve holds the spin, theta . a = 0, with a spring
+/// k a (a . theta) in its rotation rows. Every moment about the line
+/// being zero at any pose, the spring's moment is zero at the solution:
+/// the equilibrium is the one without it (docs/method.md §15.10).
+pub(super) fn spin_axis(body: &super::Body, points: &[[f64; 3]]) -> Option<[f64; 3]> {
+    use crate::vec3::{cross, norm, scale, sub};
+    if let Some(w) = &body.water {
+        if w.current != [0.0; 3] && w.drag_areas != [0.0; 3] {
+            return None;
+        }
+    }
+    let mut all = vec![body.inertia.centre_of_mass];
+    all.extend(body.pin.map(|pin| pin.local));
+    all.extend(body.loads.iter().map(|(_, at)| *at));
+    all.extend_from_slice(points);
+    if let Some(w) = &body.water {
+        all.extend(w.rods.iter().flat_map(|r| [r.end_a, r.end_b]));
+    }
+    let (mut from, mut to, mut span) = (all[0], all[0], 0.0);
+    for p in &all {
+        for q in &all {
+            let d = norm(sub(*p, *q));
+            if d > span {
+                (from, to, span) = (*p, *q, d);
+            }
+        }
+    }
+    if span == 0.0 {
+        return None;
+    }
+    let axis = scale(1.0 / span, sub(to, from));
+    let on_line = all
+        .iter()
+        .all(|p| norm(cross(sub(*p, from), axis)) <= 1e-9 * span);
+    on_line.then_some(axis)
+}
