@@ -3,9 +3,7 @@
 //! its waterplane's stiffness, and the added mass and drag of the wet
 //! part, checked against a floating spar's closed forms.
 
-use crate::common::{
-    assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, light_rope,
-};
+use crate::common::{assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift};
 use stancf::body::{BodyWater, RigidInertia, Rod};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
 use stancf::vec3::{add, cross, norm, scale, sub};
@@ -48,34 +46,9 @@ fn spar(bottom: [f64; 3], cd: f64, size: f64) -> Body {
 const SPAR_MASS: f64 = 50_000.0;
 const SPAR_AREA: f64 = std::f64::consts::PI;
 
-/// A 1 m light line (2 g) hanging from `top`, its end A on point 0, its
-/// end B loose.
-fn hanging_line(top: [f64; 3]) -> (Line, stancf::State) {
-    let cable = Cable::straight(1.0, 4, ElementType::Sac2)
-        .with_origin(top)
-        .with_direction([0.0, 0.0, -1.0]);
-    let model = Model::new(
-        cable,
-        light_rope(),
-        ModelOptions::default(),
-        vec![Load::Gravity {
-            acceleration: [0.0, 0.0, -G],
-        }],
-    )
-    .expect("model");
-    let state = model.initial_state();
-    (
-        Line {
-            model,
-            ends: [End::Point(0), End::Loose],
-        },
-        state,
-    )
-}
-
 /// The spar with a light line hanging from its bottom.
 fn spar_system(body: Body) -> (System, Vec<stancf::State>) {
-    let (line, state) = hanging_line(body.position);
+    let (line, state) = crate::common::hanging_line(body.position);
     let system = System::with_bodies(
         vec![line],
         vec![Point::on_body(0, [0.0; 3])],
@@ -200,14 +173,7 @@ fn a_moored_spar_floats_where_archimedes_puts_it() {
     }
     let system = System::with_bodies(lines, points, vec![spar(bottom, 0.0, 1.0)], [0.0, 0.0, -G])
         .expect("system");
-    let settings = StaticSettings {
-        tolerance: 1e-10,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = crate::common::seeded_equilibrium(system, 1e-10);
     let (reference, rotation) = statics.body_pose(0).expect("a free body");
     let q = [rotation[0][2], rotation[1][2], rotation[2][2]];
     let (c, s) = (q[2], (1.0 - q[2] * q[2]).sqrt());
@@ -260,27 +226,8 @@ fn a_spar_on_no_line_floats_upright_at_its_draft() {
     let mut body = spar([0.0, 0.0, -draft + 2.0], 0.0, 1.0);
     body.rotation = heel;
     let start = body.point([0.0, 0.0, 2.8]);
-    let line = {
-        let (line, _) = hanging_line([30.0, 0.0, -1.0]);
-        Line {
-            ends: [End::Point(0), End::Point(1)],
-            ..line
-        }
-    };
-    let points = vec![
-        Point::fixed([30.0, 0.0, -1.0]),
-        Point::fixed([30.0, 0.0, -2.0]),
-    ];
-    let system =
-        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
-    let settings = StaticSettings {
-        tolerance: 1e-10,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let (system, _) = crate::common::body_on_no_line(body, [30.0, 0.0, -1.0]);
+    let statics = crate::common::seeded_equilibrium(system, 1e-10);
     let (reference, rotation) = statics.body_pose(0).expect("a free body");
     let centre = stancf::body::pose::point(reference, &rotation, [0.0, 0.0, 2.8]);
     let tilt = (rotation[0][2].powi(2) + rotation[1][2].powi(2)).sqrt();
@@ -306,17 +253,7 @@ fn a_spar_on_no_line_floats_upright_at_its_draft() {
 fn a_spar_on_no_line_too_heavy_to_float_is_refused_by_the_static_solve() {
     let mut body = spar([0.0, 0.0, -15.0], 0.0, 1.0);
     body.inertia = body.inertia.with_point_mass(40_000.0, [0.0, 0.0, 1.0]);
-    let (line, _) = hanging_line([30.0, 0.0, -1.0]);
-    let line = Line {
-        ends: [End::Point(0), End::Point(1)],
-        ..line
-    };
-    let points = vec![
-        Point::fixed([30.0, 0.0, -1.0]),
-        Point::fixed([30.0, 0.0, -2.0]),
-    ];
-    let system =
-        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let (system, _) = crate::common::body_on_no_line(body, [30.0, 0.0, -1.0]);
     let err = SystemStatics::seeded(system.clone(), &system, StaticSettings::default())
         .err()
         .expect("refused");

@@ -5,11 +5,9 @@ use crate::common::{
     assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, light_rope,
 };
 use stancf::body::{BodyWater, Rod};
-use stancf::system::{
-    Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation, SystemStatics,
-};
+use stancf::system::{Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation};
 use stancf::vec3::{norm, scale, sub};
-use stancf::{Cable, ElementType, Material, Model, StaticSettings, StepSettings, TimeScheme};
+use stancf::{Cable, ElementType, Material, Model, StepSettings, TimeScheme};
 
 const G: f64 = 9.81;
 const RHO: f64 = 1025.0;
@@ -161,13 +159,7 @@ fn the_steps_jacobian_with_a_pinned_rod_is_the_derivative_of_its_rows() {
     });
     body.angular_velocity = [0.5, 1.0, -0.7];
     let (system, states) = pinned(body, scale(0.8, axis), [1.5, 0.5, -2.0]);
-    let settings = StepSettings {
-        time_step: 0.01,
-        time_scheme: TimeScheme::Galerkin,
-        ..StepSettings::default()
-    };
-    let mut sim = SystemSimulation::new(system, states, settings).unwrap();
-    let err = crate::common::step_jacobian_error(&mut sim, 1e-6);
+    let err = crate::common::galerkin_jacobian_error(system, states, 0.01);
     eprintln!("step Jacobian with a pinned rod: rel. error {err:.1e}");
     assert!(err < 1e-7, "{err:e}");
 }
@@ -219,24 +211,12 @@ fn a_buoyant_rod_pinned_at_its_foot_leans_in_a_current() {
     };
     let system =
         System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
-    let settings = StaticSettings {
-        tolerance: 1e-10,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let mut statics = crate::common::seeded_equilibrium(system, 1e-10);
     let (reference, rotation) = statics.body_pose(0).expect("a free body");
     let q = [rotation[0][2], rotation[1][2], rotation[2][2]];
     let alpha = q[0].atan2(q[2]);
     let drag = 0.5 * RHO * 1.2 * d * l * u * u;
-    let balance = |x: f64| lift * x.sin() - drag * x.cos().powi(2);
-    let mut want = 0.0f64;
-    for _ in 0..50 {
-        let slope = lift * want.cos() + 2.0 * drag * want.cos() * want.sin();
-        want -= balance(want) / slope;
-    }
+    let want = crate::common::lean_in_a_current(lift, drag);
     eprintln!("pinned lean {alpha:.10} rad, balance {want:.10} rad; the foot at {reference:?}");
     assert!((alpha - want).abs() < 1e-8, "{alpha} against {want}");
     assert!(
@@ -272,14 +252,7 @@ fn a_hanging_rod_under_a_constant_moment_turns_to_its_balance() {
         pinned(body, [0.0; 3], [0.0, 0.0, 6.0])
     };
     let (system, _) = build();
-    let settings = StaticSettings {
-        tolerance: 1e-10,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = crate::common::seeded_equilibrium(system, 1e-10);
     let (_, rotation) = statics.body_pose(0).expect("a free body");
     // The turn about y: R = R_y(phi), r_02 = sin(phi), r_22 = cos(phi)
     // (the rod, along body -z, swings towards -x).

@@ -2,13 +2,9 @@
 //! body's (B17) and whose water acts along them (B18)-(B19), a free rod
 //! being a body of its own.
 
-use crate::common::light_rope;
 use stancf::body::{BodyWater, Rod};
-use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
-use stancf::{
-    Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
-    TimeScheme,
-};
+use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation};
+use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, StepSettings, TimeScheme};
 
 const RHO: f64 = 1025.0;
 const G: f64 = 9.81;
@@ -36,31 +32,6 @@ fn float_rod(a: [f64; 3], b: [f64; 3], cap: f64) -> Rod {
         end_added_mass_coefficient: cap,
         segments: 4,
     }
-}
-
-/// A 1 m light line hanging from `top` (2 g, EA 2 N), its end A on
-/// point 0, its end B loose, moving at `velocity`.
-fn hanging_line(top: [f64; 3]) -> (Line, stancf::State) {
-    let cable = Cable::straight(1.0, 4, ElementType::Sac2)
-        .with_origin(top)
-        .with_direction([0.0, 0.0, -1.0]);
-    let model = Model::new(
-        cable,
-        light_rope(),
-        ModelOptions::default(),
-        vec![Load::Gravity {
-            acceleration: [0.0, 0.0, -G],
-        }],
-    )
-    .expect("model");
-    let state = model.initial_state();
-    (
-        Line {
-            model,
-            ends: [End::Point(0), End::Loose],
-        },
-        state,
-    )
 }
 
 /// MoorDyn's added-mass test for rods (tests/Mooring/rod_tests/
@@ -97,7 +68,7 @@ fn a_free_rod_rises_at_moordyns_added_mass_rate() {
             [0.0; 3]
         };
         let top: [f64; 3] = std::array::from_fn(|c| a[c] + local[c]);
-        let (line, state) = hanging_line(top);
+        let (line, state) = crate::common::hanging_line(top);
         let m_line = 2e-3;
         let mut body = Body::rod(BodyKind::Free, a, rod);
         body.water = Some(water([0.0; 3]));
@@ -142,17 +113,7 @@ fn a_free_rod_that_holds_no_line_rises_too() {
     let (m, volume) = (100.0 * rod.length(), rod.volume());
     let mut body = Body::rod(BodyKind::Free, a, rod);
     body.water = Some(water([0.0; 3]));
-    let (line, state) = hanging_line([5.0, 0.0, -1.0]);
-    let line = Line {
-        ends: [End::Point(0), End::Point(1)],
-        ..line
-    };
-    let points = vec![
-        Point::fixed([5.0, 0.0, -1.0]),
-        Point::fixed([5.0, 0.0, -2.0]),
-    ];
-    let system =
-        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
+    let (system, state) = crate::common::body_on_no_line(body, [5.0, 0.0, -1.0]);
     let settings = StepSettings {
         time_step: 0.01,
         time_scheme: TimeScheme::Galerkin,
@@ -194,13 +155,7 @@ fn a_systems_jacobian_with_a_free_rod_is_the_derivative_of_its_rows() {
     body.angular_velocity = [0.5, 1.0, -0.7];
     let (system, states) =
         crate::common::two_ropes_on_a_body(body, [[0.8, 0.6, 0.6], [0.3, 0.25, 0.1]], -1.0);
-    let settings = StepSettings {
-        time_step: 0.01,
-        time_scheme: TimeScheme::Galerkin,
-        ..StepSettings::default()
-    };
-    let mut sim = SystemSimulation::new(system, states, settings).unwrap();
-    let err = crate::common::step_jacobian_error(&mut sim, 1e-6);
+    let err = crate::common::galerkin_jacobian_error(system, states, 0.01);
     eprintln!("step Jacobian with a free rod: rel. error {err:.1e}");
     assert!(err < 1e-7, "{err:e}");
 }
@@ -341,25 +296,13 @@ fn a_tethered_rod_leans_in_a_current_until_its_lift_balances_its_drag() {
         });
     }
     let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -G]).expect("system");
-    let settings = StaticSettings {
-        tolerance: 1e-10,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| std::ops::ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = crate::common::seeded_equilibrium(system, 1e-10);
     let (_, rotation) = statics.body_pose(0).expect("a free body");
     // The rod's axis: body z (its body axes are the global ones at t = 0).
     let axis = [rotation[0][2], rotation[1][2], rotation[2][2]];
     let alpha = axis[0].atan2(axis[2]);
     let drag = 0.5 * RHO * cd * d * l * u * u;
-    let balance = |x: f64| lift * x.sin() - drag * x.cos().powi(2);
-    let mut want = 0.0f64;
-    for _ in 0..50 {
-        let slope = lift * want.cos() + 2.0 * drag * want.cos() * want.sin();
-        want -= balance(want) / slope;
-    }
+    let want = crate::common::lean_in_a_current(lift, drag);
     eprintln!(
         "lean {alpha:.10} rad, balance {want:.10} rad; sideways {:.1e}",
         axis[1]

@@ -325,3 +325,96 @@ pub fn two_ropes_on_a_body(
     system.start_lines_with_bodies(&mut states);
     (system, states)
 }
+
+/// A 1 m [`light_rope`] (2 g) hanging from `top` in gravity 9.81, its end A
+/// on point 0, its end B loose, and its state at rest.
+pub fn hanging_line(top: [f64; 3]) -> (stancf::system::Line, stancf::State) {
+    use stancf::system::{End, Line};
+    let cable = stancf::Cable::straight(1.0, 4, stancf::ElementType::Sac2)
+        .with_origin(top)
+        .with_direction([0.0, 0.0, -1.0]);
+    let model = stancf::Model::new(
+        cable,
+        light_rope(),
+        Default::default(),
+        vec![stancf::Load::Gravity {
+            acceleration: [0.0, 0.0, -9.81],
+        }],
+    )
+    .expect("model");
+    let state = model.initial_state();
+    (
+        Line {
+            model,
+            ends: [End::Point(0), End::Loose],
+        },
+        state,
+    )
+}
+
+/// `system`'s static equilibrium from the seeded path
+/// ([`stancf::system::SystemStatics::seeded`]) to `tolerance`.
+pub fn seeded_equilibrium(
+    system: stancf::system::System,
+    tolerance: f64,
+) -> stancf::system::SystemStatics {
+    let settings = stancf::StaticSettings {
+        tolerance,
+        ..stancf::StaticSettings::default()
+    };
+    let mut statics =
+        stancf::system::SystemStatics::seeded(system.clone(), &system, settings).expect("statics");
+    assert!(statics
+        .solve(|_, _| std::ops::ControlFlow::Continue(()))
+        .expect("solve"));
+    statics
+}
+
+/// The lean a of a buoyant rod held at its foot in a current, where its
+/// lift's moment balances its drag's: lift sin(a) = drag cos^2(a)
+/// (lift (rho V - m) g, drag 1/2 rho Cd d L U^2), by Newton from 0.
+pub fn lean_in_a_current(lift: f64, drag: f64) -> f64 {
+    let mut a = 0.0f64;
+    for _ in 0..50 {
+        let balance = lift * a.sin() - drag * a.cos().powi(2);
+        let slope = lift * a.cos() + 2.0 * drag * a.cos() * a.sin();
+        a -= balance / slope;
+    }
+    a
+}
+
+/// `body` (body 0) on no line, in a system whose only line (which a system
+/// needs) is a [`hanging_line`] between two anchors at `aside` and 1 m
+/// below it (points 0 and 1); in gravity 9.81. With the line's state.
+pub fn body_on_no_line(
+    body: stancf::system::Body,
+    aside: [f64; 3],
+) -> (stancf::system::System, stancf::State) {
+    use stancf::system::{End, Line, Point, System};
+    let (line, state) = hanging_line(aside);
+    let line = Line {
+        ends: [End::Point(0), End::Point(1)],
+        ..line
+    };
+    let below = [aside[0], aside[1], aside[2] - 1.0];
+    let points = vec![Point::fixed(aside), Point::fixed(below)];
+    let system =
+        System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    (system, state)
+}
+
+/// [`step_jacobian_error`] of the first Galerkin step of `dt` of `system`
+/// from `states`, with differences of 1e-6.
+pub fn galerkin_jacobian_error(
+    system: stancf::system::System,
+    states: Vec<stancf::State>,
+    dt: f64,
+) -> f64 {
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = stancf::system::SystemSimulation::new(system, states, settings).unwrap();
+    step_jacobian_error(&mut sim, 1e-6)
+}
