@@ -1413,3 +1413,33 @@ fn openfasts_md_float_buoy_floats_upright_at_its_draft() {
     );
     assert!(r[col("Body1RY")].abs() < 1e-6, "{}", r[col("Body1RY")]);
 }
+
+/// A deck's rod of zero length fixed in a body (`Body1`, NumSegs 0, at
+/// body coordinates [1, 0, 0]) puts the points of the lines at its ends
+/// where it is on the body, [1, 0, 0] in the body's axes and
+/// [1, 0, -20] m at t = 0 (they were put at the body's reference point).
+#[test]
+fn a_zero_length_rod_on_a_body_holds_its_lines_where_it_is() {
+    let d = scratch("zero-length-body-rod");
+    let deck_text = body_rod_deck("-", "0")
+        .replace(
+            "2    conn      Free        15    0     -10   15    0     -10  0",
+            "2    conn      Body1       1     0     0     1     0     0    0",
+        )
+        .replace(
+            "2     rope       2        R2A       18        6",
+            "2     rope       2        R2A       40        6",
+        );
+    let deck = write_scenario(&d, "zero-length.txt", &deck_text);
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    let line = so
+        .lines()
+        .find(|l| l.starts_with("point 4 "))
+        .unwrap_or_default();
+    assert!(
+        line.ends_with("on free body 1 at [1, 0, 0] m in its axes, at [1, 0, -20] m"),
+        "{so}"
+    );
+}

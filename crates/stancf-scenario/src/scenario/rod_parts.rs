@@ -65,6 +65,10 @@ pub struct SystemRod {
     pub rod: Option<Rod>,
     /// Its ends A and B at t = 0, global (m).
     pub ends: [[f64; 3]; 2],
+    /// Its ends in its holder's frame (as `rod`'s: body axes from the
+    /// body's reference point on a body, from end A for a free or pinned
+    /// rod, global for a fixed one), also for a rod of zero length.
+    pub local: [[f64; 3]; 2],
     /// The points (indices) at its ends A and B where lines attach.
     pub points: [Option<usize>; 2],
 }

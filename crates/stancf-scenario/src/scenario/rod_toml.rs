@@ -146,6 +146,7 @@ pub(super) fn rods(
             type_index,
             rod: Some(rod),
             ends,
+            local,
             points: [None; 2],
         };
         out.push(rod);

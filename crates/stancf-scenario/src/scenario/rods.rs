@@ -40,7 +40,7 @@ use stancf::vec3::sub;
 /// coordinates, a fixed point at a fixed rod's end or a pinned rod's end
 /// A (its pin), the rod's free point for one of zero length.
 pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
-    let local = rod.rod.as_ref().map_or([0.0; 3], |r| [r.end_a, r.end_b][k]);
+    let local = rod.local[k];
     match rod.holder {
         RodHolder::Fixed => PointType::Fixed,
         RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
@@ -216,6 +216,7 @@ fn deck_rod(
         type_index: r.type_index,
         rod: built,
         ends,
+        local: rod,
         points: [None; 2],
     };
     match holder {
