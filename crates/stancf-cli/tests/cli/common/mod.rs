@@ -4,9 +4,11 @@
 #![allow(dead_code)]
 
 mod bodies;
+mod rods;
 // The properties binary shares this module and uses none of them.
 #[allow(unused_imports)]
 pub use bodies::*;
+pub use rods::*;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
