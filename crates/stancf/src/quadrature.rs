@@ -23,6 +23,15 @@ pub struct GaussRule {
 }
 
 impl GaussRule {
+    /// The n-point rule (1 <= n <= [`MAX_POINTS`], else a panic), computed
+    /// once and kept: for the rules a kernel takes at every evaluation
+    /// (a rod's wet band, its thin cut band).
+    pub fn shared(n: usize) -> &'static GaussRule {
+        static RULES: [std::sync::OnceLock<GaussRule>; MAX_POINTS] =
+            [const { std::sync::OnceLock::new() }; MAX_POINTS];
+        RULES[n - 1].get_or_init(|| GaussRule::new(n).expect("1 to MAX_POINTS points"))
+    }
+
     /// The n-point rule, 1 <= n <= 10.
     ///
     /// Roots of the Legendre polynomial P_n found by Newton's method from

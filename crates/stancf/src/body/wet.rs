@@ -180,36 +180,38 @@ impl<const N: usize> WetPart<N> {
 
     /// The side's stations: `rule` ([0, 1] points and weights) on each
     /// of `pieces` equal pieces of the wet run, then the band's rule.
-    pub fn stations(&self, rule: &[(f64, f64)], pieces: usize) -> Vec<Station<N>> {
-        let mut out = Vec::with_capacity(rule.len() * pieces + BAND_POINTS);
+    pub fn stations<'a>(
+        &'a self,
+        rule: &'a [(f64, f64)],
+        pieces: usize,
+    ) -> impl Iterator<Item = Station<N>> + 'a {
         let zero = Jet::constant(0.0);
-        if self.wet_to.v > 0.0 {
-            let piece = self.wet_to.scale(1.0 / pieces as f64);
-            for k in 0..pieces {
-                for &(x, w) in rule {
-                    out.push(Station {
-                        point: self.point(piece.scale(k as f64 + x)),
-                        weight: piece.scale(w),
-                        wetting: zero,
-                    });
-                }
-            }
-        }
+        let piece = self.wet_to.scale(1.0 / pieces as f64);
+        let runs = if self.wet_to.v > 0.0 { pieces } else { 0 };
+        let run = (0..runs).flat_map(move |k| {
+            rule.iter().map(move |&(x, w)| Station {
+                point: self.point(piece.scale(k as f64 + x)),
+                weight: piece.scale(w),
+                wetting: zero,
+            })
+        });
         let width = self.dry_from - self.wet_to;
-        if width.v > 0.0 {
-            let band = GaussRule::new(BAND_POINTS).expect("the band's Gauss rule");
-            for (x, w) in band.points.iter().zip(&band.weights) {
+        let band = GaussRule::shared(BAND_POINTS);
+        let cut = if width.v > 0.0 { BAND_POINTS } else { 0 };
+        let band = band.points[..cut]
+            .iter()
+            .zip(&band.weights)
+            .map(move |(x, w)| {
                 let t = self.wet_to + width.scale(*x);
                 let (fraction, rate) = self.section(t);
                 let weight = width.scale(*w);
-                out.push(Station {
+                Station {
                     point: self.point(t),
                     weight: weight * fraction,
                     wetting: first_order(weight * rate),
-                });
-            }
-        }
-        out
+                }
+            });
+        run.chain(band)
     }
 
     /// The wet fraction of the section at t (B22) and its rate along the
@@ -311,11 +313,7 @@ mod tests {
         ] {
             let (z, cc) = (Jet::<1>::constant(z_a), Jet::<1>::constant(c));
             let part = WetPart::at([0.0; 3], [0.0, 0.0, l], a, z, cc);
-            let summed: f64 = part
-                .stations(&[(0.5, 1.0)], 1)
-                .iter()
-                .map(|s| s.weight.v)
-                .sum();
+            let summed: f64 = part.stations(&[(0.5, 1.0)], 1).map(|s| s.weight.v).sum();
             let volume = crate::body::waterline::submerged(z, cc, l, a).volume.v;
             eprintln!(
                 "z_A {z_a}, c {c}: A sum phi against V_w: {:.1e}",

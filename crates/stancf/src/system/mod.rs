@@ -42,6 +42,7 @@ mod seed;
 mod simulation;
 mod static_friction;
 mod static_paths;
+mod static_water;
 mod statics;
 mod step_equations;
 mod stepping;

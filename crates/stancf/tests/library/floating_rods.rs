@@ -7,10 +7,7 @@ use crate::common::{assert_energy_balance_falls_at_fourth_order, galerkin_energy
 use stancf::body::{BodyWater, RigidInertia, Rod};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
 use stancf::vec3::{add, cross, norm, scale, sub};
-use stancf::{
-    Cable, ElementType, Load, Material, Model, ModelOptions, StaticSettings, StepSettings,
-    TimeScheme,
-};
+use stancf::{Material, StaticSettings, StepSettings, TimeScheme};
 
 const RHO: f64 = 1025.0;
 const G: f64 = 9.81;
@@ -151,19 +148,8 @@ fn a_moored_spar_floats_where_archimedes_puts_it() {
     let mut points = Vec::new();
     for k in 0..2 {
         let end = add(bottom, fairleads[k]);
-        let chord = sub(end, anchors[k]);
-        let cable = Cable::straight(1.02 * norm(chord), 20, ElementType::Sac2)
-            .with_origin(anchors[k])
-            .with_direction(stancf::vec3::normalized(chord));
-        let model = Model::new(
-            cable,
-            material,
-            ModelOptions::default(),
-            vec![Load::Gravity {
-                acceleration: [0.0, 0.0, -G],
-            }],
-        )
-        .expect("model");
+        let length = 1.02 * norm(sub(end, anchors[k]));
+        let model = crate::common::straight_line(anchors[k], end, length, 20, material);
         points.push(Point::on_body(0, fairleads[k]));
         points.push(Point::fixed(anchors[k]));
         lines.push(Line {

@@ -4,7 +4,7 @@
 
 use stancf::body::{BodyWater, Rod};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation};
-use stancf::{Cable, ElementType, Load, Material, Model, ModelOptions, StepSettings, TimeScheme};
+use stancf::{Cable, ElementType, Material, Model, ModelOptions, StepSettings, TimeScheme};
 
 const RHO: f64 = 1025.0;
 const G: f64 = 9.81;
@@ -276,19 +276,8 @@ fn a_tethered_rod_leans_in_a_current_until_its_lift_balances_its_drag() {
     for k in 0..3 {
         let angle = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
         let anchor = [2.0 * angle.cos(), 2.0 * angle.sin(), a[2] - 2.0];
-        let chord = stancf::vec3::sub(a, anchor);
-        let cable = Cable::straight(stancf::vec3::norm(chord), 8, ElementType::Sac2)
-            .with_origin(anchor)
-            .with_direction(stancf::vec3::normalized(chord));
-        let model = Model::new(
-            cable,
-            material,
-            ModelOptions::default(),
-            vec![Load::Gravity {
-                acceleration: [0.0, 0.0, -G],
-            }],
-        )
-        .expect("model");
+        let length = stancf::vec3::norm(stancf::vec3::sub(a, anchor));
+        let model = crate::common::straight_line(anchor, a, length, 8, material);
         points.push(Point::fixed(anchor));
         lines.push(Line {
             model,

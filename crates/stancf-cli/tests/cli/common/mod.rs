@@ -8,6 +8,7 @@ mod rods;
 // The properties binary shares this module and uses none of them.
 #[allow(unused_imports)]
 pub use bodies::*;
+#[allow(unused_imports)]
 pub use rods::*;
 
 use std::path::{Path, PathBuf};

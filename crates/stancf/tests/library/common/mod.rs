@@ -418,3 +418,27 @@ pub fn galerkin_jacobian_error(
     let mut sim = stancf::system::SystemSimulation::new(system, states, settings).unwrap();
     step_jacobian_error(&mut sim, 1e-6)
 }
+
+/// A line of `material` and `length` laid straight from `start` towards
+/// `end` in `elements` SAC-2 elements, under gravity 9.81.
+pub fn straight_line(
+    start: [f64; 3],
+    end: [f64; 3],
+    length: f64,
+    elements: usize,
+    material: stancf::Material,
+) -> stancf::Model {
+    let chord = stancf::vec3::sub(end, start);
+    let cable = stancf::Cable::straight(length, elements, stancf::ElementType::Sac2)
+        .with_origin(start)
+        .with_direction(stancf::vec3::normalized(chord));
+    stancf::Model::new(
+        cable,
+        material,
+        Default::default(),
+        vec![stancf::Load::Gravity {
+            acceleration: [0.0, 0.0, -9.81],
+        }],
+    )
+    .expect("model")
+}
