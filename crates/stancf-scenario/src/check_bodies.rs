@@ -141,9 +141,13 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
         let holder = match r.holder {
             RodHolder::Fixed => "fixed (held where it is)".to_string(),
             RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
-            RodHolder::Pinned { body } => format!(
-                "pinned at end A to point {} (fixed; the rod turns freely about it), body {}",
+            RodHolder::Pinned { body, host } => format!(
+                "pinned at end A to point {} ({}; the rod turns freely about it), body {}",
                 r.pin_point().map_or(0, |p| sc.points[p].id),
+                match host {
+                    Some((h, _)) => format!("on free body {}, a joint", sc.bodies[h].id),
+                    None => "fixed".to_string(),
+                },
                 sc.bodies[body].id
             ),
             RodHolder::Body { body } => format!(

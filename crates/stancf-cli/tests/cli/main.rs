@@ -18,6 +18,7 @@ mod figures_and_vtk;
 mod grading;
 mod hostile_inputs;
 mod hostile_scenarios;
+mod joints;
 mod mesh_sections;
 mod motion_files;
 mod output_files;

@@ -347,10 +347,8 @@ fn a_rod_pinned_at_its_top_swings_as_a_physical_pendulum() {
 
 /// What pinned rods do not build is refused with exit 2 naming the deck's
 /// line or the key, nothing written: a rod pinned to a coupled body
-/// (`Body1Pinned`; a free body's is in
-/// [`what_rods_do_not_build_is_refused_naming_the_deck_line`]), a rod
-/// pinned to a host (`CoupledPinned`), a pinned rod of zero length, a
-/// TOML pinned rod naming a body.
+/// (`Body1Pinned`; a TOML rod's is in `joints.rs`), a rod pinned to a
+/// host (`CoupledPinned`), a pinned rod of zero length.
 #[test]
 fn what_pinned_rods_do_not_build_is_refused_naming_the_line_or_key() {
     let d = scratch("pinned-rod-refusals");
@@ -359,8 +357,8 @@ fn what_pinned_rods_do_not_build_is_refused_naming_the_line_or_key() {
     let cases = [
         (
             pinned_rod_deck("Body1Pinned", "0     0     2     0     0     6   ", coupled),
-            "rod 1 is pinned to body 1, which is coupled: a rod pinned to a free or coupled \
-             body is not built yet",
+            "rod 1 is pinned to body 1, which is coupled: a rod pinned to a host's motion is \
+             not built yet",
         ),
         (
             pinned_rod_deck("CoupledPinned", "0     0     -18   0     0     -14 ", ""),
@@ -386,12 +384,4 @@ fn what_pinned_rods_do_not_build_is_refused_naming_the_line_or_key() {
             errs[0]
         );
     }
-    expect_input_error(
-        "pinned-rod-body-key",
-        &PINNED_LEAN.replace("type = \"pinned\"\n", "type = \"pinned\"\nbody = 1\n"),
-        &[
-            "rods[0].body",
-            "a rod pinned to a body is not built in a TOML scenario",
-        ],
-    );
 }

@@ -14,7 +14,7 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 }
 
 /// What is not built is refused naming the deck's line: a line with
-/// bending stiffness at a rod end, a pinned or coupled rod, a rod in
+/// bending stiffness at a rod end, a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
 /// a rod output channel stancf has no value for (a body rod's forces, a
 /// zero-length rod's all but its position and velocity, accelerations)
@@ -34,13 +34,6 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             "AttachB of line 1 is end A of rod 1, and its line type has bending stiffness EI = \
              1000 N m^2: a line with bending stiffness at the end of a rod that moves (MoorDyn \
              clamps it to the rod's axis) is not built yet (at a fixed rod it is clamped)"
-                .into(),
-        ),
-        (
-            base.replace("1    can       Body1 ", "1    can       Body1Pinned "),
-            "Body1Pinned",
-            "rod 1 is pinned to body 1, which is free: a rod pinned to a free or coupled body \
-             is not built yet"
                 .into(),
         ),
         (

@@ -32,7 +32,7 @@ impl RodTypeValues {
 }
 
 /// What holds a rod of a system.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum RodHolder {
     /// Held where it is (its ends global).
     Fixed,
@@ -42,9 +42,14 @@ pub enum RodHolder {
     /// Fixed in body `body` (its index).
     Body { body: usize },
     /// Pinned at its end A: body `body` (its index) is the rod, as a free
-    /// rod's, its end A held at the fixed point at that end (the rod's
-    /// `points[0]`, always there), turning freely about it.
-    Pinned { body: usize },
+    /// rod's, its end A held at the point at that end (the rod's
+    /// `points[0]`, always there), turning freely about it: a fixed point,
+    /// or with `host` the point of a free body (its index) at its
+    /// coordinates (from its reference point, its axes), a joint.
+    Pinned {
+        body: usize,
+        host: Option<(usize, [f64; 3])>,
+    },
     /// A deck's free rod of zero length: free point `point` (its index).
     Point { point: usize },
 }
@@ -78,9 +83,9 @@ impl SystemRod {
     /// the body it is fixed in).
     pub fn body(&self) -> Option<usize> {
         match self.holder {
-            RodHolder::Free { body } | RodHolder::Pinned { body } | RodHolder::Body { body } => {
-                Some(body)
-            }
+            RodHolder::Free { body }
+            | RodHolder::Pinned { body, .. }
+            | RodHolder::Body { body } => Some(body),
             RodHolder::Fixed | RodHolder::Point { .. } => None,
         }
     }
@@ -88,7 +93,7 @@ impl SystemRod {
     /// The body that is the rod (a free or pinned rod's), if it is one.
     pub fn own_body(&self) -> Option<usize> {
         match self.holder {
-            RodHolder::Free { body } | RodHolder::Pinned { body } => Some(body),
+            RodHolder::Free { body } | RodHolder::Pinned { body, .. } => Some(body),
             _ => None,
         }
     }

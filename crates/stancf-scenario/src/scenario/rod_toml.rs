@@ -93,31 +93,46 @@ pub(super) fn rods(
             Some(n) => ctx.count(&key("segments"), n, 1, 10_000)?,
             None => 1,
         };
-        if word == "pinned" && r.body.is_some() {
+        if !matches!(word, "body" | "pinned") && r.body.is_some() {
             return Err(ctx.err(
                 &key("body"),
-                "a pinned rod's end A is held where end_a puts it (global): a rod pinned to a \
-                 body is not built in a TOML scenario (one pinned to a fixed body is a rod \
-                 pinned at that body's point, given globally; the joint between a rod and a \
-                 free or coupled body is future work)",
-            ));
-        }
-        if word != "body" && r.body.is_some() {
-            return Err(ctx.err(
-                &key("body"),
-                format!("names the body of a rod of type \"body\"; this rod is \"{word}\""),
+                format!(
+                    "names the body of a rod of type \"body\" or \"pinned\"; this rod is \
+                     \"{word}\""
+                ),
             ));
         }
         let (holder, local, ends) = match word {
             "fixed" => (RodHolder::Fixed, [a, b], [a, b]),
             "free" | "pinned" => {
+                // A rod pinned to a body: its ends in the body's axes from
+                // its reference point, end A held at that body point.
+                let (ends, host) = match r.body {
+                    Some(_) if word == "pinned" => {
+                        let on = body_index(ctx, &key("body"), r.body, bodies)?;
+                        if bodies[on].is_coupled() {
+                            return Err(ctx.err(
+                                &key("body"),
+                                format!(
+                                    "body {} is coupled: a rod pinned to a host's motion is not \
+                                     built yet (a rod pinned to a fixed or free body is)",
+                                    bodies[on].id
+                                ),
+                            ));
+                        }
+                        let free = bodies[on].kind == super::bodies::BodyType::Free;
+                        let host = free.then_some((on, a));
+                        ([bodies[on].point(a), bodies[on].point(b)], host)
+                    }
+                    _ => ([a, b], None),
+                };
                 let body = bodies.len();
-                bodies.push(free_rod_body(next_body_id(bodies), a));
+                bodies.push(free_rod_body(next_body_id(bodies), ends[0]));
                 let holder = match word {
                     "free" => RodHolder::Free { body },
-                    _ => RodHolder::Pinned { body },
+                    _ => RodHolder::Pinned { body, host },
                 };
-                (holder, [[0.0; 3], sub(b, a)], [a, b])
+                (holder, [[0.0; 3], sub(ends[1], ends[0])], ends)
             }
             _ => {
                 let body = body_index(ctx, &key("body"), r.body, bodies)?;

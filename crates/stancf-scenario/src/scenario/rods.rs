@@ -43,9 +43,13 @@ pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
     let local = rod.local[k];
     match rod.holder {
         RodHolder::Fixed => PointType::Fixed,
+        RodHolder::Pinned {
+            host: Some((body, local)),
+            ..
+        } if k == 0 => PointType::Body { body, local },
         RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
         RodHolder::Point { .. } => PointType::Free,
-        RodHolder::Free { body } | RodHolder::Pinned { body } | RodHolder::Body { body } => {
+        RodHolder::Free { body } | RodHolder::Pinned { body, .. } | RodHolder::Body { body } => {
             PointType::Body { body, local }
         }
     }
@@ -188,11 +192,11 @@ fn deck_rod(
             (RodHolder::Body { body: n - 1 }, [r.end_a, r.end_b], ends)
         }
         RodAttachment::Pinned | RodAttachment::BodyPinned(_) => {
-            let ends = pinned_ends(r, bodies)?;
+            let (ends, host) = pinned_ends(r, bodies)?;
             let body = bodies.len();
             bodies.push(free_rod_body(next_body_id(bodies), ends[0]));
             let local = [[0.0; 3], sub(ends[1], ends[0])];
-            (RodHolder::Pinned { body }, local, ends)
+            (RodHolder::Pinned { body, host }, local, ends)
         }
     };
     let built = (!zero).then(|| rod_of(&t, rod[0], rod[1], r.segments));
@@ -234,11 +238,15 @@ fn deck_rod(
     Ok(out)
 }
 
+/// A pinned rod's global ends and its joint's host ([`pinned_ends`]).
+type PinnedEnds = ([[f64; 3]; 2], Option<(usize, [f64; 3])>);
+
 /// The global ends of a pinned rod: as written for `Pinned`, where its
-/// fixed body's pose puts them for `Body<n>Pinned`. Refused: a rod of
-/// zero length (nothing to turn), a rod pinned to a free or coupled
-/// body.
-fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<[[f64; 3]; 2], String> {
+/// body's pose puts them for `Body<n>Pinned`; and for a free body n, the
+/// joint's host: body n (its index) at end A's coordinates in it.
+/// Refused: a rod of zero length (nothing to turn), a rod pinned to a
+/// coupled body.
+fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<PinnedEnds, String> {
     if r.segments == 0 {
         return Err(format!(
             "rod {} is pinned with NumSegs 0, a rod of zero length, which has nothing to turn \
@@ -249,18 +257,21 @@ fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<[[f64; 3]; 2], Stri
     match r.attachment {
         RodAttachment::BodyPinned(n) => {
             let b = &bodies[n - 1];
-            if b.kind != BodyType::Fixed {
-                return Err(format!(
-                    "rod {} is pinned to body {n}, which is {}: a rod pinned to a free or \
-                     coupled body is not built yet (the joint between two bodies; a rod \
-                     pinned to a fixed body is, and Body<n> fixes the rod in a free body)",
-                    r.id,
-                    b.type_word()
-                ));
-            }
-            Ok([b.point(r.end_a), b.point(r.end_b)])
+            let host = match b.kind {
+                BodyType::Fixed => None,
+                BodyType::Free => Some((n - 1, r.end_a)),
+                _ => {
+                    return Err(format!(
+                        "rod {} is pinned to body {n}, which is {}: a rod pinned to a host's \
+                         motion is not built yet (a rod pinned to a fixed or free body is)",
+                        r.id,
+                        b.type_word()
+                    ))
+                }
+            };
+            Ok(([b.point(r.end_a), b.point(r.end_b)], host))
         }
-        _ => Ok([r.end_a, r.end_b]),
+        _ => Ok(([r.end_a, r.end_b], None)),
     }
 }
 
@@ -320,6 +331,15 @@ pub(super) fn pin_of_body(sc: &SystemScenario, b: usize) -> Option<stancf::syste
             local: [0.0; 3],
             point,
         })
+}
+
+/// The host of body `b` if it is a rod pinned to a free body (a joint):
+/// the host's index and the pin's place in its axes.
+pub(super) fn joint_host(sc: &SystemScenario, b: usize) -> Option<(usize, [f64; 3])> {
+    sc.rods.iter().find_map(|r| match r.holder {
+        RodHolder::Pinned { body, host } if body == b => host,
+        _ => None,
+    })
 }
 
 /// Refuses a moving rod's water this version does not build, as for a

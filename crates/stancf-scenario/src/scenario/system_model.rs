@@ -166,6 +166,15 @@ impl SystemScenario {
         };
         body.rods = super::rods::rods_of_body(self, i);
         body.pin = super::rods::pin_of_body(self, i);
+        // A rod at a joint starts moving with its host's point there.
+        if let Some((h, local)) = super::rods::joint_host(self, i) {
+            let host = &self.bodies[h];
+            let arm = stancf::body::pose::rotate(&host.rotation(), local);
+            body.velocity = stancf::vec3::add(
+                host.velocity,
+                stancf::vec3::cross(host.angular_velocity, arm),
+            );
+        }
         body
     }
 

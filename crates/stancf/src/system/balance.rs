@@ -34,7 +34,8 @@
 //! weightless lines only, no catenary through its ends), the points
 //! stay where the scenario puts them.
 
-use super::seed::{catenary_states_at, end_positions_at, seed_shape};
+use super::network::{imbalance, joint_root, Network};
+use super::seed::catenary_states_at;
 use super::{End, System};
 use crate::band::BandLu;
 use crate::body::pose::Pose;
@@ -80,15 +81,47 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
         .iter()
         .map(|b| (b.position, b.rotation))
         .collect();
+    // A pinned body keeps its given pose (its pin holds it there), unless
+    // it hangs at a joint from one of the network's bodies: then it rides
+    // with that body, turned with it as given (§15.14).
+    let bodies: Vec<usize> = system
+        .free_bodies()
+        .filter(|&b| system.bodies()[b].pin.is_none())
+        .collect();
+    let riders = bodies
+        .iter()
+        .map(|&b| {
+            system
+                .free_bodies()
+                .filter(|&c| c != b && joint_root(system, c) == b)
+                .collect()
+        })
+        .collect();
+    // Where an assembly turns freely about the vertical (§15.14), a spring
+    // holds its heading as given (its force zero at the solution).
+    let yaw_springs = bodies
+        .iter()
+        .map(|&b| {
+            super::body_holds::yaw_hold(system, b).map(|_| {
+                let mass: f64 = std::iter::once(b)
+                    .chain(
+                        system
+                            .free_bodies()
+                            .filter(|&c| c != b && joint_root(system, c) == b),
+                    )
+                    .map(|m| system.bodies()[m].inertia.mass)
+                    .sum();
+                (mass * crate::vec3::norm(system.gravity())).max(1.0)
+            })
+        })
+        .collect();
     let net = Network {
         free: (0..positions.len())
             .filter(|&p| system.points()[p].is_free())
             .collect(),
-        // A pinned body keeps its given pose (its pin holds it there).
-        bodies: system
-            .free_bodies()
-            .filter(|&b| system.bodies()[b].pin.is_none())
-            .collect(),
+        bodies,
+        riders,
+        yaw_springs,
     };
     if net.free.is_empty() && net.bodies.is_empty() {
         return (positions, poses);
@@ -96,58 +129,13 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
     let start = net.start(system, &positions);
     if let Some(x) = solve_network(system, &net, &positions, start) {
         net.place(system, &x, &mut positions);
-        for (k, &b) in net.bodies.iter().enumerate() {
-            poses[b] = net.pose(system, &x, k);
-        }
-    }
-    (positions, poses)
-}
-
-/// The unknowns of (M32a): the free points' coordinates (3 each), then
-/// the free bodies' centres and rotation vectors (6 each).
-struct Network {
-    free: Vec<usize>,
-    bodies: Vec<usize>,
-}
-
-impl Network {
-    fn size(&self) -> usize {
-        3 * self.free.len() + 6 * self.bodies.len()
-    }
-
-    /// The unknowns where the system puts the points and bodies.
-    fn start(&self, system: &System, positions: &[[f64; 3]]) -> Vec<f64> {
-        let mut x: Vec<f64> = self.free.iter().flat_map(|&p| positions[p]).collect();
-        for &b in &self.bodies {
-            let body = &system.bodies()[b];
-            x.extend(body.point(body.inertia.centre_of_mass));
-            x.extend([0.0; 3]);
-        }
-        x
-    }
-
-    /// Body k's reference point and rotation at x.
-    fn pose(&self, system: &System, x: &[f64], k: usize) -> Pose {
-        let body = &system.bodies()[self.bodies[k]];
-        let o = 3 * self.free.len() + 6 * k;
-        let phi = [x[o + 3], x[o + 4], x[o + 5]];
-        let rotation = crate::vec3::mat3_mul(&crate::body::rotation::exp_map(phi), &body.rotation);
-        let arm = crate::body::pose::rotate(&rotation, body.inertia.centre_of_mass);
-        (crate::vec3::sub([x[o], x[o + 1], x[o + 2]], arm), rotation)
-    }
-
-    /// Writes the free points' and the bodies' points' positions at x.
-    fn place(&self, system: &System, x: &[f64], positions: &mut [[f64; 3]]) {
-        for (k, &p) in self.free.iter().enumerate() {
-            positions[p] = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
-        }
-        for (k, &b) in self.bodies.iter().enumerate() {
-            let (r, rotation) = self.pose(system, x, k);
-            for &(p, local) in system.body_points(b) {
-                positions[p] = crate::body::pose::point(r, &rotation, local);
+        for k in 0..net.bodies.len() {
+            for (b, pose) in net.members(system, &x, k) {
+                poses[b] = pose;
             }
         }
     }
+    (positions, poses)
 }
 
 /// Newton on (M32a) from `x`; the unknowns of `net`, or None if it does
@@ -258,6 +246,22 @@ fn descend(
     if alpha * turn > 0.5 {
         alpha = 0.5 / turn;
     }
+    // A body with rods moves at most a quarter of its shortest rod a step:
+    // their buoyancy changes over their length (a waterplane's stiffness
+    // appears where one meets the surface), which the tangent of a
+    // longer step does not see.
+    for (k, &b) in net.bodies.iter().enumerate() {
+        let rods = std::iter::once(b)
+            .chain(net.riders[k].iter().copied())
+            .filter_map(|m| system.bodies()[m].water.as_ref())
+            .flat_map(|w| w.rods.iter().map(|r| r.length()));
+        let reach = 0.25 * rods.fold(f64::INFINITY, f64::min);
+        let o = 3 * net.free.len() + 6 * k;
+        let moved = (0..3).fold(0.0f64, |m, c| m.max(dx[o + c].abs()));
+        if reach.is_finite() && reach > 0.0 && alpha * moved > reach {
+            alpha = reach / moved;
+        }
+    }
     for _ in 0..30 {
         let trial: Vec<f64> = x.iter().zip(dx).map(|(xi, d)| xi - alpha * d).collect();
         if let Some((gt, _)) = imbalance(system, net, positions, &trial) {
@@ -268,132 +272,6 @@ fn descend(
         alpha *= 0.5;
     }
     None
-}
-
-/// G(x) of (M32a) with the free points and bodies at `x` (the points
-/// written into `positions`), and the scale of the forces at play (the
-/// largest load or end force); None if a line has a non-finite force.
-fn imbalance(
-    system: &System,
-    net: &Network,
-    positions: &mut [[f64; 3]],
-    x: &[f64],
-) -> Option<(Vec<f64>, f64)> {
-    let free = &net.free;
-    net.place(system, x, positions);
-    let mut g = vec![0.0; x.len()];
-    let mut scale = 0.0f64;
-    // Where a force at point p goes: a free point's 3 rows, or a body's
-    // force and its moment about the body's centre (k, its centre).
-    let mut centres = Vec::with_capacity(net.bodies.len());
-    for (k, &b) in net.bodies.iter().enumerate() {
-        let body = &system.bodies()[b];
-        let (r, rotation) = net.pose(system, x, k);
-        let centre = crate::body::pose::point(r, &rotation, body.inertia.centre_of_mass);
-        centres.push(centre);
-        let (volume, density) = body
-            .water
-            .as_ref()
-            .map_or((0.0, 0.0), |w| (w.volume, w.density));
-        let net_weight = system
-            .gravity()
-            .map(|gc| (body.inertia.mass - density * volume) * gc);
-        let mut loads = vec![(net_weight, centre)];
-        for &(f, local) in &body.loads {
-            loads.push((f, crate::body::pose::point(r, &rotation, local)));
-        }
-        let o = 3 * free.len() + 6 * k;
-        for (f, at) in loads {
-            add_at(&mut g, o, f, crate::vec3::sub(at, centre), &mut scale);
-        }
-        for c in 0..3 {
-            g[o + 3 + c] += body.moment[c];
-        }
-        if let Some(water) = body.water.as_ref().filter(|w| !w.rods.is_empty()) {
-            let ctx = crate::body::terms::Context {
-                mass: 0.0,
-                inertia_at_centre: &[[0.0; 3]; 3],
-                centre_of_mass: body.inertia.centre_of_mass,
-                rotation_a: &rotation,
-                loads: &[],
-                water: Some(water),
-            };
-            let (f, m) = ctx.buoyancy_at(centre);
-            for c in 0..3 {
-                g[o + c] += f[c];
-                g[o + 3 + c] += m[c];
-                scale = scale.max(f[c].abs());
-            }
-        }
-    }
-    let body_of = |p: usize| {
-        system.points()[p]
-            .body()
-            .and_then(|b| net.bodies.iter().position(|&q| q == b))
-    };
-    let slot = |p: usize| free.iter().position(|&q| q == p);
-    for (k, &p) in free.iter().enumerate() {
-        let mut f = system.point_load(p);
-        if let Some(water) = &system.points()[p].water {
-            let drag = water.static_force(&positions[p]).force;
-            for c in 0..3 {
-                f[c] += drag[c];
-            }
-        }
-        for c in 0..3 {
-            g[3 * k + c] += f[c];
-            scale = scale.max(f[c].abs());
-        }
-    }
-    for (li, line) in system.lines().iter().enumerate() {
-        let ends: Vec<(usize, usize)> = line
-            .ends
-            .iter()
-            .enumerate()
-            .filter_map(|(end, e)| match e {
-                End::Point(p) if slot(*p).is_some() || body_of(*p).is_some() => Some((end, *p)),
-                _ => None,
-            })
-            .collect();
-        if ends.is_empty() {
-            continue;
-        }
-        let (a, b) = end_positions_at(system, li, positions);
-        let shape = seed_shape(system, li, a, b);
-        for (end, p) in ends {
-            let f = shape.end_force(end);
-            if f.iter().any(|v| !v.is_finite()) {
-                return None;
-            }
-            if let Some(k) = slot(p) {
-                for c in 0..3 {
-                    g[3 * k + c] += f[c];
-                    scale = scale.max(f[c].abs());
-                }
-            } else if let Some(k) = body_of(p) {
-                let o = 3 * free.len() + 6 * k;
-                add_at(
-                    &mut g,
-                    o,
-                    f,
-                    crate::vec3::sub(positions[p], centres[k]),
-                    &mut scale,
-                );
-            }
-        }
-    }
-    Some((g, scale.max(f64::MIN_POSITIVE)))
-}
-
-/// Adds force f at `arm` from a body's centre to the body's rows at o:
-/// the force, then its moment arm x f.
-fn add_at(g: &mut [f64], o: usize, f: [f64; 3], arm: [f64; 3], scale: &mut f64) {
-    let m = crate::vec3::cross(arm, f);
-    for c in 0..3 {
-        g[o + c] += f[c];
-        g[o + 3 + c] += m[c];
-        *scale = scale.max(f[c].abs());
-    }
 }
 
 /// The mean length of the lines attached to the free points and bodies:

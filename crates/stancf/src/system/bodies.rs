@@ -61,8 +61,9 @@ pub struct Body {
     /// parts under the surface (docs/method.md §15.10-§15.11;
     /// [`super::System::with_bodies`] folds them).
     pub rods: Vec<Rod>,
-    /// The body's point pinned to a fixed point, if it is: it turns freely
-    /// about it (docs/method.md §15.12; MoorDyn's pinned rod).
+    /// The body's point pinned to a point, if it is: it turns freely
+    /// about it (docs/method.md §15.12; MoorDyn's pinned rod), and at a
+    /// free point or a free body's point moves with it (a joint, §15.14).
     pub pin: Option<Pin>,
     /// A constant moment on a free body (global, N m; B27), beside the
     /// constant forces of `loads` (a force on the body is a load at its
@@ -71,8 +72,10 @@ pub struct Body {
 }
 
 /// A body's point `local` (body axes, from the reference point) held at
-/// point `point` of the system, a fixed point (an anchor, or a point of
-/// a fixed body), the body turning freely about it.
+/// point `point` of the system, the body turning freely about it: a
+/// fixed point (an anchor, or a point of a fixed body; §15.12), or a free
+/// point or a point of another free body, moving with it (a joint,
+/// §15.14). Not a coupled point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pin {
     pub local: [f64; 3],
@@ -253,18 +256,61 @@ pub(super) fn place_points(
             BodyKind::Free => {}
         }
     }
-    for (i, b) in bodies.iter_mut().enumerate() {
-        check_pin(b, points).map_err(|e| e.under(&format!("bodies[{i}].pin")))?;
+    // Where each point moves at t = 0 (a free body's point with its body).
+    let velocities: Vec<[f64; 3]> = points
+        .iter()
+        .map(|p| match p.kind {
+            PointKind::Body { body, local } => bodies[body].point_velocity(local),
+            _ => [0.0; 3],
+        })
+        .collect();
+    for i in 0..bodies.len() {
+        check_pin(i, &mut bodies[i], points, &velocities)
+            .map_err(|e| e.under(&format!("bodies[{i}].pin")))?;
     }
+    check_joint_loops(bodies, points)?;
     Ok(on_body)
 }
 
-/// Checks a body's pin: a free body's point held at a fixed point, where
-/// the body puts that point at t = 0 and at rest there (to 1e-9 of the
-/// point's distance from the origin, or of 1 m). A fixed body's pin
-/// holds nothing and goes; a coupled body's, a pin to a point that is
-/// not fixed, are refused (not built).
-fn check_pin(body: &mut Body, points: &[Point]) -> Result<(), ModelError> {
+/// Refuses joints that close a loop (body a pinned to a point of b, ...,
+/// pinned to a point of a): a loop of rigid bodies is not a tree of
+/// joints, which is what §15.14 builds. Key `bodies[i].pin`.
+fn check_joint_loops(bodies: &[Body], points: &[Point]) -> Result<(), ModelError> {
+    let parent = |b: usize| {
+        let pin = bodies[b].pin?;
+        points[pin.point].body()
+    };
+    for start in 0..bodies.len() {
+        let mut b = start;
+        for _ in 0..bodies.len() {
+            match parent(b) {
+                Some(next) if next == start => {
+                    return Err(ModelError::invalid(
+                        format!("bodies[{start}].pin"),
+                        "the joints close a loop (the body hangs, through pins, from a point of                          itself): a loop of bodies is not built, only a tree of joints",
+                    ))
+                }
+                Some(next) => b = next,
+                None => break,
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks body `index`'s pin: a free body's point held at a fixed point,
+/// a free point or another free body's point (a joint, §15.14), where
+/// the body puts that point at t = 0 and moving as it moves
+/// (`velocities`, every point's at t = 0; to 1e-9 of the point's
+/// distance from the origin, or of 1 m). A fixed body's pin holds
+/// nothing and goes; a coupled body's, a pin to a coupled point, are
+/// refused (not built).
+fn check_pin(
+    index: usize,
+    body: &mut Body,
+    points: &[Point],
+    velocities: &[[f64; 3]],
+) -> Result<(), ModelError> {
     let Some(pin) = body.pin else {
         return Ok(());
     };
@@ -287,15 +333,29 @@ fn check_pin(body: &mut Body, points: &[Point]) -> Result<(), ModelError> {
             format!("{} names no point", pin.point),
         ));
     };
-    if point.kind != PointKind::Fixed {
-        return Err(ModelError::invalid(
-            "point",
-            format!(
-                "point {} is not fixed: a body pinned to a free, coupled or moving point is not \
-                 built yet (a pin holds to a fixed point or a fixed body's point)",
-                pin.point
-            ),
-        ));
+    match point.kind {
+        PointKind::Fixed | PointKind::Free => {}
+        PointKind::Body { body: on, .. } if on != index => {}
+        PointKind::Body { .. } => {
+            return Err(ModelError::invalid(
+                "point",
+                format!(
+                    "point {} is on the body itself: a pin holds nothing",
+                    pin.point
+                ),
+            ))
+        }
+        PointKind::Coupled(_) => {
+            return Err(ModelError::invalid(
+                "point",
+                format!(
+                    "point {} is coupled (or on a coupled body): a body pinned to a host's \
+                     motion is not built yet (a pin holds to a fixed point, a free point or a \
+                     free body's point)",
+                    pin.point
+                ),
+            ))
+        }
     }
     let at = body.point(pin.local);
     let off = crate::vec3::norm(crate::vec3::sub(at, point.position));
@@ -309,11 +369,17 @@ fn check_pin(body: &mut Body, points: &[Point]) -> Result<(), ModelError> {
             ),
         ));
     }
-    let moving = crate::vec3::norm(body.point_velocity(pin.local));
-    if moving.is_nan() || moving > 1e-12 * (1.0 + crate::vec3::norm(body.velocity)) {
+    let held = velocities[pin.point];
+    let slip = crate::vec3::norm(crate::vec3::sub(body.point_velocity(pin.local), held));
+    let scale = 1.0 + crate::vec3::norm(body.velocity) + crate::vec3::norm(held);
+    if slip.is_nan() || slip > 1e-12 * scale {
         return Err(ModelError::invalid(
             "local",
-            format!("its pinned point moves at {moving:.3e} m/s at t = 0: a pin holds it at rest"),
+            format!(
+                "its pinned point moves at {slip:.3e} m/s from point {} at t = 0: a pin moves \
+                 it with the point",
+                pin.point
+            ),
         ));
     }
     Ok(())

@@ -173,3 +173,71 @@ pub(super) fn spin_axis(body: &super::Body, points: &[[f64; 3]]) -> Option<[f64;
         .all(|p| norm(cross(sub(*p, from), axis)) <= 1e-9 * span);
     on_line.then_some(axis)
 }
+
+/// The vertical (body axes at t = 0) about which free body b and the
+/// bodies hanging from it through joints (its assembly, §15.14) turn
+/// freely, if they do: b is pinned to nothing, does not float on its rods
+/// alone ([`FloatHold`] holds that yaw), and every line end on the
+/// assembly is on one vertical line at t = 0 (to 1e-9 of the assembly's
+/// size), with no current dragging it, no horizontal constant force and
+/// no constant moment on it. Gravity and still water's buoyancy are the
+/// same at any heading, so a turn of the whole assembly about that line
+/// moves no line and changes no potential: its static rows are singular
+/// there (MoorDyn's decks hold bodies by several lines at one point), and
+/// the solve holds the turn with a spring k a (a . theta) on b's
+/// rotation rows, a = R_0^T e_z. The equilibria form a family over the
+/// heading, a . theta goes through zero along it, and there the spring's
+/// moment is zero: the equilibrium is one without it (docs/method.md
+/// §15.14).
+pub(super) fn yaw_hold(system: &System, b: usize) -> Option<[f64; 3]> {
+    use crate::vec3::{norm, sub};
+    let root = &system.bodies()[b];
+    let g = system.gravity();
+    if root.pin.is_some() || floats(system, b) || g[0] != 0.0 || g[1] != 0.0 {
+        return None;
+    }
+    let assembly: Vec<usize> = system
+        .free_bodies()
+        .filter(|&c| {
+            let mut at = Some(c);
+            while let Some(k) = at {
+                if k == b {
+                    return true;
+                }
+                at = system.joint_parent(k);
+            }
+            false
+        })
+        .collect();
+    let mut ends = Vec::new();
+    let mut size = 0.0f64;
+    for &k in &assembly {
+        let body = &system.bodies()[k];
+        let dragged = body.water.as_ref().is_some_and(|w| {
+            w.current != [0.0; 3]
+                && (w.drag_areas != [0.0; 3]
+                    || w.rods
+                        .iter()
+                        .any(|r| r.drag_coefficient != 0.0 || r.end_drag_coefficient != 0.0))
+        });
+        let level = body.loads.iter().all(|(f, _)| f[0] == 0.0 && f[1] == 0.0);
+        if dragged || !level || body.moment != [0.0; 3] {
+            return None;
+        }
+        for (p, pt) in system.points().iter().enumerate() {
+            if pt.body() == Some(k) {
+                size = size.max(norm(sub(pt.position, root.position)));
+                if system.attachments(p).next().is_some() {
+                    ends.push(pt.position);
+                }
+            }
+        }
+    }
+    let first = *ends.first()?;
+    let off = |p: &[f64; 3]| (p[0] - first[0]).hypot(p[1] - first[1]);
+    let scale = size.max(1.0);
+    ends.iter().all(|p| off(p) <= 1e-9 * scale).then(|| {
+        let r = &root.rotation;
+        [r[2][0], r[2][1], r[2][2]]
+    })
+}

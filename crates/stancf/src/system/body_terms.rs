@@ -58,11 +58,20 @@ pub(super) struct StepBody {
 }
 
 /// A body's pin in a step (§15.12, `system/pins.rs`): the pinned point
-/// from the centre of mass (body axes) and where it is held (global).
+/// from the centre of mass (body axes) and what holds it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct StepPin {
     pub arm: [f64; 3],
-    pub at: [f64; 3],
+    pub hold: PinHold,
+}
+
+/// What holds a pinned point: a fixed point (global), or a point whose
+/// slot values are unknowns of the step, a free point or another free
+/// body's point (a joint, §15.14).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum PinHold {
+    Fixed([f64; 3]),
+    Point(usize),
 }
 
 /// Global index of the FreeBody's Galerkin unknown (or row) i: its blocks
@@ -226,12 +235,14 @@ impl StepBody {
     /// (which the lines' end momenta bring, §15.7 (B14)): the body's
     /// [dA/dr_b; J_r(theta_b)^-T (dA/dtheta_b + sum_P (d w_P,b /
     /// dtheta_b)^T R_P(1,w))] with R_P the lines' (1,w) rows at P,
-    /// `end_rows(point)`.
+    /// `end_rows(point)`. With it, a pinned body's centre row at the
+    /// end's slot (1,w), which a joint carries to its point's (B29; zero
+    /// for a body not pinned).
     pub fn end_momentum(
         &self,
         xb: &[f64; 18],
         end_rows: impl Fn(usize) -> [f64; 3],
-    ) -> Option<[f64; 6]> {
+    ) -> Option<([f64; 6], [f64; 3])> {
         let (p, mut dtheta) = self.body.galerkin_end_gradient(xb);
         for bp in &self.points {
             let maps = self.maps(bp.arm, xb);
@@ -240,10 +251,12 @@ impl StepBody {
                 dtheta[j] += end.g[j];
             }
         }
+        let mut centre_row = [0.0; 3];
         if self.pin.is_some() {
             let (mut rows, mut jac) = ([0.0; 18], [0.0; 18 * 18]);
             self.body.galerkin_rows_into(xb, &mut rows, &mut jac);
-            let share = self.pin_end_share(xb, [rows[6], rows[7], rows[8]], &end_rows);
+            centre_row = self.centre_end_row([rows[6], rows[7], rows[8]], &end_rows);
+            let share = self.pin_end_share(xb, centre_row);
             for j in 0..3 {
                 dtheta[j] += share[j];
             }
@@ -251,6 +264,6 @@ impl StepBody {
         let theta_b = [xb[12], xb[13], xb[14]];
         let jr = crate::body::rotation::right_jacobian(theta_b);
         let pi = crate::body::free::solve_transposed(&jr, dtheta)?;
-        Some([p[0], p[1], p[2], pi[0], pi[1], pi[2]])
+        Some(([p[0], p[1], p[2], pi[0], pi[1], pi[2]], centre_row))
     }
 }

@@ -109,19 +109,18 @@ impl SystemLayout {
         for (li, layout) in layouts.iter().enumerate() {
             let ends = system.attached_ends(li, lines[li]);
             // A line end on a free body's point loads the body's rows
-            // (§15.7): the line's block couples with the body's unknowns.
-            let bodies: Vec<usize> = system
-                .attached_ends(li, lines[li])
-                .filter_map(|e| system.points()[e.point].body())
-                .filter_map(|b| body_base[b])
-                .flat_map(|base| base..base + 6 * slots)
-                .collect();
-            let (map, mut shape) = line_map(layout, ends, &point_base, start);
-            // The bodies' indices follow every point's, so the points'
-            // places in the sorted border (the map's) stay as they are.
-            shape.border.extend(bodies);
-            shape.border.sort_unstable();
-            shape.border.dedup();
+            // (§15.7): the line's block couples with the body's unknowns,
+            // and up the body's joints with each joint's point and the
+            // body it is on (§15.14).
+            let mut reached: Vec<usize> = Vec::new();
+            for e in system.attached_ends(li, lines[li]) {
+                let (points, bodies) = system.joint_chain(e.point);
+                let points = points.into_iter().filter_map(|p| point_base[p]);
+                reached.extend(points.flat_map(|base| base..base + 3 * slots));
+                let bodies = bodies.into_iter().filter_map(|b| body_base[b]);
+                reached.extend(bodies.flat_map(|base| base..base + 6 * slots));
+            }
+            let (map, shape) = line_map(layout, ends, &point_base, reached, start);
             start += map.size;
             maps.push(map);
             shapes.push(shape);
@@ -166,12 +165,15 @@ impl SystemLayout {
 
 /// The map of one line's local indices: the position coordinates of its
 /// ends at free points to the points' border indices, the rest to its
-/// band in order; and the block's shape. `global` holds border indices
-/// relative to the border's start (the caller shifts them).
+/// band in order; and the block's shape, whose border also holds the
+/// border indices `reached` (bodies' and joints' unknowns the block
+/// couples with). `global` holds border indices relative to the border's
+/// start (the caller shifts them).
 fn line_map(
     layout: &SlabLayout,
     ends: impl Iterator<Item = AttachedEnd>,
     point_base: &[Option<usize>],
+    reached: Vec<usize>,
     start: usize,
 ) -> (LineMap, BlockShape) {
     let n = layout.size();
@@ -195,6 +197,7 @@ fn line_map(
         .iter()
         .filter(|&&p| p & TO_BORDER != 0)
         .map(|&p| p & !TO_BORDER)
+        .chain(reached)
         .collect();
     border.sort_unstable();
     border.dedup();

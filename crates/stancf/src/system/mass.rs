@@ -250,8 +250,8 @@ fn add_body_mass(m: &mut crate::bordered::BorderedMatrix, layout: &SystemLayout,
             m.add(q(a), q(b), v);
         }
     }
-    if let Some(g) = body.pin_rate_map() {
-        super::pins::pin_mass(m, std::array::from_fn(q), &g);
+    if let Some(pin) = body.pin_rate_map(layout) {
+        super::pins::pin_mass(m, std::array::from_fn(q), &pin);
     }
 }
 
@@ -281,8 +281,8 @@ fn carry_body_momentum(
     for k in 0..6 {
         rates[q(k)] += momentum[k] - g0[k];
     }
-    if let Some(g) = body.pin_rate_map() {
-        super::pins::pin_momentum(rates, std::array::from_fn(q), &g);
+    if let Some(pin) = body.pin_rate_map(layout) {
+        super::pins::pin_momentum(rates, std::array::from_fn(q), &pin);
     }
 }
 

@@ -35,6 +35,7 @@ mod halving;
 mod layout;
 mod line_type;
 mod mass;
+mod network;
 mod pins;
 mod point_terms;
 mod run;

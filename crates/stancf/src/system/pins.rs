@@ -27,8 +27,15 @@
 //! the end join it), and the end rates solve the mass matrix with the
 //! centre's rate rows carried to the rotation's by G_c = R [xi' x] and
 //! replaced by v_G - G_c Omega = 0 (B26). The pin does no work.
+//!
+//! A joint (§15.14) pins the body to a point whose slot values y_P are
+//! unknowns, a free point or another free body's point: r_G = y_P - R xi'
+//! (B28), so the centre's rows also join P's as they are (B29), before
+//! P's own rows are carried on to its body (children are added before
+//! their parents), its end row joins P's end row, and the end rates hold
+//! v_G - v_P - G_c Omega = 0 (B30).
 
-use super::body_terms::StepBody;
+use super::body_terms::{PinHold, StepBody};
 use super::layout::SystemLayout;
 use crate::body::attach::project;
 use crate::bordered::BorderedMatrix;
@@ -60,7 +67,27 @@ impl StepBody {
             residual[q(1, 3 + j)] -= start.g[3 + j];
             residual[q(2, 3 + j)] -= end.g[3 + j];
         }
+        // A joint: r_G = y_P - R xi' (B28), so the joint's point's rows
+        // take the centre's as they are.
+        let joint = |s: usize, c: usize| match pin.hold {
+            PinHold::Point(p) => layout.point_unknown(p, s, c),
+            PinHold::Fixed(_) => None,
+        };
+        for s in 0..3 {
+            for c in 0..3 {
+                if let Some(y) = joint(s, c) {
+                    residual[y] += raw[s][c];
+                }
+            }
+        }
         if let Some(m) = jacobian.as_deref_mut() {
+            for s in 0..3 {
+                for c in 0..3 {
+                    if let Some(y) = joint(s, c) {
+                        m.add_border_row(y, q(s, c), 1.0);
+                    }
+                }
+            }
             for j in 0..3 {
                 for c in 0..3 {
                     m.add_border_row(q(0, 3 + j), q(0, c), -pa[c].g[j]);
@@ -83,17 +110,27 @@ impl StepBody {
                 }
             }
         }
-        // (B24) at the centre's unknown slots (0,w), (1,e), (1,w).
-        let r_a = self.body.centre();
-        for c in 0..3 {
-            residual[q(0, c)] = xb[c] + va[c].v;
-            residual[q(1, c)] = r_a[c] + xb[3 + c] + pb[c].v - pin.at[c];
-            residual[q(2, c)] = xb[6 + c] + vb[c].v;
+        // (B24) at the centre's unknown slots (0,w), (1,e), (1,w): the
+        // pinned point's slot values are the hold's (B28).
+        let held: [[f64; 3]; 3] = match pin.hold {
+            PinHold::Fixed(at) => [[0.0; 3], at, [0.0; 3]],
+            PinHold::Point(_) => {
+                std::array::from_fn(|s| std::array::from_fn(|c| x[joint(s, c).expect("joint")]))
+            }
+        };
+        let pinned = self.point_slots(&maps, &xb);
+        for s in 0..3 {
+            for c in 0..3 {
+                residual[q(s, c)] = pinned[s][c] - held[s][c];
+            }
         }
         if let Some(m) = jacobian {
             for c in 0..3 {
                 for s in 0..3 {
                     m.add(q(s, c), q(s, c), 1.0);
+                    if let Some(y) = joint(s, c) {
+                        m.add(q(s, c), y, -1.0);
+                    }
                 }
                 for j in 0..3 {
                     m.add(q(0, c), q(0, 3 + j), va[c].g[3 + j]);
@@ -107,16 +144,24 @@ impl StepBody {
 
     /// The centre's rows at the end's slot (1,w) join the end's angular
     /// momentum through (B24): -(d v_b / d theta_b)^T R_w,b, with R_w,b
-    /// the body's own row there and its points' (1,w) rows `end_rows`.
-    pub(super) fn pin_end_share(
-        &self,
-        xb: &[f64; 18],
-        own_w_b: [f64; 3],
-        end_rows: &impl Fn(usize) -> [f64; 3],
-    ) -> [f64; 3] {
+    /// the centre's row there ([`Self::centre_end_row`]).
+    pub(super) fn pin_end_share(&self, xb: &[f64; 18], row: [f64; 3]) -> [f64; 3] {
         let Some(pin) = self.pin else {
             return [0.0; 3];
         };
+        let maps = self.maps(pin.arm, xb);
+        let share = project(row, &maps.end.1);
+        [-share.g[0], -share.g[1], -share.g[2]]
+    }
+
+    /// The centre's row at the end's slot (1,w), R_w,b: the body's own
+    /// `own_w_b` and its points' (1,w) rows `end_rows`, which (B25)
+    /// carries to the rotation and a joint (B29) to its point's.
+    pub(super) fn centre_end_row(
+        &self,
+        own_w_b: [f64; 3],
+        end_rows: &impl Fn(usize) -> [f64; 3],
+    ) -> [f64; 3] {
         let mut row = own_w_b;
         for bp in &self.points {
             let r = end_rows(bp.point);
@@ -124,30 +169,50 @@ impl StepBody {
                 row[c] += r[c];
             }
         }
-        let maps = self.maps(pin.arm, xb);
-        let share = project(row, &maps.end.1);
-        [-share.g[0], -share.g[1], -share.g[2]]
+        row
     }
 
-    /// G_c = R [xi' x] of (B26): v_G = G_c Omega at the end's pose.
-    pub(super) fn pin_rate_map(&self) -> Option<[[f64; 3]; 3]> {
+    /// The pin's rate map in the end rates' matrix (one slot): G_c =
+    /// R [xi' x] of (B26), v_G = v_P + G_c Omega at the end's pose, and
+    /// the rate unknowns of the joint's point P (B30), if the pin is a
+    /// joint (v_P = 0 at a fixed point).
+    pub(super) fn pin_rate_map(&self, layout: &SystemLayout) -> Option<PinRates> {
         let pin = self.pin?;
         let rotation = self.body.rotation();
         let a = pin.arm;
         let hat = [[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]];
-        Some(crate::vec3::mat3_mul(&rotation, &hat))
+        let joint = match pin.hold {
+            PinHold::Point(p) => Some(std::array::from_fn(|c| {
+                layout.point_unknown(p, 0, c).expect("a joint's point")
+            })),
+            PinHold::Fixed(_) => None,
+        };
+        Some(PinRates {
+            g: crate::vec3::mat3_mul(&rotation, &hat),
+            joint,
+        })
     }
 }
 
-/// (B26) in the end rates' matrix: body `q`'s (global rate unknowns)
-/// centre rows carried to its rotation's by G_c^T and replaced by
-/// v_G - G_c Omega = 0.
-pub(super) fn pin_mass(m: &mut BorderedMatrix, q: [usize; 6], g: &[[f64; 3]; 3]) {
-    for j in 0..3 {
-        for c in 0..3 {
+/// A pin in the end rates' matrix ([`StepBody::pin_rate_map`]).
+pub(super) struct PinRates {
+    pub g: [[f64; 3]; 3],
+    pub joint: Option<[usize; 3]>,
+}
+
+/// (B26), (B30) in the end rates' matrix: body `q`'s (global rate
+/// unknowns) centre rows carried to its rotation's by G_c^T and to a
+/// joint's point's as they are, and replaced by v_G - v_P - G_c Omega = 0.
+pub(super) fn pin_mass(m: &mut BorderedMatrix, q: [usize; 6], pin: &PinRates) {
+    let g = &pin.g;
+    for c in 0..3 {
+        for j in 0..3 {
             if g[c][j] != 0.0 {
                 m.add_border_row(q[3 + j], q[c], g[c][j]);
             }
+        }
+        if let Some(y) = pin.joint {
+            m.add_border_row(y[c], q[c], 1.0);
         }
     }
     for c in 0..3 {
@@ -158,17 +223,99 @@ pub(super) fn pin_mass(m: &mut BorderedMatrix, q: [usize; 6], g: &[[f64; 3]; 3])
                 m.add(q[c], q[3 + j], -g[c][j]);
             }
         }
+        if let Some(y) = pin.joint {
+            m.add(q[c], y[c], -1.0);
+        }
     }
 }
 
-/// (B26)'s right side: the centre's momentum rows carried to the
-/// rotation's by G_c^T, the centre's set to 0 (v_G - G_c Omega = 0).
-pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], g: &[[f64; 3]; 3]) {
+/// (B26), (B30)'s right side: the centre's momentum rows carried to the
+/// rotation's by G_c^T and to a joint's point's, the centre's set to 0
+/// (v_G - v_P - G_c Omega = 0).
+pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], pin: &PinRates) {
     for c in 0..3 {
         let raw = rates[q[c]];
         for j in 0..3 {
-            rates[q[3 + j]] += g[c][j] * raw;
+            rates[q[3 + j]] += pin.g[c][j] * raw;
+        }
+        if let Some(y) = pin.joint {
+            rates[y[c]] += raw;
         }
         rates[q[c]] = 0.0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::body::{BodyWater, RigidInertia};
+    use crate::system::{Body, BodyKind, End, Line, Pin, Point, System};
+    use crate::{Cable, ElementType, Load, Material, Model, ModelOptions};
+
+    /// The static rows' Jacobian of a buoy holding a rod at a joint (a
+    /// point of the buoy no line holds), the rod crossing the surface in a
+    /// current, the buoy on two lines: the derivative of its rows (the
+    /// rod's centre rows carried to the joint's point and on to the buoy,
+    /// the joint's constraint against the point's unknowns), by central
+    /// differences.
+    #[test]
+    fn the_static_jacobian_with_a_joint_is_the_derivative_of_its_rows() {
+        let g = [0.0, 0.0, -9.81];
+        let water = BodyWater {
+            density: 1025.0,
+            current: [0.4, -0.2, 0.0],
+            ..BodyWater::default()
+        };
+        let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut buoy = Body::new(
+            BodyKind::Free,
+            [0.0, 0.0, -1.0],
+            identity,
+            RigidInertia::principal(4000.0, [0.0, 0.0, -0.5], [500.0, 600.0, 700.0]),
+        );
+        buoy.water = Some(BodyWater {
+            volume: 5.0,
+            ..water.clone()
+        });
+        let joint_local = [0.5, 0.2, 0.3];
+        let mut rod = crate::body::rod::sample();
+        rod.end_b = [0.9, 0.4, 1.8];
+        let a = buoy.point(joint_local);
+        rod.end_a = a;
+        rod.end_b = crate::vec3::add(a, rod.end_b);
+        let mut hung = Body::rod(BodyKind::Free, a, rod);
+        hung.water = Some(water);
+        hung.pin = Some(Pin {
+            local: [0.0; 3],
+            point: 4,
+        });
+        let mut points = Vec::new();
+        let mut lines = Vec::new();
+        for (k, local) in [[0.0, -1.0, 0.0], [0.0, 1.0, 0.3]].iter().enumerate() {
+            let anchor = [0.5 * k as f64, 8.0 * local[1], -8.0];
+            let end = buoy.point(*local);
+            points.push(Point::fixed(anchor));
+            points.push(Point::on_body(0, *local));
+            let material = Material {
+                youngs_modulus: 1e9,
+                density: 2000.0,
+                area: 1e-3,
+                second_moment: 1e-9,
+                axial_damping: 0.0,
+            };
+            let cable = Cable::straight(10.5, 6, ElementType::Sac2)
+                .with_origin(anchor)
+                .with_direction(crate::vec3::sub(end, anchor));
+            let loads = vec![Load::Gravity { acceleration: g }];
+            let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
+            lines.push(Line {
+                model,
+                ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+            });
+        }
+        points.push(Point::on_body(0, joint_local));
+        let system = System::with_bodies(lines, points, vec![buoy, hung], g).unwrap();
+        let (worst, size) = crate::system::body_statics::tests::static_jacobian_error(system);
+        eprintln!("static Jacobian with a joint against differences: {worst:.1e} of {size:.1e}");
+        assert!(worst < 1e-6 * size, "{worst:e} of {size:e}");
     }
 }

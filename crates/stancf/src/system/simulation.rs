@@ -8,7 +8,7 @@
 //! (§11.14, [`super::apart`]). This file holds the simulation, its
 //! construction and its readings; the step itself is `stepping.rs`.
 
-use super::body_terms::{BodyPoint, StepBody};
+use super::body_terms::{BodyPoint, PinHold, StepBody};
 pub use super::end_forces::EndForce;
 use super::end_forces::ForcesAtTime;
 use super::layout::SystemLayout;
@@ -458,7 +458,8 @@ fn point_motions(system: &Topology, lines: &[Simulation]) -> Result<Vec<PointMot
 /// centre of mass.
 fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> {
     system
-        .free_bodies()
+        .free_bodies_children_first()
+        .into_iter()
         .map(|b| {
             let body = &system.bodies()[b];
             let state = body
@@ -479,7 +480,10 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                 .collect();
             let pin = body.pin.map(|pin| super::body_terms::StepPin {
                 arm: crate::vec3::sub(pin.local, c),
-                at: system.points()[pin.point].position,
+                hold: match system.joint_point(b) {
+                    Some(p) => PinHold::Point(p),
+                    None => PinHold::Fixed(system.points()[pin.point].position),
+                },
             });
             Ok(StepBody {
                 index: b,

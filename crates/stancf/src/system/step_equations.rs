@@ -115,12 +115,6 @@ fn body_scales(
         for (li, _) in system.attachments(bp.point) {
             length = length.min(lines[li].model().cable.length);
         }
-        for k in 0..3 * layout.slots {
-            let g = layout
-                .point_unknown(bp.point, k / 3, k % 3)
-                .expect("border");
-            equation[g] = unknown[g];
-        }
     }
     let length = if length.is_finite() { length } else { 1.0 };
     let arm = if arm > 0.0 { arm } else { length };
@@ -141,6 +135,21 @@ fn body_scales(
             let g = layout.body_unknown(body.index, slot, k).expect("free body");
             unknown[g] = u;
             equation[g] = e;
+        }
+    }
+    // The points' rows are their constraints (B13), positions like their
+    // unknowns; a point no line holds (a joint's, §15.14) moves like the
+    // centre.
+    for bp in &body.points {
+        for slot in 0..3 {
+            for c in 0..3 {
+                let g = layout.point_unknown(bp.point, slot, c).expect("border");
+                let centre = layout.body_unknown(body.index, slot, c).expect("free body");
+                if !unknown[g].is_finite() {
+                    unknown[g] = unknown[centre];
+                }
+                equation[g] = unknown[g];
+            }
         }
     }
 }

@@ -4,6 +4,7 @@
 //! §11.14), and the lines, the end forces (§6.5, (M23)) and the points
 //! take the converged step.
 
+use super::body_terms::PinHold;
 use super::end_forces::position_row_sum;
 use super::layout::add_line_rows;
 use super::point_terms::PointTerms;
@@ -117,9 +118,17 @@ impl SystemSimulation {
             let end_rows = |p: usize| -> [f64; 3] {
                 std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
             };
-            self.body_momentum[k] = body
+            let (momentum, centre_row) = body
                 .end_momentum(&xb, end_rows)
                 .ok_or_else(|| singular(self.t, self.steps, "a body's J_r(theta_b) is singular"))?;
+            self.body_momentum[k] = momentum;
+            // A joint's child (before its parent): its centre's end row
+            // joins its point's (B29).
+            if let Some(PinHold::Point(p)) = body.pin.map(|pin| pin.hold) {
+                for (c, v) in centre_row.iter().enumerate() {
+                    self.body_rows[self.layout.point_unknown(p, 2, c).expect("border")] += v;
+                }
+            }
             body.body.advance(&xb)?;
         }
         mass.set_end_rates(

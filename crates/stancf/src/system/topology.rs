@@ -85,6 +85,63 @@ impl Topology {
         (0..self.bodies.len()).filter(|&b| self.bodies[b].kind == super::BodyKind::Free)
     }
 
+    /// The point free body b is pinned to when that point moves with
+    /// the solution, a free point or a point on another free body: a
+    /// joint (docs/method.md §15.14). None for a pin to a fixed point or
+    /// no pin.
+    pub fn joint_point(&self, b: usize) -> Option<usize> {
+        let pin = self.bodies[b].pin?;
+        self.points[pin.point].is_unknown().then_some(pin.point)
+    }
+
+    /// The free body free body b hangs from through its joint, if the
+    /// joint's point is on one.
+    pub fn joint_parent(&self, b: usize) -> Option<usize> {
+        self.points[self.joint_point(b)?].body()
+    }
+
+    /// The free bodies, each before the body it hangs from through a
+    /// joint (deepest first, then in order): a child's rows go to its
+    /// joint's point before the parent carries that point's rows to its
+    /// own (§15.14). The joints form no loop ([`super::System::with_bodies`]
+    /// refuses one).
+    pub fn free_bodies_children_first(&self) -> Vec<usize> {
+        let depth = |mut b: usize| {
+            let mut d = 0;
+            while let Some(parent) = self.joint_parent(b) {
+                b = parent;
+                d += 1;
+                if d > self.bodies.len() {
+                    break;
+                }
+            }
+            d
+        };
+        let mut order: Vec<usize> = self.free_bodies().collect();
+        order.sort_by_key(|&b| std::cmp::Reverse(depth(b)));
+        order
+    }
+
+    /// The border unknowns' owners a line block at point p reaches: the
+    /// free body p is on and, up its joints, each joint's point and the
+    /// body it is on (the rows of a body's points go to the body, a
+    /// child's centre rows to its joint's point, §15.14).
+    pub fn joint_chain(&self, p: usize) -> (Vec<usize>, Vec<usize>) {
+        let (mut points, mut bodies) = (Vec::new(), Vec::new());
+        let mut at = self.points[p].body();
+        while let Some(b) = at {
+            if bodies.contains(&b) {
+                break;
+            }
+            bodies.push(b);
+            at = self.joint_point(b).and_then(|jp| {
+                points.push(jp);
+                self.points[jp].body()
+            });
+        }
+        (points, bodies)
+    }
+
     pub fn gravity(&self) -> [f64; 3] {
         self.gravity
     }

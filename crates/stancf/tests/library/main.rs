@@ -26,6 +26,7 @@ mod free_cable;
 mod galerkin;
 mod grading;
 mod highest_frequency;
+mod joints;
 mod lines_apart;
 mod mhk_rm1_lines;
 mod motion_tables;

@@ -1,41 +1,15 @@
 //! Bodies pinned at a point to a fixed point (docs/method.md §15.12,
 //! (B24)-(B26)): MoorDyn's pinned rods, turning freely about their end A.
 
-use crate::common::{
-    assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, light_rope,
-};
-use stancf::body::{BodyWater, Rod};
+use crate::common::rods::{rod, rope};
+use crate::common::{assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift};
+use stancf::body::BodyWater;
 use stancf::system::{Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation};
 use stancf::vec3::{norm, scale, sub};
 use stancf::{Cable, ElementType, Material, Model, StepSettings, TimeScheme};
 
 const G: f64 = 9.81;
 const RHO: f64 = 1025.0;
-
-/// A rod of `length` and 0.1 m across, 10 kg/m, from `a` along `axis`
-/// (unit), drag and added mass `cd`, `ca` (and on its caps).
-fn rod(a: [f64; 3], axis: [f64; 3], length: f64, cd: f64, ca: f64) -> Rod {
-    Rod {
-        end_a: a,
-        end_b: std::array::from_fn(|c| a[c] + length * axis[c]),
-        diameter: 0.1,
-        mass_per_length: 10.0,
-        drag_coefficient: cd,
-        added_mass_coefficient: ca,
-        end_drag_coefficient: cd,
-        end_added_mass_coefficient: ca,
-        segments: 4,
-    }
-}
-
-/// A straight light rope (4 elements, no weight) from `start` to `end`.
-fn rope(start: [f64; 3], end: [f64; 3]) -> Model {
-    let chord = norm(sub(end, start));
-    let cable = Cable::straight(chord, 4, ElementType::Sac2)
-        .with_direction(scale(1.0 / chord, sub(end, start)))
-        .with_origin(start);
-    Model::new(cable, light_rope(), Default::default(), vec![]).expect("model")
-}
 
 /// `body` (body 0) pinned at its reference point to a fixed point there
 /// (point 1), holding a light rope at its point `local` from a fixed

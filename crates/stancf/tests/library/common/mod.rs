@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod rods;
 pub mod rope_systems;
 pub mod step_checks;
 pub mod water_lines;

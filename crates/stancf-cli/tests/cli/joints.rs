@@ -1,0 +1,158 @@
+//! Rods pinned to a free body, a joint between two bodies (docs/method.md
+//! §15.14): MoorDyn's `Body<n>Pinned` on a free body and the TOML
+//! `type = "pinned"` rod with `body`.
+
+use crate::common::*;
+
+/// bodies.csv's rows of body `id`: [x, y, z, roll, pitch, yaw] (m,
+/// degrees), one per written time.
+fn poses(out: &std::path::Path, id: f64) -> Vec<[f64; 6]> {
+    let (_, rows) = read_csv(&out.join("bodies.csv"));
+    rows.iter()
+        .filter(|r| r[1] == id)
+        .map(|r| std::array::from_fn(|k| r[2 + k]))
+        .collect()
+}
+
+/// The global position of the point `local` (body axes) of a body at
+/// `pose` (a row of [`poses`]).
+fn point_of(pose: &[f64; 6], local: [f64; 3]) -> [f64; 3] {
+    let r = rotation_of_angles([pose[3], pose[4], pose[5]]);
+    std::array::from_fn(|i| pose[i] + (0..3).map(|j| r[i][j] * local[j]).sum::<f64>())
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>().sqrt()
+}
+
+/// OpenFAST's md_BodiesAndRods (a wave energy converter: a float of 1e6 kg
+/// with a can 10 m across fixed in it and a flap of the same can pinned
+/// to it at (2, 0, 2), leaning to (5, 0, 15); three nylon lines to one
+/// point under the float). `check` names the joint; the static analysis
+/// stands the flap upright (a buoyant rod pinned at its foot: turned by
+/// -atan(3/13) from its lean, to 1e-9 degrees), keeps the float in the
+/// plane of the flap (y, roll and yaw zero to 1e-9: the heading is held,
+/// §15.14), keeps the joint closed to 1e-9 m, and floats float and flap on
+/// their cans: rho A (s_can + s_flap) = m + |F_z| / g to 1e-8 of it, s the
+/// length of each can under water along its axis (the surface cuts only
+/// their sides: neither cap is cut), F_z the lines' pull on the float,
+/// g MoorDyn's 9.80665 (the static tolerance is 1e-10 of the rows).
+#[test]
+fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
+    let d = scratch("md-bodies-and-rods");
+    let deck = d.join("moordyn.dat");
+    std::fs::copy(
+        repo_file("crates/stancf-cli/tests/fixtures/md-bodies-and-rods-moordyn.txt"),
+        &deck,
+    )
+    .unwrap();
+    let (stdout, _) = text(&stancf(&["check", deck.to_str().unwrap()]));
+    assert!(
+        stdout.contains("pinned at end A to point 7 (on free body 1, a joint"),
+        "{stdout}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let float = poses(&out, 1.0)[0];
+    let flap = poses(&out, 2.0)[0];
+    let lean = -(3.0f64 / 13.0).atan().to_degrees();
+    let joint = point_of(&float, [2.0, 0.0, 2.0]);
+    let gap = distance(joint, [flap[0], flap[1], flap[2]]);
+    // The cans' lengths under water along their axes: the float's from
+    // (0, 0, 2) in its axes; the flap's from its end A, upright.
+    let foot = point_of(&float, [0.0, 0.0, 2.0]);
+    let up = point_of(&float, [0.0, 0.0, 3.0]);
+    let s_can = -foot[2] / (up[2] - foot[2]);
+    let s_flap = -flap[2];
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
+    let area = std::f64::consts::PI * 25.0;
+    let displaced = 1025.0 * area * (s_can + s_flap);
+    let mass = 1e6 + 1000.0 * 13.0 + 1000.0 * 178.0f64.sqrt() + fz.abs() / 9.80665;
+    eprintln!(
+        "md_BodiesAndRods: float at {float:?}, flap pitch {} (upright at {lean}); joint gap \
+         {gap:.1e} m; displaced {displaced:.6} kg against {mass:.6} kg (cans in by {s_can:.4} \
+         and {s_flap:.4} m)",
+        flap[4]
+    );
+    assert!((flap[4] - lean).abs() < 1e-9, "{} {lean}", flap[4]);
+    for v in [float[1], float[3], float[5]] {
+        assert!(v.abs() < 1e-9, "{float:?}");
+    }
+    assert!(gap < 1e-9, "{gap:e}");
+    // Neither cap cut: the surface crosses each axis more than r tan(tilt)
+    // from its ends.
+    let reach = 5.0 * float[4].to_radians().tan().abs();
+    assert!(s_can > reach && s_can < 13.0 - reach, "{s_can}");
+    assert!(s_flap > 0.0 && s_flap < 178.0f64.sqrt(), "{s_flap}");
+    assert!((displaced - mass).abs() < 1e-8 * mass, "{displaced} {mass}");
+}
+
+/// The buoy of `moored_buoy` (pushed at 0.3 m/s in surge) with a rod
+/// (4 m, 0.2 m across, 60 kg/m) pinned under it at (0, 0, -0.6) in its
+/// axes, in TOML (`type = "pinned"`, `body = 1`, ends in the body's axes):
+/// after the static analysis the rod hangs plumb (roll and pitch zero to
+/// 1e-7 degrees, the static tolerance); it starts with the buoy's point's
+/// velocity (a joint moves with its point), swings as the buoy drifts
+/// (more than 0.1 degree in 4 s), and its end A stays on the buoy's point
+/// at every written step to 1e-9 m.
+#[test]
+fn a_toml_rod_pinned_to_a_free_buoy_hangs_and_swings_with_it() {
+    let analysis = "type = \"dynamic\"\ninitial = \"static\"\ntime_step = 0.05\nduration = 4.0";
+    let mut scenario = moored_buoy("velocity = [0.3, 0.0, 0.0]", analysis);
+    scenario.push_str(
+        "[[rod_types]]\nname = \"pipe\"\ndiameter = 0.2\nmass_per_length = 60.0\ncd = 1.0\n\
+         ca = 1.0\n[[rods]]\nid = 1\ntype = \"pinned\"\nbody = 1\nrod_type = \"pipe\"\n\
+         end_a = [0.0, 0.0, -0.6]\nend_b = [0.0, 0.0, -4.6]\nsegments = 4\n",
+    );
+    let d = scratch("toml-joint");
+    let sc = write_scenario(&d, "joint.toml", &scenario);
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let buoy = poses(&out, 1.0);
+    let rod = poses(&out, 2.0);
+    assert_eq!(buoy.len(), rod.len());
+    let mut gap = 0.0f64;
+    let mut swing = 0.0f64;
+    for (b, r) in buoy.iter().zip(&rod) {
+        gap = gap.max(distance(point_of(b, [0.0, 0.0, -0.6]), [r[0], r[1], r[2]]));
+        swing = swing.max(r[3].abs().max(r[4].abs()));
+    }
+    eprintln!(
+        "TOML joint: the rod starts at roll {} and pitch {} degrees, swings to {swing:.3} \
+         degrees; the joint opened {gap:.1e} m",
+        rod[0][3], rod[0][4]
+    );
+    assert!(
+        rod[0][3].abs() < 1e-7 && rod[0][4].abs() < 1e-7,
+        "{:?}",
+        rod[0]
+    );
+    assert!(swing > 0.1, "{swing}");
+    assert!(gap < 1e-9, "{gap:e}");
+}
+
+/// A TOML rod pinned to a coupled body is refused naming the key, nothing
+/// written: a pin to a host's motion is not built.
+#[test]
+fn a_toml_rod_pinned_to_a_coupled_body_is_refused() {
+    let mut scenario = moored_buoy("", "type = \"static\"")
+        .replace("type = \"free\"\nposition = [0.0, 0.0, -10.0]\nmass = 500.0\n\
+                  centre_of_mass = [0.0, 0.0, -0.3]\ninertia = [300.0, 300.0, 200.0]\nvolume = 2.0\n",
+                 "type = \"coupled\"\nposition = [0.0, 0.0, -10.0]\n");
+    scenario.push_str(
+        "[[rod_types]]\nname = \"pipe\"\ndiameter = 0.2\nmass_per_length = 60.0\n[[rods]]\n\
+         id = 1\ntype = \"pinned\"\nbody = 1\nrod_type = \"pipe\"\nend_a = [0.0, 0.0, -0.6]\n\
+         end_b = [0.0, 0.0, -4.6]\n",
+    );
+    expect_input_error(
+        "toml-joint-coupled",
+        &scenario,
+        &[
+            "rods[0].body",
+            "body 1 is coupled: a rod pinned to a host's motion is not built yet",
+        ],
+    );
+}
