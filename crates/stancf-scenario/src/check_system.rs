@@ -172,6 +172,20 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
                 format!("{} s (the stiffest line's)", Sig(step)),
             );
         }
+    } else if sc.analysis.time_step > 0.0 {
+        // A deck alone: its step (dtM, or MoorDyn's from its CFL) is a
+        // coupled run's.
+        let stability = match stable_step(sc, &system) {
+            Some(step) => format!("P2, stable below {} s", Sig(step)),
+            None => "the Galerkin step, stable at any step".to_string(),
+        };
+        line(
+            "coupled step",
+            format!(
+                "{} s, the step of a coupled run of this deck ({stability})",
+                Sig(sc.analysis.time_step)
+            ),
+        );
     }
     for n in &sc.notes {
         let _ = writeln!(r, "note: {n}");

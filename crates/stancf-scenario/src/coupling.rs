@@ -80,21 +80,13 @@ pub fn from_text_with(text: &str, path: &Path, allow_large: bool) -> Result<Coup
 /// A deck alone is a static analysis; coupled, it steps with its `dtM`,
 /// as MoorDyn does.
 fn deck_time_step(text: &str, file: &str) -> Result<f64, Failure> {
-    use crate::moordyn::{OptionKind, OptionValue, SupportedOption};
     let deck = crate::moordyn::parse(text).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-    deck.options
-        .iter()
-        .find_map(|o| match (o.kind, &o.value) {
-            (OptionKind::Supported(SupportedOption::TimeStep), OptionValue::Number(dt)) => {
-                Some(*dt)
-            }
-            _ => None,
-        })
-        .ok_or_else(|| {
-            Failure::Input(format!(
-                "{file}: OPTIONS: the deck gives no dtM, the time step a coupled run takes"
-            ))
-        })
+    deck.time_step().ok_or_else(|| {
+        Failure::Input(format!(
+            "{file}: OPTIONS: the deck gives no dtM and has no lines to derive MoorDyn's step \
+             from, the time step a coupled run takes"
+        ))
+    })
 }
 
 /// The coupled system of a validated system scenario.

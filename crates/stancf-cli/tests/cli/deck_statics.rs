@@ -140,3 +140,39 @@ FAIRTEN1
     let o = run_quiet(&path, &dir.join("out"), &[]);
     assert!(o.status.success(), "{}", text(&o).1);
 }
+
+/// A deck's `tScheme` (MoorDyn's integrator) is accepted and noted, and
+/// without a `dtM` the step is MoorDyn's from its Courant number: CFL 2 pi
+/// (L/N) sqrt(w/EA) = 0.4 x 2 pi x 0.25 m x sqrt(0.08 / 2e4) = 1.2566 ms
+/// for the rope's segment, which `check` gives as the coupled run's step;
+/// `check` and the run's warnings say both, and summary.json keeps them
+/// as `notes`.
+#[test]
+fn a_decks_time_scheme_is_noted_and_its_step_taken_from_its_courant_number() {
+    let d = scratch("deck-scheme-cfl");
+    let deck = rope_deck("").replace("1.0e-4 dtM\n", "RK4 tScheme\n0.4 CFL\n");
+    let file = write_scenario(&d, "rope.txt", &deck);
+    let dt = 0.4 * 2.0 * std::f64::consts::PI * 0.25 * (0.08f64 / 2.0e4).sqrt();
+    let (stdout, stderr) = text(&stancf(&["check", file.to_str().unwrap()]));
+    let scheme = "tScheme RK4: MoorDyn's integrator is not used";
+    let step = format!(
+        "MoorDyn's step from CFL 0.4 is {} s",
+        stancf::error::Sig(dt)
+    );
+    assert!(
+        stdout.contains(scheme) && stdout.contains(&step),
+        "{stdout}\n{stderr}"
+    );
+    let coupled = format!(
+        "{} s, the step of a coupled run of this deck (P2, stable below",
+        stancf::error::Sig(dt)
+    );
+    assert!(stdout.contains(&coupled), "{stdout}");
+    let out = d.join("out");
+    let o = run_quiet(&file, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let notes = read_json(&out.join("summary.json"))["notes"].clone();
+    let notes: Vec<String> = serde_json::from_value(notes).unwrap();
+    assert!(notes.iter().any(|n| n.contains(scheme)), "{notes:?}");
+    assert!(notes.iter().any(|n| n.contains(&step)), "{notes:?}");
+}

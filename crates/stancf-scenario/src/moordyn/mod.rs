@@ -225,6 +225,27 @@ impl Deck {
         })
     }
 
+    /// The time step MoorDyn takes (`MoorDyn::Init`): `dtM` if given;
+    /// else `CFL` (MoorDyn's 0.5 when not given) times the shortest
+    /// natural period of a line's segment, 2 pi sqrt(m_s / k_s) with
+    /// m_s = w L / N and k_s = EA N / L (MoorDyn's `NatFreqCFL` of a line;
+    /// points, rods and bodies take their lines'): CFL 2 pi (L / N)
+    /// sqrt(w / EA). None for a deck without lines.
+    pub fn time_step(&self) -> Option<f64> {
+        if let Some(dt) = self.option(SupportedOption::TimeStep) {
+            return Some(dt);
+        }
+        let cfl = self.option(SupportedOption::Courant).unwrap_or(0.5);
+        self.lines
+            .iter()
+            .map(|l| {
+                let t = self.line_type_of(l);
+                let segment = l.unstretched_length / l.segments as f64;
+                cfl * 2.0 * std::f64::consts::PI * segment * (t.mass_per_length / t.ea).sqrt()
+            })
+            .reduce(f64::min)
+    }
+
     /// The line type of a line.
     pub fn line_type_of(&self, line: &DeckLine) -> &LineType {
         &self.line_types[line.type_index]

@@ -33,6 +33,10 @@ pub enum SupportedOption {
     /// of `current_profile.txt` beside the deck (other modes are refused
     /// by the scenario that reads the deck).
     Currents,
+    /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
+    /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
+    /// MoorDyn ignores it.
+    Courant,
 }
 
 impl SupportedOption {
@@ -50,6 +54,7 @@ impl SupportedOption {
             SupportedOption::StaticDynamicFrictionScale => "StatDynFricScale",
             SupportedOption::OutputInterval => "dtOut",
             SupportedOption::Currents => "Currents",
+            SupportedOption::Courant => "CFL",
         }
     }
 
@@ -93,6 +98,26 @@ enum Class {
     /// Accepted and ignored only when the value is 0.
     IgnoredIfZero(&'static str),
     Refused(&'static str),
+    /// `tScheme`: accepted and unused (stancf steps with its own scheme,
+    /// noted by the scenario) if MoorDyn knows the name.
+    Scheme,
+}
+
+/// Whether MoorDyn knows time scheme `name` (`create_time_scheme` in its
+/// Time.cpp): Euler, LEuler, Heun, RK2, RK4, AB2-4, LAB2-4, and the
+/// implicit BEuler<n>, Midpoint<n>, ACA<n>, Wilson<n> with n iterations.
+fn moordyn_scheme(name: &str) -> bool {
+    let lower = name.to_ascii_lowercase();
+    let fixed = [
+        "euler", "leuler", "heun", "rk2", "rk4", "ab2", "ab3", "ab4", "lab2", "lab3", "lab4",
+    ];
+    let iterated = ["beuler", "midpoint", "aca", "wilson"];
+    fixed.contains(&lower.as_str())
+        || iterated.iter().any(|p| {
+            lower
+                .strip_prefix(p)
+                .is_some_and(|n| !n.is_empty() && n.parse::<u32>().is_ok())
+        })
 }
 
 fn classify(lower: &str) -> Option<Class> {
@@ -121,13 +146,8 @@ fn classify(lower: &str) -> Option<Class> {
         "inertialf" => Some(Class::IgnoredIfZero(
             "MoorDyn-F's inertial coupled forces are not supported",
         )),
-        "cfl" => Some(Class::Refused(
-            "a time step from a Courant number is not supported without a dtM; give dtM \
-             (MoorDyn ignores cfl where dtM is given)",
-        )),
-        "tscheme" => Some(Class::Refused(
-            "MoorDyn's time integrators are not supported; stancf uses its own (remove tScheme)",
-        )),
+        "cfl" => s(S::Courant),
+        "tscheme" => Some(Class::Scheme),
         "seafloorfile" => Some(Class::Refused("bathymetry files are not supported")),
         "waterkin" => Some(Class::Refused(
             "MoorDyn-F water kinematics (waves, currents) are not supported",
@@ -185,6 +205,17 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
                 ))
             }
             Some(Class::IgnoredIfZero(_)) => OptionKind::Ignored,
+            Some(Class::Scheme) if !moordyn_scheme(text) => {
+                return Err(DeckError::at(
+                    row.line,
+                    format!(
+                        "option {name} is \"{text}\", a time scheme MoorDyn does not know \
+                         (MoorDyn refuses it too; its schemes: Euler, LEuler, Heun, RK2, RK4, \
+                         AB2-AB4, LAB2-LAB4, BEuler<n>, Midpoint<n>, ACA<n>, Wilson<n>)"
+                    ),
+                ))
+            }
+            Some(Class::Scheme) => OptionKind::Ignored,
             Some(Class::Known(k)) => k,
         };
         let value = match (kind, number) {

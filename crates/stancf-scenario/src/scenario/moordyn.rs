@@ -29,6 +29,7 @@ use crate::moordyn::{
     self, Attachment, BodyAttachment, BodyQuantity, Channel, Deck, DeckBody, DeckRod, LineQuantity,
     PointQuantity, RodAttachment, RodQuantity, SupportedOption,
 };
+use stancf::error::Sig;
 use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
@@ -86,9 +87,11 @@ pub(super) fn deck_scenario(
         analysis_part(&ctx, Some(raw), InitialShape::Static, free_bodies)?;
     notes.extend(deck.bodies.iter().filter_map(free_word_note));
     notes.extend(super::rods::rod_file_notes(deck));
-    // A deck alone is static; its dtM is the step of a coupled run of it
-    // (checked with the other values, crate::input_scales).
-    analysis.time_step = deck.option(SupportedOption::TimeStep).unwrap_or(0.0);
+    // A deck alone is static; its dtM (or MoorDyn's step from its CFL) is
+    // the step of a coupled run of it (checked with the other values,
+    // crate::input_scales).
+    analysis.time_step = deck.time_step().unwrap_or(0.0);
+    notes.extend(step_notes(deck));
     let names = super::names::Names::of_deck(deck, None).with_rods(&rods, deck.points.len());
     Ok(SystemScenario {
         title,
@@ -109,6 +112,45 @@ pub(super) fn deck_scenario(
         channels,
         names,
     })
+}
+
+/// Notes on the deck's time stepping: a `tScheme` is MoorDyn's integrator,
+/// which stancf does not use (it steps with its own scheme); without a
+/// `dtM`, the step MoorDyn derives from its Courant number
+/// ([`Deck::time_step`]).
+fn step_notes(deck: &Deck) -> Vec<String> {
+    let mut notes = Vec::new();
+    for o in &deck.options {
+        if o.name.eq_ignore_ascii_case("tscheme") {
+            let scheme = match &o.value {
+                crate::moordyn::OptionValue::Text(t) => t.clone(),
+                crate::moordyn::OptionValue::Number(v) => v.to_string(),
+            };
+            notes.push(format!(
+                "line {}: tScheme {scheme}: MoorDyn's integrator is not used; stancf steps \
+                 with its own scheme (a system's Galerkin step, docs/method.md §5), at the \
+                 deck's step in a coupled or dynamic run",
+                o.line
+            ));
+        }
+    }
+    if deck.option(SupportedOption::TimeStep).is_none() {
+        if let Some(dt) = deck.time_step() {
+            let cfl = deck.option(SupportedOption::Courant);
+            notes.push(format!(
+                "OPTIONS: no dtM: MoorDyn's step from {} is {} s (the Courant number times \
+                 the shortest line segment's natural period 2 pi sqrt(m/k)), the step of a \
+                 coupled run; stancf's Galerkin step is stable at any step, not bound by a \
+                 Courant number",
+                match cfl {
+                    Some(c) => format!("CFL {}", Sig(c)),
+                    None => "its default CFL 0.5".to_string(),
+                },
+                Sig(dt)
+            ));
+        }
+    }
+    notes
 }
 
 /// The deck's acceleration of gravity (m/s^2; MoorDyn's 9.80665 unless

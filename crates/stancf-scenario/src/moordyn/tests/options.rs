@@ -34,7 +34,6 @@ fn an_unknown_option_is_refused_naming_its_line() {
 fn options_that_change_the_physics_are_refused_by_name() {
     for (row, words) in [
         ("1 WaveKin", "wave files are not read"),
-        ("RK4 tScheme", "time integrators"),
         ("bathy.txt SeafloorFile", "bathymetry"),
         ("0.3 mu_kT", "FrictionCoefficient"),
     ] {
@@ -61,21 +60,60 @@ fn a_supported_option_must_be_a_finite_number() {
     assert!(e.message.contains("must be positive"), "{e}");
 }
 
-/// MoorDyn derives its step from cfl only when the deck gives no dtM
-/// (issue 35): with a dtM, cfl is accepted and unused; without one, it
-/// is refused by name.
+/// MoorDyn derives its step from CFL only when the deck gives no dtM
+/// (MoorDyn2.cpp, `Init`): with a dtM, CFL is accepted and unused;
+/// without one, dtM = CFL 2 pi (L / N) sqrt(w / EA), CFL times the
+/// natural period of the line's segment (MoorDyn's `NatFreqCFL`): here 11
+/// m of 20 kg/m at EA 1e8 N, 0.0309 s; with neither, MoorDyn's CFL of 0.5.
 #[test]
-fn cfl_is_ignored_beside_a_dtm_and_refused_without_one() {
+fn cfl_is_ignored_beside_a_dtm_and_sets_moordyns_step_without_one() {
     let text = with("0.001 dtM", "0.5 CFL\n0.001 dtM");
     let deck = parse(&text).unwrap();
     let cfl = deck.options.iter().find(|o| o.name == "CFL").unwrap();
     assert_eq!(cfl.kind, OptionKind::Ignored);
-    assert_eq!(deck.option(SupportedOption::TimeStep), Some(0.001));
-    let text = with("0.001 dtM", "0.5 CFL");
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "CFL")));
-    assert!(
-        e.message.contains("Courant") && e.message.contains("dtM"),
-        "{e}"
-    );
+    assert_eq!(deck.time_step(), Some(0.001));
+    let period = 2.0 * std::f64::consts::PI * 11.0 * (20.0f64 / 1e8).sqrt();
+    for (options, cfl) in [("0.25 CFL", 0.25), ("0 writeLog", 0.5)] {
+        let deck = parse(&with("0.001 dtM", options)).unwrap();
+        assert_eq!(deck.option(SupportedOption::TimeStep), None);
+        let dt = deck.time_step().unwrap();
+        assert!(
+            (dt - cfl * period).abs() < 1e-15,
+            "{options}: {dt} {}",
+            cfl * period
+        );
+    }
+}
+
+/// tScheme names MoorDyn's integrator: accepted when MoorDyn knows the
+/// name (stancf steps with its own; the scenario notes it), refused
+/// naming its line when it does not, as MoorDyn refuses it.
+#[test]
+fn a_moordyn_time_scheme_is_accepted_and_an_unknown_one_refused() {
+    for name in [
+        "RK4",
+        "rk2",
+        "Euler",
+        "LEuler",
+        "Heun",
+        "AB3",
+        "LAB2",
+        "BEuler5",
+        "Midpoint2",
+        "ACA10",
+        "wilson3",
+    ] {
+        let deck = parse(&with("0.001 dtM", &format!("0.001 dtM\n{name} tScheme"))).unwrap();
+        let o = deck.options.iter().find(|o| o.name == "tScheme").unwrap();
+        assert_eq!(o.kind, OptionKind::Ignored, "{name}");
+    }
+    for name in ["RK5", "BEuler", "Newmark", "ACAx"] {
+        let text = with("0.001 dtM", &format!("0.001 dtM\n{name} tScheme"));
+        let e = error(&text);
+        assert_eq!(e.line, Some(line_of(&text, "tScheme")), "{name}");
+        assert!(
+            e.message.contains("a time scheme MoorDyn does not know"),
+            "{e}"
+        );
+    }
 }

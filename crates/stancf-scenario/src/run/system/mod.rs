@@ -458,6 +458,9 @@ fn write_summary(
     if !sc.rods.is_empty() {
         summary["rods"] = Value::Array(bodies::rods_json(sc));
     }
+    if !sc.notes.is_empty() {
+        summary["notes"] = json!(sc.notes);
+    }
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())
         .map_err(io_err(dest.dir))
