@@ -354,12 +354,17 @@ pub fn plot_system(dir: &Path, info: &RunInfo) -> io::Result<Vec<String>> {
     }
     let curvature = curvature_figure(dir, &lines, info)?;
     crate::plot::save(&curvature, dir, "curvature")?;
-    Ok(vec![
+    let mut drawn = vec![
         "shapes".into(),
         "energy".into(),
         "tensions".into(),
         "curvature".into(),
-    ])
+    ];
+    if let Some(bodies) = crate::figures_bodies::bodies_figure(dir, info)? {
+        crate::plot::save(&bodies, dir, "bodies")?;
+        drawn.push("bodies".into());
+    }
+    Ok(drawn)
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@ pub use stancf_scenario::*;
 
 pub mod figure_data;
 pub mod figures;
+pub mod figures_bodies;
 pub mod figures_energy;
 pub mod figures_system;
 pub mod plot;

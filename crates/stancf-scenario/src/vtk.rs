@@ -5,7 +5,9 @@
 //! curvature and the material coordinate as point data; and `cable.pvd`,
 //! the collection that gives each file its time. ASCII, so that any tool
 //! (and a test) can read it back. Each file is written atomically; the
-//! collection last, when the run ends.
+//! collection last, when the run ends. A system with bodies or rods also
+//! gets `vtk/bodies_<k>.vtp` per written step (its rods, each body's axes
+//! and the spokes to its points, as line cells) and `bodies.pvd`.
 
 use crate::output::{write_atomic, Num};
 use stancf::observe::cable_points;
@@ -23,6 +25,24 @@ pub struct VtkWriter {
     dir: PathBuf,
     /// (t, file name relative to the output folder) of every step written.
     entries: Vec<(f64, String)>,
+    /// The same of the bodies' files ([`VtkWriter::write_segments`]).
+    body_entries: Vec<(f64, String)>,
+}
+
+/// A straight piece of a system's rigid parts in ParaView (`--vtk`,
+/// `vtk/bodies_<k>.vtp`): a rod from end A to end B with its radius (for
+/// ParaView's Tube filter), a body's axis from its reference point
+/// (`axis` 1, 2, 3), or a spoke from its reference point to one of its
+/// points; `body` the id of the body it belongs to (0: a fixed rod),
+/// `rod` the rod's id (0: not a rod).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub a: [f64; 3],
+    pub b: [f64; 3],
+    pub body: i64,
+    pub rod: i64,
+    pub axis: i64,
+    pub radius: f64,
 }
 
 impl VtkWriter {
@@ -31,6 +51,7 @@ impl VtkWriter {
         Ok(VtkWriter {
             dir: dir.to_path_buf(),
             entries: Vec::new(),
+            body_entries: Vec::new(),
         })
     }
 
@@ -121,23 +142,96 @@ impl VtkWriter {
         Ok(())
     }
 
-    /// The collection `cable.pvd`.
-    pub fn commit(self) -> io::Result<()> {
-        let mut x = String::from("<?xml version=\"1.0\"?>\n");
-        x.push_str(
-            "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n",
-        );
-        for (t, file) in &self.entries {
-            writeln!(
-                x,
-                "<DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{file}\"/>",
-                Num(*t)
-            )
-            .ok();
+    /// One written step of a system's bodies and rods: `vtk/bodies_<k>.vtp`,
+    /// one line cell per [`Segment`], with the cell data `body`, `rod`,
+    /// `axis` and `radius`.
+    pub fn write_segments(&mut self, t: f64, segments: &[Segment]) -> io::Result<()> {
+        let finite = segments
+            .iter()
+            .all(|s| s.a.iter().chain(&s.b).all(|x| x.is_finite()) && s.radius.is_finite());
+        if !finite {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("non-finite body or rod at t = {t}"),
+            ));
         }
-        x.push_str("</Collection>\n</VTKFile>\n");
-        write_atomic(&self.dir, "cable.pvd", x.as_bytes())
+        let n = segments.len();
+        let mut x = String::with_capacity(300 * n + 600);
+        x.push_str("<?xml version=\"1.0\"?>\n");
+        x.push_str(
+            "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
+        );
+        writeln!(
+            x,
+            "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
+             format=\"ascii\">{}</DataArray>\n</FieldData>",
+            Num(t)
+        )
+        .ok();
+        writeln!(
+            x,
+            "<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{n}\" \
+             NumberOfStrips=\"0\" NumberOfPolys=\"0\">",
+            2 * n
+        )
+        .ok();
+        x.push_str("<CellData Scalars=\"radius\">\n");
+        array1(&mut x, "body", segments.iter().map(|s| s.body as f64));
+        array1(&mut x, "rod", segments.iter().map(|s| s.rod as f64));
+        array1(&mut x, "axis", segments.iter().map(|s| s.axis as f64));
+        array1(&mut x, "radius", segments.iter().map(|s| s.radius));
+        x.push_str("</CellData>\n<Points>\n");
+        array3(&mut x, "position", segments.iter().flat_map(|s| [s.a, s.b]));
+        x.push_str("</Points>\n<Lines>\n");
+        x.push_str("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        for i in 0..2 * n {
+            write!(x, "{i} ").ok();
+        }
+        x.push_str("\n</DataArray>\n");
+        let offsets: Vec<String> = (1..=n).map(|k| (2 * k).to_string()).collect();
+        writeln!(
+            x,
+            "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">{}</DataArray>",
+            offsets.join(" ")
+        )
+        .ok();
+        x.push_str("</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
+        let name = format!("bodies_{:06}.vtp", self.body_entries.len());
+        write_atomic(&self.dir.join("vtk"), &name, x.as_bytes())?;
+        self.body_entries.push((t, format!("vtk/{name}")));
+        Ok(())
     }
+
+    /// The collections: `cable.pvd`, and `bodies.pvd` where bodies or
+    /// rods were written.
+    pub fn commit(self) -> io::Result<()> {
+        if !self.body_entries.is_empty() {
+            write_atomic(
+                &self.dir,
+                "bodies.pvd",
+                collection(&self.body_entries).as_bytes(),
+            )?;
+        }
+        write_atomic(&self.dir, "cable.pvd", collection(&self.entries).as_bytes())
+    }
+}
+
+/// A VTK collection of the files `entries` (time, file).
+fn collection(entries: &[(f64, String)]) -> String {
+    let mut x = String::from("<?xml version=\"1.0\"?>\n");
+    x.push_str(
+        "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n",
+    );
+    for (t, file) in entries {
+        writeln!(
+            x,
+            "<DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{file}\"/>",
+            Num(*t)
+        )
+        .ok();
+    }
+    x.push_str("</Collection>\n</VTKFile>\n");
+    x
 }
 
 fn array1(x: &mut String, name: &str, values: impl Iterator<Item = f64>) {

@@ -2,7 +2,7 @@
 //! SVG figures, and `run --vtk` writes PolyData files that read back to the
 //! nodes, arrays and times of the run's result files.
 
-use crate::common::{check_png, read_csv, scratch, stancf, text, write_scenario};
+use crate::common::{check_png, read_csv, scratch, stancf, text, vtk_array, write_scenario};
 use std::path::Path;
 
 /// A small valid scenario: the transverse impact, shortened.
@@ -70,18 +70,6 @@ fn run_plot_and_plot_dir_write_valid_figures() {
     let (_, se) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{se}");
     assert!(se.contains("no summary.json"), "{se}");
-}
-
-/// The values of a `<DataArray ... Name="name" ...>` of a VTK XML file.
-fn vtk_array(xml: &str, name: &str) -> Vec<f64> {
-    let tag = format!("Name=\"{name}\"");
-    let start = xml.find(&tag).unwrap_or_else(|| panic!("no array {name}"));
-    let open = start + xml[start..].find('>').unwrap() + 1;
-    let close = open + xml[open..].find("</DataArray>").unwrap();
-    xml[open..close]
-        .split_whitespace()
-        .map(|v| v.parse::<f64>().unwrap())
-        .collect()
 }
 
 /// `run --vtk`: one PolyData file per written step and the collection with

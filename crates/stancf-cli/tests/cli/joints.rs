@@ -109,10 +109,11 @@ fn a_toml_rod_pinned_to_a_free_buoy_hangs_and_swings_with_it() {
     let d = scratch("toml-joint");
     let sc = write_scenario(&d, "joint.toml", &scenario);
     let out = d.join("out");
-    let o = run_quiet(&sc, &out, &[]);
+    let o = run_quiet(&sc, &out, &["--plot", "--vtk"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let buoy = poses(&out, 1.0);
     let rod = poses(&out, 2.0);
+    drawn_for_paraview(&out, buoy.len());
     assert_eq!(buoy.len(), rod.len());
     let mut gap = 0.0f64;
     let mut swing = 0.0f64;
@@ -132,6 +133,31 @@ fn a_toml_rod_pinned_to_a_free_buoy_hangs_and_swings_with_it() {
     );
     assert!(swing > 0.1, "{swing}");
     assert!(gap < 1e-9, "{gap:e}");
+}
+
+/// The bodies figure is drawn, and ParaView gets the rigid parts of every
+/// written step (`bodies.pvd`, one `vtk/bodies_<k>.vtp` each, `steps` of
+/// them): the rod (4 m, radius 0.1 m) from the buoy's point, the buoy's
+/// three axes and its four spokes (three fairleads and the joint's
+/// point), the rod's body's three axes, each cell with its body's id.
+fn drawn_for_paraview(out: &std::path::Path, steps: usize) {
+    check_png(&out.join("bodies.png"));
+    let pvd = std::fs::read_to_string(out.join("bodies.pvd")).unwrap();
+    assert_eq!(pvd.matches("<DataSet ").count(), steps);
+    let xml = std::fs::read_to_string(out.join("vtk/bodies_000000.vtp")).unwrap();
+    let (rod, axis) = (vtk_array(&xml, "rod"), vtk_array(&xml, "axis"));
+    let (body, radius) = (vtk_array(&xml, "body"), vtk_array(&xml, "radius"));
+    let mut want_rod = vec![0.0; 11];
+    want_rod[0] = 1.0;
+    assert_eq!(rod, want_rod);
+    let want_axis = [0.0, 1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0];
+    assert_eq!(axis, want_axis);
+    let want_body = [2.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0];
+    assert_eq!(body, want_body);
+    assert_eq!(radius[0], 0.1);
+    let p = vtk_array(&xml, "position");
+    let length = distance([p[0], p[1], p[2]], [p[3], p[4], p[5]]);
+    assert!((length - 4.0).abs() < 1e-12, "{length}");
 }
 
 /// A TOML rod pinned to a coupled body is refused naming the key, nothing

@@ -398,3 +398,15 @@ pub fn check_png(path: &Path) {
         b.len()
     );
 }
+
+/// The values of a `<DataArray ... Name="name" ...>` of a VTK XML file.
+pub fn vtk_array(xml: &str, name: &str) -> Vec<f64> {
+    let tag = format!("Name=\"{name}\"");
+    let start = xml.find(&tag).unwrap_or_else(|| panic!("no array {name}"));
+    let open = start + xml[start..].find('>').unwrap() + 1;
+    let close = open + xml[open..].find("</DataArray>").unwrap();
+    xml[open..close]
+        .split_whitespace()
+        .map(|v| v.parse::<f64>().unwrap())
+        .collect()
+}

@@ -7,6 +7,7 @@ mod bodies;
 mod rods;
 mod rows;
 mod stiffness;
+mod vtk_parts;
 mod writers;
 
 use super::summary::{error_json, say, vec3};
@@ -113,6 +114,7 @@ pub(super) fn run_system(
         writers.times = super::times_of(&sc.analysis);
     }
     writers.rods = rods::frames(&sc);
+    writers.parts = vtk_parts::BodyParts::of(&sc);
     let mut from_static = false;
     let mut matrices = Vec::new();
     if let Some(st) = static_solve.as_mut() {

@@ -25,6 +25,9 @@ use stancf::vec3::{add, cross, norm, sub};
 /// fixed rod), the rod (None for one of zero length) and the points at
 /// its ends.
 pub(super) struct RodFrame {
+    /// Its id, and the id of the body it is or is fixed in (0: none).
+    pub id: i64,
+    pub body_id: i64,
     holder: RodHolder,
     /// End A in the holder's frame.
     end_a: [f64; 3],
@@ -52,6 +55,8 @@ fn frame(sc: &SystemScenario, r: &SystemRod) -> RodFrame {
         (None, _) => r.ends[0],
     };
     RodFrame {
+        id: r.id,
+        body_id: r.body().map_or(0, |b| sc.bodies[b].id),
         holder: r.holder,
         end_a,
         rod: r.rod.clone(),
@@ -101,6 +106,22 @@ impl RodFrame {
                 }
             }
         }
+    }
+
+    /// The rod as a ParaView segment at `row` (None for a rod of zero
+    /// length), its radius d/2.
+    pub(super) fn segment(&self, row: &SystemRow) -> Option<crate::vtk::Segment> {
+        let rod = self.rod.as_ref()?;
+        let s = self.state(row);
+        let axis = s.axis?;
+        Some(crate::vtk::Segment {
+            a: s.end_a,
+            b: add(s.end_a, stancf::vec3::scale(rod.length(), axis)),
+            body: self.body_id,
+            rod: self.id,
+            axis: 0,
+            radius: 0.5 * rod.diameter,
+        })
     }
 
     /// The net force of the lines attached at end `k` (0 where none is).

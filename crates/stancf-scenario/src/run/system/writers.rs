@@ -47,6 +47,8 @@ pub(super) struct SystemWriters {
     pub(super) times: TimeGrid,
     /// The scenario's rods, for `Rod<n>` channels ([`super::rods::frames`]).
     pub(super) rods: Vec<RodFrame>,
+    /// The bodies and rods as ParaView draws them (with `--vtk`).
+    pub(super) parts: Option<super::vtk_parts::BodyParts>,
 }
 
 impl SystemWriters {
@@ -151,6 +153,7 @@ impl SystemWriters {
             water: with_water,
             times: TimeGrid::default(),
             rods: Vec::new(),
+            parts: None,
         })
     }
 
@@ -176,6 +179,9 @@ impl SystemWriters {
         }
         if let Some(vtk) = self.vtk.as_mut() {
             vtk.write_lines(t, &row.lines, Some(&self.line_ids))?;
+            if let Some(parts) = &self.parts {
+                vtk.write_segments(t, &parts.segments(&self.rods, row))?;
+            }
         }
         if let Some((file, channels)) = self.channels.as_mut() {
             let w = file.writer();
