@@ -762,7 +762,8 @@ def study_refinement(folder, text, factors=(1, 2, 4, 8)):
     for k in factors:
         sc = os.path.join(folder, "refined_%d.toml" % k)
         with open(sc, "w") as f:
-            f.write('title = "refined x%d"\n[system]\nmoordyn = "deck.txt"\n' % k)
+            f.write('title = "refined x%d"\n[system]\nmoordyn = "deck.txt"\n'
+                    '[analysis]\ntype = "static"\n' % k)
             for n, ids in sorted(segs.items()):
                 f.write("[[mesh]]\nlines = %r\nelements = %d\n" % (ids, n * k))
         st = stancf_run(sc, os.path.join(folder, "stancf_x%d" % k))

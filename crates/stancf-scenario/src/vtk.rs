@@ -89,25 +89,7 @@ impl VtkWriter {
         }
         let n = points.len();
         let mut x = String::with_capacity(200 * n);
-        x.push_str("<?xml version=\"1.0\"?>\n");
-        x.push_str(
-            "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
-        );
-        // The time, as field data of the data set (read by VTK as TimeValue).
-        writeln!(
-            x,
-            "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
-             format=\"ascii\">{}</DataArray>\n</FieldData>",
-            Num(t)
-        )
-        .ok();
-        writeln!(
-            x,
-            "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" \
-             NumberOfStrips=\"0\" NumberOfPolys=\"0\">",
-            lines.len()
-        )
-        .ok();
+        polydata_head(&mut x, t, n, lines.len());
         x.push_str("<PointData Scalars=\"axial_stress\" Vectors=\"velocity\">\n");
         array3(&mut x, "velocity", points.iter().map(|p| p.v));
         array1(
@@ -157,24 +139,7 @@ impl VtkWriter {
         }
         let n = segments.len();
         let mut x = String::with_capacity(300 * n + 600);
-        x.push_str("<?xml version=\"1.0\"?>\n");
-        x.push_str(
-            "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
-        );
-        writeln!(
-            x,
-            "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
-             format=\"ascii\">{}</DataArray>\n</FieldData>",
-            Num(t)
-        )
-        .ok();
-        writeln!(
-            x,
-            "<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{n}\" \
-             NumberOfStrips=\"0\" NumberOfPolys=\"0\">",
-            2 * n
-        )
-        .ok();
+        polydata_head(&mut x, t, 2 * n, n);
         x.push_str("<CellData Scalars=\"radius\">\n");
         array1(&mut x, "body", segments.iter().map(|s| s.body as f64));
         array1(&mut x, "rod", segments.iter().map(|s| s.rod as f64));
@@ -214,6 +179,29 @@ impl VtkWriter {
         }
         write_atomic(&self.dir, "cable.pvd", collection(&self.entries).as_bytes())
     }
+}
+
+/// The head of a PolyData file of `points` points and `lines` line cells
+/// at time t: the XML declaration, the time as field data (read by VTK
+/// as TimeValue) and the piece's counts.
+fn polydata_head(x: &mut String, t: f64, points: usize, lines: usize) {
+    x.push_str("<?xml version=\"1.0\"?>\n");
+    x.push_str(
+        "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n",
+    );
+    writeln!(
+        x,
+        "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" \
+         format=\"ascii\">{}</DataArray>\n</FieldData>",
+        Num(t)
+    )
+    .ok();
+    writeln!(
+        x,
+        "<Piece NumberOfPoints=\"{points}\" NumberOfVerts=\"0\" NumberOfLines=\"{lines}\" \
+         NumberOfStrips=\"0\" NumberOfPolys=\"0\">"
+    )
+    .ok();
 }
 
 /// A VTK collection of the files `entries` (time, file).

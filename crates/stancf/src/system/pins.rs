@@ -248,8 +248,7 @@ pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], pin: &PinRates) {
 #[cfg(test)]
 mod tests {
     use crate::body::{BodyWater, RigidInertia};
-    use crate::system::{Body, BodyKind, End, Line, Pin, Point, System};
-    use crate::{Cable, ElementType, Load, Material, Model, ModelOptions};
+    use crate::system::{Body, BodyKind, Pin, Point, System};
 
     /// The static rows' Jacobian of a buoy holding a rod at a joint (a
     /// point of the buoy no line holds), the rod crossing the surface in a
@@ -288,30 +287,10 @@ mod tests {
             local: [0.0; 3],
             point: 4,
         });
-        let mut points = Vec::new();
-        let mut lines = Vec::new();
-        for (k, local) in [[0.0, -1.0, 0.0], [0.0, 1.0, 0.3]].iter().enumerate() {
-            let anchor = [0.5 * k as f64, 8.0 * local[1], -8.0];
-            let end = buoy.point(*local);
-            points.push(Point::fixed(anchor));
-            points.push(Point::on_body(0, *local));
-            let material = Material {
-                youngs_modulus: 1e9,
-                density: 2000.0,
-                area: 1e-3,
-                second_moment: 1e-9,
-                axial_damping: 0.0,
-            };
-            let cable = Cable::straight(10.5, 6, ElementType::Sac2)
-                .with_origin(anchor)
-                .with_direction(crate::vec3::sub(end, anchor));
-            let loads = vec![Load::Gravity { acceleration: g }];
-            let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
-            lines.push(Line {
-                model,
-                ends: [End::Point(2 * k), End::Point(2 * k + 1)],
+        let (lines, mut points) =
+            crate::system::body_statics::tests::two_lines_to(&buoy, |k, local| {
+                [0.5 * k as f64, 8.0 * local[1], -8.0]
             });
-        }
         points.push(Point::on_body(0, joint_local));
         let system = System::with_bodies(lines, points, vec![buoy, hung], g).unwrap();
         let (worst, size) = crate::system::body_statics::tests::static_jacobian_error(system);

@@ -6,7 +6,8 @@
 use crate::common::rods::{rod, rope};
 use crate::common::{
     assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, hanging_line,
-    lean_in_a_current, seeded_equilibrium, straight_line,
+    lean_in_a_current, period_from_crossings, seeded_equilibrium, started_with_bodies,
+    straight_line,
 };
 use stancf::body::{BodyWater, RigidInertia};
 use stancf::system::{Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation};
@@ -79,13 +80,20 @@ fn double_pendulum(
         }]
     };
     let system = System::with_bodies(lines, points, bodies, [0.0, 0.0, -G]).expect("system");
-    let mut states: Vec<State> = system
-        .lines()
-        .iter()
-        .map(|l| l.model.initial_state())
-        .collect();
-    system.start_lines_with_bodies(&mut states);
+    let states = started_with_bodies(&system);
     (system, states)
+}
+
+/// The buoys' mooring lines: 1 kg/m, EA 1e7 N, light against the lift
+/// they hold.
+fn mooring_rope() -> Material {
+    Material {
+        youngs_modulus: 1e10,
+        density: 1000.0,
+        area: 1e-3,
+        second_moment: 1e-12,
+        axial_damping: 0.0,
+    }
 }
 
 /// The angle from the downward vertical, in the x-z plane, of the rod
@@ -150,19 +158,11 @@ fn a_double_pendulum_of_two_rods_swings_at_its_normal_modes() {
             let rod0 = sim.free_body(0).unwrap();
             swing(rod0.point([0.0; 3]), rod0.point(scale(l0, links[0].axis)))
         };
-        let (mut before, mut crossings, mut gap) = (angle(&sim), Vec::new(), 0.0f64);
-        while crossings.len() < 7 {
-            let t = sim.time();
-            sim.step().expect("step");
-            let now = angle(&sim);
-            if before * now < 0.0 {
-                crossings.push(t + dt * before / (before - now));
-            }
-            before = now;
+        let mut gap = 0.0f64;
+        let period = period_from_crossings(&mut sim, dt, angle, |sim| {
             let joint = sim.free_body(0).unwrap().point(scale(l0, links[0].axis));
             gap = gap.max(norm(sub(sim.free_body(1).unwrap().point([0.0; 3]), joint)));
-        }
-        let period = (crossings[6] - crossings[0]) / 3.0;
+        });
         eprintln!(
             "double pendulum, mode theta1/theta0 = {ratio:.4}: period {period:.6} s against \
              {want:.6} s ({:.1e}); the joint opened {gap:.1e} m",
@@ -281,14 +281,7 @@ fn a_heavy_rod_pinned_under_a_moored_buoy_leans_in_a_current() {
         point: 0,
     });
     let anchor = [-8.0, 0.0, -40.0];
-    // 1 kg/m, EA 1e7 N: light against the lift it holds.
-    let rope = Material {
-        youngs_modulus: 1e10,
-        density: 1000.0,
-        area: 1e-3,
-        second_moment: 1e-12,
-        axial_damping: 0.0,
-    };
+    let rope = mooring_rope();
     let line = Line {
         model: straight_line(anchor, joint, 31.0, 10, rope),
         ends: [End::Point(1), End::Point(0)],
@@ -367,13 +360,7 @@ fn a_buoy_on_lines_at_one_point_tilts_under_its_jointed_rod_and_keeps_its_headin
         local: [0.0; 3],
         point: 0,
     });
-    let rope = Material {
-        youngs_modulus: 1e10,
-        density: 1000.0,
-        area: 1e-3,
-        second_moment: 1e-12,
-        axial_damping: 0.0,
-    };
+    let rope = mooring_rope();
     let top = buoy.point(lines_local);
     let mut points = vec![
         Point::on_body(0, joint_local),

@@ -2,7 +2,10 @@
 //! (B24)-(B26)): MoorDyn's pinned rods, turning freely about their end A.
 
 use crate::common::rods::{rod, rope};
-use crate::common::{assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift};
+use crate::common::{
+    assert_energy_balance_falls_at_fourth_order, galerkin_energy_drift, period_from_crossings,
+    started_with_bodies,
+};
 use stancf::body::BodyWater;
 use stancf::system::{Body, BodyKind, End, Line, Pin, Point, System, SystemSimulation};
 use stancf::vec3::{norm, scale, sub};
@@ -31,12 +34,7 @@ fn pinned(mut body: Body, local: [f64; 3], anchor: [f64; 3]) -> (System, Vec<sta
     ];
     let system =
         System::with_bodies(vec![line], points, vec![body], [0.0, 0.0, -G]).expect("system");
-    let mut states: Vec<stancf::State> = system
-        .lines()
-        .iter()
-        .map(|l| l.model.initial_state())
-        .collect();
-    system.start_lines_with_bodies(&mut states);
+    let states = started_with_bodies(&system);
     (system, states)
 }
 
@@ -73,18 +71,10 @@ fn a_pinned_rod_swings_as_a_physical_pendulum() {
         let a = body.point([0.0; 3]);
         (b[0] - a[0]).atan2(a[2] - b[2])
     };
-    let (mut before, mut crossings, mut drift) = (angle(&sim), Vec::new(), 0.0f64);
-    while crossings.len() < 7 {
-        let t = sim.time();
-        sim.step().expect("step");
-        let now = angle(&sim);
-        if before * now < 0.0 {
-            crossings.push(t + dt * before / (before - now));
-        }
-        before = now;
+    let mut drift = 0.0f64;
+    let period = period_from_crossings(&mut sim, dt, angle, |sim| {
         drift = drift.max(norm(sub(sim.free_body(0).unwrap().point([0.0; 3]), top)));
-    }
-    let period = (crossings[6] - crossings[0]) / 3.0;
+    });
     eprintln!(
         "pinned rod: period {period:.6} s against {want:.6} s ({:.1e}); the pin moved {drift:.1e} m",
         (period - want).abs() / want

@@ -318,13 +318,45 @@ pub fn two_ropes_on_a_body(
         Point::fixed([0.1, 0.4, z]),
     ];
     let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let states = started_with_bodies(&system);
+    (system, states)
+}
+
+/// The lines' states of `system` at their models' initial states, their
+/// ends moved with the bodies they are on
+/// (`System::start_lines_with_bodies`).
+pub fn started_with_bodies(system: &stancf::system::System) -> Vec<stancf::State> {
     let mut states: Vec<stancf::State> = system
         .lines()
         .iter()
         .map(|l| l.model.initial_state())
         .collect();
     system.start_lines_with_bodies(&mut states);
-    (system, states)
+    states
+}
+
+/// The period of `angle(sim)` over three periods from its zero crossings
+/// (each placed linearly between the steps around it), stepping `sim`
+/// with steps of `dt`; `watch(sim)` is called after every step (a
+/// quantity to track alongside).
+pub fn period_from_crossings(
+    sim: &mut stancf::system::SystemSimulation,
+    dt: f64,
+    angle: impl Fn(&stancf::system::SystemSimulation) -> f64,
+    mut watch: impl FnMut(&stancf::system::SystemSimulation),
+) -> f64 {
+    let (mut before, mut crossings) = (angle(sim), Vec::new());
+    while crossings.len() < 7 {
+        let t = sim.time();
+        sim.step().expect("step");
+        let now = angle(sim);
+        if before * now < 0.0 {
+            crossings.push(t + dt * before / (before - now));
+        }
+        before = now;
+        watch(sim);
+    }
+    (crossings[6] - crossings[0]) / 3.0
 }
 
 /// A 1 m [`light_rope`] (2 g) hanging from `top` in gravity 9.81, its end A
