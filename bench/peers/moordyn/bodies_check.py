@@ -459,18 +459,22 @@ def stancf_objects(res, text):
 
 def md_snapshot(s, text):
     """MoorDyn's numbers after Init: tensions {(line, end): (force,
-    magnitude)} (the end nodes' net force), and the objects as
-    stancf_objects gives them, plus the free bodies' and rods' net force
-    (`residual`, N, its largest translational component)."""
+    magnitude)} (the end nodes' net force), the objects as stancf_objects
+    gives them, `residual` (N: the largest net force on a degree of
+    freedom MoorDyn moves: a line's inner node, a free point, the
+    translation of a free body or rod, as its last evaluation left them)
+    and `scale` (N: the largest line end tension)."""
     import moordyn
-    tensions = {}
+    tensions, residual = {}, 0.0
     for i in range(1, moordyn.GetNumberLines(s) + 1):
         line = moordyn.GetLine(s, i)
         n = moordyn.GetLineN(line)
         for end, node in (("A", 0), ("B", n)):
             f = np.array(moordyn.GetLineNodeForce(line, node))
             tensions[(i, end)] = (f, float(np.linalg.norm(f)))
-    objs, residual = {}, 0.0
+        for node in range(1, n):
+            residual = max(residual, float(np.linalg.norm(moordyn.GetLineNodeForce(line, node))))
+    objs = {}
     bodies = [f for _, f in table_rows(text, "BODIES") if len(f) >= 14]
     for k, f in enumerate(bodies):
         b = moordyn.GetBody(s, k + 1)
@@ -499,7 +503,9 @@ def md_snapshot(s, text):
         if len(f) >= 5 and point_kind(f) == "free":
             p = moordyn.GetPoint(s, int(f[0]))
             objs[("point", int(f[0]))] = np.array(moordyn.GetPointPos(p))
-    return dict(tensions=tensions, objects=objs, residual=residual)
+            residual = max(residual, float(np.linalg.norm(moordyn.GetPointForce(p))))
+    scale = max((v[1] for v in tensions.values()), default=0.0)
+    return dict(tensions=tensions, objects=objs, residual=residual, scale=scale)
 
 
 def change(a, b):
@@ -524,36 +530,50 @@ def change(a, b):
 
 
 def ic_error(log):
-    """The stationary solver's last "Remaining error" (m/s^2, per state)
-    from MoorDyn's log."""
+    """The initial-condition solver's last "Remaining error" from
+    MoorDyn's log, as it writes it ("0.0173 m/s2 per state" for the
+    stationary solver, "1.2 % on line 3" for the dynamic relaxation)."""
     if not os.path.exists(log):
-        return None
-    found = None
+        return ""
+    found = ""
     with open(log, errors="replace") as f:
         for line in f:
-            m = re.search(r"Remaining error after ([-+.\deE]+) s = ([-+.\deE]+) m/s2", line)
+            m = re.search(r"Remaining error after [-+.\deE]+ s = ([-+.\deE]+) m/s2", line)
             if m:
-                found = float(m.group(2))
+                found = "%.3g m/s^2 per state" % float(m.group(1))
+            m = re.search(r"Remaining error after [-+.\deE]+ s = ([-+.\deE]+)% on line (\d+)",
+                          line)
+            if m:
+                found = "%.3g %% on line %s" % (float(m.group(1)), m.group(2))
     return found
+
+
+# Settled: the residual (md_snapshot) below this fraction of the largest
+# line end tension, besides the SETTLE_ limits on the change.
+SETTLE_RESIDUAL = 1e-4
 
 
 def moordyn_equilibrium(text, folder, max_time=MD_MAX_TIME, wall_budget=MD_WALL,
                         chunk=MD_CHUNK):
-    """MoorDyn's static equilibrium of a deck: its stationary
-    initial-condition solver in chunks of `chunk` s of pseudo-time (each
-    from the state the last one saved, fileIC) until the extrapolated
-    change is below the SETTLE_ limits or the budget is spent. Returns a
-    dict: settled, time (pseudo-time s), wall (s), the last chunk's change
-    and its extrapolation (tension, m, deg), error (the solver's last
-    error, m/s^2 per state), history [(time, change)], the final
-    snapshot (md_snapshot), or failed (a message)."""
+    """MoorDyn's static equilibrium of a deck by its initial-condition
+    solver (the one the deck's ICgenDynamic names) in chunks of `chunk` s
+    of pseudo-time, each from the state the last one saved (fileIC),
+    until it settles (the change over a chunk, extrapolated geometrically,
+    below the SETTLE_ limits and the residual below SETTLE_RESIDUAL of
+    the largest tension), stalls (the change below its limits, the
+    residual not) or spends the budget. Returns a dict: solver, settled,
+    stalled, time (pseudo-time s), wall (s), change (the last chunk's:
+    tension, m, deg), left (its extrapolation), error (the solver's own,
+    from its log), history [(time, change, residual)], snapshot
+    (md_snapshot), failed (a message where MoorDyn stopped)."""
     import moordyn
     os.makedirs(folder, exist_ok=True)
     x = coupled_dofs(text)
     drop = {"TmaxIC", "ICTmax", "threshIC", "ICthresh", "fileIC"}
-    prev, prev_change, history, t, wall = None, None, [], 0.0, 0.0
-    out = dict(settled=False, failed="")
-    k = 0
+    dynamic = options(text).get("ICgenDynamic", options(text).get("GenDynamicIC", "0")) != "0"
+    out = dict(solver="dynamic relaxation" if dynamic else "stationary", settled=False,
+               stalled=False, failed="", history=[], time=0.0, wall=0.0, error="")
+    prev, prev_change, k = None, None, 0
     while True:
         add = ["%r  TmaxIC" % chunk, "0  threshIC"]
         if k:
@@ -568,42 +588,75 @@ def moordyn_equilibrium(text, folder, max_time=MD_MAX_TIME, wall_budget=MD_WALL,
             moordyn.SetVerbosity(s, moordyn.LEVEL_NONE)
             moordyn.SetLogFile(s, log)
             moordyn.SetLogLevel(s, moordyn.LEVEL_MSG)
-            err = moordyn.Init(s, x, [0.0] * len(x))
-        wall += time.perf_counter() - t0
+            try:
+                err = moordyn.Init(s, x, [0.0] * len(x))
+            except RuntimeError as e:
+                err = str(e)
+        out["wall"] += time.perf_counter() - t0
         if err:
-            out["failed"] = "MoorDyn's Init returned %d" % err
+            out["failed"] = "Init failed after %g s of pseudo-time (%s)" % (out["time"], err)
             moordyn.Close(s)
             break
         snap = md_snapshot(s, text)
         moordyn.SaveState(s, os.path.join(folder, "chunk%d.state" % k))
         moordyn.Close(s)
-        t += chunk
-        out.update(snapshot=snap, time=t, wall=wall, error=ic_error(log))
         if not all(np.isfinite(v[1]) for v in snap["tensions"].values()):
-            out["failed"] = "MoorDyn's state is not finite after %g s" % t
+            out["failed"] = "its state is not finite after %g s of pseudo-time" % (
+                out["time"] + chunk)
             break
+        out["time"] += chunk
+        out.update(snapshot=snap, error=ic_error(log))
         if prev is not None:
             c = change(prev, snap)
-            history.append((t, c))
+            out["history"].append((out["time"], c, snap["residual"]))
             out["change"] = c
-            # Geometric extrapolation of what is left: c r / (1 - r), r the
+            # What is left, extrapolated geometrically: c r / (1 - r), r the
             # ratio of this chunk's change to the last one's.
             left = []
             for j in range(3):
                 r = c[j] / prev_change[j] if prev_change and prev_change[j] > 0 else 1.0
-                left.append(c[j] * r / (1.0 - r) if r < 0.95 else math.inf if c[j] > 0 else 0.0)
+                left.append(c[j] * r / (1.0 - r) if r < 0.95 else (math.inf if c[j] > 0
+                                                                     else 0.0))
             out["left"] = left
-            if max(c[0], left[0]) < SETTLE_TENSION and max(c[1], left[1]) < SETTLE_POSITION \
-                    and max(c[2], left[2]) < SETTLE_ANGLE:
+            quiet = max(c[0], left[0]) < SETTLE_TENSION and max(c[1], left[1]) < SETTLE_POSITION \
+                and max(c[2], left[2]) < SETTLE_ANGLE
+            if quiet and snap["residual"] <= SETTLE_RESIDUAL * snap["scale"]:
                 out["settled"] = True
+                break
+            if quiet:
+                out["stalled"] = True
                 break
             prev_change = c
         prev = snap
         k += 1
-        if t >= max_time or wall >= wall_budget:
+        if out["time"] >= max_time or out["wall"] >= wall_budget:
             break
-    out["history"] = history
     return out
+
+
+def moordyn_settle(text, folder, wall_budget=MD_WALL):
+    """MoorDyn's equilibrium: the deck's initial-condition solver
+    (moordyn_equilibrium); where it does not settle, the other one too
+    (the dynamic relaxation, ICgenDynamic 1, with the deck's CdScaleIC,
+    after the stationary solver, or the reverse). Returns (the run
+    compared: the one that settled, else the one with the smaller
+    residual, [every run])."""
+    first = moordyn_equilibrium(text, os.path.join(folder, "first"), wall_budget=wall_budget)
+    runs = [first]
+    if not first["settled"]:
+        flip = "0" if first["solver"] == "dynamic relaxation" else "1"
+        other = with_options(text, {"ICgenDynamic", "GenDynamicIC"}, [flip + "  ICgenDynamic"])
+        runs.append(moordyn_equilibrium(other, os.path.join(folder, "second"),
+                                        wall_budget=wall_budget,
+                                        chunk=MD_CHUNK if flip == "0" else MD_CHUNK / 5))
+    done = [r for r in runs if r["settled"]]
+    if done:
+        return done[0], runs
+    have = [r for r in runs if "snapshot" in r]
+    if not have:
+        return runs[0], runs
+    return min(have, key=lambda r: r["snapshot"]["residual"] / max(r["snapshot"]["scale"],
+                                                                     1e-300)), runs
 
 
 # --------------------------------------------------------------------------

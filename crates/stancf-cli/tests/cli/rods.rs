@@ -502,3 +502,39 @@ fn a_zero_length_rod_on_a_body_holds_its_lines_where_it_is() {
         "{so}"
     );
 }
+
+/// examples/moored-spar.toml (a hull 2 m across and 20 m long in a free
+/// body, 29 t of ballast, on three chains; pushed): its static
+/// equilibrium floats it upright at its draft, its hull displacing the
+/// body's mass (the ballast and the hull's 20 t) and the chains' pull,
+/// rho pi s = m + |F_z| / g with s the keel's depth (the surface cuts the
+/// hull's side), to 1e-8 of it (the static tolerance); then it rocks: its
+/// pitch changes sign at least 8 times in 40 s (a period near 8 s) and
+/// its swing decays (the water's drag).
+#[test]
+fn the_moored_spar_example_floats_at_its_draft_and_rocks() {
+    let d = scratch("moored-spar");
+    let out = d.join("out");
+    let o = run_quiet(&repo_file("examples/moored-spar.toml"), &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let first = &rows[0];
+    let draft = 16.0 - first[col("z")];
+    let displaced = 1025.0 * PI * draft;
+    let mass = 29_000.0 + 20_000.0 + first[col("fz")].abs() / 9.81;
+    let pitch: Vec<f64> = rows.iter().map(|r| r[col("pitch")]).collect();
+    let crossings = pitch.windows(2).filter(|w| w[0] * w[1] < 0.0).count();
+    let half = pitch.len() / 2;
+    let swing = |p: &[f64]| p.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    eprintln!(
+        "moored spar: draft {draft:.4} m, displaced {displaced:.3} kg against {mass:.3} kg; \
+         pitch crosses zero {crossings} times, swings {:.3} then {:.3} degrees",
+        swing(&pitch[..half]),
+        swing(&pitch[half..])
+    );
+    assert!(first[col("pitch")].abs() < 1e-9, "{}", first[col("pitch")]);
+    assert!((displaced - mass).abs() < 1e-8 * mass, "{displaced} {mass}");
+    assert!(crossings >= 8, "{crossings}");
+    assert!(swing(&pitch[half..]) < swing(&pitch[..half]));
+}
