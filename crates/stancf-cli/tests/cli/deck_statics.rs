@@ -176,3 +176,31 @@ fn a_decks_time_scheme_is_noted_and_its_step_taken_from_its_courant_number() {
     assert!(notes.iter().any(|n| n.contains(scheme)), "{notes:?}");
     assert!(notes.iter().any(|n| n.contains(&step)), "{notes:?}");
 }
+
+/// A deck without `WtrDpth` takes MoorDyn's depth, that of its deepest
+/// point (MoorDyn starts at 0 and lowers the depth to each point below
+/// it; OpenFAST's glue-code decks leave it to the host): the rope's
+/// points 1 m down give 1 m, noted; with no point under the surface
+/// there is no depth to take, and the deck is refused saying so.
+#[test]
+fn a_deck_without_wtrdpth_takes_moordyns_depth_of_its_deepest_point() {
+    let d = scratch("deck-depth");
+    let deck = rope_deck("").replace("50 WtrDpth\n", "");
+    let file = write_scenario(&d, "rope.txt", &deck);
+    let (stdout, stderr) = text(&stancf(&["check", file.to_str().unwrap()]));
+    assert!(stdout.contains("depth 1 m,"), "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("no WtrDpth: MoorDyn's rule, the depth of the deepest point, 1 m"),
+        "{stdout}"
+    );
+    let above = deck.replace(" -1.0 0 0 0 0\n", " 1.0 0 0 0 0\n");
+    assert_eq!(above.matches(" 1.0 0 0 0 0\n").count(), 2, "{above}");
+    let file = write_scenario(&d, "above.txt", &above);
+    let o = stancf(&["check", file.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o).1.contains("no point is under the surface"),
+        "{}",
+        text(&o).1
+    );
+}

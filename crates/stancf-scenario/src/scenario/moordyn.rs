@@ -58,7 +58,7 @@ pub(super) fn deck_scenario(
     added: Option<(&Ctx, WaterKeys)>,
 ) -> Result<SystemScenario, ScenarioError> {
     let g = deck_gravity(deck, file)?;
-    let water = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
+    let (water, depth_note) = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
     let channels = deck_channels(deck, file)?;
     let ctx = Ctx { file };
     let raw = RawAnalysis {
@@ -92,6 +92,7 @@ pub(super) fn deck_scenario(
     // crate::input_scales).
     analysis.time_step = deck.time_step().unwrap_or(0.0);
     notes.extend(step_notes(deck));
+    notes.extend(depth_note);
     let names = super::names::Names::of_deck(deck, None).with_rods(&rods, deck.points.len());
     Ok(SystemScenario {
         title,

@@ -158,14 +158,15 @@ fn deck_option_of(key: &str) -> SupportedOption {
 
 /// The deck's water with the scenario's `[water]` keys `added` (checked
 /// under `ctx`, the scenario) : a key both give is refused naming the
-/// key and the deck's option and line; the depth is required of one.
+/// key and the deck's option and line. Without a depth from either,
+/// MoorDyn's rule ([`moordyn_depth`]), noted (the note returned).
 pub(super) fn deck_water(
     deck_keys: WaterKeys,
     file: &str,
     deck: &Deck,
     added: Option<(&Ctx, WaterKeys)>,
-) -> Result<Water, ScenarioError> {
-    let keys = match added {
+) -> Result<(Water, Option<String>), ScenarioError> {
+    let mut keys = match added {
         None => deck_keys,
         Some((ctx, added)) => {
             for ((key, in_deck), (_, in_scenario)) in deck_keys.given().iter().zip(added.given()) {
@@ -184,10 +185,37 @@ pub(super) fn deck_water(
             deck_keys.or(added)
         }
     };
-    keys.water().ok_or_else(|| {
+    let mut note = None;
+    if keys.depth.is_none() {
+        if let Some(depth) = moordyn_depth(deck) {
+            keys.depth = Some(depth);
+            note = Some(format!(
+                "OPTIONS: no WtrDpth: MoorDyn's rule, the depth of the deepest point, {} m (its \
+                 anchors on the bed); give WtrDpth, or water.depth in a scenario that takes the \
+                 deck, for another",
+                stancf::error::Sig(depth)
+            ));
+        }
+    }
+    let water = keys.water().ok_or_else(|| {
         ScenarioError(format!(
-            "{file}: OPTIONS: WtrDpth is missing: a deck's lines hang in water of a given depth \
-             (give WtrDpth, or water.depth in a scenario that takes the deck)"
+            "{file}: OPTIONS: WtrDpth is missing and no point is under the surface to take \
+             MoorDyn's depth from (the deepest point's): give WtrDpth, or water.depth in a \
+             scenario that takes the deck"
         ))
-    })
+    })?;
+    Ok((water, note))
+}
+
+/// MoorDyn's water depth when a deck gives none (`MoorDyn::ReadInFile`:
+/// WtrDpth starts at 0 and each point below -WtrDpth lowers it to that
+/// point): the depth of the deepest point of POINTS, if one is under the
+/// surface.
+fn moordyn_depth(deck: &Deck) -> Option<f64> {
+    let deepest = deck
+        .points
+        .iter()
+        .map(|p| -p.position[2])
+        .fold(0.0f64, f64::max);
+    (deepest > 0.0).then_some(deepest)
 }
