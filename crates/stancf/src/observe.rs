@@ -186,6 +186,35 @@ pub fn stress_samples(
     }
 }
 
+/// The axial force N = EA eps + BA eps_dot (N, docs/method.md §2.10) at
+/// every node, eps the model's strain of the node's r_x and eps_dot =
+/// a . r_x_dot (a = r_x for Green's strain, r_x / |r_x| for the
+/// engineering one); a line without compression has no elastic part
+/// where shortened ((M4a)). Nodal: r_x is a nodal coordinate, so both
+/// elements at a node give it (MoorDyn's node tension, `L<n>N<k>T`, is
+/// the mean of its two segments').
+pub fn node_axial_forces(model: &Model, state: &State) -> Vec<f64> {
+    (0..model.nodes())
+        .map(|k| node_axial_force(model, state, k))
+        .collect()
+}
+
+/// [`node_axial_forces`] at node k alone.
+pub fn node_axial_force(model: &Model, state: &State, k: usize) -> f64 {
+    let material = &model.material;
+    let ea = material.youngs_modulus * material.area;
+    let measure = model.options.measures.axial_strain;
+    let o = coordinate(model.dofs_per_node(), k, crate::model::SLOT_R_X, 0);
+    let rx = [state.e[o], state.e[o + 1], state.e[o + 2]];
+    let vx = [state.v[o], state.v[o + 1], state.v[o + 2]];
+    let elastic = axial_stress(model.carries_compression(), ea, axial_strain(measure, &rx));
+    let a = match measure {
+        crate::AxialStrain::Green => rx,
+        crate::AxialStrain::Engineering => crate::vec3::normalized(rx),
+    };
+    elastic + material.axial_damping * crate::vec3::dot(a, vx)
+}
+
 /// The largest axial compression -EA eps (N) at the points of the axial
 /// rule of any element (0 if the line is nowhere shortened): what a line
 /// without compression (docs/method.md §2.2, (M4a)) would shed from a

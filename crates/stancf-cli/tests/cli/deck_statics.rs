@@ -204,3 +204,30 @@ fn a_deck_without_wtrdpth_takes_moordyns_depth_of_its_deepest_point() {
         text(&o).1
     );
 }
+
+/// A rope (2 kg/m, 20 mm: 1.678 kg/m wet) hanging 10 m in 5 segments from
+/// a fixed point with a 50 kg clump at its foot: MoorDyn's node tension
+/// channels `L1N<k>T` are its tension there, the weight below, T_k = (50
+/// + 1.678 s_k) g with s_k = 2k m from the foot (exact at the nodes: the
+/// strain, linear in s, is within the elements' cubic), the top node's
+/// the end's force; to 1e-8 of the weight (the static tolerance).
+#[test]
+fn moordyn_node_tension_channels_are_the_weight_hanging_below() {
+    let deck = "--- MoorDyn v2 ---\nA clump on a rope\n--- LINE TYPES ---\n\
+        TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+        (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
+        rope 0.02 2.0 1.0e6 0 0 0 0 0 0\n--- POINTS ---\n\
+        ID Attachment X Y Z Mass Volume CdA Ca\n(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+        1 Fixed 0 0 -5 0 0 0 0\n2 Free 0 0 -15 50 0 0 0\n--- LINES ---\n\
+        ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(#) (name) (#) (#) (m) (-) (-)\n\
+        1 rope 2 1 10 5 -\n--- OPTIONS ---\n1.0e-3 dtM\n9.81 g\n50 WtrDpth\n\
+        --- OUTPUTS ---\nL1N1T\nL1N3T\nL1N5T\nEND\n--- need this line ---\n";
+    let (channels, _) = run_channels("node_tensions", deck);
+    let wet = 2.0 - 1025.0 * std::f64::consts::PI * 0.01 * 0.01;
+    for (k, (name, value)) in channels.iter().skip(1).enumerate() {
+        let node = [1.0, 3.0, 5.0][k];
+        let want = (50.0 + wet * 2.0 * node) * 9.81;
+        eprintln!("{name}: {value} N against {want} N");
+        assert!((value - want).abs() < 1e-8 * want, "{name}: {value} {want}");
+    }
+}

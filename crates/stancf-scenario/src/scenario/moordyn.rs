@@ -358,24 +358,22 @@ fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, Scenario
 
 /// What stancf does not compute in this version.
 const NOT: &str = "stancf does not compute this value in this version (it writes line end \
-                   tensions, point positions, velocities and net forces, line node positions \
-                   and velocities, body poses, velocities, net forces and moments, and rods' \
+                   tensions, point positions, velocities and net forces, line node positions, \
+                   velocities and tensions, body poses, velocities, net forces and moments, and rods' \
                    poses, velocities, end tensions and submerged fractions)";
 
 /// Why stancf does not have the value of a channel, or None where it
 /// does: line end tensions, point positions, velocities and net forces
-/// (MoorDyn's `Fnet`), line node positions and velocities, bodies' all
+/// (MoorDyn's `Fnet`), line node positions, velocities and tensions, bodies' all
 /// but accelerations (rods: [`rod_not_computed`]).
 fn not_computed(c: &Channel) -> Option<&'static str> {
     match c {
         Channel::FairleadTension { .. }
         | Channel::AnchorTension { .. }
         | Channel::LineEndTension { .. } => None,
-        Channel::LineNode { quantity, .. } => (!matches!(
-            quantity,
-            LineQuantity::Position(_) | LineQuantity::Velocity(_)
-        ))
-        .then_some(NOT),
+        Channel::LineNode { quantity, .. } => {
+            matches!(quantity, LineQuantity::Force(_)).then_some(NOT)
+        }
         Channel::Point { quantity, .. } => {
             matches!(quantity, PointQuantity::Acceleration(_)).then_some(NOT)
         }

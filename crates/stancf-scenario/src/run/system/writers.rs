@@ -408,10 +408,16 @@ fn channel_value(c: &Channel, row: &SystemRow, rods: &[RodFrame]) -> f64 {
         } => {
             let (model, state) = row.lines[line - 1];
             let o = model.coordinate(node, SLOT_R, 0);
+            let last = model.nodes() - 1;
             match quantity {
                 LineQuantity::Position(a) => state.e[o + axis(a)],
                 LineQuantity::Velocity(a) => state.v[o + axis(a)],
-                _ => f64::NAN,
+                // MoorDyn's: the end's force at an end node, the line's
+                // tension at an inner one.
+                LineQuantity::Tension if node == 0 => end_tension(line, 0),
+                LineQuantity::Tension if node == last => end_tension(line, 1),
+                LineQuantity::Tension => stancf::observe::node_axial_force(model, state, node),
+                LineQuantity::Force(_) => f64::NAN,
             }
         }
         Channel::Point { point, quantity } => {
