@@ -307,3 +307,47 @@ fn a_rod_on_a_body_moves_with_it_and_a_fixed_rod_stays() {
     // The body turned: the checks above saw R at work.
     assert!(turned > 0.1, "the body's pitch reached only {turned} deg");
 }
+
+/// Output channels stancf does not compute (a body rod's own force, a
+/// zero-length rod's roll, a rod's acceleration) are noted, naming their
+/// line, and their columns in channels.csv are left empty (the result
+/// readers' NaN, never a number that is not one), the others written:
+/// the run goes on.
+#[test]
+fn channels_stancf_does_not_compute_are_noted_and_left_empty() {
+    let d = scratch("channels-left-empty");
+    let deck = body_rod_deck("-", "0").replace(
+        "water depth (m)\n",
+        "water depth (m)\n--- OUTPUTS ---\nFairTen1\nRod1FX\nRod2RY\nRod1AX\nRod1PZ\n",
+    );
+    let file = write_scenario(&d, "deck.txt", &deck);
+    let (stdout, _) = text(&stancf(&["check", file.to_str().unwrap()]));
+    for name in ["Rod1FX", "Rod2RY", "Rod1AX"] {
+        let note = format!("output channel {name}: ");
+        assert!(stdout.contains(&note), "{name}: {stdout}");
+    }
+    assert!(
+        stdout.contains("its column in channels.csv is left empty"),
+        "{stdout}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&file, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let text = std::fs::read_to_string(out.join("channels.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("t,FairTen1,Rod1FX,Rod2RY,Rod1AX,Rod1PZ"));
+    let mut rows = 0;
+    for line in lines {
+        let f: Vec<&str> = line.split(',').collect();
+        assert_eq!(f.len(), 6, "{line}");
+        assert!(
+            f[2].is_empty() && f[3].is_empty() && f[4].is_empty(),
+            "{line}"
+        );
+        for k in [0, 1, 5] {
+            assert!(f[k].parse::<f64>().unwrap().is_finite(), "{line}");
+        }
+        rows += 1;
+    }
+    assert!(rows > 0);
+}

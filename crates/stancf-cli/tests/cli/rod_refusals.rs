@@ -16,9 +16,8 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 /// What is not built is refused naming the deck's line: a line with
 /// bending stiffness at a rod end, a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
-/// a rod output channel stancf has no value for (a body rod's forces, a
-/// zero-length rod's all but its position and velocity, accelerations)
-/// or MoorDyn has none for (RZ, nodes), a rod type's value out of the
+/// a rod output channel MoorDyn has none for (RZ) or stancf does not
+/// write (nodes), a rod type's value out of the
 /// solver's range; a deck of rods alone (no lines) is refused saying why.
 #[test]
 fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
@@ -53,12 +52,6 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             "2    conn      Free",
             "rod 2 is free with NumSegs 0".into(),
         ),
-        rod_channel(&base, "Rod1FX", "rod 1 is fixed in body 1: its share of the body's loads \
-            is not separated in this version (the body's net force and moment are Body1FX ... \
-            Body1MZ)"),
-        rod_channel(&base, "Rod2RY", "rod 2 has NumSegs 0, a rod of zero length that stancf \
-            builds as a point: it has a position and a velocity (PX PY PZ VX VY VZ)"),
-        rod_channel(&base, "Rod1AX", "stancf does not compute this value in this version"),
         rod_channel(&base, "Rod1RZ", "MoorDyn has no \"RZ\" of a rod (no rotation about its axis"),
         rod_channel(&base, "R1N2PX", "node-level rod channels are not written"),
         (

@@ -59,7 +59,7 @@ pub(super) fn deck_scenario(
 ) -> Result<SystemScenario, ScenarioError> {
     let g = deck_gravity(deck, file)?;
     let (water, depth_note) = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
-    let channels = deck_channels(deck, file)?;
+    let (channels, channel_notes) = deck_channels(deck);
     let ctx = Ctx { file };
     let raw = RawAnalysis {
         kind: Some("static".into()),
@@ -92,6 +92,7 @@ pub(super) fn deck_scenario(
     // crate::input_scales).
     analysis.time_step = deck.time_step().unwrap_or(0.0);
     notes.extend(step_notes(deck));
+    notes.extend(channel_notes);
     notes.extend(depth_note);
     let names = super::names::Names::of_deck(deck, None).with_rods(&rods, deck.points.len());
     Ok(SystemScenario {
@@ -333,27 +334,29 @@ fn deck_line((l, ends): (&crate::moordyn::DeckLine, super::rods::DeckLineEnds)) 
     }
 }
 
-/// The deck's OUTPUTS as channels; one stancf does not compute is
-/// refused by its line.
-fn deck_channels(deck: &Deck, file: &str) -> Result<Vec<OutputChannel>, ScenarioError> {
+/// The deck's OUTPUTS as channels, and a note for each one stancf does
+/// not compute (its column left empty), naming its line and why.
+fn deck_channels(deck: &Deck) -> (Vec<OutputChannel>, Vec<String>) {
     let mut channels = Vec::with_capacity(deck.outputs.len());
+    let mut notes = Vec::new();
     for o in &deck.outputs {
         let why = match o.channel {
             Channel::Rod { rod, quantity } => rod_not_computed(&deck.rods[rod - 1], quantity),
             _ => not_computed(&o.channel).map(str::to_string),
         };
-        if let Some(why) = why {
-            return Err(ScenarioError(format!(
-                "{file}: line {}: output channel {}: {why}",
+        if let Some(why) = &why {
+            notes.push(format!(
+                "line {}: output channel {}: {why}; its column in channels.csv is left empty",
                 o.line, o.name
-            )));
+            ));
         }
         channels.push(OutputChannel {
             name: o.name.clone(),
             channel: o.channel,
+            computed: why.is_none(),
         });
     }
-    Ok(channels)
+    (channels, notes)
 }
 
 /// What stancf does not compute in this version.

@@ -91,6 +91,9 @@ pub struct OutputChannel {
     /// The name as the deck writes it (MoorDyn's).
     pub name: String,
     pub channel: crate::moordyn::Channel,
+    /// Whether stancf computes it; a channel it does not has its column
+    /// in channels.csv left empty (and a note says why).
+    pub computed: bool,
 }
 
 /// A line of the system.

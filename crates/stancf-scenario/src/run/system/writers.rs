@@ -35,7 +35,7 @@ pub(super) struct SystemWriters {
     tensions: Option<AtomicFile>,
     history: Option<AtomicFile>,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
-    channels: Option<(AtomicFile, Vec<Channel>)>,
+    channels: Option<(AtomicFile, Vec<(Channel, bool)>)>,
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
@@ -131,7 +131,10 @@ impl SystemWriters {
             let mut file = dest.create("channels.csv")?;
             let names: Vec<&str> = channels.iter().map(|c| c.name.as_str()).collect();
             writeln!(file.writer(), "t,{}", names.join(","))?;
-            Some((file, channels.iter().map(|c| c.channel).collect()))
+            Some((
+                file,
+                channels.iter().map(|c| (c.channel, c.computed)).collect(),
+            ))
         };
         Ok(SystemWriters {
             vtk: if with_vtk {
@@ -186,7 +189,12 @@ impl SystemWriters {
         if let Some((file, channels)) = self.channels.as_mut() {
             let w = file.writer();
             write!(w, "{}", Num(t))?;
-            for c in channels.iter() {
+            for (c, computed) in channels.iter() {
+                if !computed {
+                    // Not computed: the column left empty (the note says why).
+                    write!(w, ",")?;
+                    continue;
+                }
                 let v = channel_value(c, row, &self.rods);
                 if !v.is_finite() {
                     return Err(non_finite("output channel", row.t));
