@@ -97,6 +97,68 @@ fn a_spar_heaves_at_its_waterplanes_closed_form_frequency() {
     assert!(worst < 1e-5, "{worst:e}");
 }
 
+/// A spar tilted 0.005 rad about its centre of mass and released pitches
+/// at the closed-form period of a free floating body, its surge free: the
+/// linear equations (M + A) [x; theta]'' + diag(0, C) [x; theta] = 0 about
+/// the centre of mass G give omega^2 = C / (I_G + A_55 - A_15^2 / (m +
+/// A_11)), with the hydrostatic C = rho g V GM (GM = I_wp / V + z_B -
+/// z_G, the naval architect's), I_G the ballast's and the hull's (a solid
+/// cylinder: m (d^2/16 + L^2/12) about its middle), and the wet side's
+/// added mass a = rho Ca pi d^2 / 4 per length: A_11 = a D, A_15 = a int
+/// (z - z_G) dz, A_55 = a int (z - z_G)^2 dz over the draft D (the caps'
+/// added mass acts along the axis, not in surge or pitch). The period
+/// from three zero crossings to 1e-4 of it: the amplitude's shift is of
+/// order theta0^2 = 2.5e-5, the hanging line's 2 g below 1e-6, the step
+/// (T/50, Galerkin of order 6) far below.
+#[test]
+fn a_spar_pitches_at_its_metacentric_closed_form_period() {
+    let m_line = 2e-3;
+    let m = SPAR_MASS;
+    let draft = (m + m_line) / (RHO * SPAR_AREA);
+    let z_g = (40_000.0 * 1.0 + 10_000.0 * 10.0) / m;
+    let i_g = 40_000.0 * (1.0 - z_g).powi(2)
+        + 10_000.0 * (4.0 / 16.0 + 400.0 / 12.0)
+        + 10_000.0 * (10.0 - z_g).powi(2);
+    let volume = m / RHO;
+    let metacentre = (std::f64::consts::PI / 4.0) / volume + draft / 2.0 - z_g;
+    let c55 = RHO * G * volume * metacentre;
+    let a = RHO * SPAR_AREA;
+    let a11 = a * draft;
+    let a15 = a * ((draft - z_g).powi(2) - z_g * z_g) / 2.0;
+    let a55 = a * ((draft - z_g).powi(3) + z_g.powi(3)) / 3.0;
+    let omega = (c55 / (i_g + a55 - a15 * a15 / (m + a11))).sqrt();
+    let want = 2.0 * std::f64::consts::PI / omega;
+    let theta0 = 0.005f64;
+    let (s, c) = theta0.sin_cos();
+    let rotation = [[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]];
+    let centre = [0.0, 0.0, -draft + z_g];
+    let bottom = sub(
+        centre,
+        stancf::body::pose::rotate(&rotation, [0.0, 0.0, z_g]),
+    );
+    let mut body = spar(bottom, 0.0, 1.0);
+    body.rotation = rotation;
+    let (system, states) = spar_system(body);
+    let dt = want / 50.0;
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, states, settings).expect("simulation");
+    let pitch = |sim: &SystemSimulation| {
+        let body = sim.free_body(0).unwrap();
+        let axis = sub(body.point([0.0, 0.0, 20.0]), body.point([0.0; 3]));
+        axis[0].atan2(axis[2])
+    };
+    let period = crate::common::period_from_crossings(&mut sim, dt, pitch, |_| {});
+    eprintln!(
+        "spar pitch: period {period:.6} s against {want:.6} s ({:.1e}); GM {metacentre:.4} m",
+        (period - want).abs() / want
+    );
+    assert!((period - want).abs() < 1e-4 * want, "{period} {want}");
+}
+
 /// A spar a twentieth of the size (1 m long, heaving at 1.8 s) heaving,
 /// pitching and drifting in still water with a drag across its wet
 /// part: its energy less the drag's work is kept to the step's error at
