@@ -4,10 +4,12 @@ out/bodies_check.md; its scratch (the deck copies, both codes' runs) is
 out/bodies_check/.
 
 Run through ./run.sh --bodies-check (it builds stancf and makes the
-virtual environment with MoorDyn 2.7 or later from PyPI). About 25 minutes
-on the 2-core machine, most of it MoorDyn's initial-condition solver on
-BodiesAndRods.dat (10 minutes, its budget) and RodHanging.txt; stancf's
-runs take seconds.
+virtual environment with MoorDyn 2.7 or later from PyPI); `--deck=<part>`
+runs only the decks whose name contains it. About 25 minutes on the
+2-core machine: MoorDyn's initial-condition solvers on BodiesAndRods.dat,
+which settle neither, spend their budgets (400 s of wall time each),
+RodHanging.txt takes a minute, the refinement of example/body.txt four;
+stancf's runs take seconds.
 
 The decks: those of MoorDyn's repository that have bodies or rods
 (tests/Mooring/BodiesAndRods.dat, RodHanging.txt, RodPinnedFloating.txt,
@@ -21,28 +23,35 @@ the scratch; the originals are never edited. For each deck:
 1. `stancf check <deck>`; a refusal (exit 2) is recorded with its reason
    (and, when it names a time-integration option, tScheme or cfl, which
    cannot change an equilibrium, the reason a copy without that option
-   is refused for).
+   is refused for), and whether MoorDyn reads the deck (MoorDyn_Create).
 2. stancf's equilibrium: `stancf run <deck> --out <dir> -q` (a deck alone
-   runs its static equilibrium); tensions.csv, bodies.csv, points.csv and
-   summary.json are read.
-3. MoorDyn's equilibrium: its initial-condition solver (MoorDyn-C 2.7's
-   default, the stationary solver, ICgenDynamic 0) on a copy of the deck
-   with TmaxIC set and threshIC 0 (every other option the deck's, dtIC
-   and CdScaleIC included), through the Python API, the coupled degrees
-   of freedom held where the deck puts them. threshIC 0 because the
-   solver's own test stops it where its error does not change between
-   two checks, which a body falling at a constant acceleration satisfies
-   (bodyDrag.txt stopped there at 2.55 s, the body 10 m from its
-   equilibrium). The solver is run in chunks of pseudo-time, each
-   starting from the state the last saved (fileIC), until the change of
-   every compared number over a chunk, extrapolated geometrically to the
-   end, is below 1e-6 of the tension, 1e-4 m and 1e-3 degrees, or until
-   the deck's budget of pseudo-time or wall time is spent (then it did
-   not settle, and the change it was still making is recorded). Read
-   after Init: each line's end forces (the end nodes' net force,
-   GetLineNodeForce, what MoorDyn's L<n>TA/TB channels write and what a
-   point receives), bodies (GetBodyPos, GetBodyAngle, GetBodyForce), rods
-   (GetRodNodePos of their end nodes), free points (GetPointPos).
+   runs its static equilibrium); tensions.csv, bodies.csv, points.csv,
+   stiffness.csv and summary.json are read.
+3. MoorDyn's equilibrium: its initial-condition solver, the one the deck
+   names (MoorDyn-C 2.7's default is the stationary solver, ICgenDynamic
+   0), on a copy of the deck with TmaxIC set and threshIC 0 (every other
+   option the deck's: dtM, dtIC, CdScaleIC), through the Python API, the
+   coupled degrees of freedom held where the deck puts them. threshIC 0
+   because the solver's own test stops it where its error does not change
+   between two checks, which a body falling at a constant acceleration
+   satisfies (bodyDrag.txt stopped there at 2.55 s, the body 10 m from its
+   equilibrium). The solver is run in chunks of pseudo-time (500 s; 100 s
+   of the dynamic relaxation), each from the state the last one saved
+   (fileIC), until it settles: the change of every compared number over a
+   chunk, extrapolated geometrically, below 1e-6 of the tension, 1e-4 m
+   and 1e-3 degrees, and the largest net force left on a line's inner
+   node, a free point, body or rod below 1e-4 of the largest line end
+   tension. Where it stalls (the change below those limits, the force
+   not) or spends its budget (40000 s of pseudo-time, 400 s of wall time)
+   the other solver runs too (the legacy dynamic relaxation,
+   ICgenDynamic 1, with the deck's CdScaleIC); what each reached is
+   recorded, and the comparison takes the one that settled (or the one
+   with the smaller force left, marked as not settled). Read after Init:
+   each line's end forces (the end nodes' net force, GetLineNodeForce,
+   what MoorDyn's L<n>TA/TB channels write and what a point receives; not
+   GetLineFairTen, the tension of the segment next to the end), bodies
+   (GetBodyPos, GetBodyAngle, GetBodyForce), rods (GetRodNodePos of their
+   end nodes), free points (GetPointPos).
 4. The comparison: each line end's tension (relative difference to the
    larger of the two), each free body's reference point (m) and
    orientation (the angle of the rotation between the two, degrees), each
@@ -89,7 +98,7 @@ DECKS = [
     ("riser/riser_ic2.txt", "tests/Mooring/riser/riser_ic2.txt"),
     ("rotations/nwu.txt", "tests/Mooring/rotations/nwu.txt"),
     ("local_euler/complex_system.txt", "tests/Mooring/local_euler/complex_system.txt"),
-    ("bench floating_rods.txt", "bench/Mooring/floating_rods.txt"),
+    ("bench/Mooring/floating_rods.txt", "bench/Mooring/floating_rods.txt"),
     ("example/body.txt", "example/body.txt"),
 ]
 
@@ -97,7 +106,7 @@ DECKS = [
 # pseudo-time, wall budget (s) per deck. The stationary solver's step is
 # bounded by the deck's dtM (kept), so a deck with a small dtM and a heavy
 # body (BodiesAndRods: dtM 5e-4, 1e6 kg) moves slowly.
-MD_CHUNK, MD_MAX_TIME, MD_WALL = 500.0, 40000.0, 600.0
+MD_CHUNK, MD_MAX_TIME, MD_WALL = 500.0, 40000.0, 400.0
 # Settled: the change over a chunk, extrapolated, below these.
 SETTLE_TENSION, SETTLE_POSITION, SETTLE_ANGLE = 1e-6, 1e-4, 1e-3
 # A difference worth explaining.
@@ -206,10 +215,11 @@ def with_rows_replaced(text, section, change):
 
 def refined(text, factor):
     """The deck with every line's NumSegs times `factor`."""
-    def change(f):
+    def times(f):
+        """A LINES row with its NumSegs times `factor`."""
         f[5] = str(int(f[5]) * factor)
         return f
-    return with_rows_replaced(text, "LINES", change)
+    return with_rows_replaced(text, "LINES", times)
 
 
 def word(attachment):
@@ -280,13 +290,13 @@ def contents(text):
         parts.append("bodies: " + count(bodies))
     if rods:
         parts.append("rods: " + count(["%s (N %s)" % r for r in rods]))
-    parts.append("%d lines" % len(lines))
+    parts.append("%d line%s" % (len(lines), "" if len(lines) == 1 else "s"))
     free = points.count("free")
     cpl = points.count("coupled")
     if free:
-        parts.append("%d free points" % free)
+        parts.append("%d free point%s" % (free, "" if free == 1 else "s"))
     if cpl:
-        parts.append("%d coupled points" % cpl)
+        parts.append("%d coupled point%s" % (cpl, "" if cpl == 1 else "s"))
     return "; ".join(parts)
 
 
@@ -364,6 +374,25 @@ def refusal_chain(text, folder, reason):
     if rc == 0:
         return "a copy without tScheme and cfl is accepted"
     return "without tScheme and cfl: " + again
+
+
+def moordyn_reads(deck):
+    """Whether MoorDyn reads a deck (MoorDyn_Create, in a process of its
+    own): "" where it does, else its error line."""
+    p = subprocess.run([sys.executable, "-c", "import moordyn, sys; moordyn.Create(sys.argv[1])",
+                        os.path.basename(deck)], capture_output=True, text=True,
+                       cwd=os.path.dirname(deck))
+    if p.returncode == 0:
+        return ""
+    lines = [l.strip() for l in (p.stdout + p.stderr).splitlines() if l.strip()]
+    for k, line in enumerate(lines):
+        if line.startswith("ERR"):
+            # "ERR <source>: Error in <deck> at line <n>:", the row quoted,
+            # the reason.
+            at = re.search(r"at line (\d+)", line)
+            why = next((l for l in lines[k + 1:] if not l.startswith("'")), "")
+            return ("line %s: " % at.group(1) if at else "") + why
+    return "MoorDyn_Create failed"
 
 
 def read_csv(path):
@@ -752,6 +781,7 @@ def study_body_drag(folder, text, st, md):
     z_closed = za - length - (wb * length + w * length * length / 2) / ea
     below = with_rows_replaced(text, "BODIES",
                                lambda f: f[:4] + ["%r" % (za - 5.0)] + f[5:])
+    os.makedirs(folder, exist_ok=True)
     path = os.path.join(folder, "bodyDrag_below.txt")
     with open(path, "w") as f:
         f.write(below)
@@ -768,35 +798,89 @@ def study_body_drag(folder, text, st, md):
                 k_stancf=k_st, k_stancf_below=k_again,
                 shortening=float(m_short.group(1)) if m_short else None,
                 compression=float(m_short.group(2)) if m_short else None,
-                top=za - 5.0)
+                top=za - 5.0, w=w, gap=float(body[4]) - za)
 
 
 def study_bodies_and_rods(folder, text):
-    """BodiesAndRods.dat, which stancf does not solve: its copies without
-    rod 2 (the rod pinned to the body, no line on it: stancf's documented
-    limitation) and without rod 2 and the buoyant cable (lines 4 to 6 and
-    points 7 to 10), each run by stancf. Returns {variant: stancf_run
-    result} and the last copy's text (compared with MoorDyn by main)."""
-    no_pin = with_rows_replaced(text, "RODS",
-                                lambda f: None if rod_kind(f) == "pinned to a body" else f)
-    no_cable = with_rows_replaced(no_pin, "LINES", lambda f: None if int(f[0]) >= 4 else f)
-    no_cable = with_rows_replaced(no_cable, "POINTS", lambda f: None if int(f[0]) >= 7 else f)
-    out = {}
-    for name, t in (("without rod 2", no_pin), ("without rod 2 and lines 4-6", no_cable)):
-        path = os.path.join(folder, name.replace(" ", "_") + ".txt")
+    """BodiesAndRods.dat, which stancf does not solve, taken apart:
+    (1) a copy without rod 2 (pinned to the body, no line on it: the
+    limitation docs/interface.md documents); (2) without rod 2 and the
+    buoyant cable (lines 4 to 6, points 7 to 10): the body floating on
+    rod 1, against the closed form of its heave (rod 1's wet length h
+    from rho g A h = (body + rod) g - the lines' vertical force on the
+    body); (3) the buoyant cable alone, the body fixed where (2) floats
+    it, line 4 (the deck's 200 m) shortened, and (4) at 200 m in 96
+    elements instead of 12. Returns a dict of the runs and numbers."""
+    os.makedirs(folder, exist_ok=True)
+
+    def run(name, t):
+        """stancf's equilibrium of the copy `t`, written as <name>.txt."""
+        path = os.path.join(folder, name + ".txt")
         with open(path, "w") as f:
             f.write(t)
-        out[name] = (stancf_run(path, os.path.join(folder, "stancf " + name)), t, path)
+        return stancf_run(path, os.path.join(folder, "stancf_" + name))
+
+    out = {}
+    no_pin = with_rows_replaced(text, "RODS",
+                                lambda f: None if rod_kind(f) == "pinned to a body" else f)
+    out["no_rod2"] = run("without_rod2", no_pin)
+    spar = with_rows_replaced(no_pin, "LINES", lambda f: None if int(f[0]) >= 4 else f)
+    spar = with_rows_replaced(spar, "POINTS", lambda f: None if int(f[0]) >= 7 else f)
+    out["spar"] = sp = run("without_rod2_and_lines_4_to_6", spar)
+    opts = options(text)
+    g, rho = float(opts.get("g", 9.80665)), float(opts.get("WtrDnsty", 1025.0))
+    body = [f for _, f in table_rows(text, "BODIES")][0]
+    rod = [f for _, f in table_rows(no_pin, "RODS")][0]
+    rtype = {f[0]: f for _, f in table_rows(text, "ROD TYPES")}[rod[1]]
+    d, w = float(rtype[1]), float(rtype[2])
+    length = abs(float(rod[8]) - float(rod[5]))
+    area = math.pi * d * d / 4
+    if sp["rc"] == 0:
+        fz = sp["bodies"][1]["fz"]
+        h = ((float(body[8]) + w * length) * g - fz) / (rho * g * area)
+        out["spar_closed"] = -float(rod[5]) - h
+        out["spar_z"] = sp["bodies"][1]["z"]
+        out["spar_fz"] = fz
+    z_body = out.get("spar_z", -14.586)
+
+    def cable(length4):
+        """The buoyant cable alone: the body fixed at z_body, lines 4-6
+        renumbered 1-3, line 4 `length4` m."""
+        t = with_rows_replaced(no_pin, "BODIES", lambda f: f[:1] + ["Fixed"] + f[2:4]
+                               + ["%r" % z_body] + f[5:])
+        t = with_rows_replaced(t, "LINES", lambda f: None if int(f[0]) <= 3 else
+                               [str(int(f[0]) - 3)] + f[1:4]
+                               + ([repr(length4)] if int(f[0]) == 4 else [f[4]]) + f[5:])
+        return t
+
+    out["cable"] = []
+    for length4 in (150.0, 170.0, 180.0, 190.0, 195.0, 200.0):
+        r = run("cable_%g" % length4, cable(length4))
+        h = r["points"][7]["fx"] if r["rc"] == 0 else None
+        out["cable"].append((length4, r, h))
+    path = os.path.join(folder, "cable_200.txt")
+    sc = os.path.join(folder, "cable_200_96.toml")
+    with open(sc, "w") as f:
+        f.write('title = "the cable, line 4 in 96 elements"\n[system]\nmoordyn = "%s"\n'
+                '[analysis]\ntype = "static"\n[[mesh]]\nlines = [1]\nelements = 96\n'
+                % os.path.basename(path))
+    out["cable_96"] = c96 = stancf_run(sc, os.path.join(folder, "stancf_cable_200_96"))
+    if c96["rc"] == 0:
+        # Line 1's stretch |r_x| - 1 at its nodes: where it goes negative
+        # (the compression the warning names) and the touchdown (the first
+        # node from the anchor more than 1 cm above the bed).
+        nodes = read_csv(os.path.join(folder, "stancf_cable_200_96", "lines", "1", "nodes.csv"))
+        bed = -float(opts["WtrDpth"])
+        stretch = [(math.sqrt(n["dx_ds"] ** 2 + n["dy_ds"] ** 2 + n["dz_ds"] ** 2) - 1.0,
+                    n["x"], n["z"]) for n in nodes]
+        lo = min(stretch)
+        hi = max(stretch)
+        touch = next(n for n in nodes if n["z"] > bed + 0.01)
+        out["cable_96_stretch"] = dict(low=lo[0], low_x=lo[1], high=hi[0], high_x=hi[1],
+                                       touchdown_x=touch["x"])
+    cab = [f for _, f in table_rows(text, "LINE TYPES") if f[0] == "cable"][0]
+    out["cable_w"] = (float(cab[2]) - rho * math.pi * float(cab[1]) ** 2 / 4) * g
     return out
-
-
-SCENARIO = """title = "{title}"
-[system]
-moordyn = "{deck}"
-[[mesh]]
-lines = {lines}
-elements = {elements}
-"""
 
 
 def study_refinement(folder, text, factors=(1, 2, 4, 8)):
@@ -849,16 +933,21 @@ def check_deck(name, path):
     res["check"] = (rc, reason, refusal_chain(text, folder, reason) if rc == 2 else "")
     print("%-32s check exit %d %s" % (name, rc, reason[:100]), flush=True)
     if rc != 0:
+        res["moordyn_reads"] = moordyn_reads(deck)
         return res
     st = stancf_run(deck, os.path.join(folder, "stancf"))
     res["stancf"] = st
     print("%-32s stancf run exit %d in %.2f s %s" % (name, st["rc"], st["wall"], st["error"][:120]),
           flush=True)
-    md = moordyn_equilibrium(text, os.path.join(folder, "moordyn"))
-    res["moordyn"] = md
-    print("%-32s MoorDyn %s after %g s of pseudo-time (%.0f s): last change %s" % (
-        name, "settled" if md["settled"] else "NOT settled", md.get("time", 0), md.get("wall", 0),
-        md.get("change")), flush=True)
+    md, runs = moordyn_settle(text, os.path.join(folder, "moordyn"))
+    res["moordyn"], res["moordyn_runs"] = md, runs
+    for r in runs:
+        print("%-32s MoorDyn %s: %s after %g s (%.0f s wall), last change %s, residual %.3g of "
+              "%.3g N %s" % (name, r["solver"], "settled" if r["settled"] else "stalled"
+                             if r["stalled"] else "NOT settled", r["time"], r["wall"],
+                             r.get("change"), r.get("snapshot", {}).get("residual", math.nan),
+                             r.get("snapshot", {}).get("scale", math.nan), r["failed"]),
+              flush=True)
     if st["rc"] == 0 and "snapshot" in md:
         st["objects"] = stancf_objects(st, text)
         res["rows"] = compare(st, dict(tensions=md["snapshot"]["tensions"],
@@ -869,29 +958,55 @@ def check_deck(name, path):
 def largest(rows, unit, quantity=None):
     """The row with the largest difference in `unit` (and quantity
     containing `quantity`), or None."""
-    pick = [r for r in rows if r["unit"] == unit and (quantity is None or quantity in r["quantity"])]
+    pick = [r for r in rows
+            if r["unit"] == unit and (quantity is None or quantity in r["quantity"])]
     return max(pick, key=lambda r: r["difference"]) if pick else None
+
+
+def run_text(r):
+    """One MoorDyn initial-condition run in words."""
+    if r["failed"] and "snapshot" not in r:
+        return "%s: %s" % (r["solver"], r["failed"])
+    snap = r["snapshot"]
+    chunk = MD_CHUNK if r["solver"] == "stationary" else MD_CHUNK / 5
+    c = r.get("change", (math.nan,) * 3)
+    if r["settled"]:
+        return "%s: settled after %g s (%.0f s wall; residual %.2g N)" % (
+            r["solver"], r["time"], r["wall"], snap["residual"])
+    how = "stalled" if r["stalled"] else "not settled"
+    text = ("%s: %s after %g s (%.0f s wall): residual %.3g N (largest tension %.4g N), over "
+            "its last %g s the tensions changed by %.2g, positions by %.2g m, angles by %.2g "
+            "deg" % (r["solver"], how, r["time"], r["wall"], snap["residual"], snap["scale"],
+                     chunk, c[0], c[1], c[2]))
+    for key, v in sorted(snap["objects"].items(), key=str):
+        if key[0] == "body":
+            text += "; body %d at %s m, roll, pitch, yaw %s deg" % (
+                key[1], fmt_vec(v[0], 3), fmt_vec(angles(v[1]), 3))
+    if r["error"]:
+        text += "; its own error %s" % r["error"]
+    if r["failed"]:
+        text += "; then %s" % r["failed"]
+    return text
 
 
 def status_text(res):
     """The deck's stancf and MoorDyn columns of the summary table."""
     rc, reason, then = res["check"]
     if rc == 2:
-        return "refused: " + reason + (" (%s)" % then if then else ""), "not run"
-    st, md = res["stancf"], res["moordyn"]
+        m = res.get("moordyn_reads", "")
+        return ("refused: " + reason + (" (%s)" % then if then else ""),
+                "not run (MoorDyn refuses it too: %s)" % m if m else "not run (MoorDyn reads it)")
+    st = res["stancf"]
     s = ("equilibrium in %.2f s" % st["wall"]) if st["rc"] == 0 else \
         "exit %d: %s" % (st["rc"], st["error"].split(": ", 2)[-1].split(";")[0])
-    if md.get("failed"):
-        m = md["failed"]
-    elif md["settled"]:
-        m = "settled in %g s of pseudo-time" % md["time"]
-    else:
-        c = md.get("change", (math.nan,) * 3)
-        m = ("not settled after %g s of pseudo-time (%.0f s): over its last %g s the tensions "
-             "still changed by %.2g, the positions by %.2g m, the angles by %.2g deg; solver "
-             "error %.3g m/s^2" % (md["time"], md["wall"], MD_CHUNK, c[0], c[1], c[2],
-                                   md.get("error") or math.nan))
-    return s, m
+    if st["rc"] == 0:
+        for w in st["warnings"]:
+            m = re.search(r"\(id (\d+)\): its static equilibrium shortens it by up to ([\d.eE+-]+) "
+                          r"\(a compression of ([\d.eE+-]+) N", w)
+            if m:
+                s += " (warning: line %s left shortened by up to %.3g, a compression of %.4g N)" \
+                    % (m.group(1), float(m.group(2)), float(m.group(3)))
+    return s, "; ".join(run_text(r) for r in res["moordyn_runs"])
 
 
 def tension_text(res):
@@ -939,16 +1054,17 @@ def write_csv(results, path):
                 s, m = status_text(res)
                 w.writerow([res["name"], "stancf: " + s, "MoorDyn: " + m, "", "", "", ""])
             for r in res["rows"]:
+                a, b = r["stancf"], r["moordyn"]
                 w.writerow([res["name"], r["object"], r["quantity"],
-                            "%.10g" % r["stancf"] if isinstance(r["stancf"], float) else r["stancf"],
-                            "%.10g" % r["moordyn"] if isinstance(r["moordyn"], float)
-                            else r["moordyn"], "%.4g" % r["difference"], r["unit"]])
+                            "%.10g" % a if isinstance(a, float) else a,
+                            "%.10g" % b if isinstance(b, float) else b,
+                            "%.4g" % r["difference"], r["unit"]])
 
 
 def summary_table(results):
     """The markdown summary table, one row per deck."""
-    lines = ["| deck | what it has | stancf | MoorDyn 2.7 (stationary IC solver) | largest line "
-             "end tension, stancf / MoorDyn | bodies and rods, stancf / MoorDyn | largest "
+    lines = ["| deck | what it has | stancf | MoorDyn 2.7 (initial-condition solvers) | largest "
+             "line end tension, stancf / MoorDyn | bodies and rods, stancf / MoorDyn | largest "
              "differences |", "|---|---|---|---|---|---|---|"]
     for res in results:
         s, m = status_text(res)
@@ -971,6 +1087,8 @@ def detail_table(res):
 
 
 def main():
+    """Every deck (or those whose name contains a --deck=<part>), compared
+    and explained; out/bodies_check.csv and out/bodies_check.md."""
     os.makedirs(WORK, exist_ok=True)
     t_start = time.perf_counter()
     only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--deck=")]
@@ -987,13 +1105,13 @@ def main():
     studies = []
     bd = by_name.get("body_tests/bodyDrag.txt")
     if bd and bd["rows"]:
-        studies += body_drag_text(bd)
+        studies += [""] + body_drag_text(bd)
     bar = by_name.get("BodiesAndRods.dat")
     if bar and bar.get("stancf"):
-        studies += bodies_and_rods_text(bar)
+        studies += [""] + bodies_and_rods_text(bar)
     body = by_name.get("example/body.txt")
     if body and body["rows"]:
-        studies += refinement_text(body)
+        studies += [""] + refinement_text(body)
     md += [""] + studies
     md += ["", "Total time %.0f s." % (time.perf_counter() - t_start)]
     write_csv(results, os.path.join(OUT, "bodies_check.csv"))
@@ -1018,3 +1136,124 @@ def moordyn_version():
         return version("moordyn")
     except Exception:  # noqa: BLE001
         return "?"
+
+
+# --------------------------------------------------------------------------
+# The studies' paragraphs
+
+
+def body_drag_text(res):
+    """The paragraph of bodyDrag.txt's difference (study_body_drag)."""
+    st = res["stancf"]
+    md = res["moordyn"]["snapshot"]
+    b = study_body_drag(os.path.join(res["folder"], "study"), res["text"], st, md)
+    dz = abs(b["z_stancf"] - b["z_moordyn"])
+    return [
+        "### bodyDrag.txt: the body %.2f m apart (the tensions equal)" % dz, "",
+        "The deck holds a 10 kg body (no volume) by a 4.5 m line (EA 500 N, one segment, "
+        "no compression, as every deck line) to a fixed point %.4g m below it. A line "
+        "without compression cannot hold the body above its point: MoorDyn's body falls past "
+        "it and hangs below, at z = %.7f m; the closed form of a body hanging on the line "
+        "(its tension W_b + w s from the body, w = %.4g N/m wet, its stretch the integral of "
+        "T/EA) is %.7f m. stancf's static solve keeps the line's compressive stiffness on its "
+        "first path (docs/method.md §11.6) and ends with the body resting on the line pushed "
+        "together, z = %.7f m (the line shortened by up to %s, a compression of %s N); its "
+        "second path, with the line's own law, has no equilibrium near it (the body would "
+        "fall through), so the first stays, with a warning, and `stancf run` exits 0. That "
+        "equilibrium is unstable: its horizontal stiffness (stiffness.csv, fx by dx) is "
+        "%.4g N/m. The end tensions are the same at both (98.1 N at the body, 184.17 N at "
+        "the point: the same weights hang on the line, pushing in one, pulling in the "
+        "other). Started from a copy with the body at z = %.4g m (below the point), stancf "
+        "finds z = %.7f m (%.2g m from the closed form, stiffness %+.4g N/m)." % (
+            b["gap"], b["z_moordyn"], b["w"], b["z_closed"], b["z_stancf"],
+            "%.3g" % b["shortening"] if b["shortening"] is not None else "?",
+            "%.4g" % b["compression"] if b["compression"] is not None else "?",
+            b["k_stancf"], b["top"], b["z_stancf_below"],
+            abs(b["z_stancf_below"] - b["z_closed"]), b["k_stancf_below"])]
+
+
+def bodies_and_rods_text(res):
+    """The paragraph of BodiesAndRods.dat (study_bodies_and_rods)."""
+    s = study_bodies_and_rods(os.path.join(res["folder"], "study"), res["text"])
+    nr = s["no_rod2"]
+    m = re.search(r"load factor ([\d.]+) \(increment \d+, \d+ iterations, scaled residual "
+                  r"([\d.eE+-]+)\)", nr["error"])
+    first = re.search(r"load factor ([\d.]+) \(increment \d+, \d+ iterations, scaled residual "
+                      r"([\d.eE+-]+)\)", res["stancf"]["error"])
+    lines = ["### BodiesAndRods.dat: stancf does not solve it, MoorDyn does not settle it", ""]
+    text = ("stancf exits 3 (Newton does not converge at load factor %s, scaled residual %s). "
+            "The deck's rod 2 is pinned to the free body (Body1Pinned) with no line on it: the "
+            "static solve of such a rod does not converge in this version (docs/interface.md, "
+            "\"Known limitation\"). " % (first.group(1) if first else "?",
+                                         first.group(2) if first else "?"))
+    if nr["rc"] == 0:
+        text += "A copy without rod 2 is solved. "
+    else:
+        text += ("A copy without rod 2 gets to load factor %s and stops there (scaled residual "
+                 "%s against the tolerance 1e-10). " % (m.group(1) if m else "?",
+                                                        m.group(2) if m else "?"))
+    if s["spar"]["rc"] == 0:
+        text += ("Without rod 2 and the buoyant cable (lines 4 to 6, points 7 to 10) it is: the "
+                 "body floats on rod 1 at z = %.6f m, the closed form of its heave (rod 1's wet "
+                 "length from rho g A h = (body + rod) g + the lines' pull %.1f N) %.6f m. "
+                 % (s["spar_z"], -s["spar_fz"], s["spar_closed"]))
+    ok = [(L, h) for L, r, h in s["cable"] if r["rc"] == 0]
+    bad = [L for L, r, h in s["cable"] if r["rc"] != 0]
+    text += ("The cable alone (the body fixed where it floats) fails as the whole does, and "
+             "converges when its line 4 is shorter: the anchor's horizontal pull H falls as "
+             "line 4 lengthens, %s, and the solve stops at %s m (the deck's is 200 m). " % (
+                 ", ".join("%.0f N at %g m" % (h, L) for L, h in ok),
+                 " and ".join("%g" % L for L in bad)))
+    c96 = s["cable_96"]
+    if c96["rc"] == 0:
+        comp = [re.search(r"shortens it by up to ([\d.eE+-]+) \(a compression of ([\d.eE+-]+) N",
+                          w) for w in c96["warnings"]]
+        comp = [(float(x.group(1)), float(x.group(2))) for x in comp if x]
+        h96 = c96["points"][7]["fx"]
+        text += ("With line 4 at 200 m in 96 elements instead of 12 stancf solves it: H = %.0f "
+                 "N, H/w = %.2f m (w = %.1f N/m wet), a touchdown the elements (%.2f m) hardly "
+                 "follow, and the solve keeps compressions of up to %.4g N (line 4 shortened by "
+                 "%.3g) where the anchor pulls %.0f N. They are at the touchdown (it leaves the "
+                 "bed at x = %.1f m), where line 4's stretch at its nodes, |r_x| - 1, alternates "
+                 "in sign (%.2g at x = %.1f m, %.2g at x = %.1f m): the locking docs/method.md "
+                 "§11.6 describes at a touchdown the elements do not follow."
+                 % (h96, h96 / s["cable_w"], s["cable_w"], 200.0 / 96,
+                    max(c[1] for c in comp) if comp else float("nan"),
+                    max(c[0] for c in comp) if comp else float("nan"),
+                    math.hypot(h96, c96["points"][7]["fz"]),
+                    s["cable_96_stretch"]["touchdown_x"], s["cable_96_stretch"]["low"],
+                    s["cable_96_stretch"]["low_x"], s["cable_96_stretch"]["high"],
+                    s["cable_96_stretch"]["high_x"]))
+    else:
+        text += "At 200 m in 96 elements it still fails (%s)." % c96["error"][:120]
+    lines.append(text)
+    lines += ["", "MoorDyn: " + "; ".join(run_text(r) for r in res["moordyn_runs"]) + "."]
+    return lines
+
+
+def refinement_text(res):
+    """The table of both codes refined on example/body.txt
+    (study_refinement)."""
+    rows = study_refinement(os.path.join(res["folder"], "refinement"), res["text"])
+    out = ["### example/body.txt refined: both codes converge to one line", "",
+           "Line 1's end tensions (its anchor A on the bed, its fairlead B on the coupled "
+           "body) and its anchor's vertical force, the deck's NumSegs (20) times the factor: "
+           "stancf's SAC-2 elements ([[mesh]]), MoorDyn's segments.", "",
+           "| factor | stancf A (N) | MoorDyn A (N) | stancf B (N) | MoorDyn B (N) | B: "
+           "difference | anchor's vertical force, stancf / MoorDyn (N) | MoorDyn settled |",
+           "|---|---|---|---|---|---|---|---|"]
+    for k, st, md in rows:
+        if st["rc"] != 0 or "snapshot" not in md:
+            out.append("| %d | %s | | | | | | %s |" % (k, st["error"][:60], md["failed"]))
+            continue
+        ta, tb = st["tensions"][(1, "A")], st["tensions"][(1, "B")]
+        ma, mb = md["snapshot"]["tensions"][(1, "A")], md["snapshot"]["tensions"][(1, "B")]
+        diff = 100 * abs(tb[1] - mb[1]) / max(tb[1], mb[1])
+        out.append("| %d | %.1f | %.1f | %.1f | %.1f | %.3g %% | %.0f / %.0f | %s after %g s "
+                   "|" % (k, ta[1], ma[1], tb[1], mb[1], diff, ta[0][2], ma[0][2],
+                          "yes" if md["settled"] else "no", md["time"]))
+    return out
+
+
+if __name__ == "__main__":
+    main()

@@ -7,7 +7,9 @@
 # to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
 # coupling_check.py instead (why MoorDyn is driven at its own step);
 # `--added-mass-check` runs added_mass_check.py (why the steep wave is
-# raced without added mass);
+# raced without added mass); `--bodies-check` runs bodies_check.py
+# (MoorDyn's own body and rod decks: both codes' static equilibria,
+# out/bodies_check.{csv,md}, about 25 minutes);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -22,8 +24,20 @@ cd "$here"
 if [ "${1:-}" = "--added-mass-check" ]; then
   exec env PYTHONWARNINGS=ignore "$venv/bin/python" added_mass_check.py
 fi
+if [ "${1:-}" = "--bodies-check" ]; then
+  shift
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" bodies_check.py "$@"
+fi
 if [ "${1:-}" = "--coupling-check" ]; then
   "$venv/bin/python" -c "import scipy" 2>/dev/null || "$venv/bin/pip" install --quiet scipy
   exec "$venv/bin/python" coupling_check.py
+fi
+if [ "${1:-}" = "--coupled-body-check" ]; then
+  # coupled_body_check.py: the OC4 body through libstancf_c against MoorDyn
+  # (out/coupled_body/coupled_body_check.md, about 20 minutes)
+  shift
+  (cd "$root" && cargo build --release -p stancf-capi)
+  "$venv/bin/python" -c "import scipy" 2>/dev/null || "$venv/bin/pip" install --quiet scipy
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" coupled_body_check.py "$@"
 fi
 PYTHONWARNINGS=ignore "$venv/bin/python" race.py "$@"
