@@ -5,11 +5,11 @@ out/bodies_check/.
 
 Run through ./run.sh --bodies-check (it builds stancf and makes the
 virtual environment with MoorDyn 2.7 or later from PyPI); `--deck=<part>`
-runs only the decks whose name contains it. About 25 minutes on the
-2-core machine: MoorDyn's initial-condition solvers on BodiesAndRods.dat,
-which settle neither, spend their budgets (400 s of wall time each),
-RodHanging.txt takes a minute, the refinement of example/body.txt four;
-stancf's runs take seconds.
+runs only the decks whose name contains it. About 20 minutes on the
+2-core machine (1179 s on 2026-11-27): MoorDyn's initial-condition
+solvers on BodiesAndRods.dat, which settle neither, spend their budgets
+(400 s of wall time each), RodHanging.txt takes a minute, the refinement
+of example/body.txt four; stancf's runs take seconds.
 
 The decks: those of MoorDyn's repository that have bodies or rods
 (tests/Mooring/BodiesAndRods.dat, RodHanging.txt, RodPinnedFloating.txt,

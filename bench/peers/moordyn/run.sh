@@ -9,7 +9,7 @@
 # `--added-mass-check` runs added_mass_check.py (why the steep wave is
 # raced without added mass); `--bodies-check` runs bodies_check.py
 # (MoorDyn's own body and rod decks: both codes' static equilibria,
-# out/bodies_check.{csv,md}, about 25 minutes);
+# out/bodies_check.{csv,md}, about 20 minutes);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
