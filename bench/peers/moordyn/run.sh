@@ -7,7 +7,8 @@
 # to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
 # coupling_check.py instead (why MoorDyn is driven at its own step);
 # `--added-mass-check` runs added_mass_check.py (why the steep wave is
-# raced without added mass); `--bodies-check` runs bodies_check.py
+# raced without added mass); `--bodies-check` runs bodies_check.py (with its
+# modules bodies_common, bodies_decks, bodies_codes, bodies_studies)
 # (MoorDyn's own body and rod decks: both codes' static equilibria,
 # out/bodies_check.{csv,md}, about 20 minutes);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
