@@ -406,9 +406,8 @@ fn the_p2_scheme_with_a_free_body_is_refused_naming_the_key() {
 
 /// `[[bodies]]` values that are wrong are refused naming the key: a
 /// negative mass, an unknown type, moments no body has, a fixed body
-/// with a mass, a point on a body that does not exist, a body's drag in
-/// waves, its volume in air; and bodies.csv chosen for a system without
-/// bodies.
+/// with a mass, a point on a body that does not exist, its volume in
+/// air; and bodies.csv chosen for a system without bodies.
 #[test]
 fn bad_body_values_are_refused_naming_the_key() {
     let statics = "type = \"static\"";
@@ -438,18 +437,6 @@ fn bad_body_values_are_refused_naming_the_key() {
             "missing-body",
             buoy.replacen("body = 1", "body = 7", 1),
             vec!["points[0].body", "body 7 is not defined"],
-        ),
-        (
-            "drag-in-waves",
-            moored_buoy(
-                "cda = [1.0, 1.0, 1.0]",
-                "type = \"dynamic\"\ntime_step = 0.05\nduration = 1.0",
-            )
-            .replace(
-                "density = 1025.0\n",
-                "density = 1025.0\n[[water.waves]]\namplitude = 1.0\nperiod = 8.0\n",
-            ),
-            vec!["bodies[0].cda, water.waves", "drag in waves"],
         ),
         (
             "volume-in-air",

@@ -207,8 +207,8 @@ fn a_deck_without_wtrdpth_takes_moordyns_depth_of_its_deepest_point() {
 
 /// A rope (2 kg/m, 20 mm: 1.678 kg/m wet) hanging 10 m in 5 segments from
 /// a fixed point with a 50 kg clump at its foot: MoorDyn's node tension
-/// channels `L1N<k>T` are its tension there, the weight below, T_k = (50
-/// + 1.678 s_k) g with s_k = 2k m from the foot (exact at the nodes: the
+/// channels `L1N<k>T` are its tension there, the weight below, T_k =
+/// (50 + 1.678 s_k) g with s_k = 2k m from the foot (exact at the nodes: the
 /// strain, linear in s, is within the elements' cubic), the top node's
 /// the end's force; to 1e-8 of the weight (the static tolerance).
 #[test]

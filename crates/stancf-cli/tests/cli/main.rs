@@ -8,6 +8,7 @@ mod common;
 mod axial_damping;
 mod bad_input;
 mod bodies;
+mod bodies_in_waves;
 mod clamped_lines;
 mod compression;
 mod coupled_bodies;

@@ -105,8 +105,6 @@ pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, Scenari
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
         let sc = moordyn::deck_scenario(&deck, file, path, title, None)?;
-        body_water::check_body_water(file, &sc)?;
-        rods::check_rod_water(file, &sc)?;
         return Ok(Input::System(sc));
     }
     let ctx = Ctx { file };

@@ -342,45 +342,6 @@ pub(super) fn joint_host(sc: &SystemScenario, b: usize) -> Option<(usize, [f64; 
     })
 }
 
-/// Refuses a moving rod's water this version does not build, as for a
-/// body ([`super::body_water::check_body_water`]): drag or added mass in
-/// a current that varies with depth or that a ramp starts, drag in waves
-/// in a dynamic analysis. The rod's water sees a steady uniform current.
-pub(super) fn check_rod_water(file: &str, sc: &SystemScenario) -> Result<(), ScenarioError> {
-    let Some(w) = &sc.water else { return Ok(()) };
-    let dynamic = sc.analysis.kind == super::AnalysisKind::Dynamic;
-    let waves = !w.waves.is_empty() || w.jonswap.is_some();
-    for (k, r) in sc.rods.iter().enumerate() {
-        let Some(rod) = r.rod.as_ref().filter(|_| r.moves(&sc.bodies)) else {
-            continue;
-        };
-        let drag = rod.drag_coefficient != 0.0 || rod.end_drag_coefficient != 0.0;
-        let added = rod.added_mass_coefficient != 0.0 || rod.end_added_mass_coefficient != 0.0;
-        let why = match &w.current {
-            Some(_) if (drag || added) && super::bodies::uniform_current(w).is_none() => Some(
-                "has drag or added mass in a current that varies with depth: a rod's water in \
-                 waves or a sheared current is not built (a uniform current is)",
-            ),
-            Some(c) if (drag || added) && c.ramp > 0.0 => Some(
-                "has drag or added mass in a current started by a ramp: a rod sees a steady \
-                 current only in this version",
-            ),
-            _ if waves && dynamic && drag => {
-                Some("has drag in waves: a rod's water in waves or a sheared current is not built")
-            }
-            _ => None,
-        };
-        if let Some(why) = why {
-            return Err(ScenarioError(format!(
-                "{file}: {}: rod {} {why}",
-                sc.names.rod(k, "rod_type"),
-                r.id
-            )));
-        }
-    }
-    Ok(())
-}
-
 /// A core error about a free rod's body (`bodies[i]...`) or a rod of a
 /// body (`bodies[i].rods[j]...`) named by the rod (`rods[k]`, or its
 /// deck line); any other error as it is.

@@ -130,8 +130,6 @@ pub(super) fn system_scenario(
     sc.notes.extend(static_waves_note(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
-    super::body_water::check_body_water(ctx.file, &sc)?;
-    super::rods::check_rod_water(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -179,8 +177,6 @@ fn deck_system(
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
     super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
-    super::body_water::check_body_water(ctx.file, &sc)?;
-    super::rods::check_rod_water(ctx.file, &sc)?;
     Ok(sc)
 }
 

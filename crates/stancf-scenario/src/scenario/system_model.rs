@@ -113,19 +113,21 @@ impl SystemScenario {
             })
             .collect::<Result<Vec<_>, ModelError>>()?;
         let bodies = (0..self.bodies.len())
-            .map(|b| self.library_body(b))
+            .map(|b| self.library_body(b, water.as_ref()))
             .collect();
         System::with_bodies(lines, points, bodies, self.gravity)
             .map_err(|e| super::rods::rod_error(self, e))
     }
 
     /// The library's body: in water, a free body's volume, added mass and
-    /// drag with the water's density and its current where it is uniform
-    /// (a body with drag in a current that varies with depth is refused
-    /// on reading, [`super::body_water::check_body_water`]); its rods
-    /// (a free rod's body: the rod), which the core folds in; a pinned
-    /// rod's body's pin.
-    fn library_body(&self, i: usize) -> Body {
+    /// drag with the water's density; a steady uniform current as the
+    /// body's own (its added mass then sees the water's velocity,
+    /// docs/method.md §15.6), any other flow (waves, a current that varies
+    /// with depth or that a ramp starts) as the sea the body is in
+    /// (`water`, the lines' sea: §15.15); its rods (a free rod's body: the
+    /// rod), which the core folds in; a pinned rod's body's pin. The
+    /// static seed's system (no `water`) sees the steady uniform current.
+    fn library_body(&self, i: usize, water: Option<&Arc<stancf::water::Water>>) -> Body {
         let b = &self.bodies[i];
         let (kind, inertia) = match b.kind {
             super::BodyType::Free => (
@@ -157,10 +159,18 @@ impl SystemScenario {
                 added_mass_coefficients: b.ca,
                 drag_areas: b.drag_areas,
                 rotational_drag_areas: b.rotational_drag_areas,
-                current: super::bodies::uniform_current(w).unwrap_or([0.0; 3]),
+                current: match steady_uniform_current(w) {
+                    Some(c) => c,
+                    None if water.is_some() => [0.0; 3],
+                    None => super::bodies::uniform_current(w).unwrap_or([0.0; 3]),
+                },
                 rods: Vec::new(),
                 // The system's g, set with the rods (System::with_bodies).
                 gravity: 0.0,
+                sea: match (steady_uniform_current(w), water) {
+                    (None, Some(lw)) => Some(Arc::new(lw.sea.clone())),
+                    _ => None,
+                },
             }),
             _ => None,
         };
@@ -337,4 +347,16 @@ fn section(t: &LineType) -> LineSection {
         mass_per_length: t.mass_per_length,
         ea: t.ea,
     }
+}
+
+/// The water's current if the only flow is a steady current the same at
+/// every depth (zero in still water): no waves, no current ramp. None
+/// where a body must see the sea's flow where it is (§15.15).
+fn steady_uniform_current(w: &super::water::Water) -> Option<[f64; 3]> {
+    let waves = !w.waves.is_empty() || w.jonswap.is_some();
+    let ramped = w.current.as_ref().is_some_and(|c| c.ramp > 0.0);
+    if waves || ramped {
+        return None;
+    }
+    super::bodies::uniform_current(w)
 }

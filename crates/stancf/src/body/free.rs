@@ -292,7 +292,14 @@ impl FreeBody {
             rotation_a: &self.rotation,
             loads,
             water: self.water.as_ref(),
+            time: super::flow::FlowTime::At(self.time),
         }
+    }
+
+    /// Sets the body's clock (the time its sea's flow is taken at; a
+    /// system starting at t sets its bodies' to it).
+    pub fn set_time(&mut self, t: f64) {
+        self.time = t;
     }
 
     /// The variables at the current pose, at rest.

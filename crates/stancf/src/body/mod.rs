@@ -16,6 +16,7 @@
 //! | [`rotation`] | the exponential (B4) and the body rate (B3) of a rotation vector |
 //! | [`jet`] | numbers with their exact first and second derivatives |
 //! | [`terms`] | a time point's kinetic energy (with added mass), loads and drag (B9)-(B10) |
+//! | [`flow`] | the sea's velocity, acceleration and dynamic pressure at a body's point, on jets in the pose (B31) |
 //! | [`rod`] | a rigid cylinder in a body: its inertia, added mass and drag (B17)-(B19) |
 //! | [`waterline`] | the part of a rod under the surface: its volume and first moment (B20)-(B21) |
 //! | [`wet`] | what of a rod the water wets: its sections' and caps' wet fractions and their rates (B22) |
@@ -23,6 +24,7 @@
 //! | [`free`] | a free body's Galerkin step (B5)-(B7) and P2 step (B8) |
 
 pub mod attach;
+pub mod flow;
 pub mod free;
 pub mod inertia;
 pub mod jet;

@@ -22,6 +22,7 @@
 //! rod are exact. The drag's |u_p| u_p goes by three Gauss points on each
 //! of the rod's segments, to the rule's error.
 
+use super::flow::Flow;
 use super::inertia::RigidInertia;
 use super::jet::{cross, dot, Jet, JetVec};
 use super::waterline::Submerged;
@@ -229,7 +230,16 @@ impl Rod {
     /// The rod's drag (B19) over its wet part (B22) and the momentum the
     /// water keeps as the rod's added mass changes (B23): their resultant
     /// force and their moment about the body's centre of mass `centre`
-    /// (body axes).
+    /// (body axes). `flow` gives the sea's flow at a point of the rod
+    /// (body axes; None in still water or a uniform current, which `u`
+    /// holds): the drag then acts on the velocity through the moving
+    /// water, and the fluid's inertia and the caps' dynamic pressure join
+    /// it (B32)-(B33):
+    ///
+    /// ```text
+    ///   f_I(s) = rho (1 + Ca) A a_p,   f_I,A|B = rho CaEnd V_end a_q q,
+    ///   f_p,A = rho A p_d q,   f_p,B = -rho A p_d q
+    /// ```
     pub(crate) fn drag<const N: usize>(
         &self,
         wet: &WetPart<N>,
@@ -237,6 +247,7 @@ impl Rod {
         omega: &JetVec<N>,
         density: f64,
         centre: [f64; 3],
+        flow: &dyn Fn(&JetVec<N>) -> Option<Flow<N>>,
     ) -> (JetVec<N>, JetVec<N>) {
         let q = constant(self.axis());
         let mut force = constant::<N>([0.0; 3]);
@@ -251,12 +262,25 @@ impl Rod {
         };
         let side = -0.5 * density * self.drag_coefficient * self.diameter;
         let side_mass = -0.5 * density * self.added_mass_coefficient * self.area();
+        let side_inertia = density * (1.0 + self.added_mass_coefficient) * self.area();
         for station in wet.stations(&STATIONS, self.segments) {
-            let (_, u_p) = split(&point_velocity(u, omega, &station.point), &q);
+            let moving = point_velocity(u, omega, &station.point);
+            let (_, u_p) = split(&moving, &q);
+            let sea = flow(&station.point);
+            let (_, through_p) = match &sea {
+                Some(s) => split(&std::array::from_fn(|i| moving[i] - s.velocity[i]), &q),
+                None => (Jet::constant(0.0), u_p),
+            };
             let mut f = constant::<N>([0.0; 3]);
             if side != 0.0 {
-                let speed = super::jet::norm(&u_p);
-                f = u_p.map(|c| (c * speed * station.weight).scale(side));
+                let speed = super::jet::norm(&through_p);
+                f = through_p.map(|c| (c * speed * station.weight).scale(side));
+            }
+            if let Some(s) = &sea {
+                let (_, a_p) = split(&s.acceleration, &q);
+                for i in 0..3 {
+                    f[i] = f[i] + (a_p[i] * station.weight).scale(side_inertia);
+                }
             }
             if side_mass != 0.0 && station.wetting.v != 0.0 {
                 let rate = absolute(station.wetting);
@@ -273,14 +297,30 @@ impl Rod {
         }
         let cap = -0.5 * density * self.end_drag_coefficient * self.area();
         let cap_mass = -0.5 * self.cap_added_mass(density);
-        for end in &wet.caps {
+        let cap_inertia = 2.0 * cap_mass.abs();
+        for (k, end) in wet.caps.iter().enumerate() {
             if end.wetness.v == 0.0 && end.rate.v == 0.0 {
                 continue;
             }
             let centre = constant(end.centre);
-            let (u_q, _) = split(&point_velocity(u, omega, &centre), &q);
-            let along = u_q * absolute(u_q) * end.wetness.scale(cap)
+            let moving = point_velocity(u, omega, &centre);
+            let (u_q, _) = split(&moving, &q);
+            let sea = flow(&centre);
+            let through_q = match &sea {
+                Some(s) => split(&std::array::from_fn(|i| moving[i] - s.velocity[i]), &q).0,
+                None => u_q,
+            };
+            let mut along = through_q * absolute(through_q) * end.wetness.scale(cap)
                 + u_q * absolute(end.rate).scale(cap_mass);
+            if let Some(s) = &sea {
+                // The pressure pushes on the cap's face, inward: along q
+                // at end A, against it at end B.
+                let inward = if k == 0 { 1.0 } else { -1.0 };
+                let a_q = dot(&s.acceleration, &q);
+                along = along
+                    + (a_q.scale(cap_inertia) + s.pressure.scale(inward * density * self.area()))
+                        * end.wetness;
+            }
             add_at(&centre, q.map(|c| c * along));
         }
         (force, moment)
@@ -425,11 +465,25 @@ mod tests {
         let (rho, v, w) = (1025.0, 0.7, 0.9);
         let z = constant::<1>([0.0; 3]);
         let middle = r.middle();
-        let (f, m) = r.drag(&r.all_wet(), &constant([0.0, v, 0.0]), &z, rho, middle);
+        let (f, m) = r.drag(
+            &r.all_wet(),
+            &constant([0.0, v, 0.0]),
+            &z,
+            rho,
+            middle,
+            &|_| None,
+        );
         let want = -0.5 * rho * 1.2 * 0.2 * 1.0 * v * v;
         assert!((f[1].v - want).abs() < 1e-12 * want.abs());
         assert!(f[0].v.abs() < 1e-12 && m.iter().all(|c| c.v.abs() < 1e-12));
-        let (f, m) = r.drag(&r.all_wet(), &z, &constant([0.0, 0.0, w]), rho, middle);
+        let (f, m) = r.drag(
+            &r.all_wet(),
+            &z,
+            &constant([0.0, 0.0, w]),
+            rho,
+            middle,
+            &|_| None,
+        );
         let want = -rho * 1.2 * 0.2 * w * w / 64.0;
         assert!(f.iter().all(|c| c.v.abs() < 1e-12), "{:?}", f.map(|c| c.v));
         assert!(
@@ -438,7 +492,14 @@ mod tests {
             m[2].v
         );
         // Along its axis both caps drag: 2 x 1/2 rho CdEnd A v^2.
-        let (f, _) = r.drag(&r.all_wet(), &constant([v, 0.0, 0.0]), &z, rho, middle);
+        let (f, _) = r.drag(
+            &r.all_wet(),
+            &constant([v, 0.0, 0.0]),
+            &z,
+            rho,
+            middle,
+            &|_| None,
+        );
         let want = -rho * 0.6 * r.area() * v * v;
         assert!((f[0].v - want).abs() < 1e-12 * want.abs());
     }

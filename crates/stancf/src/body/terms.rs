@@ -18,11 +18,13 @@
 //! theta: the virtual rotation in body axes is eta = J_r dtheta, and the
 //! reference point moves by dr_G + R (c x eta)).
 
+use super::flow::{flow_at, Flow, FlowTime};
 use super::jet::{cross, dot, norm, Jet, JetVec};
 use super::rod::Rod;
 use super::rotation::{body_rate, times, turn};
 use super::waterline::Submerged;
 use super::wet::WetPart;
+use crate::water::kinematics::Sea;
 
 /// Variables at a time point: v_G (0..3), theta (3..6), theta_dot
 /// (6..9), r_G (9..12).
@@ -45,6 +47,11 @@ pub struct BodyWater {
     pub current: [f64; 3],
     pub rods: Vec<super::Rod>,
     pub gravity: f64,
+    /// The sea whose waves and current act on the body where they are
+    /// (§15.15): its velocity in the drag, its acceleration in the fluid's
+    /// inertia, its dynamic pressure on the rods' caps. With a sea the
+    /// uniform `current` above must be zero (the sea carries the current).
+    pub sea: Option<std::sync::Arc<Sea>>,
 }
 
 impl BodyWater {
@@ -79,9 +86,18 @@ impl BodyWater {
                 "must be finite",
             ));
         }
+        if self.sea.is_some() && self.current != [0.0; 3] {
+            return Err(crate::error::ModelError::invalid(
+                format!("{key}.current"),
+                "must be zero with a sea: the sea's current acts on the body",
+            ));
+        }
         Ok(())
     }
 }
+
+/// A rotation matrix on jets, `[row][column]`.
+type Rotation = [[Jet<NV>; 3]; 3];
 
 /// What the terms need of the body and the step.
 pub struct Context<'a> {
@@ -94,6 +110,8 @@ pub struct Context<'a> {
     /// the start's body axes.
     pub loads: &'a [([f64; 3], [f64; 3])],
     pub water: Option<&'a BodyWater>,
+    /// When the sea's flow is taken (a time of the step, or statics').
+    pub time: FlowTime,
 }
 
 /// dx/dt of a function x of the pose (theta, r_G) along the motion
@@ -144,6 +162,39 @@ impl Context<'_> {
         let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
         let u = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);
         (omega, u)
+    }
+
+    /// The sea's flow (B31) at the body's point `xi` (body axes, from the
+    /// reference point) at the pose (r_G, theta) of `v`, in body axes:
+    /// x = r_G + R (xi - c), turned back by R^T = exp(-[theta]) R_a^T.
+    /// None without a sea.
+    fn flow(&self, v: &[JetVec<NV>; 4], rotation: &Rotation, xi: &JetVec<NV>) -> Option<Flow<NV>> {
+        let sea = self.water?.sea.as_deref()?;
+        let arm: JetVec<NV> =
+            std::array::from_fn(|i| xi[i] - Jet::constant(self.centre_of_mass[i]));
+        let x: JetVec<NV> = std::array::from_fn(|i| {
+            v[3][i] + rotation[i][0] * arm[0] + rotation[i][1] * arm[1] + rotation[i][2] * arm[2]
+        });
+        let back = |g: &JetVec<NV>| -> JetVec<NV> {
+            std::array::from_fn(|i| {
+                rotation[0][i] * g[0] + rotation[1][i] * g[1] + rotation[2][i] * g[2]
+            })
+        };
+        Some(flow_at(sea, &x, self.time).turned(back))
+    }
+
+    /// R = R_a exp([theta]) on jets, its columns exp([theta]) e_k turned
+    /// by R_a; only with a sea, whose flow it carries to body axes.
+    fn rotation(&self, v: &[JetVec<NV>; 4]) -> Option<Rotation> {
+        self.water?.sea.as_ref()?;
+        let columns: [JetVec<NV>; 3] = std::array::from_fn(|k| {
+            let mut e = constant([0.0; 3]);
+            e[k] = Jet::constant(1.0);
+            times(self.rotation_a, &turn(&v[1], &e, 1.0))
+        });
+        Some(std::array::from_fn(|i| {
+            std::array::from_fn(|k| columns[k][i])
+        }))
     }
 
     /// Each rod of the body's water with its wet part and its part under
@@ -228,14 +279,32 @@ impl Context<'_> {
 
     /// The drag's generalized forces (B10), (B19): on r_G (global) and on
     /// theta, from the drag's resultant f and its moment about the centre
-    /// of mass M_G (body axes): Q_r = R f, Q_theta = J_r^T M_G.
+    /// of mass M_G (body axes): Q_r = R f, Q_theta = J_r^T M_G. In a sea
+    /// (§15.15) they hold the water's loads where it moves: the drag on
+    /// the velocity through the moving water, the fluid's inertia (B32)
+    /// and the dynamic pressure on the rods' caps (B33).
     pub fn drag(&self, v: &[JetVec<NV>; 4]) -> Option<(JetVec<NV>, JetVec<NV>)> {
         let w = self.water?;
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
-        let speed = norm(&u);
+        // In a sea, the reference point's velocity through the water and
+        // the fluid's inertia there, rho V (1 + Ca) a_f (B32).
+        let rotation = self.rotation(v);
+        let flow = |xi: &JetVec<NV>| rotation.as_ref().and_then(|r| self.flow(v, r, xi));
+        let at_reference = flow(&constant([0.0; 3]));
+        let relative: JetVec<NV> = match &at_reference {
+            Some(flow) => std::array::from_fn(|i| u[i] - flow.velocity[i]),
+            None => u,
+        };
+        let speed = norm(&relative);
         let mut f: JetVec<NV> =
-            std::array::from_fn(|i| (u[i] * speed).scale(-half_rho * w.drag_areas[i]));
+            std::array::from_fn(|i| (relative[i] * speed).scale(-half_rho * w.drag_areas[i]));
+        if let Some(flow) = &at_reference {
+            for i in 0..3 {
+                let inertia = w.density * w.volume * (1.0 + w.added_mass_coefficients[i]);
+                f[i] = f[i] + flow.acceleration[i].scale(inertia);
+            }
+        }
         let spin = norm(&omega);
         // The reference point is at -c from the centre: (-c) x f = f x c.
         let f_x_c = cross(&f, &constant(self.centre_of_mass));
@@ -243,7 +312,7 @@ impl Context<'_> {
             f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
         });
         for (rod, wet, _) in self.rods_in_water(v) {
-            let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass);
+            let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass, &flow);
             for i in 0..3 {
                 f[i] = f[i] + force[i];
                 on_eta[i] = on_eta[i] + moment[i];
@@ -271,6 +340,7 @@ mod tests {
             rotation_a,
             loads: &[],
             water: Some(water),
+            time: FlowTime::At(0.0),
         }
     }
 
@@ -291,6 +361,7 @@ mod tests {
             current: [0.2, -0.1, 0.05],
             rods: Vec::new(),
             gravity: 9.81,
+            sea: None,
         };
         let ctx = test_context(&rotation_a, &water);
         // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r
@@ -347,7 +418,6 @@ mod tests {
     /// (its wetness moves too).
     #[test]
     fn the_terms_derivatives_with_a_rod_are_exact() {
-        let rotation_a = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
         let rod = super::super::rod::sample();
         let water = BodyWater {
             density: 1025.0,
@@ -358,7 +428,47 @@ mod tests {
             gravity: 9.81,
             ..BodyWater::default()
         };
-        let ctx = test_context(&rotation_a, &water);
+        terms_jets_are_exact(&water, FlowTime::At(0.0));
+    }
+
+    /// The same in a sea (§15.15): two crossing waves over a sheared
+    /// current, the flow's velocity, acceleration and dynamic pressure
+    /// moving with the pose (B31)-(B33); at a time of a step and in
+    /// statics' steady current.
+    #[test]
+    fn the_terms_derivatives_in_waves_are_exact() {
+        use crate::water::current::{CurrentProfile, CurrentRow, Ramp};
+        use crate::water::waves::AiryWave;
+        let waves = [(1.2, 7.0, 20.0, 0.0), (0.6, 4.5, -70.0, 50.0)].map(|(a, t, h, p)| AiryWave {
+            amplitude: a,
+            period: t,
+            heading_deg: h,
+            phase_deg: p,
+        });
+        let rows = [(0.0, [0.4, -0.2, 0.0]), (-30.0, [0.1, 0.1, 0.0])]
+            .map(|(z, velocity)| CurrentRow { z, velocity });
+        let sea = Sea::new(40.0, 9.81, &waves)
+            .unwrap()
+            .with_current(CurrentProfile::new(&rows).unwrap(), Ramp::NONE);
+        let water = BodyWater {
+            density: 1025.0,
+            volume: 0.7,
+            added_mass_coefficients: [0.5, 0.3, 0.2],
+            drag_areas: [0.8, 1.3, 2.1],
+            rods: vec![super::super::rod::sample()],
+            gravity: 9.81,
+            sea: Some(std::sync::Arc::new(sea)),
+            ..BodyWater::default()
+        };
+        terms_jets_are_exact(&water, FlowTime::At(3.7));
+        terms_jets_are_exact(&water, FlowTime::Steady);
+    }
+
+    fn terms_jets_are_exact(water: &BodyWater, time: FlowTime) {
+        let rotation_a = crate::body::pose::rotation_from_moordyn_angles([15.0, -25.0, 40.0]);
+        let rod = &water.rods[0];
+        let mut ctx = test_context(&rotation_a, water);
+        ctx.time = time;
         let theta = [0.3, -0.5, 0.8];
         let turned = crate::vec3::mat3_mul(&rotation_a, &crate::body::rotation::exp_map(theta));
         let middle = crate::vec3::sub(rod.middle(), ctx.centre_of_mass);

@@ -236,6 +236,7 @@ fn add_body_loads(
             rotation_a: &rotation,
             loads: &[],
             water: Some(water),
+            time: crate::body::flow::FlowTime::Steady,
         };
         // Its force at its centre, with its moment about it.
         let (f, m) = ctx.buoyancy_at(centre);

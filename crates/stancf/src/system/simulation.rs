@@ -122,7 +122,10 @@ impl SystemSimulation {
                  bodies in a system is not built",
             ));
         }
-        let bodies = step_bodies(&topology, settings.time_step)?;
+        let mut bodies = step_bodies(&topology, settings.time_step)?;
+        for body in &mut bodies {
+            body.body.set_time(t);
+        }
         let mut line_settings = settings.clone();
         // Free points or free bodies (a body that holds no line too) are
         // unknowns of the system's step beside its lines'.

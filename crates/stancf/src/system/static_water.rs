@@ -36,6 +36,8 @@ impl StaticBody {
             rotation_a: &self.rotation,
             loads: &[],
             water: Some(water),
+            // Statics sees the steady current alone (§15.8).
+            time: crate::body::flow::FlowTime::Steady,
         }
     }
 

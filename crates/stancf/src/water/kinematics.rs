@@ -24,6 +24,12 @@ pub struct FluidKinematics {
     pub acceleration: [f64; 3],
     pub velocity_gradient: [[f64; 3]; 3],
     pub acceleration_gradient: [[f64; 3]; 3],
+    /// The waves' dynamic pressure over the water's density (m^2/s^2)
+    /// and its gradient (W8a); a current adds none (a current's ramp
+    /// accelerates the water without a pressure here: its acceleration
+    /// acts through Morison's inertia, not on a rod's caps).
+    pub pressure: f64,
+    pub pressure_gradient: [f64; 3],
 }
 
 /// The sea a line sees: flat seabed at z = -depth, gravity, waves,
@@ -127,6 +133,13 @@ impl Sea {
     /// grad u_r = r grad u,  grad a_r = r grad a + r' grad u         (W12)
     /// ```
     ///
+    /// The ramped waves' dynamic pressure is -rho d(r Phi)/dt, so that
+    /// -grad p_r / rho stays the ramped local acceleration a_r:
+    ///
+    /// ```text
+    /// p_r / rho = r p_d / rho - r' Phi,  grad p_r / rho = r grad p_d / rho - r' u   (W12a)
+    /// ```
+    ///
     /// A current U(z) is steady, so it contributes r_c U to the velocity,
     /// r_c' U to the acceleration and (r_c dU/dz, r_c' dU/dz) to the z
     /// column of the gradients.
@@ -142,6 +155,10 @@ impl Sea {
         let (r, r_rate) = self.wave_ramp.factor_and_rate(t);
         let mut out = FluidKinematics {
             eta: r * flow.eta,
+            pressure: r * flow.pressure - r_rate * flow.potential,
+            pressure_gradient: std::array::from_fn(|i| {
+                r * flow.pressure_gradient[i] - r_rate * flow.velocity[i]
+            }),
             ..FluidKinematics::default()
         };
         for i in 0..3 {

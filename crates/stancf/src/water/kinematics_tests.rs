@@ -357,3 +357,41 @@ fn a_sea_can_be_shared_between_threads() {
         .unwrap();
     assert_eq!(copy, full_sea().kinematics(&[1.0, 2.0, -3.0], 4.0));
 }
+
+/// The waves' dynamic pressure (W8a) is -rho dPhi/dt: its gradient is minus
+/// the local acceleration, under a ramp too (W12a: the ramp's share
+/// -r' Phi), and it is the gradient's integral (central differences of
+/// the pressure, to 1e-7 of the acceleration's size); a steady current
+/// adds none.
+#[test]
+fn the_dynamic_pressure_drives_the_local_acceleration() {
+    let sea = Sea::new(DEPTH, G, &crossing_waves())
+        .unwrap()
+        .with_wave_ramp(Ramp::new(20.0).unwrap())
+        .with_current(current(), Ramp::NONE);
+    let mut rng = SplitMix64::new(11);
+    for _ in 0..200 {
+        let x = [
+            100.0 * (rng.next_unit() - 0.5),
+            100.0 * (rng.next_unit() - 0.5),
+            -DEPTH * rng.next_unit(),
+        ];
+        let t = 30.0 * rng.next_unit();
+        let k = sea.kinematics(&x, t);
+        let size = k.acceleration.iter().fold(1.0f64, |m, a| m.max(a.abs()));
+        let h = 1e-5;
+        for j in 0..3 {
+            assert!(
+                (k.pressure_gradient[j] + k.acceleration[j]).abs() < 1e-12 * size,
+                "{x:?} {t}: {:?} {:?}",
+                k.pressure_gradient,
+                k.acceleration
+            );
+            let (mut p, mut m) = (x, x);
+            p[j] += h;
+            m[j] -= h;
+            let fd = (sea.kinematics(&p, t).pressure - sea.kinematics(&m, t).pressure) / (2.0 * h);
+            assert!((fd - k.pressure_gradient[j]).abs() < 1e-7 * size, "{fd}");
+        }
+    }
+}

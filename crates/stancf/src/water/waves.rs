@@ -128,6 +128,13 @@ pub struct WaveFlow {
     pub acceleration: [f64; 3],
     pub velocity_gradient: [[f64; 3]; 3],
     pub acceleration_gradient: [[f64; 3]; 3],
+    /// The dynamic pressure over the density, p_d / rho (m^2/s^2), and
+    /// its gradient (W8a).
+    pub pressure: f64,
+    pub pressure_gradient: [f64; 3],
+    /// The velocity potential Phi (m^2/s; its gradient is `velocity`): a
+    /// ramp's share of the pressure (W12a).
+    pub potential: f64,
 }
 
 impl SolvedWave {
@@ -207,6 +214,19 @@ impl SolvedWave {
     ///
     /// (j = x, y). Outside -h <= z <= 0 the flow is constant in z (W8), so
     /// there the z column of the gradients is zero.
+    ///
+    /// The dynamic pressure of linear theory, p_d = -rho dPhi/dt, over the
+    /// density, with cosh(k (z + h)) / cosh(k h) = C tanh(k h) = C w^2 /
+    /// (g k) by (W1):
+    ///
+    /// ```text
+    /// p_d / rho = g A cosh(k (z + h)) / cosh(k h) cos theta = A (w^2 / k) C cos theta
+    /// grad (p_d / rho) = (-A w^2 C sin theta e_h, A w^2 S cos theta)      (W8a)
+    /// ```
+    ///
+    /// so that -grad p_d / rho is the local acceleration (W5), as the
+    /// linearized Euler equation says; and the potential itself,
+    /// Phi = (A w / k) C sin theta.
     pub fn add_flow(&self, position: &[f64; 3], t: f64, flow: &mut WaveFlow) {
         let h = self.depth;
         let z = position[2];
@@ -247,6 +267,13 @@ impl SolvedWave {
             flow.velocity_gradient[2][i] += du_z_dx * e[i];
             flow.acceleration_gradient[2][i] += da_z_dx * e[i];
         }
+        let head = a * w * w / k;
+        flow.pressure += head * c * cos_theta;
+        flow.potential += a * w / k * c * sin_theta;
+        for i in 0..2 {
+            flow.pressure_gradient[i] -= a * w * w * c * sin_theta * e[i];
+        }
+        flow.pressure_gradient[2] += dz * a * w * w * s * cos_theta;
         flow.velocity[2] += u_z;
         flow.acceleration[2] += a_z;
         flow.velocity_gradient[2][2] += du_z_dz;

@@ -236,6 +236,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             current: [0.0; 3],
             rods: Vec::new(),
             gravity: 0.0,
+            sea: None,
         });
     }
     let (system, states) =
@@ -394,6 +395,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             current: [0.0; 3],
             rods: Vec::new(),
             gravity: 0.0,
+            sea: None,
         });
         let system = System::with_bodies(
             vec![Line {

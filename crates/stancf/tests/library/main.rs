@@ -10,6 +10,7 @@ mod added_mass_derivatives;
 mod added_mass_systems;
 mod axial_damping;
 mod bodies_in_systems;
+mod bodies_in_waves;
 mod body_statics;
 mod broyden;
 mod catenary_on_seabed;

@@ -210,6 +210,7 @@ fn water(ca: [f64; 3], cda: [f64; 3], cda_r: [f64; 3]) -> BodyWater {
         current: [0.0; 3],
         rods: Vec::new(),
         gravity: 0.0,
+        sea: None,
     }
 }
 

@@ -14,6 +14,7 @@
 //!   there, never computing it, §7.12 of the note).
 
 use crate::output::Num;
+use stancf::body::flow::FlowTime;
 use stancf::body::jet::{Jet, JetVec};
 use stancf::body::pose::{moordyn_angles, rotate, rotate_back};
 use stancf::body::terms::{Context, NV};
@@ -101,6 +102,7 @@ pub(super) fn body_rows(
     topology: &Topology,
     motion: impl Fn(usize) -> BodyMotion,
     points: &[([f64; 3], [f64; 3], [f64; 3])],
+    time: FlowTime,
 ) -> Vec<BodyRow> {
     (0..topology.bodies().len())
         .map(|b| {
@@ -114,7 +116,7 @@ pub(super) fn body_rows(
             }
             let body = &topology.bodies()[b];
             let (own_force, own_moment) = match body.kind {
-                BodyKind::Free => own_loads(body, &m, topology.gravity()),
+                BodyKind::Free => own_loads(body, &m, topology.gravity(), time),
                 _ => ([0.0; 3], [0.0; 3]),
             };
             BodyRow {
@@ -133,7 +135,12 @@ pub(super) fn body_rows(
 /// buoyancy (m - rho V) g at its centre of mass, the constant forces at
 /// its points (a point's buoyancy and given force, folded into the body),
 /// and in water [`water_loads`].
-fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+fn own_loads(
+    body: &Body,
+    m: &BodyMotion,
+    gravity: [f64; 3],
+    time: FlowTime,
+) -> ([f64; 3], [f64; 3]) {
     let water = body.water.as_ref();
     let (density, volume) = water.map_or((0.0, 0.0), |w| (w.density, w.volume));
     let weight = scale(body.inertia.mass - density * volume, gravity);
@@ -145,7 +152,7 @@ fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64;
         moment = add(moment, cross(rotate(&m.rotation, *xi), *f));
     }
     if let Some(w) = water {
-        let (f, about_centre) = water_loads(body, m, w);
+        let (f, about_centre) = water_loads(body, m, w, time);
         force = add(force, f);
         moment = add(moment, add(about_centre, cross(arm, f)));
     }
@@ -159,7 +166,7 @@ fn own_loads(body: &Body, m: &BodyMotion, gravity: [f64; 3]) -> ([f64; 3], [f64;
 /// moment -1/2 rho diag(CdA_r) Omega |Omega|) with its rods' (B19) and
 /// the momentum the water keeps as their wet part changes (B23). The
 /// force and its moment about the centre of mass, global.
-fn water_loads(body: &Body, m: &BodyMotion, w: &BodyWater) -> ([f64; 3], [f64; 3]) {
+fn water_loads(body: &Body, m: &BodyMotion, w: &BodyWater, time: FlowTime) -> ([f64; 3], [f64; 3]) {
     let c = body.inertia.centre_of_mass;
     let ctx = Context {
         mass: body.inertia.mass,
@@ -168,6 +175,7 @@ fn water_loads(body: &Body, m: &BodyMotion, w: &BodyWater) -> ([f64; 3], [f64; 3
         rotation_a: &m.rotation,
         loads: &[],
         water: Some(w),
+        time,
     };
     let arm = rotate(&m.rotation, c);
     let centre = add(m.position, arm);

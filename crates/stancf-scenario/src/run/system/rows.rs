@@ -4,6 +4,7 @@
 
 use super::bodies::{at_rest, body_rows, stepped, BodyRow};
 use crate::scenario::EndForces;
+use stancf::body::flow::FlowTime;
 use stancf::system::{EndForce, SystemSimulation, SystemStatics, Topology};
 use stancf::water::PointInWater;
 use stancf::{Model, State};
@@ -76,6 +77,7 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
             None => at_rest(&system.bodies()[b]),
         },
         &points,
+        FlowTime::At(sim.time()),
     );
     SystemRow {
         t: sim.time(),
@@ -122,6 +124,7 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
             m
         },
         &points,
+        FlowTime::Steady,
     );
     SystemRow {
         t,

@@ -3,6 +3,7 @@
 //! Newton, and the move to the step's end.
 
 use super::*;
+use crate::body::flow::FlowTime;
 use crate::body::terms::moment_on_theta;
 
 impl FreeBody {
@@ -10,7 +11,7 @@ impl FreeBody {
     /// virtual work, per slot, and their derivatives. `slots` holds the
     /// eight blocks (the centre's from r_a).
     fn slab_rows(&self, slots: &[[f64; 3]; 8]) -> SlabRows {
-        let ctx = self.context(&self.start_loads);
+        let mut ctx = self.context(&self.start_loads);
         let mut out = SlabRows {
             rows: [0.0; SLOTS],
             jacobian: [0.0; SLOTS * SLOTS],
@@ -32,6 +33,7 @@ impl FreeBody {
                 at(t_dot, 4),
                 add(self.centre, at(t, 0)),
             ]);
+            ctx.time = FlowTime::At(self.time + point.offset);
             let density = ctx.density(&v);
             let wdt = point.w_dt;
             for m in 0..4 {
@@ -232,9 +234,10 @@ impl FreeBody {
         if self.water.is_none() {
             return 0.0;
         }
-        let ctx = self.context(&self.start_loads);
+        let mut ctx = self.context(&self.start_loads);
         let mut work = 0.0;
         for point in &self.slab.points {
+            ctx.time = FlowTime::At(self.time + point.offset);
             let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
                 std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
             };
