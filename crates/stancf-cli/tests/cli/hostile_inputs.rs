@@ -141,7 +141,7 @@ fn a_file_neither_toml_nor_a_deck_and_a_deck_without_lines_say_so() {
         &sc,
         &[
             "bad.toml: system.moordyn:",
-            "nolines.txt: the deck defines no lines",
+            "nolines.txt: the deck defines no lines, bodies or rods",
         ],
         &[],
         2000,

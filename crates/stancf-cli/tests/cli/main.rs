@@ -14,6 +14,7 @@ mod compression;
 mod coupled_bodies;
 mod coupling;
 mod deck_statics;
+mod decks_without_lines;
 mod extreme_values;
 mod figures_and_vtk;
 mod grading;

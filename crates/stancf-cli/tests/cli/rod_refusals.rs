@@ -18,7 +18,7 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 /// water that reaches the surface, a zero-length free rod without lines,
 /// a rod output channel MoorDyn has none for (RZ) or stancf does not
 /// write (nodes), a rod type's value out of the
-/// solver's range; a deck of rods alone (no lines) is refused saying why.
+/// solver's range.
 #[test]
 fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
     let d = scratch("rod-refusals");
@@ -71,23 +71,6 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             errs[0]
         );
     }
-    // MoorDyn's rod_tests/AddedMass.txt has rods and no lines.
-    let no_lines = base
-        .split("---------------------- LINES")
-        .next()
-        .unwrap()
-        .to_string()
-        + "---------------------- OPTIONS -----\n100 WtrDpth\n--- END ---\n";
-    let file = write_scenario(&d, "nolines.txt", &no_lines);
-    refused_by_check_and_run(
-        &file,
-        &d.join("never-nl"),
-        &[
-            "the deck defines no lines",
-            "a deck of rods or bodies alone is not built",
-        ],
-        &[],
-    );
 }
 
 /// A TOML rod's keys are checked as the reader checks every key: unknown

@@ -333,6 +333,12 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     };
     bodies::check_body_points(&points, &bodies)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
+    if lines.is_empty() && bodies.is_empty() && rods.is_empty() {
+        return Err(DeckError::whole(
+            "the deck defines no lines, bodies or rods: nothing moves (a system holds lines, \
+             bodies or rods, with the points they hold)",
+        ));
+    }
     rods::check_rods(&rods, bodies.len(), &lines)?;
     let outputs = channels::resolve(raw_outputs, &lines, &points, (&bodies, &rods))?;
     Ok(Deck {

@@ -410,13 +410,6 @@ pub(crate) fn link_lines(
     types: &[LineType],
     points: &[super::DeckPoint],
 ) -> Result<Vec<DeckLine>, DeckError> {
-    if raw.is_empty() {
-        return Err(DeckError::whole(
-            "the deck defines no lines (a LINES section with at least one row is required: \
-             stancf builds a system of lines with the points, bodies and rods they hold, and \
-             a deck of rods or bodies alone is not built)",
-        ));
-    }
     let mut out = Vec::new();
     for l in raw {
         let Some(type_index) = types.iter().position(|t| t.name == l.line_type) else {

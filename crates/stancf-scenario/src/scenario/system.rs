@@ -192,14 +192,12 @@ fn static_waves_note(sc: &SystemScenario) -> Option<String> {
     })
 }
 
-/// `[[line_types]]`: `name` (required, unique), `diameter` (> 0),
+/// `[[line_types]]` (none for a system of bodies and rods alone): `name`
+/// (required, unique), `diameter` (> 0),
 /// `mass_per_length` (> 0), `ea` (> 0), each required; `ei` (>= 0,
 /// default 0), `ba` (default 0; < 0: minus a damping ratio), `cd`, `ca`,
 /// `cdax`, `caax` (>= 0, default 0).
 fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioError> {
-    if raw.is_empty() {
-        return Err(ctx.err("line_types", "a system needs at least one line type"));
-    }
     let mut out: Vec<LineType> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {
         let key = |k: &str| format!("line_types[{i}].{k}");
@@ -465,8 +463,11 @@ fn lines(
     types: &[LineType],
     (points, bodies): (&[SystemPoint], &[SystemBody]),
 ) -> Result<Vec<SystemLine>, ScenarioError> {
-    if raw.is_empty() {
-        return Err(ctx.err("lines", "a system needs at least one line"));
+    if raw.is_empty() && bodies.is_empty() {
+        return Err(ctx.err(
+            "lines",
+            "a system needs at least one line, body or rod (a free rod is a body of its own)",
+        ));
     }
     let mut out: Vec<SystemLine> = Vec::with_capacity(raw.len());
     for (i, r) in raw.iter().enumerate() {

@@ -64,6 +64,30 @@ fn block_bandwidths(block_start: &[usize]) -> (usize, usize) {
 }
 
 impl SlabLayout {
+    /// The slots of a step of `scheme` without a node: what a system's
+    /// points and bodies take their time slots from (docs/method.md
+    /// §11.3), with or without lines.
+    pub fn of_time(scheme: Scheme, method: ConstraintMethod) -> Self {
+        let (unknown_slots, row_slots) = scheme.slots();
+        SlabLayout {
+            nodes: 0,
+            dpn: 0,
+            scheme,
+            method,
+            unknown_slots,
+            row_slots,
+            unknowns: Vec::new(),
+            rows: Vec::new(),
+            multipliers: Vec::new(),
+            constraint_rows: Vec::new(),
+            hold_multipliers: Vec::new(),
+            hold_rows: Vec::new(),
+            block_start: vec![0],
+            kl: 0,
+            ku: 0,
+        }
+    }
+
     pub fn new(model: &Model, scheme: Scheme, method: ConstraintMethod) -> Self {
         let (unknown_slots, row_slots) = scheme.slots();
         let nodes = model.nodes();

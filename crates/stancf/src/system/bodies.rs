@@ -256,12 +256,13 @@ pub(super) fn place_points(
             BodyKind::Free => {}
         }
     }
-    // Where each point moves at t = 0 (a free body's point with its body).
+    // Where each point moves at t = 0 (a free body's point with its body,
+    // a coupled point on its motion).
     let velocities: Vec<[f64; 3]> = points
         .iter()
         .map(|p| match p.kind {
             PointKind::Body { body, local } => bodies[body].point_velocity(local),
-            _ => [0.0; 3],
+            _ => p.state_at(0.0).1,
         })
         .collect();
     for i in 0..bodies.len() {
@@ -345,17 +346,8 @@ fn check_pin(
                 ),
             ))
         }
-        PointKind::Coupled(_) => {
-            return Err(ModelError::invalid(
-                "point",
-                format!(
-                    "point {} is coupled (or on a coupled body): a body pinned to a host's \
-                     motion is not built yet (a pin holds to a fixed point, a free point or a \
-                     free body's point)",
-                    pin.point
-                ),
-            ))
-        }
+        // A host's motion moves it (§15.17).
+        PointKind::Coupled(_) => {}
     }
     let at = body.point(pin.local);
     let off = crate::vec3::norm(crate::vec3::sub(at, point.position));

@@ -75,6 +75,51 @@ fn check_afloat(system: &System, b: usize) -> Result<(), crate::error::ModelErro
     Ok(())
 }
 
+/// The height of free body b's reference point at which, floating on its
+/// rods alone ([`floats`]) at its given attitude, its buoyancy (its
+/// volume's and its rods' parts under z = 0, (B20)) carries its weight:
+/// the catenary network's start for it (a rod deep under water has no
+/// stiffness in heave, and the network's Newton no direction to rise
+/// in). The buoyancy falls as the body rises, so bisection between the
+/// height where its rods are all under water and where they are all out
+/// finds it. None if b does not float, or floats at any height.
+pub(super) fn floating_height(system: &System, b: usize) -> Option<f64> {
+    if !floats(system, b) {
+        return None;
+    }
+    let body = &system.bodies()[b];
+    let w = body.water.as_ref()?;
+    let r = &body.rotation;
+    let up = |x: [f64; 3]| crate::body::pose::rotate(r, x)[2];
+    let weight = body.inertia.mass;
+    let displaced = |z: f64| -> f64 {
+        let rods: f64 = w
+            .rods
+            .iter()
+            .map(|rod| rod.submerged_volume(z + up(rod.end_a), up(rod.axis())))
+            .sum();
+        w.density * (w.volume + rods)
+    };
+    let reach = w
+        .rods
+        .iter()
+        .flat_map(|rod| [up(rod.end_a), up(rod.end_b)].map(|h| h.abs() + rod.diameter))
+        .fold(0.0f64, f64::max);
+    let (mut low, mut high) = (-2.0 * reach, 2.0 * reach);
+    if displaced(low) < weight || displaced(high) > weight {
+        return None;
+    }
+    for _ in 0..200 {
+        let middle = 0.5 * (low + high);
+        if displaced(middle) >= weight {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    Some(0.5 * (low + high))
+}
+
 /// The holds of a body that floats on its rods alone ([`floats`]): still
 /// water's buoyancy and gravity are vertical and the same at any
 /// horizontal position and heading, so its surge, sway and yaw have no

@@ -241,7 +241,7 @@ impl StaticBody {
         let g = |k: usize| self.global(layout, k);
         let joint = |c: usize| match hold {
             PinHold::Point(p) => layout.point_unknown(p, 0, c),
-            PinHold::Fixed(_) => None,
+            PinHold::Fixed(_) | PinHold::Moving(_) => None,
         };
         let (p, _) = offsets(&self.rotation, arm, [q[3], q[4], q[5]], [0.0; 3]);
         let raw: [f64; 3] = std::array::from_fn(|c| residual[g(c)]);
@@ -253,6 +253,7 @@ impl StaticBody {
             let at = match hold {
                 PinHold::Fixed(at) => at[c],
                 PinHold::Point(_) => x[joint(c).expect("a joint's point")],
+                PinHold::Moving(_) => unreachable!("the static pin is fixed"),
             };
             if let Some(y) = joint(c) {
                 residual[y] += raw[c];
@@ -446,7 +447,8 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 pin: body.pin.map(|pin| {
                     let hold = match system.joint_point(b) {
                         Some(p) => PinHold::Point(p),
-                        None => PinHold::Fixed(system.points()[pin.point].position),
+                        // A host's motion holds it where it is at t = 0.
+                        None => PinHold::Fixed(system.points()[pin.point].state_at(0.0).0),
                     };
                     (crate::vec3::sub(pin.local, c), hold)
                 }),

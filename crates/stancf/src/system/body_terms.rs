@@ -63,15 +63,21 @@ pub(super) struct StepBody {
 pub(super) struct StepPin {
     pub arm: [f64; 3],
     pub hold: PinHold,
+    /// The slot values (0,w), (1,e), (1,w) of a given hold over the step:
+    /// [0, P, 0] at a fixed point, the point's velocity at the start and
+    /// position and velocity at the end on a host's motion (B34).
+    pub held: [[f64; 3]; 3],
 }
 
-/// What holds a pinned point: a fixed point (global), or a point whose
+/// What holds a pinned point: a fixed point (global); a point whose
 /// slot values are unknowns of the step, a free point or another free
-/// body's point (a joint, §15.14).
+/// body's point (a joint, §15.14); or a coupled point, moved by a host or
+/// a motion (§15.17).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum PinHold {
     Fixed([f64; 3]),
     Point(usize),
+    Moving(usize),
 }
 
 /// Global index of the FreeBody's Galerkin unknown (or row) i: its blocks

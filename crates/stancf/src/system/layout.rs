@@ -59,6 +59,9 @@ impl LineMap {
 pub struct SystemLayout {
     /// Each line's own numbering.
     pub lines: Vec<SlabLayout>,
+    /// The step's time slots (the points' and bodies' unknowns and rows,
+    /// the lines' too), without nodes.
+    pub time: SlabLayout,
     pub maps: Vec<LineMap>,
     /// The block shapes of the bordered matrix.
     pub shapes: Vec<BlockShape>,
@@ -89,7 +92,8 @@ impl SystemLayout {
             .iter()
             .map(|m| SlabLayout::new(m, scheme, method))
             .collect();
-        let slots = layouts[0].unknown_slots.len();
+        let time = SlabLayout::of_time(scheme, method);
+        let slots = time.unknown_slots.len();
         let mut point_base = vec![None; system.points().len()];
         let mut border = 0;
         for (p, pt) in system.points().iter().enumerate() {
@@ -135,6 +139,7 @@ impl SystemLayout {
         }
         SystemLayout {
             lines: layouts,
+            time,
             maps,
             shapes,
             point_base,

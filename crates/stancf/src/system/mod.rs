@@ -264,10 +264,10 @@ impl System {
         gravity: [f64; 3],
     ) -> Result<Self, ModelError> {
         let body_points = bodies::place_points(&mut bodies, &mut points, gravity)?;
-        if lines.is_empty() {
+        if lines.is_empty() && bodies.is_empty() {
             return Err(ModelError::invalid(
                 "lines",
-                "a system needs at least one line",
+                "a system needs at least one line or one body",
             ));
         }
         for (i, p) in points.iter().enumerate() {

@@ -60,7 +60,12 @@ impl Network {
         let mut x: Vec<f64> = self.free.iter().flat_map(|&p| positions[p]).collect();
         for &b in &self.bodies {
             let body = &system.bodies()[b];
-            x.extend(body.point(body.inertia.centre_of_mass));
+            let mut centre = body.point(body.inertia.centre_of_mass);
+            // A body floating on its rods alone starts at its draft.
+            if let Some(z) = super::body_holds::floating_height(system, b) {
+                centre[2] += z - body.position[2];
+            }
+            x.extend(centre);
             x.extend([0.0; 3]);
         }
         x

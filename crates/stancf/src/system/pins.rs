@@ -71,7 +71,7 @@ impl StepBody {
         // take the centre's as they are.
         let joint = |s: usize, c: usize| match pin.hold {
             PinHold::Point(p) => layout.point_unknown(p, s, c),
-            PinHold::Fixed(_) => None,
+            PinHold::Fixed(_) | PinHold::Moving(_) => None,
         };
         for s in 0..3 {
             for c in 0..3 {
@@ -113,7 +113,7 @@ impl StepBody {
         // (B24) at the centre's unknown slots (0,w), (1,e), (1,w): the
         // pinned point's slot values are the hold's (B28).
         let held: [[f64; 3]; 3] = match pin.hold {
-            PinHold::Fixed(at) => [[0.0; 3], at, [0.0; 3]],
+            PinHold::Fixed(_) | PinHold::Moving(_) => pin.held,
             PinHold::Point(_) => {
                 std::array::from_fn(|s| std::array::from_fn(|c| x[joint(s, c).expect("joint")]))
             }
@@ -185,19 +185,23 @@ impl StepBody {
             PinHold::Point(p) => Some(std::array::from_fn(|c| {
                 layout.point_unknown(p, 0, c).expect("a joint's point")
             })),
-            PinHold::Fixed(_) => None,
+            PinHold::Fixed(_) | PinHold::Moving(_) => None,
         };
         Some(PinRates {
             g: crate::vec3::mat3_mul(&rotation, &hat),
             joint,
+            velocity: pin.held[2],
         })
     }
 }
 
-/// A pin in the end rates' matrix ([`StepBody::pin_rate_map`]).
+/// A pin in the end rates' matrix ([`StepBody::pin_rate_map`]): G_c, the
+/// joint's point's rate unknowns, and a given hold's end velocity v_P
+/// (zero at a fixed point; (B34) on a host's motion).
 pub(super) struct PinRates {
     pub g: [[f64; 3]; 3],
     pub joint: Option<[usize; 3]>,
+    pub velocity: [f64; 3],
 }
 
 /// (B26), (B30) in the end rates' matrix: body `q`'s (global rate
@@ -230,8 +234,9 @@ pub(super) fn pin_mass(m: &mut BorderedMatrix, q: [usize; 6], pin: &PinRates) {
 }
 
 /// (B26), (B30)'s right side: the centre's momentum rows carried to the
-/// rotation's by G_c^T and to a joint's point's, the centre's set to 0
-/// (v_G - v_P - G_c Omega = 0).
+/// rotation's by G_c^T and to a joint's point's, the centre's set to a
+/// given hold's v_P (v_G - v_P - G_c Omega = 0; v_P = 0 at a fixed point
+/// and at a joint, whose v_P is the point's unknown).
 pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], pin: &PinRates) {
     for c in 0..3 {
         let raw = rates[q[c]];
@@ -241,7 +246,7 @@ pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], pin: &PinRates) {
         if let Some(y) = pin.joint {
             rates[y[c]] += raw;
         }
-        rates[q[c]] = 0.0;
+        rates[q[c]] = pin.velocity[c];
     }
 }
 

@@ -62,6 +62,8 @@ pub struct SystemSimulation {
     pub(super) layout: SystemLayout,
     pub(super) settings: StepSettings,
     pub(super) slab: TimeSlab,
+    /// The slab's time Gauss rule.
+    pub(super) time_rule: GaussRule,
     pub(super) points: Vec<PointMotion>,
     /// The free bodies and their points (docs/method.md §15.7).
     pub(super) bodies: Vec<StepBody>,
@@ -113,7 +115,8 @@ impl SystemSimulation {
                 ),
             ));
         }
-        let t = initial[0].t;
+        // A system of bodies alone (no line) starts at t = 0.
+        let t = initial.first().map_or(0.0, |s| s.t);
         let (topology, models) = system.into_parts();
         if topology.has_free_bodies() && !settings.time_scheme.carries_momentum() {
             return Err(ModelError::invalid(
@@ -152,7 +155,7 @@ impl SystemSimulation {
         let rule = GaussRule::new(settings.time_points)
             .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
         let slab = TimeSlab::new(h, &rule);
-        let points = point_motions(&topology, &lines)?;
+        let points = point_motions(&topology, &lines, t)?;
         let point_index = (0..topology.points().len())
             .map(|p| match layout.point_base[p] {
                 Some(_) => (0..3 * layout.slots)
@@ -189,6 +192,7 @@ impl SystemSimulation {
             layout,
             settings,
             slab,
+            time_rule: rule,
             points,
             point_index,
             x: vec![0.0; n],
@@ -383,7 +387,7 @@ impl SystemSimulation {
         }
         self.settings.time_step = dt;
         let h = dt / self.settings.time_layers as f64;
-        self.slab = TimeSlab::new(h, self.lines[0].time_rule());
+        self.slab = TimeSlab::new(h, &self.time_rule);
         for line in &mut self.lines {
             line.set_time_step(dt);
         }
@@ -407,8 +411,11 @@ impl SystemSimulation {
 /// The points' states at the start: free points where their first
 /// attached line end is (its position and velocity), the others on
 /// their motion.
-fn point_motions(system: &Topology, lines: &[Simulation]) -> Result<Vec<PointMotion>, ModelError> {
-    let t = lines[0].state().t;
+fn point_motions(
+    system: &Topology,
+    lines: &[Simulation],
+    t: f64,
+) -> Result<Vec<PointMotion>, ModelError> {
     let mut out = Vec::with_capacity(system.points().len());
     for (p, point) in system.points().iter().enumerate() {
         let (e, v) = if let PointKind::Body { body, local } = point.kind {
@@ -481,12 +488,18 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                     _ => None,
                 })
                 .collect();
-            let pin = body.pin.map(|pin| super::body_terms::StepPin {
-                arm: crate::vec3::sub(pin.local, c),
-                hold: match system.joint_point(b) {
-                    Some(p) => PinHold::Point(p),
-                    None => PinHold::Fixed(system.points()[pin.point].position),
-                },
+            let pin = body.pin.map(|pin| {
+                let point = &system.points()[pin.point];
+                let hold = match (system.joint_point(b), &point.kind) {
+                    (Some(p), _) => PinHold::Point(p),
+                    (None, PointKind::Coupled(_)) => PinHold::Moving(pin.point),
+                    (None, _) => PinHold::Fixed(point.position),
+                };
+                super::body_terms::StepPin {
+                    arm: crate::vec3::sub(pin.local, c),
+                    hold,
+                    held: [[0.0; 3], point.position, [0.0; 3]],
+                }
             });
             Ok(StepBody {
                 index: b,

@@ -188,7 +188,7 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
             jacobian.as_deref_mut(),
             |line, xl, rl, view| line.assemble_line(xl, rl, view),
         );
-        let layout = &self.layout.lines[0];
+        let layout = &self.layout.time;
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {
                 continue;

@@ -22,6 +22,7 @@ impl SystemSimulation {
     /// One step of the step length, not halved.
     pub(super) fn step_once(&mut self) -> Result<StepReport, SolverError> {
         let dt = self.settings.time_step;
+        self.move_pins(dt);
         for line in &mut self.lines {
             line.begin_step();
         }
@@ -52,9 +53,26 @@ impl SystemSimulation {
         })
     }
 
+    /// The slot values over the step from t of the pins on a host's
+    /// motion (B34): the point's velocity at the start, its position and
+    /// velocity at the end.
+    fn move_pins(&mut self, dt: f64) {
+        for body in &mut self.bodies {
+            let Some(pin) = body.pin.as_mut() else {
+                continue;
+            };
+            if let PinHold::Moving(p) = pin.hold {
+                let point = &self.topology.points()[p];
+                let (_, start) = point.state_at(self.t);
+                let (end, end_velocity) = point.state_at(self.t + dt);
+                pin.held = [start, end, end_velocity];
+            }
+        }
+    }
+
     /// Adds the step's work of the water on the free points (W34).
     pub(super) fn add_point_water_work(&mut self) {
-        let layout = &self.layout.lines[0];
+        let layout = &self.layout.time;
         for (p, idx) in self.point_index.iter().enumerate() {
             let point = &self.topology.points()[p];
             if idx.is_empty() || point.water.is_none() {
@@ -80,7 +98,7 @@ impl SystemSimulation {
         for line in &mut self.lines {
             line.expand_step();
         }
-        let layout = &self.layout.lines[0];
+        let layout = &self.layout.time;
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {
                 continue;
@@ -179,7 +197,7 @@ impl SystemSimulation {
             let xl = line.unknowns();
             map.scatter(xl, &mut self.x);
         }
-        let layout = &self.layout.lines[0];
+        let layout = &self.layout.time;
         let h = self.slab.dt;
         for (p, idx) in self.point_index.iter().enumerate() {
             if idx.is_empty() {
@@ -282,7 +300,7 @@ impl SystemSimulation {
     /// Moves the points to the end of the step: free points to their
     /// converged unknowns, fixed and coupled ones along their motion.
     pub(super) fn advance_points(&mut self, dt: f64) {
-        let layout = &self.layout.lines[0];
+        let layout = &self.layout.time;
         let last = layout.layers();
         let t_end = self.t + dt;
         for (p, point) in self.topology.points().iter().enumerate() {

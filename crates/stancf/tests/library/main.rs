@@ -31,6 +31,7 @@ mod joints;
 mod lines_apart;
 mod mhk_rm1_lines;
 mod motion_tables;
+mod moving_pins;
 mod no_allocation;
 mod parallel_elements;
 mod pinned_bodies;

@@ -100,34 +100,77 @@ fn a_free_rod_rises_at_moordyns_added_mass_rate() {
     }
 }
 
-/// A free rod that holds no line (beside a line between two anchors,
-/// which a system needs) is stepped with the system: released 10 m down,
-/// lying along y, it rises at a = (rho V - m) g / (m + rho V Ca), which
-/// the Galerkin step integrates exactly: 1.648 m in 1 s, to 1e-9 m (it
-/// once stood still: a system without free points solved its lines
-/// apart and left its bodies out).
+/// A system of a rod alone, no line and no point (MoorDyn's
+/// rod_tests/AddedMass.txt as written): released 10 m down, lying along
+/// y, it rises at a = (rho V - m) g / (m + rho V Ca), which the Galerkin
+/// step integrates exactly: 1.648 m in 1 s, to 1e-9 m (it once stood
+/// still: a system without free points solved its lines apart and left
+/// its bodies out; and a system once needed a line).
 #[test]
-fn a_free_rod_that_holds_no_line_rises_too() {
+fn a_rod_alone_rises_at_moordyns_added_mass_rate() {
     let (a, b) = ([0.0, -1.0, -10.0], [0.0, 1.0, -10.0]);
     let rod = float_rod(a, b, 1.0);
     let (m, volume) = (100.0 * rod.length(), rod.volume());
     let mut body = Body::rod(BodyKind::Free, a, rod);
     body.water = Some(water([0.0; 3]));
-    let (system, state) = crate::common::body_on_no_line(body, [5.0, 0.0, -1.0]);
+    let system =
+        System::with_bodies(Vec::new(), Vec::new(), vec![body], [0.0, 0.0, -G]).expect("system");
     let settings = StepSettings {
         time_step: 0.01,
         time_scheme: TimeScheme::Galerkin,
         ..StepSettings::default()
     };
-    let mut sim = SystemSimulation::new(system, vec![state], settings).unwrap();
+    let mut sim = SystemSimulation::new(system, Vec::new(), settings).unwrap();
     let z0 = sim.free_body(0).unwrap().centre()[2];
     for _ in 0..100 {
         sim.step().expect("step");
     }
     let rise = sim.free_body(0).unwrap().centre()[2] - z0;
     let want = 0.5 * (RHO * volume - m) * G / (m + RHO * volume) * sim.time().powi(2);
-    eprintln!("a rod on no line rises {rise:.9} m, closed form {want:.9} m");
+    eprintln!("a rod alone rises {rise:.9} m, closed form {want:.9} m");
     assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
+}
+
+/// The same rod's static equilibrium, from 10 m down: it floats lying on
+/// the surface with its sections' wet fraction its density's ratio to
+/// the water's, phi = w / (rho A) = 0.4969 (Archimedes): its axis at z =
+/// -a x with Phi(x) = phi (B22), 1.2 mm above the surface, to 1e-9 m
+/// (the static tolerance 1e-10 of the rod's scale). Deep, it has no
+/// stiffness in heave: the network starts it at the height where its
+/// buoyancy carries it (bisection, `body_holds::floating_height`).
+#[test]
+fn a_rod_alone_floats_at_its_draft() {
+    let (a, b) = ([0.0, -1.0, -10.0], [0.0, 1.0, -10.0]);
+    let rod = float_rod(a, b, 1.0);
+    let fraction = 100.0 / (RHO * rod.area());
+    let mut body = Body::rod(BodyKind::Free, a, rod);
+    body.water = Some(water([0.0; 3]));
+    let system =
+        System::with_bodies(Vec::new(), Vec::new(), vec![body], [0.0, 0.0, -G]).expect("system");
+    let statics = crate::common::seeded_equilibrium(system, 1e-10);
+    let (reference, rotation) = statics.body_pose(0).expect("a free body");
+    // Phi(x) = 1/2 + (x sqrt(1 - x^2) + asin x) / pi rises with x.
+    let phi = |x: f64| 0.5 + (x * (1.0 - x * x).sqrt() + x.asin()) / std::f64::consts::PI;
+    let (mut low, mut high) = (-1.0, 1.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (low + high);
+        if phi(mid) < fraction {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    let z = -0.25 * 0.5 * (low + high);
+    eprintln!(
+        "a rod alone floats with its axis at {:.12} m, Archimedes {z:.12} m",
+        reference[2]
+    );
+    assert!(
+        (reference[2] - z).abs() < 1e-9,
+        "{} against {z}",
+        reference[2]
+    );
+    assert!((rotation[2][2] - 1.0).abs() < 1e-12 && reference[1] == -1.0);
 }
 
 /// A rod of every coefficient, turned, moving and spinning in a current,

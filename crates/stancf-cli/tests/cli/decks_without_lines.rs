@@ -1,0 +1,144 @@
+//! MoorDyn decks of rods and bodies alone, without a line (MoorDyn's
+//! rod_tests/AddedMass.txt, RodPinnedFloating.txt): the system is its
+//! bodies (docs/method.md §15.10).
+
+use crate::common::*;
+
+/// A deck of rods (their ROD TYPES row: 0.5 m across, 100 kg/m, Ca 1)
+/// with `rods` as its RODS rows and no line, in 16 m of water.
+fn rods_alone(rods: &str) -> String {
+    format!(
+        "--------------------- MoorDyn Input File ---------------------------------------
+Rods alone, no line
+---------------------- ROD TYPES -----------------------------------------------
+TypeName  Diam   Mass/m    Cd     Ca    CdEnd      CaEnd
+(name)    (m)    (kg/m)    (-)    (-)   (-)        (-)
+floatRod  0.5    100.0     0.0    1.0   0.0        1.0
+---------------------- RODS ----------------------------------------------------
+ID     RodType   Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs   RodOutputs
+(#)    (name)    (#/key)     (m)   (m)   (m)   (m)   (m)   (m)  (-)       (-)
+{rods}---------------------- OPTIONS -------------------------------------------------
+0.0005    dtM          - time step
+16.0      WtrDpth      - water depth
+0         TmaxIC       - max time for ic gen (s)
+------------------------- need this line ---------------------------------------
+"
+    )
+}
+
+/// MoorDyn's AddedMass.txt: a buoyant rod 10 m down, lying along y, and
+/// nothing else. `check` describes it (no line, one free body, six
+/// degrees of freedom); `run` floats it on the surface, its sections'
+/// wet fraction its density's ratio to the water's, w / (rho A) = 0.4969:
+/// its axis at z = -a x with Phi(x) = 1/2 + (x sqrt(1 - x^2) + asin x) /
+/// pi equal to that fraction (B22), 1.23 mm up, to 1e-9 m (the static
+/// tolerance of the rod's scale).
+#[test]
+fn a_deck_of_a_rod_alone_floats_it_at_its_draft() {
+    let d = scratch("rod-alone");
+    let deck = write_scenario(
+        &d,
+        "rod.txt",
+        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
+    );
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let so = text(&o).0;
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(
+        so.contains("degrees of freedom          6 (0 nodal coordinates of the lines")
+            && so.contains("6 per free body (1))"),
+        "{so}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let z = rows[0][header.iter().position(|h| h == "z").unwrap()];
+    let fraction = 100.0 / (1025.0 * std::f64::consts::PI * 0.0625);
+    let phi = |x: f64| 0.5 + (x * (1.0 - x * x).sqrt() + x.asin()) / std::f64::consts::PI;
+    let (mut low, mut high) = (-1.0f64, 1.0f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (low + high);
+        if phi(mid) < fraction {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    let want = -0.25 * 0.5 * (low + high);
+    eprintln!("the rod alone floats at z = {z:.12} m, Archimedes {want:.12} m");
+    assert!((z - want).abs() < 1e-9, "{z} against {want}");
+}
+
+/// MoorDyn's RodPinnedFloating.txt: two buoyant rods (10 kg/m against
+/// the 50.3 kg/m of water they displace) pinned at one end 5 m down,
+/// lying along x and along y: their equilibrium stands them upright above
+/// their pins, the rod along x pitched by -90 degrees (its end B up) and
+/// the one along y rolled by 90, their centres straight above the pin,
+/// to the static tolerance.
+#[test]
+fn a_deck_of_pinned_rods_alone_stands_them_upright() {
+    let d = scratch("pinned-rods-alone");
+    let deck = rods_alone(
+        "1      floatRod  Pinned      0     0     -5    1     0     -5     1       -\n\
+         2      floatRod  Pinned      0     0     -5    0     1     -5     1       -\n",
+    )
+    .replace("0.5    100.0", "0.25   10.0");
+    let file = write_scenario(&d, "pinned.txt", &deck);
+    let out = d.join("out");
+    let o = run_quiet(&file, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (x_rod, y_rod) = (&rows[0], &rows[1]);
+    eprintln!(
+        "pinned rods: pitch {} and roll {} degrees",
+        x_rod[col("pitch")],
+        y_rod[col("roll")]
+    );
+    assert!((x_rod[col("pitch")] + 90.0).abs() < 1e-6, "{x_rod:?}");
+    assert!((y_rod[col("roll")] - 90.0).abs() < 1e-6, "{y_rod:?}");
+    for r in [x_rod, y_rod] {
+        assert_eq!([r[col("x")], r[col("y")], r[col("z")]], [0.0, 0.0, -5.0]);
+    }
+}
+
+/// The AddedMass rod stepped from a scenario that takes its deck
+/// (`system.moordyn`, a dynamic run from the deck's pose): released at
+/// rest 10 m down it rises at a = (rho V - m) g / (m + rho V Ca) (MoorDyn:
+/// "~2.3 seconds to get to z = -1"), a parabola the Galerkin step holds
+/// exactly: its rise in 1 s to 1e-9 m.
+#[test]
+fn a_rod_alone_rises_from_a_scenario_that_takes_its_deck() {
+    let d = scratch("rod-alone-rises");
+    write_scenario(
+        &d,
+        "rod.txt",
+        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
+    );
+    let sc = write_scenario(
+        &d,
+        "rises.toml",
+        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+         initial = \"reference\"\ntime_step = 0.01\nduration = 1.0\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let (t, z) = (
+        header.iter().position(|h| h == "t").unwrap(),
+        header.iter().position(|h| h == "z").unwrap(),
+    );
+    let last = rows.last().unwrap();
+    let (volume, mass) = (std::f64::consts::PI * 0.0625 * 2.0, 200.0);
+    let accel = (1025.0 * volume - mass) * 9.80665 / (mass + 1025.0 * volume);
+    let want = 0.5 * accel * last[t] * last[t];
+    let rise = last[z] - rows[0][z];
+    eprintln!(
+        "the rod alone rises {rise:.9} m in {} s, closed form {want:.9} m",
+        last[t]
+    );
+    assert_eq!(last[t], 1.0);
+    assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
+}
