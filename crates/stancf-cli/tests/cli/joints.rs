@@ -32,11 +32,13 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// stands the flap upright (a buoyant rod pinned at its foot: turned by
 /// -atan(3/13) from its lean, to 1e-9 degrees), keeps the float in the
 /// plane of the flap (y, roll and yaw zero to 1e-9: the heading is held,
-/// §15.14), keeps the joint closed to 1e-9 m, and floats float and flap on
-/// their cans: rho A (s_can + s_flap) = m + |F_z| / g to 1e-8 of it, s the
-/// length of each can under water along its axis (the surface cuts only
-/// their sides: neither cap is cut), F_z the lines' pull on the float,
-/// g MoorDyn's 9.80665 (the static tolerance is 1e-10 of the rows).
+/// §15.14), keeps the joint closed to 1e-9 m, and floats the float on
+/// its can: rho A s_can = m - F_z / g to 1e-8 of it, s_can the length of
+/// the can under water along its axis (the surface cuts only its side:
+/// no cap is cut), F_z bodies.csv's pull on the float of the lines and of
+/// the flap at the joint (the flap's buoyancy less its weight: it stands
+/// on its own can, s_flap of it under water), g MoorDyn's 9.80665 (the
+/// static tolerance is 1e-10 of the rows).
 #[test]
 fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
     let d = scratch("md-bodies-and-rods");
@@ -68,8 +70,8 @@ fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
     let (header, rows) = read_csv(&out.join("bodies.csv"));
     let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
     let area = std::f64::consts::PI * 25.0;
-    let displaced = 1025.0 * area * (s_can + s_flap);
-    let mass = 1e6 + 1000.0 * 13.0 + 1000.0 * 178.0f64.sqrt() + fz.abs() / 9.80665;
+    let displaced = 1025.0 * area * s_can;
+    let mass = 1e6 + 1000.0 * 13.0 - fz / 9.80665;
     eprintln!(
         "md_BodiesAndRods: float at {float:?}, flap pitch {} (upright at {lean}); joint gap \
          {gap:.1e} m; displaced {displaced:.6} kg against {mass:.6} kg (cans in by {s_can:.4} \
@@ -160,25 +162,65 @@ fn drawn_for_paraview(out: &std::path::Path, steps: usize) {
     assert!((length - 4.0).abs() < 1e-12, "{length}");
 }
 
-/// A TOML rod pinned to a coupled body is refused naming the key, nothing
-/// written: a pin to a host's motion is not built.
+/// A rod (4 m, 0.2 m across, 60 kg/m: 240 kg displacing 128.8 kg of
+/// water) pinned under a coupled body that holds nothing else, in TOML
+/// (`type = "pinned"`, `body = 1`; docs/method.md §15.17): the run's
+/// static equilibrium (bodies.csv's first rows) hangs it plumb under the
+/// body and gives the body its pull, -(m - rho V) g, to 1e-9 of it;
+/// through the coupling API, `initialize` returns the same
+/// force, and as the host lifts the body at 2 m/s^2 from rest the rod
+/// follows and pulls -(m (g + a) - rho V g) (B35), each interval's mean
+/// to 1e-9 of it (the pin's force is the rod's momentum change less its
+/// weight's and buoyancy's impulses; no drag or added mass here).
 #[test]
-fn a_toml_rod_pinned_to_a_coupled_body_is_refused() {
-    let mut scenario = moored_buoy("", "type = \"static\"")
-        .replace("type = \"free\"\nposition = [0.0, 0.0, -10.0]\nmass = 500.0\n\
-                  centre_of_mass = [0.0, 0.0, -0.3]\ninertia = [300.0, 300.0, 200.0]\nvolume = 2.0\n",
-                 "type = \"coupled\"\nposition = [0.0, 0.0, -10.0]\n");
-    scenario.push_str(
-        "[[rod_types]]\nname = \"pipe\"\ndiameter = 0.2\nmass_per_length = 60.0\n[[rods]]\n\
-         id = 1\ntype = \"pinned\"\nbody = 1\nrod_type = \"pipe\"\nend_a = [0.0, 0.0, -0.6]\n\
-         end_b = [0.0, 0.0, -4.6]\n",
+fn a_rod_pinned_to_a_coupled_body_pulls_it_by_its_weight_and_its_lift() {
+    let d = scratch("rod-on-coupled-body");
+    let scenario = "title = \"rod on a coupled body\"\n[water]\ndepth = 50.0\ndensity = 1025.0\n\
+         [[bodies]]\nid = 1\ntype = \"coupled\"\nposition = [0.0, 0.0, -10.0]\n\
+         [[rod_types]]\nname = \"pipe\"\ndiameter = 0.2\nmass_per_length = 60.0\n\
+         [[rods]]\nid = 1\ntype = \"pinned\"\nbody = 1\nrod_type = \"pipe\"\n\
+         end_a = [0.0, 0.0, -0.6]\nend_b = [0.0, 0.0, -4.6]\nsegments = 4\n\
+         [analysis]\ntype = \"dynamic\"\ninitial = \"static\"\ntime_step = 0.05\nduration = 0.05\n";
+    let file = write_scenario(&d, "rod.toml", scenario);
+    let out = d.join("out");
+    let o = run_quiet(&file, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let g = 9.81;
+    let (mass, displaced) = (240.0, 1025.0 * std::f64::consts::PI * 0.01 * 4.0);
+    let hanging = -(mass - displaced) * g;
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let fz = rows[0][col("fz")];
+    assert!(
+        (fz - hanging).abs() < 1e-9 * hanging.abs(),
+        "{fz} {hanging}"
     );
-    expect_input_error(
-        "toml-joint-coupled",
-        &scenario,
-        &[
-            "rods[0].body",
-            "body 1 is coupled: a rod pinned to a host's motion is not built yet",
-        ],
+    assert!(rows[1][col("roll")].abs() < 1e-9 && rows[1][col("pitch")].abs() < 1e-9);
+    let mut c = stancf_cli::coupling::open(&file).expect("a coupled system");
+    assert_eq!(c.coupled_body_ids, [1]);
+    let pose = |t: f64| [0.0, 0.0, -10.0 + t * t, 0.0, 0.0, 0.0];
+    let rate = |t: f64| [0.0, 0.0, 2.0 * t, 0.0, 0.0, 0.0];
+    let f0 = c
+        .handle
+        .initialize(&pose(0.0), Some(&rate(0.0)))
+        .expect("equilibrium");
+    assert!((f0[2] - hanging).abs() < 1e-9 * hanging.abs(), "{f0:?}");
+    let lifted = -(mass * (g + 2.0) - displaced * g);
+    let mut worst = 0.0f64;
+    for k in 1..=20 {
+        let t = 0.05 * k as f64;
+        let f = c
+            .handle
+            .step_to(t, &pose(t), Some(&rate(t)))
+            .unwrap()
+            .interval_mean;
+        worst = worst
+            .max((f[2] - lifted).abs())
+            .max(f[0].abs())
+            .max(f[1].abs());
+    }
+    eprintln!(
+        "a rod on a coupled body: hangs by {fz:.6} N, lifted pulls {lifted:.6} N to {worst:.1e}"
     );
+    assert!(worst < 1e-9 * lifted.abs(), "{worst:e}");
 }

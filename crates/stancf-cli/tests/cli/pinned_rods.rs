@@ -190,6 +190,73 @@ fn a_rod_pinned_to_a_fixed_body_is_pinned_where_the_body_puts_its_end_a() {
     }
 }
 
+/// `Body1Pinned` on a coupled body (docs/method.md §15.17), held at its
+/// pose in a run: the rod is pinned at the body's point where the pose
+/// puts its end A (the body at (1, 2, -20) turned 90 degrees in yaw) and
+/// leans in the current as the same rod `Pinned` there does, its pose the
+/// same to 1e-9 (m, degrees); and the body is pulled by the rod and the
+/// line at its end A as the fixed pin's point is (points.csv there, the
+/// line's and the rod's pull), to 1e-9 of it.
+#[test]
+fn a_rod_pinned_to_a_coupled_body_leans_as_on_a_fixed_pin() {
+    let d = scratch("pinned-rod-coupled-body");
+    std::fs::write(d.join("current_profile.txt"), PINNED_CURRENT).unwrap();
+    let body = "1      Coupled   1.0    2    -20.0   0       0      90     0     0    0        0        0       0\n";
+    let on_body = write_scenario(
+        &d,
+        "on-body.txt",
+        &pinned_rod_deck("Body1Pinned", "-2    1     2     -2    1     6   ", body),
+    );
+    let global = write_scenario(
+        &d,
+        "global.txt",
+        &pinned_rod_deck("Pinned     ", "0     0     -18   0     0     -14 ", ""),
+    );
+    let run = |deck: &std::path::PathBuf, name: &str| {
+        let out = d.join(name);
+        let o = run_quiet(deck, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        out
+    };
+    let (a, b) = (run(&on_body, "on-body"), run(&global, "global"));
+    let row = |out: &std::path::Path, body: f64, names: [&str; 3]| {
+        let (header, rows) = read_csv(&out.join("bodies.csv"));
+        let col = |c: &str| header.iter().position(|h| h == c).unwrap();
+        let r = rows
+            .iter()
+            .find(|r| r[col("body")] == body)
+            .expect("a body");
+        names.map(|c| r[col(c)])
+    };
+    let pose = |out: &std::path::Path, body: f64| {
+        let [x, y, z] = row(out, body, ["x", "y", "z"]);
+        let [r, p, w] = row(out, body, ["roll", "pitch", "yaw"]);
+        [x, y, z, r, p, w]
+    };
+    let (on, at) = (pose(&a, 2.0), pose(&b, 1.0));
+    eprintln!("pinned to a coupled body: {on:?}; pinned globally: {at:?}");
+    assert!(on[4] > 1.0, "it leans: {on:?}");
+    for k in 0..6 {
+        assert!((on[k] - at[k]).abs() < 1e-9, "{k}: {on:?} against {at:?}");
+    }
+    let pulled = row(&a, 1.0, ["fx", "fy", "fz"]);
+    let (header, rows) = read_csv(&b.join("points.csv"));
+    let col = |c: &str| header.iter().position(|h| h == c).unwrap();
+    let pin = rows
+        .iter()
+        .find(|r| r[col("point")] == 3.0)
+        .expect("the pin's point");
+    let held = ["fx", "fy", "fz"].map(|c| pin[col(c)]);
+    let size = held.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+    eprintln!("the coupled body pulled by {pulled:?}, the fixed pin's point by {held:?}");
+    for k in 0..3 {
+        assert!(
+            (pulled[k] - held[k]).abs() < 1e-9 * size,
+            "{pulled:?} {held:?}"
+        );
+    }
+}
+
 /// The TOML scenario of a buoyant rod (as [`pinned_rod_deck`]'s, type
 /// "pinned") pinned at its foot in a uniform current of 0.5 m/s with
 /// g = 9.81, a thread without drag (3 m, 0.02 m, 1 kg/m) hanging from
@@ -346,20 +413,13 @@ fn a_rod_pinned_at_its_top_swings_as_a_physical_pendulum() {
 }
 
 /// What pinned rods do not build is refused with exit 2 naming the deck's
-/// line or the key, nothing written: a rod pinned to a coupled body
-/// (`Body1Pinned`; a TOML rod's is in `joints.rs`), a rod pinned to a
-/// host (`CoupledPinned`), a pinned rod of zero length.
+/// line or the key, nothing written: a rod pinned to a host
+/// (`CoupledPinned`), a pinned rod of zero length.
 #[test]
 fn what_pinned_rods_do_not_build_is_refused_naming_the_line_or_key() {
     let d = scratch("pinned-rod-refusals");
     std::fs::write(d.join("current_profile.txt"), PINNED_CURRENT).unwrap();
-    let coupled = "1      Coupled   0.0    0    -20.0   0       0      0      0     0    0        0        0       0\n";
     let cases = [
-        (
-            pinned_rod_deck("Body1Pinned", "0     0     2     0     0     6   ", coupled),
-            "rod 1 is pinned to body 1, which is coupled: a rod pinned to a host's motion is \
-             not built yet",
-        ),
         (
             pinned_rod_deck("CoupledPinned", "0     0     -18   0     0     -14 ", ""),
             "rod 1 is attached to \"CoupledPinned\": coupled rods are not built yet",

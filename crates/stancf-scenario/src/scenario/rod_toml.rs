@@ -110,18 +110,10 @@ pub(super) fn rods(
                 let (ends, host) = match r.body {
                     Some(_) if word == "pinned" => {
                         let on = body_index(ctx, &key("body"), r.body, bodies)?;
-                        if bodies[on].is_coupled() {
-                            return Err(ctx.err(
-                                &key("body"),
-                                format!(
-                                    "body {} is coupled: a rod pinned to a host's motion is not \
-                                     built yet (a rod pinned to a fixed or free body is)",
-                                    bodies[on].id
-                                ),
-                            ));
-                        }
-                        let free = bodies[on].kind == super::bodies::BodyType::Free;
-                        let host = free.then_some((on, a));
+                        // A joint on a free body (§15.14), a pin on a coupled
+                        // body's motion (§15.17): at a point of the body.
+                        let fixed = bodies[on].kind == super::bodies::BodyType::Fixed;
+                        let host = (!fixed).then_some((on, a));
                         ([bodies[on].point(a), bodies[on].point(b)], host)
                     }
                     _ => ([a, b], None),

@@ -243,9 +243,9 @@ type PinnedEnds = ([[f64; 3]; 2], Option<(usize, [f64; 3])>);
 
 /// The global ends of a pinned rod: as written for `Pinned`, where its
 /// body's pose puts them for `Body<n>Pinned`; and for a free body n, the
-/// joint's host: body n (its index) at end A's coordinates in it.
-/// Refused: a rod of zero length (nothing to turn), a rod pinned to a
-/// coupled body.
+/// joint's host (or for a coupled body n, the host whose motion moves the
+/// pin): body n (its index) at end A's coordinates in it. Refused: a rod
+/// of zero length (nothing to turn).
 fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<PinnedEnds, String> {
     if r.segments == 0 {
         return Err(format!(
@@ -257,17 +257,11 @@ fn pinned_ends(r: &DeckRod, bodies: &[SystemBody]) -> Result<PinnedEnds, String>
     match r.attachment {
         RodAttachment::BodyPinned(n) => {
             let b = &bodies[n - 1];
+            // On a free body a joint (§15.14); on a coupled body a pin on
+            // its host's motion (§15.17), at a point of the body.
             let host = match b.kind {
                 BodyType::Fixed => None,
-                BodyType::Free => Some((n - 1, r.end_a)),
-                _ => {
-                    return Err(format!(
-                        "rod {} is pinned to body {n}, which is {}: a rod pinned to a host's \
-                         motion is not built yet (a rod pinned to a fixed or free body is)",
-                        r.id,
-                        b.type_word()
-                    ))
-                }
+                BodyType::Free | BodyType::Coupled => Some((n - 1, r.end_a)),
             };
             Ok(([b.point(r.end_a), b.point(r.end_b)], host))
         }

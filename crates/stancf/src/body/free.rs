@@ -120,6 +120,9 @@ pub struct FreeBody {
     start_loads: Vec<([f64; 3], [f64; 3])>,
     /// The work of the water's drag so far (B10).
     water_work: f64,
+    /// The impulse of the body's own loads on its centre over the last
+    /// step (`own_impulse_over`).
+    own_impulse: [f64; 3],
     /// A constant moment on the body (global) and its work so far (B27).
     moment: [f64; 3],
     moment_work: f64,
@@ -185,6 +188,7 @@ impl FreeBody {
             last_iterations: 0,
             start_loads: Vec::with_capacity(forces.forces.len()),
             water_work: 0.0,
+            own_impulse: [0.0; 3],
             moment: [0.0; 3],
             moment_work: 0.0,
         };
@@ -383,6 +387,12 @@ impl FreeBody {
     /// The work done on the body by the water's drag so far (B10): the
     /// drag's power Q_r . v_G + Q_theta . theta_dot at the slab's time
     /// points, with their weights, step by step.
+    /// The impulse of the body's own loads (weight, buoyancy, constant
+    /// forces, the water's) on its centre over the last step, global.
+    pub fn own_impulse(&self) -> [f64; 3] {
+        self.own_impulse
+    }
+
     pub fn water_work(&self) -> f64 {
         self.water_work
     }

@@ -49,6 +49,10 @@ pub(super) struct StaticBody {
     pub stiffness: f64,
     /// [r_G; theta] at the last converged increment.
     pub converged: [f64; 6],
+    /// The pin's force on the body at the last evaluation of its rows
+    /// (the centre's rows it replaces: what balances the body's other
+    /// loads, (B35) at rest).
+    pub pin_force: [f64; 3],
     /// The body's water where a steady current drags it (B10), (B19).
     pub drag: Option<BodyWater>,
     /// The body's water where it has rods, whose buoyancy is a potential
@@ -195,7 +199,10 @@ impl StaticBody {
                 }
             }
         }
-        self.add_pin(layout, x, &q, residual, jacobian);
+        // The rows are dU/dq - f: the pin's force balances the others.
+        if let Some(raw) = self.add_pin(layout, x, &q, residual, jacobian) {
+            self.pin_force = raw;
+        }
     }
 
     /// The springs of [`super::body_holds::FloatHold`] in the rows.
@@ -236,8 +243,10 @@ impl StaticBody {
         q: &[f64; 6],
         residual: &mut [f64],
         jacobian: Option<&mut BorderedMatrix>,
-    ) {
-        let Some((arm, hold)) = self.pin else { return };
+    ) -> Option<[f64; 3]> {
+        let Some((arm, hold)) = self.pin else {
+            return None;
+        };
         let g = |k: usize| self.global(layout, k);
         let joint = |c: usize| match hold {
             PinHold::Point(p) => layout.point_unknown(p, 0, c),
@@ -285,6 +294,7 @@ impl StaticBody {
                 }
             }
         }
+        Some(raw)
     }
 
     /// The weights of the body's unknowns: its centre like a point of
@@ -337,6 +347,14 @@ impl SystemStatics {
 
     /// Free body b's pose at the last converged increment: its reference
     /// point and its rotation (body axes to global); None for a fixed body.
+    /// The force of body b's pin on it at the equilibrium (global): what
+    /// balances its weight, buoyancy, the current's drag and its lines'
+    /// pull. None if b is not a pinned free body.
+    pub fn pin_force(&self, b: usize) -> Option<[f64; 3]> {
+        let body = self.equations.bodies.iter().find(|s| s.index == b)?;
+        body.pin.map(|_| body.pin_force)
+    }
+
     pub fn body_pose(&self, b: usize) -> Option<([f64; 3], [[f64; 3]; 3])> {
         let eq = &self.equations;
         let body = eq.bodies.iter().find(|s| s.index == b)?;
@@ -432,6 +450,7 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 arm: if arm > 0.0 { arm } else { length },
                 stiffness: 0.0,
                 converged: [0.0; 6],
+                pin_force: [0.0; 3],
                 drag: body
                     .water
                     .as_ref()

@@ -67,6 +67,10 @@ pub(super) struct StepPin {
     /// [0, P, 0] at a fixed point, the point's velocity at the start and
     /// position and velocity at the end on a host's motion (B34).
     pub held: [[f64; 3]; 3],
+    /// The body's linear momentum at the step's start, and the pin's mean
+    /// force on the body over the last step (B35).
+    pub momentum_a: [f64; 3],
+    pub force: [f64; 3],
 }
 
 /// What holds a pinned point: a fixed point (global); a point whose

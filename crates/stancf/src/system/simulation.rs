@@ -231,6 +231,14 @@ impl SystemSimulation {
         self.bodies.iter().find(|s| s.index == b).map(|s| &s.body)
     }
 
+    /// The mean force of body b's pin on it over the last step (global;
+    /// docs/method.md §15.17, (B35)): None if b is not a pinned free body.
+    /// The body's pull on what holds it is its negative.
+    pub fn pin_force(&self, b: usize) -> Option<[f64; 3]> {
+        let body = self.bodies.iter().find(|s| s.index == b)?;
+        body.pin.map(|pin| pin.force)
+    }
+
     /// The force each end of line i exerts on its point (zero at a loose
     /// end), averaged over the last step.
     pub fn end_forces(&self, line: usize) -> [EndForce; 2] {
@@ -259,8 +267,8 @@ impl SystemSimulation {
         Ok(())
     }
 
-    /// The net force the attached lines exert on point p, averaged over
-    /// the last step.
+    /// The net force the attached lines (and the bodies pinned there)
+    /// exert on point p, averaged over the last step.
     pub fn point_force(&self, p: usize) -> [f64; 3] {
         self.sum_at_point(p, |li| self.end_forces[li])
     }
@@ -278,13 +286,26 @@ impl SystemSimulation {
         self.sum_at_point(p, |li| self.forces_at_time.line(li))
     }
 
-    /// The sum over the lines attached to point p of their ends' forces.
+    /// The sum over the lines attached to point p of their ends' forces,
+    /// and the pull of the bodies pinned there (minus their pins' forces
+    /// on them, the last step's mean, (B35)).
     fn sum_at_point(&self, p: usize, ends: impl Fn(usize) -> [EndForce; 2]) -> [f64; 3] {
         let mut f = [0.0; 3];
         for (li, end) in self.topology.attachments(p) {
             let force = ends(li)[end].force;
             for c in 0..3 {
                 f[c] += force[c];
+            }
+        }
+        for body in &self.bodies {
+            let Some(pin) = body.pin else { continue };
+            if self.topology.bodies()[body.index]
+                .pin
+                .is_some_and(|held| held.point == p)
+            {
+                for c in 0..3 {
+                    f[c] -= pin.force[c];
+                }
             }
         }
         f
@@ -499,6 +520,8 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                     arm: crate::vec3::sub(pin.local, c),
                     hold,
                     held: [[0.0; 3], point.position, [0.0; 3]],
+                    momentum_a: [0.0; 3],
+                    force: [0.0; 3],
                 }
             });
             Ok(StepBody {

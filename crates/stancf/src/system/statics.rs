@@ -326,12 +326,22 @@ impl SystemStatics {
         self.equations.end_forces[line]
     }
 
-    /// The net force the attached lines exert on point p.
+    /// The net force the attached lines (and the bodies pinned there)
+    /// exert on point p.
     pub fn point_force(&self, p: usize) -> [f64; 3] {
         let mut f = [0.0; 3];
         for (li, end) in self.equations.system.attachments(p) {
             for c in 0..3 {
                 f[c] += self.equations.end_forces[li][end].force[c];
+            }
+        }
+        // The bodies pinned there pull it as their pins hold them.
+        for (b, body) in self.equations.system.bodies().iter().enumerate() {
+            if body.pin.is_some_and(|pin| pin.point == p) {
+                let held = self.pin_force(b).unwrap_or([0.0; 3]);
+                for c in 0..3 {
+                    f[c] -= held[c];
+                }
             }
         }
         f
@@ -521,6 +531,11 @@ impl StaticEquations for SystemEquations {
         }
         for body in &mut self.bodies {
             body.converged = body.unknowns(&self.layout, x);
+        }
+        if self.bodies.iter().any(|b| b.pin.is_some()) {
+            // The pins' forces at the solution (the bodies' rows hold them).
+            let mut scratch = vec![0.0; x.len()];
+            self.evaluate(x, &mut scratch, None);
         }
         self.collect_end_forces();
     }

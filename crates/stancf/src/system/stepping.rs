@@ -42,6 +42,7 @@ impl SystemSimulation {
         self.finish_lines(report)?;
         self.add_point_water_work();
         self.collect_end_forces(dt);
+        self.collect_pin_forces(dt);
         self.forces_at_time.update(&self.end_forces, dt);
         self.advance_points(dt);
         self.steps += 1;
@@ -61,11 +62,33 @@ impl SystemSimulation {
             let Some(pin) = body.pin.as_mut() else {
                 continue;
             };
+            pin.momentum_a = body.body.linear_momentum();
             if let PinHold::Moving(p) = pin.hold {
                 let point = &self.topology.points()[p];
                 let (_, start) = point.state_at(self.t);
                 let (end, end_velocity) = point.state_at(self.t + dt);
                 pin.held = [start, end, end_velocity];
+            }
+        }
+    }
+
+    /// Each pin's mean force on its body over the step (B35): what of the
+    /// body's momentum change p_b - p_a its own loads' impulse and its
+    /// lines' (their mean forces at its points) do not give.
+    fn collect_pin_forces(&mut self, dt: f64) {
+        for k in 0..self.bodies.len() {
+            let Some(pin) = self.bodies[k].pin else {
+                continue;
+            };
+            let body = &self.bodies[k];
+            let mut impulse = crate::vec3::sub(body.body.linear_momentum(), pin.momentum_a);
+            impulse = crate::vec3::sub(impulse, body.body.own_impulse());
+            for bp in &body.points {
+                let f = self.point_force(bp.point);
+                impulse = crate::vec3::sub(impulse, f.map(|c| c * dt));
+            }
+            if let Some(pin) = self.bodies[k].pin.as_mut() {
+                pin.force = impulse.map(|c| c / dt);
             }
         }
     }

@@ -208,6 +208,7 @@ impl FreeBody {
     pub fn advance(&mut self, x: &[f64]) -> Result<(), SolverError> {
         let slots = self.slots(x);
         self.water_work += self.drag_work(&slots);
+        self.own_impulse = self.own_impulse_over(&slots);
         self.moment_work += self.moment_power_integral(&slots);
         let theta_b = slots[6];
         let turn = crate::vec3::norm(theta_b);
@@ -252,6 +253,40 @@ impl FreeBody {
             }
         }
         work
+    }
+
+    /// The impulse on the centre over the step whose slot blocks are
+    /// `slots` of the body's own loads, those of its rows on r_G summed
+    /// over the step (its position shapes sum to one): the constant
+    /// forces times dt, and at the time points dL/dr_G (the rods'
+    /// buoyancy, and their added mass as the wet part moves) and the
+    /// water's Q_r (B10), (B32), by the rows' quadrature. The rest of the
+    /// body's momentum change is what holds it: its lines and a pin
+    /// (§15.17).
+    fn own_impulse_over(&self, slots: &[[f64; 3]; 8]) -> [f64; 3] {
+        let total = self.forces.total();
+        let mut impulse = total.map(|f| f * self.slab.dt);
+        let mut ctx = self.context(&self.start_loads);
+        for point in &self.slab.points {
+            ctx.time = FlowTime::At(self.time + point.offset);
+            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
+                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
+            };
+            let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
+            let v = variables([
+                at(t_dot, 0),
+                at(t, 4),
+                at(t_dot, 4),
+                add(self.centre, at(t, 0)),
+            ]);
+            let density = ctx.density(&v);
+            let water = ctx.drag(&v).map(|(on_centre, _)| on_centre.map(|q| q.v));
+            for i in 0..3 {
+                let q = water.map_or(0.0, |w| w[i]);
+                impulse[i] += point.w_dt * (density.g[9 + i] + q);
+            }
+        }
+        impulse
     }
 
     /// The constant moment's work over the step whose slot blocks are
