@@ -74,16 +74,19 @@ StancfSystem *stancf_create_with(const char *path, unsigned int flags);
 /* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 
-/* *n = the number of coupled degrees of freedom, 6 per coupled body and 3
-   per coupled point. */
+/* *n = the number of coupled degrees of freedom, 6 per coupled body (3 per
+   body pinned to the host, MoorDyn's CoupledPinned: its reference point's
+   position, velocity and pull) and 3 per coupled point. */
 int stancf_ncoupled_dof(StancfSystem *s, unsigned int *n);
 
 /* ids[k] = the id of coupled point k, after the bodies in the arrays
-   ((ncoupled_dof - 6 nb) / 3 values, nb the coupled bodies). */
+   ((ncoupled_dof - 6 nb) / 3 values, nb the coupled bodies, when none is
+   pinned to the host; such a body takes 3 numbers, not 6). */
 int stancf_coupled_ids(StancfSystem *s, int64_t *ids);
 
-/* *n = nb, the number of coupled bodies (6 values each, first in the
-   arrays); ids[k] = the id of coupled body k (nb values). */
+/* *n = nb, the number of coupled bodies (6 values each, 3 for a body
+   pinned to the host, first in the arrays); ids[k] = the id of coupled
+   body k (nb values). */
 int stancf_coupled_body_count(StancfSystem *s, unsigned int *n);
 int stancf_coupled_body_ids(StancfSystem *s, int64_t *ids);
 

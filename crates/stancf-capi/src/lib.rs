@@ -140,7 +140,8 @@ pub unsafe extern "C" fn stancf_ncoupled_dof(s: *mut StancfSystem, n: *mut c_uin
 
 /// The coupled points' ids (not those on coupled bodies), in the order
 /// of the coupling arrays after the bodies (`(ncoupled_dof - 6 nb) / 3`
-/// values, nb from `stancf_coupled_body_count`).
+/// values, nb from `stancf_coupled_body_count`, when no body is pinned
+/// to the host; a CoupledPinned body takes 3 numbers, not 6).
 ///
 /// # Safety
 /// `s` is looked up, never read; `ids` is NULL or has room for
@@ -156,7 +157,8 @@ pub unsafe extern "C" fn stancf_coupled_ids(s: *mut StancfSystem, ids: *mut i64)
     })
 }
 
-/// The number of coupled bodies, whose 6 numbers each come first in the
+/// The number of coupled bodies, whose 6 numbers each (3 for a body
+/// pinned to the host, MoorDyn's CoupledPinned) come first in the
 /// coupling arrays.
 ///
 /// # Safety

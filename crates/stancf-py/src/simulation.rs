@@ -82,6 +82,8 @@ type LineArrays = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
 #[pyclass(module = "stancf._stancf", name = "Simulation", frozen)]
 pub struct PySimulation {
     inner: Mutex<Inner>,
+    /// The coupling arrays' length (the handle's).
+    coupled_dof: usize,
     coupled_body_ids: Vec<i64>,
     coupled_ids: Vec<i64>,
     line_ids: Vec<i64>,
@@ -130,6 +132,7 @@ impl PySimulation {
         let opened = stancf_scenario::coupling::from_text_with(text, &path, allow_large)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
         Ok(PySimulation {
+            coupled_dof: opened.handle.coupled_dof(),
             inner: Mutex::new(Inner {
                 handle: opened.handle,
                 last: None,
@@ -142,10 +145,11 @@ impl PySimulation {
         })
     }
 
-    /// 6 per coupled body, then 3 per coupled point.
+    /// 6 per coupled body (3 per body pinned to the host, MoorDyn's
+    /// CoupledPinned), then 3 per coupled point.
     #[getter]
     fn coupled_dof(&self) -> usize {
-        6 * self.coupled_body_ids.len() + 3 * self.coupled_ids.len()
+        self.coupled_dof
     }
 
     /// The coupled bodies' ids, in the order of the coupling arrays

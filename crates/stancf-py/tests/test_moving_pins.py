@@ -52,3 +52,37 @@ def test_a_lifted_body_is_pulled_by_the_rod_pinned_under_it(tmp_path):
         xd = np.array([0.0, 0.0, 2.0 * t, 0.0, 0.0, 0.0])
         f = sim.step_to(t, x, xd)
     assert abs(f[2] + (mass * (g + 2.0) - lift)) < 1e-9 * mass * g
+
+
+DECK = """--------------------- MoorDyn Input File ---------------------------------------
+A body pinned to the host, a can hanging under it
+---------------------- ROD TYPES -----------------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (-)      (kg/m)    (-)    (-)     (-)      (-)
+Can           2        5e3       0.0    1.0     0.0      1.0
+---------------------- BODIES --------------------------------------------------
+ID   Attachment       X0    Y0    Z0    r0   p0   y0   Mass  CG*  I*   Volume  CdA*  Ca*
+(#)  (-)              (m)   (m)   (m)   (deg)(deg)(deg)(kg)  (m)  (kg-m^2)(m^3) (m^2) (-)
+1    CoupledPinned    0.00  0.00  -5.00 0.00 0.00 0.00 0.00  0.00 0.0  0.00    0.00  0.00
+---------------------- RODS ----------------------------------------------------
+ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb    NumSegs  RodOutputs
+(#)  (name)   (#/key)     (m)   (m)   (m)   (m)   (m)   (m)   (-)      (-)
+1    Can      Body1       0     0     -5    0     0     -15   3        -
+---------------------- OPTIONS -------------------------------------------------
+0.01     dtM          - time step to use in mooring integration
+30       WtrDpth      - water depth
+------------------------- need this line ---------------------------------------
+"""
+
+
+def test_a_coupled_pinned_body_takes_three_numbers_and_pulls_by_its_wet_weight(tmp_path):
+    """MoorDyn's CoupledPinned body: its reference point the host's, 3
+    numbers in the coupling arrays, its pull at rest -(m - rho V) g."""
+    path = tmp_path / "pinned.txt"
+    path.write_text(DECK)
+    sim = Simulation(str(path))
+    assert sim.coupled_dof == 3
+    f = sim.initialize(np.array([0.0, 0.0, -5.0]))
+    wet_weight = (50_000.0 - 1025.0 * math.pi * 10.0) * 9.80665
+    assert abs(f[2] + wet_weight) < 1e-9 * wet_weight
+    assert abs(f[0]) < 1e-9 * wet_weight and abs(f[1]) < 1e-9 * wet_weight

@@ -59,9 +59,17 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
                 } else {
                     String::new()
                 };
+                let held = match body.host_pin {
+                    Some(p) => format!(
+                        "pinned to the host (3 degrees of freedom, turning about its reference \
+                         point on point {}, which a coupling code moves; held at its pose in a \
+                         run)",
+                        sc.points[p].id
+                    ),
+                    None => "free (6 degrees of freedom)".to_string(),
+                };
                 format!(
-                    "free (6 degrees of freedom), mass {} kg, centre of mass {} m, moments {} \
-                     kg m^2{water}",
+                    "{held}, mass {} kg, centre of mass {} m, moments {} kg m^2{water}",
                     Sig(body.mass),
                     v3(body.centre_of_mass),
                     v3(body.moments)
@@ -105,7 +113,8 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
         .filter(|p| p.kind == PointType::Free)
         .count();
     let free_bodies = sc.bodies.iter().filter(|b| b.is_free()).count();
-    let pins = sc.rods.iter().filter_map(|r| r.pin_point()).count();
+    let pins = sc.rods.iter().filter_map(|r| r.pin_point()).count()
+        + sc.bodies.iter().filter(|b| b.host_pin.is_some()).count();
     let clamps: usize = sc
         .lines
         .iter()

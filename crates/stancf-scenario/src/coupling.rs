@@ -102,6 +102,9 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     let mut order: Vec<usize> = (0..system.points().len())
         .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
         .filter(|&p| sc.points[p].kind == PointType::Coupled)
+        // A CoupledPinned body's point takes its 3 numbers among the
+        // bodies' (the core's order).
+        .filter(|&p| !sc.bodies.iter().any(|b| b.host_pin == Some(p)))
         .collect();
     order.sort_by_key(|&p| sc.points[p].id);
     let handle = CoupledSystem::new(

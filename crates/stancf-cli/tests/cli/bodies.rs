@@ -345,16 +345,11 @@ fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
     assert!(net.abs() < 1e-9 * weight, "net force {net}");
 }
 
-/// The deck's refusals name its line: a pinned body, a point on a body
-/// with a drag area of its own, a free body without moments of inertia
-/// (which MoorDyn takes, its body's inertia holding the line ends').
+/// The deck's refusals name its line: a point on a body with a drag area
+/// of its own, a free body without moments of inertia (which MoorDyn
+/// takes, its body's inertia holding the line ends').
 #[test]
-fn a_pinned_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
-    let pinned = body_deck(
-        " 1     CoupledPinned    0      0    -50     0      0      0    2.1244e4    0    1.0e4    0     0        0",
-        "",
-        "",
-    );
+fn a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
     let dragging_point = body_deck(
         "",
         " 1        Body1     0        0         0        0        0        1.5        0",
@@ -366,12 +361,6 @@ fn a_pinned_body_a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_re
         "",
     );
     for (name, deck, needle, words) in [
-        (
-            "pinned-body",
-            pinned,
-            " 1     CoupledPinned",
-            "pinned bodies are not built yet",
-        ),
         (
             "dragging-point",
             dragging_point,

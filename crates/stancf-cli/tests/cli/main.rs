@@ -12,6 +12,7 @@ mod bodies_in_waves;
 mod clamped_lines;
 mod compression;
 mod coupled_bodies;
+mod coupled_pinned;
 mod coupling;
 mod deck_statics;
 mod decks_without_lines;

@@ -14,8 +14,9 @@
 //!   `decomposeString` does: `Fixed`, `Fix`, `Anchor` hold the body;
 //!   `Coupled`, `Vessel`, `Ves`, `Cpld` make a coupled body, moved by a
 //!   coupling code (docs/method.md §13.6); the pinned words
-//!   (`CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin`) are refused, as
-//!   pinned bodies are not built yet; every other word is a free body, as
+//!   (`CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin`) are free bodies
+//!   pinned at their reference point to a point the host moves
+//!   (docs/method.md §15.17); every other word is a free body, as
 //!   MoorDyn-C takes it.
 
 use super::layout::{Row, Section};
@@ -30,6 +31,10 @@ pub enum BodyAttachment {
     /// `Coupled`, `Vessel`, `Ves` or `Cpld`: moved by a coupling code (its
     /// mass, inertia and water are the host's, as MoorDyn zeroes them).
     Coupled,
+    /// `CoupledPinned`, `VesselPinned`, `VesPin` or `CpldPin`: its
+    /// reference point moved by a coupling code, free to turn about it
+    /// (its mass, inertia and water its own).
+    CoupledPinned,
     /// Any other word MoorDyn-C reads as free (`Free`, `Body`, ...).
     Free,
 }
@@ -76,7 +81,7 @@ pub(crate) fn bodies(s: &Section) -> Result<Vec<DeckBody>, DeckError> {
         let id = count(row, 0, "the body ID")?;
         sequential(row, id, out.len() + 1, "body")?;
         let what = |col: &str| format!("{col} of body {id}");
-        let attachment = attachment(row, id)?;
+        let attachment = attachment(row);
         let position = [
             number(row, 2, &what("X0"))?,
             number(row, 3, &what("Y0"))?,
@@ -125,9 +130,8 @@ pub(crate) fn bodies(s: &Section) -> Result<Vec<DeckBody>, DeckError> {
     Ok(out)
 }
 
-/// The attachment of a body: fixed, coupled, free, or refused (pinned
-/// bodies are not built yet).
-fn attachment(row: &Row, id: usize) -> Result<BodyAttachment, DeckError> {
+/// The attachment of a body: fixed, coupled, coupled pinned or free.
+fn attachment(row: &Row) -> BodyAttachment {
     let w = row.words[1];
     let upper = w.to_ascii_uppercase();
     let letters: String = upper
@@ -135,17 +139,10 @@ fn attachment(row: &Row, id: usize) -> Result<BodyAttachment, DeckError> {
         .take_while(|c| c.is_ascii_alphabetic())
         .collect();
     match letters.as_str() {
-        "ANCHOR" | "FIXED" | "FIX" => Ok(BodyAttachment::Fixed),
-        "VESSEL" | "VES" | "COUPLED" | "CPLD" => Ok(BodyAttachment::Coupled),
-        "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => Err(DeckError::at(
-            row.line,
-            format!(
-                "body {id} is \"{w}\", a body pinned to a coupling code's motion (coupled in \
-                 position, free in rotation): pinned bodies are not built yet (a Fixed, \
-                 Coupled or Free body is)"
-            ),
-        )),
-        _ => Ok(BodyAttachment::Free),
+        "ANCHOR" | "FIXED" | "FIX" => BodyAttachment::Fixed,
+        "VESSEL" | "VES" | "COUPLED" | "CPLD" => BodyAttachment::Coupled,
+        "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => BodyAttachment::CoupledPinned,
+        _ => BodyAttachment::Free,
     }
 }
 

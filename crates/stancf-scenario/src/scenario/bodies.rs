@@ -60,6 +60,10 @@ pub struct SystemBody {
     /// (global, N and N m; docs/method.md §15.13).
     pub force: [f64; 3],
     pub moment: [f64; 3],
+    /// A free body pinned at its reference point to a coupled point (its
+    /// index among the points) that a host moves: MoorDyn's
+    /// CoupledPinned body (docs/method.md §15.17).
+    pub host_pin: Option<usize>,
 }
 
 impl SystemBody {
@@ -82,6 +86,7 @@ impl SystemBody {
             angular_velocity: [0.0; 3],
             force: [0.0; 3],
             moment: [0.0; 3],
+            host_pin: None,
         }
     }
 

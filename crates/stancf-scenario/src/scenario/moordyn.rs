@@ -79,6 +79,7 @@ pub(super) fn deck_scenario(
         })
         .collect::<Result<Vec<_>, _>>()?;
     let mut points: Vec<SystemPoint> = deck.points.iter().map(|p| deck_point(p, &bodies)).collect();
+    host_pins(deck, &mut bodies, &mut points);
     // Rods after the deck's bodies and points: a free rod's body and the
     // points at rod ends come after them (super::rods).
     let (rods, ends) = super::rods::deck_rods(deck, file, &mut bodies, &mut points)?;
@@ -94,7 +95,9 @@ pub(super) fn deck_scenario(
     notes.extend(step_notes(deck));
     notes.extend(channel_notes);
     notes.extend(depth_note);
-    let names = super::names::Names::of_deck(deck, None).with_rods(&rods, deck.points.len());
+    let names = super::names::Names::of_deck(deck, None)
+        .with_rods(&rods, deck.points.len())
+        .with_host_pins(&bodies);
     Ok(SystemScenario {
         title,
         line_types: deck.line_types.iter().map(deck_line_type).collect(),
@@ -196,6 +199,36 @@ fn deck_line_type(t: &crate::moordyn::LineType) -> LineType {
     }
 }
 
+/// The points the host moves for the deck's CoupledPinned bodies: a
+/// coupled point at each one's reference point (its id after the deck's
+/// points), the body pinned there (docs/method.md §15.17).
+fn host_pins(deck: &Deck, bodies: &mut [SystemBody], points: &mut Vec<SystemPoint>) {
+    for (b, row) in deck.bodies.iter().enumerate() {
+        if row.attachment != BodyAttachment::CoupledPinned {
+            continue;
+        }
+        let id = points
+            .iter()
+            .map(|p| p.id)
+            .max()
+            .unwrap_or(0)
+            .saturating_add(1);
+        points.push(SystemPoint {
+            id,
+            kind: PointType::Coupled,
+            position: bodies[b].position,
+            mass: 0.0,
+            force: [0.0; 3],
+            volume: 0.0,
+            drag_area: 0.0,
+            ca: 0.0,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
+        });
+        bodies[b].host_pin = Some(points.len() - 1);
+    }
+}
+
 /// A POINTS row as a point: mass, volume, CdA and Ca act on free points
 /// only (a fixed or coupled point's motion is given; a point on a body
 /// has none, checked on reading). A point on a body (`bodies`: the
@@ -252,7 +285,9 @@ fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, Scenari
                 ..fixed
             })
         }
-        BodyAttachment::Free => {}
+        // Free, or pinned at its reference point to the host's point
+        // (the point is made with the deck's points, [`host_pins`]).
+        BodyAttachment::Free | BodyAttachment::CoupledPinned => {}
     }
     let moordyn_differs = "MoorDyn accepts it, its body's mass matrix also holding the masses \
                            of the line ends and rods attached to the body; stancf's body \

@@ -23,6 +23,9 @@ struct RodNames {
     bodies: Vec<(usize, usize)>,
     /// A deck's points at rod ends: (point index, rod index).
     points: Vec<(usize, usize)>,
+    /// The points a host moves for CoupledPinned bodies: (point index,
+    /// body index).
+    host_pins: Vec<(usize, usize)>,
 }
 
 /// The lines of a deck's rows and options.
@@ -156,10 +159,24 @@ impl Names {
         }
     }
 
+    /// The names of the points made for CoupledPinned bodies: their
+    /// bodies' (`bodies[b].host_pin` indices).
+    pub fn with_host_pins(mut self, bodies: &[super::SystemBody]) -> Names {
+        for (b, body) in bodies.iter().enumerate() {
+            if let Some(p) = body.host_pin {
+                self.rods.host_pins.push((p, b));
+            }
+        }
+        self
+    }
+
     /// `key` of point i, or its `column` in the deck.
     pub fn point(&self, i: usize, key: &str, column: &str) -> String {
         if let Some(&(_, k)) = self.rods.points.iter().find(|(p, _)| *p == i) {
             return self.rod(k, key);
+        }
+        if let Some(&(_, b)) = self.rods.host_pins.iter().find(|(p, _)| *p == i) {
+            return self.body(b, "position", "X0, Y0, Z0");
         }
         match &self.deck {
             Some(d) => d.at(d.points[i], column),

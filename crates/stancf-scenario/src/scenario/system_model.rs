@@ -176,6 +176,13 @@ impl SystemScenario {
         };
         body.rods = super::rods::rods_of_body(self, i);
         body.pin = super::rods::pin_of_body(self, i);
+        // A CoupledPinned body: its reference point on the host's point.
+        if let Some(point) = b.host_pin {
+            body.pin = Some(stancf::system::Pin {
+                local: [0.0; 3],
+                point,
+            });
+        }
         // A rod at a joint starts moving with its host's point there.
         if let Some((h, local)) = super::rods::joint_host(self, i) {
             let host = &self.bodies[h];

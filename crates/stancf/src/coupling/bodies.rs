@@ -1,7 +1,8 @@
 //! Coupled bodies in the coupling arrays (docs/method.md §13.6): a
 //! floating platform moved by another code, as OpenFAST moves MoorDyn's
 //! coupled bodies. In MoorDyn's order the arrays hold the coupled
-//! bodies' 6 numbers each, then the coupled points' 3:
+//! bodies' 6 numbers each (3 for a body pinned to the host, MoorDyn's
+//! CoupledPinned), then the coupled points' 3:
 //!
 //! - x: the reference point's position (m) and the roll, pitch and yaw
 //!   (radians) of MoorDyn's convention, R = R_x(roll) R_y(pitch) R_z(yaw)
@@ -13,6 +14,12 @@
 //!   about the reference point (global axes), summed over the body's
 //!   points, f = sum f_P, m = sum (x_P - r) x f_P.
 //!
+//! A body pinned at its reference point to a coupled point not on a body
+//! (MoorDyn's CoupledPinned: the host moves its reference point, it turns
+//! freely about it) takes 3 numbers among the bodies': the pin's position
+//! and velocity, and the force its pull on the host (docs/method.md
+//! §15.17, (B35)).
+//!
 //! Inside, every point on a coupled body is a coupled point moving along
 //! the body point's position r + R xi and velocity v + w x R xi at the
 //! interval's ends, (K1)-(K2) per point, as a coupled point does.
@@ -21,6 +28,7 @@ use super::identity::Identity;
 use super::{identity_order, CoupledSystem};
 use crate::body::pose::{point, rotate, rotation_from_moordyn_angles};
 use crate::error::ModelError;
+use crate::system::{PointKind, System};
 use crate::vec3::{add, cross, sub};
 
 /// A coupled body of the arrays: its index among the system's bodies and
@@ -30,6 +38,20 @@ use crate::vec3::{add, cross, sub};
 pub(super) struct CoupledBody {
     pub body: usize,
     pub points: Vec<(usize, [f64; 3])>,
+    /// A body pinned to the host (CoupledPinned): its pin's place in the
+    /// coupled points' list; its 3 numbers move that point.
+    pub pin: Option<usize>,
+}
+
+impl CoupledBody {
+    /// Its numbers in the arrays: 6, or 3 for a body pinned to the host.
+    fn width(&self) -> usize {
+        if self.pin.is_some() {
+            3
+        } else {
+            6
+        }
+    }
 }
 
 /// The arrays' layout: the coupled bodies, then the coupled points not on
@@ -82,17 +104,18 @@ fn pose(x: &[f64]) -> ([f64; 3], [[f64; 3]; 3]) {
 }
 
 impl ArrayLayout {
-    /// Length of the arrays: 6 per coupled body, 3 per coupled point.
+    /// Length of the arrays: 6 per coupled body (3 pinned), 3 per
+    /// coupled point.
     pub fn dof(&self) -> usize {
-        6 * self.bodies.len() + 3 * self.plain.len()
+        self.body_start(self.bodies.len()) + 3 * self.plain.len()
     }
 
     /// Start of body k's numbers and of plain point k's.
     fn body_start(&self, k: usize) -> usize {
-        6 * k
+        self.bodies[..k].iter().map(CoupledBody::width).sum()
     }
     fn point_start(&self, k: usize) -> usize {
-        6 * self.bodies.len() + 3 * k
+        self.body_start(self.bodies.len()) + 3 * k
     }
 
     /// The coupled points' positions (3 each, in the list's order, `n`
@@ -101,6 +124,10 @@ impl ArrayLayout {
         let mut out = vec![0.0; 3 * n];
         for (k, body) in self.bodies.iter().enumerate() {
             let s = self.body_start(k);
+            if let Some(place) = body.pin {
+                out[3 * place..3 * place + 3].copy_from_slice(&x[s..s + 3]);
+                continue;
+            }
             let (r, rotation) = pose(&x[s..s + 6]);
             for &(place, local) in &body.points {
                 out[3 * place..3 * place + 3].copy_from_slice(&point(r, &rotation, local));
@@ -118,6 +145,10 @@ impl ArrayLayout {
         let mut out = vec![0.0; 3 * n];
         for (k, body) in self.bodies.iter().enumerate() {
             let s = self.body_start(k);
+            if let Some(place) = body.pin {
+                out[3 * place..3 * place + 3].copy_from_slice(&xd[s..s + 3]);
+                continue;
+            }
             let (_, rotation) = pose(&x[s..s + 6]);
             let (v, w) = (
                 [xd[s], xd[s + 1], xd[s + 2]],
@@ -147,6 +178,10 @@ impl ArrayLayout {
         let mut out = vec![0.0; self.dof()];
         for (k, body) in self.bodies.iter().enumerate() {
             let s = self.body_start(k);
+            if let Some(place) = body.pin {
+                out[s..s + 3].copy_from_slice(&force(place));
+                continue;
+            }
             let r = reference(k);
             for &(place, _) in &body.points {
                 let f = force(place);
@@ -168,6 +203,9 @@ impl ArrayLayout {
     /// arrays: its body's 6, or its own 3.
     pub fn array_range(&self, place: usize) -> (usize, usize) {
         for (k, body) in self.bodies.iter().enumerate() {
+            if body.pin == Some(place) {
+                return (self.body_start(k), 3);
+            }
             if body.points.iter().any(|&(p, _)| p == place) {
                 return (self.body_start(k), 6);
             }
@@ -187,6 +225,65 @@ impl ArrayLayout {
     }
 }
 
+/// The coupling arrays' layout of `system` whose coupled points are
+/// `coupled` (system order): its coupled bodies in body order, their
+/// points' places in `coupled`, then the other coupled points.
+pub(super) fn array_layout(system: &System, coupled: &[usize]) -> ArrayLayout {
+    let place = |p: usize| {
+        coupled
+            .iter()
+            .position(|&q| q == p)
+            .expect("a coupled point")
+    };
+    let coupled_body_points: Vec<usize> = (0..system.bodies().len())
+        .filter(|&b| system.bodies()[b].kind == crate::system::BodyKind::Coupled)
+        .flat_map(|b| {
+            system
+                .body_points(b)
+                .iter()
+                .map(|&(p, _)| p)
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let bodies: Vec<CoupledBody> = (0..system.bodies().len())
+        .filter_map(|b| {
+            if system.bodies()[b].kind == crate::system::BodyKind::Coupled {
+                let points = system.body_points(b);
+                let points = points.iter().map(|&(p, local)| (place(p), local));
+                return Some(CoupledBody {
+                    body: b,
+                    points: points.collect(),
+                    pin: None,
+                });
+            }
+            host_pin(system, b, &coupled_body_points).map(|p| CoupledBody {
+                body: b,
+                points: Vec::new(),
+                pin: Some(place(p)),
+            })
+        })
+        .collect();
+    let on_body: Vec<usize> = bodies
+        .iter()
+        .flat_map(|b| b.points.iter().map(|&(k, _)| k).chain(b.pin))
+        .collect();
+    let plain = (0..coupled.len())
+        .filter(|k| !on_body.contains(k))
+        .collect();
+    ArrayLayout { bodies, plain }
+}
+
+/// The coupled point free body b is pinned to at its reference point, if
+/// that point is on no coupled body (`on_bodies`; MoorDyn's CoupledPinned
+/// body: the host moves its reference point; docs/method.md §15.17).
+fn host_pin(system: &System, b: usize, on_bodies: &[usize]) -> Option<usize> {
+    let body = &system.bodies()[b];
+    let pin = body.pin.filter(|pin| pin.local == [0.0; 3])?;
+    let point = &system.points()[pin.point];
+    let coupled = matches!(point.kind, PointKind::Coupled(_)) && !on_bodies.contains(&pin.point);
+    (body.kind == crate::system::BodyKind::Free && coupled).then_some(pin.point)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -201,6 +298,7 @@ mod tests {
             bodies: vec![CoupledBody {
                 body: 0,
                 points: vec![(0, [1.0, 0.0, 0.0]), (2, [-1.0, 0.0, 0.0])],
+                pin: None,
             }],
             plain: vec![1],
         };

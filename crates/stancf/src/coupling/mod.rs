@@ -36,7 +36,7 @@ use crate::model::Model;
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::statics::StaticSettings;
 use crate::system::{PointKind, System, SystemSimulation, SystemStatics, Topology};
-use bodies::{ArrayLayout, CoupledBody};
+use bodies::{array_layout, ArrayLayout};
 use identity::{Identity, SystemDigest};
 
 /// The forces of the lines on the coupled points after an interval,
@@ -267,6 +267,9 @@ impl CoupledSystem {
         for b in &self.layout.bodies {
             let body = &self.system.bodies()[b.body];
             x.extend(body.position);
+            if b.pin.is_some() {
+                continue;
+            }
             let angles = crate::body::pose::moordyn_angles(&body.rotation);
             x.extend(angles.map(f64::to_radians));
         }
@@ -276,8 +279,8 @@ impl CoupledSystem {
         x
     }
 
-    /// Length of the coupling arrays: 6 per coupled body, 3 per coupled
-    /// point.
+    /// Length of the coupling arrays: 6 per coupled body (3 per body
+    /// pinned to the host, MoorDyn's CoupledPinned), 3 per coupled point.
     pub fn coupled_dof(&self) -> usize {
         self.layout.dof()
     }
@@ -552,37 +555,6 @@ fn not_initialized() -> ModelError {
 
 fn triple(values: &[f64], k: usize) -> [f64; 3] {
     [values[3 * k], values[3 * k + 1], values[3 * k + 2]]
-}
-
-/// The coupling arrays' layout of `system` whose coupled points are
-/// `coupled` (system order): its coupled bodies in body order, their
-/// points' places in `coupled`, then the other coupled points.
-fn array_layout(system: &System, coupled: &[usize]) -> ArrayLayout {
-    let place = |p: usize| {
-        coupled
-            .iter()
-            .position(|&q| q == p)
-            .expect("a coupled point")
-    };
-    let bodies: Vec<CoupledBody> = (0..system.bodies().len())
-        .filter(|&b| system.bodies()[b].kind == crate::system::BodyKind::Coupled)
-        .map(|b| CoupledBody {
-            body: b,
-            points: system
-                .body_points(b)
-                .iter()
-                .map(|&(p, local)| (place(p), local))
-                .collect(),
-        })
-        .collect();
-    let on_body: Vec<usize> = bodies
-        .iter()
-        .flat_map(|b| b.points.iter().map(|&(k, _)| k))
-        .collect();
-    let plain = (0..coupled.len())
-        .filter(|k| !on_body.contains(k))
-        .collect();
-    ArrayLayout { bodies, plain }
 }
 
 /// What a state's identity records of the arrays' order: the coupled

@@ -46,7 +46,13 @@ pub(super) fn body_stiffness(
         .into_iter()
         .map(|b| (b, statics.body_stiffness(b)))
         .collect();
-    for (k, body) in layout.bodies.iter().enumerate() {
+    // A body pinned to the host is a free body (above), not a coupled one.
+    for (k, body) in layout
+        .bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.pin.is_none())
+    {
         let reference = layout.reference(x, k);
         out.push((
             body.body,

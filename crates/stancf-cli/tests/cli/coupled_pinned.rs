@@ -1,0 +1,95 @@
+//! MoorDyn's CoupledPinned body (docs/method.md §15.17): its reference
+//! point moved by the host, free to turn about it; 3 numbers among the
+//! coupled bodies' in the coupling arrays.
+
+use crate::common::*;
+
+/// A deck of a CoupledPinned body at (0, 0, -5) carrying a can (2 m
+/// across, 10 m long, 5 t/m, no drag, Ca and CaEnd 1) from 5 m to 15 m
+/// under its reference point, nothing else (MoorDyn's
+/// body_tests/pinnedBody.txt in water).
+const PINNED_BODY: &str =
+    "--------------------- MoorDyn Input File ---------------------------------------
+A body pinned to the host, a can hanging under it
+---------------------- ROD TYPES -----------------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (-)      (kg/m)    (-)    (-)     (-)      (-)
+Can           2        5e3       0.0    1.0     0.0      1.0
+---------------------- BODIES --------------------------------------------------
+ID   Attachment       X0    Y0    Z0    r0   p0   y0   Mass  CG*  I*   Volume  CdA*  Ca*
+(#)  (-)              (m)   (m)   (m)   (deg)(deg)(deg)(kg)  (m)  (kg-m^2)(m^3) (m^2) (-)
+1    CoupledPinned    0.00  0.00  -5.00 0.00 0.00 0.00 0.00  0.00 0.0  0.00    0.00  0.00
+---------------------- RODS ----------------------------------------------------
+ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb    NumSegs  RodOutputs
+(#)  (name)   (#/key)     (m)   (m)   (m)   (m)   (m)   (m)   (-)      (-)
+1    Can      Body1       0     0     -5    0     0     -15   3        -
+---------------------- OPTIONS -------------------------------------------------
+0.01     dtM          - time step to use in mooring integration
+30       WtrDpth      - water depth
+------------------------- need this line ---------------------------------------
+";
+
+/// `check` says what holds the body (3 degrees of freedom about the
+/// host's point); the static run hangs the can under it and the host's
+/// point carries its weight less its buoyancy, -(m - rho V) g (points.csv);
+/// through the coupling API the body takes 3 numbers (MoorDyn's Step
+/// reads 3 for a CoupledPinned body), `initialize` returns that pull, and
+/// as the host lifts the body at a = 2 m/s^2 from rest the can, hanging
+/// plumb, pulls -((m + m_a) a + (m - rho V) g), m_a = 2 rho CaEnd
+/// pi d^3 / 12 its caps' added mass along it (B18), each interval's mean
+/// to 1e-9 of it (B35).
+#[test]
+fn a_coupled_pinned_body_hangs_from_the_host_and_pulls_it() {
+    let d = scratch("coupled-pinned");
+    let deck = write_scenario(&d, "pinned.txt", PINNED_BODY);
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let so = text(&o).0;
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(
+        so.contains("pinned to the host (3 degrees of freedom, turning about its reference point on point 1")
+            && so.contains("less 3 per pinned body (1)"),
+        "{so}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let g = 9.80665;
+    let (mass, displaced) = (50_000.0, 1025.0 * std::f64::consts::PI * 10.0);
+    let hanging = -(mass - displaced) * g;
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
+    assert!(
+        (fz - hanging).abs() < 1e-9 * hanging.abs(),
+        "{fz} {hanging}"
+    );
+    let mut c = stancf_cli::coupling::open(&deck).expect("a coupled system");
+    assert_eq!(c.coupled_body_ids, [1]);
+    assert!(c.coupled_ids.is_empty(), "{:?}", c.coupled_ids);
+    assert_eq!(c.handle.coupled_dof(), 3);
+    let at = |t: f64| [0.0, 0.0, -5.0 + t * t];
+    let rate = |t: f64| [0.0, 0.0, 2.0 * t];
+    let f0 = c
+        .handle
+        .initialize(&at(0.0), Some(&rate(0.0)))
+        .expect("equilibrium");
+    assert!((f0[2] - hanging).abs() < 1e-9 * hanging.abs(), "{f0:?}");
+    let added = 2.0 * 1025.0 * std::f64::consts::PI * 8.0 / 12.0;
+    let lifted = -((mass + added) * 2.0 + (mass - displaced) * g);
+    let mut worst = 0.0f64;
+    for k in 1..=10 {
+        let t = 0.1 * k as f64;
+        let f = c
+            .handle
+            .step_to(t, &at(t), Some(&rate(t)))
+            .unwrap()
+            .interval_mean;
+        worst = worst
+            .max((f[2] - lifted).abs())
+            .max(f[0].abs())
+            .max(f[1].abs());
+    }
+    eprintln!(
+        "a CoupledPinned body: hangs by {hanging:.3} N, lifted pulls {lifted:.3} N to {worst:.1e}"
+    );
+    assert!(worst < 1e-9 * lifted.abs(), "{worst:e}");
+}
