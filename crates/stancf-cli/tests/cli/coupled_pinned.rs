@@ -93,3 +93,25 @@ fn a_coupled_pinned_body_hangs_from_the_host_and_pulls_it() {
     );
     assert!(worst < 1e-9 * lifted.abs(), "{worst:e}");
 }
+
+/// MoorDyn's body_tests/pinnedBody.txt leaves the water out with
+/// `WtrDnsty 0`: the water then has no weight, drag or inertia (the
+/// seabed stays), and the pinned body's pull on the host is its whole
+/// weight, -m g, to 1e-9 of it.
+#[test]
+fn a_deck_without_water_density_hangs_its_whole_weight_on_the_host() {
+    let d = scratch("coupled-pinned-dry");
+    let dry = PINNED_BODY.replace(
+        "30       WtrDpth      - water depth\n",
+        "30       WtrDpth      - water depth\n0.0      WtrDnsty     - no water\n",
+    );
+    assert_ne!(dry, PINNED_BODY);
+    let deck = write_scenario(&d, "dry.txt", &dry);
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
+    let weight = 50_000.0 * 9.80665;
+    assert!((fz + weight).abs() < 1e-9 * weight, "{fz}");
+}

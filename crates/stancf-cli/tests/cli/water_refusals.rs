@@ -26,7 +26,7 @@ fn every_bad_water_value_is_refused_naming_its_key() {
         ("depth", rope_in_water("depth = -1.0", ""), "water.depth"),
         (
             "density",
-            rope_in_water("depth = 30.0\ndensity = 0.0", ""),
+            rope_in_water("depth = 30.0\ndensity = -1.0", ""),
             "water.density",
         ),
         (

@@ -211,12 +211,13 @@ fn water_figures(
         std::slice::from_ref(&w.depth),
         Rule::Divisor,
     )?;
+    // Nothing divides by the density: 0 leaves the water's loads out.
     f.need(
         "the water density",
         water.density,
         " kg/m^3",
         std::slice::from_ref(&w.density),
-        Rule::Divisor,
+        Rule::Scale,
     )?;
     f.need(
         "the seabed stiffness",

@@ -213,7 +213,9 @@ pub(super) fn water_keys(ctx: &Ctx, raw: RawWater) -> Result<WaterKeys, Scenario
     let non_negative = |k: &str, v: Option<f64>| v.map(|v| ctx.non_negative(k, v)).transpose();
     let mut keys = WaterKeys {
         depth: positive("water.depth", raw.depth)?,
-        density: positive("water.density", raw.density)?,
+        // 0: water without weight, drag or inertia (MoorDyn's WtrDnsty 0
+        // leaves the water out; the seabed stays).
+        density: non_negative("water.density", raw.density)?,
         wave_ramp: non_negative("water.wave_ramp", raw.wave_ramp)?,
         ..WaterKeys::default()
     };
