@@ -40,6 +40,7 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 ---------------------- OUTPUTS -------------------------------------------------
 Rod1PX Rod1PZ Rod1RX Rod1RY Rod1TENA Rod1SUB Rod1FZ
 Rod1PY Rod1VZ Rod1RVY Rod1TENB Rod1FX Rod1MY
+Rod1N1PX Rod1NBPX Rod1NBPZ Rod1NAVZ
 ------------------------- need this line --------------------------------------
 ";
 
@@ -81,7 +82,8 @@ fn channels_static_and_dynamic(
 /// standing with end A below B); TENA and TENB the rope's pull at each
 /// end, W/2 by symmetry (W the rod's wet weight, (400 - rho pi 0.25^2)
 /// 10 g); SUB 1; the net force (its lines', its weight and buoyancy, the
-/// water's drag) and its moment about end A zero; no velocity. Measured:
+/// water's drag) and its moment about end A zero; no velocity; its nodes
+/// (`N1`, `NA`, `NB`) where its 4 segments put them. Measured:
 /// 1e-14 m, 5e-11 W and 4e-10 W m (the dynamic steps' Newton
 /// tolerance); claimed 1e-9 m, 1e-8 W and 1e-8 W m: leaving the rod's
 /// buoyancy out of its net force would move FZ by 1.01 W and MY by
@@ -118,6 +120,11 @@ fn a_rods_channels_are_its_pose_and_its_lines_pull() {
         near("Rod1MY", 0.0, 1e-8 * w_rod);
         near("Rod1VZ", 0.0, 1e-9);
         near("Rod1RVY", 0.0, 1e-6);
+        // Its nodes on the rigid rod (4 segments of 2.5 m from end A).
+        near("Rod1N1PX", -2.5, 1e-9);
+        near("Rod1NBPX", 5.0, 1e-9);
+        near("Rod1NBPZ", z, 1e-9);
+        near("Rod1NAVZ", 0.0, 1e-9);
     }
 }
 

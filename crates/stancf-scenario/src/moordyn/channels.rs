@@ -104,6 +104,14 @@ pub enum RodQuantity {
     EndTension(LineEnd),
     /// `SUB`: the fraction of the rod under the water surface.
     Submerged,
+    /// `N<k>P<x>`, `NAP<x>`, `NBP<x>` (m): node k of the rod's NumSegs
+    /// segments, at A + (k / N) (B - A) on the rigid rod.
+    NodePosition(usize, Axis),
+    /// `N<k>V<x>` (m/s): its velocity, v_A + w x (x_k - x_A).
+    NodeVelocity(usize, Axis),
+    /// Any other node quantity (its tension, forces, acceleration): not
+    /// computed, its column left empty.
+    NodeOther(usize),
 }
 
 /// An output channel.
@@ -132,8 +140,8 @@ pub enum Channel {
     },
     /// `B<n><q>` or `Body<n><q>`.
     Body { body: usize, quantity: BodyQuantity },
-    /// `R<n><q>` or `Rod<n><q>`: the rod as a whole (node-level rod
-    /// channels, `R<n>N<k><q>`, are refused).
+    /// `R<n><q>` or `Rod<n><q>`: the rod as a whole, or one of its nodes
+    /// (`R<n>N<k><q>`, `NA`, `NB`).
     Rod { rod: usize, quantity: RodQuantity },
 }
 
@@ -186,7 +194,7 @@ pub(crate) fn resolve(
 ) -> Result<Vec<Output>, DeckError> {
     let counts = Counts {
         bodies: bodies.len(),
-        rods: rods.len(),
+        rods,
     };
     raw.into_iter()
         .map(|r| {
@@ -216,9 +224,9 @@ fn head(upper: &str) -> (&str, &str, &str) {
 
 /// How many bodies and rods the deck defines.
 #[derive(Clone, Copy)]
-struct Counts {
+struct Counts<'a> {
     bodies: usize,
-    rods: usize,
+    rods: &'a [DeckRod],
 }
 
 fn channel(
@@ -263,12 +271,12 @@ fn channel(
             })
         }
         "R" | "ROD" => {
-            if id == 0 || id > rods {
-                return Err(format!("there is no rod {id} ({rods} rods)"));
+            if id == 0 || id > rods.len() {
+                return Err(format!("there is no rod {id} ({} rods)", rods.len()));
             }
             Ok(Channel::Rod {
                 rod: id,
-                quantity: rod_quantity(rest)?,
+                quantity: rod_quantity(rest, rods[id - 1].segments)?,
             })
         }
         "B" | "BODY" => {
@@ -393,17 +401,38 @@ fn body_quantity(q: &str) -> Result<BodyQuantity, String> {
     })
 }
 
-/// The part after `R<n>`: a quantity of the rod as a whole. A node
-/// (`N<k>`, `NA`, `NB`: no quantity starts with N) is refused, and so are
-/// what MoorDyn has no value for: a rotation about the rod's axis (`RZ`,
-/// `RVZ`, `RAZ`, none in `Rod::GetRodOutput`), `T` (MoorDyn writes 0).
-fn rod_quantity(q: &str) -> Result<RodQuantity, String> {
-    if q.starts_with('N') {
-        return Err(
-            "node-level rod channels are not written (R<n>N<k><q>, R<n>NA<q>, \
-                    R<n>NB<q>); the rod as a whole is (R<n><q>)"
-                .into(),
-        );
+/// The part after `R<n>`: a quantity of the rod as a whole, or of one of
+/// its `segments + 1` nodes (`N<k>`, `NA` node 0, `NB` the last: no
+/// quantity starts with N). Refused: what MoorDyn has no value for, a
+/// rotation about the rod's axis (`RZ`, `RVZ`, `RAZ`, none in
+/// `Rod::GetRodOutput`), `T` (MoorDyn writes 0); a node past the last.
+fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
+    if let Some(after) = q.strip_prefix('N') {
+        let digits = after
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(after.len());
+        let (node, rest) = if digits > 0 {
+            let k: usize = after[..digits]
+                .parse()
+                .map_err(|_| "node number too large")?;
+            (k, &after[digits..])
+        } else if let Some(rest) = after.strip_prefix('A') {
+            (0, rest)
+        } else if let Some(rest) = after.strip_prefix('B') {
+            (segments, rest)
+        } else {
+            return Err("after N comes a node number, A or B".into());
+        };
+        if node > segments {
+            return Err(format!(
+                "the rod has nodes 0 to {segments} ({segments} segments)"
+            ));
+        }
+        return Ok(match quantity(rest)? {
+            Q::P(a) => RodQuantity::NodePosition(node, a),
+            Q::V(a) => RodQuantity::NodeVelocity(node, a),
+            _ => RodQuantity::NodeOther(node),
+        });
     }
     if let Some(end) = end_tension(q) {
         return Ok(RodQuantity::EndTension(end));

@@ -433,7 +433,12 @@ fn rod_not_computed(r: &DeckRod, q: RodQuantity) -> Option<String> {
     use RodQuantity as Q;
     match q {
         Q::Acceleration(_) | Q::AngularAcceleration(_) => Some(NOT.to_string()),
-        Q::Position(_) | Q::Velocity(_) => None,
+        Q::NodeOther(_) => Some(
+            "of a rod's nodes stancf writes the positions and velocities (the rigid rod's); \
+             their forces, tensions and accelerations are not computed in this version"
+                .to_string(),
+        ),
+        Q::Position(_) | Q::Velocity(_) | Q::NodePosition(..) | Q::NodeVelocity(..) => None,
         _ if r.segments == 0 => Some(format!(
             "rod {} has NumSegs 0, a rod of zero length that stancf builds as a point: it \
              has a position and a velocity (PX PY PZ VX VY VZ), no axis, volume or ends of \

@@ -246,8 +246,8 @@ fn rod_channels_parse_as_moordyn_reads_them() {
     assert_eq!(got, want);
 }
 
-/// What MoorDyn has no value for, a node, a rod RODS does not define:
-/// refused naming the line.
+/// What MoorDyn has no value for, a node the rod does not have, a rod
+/// RODS does not define: refused naming the line.
 #[test]
 fn rod_channels_moordyn_has_no_value_for_are_refused_naming_the_line() {
     for (name, words) in [
@@ -257,9 +257,8 @@ fn rod_channels_moordyn_has_no_value_for_are_refused_naming_the_line() {
         ),
         ("R1RVZ", "no \"RVZ\" of a rod"),
         ("R1RAZ", "no \"RAZ\" of a rod"),
-        ("Rod1N2PX", "node-level rod channels are not written"),
-        ("R1NAPZ", "node-level rod channels are not written"),
-        ("R1NBFX", "node-level rod channels are not written"),
+        ("Rod1N3PX", "the rod has nodes 0 to 2 (2 segments)"),
+        ("R1NCPX", "after N comes a node number, A or B"),
         ("Rod1T", "MoorDyn writes 0 for \"T\" of a rod"),
         ("Rod1Ten", "MoorDyn writes 0 for \"TEN\" of a rod"),
         ("Rod1QQ", "MoorDyn outputs no \"QQ\" of a rod"),
@@ -277,4 +276,31 @@ fn rod_channels_moordyn_has_no_value_for_are_refused_naming_the_line() {
         );
         assert!(e.message.contains(words), "{name}: {e}");
     }
+}
+
+/// A rod's node channels: `N<k>`, `NA` (node 0) and `NB` (the last, its
+/// NumSegs), their positions and velocities; any other quantity of a node
+/// is read as one stancf does not compute.
+#[test]
+fn rod_node_channels_name_their_node_and_quantity() {
+    let text = with_rod("1 Can Free 0 0 -5 1 0 -5 2 -")
+        .replace("FairTen1", "FairTen1\nRod1N1PX\nR1NAVZ\nR1NBPY\nR1NBFX");
+    let deck = crate::moordyn::parse(&text).expect("the deck");
+    let rods: Vec<_> = deck
+        .outputs
+        .iter()
+        .filter_map(|o| match o.channel {
+            Channel::Rod { quantity, .. } => Some(quantity),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(
+        rods,
+        [
+            RodQuantity::NodePosition(1, Axis::X),
+            RodQuantity::NodeVelocity(0, Axis::Z),
+            RodQuantity::NodePosition(2, Axis::Y),
+            RodQuantity::NodeOther(2),
+        ]
+    );
 }

@@ -124,6 +124,23 @@ impl RodFrame {
         })
     }
 
+    /// Node `node` of the rod's segments at state `s`: x_k = x_A + (k / N)
+    /// L q on the rigid rod and its velocity v_A + w x (x_k - x_A) (a rod
+    /// of zero length: its one node, end A).
+    fn node(&self, s: &RodState, node: usize) -> ([f64; 3], [f64; 3]) {
+        let reach = match (&self.rod, s.axis) {
+            (Some(rod), Some(q)) if rod.segments > 0 => {
+                let along = rod.length() * node as f64 / rod.segments as f64;
+                q.map(|c| along * c)
+            }
+            _ => [0.0; 3],
+        };
+        (
+            add(s.end_a, reach),
+            add(s.velocity, cross(s.angular_velocity, reach)),
+        )
+    }
+
     /// The net force of the lines attached at end `k` (0 where none is).
     fn end_tension(&self, row: &SystemRow, k: usize) -> f64 {
         self.points[k].map_or(0.0, |p| norm(row.points[p].2))
@@ -188,7 +205,11 @@ pub(super) fn rod_value(frame: &RodFrame, q: RodQuantity, row: &SystemRow) -> f6
         },
         RodQuantity::Force(a) => frame.net(&row.bodies, s.end_a).0[k(a)],
         RodQuantity::Moment(a) => frame.net(&row.bodies, s.end_a).1[k(a)],
-        RodQuantity::Acceleration(_) | RodQuantity::AngularAcceleration(_) => f64::NAN,
+        RodQuantity::NodePosition(node, a) => frame.node(&s, node).0[k(a)],
+        RodQuantity::NodeVelocity(node, a) => frame.node(&s, node).1[k(a)],
+        RodQuantity::Acceleration(_)
+        | RodQuantity::AngularAcceleration(_)
+        | RodQuantity::NodeOther(_) => f64::NAN,
     }
 }
 
@@ -196,6 +217,54 @@ pub(super) fn rod_value(frame: &RodFrame, q: RodQuantity, row: &SystemRow) -> f6
 mod tests {
     use super::*;
     use stancf::vec3::normalized as unit;
+
+    /// A rod's node moves with the rigid rod: node k of N at (k/N) L
+    /// along its axis from end A, at v_A + w x (x_k - x_A), against the
+    /// central difference of the node's position under the same rigid
+    /// motion (end A moving at v_A, the axis turning at w), to 1e-9 m/s.
+    #[test]
+    fn a_rods_node_moves_with_the_rigid_rod() {
+        let rod = Rod {
+            end_a: [0.0; 3],
+            end_b: [4.0, 0.0, 3.0],
+            diameter: 0.2,
+            mass_per_length: 10.0,
+            drag_coefficient: 0.0,
+            added_mass_coefficient: 0.0,
+            end_drag_coefficient: 0.0,
+            end_added_mass_coefficient: 0.0,
+            segments: 4,
+        };
+        let frame = RodFrame {
+            id: 1,
+            body_id: 0,
+            holder: RodHolder::Fixed,
+            end_a: [0.0; 3],
+            rod: Some(rod.clone()),
+            points: [None; 2],
+        };
+        let (v_a, w) = ([0.3, -0.2, 0.1], [0.4, 0.7, -0.5]);
+        let at = |t: f64| {
+            let turn = stancf::body::rotation::exp_map(w.map(|c| c * t));
+            RodState {
+                end_a: v_a.map(|c| c * t),
+                velocity: v_a,
+                axis: Some(stancf::body::pose::rotate(&turn, rod.axis())),
+                angular_velocity: w,
+            }
+        };
+        let h = 1e-5;
+        for k in 0..=4 {
+            let (_, v) = frame.node(&at(0.0), k);
+            let (p, m) = (frame.node(&at(h), k).0, frame.node(&at(-h), k).0);
+            for c in 0..3 {
+                let fd = (p[c] - m[c]) / (2.0 * h);
+                assert!((fd - v[c]).abs() < 1e-9, "node {k}: {v:?} against {fd}");
+            }
+        }
+        let b = frame.node(&at(0.0), 4).0;
+        assert!((0..3).all(|c| (b[c] - rod.end_b[c]).abs() < 1e-12), "{b:?}");
+    }
 
     /// MoorDyn's angles of a rod: 0 standing with end A below end B
     /// (MoorDyn's docs: "a rod with zero rotation"), pitch 90 degrees
