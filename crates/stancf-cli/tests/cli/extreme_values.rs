@@ -86,12 +86,6 @@ fn extreme_deck_values_are_refused_by_their_line_and_column() {
         ),
         ("g 1e300", "9.81      g".into(), "1e300     g".into(), "g"),
         (
-            "WtrDnsty 0",
-            "1025      WtrDnsty".into(),
-            "0         WtrDnsty".into(),
-            "WtrDnsty",
-        ),
-        (
             "WtrDnsty 1e300",
             "1025      WtrDnsty".into(),
             "1e300     WtrDnsty".into(),

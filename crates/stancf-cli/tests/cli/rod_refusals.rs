@@ -16,8 +16,8 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 /// What is not built is refused naming the deck's line: a line with
 /// bending stiffness at a rod end, a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
-/// a rod output channel MoorDyn has none for (RZ) or stancf does not
-/// write (nodes), a rod type's value out of the
+/// a rod output channel MoorDyn has none for (RZ) or of a node the rod
+/// does not have, a rod type's value out of the
 /// solver's range.
 #[test]
 fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
@@ -53,7 +53,7 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             "rod 2 is free with NumSegs 0".into(),
         ),
         rod_channel(&base, "Rod1RZ", "MoorDyn has no \"RZ\" of a rod (no rotation about its axis"),
-        rod_channel(&base, "R1N2PX", "node-level rod channels are not written"),
+        rod_channel(&base, "R1N9PX", "the rod has nodes 0 to 4 (4 segments)"),
         (
             base.replace("can           0.5      100 ", "can           0.5      1e160 "),
             "can           0.5      1e160",

@@ -244,9 +244,7 @@ impl StaticBody {
         residual: &mut [f64],
         jacobian: Option<&mut BorderedMatrix>,
     ) -> Option<[f64; 3]> {
-        let Some((arm, hold)) = self.pin else {
-            return None;
-        };
+        let (arm, hold) = self.pin?;
         let g = |k: usize| self.global(layout, k);
         let joint = |c: usize| match hold {
             PinHold::Point(p) => layout.point_unknown(p, 0, c),

@@ -515,6 +515,12 @@ impl StaticEquations for SystemEquations {
     }
 
     fn converged(&mut self, x: &[f64]) {
+        if self.bodies.iter().any(|b| b.pin.is_some()) {
+            // The pins' forces at the solution (the bodies' rows hold
+            // them), before the lines' converged rows are taken below.
+            let mut scratch = vec![0.0; x.len()];
+            self.evaluate(x, &mut scratch, None);
+        }
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = &mut self.x_local[i];
@@ -531,11 +537,6 @@ impl StaticEquations for SystemEquations {
         }
         for body in &mut self.bodies {
             body.converged = body.unknowns(&self.layout, x);
-        }
-        if self.bodies.iter().any(|b| b.pin.is_some()) {
-            // The pins' forces at the solution (the bodies' rows hold them).
-            let mut scratch = vec![0.0; x.len()];
-            self.evaluate(x, &mut scratch, None);
         }
         self.collect_end_forces();
     }
