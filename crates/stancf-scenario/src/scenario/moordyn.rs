@@ -213,18 +213,11 @@ fn host_pins(deck: &Deck, bodies: &mut [SystemBody], points: &mut Vec<SystemPoin
             .max()
             .unwrap_or(0)
             .saturating_add(1);
-        points.push(SystemPoint {
+        points.push(SystemPoint::made(
             id,
-            kind: PointType::Coupled,
-            position: bodies[b].position,
-            mass: 0.0,
-            force: [0.0; 3],
-            volume: 0.0,
-            drag_area: 0.0,
-            ca: 0.0,
-            motion: CoupledMotion::NONE,
-            motion_file: None,
-        });
+            PointType::Coupled,
+            bodies[b].position,
+        ));
         bodies[b].host_pin = Some(points.len() - 1);
     }
 }

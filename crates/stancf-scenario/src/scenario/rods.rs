@@ -32,7 +32,6 @@ use super::system_parts::{PointType, SystemPoint, SystemScenario};
 use super::ScenarioError;
 use crate::moordyn::{Deck, DeckRod, LineAttachment, RodAttachment, RodEnd};
 use stancf::body::Rod;
-use stancf::motion::CoupledMotion;
 use stancf::vec3::sub;
 
 /// The kind of the point at end `k` (0 for A, 1 for B) of `rod` (its
@@ -58,18 +57,7 @@ pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
 /// The point at end `k` of `rod` ([`end_kind`]), where the rod's ends
 /// put it at t = 0; `id` its id.
 pub(super) fn end_point(rod: &SystemRod, k: usize, id: i64) -> SystemPoint {
-    SystemPoint {
-        id,
-        kind: end_kind(rod, k),
-        position: rod.ends[k],
-        mass: 0.0,
-        force: [0.0; 3],
-        volume: 0.0,
-        drag_area: 0.0,
-        ca: 0.0,
-        motion: CoupledMotion::NONE,
-        motion_file: None,
-    }
+    SystemPoint::made(id, end_kind(rod, k), rod.ends[k])
 }
 
 /// The deck's rods and the points their line ends need: the bodies of

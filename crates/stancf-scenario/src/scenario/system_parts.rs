@@ -85,6 +85,25 @@ pub struct SystemPoint {
     pub motion_file: Option<String>,
 }
 
+impl SystemPoint {
+    /// A point of `kind` made at `position` (a rod's end, a pin's), with
+    /// nothing of its own: no mass, force, water or motion.
+    pub fn made(id: i64, kind: PointType, position: [f64; 3]) -> Self {
+        SystemPoint {
+            id,
+            kind,
+            position,
+            mass: 0.0,
+            force: [0.0; 3],
+            volume: 0.0,
+            drag_area: 0.0,
+            ca: 0.0,
+            motion: CoupledMotion::NONE,
+            motion_file: None,
+        }
+    }
+}
+
 /// An output channel of a MoorDyn deck, written to channels.csv.
 #[derive(Clone, Debug, PartialEq)]
 pub struct OutputChannel {

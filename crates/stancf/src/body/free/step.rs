@@ -23,16 +23,7 @@ impl FreeBody {
             }
         }
         for point in &self.slab.points {
-            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
-                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
-            };
-            let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
-            let v = variables([
-                at(t_dot, 0),
-                at(t, 4),
-                at(t_dot, 4),
-                add(self.centre, at(t, 0)),
-            ]);
+            let (t, v) = (&point.shape.t, self.point_variables(slots, point).1);
             ctx.time = FlowTime::At(self.time + point.offset);
             let density = ctx.density(&v);
             let wdt = point.w_dt;
@@ -81,6 +72,23 @@ impl FreeBody {
             }
         }
         out
+    }
+
+    /// The variables at time point `point` of the step whose slot blocks
+    /// are `slots` (eq. 6 in time): the rates (v_G, theta, theta_dot) and
+    /// the twelve jets of [`super::super::terms::NV`] with the centre r_G.
+    fn point_variables(
+        &self,
+        slots: &[[f64; 3]; 8],
+        point: &TimePoint,
+    ) -> ([[f64; 3]; 3], [JetVec<NV>; 4]) {
+        let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
+            std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
+        };
+        let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
+        let rates = [at(t_dot, 0), at(t, 4), at(t_dot, 4)];
+        let v = variables([rates[0], rates[1], rates[2], add(self.centre, at(t, 0))]);
+        (rates, v)
     }
 
     /// The slot blocks of a step from its unknowns x.
@@ -239,12 +247,7 @@ impl FreeBody {
         let mut work = 0.0;
         for point in &self.slab.points {
             ctx.time = FlowTime::At(self.time + point.offset);
-            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
-                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
-            };
-            let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
-            let rates = [at(t_dot, 0), at(t, 4), at(t_dot, 4)];
-            let v = variables([rates[0], rates[1], rates[2], add(self.centre, at(t, 0))]);
+            let (rates, v) = self.point_variables(slots, point);
             if let Some((on_centre, on_theta)) = ctx.drag(&v) {
                 let power: f64 = (0..3)
                     .map(|i| on_centre[i].v * rates[0][i] + on_theta[i].v * rates[2][i])
@@ -269,16 +272,7 @@ impl FreeBody {
         let mut ctx = self.context(&self.start_loads);
         for point in &self.slab.points {
             ctx.time = FlowTime::At(self.time + point.offset);
-            let at = |w: &[f64; 4], first: usize| -> [f64; 3] {
-                std::array::from_fn(|i| (0..4).map(|m| w[m] * slots[first + m][i]).sum())
-            };
-            let (t, t_dot) = (&point.shape.t, &point.shape.t_dot);
-            let v = variables([
-                at(t_dot, 0),
-                at(t, 4),
-                at(t_dot, 4),
-                add(self.centre, at(t, 0)),
-            ]);
+            let v = self.point_variables(slots, point).1;
             let density = ctx.density(&v);
             let water = ctx.drag(&v).map(|(on_centre, _)| on_centre.map(|q| q.v));
             for i in 0..3 {
