@@ -115,3 +115,51 @@ fn a_deck_without_water_density_hangs_its_whole_weight_on_the_host() {
     let weight = 50_000.0 * 9.80665;
     assert!((fz + weight).abs() < 1e-9 * weight, "{fz}");
 }
+
+/// MoorDyn's rotations/nwu.txt: a coupled body with points 1 m along x,
+/// y and z, no line, no gravity (`g 0`). Through the coupling API each of
+/// MoorDyn's angles turns the body as its test says (the EulerXYZ of
+/// docs/method.md §15.1): a roll of 90 degrees takes the port point
+/// (+y) up, a pitch of 90 degrees the bow (+x) down, a yaw of 90 degrees
+/// the bow to port; the points where the pose puts them, to 1e-12 m.
+#[test]
+fn moordyns_rotations_test_turns_the_body_as_it_says() {
+    let d = scratch("nwu");
+    let deck = "--------------------- MoorDyn Input File ----------------------------------------
+The rotations of a coupled body, no gravity
+---------------------------- BODIES ---------------------------------------------
+ID  Attachment  X0  Y0  Z0  r0  p0  y0  Mass  CG*  I*  Volume  CdA*  Ca
+(#) (-)         (m) (m) (m) (deg)(deg)(deg)(kg)(m) (kg-m^2)(m^3) (m^2) (-)
+1   coupled     0   0   0   0   0   0   0     0    0   0       0     0
+----------------------- POINTS --------------------------------------------------
+Node  Type   X  Y  Z  M  V  CdA  CA
+(-)   (-)   (m)(m)(m)(kg)(m^3)(m^2)(-)
+1     Body1  1  0  0  0  0  0    0
+2     Body1  0  1  0  0  0  0    0
+3     Body1  0  0  1  0  0  0    0
+-------------------------- SOLVER OPTIONS----------------------------------------
+0.0      g            - No gravity
+1.0      dtM          - time step
+100      WtrDpth      - water depth
+--------------------------- need this line -------------------------------------
+";
+    let file = write_scenario(&d, "nwu.txt", deck);
+    let half = std::f64::consts::FRAC_PI_2;
+    for (angles, point, want) in [
+        ([half, 0.0, 0.0], 1, [0.0, 0.0, 1.0]),
+        ([0.0, half, 0.0], 0, [0.0, 0.0, -1.0]),
+        ([0.0, 0.0, half], 0, [0.0, 1.0, 0.0]),
+    ] {
+        let mut c = stancf_cli::coupling::open(&file).expect("a coupled system");
+        let x = [0.0, 0.0, 0.0, angles[0], angles[1], angles[2]];
+        let f = c.handle.initialize(&x, None).expect("initialize");
+        assert!(f.iter().all(|v| *v == 0.0), "{f:?}");
+        let at = c.handle.simulation().unwrap().point_state(point).0;
+        for k in 0..3 {
+            assert!(
+                (at[k] - want[k]).abs() < 1e-12,
+                "{angles:?}: {at:?} against {want:?}"
+            );
+        }
+    }
+}

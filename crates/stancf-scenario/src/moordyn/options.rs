@@ -63,7 +63,7 @@ impl SupportedOption {
     fn zero_allowed(self) -> bool {
         !matches!(
             self,
-            SupportedOption::TimeStep | SupportedOption::Gravity | SupportedOption::WaterDepth
+            SupportedOption::TimeStep | SupportedOption::WaterDepth
         )
     }
 }

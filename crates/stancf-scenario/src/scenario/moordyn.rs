@@ -165,7 +165,7 @@ fn step_notes(deck: &Deck) -> Vec<String> {
 fn deck_gravity(deck: &Deck, file: &str) -> Result<f64, ScenarioError> {
     let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
     let range = 1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE;
-    if g.is_finite() && range.contains(&g) {
+    if g == 0.0 || (g.is_finite() && range.contains(&g)) {
         return Ok(g);
     }
     let (name, line) = deck

@@ -411,7 +411,9 @@ pub(super) fn scenario_water(
 
 /// Water needs gravity along -z (its surface is the plane z = 0).
 pub(super) fn check_gravity(ctx: &Ctx, gravity: [f64; 3]) -> Result<(), ScenarioError> {
-    if gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] < 0.0 {
+    // No gravity at all (MoorDyn's g = 0) leaves the water's surface where
+    // it is; waves then are refused by the sea (they need g).
+    if gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] <= 0.0 {
         return Ok(());
     }
     Err(ctx.err(

@@ -47,11 +47,12 @@ pub struct Sea {
 
 impl Sea {
     /// A sea of depth `depth` (m, positive) under gravity `gravity`
-    /// (m/s^2, a positive magnitude) with the regular waves `waves`
-    /// superposed, no current and no ramp. Refused, naming the quantity (`depth`, `gravity`,
-    /// `waves[3].period`, ...): a depth or gravity not positive and
-    /// finite, a wave with a period <= 0, an amplitude < 0, or a value
-    /// that is not finite.
+    /// (m/s^2, a positive magnitude; 0 allowed without waves) with the
+    /// regular waves `waves` superposed, no current and no ramp. Refused,
+    /// naming the quantity (`depth`, `gravity`, `waves[3].period`, ...): a
+    /// depth not positive and finite, a gravity not so with waves, a wave
+    /// with a period <= 0, an amplitude < 0, or a value that is not
+    /// finite.
     pub fn new(depth: f64, gravity: f64, waves: &[AiryWave]) -> Result<Sea, ModelError> {
         if !(depth.is_finite() && depth > 0.0) {
             return Err(ModelError::invalid(
@@ -59,10 +60,13 @@ impl Sea {
                 format!("must be > 0 m and finite, got {depth}"),
             ));
         }
-        if !(gravity.is_finite() && gravity > 0.0) {
+        // Waves need gravity (their dispersion, (W1)); still water or a
+        // current may be without (MoorDyn's g = 0).
+        let weightless = gravity == 0.0 && waves.is_empty();
+        if !(weightless || (gravity.is_finite() && gravity > 0.0)) {
             return Err(ModelError::invalid(
                 "gravity",
-                format!("must be a positive magnitude (m/s^2), got {gravity}"),
+                format!("must be a positive magnitude (m/s^2) with waves, got {gravity}"),
             ));
         }
         let waves = waves

@@ -395,3 +395,13 @@ fn the_dynamic_pressure_drives_the_local_acceleration() {
         }
     }
 }
+
+/// Still water may be without gravity (MoorDyn's g = 0); waves may not
+/// (their dispersion (W1) needs it): refused naming `gravity`.
+#[test]
+fn still_water_may_be_weightless_waves_may_not() {
+    assert!(Sea::new(DEPTH, 0.0, &[]).is_ok());
+    let e = Sea::new(DEPTH, 0.0, &crossing_waves()).unwrap_err();
+    assert_eq!(e.key, "gravity");
+    assert!(Sea::new(DEPTH, -1.0, &[]).is_err());
+}
