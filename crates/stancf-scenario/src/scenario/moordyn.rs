@@ -207,12 +207,7 @@ fn host_pins(deck: &Deck, bodies: &mut [SystemBody], points: &mut Vec<SystemPoin
         if row.attachment != BodyAttachment::CoupledPinned {
             continue;
         }
-        let id = points
-            .iter()
-            .map(|p| p.id)
-            .max()
-            .unwrap_or(0)
-            .saturating_add(1);
+        let id = SystemPoint::next_id(points);
         points.push(SystemPoint::made(
             id,
             PointType::Coupled,

@@ -242,12 +242,7 @@ pub(super) fn pin_points(rods: &mut [SystemRod], points: &mut Vec<SystemPoint>) 
         if !matches!(rod.holder, RodHolder::Pinned { .. }) || rod.points[0].is_some() {
             continue;
         }
-        let id = points
-            .iter()
-            .map(|p| p.id)
-            .max()
-            .unwrap_or(0)
-            .saturating_add(1);
+        let id = SystemPoint::next_id(points);
         points.push(super::rods::end_point(rod, 0, id));
         rod.points[0] = Some(points.len() - 1);
     }

@@ -86,6 +86,17 @@ pub struct SystemPoint {
 }
 
 impl SystemPoint {
+    /// The id a point made after `points` takes: one more than their
+    /// largest (1 if there are none).
+    pub fn next_id(points: &[SystemPoint]) -> i64 {
+        points
+            .iter()
+            .map(|p| p.id)
+            .max()
+            .unwrap_or(0)
+            .saturating_add(1)
+    }
+
     /// A point of `kind` made at `position` (a rod's end, a pin's), with
     /// nothing of its own: no mass, force, water or motion.
     pub fn made(id: i64, kind: PointType, position: [f64; 3]) -> Self {

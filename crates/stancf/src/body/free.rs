@@ -121,8 +121,9 @@ pub struct FreeBody {
     /// The work of the water's drag so far (B10).
     water_work: f64,
     /// The impulse of the body's own loads on its centre over the last
-    /// step (`own_impulse_over`).
-    own_impulse: [f64; 3],
+    /// step (`own_impulse_over`), kept where asked for (a pinned body's,
+    /// whose pin's force it gives, §15.17): None otherwise.
+    own_impulse: Option<[f64; 3]>,
     /// A constant moment on the body (global) and its work so far (B27).
     moment: [f64; 3],
     moment_work: f64,
@@ -188,7 +189,7 @@ impl FreeBody {
             last_iterations: 0,
             start_loads: Vec::with_capacity(forces.forces.len()),
             water_work: 0.0,
-            own_impulse: [0.0; 3],
+            own_impulse: None,
             moment: [0.0; 3],
             moment_work: 0.0,
         };
@@ -387,9 +388,18 @@ impl FreeBody {
     /// The work done on the body by the water's drag so far (B10): the
     /// drag's power Q_r . v_G + Q_theta . theta_dot at the slab's time
     /// points, with their weights, step by step.
+    /// The same body keeping the impulse of its own loads over each step
+    /// ([`Self::own_impulse`]; an extra pass over the step's time points,
+    /// so only where it is needed).
+    pub fn with_own_impulse(mut self) -> Self {
+        self.own_impulse = Some([0.0; 3]);
+        self
+    }
+
     /// The impulse of the body's own loads (weight, buoyancy, constant
-    /// forces, the water's) on its centre over the last step, global.
-    pub fn own_impulse(&self) -> [f64; 3] {
+    /// forces, the water's) on its centre over the last step, global;
+    /// None unless kept ([`Self::with_own_impulse`]).
+    pub fn own_impulse(&self) -> Option<[f64; 3]> {
         self.own_impulse
     }
 

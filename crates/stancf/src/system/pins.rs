@@ -34,10 +34,15 @@
 //! P's own rows are carried on to its body (children are added before
 //! their parents), its end row joins P's end row, and the end rates hold
 //! v_G - v_P - G_c Omega = 0 (B30).
+//!
+//! At rest (`StaticBody::add_pin`) the pin is (B24) at t = 0, its force
+//! the centre's rows it replaces (B35); on a host's motion the step's
+//! held slot values are the point's (B34, §15.17).
 
+use super::body_statics::StaticBody;
 use super::body_terms::{PinHold, StepBody};
 use super::layout::SystemLayout;
-use crate::body::attach::project;
+use crate::body::attach::{offsets, project};
 use crate::bordered::BorderedMatrix;
 use crate::linear::AddEntries;
 
@@ -247,6 +252,73 @@ pub(super) fn pin_momentum(rates: &mut [f64], q: [usize; 6], pin: &PinRates) {
             rates[y[c]] += raw;
         }
         rates[q[c]] = pin.velocity[c];
+    }
+}
+
+/// The pin at rest (§15.12): the static solve's (B24), its force (B35)
+/// the centre's rows it replaces.
+impl StaticBody {
+    /// A pin (B24) at rest: the centre's rows carried to the rotation's
+    /// through r_G = P - R_0 exp([theta]) xi' (their derivatives too) and,
+    /// at a joint, to its point's as they are (B28), and replaced by
+    /// r_G + R_0 exp([theta]) xi' - P = 0.
+    pub(super) fn add_pin(
+        &self,
+        layout: &SystemLayout,
+        x: &[f64],
+        q: &[f64; 6],
+        residual: &mut [f64],
+        jacobian: Option<&mut BorderedMatrix>,
+    ) -> Option<[f64; 3]> {
+        let (arm, hold) = self.pin?;
+        let g = |k: usize| self.global(layout, k);
+        let joint = |c: usize| match hold {
+            PinHold::Point(p) => layout.point_unknown(p, 0, c),
+            PinHold::Fixed(_) | PinHold::Moving(_) => None,
+        };
+        let (p, _) = offsets(&self.rotation, arm, [q[3], q[4], q[5]], [0.0; 3]);
+        let raw: [f64; 3] = std::array::from_fn(|c| residual[g(c)]);
+        let moment = project(raw, &p);
+        for j in 0..3 {
+            residual[g(3 + j)] -= moment.g[j];
+        }
+        for c in 0..3 {
+            let at = match hold {
+                PinHold::Fixed(at) => at[c],
+                PinHold::Point(_) => x[joint(c).expect("a joint's point")],
+                PinHold::Moving(_) => unreachable!("the static pin is fixed"),
+            };
+            if let Some(y) = joint(c) {
+                residual[y] += raw[c];
+            }
+            residual[g(c)] = q[c] + p[c].v - at;
+        }
+        if let Some(m) = jacobian {
+            for c in 0..3 {
+                if let Some(y) = joint(c) {
+                    m.add_border_row(y, g(c), 1.0);
+                }
+            }
+            for j in 0..3 {
+                for c in 0..3 {
+                    m.add_border_row(g(3 + j), g(c), -p[c].g[j]);
+                }
+                for i in 0..3 {
+                    m.add(g(3 + j), g(3 + i), -moment.h[j][i]);
+                }
+            }
+            for c in 0..3 {
+                m.clear_border_row(g(c));
+                m.add(g(c), g(c), 1.0);
+                for j in 0..3 {
+                    m.add(g(c), g(3 + j), p[c].g[j]);
+                }
+                if let Some(y) = joint(c) {
+                    m.add(g(c), y, -1.0);
+                }
+            }
+        }
+        Some(raw)
     }
 }
 

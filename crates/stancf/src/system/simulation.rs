@@ -524,6 +524,13 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                     force: [0.0; 3],
                 }
             });
+            // A pinned body keeps its own loads' impulse: its pin's force
+            // is the rest of its momentum change (B35).
+            let state = if pin.is_some() {
+                state.with_own_impulse()
+            } else {
+                state
+            };
             Ok(StepBody {
                 index: b,
                 body: state,

@@ -82,7 +82,8 @@ impl SystemSimulation {
             };
             let body = &self.bodies[k];
             let mut impulse = crate::vec3::sub(body.body.linear_momentum(), pin.momentum_a);
-            impulse = crate::vec3::sub(impulse, body.body.own_impulse());
+            let own = body.body.own_impulse().expect("a pinned body keeps it");
+            impulse = crate::vec3::sub(impulse, own);
             for bp in &body.points {
                 let f = self.point_force(bp.point);
                 impulse = crate::vec3::sub(impulse, f.map(|c| c * dt));

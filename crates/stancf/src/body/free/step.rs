@@ -216,7 +216,9 @@ impl FreeBody {
     pub fn advance(&mut self, x: &[f64]) -> Result<(), SolverError> {
         let slots = self.slots(x);
         self.water_work += self.drag_work(&slots);
-        self.own_impulse = self.own_impulse_over(&slots);
+        if self.own_impulse.is_some() {
+            self.own_impulse = Some(self.own_impulse_over(&slots));
+        }
         self.moment_work += self.moment_power_integral(&slots);
         let theta_b = slots[6];
         let turn = crate::vec3::norm(theta_b);
