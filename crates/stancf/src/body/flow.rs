@@ -21,10 +21,10 @@ use crate::water::kinematics::{FluidKinematics, Sea};
 /// The flow at a point, on jets: velocity and local acceleration
 /// (in the axes the caller turns them to) and p_d / rho.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Flow<const N: usize> {
-    pub velocity: JetVec<N>,
-    pub acceleration: JetVec<N>,
-    pub pressure: Jet<N>,
+pub(crate) struct Flow<const N: usize, const H: usize = N> {
+    pub velocity: JetVec<N, H>,
+    pub acceleration: JetVec<N, H>,
+    pub pressure: Jet<N, H>,
 }
 
 /// When the flow is taken: at a time of a step (waves, the current with
@@ -38,7 +38,11 @@ pub enum FlowTime {
 
 /// f(x0) + grad f . (x - x0) on jets: the value at the point and the
 /// first derivatives through x's (B31).
-fn linear<const N: usize>(value: f64, gradient: &[f64; 3], x: &JetVec<N>) -> Jet<N> {
+fn linear<const N: usize, const H: usize>(
+    value: f64,
+    gradient: &[f64; 3],
+    x: &JetVec<N, H>,
+) -> Jet<N, H> {
     let mut out = Jet::constant(value);
     for j in 0..3 {
         if gradient[j] != 0.0 {
@@ -50,7 +54,11 @@ fn linear<const N: usize>(value: f64, gradient: &[f64; 3], x: &JetVec<N>) -> Jet
 
 /// The sea's flow at the point `x` (global, on jets) at `time`, in global
 /// axes (B31).
-pub(crate) fn flow_at<const N: usize>(sea: &Sea, x: &JetVec<N>, time: FlowTime) -> Flow<N> {
+pub(crate) fn flow_at<const N: usize, const H: usize>(
+    sea: &Sea,
+    x: &JetVec<N, H>,
+    time: FlowTime,
+) -> Flow<N, H> {
     let at = x.map(|c| c.v);
     let k: FluidKinematics = match time {
         FlowTime::At(t) => sea.kinematics(&at, t),
@@ -65,9 +73,9 @@ pub(crate) fn flow_at<const N: usize>(sea: &Sea, x: &JetVec<N>, time: FlowTime) 
     }
 }
 
-impl<const N: usize> Flow<N> {
+impl<const N: usize, const H: usize> Flow<N, H> {
     /// The flow with its vectors turned by `turn` (to a body's axes).
-    pub fn turned(self, turn: impl Fn(&JetVec<N>) -> JetVec<N>) -> Self {
+    pub fn turned(self, turn: impl Fn(&JetVec<N, H>) -> JetVec<N, H>) -> Self {
         Flow {
             velocity: turn(&self.velocity),
             acceleration: turn(&self.acceleration),

@@ -59,7 +59,7 @@ const STATIONS: [(f64, f64); 3] = [
     (0.887_298_334_620_741_7, 5.0 / 18.0),
 ];
 
-fn constant<const N: usize>(v: [f64; 3]) -> JetVec<N> {
+fn constant<const N: usize, const H: usize>(v: [f64; 3]) -> JetVec<N, H> {
     v.map(Jet::constant)
 }
 
@@ -158,7 +158,7 @@ impl Rod {
     /// The whole rod under water: what a rod deep under the surface
     /// wets (B18)-(B19).
     #[cfg(test)]
-    pub(crate) fn all_wet<const N: usize>(&self) -> WetPart<N> {
+    pub(crate) fn all_wet<const N: usize, const H: usize>(&self) -> WetPart<N, H> {
         WetPart::all(self.end_a, self.end_b)
     }
 
@@ -199,13 +199,13 @@ impl Rod {
     /// The rod's added mass's kinetic energy (B18) over its wet part
     /// (B22), from the reference point's velocity through the water `u`
     /// and the rate `omega` (body axes).
-    pub(crate) fn added_mass_energy<const N: usize>(
+    pub(crate) fn added_mass_energy<const N: usize, const H: usize>(
         &self,
-        wet: &WetPart<N>,
-        u: &JetVec<N>,
-        omega: &JetVec<N>,
+        wet: &WetPart<N, H>,
+        u: &JetVec<N, H>,
+        omega: &JetVec<N, H>,
         density: f64,
-    ) -> Jet<N> {
+    ) -> Jet<N, H> {
         let q = constant(self.axis());
         let mut t = Jet::constant(0.0);
         let side = 0.5 * density * self.added_mass_coefficient * self.area();
@@ -240,20 +240,20 @@ impl Rod {
     ///   f_I(s) = rho (1 + Ca) A a_p,   f_I,A|B = rho CaEnd V_end a_q q,
     ///   f_p,A = rho A p_d q,   f_p,B = -rho A p_d q
     /// ```
-    pub(crate) fn drag<const N: usize>(
+    pub(crate) fn drag<const N: usize, const H: usize>(
         &self,
-        wet: &WetPart<N>,
-        u: &JetVec<N>,
-        omega: &JetVec<N>,
+        wet: &WetPart<N, H>,
+        u: &JetVec<N, H>,
+        omega: &JetVec<N, H>,
         density: f64,
         centre: [f64; 3],
-        flow: &dyn Fn(&JetVec<N>) -> Option<Flow<N>>,
-    ) -> (JetVec<N>, JetVec<N>) {
+        flow: &dyn Fn(&JetVec<N, H>) -> Option<Flow<N, H>>,
+    ) -> (JetVec<N, H>, JetVec<N, H>) {
         let q = constant(self.axis());
-        let mut force = constant::<N>([0.0; 3]);
-        let mut moment = constant::<N>([0.0; 3]);
-        let mut add_at = |xi: &JetVec<N>, f: JetVec<N>| {
-            let arm: JetVec<N> = std::array::from_fn(|i| xi[i] - Jet::constant(centre[i]));
+        let mut force = constant::<N, H>([0.0; 3]);
+        let mut moment = constant::<N, H>([0.0; 3]);
+        let mut add_at = |xi: &JetVec<N, H>, f: JetVec<N, H>| {
+            let arm: JetVec<N, H> = std::array::from_fn(|i| xi[i] - Jet::constant(centre[i]));
             let m = cross(&arm, &f);
             for i in 0..3 {
                 force[i] = force[i] + f[i];
@@ -271,7 +271,7 @@ impl Rod {
                 Some(s) => split(&std::array::from_fn(|i| moving[i] - s.velocity[i]), &q),
                 None => (Jet::constant(0.0), u_p),
             };
-            let mut f = constant::<N>([0.0; 3]);
+            let mut f = constant::<N, H>([0.0; 3]);
             if side != 0.0 {
                 let speed = super::jet::norm(&through_p);
                 f = through_p.map(|c| (c * speed * station.weight).scale(side));
@@ -328,18 +328,25 @@ impl Rod {
 }
 
 /// |x| on a jet (its derivative the sign, zero at zero).
-fn absolute<const N: usize>(x: Jet<N>) -> Jet<N> {
+fn absolute<const N: usize, const H: usize>(x: Jet<N, H>) -> Jet<N, H> {
     x.compose(x.v.abs(), x.v.signum(), 0.0)
 }
 
 /// u + Omega x xi.
-fn point_velocity<const N: usize>(u: &JetVec<N>, omega: &JetVec<N>, xi: &JetVec<N>) -> JetVec<N> {
+fn point_velocity<const N: usize, const H: usize>(
+    u: &JetVec<N, H>,
+    omega: &JetVec<N, H>,
+    xi: &JetVec<N, H>,
+) -> JetVec<N, H> {
     let turn = cross(omega, xi);
     std::array::from_fn(|i| u[i] + turn[i])
 }
 
 /// (u . q, u - (u . q) q).
-fn split<const N: usize>(u: &JetVec<N>, q: &JetVec<N>) -> (Jet<N>, JetVec<N>) {
+fn split<const N: usize, const H: usize>(
+    u: &JetVec<N, H>,
+    q: &JetVec<N, H>,
+) -> (Jet<N, H>, JetVec<N, H>) {
     let along = dot(u, q);
     (along, std::array::from_fn(|i| u[i] - along * q[i]))
 }
@@ -437,7 +444,7 @@ mod tests {
         r.end_a = [-0.5, 0.0, 0.0];
         r.end_b = [0.5, 0.0, 0.0];
         let (rho, v, w) = (1025.0, 0.7, 0.9);
-        let z = constant::<1>([0.0; 3]);
+        let z = constant::<1, 1>([0.0; 3]);
         let (a, l) = (r.area(), r.length());
         let across = r.added_mass_energy(&r.all_wet(), &constant([0.0, v, 0.0]), &z, rho);
         let want = 0.5 * rho * 1.0 * a * l * v * v;
@@ -463,7 +470,7 @@ mod tests {
         r.end_a = [-0.5, 0.0, 0.0];
         r.end_b = [0.5, 0.0, 0.0];
         let (rho, v, w) = (1025.0, 0.7, 0.9);
-        let z = constant::<1>([0.0; 3]);
+        let z = constant::<1, 1>([0.0; 3]);
         let middle = r.middle();
         let (f, m) = r.drag(
             &r.all_wet(),

@@ -41,14 +41,17 @@ pub fn series(k: usize, s: f64) -> (f64, f64, f64) {
 }
 
 /// f_k(s) on a jet.
-fn series_jet<const N: usize>(k: usize, s: Jet<N>) -> Jet<N> {
+fn series_jet<const N: usize, const H: usize>(k: usize, s: Jet<N, H>) -> Jet<N, H> {
     let (f, df, d2f) = series(k, s.v);
     s.compose(f, df, d2f)
 }
 
 /// (B3): the angular velocity in body axes of R_a exp([theta]) moving
 /// at theta_dot, on jets.
-pub fn body_rate<const N: usize>(theta: &JetVec<N>, theta_dot: &JetVec<N>) -> JetVec<N> {
+pub fn body_rate<const N: usize, const H: usize>(
+    theta: &JetVec<N, H>,
+    theta_dot: &JetVec<N, H>,
+) -> JetVec<N, H> {
     let s = super::jet::dot(theta, theta);
     let f1 = series_jet(1, s);
     let f2 = series_jet(2, s);
@@ -58,7 +61,11 @@ pub fn body_rate<const N: usize>(theta: &JetVec<N>, theta_dot: &JetVec<N>) -> Je
 }
 
 /// exp([theta]) v (sign +1) or exp([theta])^T v (sign -1), (B4), on jets.
-pub fn turn<const N: usize>(theta: &JetVec<N>, v: &JetVec<N>, sign: f64) -> JetVec<N> {
+pub fn turn<const N: usize, const H: usize>(
+    theta: &JetVec<N, H>,
+    v: &JetVec<N, H>,
+    sign: f64,
+) -> JetVec<N, H> {
     let s = super::jet::dot(theta, theta);
     let (f0, f1) = (series_jet(0, s), series_jet(1, s));
     let t_x_v = cross(theta, v);
@@ -67,7 +74,7 @@ pub fn turn<const N: usize>(theta: &JetVec<N>, v: &JetVec<N>, sign: f64) -> JetV
 }
 
 /// A x with a constant 3 x 3 matrix, on jets.
-pub fn times<const N: usize>(a: &[[f64; 3]; 3], x: &JetVec<N>) -> JetVec<N> {
+pub fn times<const N: usize, const H: usize>(a: &[[f64; 3]; 3], x: &JetVec<N, H>) -> JetVec<N, H> {
     std::array::from_fn(|r| x[0].scale(a[r][0]) + x[1].scale(a[r][1]) + x[2].scale(a[r][2]))
 }
 

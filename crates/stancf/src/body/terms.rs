@@ -19,7 +19,7 @@
 //! reference point moves by dr_G + R (c x eta)).
 
 use super::flow::{flow_at, Flow, FlowTime};
-use super::jet::{cross, dot, norm, Jet, JetVec};
+use super::jet::{cross, dot, norm, Grad, Jet, JetVec};
 use super::rod::Rod;
 use super::rotation::{body_rate, times, turn};
 use super::waterline::Submerged;
@@ -97,7 +97,7 @@ impl BodyWater {
 }
 
 /// A rotation matrix on jets, `[row][column]`.
-type Rotation = [[Jet<NV>; 3]; 3];
+type Rotation<const H: usize> = [[Jet<NV, H>; 3]; 3];
 
 /// What the terms need of the body and the step.
 pub struct Context<'a> {
@@ -146,17 +146,17 @@ pub fn moment_on_theta<const N: usize>(
     body_rate(&minus_theta, &body_axes)
 }
 
-fn constant(v: [f64; 3]) -> JetVec<NV> {
+fn constant<const H: usize>(v: [f64; 3]) -> JetVec<NV, H> {
     v.map(Jet::constant)
 }
 
 impl Context<'_> {
     /// Omega and u of (B9) (body axes).
-    fn rates(&self, v: &[JetVec<NV>; 4]) -> (JetVec<NV>, JetVec<NV>) {
+    fn rates<const H: usize>(&self, v: &[JetVec<NV, H>; 4]) -> (JetVec<NV, H>, JetVec<NV, H>) {
         let [v_g, theta, theta_dot, _] = v;
         let omega = body_rate(theta, theta_dot);
         let current = self.water.map_or([0.0; 3], |w| w.current);
-        let relative: JetVec<NV> = std::array::from_fn(|i| v_g[i] - Jet::constant(current[i]));
+        let relative: JetVec<NV, H> = std::array::from_fn(|i| v_g[i] - Jet::constant(current[i]));
         let start_axes = times(&crate::vec3::mat3_transpose(self.rotation_a), &relative);
         let body_axes = turn(theta, &start_axes, -1.0);
         let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
@@ -168,14 +168,19 @@ impl Context<'_> {
     /// reference point) at the pose (r_G, theta) of `v`, in body axes:
     /// x = r_G + R (xi - c), turned back by R^T = exp(-[theta]) R_a^T.
     /// None without a sea.
-    fn flow(&self, v: &[JetVec<NV>; 4], rotation: &Rotation, xi: &JetVec<NV>) -> Option<Flow<NV>> {
+    fn flow<const H: usize>(
+        &self,
+        v: &[JetVec<NV, H>; 4],
+        rotation: &Rotation<H>,
+        xi: &JetVec<NV, H>,
+    ) -> Option<Flow<NV, H>> {
         let sea = self.water?.sea.as_deref()?;
-        let arm: JetVec<NV> =
+        let arm: JetVec<NV, H> =
             std::array::from_fn(|i| xi[i] - Jet::constant(self.centre_of_mass[i]));
-        let x: JetVec<NV> = std::array::from_fn(|i| {
+        let x: JetVec<NV, H> = std::array::from_fn(|i| {
             v[3][i] + rotation[i][0] * arm[0] + rotation[i][1] * arm[1] + rotation[i][2] * arm[2]
         });
-        let back = |g: &JetVec<NV>| -> JetVec<NV> {
+        let back = |g: &JetVec<NV, H>| -> JetVec<NV, H> {
             std::array::from_fn(|i| {
                 rotation[0][i] * g[0] + rotation[1][i] * g[1] + rotation[2][i] * g[2]
             })
@@ -185,9 +190,9 @@ impl Context<'_> {
 
     /// R = R_a exp([theta]) on jets, its columns exp([theta]) e_k turned
     /// by R_a; only with a sea, whose flow it carries to body axes.
-    fn rotation(&self, v: &[JetVec<NV>; 4]) -> Option<Rotation> {
+    fn rotation<const H: usize>(&self, v: &[JetVec<NV, H>; 4]) -> Option<Rotation<H>> {
         self.water?.sea.as_ref()?;
-        let columns: [JetVec<NV>; 3] = std::array::from_fn(|k| {
+        let columns: [JetVec<NV, H>; 3] = std::array::from_fn(|k| {
             let mut e = constant([0.0; 3]);
             e[k] = Jet::constant(1.0);
             times(self.rotation_a, &turn(&v[1], &e, 1.0))
@@ -282,22 +287,25 @@ impl Context<'_> {
     /// of mass M_G (body axes): Q_r = R f, Q_theta = J_r^T M_G. In a sea
     /// (§15.15) they hold the water's loads where it moves: the drag on
     /// the velocity through the moving water, the fluid's inertia (B32)
-    /// and the dynamic pressure on the rods' caps (B33).
-    pub fn drag(&self, v: &[JetVec<NV>; 4]) -> Option<(JetVec<NV>, JetVec<NV>)> {
+    /// and the dynamic pressure on the rods' caps (B33). Virtual work,
+    /// whose rows take its value and first derivatives alone: evaluated
+    /// on jets of first order.
+    pub fn drag(&self, pose: &[JetVec<NV>; 4]) -> Option<([Grad<NV>; 3], [Grad<NV>; 3])> {
         let w = self.water?;
+        let v: &[JetVec<NV, 0>; 4] = &pose.map(|x| x.map(Jet::first_order));
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
         // In a sea, the reference point's velocity through the water and
         // the fluid's inertia there, rho V (1 + Ca) a_f (B32).
         let rotation = self.rotation(v);
-        let flow = |xi: &JetVec<NV>| rotation.as_ref().and_then(|r| self.flow(v, r, xi));
+        let flow = |xi: &JetVec<NV, 0>| rotation.as_ref().and_then(|r| self.flow(v, r, xi));
         let at_reference = flow(&constant([0.0; 3]));
-        let relative: JetVec<NV> = match &at_reference {
+        let relative: JetVec<NV, 0> = match &at_reference {
             Some(flow) => std::array::from_fn(|i| u[i] - flow.velocity[i]),
             None => u,
         };
         let speed = norm(&relative);
-        let mut f: JetVec<NV> =
+        let mut f: JetVec<NV, 0> =
             std::array::from_fn(|i| (relative[i] * speed).scale(-half_rho * w.drag_areas[i]));
         if let Some(flow) = &at_reference {
             for i in 0..3 {
@@ -308,10 +316,11 @@ impl Context<'_> {
         let spin = norm(&omega);
         // The reference point is at -c from the centre: (-c) x f = f x c.
         let f_x_c = cross(&f, &constant(self.centre_of_mass));
-        let mut on_eta: JetVec<NV> = std::array::from_fn(|i| {
+        let mut on_eta: JetVec<NV, 0> = std::array::from_fn(|i| {
             f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
         });
-        for (rod, wet, _) in self.rods_in_water(v) {
+        for (rod, wet, _) in self.rods_in_water(pose) {
+            let wet = wet.first_order();
             let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass, &flow);
             for i in 0..3 {
                 f[i] = f[i] + force[i];
@@ -486,7 +495,18 @@ mod tests {
                     std::array::from_fn(|i| Jet::variable(x[3 * k + i], 3 * k + i))
                 });
                 let (a, b) = ctx.drag(&v).unwrap();
-                [a[0], a[1], a[2], b[0], b[1], b[2], ctx.density(&v)]
+                // The drag's rows as jets of second order without a
+                // Hessian (they carry none: virtual work).
+                let full = |q: Grad<NV>| Jet {
+                    v: q.v,
+                    g: q.g,
+                    h: [[0.0; NV]; NV],
+                };
+                [a[0], a[1], a[2], b[0], b[1], b[2]]
+                    .map(full)
+                    .into_iter()
+                    .chain([ctx.density(&v)])
+                    .collect::<Vec<_>>()
             };
             let exact = eval(&at);
             let h = 1e-6;

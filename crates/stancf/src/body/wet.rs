@@ -34,42 +34,65 @@ const BAND_POINTS: usize = 6;
 /// A cap: its centre (body axes), its wet fraction and that fraction's
 /// rate along the motion.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Cap<const N: usize> {
+pub(crate) struct Cap<const N: usize, const H: usize = N> {
     pub centre: [f64; 3],
-    pub wetness: Jet<N>,
-    pub rate: Jet<N>,
+    pub wetness: Jet<N, H>,
+    pub rate: Jet<N, H>,
 }
 
 /// The wet part of a rod at a pose (body axes, from the reference point).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct WetPart<const N: usize> {
+pub(crate) struct WetPart<const N: usize, const H: usize = N> {
     /// The lower end, the axis upwards and the length.
     low: [f64; 3],
     up: [f64; 3],
     length: f64,
     /// z(t) = z_low + c t, the sections' half-height a s.
-    z_low: Jet<N>,
-    c: Jet<N>,
-    half_height: Jet<N>,
+    z_low: Jet<N, H>,
+    c: Jet<N, H>,
+    half_height: Jet<N, H>,
     /// The wet run's end t_w and the cut band's t_d (in [0, L]).
-    wet_to: Jet<N>,
-    dry_from: Jet<N>,
+    wet_to: Jet<N, H>,
+    dry_from: Jet<N, H>,
     /// The rates of z_low, c and a s along the motion (first-order jets).
-    rates: [Jet<N>; 3],
-    pub caps: [Cap<N>; 2],
+    rates: [Jet<N, H>; 3],
+    pub caps: [Cap<N, H>; 2],
 }
 
 /// A station of the wet side: its point (body axes, on jets: it slides
 /// with the band), its weight times its length times its section's wet
 /// fraction, and its weight times its length times the rate of that
 /// fraction (for the momentum the water keeps).
-pub(crate) struct Station<const N: usize> {
-    pub point: JetVec<N>,
-    pub weight: Jet<N>,
-    pub wetting: Jet<N>,
+pub(crate) struct Station<const N: usize, const H: usize = N> {
+    pub point: JetVec<N, H>,
+    pub weight: Jet<N, H>,
+    pub wetting: Jet<N, H>,
 }
 
 impl<const N: usize> WetPart<N> {
+    /// The same of first order, for the water's virtual work.
+    pub fn first_order(&self) -> WetPart<N, 0> {
+        let cap = |c: &Cap<N>| Cap {
+            centre: c.centre,
+            wetness: c.wetness.first_order(),
+            rate: c.rate.first_order(),
+        };
+        WetPart {
+            low: self.low,
+            up: self.up,
+            length: self.length,
+            z_low: self.z_low.first_order(),
+            c: self.c.first_order(),
+            half_height: self.half_height.first_order(),
+            wet_to: self.wet_to.first_order(),
+            dry_from: self.dry_from.first_order(),
+            rates: self.rates.map(Jet::first_order),
+            caps: self.caps.each_ref().map(cap),
+        }
+    }
+}
+
+impl<const N: usize, const H: usize> WetPart<N, H> {
     /// The whole rod under water, from `end_a` to `end_b`.
     pub fn all(end_a: [f64; 3], end_b: [f64; 3]) -> Self {
         let step = crate::vec3::sub(end_b, end_a);
@@ -97,7 +120,7 @@ impl<const N: usize> WetPart<N> {
 
     /// The rod from `end_a` to `end_b` of radius `a` whose end A is at
     /// height `z_a` and whose axis has the vertical component `c`.
-    pub fn at(end_a: [f64; 3], end_b: [f64; 3], a: f64, z_a: Jet<N>, c: Jet<N>) -> Self {
+    pub fn at(end_a: [f64; 3], end_b: [f64; 3], a: f64, z_a: Jet<N, H>, c: Jet<N, H>) -> Self {
         let mut part = Self::all(end_a, end_b);
         let length = part.length;
         part.caps = [
@@ -125,7 +148,7 @@ impl<const N: usize> WetPart<N> {
             Jet::constant(0.0)
         };
         let half_height = s.scale(a);
-        let clip = |t: Jet<N>| {
+        let clip = |t: Jet<N, H>| {
             if t.v <= 0.0 {
                 Jet::constant(0.0)
             } else if t.v >= length {
@@ -165,7 +188,7 @@ impl<const N: usize> WetPart<N> {
 
     /// The same with the rates along the motion of its pose-dependent
     /// numbers, `rate(x)` being d x / dt.
-    pub fn with_rates(mut self, rate: impl Fn(&Jet<N>) -> Jet<N>) -> Self {
+    pub fn with_rates(mut self, rate: impl Fn(&Jet<N, H>) -> Jet<N, H>) -> Self {
         self.rates = [rate(&self.z_low), rate(&self.c), rate(&self.half_height)];
         for cap in &mut self.caps {
             cap.rate = first_order(rate(&cap.wetness));
@@ -174,7 +197,7 @@ impl<const N: usize> WetPart<N> {
     }
 
     /// The point of the axis at t from the lower end.
-    pub fn point(&self, t: Jet<N>) -> JetVec<N> {
+    pub fn point(&self, t: Jet<N, H>) -> JetVec<N, H> {
         std::array::from_fn(|i| Jet::constant(self.low[i]) + t.scale(self.up[i]))
     }
 
@@ -184,7 +207,7 @@ impl<const N: usize> WetPart<N> {
         &'a self,
         rule: &'a [(f64, f64)],
         pieces: usize,
-    ) -> impl Iterator<Item = Station<N>> + 'a {
+    ) -> impl Iterator<Item = Station<N, H>> + 'a {
         let zero = Jet::constant(0.0);
         let piece = self.wet_to.scale(1.0 / pieces as f64);
         let runs = if self.wet_to.v > 0.0 { pieces } else { 0 };
@@ -217,7 +240,7 @@ impl<const N: usize> WetPart<N> {
     /// The wet fraction of the section at t (B22) and its rate along the
     /// motion at that section: x = -(z_low + c t) / (a s),
     /// dx/dt = -(z_low' + c' t) / (a s) - x (a s)' / (a s).
-    fn section(&self, t: Jet<N>) -> (Jet<N>, Jet<N>) {
+    fn section(&self, t: Jet<N, H>) -> (Jet<N, H>, Jet<N, H>) {
         let hh = self.half_height;
         let inverse = hh.compose(1.0 / hh.v, -1.0 / (hh.v * hh.v), 2.0 / hh.v.powi(3));
         let x = -(self.z_low + self.c * t) * inverse;
@@ -247,7 +270,7 @@ impl<const N: usize> WetPart<N> {
     /// The waterline's section of a rod whose band is empty (a vertical
     /// rod) and the rate of the wet run's end there, if the waterline
     /// lies on the rod: the water's momentum goes in or out there.
-    pub fn waterline(&self) -> Option<(JetVec<N>, Jet<N>)> {
+    pub fn waterline(&self) -> Option<(JetVec<N, H>, Jet<N, H>)> {
         let inside = self.wet_to.v > 0.0 && self.wet_to.v < self.length;
         if !(inside && self.dry_from.v == self.wet_to.v) {
             return None;
@@ -264,8 +287,8 @@ impl<const N: usize> WetPart<N> {
 /// A rate with its value and first derivatives (its second would need
 /// the pose's third derivatives: the water's virtual work, where rates
 /// enter, takes none).
-fn first_order<const N: usize>(mut x: Jet<N>) -> Jet<N> {
-    x.h = [[0.0; N]; N];
+fn first_order<const N: usize, const H: usize>(mut x: Jet<N, H>) -> Jet<N, H> {
+    x.h = [[0.0; H]; H];
     x
 }
 
@@ -275,7 +298,7 @@ fn first_order<const N: usize>(mut x: Jet<N>) -> Jet<N> {
 /// down, 0 a radius up, and C1 in between, so that a cap's added mass
 /// fades in and out with the pose (a cap switched on or off at once would
 /// kick the body's velocity and its energy).
-pub(crate) fn cap_wetness<const N: usize>(z: Jet<N>, a: f64) -> Jet<N> {
+pub(crate) fn cap_wetness<const N: usize, const H: usize>(z: Jet<N, H>, a: f64) -> Jet<N, H> {
     let zeta = -z.v / a;
     if zeta >= 1.0 {
         return Jet::constant(1.0);
