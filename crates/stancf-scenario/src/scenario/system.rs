@@ -81,7 +81,7 @@ pub(super) fn system_scenario(
     let free_bodies = bodies.iter().any(SystemBody::is_free);
     let (analysis, measures, initial, mut notes) =
         analysis_part(ctx, raw.analysis, InitialShape::Reference, free_bodies)?;
-    check_clamp_route(ctx, &lines, &analysis, free_bodies)?;
+    check_clamp_route(ctx, &lines, &analysis)?;
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;
     notes.extend(super::rod_toml::rod_types_in_air(
@@ -409,14 +409,13 @@ fn clamp(
     }
 }
 
-/// A clamp in a direction is enforced by multipliers in the P2 step or
-/// statics only (docs/method.md §6.10): other choices are refused
+/// A clamp in a direction is enforced by multipliers (docs/method.md
+/// §6.10, in both steps and statics): the elimination route is refused
 /// naming the clamp.
 fn check_clamp_route(
     ctx: &Ctx,
     lines: &[SystemLine],
     analysis: &Analysis,
-    free_bodies: bool,
 ) -> Result<(), ScenarioError> {
     let Some((i, name)) = lines.iter().enumerate().find_map(|(i, l)| {
         let k = l.clamps.iter().position(Option::is_some)?;
@@ -430,22 +429,6 @@ fn check_clamp_route(
             &key,
             "a clamp in a direction holds a combination of coordinates, which only the \
              multiplier route enforces: remove analysis.constraint_method = \"elimination\"",
-        ));
-    }
-    let dynamic = analysis.kind == super::AnalysisKind::Dynamic;
-    if dynamic && free_bodies {
-        return Err(ctx.err(
-            &key,
-            "a clamp in a direction is held by the P2 step only, and a system with a free body \
-             is stepped by the Galerkin step only: the two are not available together in this \
-             version",
-        ));
-    }
-    if dynamic && analysis.time_scheme == stancf::TimeScheme::Galerkin {
-        return Err(ctx.err(
-            &key,
-            "a clamp in a direction is not available with the Galerkin step in this version; \
-             use analysis.time_scheme = \"P2\"",
         ));
     }
     Ok(())

@@ -48,4 +48,27 @@ impl DirectionHold {
     pub fn moment(r_x: [f64; 3], q: [f64; 3]) -> [f64; 3] {
         cross(r_x, q)
     }
+
+    /// The rows of the held node's r_x in a mass solve M v = p at the end
+    /// of a Galerkin step (docs/method.md §6.10, (M43)): the first is
+    /// d . (M v - p) = 0, the other two the hold's rates n_k . v = 0 (the
+    /// hold's impulse at t_b, a multiplier times n_k, takes the normal
+    /// part of M v - p). A mass entry m of row r_x component `c` goes to
+    /// the first row, weighted d_c ([`Self::mass_row_weight`]); these are
+    /// the rows' constraint entries: (row 1 + k, component c, n_k c).
+    pub fn rate_rows(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+        (0..2).flat_map(move |k| (0..3).map(move |c| (1 + k, c, self.normals[k][c])))
+    }
+
+    /// The weight d_c of a mass entry of r_x component c in the node's
+    /// first r_x row (the others are [`Self::rate_rows`]).
+    pub fn mass_row_weight(&self, c: usize) -> f64 {
+        self.direction[c]
+    }
+
+    /// The right side of the three r_x rows from the momentum p_rx:
+    /// (d . p_rx, 0, 0).
+    pub fn momentum_rows(&self, p_rx: [f64; 3]) -> [f64; 3] {
+        [dot(self.direction, p_rx), 0.0, 0.0]
+    }
 }

@@ -30,7 +30,7 @@ pub use crate::motion::{
     ramp_factor, CoordinateMotion, CoupledMotion, HarmonicMotion, IntervalMotion, MotionTable,
     Oscillation,
 };
-use crate::numbering::{coordinate, ElementType, SLOT_R};
+use crate::numbering::{coordinate, ElementType, SLOT_R, SLOT_R_X};
 pub use direction::DirectionHold;
 
 /// What a constraint fixes (docs/method.md §6.1).
@@ -291,14 +291,8 @@ impl Constraints {
 
     /// Refuses what the direction holds cannot be enforced with: the
     /// elimination route (a combination of coordinates, not a coordinate,
-    /// is held) and the Galerkin step (its end rates v_b = M^-1 p_b would
-    /// need the hold's impulse at t_b). Keys `analysis.constraint_method`
-    /// and `analysis.time_scheme` in errors.
-    pub fn check_direction_route(
-        &self,
-        method: ConstraintMethod,
-        galerkin: bool,
-    ) -> Result<(), ModelError> {
+    /// is held). Key `analysis.constraint_method` in errors.
+    pub fn check_direction_route(&self, method: ConstraintMethod) -> Result<(), ModelError> {
         let Some(h) = self.directions.first() else {
             return Ok(());
         };
@@ -313,21 +307,62 @@ impl Constraints {
                 ),
             ));
         }
-        if galerkin {
-            return Err(ModelError::invalid(
-                "analysis.time_scheme",
-                format!(
-                    "node {} is clamped in a direction: the Galerkin step does not take such a \
-                     clamp in this version; use the P2 step",
-                    h.node
-                ),
-            ));
-        }
         Ok(())
     }
 
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
+    }
+
+    /// The direction hold whose r_x coordinate g is (with `dpn`
+    /// coordinates per node), with g's component (0, 1, 2) and the
+    /// node's first r_x coordinate.
+    pub fn held_direction(&self, dpn: usize, g: usize) -> Option<(&DirectionHold, usize, usize)> {
+        let (node, d) = (g / dpn, g % dpn);
+        if !(3..6).contains(&d) {
+            return None;
+        }
+        let hold = self.directions.iter().find(|h| h.node == node)?;
+        Some((hold, d - 3, g - (d - 3)))
+    }
+
+    /// Adds mass entry (i, j, m) of an unconstrained row i of a mass solve
+    /// at the end of a Galerkin step through `add`, a held node's r_x rows
+    /// turned to (M43) ([`DirectionHold::mass_row_weight`]); the holds'
+    /// rate rows are added by [`Self::add_hold_rate_rows`].
+    pub fn add_mass_entry(
+        &self,
+        dpn: usize,
+        i: usize,
+        j: usize,
+        m: f64,
+        mut add: impl FnMut(usize, usize, f64),
+    ) {
+        match self.held_direction(dpn, i) {
+            Some((hold, c, first)) => add(first, j, hold.mass_row_weight(c) * m),
+            None => add(i, j, m),
+        }
+    }
+
+    /// The holds' rate rows n_k . v_rx = 0 of a mass solve (M43), through
+    /// `add(row, column, value)` (coordinates).
+    pub fn add_hold_rate_rows(&self, dpn: usize, mut add: impl FnMut(usize, usize, f64)) {
+        for hold in &self.directions {
+            let first = coordinate(dpn, hold.node, SLOT_R_X, 0);
+            for (row, c, n) in hold.rate_rows() {
+                add(first + row, first + c, n);
+            }
+        }
+    }
+
+    /// Turns the momentum `p` (per coordinate) of a mass solve's right
+    /// side to (M43) at the held nodes' r_x rows.
+    pub fn turn_hold_momentum(&self, dpn: usize, p: &mut [f64]) {
+        for hold in &self.directions {
+            let first = coordinate(dpn, hold.node, SLOT_R_X, 0);
+            let rows = hold.momentum_rows([p[first], p[first + 1], p[first + 2]]);
+            p[first..first + 3].copy_from_slice(&rows);
+        }
     }
 
     /// True if the coordinate's values are prescribed: by a constraint, or

@@ -8,7 +8,8 @@ use crate::model::{coordinate, Model};
 
 /// Fills `lu` with the mass matrix M + M_a(e) at coordinates `e`, the rows
 /// of constrained coordinates replaced by identity rows (so that v_b takes
-/// the prescribed rates), and factorizes it.
+/// the prescribed rates) and a direction hold's r_x rows by (M43), and
+/// factorizes it.
 pub(super) fn factorize_constrained_mass(
     lu: &mut BandLu,
     model: &Model,
@@ -16,7 +17,8 @@ pub(super) fn factorize_constrained_mass(
 ) -> Result<(), SingularMatrix> {
     let a = lu.matrix_mut();
     a.clear();
-    let constrained = |i: usize| model.constraints.is_constrained(i);
+    let constraints = &model.constraints;
+    let constrained = |i: usize| constraints.is_constrained(i);
     for i in (0..model.dofs()).filter(|&i| constrained(i)) {
         a.add(i, i, 1.0);
     }
@@ -28,7 +30,7 @@ pub(super) fn factorize_constrained_mass(
                     for c in 0..3 {
                         let (i, j) = (coordinate(dpn, k, s, c), coordinate(dpn, k, t, c));
                         if !constrained(i) {
-                            a.add(i, j, m);
+                            constraints.add_mass_entry(dpn, i, j, m, |r, s, v| a.add(r, s, v));
                         }
                     }
                 }
@@ -37,8 +39,9 @@ pub(super) fn factorize_constrained_mass(
     });
     model.for_entrained_mass(e, |i, j, m| {
         if !constrained(i) {
-            a.add(i, j, m);
+            constraints.add_mass_entry(dpn, i, j, m, |r, s, v| a.add(r, s, v));
         }
     });
+    constraints.add_hold_rate_rows(dpn, |r, s, v| a.add(r, s, v));
     lu.factorize()
 }

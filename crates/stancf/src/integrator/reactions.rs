@@ -42,8 +42,9 @@ impl Simulation {
     /// docs/method.md §6.10) exerted on the cable, averaged over the last
     /// step: (node, moment). The generalized impulse on r_x is the sum of
     /// the hold's multipliers of the position rows times their normals,
-    /// Q dt = sum lambda_k n_k, and the moment M = r_x x Q at the step's
-    /// end (M42). Zero before the first step; not restored by an undo.
+    /// Q dt = sum lambda_k n_k (with the Galerkin step, plus the impulse
+    /// at t_b, M v_b - dA/de_b, (M43)), and the moment M = r_x x Q at the
+    /// step's end (M42). Zero before the first step; not restored by an undo.
     pub fn clamp_moments(&self) -> Vec<(usize, [f64; 3])> {
         let dt = self.settings.time_step;
         let dpn = self.layout.dpn;
@@ -66,6 +67,13 @@ impl Simulation {
                     }
                 }
                 let o = coordinate(dpn, hold.node, SLOT_R_X, 0);
+                if self.settings.time_scheme.carries_momentum() {
+                    // Galerkin: the hold's impulse at t_b, M v_b - dA/de_b
+                    // on r_x (M43).
+                    for c in 0..3 {
+                        q[c] += (self.mass_v[o + c] - self.scratch.end_momentum[o + c]) / dt;
+                    }
+                }
                 let r_x = [self.state.e[o], self.state.e[o + 1], self.state.e[o + 2]];
                 (hold.node, DirectionHold::moment(r_x, q))
             })

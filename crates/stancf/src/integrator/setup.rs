@@ -43,10 +43,9 @@ impl Simulation {
         let dt = settings.time_step;
         let time_rule = check_settings(&settings)?;
         check_initial_state(&model, &initial)?;
-        model.constraints.check_direction_route(
-            settings.constraint_method,
-            settings.time_scheme.carries_momentum(),
-        )?;
+        model
+            .constraints
+            .check_direction_route(settings.constraint_method)?;
         let n = model.dofs();
         let mut initial = initial;
         model.apply_constraints(&mut initial);

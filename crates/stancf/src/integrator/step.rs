@@ -174,6 +174,9 @@ impl Simulation {
                 self.scratch.end_momentum[g] - self.rhs[g]
             };
         }
+        self.model
+            .constraints
+            .turn_hold_momentum(self.layout.dpn, &mut self.rhs);
         &self.rhs
     }
 
@@ -366,6 +369,10 @@ impl Simulation {
                     .prescribed_end_rate(g)
                     .unwrap_or(self.scratch.end_momentum[g]);
             }
+            let dpn = self.layout.dpn;
+            self.model
+                .constraints
+                .turn_hold_momentum(dpn, &mut self.rhs);
             lu.solve(&mut self.rhs);
             let end_e = &self.scratch.node_e[last * n..(last + 1) * n];
             self.model.momentum(end_e, &self.rhs, &mut self.mass_v);
@@ -389,7 +396,11 @@ impl Simulation {
             self.state.e[g] = e_new;
             self.state.v[g] = v_new;
             if galerkin {
-                self.momentum[g] = if self.model.constraints.is_constrained(g) {
+                // A constrained coordinate, and a held r_x (its hold's
+                // impulse at t_b is in M v_b, (M43)), carry M v_b.
+                let held = |g| self.model.constraints.held_direction(self.layout.dpn, g);
+                self.momentum[g] = if self.model.constraints.is_constrained(g) || held(g).is_some()
+                {
                     self.mass_v[g]
                 } else {
                     self.scratch.end_momentum[g]

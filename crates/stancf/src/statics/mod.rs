@@ -178,7 +178,7 @@ impl StaticSolver {
         settings.validate()?;
         model
             .constraints
-            .check_direction_route(settings.constraint_method, false)?;
+            .check_direction_route(settings.constraint_method)?;
         if !model.constraints.remove_rigid_motions() {
             return Err(ModelError::invalid(
                 "constraints",

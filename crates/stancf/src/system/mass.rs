@@ -25,6 +25,10 @@
 //! are carried to the body's by G_P^T and replaced by v_P - G_P nu = 0
 //! (docs/method.md §15.7, (B14)); G_P turns with the body, so M_ff is
 //! refactorized at every step.
+//!
+//! A line end clamped in a direction (docs/method.md §6.10) has its r_x
+//! rows turned to (M43): d . (M v - p) = 0 and the hold's rates
+//! n_k . v = 0.
 
 use super::body_terms::StepBody;
 use super::layout::{LineView, SystemLayout};
@@ -300,32 +304,35 @@ fn fill_mass<'a>(
         let numbering = &layout.lines[i];
         let mut view = LineView::new(lu.matrix_mut().block_entries(i), &layout.maps[i]);
         let dpn = model.dofs_per_node();
+        let constraints = &model.constraints;
+        // Coordinates' entry (ga, gb) at unknowns, a held node's r_x
+        // rows turned to (M43).
+        let mut add = |ga: usize, gb: usize, m: f64| {
+            if let (Some(_), Some(_)) = (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb)) {
+                constraints.add_mass_entry(dpn, ga, gb, m, |a, b, v| {
+                    let (r, s) = (numbering.unknown_at(0, a), numbering.unknown_at(0, b));
+                    view.add(r.expect("a held r_x is free"), s.expect("free"), v);
+                });
+            }
+        };
         crate::with_elements!(&model.mesh, els => {
             for (k, el) in els.iter().enumerate() {
                 for (a, row) in el.mass.iter().enumerate() {
                     for (b, &m_ab) in row.iter().enumerate() {
                         for c in 0..3 {
-                            let ga = coordinate(dpn, k, a, c);
-                            let gb = coordinate(dpn, k, b, c);
-                            if let (Some(r), Some(s)) =
-                                (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
-                            {
-                                view.add(r, s, m_ab);
-                            }
+                            add(coordinate(dpn, k, a, c), coordinate(dpn, k, b, c), m_ab);
                         }
                     }
                 }
             }
         });
         if let Some(e) = end {
-            model.for_entrained_mass(e, |ga, gb, m| {
-                if let (Some(r), Some(s)) =
-                    (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb))
-                {
-                    view.add(r, s, m);
-                }
-            });
+            model.for_entrained_mass(e, &mut add);
         }
+        constraints.add_hold_rate_rows(dpn, |a, b, v| {
+            let (r, s) = (numbering.unknown_at(0, a), numbering.unknown_at(0, b));
+            view.add(r.expect("a held r_x is free"), s.expect("free"), v);
+        });
     }
     for p in 0..system.points().len() {
         let inertia = system.point_inertia(p);

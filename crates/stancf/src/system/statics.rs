@@ -149,7 +149,7 @@ impl SystemStatics {
         for (i, line) in system.lines().iter().enumerate() {
             line.model
                 .constraints
-                .check_direction_route(method, false)
+                .check_direction_route(method)
                 .map_err(|e| ModelError::invalid(e.key, format!("line {i}: {}", e.message)))?;
         }
         let lines = line_statics(&system, &seeds, &own_law, targets.as_deref(), &settings);

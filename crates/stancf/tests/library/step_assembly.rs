@@ -166,6 +166,7 @@ fn a_direction_hold_jacobian_matches_finite_differences() {
             Scheme::P2 { layers: 1 },
             Scheme::P2 { layers: 2 },
             Scheme::P2 { layers: 3 },
+            Scheme::Galerkin,
             Scheme::Static,
         ] {
             let layout = SlabLayout::new(&m, scheme, ConstraintMethod::Multiplier);
@@ -175,6 +176,7 @@ fn a_direction_hold_jacobian_matches_finite_differences() {
                     let h = 0.02 / layers as f64;
                     (h, h, 3, format!("{kind:?} {layers} layers"))
                 }
+                Scheme::Galerkin => (0.02, 0.02, 3, format!("{kind:?} Galerkin")),
                 _ => (0.0, 1.0, 1, format!("{kind:?} static")),
             };
             let slab = TimeSlab::new(slab_dt, &GaussRule::new(points).unwrap());
