@@ -86,3 +86,32 @@ def test_a_coupled_pinned_body_takes_three_numbers_and_pulls_by_its_wet_weight(t
     wet_weight = (50_000.0 - 1025.0 * math.pi * 10.0) * 9.80665
     assert abs(f[2] + wet_weight) < 1e-9 * wet_weight
     assert abs(f[0]) < 1e-9 * wet_weight and abs(f[1]) < 1e-9 * wet_weight
+
+
+ROD_DECK = DECK[: DECK.index("---------------------- BODIES")] + DECK[
+    DECK.index("---------------------- RODS") :
+].replace(
+    "1    Can      Body1       0     0     -5    0     0     -15   3        -",
+    "1    Can      CoupledPinned  0  0     -5    0     0     -15   3        -",
+)
+
+
+def test_a_coupled_pinned_rod_takes_three_numbers_and_pulls_by_its_wet_weight(tmp_path):
+    """MoorDyn's CoupledPinned rod: its end A the host's, 3 numbers in the
+    coupling arrays, its pull at rest -(m - rho V) g; lifted at 2 m/s^2,
+    -((m + m_a) a + (m - rho V) g) with its caps' added mass m_a."""
+    assert "CoupledPinned" in ROD_DECK and "BODIES" not in ROD_DECK
+    path = tmp_path / "rod.txt"
+    path.write_text(ROD_DECK)
+    sim = Simulation(str(path))
+    assert sim.coupled_dof == 3
+    f = sim.initialize(np.array([0.0, 0.0, -5.0]), np.zeros(3))
+    mass, displaced = 50_000.0, 1025.0 * math.pi * 10.0
+    wet_weight = (mass - displaced) * 9.80665
+    assert abs(f[2] + wet_weight) < 1e-9 * wet_weight
+    added = 2.0 * 1025.0 * math.pi * 8.0 / 12.0
+    lifted = (mass + added) * 2.0 + wet_weight
+    for k in range(1, 6):
+        t = 0.1 * k
+        f = sim.step_to(t, np.array([0.0, 0.0, -5.0 + t * t]), np.array([0.0, 0.0, 2.0 * t]))
+        assert abs(f[2] + lifted) < 1e-9 * lifted, (t, f)

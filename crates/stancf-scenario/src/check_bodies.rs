@@ -150,11 +150,19 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
         let holder = match r.holder {
             RodHolder::Fixed => "fixed (held where it is)".to_string(),
             RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
-            RodHolder::Pinned { body, host } => format!(
+            RodHolder::Pinned {
+                body,
+                host,
+                coupled,
+            } => format!(
                 "pinned at end A to point {} ({}; the rod turns freely about it), body {}",
                 r.pin_point().map_or(0, |p| sc.points[p].id),
                 match host {
+                    Some((h, _)) if sc.bodies[h].is_coupled() => {
+                        format!("on coupled body {}, moved by the host", sc.bodies[h].id)
+                    }
                     Some((h, _)) => format!("on free body {}, a joint", sc.bodies[h].id),
+                    None if coupled => "coupled, moved by the host".to_string(),
                     None => "fixed".to_string(),
                 },
                 sc.bodies[body].id

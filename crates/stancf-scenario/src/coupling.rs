@@ -4,10 +4,9 @@
 //! [`stancf::coupling::CoupledSystem`]. The Python `stancf.Simulation`
 //! and the C library `stancf_c` open their systems here.
 
-use crate::scenario::{parse_input, Input, PointType, SystemScenario};
+use crate::scenario::{parse_input, Input, SystemScenario};
 use crate::Failure;
 use stancf::coupling::CoupledSystem;
-use stancf::system::PointKind;
 use std::path::Path;
 
 /// A coupled system with the ids its scenario gives its points and lines.
@@ -97,16 +96,6 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     crate::system_geometry::check_geometry(file, sc, false)?;
     let system = sc.system().map_err(input)?;
     let seed = sc.seed_system().map_err(input)?;
-    // The coupled points not on a body: the core orders the coupled
-    // bodies (by body index) and their points itself.
-    let mut order: Vec<usize> = (0..system.points().len())
-        .filter(|&p| matches!(system.points()[p].kind, PointKind::Coupled(_)))
-        .filter(|&p| sc.points[p].kind == PointType::Coupled)
-        // A CoupledPinned body's point takes its 3 numbers among the
-        // bodies' (the core's order).
-        .filter(|&p| !sc.bodies.iter().any(|b| b.host_pin == Some(p)))
-        .collect();
-    order.sort_by_key(|&p| sc.points[p].id);
     let handle = CoupledSystem::new(
         system,
         seed,
@@ -114,6 +103,10 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
         sc.analysis.step_settings(),
     )
     .map_err(input)?;
+    // The coupled points of the arrays' last part (not on a coupled body,
+    // not a pinned body's or rod's host point: the core decides), by id.
+    let mut order = handle.coupled_points().to_vec();
+    order.sort_by_key(|&p| sc.points[p].id);
     // The coupled bodies by id, as MoorDyn orders them (a deck's BODIES
     // are numbered in order; a TOML file's `[[bodies]]` may not be).
     let mut bodies = handle.coupled_bodies();

@@ -163,3 +163,164 @@ Node  Type   X  Y  Z  M  V  CdA  CA
         }
     }
 }
+
+/// [`PINNED_BODY`]'s can as MoorDyn's CoupledPinned rod: its end A moved
+/// by the host, the rod turning freely about it, in place of the body;
+/// with `and_body` the body (its can fixed in it, now 20 m aside) is kept
+/// too.
+fn pinned_rod_deck(and_body: bool) -> String {
+    let rod = "1    Can      CoupledPinned  0     0     -5    0     0     -15   3        -";
+    if and_body {
+        let body = PINNED_BODY.replace(
+            "1    CoupledPinned    0.00  0.00  -5.00",
+            "1    CoupledPinned    20.0  0.00  -5.00",
+        );
+        let both = body.replace(
+            "1    Can      Body1       0     0     -5    0     0     -15   3        -",
+            &format!(
+                "1    Can      Body1       0     0     -5    0     0     -15   3        -\n{}",
+                rod.replacen("1 ", "2 ", 1)
+            ),
+        );
+        assert_ne!(both, body);
+        return both;
+    }
+    let start = PINNED_BODY.find("---------------------- BODIES").unwrap();
+    let end = PINNED_BODY.find("---------------------- RODS").unwrap();
+    let without_body = format!("{}{}", &PINNED_BODY[..start], &PINNED_BODY[end..]);
+    without_body.replace(
+        "1    Can      Body1       0     0     -5    0     0     -15   3        -",
+        rod,
+    )
+}
+
+/// A CoupledPinned rod (MoorDyn's RODS `CoupledPinned`, docs/method.md
+/// §15.17) hangs from the host's point as the CoupledPinned body with the
+/// same can does: `check` says so, the static pull is -(m - rho V) g, the
+/// coupling arrays hold its 3 numbers (MoorDyn's Step reads 3 for a
+/// pinned coupled rod), and lifted at a = 2 m/s^2 it pulls
+/// -((m + m_a) a + (m - rho V) g), each interval's mean to 1e-9. With the
+/// body kept, the arrays hold the body's 3 numbers, then the rod's
+/// (MoorDyn's order: coupled bodies, then coupled rods), each moving its
+/// own: the rod lifted pulls as alone while the held body hangs.
+#[test]
+fn a_coupled_pinned_rod_hangs_from_the_host_and_pulls_it() {
+    let d = scratch("coupled-pinned-rod");
+    let g = 9.80665;
+    let (mass, displaced) = (50_000.0, 1025.0 * std::f64::consts::PI * 10.0);
+    let hanging = -(mass - displaced) * g;
+    let added = 2.0 * 1025.0 * std::f64::consts::PI * 8.0 / 12.0;
+    let lifted = -((mass + added) * 2.0 + (mass - displaced) * g);
+    let deck = write_scenario(&d, "rod.txt", &pinned_rod_deck(false));
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let so = text(&o).0;
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(
+        so.contains("pinned at end A to point 1 (coupled, moved by the host;")
+            && so.contains("less 3 per pinned body (1)"),
+        "{so}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
+    assert!(
+        (fz - hanging).abs() < 1e-9 * hanging.abs(),
+        "{fz} {hanging}"
+    );
+    for and_body in [false, true] {
+        let deck = write_scenario(
+            &d,
+            &format!("rod-{and_body}.txt"),
+            &pinned_rod_deck(and_body),
+        );
+        let mut c = stancf_cli::coupling::open(&deck).expect("a coupled system");
+        let width = if and_body { 6 } else { 3 };
+        assert_eq!(c.handle.coupled_dof(), width, "{and_body}");
+        assert_eq!(
+            c.coupled_body_ids,
+            if and_body { vec![1, 2] } else { vec![1] }
+        );
+        // The body held at its pin (20, 0, -5); the rod's end A lifted.
+        let at = |t: f64| {
+            let rod = [0.0, 0.0, -5.0 + t * t];
+            if and_body {
+                [&[20.0, 0.0, -5.0][..], &rod[..]].concat()
+            } else {
+                rod.to_vec()
+            }
+        };
+        let rate = |t: f64| {
+            let rod = [0.0, 0.0, 2.0 * t];
+            if and_body {
+                [&[0.0; 3][..], &rod[..]].concat()
+            } else {
+                rod.to_vec()
+            }
+        };
+        let f0 = c
+            .handle
+            .initialize(&at(0.0), Some(&rate(0.0)))
+            .expect("equilibrium");
+        for k in (0..width).step_by(3) {
+            assert!((f0[k + 2] - hanging).abs() < 1e-9 * hanging.abs(), "{f0:?}");
+        }
+        let mut worst = 0.0f64;
+        for k in 1..=10 {
+            let t = 0.1 * k as f64;
+            let f = c
+                .handle
+                .step_to(t, &at(t), Some(&rate(t)))
+                .unwrap()
+                .interval_mean;
+            let rod = &f[width - 3..];
+            worst = worst
+                .max((rod[2] - lifted).abs())
+                .max(rod[0].abs())
+                .max(rod[1].abs());
+            if and_body {
+                worst = worst
+                    .max((f[2] - hanging).abs())
+                    .max(f[0].abs())
+                    .max(f[1].abs());
+            }
+        }
+        eprintln!(
+            "a CoupledPinned rod (body too: {and_body}): lifted pulls {lifted:.3} N to {worst:.1e}"
+        );
+        assert!(worst < 1e-9 * lifted.abs(), "{and_body}: {worst:e}");
+    }
+}
+
+/// The TOML spelling, `type = "coupled_pinned"`: the rod's end A on a
+/// coupled point made there (its id after the `[[points]]`), 3 coupled
+/// numbers, and at rest the host's point carries its wet weight.
+#[test]
+fn a_toml_coupled_pinned_rod_hangs_from_a_coupled_point() {
+    let d = scratch("coupled-pinned-toml");
+    let scenario = "[water]\ndepth = 30.0\n[[rod_types]]\nname = \"can\"\ndiameter = 2.0\n\
+                    mass_per_length = 5000.0\nca_end = 1.0\n[[rods]]\nid = 1\n\
+                    type = \"coupled_pinned\"\nrod_type = \"can\"\nend_a = [0.0, 0.0, -5.0]\n\
+                    end_b = [0.0, 0.0, -15.0]\nsegments = 3\n[analysis]\ntype = \"static\"\n";
+    let sc = write_scenario(&d, "rod.toml", scenario);
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(
+        text(&o).0.contains("(coupled, moved by the host;"),
+        "{}",
+        text(&o).0
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
+    let hanging = -(50_000.0 - 1025.0 * std::f64::consts::PI * 10.0) * 9.81;
+    assert!(
+        (fz - hanging).abs() < 1e-9 * hanging.abs(),
+        "{fz} {hanging}"
+    );
+    let c = stancf_cli::coupling::open(&sc).expect("a coupled system");
+    assert_eq!(c.handle.coupled_dof(), 3);
+}

@@ -11,9 +11,11 @@
 //!   body n (ends in the body's axes from its reference point);
 //!   `Pinned`, `Pin` (digits after it ignored: `Pinned1`) pin its end A
 //!   where it is (global ends), `Body<n>Pinned`, `Body<n>Pin` at body
-//!   n's point (body axes), the rod turning freely about it (§1.3).
-//!   Coupled rods (`Coupled`, `Vessel`, `Cpld`, `CoupledPinned`...) are
-//!   refused by name, as is any other word.
+//!   n's point (body axes), the rod turning freely about it (§1.3);
+//!   `CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin` pin its end A
+//!   to a point the host moves (global ends). Rods coupled in six
+//!   degrees of freedom (`Coupled`, `Vessel`, `Cpld`) are refused by
+//!   name, as is any other word.
 
 use super::ends::{decompose, LineAttachment};
 use super::layout::{Row, Section};
@@ -59,6 +61,10 @@ pub enum RodAttachment {
     /// (its ends in the body's axes from its reference point), the rod
     /// turning freely about it.
     BodyPinned(usize),
+    /// `CoupledPinned`, `VesselPinned`, `VesPin` or `CpldPin`: end A
+    /// moved by the host (three coupled numbers), the rod turning freely
+    /// about it.
+    CoupledPinned,
 }
 
 /// A row of `RODS`.
@@ -188,15 +194,15 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
     let (let1, num1, let2) = decompose(w);
     let refuse =
         |why: &str| DeckError::at(row.line, format!("rod {id} is attached to \"{w}\": {why}"));
-    const COUPLED: &str = "coupled rods are not built yet (a Fixed, Free, Pinned, Body<n> or \
-                           Body<n>Pinned rod is; a rod pinned to a host's motion is not)";
+    const COUPLED: &str = "rods coupled in six degrees of freedom are not built yet (a Fixed, \
+                           Free, Pinned, CoupledPinned, Body<n> or Body<n>Pinned rod is)";
     match let1.as_str() {
         "ANCHOR" | "FIXED" | "FIX" => Ok(RodAttachment::Fixed),
         "POINT" | "CON" | "FREE" => Ok(RodAttachment::Free),
         // MoorDyn-C reads `Pinned1` as `Pinned` (the digits ignored).
         "PINNED" | "PIN" => Ok(RodAttachment::Pinned),
-        "VESSEL" | "VES" | "COUPLED" | "CPLD" | "VESSELPINNED" | "VESPIN" | "CPLDPIN"
-        | "COUPLEDPINNED" => Err(refuse(COUPLED)),
+        "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => Ok(RodAttachment::CoupledPinned),
+        "VESSEL" | "VES" | "COUPLED" | "CPLD" => Err(refuse(COUPLED)),
         "BODY" => {
             let pinned = match let2.as_str() {
                 "" => false,
@@ -217,7 +223,8 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
         }
         _ => Err(refuse(
             "unknown attachment; known: Fixed (Anchor, Fix), Free (Point, Con), Pinned (Pin), \
-             Body<n> (fixed in body n), Body<n>Pinned",
+             CoupledPinned (VesselPinned, VesPin, CpldPin), Body<n> (fixed in body n), \
+             Body<n>Pinned",
         )),
     }
 }

@@ -46,9 +46,12 @@ pub enum RodHolder {
     /// `points[0]`, always there), turning freely about it: a fixed point,
     /// or with `host` the point of a free body (its index) at its
     /// coordinates (from its reference point, its axes), a joint.
+    /// With `coupled` (and no host) the point is a coupled one, moved by
+    /// the host (MoorDyn's CoupledPinned rod; TOML "coupled_pinned").
     Pinned {
         body: usize,
         host: Option<(usize, [f64; 3])>,
+        coupled: bool,
     },
     /// A deck's free rod of zero length: free point `point` (its index).
     Point { point: usize },
@@ -111,6 +114,7 @@ impl SystemRod {
         match self.holder {
             RodHolder::Fixed => "fixed",
             RodHolder::Free { .. } => "free",
+            RodHolder::Pinned { coupled: true, .. } => "coupled pinned",
             RodHolder::Pinned { .. } => "pinned",
             RodHolder::Body { .. } => "body",
             RodHolder::Point { .. } => "point",

@@ -44,7 +44,8 @@ pub(super) fn rod_types(
 }
 
 /// `[[rods]]`: `id` (required, unique), `type` ("free", "fixed",
-/// "pinned" or "body", required), `body` (a body's id, for type "body"
+/// "pinned", "coupled_pinned" (end A on a coupled point) or "body",
+/// required), `body` (a body's id, for type "body"
 /// only), `rod_type` (a `[[rod_types]]` name, required), `end_a`, `end_b`
 /// (required, apart; global, or in the body's axes from its reference
 /// point for type "body"), `segments` (>= 1, default 1: the drag's
@@ -67,7 +68,7 @@ pub(super) fn rods(
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["free", "fixed", "pinned", "body"],
+            &["free", "fixed", "pinned", "coupled_pinned", "body"],
         )?;
         let type_name = ctx.required(&key("rod_type"), r.rod_type.as_deref())?;
         let Some(type_index) = types.iter().position(|t| t.name == type_name) else {
@@ -104,7 +105,7 @@ pub(super) fn rods(
         }
         let (holder, local, ends) = match word {
             "fixed" => (RodHolder::Fixed, [a, b], [a, b]),
-            "free" | "pinned" => {
+            "free" | "pinned" | "coupled_pinned" => {
                 // A rod pinned to a body: its ends in the body's axes from
                 // its reference point, end A held at that body point.
                 let (ends, host) = match r.body {
@@ -122,7 +123,11 @@ pub(super) fn rods(
                 bodies.push(free_rod_body(next_body_id(bodies), ends[0]));
                 let holder = match word {
                     "free" => RodHolder::Free { body },
-                    _ => RodHolder::Pinned { body, host },
+                    _ => RodHolder::Pinned {
+                        body,
+                        host,
+                        coupled: word == "coupled_pinned",
+                    },
                 };
                 (holder, [[0.0; 3], sub(ends[1], ends[0])], ends)
             }

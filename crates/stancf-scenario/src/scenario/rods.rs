@@ -46,6 +46,7 @@ pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
             host: Some((body, local)),
             ..
         } if k == 0 => PointType::Body { body, local },
+        RodHolder::Pinned { coupled: true, .. } if k == 0 => PointType::Coupled,
         RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
         RodHolder::Point { .. } => PointType::Free,
         RodHolder::Free { body } | RodHolder::Pinned { body, .. } | RodHolder::Body { body } => {
@@ -179,12 +180,21 @@ fn deck_rod(
             let ends = [b.point(r.end_a), b.point(r.end_b)];
             (RodHolder::Body { body: n - 1 }, [r.end_a, r.end_b], ends)
         }
-        RodAttachment::Pinned | RodAttachment::BodyPinned(_) => {
+        RodAttachment::Pinned | RodAttachment::BodyPinned(_) | RodAttachment::CoupledPinned => {
             let (ends, host) = pinned_ends(r, bodies)?;
             let body = bodies.len();
             bodies.push(free_rod_body(next_body_id(bodies), ends[0]));
             let local = [[0.0; 3], sub(ends[1], ends[0])];
-            (RodHolder::Pinned { body, host }, local, ends)
+            let coupled = r.attachment == RodAttachment::CoupledPinned;
+            (
+                RodHolder::Pinned {
+                    body,
+                    host,
+                    coupled,
+                },
+                local,
+                ends,
+            )
         }
     };
     let built = (!zero).then(|| rod_of(&t, rod[0], rod[1], r.segments));
@@ -319,7 +329,7 @@ pub(super) fn pin_of_body(sc: &SystemScenario, b: usize) -> Option<stancf::syste
 /// the host's index and the pin's place in its axes.
 pub(super) fn joint_host(sc: &SystemScenario, b: usize) -> Option<(usize, [f64; 3])> {
     sc.rods.iter().find_map(|r| match r.holder {
-        RodHolder::Pinned { body, host } if body == b => host,
+        RodHolder::Pinned { body, host, .. } if body == b => host,
         _ => None,
     })
 }

@@ -73,6 +73,10 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
         ("pin", RodAttachment::Pinned),
         ("Body1Pinned", RodAttachment::BodyPinned(1)),
         ("body1pin", RodAttachment::BodyPinned(1)),
+        ("CoupledPinned", RodAttachment::CoupledPinned),
+        ("VesPin", RodAttachment::CoupledPinned),
+        ("cpldpin", RodAttachment::CoupledPinned),
+        ("VesselPinned", RodAttachment::CoupledPinned),
     ] {
         assert_eq!(
             rod(&format!("1 Can {word} 0 0 -5 1 0 -5 2 -")).attachment,
@@ -87,11 +91,18 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
 #[test]
 fn coupled_and_unknown_rods_are_refused_by_name_with_their_line() {
     for (word, words) in [
-        ("Coupled", "coupled rods are not built yet"),
-        ("Vessel", "coupled rods are not built yet"),
-        ("Cpld", "coupled rods are not built yet"),
-        ("CoupledPinned", "coupled rods are not built yet"),
-        ("VesPin", "coupled rods are not built yet"),
+        (
+            "Coupled",
+            "rods coupled in six degrees of freedom are not built yet",
+        ),
+        (
+            "Vessel",
+            "rods coupled in six degrees of freedom are not built yet",
+        ),
+        (
+            "Cpld",
+            "rods coupled in six degrees of freedom are not built yet",
+        ),
         ("Turbine1", "unknown attachment"),
         ("Body", "names the body's number"),
         ("Body1Foo", "written Body<n>"),
