@@ -135,7 +135,7 @@ def body_kind(f):
 
 def rod_kind(f):
     """A RODS row's kind: fixed, pinned, body, body-pinned, free,
-    coupled."""
+    coupled, coupled pinned."""
     a = f[2].upper()
     m = re.match(r"(BODY)(\d+)(PIN|PINNED)?$", a)
     if m:
@@ -147,6 +147,8 @@ def rod_kind(f):
         return "pinned"
     if w in ("FREE", "POINT", "CON"):
         return "free"
+    if w in ("COUPLEDPINNED", "VESSELPINNED", "VESPIN", "CPLDPIN"):
+        return "coupled pinned"
     return "coupled"
 
 
@@ -194,21 +196,27 @@ def contents(text):
 
 def coupled_dofs(text):
     """The coupled positions MoorDyn's Init takes, in its order (coupled
-    bodies: x, y, z and the angles in radians; coupled rods; coupled
-    points: x, y, z), where the deck puts them."""
-    x = []
+    bodies: x, y, z and the angles in radians, a CoupledPinned body x, y,
+    z; coupled rods: end A and the angles, a pinned one end A; coupled
+    points: x, y, z), where the deck puts them. MoorDyn's Init and Step
+    read 3 numbers for a CoupledPinned body, but its NCoupledDOF (the
+    length its Python wrapper asks for) counts 6: zeros pad the end."""
+    x, pad = [], 0
     for _, f in table_rows(text, "BODIES"):
         if len(f) >= 14 and body_kind(f) == "coupled":
             x += [float(v) for v in f[2:5]] + [math.radians(float(v)) for v in f[5:8]]
         elif len(f) >= 14 and body_kind(f) == "coupled pinned":
             x += [float(v) for v in f[2:5]]
+            pad += 3
     for _, f in table_rows(text, "RODS"):
         if len(f) >= 10 and rod_kind(f) == "coupled":
             x += [float(v) for v in f[3:6]] + [0.0, 0.0, 0.0]
+        elif len(f) >= 10 and rod_kind(f) == "coupled pinned":
+            x += [float(v) for v in f[3:6]]
     for _, f in table_rows(text, "POINTS"):
         if len(f) >= 5 and point_kind(f) == "coupled":
             x += [float(v) for v in f[2:5]]
-    return x
+    return x + [0.0] * pad
 
 
 # --------------------------------------------------------------------------

@@ -142,3 +142,42 @@ fn a_rod_alone_rises_from_a_scenario_that_takes_its_deck() {
     assert_eq!(last[t], 1.0);
     assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
 }
+
+/// A dynamic scenario that takes a deck and gives no `time_step` steps at
+/// the deck's (its dtM, 0.5 ms here: what a coupled run of the deck
+/// takes), saying so in `check`; the rod rises as the closed form says.
+#[test]
+fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
+    let d = scratch("deck-step-default");
+    write_scenario(
+        &d,
+        "rod.txt",
+        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
+    );
+    let sc = write_scenario(
+        &d,
+        "rises.toml",
+        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+         initial = \"reference\"\nduration = 0.05\n",
+    );
+    let o = stancf(&["check", sc.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        so.contains("note: analysis.time_step: the deck's step, 0.0005 s")
+            && so.contains("in steps of 0.0005 s"),
+        "{so}\n{se}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
+    assert_eq!(rows.len(), 101, "one row per step and the start");
+    let last = rows.last().unwrap();
+    let (volume, mass) = (std::f64::consts::PI * 0.0625 * 2.0, 200.0);
+    let accel = (1025.0 * volume - mass) * 9.80665 / (mass + 1025.0 * volume);
+    let rise = last[col("z")] - rows[0][col("z")];
+    let want = 0.5 * accel * last[col("t")].powi(2);
+    assert!((rise - want).abs() < 1e-12, "{rise} against {want}");
+}

@@ -156,12 +156,14 @@ fn deck_system(
     sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
         .with_rods(&sc.rods, deck.points.len());
     super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
+    let (raw_analysis, step_note) = with_deck_step(raw.analysis, &deck);
     let (analysis, measures, initial, notes) = analysis_part(
         ctx,
-        raw.analysis,
+        raw_analysis,
         InitialShape::Static,
         sc.has_free_bodies(),
     )?;
+    sc.notes.extend(step_note);
     let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
     sc.analysis = analysis;
@@ -178,6 +180,33 @@ fn deck_system(
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
     super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
     Ok(sc)
+}
+
+/// The scenario's `[analysis]` with the deck's step (its dtM, or
+/// MoorDyn's step from its CFL) as `time_step` where a dynamic analysis
+/// gives none, and a note saying so: the step a coupled run of the deck
+/// takes.
+fn with_deck_step(
+    raw: Option<super::raw::RawAnalysis>,
+    deck: &crate::moordyn::Deck,
+) -> (Option<super::raw::RawAnalysis>, Option<String>) {
+    let Some(mut a) = raw else {
+        return (None, None);
+    };
+    let dynamic = a.kind.as_deref() == Some("dynamic");
+    match (dynamic, a.time_step, deck.time_step()) {
+        (true, None, Some(dt)) => {
+            a.time_step = Some(dt);
+            let note = format!(
+                "analysis.time_step: the deck's step, {} s (MoorDyn's dtM, or its step from \
+                 its CFL; stancf's step is not bound by it: a larger time_step may do, \
+                 within the stable step `check` shows)",
+                stancf::error::Sig(dt)
+            );
+            (Some(a), Some(note))
+        }
+        _ => (Some(a), None),
+    }
 }
 
 /// A note that a static analysis does not see the waves of its water
