@@ -76,7 +76,10 @@ int stancf_close(StancfSystem *s);
 
 /* *n = the number of coupled degrees of freedom, 6 per coupled body (3 per
    body pinned to the host, MoorDyn's CoupledPinned: its reference point's
-   position, velocity and pull) and 3 per coupled point. */
+   position, velocity and pull), then 6 per coupled rod (a coupled body of
+   its own, its reference point at end A; 3 per CoupledPinned rod), and 3
+   per coupled point. A coupled body's force holds its rods' weight,
+   water and inertia with its lines' (docs/method.md §15.18). */
 int stancf_ncoupled_dof(StancfSystem *s, unsigned int *n);
 
 /* ids[k] = the id of coupled point k, after the bodies in the arrays
@@ -85,7 +88,8 @@ int stancf_ncoupled_dof(StancfSystem *s, unsigned int *n);
 int stancf_coupled_ids(StancfSystem *s, int64_t *ids);
 
 /* *n = nb, the number of coupled bodies (6 values each, 3 for a body
-   pinned to the host, first in the arrays); ids[k] = the id of coupled
+   pinned to the host, first in the arrays; coupled rods are coupled
+   bodies, their ids after the deck's bodies'); ids[k] = the id of coupled
    body k (nb values). */
 int stancf_coupled_body_count(StancfSystem *s, unsigned int *n);
 int stancf_coupled_body_ids(StancfSystem *s, int64_t *ids);

@@ -123,8 +123,9 @@ pub unsafe extern "C" fn stancf_close(s: *mut StancfSystem) -> c_int {
     guard(|| args::close_system(s))
 }
 
-/// The number of coupled degrees of freedom, 6 per coupled body and 3
-/// per coupled point (`MoorDyn_NCoupledDOF`).
+/// The number of coupled degrees of freedom, 6 per coupled body (a
+/// coupled rod is one; 3 pinned to the host) and 3 per coupled point
+/// (`MoorDyn_NCoupledDOF`).
 ///
 /// # Safety
 /// `s` is looked up, never read; `n` is NULL or writable.

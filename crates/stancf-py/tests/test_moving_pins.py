@@ -115,3 +115,30 @@ def test_a_coupled_pinned_rod_takes_three_numbers_and_pulls_by_its_wet_weight(tm
         t = 0.1 * k
         f = sim.step_to(t, np.array([0.0, 0.0, -5.0 + t * t]), np.array([0.0, 0.0, 2.0 * t]))
         assert abs(f[2] + lifted) < 1e-9 * lifted, (t, f)
+
+
+COUPLED_ROD_DECK = ROD_DECK.replace("CoupledPinned  0  0", "Coupled        0  0")
+
+
+def test_a_coupled_rod_takes_six_numbers_and_pushes_by_its_wet_weight_and_inertia(tmp_path):
+    """MoorDyn's coupled rod: end A and its angles, 6 numbers; the host
+    carries its wet weight at rest and, lifting it at 2 m/s^2, its mass
+    and its caps' added mass times the lift (docs/method.md §15.18)."""
+    assert "Coupled        0" in COUPLED_ROD_DECK
+    path = tmp_path / "rod.txt"
+    path.write_text(COUPLED_ROD_DECK)
+    sim = Simulation(str(path))
+    assert sim.coupled_dof == 6
+    f = sim.initialize(np.array([0.0, 0.0, -5.0, 0.0, 0.0, 0.0]), np.zeros(6))
+    mass, displaced = 50_000.0, 1025.0 * math.pi * 10.0
+    wet_weight = (mass - displaced) * 9.80665
+    assert abs(f[2] + wet_weight) < 1e-9 * wet_weight
+    assert np.all(np.abs(f[3:]) < 1e-9 * wet_weight)
+    added = 2.0 * 1025.0 * math.pi * 8.0 / 12.0
+    lifted = (mass + added) * 2.0 + wet_weight
+    for k in range(1, 6):
+        t = 0.1 * k
+        x = np.array([0.0, 0.0, -5.0 + t * t, 0.0, 0.0, 0.0])
+        xd = np.array([0.0, 0.0, 2.0 * t, 0.0, 0.0, 0.0])
+        f = sim.step_to(t, x, xd)
+        assert abs(f[2] + lifted) < 1e-9 * lifted, (t, f)

@@ -150,6 +150,11 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
         let holder = match r.holder {
             RodHolder::Fixed => "fixed (held where it is)".to_string(),
             RodHolder::Free { body } => format!("free, body {}", sc.bodies[body].id),
+            RodHolder::Coupled { body } => format!(
+                "coupled, body {} (moved by the host in six degrees of freedom; its weight, \
+                 water and inertia push the host)",
+                sc.bodies[body].id
+            ),
             RodHolder::Pinned {
                 body,
                 host,

@@ -247,8 +247,8 @@ fn a_dynamic_run_holds_a_toml_coupled_body_at_its_pose() {
 }
 
 /// A coupled body's mass, inertia, water and velocities are the host's:
-/// each key of a free body is refused naming it; so is a rod fixed in
-/// a coupled body (TOML key and deck line) and a clamp at its point.
+/// each key of a free body is refused naming it; so is a clamp at its
+/// point.
 #[test]
 fn what_a_coupled_body_does_not_take_is_refused_by_name() {
     for (key, value) in [
@@ -272,44 +272,6 @@ fn what_a_coupled_body_does_not_take_is_refused_by_name() {
             ],
         );
     }
-    let rod = coupled_body_toml("", "type = \"static\"").replace(
-        "[analysis]",
-        "[[rod_types]]\nname = \"can\"\ndiameter = 0.5\nmass_per_length = 100.0\n\
-         [[rods]]\nid = 1\ntype = \"body\"\nbody = 7\nrod_type = \"can\"\n\
-         end_a = [-1.0, 0.0, 0.0]\nend_b = [1.0, 0.0, 0.0]\n[analysis]",
-    );
-    expect_input_error(
-        "coupled-body-rod",
-        &rod,
-        &["rods[0].body", "rods on a coupled body are not built"],
-    );
-    let deck = oc3_deck().replace(
-        "---------------------- POINT PROPERTIES",
-        "---------------------- ROD TYPES ----------------------\n\
-         TypeName Diam Mass/m Cd Ca CdEnd CaEnd\n(name) (m) (kg/m) (-) (-) (-) (-)\n\
-         can 0.5 100 1.2 1.0 0.6 0.5\n\
-         ---------------------- RODS ----------------------\n\
-         ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n\
-         (#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)\n\
-         1 can Body1 -2 0 0 2 0 0 4 -\n\
-         ---------------------- POINT PROPERTIES",
-    );
-    let line = deck
-        .lines()
-        .position(|l| l.starts_with("1 can Body1"))
-        .unwrap()
-        + 1;
-    let at = format!("line {line}:");
-    expect_refusal_beside(
-        "coupled-body-deck-rod",
-        &deck,
-        &[],
-        &[
-            "bad.toml",
-            &at,
-            "rod 1 is fixed in body 1, which is coupled",
-        ],
-    );
     let clamped = coupled_body_toml("", "type = \"static\"").replace(
         "a = 4\nb = 1\n",
         "a = 4\nb = 1\nclamp_b = [0.0, 0.0, 1.0]\n",

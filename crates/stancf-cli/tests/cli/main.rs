@@ -13,6 +13,7 @@ mod clamped_lines;
 mod compression;
 mod coupled_bodies;
 mod coupled_pinned;
+mod coupled_rods;
 mod coupling;
 mod deck_statics;
 mod decks_without_lines;

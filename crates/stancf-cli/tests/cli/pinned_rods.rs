@@ -413,23 +413,16 @@ fn a_rod_pinned_at_its_top_swings_as_a_physical_pendulum() {
 }
 
 /// What pinned rods do not build is refused with exit 2 naming the deck's
-/// line or the key, nothing written: a rod pinned to a host
-/// (`CoupledPinned`), a pinned rod of zero length.
+/// line or the key, nothing written: a pinned rod of zero length.
 #[test]
 fn what_pinned_rods_do_not_build_is_refused_naming_the_line_or_key() {
     let d = scratch("pinned-rod-refusals");
     std::fs::write(d.join("current_profile.txt"), PINNED_CURRENT).unwrap();
-    let cases = [
-        (
-            pinned_rod_deck("CoupledPinned", "0     0     -18   0     0     -14 ", ""),
-            "rod 1 is attached to \"CoupledPinned\": coupled rods are not built yet",
-        ),
-        (
-            pinned_rod_deck("Pin", "0     0     -18   0     0     -14 ", "")
-                .replace("-14   8       -", "-18   0       -"),
-            "rod 1 is pinned with NumSegs 0, a rod of zero length",
-        ),
-    ];
+    let cases = [(
+        pinned_rod_deck("Pin", "0     0     -18   0     0     -14 ", "")
+            .replace("-14   8       -", "-18   0       -"),
+        "rod 1 is pinned with NumSegs 0, a rod of zero length",
+    )];
     for (k, (deck, words)) in cases.iter().enumerate() {
         let file = write_scenario(&d, &format!("bad{k}.txt"), deck);
         let n = deck

@@ -36,11 +36,6 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
                 .into(),
         ),
         (
-            base.replace("1    can       Body1 ", "1    can       Coupled "),
-            "1    can       Coupled",
-            "coupled rods are not built yet".into(),
-        ),
-        (
             base.replace(
                 "2     rope       2        R2A       18        6",
                 "2     rope       2        R1B       40        6",

@@ -13,9 +13,10 @@
 //!   where it is (global ends), `Body<n>Pinned`, `Body<n>Pin` at body
 //!   n's point (body axes), the rod turning freely about it (§1.3);
 //!   `CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin` pin its end A
-//!   to a point the host moves (global ends). Rods coupled in six
-//!   degrees of freedom (`Coupled`, `Vessel`, `Cpld`) are refused by
-//!   name, as is any other word.
+//!   to a point the host moves (global ends); `Coupled`, `Vessel`, `Ves`,
+//!   `Cpld` make it a coupled rod, moved by the host in six degrees of
+//!   freedom (global ends at the pose the host gives as zero). Any other
+//!   word is refused by name.
 
 use super::ends::{decompose, LineAttachment};
 use super::layout::{Row, Section};
@@ -65,6 +66,10 @@ pub enum RodAttachment {
     /// moved by the host (three coupled numbers), the rod turning freely
     /// about it.
     CoupledPinned,
+    /// `Coupled`, `Vessel`, `Ves` or `Cpld`: moved by the host in six
+    /// degrees of freedom (six coupled numbers: end A and MoorDyn's
+    /// angles, which turn the rod from where its ends put it).
+    Coupled,
 }
 
 /// A row of `RODS`.
@@ -194,15 +199,13 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
     let (let1, num1, let2) = decompose(w);
     let refuse =
         |why: &str| DeckError::at(row.line, format!("rod {id} is attached to \"{w}\": {why}"));
-    const COUPLED: &str = "rods coupled in six degrees of freedom are not built yet (a Fixed, \
-                           Free, Pinned, CoupledPinned, Body<n> or Body<n>Pinned rod is)";
     match let1.as_str() {
         "ANCHOR" | "FIXED" | "FIX" => Ok(RodAttachment::Fixed),
         "POINT" | "CON" | "FREE" => Ok(RodAttachment::Free),
         // MoorDyn-C reads `Pinned1` as `Pinned` (the digits ignored).
         "PINNED" | "PIN" => Ok(RodAttachment::Pinned),
         "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => Ok(RodAttachment::CoupledPinned),
-        "VESSEL" | "VES" | "COUPLED" | "CPLD" => Err(refuse(COUPLED)),
+        "VESSEL" | "VES" | "COUPLED" | "CPLD" => Ok(RodAttachment::Coupled),
         "BODY" => {
             let pinned = match let2.as_str() {
                 "" => false,
@@ -223,8 +226,8 @@ fn attachment(row: &Row, id: usize) -> Result<RodAttachment, DeckError> {
         }
         _ => Err(refuse(
             "unknown attachment; known: Fixed (Anchor, Fix), Free (Point, Con), Pinned (Pin), \
-             CoupledPinned (VesselPinned, VesPin, CpldPin), Body<n> (fixed in body n), \
-             Body<n>Pinned",
+             Coupled (Vessel, Ves, Cpld), CoupledPinned (VesselPinned, VesPin, CpldPin), \
+             Body<n> (fixed in body n), Body<n>Pinned",
         )),
     }
 }

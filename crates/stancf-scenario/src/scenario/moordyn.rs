@@ -69,9 +69,6 @@ pub(super) fn deck_scenario(
         .bodies
         .iter()
         .map(|b| {
-            if b.attachment == BodyAttachment::Coupled {
-                refuse_coupled_body_rods(deck, b, file)?;
-            }
             let rods = deck.rods.iter().any(|r| {
                 r.attachment == crate::moordyn::RodAttachment::Body(b.id) && r.segments > 0
             });
@@ -306,22 +303,6 @@ fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, Scenari
         ca: b.ca,
         ..fixed
     })
-}
-
-/// Refuses the rods fixed in coupled body `b`, naming the first one's
-/// line: their weight and water would be loads of the coupling code's,
-/// which carries the body (the core refuses them too).
-fn refuse_coupled_body_rods(deck: &Deck, b: &DeckBody, file: &str) -> Result<(), ScenarioError> {
-    let on_body = crate::moordyn::RodAttachment::Body(b.id);
-    match deck.rods.iter().find(|r| r.attachment == on_body) {
-        Some(r) => Err(ScenarioError(format!(
-            "{file}: line {}: rod {} is fixed in body {}, which is coupled (\"{}\"): rods on a \
-             coupled body are not built (their weight and water would be the coupling code's \
-             loads; give them to the host, or fix the rod to a fixed or free body)",
-            r.line, r.id, b.id, b.attachment_word
-        ))),
-        None => Ok(()),
-    }
 }
 
 /// A note for a free body whose attachment word is neither `Free` nor

@@ -55,6 +55,10 @@ pub enum RodHolder {
     },
     /// A deck's free rod of zero length: free point `point` (its index).
     Point { point: usize },
+    /// Moved by the host in six degrees of freedom (MoorDyn's coupled
+    /// rod): coupled body `body` (its index) is the rod, its reference
+    /// point at end A, its axes the global ones at the pose zero.
+    Coupled { body: usize },
 }
 
 /// A rod of a system.
@@ -88,7 +92,8 @@ impl SystemRod {
         match self.holder {
             RodHolder::Free { body }
             | RodHolder::Pinned { body, .. }
-            | RodHolder::Body { body } => Some(body),
+            | RodHolder::Body { body }
+            | RodHolder::Coupled { body } => Some(body),
             RodHolder::Fixed | RodHolder::Point { .. } => None,
         }
     }
@@ -96,7 +101,9 @@ impl SystemRod {
     /// The body that is the rod (a free or pinned rod's), if it is one.
     pub fn own_body(&self) -> Option<usize> {
         match self.holder {
-            RodHolder::Free { body } | RodHolder::Pinned { body, .. } => Some(body),
+            RodHolder::Free { body }
+            | RodHolder::Pinned { body, .. }
+            | RodHolder::Coupled { body } => Some(body),
             _ => None,
         }
     }
@@ -114,6 +121,7 @@ impl SystemRod {
         match self.holder {
             RodHolder::Fixed => "fixed",
             RodHolder::Free { .. } => "free",
+            RodHolder::Coupled { .. } => "coupled",
             RodHolder::Pinned { coupled: true, .. } => "coupled pinned",
             RodHolder::Pinned { .. } => "pinned",
             RodHolder::Body { .. } => "body",

@@ -44,7 +44,8 @@ pub(super) fn rod_types(
 }
 
 /// `[[rods]]`: `id` (required, unique), `type` ("free", "fixed",
-/// "pinned", "coupled_pinned" (end A on a coupled point) or "body",
+/// "pinned", "coupled" (a coupled body of its own, reference point at
+/// end A), "coupled_pinned" (end A on a coupled point) or "body",
 /// required), `body` (a body's id, for type "body"
 /// only), `rod_type` (a `[[rod_types]]` name, required), `end_a`, `end_b`
 /// (required, apart; global, or in the body's axes from its reference
@@ -68,7 +69,14 @@ pub(super) fn rods(
             &key("type"),
             Some(ctx.required(&key("type"), r.kind.as_deref())?),
             "",
-            &["free", "fixed", "pinned", "coupled_pinned", "body"],
+            &[
+                "free",
+                "fixed",
+                "pinned",
+                "coupled",
+                "coupled_pinned",
+                "body",
+            ],
         )?;
         let type_name = ctx.required(&key("rod_type"), r.rod_type.as_deref())?;
         let Some(type_index) = types.iter().position(|t| t.name == type_name) else {
@@ -131,19 +139,19 @@ pub(super) fn rods(
                 };
                 (holder, [[0.0; 3], sub(ends[1], ends[0])], ends)
             }
+            "coupled" => {
+                // MoorDyn's coupled rod: a coupled body of its own at end A.
+                let body = bodies.len();
+                bodies.push(SystemBody {
+                    kind: super::bodies::BodyType::Coupled,
+                    ..free_rod_body(next_body_id(bodies), a)
+                });
+                (RodHolder::Coupled { body }, [[0.0; 3], sub(b, a)], [a, b])
+            }
             _ => {
+                // On a coupled body its weight, water and inertia push the
+                // host (docs/method.md §15.18).
                 let body = body_index(ctx, &key("body"), r.body, bodies)?;
-                if bodies[body].is_coupled() {
-                    return Err(ctx.err(
-                        &key("body"),
-                        format!(
-                            "body {} is coupled: rods on a coupled body are not built (their \
-                             weight and water would be the coupling code's loads; give them \
-                             to the host, or fix the rod in a fixed or free body)",
-                            bodies[body].id
-                        ),
-                    ));
-                }
                 let ends = [bodies[body].point(a), bodies[body].point(b)];
                 (RodHolder::Body { body }, [a, b], ends)
             }

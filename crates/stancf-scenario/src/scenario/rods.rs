@@ -49,9 +49,10 @@ pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
         RodHolder::Pinned { coupled: true, .. } if k == 0 => PointType::Coupled,
         RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
         RodHolder::Point { .. } => PointType::Free,
-        RodHolder::Free { body } | RodHolder::Pinned { body, .. } | RodHolder::Body { body } => {
-            PointType::Body { body, local }
-        }
+        RodHolder::Free { body }
+        | RodHolder::Pinned { body, .. }
+        | RodHolder::Body { body }
+        | RodHolder::Coupled { body } => PointType::Body { body, local },
     }
 }
 
@@ -174,6 +175,15 @@ fn deck_rod(
             bodies.push(free_rod_body(next_body_id(bodies), r.end_a));
             let local = [[0.0; 3], sub(r.end_b, r.end_a)];
             (RodHolder::Free { body }, local, [r.end_a, r.end_b])
+        }
+        RodAttachment::Coupled => {
+            let body = bodies.len();
+            bodies.push(SystemBody {
+                kind: BodyType::Coupled,
+                ..free_rod_body(next_body_id(bodies), r.end_a)
+            });
+            let local = [[0.0; 3], sub(r.end_b, r.end_a)];
+            (RodHolder::Coupled { body }, local, [r.end_a, r.end_b])
         }
         RodAttachment::Body(n) => {
             let b = &bodies[n - 1];

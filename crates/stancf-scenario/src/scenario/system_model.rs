@@ -152,8 +152,10 @@ impl SystemScenario {
             body.loads.push((b.force, [0.0; 3]));
         }
         body.moment = b.moment;
+        // A coupled body's water is its rods' (its own volume, Ca and CdA
+        // are zero, as MoorDyn zeroes them): what they push the host with.
         body.water = match (&self.water, b.kind) {
-            (Some(w), super::BodyType::Free) => Some(BodyWater {
+            (Some(w), super::BodyType::Free | super::BodyType::Coupled) => Some(BodyWater {
                 density: w.density,
                 volume: b.volume,
                 added_mass_coefficients: b.ca,

@@ -97,6 +97,51 @@ pub fn exp_map(theta: [f64; 3]) -> [[f64; 3]; 3] {
     combine(series(0, s).0, series(1, s).0, theta)
 }
 
+/// The rotation vector theta of `r` (|theta| <= pi): exp([theta]) = r,
+/// the inverse of [`exp_map`]. Near pi the axis comes from r + I = 2 a
+/// a^T (the sine vanishes there).
+pub fn log_map(r: &[[f64; 3]; 3]) -> [f64; 3] {
+    let cos = ((r[0][0] + r[1][1] + r[2][2] - 1.0) / 2.0).clamp(-1.0, 1.0);
+    let angle = cos.acos();
+    let skew = [r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]];
+    if angle < 1e-4 {
+        // theta = vee(R - R^T) / 2 * angle / sin(angle), the ratio's series.
+        let ratio = 1.0 + angle * angle / 6.0;
+        return skew.map(|c| 0.5 * ratio * c);
+    }
+    if std::f64::consts::PI - angle > 1e-4 {
+        return skew.map(|c| 0.5 * angle / angle.sin() * c);
+    }
+    // R + R^T - 2 cos I = 2 (1 - cos) a a^T: its row of the largest
+    // diagonal entry is along the axis; the sense from the skew part.
+    let k = (0..3)
+        .max_by(|&a, &b| r[a][a].total_cmp(&r[b][b]))
+        .expect("3");
+    let mut axis: [f64; 3] =
+        std::array::from_fn(|j| r[k][j] + r[j][k] - if j == k { 2.0 * cos } else { 0.0 });
+    let n = crate::vec3::norm(axis);
+    axis = axis.map(|c| c / n);
+    if crate::vec3::dot(axis, skew) < 0.0 {
+        axis = axis.map(|c| -c);
+    }
+    axis.map(|c| angle * c)
+}
+
+/// Solves J_r(theta) x = b (B3): the chart's rate theta_dot of a body
+/// turning at Omega = b (body axes) at theta.
+pub fn chart_rate(theta: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    let a = right_jacobian(theta);
+    let det = crate::vec3::dot(a[0], crate::vec3::cross(a[1], a[2]));
+    // Cramer's rule on the rows: x_k = det(A with column k = b) / det.
+    std::array::from_fn(|k| {
+        let mut m = a;
+        for (row, &bv) in m.iter_mut().zip(&b) {
+            row[k] = bv;
+        }
+        crate::vec3::dot(m[0], crate::vec3::cross(m[1], m[2])) / det
+    })
+}
+
 /// J_r(theta) of (B3).
 pub fn right_jacobian(theta: [f64; 3]) -> [[f64; 3]; 3] {
     let s = crate::vec3::dot(theta, theta);
@@ -180,6 +225,39 @@ mod tests {
                 let e = if i == j { 1.0 } else { 0.0 };
                 assert!((rrt[i][j] - e).abs() < 1e-15);
             }
+        }
+    }
+
+    /// The log map undoes the exponential, from small angles to pi, and
+    /// the chart's rate gives back the body rate it solves for.
+    #[test]
+    fn the_log_map_undoes_the_exponential_and_chart_rates_invert_j_r() {
+        let axis = crate::vec3::normalized([0.3, -0.8, 0.5]);
+        for angle in [
+            0.0,
+            1e-9,
+            3e-5,
+            0.4,
+            2.0,
+            3.1415,
+            std::f64::consts::PI - 1e-7,
+        ] {
+            let theta = axis.map(|c| angle * c);
+            let back = log_map(&exp_map(theta));
+            for k in 0..3 {
+                assert!(
+                    (back[k] - theta[k]).abs() < 2e-8,
+                    "{angle}: {back:?} {theta:?}"
+                );
+            }
+        }
+        let theta = [0.4, -0.9, 1.3];
+        let omega = [0.7, 0.2, -1.1];
+        let rate = chart_rate(theta, omega);
+        let jr = right_jacobian(theta);
+        for r in 0..3 {
+            let got: f64 = (0..3).map(|k| jr[r][k] * rate[k]).sum();
+            assert!((got - omega[r]).abs() < 1e-14, "{got} {}", omega[r]);
         }
     }
 }

@@ -218,6 +218,35 @@ impl ArrayLayout {
         (self.point_start(k), 3)
     }
 
+    /// Body k's pose and rates in the arrays' x and xd (None for a body
+    /// pinned to the host: a free body, not held).
+    pub fn held_end(
+        &self,
+        x: &[f64],
+        xd: Option<&[f64]>,
+        k: usize,
+    ) -> Option<super::held_loads::HeldEnd> {
+        if self.bodies[k].pin.is_some() {
+            return None;
+        }
+        let s = self.body_start(k);
+        let (position, rotation) = pose(&x[s..s + 6]);
+        Some(super::held_loads::HeldEnd {
+            position,
+            rotation,
+            rates: xd.map(|v| ([v[s], v[s + 1], v[s + 2]], [v[s + 3], v[s + 4], v[s + 5]])),
+        })
+    }
+
+    /// Adds body k's own push (force, moment about its reference point)
+    /// to the arrays' forces `out`.
+    pub fn add_push(&self, out: &mut [f64], k: usize, push: &[f64; 6]) {
+        let s = self.body_start(k);
+        for (o, p) in out[s..s + 6].iter_mut().zip(push) {
+            *o += p;
+        }
+    }
+
     /// Body k's reference point in the arrays' x.
     pub fn reference(&self, x: &[f64], k: usize) -> [f64; 3] {
         let s = self.body_start(k);

@@ -23,6 +23,7 @@
 mod bodies;
 mod bounds;
 mod error;
+mod held_loads;
 mod identity;
 mod readings;
 mod stiffness;
@@ -77,6 +78,9 @@ struct Running {
     /// The coupled bodies' reference points and their velocities.
     reference: Vec<[f64; 3]>,
     reference_rate: Option<Vec<[f64; 3]>>,
+    /// The coupled bodies' poses and rates of the last call, for their
+    /// own push (None for a body pinned to the host; §15.18).
+    held: Vec<Option<held_loads::HeldEnd>>,
     /// The free and coupled bodies' mooring stiffness at the initial
     /// equilibrium, and the coupled points' not on a body.
     stiffness: Vec<(usize, Option<[[f64; 6]; 6]>)>,
@@ -370,15 +374,39 @@ impl CoupledSystem {
             return Err(CouplingError::Interrupted { time: self.time() });
         }
         let coupled = &self.coupled;
-        let forces = self.layout.forces(
+        let mut forces = self.layout.forces(
             |k| statics.point_force(coupled[k]),
             |k| statics.point_position(coupled[k]),
             |b| self.layout.reference(x, b),
         );
+        let bodies = 0..self.layout.bodies.len();
+        let held: Vec<_> = bodies
+            .clone()
+            .map(|b| self.layout.held_end(x, None, b))
+            .collect();
+        // The coupled bodies' own parts at rest at their poses, in the
+        // static solve's steady water (B36).
+        for (k, end) in held.iter().enumerate() {
+            let body = &system.bodies()[self.layout.bodies[k].body];
+            if let (Some(end), true) = (end, held_loads::carries_loads(body)) {
+                let rest = crate::system::HeldMotion::at_rest(end.position, end.rotation);
+                let (f, m) = crate::system::held_push(
+                    body,
+                    system.gravity(),
+                    &rest,
+                    crate::body::flow::FlowTime::Steady,
+                );
+                self.layout
+                    .add_push(&mut forces, k, &[f[0], f[1], f[2], m[0], m[1], m[2]]);
+            }
+        }
         let stiffness = stiffness::body_stiffness(&mut statics, &self.layout, x);
         let point_stiffness = stiffness::point_stiffness(&statics, &self.layout, &self.coupled);
         let sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
-        let bodies = 0..self.layout.bodies.len();
+        let held = bodies
+            .clone()
+            .map(|b| self.layout.held_end(x, xd, b))
+            .collect();
         self.running = Some(Running {
             sim,
             position,
@@ -388,6 +416,7 @@ impl CoupledSystem {
                 .map(|b| self.layout.reference(x, b))
                 .collect(),
             reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
+            held,
             stiffness,
             point_stiffness,
         });
@@ -465,17 +494,43 @@ impl CoupledSystem {
             })
             .collect();
         running.sim.set_time_step(h);
+        // The coupled bodies' own parts on the host's motion (§15.18).
+        let held_end: Vec<_> = (0..layout.bodies.len())
+            .map(|b| layout.held_end(x, xd, b))
+            .collect();
+        let paths: Vec<Option<held_loads::HeldPath>> = (0..layout.bodies.len())
+            .map(|k| {
+                let body = &running.sim.topology().bodies()[layout.bodies[k].body];
+                match (&running.held[k], &held_end[k]) {
+                    (Some(a), Some(b)) if held_loads::carries_loads(body) => {
+                        Some(held_loads::HeldPath::new(t0, span, a, b))
+                    }
+                    _ => None,
+                }
+            })
+            .collect();
         let loads = |sim: &SystemSimulation| {
-            layout.forces(
+            let mut out = layout.forces(
                 |k| sim.point_force(coupled[k]),
                 |k| sim.point_state(coupled[k]).0,
                 |b| references[b].state(sim.time()).0,
-            )
+            );
+            let topology = sim.topology();
+            for (k, path) in paths.iter().enumerate() {
+                if let Some(path) = path {
+                    let body = &topology.bodies()[layout.bodies[k].body];
+                    let t_a = sim.time() - h;
+                    let push = held_loads::mean_push(body, topology.gravity(), path, t_a, h);
+                    layout.add_push(&mut out, k, &push);
+                }
+            }
+            out
         };
         let mut impulse = vec![0.0; x.len()];
         for taken in 1..=steps {
             if let Err(e) = running.sim.step() {
                 running.stop_on_motion(&coupled, &references);
+                running.stop_held(&paths);
                 return Err(e.into());
             }
             for (i, f) in loads(&running.sim).iter().enumerate() {
@@ -483,6 +538,7 @@ impl CoupledSystem {
             }
             if taken < steps && stop() {
                 running.stop_on_motion(&coupled, &references);
+                running.stop_held(&paths);
                 return Err(CouplingError::Interrupted {
                     time: running.sim.time(),
                 });
@@ -490,6 +546,7 @@ impl CoupledSystem {
         }
         running.position = end;
         running.velocity = end_rate;
+        running.held = held_end;
         running.reference = (0..layout.bodies.len())
             .map(|b| layout.reference(x, b))
             .collect();
@@ -528,6 +585,21 @@ impl CoupledSystem {
 }
 
 impl Running {
+    /// After a failed or stopped step: the held bodies' poses (and rates,
+    /// where the last call had them) where their paths have them at the
+    /// time reached.
+    fn stop_held(&mut self, paths: &[Option<held_loads::HeldPath>]) {
+        let t = self.sim.time();
+        for (end, path) in self.held.iter_mut().zip(paths) {
+            if let (Some(end), Some(path)) = (end.as_mut(), path) {
+                let m = path.at(t);
+                end.position = m.position;
+                end.rotation = m.rotation;
+                end.rates = end.rates.map(|_| (m.velocity, m.angular_velocity));
+            }
+        }
+    }
+
     /// After a failed or stopped step: the coupled points' last positions and
     /// velocities become where their interval's motion has them at the
     /// time reached, so the next interval starts from there.

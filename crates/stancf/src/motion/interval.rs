@@ -50,6 +50,18 @@ impl IntervalMotion {
         (value, rate)
     }
 
+    /// The second derivative at t: the cubic's (K2), zero on the line
+    /// (K1).
+    pub fn acceleration(&self, t: f64) -> f64 {
+        let Some((v0, v1)) = self.rates else {
+            return 0.0;
+        };
+        let big_t = self.duration;
+        let s = (t - self.t0) / big_t;
+        let [_, _, [a00, a10, a01, a11]] = crate::shape::hermite3(s, 1.0);
+        (a00 * self.start + a01 * self.end) / (big_t * big_t) + (a10 * v0 + a11 * v1) / big_t
+    }
+
     /// Whether the value stays the same for all t.
     pub fn is_still(&self) -> bool {
         self.start == self.end && self.rates.is_none_or(|(a, b)| a == 0.0 && b == 0.0)
@@ -95,6 +107,11 @@ impl MotionInterval {
     pub fn state(&self, t: f64) -> ([f64; 3], [f64; 3]) {
         let at: [(f64, f64); 3] = std::array::from_fn(|c| self.coordinate(c).at(t));
         (at.map(|a| a.0), at.map(|a| a.1))
+    }
+
+    /// Acceleration at t (zero on the line).
+    pub fn acceleration(&self, t: f64) -> [f64; 3] {
+        std::array::from_fn(|c| self.coordinate(c).acceleration(t))
     }
 
     /// Whether every value is finite and the length positive.

@@ -432,15 +432,15 @@ fn fold_point(
     Ok(())
 }
 
-/// A body's rods (docs/method.md §15.10-§15.11): on a free body each
+/// A body's rods (docs/method.md §15.10-§15.11): on a free or coupled body each
 /// rod's mass joins its inertia ((B17), [`RigidInertia::with_part`]); in
 /// water the rod joins the body's water, which gives it the buoyancy of
 /// its part under the surface z = 0 (B20)-(B21), its added mass and its
 /// drag (B18)-(B19) at every pose, so the water's `gravity` is set to the
 /// system's g, which must then point along -z. A fixed body's rods hold
-/// nothing that moves; a coupled body's would be loads of the host's and
-/// are refused. The rods are moved out of `rods`, so a second fold finds
-/// none.
+/// nothing that moves; a coupled body's fold as a free body's, their loads
+/// pushing the host (B36). The rods are moved out of `rods`, so a second
+/// fold finds none.
 fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
     for (k, rod) in body.rods.iter().enumerate() {
         rod.validate(&format!("rods[{k}]"))?;
@@ -450,12 +450,9 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
             body.rods.clear();
             return Ok(());
         }
-        BodyKind::Coupled if !body.rods.is_empty() => {
-            return Err(ModelError::invalid(
-                "rods",
-                "rods on a coupled body are not built (their loads would be the host's)",
-            ));
-        }
+        // A coupled body's rods are carried by the host: their inertia
+        // and water give what they push the host with ([`super::held_push`],
+        // (B36)).
         _ => {}
     }
     let rods = std::mem::take(&mut body.rods);

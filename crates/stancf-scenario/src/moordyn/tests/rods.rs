@@ -77,6 +77,9 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
         ("VesPin", RodAttachment::CoupledPinned),
         ("cpldpin", RodAttachment::CoupledPinned),
         ("VesselPinned", RodAttachment::CoupledPinned),
+        ("Coupled", RodAttachment::Coupled),
+        ("Vessel", RodAttachment::Coupled),
+        ("cpld", RodAttachment::Coupled),
     ] {
         assert_eq!(
             rod(&format!("1 Can {word} 0 0 -5 1 0 -5 2 -")).attachment,
@@ -89,20 +92,8 @@ fn each_attachment_word_is_read_as_moordyn_reads_it() {
 }
 
 #[test]
-fn coupled_and_unknown_rods_are_refused_by_name_with_their_line() {
+fn unknown_rod_attachments_are_refused_by_name_with_their_line() {
     for (word, words) in [
-        (
-            "Coupled",
-            "rods coupled in six degrees of freedom are not built yet",
-        ),
-        (
-            "Vessel",
-            "rods coupled in six degrees of freedom are not built yet",
-        ),
-        (
-            "Cpld",
-            "rods coupled in six degrees of freedom are not built yet",
-        ),
         ("Turbine1", "unknown attachment"),
         ("Body", "names the body's number"),
         ("Body1Foo", "written Body<n>"),

@@ -47,7 +47,10 @@ fn frame(sc: &SystemScenario, r: &SystemRod) -> RodFrame {
         (Some(rod), _) => rod.end_a,
         (
             None,
-            RodHolder::Body { body } | RodHolder::Free { body } | RodHolder::Pinned { body, .. },
+            RodHolder::Body { body }
+            | RodHolder::Free { body }
+            | RodHolder::Pinned { body, .. }
+            | RodHolder::Coupled { body },
         ) => {
             let b = &sc.bodies[body];
             rotate_back(&b.rotation(), sub(r.ends[0], b.position))
@@ -95,7 +98,8 @@ impl RodFrame {
             }
             RodHolder::Free { body }
             | RodHolder::Pinned { body, .. }
-            | RodHolder::Body { body } => {
+            | RodHolder::Body { body }
+            | RodHolder::Coupled { body } => {
                 let m = &row.bodies[body].motion;
                 let arm = rotate(&m.rotation, self.end_a);
                 RodState {
@@ -153,7 +157,9 @@ impl RodFrame {
     /// reading (NaN here).
     fn net(&self, bodies: &[BodyRow], at: [f64; 3]) -> ([f64; 3], [f64; 3]) {
         match self.holder {
-            RodHolder::Free { body } | RodHolder::Pinned { body, .. } => {
+            RodHolder::Free { body }
+            | RodHolder::Pinned { body, .. }
+            | RodHolder::Coupled { body } => {
                 let b = &bodies[body];
                 let arm = sub(b.motion.position, at);
                 (b.net_force, add(b.net_moment, cross(arm, b.net_force)))
