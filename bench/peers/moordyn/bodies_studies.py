@@ -46,9 +46,11 @@ def compare(st, md):
                              unit="m"))
         elif key[0] == "coupled body":
             big = max(np.linalg.norm(sa[:3]), np.linalg.norm(mb[:3]))
+            apart = float(np.linalg.norm(sa[:3] - mb[:3]))
+            # Both zero (a body holding nothing): no difference, not 0/0.
             rows.append(dict(object=name, quantity="lines' force on it (N)",
                              stancf=fmt_vec(sa[:3], 1), moordyn=fmt_vec(mb[:3], 1),
-                             difference=100 * float(np.linalg.norm(sa[:3] - mb[:3])) / big,
+                             difference=100 * apart / big if big > 0 else 0.0,
                              unit="%"))
     return rows
 

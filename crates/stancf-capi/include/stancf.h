@@ -108,6 +108,11 @@ int stancf_init(StancfSystem *s, const double *x, const double *xd);
    ncoupled_dof. */
 int stancf_init_n(StancfSystem *s, unsigned int n, const double *x, const double *xd);
 
+/* f = the forces on the coupled bodies and points at the equilibrium the
+   last stancf_init solved (ncoupled_dof values, as stancf_step gives
+   them); STANCF_INVALID_INPUT before stancf_init. */
+int stancf_init_force(StancfSystem *s, double *f);
+
 /* Advances from *t (the time reached) to *t + *dt with the coupled points
    moving to x (cubically when this call and the last gave velocities xd,
    else linearly; xd may be NULL); f = the lines' force on each coupled

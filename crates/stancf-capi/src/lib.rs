@@ -33,6 +33,8 @@ use std::path::PathBuf;
 pub struct StancfSystem {
     coupled: Coupled,
     last: Option<CoupledForces>,
+    /// The forces of the last `stancf_init`'s equilibrium.
+    start: Option<Vec<f64>>,
 }
 
 /// A saved state of a system (opaque to C, which holds a token of it),
@@ -108,6 +110,7 @@ unsafe fn create(path: *const c_char, flags: c_uint) -> *mut StancfSystem {
         args::open_system(StancfSystem {
             coupled,
             last: None,
+            start: None,
         })
     })
 }
@@ -255,9 +258,31 @@ unsafe fn init(
 ) -> Result<(), Error> {
     let x = args::values(x, n, "x")?;
     let xd = args::optional_values(xd, n);
-    sys.coupled.handle.initialize(x, xd)?;
+    sys.start = Some(sys.coupled.handle.initialize(x, xd)?);
     sys.last = None;
     Ok(())
+}
+
+/// The forces on the coupled points and bodies at the equilibrium the
+/// last `stancf_init` solved (what `MoorDyn_Init` leaves for
+/// `MoorDyn_GetFASTtens`; the Rust and Python `initialize` return them).
+/// Refused before `stancf_init`.
+///
+/// # Safety
+/// `s` is looked up, never read; `f` is NULL or has room for
+/// `ncoupled_dof` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_init_force(s: *mut StancfSystem, f: *mut f64) -> c_int {
+    guard(|| {
+        args::with_system(s, |sys| {
+            let start = sys
+                .start
+                .as_ref()
+                .ok_or_else(|| Error::input("no stancf_init yet"))?;
+            args::room(f, start.len(), "f")?.copy_from_slice(start);
+            Ok(())
+        })
+    })
 }
 
 /// Advances from `*t`, the time reached, to `*t + *dt` with the coupled

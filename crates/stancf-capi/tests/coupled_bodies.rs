@@ -1,7 +1,8 @@
 //! A coupled body through the C library (docs/method.md §13.6): its id
 //! and count, its 6 numbers first in the coupling arrays, and stepping
-//! it through C is the Rust handle's stepping, to the bit; the force and
-//! moment returned are its points' sums.
+//! it through C is the Rust handle's stepping, to the bit (the
+//! equilibrium's force from stancf_init_force too); the force and moment
+//! returned are its points' sums.
 
 mod common;
 
@@ -45,7 +46,14 @@ fn a_coupled_body_steps_through_c_as_through_the_rust_handle() {
         message()
     );
     let mut rust = stancf_scenario::coupling::open(&repo(DECK)).unwrap().handle;
-    rust.initialize(&x, None).unwrap();
+    let start = rust.initialize(&x, None).unwrap();
+    // The equilibrium's force and moment, as the Rust handle returns them.
+    let mut f0 = [0.0; 6];
+    assert_eq!(
+        unsafe { stancf_init_force(s, f0.as_mut_ptr()) },
+        STANCF_SUCCESS
+    );
+    assert_eq!(f0.to_vec(), start);
     let mut t = 0.0;
     for k in 1..=3 {
         let x = pose(k);

@@ -33,6 +33,7 @@ fn every_call(s: *mut StancfSystem) -> Vec<(&'static str, c_int)> {
             ("stancf_coupled_positions", stancf_coupled_positions(s, b)),
             ("stancf_init", stancf_init(s, x, null())),
             ("stancf_init_n", stancf_init_n(s, 3, x, null())),
+            ("stancf_init_force", stancf_init_force(s, b)),
             ("stancf_step", stancf_step(s, x, null(), b, &mut t, &mut dt)),
             (
                 "stancf_step_n",

@@ -101,7 +101,10 @@ int main(int argc, char **argv) {
     unsigned int nb = 1;
     if (stancf_coupled_body_count(s, &nb) || nb != 0 || stancf_coupled_body_ids(s, ids)) return 38;
     if (stancf_coupled_positions(s, x) || x[0] != 6.0) return 15;
+    if (stancf_init_force(s, f) != STANCF_INVALID_INPUT) return 40;
     if (stancf_init(s, x, xd) || stancf_init_n(s, 3, x, NULL)) return 16;
+    /* The bridle's fairlead carries its lines' pull at rest. */
+    if (stancf_init_force(s, f) || !(f[0] != 0.0 || f[2] != 0.0)) return 41;
     if (stancf_set_max_interval_steps(s, 1000)) return 31;
     if (stancf_set_max_interval_steps(s, 0) != STANCF_INVALID_VALUE) return 32;
     x[0] += 0.01;

@@ -450,10 +450,24 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
             body.rods.clear();
             return Ok(());
         }
-        // A coupled body's rods are carried by the host: their inertia
-        // and water give what they push the host with ([`super::held_push`],
-        // (B36)).
-        _ => {}
+        // A coupled body's own mass, inertia and water are the host's (as
+        // MoorDyn zeroes them); its rods are carried by the host, their
+        // inertia and water giving what they push it with
+        // ([`super::held_push`], (B36)).
+        BodyKind::Coupled => {
+            body.inertia = RigidInertia {
+                mass: 0.0,
+                centre_of_mass: [0.0; 3],
+                inertia_at_centre: [[0.0; 3]; 3],
+            };
+            if let Some(w) = &mut body.water {
+                w.volume = 0.0;
+                w.added_mass_coefficients = [0.0; 3];
+                w.drag_areas = [0.0; 3];
+                w.rotational_drag_areas = [0.0; 3];
+            }
+        }
+        BodyKind::Free => {}
     }
     let rods = std::mem::take(&mut body.rods);
     for rod in &rods {
