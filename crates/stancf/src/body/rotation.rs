@@ -239,7 +239,7 @@ mod tests {
             3e-5,
             0.4,
             2.0,
-            3.1415,
+            3.0,
             std::f64::consts::PI - 1e-7,
         ] {
             let theta = axis.map(|c| angle * c);

@@ -155,7 +155,7 @@ mod tests {
 
     /// In air a held body pushes with its weight less its momentum's
     /// rate: F = m g - m a_G, and about its centre M_G = -R (I Omega_dot
-    /// + Omega x I Omega) (Euler's equations), moved to the reference
+    /// plus Omega x I Omega) (Euler's equations), moved to the reference
     /// point; an asymmetric body off its reference point, turned, spinning
     /// and accelerating, against the closed forms to 1e-12.
     #[test]

@@ -1,0 +1,187 @@
+//! A coupling interval (docs/method.md §13.3): the coupled points and
+//! bodies moved along the host's motion (K1)-(K2), the interval split
+//! into equal steps, the lines' forces and the held bodies' own push
+//! (§15.18) averaged over it.
+
+use super::{
+    held_loads, not_initialized, triple, CoupledForces, CoupledSystem, CouplingError, Running,
+};
+use crate::motion::{CoupledMotion, MotionInterval};
+use crate::system::SystemSimulation;
+
+impl CoupledSystem {
+    /// Advances to `t_next` with the coupled points moving from where the
+    /// last call put them to `x` (3 per point): along the cubic (K2) when
+    /// this call and the last both give velocities, else along the line
+    /// (K1). The interval is split into the fewest equal steps no longer
+    /// than the scenario's (§13.3); an interval of more steps than
+    /// [`Self::max_interval_steps`] is refused before anything moves. On a
+    /// solver failure the state stays at the last converged step, with
+    /// the coupled points on this interval's motion, so a later call
+    /// continues from there.
+    pub fn step_to(
+        &mut self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+    ) -> Result<CoupledForces, CouplingError> {
+        self.step_to_with(t_next, x, xd, &mut || false)
+    }
+
+    /// [`Self::step_to`], asking `stop` between two internal steps (after
+    /// each but the last): when it says true, the call ends with
+    /// [`CouplingError::Interrupted`] and the state is left as after a
+    /// solver failure (at the last converged step, at least one step after
+    /// the time reached and before `t_next`, the coupled points on this
+    /// interval's motion), so a later call continues from there.
+    pub fn step_to_with(
+        &mut self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+        stop: &mut dyn FnMut() -> bool,
+    ) -> Result<CoupledForces, CouplingError> {
+        let (steps, h) = self.interval(t_next, x, xd)?;
+        let coupled = self.coupled.clone();
+        let layout = self.layout.clone();
+        let n = coupled.len();
+        let end = layout.positions(x, n);
+        let end_rate = xd.map(|v| layout.velocities(x, v, n));
+        let running = self.running.as_mut().ok_or_else(not_initialized)?;
+        let t0 = running.sim.time();
+        let span = steps as f64 * h;
+        let rates = match (&running.velocity, &end_rate) {
+            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1.as_slice())),
+            _ => None,
+        };
+        for (k, &p) in coupled.iter().enumerate() {
+            let interval = MotionInterval {
+                t0,
+                duration: span,
+                start: triple(&running.position, k),
+                end: triple(&end, k),
+                rates: rates.map(|(a, b)| (triple(a, k), triple(b, k))),
+            };
+            running
+                .sim
+                .set_point_motion(p, CoupledMotion::Interval(interval))?;
+        }
+        // The bodies' reference points on the same motion (the moments'
+        // arms).
+        let references: Vec<MotionInterval> = (0..layout.bodies.len())
+            .map(|b| MotionInterval {
+                t0,
+                duration: span,
+                start: running.reference[b],
+                end: layout.reference(x, b),
+                rates: match (&running.reference_rate, xd) {
+                    (Some(r0), Some(v)) => Some((r0[b], layout.reference(v, b))),
+                    _ => None,
+                },
+            })
+            .collect();
+        running.sim.set_time_step(h);
+        // The coupled bodies' own parts on the host's motion (§15.18).
+        let held_end: Vec<_> = (0..layout.bodies.len())
+            .map(|b| layout.held_end(x, xd, b))
+            .collect();
+        let paths: Vec<Option<held_loads::HeldPath>> = (0..layout.bodies.len())
+            .map(|k| {
+                let body = &running.sim.topology().bodies()[layout.bodies[k].body];
+                match (&running.held[k], &held_end[k]) {
+                    (Some(a), Some(b)) if held_loads::carries_loads(body) => {
+                        Some(held_loads::HeldPath::new(t0, span, a, b))
+                    }
+                    _ => None,
+                }
+            })
+            .collect();
+        let loads = |sim: &SystemSimulation| {
+            let mut out = layout.forces(
+                |k| sim.point_force(coupled[k]),
+                |k| sim.point_state(coupled[k]).0,
+                |b| references[b].state(sim.time()).0,
+            );
+            let topology = sim.topology();
+            for (k, path) in paths.iter().enumerate() {
+                if let Some(path) = path {
+                    let body = &topology.bodies()[layout.bodies[k].body];
+                    let t_a = sim.time() - h;
+                    let push = held_loads::mean_push(body, topology.gravity(), path, t_a, h);
+                    layout.add_push(&mut out, k, &push);
+                }
+            }
+            out
+        };
+        let mut impulse = vec![0.0; x.len()];
+        for taken in 1..=steps {
+            if let Err(e) = running.sim.step() {
+                running.stop_on_motion(&coupled, &references);
+                running.stop_held(&paths);
+                return Err(e.into());
+            }
+            for (i, f) in loads(&running.sim).iter().enumerate() {
+                impulse[i] += f * h;
+            }
+            if taken < steps && stop() {
+                running.stop_on_motion(&coupled, &references);
+                running.stop_held(&paths);
+                return Err(CouplingError::Interrupted {
+                    time: running.sim.time(),
+                });
+            }
+        }
+        running.position = end;
+        running.velocity = end_rate;
+        running.held = held_end;
+        running.reference = (0..layout.bodies.len())
+            .map(|b| layout.reference(x, b))
+            .collect();
+        running.reference_rate = xd.map(|v| {
+            (0..layout.bodies.len())
+                .map(|b| layout.reference(v, b))
+                .collect()
+        });
+        Ok(CoupledForces {
+            last_step: loads(&running.sim),
+            interval_mean: impulse.iter().map(|i| i / span).collect(),
+            steps,
+        })
+    }
+}
+
+impl Running {
+    /// After a failed or stopped step: the held bodies' poses (and rates,
+    /// where the last call had them) where their paths have them at the
+    /// time reached.
+    fn stop_held(&mut self, paths: &[Option<held_loads::HeldPath>]) {
+        let t = self.sim.time();
+        for (end, path) in self.held.iter_mut().zip(paths) {
+            if let (Some(end), Some(path)) = (end.as_mut(), path) {
+                let m = path.at(t);
+                end.position = m.position;
+                end.rotation = m.rotation;
+                end.rates = end.rates.map(|_| (m.velocity, m.angular_velocity));
+            }
+        }
+    }
+
+    /// After a failed or stopped step: the coupled points' last positions and
+    /// velocities become where their interval's motion has them at the
+    /// time reached, so the next interval starts from there.
+    fn stop_on_motion(&mut self, coupled: &[usize], references: &[MotionInterval]) {
+        let t = self.sim.time();
+        let mut velocity = vec![0.0; self.position.len()];
+        for (k, &p) in coupled.iter().enumerate() {
+            let (r, v) = self.sim.topology().points()[p].state_at(t);
+            self.position[3 * k..3 * k + 3].copy_from_slice(&r);
+            velocity[3 * k..3 * k + 3].copy_from_slice(&v);
+        }
+        self.velocity = self.velocity.is_some().then_some(velocity);
+        let states: Vec<_> = references.iter().map(|m| m.state(t)).collect();
+        self.reference = states.iter().map(|s| s.0).collect();
+        if self.reference_rate.is_some() {
+            self.reference_rate = Some(states.iter().map(|s| s.1).collect());
+        }
+    }
+}
