@@ -116,7 +116,8 @@ int stancf_init_force(StancfSystem *s, double *f);
 /* Advances from *t (the time reached) to *t + *dt with the coupled points
    moving to x (cubically when this call and the last gave velocities xd,
    else linearly; xd may be NULL); f = the lines' force on each coupled
-   point (the mean over the last internal step); then *t += *dt. The
+   point, and on each coupled body their force and moment with its rods'
+   push (the mean over the last internal step); then *t += *dt. The
    interval is split into the fewest equal steps no longer than the
    scenario's time step; an interval of more steps than the handle's bound
    (100000 unless stancf_set_max_interval_steps raised it) is refused with

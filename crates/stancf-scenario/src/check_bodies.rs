@@ -36,13 +36,24 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
             };
             let own_rod = sc.rods.iter().find(|r| r.own_body() == Some(b));
             let what = if let Some(r) = own_rod {
-                match r.pin_point() {
-                    Some(p) => format!(
-                        "pinned rod {} (3 degrees of freedom, turning about its end A held at \
-                         point {}; its mass and water are the rod's)",
-                        r.id, sc.points[p].id
+                let host = |p: usize| match sc.points[p].kind {
+                    PointType::Coupled => " (a coupled point the host moves)",
+                    _ => "",
+                };
+                match (r.holder, r.pin_point()) {
+                    (RodHolder::Coupled { .. }, _) => format!(
+                        "coupled rod {} (moved by the host in 6 degrees of freedom, its reference \
+                         point at end A; its weight, water and inertia push the host)",
+                        r.id
                     ),
-                    None => format!(
+                    (_, Some(p)) => format!(
+                        "pinned rod {} (3 degrees of freedom, turning about its end A held at \
+                         point {}{}; its mass and water are the rod's)",
+                        r.id,
+                        sc.points[p].id,
+                        host(p)
+                    ),
+                    (_, None) => format!(
                         "free rod {} (6 degrees of freedom; its mass and water are the rod's)",
                         r.id
                     ),

@@ -83,10 +83,7 @@ fn a_coupled_pinned_body_hangs_from_the_host_and_pulls_it() {
             .step_to(t, &at(t), Some(&rate(t)))
             .unwrap()
             .interval_mean;
-        worst = worst
-            .max((f[2] - lifted).abs())
-            .max(f[0].abs())
-            .max(f[1].abs());
+        worst = worst.max(vertical_miss(&f, lifted));
     }
     eprintln!(
         "a CoupledPinned body: hangs by {hanging:.3} N, lifted pulls {lifted:.3} N to {worst:.1e}"
@@ -274,16 +271,9 @@ fn a_coupled_pinned_rod_hangs_from_the_host_and_pulls_it() {
                 .step_to(t, &at(t), Some(&rate(t)))
                 .unwrap()
                 .interval_mean;
-            let rod = &f[width - 3..];
-            worst = worst
-                .max((rod[2] - lifted).abs())
-                .max(rod[0].abs())
-                .max(rod[1].abs());
+            worst = worst.max(vertical_miss(&f[width - 3..], lifted));
             if and_body {
-                worst = worst
-                    .max((f[2] - hanging).abs())
-                    .max(f[0].abs())
-                    .max(f[1].abs());
+                worst = worst.max(vertical_miss(&f, hanging));
             }
         }
         eprintln!(

@@ -70,8 +70,9 @@ fn a_deck_of_a_rod_alone_floats_it_at_its_draft() {
     assert!((z - want).abs() < 1e-9, "{z} against {want}");
 }
 
-/// MoorDyn's RodPinnedFloating.txt: two buoyant rods (10 kg/m against
-/// the 50.3 kg/m of water they displace) pinned at one end 5 m down,
+/// MoorDyn's RodPinnedFloating.txt's rods (0.25 m across, 10 kg/m), here
+/// in water of 1025 kg/m^3 (the deck's is 1000): buoyant, 10 kg/m against
+/// the 50.3 kg/m of water they displace, pinned at one end 5 m down,
 /// lying along x and along y: their equilibrium stands them upright above
 /// their pins, the rod along x pitched by -90 degrees (its end B up) and
 /// the one along y rolled by 90, their centres straight above the pin,
@@ -143,9 +144,10 @@ fn a_rod_alone_rises_from_a_scenario_that_takes_its_deck() {
     assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
 }
 
-/// A dynamic scenario that takes a deck and gives no `time_step` steps at
-/// the deck's (its dtM, 0.5 ms here: what a coupled run of the deck
-/// takes), saying so in `check`; the rod rises as the closed form says.
+/// A dynamic scenario (its `type` left to its default) that takes a deck
+/// and gives no `time_step` steps at the deck's (its dtM, 0.5 ms here:
+/// what a coupled run of the deck takes), saying so in `check`; the rod
+/// rises as the closed form says.
 #[test]
 fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
     let d = scratch("deck-step-default");
@@ -157,7 +159,7 @@ fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
     let sc = write_scenario(
         &d,
         "rises.toml",
-        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\n\
          initial = \"reference\"\nduration = 0.05\n",
     );
     let o = stancf(&["check", sc.to_str().unwrap()]);

@@ -193,7 +193,8 @@ fn with_deck_step(
     let Some(mut a) = raw else {
         return (None, None);
     };
-    let dynamic = a.kind.as_deref() == Some("dynamic");
+    // A missing type is a dynamic analysis (scenario/analysis.rs).
+    let dynamic = a.kind.as_deref().unwrap_or("dynamic") == "dynamic";
     match (dynamic, a.time_step, deck.time_step()) {
         (true, None, Some(dt)) => {
             a.time_step = Some(dt);

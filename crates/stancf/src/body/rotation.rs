@@ -233,15 +233,7 @@ mod tests {
     #[test]
     fn the_log_map_undoes_the_exponential_and_chart_rates_invert_j_r() {
         let axis = crate::vec3::normalized([0.3, -0.8, 0.5]);
-        for angle in [
-            0.0,
-            1e-9,
-            3e-5,
-            0.4,
-            2.0,
-            3.0,
-            std::f64::consts::PI - 1e-7,
-        ] {
+        for angle in [0.0, 1e-9, 3e-5, 0.4, 2.0, 3.0, std::f64::consts::PI - 1e-7] {
             let theta = axis.map(|c| angle * c);
             let back = log_map(&exp_map(theta));
             for k in 0..3 {

@@ -67,6 +67,12 @@ impl CoupledSystem {
     /// of [`Self::coupled_bodies`]; e.g. by the bodies' ids, as MoorDyn
     /// orders its coupled bodies). Their 6 numbers stay first.
     pub fn with_body_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
+        if self.running.is_some() {
+            return Err(ModelError::invalid(
+                "body_order",
+                "the coupled bodies are ordered before initialize, not after",
+            ));
+        }
         let mut own: Vec<usize> = self.layout.bodies.iter().map(|b| b.body).collect();
         let mut sorted = order.clone();
         own.sort_unstable();

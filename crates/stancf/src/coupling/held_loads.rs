@@ -89,10 +89,10 @@ impl HeldPath {
     }
 }
 
-/// Whether `body` pushes the host with anything of its own: a mass (its
-/// rods') or water.
+/// Whether the coupled `body` pushes the host with anything of its own:
+/// it carries rods (its own mass and water are the host's).
 pub(super) fn carries_loads(body: &Body) -> bool {
-    body.inertia.mass > 0.0 || body.water.as_ref().is_some_and(|w| !w.rods.is_empty())
+    !body.rods.is_empty()
 }
 
 /// The push of `body` (B36) averaged over [t_a, t_a + h] on `path`, by

@@ -200,6 +200,12 @@ impl CoupledSystem {
     /// Orders the coupled points of the arrays as `order` (a permutation
     /// of [`Self::coupled_points`]; e.g. by the points' ids).
     pub fn with_order(mut self, order: Vec<usize>) -> Result<Self, ModelError> {
+        if self.running.is_some() {
+            return Err(ModelError::invalid(
+                "order",
+                "the coupled points are ordered before initialize, not after",
+            ));
+        }
         let mut sorted = order.clone();
         sorted.sort_unstable();
         let mut own = self.array_points.clone();
@@ -329,7 +335,8 @@ impl CoupledSystem {
 
     /// Solves the static equilibrium with the coupled points at `x` (3 per
     /// point), at rest, and starts the simulation there at t = 0 (§13.1);
-    /// returns the lines' forces on the coupled points. `xd`, when given,
+    /// returns the arrays' forces (the lines' on the coupled points; on a coupled
+    /// body their force and moment with its rods' push at rest, §15.18). `xd`, when given,
     /// is the points' velocity at t = 0: the start of the first interval's
     /// cubic (K2) (the lines start at rest, but for those on a free body
     /// that starts moving: [`System::start_lines_with_bodies`]). May be

@@ -438,9 +438,10 @@ fn fold_point(
 /// its part under the surface z = 0 (B20)-(B21), its added mass and its
 /// drag (B18)-(B19) at every pose, so the water's `gravity` is set to the
 /// system's g, which must then point along -z. A fixed body's rods hold
-/// nothing that moves; a coupled body's fold as a free body's, their loads
-/// pushing the host (B36). The rods are moved out of `rods`, so a second
-/// fold finds none.
+/// nothing that moves; a coupled body's fold as a free body's over its own
+/// zeroed mass and water, their loads pushing the host (B36), and stay in
+/// `rods` (a second fold rebuilds the same); a free body's are moved out of
+/// `rods`, so a second fold finds none.
 fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
     for (k, rod) in body.rods.iter().enumerate() {
         rod.validate(&format!("rods[{k}]"))?;
@@ -469,13 +470,22 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
         }
         BodyKind::Free => {}
     }
-    let rods = std::mem::take(&mut body.rods);
+    // A coupled body keeps its rods (its inertia and water are rebuilt
+    // from them at every fold, so a second fold changes nothing); a free
+    // body's are moved out, so a second fold finds none.
+    let rods = match body.kind {
+        BodyKind::Coupled => body.rods.clone(),
+        _ => std::mem::take(&mut body.rods),
+    };
     for rod in &rods {
         body.inertia = body.inertia.with_part(&rod.inertia());
     }
     let Some(water) = &mut body.water else {
         return Ok(());
     };
+    if body.kind == BodyKind::Coupled {
+        water.rods.clear();
+    }
     if !rods.is_empty() {
         if !(gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] < 0.0) {
             return Err(ModelError::invalid(

@@ -15,7 +15,8 @@
 //! ```
 //!
 //! with F_c the constant forces (the weight less the lumped volume's
-//! buoyancy at the centre of mass, the forces at points), Q_w the water's
+//! buoyancy at the centre of mass, the forces at points, a constant
+//! moment), Q_w the water's
 //! virtual work (B10), (B19), (B32), and q_ddot = (a_G, Omega_dot): at
 //! theta = 0 the chart's theta_ddot is Omega_dot (theta_dot =
 //! J_r(theta)^-1 Omega, J_r^-1 = I + [theta]/2 + ..., adds Omega x Omega /
@@ -119,7 +120,8 @@ pub fn held_push(
         let lever = rotate(&m.rotation, sub(*xi, c));
         constant_moment = add(constant_moment, cross(lever, *f));
     }
-    let constant_moment = rotate_back(&m.rotation, constant_moment);
+    // A constant moment on the body (global, B27).
+    let constant_moment = rotate_back(&m.rotation, add(constant_moment, body.moment));
     let held_r: [f64; 3] =
         std::array::from_fn(|i| d_dt(i) - density.g[9 + i] - constant[i] - water_r[i]);
     let held_theta: [f64; 3] = std::array::from_fn(|i| {
@@ -138,19 +140,8 @@ mod tests {
     use crate::system::BodyKind;
 
     fn body(inertia: RigidInertia) -> Body {
-        Body {
-            kind: BodyKind::Coupled,
-            position: [0.0; 3],
-            rotation: rotation_from_moordyn_angles([0.0; 3]),
-            inertia,
-            velocity: [0.0; 3],
-            angular_velocity: [0.0; 3],
-            water: None,
-            loads: Vec::new(),
-            rods: Vec::new(),
-            pin: None,
-            moment: [0.0; 3],
-        }
+        let turned = rotation_from_moordyn_angles([0.0; 3]);
+        Body::new(BodyKind::Coupled, [0.0; 3], turned, inertia)
     }
 
     /// In air a held body pushes with its weight less its momentum's

@@ -103,3 +103,9 @@ pub fn rotation_of_angles(deg: [f64; 3]) -> [[f64; 3]; 3] {
     };
     mul(mul(rx, ry), rz)
 }
+
+/// How far the force f (its first three numbers) is from the vertical
+/// force fz: the largest of |f_x|, |f_y| and |f_z - fz| (N).
+pub fn vertical_miss(f: &[f64], fz: f64) -> f64 {
+    (f[2] - fz).abs().max(f[0].abs()).max(f[1].abs())
+}
