@@ -43,12 +43,12 @@ fn a_coupled_rod_pushes_the_host_by_its_wet_weight_and_inertia() {
     let deck = write_scenario(&d, "rod.txt", COUPLED_ROD);
     let o = stancf(&["check", deck.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let so = text(&o).0;
     assert!(
-        text(&o)
-            .0
-            .contains("coupled, body 1 (moved by the host in six degrees of freedom;"),
-        "{}",
-        text(&o).0
+        so.contains("coupled, body 1 (moved by the host in six degrees of freedom;")
+            && so.contains("mass 50000 kg; submerged;")
+            && so.contains("coupled rod 1 (moved by the host in 6 degrees of freedom"),
+        "{so}"
     );
     let mut c = stancf_cli::coupling::open(&deck).expect("a coupled system");
     assert_eq!(c.handle.coupled_dof(), 6);

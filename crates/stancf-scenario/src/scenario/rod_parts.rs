@@ -143,9 +143,12 @@ impl SystemRod {
     }
 
     /// Whether its water (in a scenario with water) acts on something
-    /// that moves: a free or pinned rod, or a rod on a free body.
+    /// that moves: a free or pinned rod, a rod on a free body, or one the
+    /// host moves (a coupled rod, a rod on a coupled body: its water
+    /// pushes the host, docs/method.md §15.18).
     pub fn moves(&self, bodies: &[SystemBody]) -> bool {
-        self.body().is_some_and(|b| bodies[b].is_free())
+        self.body()
+            .is_some_and(|b| bodies[b].is_free() || bodies[b].is_coupled())
     }
 }
 
