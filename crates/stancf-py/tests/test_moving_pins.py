@@ -4,10 +4,13 @@ weight less its buoyancy plus its mass times the lift,
 -(m (g + a) - rho V g) (B35)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 
 from stancf.simulation import Simulation
+
+ROOT = Path(__file__).resolve().parents[3]
 
 SCENARIO = """title = "rod on a coupled body"
 [water]
@@ -54,25 +57,10 @@ def test_a_lifted_body_is_pulled_by_the_rod_pinned_under_it(tmp_path):
     assert abs(f[2] + (mass * (g + 2.0) - lift)) < 1e-9 * mass * g
 
 
-DECK = """--------------------- MoorDyn Input File ---------------------------------------
-A body pinned to the host, a can hanging under it
----------------------- ROD TYPES -----------------------------------------------
-TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
-(name)        (-)      (kg/m)    (-)    (-)     (-)      (-)
-Can           2        5e3       0.0    1.0     0.0      1.0
----------------------- BODIES --------------------------------------------------
-ID   Attachment       X0    Y0    Z0    r0   p0   y0   Mass  CG*  I*   Volume  CdA*  Ca*
-(#)  (-)              (m)   (m)   (m)   (deg)(deg)(deg)(kg)  (m)  (kg-m^2)(m^3) (m^2) (-)
-1    CoupledPinned    0.00  0.00  -5.00 0.00 0.00 0.00 0.00  0.00 0.0  0.00    0.00  0.00
----------------------- RODS ----------------------------------------------------
-ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb    NumSegs  RodOutputs
-(#)  (name)   (#/key)     (m)   (m)   (m)   (m)   (m)   (m)   (-)      (-)
-1    Can      Body1       0     0     -5    0     0     -15   3        -
----------------------- OPTIONS -------------------------------------------------
-0.01     dtM          - time step to use in mooring integration
-30       WtrDpth      - water depth
-------------------------- need this line ---------------------------------------
-"""
+# A CoupledPinned body carrying a can (the Rust test's deck).
+DECK = (
+    ROOT / "crates" / "stancf-cli" / "tests" / "fixtures" / "coupled-pinned-can-moordyn.txt"
+).read_text()
 
 
 def test_a_coupled_pinned_body_takes_three_numbers_and_pulls_by_its_wet_weight(tmp_path):

@@ -8,26 +8,7 @@ use crate::common::*;
 /// across, 10 m long, 5 t/m, no drag, Ca and CaEnd 1) from 5 m to 15 m
 /// under its reference point, nothing else (MoorDyn's
 /// body_tests/pinnedBody.txt in water).
-const PINNED_BODY: &str =
-    "--------------------- MoorDyn Input File ---------------------------------------
-A body pinned to the host, a can hanging under it
----------------------- ROD TYPES -----------------------------------------------
-TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
-(name)        (-)      (kg/m)    (-)    (-)     (-)      (-)
-Can           2        5e3       0.0    1.0     0.0      1.0
----------------------- BODIES --------------------------------------------------
-ID   Attachment       X0    Y0    Z0    r0   p0   y0   Mass  CG*  I*   Volume  CdA*  Ca*
-(#)  (-)              (m)   (m)   (m)   (deg)(deg)(deg)(kg)  (m)  (kg-m^2)(m^3) (m^2) (-)
-1    CoupledPinned    0.00  0.00  -5.00 0.00 0.00 0.00 0.00  0.00 0.0  0.00    0.00  0.00
----------------------- RODS ----------------------------------------------------
-ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb    NumSegs  RodOutputs
-(#)  (name)   (#/key)     (m)   (m)   (m)   (m)   (m)   (m)   (-)      (-)
-1    Can      Body1       0     0     -5    0     0     -15   3        -
----------------------- OPTIONS -------------------------------------------------
-0.01     dtM          - time step to use in mooring integration
-30       WtrDpth      - water depth
-------------------------- need this line ---------------------------------------
-";
+const PINNED_BODY: &str = include_str!("../fixtures/coupled-pinned-can-moordyn.txt");
 
 /// `check` says what holds the body (3 degrees of freedom about the
 /// host's point); the static run hangs the can under it and the host's
@@ -75,16 +56,12 @@ fn a_coupled_pinned_body_hangs_from_the_host_and_pulls_it() {
     assert!((f0[2] - hanging).abs() < 1e-9 * hanging.abs(), "{f0:?}");
     let added = 2.0 * 1025.0 * std::f64::consts::PI * 8.0 / 12.0;
     let lifted = -((mass + added) * 2.0 + (mass - displaced) * g);
-    let mut worst = 0.0f64;
-    for k in 1..=10 {
-        let t = 0.1 * k as f64;
-        let f = c
-            .handle
-            .step_to(t, &at(t), Some(&rate(t)))
-            .unwrap()
-            .interval_mean;
-        worst = worst.max(vertical_miss(&f, lifted));
-    }
+    let worst = worst_interval_mean(
+        &mut c.handle,
+        |t| at(t).to_vec(),
+        |t| rate(t).to_vec(),
+        |f| vertical_miss(f, lifted),
+    );
     eprintln!(
         "a CoupledPinned body: hangs by {hanging:.3} N, lifted pulls {lifted:.3} N to {worst:.1e}"
     );
@@ -263,19 +240,14 @@ fn a_coupled_pinned_rod_hangs_from_the_host_and_pulls_it() {
         for k in (0..width).step_by(3) {
             assert!((f0[k + 2] - hanging).abs() < 1e-9 * hanging.abs(), "{f0:?}");
         }
-        let mut worst = 0.0f64;
-        for k in 1..=10 {
-            let t = 0.1 * k as f64;
-            let f = c
-                .handle
-                .step_to(t, &at(t), Some(&rate(t)))
-                .unwrap()
-                .interval_mean;
-            worst = worst.max(vertical_miss(&f[width - 3..], lifted));
-            if and_body {
-                worst = worst.max(vertical_miss(&f, hanging));
-            }
-        }
+        let worst = worst_interval_mean(&mut c.handle, at, rate, |f| {
+            let body = if and_body {
+                vertical_miss(f, hanging)
+            } else {
+                0.0
+            };
+            vertical_miss(&f[width - 3..], lifted).max(body)
+        });
         eprintln!(
             "a CoupledPinned rod (body too: {and_body}): lifted pulls {lifted:.3} N to {worst:.1e}"
         );

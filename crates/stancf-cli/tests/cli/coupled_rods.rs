@@ -64,16 +64,12 @@ fn a_coupled_rod_pushes_the_host_by_its_wet_weight_and_inertia() {
     assert!(off(&f0, &want0) < 1e-9 * wet, "{f0:?}");
     let added = 2.0 * RHO * PI * 8.0 / 12.0;
     let lifted = [0.0, 0.0, -((mass + added) * 2.0 + wet), 0.0, 0.0, 0.0];
-    let mut worst = 0.0f64;
-    for k in 1..=10 {
-        let t = 0.1 * k as f64;
-        let f = c
-            .handle
-            .step_to(t, &at(t), Some(&rate(t)))
-            .unwrap()
-            .interval_mean;
-        worst = worst.max(off(&f, &lifted));
-    }
+    let worst = worst_interval_mean(
+        &mut c.handle,
+        |t| at(t).to_vec(),
+        |t| rate(t).to_vec(),
+        |f| off(f, &lifted),
+    );
     eprintln!("a coupled rod lifted: {:.3} N to {worst:.1e}", lifted[2]);
     assert!(worst < 1e-9 * wet, "{worst:e}");
 }

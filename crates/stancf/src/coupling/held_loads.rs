@@ -95,6 +95,14 @@ pub(super) fn carries_loads(body: &Body) -> bool {
     !body.rods.is_empty()
 }
 
+/// The push of `body` (B36) held at rest at `end`'s pose, in the static
+/// solve's steady water: force, then moment about the reference point.
+pub(super) fn rest_push(body: &Body, gravity: [f64; 3], end: &HeldEnd) -> [f64; 6] {
+    let rest = HeldMotion::at_rest(end.position, end.rotation);
+    let (f, m) = held_push(body, gravity, &rest, FlowTime::Steady);
+    [f[0], f[1], f[2], m[0], m[1], m[2]]
+}
+
 /// The push of `body` (B36) averaged over [t_a, t_a + h] on `path`, by
 /// three-point Gauss-Legendre in time: force, then moment about the
 /// reference point.

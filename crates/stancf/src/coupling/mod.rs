@@ -390,31 +390,20 @@ impl CoupledSystem {
         let bodies = 0..self.layout.bodies.len();
         let held: Vec<_> = bodies
             .clone()
-            .map(|b| self.layout.held_end(x, None, b))
+            .map(|b| self.layout.held_end(x, xd, b))
             .collect();
         // The coupled bodies' own parts at rest at their poses, in the
         // static solve's steady water (B36).
         for (k, end) in held.iter().enumerate() {
             let body = &system.bodies()[self.layout.bodies[k].body];
             if let (Some(end), true) = (end, held_loads::carries_loads(body)) {
-                let rest = crate::system::HeldMotion::at_rest(end.position, end.rotation);
-                let (f, m) = crate::system::held_push(
-                    body,
-                    system.gravity(),
-                    &rest,
-                    crate::body::flow::FlowTime::Steady,
-                );
-                self.layout
-                    .add_push(&mut forces, k, &[f[0], f[1], f[2], m[0], m[1], m[2]]);
+                let push = held_loads::rest_push(body, system.gravity(), end);
+                self.layout.add_push(&mut forces, k, &push);
             }
         }
         let stiffness = stiffness::body_stiffness(&mut statics, &self.layout, x);
         let point_stiffness = stiffness::point_stiffness(&statics, &self.layout, &self.coupled);
         let sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
-        let held = bodies
-            .clone()
-            .map(|b| self.layout.held_end(x, xd, b))
-            .collect();
         self.running = Some(Running {
             sim,
             position,

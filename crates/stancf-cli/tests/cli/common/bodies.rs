@@ -109,3 +109,24 @@ pub fn rotation_of_angles(deg: [f64; 3]) -> [[f64; 3]; 3] {
 pub fn vertical_miss(f: &[f64], fz: f64) -> f64 {
     (f[2] - fz).abs().max(f[0].abs()).max(f[1].abs())
 }
+
+/// Steps `handle` to t = 0.1, 0.2, ..., 1.0 s with the coupling arrays at
+/// `at(t)` and their rates `rate(t)` (the host's motion), and the largest
+/// of `miss(f)` over the intervals' mean forces f.
+pub fn worst_interval_mean(
+    handle: &mut stancf::coupling::CoupledSystem,
+    at: impl Fn(f64) -> Vec<f64>,
+    rate: impl Fn(f64) -> Vec<f64>,
+    miss: impl Fn(&[f64]) -> f64,
+) -> f64 {
+    (1..=10)
+        .map(|k| {
+            let t = 0.1 * k as f64;
+            let f = handle
+                .step_to(t, &at(t), Some(&rate(t)))
+                .unwrap()
+                .interval_mean;
+            miss(&f)
+        })
+        .fold(0.0, f64::max)
+}

@@ -117,14 +117,15 @@ pub(super) fn body_rows(
             let body = &topology.bodies()[b];
             let (own_force, own_moment) = match body.kind {
                 BodyKind::Free => own_loads(body, &m, topology.gravity(), time),
-                // A coupled body held at its pose: its rods' push (B36).
-                BodyKind::Coupled => stancf::system::held_push(
+                // A coupled body held at its pose: its rods' push (B36);
+                // without rods, nothing of its own (its mass is the host's).
+                BodyKind::Coupled if !body.rods.is_empty() => stancf::system::held_push(
                     body,
                     topology.gravity(),
                     &stancf::system::HeldMotion::at_rest(m.position, m.rotation),
                     time,
                 ),
-                BodyKind::Fixed => ([0.0; 3], [0.0; 3]),
+                BodyKind::Coupled | BodyKind::Fixed => ([0.0; 3], [0.0; 3]),
             };
             BodyRow {
                 motion: m,
