@@ -112,36 +112,46 @@ fn a_deck_of_pinned_rods_alone_stands_them_upright() {
 #[test]
 fn a_rod_alone_rises_from_a_scenario_that_takes_its_deck() {
     let d = scratch("rod-alone-rises");
-    write_scenario(
-        &d,
-        "rod.txt",
-        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
-    );
-    let sc = write_scenario(
-        &d,
-        "rises.toml",
-        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\ntype = \"dynamic\"\n\
-         initial = \"reference\"\ntime_step = 0.01\nduration = 1.0\n",
-    );
+    let sc = rising_rod(&d, "type = \"dynamic\"\ntime_step = 0.01\nduration = 1.0\n");
     let out = d.join("out");
     let o = run_quiet(&sc, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    let (header, rows) = read_csv(&out.join("bodies.csv"));
-    let (t, z) = (
-        header.iter().position(|h| h == "t").unwrap(),
-        header.iter().position(|h| h == "z").unwrap(),
+    let (t, rise, want, _) = rise_and_closed_form(&out);
+    eprintln!("the rod alone rises {rise:.9} m in {t} s, closed form {want:.9} m");
+    assert_eq!(t, 1.0);
+    assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
+}
+
+/// The AddedMass rod's deck and a scenario taking it, released from the
+/// deck's pose (`initial = "reference"`) with `analysis` in its
+/// `[analysis]`.
+fn rising_rod(d: &std::path::Path, analysis: &str) -> std::path::PathBuf {
+    write_scenario(
+        d,
+        "rod.txt",
+        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
     );
+    write_scenario(
+        d,
+        "rises.toml",
+        &format!(
+            "[system]\nmoordyn = \"rod.txt\"\n[analysis]\ninitial = \"reference\"\n{analysis}"
+        ),
+    )
+}
+
+/// The rising rod's last time, its rise since the start and the closed
+/// form's, 1/2 a t^2 with a = (rho V - m) g / (m + rho V Ca), from
+/// bodies.csv in `out`; and the rows written.
+fn rise_and_closed_form(out: &std::path::Path) -> (f64, f64, f64, usize) {
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
     let last = rows.last().unwrap();
     let (volume, mass) = (std::f64::consts::PI * 0.0625 * 2.0, 200.0);
     let accel = (1025.0 * volume - mass) * 9.80665 / (mass + 1025.0 * volume);
-    let want = 0.5 * accel * last[t] * last[t];
-    let rise = last[z] - rows[0][z];
-    eprintln!(
-        "the rod alone rises {rise:.9} m in {} s, closed form {want:.9} m",
-        last[t]
-    );
-    assert_eq!(last[t], 1.0);
-    assert!((rise - want).abs() < 1e-9, "{rise} against {want}");
+    let t = last[col("t")];
+    let rise = last[col("z")] - rows[0][col("z")];
+    (t, rise, 0.5 * accel * t * t, rows.len())
 }
 
 /// A dynamic scenario (its `type` left to its default) that takes a deck
@@ -151,17 +161,7 @@ fn a_rod_alone_rises_from_a_scenario_that_takes_its_deck() {
 #[test]
 fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
     let d = scratch("deck-step-default");
-    write_scenario(
-        &d,
-        "rod.txt",
-        &rods_alone("1      floatRod  free        0     -1    -10   0   1.0   -10    4       -\n"),
-    );
-    let sc = write_scenario(
-        &d,
-        "rises.toml",
-        "[system]\nmoordyn = \"rod.txt\"\n[analysis]\n\
-         initial = \"reference\"\nduration = 0.05\n",
-    );
+    let sc = rising_rod(&d, "duration = 0.05\n");
     let o = stancf(&["check", sc.to_str().unwrap()]);
     let (so, se) = text(&o);
     assert_eq!(o.status.code(), Some(0), "{se}");
@@ -173,13 +173,7 @@ fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
     let out = d.join("out");
     let o = run_quiet(&sc, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    let (header, rows) = read_csv(&out.join("bodies.csv"));
-    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
-    assert_eq!(rows.len(), 101, "one row per step and the start");
-    let last = rows.last().unwrap();
-    let (volume, mass) = (std::f64::consts::PI * 0.0625 * 2.0, 200.0);
-    let accel = (1025.0 * volume - mass) * 9.80665 / (mass + 1025.0 * volume);
-    let rise = last[col("z")] - rows[0][col("z")];
-    let want = 0.5 * accel * last[col("t")].powi(2);
+    let (_, rise, want, rows) = rise_and_closed_form(&out);
+    assert_eq!(rows, 101, "one row per step and the start");
     assert!((rise - want).abs() < 1e-12, "{rise} against {want}");
 }
