@@ -14,7 +14,7 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 }
 
 /// What is not built is refused naming the deck's line: a line with
-/// bending stiffness at a rod end, a coupled rod, a rod in
+/// bending stiffness at a rod of zero length, a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
 /// a rod output channel MoorDyn has none for (RZ) or of a node the rod
 /// does not have, a rod type's value out of the
@@ -29,10 +29,11 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
         vec![
         (
             body_rod_deck("-", "1e3"),
-            "1     rope       1        R1A",
-            "AttachB of line 1 is end A of rod 1, and its line type has bending stiffness EI = \
-             1000 N m^2: a line with bending stiffness at the end of a rod that moves (MoorDyn \
-             clamps it to the rod's axis) is not built yet (at a fixed rod it is clamped)"
+            "2     rope       2        R2A",
+            "AttachB of line 2 is end A of rod 2, and its line type has bending stiffness EI = \
+             1000 N m^2, so MoorDyn clamps it to the rod's axis: a line with bending stiffness \
+             at a rod of zero length (MoorDyn turns the rod to balance the bending moments of \
+             its lines, a joint that keeps their slopes) is not built yet"
                 .into(),
         ),
         (

@@ -32,7 +32,7 @@ use super::system_parts::{PointType, SystemPoint, SystemScenario};
 use super::ScenarioError;
 use crate::moordyn::{Deck, DeckRod, LineAttachment, RodAttachment, RodEnd};
 use stancf::body::Rod;
-use stancf::vec3::sub;
+use stancf::vec3::{norm, sub};
 
 /// The kind of the point at end `k` (0 for A, 1 for B) of `rod` (its
 /// holder and ends placed): on the rod's body at the end's body
@@ -90,24 +90,25 @@ pub(super) fn deck_rods(
                 LineAttachment::Point(p) => p - 1,
                 LineAttachment::Rod(n, end) => {
                     let ei = deck.line_type_of(l).ei;
-                    if let (true, Some(axis)) = (ei > 0.0, fixed_axis(&rods[n - 1])) {
-                        // MoorDyn's cantilever: the line leaves a fixed rod
-                        // along its axis (§1.5 of the note), a clamp.
+                    if ei > 0.0 {
+                        // MoorDyn's cantilever: the line leaves the rod
+                        // along its axis (§1.5 of the note), a clamp that
+                        // turns with the rod (docs/method.md §15.19).
+                        let axis = clamp_axis(&rods[n - 1], bodies).map_err(|why| {
+                            at(
+                                l.line,
+                                format!(
+                                    "{} of line {} is end {} of rod {n}, and its line type has \
+                                     bending stiffness EI = {} N m^2, so MoorDyn clamps it to \
+                                     the rod's axis: {why}",
+                                    ["AttachA", "AttachB"][k],
+                                    l.id,
+                                    end.letter(),
+                                    ei
+                                ),
+                            )
+                        })?;
                         clamps[k] = Some(axis);
-                    } else if ei > 0.0 {
-                        return Err(at(
-                            l.line,
-                            format!(
-                                "{} of line {} is end {} of rod {n}, and its line type has \
-                                 bending stiffness EI = {} N m^2: a line with bending \
-                                 stiffness at the end of a rod that moves (MoorDyn clamps it to \
-                                 the rod's axis) is not built yet (at a fixed rod it is clamped)",
-                                ["AttachA", "AttachB"][k],
-                                l.id,
-                                end.letter(),
-                                deck.line_type_of(l).ei
-                            ),
-                        ));
                     }
                     rod_end_point(&mut rods[n - 1], end, points)
                 }
@@ -145,11 +146,32 @@ pub(super) struct DeckLineEnds {
     pub clamps: [Option<[f64; 3]>; 2],
 }
 
-/// The axis of a fixed rod with a length (global), where a line with
-/// bending stiffness is clamped; None for any other rod.
-fn fixed_axis(rod: &SystemRod) -> Option<[f64; 3]> {
-    let built = rod.rod.as_ref()?;
-    matches!(rod.holder, RodHolder::Fixed).then(|| built.axis())
+/// The axis (global, at t = 0) of a rod with a length, where a line with
+/// bending stiffness is clamped; why not for any other: a rod of zero
+/// length (MoorDyn turns it to balance its lines' bending moments, a
+/// joint that keeps their slopes, not built yet) or a rod the host turns
+/// (a coupled rod, a rod fixed in a coupled body: a clamp on the host's
+/// rotation is not built yet).
+fn clamp_axis(rod: &SystemRod, bodies: &[SystemBody]) -> Result<[f64; 3], String> {
+    if rod.rod.is_none() {
+        return Err("a line with bending stiffness at a rod of zero length (MoorDyn turns the \
+                    rod to balance the bending moments of its lines, a joint that keeps their \
+                    slopes) is not built yet"
+            .into());
+    }
+    let turned_by_host = match rod.holder {
+        RodHolder::Coupled { .. } => true,
+        RodHolder::Body { body } => bodies[body].kind == BodyType::Coupled,
+        _ => false,
+    };
+    if turned_by_host {
+        return Err("a clamp that turns with a rod the host moves (a coupled rod, or a rod \
+                    fixed in a coupled body) is not built yet (at a fixed or free rod it is \
+                    built)"
+            .into());
+    }
+    let axis = sub(rod.ends[1], rod.ends[0]);
+    Ok(axis.map(|c| c / norm(axis)))
 }
 
 /// One RODS row as a rod (a free rod's body or a zero-length rod's point

@@ -425,13 +425,12 @@ fn clamp(
             kind: PointType::Body { body, .. },
             id,
             ..
-        }) if bodies[*body].kind != super::BodyType::Fixed => Err(ctx.err(
+        }) if bodies[*body].kind == super::BodyType::Coupled => Err(ctx.err(
             &key,
             format!(
-                "end {end_name} is at point {id} on {} body {}: a clamp on a body that turns \
-                 is not built (a clamp needs a fixed or coupled point, or a point on a fixed \
-                 body)",
-                bodies[*body].type_word(),
+                "end {end_name} is at point {id} on coupled body {}: a clamp that turns with \
+                 a body the host moves is not built yet (a clamp needs a fixed or coupled \
+                 point, or a point on a fixed or free body)",
                 bodies[*body].id
             ),
         )),

@@ -259,6 +259,10 @@ impl StepProblem<'_> {
     ) {
         let layout = self.layout;
         for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            if hold.turning {
+                // A free body's clamp: the system's (§15.19).
+                continue;
+            }
             let g0 = coordinate(layout.dpn, hold.node, SLOT_R_X, 0);
             for (k, n) in hold.normals.iter().enumerate() {
                 for s in 0..layout.row_slots.len() {

@@ -13,6 +13,12 @@ pub struct DirectionHold {
     pub direction: [f64; 3],
     /// n_1, n_2: with d, an orthonormal right-handed frame (d x n_1 = n_2).
     pub normals: [[f64; 3]; 2],
+    /// Whether the frame turns with a free body the end is clamped to
+    /// (docs/method.md §15.19): its equations and reactions then involve
+    /// the body's unknowns and are the system's to assemble; the line's
+    /// own assembly leaves them out (its layout keeps their multipliers
+    /// and rows), and the frame here is the body's at the step's start.
+    pub turning: bool,
 }
 
 impl DirectionHold {
@@ -39,7 +45,19 @@ impl DirectionHold {
             node,
             direction: d,
             normals: [n1, n2],
+            turning: false,
         })
+    }
+
+    /// The same hold in the frame turned by `rotation`: d and n_k become
+    /// R d and R n_k (a body's turn, from the frame at its given pose).
+    pub fn turned(&self, rotation: &[[f64; 3]; 3]) -> Self {
+        let turn = |v: [f64; 3]| crate::body::pose::rotate(rotation, v);
+        DirectionHold {
+            direction: turn(self.direction),
+            normals: self.normals.map(turn),
+            ..*self
+        }
     }
 
     /// The generalized force Q = sum_k lambda_k n_k on r_x turned into

@@ -158,8 +158,10 @@ impl Simulation {
     /// dA/de_b, v_c the prescribed end rates of the constrained
     /// coordinates, M with the added mass M_a(e_b) of a line in water,
     /// (W31)), in `self.rhs` at the free coordinates (zero at the
-    /// constrained ones). Call after [`Self::expand_step`].
-    pub(crate) fn free_end_momentum(&mut self) -> &[f64] {
+    /// constrained ones). Call after [`Self::expand_step`]. `held`
+    /// receives each direction hold's r_x momentum before (M43) turns it
+    /// (a clamp at a free body carries it to the body, §15.19).
+    pub(crate) fn free_end_momentum(&mut self, held: &mut Vec<[f64; 3]>) -> &[f64] {
         let n = self.model.dofs();
         for g in 0..n {
             self.mass_v[g] = self.prescribed_end_rate(g).unwrap_or(0.0);
@@ -174,10 +176,21 @@ impl Simulation {
                 self.scratch.end_momentum[g] - self.rhs[g]
             };
         }
+        held.clear();
+        for hold in &self.model.constraints.directions {
+            let o = coordinate(self.layout.dpn, hold.node, SLOT_R_X, 0);
+            held.push([self.rhs[o], self.rhs[o + 1], self.rhs[o + 2]]);
+        }
         self.model
             .constraints
             .turn_hold_momentum(self.layout.dpn, &mut self.rhs);
         &self.rhs
+    }
+
+    /// Sets direction hold h's frame (a clamp at a free body turned to the
+    /// body's pose at the step's end, docs/method.md §15.19).
+    pub(crate) fn set_direction_hold(&mut self, h: usize, hold: crate::constraints::DirectionHold) {
+        self.model.constraints.directions[h] = hold;
     }
 
     /// The coordinates e_b at the step's end (after [`Self::expand_step`]).

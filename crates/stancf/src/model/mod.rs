@@ -326,7 +326,8 @@ impl Model {
     /// and rate at `state.t`.
     /// A node whose r_x is held parallel to a direction d (§6.10) has r_x
     /// turned onto d with its length and sense kept, and the rate of r_x
-    /// projected onto d.
+    /// projected onto d; at a free body (a turning hold, §15.19) the rate
+    /// is the system's to set (the body's spin turns d), and is kept.
     pub fn apply_constraints(&self, state: &mut State) {
         for (g, m) in self.constraints.motion.iter().enumerate() {
             if let Some(m) = m {
@@ -343,7 +344,9 @@ impl Model {
             let rate = along(&state.v);
             for c in 0..3 {
                 state.e[o + c] = sense * length * d[c];
-                state.v[o + c] = rate * d[c];
+                if !h.turning {
+                    state.v[o + c] = rate * d[c];
+                }
             }
         }
     }

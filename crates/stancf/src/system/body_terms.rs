@@ -245,15 +245,18 @@ impl StepBody {
     /// (which the lines' end momenta bring, §15.7 (B14)): the body's
     /// [dA/dr_b; J_r(theta_b)^-T (dA/dtheta_b + sum_P (d w_P,b /
     /// dtheta_b)^T R_P(1,w))] with R_P the lines' (1,w) rows at P,
-    /// `end_rows(point)`. With it, a pinned body's centre row at the
+    /// `end_rows(point)`, and `clamps`, the share of the lines clamped to
+    /// it (B39, §15.19). With it, a pinned body's centre row at the
     /// end's slot (1,w), which a joint carries to its point's (B29; zero
     /// for a body not pinned).
     pub fn end_momentum(
         &self,
         xb: &[f64; 18],
         end_rows: impl Fn(usize) -> [f64; 3],
+        clamps: [f64; 3],
     ) -> Option<([f64; 6], [f64; 3])> {
         let (p, mut dtheta) = self.body.galerkin_end_gradient(xb);
+        dtheta = crate::vec3::add(dtheta, clamps);
         for bp in &self.points {
             let maps = self.maps(bp.arm, xb);
             let end = project(end_rows(bp.point), &maps.end.1);

@@ -28,8 +28,11 @@
 //!
 //! A line end clamped in a direction (docs/method.md §6.10) has its r_x
 //! rows turned to (M43): d . (M v - p) = 0 and the hold's rates
-//! n_k . v = 0.
+//! n_k . v = 0; at a free body (§15.19, (B40)) the rates are
+//! n_k . v + c_k . Omega = 0 and the hold's impulse reaches the body's
+//! rows ([`ClampMass`]).
 
+use super::body_clamps::{ClampMass, HeldEntry};
 use super::body_terms::StepBody;
 use super::layout::{LineView, SystemLayout};
 use super::Topology;
@@ -55,6 +58,8 @@ pub(super) struct SystemMass {
     /// Whether the system has a free body: M_ff is then refactorized at
     /// every step's end (its points' G_P turn with it).
     turning: bool,
+    /// Each line's direction holds' r_x momenta before (M43) turns them.
+    held: Vec<Vec<[f64; 3]>>,
 }
 
 impl SystemMass {
@@ -82,6 +87,10 @@ impl SystemMass {
             rates: vec![0.0; layout.size],
             entrained: lines.iter().any(|m| m.added_mass().is_some()),
             turning: system.has_free_bodies(),
+            held: lines
+                .iter()
+                .map(|m| Vec::with_capacity(m.constraints.directions.len()))
+                .collect(),
             layout,
             lu,
         })
@@ -99,7 +108,7 @@ impl SystemMass {
             return Ok(());
         }
         self.lu.matrix_mut().clear();
-        fill_mass(&mut self.lu, &self.layout, system, |i| {
+        let held = fill_mass(&mut self.lu, &self.layout, system, |i| {
             (
                 lines[i].model(),
                 self.entrained.then(|| lines[i].end_coordinates()),
@@ -107,6 +116,10 @@ impl SystemMass {
         });
         for body in bodies {
             add_body_mass(self.lu.matrix_mut(), &self.layout, body);
+        }
+        for clamp in system.body_clamps() {
+            let at = ClampMass::of(clamp, &self.layout, lines, bodies);
+            at.add_rows(self.lu.matrix_mut(), &held);
         }
         self.lu.factorize()
     }
@@ -128,11 +141,13 @@ impl SystemMass {
         point_momentum: &[[f64; 3]],
         bodies: &mut [StepBody],
         body_momentum: &[[f64; 6]],
+        clamp_momentum: &[[f64; 3]],
     ) -> Result<(), crate::band::SingularMatrix> {
         self.refactorize(system, lines, bodies)?;
         self.rates.fill(0.0);
+        let held = &mut self.held;
         for (i, line) in lines.iter_mut().enumerate() {
-            let q = line.free_end_momentum();
+            let q = line.free_end_momentum(&mut held[i]);
             let numbering = &self.layout.lines[i];
             let map = &self.layout.maps[i];
             for (g, &qg) in q.iter().enumerate() {
@@ -140,6 +155,11 @@ impl SystemMass {
                     self.rates[map.global[u]] += qg;
                 }
             }
+        }
+        for (clamp, extra) in system.body_clamps().iter().zip(clamp_momentum) {
+            let at = ClampMass::of(clamp, &self.layout, lines, bodies);
+            let raw = held[clamp.line][clamp.hold];
+            at.add_momentum(&mut self.rates, crate::vec3::add(raw, *extra), *extra);
         }
         for (p, momentum) in point_momentum.iter().enumerate() {
             for (c, &pc) in momentum.iter().enumerate() {
@@ -293,12 +313,17 @@ fn carry_body_momentum(
 /// Adds the system's mass matrix over the free coordinates to `lu`: each
 /// line's band (with its added mass M_a(e) (W31) where `line(i)` gives the
 /// coordinates e) and the free points' masses.
+///
+/// Returns the entries (line, r_x coordinate, column coordinate, m) of
+/// the rows of r_x held by a clamp at a free body before (M43) turns them
+/// (B40 carries them to the body's rows).
 fn fill_mass<'a>(
     lu: &mut BorderedLu,
     layout: &SystemLayout,
     system: &Topology,
     line: impl Fn(usize) -> (&'a Model, Option<&'a [f64]>),
-) {
+) -> Vec<HeldEntry> {
+    let mut held = Vec::new();
     for i in 0..layout.lines.len() {
         let (model, end) = line(i);
         let numbering = &layout.lines[i];
@@ -309,6 +334,16 @@ fn fill_mass<'a>(
         // rows turned to (M43).
         let mut add = |ga: usize, gb: usize, m: f64| {
             if let (Some(_), Some(_)) = (numbering.unknown_at(0, ga), numbering.unknown_at(0, gb)) {
+                if let Some((hold, _, _)) = constraints.held_direction(dpn, ga) {
+                    if hold.turning {
+                        held.push(HeldEntry {
+                            line: i,
+                            row: ga,
+                            column: gb,
+                            mass: m,
+                        });
+                    }
+                }
                 constraints.add_mass_entry(dpn, ga, gb, m, |a, b, v| {
                     let (r, s) = (numbering.unknown_at(0, a), numbering.unknown_at(0, b));
                     view.add(r.expect("a held r_x is free"), s.expect("free"), v);
@@ -342,4 +377,5 @@ fn fill_mass<'a>(
             }
         }
     }
+    held
 }

@@ -26,6 +26,7 @@
 mod apart;
 mod balance;
 mod bodies;
+mod body_clamps;
 mod body_holds;
 mod body_statics;
 mod body_terms;
@@ -287,6 +288,7 @@ impl System {
         }
         let mut attached = vec![0usize; points.len()];
         let mut out = Vec::with_capacity(lines.len());
+        let mut clamps = Vec::new();
         for (li, line) in lines.into_iter().enumerate() {
             let mut list = line.model.constraints.list.clone();
             for AttachedEnd { point: p, node, .. } in attached_ends(&line.ends, &line.model) {
@@ -310,7 +312,6 @@ impl System {
                     },
                 });
             }
-            check_clamps(li, &line, &points)?;
             if line.ends[0] == line.ends[1] && line.ends[0] != End::Loose {
                 return Err(ModelError::invalid(
                     format!("lines[{li}]"),
@@ -321,10 +322,13 @@ impl System {
                 .model
                 .with_constraints(list)
                 .map_err(|e| e.under(&format!("lines[{li}]")))?;
-            out.push(Line {
+            let mut line = Line {
                 model,
                 ends: line.ends,
-            });
+            };
+            let found = body_clamps::line_clamps(li, &mut line, &points, &bodies, &body_points)?;
+            clamps.extend(found);
+            out.push(line);
         }
         for (i, p) in points.iter().enumerate() {
             if p.is_free() && attached[i] == 0 {
@@ -339,6 +343,7 @@ impl System {
             points,
             bodies,
             body_points,
+            clamps,
             gravity,
         };
         Ok(System {
@@ -358,6 +363,10 @@ impl System {
         body.position = position;
         body.rotation = rotation;
         let body = body.clone();
+        for clamp in self.topology.clamps.iter().filter(|c| c.body == b) {
+            let hold = &mut self.lines[clamp.line].model.constraints.directions[clamp.hold];
+            *hold = clamp.local.turned(&rotation);
+        }
         for p in &mut self.topology.points {
             if let PointKind::Body { body: on, local } = p.kind {
                 if on == b {
@@ -437,41 +446,6 @@ impl System {
         self.topology.set_point_motion(p, motion);
         Ok(())
     }
-}
-
-/// A line end clamped in a direction must be attached to a fixed or
-/// coupled point (whose motion translates, so the direction stays fixed
-/// in space); a clamp elsewhere is refused.
-fn check_clamps(li: usize, line: &Line, points: &[Point]) -> Result<(), ModelError> {
-    let last = end_node(&line.model, 1);
-    for h in &line.model.constraints.directions {
-        let end = match h.node {
-            0 => 0,
-            n if n == last => 1,
-            n => {
-                return Err(ModelError::invalid(
-                    format!("lines[{li}]"),
-                    format!("node {n} is clamped in a direction; only a line end may be"),
-                ))
-            }
-        };
-        let name = ["A", "B"][end];
-        let held = match line.ends[end] {
-            End::Point(p) => !points[p].is_unknown(),
-            End::Loose => false,
-        };
-        if !held {
-            return Err(ModelError::invalid(
-                format!("lines[{li}]"),
-                format!(
-                    "end {name} is clamped in a direction but not attached to a fixed or \
-                     coupled point (a free point has no rotation to clamp to, a loose end \
-                     nothing)"
-                ),
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// The size of a system (m): the largest of its lines' unstretched

@@ -37,6 +37,7 @@
 //! and isolated, is the equilibrium.
 
 use super::body_statics::{static_bodies, StaticBody};
+use super::body_clamps::add_static_clamp;
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::static_friction::{line_statics, StaticFriction};
@@ -465,6 +466,13 @@ impl StaticEquations for SystemEquations {
         }
         for body in &mut self.bodies {
             body.add(&self.layout, x, residual, jacobian.as_deref_mut());
+        }
+        for clamp in self.system.body_clamps() {
+            let body = self.bodies.iter().find(|b| b.index == clamp.body);
+            let rotation = body.expect("a clamp's body is free").rotation;
+            let dpn = self.system.lines()[clamp.line].model.dofs_per_node();
+            let jacobian = jacobian.as_deref_mut();
+            add_static_clamp(clamp, &self.layout, dpn, &rotation, x, residual, jacobian);
         }
         for (r, r0) in residual.iter_mut().zip(&self.offset) {
             *r -= self.homotopy * r0;

@@ -3,6 +3,7 @@
 //! bordered numbering and the free points' own rows, with the
 //! convergence scales of the system's unknowns and rows (§7.1).
 
+use super::body_clamps::add_step_clamp;
 use super::body_terms::StepBody;
 use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
@@ -10,7 +11,7 @@ use super::{AttachedEnd, Topology};
 use crate::bordered::BorderedMatrix;
 use crate::element::TimeSlab;
 use crate::integrator::Simulation;
-use crate::model::{coordinate, SLOT_R};
+use crate::model::{coordinate, SLOT_R, SLOT_R_X};
 use crate::solver::NonlinearSystem;
 
 /// Position, velocity and predictor history of a point.
@@ -207,6 +208,26 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
         for body in self.bodies {
             body.add(self.layout, x, residual, jacobian.as_deref_mut());
             body.add_pin(self.layout, x, residual, jacobian.as_deref_mut());
+        }
+        for clamp in self.topology.body_clamps() {
+            let body = self.bodies.iter().find(|b| b.index == clamp.body);
+            let body = body.expect("a clamp's body is free");
+            let line = &self.lines[clamp.line];
+            let dpn = line.model().dofs_per_node();
+            let g0 = coordinate(dpn, clamp.node, SLOT_R_X, 0);
+            let e = &line.state().e;
+            let xb = body.unknowns(self.layout, x);
+            add_step_clamp(
+                clamp,
+                self.layout,
+                dpn,
+                [e[g0], e[g0 + 1], e[g0 + 2]],
+                &body.body.rotation(),
+                &xb,
+                x,
+                residual,
+                jacobian.as_deref_mut(),
+            );
         }
     }
 

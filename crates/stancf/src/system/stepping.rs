@@ -4,6 +4,7 @@
 //! §11.14), and the lines, the end forces (§6.5, (M23)) and the points
 //! take the converged step.
 
+use super::body_clamps::clamp_end_shares;
 use super::body_terms::PinHold;
 use super::end_forces::position_row_sum;
 use super::layout::add_line_rows;
@@ -154,6 +155,25 @@ impl SystemSimulation {
                 }
             }
         }
+        // The clamps' shares of the end momenta (B39), at the bodies' step
+        // start.
+        // (no allocation without clamps)
+        let clamps = self.topology.body_clamps();
+        let mut clamp_momentum = Vec::new();
+        let mut clamp_turn = Vec::new();
+        for clamp in clamps {
+            let k = self.bodies.iter().position(|b| b.index == clamp.body);
+            let k = k.expect("a clamp's body is free");
+            let body = &self.bodies[k];
+            let xb = body.unknowns(&self.layout, &self.x);
+            let dpn = self.lines[clamp.line].model().dofs_per_node();
+            let rotation = body.body.rotation();
+            let (on_line, on_body) =
+                clamp_end_shares(clamp, &self.layout, dpn, &rotation, &xb, &self.x);
+            clamp_momentum.push(on_line);
+            clamp_turn.resize(self.bodies.len(), [0.0; 3]);
+            clamp_turn[k] = crate::vec3::add(clamp_turn[k], on_body);
+        }
         for (k, body) in self.bodies.iter_mut().enumerate() {
             let xb = body.unknowns(&self.layout, &self.x);
             let (layout, rows) = (&self.layout, &self.body_rows);
@@ -161,7 +181,7 @@ impl SystemSimulation {
                 std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
             };
             let (momentum, centre_row) = body
-                .end_momentum(&xb, end_rows)
+                .end_momentum(&xb, end_rows, clamp_turn.get(k).copied().unwrap_or([0.0; 3]))
                 .ok_or_else(|| singular(self.t, self.steps, "a body's J_r(theta_b) is singular"))?;
             self.body_momentum[k] = momentum;
             // A joint's child (before its parent): its centre's end row
@@ -173,12 +193,19 @@ impl SystemSimulation {
             }
             body.body.advance(&xb)?;
         }
+        // The clamps' frames turned with their bodies to the step's end.
+        for clamp in self.topology.body_clamps() {
+            let body = self.bodies.iter().find(|b| b.index == clamp.body);
+            let rotation = body.expect("a clamp's body is free").body.rotation();
+            self.lines[clamp.line].set_direction_hold(clamp.hold, clamp.local.turned(&rotation));
+        }
         mass.set_end_rates(
             &self.topology,
             &mut self.lines,
             &self.point_momentum,
             &mut self.bodies,
             &self.body_momentum,
+            &clamp_momentum,
         )
         .map_err(|_| {
             singular(

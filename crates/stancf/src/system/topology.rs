@@ -19,6 +19,9 @@ pub struct Topology {
     pub(super) bodies: Vec<super::Body>,
     /// Every body's points (indices) and their body coordinates.
     pub(super) body_points: Vec<Vec<(usize, [f64; 3])>>,
+    /// Line ends clamped in a direction at free bodies' points
+    /// (docs/method.md §15.19).
+    pub(super) clamps: Vec<super::body_clamps::BodyClamp>,
     /// Acceleration of gravity on the points' masses (m/s^2).
     pub(super) gravity: [f64; 3],
 }
@@ -64,6 +67,11 @@ impl Topology {
         model: &'a Model,
     ) -> impl Iterator<Item = AttachedEnd> + 'a {
         attached_ends(&self.ends[line], model)
+    }
+
+    /// The line ends clamped at free bodies' points (§15.19).
+    pub(super) fn body_clamps(&self) -> &[super::body_clamps::BodyClamp] {
+        &self.clamps
     }
 
     pub fn points(&self) -> &[Point] {

@@ -14,6 +14,7 @@ mod bodies_in_waves;
 mod body_statics;
 mod broyden;
 mod catenary_on_seabed;
+mod clamped_at_bodies;
 mod clamped_ends;
 mod compression;
 mod constrained_dynamics;

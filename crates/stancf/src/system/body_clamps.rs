@@ -1,0 +1,523 @@
+//! Line ends clamped in a direction at a free body (docs/method.md
+//! §15.19, (B37)-(B40)): a riser leaving a buoyancy can, a line with
+//! bending stiffness at the end of a rod that moves (MoorDyn's
+//! cantilevered end, the line leaving the rod along its axis).
+//!
+//! The clamp of §6.10 holds the end's r_x parallel to a direction d by
+//! n_k . r_x = 0; here the frame (d, n_1, n_2) is fixed in the body,
+//! n_k(t) = R(t) n_k' with R(t) = R_a exp([theta(t)]) over a step (B3),
+//! so the hold is C_k(t) = n_k(t) . r_x(t) = 0 and its equations involve
+//! the body's unknowns. The line keeps the hold's multipliers and rows in
+//! its band (the body's unknowns are in its block's border, as for a line
+//! end at a body point); this file assembles them:
+//!
+//! - the equations at the unknown slots (0,w), (1,e), (1,w) are the
+//!   hold's rate at t_a, value at t_b and rate at t_b,
+//!
+//!   ```text
+//!     C_k'(a) = n_k(a) . w_a + n_k'(a) . r_x(a),    C_k(b) = n_k(b) . e_b,
+//!     C_k'(b) = n_k(b) . w_b + n_k'(b) . e_b                            (B37)
+//!   ```
+//!
+//!   (n_k' the frame's rate, R (J_r theta_dot x n_k'), the offsets of
+//!   (B11) without the centre: [`crate::body::attach::offsets`]);
+//! - the reactions of the row slots (0,e), (0,w), (1,w) are lambda times
+//!   the gradients of G = (C_k(a), C_k'(a), C_k'(b)) in that slot's
+//!   variations, of the line's r_x and of the body's rotation alike
+//!   (the body's start variation moves its frame's value and rate, as it
+//!   moves a point's (B12)):
+//!
+//!   ```text
+//!     row s of r_x      += sign lambda_s dG_s / d(r_x's slot-s variable)
+//!     row s of theta    += sign lambda_s dG_s / d(theta's slot-s variable) (B38)
+//!   ```
+//!
+//!   which for a frame fixed in space are the multipliers of §6.10. The
+//!   reactions are the gradient of one function of the line's and the
+//!   body's coordinates, so they do no work in a motion that keeps the
+//!   hold, and a rigid turn of everything leaves G unchanged: the clamp
+//!   moves neither the energy nor the angular momentum of the system;
+//! - the end momenta take G's dependence on the end values (B7): the
+//!   line's p_b on r_x gains sign lambda_(1,w) n_k'(b), the body's
+//!   dA/dtheta_b gains sign lambda_(1,w) d C_k'(b) / d theta_b (B39);
+//! - the mass solve at the step's end (B14) takes the hold's rate,
+//!   n_k(b) . v_rx + c_k . Omega = 0 with c_k = n_k' x R_b^T r_x(b), and
+//!   its impulse mu_k on r_x (n_k) and on the body (c_k): eliminated as in
+//!   (M43), mu_k = n_k . (p - M v)_rx, the body's Omega rows gain
+//!   - sum_k c_k n_k . (M v - p)_rx (B40).
+//!
+//! In statics the body's rotation is R_0 exp([theta]) and the hold is
+//! n_k(theta) . r_x = 0 with its multiplier in r_x's and theta's rows.
+
+use super::layout::SystemLayout;
+use super::{Body, BodyKind, End, Line, Point};
+use crate::error::ModelError;
+use crate::assembly::SlabLayout;
+use crate::body::attach::{offsets, project};
+use crate::body::jet::JetVec;
+use crate::constraints::DirectionHold;
+use crate::linear::AddEntries;
+use crate::model::{coordinate, SLOT_R_X};
+use crate::vec3::{dot, scale};
+
+/// A line end clamped at a free body's point: line `line`'s hold `hold`
+/// (index in its model's direction holds) at node `node`, whose frame is
+/// `local` in body `body`'s axes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyClamp {
+    pub line: usize,
+    pub hold: usize,
+    pub node: usize,
+    pub body: usize,
+    pub local: DirectionHold,
+}
+
+/// Checks line `li`'s direction holds and returns those at a free body's
+/// point, marked turning ([`DirectionHold::turning`]) with their frames in
+/// the body's axes. A hold must be at a line end attached to a fixed or
+/// coupled point (its frame fixed in space, §6.10) or to a free body's
+/// point (§15.19); at a coupled body's point (a frame the host turns) it
+/// is refused, as at a free point or a loose end (nothing to clamp to).
+pub(super) fn line_clamps(
+    li: usize,
+    line: &mut Line,
+    points: &[Point],
+    bodies: &[Body],
+    body_points: &[Vec<(usize, [f64; 3])>],
+) -> Result<Vec<BodyClamp>, ModelError> {
+    let last = super::end_node(&line.model, 1);
+    let mut clamps = Vec::new();
+    let key = || format!("lines[{li}]");
+    for (h, hold) in line.model.constraints.directions.iter_mut().enumerate() {
+        let end = match hold.node {
+            0 => 0,
+            n if n == last => 1,
+            n => {
+                return Err(ModelError::invalid(
+                    key(),
+                    format!("node {n} is clamped in a direction; only a line end may be"),
+                ))
+            }
+        };
+        let name = ["A", "B"][end];
+        let End::Point(p) = line.ends[end] else {
+            return Err(ModelError::invalid(
+                key(),
+                format!("end {name} is clamped in a direction but attached to nothing"),
+            ));
+        };
+        if let Some(b) = points[p].body() {
+            let back = crate::vec3::mat3_transpose(&bodies[b].rotation);
+            hold.turning = true;
+            clamps.push(BodyClamp {
+                line: li,
+                hold: h,
+                node: hold.node,
+                body: b,
+                local: hold.turned(&back),
+            });
+            continue;
+        }
+        let host = (0..bodies.len()).find(|&b| {
+            bodies[b].kind == BodyKind::Coupled && body_points[b].iter().any(|&(q, _)| q == p)
+        });
+        if let Some(b) = host {
+            return Err(ModelError::invalid(
+                key(),
+                format!(
+                    "end {name} is clamped in a direction at a point of coupled body {b}: a \
+                     clamp that turns with a body the host moves is not built yet (at a fixed \
+                     or free body it is)"
+                ),
+            ));
+        }
+        if points[p].is_unknown() {
+            return Err(ModelError::invalid(
+                key(),
+                format!(
+                    "end {name} is clamped in a direction but attached to a free point (a free \
+                     point has no rotation to clamp to; a body's point has)"
+                ),
+            ));
+        }
+    }
+    Ok(clamps)
+}
+
+/// The start states' r_x rates at the clamps made those of the turning
+/// frame: r_x = s d(t) gives r_x' = (d . r_x') d + omega x r_x (omega the
+/// body's angular velocity, global), so the hold's rate C_k' is zero at
+/// the start (the step's first rows assume it, (B37)). `frames` are the
+/// holds at the bodies' poses, `spins` the bodies' angular velocities.
+pub(super) fn start_rates(
+    clamps: &[BodyClamp],
+    models: &[crate::model::Model],
+    spins: &[[f64; 3]],
+    states: &mut [crate::model::State],
+) {
+    for clamp in clamps {
+        let model = &models[clamp.line];
+        let hold = &model.constraints.directions[clamp.hold];
+        let o = coordinate(model.dofs_per_node(), clamp.node, SLOT_R_X, 0);
+        let state = &mut states[clamp.line];
+        let d = hold.direction;
+        let r_x = [state.e[o], state.e[o + 1], state.e[o + 2]];
+        // r_x turned onto d, length and sense kept (as §6.10's start).
+        let r_x = scale(crate::vec3::norm(r_x) * dot(d, r_x).signum(), d);
+        let along = dot(d, [state.v[o], state.v[o + 1], state.v[o + 2]]);
+        let turn = crate::vec3::cross(spins[clamp.body], r_x);
+        for c in 0..3 {
+            state.e[o + c] = r_x[c];
+            state.v[o + c] = along * d[c] + turn[c];
+        }
+    }
+}
+
+/// Where a clamp's quantities are in a step's (or a static solve's)
+/// global numbering: the line's r_x unknowns and rows per slot, the
+/// hold's multipliers and rows per slot, the body's rotation unknowns
+/// (and rows) per slot.
+struct ClampIndices {
+    r_x: [[usize; 3]; 3],
+    rows: [[usize; 3]; 3],
+    multipliers: [[usize; 2]; 3],
+    hold_rows: [[usize; 2]; 3],
+    turn: [[usize; 3]; 3],
+}
+
+impl ClampIndices {
+    /// The indices at the step's slots (a static solve's one slot first,
+    /// the others unused).
+    fn of(clamp: &BodyClamp, layout: &SystemLayout, dpn: usize) -> Self {
+        let numbering: &SlabLayout = &layout.lines[clamp.line];
+        let map = &layout.maps[clamp.line];
+        let g0 = coordinate(dpn, clamp.node, SLOT_R_X, 0);
+        let slots = numbering.unknown_slots.len();
+        let global = |u: Option<usize>| u.map_or(usize::MAX, |u| map.global[u]);
+        let per_slot = |s: usize| s < slots;
+        ClampIndices {
+            r_x: std::array::from_fn(|s| {
+                std::array::from_fn(|c| global(per_slot(s).then(|| numbering.unknown_at(s, g0 + c)).flatten()))
+            }),
+            rows: std::array::from_fn(|s| {
+                std::array::from_fn(|c| global(per_slot(s).then(|| numbering.row_at(s, g0 + c)).flatten()))
+            }),
+            multipliers: std::array::from_fn(|s| {
+                std::array::from_fn(|k| {
+                    global(per_slot(s).then(|| numbering.hold_multiplier(clamp.hold, s, k)).flatten())
+                })
+            }),
+            hold_rows: std::array::from_fn(|s| {
+                std::array::from_fn(|k| {
+                    global(per_slot(s).then(|| numbering.hold_row(clamp.hold, s, k)).flatten())
+                })
+            }),
+            turn: std::array::from_fn(|s| {
+                std::array::from_fn(|j| {
+                    per_slot(s)
+                        .then(|| layout.body_unknown(clamp.body, s, 3 + j))
+                        .flatten()
+                        .unwrap_or(usize::MAX)
+                })
+            }),
+        }
+    }
+}
+
+/// Adds (i, j, v) to the Jacobian if there is one.
+fn put<J: AddEntries>(jacobian: &mut Option<&mut J>, i: usize, j: usize, v: f64) {
+    if let Some(m) = jacobian.as_deref_mut() {
+        if v != 0.0 {
+            m.add(i, j, v);
+        }
+    }
+}
+
+fn values(x: &[f64], at: &[usize; 3]) -> [f64; 3] {
+    at.map(|i| x[i])
+}
+
+/// The frame's normal k at the step's start and end on jets over (theta,
+/// theta_dot) of that end ((B11) without the centre): (n(a), n'(a)) at
+/// theta = 0, slope u_a; (n(b), n'(b)) at theta_b, u_b.
+pub(super) struct FrameJets {
+    pub start: (JetVec<6>, JetVec<6>),
+    pub end: (JetVec<6>, JetVec<6>),
+}
+
+/// [`FrameJets`] of body-axes normal `normal` of a body at R_a with
+/// Galerkin unknowns `xb` (FreeBody order: u_a at 9, theta_b at 12, u_b
+/// at 15).
+pub(super) fn frame_jets(rotation_a: &[[f64; 3]; 3], normal: [f64; 3], xb: &[f64; 18]) -> FrameJets {
+    let part = |a: usize| [xb[a], xb[a + 1], xb[a + 2]];
+    FrameJets {
+        start: offsets(rotation_a, normal, [0.0; 3], part(9)),
+        end: offsets(rotation_a, normal, part(12), part(15)),
+    }
+}
+
+/// The line's r_x values a clamp's step terms read: r_x(a) (given), w_a,
+/// e_b, w_b (unknowns).
+pub(super) struct ClampValues {
+    pub r_a: [f64; 3],
+    pub w_a: [f64; 3],
+    pub e_b: [f64; 3],
+    pub w_b: [f64; 3],
+}
+
+/// Adds clamp `clamp`'s Galerkin terms (B37)-(B38) at the system's
+/// unknowns x: the hold's rows and its reactions on the line's r_x rows
+/// and the body's rotation rows, with their derivatives. `r_a` is the
+/// line's r_x at the step's start, `rotation_a` and `xb` the body's
+/// rotation there and its Galerkin unknowns.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn add_step_clamp<J: AddEntries>(
+    clamp: &BodyClamp,
+    layout: &SystemLayout,
+    dpn: usize,
+    r_a: [f64; 3],
+    rotation_a: &[[f64; 3]; 3],
+    xb: &[f64; 18],
+    x: &[f64],
+    residual: &mut [f64],
+    mut jacobian: Option<&mut J>,
+) {
+    let at = ClampIndices::of(clamp, layout, dpn);
+    let sign = layout.lines[clamp.line].scheme.multiplier_sign();
+    let v = ClampValues {
+        r_a,
+        w_a: values(x, &at.r_x[0]),
+        e_b: values(x, &at.r_x[1]),
+        w_b: values(x, &at.r_x[2]),
+    };
+    let (q, rows, r_x) = (&at.turn, &at.rows, &at.r_x);
+    for k in 0..2 {
+        let jets = frame_jets(rotation_a, clamp.local.normals[k], xb);
+        let (na, nad) = &jets.start;
+        let (nb, nbd) = &jets.end;
+        let value = |n: &JetVec<6>| [n[0].v, n[1].v, n[2].v];
+        let (na_v, nad_v, nb_v, nbd_v) = (value(na), value(nad), value(nb), value(nbd));
+        // (B37): the hold's rate at a, value at b, rate at b.
+        let h = &at.hold_rows;
+        let rate_a = project(v.r_a, nad);
+        residual[h[0][k]] += dot(na_v, v.w_a) + rate_a.v;
+        let value_b = project(v.e_b, nb);
+        residual[h[1][k]] += value_b.v;
+        let (slope_b, rate_b) = (project(v.w_b, nb), project(v.e_b, nbd));
+        residual[h[2][k]] += slope_b.v + rate_b.v;
+        for c in 0..3 {
+            put(&mut jacobian, h[0][k], r_x[0][c], na_v[c]);
+            put(&mut jacobian, h[1][k], r_x[1][c], nb_v[c]);
+            put(&mut jacobian, h[2][k], r_x[2][c], nb_v[c]);
+            put(&mut jacobian, h[2][k], r_x[1][c], nbd_v[c]);
+        }
+        for i in 0..3 {
+            put(&mut jacobian, h[0][k], q[0][i], rate_a.g[3 + i]);
+            put(&mut jacobian, h[1][k], q[1][i], value_b.g[i]);
+            put(&mut jacobian, h[2][k], q[1][i], slope_b.g[i] + rate_b.g[i]);
+            put(&mut jacobian, h[2][k], q[2][i], rate_b.g[3 + i]);
+        }
+        // (B38): the reactions of the row slots (0,e), (0,w), (1,w).
+        let m: [usize; 3] = std::array::from_fn(|s| at.multipliers[s][k]);
+        let lambda = [x[m[0]], x[m[1]], x[m[2]]];
+        // r_x's rows.
+        for c in 0..3 {
+            residual[rows[0][c]] += sign * (lambda[0] * na_v[c] + lambda[1] * nad_v[c]);
+            residual[rows[1][c]] += sign * lambda[1] * na_v[c];
+            residual[rows[2][c]] += sign * lambda[2] * nb_v[c];
+            put(&mut jacobian, rows[0][c], m[0], sign * na_v[c]);
+            put(&mut jacobian, rows[0][c], m[1], sign * nad_v[c]);
+            put(&mut jacobian, rows[1][c], m[1], sign * na_v[c]);
+            put(&mut jacobian, rows[2][c], m[2], sign * nb_v[c]);
+            for i in 0..3 {
+                put(&mut jacobian, rows[0][c], q[0][i], sign * lambda[1] * nad[c].g[3 + i]);
+                put(&mut jacobian, rows[2][c], q[1][i], sign * lambda[2] * nb[c].g[i]);
+            }
+        }
+        // The body's rotation rows: (0,e) varies theta_a (the frame's value
+        // and rate at a), (0,w) varies u_a, (1,w) varies u_b.
+        let start_value = project(v.r_a, na);
+        let start_slope = project(v.w_a, na);
+        for j in 0..3 {
+            let g_start = lambda[0] * start_value.g[j] + lambda[1] * (start_slope.g[j] + rate_a.g[j]);
+            residual[q[0][j]] += sign * g_start;
+            residual[q[1][j]] += sign * lambda[1] * rate_a.g[3 + j];
+            residual[q[2][j]] += sign * lambda[2] * rate_b.g[3 + j];
+            put(&mut jacobian, q[0][j], m[0], sign * start_value.g[j]);
+            put(&mut jacobian, q[0][j], m[1], sign * (start_slope.g[j] + rate_a.g[j]));
+            put(&mut jacobian, q[1][j], m[1], sign * rate_a.g[3 + j]);
+            put(&mut jacobian, q[2][j], m[2], sign * rate_b.g[3 + j]);
+            for c in 0..3 {
+                put(&mut jacobian, q[0][j], r_x[0][c], sign * lambda[1] * na[c].g[j]);
+                put(&mut jacobian, q[2][j], r_x[1][c], sign * lambda[2] * nbd[c].g[3 + j]);
+            }
+            for i in 0..3 {
+                let d_start = lambda[0] * start_value.h[j][3 + i]
+                    + lambda[1] * (start_slope.h[j][3 + i] + rate_a.h[j][3 + i]);
+                put(&mut jacobian, q[0][j], q[0][i], sign * d_start);
+                put(&mut jacobian, q[1][j], q[0][i], sign * lambda[1] * rate_a.h[3 + j][3 + i]);
+                put(&mut jacobian, q[2][j], q[1][i], sign * lambda[2] * rate_b.h[3 + j][i]);
+                put(&mut jacobian, q[2][j], q[2][i], sign * lambda[2] * rate_b.h[3 + j][3 + i]);
+            }
+        }
+    }
+}
+
+/// The end momenta's shares of clamp `clamp` (B39) at converged unknowns
+/// x: on the line's r_x, sign sum_k lambda_(1,w),k n_k'(b) (global), and
+/// on the body's theta_b, sign sum_k lambda_(1,w),k d C_k'(b) / d theta_b.
+pub(super) fn clamp_end_shares(
+    clamp: &BodyClamp,
+    layout: &SystemLayout,
+    dpn: usize,
+    rotation_a: &[[f64; 3]; 3],
+    xb: &[f64; 18],
+    x: &[f64],
+) -> ([f64; 3], [f64; 3]) {
+    let at = ClampIndices::of(clamp, layout, dpn);
+    let sign = layout.lines[clamp.line].scheme.multiplier_sign();
+    let (e_b, w_b) = (values(x, &at.r_x[1]), values(x, &at.r_x[2]));
+    let (mut on_line, mut on_body) = ([0.0; 3], [0.0; 3]);
+    for k in 0..2 {
+        let lambda = sign * x[at.multipliers[2][k]];
+        let jets = frame_jets(rotation_a, clamp.local.normals[k], xb);
+        let (nb, nbd) = &jets.end;
+        let (slope, rate) = (project(w_b, nb), project(e_b, nbd));
+        for c in 0..3 {
+            on_line[c] += lambda * nbd[c].v;
+            on_body[c] += lambda * (slope.g[c] + rate.g[c]);
+        }
+    }
+    (on_line, on_body)
+}
+
+/// Adds clamp `clamp`'s static terms at x: the hold n_k(theta) . r_x = 0
+/// with n_k(theta) = R_0 exp([theta]) n_k', its multiplier in r_x's rows
+/// and in theta's (sign lambda n_k and sign lambda (dn_k/dtheta)^T r_x),
+/// with their derivatives. `rotation` is R_0.
+pub(super) fn add_static_clamp<J: AddEntries>(
+    clamp: &BodyClamp,
+    layout: &SystemLayout,
+    dpn: usize,
+    rotation: &[[f64; 3]; 3],
+    x: &[f64],
+    residual: &mut [f64],
+    mut jacobian: Option<&mut J>,
+) {
+    let at = ClampIndices::of(clamp, layout, dpn);
+    let sign = layout.lines[clamp.line].scheme.multiplier_sign();
+    let (q, rows, r_x) = (&at.turn[0], &at.rows[0], &at.r_x[0]);
+    let r = values(x, r_x);
+    let theta = [x[q[0]], x[q[1]], x[q[2]]];
+    for k in 0..2 {
+        let (n, _) = offsets(rotation, clamp.local.normals[k], theta, [0.0; 3]);
+        let n_v = [n[0].v, n[1].v, n[2].v];
+        let hold = project(r, &n);
+        let (row, m) = (at.hold_rows[0][k], at.multipliers[0][k]);
+        let lambda = x[m];
+        residual[row] += hold.v;
+        for c in 0..3 {
+            put(&mut jacobian, row, r_x[c], n_v[c]);
+            residual[rows[c]] += sign * lambda * n_v[c];
+            put(&mut jacobian, rows[c], m, sign * n_v[c]);
+        }
+        for j in 0..3 {
+            put(&mut jacobian, row, q[j], hold.g[j]);
+            residual[q[j]] += sign * lambda * hold.g[j];
+            put(&mut jacobian, q[j], m, sign * hold.g[j]);
+            for c in 0..3 {
+                put(&mut jacobian, rows[c], q[j], sign * lambda * n[c].g[j]);
+                put(&mut jacobian, q[j], r_x[c], sign * lambda * n[c].g[j]);
+            }
+            for i in 0..3 {
+                put(&mut jacobian, q[j], q[i], sign * lambda * hold.h[j][i]);
+            }
+        }
+    }
+}
+
+/// A mass entry (line, coordinates, value) of a row of r_x held by a
+/// clamp at a free body, before (M43) turns the row.
+pub(super) struct HeldEntry {
+    pub line: usize,
+    pub row: usize,
+    pub column: usize,
+    pub mass: f64,
+}
+
+/// A clamp at a free body in the mass solve at a step's end (B40): the
+/// global indices of its r_x rows and of the body's Omega, the frame at
+/// the end (world n_k, d) and the hold's rate arms c_k = n_k' x R_b^T r_x.
+pub(super) struct ClampMass<'a> {
+    clamp: &'a BodyClamp,
+    layout: &'a SystemLayout,
+    first: usize,
+    omega: [usize; 3],
+    arms: [[f64; 3]; 2],
+    frame: DirectionHold,
+}
+
+impl<'a> ClampMass<'a> {
+    /// The clamp at the step's end: the lines expanded (their end r_x),
+    /// the bodies moved (their end rotation), the line's hold turned.
+    pub fn of(
+        clamp: &'a BodyClamp,
+        layout: &'a SystemLayout,
+        lines: &[crate::integrator::Simulation],
+        bodies: &[super::body_terms::StepBody],
+    ) -> Self {
+        let line = &lines[clamp.line];
+        let first = coordinate(line.model().dofs_per_node(), clamp.node, SLOT_R_X, 0);
+        let body = bodies
+            .iter()
+            .find(|b| b.index == clamp.body)
+            .expect("a clamp's body is free");
+        let e = line.end_coordinates();
+        let r_x = crate::body::pose::rotate_back(&body.body.rotation(), [e[first], e[first + 1], e[first + 2]]);
+        ClampMass {
+            clamp,
+            layout,
+            first,
+            omega: std::array::from_fn(|j| layout.body_unknown(clamp.body, 0, 3 + j).expect("free")),
+            arms: clamp.local.normals.map(|n| crate::vec3::cross(n, r_x)),
+            frame: line.model().constraints.directions[clamp.hold],
+        }
+    }
+
+    fn global(&self, g: usize) -> usize {
+        let numbering = &self.layout.lines[self.clamp.line];
+        self.layout.maps[self.clamp.line].global[numbering.unknown_at(0, g).expect("free")]
+    }
+
+    /// The hold's rates' Omega columns (n_k . v + c_k . Omega = 0 in the
+    /// turned rows 1 + k), and the r_x rows' mass entries `held` carried
+    /// to the body's Omega rows by - sum_k c_k n_k^T (B40).
+    pub fn add_rows(&self, m: &mut crate::bordered::BorderedMatrix, held: &[HeldEntry]) {
+        for k in 0..2 {
+            let row = self.global(self.first + 1 + k);
+            for j in 0..3 {
+                m.add(row, self.omega[j], self.arms[k][j]);
+            }
+        }
+        let own = |e: &&HeldEntry| e.line == self.clamp.line && (self.first..self.first + 3).contains(&e.row);
+        for e in held.iter().filter(own) {
+            let (c, column) = (e.row - self.first, self.global(e.column));
+            for j in 0..3 {
+                let w: f64 = (0..2).map(|k| self.arms[k][j] * self.frame.normals[k][c]).sum();
+                m.add(self.omega[j], column, -w * e.mass);
+            }
+        }
+    }
+
+    /// The right side: the line's r_x momentum `p` (its own, before
+    /// (M43), with the clamp's share `extra` of (B39)) carried to the
+    /// body's Omega rows by - sum_k c_k n_k . p, and `extra`'s part along
+    /// d in the turned row d . (M v - p) = 0.
+    pub fn add_momentum(&self, rates: &mut [f64], p: [f64; 3], extra: [f64; 3]) {
+        rates[self.global(self.first)] += dot(self.frame.direction, extra);
+        for j in 0..3 {
+            let w: f64 = (0..2).map(|k| self.arms[k][j] * dot(self.frame.normals[k], p)).sum();
+            rates[self.omega[j]] -= w;
+        }
+    }
+}
