@@ -41,6 +41,12 @@ pub fn body_words(sc: &SystemScenario) -> Vec<(String, String)> {
                     _ => "",
                 };
                 match (r.holder, r.pin_point()) {
+                    (RodHolder::Point { .. }, _) => format!(
+                        "connector of rod {} (zero length: no mass or inertia; 5 degrees of \
+                         freedom, its point's 3 and its axis's 2, turning to balance the moments \
+                         of the lines clamped to it, docs/method.md §15.20)",
+                        r.id
+                    ),
                     (RodHolder::Coupled { .. }, _) => format!(
                         "coupled rod {} (moved by the host in 6 degrees of freedom, its reference \
                          point at end A; its weight, water and inertia push the host)",
@@ -131,7 +137,13 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
         .iter()
         .map(|l| l.clamps.iter().flatten().count())
         .sum();
-    let dofs = coordinates + 3 * free_points + 6 * free_bodies - 3 * ends - 3 * pins - 2 * clamps;
+    // A connector's spin about its axis is held.
+    let connectors = sc.bodies.iter().filter(|b| b.connector_axis.is_some()).count();
+    let dofs = coordinates + 3 * free_points + 6 * free_bodies
+        - 3 * ends
+        - 3 * pins
+        - 2 * clamps
+        - connectors;
     let mut parts = vec![format!("{coordinates} nodal coordinates of the lines")];
     parts.push(format!("less 3 at each of {ends} attached line ends"));
     if free_points > 0 {
@@ -145,6 +157,9 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
     }
     if clamps > 0 {
         parts.push(format!("less 2 per clamped end ({clamps})"));
+    }
+    if connectors > 0 {
+        parts.push(format!("less 1 per connector's spin ({connectors})"));
     }
     format!("{dofs} ({})", parts.join(", "))
 }
@@ -188,9 +203,21 @@ pub fn rod_words(sc: &SystemScenario) -> Vec<(String, String)> {
                 sc.bodies[body].type_word(),
                 sc.bodies[body].id
             ),
-            RodHolder::Point { point } => format!(
+            RodHolder::Point {
+                point,
+                connector: None,
+            } => format!(
                 "free of zero length (NumSegs 0): point {}, of no mass, carrying its lines",
                 sc.points[point].id
+            ),
+            RodHolder::Point {
+                point,
+                connector: Some(body),
+            } => format!(
+                "free of zero length (NumSegs 0): point {}, of no mass, carrying its lines, and \
+                 connector {} (a body of no mass), which its lines with bending stiffness are \
+                 clamped to and which turns to balance their moments",
+                sc.points[point].id, sc.bodies[body].id
             ),
         };
         let size = match &r.rod {

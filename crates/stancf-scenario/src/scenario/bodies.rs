@@ -64,6 +64,10 @@ pub struct SystemBody {
     /// index among the points) that a host moves: MoorDyn's
     /// CoupledPinned body (docs/method.md §15.17).
     pub host_pin: Option<usize>,
+    /// A connector's axis (global, at t = 0): the body is MoorDyn's free
+    /// rod of zero length that its lines with bending stiffness are
+    /// clamped to along this axis (docs/method.md §15.20).
+    pub connector_axis: Option<[f64; 3]>,
 }
 
 impl SystemBody {
@@ -87,6 +91,7 @@ impl SystemBody {
             force: [0.0; 3],
             moment: [0.0; 3],
             host_pin: None,
+            connector_axis: None,
         }
     }
 

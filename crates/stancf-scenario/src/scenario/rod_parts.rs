@@ -53,8 +53,14 @@ pub enum RodHolder {
         host: Option<(usize, [f64; 3])>,
         coupled: bool,
     },
-    /// A deck's free rod of zero length: free point `point` (its index).
-    Point { point: usize },
+    /// A deck's free rod of zero length: free point `point` (its index),
+    /// or with `connector` the point of that body (its index), the
+    /// connector its lines with bending stiffness are clamped to
+    /// (docs/method.md §15.20).
+    Point {
+        point: usize,
+        connector: Option<usize>,
+    },
     /// Moved by the host in six degrees of freedom (MoorDyn's coupled
     /// rod): coupled body `body` (its index) is the rod, its reference
     /// point at end A, its axes the global ones at the pose zero.
@@ -94,16 +100,19 @@ impl SystemRod {
             | RodHolder::Pinned { body, .. }
             | RodHolder::Body { body }
             | RodHolder::Coupled { body } => Some(body),
-            RodHolder::Fixed | RodHolder::Point { .. } => None,
+            RodHolder::Point { connector, .. } => connector,
+            RodHolder::Fixed => None,
         }
     }
 
-    /// The body that is the rod (a free or pinned rod's), if it is one.
+    /// The body that is the rod (a free or pinned rod's, a connector), if
+    /// it is one.
     pub fn own_body(&self) -> Option<usize> {
         match self.holder {
             RodHolder::Free { body }
             | RodHolder::Pinned { body, .. }
             | RodHolder::Coupled { body } => Some(body),
+            RodHolder::Point { connector, .. } => connector,
             _ => None,
         }
     }

@@ -48,6 +48,13 @@ pub(super) fn end_kind(rod: &SystemRod, k: usize) -> PointType {
         } if k == 0 => PointType::Body { body, local },
         RodHolder::Pinned { coupled: true, .. } if k == 0 => PointType::Coupled,
         RodHolder::Pinned { .. } if k == 0 => PointType::Fixed,
+        RodHolder::Point {
+            connector: Some(body),
+            ..
+        } => PointType::Body {
+            body,
+            local: [0.0; 3],
+        },
         RodHolder::Point { .. } => PointType::Free,
         RodHolder::Free { body }
         | RodHolder::Pinned { body, .. }
@@ -82,6 +89,7 @@ pub(super) fn deck_rods(
         rods.push(rod);
     }
     let mut ends = Vec::with_capacity(deck.lines.len());
+    let mut pending = Vec::new();
     for l in &deck.lines {
         let mut pair = [0; 2];
         let mut clamps = [None; 2];
@@ -90,7 +98,13 @@ pub(super) fn deck_rods(
                 LineAttachment::Point(p) => p - 1,
                 LineAttachment::Rod(n, end) => {
                     let ei = deck.line_type_of(l).ei;
-                    if ei > 0.0 {
+                    if let (true, RodHolder::Point { connector: Some(_), .. }) =
+                        (ei > 0.0, rods[n - 1].holder)
+                    {
+                        // Clamped along the connector's axis, once all
+                        // the lines' ends are known.
+                        pending.push((ends.len(), k, n - 1, end));
+                    } else if ei > 0.0 {
                         // MoorDyn's cantilever: the line leaves the rod
                         // along its axis (§1.5 of the note), a clamp that
                         // turns with the rod (docs/method.md §15.19).
@@ -119,6 +133,7 @@ pub(super) fn deck_rods(
             clamps,
         });
     }
+    connector_axes(deck, &rods, &pending, bodies, points, &mut ends);
     for (r, rod) in deck.rods.iter().zip(&rods) {
         let attached = deck.lines.iter().any(|l| {
             [l.end_a, l.end_b]
@@ -137,6 +152,57 @@ pub(super) fn deck_rods(
         }
     }
     Ok((rods, ends))
+}
+
+/// The axes of the connectors (zero-length free rods with lines of
+/// bending stiffness, docs/method.md §15.20) and the clamps of those
+/// lines along them. `pending` holds (line, line end, rod, rod end) of
+/// each such line end. MoorDyn turns a zero-length rod to balance its
+/// lines' bending moments: its axis q is the unit vector of the sum of
+/// the lines' end tangents weighted by EI over their length, each taken
+/// in the rod's sense (a line arriving at end A or leaving end B runs
+/// along q, one leaving end A or arriving at end B against it). Here the
+/// lines start straight between their end points, and that sum is the
+/// connector's axis at t = 0 (its first pose; the static solve turns
+/// it).
+fn connector_axes(
+    deck: &Deck,
+    rods: &[SystemRod],
+    pending: &[(usize, usize, usize, RodEnd)],
+    bodies: &mut [SystemBody],
+    points: &[SystemPoint],
+    ends: &mut [DeckLineEnds],
+) {
+    let mut sums = vec![[0.0; 3]; bodies.len()];
+    for &(li, k, rod, end) in pending {
+        let RodHolder::Point {
+            point,
+            connector: Some(b),
+        } = rods[rod].holder
+        else {
+            continue;
+        };
+        let (joint, far) = (points[point].position, points[ends[li].points[1 - k]].position);
+        let chord = if k == 0 { sub(far, joint) } else { sub(joint, far) };
+        let along = (k == 1) == (end == RodEnd::A);
+        let l = &deck.lines[li];
+        let weight = deck.line_type_of(l).ei / l.unstretched_length;
+        let w = if along { weight } else { -weight } / norm(chord).max(f64::MIN_POSITIVE);
+        sums[b] = stancf::vec3::add(sums[b], chord.map(|c| w * c));
+    }
+    for (b, sum) in sums.iter().enumerate() {
+        if bodies[b].connector_axis.is_some() && norm(*sum) > 0.0 {
+            bodies[b].connector_axis = Some(sum.map(|c| c / norm(*sum)));
+        }
+    }
+    for &(li, k, rod, _) in pending {
+        if let RodHolder::Point {
+            connector: Some(b), ..
+        } = rods[rod].holder
+        {
+            ends[li].clamps[k] = bodies[b].connector_axis;
+        }
+    }
 }
 
 /// A deck line's end points (indices) and the directions its ends are
@@ -187,8 +253,24 @@ fn deck_rod(
     let (holder, rod, ends) = match r.attachment {
         RodAttachment::Fixed => (RodHolder::Fixed, [r.end_a, r.end_b], [r.end_a, r.end_b]),
         RodAttachment::Free if zero => {
+            // With a line of bending stiffness, a connector (its axis set
+            // once the lines are, [`connector_axes`]).
+            let bent = deck.lines.iter().any(|l| {
+                [l.end_a, l.end_b]
+                    .iter()
+                    .any(|a| matches!(a, LineAttachment::Rod(n, _) if *n == r.id))
+                    && deck.line_type_of(l).ei > 0.0
+            });
+            let connector = bent.then(|| {
+                bodies.push(SystemBody {
+                    connector_axis: Some([0.0, 0.0, 1.0]),
+                    ..free_rod_body(next_body_id(bodies), r.end_a)
+                });
+                bodies.len() - 1
+            });
             let holder = RodHolder::Point {
                 point: points.len(),
+                connector,
             };
             (holder, [r.end_a; 2], [r.end_a; 2])
         }

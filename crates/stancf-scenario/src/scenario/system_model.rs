@@ -129,6 +129,9 @@ impl SystemScenario {
     /// static seed's system (no `water`) sees the steady uniform current.
     fn library_body(&self, i: usize, water: Option<&Arc<stancf::water::Water>>) -> Body {
         let b = &self.bodies[i];
+        if let Some(axis) = b.connector_axis {
+            return Body::connector(b.position, axis);
+        }
         let (kind, inertia) = match b.kind {
             super::BodyType::Free => (
                 BodyKind::Free,

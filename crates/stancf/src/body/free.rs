@@ -165,7 +165,10 @@ impl FreeBody {
         angular_velocity: [f64; 3],
         dt: f64,
     ) -> Result<Self, ModelError> {
-        inertia.validate("body")?;
+        // A connector (docs/method.md §15.20) has no inertia at all.
+        if inertia.mass != 0.0 || inertia.inertia_at_centre != [[0.0; 3]; 3] {
+            inertia.validate("body")?;
+        }
         if !(dt > 0.0 && dt.is_finite()) {
             return Err(ModelError::invalid(
                 "time_step",

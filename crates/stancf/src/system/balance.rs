@@ -84,9 +84,12 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
     // A pinned body keeps its given pose (its pin holds it there), unless
     // it hangs at a joint from one of the network's bodies: then it rides
     // with that body, turned with it as given (§15.14).
+    // A connector (§15.20) carries only its lines' ends at one point: it
+    // balances there as a free point, its rotation as given.
+    let connector = |b: usize| system.bodies()[b].connector;
     let bodies: Vec<usize> = system
         .free_bodies()
-        .filter(|&b| system.bodies()[b].pin.is_none())
+        .filter(|&b| system.bodies()[b].pin.is_none() && !connector(b))
         .collect();
     let riders = bodies
         .iter()
@@ -117,7 +120,10 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
         .collect();
     let net = Network {
         free: (0..positions.len())
-            .filter(|&p| system.points()[p].is_free())
+            .filter(|&p| {
+                let pt = &system.points()[p];
+                pt.is_free() || pt.body().is_some_and(connector)
+            })
             .collect(),
         bodies,
         riders,
@@ -132,6 +138,11 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
         for k in 0..net.bodies.len() {
             for (b, pose) in net.members(system, &x, k) {
                 poses[b] = pose;
+            }
+        }
+        for &p in &net.free {
+            if let Some(b) = system.points()[p].body() {
+                poses[b].0 = positions[p];
             }
         }
     }

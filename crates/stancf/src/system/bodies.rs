@@ -69,6 +69,13 @@ pub struct Body {
     /// constant forces of `loads` (a force on the body is a load at its
     /// reference point).
     pub moment: [f64; 3],
+    /// A connector (MoorDyn's free rod of zero length that lines with
+    /// bending stiffness are clamped to, docs/method.md §15.20): a free
+    /// body of no mass, inertia, water or loads whose points are at its
+    /// reference point; its rotation carries only the clamps of its lines
+    /// (along its z axis), which it turns to balance their moments, and
+    /// its spin about that axis, which no clamp sees, is held.
+    pub connector: bool,
 }
 
 /// A body's point `local` (body axes, from the reference point) held at
@@ -102,7 +109,31 @@ impl Body {
             rods: Vec::new(),
             pin: None,
             moment: [0.0; 3],
+            connector: false,
         }
+    }
+
+    /// A connector at `position` whose lines are clamped along the unit
+    /// `axis` (its z axis; [`Body::connector`]).
+    pub fn connector(position: [f64; 3], axis: [f64; 3]) -> Self {
+        let nothing = RigidInertia {
+            mass: 0.0,
+            centre_of_mass: [0.0; 3],
+            inertia_at_centre: [[0.0; 3]; 3],
+        };
+        let z = crate::vec3::normalized(axis);
+        let k = (0..3)
+            .min_by(|&a, &b| z[a].abs().total_cmp(&z[b].abs()))
+            .expect("3 axes");
+        let mut e = [0.0; 3];
+        e[k] = 1.0;
+        let x = crate::vec3::normalized(crate::vec3::sub(e, crate::vec3::scale(crate::vec3::dot(z, e), z)));
+        let y = crate::vec3::cross(z, x);
+        // Columns x, y, z: body axes to global.
+        let rotation = std::array::from_fn(|r| [x[r], y[r], z[r]]);
+        let mut body = Body::new(BodyKind::Free, position, rotation, nothing);
+        body.connector = true;
+        body
     }
 
     /// A body that is one rod (MoorDyn's free, fixed or coupled rod): its
@@ -187,7 +218,23 @@ impl Body {
                 "is not a rotation (orthonormal, determinant +1)",
             ));
         }
-        if self.kind == BodyKind::Free {
+        if self.connector {
+            let bare = self.inertia.mass == 0.0
+                && self.inertia.inertia_at_centre == [[0.0; 3]; 3]
+                && self.water.is_none()
+                && self.loads.is_empty()
+                && self.rods.is_empty()
+                && self.pin.is_none()
+                && self.moment == [0.0; 3]
+                && self.kind == BodyKind::Free;
+            if !bare {
+                return Err(ModelError::invalid(
+                    key,
+                    "a connector is a free body of no mass, inertia, water, loads, rods, pin or \
+                     moment (its lines carry everything)",
+                ));
+            }
+        } else if self.kind == BodyKind::Free {
             self.inertia.validate(key)?;
             if let Some(w) = &self.water {
                 w.validate(&format!("{key}.water"))?;

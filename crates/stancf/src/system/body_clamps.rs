@@ -173,6 +173,56 @@ pub(super) fn start_rates(
     }
 }
 
+/// Refuses a connector (docs/method.md §15.20) with a point off its
+/// reference point, no line clamped to it, or a clamp not along its z
+/// axis. Key `bodies[b]`.
+pub(super) fn check_connectors(
+    bodies: &[Body],
+    body_points: &[Vec<(usize, [f64; 3])>],
+    clamps: &[BodyClamp],
+) -> Result<(), ModelError> {
+    for b in (0..bodies.len()).filter(|&b| bodies[b].connector) {
+        let key = format!("bodies[{b}]");
+        if body_points[b].iter().any(|(_, local)| *local != [0.0; 3]) {
+            return Err(ModelError::invalid(key, "a connector's points are at its reference point"));
+        }
+        let mut on = clamps.iter().filter(|c| c.body == b).peekable();
+        if on.peek().is_none() {
+            return Err(ModelError::invalid(
+                key,
+                "is a connector and no line is clamped to it (a free point joins lines without \
+                 bending stiffness)",
+            ));
+        }
+        if on.any(|c| (1.0 - c.local.direction[2].abs()) > 1e-9) {
+            return Err(ModelError::invalid(
+                key,
+                "a connector's lines are clamped along its z axis",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A connector's spin (its rotation about its z axis, which no clamp
+/// sees, §15.20) held: the z rotation rows `rows` (one per slot) replaced
+/// by x_row = 0 (the spin's value or rate from the pose it is measured
+/// from).
+pub(super) fn hold_spin(
+    rows: &[usize],
+    x: &[f64],
+    residual: &mut [f64],
+    mut jacobian: Option<&mut crate::bordered::BorderedMatrix>,
+) {
+    for &r in rows {
+        residual[r] = x[r];
+        if let Some(m) = jacobian.as_deref_mut() {
+            m.clear_border_row(r);
+            m.add(r, r, 1.0);
+        }
+    }
+}
+
 /// Where a clamp's quantities are in a step's (or a static solve's)
 /// global numbering: the line's r_x unknowns and rows per slot, the
 /// hold's multipliers and rows per slot, the body's rotation unknowns

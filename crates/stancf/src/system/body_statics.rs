@@ -409,15 +409,19 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 float_hold: super::body_holds::float_hold(system, b),
                 moment: body.moment,
                 own_stiffness: own_stiffness(body, net),
+                // A connector's spin is held by its own row (§15.20).
                 spin_hold: super::body_holds::spin_axis(
                     body,
                     &super::body_holds::points_local(system, b),
                 )
+                .filter(|_| !body.connector)
                 .map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
                     (a, weight * length)
                 }),
-                yaw_hold: super::body_holds::yaw_hold(system, b).map(|a| {
+                yaw_hold: super::body_holds::yaw_hold(system, b)
+                    .filter(|_| !body.connector)
+                    .map(|a| {
                     let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
                     (a, weight * length)
                 }),
@@ -464,6 +468,67 @@ pub(super) mod tests {
         let system = System::with_bodies(lines, points, vec![body], g).unwrap();
         let (worst, size) = static_jacobian_error(system);
         eprintln!("static Jacobian against differences: {worst:.1e} of {size:.1e}");
+        assert!(worst < 1e-6 * size, "{worst:e} of {size:e}");
+    }
+
+    /// The same with both lines clamped at the body along their chords
+    /// (docs/method.md §15.19) and a connector (§15.20) joining a third
+    /// line to a fourth: the holds' rows, their multipliers in the lines'
+    /// and the bodies' rows, the connector's held spin; every unknown
+    /// moved off the seed (the multipliers not zero).
+    #[test]
+    fn the_static_jacobian_with_clamps_at_bodies_is_the_derivative_of_its_rows() {
+        let g = [0.0, 0.0, -9.81];
+        let rotation = crate::body::pose::rotation_from_moordyn_angles([10.0, -20.0, 30.0]);
+        let body = Body::new(
+            BodyKind::Free,
+            [0.0, 0.0, -10.0],
+            rotation,
+            RigidInertia::principal(400.0, [0.1, 0.0, -1.0], [50.0, 60.0, 70.0]),
+        );
+        let (lines, mut points) =
+            two_lines_to(&body, |k, local| [0.5 * k as f64, 2.0 * local[1], 0.0]);
+        let mut lines: Vec<Line> = lines
+            .into_iter()
+            .map(|l| {
+                let chord = l.model.cable.direction;
+                l.clamped(1, chord).unwrap()
+            })
+            .collect();
+        // A connector at (5, 0, -5) joining a line from a fixed point to a
+        // line to another, both clamped along x + z.
+        let joint = [5.0, 0.0, -5.0];
+        let axis = [1.0, 0.0, 0.2];
+        for (k, (a, b)) in [([0.0, 0.0, -6.0], joint), (joint, [10.0, 0.0, -3.5])]
+            .into_iter()
+            .enumerate()
+        {
+            let material = Material {
+                youngs_modulus: 1e9,
+                density: 2000.0,
+                area: 1e-3,
+                second_moment: 1e-7,
+                axial_damping: 0.0,
+            };
+            let cable = Cable::straight(crate::vec3::norm(crate::vec3::sub(b, a)), 4, ElementType::Sac2)
+                .with_origin(a)
+                .with_direction(crate::vec3::sub(b, a));
+            let loads = vec![Load::Gravity { acceleration: g }];
+            let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
+            let ends = if k == 0 {
+                [End::Point(4), End::Point(5)]
+            } else {
+                [End::Point(5), End::Point(6)]
+            };
+            lines.push(Line { model, ends }.clamped(1 - k, axis).unwrap());
+        }
+        points.push(Point::fixed([0.0, 0.0, -6.0]));
+        points.push(Point::on_body(1, [0.0; 3]));
+        points.push(Point::fixed([10.0, 0.0, -3.5]));
+        let bodies = vec![body, Body::connector(joint, axis)];
+        let system = System::with_bodies(lines, points, bodies, g).unwrap();
+        let (worst, size) = static_jacobian_error(system);
+        eprintln!("static Jacobian with clamps against differences: {worst:.1e} of {size:.1e}");
         assert!(worst < 1e-6 * size, "{worst:e} of {size:e}");
     }
 
@@ -519,6 +584,11 @@ pub(super) mod tests {
                     x[i] += 0.05 * (k as f64 + 1.0) / (b as f64 + 1.0);
                 }
             }
+        }
+        // The multipliers (and everything else) a little off the seed.
+        let scale = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (i, v) in x.iter_mut().enumerate() {
+            *v += 1e-4 * scale * (i as f64).sin();
         }
         let n = x.len();
         let mut jac = crate::bordered::BorderedMatrix::new(&eq.layout.shapes, eq.layout.border);

@@ -75,6 +75,14 @@ impl SystemMass {
         fill_mass(&mut lu, &layout, system, |i| (lines[i], None));
         for body in bodies {
             add_body_mass(lu.matrix_mut(), &layout, body);
+            // A connector's Omega rows are its clamps' (B40), which need
+            // a step's end; held here for the check (refactorized then).
+            if system.bodies()[body.index].connector {
+                for j in 3..6 {
+                    let g = layout.body_unknown(body.index, 0, j).expect("free body");
+                    lu.matrix_mut().add(g, g, 1.0);
+                }
+            }
         }
         lu.factorize().map_err(|_| {
             ModelError::invalid(
@@ -120,6 +128,11 @@ impl SystemMass {
         for clamp in system.body_clamps() {
             let at = ClampMass::of(clamp, &self.layout, lines, bodies);
             at.add_rows(self.lu.matrix_mut(), &held);
+        }
+        for g in connector_spins(system, &self.layout, bodies) {
+            let m = self.lu.matrix_mut();
+            m.clear_border_row(g);
+            m.add(g, g, 1.0);
         }
         self.lu.factorize()
     }
@@ -171,6 +184,9 @@ impl SystemMass {
         for (body, momentum) in bodies.iter().zip(body_momentum) {
             carry_body_momentum(&mut self.rates, &self.layout, body, momentum);
         }
+        for g in connector_spins(system, &self.layout, bodies) {
+            self.rates[g] = 0.0;
+        }
         self.lu.solve(&mut self.rates);
         for body in bodies.iter_mut() {
             let nu: [f64; 6] = std::array::from_fn(|k| {
@@ -204,6 +220,19 @@ impl SystemMass {
             self.rates[self.layout.point_unknown(p, 0, c).expect("free point")]
         }))
     }
+}
+
+/// The spin rates' rows of the connectors (docs/method.md §15.20): Omega
+/// about each connector's z axis, held at zero.
+fn connector_spins<'a>(
+    system: &'a Topology,
+    layout: &'a SystemLayout,
+    bodies: &'a [StepBody],
+) -> impl Iterator<Item = usize> + 'a {
+    bodies
+        .iter()
+        .filter(|b| system.bodies()[b.index].connector)
+        .map(|b| layout.body_unknown(b.index, 0, 5).expect("free body"))
 }
 
 /// G_P of a point at `arm` from the centre of a body turned by `rotation`:

@@ -338,6 +338,7 @@ impl System {
                 ));
             }
         }
+        body_clamps::check_connectors(&bodies, &body_points, &clamps)?;
         let topology = Topology {
             ends: out.iter().map(|l| l.ends).collect(),
             points,

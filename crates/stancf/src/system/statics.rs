@@ -37,7 +37,7 @@
 //! and isolated, is the equilibrium.
 
 use super::body_statics::{static_bodies, StaticBody};
-use super::body_clamps::add_static_clamp;
+use super::body_clamps::{add_static_clamp, hold_spin};
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::static_friction::{line_statics, StaticFriction};
@@ -473,6 +473,12 @@ impl StaticEquations for SystemEquations {
             let dpn = self.system.lines()[clamp.line].model.dofs_per_node();
             let jacobian = jacobian.as_deref_mut();
             add_static_clamp(clamp, &self.layout, dpn, &rotation, x, residual, jacobian);
+        }
+        for body in &self.bodies {
+            if self.system.bodies()[body.index].connector {
+                let row = self.layout.body_unknown(body.index, 0, 5).expect("free body");
+                hold_spin(&[row], x, residual, jacobian.as_deref_mut());
+            }
         }
         for (r, r0) in residual.iter_mut().zip(&self.offset) {
             *r -= self.homotopy * r0;

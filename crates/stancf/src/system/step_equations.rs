@@ -3,7 +3,7 @@
 //! bordered numbering and the free points' own rows, with the
 //! convergence scales of the system's unknowns and rows (§7.1).
 
-use super::body_clamps::add_step_clamp;
+use super::body_clamps::{add_step_clamp, hold_spin};
 use super::body_terms::StepBody;
 use super::layout::{add_lines_rows, SystemLayout};
 use super::point_terms::{PointNodes, PointTerms};
@@ -120,7 +120,12 @@ fn body_scales(
     let length = if length.is_finite() { length } else { 1.0 };
     let arm = if arm > 0.0 { arm } else { length };
     let inertia = body.body.inertia();
-    let mass = inertia.mass;
+    // A connector (§15.20) has no mass: its rows are its lines' ends'.
+    let mass = if inertia.mass > 0.0 {
+        inertia.mass
+    } else {
+        lines_end_mass(system, lines, body)
+    };
     let moment = inertia.inertia_at_centre[0][0]
         + inertia.inertia_at_centre[1][1]
         + inertia.inertia_at_centre[2][2]
@@ -153,6 +158,20 @@ fn body_scales(
             }
         }
     }
+}
+
+/// The mass of the line ends at body `body`'s points (one coordinate's
+/// diagonal entry per end).
+fn lines_end_mass(system: &Topology, lines: &[Simulation], body: &StepBody) -> f64 {
+    let mut mass = 0.0;
+    for bp in &body.points {
+        for (li, end) in system.attachments(bp.point) {
+            let model = lines[li].model();
+            let node = super::end_node(model, end);
+            mass += model.mass_diagonal()[coordinate(model.dofs_per_node(), node, SLOT_R, 0)];
+        }
+    }
+    mass
 }
 
 /// The step of a system as Newton sees it.
@@ -228,6 +247,14 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
                 residual,
                 jacobian.as_deref_mut(),
             );
+        }
+        for body in self.bodies {
+            if self.topology.bodies()[body.index].connector {
+                let rows: [usize; 3] = std::array::from_fn(|s| {
+                    self.layout.body_unknown(body.index, s, 5).expect("free body")
+                });
+                hold_spin(&rows, x, residual, jacobian.as_deref_mut());
+            }
         }
     }
 

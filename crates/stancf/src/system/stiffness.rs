@@ -46,9 +46,13 @@ impl SystemStatics {
     /// about its reference point (global axes), columns its reference
     /// point's displacement and its small rotation about global axes
     /// through the reference point; N/m, N/rad, N m/m, N m/rad. None for a
-    /// fixed body, or if the rest of the system is singular with the
-    /// body held.
+    /// fixed body, if the rest of the system is singular with the body
+    /// held, or for a body lines are clamped to (§15.19: (B16) would miss
+    /// the change of the clamps' moments as it turns; not built yet).
     pub fn body_stiffness(&mut self, b: usize) -> Option<[[f64; 6]; 6]> {
+        if self.system().holds_clamps(b) {
+            return None;
+        }
         let body = self.system().bodies().get(b)?;
         if body.kind == super::BodyKind::Coupled {
             return self.coupled_body_stiffness(b, body.position);

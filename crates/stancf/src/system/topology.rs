@@ -69,6 +69,11 @@ impl Topology {
         attached_ends(&self.ends[line], model)
     }
 
+    /// Whether a line end is clamped at free body b's point (§15.19).
+    pub fn holds_clamps(&self, b: usize) -> bool {
+        self.clamps.iter().any(|c| c.body == b)
+    }
+
     /// The line ends clamped at free bodies' points (§15.19).
     pub(super) fn body_clamps(&self) -> &[super::body_clamps::BodyClamp] {
         &self.clamps

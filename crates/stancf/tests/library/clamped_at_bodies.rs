@@ -265,3 +265,159 @@ fn a_systems_jacobian_with_lines_clamped_at_a_body_is_the_derivative_of_its_rows
     eprintln!("step Jacobian with clamps at a free body: rel. error {err:.1e}");
     assert!(err < 1e-7, "{err:e}");
 }
+
+/// A 1 m PVC cantilever along x clamped at the origin, made of two 0.5 m
+/// lines (5 SAC-2 each) joined by a connector at x = 0.5 m (MoorDyn's
+/// free rod of zero length, both lines clamped to it along x,
+/// docs/method.md §15.20), its tip a free point carrying P (-z), in no
+/// gravity. The connector turns to balance the two lines' moments, so the
+/// pair bends as one beam: the tip deflects by P L^3 / 3 EI and the
+/// connector turns with the beam's slope there, P (L a - a^2/2) / EI at
+/// a = 0.5 m. At alpha = P L^2 / EI = 1e-3 both hold to 1e-5, as for the
+/// cantilever holding a body above.
+#[test]
+fn two_lines_joined_by_a_connector_bend_as_one_cantilever() {
+    let ei = pvc().youngs_modulus * pvc().second_moment;
+    let load = 1e-3 * ei;
+    let x = [1.0, 0.0, 0.0];
+    let lines = vec![
+        Line {
+            model: straight([0.0; 3], [0.5, 0.0, 0.0], 5, pvc()),
+            ends: [End::Point(0), End::Point(1)],
+        }
+        .clamped(0, x)
+        .unwrap()
+        .clamped(1, x)
+        .unwrap(),
+        Line {
+            model: straight([0.5, 0.0, 0.0], [1.0, 0.0, 0.0], 5, pvc()),
+            ends: [End::Point(1), End::Point(2)],
+        }
+        .clamped(0, x)
+        .unwrap(),
+    ];
+    let mut tip = Point::free([1.0, 0.0, 0.0], 0.0);
+    tip.force = [0.0, 0.0, -load];
+    let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3]), tip];
+    let connector = Body::connector([0.5, 0.0, 0.0], x);
+    let system =
+        System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
+    let seeds = stancf::system::catenary_states(&system);
+    let settings = StaticSettings {
+        tolerance: 1e-13,
+        ..StaticSettings::default()
+    };
+    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
+    assert!(statics.solve(|_, _| ControlFlow::Continue(())).expect("solve"));
+    let tip = statics.point_position(2);
+    let (_, rotation) = statics.body_pose(0).expect("connector");
+    // The connector's z axis is the beam's tangent there.
+    let turn = (-rotation[2][2]).atan2(rotation[0][2]);
+    let delta = load / (3.0 * ei);
+    let slope = load * (0.5 - 0.125) / ei;
+    eprintln!(
+        "tip deflection {:.9e} (linear {delta:.9e}), connector turn {turn:.9e} (linear \
+         {slope:.9e})",
+        -tip[2]
+    );
+    assert!((-tip[2] - delta).abs() < 1e-5 * delta);
+    assert!((turn - slope).abs() < 1e-5 * slope);
+}
+
+/// Euler-Bernoulli's first cantilever mode, beta_1 L = 1.8751: its
+/// deflection and slope at x (L = 1).
+fn first_mode(x: f64) -> (f64, f64) {
+    let b: f64 = 1.875_104_068_711_961;
+    let s = (b.cosh() + b.cos()) / (b.sinh() + b.sin());
+    let bx = b * x;
+    let w = bx.cosh() - bx.cos() - s * (bx.sinh() - bx.sin());
+    let slope = b * (bx.sinh() + bx.sin() - s * (bx.cosh() - bx.cos()));
+    (w, slope)
+}
+
+/// The two-line cantilever of
+/// [`two_lines_joined_by_a_connector_bend_as_one_cantilever`] (tip loose,
+/// no load) released at rest in its first mode, the tip 1 mm off the
+/// axis, stepped by the Galerkin step at 200 steps a period: the
+/// connector has neither mass nor inertia, and turning to balance the
+/// lines' moments at every step it lets the pair swing as one beam, at
+/// omega_1 = (beta_1 L)^2 sqrt(EI / (rho A L^4)). As for the one-line
+/// cantilever (clamped_ends.rs), the period from the first two zero
+/// crossings is within 2e-5 of 2 pi / omega_1 (the elements' error on the
+/// mode O((h/L)^4), the step's phase error, the crossings'
+/// interpolation and the 1 mm amplitude's nonlinearity each below 1e-6),
+/// and the swing keeps its amplitude to 1e-4.
+#[test]
+fn two_lines_joined_by_a_connector_swing_as_one_cantilever() {
+    let m = pvc();
+    let (ei, mass) = (m.youngs_modulus * m.second_moment, m.density * m.area);
+    let beta = 1.875_104_068_711_961f64;
+    let omega = beta * beta * (ei / mass).sqrt();
+    let period = 2.0 * std::f64::consts::PI / omega;
+    let amplitude = 1e-3;
+    let tip = first_mode(1.0).0;
+    // The mode's shape on a line from x0 to x0 + 0.5 of 5 SAC-2.
+    let shaped = |x0: f64| {
+        let model = straight([x0, 0.0, 0.0], [x0 + 0.5, 0.0, 0.0], 5, pvc());
+        let mut state = model.initial_state();
+        for k in 0..=5 {
+            let (w, slope) = first_mode(x0 + 0.1 * k as f64);
+            let (e, t) = (model.coordinate(k, 0, 0), model.coordinate(k, 1, 0));
+            state.e[e + 2] = amplitude * w / tip;
+            state.e[t + 2] = amplitude * slope / tip;
+        }
+        (model, state)
+    };
+    let ((first, s1), (second, s2)) = (shaped(0.0), shaped(0.5));
+    let (w, slope) = first_mode(0.5);
+    let axis = [1.0, 0.0, amplitude * slope / tip];
+    let joint = [0.5, 0.0, amplitude * w / tip];
+    let lines = vec![
+        Line {
+            model: first,
+            ends: [End::Point(0), End::Point(1)],
+        }
+        .clamped(0, [1.0, 0.0, 0.0])
+        .unwrap()
+        .clamped(1, axis)
+        .unwrap(),
+        Line {
+            model: second,
+            ends: [End::Point(1), End::Loose],
+        }
+        .clamped(0, axis)
+        .unwrap(),
+    ];
+    let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3])];
+    let connector = Body::connector(joint, axis);
+    let system =
+        System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
+    // Newton to its default tolerance, 1e-10, as the one-line cantilever.
+    let settings = StepSettings {
+        time_step: period / 200.0,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    let mut sim = SystemSimulation::new(system, vec![s1, s2], settings).unwrap();
+    let deflection = |sim: &SystemSimulation| {
+        let line = &sim.lines()[1];
+        line.state().e[line.model().coordinate(5, 0, 2)]
+    };
+    let mut path = vec![(0.0, deflection(&sim))];
+    for _ in 0..210 {
+        sim.step().expect("step");
+        path.push((sim.time(), deflection(&sim)));
+    }
+    let crossings: Vec<f64> = path
+        .windows(2)
+        .filter(|w| w[0].1 * w[1].1 < 0.0)
+        .map(|w| w[0].0 - w[0].1 * (w[1].0 - w[0].0) / (w[1].1 - w[0].1))
+        .collect();
+    assert!(crossings.len() >= 2, "{crossings:?}");
+    let measured = 2.0 * (crossings[1] - crossings[0]);
+    let error = measured / period - 1.0;
+    let peak = path.iter().map(|p| p.1.abs()).fold(0.0, f64::max);
+    eprintln!("period {measured:.9} s against {period:.9} s ({error:.2e}); peak {peak:.6e} m");
+    assert!(error.abs() < 2e-5, "{error:e}");
+    assert!((peak / amplitude - 1.0).abs() < 1e-4, "{peak:e}");
+}

@@ -454,7 +454,7 @@ fn write_summary(
     });
     if !sc.bodies.is_empty() {
         let mut entries = bodies::bodies_json(sc, sim, statics);
-        stiffness::add_to_summary(&mut entries, matrices, sc);
+        stiffness::add_to_summary(&mut entries, matrices);
         summary["bodies"] = Value::Array(entries);
     }
     if !sc.rods.is_empty() {

@@ -89,7 +89,7 @@ impl RodFrame {
         };
         match self.holder {
             RodHolder::Fixed => still(self.end_a),
-            RodHolder::Point { point } => {
+            RodHolder::Point { point, .. } => {
                 let (x, v, _) = row.points[point];
                 RodState {
                     velocity: v,

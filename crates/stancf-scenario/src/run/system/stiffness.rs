@@ -24,8 +24,8 @@ const ROWS: [&str; 6] = ["fx", "fy", "fz", "mx", "my", "mz"];
 
 /// One free body's matrix at the equilibrium: its index in the system's
 /// (and the scenario's) bodies and K, None where the core gives none or
-/// gives one with a value that is not finite ([`MISSING`]).
-pub(super) type BodyStiffness = (usize, Option<[[f64; 6]; 6]>);
+/// gives one with a value that is not finite, with why ([`missing`]).
+pub(super) type BodyStiffness = (usize, Option<[[f64; 6]; 6]>, &'static str);
 
 /// Why a free body has no matrix (summary.json's `stiffness_note`).
 const MISSING: &str = "no mooring stiffness: the rest of the system is singular with the body \
@@ -36,14 +36,21 @@ const MISSING: &str = "no mooring stiffness: the rest of the system is singular 
 const PINNED: &str = "no mooring stiffness: a pinned rod's body turns about its pin, which \
                       holds its translation (no 6 x 6 matrix); stiffness.csv has no rows for it";
 
+/// Why a body lines are clamped to has none (docs/method.md §15.19).
+const CLAMPED: &str = "no mooring stiffness: lines are clamped to it, and the change of their \
+                       clamps' moments as it turns is not built into the matrix yet; \
+                       stiffness.csv has no rows for it";
+
 /// Why body b has no matrix.
-fn missing(sc: &SystemScenario, b: usize) -> &'static str {
+fn missing(sc: &SystemScenario, system: &stancf::system::System, b: usize) -> &'static str {
     let pinned = sc
         .rods
         .iter()
         .any(|r| r.own_body() == Some(b) && r.pin_point().is_some());
     if pinned {
         PINNED
+    } else if system.holds_clamps(b) {
+        CLAMPED
     } else {
         MISSING
     }
@@ -62,10 +69,11 @@ pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec
             let k = st
                 .body_stiffness(b)
                 .filter(|k| k.iter().flatten().all(|v| v.is_finite()));
-            if k.is_none() && missing(sc, b) == MISSING {
-                eprintln!("warning: bodies (id {}): {MISSING}", sc.bodies[b].id);
+            let why = missing(sc, st.system(), b);
+            if k.is_none() && why != PINNED {
+                eprintln!("warning: bodies (id {}): {why}", sc.bodies[b].id);
             }
-            (b, k)
+            (b, k, why)
         })
         .collect()
 }
@@ -84,7 +92,7 @@ pub(super) fn write_csv(
     let mut file = dest.create("stiffness.csv")?;
     let w = file.writer();
     writeln!(w, "{HEADER}")?;
-    for (b, k) in matrices {
+    for (b, k, _) in matrices {
         let Some(k) = k else { continue };
         for (name, row) in ROWS.iter().zip(k) {
             write!(w, "{},{name}", sc.bodies[*b].id)?;
@@ -101,12 +109,8 @@ pub(super) fn write_csv(
 /// of stiffness.csv) to its entry of summary.json's `bodies` (in the
 /// order of the scenario's bodies); a body without a matrix gets
 /// `stiffness: null` and a `stiffness_note` saying why.
-pub(super) fn add_to_summary(
-    bodies: &mut [Value],
-    matrices: &[BodyStiffness],
-    sc: &SystemScenario,
-) {
-    for (b, k) in matrices {
+pub(super) fn add_to_summary(bodies: &mut [Value], matrices: &[BodyStiffness]) {
+    for (b, k, why) in matrices {
         let Some(entry) = bodies.get_mut(*b) else {
             continue;
         };
@@ -120,7 +124,7 @@ pub(super) fn add_to_summary(
             }
             None => {
                 entry["stiffness"] = Value::Null;
-                entry["stiffness_note"] = Value::String(missing(sc, *b).to_string());
+                entry["stiffness_note"] = Value::String(why.to_string());
             }
         }
     }
