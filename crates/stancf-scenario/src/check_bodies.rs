@@ -138,7 +138,11 @@ pub fn dof_words(sc: &SystemScenario, system: &System) -> String {
         .map(|l| l.clamps.iter().flatten().count())
         .sum();
     // A connector's spin about its axis is held.
-    let connectors = sc.bodies.iter().filter(|b| b.connector_axis.is_some()).count();
+    let connectors = sc
+        .bodies
+        .iter()
+        .filter(|b| b.connector_axis.is_some())
+        .count();
     let dofs = coordinates + 3 * free_points + 6 * free_bodies
         - 3 * ends
         - 3 * pins

@@ -157,7 +157,10 @@ fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay(
     let o = stancf(&["check", deck.to_str().unwrap()]);
     let (so, se) = text(&o);
     assert_eq!(o.status.code(), Some(0), "{se}");
-    assert!(so.contains("body 2                      connector of rod 2"), "{so}");
+    assert!(
+        so.contains("body 2                      connector of rod 2"),
+        "{so}"
+    );
     assert!(so.contains("less 1 per connector's spin (1)"), "{so}");
     let out = d.join("out");
     let o = run_quiet(&deck, &out, &[]);

@@ -279,7 +279,10 @@ fn what_a_coupled_body_does_not_take_is_refused_by_name() {
     expect_input_error(
         "coupled-body-clamp",
         &clamped,
-        &["point 1 on coupled body 7", "a clamp that turns with a body the host moves"],
+        &[
+            "point 1 on coupled body 7",
+            "a clamp that turns with a body the host moves",
+        ],
     );
 }
 

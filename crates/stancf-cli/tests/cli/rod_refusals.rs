@@ -14,7 +14,7 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 }
 
 /// What is not built is refused naming the deck's line: a line with
-/// bending stiffness at a rod of zero length, a coupled rod, a rod in
+/// bending stiffness at a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
 /// a rod output channel MoorDyn has none for (RZ) or of a node the rod
 /// does not have, a rod type's value out of the
@@ -28,12 +28,11 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
     let cases: Vec<(String, &str, String)> =
         vec![
         (
-            body_rod_deck("-", "1e3"),
-            "2     rope       2        R2A",
-            "AttachB of line 2 is end A of rod 2, and its line type has bending stiffness EI = \
-             1000 N m^2, so MoorDyn clamps it to the rod's axis: a line with bending stiffness \
-             at a rod of zero length (MoorDyn turns the rod to balance the bending moments of \
-             its lines, a joint that keeps their slopes) is not built yet"
+            body_rod_deck("-", "1e3").replace("1    can       Body1", "1    can       Coupled"),
+            "1     rope       1        R1A",
+            "AttachB of line 1 is end A of rod 1, and its line type has bending stiffness EI = \
+             1000 N m^2, so MoorDyn clamps it to the rod's axis: a clamp that turns with a rod \
+             the host moves (a coupled rod, or a rod fixed in a coupled body) is not built yet"
                 .into(),
         ),
         (

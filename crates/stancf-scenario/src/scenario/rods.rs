@@ -98,8 +98,12 @@ pub(super) fn deck_rods(
                 LineAttachment::Point(p) => p - 1,
                 LineAttachment::Rod(n, end) => {
                     let ei = deck.line_type_of(l).ei;
-                    if let (true, RodHolder::Point { connector: Some(_), .. }) =
-                        (ei > 0.0, rods[n - 1].holder)
+                    if let (
+                        true,
+                        RodHolder::Point {
+                            connector: Some(_), ..
+                        },
+                    ) = (ei > 0.0, rods[n - 1].holder)
                     {
                         // Clamped along the connector's axis, once all
                         // the lines' ends are known.
@@ -182,8 +186,15 @@ fn connector_axes(
         else {
             continue;
         };
-        let (joint, far) = (points[point].position, points[ends[li].points[1 - k]].position);
-        let chord = if k == 0 { sub(far, joint) } else { sub(joint, far) };
+        let (joint, far) = (
+            points[point].position,
+            points[ends[li].points[1 - k]].position,
+        );
+        let chord = if k == 0 {
+            sub(far, joint)
+        } else {
+            sub(joint, far)
+        };
         let along = (k == 1) == (end == RodEnd::A);
         let l = &deck.lines[li];
         let weight = deck.line_type_of(l).ei / l.unstretched_length;
@@ -220,10 +231,12 @@ pub(super) struct DeckLineEnds {
 /// rotation is not built yet).
 fn clamp_axis(rod: &SystemRod, bodies: &[SystemBody]) -> Result<[f64; 3], String> {
     if rod.rod.is_none() {
-        return Err("a line with bending stiffness at a rod of zero length (MoorDyn turns the \
+        return Err(
+            "a line with bending stiffness at a rod of zero length (MoorDyn turns the \
                     rod to balance the bending moments of its lines, a joint that keeps their \
                     slopes) is not built yet"
-            .into());
+                .into(),
+        );
     }
     let turned_by_host = match rod.holder {
         RodHolder::Coupled { .. } => true,
@@ -231,10 +244,12 @@ fn clamp_axis(rod: &SystemRod, bodies: &[SystemBody]) -> Result<[f64; 3], String
         _ => false,
     };
     if turned_by_host {
-        return Err("a clamp that turns with a rod the host moves (a coupled rod, or a rod \
+        return Err(
+            "a clamp that turns with a rod the host moves (a coupled rod, or a rod \
                     fixed in a coupled body) is not built yet (at a fixed or free rod it is \
                     built)"
-            .into());
+                .into(),
+        );
     }
     let axis = sub(rod.ends[1], rod.ends[0]);
     Ok(axis.map(|c| c / norm(axis)))

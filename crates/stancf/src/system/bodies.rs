@@ -127,7 +127,10 @@ impl Body {
             .expect("3 axes");
         let mut e = [0.0; 3];
         e[k] = 1.0;
-        let x = crate::vec3::normalized(crate::vec3::sub(e, crate::vec3::scale(crate::vec3::dot(z, e), z)));
+        let x = crate::vec3::normalized(crate::vec3::sub(
+            e,
+            crate::vec3::scale(crate::vec3::dot(z, e), z),
+        ));
         let y = crate::vec3::cross(z, x);
         // Columns x, y, z: body axes to global.
         let rotation = std::array::from_fn(|r| [x[r], y[r], z[r]]);

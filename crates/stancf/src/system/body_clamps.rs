@@ -51,11 +51,11 @@
 
 use super::layout::SystemLayout;
 use super::{Body, BodyKind, End, Line, Point};
-use crate::error::ModelError;
 use crate::assembly::SlabLayout;
 use crate::body::attach::{offsets, project};
 use crate::body::jet::JetVec;
 use crate::constraints::DirectionHold;
+use crate::error::ModelError;
 use crate::linear::AddEntries;
 use crate::model::{coordinate, SLOT_R_X};
 use crate::vec3::{dot, scale};
@@ -184,7 +184,10 @@ pub(super) fn check_connectors(
     for b in (0..bodies.len()).filter(|&b| bodies[b].connector) {
         let key = format!("bodies[{b}]");
         if body_points[b].iter().any(|(_, local)| *local != [0.0; 3]) {
-            return Err(ModelError::invalid(key, "a connector's points are at its reference point"));
+            return Err(ModelError::invalid(
+                key,
+                "a connector's points are at its reference point",
+            ));
         }
         let mut on = clamps.iter().filter(|c| c.body == b).peekable();
         if on.peek().is_none() {
@@ -247,19 +250,35 @@ impl ClampIndices {
         let per_slot = |s: usize| s < slots;
         ClampIndices {
             r_x: std::array::from_fn(|s| {
-                std::array::from_fn(|c| global(per_slot(s).then(|| numbering.unknown_at(s, g0 + c)).flatten()))
+                std::array::from_fn(|c| {
+                    global(
+                        per_slot(s)
+                            .then(|| numbering.unknown_at(s, g0 + c))
+                            .flatten(),
+                    )
+                })
             }),
             rows: std::array::from_fn(|s| {
-                std::array::from_fn(|c| global(per_slot(s).then(|| numbering.row_at(s, g0 + c)).flatten()))
+                std::array::from_fn(|c| {
+                    global(per_slot(s).then(|| numbering.row_at(s, g0 + c)).flatten())
+                })
             }),
             multipliers: std::array::from_fn(|s| {
                 std::array::from_fn(|k| {
-                    global(per_slot(s).then(|| numbering.hold_multiplier(clamp.hold, s, k)).flatten())
+                    global(
+                        per_slot(s)
+                            .then(|| numbering.hold_multiplier(clamp.hold, s, k))
+                            .flatten(),
+                    )
                 })
             }),
             hold_rows: std::array::from_fn(|s| {
                 std::array::from_fn(|k| {
-                    global(per_slot(s).then(|| numbering.hold_row(clamp.hold, s, k)).flatten())
+                    global(
+                        per_slot(s)
+                            .then(|| numbering.hold_row(clamp.hold, s, k))
+                            .flatten(),
+                    )
                 })
             }),
             turn: std::array::from_fn(|s| {
@@ -298,7 +317,11 @@ pub(super) struct FrameJets {
 /// [`FrameJets`] of body-axes normal `normal` of a body at R_a with
 /// Galerkin unknowns `xb` (FreeBody order: u_a at 9, theta_b at 12, u_b
 /// at 15).
-pub(super) fn frame_jets(rotation_a: &[[f64; 3]; 3], normal: [f64; 3], xb: &[f64; 18]) -> FrameJets {
+pub(super) fn frame_jets(
+    rotation_a: &[[f64; 3]; 3],
+    normal: [f64; 3],
+    xb: &[f64; 18],
+) -> FrameJets {
     let part = |a: usize| [xb[a], xb[a + 1], xb[a + 2]];
     FrameJets {
         start: offsets(rotation_a, normal, [0.0; 3], part(9)),
@@ -380,8 +403,18 @@ pub(super) fn add_step_clamp<J: AddEntries>(
             put(&mut jacobian, rows[1][c], m[1], sign * na_v[c]);
             put(&mut jacobian, rows[2][c], m[2], sign * nb_v[c]);
             for i in 0..3 {
-                put(&mut jacobian, rows[0][c], q[0][i], sign * lambda[1] * nad[c].g[3 + i]);
-                put(&mut jacobian, rows[2][c], q[1][i], sign * lambda[2] * nb[c].g[i]);
+                put(
+                    &mut jacobian,
+                    rows[0][c],
+                    q[0][i],
+                    sign * lambda[1] * nad[c].g[3 + i],
+                );
+                put(
+                    &mut jacobian,
+                    rows[2][c],
+                    q[1][i],
+                    sign * lambda[2] * nb[c].g[i],
+                );
             }
         }
         // The body's rotation rows: (0,e) varies theta_a (the frame's value
@@ -389,25 +422,56 @@ pub(super) fn add_step_clamp<J: AddEntries>(
         let start_value = project(v.r_a, na);
         let start_slope = project(v.w_a, na);
         for j in 0..3 {
-            let g_start = lambda[0] * start_value.g[j] + lambda[1] * (start_slope.g[j] + rate_a.g[j]);
+            let g_start =
+                lambda[0] * start_value.g[j] + lambda[1] * (start_slope.g[j] + rate_a.g[j]);
             residual[q[0][j]] += sign * g_start;
             residual[q[1][j]] += sign * lambda[1] * rate_a.g[3 + j];
             residual[q[2][j]] += sign * lambda[2] * rate_b.g[3 + j];
             put(&mut jacobian, q[0][j], m[0], sign * start_value.g[j]);
-            put(&mut jacobian, q[0][j], m[1], sign * (start_slope.g[j] + rate_a.g[j]));
+            put(
+                &mut jacobian,
+                q[0][j],
+                m[1],
+                sign * (start_slope.g[j] + rate_a.g[j]),
+            );
             put(&mut jacobian, q[1][j], m[1], sign * rate_a.g[3 + j]);
             put(&mut jacobian, q[2][j], m[2], sign * rate_b.g[3 + j]);
             for c in 0..3 {
-                put(&mut jacobian, q[0][j], r_x[0][c], sign * lambda[1] * na[c].g[j]);
-                put(&mut jacobian, q[2][j], r_x[1][c], sign * lambda[2] * nbd[c].g[3 + j]);
+                put(
+                    &mut jacobian,
+                    q[0][j],
+                    r_x[0][c],
+                    sign * lambda[1] * na[c].g[j],
+                );
+                put(
+                    &mut jacobian,
+                    q[2][j],
+                    r_x[1][c],
+                    sign * lambda[2] * nbd[c].g[3 + j],
+                );
             }
             for i in 0..3 {
                 let d_start = lambda[0] * start_value.h[j][3 + i]
                     + lambda[1] * (start_slope.h[j][3 + i] + rate_a.h[j][3 + i]);
                 put(&mut jacobian, q[0][j], q[0][i], sign * d_start);
-                put(&mut jacobian, q[1][j], q[0][i], sign * lambda[1] * rate_a.h[3 + j][3 + i]);
-                put(&mut jacobian, q[2][j], q[1][i], sign * lambda[2] * rate_b.h[3 + j][i]);
-                put(&mut jacobian, q[2][j], q[2][i], sign * lambda[2] * rate_b.h[3 + j][3 + i]);
+                put(
+                    &mut jacobian,
+                    q[1][j],
+                    q[0][i],
+                    sign * lambda[1] * rate_a.h[3 + j][3 + i],
+                );
+                put(
+                    &mut jacobian,
+                    q[2][j],
+                    q[1][i],
+                    sign * lambda[2] * rate_b.h[3 + j][i],
+                );
+                put(
+                    &mut jacobian,
+                    q[2][j],
+                    q[2][i],
+                    sign * lambda[2] * rate_b.h[3 + j][3 + i],
+                );
             }
         }
     }
@@ -523,12 +587,17 @@ impl<'a> ClampMass<'a> {
             .find(|b| b.index == clamp.body)
             .expect("a clamp's body is free");
         let e = line.end_coordinates();
-        let r_x = crate::body::pose::rotate_back(&body.body.rotation(), [e[first], e[first + 1], e[first + 2]]);
+        let r_x = crate::body::pose::rotate_back(
+            &body.body.rotation(),
+            [e[first], e[first + 1], e[first + 2]],
+        );
         ClampMass {
             clamp,
             layout,
             first,
-            omega: std::array::from_fn(|j| layout.body_unknown(clamp.body, 0, 3 + j).expect("free")),
+            omega: std::array::from_fn(|j| {
+                layout.body_unknown(clamp.body, 0, 3 + j).expect("free")
+            }),
             arms: clamp.local.normals.map(|n| crate::vec3::cross(n, r_x)),
             frame: line.model().constraints.directions[clamp.hold],
         }
@@ -549,11 +618,15 @@ impl<'a> ClampMass<'a> {
                 m.add(row, self.omega[j], self.arms[k][j]);
             }
         }
-        let own = |e: &&HeldEntry| e.line == self.clamp.line && (self.first..self.first + 3).contains(&e.row);
+        let own = |e: &&HeldEntry| {
+            e.line == self.clamp.line && (self.first..self.first + 3).contains(&e.row)
+        };
         for e in held.iter().filter(own) {
             let (c, column) = (e.row - self.first, self.global(e.column));
             for j in 0..3 {
-                let w: f64 = (0..2).map(|k| self.arms[k][j] * self.frame.normals[k][c]).sum();
+                let w: f64 = (0..2)
+                    .map(|k| self.arms[k][j] * self.frame.normals[k][c])
+                    .sum();
                 m.add(self.omega[j], column, -w * e.mass);
             }
         }
@@ -566,7 +639,9 @@ impl<'a> ClampMass<'a> {
     pub fn add_momentum(&self, rates: &mut [f64], p: [f64; 3], extra: [f64; 3]) {
         rates[self.global(self.first)] += dot(self.frame.direction, extra);
         for j in 0..3 {
-            let w: f64 = (0..2).map(|k| self.arms[k][j] * dot(self.frame.normals[k], p)).sum();
+            let w: f64 = (0..2)
+                .map(|k| self.arms[k][j] * dot(self.frame.normals[k], p))
+                .sum();
             rates[self.omega[j]] -= w;
         }
     }

@@ -422,9 +422,9 @@ pub(super) fn static_bodies(system: &System) -> Vec<StaticBody> {
                 yaw_hold: super::body_holds::yaw_hold(system, b)
                     .filter(|_| !body.connector)
                     .map(|a| {
-                    let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
-                    (a, weight * length)
-                }),
+                        let weight = crate::vec3::norm(net).max(f64::MIN_POSITIVE);
+                        (a, weight * length)
+                    }),
             }
         })
         .collect()
@@ -510,9 +510,13 @@ pub(super) mod tests {
                 second_moment: 1e-7,
                 axial_damping: 0.0,
             };
-            let cable = Cable::straight(crate::vec3::norm(crate::vec3::sub(b, a)), 4, ElementType::Sac2)
-                .with_origin(a)
-                .with_direction(crate::vec3::sub(b, a));
+            let cable = Cable::straight(
+                crate::vec3::norm(crate::vec3::sub(b, a)),
+                4,
+                ElementType::Sac2,
+            )
+            .with_origin(a)
+            .with_direction(crate::vec3::sub(b, a));
             let loads = vec![Load::Gravity { acceleration: g }];
             let model = Model::new(cable, material, ModelOptions::default(), loads).unwrap();
             let ends = if k == 0 {

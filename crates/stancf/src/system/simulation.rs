@@ -140,7 +140,11 @@ impl SystemSimulation {
         // solved apart, with its own solver (docs/method.md §11.14).
         let apart = !joined;
         let mut initial = initial;
-        let spins: Vec<[f64; 3]> = topology.bodies().iter().map(|b| b.angular_velocity).collect();
+        let spins: Vec<[f64; 3]> = topology
+            .bodies()
+            .iter()
+            .map(|b| b.angular_velocity)
+            .collect();
         super::body_clamps::start_rates(topology.body_clamps(), &models, &spins, &mut initial);
         let lines = models
             .into_iter()

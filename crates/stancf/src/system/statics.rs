@@ -36,8 +36,8 @@
 //! again from the seed with its own law (M32c), whose end, if reached
 //! and isolated, is the equilibrium.
 
-use super::body_statics::{static_bodies, StaticBody};
 use super::body_clamps::{add_static_clamp, hold_spin};
+use super::body_statics::{static_bodies, StaticBody};
 use super::layout::{add_lines_rows, SystemLayout};
 use super::simulation::EndForce;
 use super::static_friction::{line_statics, StaticFriction};
@@ -476,7 +476,10 @@ impl StaticEquations for SystemEquations {
         }
         for body in &self.bodies {
             if self.system.bodies()[body.index].connector {
-                let row = self.layout.body_unknown(body.index, 0, 5).expect("free body");
+                let row = self
+                    .layout
+                    .body_unknown(body.index, 0, 5)
+                    .expect("free body");
                 hold_spin(&[row], x, residual, jacobian.as_deref_mut());
             }
         }

@@ -251,7 +251,9 @@ impl NonlinearSystem<BorderedMatrix> for StepOfSystem<'_> {
         for body in self.bodies {
             if self.topology.bodies()[body.index].connector {
                 let rows: [usize; 3] = std::array::from_fn(|s| {
-                    self.layout.body_unknown(body.index, s, 5).expect("free body")
+                    self.layout
+                        .body_unknown(body.index, s, 5)
+                        .expect("free body")
                 });
                 hold_spin(&rows, x, residual, jacobian.as_deref_mut());
             }

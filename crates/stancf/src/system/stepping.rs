@@ -181,7 +181,11 @@ impl SystemSimulation {
                 std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
             };
             let (momentum, centre_row) = body
-                .end_momentum(&xb, end_rows, clamp_turn.get(k).copied().unwrap_or([0.0; 3]))
+                .end_momentum(
+                    &xb,
+                    end_rows,
+                    clamp_turn.get(k).copied().unwrap_or([0.0; 3]),
+                )
                 .ok_or_else(|| singular(self.t, self.steps, "a body's J_r(theta_b) is singular"))?;
             self.body_momentum[k] = momentum;
             // A joint's child (before its parent): its centre's end row

@@ -13,7 +13,7 @@ use stancf::observe::{angular_momentum as angular_momentum_of_line, momentum};
 use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
 use stancf::vec3::{norm, scale, sub};
 use stancf::{Cable, ElementType, Material, Model, ModelOptions, StaticSettings, StepSettings};
-use stancf::{TimeScheme, State};
+use stancf::{State, TimeScheme};
 
 const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -94,7 +94,9 @@ fn a_cantilever_holding_a_body_bends_and_turns_it_as_euler_bernoulli_says() {
         ..StaticSettings::default()
     };
     let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics.solve(|_, _| ControlFlow::Continue(())).expect("solve"));
+    assert!(statics
+        .solve(|_, _| ControlFlow::Continue(()))
+        .expect("solve"));
     let (position, rotation) = statics.body_pose(0).expect("free body");
     let delta = load * length.powi(3) / (3.0 * ei) + load * arm * length.powi(2) / (2.0 * ei);
     let phi = load * length.powi(2) / (2.0 * ei) + load * arm * length / ei;
@@ -250,8 +252,7 @@ fn a_systems_jacobian_with_lines_clamped_at_a_body_is_the_derivative_of_its_rows
         Point::on_body(0, local[1]),
         Point::fixed(anchor),
     ];
-    let system =
-        System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
+    let system = System::with_bodies(lines, points, vec![body], [0.0, 0.0, -9.81]).expect("system");
     let mut states: Vec<State> = system
         .lines()
         .iter()
@@ -300,15 +301,16 @@ fn two_lines_joined_by_a_connector_bend_as_one_cantilever() {
     tip.force = [0.0, 0.0, -load];
     let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3]), tip];
     let connector = Body::connector([0.5, 0.0, 0.0], x);
-    let system =
-        System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
+    let system = System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
     let seeds = stancf::system::catenary_states(&system);
     let settings = StaticSettings {
         tolerance: 1e-13,
         ..StaticSettings::default()
     };
     let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics.solve(|_, _| ControlFlow::Continue(())).expect("solve"));
+    assert!(statics
+        .solve(|_, _| ControlFlow::Continue(()))
+        .expect("solve"));
     let tip = statics.point_position(2);
     let (_, rotation) = statics.body_pose(0).expect("connector");
     // The connector's z axis is the beam's tangent there.
@@ -390,8 +392,7 @@ fn two_lines_joined_by_a_connector_swing_as_one_cantilever() {
     ];
     let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3])];
     let connector = Body::connector(joint, axis);
-    let system =
-        System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
+    let system = System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
     // Newton to its default tolerance, 1e-10, as the one-line cantilever.
     let settings = StepSettings {
         time_step: period / 200.0,
