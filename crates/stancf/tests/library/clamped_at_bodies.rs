@@ -6,13 +6,11 @@
 //! clamped lines keeps the momenta and energy of the whole; the step's
 //! Jacobian is the derivative of its rows.
 
-use std::ops::ControlFlow;
-
 use stancf::body::RigidInertia;
 use stancf::observe::{angular_momentum as angular_momentum_of_line, momentum};
-use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation, SystemStatics};
+use stancf::system::{Body, BodyKind, End, Line, Point, System, SystemSimulation};
 use stancf::vec3::{norm, scale, sub};
-use stancf::{Cable, ElementType, Material, Model, ModelOptions, StaticSettings, StepSettings};
+use stancf::{Cable, ElementType, Material, Model, ModelOptions, StepSettings};
 use stancf::{State, TimeScheme};
 
 const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -88,15 +86,7 @@ fn a_cantilever_holding_a_body_bends_and_turns_it_as_euler_bernoulli_says() {
     let line = line.clamped(1, [1.0, 0.0, 0.0]).unwrap();
     let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3])];
     let system = System::with_bodies(vec![line], points, vec![body], [0.0; 3]).expect("system");
-    let seeds = stancf::system::catenary_states(&system);
-    let settings = StaticSettings {
-        tolerance: 1e-13,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = crate::common::seeded_equilibrium(system, 1e-13);
     let (position, rotation) = statics.body_pose(0).expect("free body");
     let delta = load * length.powi(3) / (3.0 * ei) + load * arm * length.powi(2) / (2.0 * ei);
     let phi = load * length.powi(2) / (2.0 * ei) + load * arm * length / ei;
@@ -181,31 +171,11 @@ fn momenta(sim: &SystemSimulation) -> ([f64; 3], [f64; 3]) {
 #[test]
 fn a_body_tumbling_with_clamped_lines_keeps_its_momenta_and_energy() {
     let (spin, drift) = ([1.0, -0.5, 3.0], [0.5, -0.2, 0.1]);
-    let run = |dt: f64, steps: usize| {
+    let start = |dt: f64| {
         let (system, states) = clamped_star(spin, drift);
-        let mut sim = SystemSimulation::new(system, states, galerkin(dt)).unwrap();
-        let ((p0, l0), e0) = (momenta(&sim), sim.energies().mechanical());
-        for _ in 0..steps {
-            sim.step().expect("step");
-        }
-        let ((p1, l1), e1) = (momenta(&sim), sim.energies().mechanical());
-        let dp = (0..3).map(|c| (p1[c] - p0[c]).abs()).fold(0.0, f64::max);
-        let dl = (0..3).map(|c| (l1[c] - l0[c]).abs()).fold(0.0, f64::max);
-        (dp, dl, (e1 - e0).abs(), e0, norm(l0))
+        SystemSimulation::new(system, states, galerkin(dt)).unwrap()
     };
-    let mut errors = Vec::new();
-    for (dt, steps) in [(8e-3, 50), (4e-3, 100), (2e-3, 200)] {
-        let (dp, dl, de, e0, l0) = run(dt, steps);
-        eprintln!(
-            "dt {dt:e}: momentum {dp:.1e}, angular momentum {dl:.1e} of {l0:.3e}, energy \
-             {de:.1e} of {e0:.3e} J"
-        );
-        assert!(dp < 1e-12, "linear momentum drifts by {dp:e}");
-        errors.push((dl, de));
-    }
-    let order_l = (errors[0].0 / errors[1].0).log2();
-    let order_e = (errors[0].1 / errors[1].1).log2();
-    eprintln!("orders from dt 8e-3 to 4e-3: angular momentum {order_l:.2}, energy {order_e:.2}");
+    let (_, order_l, order_e) = crate::common::tumbling_drifts(start, momenta);
     assert!(order_l > 3.5 && order_e > 3.5, "{order_l} {order_e}");
 }
 
@@ -302,15 +272,7 @@ fn two_lines_joined_by_a_connector_bend_as_one_cantilever() {
     let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3]), tip];
     let connector = Body::connector([0.5, 0.0, 0.0], x);
     let system = System::with_bodies(lines, points, vec![connector], [0.0; 3]).expect("system");
-    let seeds = stancf::system::catenary_states(&system);
-    let settings = StaticSettings {
-        tolerance: 1e-13,
-        ..StaticSettings::default()
-    };
-    let mut statics = SystemStatics::new(system, seeds, settings).expect("statics");
-    assert!(statics
-        .solve(|_, _| ControlFlow::Continue(()))
-        .expect("solve"));
+    let statics = crate::common::seeded_equilibrium(system, 1e-13);
     let tip = statics.point_position(2);
     let (_, rotation) = statics.body_pose(0).expect("connector");
     // The connector's z axis is the beam's tangent there.

@@ -475,3 +475,36 @@ pub fn straight_line(
     )
     .expect("model")
 }
+
+/// A system tumbling in empty space for 0.4 s at dt 8, 4 and 2 ms:
+/// `start(dt)` makes its simulation, `momenta(sim)` the whole's linear
+/// and angular momentum. Asserts that the linear momentum is kept to
+/// 1e-12 at each step; returns the drifts of the angular momentum and of
+/// the energy at each step, and their orders from 8 to 4 ms.
+pub fn tumbling_drifts(
+    start: impl Fn(f64) -> stancf::system::SystemSimulation,
+    momenta: impl Fn(&stancf::system::SystemSimulation) -> ([f64; 3], [f64; 3]),
+) -> (Vec<(f64, f64)>, f64, f64) {
+    let largest =
+        |a: [f64; 3], b: [f64; 3]| (0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f64::max);
+    let mut drifts = Vec::new();
+    for (dt, steps) in [(8e-3, 50), (4e-3, 100), (2e-3, 200)] {
+        let mut sim = start(dt);
+        let ((p0, l0), e0) = (momenta(&sim), sim.energies().mechanical());
+        for _ in 0..steps {
+            sim.step().expect("step");
+        }
+        let ((p1, l1), e1) = (momenta(&sim), sim.energies().mechanical());
+        let (dp, dl, de) = (largest(p1, p0), largest(l1, l0), (e1 - e0).abs());
+        eprintln!(
+            "dt {dt:e}: momentum {dp:.1e}, angular momentum {dl:.1e}, energy {de:.1e} of \
+             {e0:.3e} J"
+        );
+        assert!(dp < 1e-12, "linear momentum drifts by {dp:e}");
+        drifts.push((dl, de));
+    }
+    let order_l = (drifts[0].0 / drifts[1].0).log2();
+    let order_e = (drifts[0].1 / drifts[1].1).log2();
+    eprintln!("orders from dt 8e-3 to 4e-3: angular momentum {order_l:.2}, energy {order_e:.2}");
+    (drifts, order_l, order_e)
+}
