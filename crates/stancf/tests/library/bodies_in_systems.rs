@@ -193,15 +193,11 @@ fn a_spinning_star_of_lines_on_a_body_keeps_its_momenta_and_energy() {
 /// and holding a second, slack one, moving.
 #[test]
 fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
-    let rotation = stancf::body::pose::rotation_from_moordyn_angles([20.0, -35.0, 50.0]);
-    let mut body = Body::new(
-        BodyKind::Free,
-        [0.3, 0.1, -1.0],
-        rotation,
-        RigidInertia::principal(2.0, [0.05, -0.1, 0.2], [0.02, 0.03, 0.04]),
-    );
-    body.velocity = [0.2, -0.1, 0.3];
-    body.angular_velocity = [0.5, 1.0, -0.7];
+    let mut body = crate::common::turned_moving_body(RigidInertia::principal(
+        2.0,
+        [0.05, -0.1, 0.2],
+        [0.02, 0.03, 0.04],
+    ));
     {
         body.water = Some(stancf::body::BodyWater {
             density: 1025.0,

@@ -187,15 +187,11 @@ fn a_body_tumbling_with_clamped_lines_keeps_its_momenta_and_energy() {
 /// multipliers are not zero.
 #[test]
 fn a_systems_jacobian_with_lines_clamped_at_a_body_is_the_derivative_of_its_rows() {
-    let rotation = stancf::body::pose::rotation_from_moordyn_angles([20.0, -35.0, 50.0]);
-    let mut body = Body::new(
-        BodyKind::Free,
-        [0.3, 0.1, -1.0],
-        rotation,
-        RigidInertia::principal(0.05, [0.05, -0.1, 0.2], [2e-3, 3e-3, 4e-3]),
-    );
-    body.velocity = [0.2, -0.1, 0.3];
-    body.angular_velocity = [0.5, 1.0, -0.7];
+    let body = crate::common::turned_moving_body(RigidInertia::principal(
+        0.05,
+        [0.05, -0.1, 0.2],
+        [2e-3, 3e-3, 4e-3],
+    ));
     let local = [[0.2, 0.1, 0.3], [-0.1, 0.25, 0.0]];
     let anchor = [0.1, 0.4, 0.0];
     let first = body.point(local[0]);

@@ -508,3 +508,15 @@ pub fn tumbling_drifts(
     eprintln!("orders from dt 8e-3 to 4e-3: angular momentum {order_l:.2}, energy {order_e:.2}");
     (drifts, order_l, order_e)
 }
+
+/// A free body at [0.3, 0.1, -1] turned by MoorDyn's angles (20, -35, 50)
+/// degrees, moving at [0.2, -0.1, 0.3] m/s and turning at [0.5, 1, -0.7]
+/// rad/s, of `inertia`: the step Jacobians' test body.
+pub fn turned_moving_body(inertia: stancf::body::RigidInertia) -> stancf::system::Body {
+    let rotation = stancf::body::pose::rotation_from_moordyn_angles([20.0, -35.0, 50.0]);
+    let kind = stancf::system::BodyKind::Free;
+    let mut body = stancf::system::Body::new(kind, [0.3, 0.1, -1.0], rotation, inertia);
+    body.velocity = [0.2, -0.1, 0.3];
+    body.angular_velocity = [0.5, 1.0, -0.7];
+    body
+}
