@@ -30,15 +30,7 @@ fn star(
             .with_origin(start);
         let model =
             Model::new(cable, light_rope(), ModelOptions::default(), vec![]).expect("model");
-        let mut state = model.initial_state();
-        model.add_rigid_rotation(&mut state, spin, [0.0; 3]);
-        for node in 0..model.nodes() {
-            let o = model.coordinate(node, 0, 0);
-            for c in 0..3 {
-                state.v[o + c] += drift[c];
-            }
-        }
-        states.push(state);
+        states.push(crate::common::spun_and_drifting(&model, spin, drift));
         points.push(on(start));
         lines.push(Line {
             model,

@@ -115,15 +115,7 @@ fn clamped_star(spin: [f64; 3], drift: [f64; 3]) -> (System, Vec<State>) {
         let d = [angle.cos(), angle.sin(), 0.2];
         let d = scale(1.0 / norm(d), d);
         let model = straight(start, stancf::vec3::add(start, d), 8, whippy());
-        let mut state = model.initial_state();
-        model.add_rigid_rotation(&mut state, spin, [0.0; 3]);
-        for node in 0..model.nodes() {
-            let o = model.coordinate(node, 0, 0);
-            for c in 0..3 {
-                state.v[o + c] += drift[c];
-            }
-        }
-        states.push(state);
+        states.push(crate::common::spun_and_drifting(&model, spin, drift));
         points.push(Point::on_body(0, start));
         let line = Line {
             model,

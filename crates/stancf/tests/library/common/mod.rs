@@ -520,3 +520,17 @@ pub fn turned_moving_body(inertia: stancf::body::RigidInertia) -> stancf::system
     body.angular_velocity = [0.5, 1.0, -0.7];
     body
 }
+
+/// `model`'s reference state turning rigidly at `spin` about the origin
+/// and drifting at `drift`.
+pub fn spun_and_drifting(model: &stancf::Model, spin: [f64; 3], drift: [f64; 3]) -> stancf::State {
+    let mut state = model.initial_state();
+    model.add_rigid_rotation(&mut state, spin, [0.0; 3]);
+    for node in 0..model.nodes() {
+        let o = model.coordinate(node, 0, 0);
+        for c in 0..3 {
+            state.v[o + c] += drift[c];
+        }
+    }
+    state
+}
