@@ -42,13 +42,7 @@ fn straight(a: [f64; 3], b: [f64; 3], elements: usize, material: Material) -> Mo
 }
 
 fn galerkin(dt: f64) -> StepSettings {
-    let mut settings = StepSettings {
-        time_step: dt,
-        time_scheme: TimeScheme::Galerkin,
-        ..StepSettings::default()
-    };
-    settings.newton.tolerance = 1e-13;
-    settings
+    crate::common::step_settings(dt, TimeScheme::Galerkin, 1e-13)
 }
 
 /// A 1 m PVC cantilever of 10 SAC-2 along x, clamped at the origin, its
