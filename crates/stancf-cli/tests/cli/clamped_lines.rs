@@ -149,7 +149,9 @@ fn a_clamp_with_elimination_is_refused_naming_its_key() {
 /// converges, and a dynamic run from that equilibrium stays there, every
 /// body (the free body and the connector) still to 1e-7 m and 1e-7 rad
 /// over 0.5 s (the static tolerance 1e-10 of the 36 m lines' length is
-/// 4e-9 m; nothing else moves them).
+/// 4e-9 m; nothing else moves them). The lines' moment on the free body,
+/// its clamps' included, is zero at the balance and over the steps, to
+/// 1e-9 of their force times the rod's half length (the tolerance's).
 #[test]
 fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay() {
     let d = scratch("bent-rod-lines");
@@ -177,7 +179,7 @@ fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay(
     let o = run_quiet(&dynamic, &d.join("dyn"), &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (_, moving) = read_csv(&d.join("dyn").join("bodies.csv"));
-    let mut worst = 0.0f64;
+    let (mut worst, mut moment) = (0.0f64, 0.0f64);
     for m in &moving {
         let rest = at_rest
             .iter()
@@ -186,7 +188,31 @@ fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay(
         for c in ["x", "y", "z", "roll", "pitch", "yaw"] {
             worst = worst.max((m[col(c)] - rest[col(c)]).abs());
         }
+        // The lines' moment on the body (the clamps' with the points'),
+        // against the lines' force times the rod's half length: zero at
+        // the balance (the body's own loads act at its reference point),
+        // and each step's mean the balance's.
+        if m[col("body")] != 1.0 {
+            continue;
+        }
+        let scale = 2.0
+            * (0..3)
+                .map(|k| rest[col(["fx", "fy", "fz"][k])].powi(2))
+                .sum::<f64>()
+                .sqrt();
+        for c in ["mx", "my", "mz"] {
+            assert!(
+                rest[col(c)].abs() < 1e-9 * scale,
+                "{c} {} of {scale}",
+                rest[col(c)]
+            );
+            moment = moment.max((m[col(c)] - rest[col(c)]).abs() / scale);
+        }
     }
-    eprintln!("largest move from the equilibrium over 0.5 s: {worst:.1e}");
+    eprintln!(
+        "largest move from the equilibrium over 0.5 s: {worst:.1e}; largest change of the \
+         lines' moment {moment:.1e} of the equilibrium's"
+    );
     assert!(worst < 1e-7, "{worst:e}");
+    assert!(moment < 1e-9, "{moment:e}");
 }

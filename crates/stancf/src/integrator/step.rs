@@ -187,6 +187,14 @@ impl Simulation {
         &self.rhs
     }
 
+    /// The Galerkin step's impulse at t_b on direction hold h's r_x, M v_b
+    /// - dA/de_b (M43), after the end rates are set.
+    pub(crate) fn hold_end_impulse(&self, h: usize) -> [f64; 3] {
+        let hold = &self.model.constraints.directions[h];
+        let o = coordinate(self.layout.dpn, hold.node, SLOT_R_X, 0);
+        std::array::from_fn(|c| self.mass_v[o + c] - self.scratch.end_momentum[o + c])
+    }
+
     /// Sets direction hold h's frame (a clamp at a free body turned to the
     /// body's pose at the step's end, docs/method.md §15.19).
     pub(crate) fn set_direction_hold(&mut self, h: usize, hold: crate::constraints::DirectionHold) {

@@ -550,99 +550,50 @@ pub(super) fn add_static_clamp<J: AddEntries>(
     }
 }
 
-/// A mass entry (line, coordinates, value) of a row of r_x held by a
-/// clamp at a free body, before (M43) turns the row.
-pub(super) struct HeldEntry {
-    pub line: usize,
-    pub row: usize,
-    pub column: usize,
-    pub mass: f64,
+/// The reaction of clamp `clamp` in its r_x's row (0,e) at converged
+/// unknowns x (B38) without the multipliers' sign, as a fixed hold's is
+/// summed (`Simulation::clamp_moments`): sum_k lambda_(0,e),k n_k(a) +
+/// lambda_(0,w),k n_k'(a). `rotation_a`, `xb` as [`add_step_clamp`]'s.
+pub(super) fn start_reaction(
+    clamp: &BodyClamp,
+    layout: &SystemLayout,
+    dpn: usize,
+    rotation_a: &[[f64; 3]; 3],
+    xb: &[f64; 18],
+    x: &[f64],
+) -> [f64; 3] {
+    let at = ClampIndices::of(clamp, layout, dpn);
+    let mut q = [0.0; 3];
+    for k in 0..2 {
+        let (na, nad) = frame_jets(rotation_a, clamp.local.normals[k], xb).start;
+        let (l0, l1) = (x[at.multipliers[0][k]], x[at.multipliers[1][k]]);
+        for c in 0..3 {
+            q[c] += l0 * na[c].v + l1 * nad[c].v;
+        }
+    }
+    q
 }
 
-/// A clamp at a free body in the mass solve at a step's end (B40): the
-/// global indices of its r_x rows and of the body's Omega, the frame at
-/// the end (world n_k, d) and the hold's rate arms c_k = n_k' x R_b^T r_x.
-pub(super) struct ClampMass<'a> {
-    clamp: &'a BodyClamp,
-    layout: &'a SystemLayout,
-    first: usize,
-    omega: [usize; 3],
-    arms: [[f64; 3]; 2],
-    frame: DirectionHold,
-}
-
-impl<'a> ClampMass<'a> {
-    /// The clamp at the step's end: the lines expanded (their end r_x),
-    /// the bodies moved (their end rotation), the line's hold turned.
-    pub fn of(
-        clamp: &'a BodyClamp,
-        layout: &'a SystemLayout,
-        lines: &[crate::integrator::Simulation],
-        bodies: &[super::body_terms::StepBody],
-    ) -> Self {
-        let line = &lines[clamp.line];
-        let first = coordinate(line.model().dofs_per_node(), clamp.node, SLOT_R_X, 0);
-        let body = bodies
-            .iter()
-            .find(|b| b.index == clamp.body)
-            .expect("a clamp's body is free");
-        let e = line.end_coordinates();
-        let r_x = crate::body::pose::rotate_back(
-            &body.body.rotation(),
-            [e[first], e[first + 1], e[first + 2]],
-        );
-        ClampMass {
-            clamp,
-            layout,
-            first,
-            omega: std::array::from_fn(|j| {
-                layout.body_unknown(clamp.body, 0, 3 + j).expect("free")
-            }),
-            arms: clamp.local.normals.map(|n| crate::vec3::cross(n, r_x)),
-            frame: line.model().constraints.directions[clamp.hold],
+/// The moment (global) clamp `clamp` puts on its body at a static
+/// equilibrium x: minus its moment on the line, r_x x Q (M42), Q = sum_k
+/// lambda_k n_k(theta) (a static multiplier is the force itself).
+/// `rotation` is R_0 (as [`add_static_clamp`]'s).
+pub(super) fn static_moment(
+    clamp: &BodyClamp,
+    layout: &SystemLayout,
+    dpn: usize,
+    rotation: &[[f64; 3]; 3],
+    x: &[f64],
+) -> [f64; 3] {
+    let at = ClampIndices::of(clamp, layout, dpn);
+    let theta = at.turn[0].map(|i| x[i]);
+    let mut q = [0.0; 3];
+    for k in 0..2 {
+        let (n, _) = offsets(rotation, clamp.local.normals[k], theta, [0.0; 3]);
+        for c in 0..3 {
+            q[c] += x[at.multipliers[0][k]] * n[c].v;
         }
     }
-
-    fn global(&self, g: usize) -> usize {
-        let numbering = &self.layout.lines[self.clamp.line];
-        self.layout.maps[self.clamp.line].global[numbering.unknown_at(0, g).expect("free")]
-    }
-
-    /// The hold's rates' Omega columns (n_k . v + c_k . Omega = 0 in the
-    /// turned rows 1 + k), and the r_x rows' mass entries `held` carried
-    /// to the body's Omega rows by - sum_k c_k n_k^T (B40).
-    pub fn add_rows(&self, m: &mut crate::bordered::BorderedMatrix, held: &[HeldEntry]) {
-        for k in 0..2 {
-            let row = self.global(self.first + 1 + k);
-            for j in 0..3 {
-                m.add(row, self.omega[j], self.arms[k][j]);
-            }
-        }
-        let own = |e: &&HeldEntry| {
-            e.line == self.clamp.line && (self.first..self.first + 3).contains(&e.row)
-        };
-        for e in held.iter().filter(own) {
-            let (c, column) = (e.row - self.first, self.global(e.column));
-            for j in 0..3 {
-                let w: f64 = (0..2)
-                    .map(|k| self.arms[k][j] * self.frame.normals[k][c])
-                    .sum();
-                m.add(self.omega[j], column, -w * e.mass);
-            }
-        }
-    }
-
-    /// The right side: the line's r_x momentum `p` (its own, before
-    /// (M43), with the clamp's share `extra` of (B39)) carried to the
-    /// body's Omega rows by - sum_k c_k n_k . p, and `extra`'s part along
-    /// d in the turned row d . (M v - p) = 0.
-    pub fn add_momentum(&self, rates: &mut [f64], p: [f64; 3], extra: [f64; 3]) {
-        rates[self.global(self.first)] += dot(self.frame.direction, extra);
-        for j in 0..3 {
-            let w: f64 = (0..2)
-                .map(|k| self.arms[k][j] * dot(self.frame.normals[k], p))
-                .sum();
-            rates[self.omega[j]] -= w;
-        }
-    }
+    let r_x = values(x, &at.r_x[0]);
+    scale(-1.0, DirectionHold::moment(r_x, q))
 }

@@ -32,8 +32,8 @@
 //! n_k . v + c_k . Omega = 0 and the hold's impulse reaches the body's
 //! rows ([`ClampMass`]).
 
-use super::body_clamps::{ClampMass, HeldEntry};
 use super::body_terms::StepBody;
+use super::clamp_mass::{ClampMass, HeldEntry};
 use super::layout::{LineView, SystemLayout};
 use super::Topology;
 use crate::assembly::Scheme;

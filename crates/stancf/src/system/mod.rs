@@ -30,6 +30,8 @@ mod body_clamps;
 mod body_holds;
 mod body_statics;
 mod body_terms;
+mod clamp_mass;
+mod clamp_moments;
 mod end_forces;
 mod energy;
 mod halving;

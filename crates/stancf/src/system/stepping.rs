@@ -114,6 +114,7 @@ impl SystemSimulation {
     /// free points takes the end rates from the system's mass matrix
     /// (docs/method.md §11.10), the others from each line's own.
     pub(super) fn finish_lines(&mut self, report: NewtonReport) -> Result<(), SolverError> {
+        self.clamp_start_reactions();
         let Some(mass) = &mut self.mass else {
             for line in &mut self.lines {
                 line.finish_step(report);
@@ -218,6 +219,7 @@ impl SystemSimulation {
                 "the system's mass matrix is singular (a free body without mass or inertia?)",
             )
         })?;
+        self.collect_clamp_moments(&clamp_momentum, self.settings.time_step);
         for line in &mut self.lines {
             line.close_step(report);
         }

@@ -94,6 +94,14 @@ fn a_cantilever_holding_a_body_bends_and_turns_it_as_euler_bernoulli_says() {
     assert!((turn - phi).abs() < 1e-5 * phi);
     // The body turned about y alone, and the line's end tangent is its x axis.
     assert!(rotation[1][0].abs() < 1e-12 && rotation[0][1].abs() < 1e-12);
+    // The clamp's moment on the body balances the load's about the end.
+    let arm = stancf::body::pose::rotate(&rotation, [arm, 0.0, 0.0]);
+    let expected = stancf::vec3::cross(arm, [0.0, 0.0, load]);
+    let moment = statics.clamp_moment(0);
+    eprintln!("clamp moment on the body {moment:?}, the load's balance {expected:?}");
+    for c in 0..3 {
+        assert!((moment[c] - expected[c]).abs() < 1e-9 * norm(expected));
+    }
 }
 
 /// Three 1 m limp lines ([`whippy`]) of 8 SAC-2 leaving a body at its

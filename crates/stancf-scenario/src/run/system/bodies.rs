@@ -4,7 +4,9 @@
 //!
 //! - The lines' force on a body and their moment about its reference
 //!   point, global: f = sum f_P, m = sum (x_P - x_ref) x f_P over its
-//!   points P (f_P the net force of the lines at P, as in points.csv).
+//!   points P (f_P the net force of the lines at P, as in points.csv),
+//!   plus the moments of the lines clamped to it (docs/method.md §15.19;
+//!   over a step, their mean).
 //! - MoorDyn's net force (`getFnet` of a free body, its `Body<n>FX..MZ`,
 //!   docs/moordyn-bodies-rods.md §2.3): the lines', the body's weight and
 //!   buoyancy (m - rho V) g at its centre of mass, its points' buoyancy
@@ -97,18 +99,20 @@ pub(super) fn stepped(body: &stancf::body::FreeBody) -> BodyMotion {
 }
 
 /// Each body's row: `motion(b)` its pose and velocities, `points` every
-/// point's (position, velocity, net force of its lines).
+/// point's (position, velocity, net force of its lines), `clamps(b)` the
+/// moment of the lines clamped to it (docs/method.md §15.19).
 pub(super) fn body_rows(
     topology: &Topology,
     motion: impl Fn(usize) -> BodyMotion,
     points: &[([f64; 3], [f64; 3], [f64; 3])],
+    clamps: impl Fn(usize) -> [f64; 3],
     time: FlowTime,
 ) -> Vec<BodyRow> {
     (0..topology.bodies().len())
         .map(|b| {
             let m = motion(b);
             let mut force = [0.0; 3];
-            let mut moment = [0.0; 3];
+            let mut moment = clamps(b);
             for &(p, _) in topology.body_points(b) {
                 let (x, _, f) = points[p];
                 force = add(force, f);

@@ -77,6 +77,7 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
             None => at_rest(&system.bodies()[b]),
         },
         &points,
+        |b| sim.clamp_moment(b),
         FlowTime::At(sim.time()),
     );
     SystemRow {
@@ -124,6 +125,7 @@ pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
             m
         },
         &points,
+        |b| st.clamp_moment(b),
         FlowTime::Steady,
     );
     SystemRow {
