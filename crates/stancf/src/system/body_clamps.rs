@@ -50,12 +50,10 @@
 //! n_k(theta) . r_x = 0 with its multiplier in r_x's and theta's rows.
 
 use super::layout::SystemLayout;
-use super::{Body, BodyKind, End, Line, Point};
 use crate::assembly::SlabLayout;
 use crate::body::attach::{offsets, project};
 use crate::body::jet::JetVec;
 use crate::constraints::DirectionHold;
-use crate::error::ModelError;
 use crate::linear::AddEntries;
 use crate::model::{coordinate, SLOT_R_X};
 use crate::vec3::{dot, scale};
@@ -70,141 +68,6 @@ pub struct BodyClamp {
     pub node: usize,
     pub body: usize,
     pub local: DirectionHold,
-}
-
-/// Checks line `li`'s direction holds and returns those at a free body's
-/// point, marked turning ([`DirectionHold::turning`]) with their frames in
-/// the body's axes. A hold must be at a line end attached to a fixed or
-/// coupled point (its frame fixed in space, §6.10) or to a free body's
-/// point (§15.19); at a coupled body's point (a frame the host turns) it
-/// is refused, as at a free point or a loose end (nothing to clamp to).
-pub(super) fn line_clamps(
-    li: usize,
-    line: &mut Line,
-    points: &[Point],
-    bodies: &[Body],
-    body_points: &[Vec<(usize, [f64; 3])>],
-) -> Result<Vec<BodyClamp>, ModelError> {
-    let last = super::end_node(&line.model, 1);
-    let mut clamps = Vec::new();
-    let key = || format!("lines[{li}]");
-    for (h, hold) in line.model.constraints.directions.iter_mut().enumerate() {
-        let end = match hold.node {
-            0 => 0,
-            n if n == last => 1,
-            n => {
-                return Err(ModelError::invalid(
-                    key(),
-                    format!("node {n} is clamped in a direction; only a line end may be"),
-                ))
-            }
-        };
-        let name = ["A", "B"][end];
-        let End::Point(p) = line.ends[end] else {
-            return Err(ModelError::invalid(
-                key(),
-                format!("end {name} is clamped in a direction but attached to nothing"),
-            ));
-        };
-        if let Some(b) = points[p].body() {
-            let back = crate::vec3::mat3_transpose(&bodies[b].rotation);
-            hold.turning = true;
-            clamps.push(BodyClamp {
-                line: li,
-                hold: h,
-                node: hold.node,
-                body: b,
-                local: hold.turned(&back),
-            });
-            continue;
-        }
-        let host = (0..bodies.len()).find(|&b| {
-            bodies[b].kind == BodyKind::Coupled && body_points[b].iter().any(|&(q, _)| q == p)
-        });
-        if let Some(b) = host {
-            return Err(ModelError::invalid(
-                key(),
-                format!(
-                    "end {name} is clamped in a direction at a point of coupled body {b}: a \
-                     clamp that turns with a body the host moves is not built yet (at a fixed \
-                     or free body it is)"
-                ),
-            ));
-        }
-        if points[p].is_unknown() {
-            return Err(ModelError::invalid(
-                key(),
-                format!(
-                    "end {name} is clamped in a direction but attached to a free point (a free \
-                     point has no rotation to clamp to; a body's point has)"
-                ),
-            ));
-        }
-    }
-    Ok(clamps)
-}
-
-/// The start states' r_x rates at the clamps made those of the turning
-/// frame: r_x = s d(t) gives r_x' = (d . r_x') d + omega x r_x (omega the
-/// body's angular velocity, global), so the hold's rate C_k' is zero at
-/// the start (the step's first rows assume it, (B37)). `frames` are the
-/// holds at the bodies' poses, `spins` the bodies' angular velocities.
-pub(super) fn start_rates(
-    clamps: &[BodyClamp],
-    models: &[crate::model::Model],
-    spins: &[[f64; 3]],
-    states: &mut [crate::model::State],
-) {
-    for clamp in clamps {
-        let model = &models[clamp.line];
-        let hold = &model.constraints.directions[clamp.hold];
-        let o = coordinate(model.dofs_per_node(), clamp.node, SLOT_R_X, 0);
-        let state = &mut states[clamp.line];
-        let d = hold.direction;
-        let r_x = [state.e[o], state.e[o + 1], state.e[o + 2]];
-        // r_x turned onto d, length and sense kept (as §6.10's start).
-        let r_x = scale(crate::vec3::norm(r_x) * dot(d, r_x).signum(), d);
-        let along = dot(d, [state.v[o], state.v[o + 1], state.v[o + 2]]);
-        let turn = crate::vec3::cross(spins[clamp.body], r_x);
-        for c in 0..3 {
-            state.e[o + c] = r_x[c];
-            state.v[o + c] = along * d[c] + turn[c];
-        }
-    }
-}
-
-/// Refuses a connector (docs/method.md §15.20) with a point off its
-/// reference point, no line clamped to it, or a clamp not along its z
-/// axis. Key `bodies[b]`.
-pub(super) fn check_connectors(
-    bodies: &[Body],
-    body_points: &[Vec<(usize, [f64; 3])>],
-    clamps: &[BodyClamp],
-) -> Result<(), ModelError> {
-    for b in (0..bodies.len()).filter(|&b| bodies[b].connector) {
-        let key = format!("bodies[{b}]");
-        if body_points[b].iter().any(|(_, local)| *local != [0.0; 3]) {
-            return Err(ModelError::invalid(
-                key,
-                "a connector's points are at its reference point",
-            ));
-        }
-        let mut on = clamps.iter().filter(|c| c.body == b).peekable();
-        if on.peek().is_none() {
-            return Err(ModelError::invalid(
-                key,
-                "is a connector and no line is clamped to it (a free point joins lines without \
-                 bending stiffness)",
-            ));
-        }
-        if on.any(|c| (1.0 - c.local.direction[2].abs()) > 1e-9) {
-            return Err(ModelError::invalid(
-                key,
-                "a connector's lines are clamped along its z axis",
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// A connector's spin (its rotation about its z axis, which no clamp
@@ -356,22 +219,56 @@ pub(super) fn add_step_clamp<J: AddEntries>(
     mut jacobian: Option<&mut J>,
 ) {
     let at = ClampIndices::of(clamp, layout, dpn);
-    let sign = layout.lines[clamp.line].scheme.multiplier_sign();
-    let v = ClampValues {
-        r_a,
-        w_a: values(x, &at.r_x[0]),
-        e_b: values(x, &at.r_x[1]),
-        w_b: values(x, &at.r_x[2]),
+    let step = StepClamp {
+        sign: layout.lines[clamp.line].scheme.multiplier_sign(),
+        v: ClampValues {
+            r_a,
+            w_a: values(x, &at.r_x[0]),
+            e_b: values(x, &at.r_x[1]),
+            w_b: values(x, &at.r_x[2]),
+        },
+        at,
     };
-    let (q, rows, r_x) = (&at.turn, &at.rows, &at.r_x);
     for k in 0..2 {
         let jets = frame_jets(rotation_a, clamp.local.normals[k], xb);
-        let (na, nad) = &jets.start;
-        let (nb, nbd) = &jets.end;
-        let value = |n: &JetVec<6>| [n[0].v, n[1].v, n[2].v];
-        let (na_v, nad_v, nb_v, nbd_v) = (value(na), value(nad), value(nb), value(nbd));
-        // (B37): the hold's rate at a, value at b, rate at b.
-        let h = &at.hold_rows;
+        let m: [usize; 3] = std::array::from_fn(|s| step.at.multipliers[s][k]);
+        let lambda = m.map(|i| x[i]);
+        step.hold_rows(k, &jets, residual, &mut jacobian);
+        step.line_reactions(&jets, (m, lambda), residual, &mut jacobian);
+        step.body_reactions(&jets, (m, lambda), residual, &mut jacobian);
+    }
+}
+
+/// A clamp's Galerkin terms at the step's unknowns (see
+/// [`add_step_clamp`]).
+struct StepClamp {
+    at: ClampIndices,
+    sign: f64,
+    v: ClampValues,
+}
+
+/// A jet's value.
+fn value(n: &JetVec<6>) -> [f64; 3] {
+    [n[0].v, n[1].v, n[2].v]
+}
+
+/// A clamp's multipliers of normal k in the row slots (0,e), (0,w),
+/// (1,w): their indices and values.
+type Multipliers = ([usize; 3], [f64; 3]);
+
+impl StepClamp {
+    /// (B37): normal k's hold rate at a, value at b, rate at b.
+    fn hold_rows<J: AddEntries>(
+        &self,
+        k: usize,
+        jets: &FrameJets,
+        residual: &mut [f64],
+        jacobian: &mut Option<&mut J>,
+    ) {
+        let (at, v) = (&self.at, &self.v);
+        let (q, r_x, h) = (&at.turn, &at.r_x, &at.hold_rows);
+        let ((na, nad), (nb, nbd)) = (&jets.start, &jets.end);
+        let (na_v, nb_v, nbd_v) = (value(na), value(nb), value(nbd));
         let rate_a = project(v.r_a, nad);
         residual[h[0][k]] += dot(na_v, v.w_a) + rate_a.v;
         let value_b = project(v.e_b, nb);
@@ -379,72 +276,72 @@ pub(super) fn add_step_clamp<J: AddEntries>(
         let (slope_b, rate_b) = (project(v.w_b, nb), project(v.e_b, nbd));
         residual[h[2][k]] += slope_b.v + rate_b.v;
         for c in 0..3 {
-            put(&mut jacobian, h[0][k], r_x[0][c], na_v[c]);
-            put(&mut jacobian, h[1][k], r_x[1][c], nb_v[c]);
-            put(&mut jacobian, h[2][k], r_x[2][c], nb_v[c]);
-            put(&mut jacobian, h[2][k], r_x[1][c], nbd_v[c]);
+            put(jacobian, h[0][k], r_x[0][c], na_v[c]);
+            put(jacobian, h[1][k], r_x[1][c], nb_v[c]);
+            put(jacobian, h[2][k], r_x[2][c], nb_v[c]);
+            put(jacobian, h[2][k], r_x[1][c], nbd_v[c]);
         }
         for i in 0..3 {
-            put(&mut jacobian, h[0][k], q[0][i], rate_a.g[3 + i]);
-            put(&mut jacobian, h[1][k], q[1][i], value_b.g[i]);
-            put(&mut jacobian, h[2][k], q[1][i], slope_b.g[i] + rate_b.g[i]);
-            put(&mut jacobian, h[2][k], q[2][i], rate_b.g[3 + i]);
+            put(jacobian, h[0][k], q[0][i], rate_a.g[3 + i]);
+            put(jacobian, h[1][k], q[1][i], value_b.g[i]);
+            put(jacobian, h[2][k], q[1][i], slope_b.g[i] + rate_b.g[i]);
+            put(jacobian, h[2][k], q[2][i], rate_b.g[3 + i]);
         }
-        // (B38): the reactions of the row slots (0,e), (0,w), (1,w).
-        let m: [usize; 3] = std::array::from_fn(|s| at.multipliers[s][k]);
-        let lambda = [x[m[0]], x[m[1]], x[m[2]]];
-        // r_x's rows.
+    }
+
+    /// (B38) in r_x's rows (0,e), (0,w), (1,w).
+    fn line_reactions<J: AddEntries>(
+        &self,
+        jets: &FrameJets,
+        (m, lambda): Multipliers,
+        residual: &mut [f64],
+        jacobian: &mut Option<&mut J>,
+    ) {
+        let (q, rows, sign) = (&self.at.turn, &self.at.rows, self.sign);
+        let ((na, nad), (nb, _)) = (&jets.start, &jets.end);
+        let (na_v, nad_v, nb_v) = (value(na), value(nad), value(nb));
         for c in 0..3 {
             residual[rows[0][c]] += sign * (lambda[0] * na_v[c] + lambda[1] * nad_v[c]);
             residual[rows[1][c]] += sign * lambda[1] * na_v[c];
             residual[rows[2][c]] += sign * lambda[2] * nb_v[c];
-            put(&mut jacobian, rows[0][c], m[0], sign * na_v[c]);
-            put(&mut jacobian, rows[0][c], m[1], sign * nad_v[c]);
-            put(&mut jacobian, rows[1][c], m[1], sign * na_v[c]);
-            put(&mut jacobian, rows[2][c], m[2], sign * nb_v[c]);
+            put(jacobian, rows[0][c], m[0], sign * na_v[c]);
+            put(jacobian, rows[0][c], m[1], sign * nad_v[c]);
+            put(jacobian, rows[1][c], m[1], sign * na_v[c]);
+            put(jacobian, rows[2][c], m[2], sign * nb_v[c]);
             for i in 0..3 {
-                put(
-                    &mut jacobian,
-                    rows[0][c],
-                    q[0][i],
-                    sign * lambda[1] * nad[c].g[3 + i],
-                );
-                put(
-                    &mut jacobian,
-                    rows[2][c],
-                    q[1][i],
-                    sign * lambda[2] * nb[c].g[i],
-                );
+                let d_start = sign * lambda[1] * nad[c].g[3 + i];
+                put(jacobian, rows[0][c], q[0][i], d_start);
+                put(jacobian, rows[2][c], q[1][i], sign * lambda[2] * nb[c].g[i]);
             }
         }
-        // The body's rotation rows: (0,e) varies theta_a (the frame's value
-        // and rate at a), (0,w) varies u_a, (1,w) varies u_b.
-        let start_value = project(v.r_a, na);
-        let start_slope = project(v.w_a, na);
+    }
+
+    /// (B38) in the body's rotation rows: (0,e) varies theta_a (the
+    /// frame's value and rate at a), (0,w) varies u_a, (1,w) varies u_b.
+    fn body_reactions<J: AddEntries>(
+        &self,
+        jets: &FrameJets,
+        (m, lambda): Multipliers,
+        residual: &mut [f64],
+        jacobian: &mut Option<&mut J>,
+    ) {
+        let (q, r_x, sign, v) = (&self.at.turn, &self.at.r_x, self.sign, &self.v);
+        let ((na, nad), (_, nbd)) = (&jets.start, &jets.end);
+        let (start_value, start_slope) = (project(v.r_a, na), project(v.w_a, na));
+        let (rate_a, rate_b) = (project(v.r_a, nad), project(v.e_b, nbd));
         for j in 0..3 {
-            let g_start =
-                lambda[0] * start_value.g[j] + lambda[1] * (start_slope.g[j] + rate_a.g[j]);
-            residual[q[0][j]] += sign * g_start;
+            let slope_j = start_slope.g[j] + rate_a.g[j];
+            residual[q[0][j]] += sign * (lambda[0] * start_value.g[j] + lambda[1] * slope_j);
             residual[q[1][j]] += sign * lambda[1] * rate_a.g[3 + j];
             residual[q[2][j]] += sign * lambda[2] * rate_b.g[3 + j];
-            put(&mut jacobian, q[0][j], m[0], sign * start_value.g[j]);
-            put(
-                &mut jacobian,
-                q[0][j],
-                m[1],
-                sign * (start_slope.g[j] + rate_a.g[j]),
-            );
-            put(&mut jacobian, q[1][j], m[1], sign * rate_a.g[3 + j]);
-            put(&mut jacobian, q[2][j], m[2], sign * rate_b.g[3 + j]);
+            put(jacobian, q[0][j], m[0], sign * start_value.g[j]);
+            put(jacobian, q[0][j], m[1], sign * slope_j);
+            put(jacobian, q[1][j], m[1], sign * rate_a.g[3 + j]);
+            put(jacobian, q[2][j], m[2], sign * rate_b.g[3 + j]);
             for c in 0..3 {
+                put(jacobian, q[0][j], r_x[0][c], sign * lambda[1] * na[c].g[j]);
                 put(
-                    &mut jacobian,
-                    q[0][j],
-                    r_x[0][c],
-                    sign * lambda[1] * na[c].g[j],
-                );
-                put(
-                    &mut jacobian,
+                    jacobian,
                     q[2][j],
                     r_x[1][c],
                     sign * lambda[2] * nbd[c].g[3 + j],
@@ -453,25 +350,17 @@ pub(super) fn add_step_clamp<J: AddEntries>(
             for i in 0..3 {
                 let d_start = lambda[0] * start_value.h[j][3 + i]
                     + lambda[1] * (start_slope.h[j][3 + i] + rate_a.h[j][3 + i]);
-                put(&mut jacobian, q[0][j], q[0][i], sign * d_start);
+                put(jacobian, q[0][j], q[0][i], sign * d_start);
+                let d_rate_a = sign * lambda[1] * rate_a.h[3 + j][3 + i];
+                put(jacobian, q[1][j], q[0][i], d_rate_a);
                 put(
-                    &mut jacobian,
-                    q[1][j],
-                    q[0][i],
-                    sign * lambda[1] * rate_a.h[3 + j][3 + i],
-                );
-                put(
-                    &mut jacobian,
+                    jacobian,
                     q[2][j],
                     q[1][i],
                     sign * lambda[2] * rate_b.h[3 + j][i],
                 );
-                put(
-                    &mut jacobian,
-                    q[2][j],
-                    q[2][i],
-                    sign * lambda[2] * rate_b.h[3 + j][3 + i],
-                );
+                let d_rate_b = sign * lambda[2] * rate_b.h[3 + j][3 + i];
+                put(jacobian, q[2][j], q[2][i], d_rate_b);
             }
         }
     }

@@ -30,6 +30,7 @@ mod body_clamps;
 mod body_holds;
 mod body_statics;
 mod body_terms;
+mod clamp_checks;
 mod clamp_mass;
 mod clamp_moments;
 mod end_forces;
@@ -328,7 +329,7 @@ impl System {
                 model,
                 ends: line.ends,
             };
-            let found = body_clamps::line_clamps(li, &mut line, &points, &bodies, &body_points)?;
+            let found = clamp_checks::line_clamps(li, &mut line, &points, &bodies, &body_points)?;
             clamps.extend(found);
             out.push(line);
         }
@@ -340,7 +341,7 @@ impl System {
                 ));
             }
         }
-        body_clamps::check_connectors(&bodies, &body_points, &clamps)?;
+        clamp_checks::check_connectors(&bodies, &body_points, &clamps)?;
         let topology = Topology {
             ends: out.iter().map(|l| l.ends).collect(),
             points,

@@ -149,7 +149,7 @@ impl SystemSimulation {
             .iter()
             .map(|b| b.angular_velocity)
             .collect();
-        super::body_clamps::start_rates(topology.body_clamps(), &models, &spins, &mut initial);
+        super::clamp_checks::start_rates(topology.body_clamps(), &models, &spins, &mut initial);
         let lines = models
             .into_iter()
             .zip(initial)
