@@ -203,7 +203,11 @@ fn connector_axes(
     }
     for (b, sum) in sums.iter().enumerate() {
         if bodies[b].connector_axis.is_some() && norm(*sum) > 0.0 {
-            bodies[b].connector_axis = Some(sum.map(|c| c / norm(*sum)));
+            let axis = sum.map(|c| c / norm(*sum));
+            bodies[b].connector_axis = Some(axis);
+            // Its frame's angles, as check and the results show them.
+            let frame = stancf::system::Body::connector(bodies[b].position, axis).rotation;
+            bodies[b].angles = stancf::body::pose::moordyn_angles(&frame);
         }
     }
     for &(li, k, rod, _) in pending {

@@ -84,8 +84,9 @@ pub(super) fn line_clamps(
 /// The start states' r_x rates at the clamps made those of the turning
 /// frame: r_x = s d(t) gives r_x' = (d . r_x') d + omega x r_x (omega the
 /// body's angular velocity, global), so the hold's rate C_k' is zero at
-/// the start (the step's first rows assume it, (B37)). `frames` are the
-/// holds at the bodies' poses, `spins` the bodies' angular velocities.
+/// the start (the step's first rows assume it, (B37)). `models` hold the
+/// frames at the bodies' poses, `spins` are the bodies' angular
+/// velocities; r_x is turned onto d first (length and sense kept).
 pub(super) fn start_rates(
     clamps: &[BodyClamp],
     models: &[crate::model::Model],
