@@ -216,3 +216,56 @@ fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay(
     assert!(worst < 1e-7, "{worst:e}");
     assert!(moment < 1e-9, "{moment:e}");
 }
+
+/// A TOML cantilever holding a body: a 2 m line (EI 10 N m^2, 10
+/// elements) clamped along x at a fixed point and at a free body's point
+/// (`clamp_b` at a point on a body: the clamp turns with the body,
+/// docs/method.md §15.19), the body loaded by P = 2.5e-3 N down and a
+/// moment M = P 0.5 m about y, no gravity. In linear theory the end
+/// deflects by P L^3/3EI + M L^2/2EI and turns by P L^2/2EI + M L/EI;
+/// at alpha = P L^2/EI = 1e-3 both hold to 1e-5 (the elastica's alpha^2,
+/// the stretch P/EA 2.5e-10), and bodies.csv's lines' moment on the body
+/// (its clamp's) balances M to the static tolerance.
+#[test]
+fn a_toml_cantilever_holding_a_body_bends_and_turns_it() {
+    let (length, ei) = (2.0f64, 10.0f64);
+    let load = 1e-3 * ei / (length * length);
+    let moment = 0.5 * load;
+    let text = format!(
+        "title = \"cantilever holding a body\"\n[system]\ngravity = [0.0, 0.0, 0.0]\n\
+         [[line_types]]\nname = \"beam\"\ndiameter = 0.01\nmass_per_length = 0.1\nea = 1.0e7\n\
+         ei = {ei:?}\n{}{}\
+         [[bodies]]\nid = 1\ntype = \"free\"\nposition = [{length:?}, 0.0, 0.0]\nmass = 1.0\n\
+         inertia = [0.1, 0.1, 0.1]\nforce = [0.0, 0.0, {:?}]\nmoment = [0.0, {moment:?}, 0.0]\n\
+         [[lines]]\nid = 1\ntype = \"beam\"\nlength = {length:?}\nelements = 10\na = 1\nb = 2\n\
+         clamp_a = [1.0, 0.0, 0.0]\nclamp_b = [1.0, 0.0, 0.0]\n\
+         [analysis]\ntype = \"static\"\ntolerance = 1e-12\n",
+        toml_point(1, "fixed", [0.0; 3]),
+        "[[points]]\nid = 2\ntype = \"body\"\nbody = 1\nposition = [0.0, 0.0, 0.0]\n",
+        -load,
+    );
+    let d = scratch("toml-body-cantilever");
+    let file = write_scenario(&d, "cantilever.toml", &text);
+    let out = d.join("out");
+    let o = run_quiet(&file, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text_of(&o));
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let r = rows.last().unwrap();
+    let delta = load * length.powi(3) / (3.0 * ei) + moment * length.powi(2) / (2.0 * ei);
+    let turn = load * length.powi(2) / (2.0 * ei) + moment * length / ei;
+    let (z, pitch) = (-r[col("z")], r[col("pitch")].to_radians());
+    eprintln!(
+        "deflection {z:.9e} (linear {delta:.9e}), turn {pitch:.9e} (linear {turn:.9e}), my {}",
+        r[col("my")]
+    );
+    assert!((z - delta).abs() < 1e-5 * delta, "{z:e}");
+    assert!((pitch - turn).abs() < 1e-5 * turn, "{pitch:e}");
+    // The lines' moment (the clamp's; the point is at the reference
+    // point) balances the body's own load's moment.
+    assert!(
+        (r[col("my")] + moment).abs() < 1e-6 * moment,
+        "{}",
+        r[col("my")]
+    );
+}
