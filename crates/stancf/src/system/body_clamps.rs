@@ -109,49 +109,28 @@ impl ClampIndices {
         let map = &layout.maps[clamp.line];
         let g0 = coordinate(dpn, clamp.node, SLOT_R_X, 0);
         let slots = numbering.unknown_slots.len();
-        let global = |u: Option<usize>| u.map_or(usize::MAX, |u| map.global[u]);
-        let per_slot = |s: usize| s < slots;
+        // Entry (s, c) of a slot's three (usize::MAX: no such slot or entry).
+        let table = |f: &dyn Fn(usize, usize) -> Option<usize>| -> [[usize; 3]; 3] {
+            std::array::from_fn(|s| {
+                std::array::from_fn(|c| {
+                    (s < slots).then(|| f(s, c)).flatten().unwrap_or(usize::MAX)
+                })
+            })
+        };
+        let global = |u: Option<usize>| u.map(|u| map.global[u]);
+        let hold =
+            |f: &dyn Fn(usize) -> Option<usize>, k: usize| (k < 2).then(|| global(f(k))).flatten();
+        let two = |t: [[usize; 3]; 3]| t.map(|r| [r[0], r[1]]);
         ClampIndices {
-            r_x: std::array::from_fn(|s| {
-                std::array::from_fn(|c| {
-                    global(
-                        per_slot(s)
-                            .then(|| numbering.unknown_at(s, g0 + c))
-                            .flatten(),
-                    )
-                })
-            }),
-            rows: std::array::from_fn(|s| {
-                std::array::from_fn(|c| {
-                    global(per_slot(s).then(|| numbering.row_at(s, g0 + c)).flatten())
-                })
-            }),
-            multipliers: std::array::from_fn(|s| {
-                std::array::from_fn(|k| {
-                    global(
-                        per_slot(s)
-                            .then(|| numbering.hold_multiplier(clamp.hold, s, k))
-                            .flatten(),
-                    )
-                })
-            }),
-            hold_rows: std::array::from_fn(|s| {
-                std::array::from_fn(|k| {
-                    global(
-                        per_slot(s)
-                            .then(|| numbering.hold_row(clamp.hold, s, k))
-                            .flatten(),
-                    )
-                })
-            }),
-            turn: std::array::from_fn(|s| {
-                std::array::from_fn(|j| {
-                    per_slot(s)
-                        .then(|| layout.body_unknown(clamp.body, s, 3 + j))
-                        .flatten()
-                        .unwrap_or(usize::MAX)
-                })
-            }),
+            r_x: table(&|s, c| global(numbering.unknown_at(s, g0 + c))),
+            rows: table(&|s, c| global(numbering.row_at(s, g0 + c))),
+            multipliers: two(table(&|s, k| {
+                hold(&|k| numbering.hold_multiplier(clamp.hold, s, k), k)
+            })),
+            hold_rows: two(table(&|s, k| {
+                hold(&|k| numbering.hold_row(clamp.hold, s, k), k)
+            })),
+            turn: table(&|s, j| layout.body_unknown(clamp.body, s, 3 + j)),
         }
     }
 }
