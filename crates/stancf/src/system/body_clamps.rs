@@ -345,32 +345,45 @@ impl StepClamp {
     }
 }
 
-/// The end momenta's shares of clamp `clamp` (B39) at converged unknowns
-/// x: on the line's r_x, sign sum_k lambda_(1,w),k n_k'(b) (global), and
+/// What a converged step leaves of a clamp at its end: the reaction of
+/// its r_x's row (0,e) (B38) without the multipliers' sign, as a fixed
+/// hold's is summed (`Simulation::clamp_moments`), sum_k lambda_(0,e),k
+/// n_k(a) + lambda_(0,w),k n_k'(a); and its shares of the end momenta
+/// (B39): on the line's r_x, sign sum_k lambda_(1,w),k n_k'(b) (global),
 /// on the body's theta_b, sign sum_k lambda_(1,w),k d C_k'(b) / d theta_b.
-pub(super) fn clamp_end_shares(
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct ClampStepEnd {
+    pub reaction: [f64; 3],
+    pub on_line: [f64; 3],
+    pub on_body: [f64; 3],
+}
+
+/// [`ClampStepEnd`] of clamp `clamp` at converged unknowns x;
+/// `rotation_a`, `xb` as [`add_step_clamp`]'s.
+pub(super) fn step_end(
     clamp: &BodyClamp,
     layout: &SystemLayout,
     dpn: usize,
     rotation_a: &[[f64; 3]; 3],
     xb: &[f64; 18],
     x: &[f64],
-) -> ([f64; 3], [f64; 3]) {
+) -> ClampStepEnd {
     let at = ClampIndices::of(clamp, layout, dpn);
     let sign = layout.lines[clamp.line].scheme.multiplier_sign();
     let (e_b, w_b) = (values(x, &at.r_x[1]), values(x, &at.r_x[2]));
-    let (mut on_line, mut on_body) = ([0.0; 3], [0.0; 3]);
+    let mut end = ClampStepEnd::default();
     for k in 0..2 {
-        let lambda = sign * x[at.multipliers[2][k]];
+        let lambda = at.multipliers.map(|m| x[m[k]]);
         let jets = frame_jets(rotation_a, clamp.local.normals[k], xb);
-        let (nb, nbd) = &jets.end;
+        let ((na, nad), (nb, nbd)) = (&jets.start, &jets.end);
         let (slope, rate) = (project(w_b, nb), project(e_b, nbd));
         for c in 0..3 {
-            on_line[c] += lambda * nbd[c].v;
-            on_body[c] += lambda * (slope.g[c] + rate.g[c]);
+            end.reaction[c] += lambda[0] * na[c].v + lambda[1] * nad[c].v;
+            end.on_line[c] += sign * lambda[2] * nbd[c].v;
+            end.on_body[c] += sign * lambda[2] * (slope.g[c] + rate.g[c]);
         }
     }
-    (on_line, on_body)
+    end
 }
 
 /// Adds clamp `clamp`'s static terms at x: the hold n_k(theta) . r_x = 0
@@ -416,30 +429,6 @@ pub(super) fn add_static_clamp<J: AddEntries>(
             }
         }
     }
-}
-
-/// The reaction of clamp `clamp` in its r_x's row (0,e) at converged
-/// unknowns x (B38) without the multipliers' sign, as a fixed hold's is
-/// summed (`Simulation::clamp_moments`): sum_k lambda_(0,e),k n_k(a) +
-/// lambda_(0,w),k n_k'(a). `rotation_a`, `xb` as [`add_step_clamp`]'s.
-pub(super) fn start_reaction(
-    clamp: &BodyClamp,
-    layout: &SystemLayout,
-    dpn: usize,
-    rotation_a: &[[f64; 3]; 3],
-    xb: &[f64; 18],
-    x: &[f64],
-) -> [f64; 3] {
-    let at = ClampIndices::of(clamp, layout, dpn);
-    let mut q = [0.0; 3];
-    for k in 0..2 {
-        let (na, nad) = frame_jets(rotation_a, clamp.local.normals[k], xb).start;
-        let (l0, l1) = (x[at.multipliers[0][k]], x[at.multipliers[1][k]]);
-        for c in 0..3 {
-            q[c] += l0 * na[c].v + l1 * nad[c].v;
-        }
-    }
-    q
 }
 
 /// The moment (global) clamp `clamp` puts on its body at a static

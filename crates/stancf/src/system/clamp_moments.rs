@@ -4,7 +4,7 @@
 //! the frame's normals; over a step, as a fixed hold's (§6.10), the
 //! reaction of r_x's row (0,e) (B38) and the impulse at t_b, over dt.
 
-use super::body_clamps::{start_reaction, static_moment};
+use super::body_clamps::{static_moment, step_end, ClampStepEnd};
 use super::{SystemSimulation, SystemStatics};
 use crate::constraints::DirectionHold;
 use crate::model::{coordinate, SLOT_R_X};
@@ -21,34 +21,34 @@ impl SystemSimulation {
             .fold([0.0; 3], |m, (_, on)| add(m, *on))
     }
 
-    /// The clamps' reactions in their r_x rows (0,e) at the converged
-    /// step (before the bodies move to its end).
-    pub(super) fn clamp_start_reactions(&mut self) {
-        self.clamp_reactions.clear();
+    /// What the converged step leaves of each clamp ([`ClampStepEnd`]),
+    /// at the bodies' step start (before they move to its end).
+    pub(super) fn clamp_step_ends(&mut self) {
+        self.clamp_ends.clear();
         for clamp in self.topology.body_clamps() {
             let body = self.bodies.iter().find(|b| b.index == clamp.body);
             let body = body.expect("a clamp's body is free");
             let xb = body.unknowns(&self.layout, &self.x);
             let dpn = self.lines[clamp.line].model().dofs_per_node();
             let rotation = body.body.rotation();
-            let q = start_reaction(clamp, &self.layout, dpn, &rotation, &xb, &self.x);
-            self.clamp_reactions.push(q);
+            let end = step_end(clamp, &self.layout, dpn, &rotation, &xb, &self.x);
+            self.clamp_ends.push(end);
         }
     }
 
     /// The clamps' mean moments on their bodies over the step, once the
     /// end rates are set: Q = (the row (0,e)'s reaction + M v_b - p_b) /
-    /// dt with p_b the line's end momentum and the clamp's share `extra`
-    /// of (B39).
-    pub(super) fn collect_clamp_moments(&mut self, extra: &[[f64; 3]], dt: f64) {
+    /// dt with p_b the line's end momentum and the clamp's share of (B39).
+    pub(super) fn collect_clamp_moments(&mut self, dt: f64) {
         self.clamp_moments.clear();
         let clamps = self.topology.body_clamps();
         for (k, clamp) in clamps.iter().enumerate() {
             let line = &self.lines[clamp.line];
             let o = coordinate(line.model().dofs_per_node(), clamp.node, SLOT_R_X, 0);
             let e = line.end_coordinates();
-            let impulse = sub(line.hold_end_impulse(clamp.hold), extra[k]);
-            let q = scale(1.0 / dt, add(self.clamp_reactions[k], impulse));
+            let end = &self.clamp_ends[k];
+            let impulse = sub(line.hold_end_impulse(clamp.hold), end.on_line);
+            let q = scale(1.0 / dt, add(end.reaction, impulse));
             let moment = DirectionHold::moment([e[o], e[o + 1], e[o + 2]], q);
             self.clamp_moments.push(scale(-1.0, moment));
         }
@@ -71,4 +71,18 @@ impl SystemStatics {
         }
         m
     }
+}
+
+/// The share of body b's dA/dtheta_b of the clamps `clamps` at the ends
+/// `ends` of a step (B39).
+pub(super) fn clamp_turn(
+    clamps: &[super::body_clamps::BodyClamp],
+    ends: &[ClampStepEnd],
+    b: usize,
+) -> [f64; 3] {
+    clamps
+        .iter()
+        .zip(ends)
+        .filter(|(c, _)| c.body == b)
+        .fold([0.0; 3], |m, (_, end)| add(m, end.on_body))
 }

@@ -32,6 +32,7 @@
 //! n_k . v + c_k . Omega = 0 and the hold's impulse reaches the body's
 //! rows ([`ClampMass`]).
 
+use super::body_clamps::ClampStepEnd;
 use super::body_terms::StepBody;
 use super::clamp_mass::{ClampMass, HeldEntry};
 use super::layout::{LineView, SystemLayout};
@@ -154,7 +155,7 @@ impl SystemMass {
         point_momentum: &[[f64; 3]],
         bodies: &mut [StepBody],
         body_momentum: &[[f64; 6]],
-        clamp_momentum: &[[f64; 3]],
+        clamp_ends: &[ClampStepEnd],
     ) -> Result<(), crate::band::SingularMatrix> {
         self.refactorize(system, lines, bodies)?;
         self.rates.fill(0.0);
@@ -169,10 +170,14 @@ impl SystemMass {
                 }
             }
         }
-        for (clamp, extra) in system.body_clamps().iter().zip(clamp_momentum) {
+        for (clamp, end) in system.body_clamps().iter().zip(clamp_ends) {
             let at = ClampMass::of(clamp, &self.layout, lines, bodies);
             let raw = held[clamp.line][clamp.hold];
-            at.add_momentum(&mut self.rates, crate::vec3::add(raw, *extra), *extra);
+            at.add_momentum(
+                &mut self.rates,
+                crate::vec3::add(raw, end.on_line),
+                end.on_line,
+            );
         }
         for (p, momentum) in point_momentum.iter().enumerate() {
             for (c, &pc) in momentum.iter().enumerate() {

@@ -71,9 +71,9 @@ pub struct SystemSimulation {
     pub(super) body_rows: Vec<f64>,
     /// The free bodies' generalized momenta at a step's end (B14).
     pub(super) body_momentum: Vec<[f64; 6]>,
-    /// Per clamp at a free body (§15.19): its reaction in r_x's row (0,e)
-    /// over the step, and its mean moment on the body over the last step.
-    pub(super) clamp_reactions: Vec<[f64; 3]>,
+    /// Per clamp at a free body (§15.19): what the converged step leaves
+    /// of it, and its mean moment on the body over the last step.
+    pub(super) clamp_ends: Vec<super::body_clamps::ClampStepEnd>,
     pub(super) clamp_moments: Vec<[f64; 3]>,
     /// Global indices of free point p's unknowns, `[3 slot + c]`.
     pub(super) point_index: Vec<Vec<usize>>,
@@ -191,7 +191,7 @@ impl SystemSimulation {
             mass,
             body_rows: vec![0.0; n],
             body_momentum: vec![[0.0; 6]; bodies.len()],
-            clamp_reactions: Vec::with_capacity(topology.body_clamps().len()),
+            clamp_ends: Vec::with_capacity(topology.body_clamps().len()),
             clamp_moments: vec![[0.0; 3]; topology.body_clamps().len()],
             bodies,
             point_momentum: vec![[0.0; 3]; topology.points().len()],

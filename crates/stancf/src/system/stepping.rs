@@ -4,8 +4,8 @@
 //! §11.14), and the lines, the end forces (§6.5, (M23)) and the points
 //! take the converged step.
 
-use super::body_clamps::clamp_end_shares;
 use super::body_terms::PinHold;
+use super::clamp_moments::clamp_turn;
 use super::end_forces::position_row_sum;
 use super::layout::add_line_rows;
 use super::point_terms::PointTerms;
@@ -114,7 +114,7 @@ impl SystemSimulation {
     /// free points takes the end rates from the system's mass matrix
     /// (docs/method.md §11.10), the others from each line's own.
     pub(super) fn finish_lines(&mut self, report: NewtonReport) -> Result<(), SolverError> {
-        self.clamp_start_reactions();
+        self.clamp_step_ends();
         let Some(mass) = &mut self.mass else {
             for line in &mut self.lines {
                 line.finish_step(report);
@@ -156,37 +156,17 @@ impl SystemSimulation {
                 }
             }
         }
-        // The clamps' shares of the end momenta (B39), at the bodies' step
-        // start.
-        // (no allocation without clamps)
-        let clamps = self.topology.body_clamps();
-        let mut clamp_momentum = Vec::new();
-        let mut clamp_turn = Vec::new();
-        for clamp in clamps {
-            let k = self.bodies.iter().position(|b| b.index == clamp.body);
-            let k = k.expect("a clamp's body is free");
-            let body = &self.bodies[k];
-            let xb = body.unknowns(&self.layout, &self.x);
-            let dpn = self.lines[clamp.line].model().dofs_per_node();
-            let rotation = body.body.rotation();
-            let (on_line, on_body) =
-                clamp_end_shares(clamp, &self.layout, dpn, &rotation, &xb, &self.x);
-            clamp_momentum.push(on_line);
-            clamp_turn.resize(self.bodies.len(), [0.0; 3]);
-            clamp_turn[k] = crate::vec3::add(clamp_turn[k], on_body);
-        }
-        for (k, body) in self.bodies.iter_mut().enumerate() {
+        for k in 0..self.bodies.len() {
+            let clamps = self.topology.body_clamps();
+            let clamp_turn = clamp_turn(clamps, &self.clamp_ends, self.bodies[k].index);
+            let body = &mut self.bodies[k];
             let xb = body.unknowns(&self.layout, &self.x);
             let (layout, rows) = (&self.layout, &self.body_rows);
             let end_rows = |p: usize| -> [f64; 3] {
                 std::array::from_fn(|c| rows[layout.point_unknown(p, 2, c).expect("border")])
             };
             let (momentum, centre_row) = body
-                .end_momentum(
-                    &xb,
-                    end_rows,
-                    clamp_turn.get(k).copied().unwrap_or([0.0; 3]),
-                )
+                .end_momentum(&xb, end_rows, clamp_turn)
                 .ok_or_else(|| singular(self.t, self.steps, "a body's J_r(theta_b) is singular"))?;
             self.body_momentum[k] = momentum;
             // A joint's child (before its parent): its centre's end row
@@ -210,7 +190,7 @@ impl SystemSimulation {
             &self.point_momentum,
             &mut self.bodies,
             &self.body_momentum,
-            &clamp_momentum,
+            &self.clamp_ends,
         )
         .map_err(|_| {
             singular(
@@ -219,7 +199,7 @@ impl SystemSimulation {
                 "the system's mass matrix is singular (a free body without mass or inertia?)",
             )
         })?;
-        self.collect_clamp_moments(&clamp_momentum, self.settings.time_step);
+        self.collect_clamp_moments(self.settings.time_step);
         for line in &mut self.lines {
             line.close_step(report);
         }
