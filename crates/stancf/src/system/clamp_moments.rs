@@ -4,7 +4,7 @@
 //! the frame's normals; over a step, as a fixed hold's (§6.10), the
 //! reaction of r_x's row (0,e) (B38) and the impulse at t_b, over dt.
 
-use super::body_clamps::{static_moment, step_end, ClampStepEnd};
+use super::body_clamps::{static_moment, step_end, BodyClamp, ClampStepEnd};
 use super::{SystemSimulation, SystemStatics};
 use crate::constraints::DirectionHold;
 use crate::model::{coordinate, SLOT_R_X};
@@ -15,10 +15,8 @@ impl SystemSimulation {
     /// it, averaged over the last step; zero before the first, and for a
     /// body nothing is clamped to.
     pub fn clamp_moment(&self, b: usize) -> [f64; 3] {
-        let clamps = self.topology.body_clamps().iter().zip(&self.clamp_moments);
-        clamps
-            .filter(|(c, _)| c.body == b)
-            .fold([0.0; 3], |m, (_, on)| add(m, *on))
+        let moments = self.clamp_moments.iter().copied();
+        sum_at_body(self.topology.body_clamps(), moments, b)
     }
 
     /// What the converged step leaves of each clamp ([`ClampStepEnd`]),
@@ -75,14 +73,16 @@ impl SystemStatics {
 
 /// The share of body b's dA/dtheta_b of the clamps `clamps` at the ends
 /// `ends` of a step (B39).
-pub(super) fn clamp_turn(
-    clamps: &[super::body_clamps::BodyClamp],
-    ends: &[ClampStepEnd],
-    b: usize,
-) -> [f64; 3] {
+pub(super) fn clamp_turn(clamps: &[BodyClamp], ends: &[ClampStepEnd], b: usize) -> [f64; 3] {
+    sum_at_body(clamps, ends.iter().map(|end| end.on_body), b)
+}
+
+/// The sum of `values` (one per clamp of `clamps`) over the clamps at body
+/// b.
+fn sum_at_body(clamps: &[BodyClamp], values: impl Iterator<Item = [f64; 3]>, b: usize) -> [f64; 3] {
     clamps
         .iter()
-        .zip(ends)
+        .zip(values)
         .filter(|(c, _)| c.body == b)
-        .fold([0.0; 3], |m, (_, end)| add(m, end.on_body))
+        .fold([0.0; 3], |m, (_, v)| add(m, v))
 }
