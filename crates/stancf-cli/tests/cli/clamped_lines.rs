@@ -170,6 +170,21 @@ fn lines_with_bending_stiffness_at_a_bodys_rod_and_a_connector_balance_and_stay(
     let (header, rows) = read_csv(&out.join("bodies.csv"));
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     let at_rest: Vec<&Vec<f64>> = rows.iter().collect();
+    // The body the lines are clamped to has its mooring stiffness (the
+    // clamps' moments in it, docs/method.md §15.9); the connector none.
+    let s = read_json(&out.join("summary.json"));
+    let stiffness = &s["bodies"][0]["stiffness"];
+    assert_eq!(stiffness.as_array().map(Vec::len), Some(6), "{s}");
+    assert_eq!(s["bodies"][1]["stiffness"], serde_json::Value::Null);
+    let note = s["bodies"][1]["stiffness_note"].as_str().unwrap();
+    assert!(note.contains("a connector"), "{note}");
+    let csv = std::fs::read_to_string(out.join("stiffness.csv")).unwrap();
+    let ids: Vec<&str> = csv
+        .lines()
+        .skip(1)
+        .map(|l| &l[..l.find(',').unwrap()])
+        .collect();
+    assert_eq!(ids, ["1"; 6], "the body's six rows, none for the connector");
     let dynamic = write_scenario(
         &d,
         "dynamic.toml",
@@ -268,4 +283,53 @@ fn a_toml_cantilever_holding_a_body_bends_and_turns_it() {
         "{}",
         r[col("my")]
     );
+}
+
+/// MoorDyn's local_euler complex_system (its test deck, a fixture): a
+/// small free body (29.5 kg, 0.014 m^3) tethered to the bed by 7 m of
+/// nylon, between two connectors on stiffeners of 3.12 m (EA 3.6e8 N,
+/// EI 3.8e4 N m^2) that the deck places 3.5 m apart, one on 147 m of
+/// cable to an anchor, the other on a riser with a buoyant section over
+/// two more connectors to a coupled point. The catenary network has to
+/// take the stiffeners' 4.3e7 N of stretch away before the path (M32)
+/// starts (docs/method.md §11.6); it did not within 60 iterations, and
+/// the path from the deck's positions stalled at load factor 0.32. At
+/// the equilibrium the lines carry the body's wet weight,
+/// (m - rho V) g with MoorDyn's g, and nothing else on it or on the
+/// massless connectors: to 1e-8 of the largest tension (6e4 N; the static
+/// tolerance is 1e-10 of the rows).
+#[test]
+fn moordyns_complex_system_balances_its_body_and_connectors_from_stretched_stiffeners() {
+    let d = scratch("complex-system");
+    let deck = d.join("complex_system.txt");
+    std::fs::copy(
+        repo_file("crates/stancf-cli/tests/fixtures/complex-system-moordyn.txt"),
+        &deck,
+    )
+    .unwrap();
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let tensions = read_tensions(&out.join("tensions.csv"));
+    let largest = tensions.iter().fold(0.0f64, |m, r| m.max(r[6]));
+    assert!(largest > 5e4, "{largest}");
+    let wet_weight = (29.5 - 1025.0 * 0.014) * 9.80665;
+    assert_eq!(rows.len(), 5, "the body and four connectors");
+    for r in &rows {
+        let lift = if r[col("body")] == 1.0 {
+            wet_weight
+        } else {
+            0.0
+        };
+        for (c, want) in [("fx", 0.0), ("fy", 0.0), ("fz", lift)] {
+            assert!(
+                (r[col(c)] - want).abs() < 1e-8 * largest,
+                "body {}: {c} {} against {want}",
+                r[col("body")],
+                r[col(c)]
+            );
+        }
+    }
 }

@@ -3,26 +3,38 @@
 //! change as the body is moved, everything else (lines, free points,
 //! other free bodies) staying in equilibrium.
 //!
-//! The lines' condensed stiffness at the body's points, K_PQ = d(rows at
-//! P)/d x_Q = -d f_P / d x_Q (f_P the lines' force on P), is the Schur
-//! complement of the static Jacobian onto the points' unknowns, with the
-//! body taken out (its points' rows left as the lines' rows). Moving the
-//! body's reference point by dr and turning it by a small rotation dphi
-//! (global axes, about the reference point) moves P by dr + dphi x a_P
-//! (a_P = x_P - r) and turns the arm, so the lines' force F = sum f_P and
-//! moment M = sum a_P x f_P about the reference point change by
+//! A free body's: the Schur complement of the static Jacobian onto the
+//! body's own unknowns q = [r_G; theta] (R = R* exp([theta]), the chart
+//! centred at the equilibrium's rotation R*), with the body *bare*: its
+//! own weight, buoyancy, water, loads and holds taken off, so that its
+//! rows rho(q) = -[F; J_r(theta)^T R^T M_G] are the lines' (their force
+//! F and moment M_G about the centre of mass, the points' pull and the
+//! clamps' reactions alike, §15.19). With S = d rho / d q condensed,
+//! c = R* xi_G the centre from the reference point, and the body moved
+//! by dr at its reference point and turned by dphi about global axes
+//! through it (dq = A [dr; dphi], A = [[I, -[c x]], [0, R*^T]]),
 //!
 //! ```text
-//!   K = -d[F; M]/d[dr; dphi]
-//!     = sum_PQ [ K_PQ          -K_PQ [a_Q x]        ]
-//!              [ [a_P x] K_PQ  -[a_P x] K_PQ [a_Q x] ]  -  sum_P [ 0  0                        ]   (B16)
+//!   T = S A,   K = -d[F; M]/d[dr; dphi]
+//!     = [ T_r                                                      ]   (B16)
+//!       [ R* T_theta + [c x] T_r + [0,  1/2 [M_G x] - [F x][c x]]  ]
+//! ```
+//!
+//! (M = M_G + c x F about the reference point; the 1/2 [M_G x] is the
+//! chart's: R J_r^-T = R* (I + [theta x]/2) to first order). Not
+//! symmetric where the lines pull. A coupled body's points are held by
+//! the host: theirs is condensed onto its points (K_PQ), made free
+//! points of nothing of their own, and carried to the body by
+//!
+//! ```text
+//!   K = sum_PQ [ K_PQ          -K_PQ [a_Q x]        ]
+//!              [ [a_P x] K_PQ  -[a_P x] K_PQ [a_Q x] ]  -  sum_P [ 0  0                        ]   (B16a)
 //!                                                               [ 0  a_P f_P^T - (a_P . f_P) I ]
 //! ```
 //!
-//! exact (the derivatives of the lines' rows, not differences), the
-//! matrix designers take from MoorPy's finite differences; not symmetric
-//! where the lines pull (the last term is the moment of the pull turning
-//! with the body).
+//! (a_P = x_P - r). Both exact (the derivatives of the rows, not
+//! differences): the matrix designers take from MoorPy's finite
+//! differences.
 
 use super::SystemStatics;
 use crate::bordered::{BorderedLu, BorderedMatrix};
@@ -43,40 +55,44 @@ impl SystemStatics {
     /// The mooring stiffness (B16) of free body b at the last converged
     /// increment (the equilibrium once [`SystemStatics::solve`] is done):
     /// rows F_x, F_y, F_z, M_x, M_y, M_z of the lines' force and moment
-    /// about its reference point (global axes), columns its reference
-    /// point's displacement and its small rotation about global axes
-    /// through the reference point; N/m, N/rad, N m/m, N m/rad. None for a
-    /// fixed body, if the rest of the system is singular with the body
-    /// held, or for a body lines are clamped to (§15.19: (B16) would miss
-    /// the change of the clamps' moments as it turns; not built yet).
+    /// about its reference point (global axes; the moments of the clamps
+    /// of §15.19 included), columns its reference point's displacement
+    /// and its small rotation about global axes through the reference
+    /// point; N/m, N/rad, N m/m, N m/rad. None for a fixed body, a
+    /// pinned body (its pin holds its translation), a connector (§15.20:
+    /// a joint of its lines, no body of its own), or if the rest of the
+    /// system is singular with the body held.
     pub fn body_stiffness(&mut self, b: usize) -> Option<[[f64; 6]; 6]> {
-        if self.system().holds_clamps(b) {
-            return None;
-        }
         let body = self.system().bodies().get(b)?;
         if body.kind == super::BodyKind::Coupled {
             return self.coupled_body_stiffness(b, body.position);
         }
-        if body.pin.is_some() {
-            // A pinned body does not translate: no 6 x 6 of its own.
+        if body.pin.is_some() || body.connector {
             return None;
         }
-        let (reference, _) = self.body_pose(b)?;
         let k = self.equations.bodies.iter().position(|s| s.index == b)?;
-        let x = self.newton.x.clone();
         let eq = &mut self.equations;
-        let body = eq.bodies.remove(k);
-        let points: Vec<usize> = body.points.iter().map(|bp| bp.point).collect();
-        let body_unknowns: Vec<usize> = (0..6)
+        let unknowns: Vec<usize> = (0..6)
             .map(|q| eq.layout.body_unknown(b, 0, q).expect("a free body"))
             .collect();
-        let kpq = condensed(eq, &x, &points, &body_unknowns);
-        eq.bodies.insert(k, body);
-        let kpq = kpq?;
-        Some(self.assemble_at(&kpq, &points, reference))
+        // The body bare, its chart centred at the equilibrium (theta = 0
+        // at R*): its rows are the lines' force and moment.
+        let saved = eq.bodies[k].clone();
+        let mut x = self.newton.x.clone();
+        let q = saved.unknowns(&eq.layout, &x);
+        let rotation = saved.rotation_at(&q);
+        eq.bodies[k] = saved.bare(rotation);
+        for &i in &unknowns[3..] {
+            x[i] = 0.0;
+        }
+        let condensed = condensed_onto(eq, &x, &unknowns);
+        eq.bodies[k] = saved.clone();
+        let (s, rows) = condensed?;
+        let centre = crate::body::pose::rotate(&rotation, saved.centre_of_mass);
+        Some(from_chart(&s, &rows, &rotation, centre))
     }
 
-    /// (B16) from the condensed K_PQ at `points` about `reference`.
+    /// (B16a) from the condensed K_PQ at `points` about `reference`.
     fn assemble_at(&self, kpq: &[f64], points: &[usize], reference: [f64; 3]) -> [[f64; 6]; 6] {
         let arms: Vec<[f64; 3]> = points
             .iter()
@@ -86,7 +102,7 @@ impl SystemStatics {
         assemble_stiffness(kpq, &arms, &forces)
     }
 
-    /// The mooring stiffness (B16) of coupled body b (moved by a host) at
+    /// The mooring stiffness (B16a) of coupled body b (moved by a host) at
     /// the last converged increment, about `reference` (its reference
     /// point where the host holds it), as [`Self::body_stiffness`]: how
     /// the lines' force and moment on it change as the host moves it,
@@ -146,40 +162,37 @@ impl SystemStatics {
         // At the end of the path (M32): the seeds' axial forces gone.
         statics.equations.set_load_factor(1.0);
         let x = statics.newton.x.clone();
-        condensed(&mut statics.equations, &x, points, &[])
+        let eq = &mut statics.equations;
+        let ys = points
+            .iter()
+            .flat_map(|&p| (0..3).map(move |c| (p, c)))
+            .map(|(p, c)| eq.layout.point_unknown(p, 0, c))
+            .collect::<Option<Vec<usize>>>()?;
+        condensed_onto(eq, &x, &ys).map(|(k, _)| k)
     }
 }
 
-/// The condensed stiffness K_PQ = J_PP - J_P,rest J_rest^-1 J_rest,P of
-/// the static rows at `points` (row-major over their 3 n coordinates),
-/// with `points` and `also_held` (global unknowns) held: the derivative
-/// of the rows at the points (the lines' and the other loads' there, -f_P)
-/// as the points move, everything else in equilibrium. None where the
-/// rest is singular.
-fn condensed(
+/// The static Jacobian condensed onto the unknowns `ys`: S = J_yy -
+/// J_y,rest J_rest^-1 J_rest,y (row-major, m x m), the derivative of
+/// their rows as they move with everything else in equilibrium, and
+/// their rows at x. None where the rest is singular with them held.
+fn condensed_onto(
     eq: &mut super::statics::SystemEquations,
     x: &[f64],
-    points: &[usize],
-    also_held: &[usize],
-) -> Option<Vec<f64>> {
+    ys: &[usize],
+) -> Option<(Vec<f64>, Vec<f64>)> {
     let n = eq.layout.size;
     let mut jac = BorderedMatrix::new(&eq.layout.shapes, eq.layout.border);
     let mut residual = vec![0.0; n];
     eq.evaluate(x, &mut residual, Some(&mut jac));
     let layout = &eq.layout;
-    let ys: Vec<usize> = points
-        .iter()
-        .flat_map(|&p| (0..3).map(move |c| (p, c)))
-        .map(|(p, c)| layout.point_unknown(p, 0, c))
-        .collect::<Option<Vec<usize>>>()?;
-    let held: Vec<usize> = ys.iter().chain(also_held).copied().collect();
     let column = |j: usize| -> Vec<f64> { (0..n).map(|i| jac.get(i, j)).collect() };
     let row = |i: usize| -> Vec<f64> { (0..n).map(|j| jac.get(i, j)).collect() };
     let columns: Vec<Vec<f64>> = ys.iter().map(|&j| column(j)).collect();
     let rows: Vec<Vec<f64>> = ys.iter().map(|&i| row(i)).collect();
-    // The rest of the system with the points (and the body) held: their
-    // rows and columns made the identity.
-    for &i in &held {
+    // The rest of the system with the unknowns ys held: their rows and
+    // columns made the identity.
+    for &i in ys {
         jac.clear_border_row(i);
         jac.clear_border_column(i);
         jac.add(i, i, 1.0);
@@ -188,18 +201,57 @@ fn condensed(
     lu.matrix_mut().copy_from(&jac);
     lu.factorize().ok()?;
     let m = ys.len();
-    let mut kpq = vec![0.0; m * m];
+    let mut s = vec![0.0; m * m];
     for (c, col) in columns.iter().enumerate() {
         let mut w = col.clone();
-        for &i in &held {
+        for &i in ys {
             w[i] = 0.0;
         }
         lu.solve(&mut w);
         for (r, row) in rows.iter().enumerate() {
-            kpq[r * m + c] = row[ys[c]] - dot_all(row, &w);
+            s[r * m + c] = row[ys[c]] - dot_all(row, &w);
         }
     }
-    Some(kpq)
+    Some((s, ys.iter().map(|&i| residual[i]).collect()))
+}
+
+/// (B16) of a free body from its condensed S = d rho / d q (6 x 6,
+/// row-major) and its rows rho in the chart centred at `rotation` (R*),
+/// its centre of mass at `centre` (c) from its reference point: see the
+/// module's text.
+fn from_chart(s: &[f64], rho: &[f64], rotation: &[[f64; 3]; 3], centre: [f64; 3]) -> [[f64; 6]; 6] {
+    // dq = A [dr; dphi]: dr_G = dr - [c x] dphi, dtheta = R*^T dphi.
+    let mut a = [[0.0; 6]; 6];
+    let hc = hat(centre);
+    for i in 0..3 {
+        a[i][i] = 1.0;
+        for j in 0..3 {
+            a[i][3 + j] = -hc[i][j];
+            a[3 + i][3 + j] = rotation[j][i];
+        }
+    }
+    let t: [[f64; 6]; 6] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| (0..6).map(|l| s[6 * i + l] * a[l][j]).sum())
+    });
+    let force = [-rho[0], -rho[1], -rho[2]];
+    let moment = crate::body::pose::rotate(rotation, [-rho[3], -rho[4], -rho[5]]);
+    let turning = mul(&hat(force), &hc);
+    let hm = hat(moment);
+    let mut k = [[0.0; 6]; 6];
+    for j in 0..6 {
+        for i in 0..3 {
+            k[i][j] = t[i][j];
+            k[3 + i][j] = (0..3)
+                .map(|l| rotation[i][l] * t[3 + l][j] + hc[i][l] * t[l][j])
+                .sum();
+        }
+    }
+    for i in 0..3 {
+        for j in 0..3 {
+            k[3 + i][3 + j] += 0.5 * hm[i][j] - turning[i][j];
+        }
+    }
+    k
 }
 
 /// sum_i a_i b_i.
@@ -207,7 +259,7 @@ fn dot_all(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// (B16) from the condensed K_PQ (row-major over the points' 3 n
+/// (B16a) from the condensed K_PQ (row-major over the points' 3 n
 /// coordinates), the arms a_P and the lines' forces f_P.
 fn assemble_stiffness(kpq: &[f64], arms: &[[f64; 3]], forces: &[[f64; 3]]) -> [[f64; 6]; 6] {
     let m = 3 * arms.len();

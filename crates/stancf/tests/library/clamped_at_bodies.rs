@@ -104,6 +104,205 @@ fn a_cantilever_holding_a_body_bends_and_turns_it_as_euler_bernoulli_says() {
     }
 }
 
+/// The mooring stiffness (B16) of a body held by a straight, unloaded
+/// beam clamped at both ends (at a fixed point and at the body's
+/// reference point): the end stiffness of Euler-Bernoulli's clamped
+/// beam, EA/L along it and, across it,
+///
+/// ```text
+///   [F_z; M_y] = -EI/L^3 [ 12   6L   ] [dz   ]      [F_y; M_z] = -EI/L^3 [ 12   -6L  ] [dy   ]
+///                        [ 6L   4L^2 ] [dphi_y],                        [ -6L  4L^2 ] [dphi_z]
+/// ```
+///
+/// (a turn about y tilts the end's tangent down, one about z sideways),
+/// nothing about the beam's axis (a cable has no torsion). Cubic
+/// Hermite elements are exact for it, so K agrees to round-off: each
+/// entry to 1e-9 of its block's largest (EA 100 N, EI 1 N m^2, 1 m).
+/// The clamp's reactions are the moment's whole source here: the
+/// points' pull alone gives no bending stiffness.
+#[test]
+fn a_body_held_by_a_clamped_beam_has_its_end_stiffness() {
+    let (ea, ei, l) = (100.0, 1.0, 1.0);
+    let body = Body::new(
+        BodyKind::Free,
+        [l, 0.0, 0.0],
+        IDENTITY,
+        RigidInertia::principal(1.0, [0.2, 0.1, -0.1], [1e-2, 2e-2, 2e-2]),
+    );
+    let line = Line {
+        model: straight([0.0; 3], [l, 0.0, 0.0], 4, stocky()),
+        ends: [End::Point(0), End::Point(1)],
+    };
+    let line = line.clamped(0, [1.0, 0.0, 0.0]).unwrap();
+    let line = line.clamped(1, [1.0, 0.0, 0.0]).unwrap();
+    let points = vec![Point::fixed([0.0; 3]), Point::on_body(0, [0.0; 3])];
+    let system = System::with_bodies(vec![line], points, vec![body], [0.0; 3]).expect("system");
+    let mut statics = crate::common::seeded_equilibrium(system, 1e-13);
+    let k = statics
+        .body_stiffness(0)
+        .expect("a clamped body's stiffness");
+    let (b, s) = (ei / l.powi(3), 6.0 * ei / l.powi(2));
+    let mut want = [[0.0; 6]; 6];
+    want[0][0] = ea / l;
+    (want[1][1], want[1][5], want[5][1], want[5][5]) = (12.0 * b, -s, -s, 4.0 * ei / l);
+    (want[2][2], want[2][4], want[4][2], want[4][4]) = (12.0 * b, s, s, 4.0 * ei / l);
+    let scale = |i: usize, j: usize| if i == 0 || j == 0 { ea / l } else { 12.0 * b };
+    let mut worst = 0.0f64;
+    for i in 0..6 {
+        eprintln!("{:?}", k[i].map(|v| (v * 1e6).round() / 1e6));
+        for j in 0..6 {
+            worst = worst.max((k[i][j] - want[i][j]).abs() / scale(i, j));
+        }
+    }
+    eprintln!("against the clamped beam's end stiffness: {worst:.1e}");
+    assert!(worst < 1e-9, "{worst:e}");
+}
+
+/// A stocky line (EA 100 N, EI 1 N m^2): its bending and stretching
+/// stiffnesses of one size over a metre.
+fn stocky() -> Material {
+    Material {
+        youngs_modulus: 1e6,
+        density: 1000.0,
+        area: 1e-4,
+        second_moment: 1e-6,
+        axial_damping: 0.0,
+    }
+}
+
+/// A body at (1, 0, 0) held by two stocky 1 m beams clamped at both ends,
+/// one along x from the origin, one along y from (1, -1, 0) (each one's
+/// bending holds the other's twist), loaded by `load` at `arm` from its
+/// reference point and by `extra`, a force and a moment at the reference
+/// point; no gravity.
+fn cross_braced(load: [f64; 3], arm: [f64; 3], extra: [f64; 6]) -> System {
+    let mut body = Body::new(
+        BodyKind::Free,
+        [1.0, 0.0, 0.0],
+        IDENTITY,
+        RigidInertia::principal(1.0, [0.2, 0.1, -0.1], [1e-2, 2e-2, 2e-2]),
+    );
+    body.loads.push((load, arm));
+    body.loads.push(([extra[0], extra[1], extra[2]], [0.0; 3]));
+    body.moment = [extra[3], extra[4], extra[5]];
+    let beam = |from: [f64; 3], a: usize, along: [f64; 3]| {
+        let line = Line {
+            model: straight(from, [1.0, 0.0, 0.0], 8, stocky()),
+            ends: [End::Point(a), End::Point(2)],
+        };
+        line.clamped(0, along).unwrap().clamped(1, along).unwrap()
+    };
+    let lines = vec![
+        beam([0.0; 3], 0, [1.0, 0.0, 0.0]),
+        beam([1.0, -1.0, 0.0], 1, [0.0, 1.0, 0.0]),
+    ];
+    let points = vec![
+        Point::fixed([0.0; 3]),
+        Point::fixed([1.0, -1.0, 0.0]),
+        Point::on_body(0, [0.0; 3]),
+    ];
+    System::with_bodies(lines, points, vec![body], [0.0; 3]).expect("system")
+}
+
+/// The mooring stiffness (B16) of a loaded body two clamped beams hold,
+/// against differences of its equilibrium under small extra loads: the
+/// pose moves by dz with (K + K_own) dz = dL, K_own = -[P x][a x] in
+/// the turn (the load P at the arm a turning with the body), so K is
+/// (dz/dL)^-1 - K_own. At P L^2/EI = 0.3 the clamps' multipliers and the
+/// lines' moment are far from zero, so (B16)'s chart and pull terms
+/// count. Central differences over extra loads of h = 1e-3 and 5e-4
+/// (N, N m) fall as h^2; their Richardson extrapolation removes that,
+/// and what is left is the static tolerance (1e-13 of the rows) over h:
+/// asserted 1e-7 of the matrix's size.
+#[test]
+fn a_loaded_clamped_bodys_stiffness_is_the_derivative_of_its_equilibrium() {
+    let (load, arm) = ([0.1, 0.05, -0.3], [0.5, 0.2, 0.0]);
+    let solve =
+        |extra: [f64; 6]| crate::common::seeded_equilibrium(cross_braced(load, arm, extra), 1e-13);
+    let mut base = solve([0.0; 6]);
+    let k = base.body_stiffness(0).expect("stiffness");
+    let (position, rotation) = base.body_pose(0).unwrap();
+    let compliance = |h: f64| {
+        let mut c = [[0.0; 6]; 6];
+        for j in 0..6 {
+            let pose = |sign: f64| {
+                let mut extra = [0.0; 6];
+                extra[j] = sign * h;
+                let (at, turned) = solve(extra).body_pose(0).unwrap();
+                let turn = stancf::body::rotation::log_map(&stancf::vec3::mat3_mul(
+                    &turned,
+                    &stancf::vec3::mat3_transpose(&rotation),
+                ));
+                [
+                    at[0] - position[0],
+                    at[1] - position[1],
+                    at[2] - position[2],
+                    turn[0],
+                    turn[1],
+                    turn[2],
+                ]
+            };
+            let (up, down) = (pose(1.0), pose(-1.0));
+            for i in 0..6 {
+                c[i][j] = (up[i] - down[i]) / (2.0 * h);
+            }
+        }
+        c
+    };
+    let (coarse, fine) = (compliance(1e-3), compliance(5e-4));
+    let extrapolated: Vec<f64> = (0..36)
+        .map(|n| (4.0 * fine[n / 6][n % 6] - coarse[n / 6][n % 6]) / 3.0)
+        .collect();
+    let total = inverse(&extrapolated, 6);
+    // K_own = -[P x][a x] in the turn, a the arm turned with the body.
+    let a = stancf::body::pose::rotate(&rotation, arm);
+    let own = stancf::vec3::mat3_mul(&hat(load), &hat(a));
+    let size = k.iter().flatten().map(|v| v * v).sum::<f64>().sqrt();
+    let mut worst = 0.0f64;
+    for i in 0..6 {
+        eprintln!("{:?}", k[i].map(|v| (v * 1e4).round() / 1e4));
+        for j in 0..6 {
+            let own_ij = if i >= 3 && j >= 3 {
+                -own[i - 3][j - 3]
+            } else {
+                0.0
+            };
+            worst = worst.max((k[i][j] - (total[6 * i + j] - own_ij)).abs());
+        }
+    }
+    eprintln!(
+        "against the differences of the equilibrium: {:.1e} of {size:.3e}",
+        worst / size
+    );
+    assert!(worst < 1e-7 * size, "{:e}", worst / size);
+}
+
+/// The inverse of the n x n matrix `a` (row-major), by LU.
+fn inverse(a: &[f64], n: usize) -> Vec<f64> {
+    let mut lu = stancf::band::BandLu::new(n, n - 1, n - 1);
+    for i in 0..n {
+        for j in 0..n {
+            lu.matrix_mut().add(i, j, a[n * i + j]);
+        }
+    }
+    lu.factorize().expect("regular");
+    let mut inv = vec![0.0; n * n];
+    for j in 0..n {
+        let mut e = vec![0.0; n];
+        e[j] = 1.0;
+        lu.solve(&mut e);
+        for i in 0..n {
+            inv[n * i + j] = e[i];
+        }
+    }
+    inv
+}
+
+/// [a x], the cross-product matrix.
+fn hat(a: [f64; 3]) -> [[f64; 3]; 3] {
+    [[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]]
+}
+
 /// Three 1 m limp lines ([`whippy`]) of 8 SAC-2 leaving a body at its
 /// points `arms` at 120 degrees about z, 11 degrees above the x-y plane
 /// (ends A clamped there along them, ends B loose), the whole spinning at

@@ -36,10 +36,11 @@ const MISSING: &str = "no mooring stiffness: the rest of the system is singular 
 const PINNED: &str = "no mooring stiffness: a pinned rod's body turns about its pin, which \
                       holds its translation (no 6 x 6 matrix); stiffness.csv has no rows for it";
 
-/// Why a body lines are clamped to has none (docs/method.md §15.19).
-const CLAMPED: &str = "no mooring stiffness: lines are clamped to it, and the change of their \
-                       clamps' moments as it turns is not built into the matrix yet; \
-                       stiffness.csv has no rows for it";
+/// Why a connector has none (docs/method.md §15.20): a joint of its
+/// lines, not a body of its own.
+const CONNECTOR: &str = "no mooring stiffness: a connector (a free rod of zero length) is a \
+                         joint of its lines with no mass, loads or 6 x 6 matrix of its own; \
+                         stiffness.csv has no rows for it";
 
 /// Why body b has no matrix.
 fn missing(sc: &SystemScenario, system: &stancf::system::System, b: usize) -> &'static str {
@@ -49,8 +50,8 @@ fn missing(sc: &SystemScenario, system: &stancf::system::System, b: usize) -> &'
         .any(|r| r.own_body() == Some(b) && r.pin_point().is_some());
     if pinned {
         PINNED
-    } else if system.holds_clamps(b) {
-        CLAMPED
+    } else if system.bodies()[b].connector {
+        CONNECTOR
     } else {
         MISSING
     }
@@ -58,7 +59,7 @@ fn missing(sc: &SystemScenario, system: &stancf::system::System, b: usize) -> &'
 
 /// Each free body's matrix at the equilibrium `st` has converged to (in
 /// the order of the system's bodies); warns of a body without one (not
-/// of a pinned rod's, which has none by construction).
+/// of a pinned rod's or a connector's, which have none by construction).
 pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec<BodyStiffness> {
     let moving: Vec<usize> = (0..st.system().bodies().len())
         .filter(|&b| st.system().bodies()[b].kind != stancf::system::BodyKind::Fixed)
@@ -70,7 +71,7 @@ pub(super) fn at_equilibrium(st: &mut SystemStatics, sc: &SystemScenario) -> Vec
                 .body_stiffness(b)
                 .filter(|k| k.iter().flatten().all(|v| v.is_finite()));
             let why = missing(sc, st.system(), b);
-            if k.is_none() && why != PINNED {
+            if k.is_none() && why == MISSING {
                 eprintln!("warning: bodies (id {}): {why}", sc.bodies[b].id);
             }
             (b, k, why)

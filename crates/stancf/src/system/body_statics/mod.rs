@@ -94,6 +94,25 @@ impl StaticBody {
         layout.body_unknown(self.index, 0, k).expect("a free body")
     }
 
+    /// The body without anything of its own, its rows its lines' alone
+    /// (the points' pull and the clamps' reactions), theta measured from
+    /// `rotation`: no weight, buoyancy, water, loads, moment, pin or
+    /// holds (the mooring stiffness's body, §15.9).
+    pub fn bare(&self, rotation: [[f64; 3]; 3]) -> StaticBody {
+        StaticBody {
+            rotation,
+            forces: Vec::new(),
+            drag: None,
+            rods_water: None,
+            spin_hold: None,
+            yaw_hold: None,
+            pin: None,
+            float_hold: None,
+            moment: [0.0; 3],
+            ..self.clone()
+        }
+    }
+
     /// The body's rotation at unknowns q.
     pub fn rotation_at(&self, q: &[f64; 6]) -> [[f64; 3]; 3] {
         crate::vec3::mat3_mul(
