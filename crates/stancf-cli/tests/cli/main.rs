@@ -16,6 +16,7 @@ mod coupled_pinned;
 mod coupled_rods;
 mod coupling;
 mod deck_statics;
+mod deck_waves;
 mod decks_without_lines;
 mod extreme_values;
 mod figures_and_vtk;

@@ -33,6 +33,10 @@ pub enum SupportedOption {
     /// of `current_profile.txt` beside the deck (other modes are refused
     /// by the scenario that reads the deck).
     Currents,
+    /// `WaveKin`: MoorDyn-C's wave mode; 0 none, 7 the summed components
+    /// of `wave_frequencies.txt` beside the deck (other modes are refused
+    /// by the scenario that reads the deck).
+    WaveKin,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
     /// MoorDyn ignores it.
@@ -54,6 +58,7 @@ impl SupportedOption {
             SupportedOption::StaticDynamicFrictionScale => "StatDynFricScale",
             SupportedOption::OutputInterval => "dtOut",
             SupportedOption::Currents => "Currents",
+            SupportedOption::WaveKin => "WaveKin",
             SupportedOption::Courant => "CFL",
         }
     }
@@ -78,7 +83,7 @@ pub enum OptionKind {
     /// `fileIC` and their old names), logging and output switches
     /// (`writeLog`, `WriteUnits`, `disableOutput`, `disableOutTime`,
     /// `OutSwitch`, `Echo`), and the settings that are inert as given
-    /// (`WaveKin 0`, `inertialF 0`, `dtWave`,
+    /// (`inertialF 0`, `dtWave`,
     /// `UnifyCurrentGrid`, `inertialF_rampT`).
     Ignored,
 }
@@ -139,10 +144,7 @@ fn classify(lower: &str) -> Option<Class> {
         | "icthresh" | "gendynamicic" | "icgendynamic" | "fileic" | "icfile" | "writelog"
         | "writeunits" | "disableoutput" | "disableouttime" | "outswitch" | "echo" | "dtwave"
         | "unifycurrentgrid" | "inertialf_rampt" => Some(Class::Known(OptionKind::Ignored)),
-        "wavekin" => Some(Class::IgnoredIfZero(
-            "MoorDyn's wave files are not read; give the waves in a scenario that takes this \
-             deck (system.moordyn) as [[water.waves]] or [water.jonswap]",
-        )),
+        "wavekin" => s(S::WaveKin),
         "inertialf" => Some(Class::IgnoredIfZero(
             "MoorDyn-F's inertial coupled forces are not supported",
         )),

@@ -21,6 +21,7 @@ mod loads;
 mod messages;
 mod moordyn;
 mod moordyn_water;
+mod moordyn_waves;
 mod motions;
 pub mod names;
 mod output;

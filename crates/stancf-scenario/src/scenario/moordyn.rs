@@ -58,7 +58,12 @@ pub(super) fn deck_scenario(
     added: Option<(&Ctx, WaterKeys)>,
 ) -> Result<SystemScenario, ScenarioError> {
     let g = deck_gravity(deck, file)?;
-    let (water, depth_note) = deck_water(deck_water_keys(deck, file, path)?, file, deck, added)?;
+    let (waves, wave_note) = super::moordyn_waves::deck_waves(deck, file, path)?;
+    let deck_keys = super::water::WaterKeys {
+        waves,
+        ..deck_water_keys(deck, file, path)?
+    };
+    let (water, depth_note) = deck_water(deck_keys, file, deck, added)?;
     let (channels, channel_notes) = deck_channels(deck);
     let ctx = Ctx { file };
     let raw = RawAnalysis {
@@ -92,10 +97,11 @@ pub(super) fn deck_scenario(
     notes.extend(step_notes(deck));
     notes.extend(channel_notes);
     notes.extend(depth_note);
+    notes.extend(wave_note);
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
-    Ok(SystemScenario {
+    let mut sc = SystemScenario {
         title,
         line_types: deck.line_types.iter().map(deck_line_type).collect(),
         points,
@@ -113,7 +119,9 @@ pub(super) fn deck_scenario(
         water: Some(water),
         channels,
         names,
-    })
+    };
+    sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    Ok(sc)
 }
 
 /// Notes on the deck's time stepping: a `tScheme` is MoorDyn's integrator,

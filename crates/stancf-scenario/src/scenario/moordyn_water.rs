@@ -7,7 +7,7 @@
 //!
 //! What the deck asks for that stancf does not map is refused by name:
 //! `Currents` modes other than 0 and 1 (time-varying or 4D grids).
-//! `WaveKin` other than 0 is refused by the deck's reader.
+//! The deck's waves (`WaveKin`): `super::moordyn_waves`.
 
 use super::context::Ctx;
 use super::water::{Current, Water, WaterKeys};

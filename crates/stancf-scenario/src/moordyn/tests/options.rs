@@ -33,7 +33,6 @@ fn an_unknown_option_is_refused_naming_its_line() {
 #[test]
 fn options_that_change_the_physics_are_refused_by_name() {
     for (row, words) in [
-        ("1 WaveKin", "wave files are not read"),
         ("bathy.txt SeafloorFile", "bathymetry"),
         ("0.3 mu_kT", "FrictionCoefficient"),
     ] {
