@@ -90,34 +90,7 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
     let text = crate::input_file::read_text(path)?;
     let mut rows = Vec::new();
     let mut lines = Vec::new();
-    for (n, l) in crate::echo::text_lines(&text)
-        .enumerate()
-        .skip(CURRENT_PROFILE_HEADER_LINES)
-    {
-        let words: Vec<&str> = l.split_whitespace().collect();
-        if words.is_empty() {
-            continue;
-        }
-        let at = n + 1;
-        if words.len() != 4 {
-            return Err(format!(
-                "line {at}: a row is \"z ux uy uz\", 4 numbers, got {} words",
-                words.len()
-            ));
-        }
-        let mut v = [0.0; 4];
-        for (k, w) in words.iter().enumerate() {
-            v[k] = w
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    format!(
-                        "line {at}: \"{}\" is not a finite number",
-                        super::clip(w, 60)
-                    )
-                })?;
-        }
+    for (at, v) in table_rows(&text, CURRENT_PROFILE_HEADER_LINES, 4..=4, "\"z ux uy uz\"")? {
         rows.push(CurrentRow {
             z: v[0],
             velocity: [v[1], v[2], v[3]],
@@ -141,6 +114,54 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
             None => e.message,
         }
     })?;
+    Ok(rows)
+}
+
+/// The rows of a whitespace-separated table of MoorDyn's (a current
+/// profile, wave components): `skip` header lines left out, blank lines
+/// skipped, each row of `count` finite numbers (`row` says what one is in
+/// the error), with its 1-based line number. Errors name the line.
+pub(super) fn table_rows(
+    text: &str,
+    skip: usize,
+    count: std::ops::RangeInclusive<usize>,
+    row: &str,
+) -> Result<Vec<(usize, Vec<f64>)>, String> {
+    let mut rows = Vec::new();
+    for (n, l) in crate::echo::text_lines(text).enumerate().skip(skip) {
+        let words: Vec<&str> = l.split_whitespace().collect();
+        if words.is_empty() {
+            continue;
+        }
+        let at = n + 1;
+        if !count.contains(&words.len()) {
+            let (lo, hi) = (count.start(), count.end());
+            let numbers = if lo == hi {
+                format!("{lo}")
+            } else {
+                format!("{lo} or {hi}")
+            };
+            return Err(format!(
+                "line {at}: a row is {row}, {numbers} numbers, got {} words",
+                words.len()
+            ));
+        }
+        let values = words
+            .iter()
+            .map(|w| {
+                w.parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(|| {
+                        format!(
+                            "line {at}: \"{}\" is not a finite number",
+                            super::clip(w, 60)
+                        )
+                    })
+            })
+            .collect::<Result<Vec<f64>, String>>()?;
+        rows.push((at, values));
+    }
     Ok(rows)
 }
 

@@ -125,32 +125,9 @@ pub(super) fn deck_waves(
 pub fn read_wave_frequencies(path: &Path) -> Result<Vec<WaveComponent>, String> {
     let text = crate::input_file::read_text(path)?;
     let mut rows = Vec::new();
-    for (n, l) in crate::echo::text_lines(&text).enumerate() {
-        let words: Vec<&str> = l.split_whitespace().collect();
-        if words.is_empty() {
-            continue;
-        }
-        let at = n + 1;
-        if !(3..=4).contains(&words.len()) {
-            return Err(format!(
-                "line {at}: a row is \"w re im [beta]\" (rad/s, m, m, rad), 3 or 4 numbers, got \
-                 {} words",
-                words.len()
-            ));
-        }
-        let mut v = [0.0; 4];
-        for (k, w) in words.iter().enumerate() {
-            v[k] = w
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    format!(
-                        "line {at}: \"{}\" is not a finite number",
-                        super::clip(w, 60)
-                    )
-                })?;
-        }
+    let shape = "\"w re im [beta]\" (rad/s, m, m, rad)";
+    for (at, mut v) in super::moordyn_water::table_rows(&text, 0, 3..=4, shape)? {
+        v.resize(4, 0.0);
         if v[0] < 0.0 {
             return Err(format!(
                 "line {at}: the frequency {} rad/s is negative",
