@@ -316,21 +316,26 @@ fn a_rod_on_a_body_moves_with_it_and_a_fixed_rod_stays() {
 }
 
 /// Output channels stancf does not compute (a body rod's own force, a
-/// zero-length rod's roll, a rod's acceleration) are noted, naming their
-/// line, and their columns in channels.csv are left empty (the result
-/// readers' NaN, never a number that is not one), the others written:
-/// the run goes on.
+/// zero-length rod's roll, a rod's acceleration) and names MoorDyn does
+/// not know as channels (MoorDyn-F's old `N4Px`, a rod's `RZ`: MoorDyn
+/// warns and skips them) are noted, naming their line, and their columns
+/// in channels.csv are left empty (the result readers' NaN, never a
+/// number that is not one), the others written: the run goes on.
 #[test]
 fn channels_stancf_does_not_compute_are_noted_and_left_empty() {
     let d = scratch("channels-left-empty");
     let deck = body_rod_deck("-", "0").replace(
         "water depth (m)\n",
-        "water depth (m)\n--- OUTPUTS ---\nFairTen1\nRod1FX\nRod2RY\nRod1AX\nRod1PZ\n",
+        "water depth (m)\n--- OUTPUTS ---\nFairTen1\nRod1FX\nRod2RY\nRod1AX\nN4Px\nRod1RZ\nRod1PZ\n",
     );
     let file = write_scenario(&d, "deck.txt", &deck);
     let (stdout, _) = text(&stancf(&["check", file.to_str().unwrap()]));
     for name in ["Rod1FX", "Rod2RY", "Rod1AX"] {
         let note = format!("output channel {name}: ");
+        assert!(stdout.contains(&note), "{name}: {stdout}");
+    }
+    for name in ["N4Px", "Rod1RZ"] {
+        let note = format!("output channel {name}: not a channel MoorDyn knows");
         assert!(stdout.contains(&note), "{name}: {stdout}");
     }
     assert!(
@@ -342,16 +347,16 @@ fn channels_stancf_does_not_compute_are_noted_and_left_empty() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let text = std::fs::read_to_string(out.join("channels.csv")).unwrap();
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("t,FairTen1,Rod1FX,Rod2RY,Rod1AX,Rod1PZ"));
+    assert_eq!(
+        lines.next(),
+        Some("t,FairTen1,Rod1FX,Rod2RY,Rod1AX,N4Px,Rod1RZ,Rod1PZ")
+    );
     let mut rows = 0;
     for line in lines {
         let f: Vec<&str> = line.split(',').collect();
-        assert_eq!(f.len(), 6, "{line}");
-        assert!(
-            f[2].is_empty() && f[3].is_empty() && f[4].is_empty(),
-            "{line}"
-        );
-        for k in [0, 1, 5] {
+        assert_eq!(f.len(), 8, "{line}");
+        assert!((2..=6).all(|k| f[k].is_empty()), "{line}");
+        for k in [0, 1, 7] {
             assert!(f[k].parse::<f64>().unwrap().is_finite(), "{line}");
         }
         rows += 1;

@@ -16,8 +16,9 @@ fn rod_channel(deck: &str, name: &'static str, words: &str) -> (String, &'static
 /// What is not built is refused naming the deck's line: a line with
 /// bending stiffness at a coupled rod, a rod in
 /// water that reaches the surface, a zero-length free rod without lines,
-/// a rod output channel MoorDyn has none for (RZ) or of a node the rod
-/// does not have, a rod type's value out of the
+/// a rod output channel of a node the rod does not have (one MoorDyn
+/// has none for, RZ, is noted: `rod_channels.rs`), a rod type's value
+/// out of the
 /// solver's range.
 #[test]
 fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
@@ -47,7 +48,6 @@ fn what_rods_do_not_build_is_refused_naming_the_deck_line() {
             "2    conn      Free",
             "rod 2 is free with NumSegs 0".into(),
         ),
-        rod_channel(&base, "Rod1RZ", "MoorDyn has no \"RZ\" of a rod (no rotation about its axis"),
         rod_channel(&base, "R1N9PX", "the rod has nodes 0 to 4 (4 segments)"),
         (
             base.replace("can           0.5      100 ", "can           0.5      1e160 "),

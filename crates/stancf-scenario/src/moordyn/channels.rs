@@ -143,6 +143,32 @@ pub enum Channel {
     /// `R<n><q>` or `Rod<n><q>`: the rod as a whole, or one of its nodes
     /// (`R<n>N<k><q>`, `NA`, `NB`).
     Rod { rod: usize, quantity: RodQuantity },
+    /// A name MoorDyn does not know as a channel (an object letter or a
+    /// quantity it has not): MoorDyn warns and skips it, stancf notes it
+    /// and leaves its column empty ([`super::Output::unrecognized`] says
+    /// why).
+    Unrecognized,
+}
+
+/// Why a name is not a channel of the deck.
+enum NotAChannel {
+    /// It names a line, point, body, rod or node the deck does not
+    /// define: MoorDyn refuses the deck.
+    Missing(String),
+    /// MoorDyn does not know it: it warns and skips it.
+    Unknown(String),
+}
+
+impl From<String> for NotAChannel {
+    fn from(m: String) -> Self {
+        NotAChannel::Unknown(m)
+    }
+}
+
+impl From<&str> for NotAChannel {
+    fn from(m: &str) -> Self {
+        NotAChannel::Unknown(m.to_string())
+    }
 }
 
 /// A channel name before the lines and points are known.
@@ -198,13 +224,21 @@ pub(crate) fn resolve(
     };
     raw.into_iter()
         .map(|r| {
-            let channel = channel(r.name, lines, points, counts).map_err(|m| {
-                DeckError::at(r.line, format!("output channel \"{}\": {m}", r.name))
-            })?;
+            let (channel, unrecognized) = match channel(r.name, lines, points, counts) {
+                Ok(c) => (c, None),
+                Err(NotAChannel::Unknown(why)) => (Channel::Unrecognized, Some(why)),
+                Err(NotAChannel::Missing(why)) => {
+                    return Err(DeckError::at(
+                        r.line,
+                        format!("output channel \"{}\": {why}", r.name),
+                    ))
+                }
+            };
             Ok(Output {
                 line: r.line,
                 name: r.name.to_string(),
                 channel,
+                unrecognized,
             })
         })
         .collect()
@@ -234,9 +268,11 @@ fn channel(
     lines: &[DeckLine],
     points: &[DeckPoint],
     Counts { bodies, rods }: Counts,
-) -> Result<Channel, String> {
+) -> Result<Channel, NotAChannel> {
     if !name.chars().all(|c| c.is_ascii_alphanumeric()) {
-        return Err("a channel name is made of letters and digits".into());
+        return Err(
+            "a channel name is made of letters and digits, which MoorDyn reads apart".into(),
+        );
     }
     let upper = name.to_ascii_uppercase();
     let (kind, id, rest) = head(&upper);
@@ -244,13 +280,15 @@ fn channel(
         "known: FairTen<n>, AnchTen<n>, L<n>N<k><q> (Line...), P<n><q> (Point..., Con...), \
                  B<n><q> (Body...), R<n><q> (Rod...)";
     if id.is_empty() {
-        return Err(format!("no object number; {known}"));
+        return Err(format!("no object number; {known}").into());
     }
-    let id: usize = id.parse().map_err(|_| "the object number is too large")?;
+    let id: usize = id
+        .parse()
+        .map_err(|_| NotAChannel::Missing("the object number is too large".into()))?;
     match kind {
         "FAIRTEN" | "ANCHTEN" => {
             if !rest.is_empty() {
-                return Err(format!("unexpected \"{rest}\" after the line number"));
+                return Err(format!("unexpected \"{rest}\" after the line number").into());
             }
             line_of(id, lines)?;
             Ok(if kind == "FAIRTEN" {
@@ -262,7 +300,10 @@ fn channel(
         "L" | "LINE" => line_channel(id, rest, line_of(id, lines)?),
         "P" | "POINT" | "CON" => {
             if id == 0 || id > points.len() {
-                return Err(format!("there is no point {id} ({} points)", points.len()));
+                return Err(NotAChannel::Missing(format!(
+                    "there is no point {id} ({} points)",
+                    points.len()
+                )));
             }
             let quantity = point_quantity(rest)?;
             Ok(Channel::Point {
@@ -272,7 +313,10 @@ fn channel(
         }
         "R" | "ROD" => {
             if id == 0 || id > rods.len() {
-                return Err(format!("there is no rod {id} ({} rods)", rods.len()));
+                return Err(NotAChannel::Missing(format!(
+                    "there is no rod {id} ({} rods)",
+                    rods.len()
+                )));
             }
             Ok(Channel::Rod {
                 rod: id,
@@ -281,25 +325,27 @@ fn channel(
         }
         "B" | "BODY" => {
             if id == 0 || id > bodies {
-                return Err(format!("there is no body {id} ({bodies} bodies)"));
+                return Err(NotAChannel::Missing(format!(
+                    "there is no body {id} ({bodies} bodies)"
+                )));
             }
             Ok(Channel::Body {
                 body: id,
                 quantity: body_quantity(rest)?,
             })
         }
-        _ => Err(format!("unknown channel; {known}")),
+        _ => Err(format!("unknown channel; {known}").into()),
     }
 }
 
-fn line_of(id: usize, lines: &[DeckLine]) -> Result<&DeckLine, String> {
-    id.checked_sub(1)
-        .and_then(|i| lines.get(i))
-        .ok_or_else(|| format!("there is no line {id} ({} lines)", lines.len()))
+fn line_of(id: usize, lines: &[DeckLine]) -> Result<&DeckLine, NotAChannel> {
+    id.checked_sub(1).and_then(|i| lines.get(i)).ok_or_else(|| {
+        NotAChannel::Missing(format!("there is no line {id} ({} lines)", lines.len()))
+    })
 }
 
 /// The part after `L<n>`: `N<k><q>`, `NA<q>`, `NB<q>`, `<q>`, `TA`, `TB`.
-fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, String> {
+fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, NotAChannel> {
     if let Some(end) = end_tension(rest) {
         return Ok(Channel::LineEndTension { line: id, end });
     }
@@ -310,7 +356,7 @@ fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, Strin
         if digits > 0 {
             let k: usize = after[..digits]
                 .parse()
-                .map_err(|_| "node number too large")?;
+                .map_err(|_| NotAChannel::Missing("node number too large".into()))?;
             (k, &after[digits..])
         } else if let Some(q) = after.strip_prefix('A') {
             (0, q)
@@ -323,10 +369,10 @@ fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, Strin
         (0, rest)
     };
     if node > line.segments {
-        return Err(format!(
+        return Err(NotAChannel::Missing(format!(
             "line {id} has nodes 0 to {} ({} segments)",
             line.segments, line.segments
-        ));
+        )));
     }
     if end_tension(q).is_some() {
         return Err("TA and TB (end tensions) take no node".into());
@@ -339,7 +385,8 @@ fn line_channel(id: usize, rest: &str, line: &DeckLine) -> Result<Channel, Strin
         Q::A(_) | Q::Other => {
             return Err(format!(
                 "MoorDyn outputs no \"{q}\" at line nodes (only PX PY PZ VX VY VZ FX FY FZ T)"
-            ))
+            )
+            .into())
         }
     };
     Ok(Channel::LineNode {
@@ -406,7 +453,7 @@ fn body_quantity(q: &str) -> Result<BodyQuantity, String> {
 /// quantity starts with N). Refused: what MoorDyn has no value for, a
 /// rotation about the rod's axis (`RZ`, `RVZ`, `RAZ`, none in
 /// `Rod::GetRodOutput`), `T` (MoorDyn writes 0); a node past the last.
-fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
+fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, NotAChannel> {
     if let Some(after) = q.strip_prefix('N') {
         let digits = after
             .find(|c: char| !c.is_ascii_digit())
@@ -414,7 +461,7 @@ fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
         let (node, rest) = if digits > 0 {
             let k: usize = after[..digits]
                 .parse()
-                .map_err(|_| "node number too large")?;
+                .map_err(|_| NotAChannel::Missing("node number too large".into()))?;
             (k, &after[digits..])
         } else if let Some(rest) = after.strip_prefix('A') {
             (0, rest)
@@ -424,9 +471,9 @@ fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
             return Err("after N comes a node number, A or B".into());
         };
         if node > segments {
-            return Err(format!(
+            return Err(NotAChannel::Missing(format!(
                 "the rod has nodes 0 to {segments} ({segments} segments)"
-            ));
+            )));
         }
         return Ok(match quantity(rest)? {
             Q::P(a) => RodQuantity::NodePosition(node, a),
@@ -445,7 +492,8 @@ fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
     if matches!(q, "RZ" | "RVZ" | "RAZ") {
         return Err(format!(
             "MoorDyn has no \"{q}\" of a rod (no rotation about its axis; {only})"
-        ));
+        )
+        .into());
     }
     let quantity = match body_quantity(q) {
         Ok(BodyQuantity::Position(a)) => RodQuantity::Position(a),
@@ -460,10 +508,11 @@ fn rod_quantity(q: &str, segments: usize) -> Result<RodQuantity, String> {
             return Err(format!(
                 "MoorDyn writes 0 for \"{q}\" of a rod (TENA and TENB are its ends' line \
                  forces; {only})"
-            ))
+            )
+            .into())
         }
         Err(_) if q.is_empty() => return Err("no quantity (e.g. PX, RY, TENA, SUB)".into()),
-        Err(_) => return Err(format!("MoorDyn outputs no \"{q}\" of a rod ({only})")),
+        Err(_) => return Err(format!("MoorDyn outputs no \"{q}\" of a rod ({only})").into()),
     };
     Ok(quantity)
 }

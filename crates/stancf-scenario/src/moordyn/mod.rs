@@ -214,6 +214,9 @@ pub struct Output {
     pub name: String,
     /// What it measures.
     pub channel: Channel,
+    /// Why it is not a channel MoorDyn knows, for a
+    /// [`Channel::Unrecognized`] (MoorDyn warns and skips it).
+    pub unrecognized: Option<String>,
 }
 
 impl Deck {

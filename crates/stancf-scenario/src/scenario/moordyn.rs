@@ -347,13 +347,19 @@ fn deck_line((l, ends): (&crate::moordyn::DeckLine, super::rods::DeckLineEnds)) 
 }
 
 /// The deck's OUTPUTS as channels, and a note for each one stancf does
-/// not compute (its column left empty), naming its line and why.
+/// not compute or MoorDyn does not know (its column left empty), naming
+/// its line and why.
 fn deck_channels(deck: &Deck) -> (Vec<OutputChannel>, Vec<String>) {
     let mut channels = Vec::with_capacity(deck.outputs.len());
     let mut notes = Vec::new();
     for o in &deck.outputs {
-        let why = match o.channel {
-            Channel::Rod { rod, quantity } => rod_not_computed(&deck.rods[rod - 1], quantity),
+        let why = match (&o.unrecognized, o.channel) {
+            (Some(why), _) => Some(format!(
+                "not a channel MoorDyn knows ({why}); MoorDyn warns and skips it"
+            )),
+            (None, Channel::Rod { rod, quantity }) => {
+                rod_not_computed(&deck.rods[rod - 1], quantity)
+            }
             _ => not_computed(&o.channel).map(str::to_string),
         };
         if let Some(why) = &why {
@@ -398,6 +404,7 @@ fn not_computed(c: &Channel) -> Option<&'static str> {
         )
         .then_some(NOT),
         Channel::Rod { .. } => None,
+        Channel::Unrecognized => Some(NOT),
     }
 }
 

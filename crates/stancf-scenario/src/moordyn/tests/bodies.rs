@@ -193,7 +193,7 @@ fn a_point_on_a_body_is_read_in_the_bodys_axes_and_checked() {
 }
 
 #[test]
-fn body_channels_are_read_and_unknown_ones_refused_naming_the_line() {
+fn body_channels_are_read_and_a_missing_bodys_refused_naming_the_line() {
     let text = with_body("1 Free 0 0 -3 0 0 0 500 0 100 0 0 0").replace(
         "FairTen1",
         "FairTen1\nBody1PX\nB1RY\nbody1RVZ\nBody1FZ\nB1MX\nBody1TEN",
@@ -212,18 +212,16 @@ fn body_channels_are_read_and_unknown_ones_refused_naming_the_line() {
             b(BodyQuantity::Tension),
         ]
     );
-    for (name, words) in [
-        ("Body2PX", "there is no body 2 (1 bodies)"),
-        ("Body1SUB", "no \"SUB\" of a body"),
-        ("Body1", "no quantity"),
+    for (name, refused, words) in [
+        ("Body2PX", true, "there is no body 2 (1 bodies)"),
+        ("Body1SUB", false, "no \"SUB\" of a body"),
+        ("Body1", false, "no quantity"),
     ] {
         let text = with_body("1 Free 0 0 -3 0 0 0 500 0 100 0 0 0")
             .replace("FairTen1", &format!("FairTen1\n{name}"));
-        let e = error(&text);
-        assert_eq!(
-            e.line,
-            Some(text.lines().position(|l| l == name).unwrap() + 1)
-        );
-        assert!(e.message.contains(words), "{name}: {e}");
+        let verdict = super::channel_verdict(&text, name);
+        assert_eq!(verdict.is_err(), refused, "{name}: {verdict:?}");
+        let message = verdict.unwrap_or_else(|e| e);
+        assert!(message.contains(words), "{name}: {message}");
     }
 }

@@ -82,6 +82,29 @@ fn error(text: &str) -> DeckError {
     parse(text).expect_err("the deck should be refused")
 }
 
+/// Whether the output channel `name` of the deck `text` (on a line of
+/// its own) is refused naming its line, as MoorDyn refuses a channel of
+/// an object the deck does not define (`Err`, the message), or read as
+/// one MoorDyn does not know, which it warns of and skips (`Ok`, why).
+fn channel_verdict(text: &str, name: &str) -> Result<String, String> {
+    match parse(text) {
+        Err(e) => {
+            let n = text.lines().position(|l| l == name).unwrap() + 1;
+            assert_eq!(e.line, Some(n), "{name}: {e}");
+            assert!(
+                e.message.starts_with(&format!("output channel \"{name}\"")),
+                "{e}"
+            );
+            Err(e.message)
+        }
+        Ok(deck) => {
+            let o = deck.outputs.iter().find(|o| o.name == name).expect(name);
+            assert_eq!(o.channel, super::Channel::Unrecognized, "{name}");
+            Ok(o.unrecognized.clone().expect("why"))
+        }
+    }
+}
+
 /// The 1-based number of the line of `text` that contains `needle`.
 fn line_of(text: &str, needle: &str) -> usize {
     text.lines().position(|l| l.contains(needle)).expect(needle) + 1

@@ -441,6 +441,8 @@ fn channel_value(c: &Channel, row: &SystemRow, rods: &[RodFrame]) -> f64 {
         }
         Channel::Body { body, quantity } => body_value(&row.bodies[body - 1], quantity),
         Channel::Rod { rod, quantity } => rod_value(&rods[rod - 1], quantity, row),
+        // Its column is left empty (not computed).
+        Channel::Unrecognized => f64::NAN,
     }
 }
 
