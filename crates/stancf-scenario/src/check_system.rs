@@ -40,7 +40,10 @@ pub fn simulation(
 /// Builds what `sc` runs (see [`Prepared`]); errors are input errors
 /// naming `path`.
 pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
-    let input = |e: stancf::ModelError| Failure::Input(format!("{}: {}", path.display(), e));
+    let input = |e: stancf::ModelError| {
+        let key = sc.names.library_key(&e.key);
+        Failure::Input(format!("{}: {key}: {}", path.display(), e.message))
+    };
     crate::input_scales::system_scales(&path.display().to_string(), sc)?;
     crate::system_geometry::check_geometry(&path.display().to_string(), sc, true)?;
     let system = sc.system().map_err(input)?;

@@ -90,7 +90,10 @@ fn deck_time_step(text: &str, file: &str) -> Result<f64, Failure> {
 
 /// The coupled system of a validated system scenario.
 pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> {
-    let input = |e: stancf::ModelError| Failure::Input(format!("{file}: {e}"));
+    let input = |e: stancf::ModelError| {
+        let key = sc.names.library_key(&e.key);
+        Failure::Input(format!("{file}: {key}: {}", e.message))
+    };
     crate::input_scales::system_scales(file, sc)?;
     // The coupling code places the coupled points (stancf_init).
     crate::system_geometry::check_geometry(file, sc, false)?;

@@ -177,3 +177,22 @@ fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
     assert_eq!(rows, 101, "one row per step and the start");
     assert!((rise - want).abs() < 1e-12, "{rise} against {want}");
 }
+
+/// A deck's rod that sinks (OpenFAST's md_vertical: heavier than the
+/// water it displaces, no line) has no static equilibrium: `check` and
+/// `run` of the deck alone (a static run) refuse it naming its row and
+/// the rod, not the library's body.
+#[test]
+fn a_decks_sinking_rod_is_refused_naming_its_row() {
+    let heavy = rods_alone("1 floatRod Free 0 0 -10 0 1 -10 2 -\n")
+        .replace("floatRod  0.5    100.0 ", "floatRod  0.5    300.0 ");
+    let row = heavy
+        .lines()
+        .position(|l| l.starts_with("1 floatRod"))
+        .unwrap()
+        + 1;
+    let named = format!("bad.txt: line {row}: rod 1: floats on no line and sinks");
+    let d = scratch("rod-sinks");
+    let deck = write_scenario(&d, "bad.txt", &heavy);
+    refused_by_check_and_run(&deck, &d.join("never"), &[&named], &[]);
+}

@@ -184,6 +184,46 @@ impl Names {
         }
     }
 
+    /// The key of an error of the library (`bodies[i]`, `lines[i]` or
+    /// `points[i]`, and what follows) as the deck names the object: its
+    /// row and the object (`line 14: rod 1`; a free rod's body is its
+    /// rod, a rod end's point its rod). A TOML system's keys, and keys of
+    /// other objects, are the library's.
+    pub fn library_key(&self, key: &str) -> String {
+        let Some(d) = &self.deck else {
+            return key.to_string();
+        };
+        let index = |prefix: &str| {
+            let r = key.strip_prefix(prefix)?;
+            let end = r.find(']')?;
+            Some((r[..end].parse::<usize>().ok()?, &r[end + 1..]))
+        };
+        let rod =
+            |k: usize, rest: &str| format!("{}{rest}", d.at(d.rods[k], &format!("rod {}", k + 1)));
+        if let Some((i, rest)) = index("bodies[") {
+            if let Some(&(_, k)) = self.rods.bodies.iter().find(|(b, _)| *b == i) {
+                return rod(k, rest);
+            }
+            if let Some(&line) = d.bodies.get(i) {
+                return format!("{}{rest}", d.at(line, &format!("body {}", i + 1)));
+            }
+        }
+        if let Some((i, rest)) = index("points[") {
+            if let Some(&(_, k)) = self.rods.points.iter().find(|(p, _)| *p == i) {
+                return rod(k, rest);
+            }
+            if let Some(&line) = d.points.get(i) {
+                return format!("{}{rest}", d.at(line, &format!("point {}", i + 1)));
+            }
+        }
+        if let Some((i, rest)) = index("lines[") {
+            if let Some(&line) = d.lines.get(i) {
+                return format!("{}{rest}", d.at(line, &format!("line {}", i + 1)));
+            }
+        }
+        key.to_string()
+    }
+
     /// `key` of line i, or its `column` in the deck; a remeshed deck
     /// line's elements are its `[[mesh]]` entry's.
     pub fn line(&self, i: usize, key: &str, column: &str) -> String {
@@ -267,5 +307,18 @@ mod tests {
         let toml = Names::default();
         assert_eq!(toml.line(0, "elements", "NumSegs"), "lines[0].elements");
         assert_eq!(toml.point(2, "mass", "Mass"), "points[2].mass");
+    }
+
+    /// The library's keys of a deck's objects become their rows; others,
+    /// and a TOML system's, stay as they are.
+    #[test]
+    fn the_librarys_keys_name_the_decks_rows() {
+        let deck = crate::moordyn::parse(DECK).unwrap();
+        let n = Names::of_deck(&deck, None);
+        assert_eq!(n.library_key("points[1]"), "line 9: point 2");
+        assert_eq!(n.library_key("lines[0].length"), "line 13: line 1.length");
+        assert_eq!(n.library_key("points[7]"), "points[7]");
+        assert_eq!(n.library_key("water.depth"), "water.depth");
+        assert_eq!(Names::default().library_key("bodies[0]"), "bodies[0]");
     }
 }
