@@ -42,7 +42,8 @@ pub fn simulation(
 pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     let input = |e: stancf::ModelError| {
         let key = sc.names.library_key(&e.key);
-        Failure::Input(format!("{}: {key}: {}", path.display(), e.message))
+        let route = dynamic_route(path, sc, &e.message);
+        Failure::Input(format!("{}: {key}: {}{route}", path.display(), e.message))
     };
     crate::input_scales::system_scales(&path.display().to_string(), sc)?;
     crate::system_geometry::check_geometry(&path.display().to_string(), sc, true)?;
@@ -67,6 +68,34 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         statics,
         dynamics,
     })
+}
+
+/// Where the library refuses a static analysis because a body has no
+/// static equilibrium ("start a dynamic run from its given pose
+/// instead"), how to start one from the file at `path`: a deck alone is a
+/// static run (MoorDyn's own tests of sinking rods start from the deck's
+/// placement, TmaxIC 0), so from a scenario that takes it; a scenario by
+/// its `[analysis]`. Empty otherwise.
+fn dynamic_route(path: &Path, sc: &SystemScenario, message: &str) -> String {
+    if sc.analysis.kind != AnalysisKind::Static
+        || !message.ends_with("start a dynamic run from its given pose instead")
+    {
+        return String::new();
+    }
+    let toml = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
+    if sc.names.is_deck() && !toml {
+        let name = path
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
+        format!(
+            " (a deck alone is a static run: take it in a scenario, [system] moordyn = \"{name}\" \
+             with [analysis] type = \"dynamic\" and initial = \"reference\")"
+        )
+    } else {
+        " ([analysis] type = \"dynamic\" with initial = \"reference\")".into()
+    }
 }
 
 /// Refuses a static solve of a system with a line anchored on its bed

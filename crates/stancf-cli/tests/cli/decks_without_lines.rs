@@ -181,7 +181,8 @@ fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
 /// A deck's rod that sinks (OpenFAST's md_vertical: heavier than the
 /// water it displaces, no line) has no static equilibrium: `check` and
 /// `run` of the deck alone (a static run) refuse it naming its row and
-/// the rod, not the library's body.
+/// the rod, not the library's body, and say how to run it dynamically;
+/// so run, it sinks as a body of its mass and added mass (to 1e-6 m).
 #[test]
 fn a_decks_sinking_rod_is_refused_naming_its_row() {
     let heavy = rods_alone("1 floatRod Free 0 0 -10 0 1 -10 2 -\n")
@@ -194,5 +195,33 @@ fn a_decks_sinking_rod_is_refused_naming_its_row() {
     let named = format!("bad.txt: line {row}: rod 1: floats on no line and sinks");
     let d = scratch("rod-sinks");
     let deck = write_scenario(&d, "bad.txt", &heavy);
-    refused_by_check_and_run(&deck, &d.join("never"), &[&named], &[]);
+    let route =
+        "take it in a scenario, [system] moordyn = \"bad.txt\" with [analysis] type = \"dynamic\"";
+    refused_by_check_and_run(&deck, &d.join("never"), &[&named, route], &[]);
+    // Taken so, it sinks.
+    let sc = write_scenario(
+        &d,
+        "sink.toml",
+        "[system]\nmoordyn = \"bad.txt\"\n[analysis]\ntype = \"dynamic\"\ninitial = \"reference\"\n\
+         time_step = 0.05\nduration = 1.0\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let z = header.iter().position(|h| h == "z").unwrap();
+    // Level, it sinks at a = (m - rho A) g / (m + Ca rho A) (no drag:
+    // Cd 0), which the Galerkin step integrates exactly.
+    let (m, rho_a) = (300.0, 1025.0 * std::f64::consts::PI * 0.25 * 0.25);
+    let a = (m - rho_a) * 9.80665 / (m + rho_a);
+    let t = header.iter().position(|h| h == "t").unwrap();
+    for r in &rows {
+        let want = -10.0 - 0.5 * a * r[t] * r[t];
+        assert!(
+            (r[z] - want).abs() < 1e-6,
+            "t {}: z {} against {want}",
+            r[t],
+            r[z]
+        );
+    }
 }
