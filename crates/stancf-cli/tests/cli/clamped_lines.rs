@@ -301,12 +301,7 @@ fn a_toml_cantilever_holding_a_body_bends_and_turns_it() {
 #[test]
 fn moordyns_complex_system_balances_its_body_and_connectors_from_stretched_stiffeners() {
     let d = scratch("complex-system");
-    let deck = d.join("complex_system.txt");
-    std::fs::copy(
-        repo_file("crates/stancf-cli/tests/fixtures/complex-system-moordyn.txt"),
-        &deck,
-    )
-    .unwrap();
+    let deck = copy_fixture(&d, "complex-system-moordyn.txt", "complex_system.txt");
     let out = d.join("out");
     let o = run_quiet(&deck, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);

@@ -42,12 +42,7 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 #[test]
 fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
     let d = scratch("md-bodies-and-rods");
-    let deck = d.join("moordyn.dat");
-    std::fs::copy(
-        repo_file("crates/stancf-cli/tests/fixtures/md-bodies-and-rods-moordyn.txt"),
-        &deck,
-    )
-    .unwrap();
+    let deck = copy_fixture(&d, "md-bodies-and-rods-moordyn.txt", "moordyn.dat");
     let (stdout, _) = text(&stancf(&["check", deck.to_str().unwrap()]));
     assert!(
         stdout.contains("pinned at end A to point 7 (on free body 1, a joint"),

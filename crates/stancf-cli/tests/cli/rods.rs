@@ -437,12 +437,7 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 #[test]
 fn openfasts_md_float_buoy_floats_upright_at_its_draft() {
     let d = scratch("md-float");
-    let deck = d.join("moordyn.dat");
-    std::fs::copy(
-        repo_file("crates/stancf-cli/tests/fixtures/md-float-moordyn.txt"),
-        &deck,
-    )
-    .unwrap();
+    let deck = copy_fixture(&d, "md-float-moordyn.txt", "moordyn.dat");
     let out = d.join("out");
     let o = run_quiet(&deck, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);

@@ -55,6 +55,8 @@ const MAX_ITERATIONS: usize = 300;
 /// below [`STALL_FALL`] of its value [`STALL_WINDOW`] iterations before
 /// (complex_system's slow phase falls by 25 to 45 % over 30).
 const STALL_WINDOW: usize = 30;
+/// The fraction of |G|_inf that [`STALL_WINDOW`] iterations must get
+/// below to go on.
 const STALL_FALL: f64 = 0.9;
 /// Converged: |G|_inf below this fraction of the forces at play.
 const TOLERANCE: f64 = 1e-10;

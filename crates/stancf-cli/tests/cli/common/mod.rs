@@ -35,6 +35,15 @@ pub fn repo_file(rel: &str) -> PathBuf {
         .join(rel)
 }
 
+/// A copy of the test fixture `fixture` (a file of
+/// crates/stancf-cli/tests/fixtures) in `dir` under `name`: its path.
+pub fn copy_fixture(dir: &Path, fixture: &str, name: &str) -> PathBuf {
+    let to = dir.join(name);
+    let from = repo_file(&format!("crates/stancf-cli/tests/fixtures/{fixture}"));
+    std::fs::copy(&from, &to).unwrap_or_else(|e| panic!("{from:?}: {e}"));
+    to
+}
+
 /// Runs `stancf` with `args` to completion.
 pub fn stancf(args: &[&str]) -> Output {
     Command::new(BIN).args(args).output().expect("run stancf")
