@@ -18,7 +18,7 @@
 //! (the step count of a valid scenario is clamped; only absurd ones such
 //! as 1e-300 s steps are left for the CLI to refuse), every process in its
 //! own folder under the system's temp folder and killed after
-//! 30 s (a failure, not a hang). A failing case is shrunk and
+//! 60 s (a failure, not a hang). A failing case is shrunk and
 //! printed whole; its folder is kept.
 //!
 //! For exploring (not for CI): `STANCF_PROPTEST_CASES=n` runs `n` cases per

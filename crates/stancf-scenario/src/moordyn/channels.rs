@@ -157,6 +157,9 @@ enum NotAChannel {
     Missing(String),
     /// MoorDyn does not know it: it warns and skips it.
     Unknown(String),
+    /// It is not a word of letters and digits: it could not head a column
+    /// of channels.csv.
+    Malformed(String),
 }
 
 impl From<String> for NotAChannel {
@@ -227,7 +230,7 @@ pub(crate) fn resolve(
             let (channel, unrecognized) = match channel(r.name, lines, points, counts) {
                 Ok(c) => (c, None),
                 Err(NotAChannel::Unknown(why)) => (Channel::Unrecognized, Some(why)),
-                Err(NotAChannel::Missing(why)) => {
+                Err(NotAChannel::Missing(why) | NotAChannel::Malformed(why)) => {
                     return Err(DeckError::at(
                         r.line,
                         format!("output channel \"{}\": {why}", r.name),
@@ -270,9 +273,9 @@ fn channel(
     Counts { bodies, rods }: Counts,
 ) -> Result<Channel, NotAChannel> {
     if !name.chars().all(|c| c.is_ascii_alphanumeric()) {
-        return Err(
-            "a channel name is made of letters and digits, which MoorDyn reads apart".into(),
-        );
+        return Err(NotAChannel::Malformed(
+            "a channel name is made of letters and digits".into(),
+        ));
     }
     let upper = name.to_ascii_uppercase();
     let (kind, id, rest) = head(&upper);

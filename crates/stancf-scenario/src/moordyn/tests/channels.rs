@@ -55,6 +55,8 @@ fn channels_of_missing_objects_are_refused_and_unknown_names_kept_with_why() {
         ("P3PX", true, "there is no point 3"),
         ("Rod1PX", true, "there is no rod 1 (0 rods)"),
         ("Body1PX", true, "there is no body 1 (0 bodies)"),
+        ("x,y", true, "letters and digits"),
+        ("Fair_Ten1", true, "letters and digits"),
         ("L1N5AX", false, "no \"AX\" at line nodes"),
         ("P1RX", false, "no \"RX\" at points"),
         ("L1N5", false, "no quantity"),
