@@ -25,7 +25,7 @@ pub const CURRENT_PROFILE_FILE: &str = "current_profile.txt";
 const CURRENT_PROFILE_HEADER_LINES: usize = 3;
 
 /// The deck's option `which`: its name as written and its line.
-fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, usize)> {
+pub(super) fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, usize)> {
     deck.options
         .iter()
         .find(|o| o.kind == OptionKind::Supported(which))

@@ -28,7 +28,7 @@
 //! zone.
 
 use super::ScenarioError;
-use crate::moordyn::{Deck, OptionKind, SupportedOption};
+use crate::moordyn::{Deck, SupportedOption};
 use stancf::water::waves::AiryWave;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -56,18 +56,8 @@ pub(super) fn deck_waves(
     file: &str,
     path: &Path,
 ) -> Result<(Vec<AiryWave>, Option<String>), ScenarioError> {
-    let Some((mode, name, line)) = deck
-        .options
-        .iter()
-        .find(|o| o.kind == OptionKind::Supported(SupportedOption::WaveKin))
-        .and_then(|o| {
-            Some((
-                deck.option(SupportedOption::WaveKin)?,
-                o.name.as_str(),
-                o.line,
-            ))
-        })
-    else {
+    let at = super::moordyn_water::option_at(deck, SupportedOption::WaveKin);
+    let Some(((name, line), mode)) = at.zip(deck.option(SupportedOption::WaveKin)) else {
         return Ok((Vec::new(), None));
     };
     let refuse = |why: &str| {

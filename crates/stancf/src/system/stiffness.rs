@@ -85,10 +85,10 @@ impl SystemStatics {
         for &i in &unknowns[3..] {
             x[i] = 0.0;
         }
-        let condensed = condensed_onto(eq, &x, &unknowns);
-        eq.bodies[k] = saved.clone();
-        let (s, rows) = condensed?;
         let centre = crate::body::pose::rotate(&rotation, saved.centre_of_mass);
+        let condensed = condensed_onto(eq, &x, &unknowns);
+        eq.bodies[k] = saved;
+        let (s, rows) = condensed?;
         Some(from_chart(&s, &rows, &rotation, centre))
     }
 
