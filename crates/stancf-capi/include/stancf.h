@@ -71,6 +71,15 @@ StancfSystem *stancf_create(const char *path);
 #define STANCF_ALLOW_LARGE 1u
 StancfSystem *stancf_create_with(const char *path, unsigned int flags);
 
+/* stancf_create_with in the host's sea, as OpenFAST gives MoorDyn-F its
+   WtrDepth, rhoW and g before init: water_depth (m), water_density
+   (kg/m^3) and gravity (m/s^2) fill what a MoorDyn deck leaves out (a
+   glue code's deck has no WtrDpth), the deck's own values winning; 0 for
+   a value the host does not give. A negative or non-finite value: NULL,
+   the message naming it. */
+StancfSystem *stancf_create_in(const char *path, unsigned int flags, double water_depth,
+                               double water_density, double gravity);
+
 /* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 

@@ -25,6 +25,7 @@ pub use lines::*;
 use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT_FILE};
 use stancf::coupling::{CoupledForces, CoupledState};
 use stancf_scenario::coupling::Coupled;
+use stancf_scenario::scenario::HostEnvironment;
 use std::ffi::{c_char, c_int, c_uint, CStr};
 use std::path::PathBuf;
 
@@ -96,7 +97,40 @@ pub unsafe extern "C" fn stancf_create_with(
     create(path, flags)
 }
 
+/// `stancf_create_with` in the host's sea (`MoorDyn_Create` after
+/// OpenFAST's `InitInp%WtrDepth`, `rhoW`, `g`): `water_depth` (m),
+/// `water_density` (kg/m^3) and `gravity` (m/s^2) fill what a MoorDyn
+/// deck leaves out, the deck's own values winning; 0 for a value the host
+/// does not give. A negative or non-finite value is refused (NULL).
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_create_in(
+    path: *const c_char,
+    flags: c_uint,
+    water_depth: f64,
+    water_density: f64,
+    gravity: f64,
+) -> *mut StancfSystem {
+    let given = |v: f64| (v != 0.0).then_some(v);
+    let host = HostEnvironment {
+        water_depth: given(water_depth),
+        water_density: given(water_density),
+        gravity: given(gravity),
+    };
+    create_in(path, flags, &host)
+}
+
 unsafe fn create(path: *const c_char, flags: c_uint) -> *mut StancfSystem {
+    create_in(path, flags, &HostEnvironment::NONE)
+}
+
+unsafe fn create_in(
+    path: *const c_char,
+    flags: c_uint,
+    host: &HostEnvironment,
+) -> *mut StancfSystem {
     guard_ptr(|| {
         if flags & !STANCF_ALLOW_LARGE != 0 {
             return Err(Error::new(
@@ -105,7 +139,8 @@ unsafe fn create(path: *const c_char, flags: c_uint) -> *mut StancfSystem {
             ));
         }
         let path = path_of(path)?;
-        let coupled = stancf_scenario::coupling::open_with(&path, flags & STANCF_ALLOW_LARGE != 0)
+        let allow_large = flags & STANCF_ALLOW_LARGE != 0;
+        let coupled = stancf_scenario::coupling::open_in(&path, allow_large, host)
             .map_err(|e| Error::new(STANCF_INVALID_INPUT_FILE, e.to_string()))?;
         args::open_system(StancfSystem {
             coupled,

@@ -42,6 +42,10 @@ enum Command {
         /// exceeds the bounds that otherwise refuse a run (see `check`).
         #[arg(long)]
         allow_large: bool,
+        /// The water depth (m) of a MoorDyn deck without WtrDpth, as a
+        /// coupling code gives it (the deck's WtrDpth wins).
+        #[arg(long, value_name = "METRES")]
+        water_depth: Option<f64>,
     },
     /// Run a scenario over a grid of key values: `--set key=v1,v2` (dotted
     /// keys, list entries by index: `loads.1.drag_coefficient`), one folder
@@ -73,6 +77,10 @@ enum Command {
         /// --allow-large` would run it.
         #[arg(long)]
         allow_large: bool,
+        /// The water depth (m) of a MoorDyn deck without WtrDpth, as `run
+        /// --water-depth`.
+        #[arg(long, value_name = "METRES")]
+        water_depth: Option<f64>,
     },
     /// Reproduce one of the paper's studies (or `all`): tables as CSV and
     /// Markdown in DIR/<study>/.
@@ -83,6 +91,14 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+}
+
+/// `--water-depth` as the host's sea.
+fn host_depth(water_depth: Option<f64>) -> run::HostEnvironment {
+    run::HostEnvironment {
+        water_depth,
+        ..run::HostEnvironment::NONE
+    }
 }
 
 fn main() -> ExitCode {
@@ -105,6 +121,7 @@ fn main() -> ExitCode {
             vtk,
             quiet,
             allow_large,
+            water_depth,
         } => run::run(
             &scenario,
             run::RunOptions {
@@ -117,6 +134,7 @@ fn main() -> ExitCode {
                 cancel: Some(signals::cancel()),
                 shown_as: None,
                 collect: None,
+                host: host_depth(water_depth),
             },
         ),
         Command::Plot { dir } => stancf_cli::figures::plot(&dir),
@@ -129,7 +147,8 @@ fn main() -> ExitCode {
         Command::Check {
             scenario,
             allow_large,
-        } => check::check(&scenario, allow_large),
+            water_depth,
+        } => check::check_in(&scenario, allow_large, &host_depth(water_depth)),
         Command::Reproduce { study, out } => reproduce::reproduce(
             &study,
             &out.unwrap_or_else(|| PathBuf::from("out").join("reproduce")),

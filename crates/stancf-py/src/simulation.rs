@@ -125,11 +125,24 @@ impl PySimulation {
     /// The coupled system of scenario or deck text; `path` names it in
     /// messages and resolves the files it refers to; `allow_large` opens
     /// a system beyond the element bound `stancf run` applies without
-    /// `--allow-large` (the hard bound holds).
+    /// `--allow-large` (the hard bound holds); the host's water depth,
+    /// density and gravity fill what a MoorDyn deck leaves out.
     #[new]
-    #[pyo3(signature = (text, path, allow_large = false))]
-    fn new(text: &str, path: PathBuf, allow_large: bool) -> PyResult<Self> {
-        let opened = stancf_scenario::coupling::from_text_with(text, &path, allow_large)
+    #[pyo3(signature = (text, path, allow_large = false, water_depth = None, water_density = None, gravity = None))]
+    fn new(
+        text: &str,
+        path: PathBuf,
+        allow_large: bool,
+        water_depth: Option<f64>,
+        water_density: Option<f64>,
+        gravity: Option<f64>,
+    ) -> PyResult<Self> {
+        let host = stancf_scenario::scenario::HostEnvironment {
+            water_depth,
+            water_density,
+            gravity,
+        };
+        let opened = stancf_scenario::coupling::from_text_in(text, &path, allow_large, &host)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
         Ok(PySimulation {
             coupled_dof: opened.handle.coupled_dof(),

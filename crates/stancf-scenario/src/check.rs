@@ -284,11 +284,21 @@ pub(crate) fn mesh_text(model: &Model) -> String {
 /// what it is; `allow_large` as `run --allow-large` (a system beyond the
 /// bounds of [`crate::work_bounds`] is refused as `run` refuses it).
 pub fn check(path: &Path, allow_large: bool) -> Result<(), Failure> {
+    check_in(path, allow_large, &scenario::HostEnvironment::NONE)
+}
+
+/// [`check`] with what the command line gives a MoorDyn deck that leaves
+/// it out (`check --water-depth`).
+pub fn check_in(
+    path: &Path,
+    allow_large: bool,
+    host: &scenario::HostEnvironment,
+) -> Result<(), Failure> {
     let text = crate::input_file::read_text(path)
         .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
     let file = path.display().to_string();
     if let scenario::Input::System(sc) =
-        scenario::parse_input(&text, &file, path).map_err(|e| Failure::Input(e.0))?
+        scenario::parse_input_with(&text, &file, path, host).map_err(|e| Failure::Input(e.0))?
     {
         crate::work_bounds::admit_system(&file, &sc, allow_large)?;
         print!("{}", crate::check_system::check_system(path, &sc)?);

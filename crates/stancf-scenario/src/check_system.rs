@@ -321,20 +321,43 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
         ),
     ];
     if let Some(c) = &w.current {
-        let (first, last) = (c.rows[0], c.rows[c.rows.len() - 1]);
         let speed = |v: [f64; 3]| Sig((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt());
+        let what = match &c.field {
+            crate::scenario::CurrentField::Profile(rows) => {
+                let (first, last) = (rows[0], rows[rows.len() - 1]);
+                format!(
+                    "{} rows, z = {} m: {} m/s to z = {} m: {} m/s",
+                    rows.len(),
+                    Sig(first.z),
+                    speed(first.velocity),
+                    Sig(last.z),
+                    speed(last.velocity)
+                )
+            }
+            crate::scenario::CurrentField::Grid(g) => {
+                let [x, y, z, t] = g.axes().clone().map(|a| (a.len(), a[0], a[a.len() - 1]));
+                format!(
+                    "a grid of {} x {} x {} points (x {} to {} m, y {} to {} m, z {} to {} m) at {} \
+                     times from {} to {} s, up to {} m/s",
+                    x.0,
+                    y.0,
+                    z.0,
+                    Sig(x.1),
+                    Sig(x.2),
+                    Sig(y.1),
+                    Sig(y.2),
+                    Sig(z.1),
+                    Sig(z.2),
+                    t.0,
+                    Sig(t.1),
+                    Sig(t.2),
+                    Sig(c.fastest())
+                )
+            }
+        };
         out.push((
             "current",
-            format!(
-                "{} rows, z = {} m: {} m/s to z = {} m: {} m/s{}, from {}",
-                c.rows.len(),
-                Sig(first.z),
-                speed(first.velocity),
-                Sig(last.z),
-                speed(last.velocity),
-                ramp_words(c.ramp),
-                c.source
-            ),
+            format!("{what}{}, from {}", ramp_words(c.ramp), c.source),
         ));
     }
     if !w.waves.is_empty() || w.jonswap.is_some() {

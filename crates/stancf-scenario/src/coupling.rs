@@ -4,7 +4,7 @@
 //! [`stancf::coupling::CoupledSystem`]. The Python `stancf.Simulation`
 //! and the C library `stancf_c` open their systems here.
 
-use crate::scenario::{parse_input, Input, SystemScenario};
+use crate::scenario::{parse_input_with, HostEnvironment, Input, SystemScenario};
 use crate::Failure;
 use stancf::coupling::CoupledSystem;
 use std::path::Path;
@@ -38,9 +38,16 @@ pub fn open(path: &Path) -> Result<Coupled, Failure> {
 /// [`open`], with `allow_large` the opt-in for a system beyond the bound
 /// on elements without `--allow-large` (the hard bound holds).
 pub fn open_with(path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
+    open_in(path, allow_large, &HostEnvironment::NONE)
+}
+
+/// [`open_with`] in the host's sea: the water depth, density and gravity
+/// a MoorDyn deck leaves out are the host's ([`HostEnvironment`], as
+/// OpenFAST gives MoorDyn-F its `WtrDepth`, `rhoW` and `g` before init).
+pub fn open_in(path: &Path, allow_large: bool, host: &HostEnvironment) -> Result<Coupled, Failure> {
     let text = crate::input_file::read_text(path)
         .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-    from_text_with(&text, path, allow_large)
+    from_text_in(&text, path, allow_large, host)
 }
 
 /// The coupled system of scenario text (`path` names it in messages and
@@ -56,8 +63,19 @@ pub fn from_text(text: &str, path: &Path) -> Result<Coupled, Failure> {
 
 /// [`from_text`] with the opt-in for large systems of [`open_with`].
 pub fn from_text_with(text: &str, path: &Path, allow_large: bool) -> Result<Coupled, Failure> {
+    from_text_in(text, path, allow_large, &HostEnvironment::NONE)
+}
+
+/// [`from_text_with`] in the host's sea ([`open_in`]).
+pub fn from_text_in(
+    text: &str,
+    path: &Path,
+    allow_large: bool,
+    host: &HostEnvironment,
+) -> Result<Coupled, Failure> {
     let file = path.display().to_string();
-    let mut sc = match parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))? {
+    let parsed = parse_input_with(text, &file, path, host).map_err(|e| Failure::Input(e.0))?;
+    let mut sc = match parsed {
         Input::System(sc) => sc,
         Input::Cable(_) => {
             return Err(Failure::Input(format!(

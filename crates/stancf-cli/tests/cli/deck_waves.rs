@@ -1,10 +1,12 @@
 //! A MoorDyn deck's waves (docs/interface.md, "Water"): `WaveKin 7`, the
-//! components of `wave_frequencies.txt` beside the deck, become the sea's
-//! regular waves (their conversion, docs/method.md §12.1 (W2b), is
-//! checked against MoorDyn's formula in the scenario crate's
-//! `moordyn_waves` tests), superposed with a scenario's `[[water.waves]]`;
-//! the modes stancf does not map and bad files are refused naming the
-//! deck's line, the file and its line.
+//! components of `wave_frequencies.txt` beside the deck, and `WaveKin` 2
+//! and 3, MoorDyn's FFT grids of the same file or of the elevation record
+//! `wave_elevation.txt`, become the sea's regular waves (their
+//! conversions, docs/method.md §12.1 (W2b)-(W2e), are checked against
+//! MoorDyn's formulas in the scenario crate's `moordyn_wave*` tests),
+//! superposed with a scenario's `[[water.waves]]`; the modes stancf does
+//! not map and bad files are refused naming the deck's line, the file and
+//! its line.
 
 use crate::common::*;
 
@@ -98,16 +100,22 @@ fn a_wave_mode_or_file_stancf_does_not_map_is_refused_naming_its_line() {
             vec!["WaveKin is 1", "externally driven"],
         ),
         (
-            "fft grid",
+            "fft grid nyquist",
             "2",
-            Some(COMPONENTS),
-            vec!["WaveKin is 2", "WaveKin 7 sums"],
+            Some("0.0 0 0\n0.3 1.0 0\n"),
+            vec!["WaveKin 2 reads", "line 2", "Nyquist"],
         ),
         (
-            "elevation grid",
+            "fft grid uneven",
+            "2",
+            Some("0.0 0 0\n0.3 1.0 0\n0.3 1.0 0\n"),
+            vec!["WaveKin 2 reads", "line 3", "ascending"],
+        ),
+        (
+            "no elevation record",
             "3",
             Some(COMPONENTS),
-            vec!["WaveKin is 3"],
+            vec!["WaveKin 3 reads", "wave_elevation.txt", "cannot read"],
         ),
         (
             "unknown",
@@ -171,6 +179,85 @@ fn a_wave_mode_or_file_stancf_does_not_map_is_refused_naming_its_line() {
             "[system]\nmoordyn = \"deck.txt\"\n[analysis]\ntype = \"static\"\n",
             &files,
             &needles,
+        );
+    }
+}
+
+/// One regular wave of amplitude 1.5 m and period 15 s, eta = 1.5 sin(w t)
+/// at the origin, given three ways: as MoorDyn's elevation record
+/// (`WaveKin 3`, sampled every 0.25 s, a float MoorDyn reads exactly, for
+/// one period), as MoorDyn's FFT grid spectrum (`WaveKin 2`: a = -1.5 i at
+/// w = 2 pi / 15 on the grid of that spacing, eta = |a| cos(w t + arg a))
+/// and as `[[water.waves]]` (phase 90 deg: cos(90 deg - w t)). The line's
+/// end tensions over 3 s of the waves are the same in the three runs to
+/// round-off: the series (W2d) of the record is that one wave, its
+/// amplitude and phase to 1e-15, and nothing else.
+#[test]
+fn a_regular_wave_given_as_moordyns_record_or_grid_is_the_same_wave_given_in_toml() {
+    let d = scratch("deck-wave-record");
+    let omega = 2.0 * std::f64::consts::PI / 15.0;
+    let record: String = (0..=60)
+        .map(|i| {
+            let t = 0.25 * i as f64;
+            format!("{t} {}\n", 1.5 * (omega * t).sin())
+        })
+        .collect();
+    std::fs::create_dir_all(d.join("record")).unwrap();
+    std::fs::create_dir_all(d.join("grid")).unwrap();
+    std::fs::write(d.join("record/wave_elevation.txt"), record).unwrap();
+    let spectrum = format!("0 0 0\n{omega} 0 -1.5\n{} 0 0\n", 2.0 * omega);
+    std::fs::write(d.join("grid/wave_frequencies.txt"), spectrum).unwrap();
+    std::fs::write(d.join("record/deck.txt"), deck("3")).unwrap();
+    std::fs::write(d.join("grid/deck.txt"), deck("2")).unwrap();
+    std::fs::write(d.join("deck.txt"), deck("0")).unwrap();
+    let analysis = "[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
+                    time_step = 0.1\nduration = 3.0\n";
+    let runs = [
+        (
+            "record",
+            "[system]\nmoordyn = \"record/deck.txt\"\n".to_string(),
+        ),
+        (
+            "grid",
+            "[system]\nmoordyn = \"grid/deck.txt\"\n".to_string(),
+        ),
+        (
+            "toml",
+            "[system]\nmoordyn = \"deck.txt\"\n[[water.waves]]\namplitude = 1.5\n\
+             period = 15.0\nphase = 90.0\n"
+                .to_string(),
+        ),
+    ];
+    let mut tensions = Vec::new();
+    for (name, system) in runs {
+        let sc = write_scenario(&d, &format!("{name}.toml"), &format!("{system}{analysis}"));
+        let (so, se) = text(&stancf(&["check", sc.to_str().unwrap()]));
+        assert!(so.contains("1 regular Airy wave(s)"), "{name}: {so}{se}");
+        let out = d.join(format!("out-{name}"));
+        let o = run_quiet(&sc, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
+        tensions.push(read_tensions(&out.join("tensions.csv")));
+    }
+    let toml = &tensions[2];
+    let first = toml[0][6];
+    let swing = toml
+        .iter()
+        .map(|r| (r[6] - first).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        swing > 100.0,
+        "the waves move the tension by {swing} N only"
+    );
+    for (name, run) in ["record", "grid"].iter().zip(&tensions) {
+        assert_eq!(run.len(), toml.len());
+        let worst = run
+            .iter()
+            .zip(toml)
+            .map(|(a, b)| (a[6] - b[6]).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-9 * first,
+            "{name}: {worst} N apart from the TOML wave's (swing {swing} N of {first} N)"
         );
     }
 }

@@ -15,6 +15,7 @@ mod coupled_bodies;
 mod coupled_pinned;
 mod coupled_rods;
 mod coupling;
+mod deck_currents;
 mod deck_statics;
 mod deck_waves;
 mod decks_without_lines;

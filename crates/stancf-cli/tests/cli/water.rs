@@ -323,3 +323,65 @@ fn history_carries_the_water_and_seabed_work() {
         rows[0]
     );
 }
+
+/// `--water-depth` is the host's depth of a deck without WtrDpth (a glue
+/// code's deck): `check` and `run` take it where the deck says nothing,
+/// and say so; the deck's own WtrDpth wins, with a note.
+#[test]
+fn the_command_lines_water_depth_is_a_decks_without_wtrdpth() {
+    let d = scratch("water-depth-flag");
+    let oc4 = std::fs::read_to_string(repo_file("examples/oc4-deepcwind-moordyn.txt")).unwrap();
+    let without: String = oc4
+        .lines()
+        .filter(|l| l.split_whitespace().nth(1) != Some("WtrDpth"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    std::fs::write(d.join("glue.txt"), without).unwrap();
+    let deck = d.join("glue.txt");
+    let deck = deck.to_str().unwrap();
+    let (so, se) = text_of_check(&["check", deck, "--water-depth", "210"]);
+    assert!(so.contains("depth 210 m"), "{so}{se}");
+    assert!(
+        so.contains("no WtrDpth: the host's water depth, 210 m"),
+        "{so}"
+    );
+    let (so, _) = text_of_check(&["check", deck]);
+    assert!(
+        so.contains("depth 200 m") && so.contains("MoorDyn's rule"),
+        "{so}"
+    );
+    let own = repo_file("examples/oc4-deepcwind-moordyn.txt");
+    let (so, _) = text_of_check(&["check", own.to_str().unwrap(), "--water-depth", "210"]);
+    assert!(so.contains("depth 200 m"), "{so}");
+    assert!(so.contains("the deck's WtrDpth 200 m is used; the host's water depth, 210 m, is not"));
+    for (flag, out) in [(Some("210"), "out-210"), (None, "out-rule")] {
+        let mut args = vec!["run", "--quiet", deck, "--out"];
+        let out = d.join(out);
+        args.push(out.to_str().unwrap());
+        if let Some(h) = flag {
+            args.extend(["--water-depth", h]);
+        }
+        let o = stancf(&args);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    }
+    let fairlead = |out: &str| read_tensions(&d.join(out).join("tensions.csv"))[1][6];
+    let (deeper, rule) = (fairlead("out-210"), fairlead("out-rule"));
+    assert!(
+        (deeper - rule).abs() > 1e-3 * rule,
+        "{deeper} against {rule}"
+    );
+    let o = stancf(&["check", deck, "--water-depth=-3"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o).1.contains("the host's water depth is -3 m"),
+        "{}",
+        text(&o).1
+    );
+}
+
+/// `stancf <args>`'s standard output and error, the exit code 0.
+fn text_of_check(args: &[&str]) -> (String, String) {
+    let o = stancf(args);
+    assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o).1);
+    text(&o)
+}

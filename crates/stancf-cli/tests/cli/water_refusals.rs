@@ -271,13 +271,33 @@ fn a_water_key_both_the_deck_and_the_scenario_give_is_refused_naming_both() {
 fn a_decks_current_mode_or_file_stancf_does_not_map_is_refused_naming_its_line() {
     let good = "header\nheader\nheader\n-150.0 0.1 0.0 0.0\n0.0 0.3 0.0 0.0\n";
     for (name, options, file, needles) in [
-        ("dynamic grid", "2 Currents", good, vec!["Currents is 2"]),
-        ("4d grid", "5 Currents", good, vec!["Currents is 5"]),
+        (
+            "dynamic grid without its file",
+            "2 Currents",
+            good,
+            vec![
+                "Currents 2 reads",
+                "current_profile_dynamic.txt",
+                "cannot read",
+            ],
+        ),
+        (
+            "4d grid without its file",
+            "5 Currents",
+            good,
+            vec!["Currents 5 reads", "current_profile_4d.txt", "cannot read"],
+        ),
+        (
+            "node mode",
+            "3 Currents",
+            good,
+            vec!["Currents is 3", "not implemented by MoorDyn either"],
+        ),
         (
             "short row",
             "1 Currents",
-            "h\nh\nh\n-150.0 0.1 0.0\n",
-            vec!["line 4", "4 numbers"],
+            "h\nh\nh\n-150.0\n",
+            vec!["line 4", "at least 2 numbers"],
         ),
         (
             "word",

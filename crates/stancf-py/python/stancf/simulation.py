@@ -115,6 +115,12 @@ class Simulation:
     the equilibrium (``body_ids``); before it they raise :class:`ScenarioError` naming the id, and an
     unknown id raises KeyError naming it.
 
+    ``water_depth`` (m), ``water_density`` (kg/m^3) and ``gravity``
+    (m/s^2) are what a host gives a MoorDyn deck before init, as OpenFAST
+    gives MoorDyn-F its depth, density and g: used where the deck leaves
+    them out (a glue code's deck has no WtrDpth), the deck's own where it
+    gives them (``check`` notes which).
+
     One ``step_to`` takes at most ``max_interval_steps`` internal steps
     (100 000 unless set, here or as ``Simulation(..., max_interval_steps=n)``);
     a longer interval is refused before anything moves.
@@ -132,13 +138,23 @@ class Simulation:
     RuntimeError.
     """
 
-    def __init__(self, scenario_or_deck, max_interval_steps=None, allow_large=False):
+    def __init__(
+        self,
+        scenario_or_deck,
+        max_interval_steps=None,
+        allow_large=False,
+        water_depth=None,
+        water_density=None,
+        gravity=None,
+    ):
         if isinstance(scenario_or_deck, Scenario):
             text, name = scenario_or_deck.text, scenario_or_deck.name
         else:
             path = Path(scenario_or_deck)
             text, name = _stancf.read_input(str(path)), str(path)
-        self._sim = _stancf.Simulation(text, name, bool(allow_large))
+        self._sim = _stancf.Simulation(
+            text, name, bool(allow_large), water_depth, water_density, gravity
+        )
         if max_interval_steps is not None:
             self.max_interval_steps = max_interval_steps
 

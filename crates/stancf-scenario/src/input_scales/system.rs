@@ -181,12 +181,15 @@ fn water_values(sc: &SystemScenario, w: &Water, values: &mut Vec<(String, f64)>)
         values.push(("water.jonswap.tp".into(), j.tp));
     }
     if let Some(c) = &w.current {
-        let fastest = c
-            .rows
-            .iter()
-            .map(|r| magnitude(&r.velocity))
-            .fold(0.0, f64::max);
-        let deepest = c.rows.iter().map(|r| r.z.abs()).fold(0.0, f64::max);
+        let fastest = c.fastest();
+        let deepest = match &c.field {
+            crate::scenario::CurrentField::Profile(rows) => {
+                rows.iter().map(|r| r.z.abs()).fold(0.0, f64::max)
+            }
+            crate::scenario::CurrentField::Grid(g) => {
+                g.axes()[2].iter().map(|z| z.abs()).fold(0.0, f64::max)
+            }
+        };
         values.push(("water.current".into(), fastest.max(deepest)));
     }
     keys

@@ -37,6 +37,10 @@ pub enum SupportedOption {
     /// of `wave_frequencies.txt` beside the deck (other modes are refused
     /// by the scenario that reads the deck).
     WaveKin,
+    /// `dtWave`: the interval MoorDyn resamples the elevation record of
+    /// `WaveKin 3` at (s), read as MoorDyn reads it, in single precision
+    /// ([`SupportedOption::as_moordyn_reads`]); MoorDyn's default 0.25 s.
+    WaveTimeStep,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
     /// MoorDyn ignores it.
@@ -59,6 +63,7 @@ impl SupportedOption {
             SupportedOption::OutputInterval => "dtOut",
             SupportedOption::Currents => "Currents",
             SupportedOption::WaveKin => "WaveKin",
+            SupportedOption::WaveTimeStep => "dtWave",
             SupportedOption::Courant => "CFL",
         }
     }
@@ -68,8 +73,18 @@ impl SupportedOption {
     fn zero_allowed(self) -> bool {
         !matches!(
             self,
-            SupportedOption::TimeStep | SupportedOption::WaterDepth
+            SupportedOption::TimeStep | SupportedOption::WaterDepth | SupportedOption::WaveTimeStep
         )
+    }
+
+    /// The value MoorDyn computes with: `dtWave` is read by `stof`, a
+    /// float, and widened (0.15 becomes 0.15000000596...); the others as
+    /// given.
+    pub fn as_moordyn_reads(self, v: f64) -> f64 {
+        match self {
+            SupportedOption::WaveTimeStep => v as f32 as f64,
+            _ => v,
+        }
     }
 }
 
@@ -83,8 +98,7 @@ pub enum OptionKind {
     /// `fileIC` and their old names), logging and output switches
     /// (`writeLog`, `WriteUnits`, `disableOutput`, `disableOutTime`,
     /// `OutSwitch`, `Echo`), and the settings that are inert as given
-    /// (`inertialF 0`, `dtWave`,
-    /// `UnifyCurrentGrid`, `inertialF_rampT`).
+    /// (`inertialF 0`, `UnifyCurrentGrid`, `inertialF_rampT`).
     Ignored,
 }
 
@@ -142,9 +156,10 @@ fn classify(lower: &str) -> Option<Class> {
         "currents" => s(S::Currents),
         "dtic" | "icdt" | "tmaxic" | "ictmax" | "cdscaleic" | "icdfac" | "threshic"
         | "icthresh" | "gendynamicic" | "icgendynamic" | "fileic" | "icfile" | "writelog"
-        | "writeunits" | "disableoutput" | "disableouttime" | "outswitch" | "echo" | "dtwave"
+        | "writeunits" | "disableoutput" | "disableouttime" | "outswitch" | "echo"
         | "unifycurrentgrid" | "inertialf_rampt" => Some(Class::Known(OptionKind::Ignored)),
         "wavekin" => s(S::WaveKin),
+        "dtwave" => s(S::WaveTimeStep),
         "inertialf" => Some(Class::IgnoredIfZero(
             "MoorDyn-F's inertial coupled forces are not supported",
         )),

@@ -20,7 +20,8 @@ use crate::scenario::{AnalysisKind, Input};
 use crate::Failure;
 use std::path::{Path, PathBuf};
 
-pub use crate::check::check;
+pub use crate::check::{check, check_in};
+pub use crate::scenario::HostEnvironment;
 
 /// A request to stop a run, polled after every step (the Python layer
 /// answers it from Ctrl-C).
@@ -72,6 +73,9 @@ pub struct RunOptions {
     /// Also keep every result file in memory as it is written, the same
     /// bytes (Python's `stancf.run` takes its arrays from here).
     pub collect: Option<Collector>,
+    /// What the command line gives a MoorDyn deck that leaves it out
+    /// (`--water-depth`).
+    pub host: crate::scenario::HostEnvironment,
 }
 
 impl RunOptions {
@@ -154,8 +158,8 @@ pub fn run(path: &Path, opts: RunOptions) -> Result<(), Failure> {
 /// interrupted; an invalid scenario or a write error leaves it untouched.
 pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure> {
     let file = path.display().to_string();
-    if let Input::System(sc) =
-        crate::scenario::parse_input(text, &file, path).map_err(|e| Failure::Input(e.0))?
+    if let Input::System(sc) = crate::scenario::parse_input_with(text, &file, path, &opts.host)
+        .map_err(|e| Failure::Input(e.0))?
     {
         return in_result_folder(text, path, &opts, |place| {
             system::run_system(path, place, &opts, sc)

@@ -292,11 +292,12 @@ fn non_negative_vector(ctx: &Ctx, key: &str, v: &[f64]) -> Result<[f64; 3], Scen
 }
 
 /// The water's current where it is the same at every depth (zero
-/// without one); None where it varies with depth.
+/// without one); None where it varies with depth (or in time).
 pub fn uniform_current(w: &Water) -> Option<[f64; 3]> {
     let Some(c) = &w.current else {
         return Some([0.0; 3]);
     };
-    let first = c.rows[0].velocity;
-    c.rows.iter().all(|r| r.velocity == first).then_some(first)
+    let rows = c.profile()?;
+    let first = rows[0].velocity;
+    rows.iter().all(|r| r.velocity == first).then_some(first)
 }

@@ -16,11 +16,15 @@ mod cable;
 mod constraints;
 mod context;
 mod deck_mesh;
+mod host_environment;
 mod initial_velocity;
 mod loads;
 mod messages;
 mod moordyn;
+mod moordyn_current_grids;
 mod moordyn_water;
+mod moordyn_wave_frequencies;
+mod moordyn_wave_grids;
 mod moordyn_waves;
 mod motions;
 pub mod names;
@@ -38,6 +42,7 @@ mod water;
 pub use analysis::InitialShape;
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS, MAX_STEPS};
 pub use bodies::{moments_of_a_body, uniform_current, BodyType, SystemBody};
+pub use host_environment::HostEnvironment;
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
 pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
@@ -47,7 +52,7 @@ pub use system_model::EI_FACTOR;
 pub use system_parts::{
     LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
-pub use water::{Current, SeabedOptions, Water};
+pub use water::{Current, CurrentField, SeabedOptions, Water};
 
 use context::Ctx;
 use raw::RawScenario;
@@ -101,18 +106,33 @@ pub enum Input {
 /// with `[system]`, `[[line_types]]`, `[[points]]`, `[[lines]]` or
 /// `[[motions]]`; else a single cable.
 pub fn parse_input(text: &str, file: &str, path: &Path) -> Result<Input, ScenarioError> {
+    parse_input_with(text, file, path, &HostEnvironment::NONE)
+}
+
+/// [`parse_input`] with what a host gives a MoorDyn deck (bare or taken
+/// by a scenario): the water depth, density and gravity the deck leaves
+/// out ([`HostEnvironment`]).
+pub fn parse_input_with(
+    text: &str,
+    file: &str,
+    path: &Path,
+    host: &HostEnvironment,
+) -> Result<Input, ScenarioError> {
+    let host = host
+        .checked()
+        .map_err(|e| ScenarioError(format!("{file}: {e}")))?;
     if crate::moordyn::looks_like_moordyn(text) {
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
-        let sc = moordyn::deck_scenario(&deck, file, path, title, None)?;
+        let sc = moordyn::deck_scenario(&deck, file, path, title, None, &host)?;
         return Ok(Input::System(sc));
     }
     let ctx = Ctx { file };
     let raw = raw_scenario(text, file)?;
     if raw.is_system() {
         let title = title_of(raw.title.clone(), path);
-        return system::system_scenario(&ctx, raw, title, path).map(Input::System);
+        return system::system_scenario(&ctx, raw, title, path, &host).map(Input::System);
     }
     cable_scenario(&ctx, raw, path).map(Input::Cable)
 }

@@ -56,14 +56,13 @@ pub(super) fn deck_scenario(
     path: &Path,
     title: String,
     added: Option<(&Ctx, WaterKeys)>,
+    host: &super::HostEnvironment,
 ) -> Result<SystemScenario, ScenarioError> {
-    let g = deck_gravity(deck, file)?;
+    let g = deck_gravity(deck, file, host)?;
     let (waves, wave_note) = super::moordyn_waves::deck_waves(deck, file, path)?;
-    let deck_keys = super::water::WaterKeys {
-        waves,
-        ..deck_water_keys(deck, file, path)?
-    };
-    let (water, depth_note) = deck_water(deck_keys, file, deck, added)?;
+    let (keys, current_note) = deck_water_keys(deck, file, path)?;
+    let deck_keys = super::water::WaterKeys { waves, ..keys };
+    let (water, depth_note) = deck_water(deck_keys, file, deck, added, host)?;
     let (channels, channel_notes) = deck_channels(deck);
     let ctx = Ctx { file };
     let raw = RawAnalysis {
@@ -96,8 +95,10 @@ pub(super) fn deck_scenario(
     analysis.time_step = deck.time_step().unwrap_or(0.0);
     notes.extend(step_notes(deck));
     notes.extend(channel_notes);
+    notes.extend(host.notes(deck));
     notes.extend(depth_note);
     notes.extend(wave_note);
+    notes.extend(current_note);
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
@@ -167,8 +168,16 @@ fn step_notes(deck: &Deck) -> Vec<String> {
 /// `g` is given). It is the water's too (its pressure, its waves): out of
 /// range it is refused here by its line, before the water is built with
 /// it.
-fn deck_gravity(deck: &Deck, file: &str) -> Result<f64, ScenarioError> {
-    let g = deck.option(SupportedOption::Gravity).unwrap_or(9.80665);
+/// The deck's `g`, else the host's, else MoorDyn's 9.80665 m/s^2.
+fn deck_gravity(
+    deck: &Deck,
+    file: &str,
+    host: &super::HostEnvironment,
+) -> Result<f64, ScenarioError> {
+    let g = deck
+        .option(SupportedOption::Gravity)
+        .or(host.gravity)
+        .unwrap_or(9.80665);
     let range = 1.0 / crate::scale_range::MAX_SCALE..=crate::scale_range::MAX_SCALE;
     if g == 0.0 || (g.is_finite() && range.contains(&g)) {
         return Ok(g);

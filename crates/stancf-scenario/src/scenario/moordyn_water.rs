@@ -1,16 +1,17 @@
 //! A MoorDyn deck's water (docs/interface.md, "Water"): the options
 //! WtrDpth, WtrDnsty, kBot, cBot, FrictionCoefficient (axial and
-//! transverse alike) and `Currents 1` (the steady profile of
-//! `current_profile.txt` beside the deck, MoorDyn-C's format), merged
-//! with the `[water]` keys of a scenario that takes the deck: a key both
-//! give is refused naming both.
+//! transverse alike) and `Currents` 1 (the steady profile of
+//! `current_profile.txt` beside the deck, MoorDyn-C's format), 2 and 5
+//! (its dynamic profile and 4-D grid, `super::moordyn_current_grids`),
+//! merged with the `[water]` keys of a scenario that takes the deck: a
+//! key both give is refused naming both.
 //!
 //! What the deck asks for that stancf does not map is refused by name:
-//! `Currents` modes other than 0 and 1 (time-varying or 4D grids).
+//! `Currents` 3 and 4 (node modes MoorDyn does not implement either).
 //! The deck's waves (`WaveKin`): `super::moordyn_waves`.
 
 use super::context::Ctx;
-use super::water::{Current, Water, WaterKeys};
+use super::water::{Current, CurrentField, Water, WaterKeys};
 use super::ScenarioError;
 use crate::moordyn::{Deck, OptionKind, SupportedOption};
 use stancf::water::current::{CurrentProfile, CurrentRow};
@@ -32,65 +33,101 @@ pub(super) fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, us
         .map(|o| (o.name.as_str(), o.line))
 }
 
-/// The water keys the deck at `path` (named `file` in messages) gives.
+/// The water keys the deck at `path` (named `file` in messages) gives,
+/// and a note on its current where it varies in time.
 pub(super) fn deck_water_keys(
     deck: &Deck,
     file: &str,
     path: &Path,
-) -> Result<WaterKeys, ScenarioError> {
+) -> Result<(WaterKeys, Option<String>), ScenarioError> {
     let friction = deck.option(SupportedOption::FrictionCoefficient);
-    Ok(WaterKeys {
+    let (current, note) = deck_current(deck, file, path)?;
+    let keys = WaterKeys {
         depth: deck.option(SupportedOption::WaterDepth),
         density: deck.option(SupportedOption::WaterDensity),
         stiffness: deck.option(SupportedOption::BottomStiffness),
         damping: deck.option(SupportedOption::BottomDamping),
         friction_axial: friction,
         friction_transverse: friction,
-        current: deck_current(deck, file, path)?,
+        current,
         ..WaterKeys::default()
-    })
+    };
+    Ok((keys, note))
 }
 
 /// `Currents`: 0 (or missing) none; 1 the steady profile of
-/// [`CURRENT_PROFILE_FILE`] beside the deck; any other mode refused.
-fn deck_current(deck: &Deck, file: &str, path: &Path) -> Result<Option<Current>, ScenarioError> {
+/// [`CURRENT_PROFILE_FILE`] beside the deck; 2 and 5 the dynamic profile
+/// and the 4-D grid (`super::moordyn_current_grids`), with a note; 3 and
+/// 4 (MoorDyn's unimplemented node modes) and others refused.
+fn deck_current(
+    deck: &Deck,
+    file: &str,
+    path: &Path,
+) -> Result<(Option<Current>, Option<String>), ScenarioError> {
+    use super::moordyn_current_grids as grids;
     let Some(mode) = deck.option(SupportedOption::Currents) else {
-        return Ok(None);
+        return Ok((None, None));
     };
     let (name, line) = option_at(deck, SupportedOption::Currents).expect("the option is set");
-    if mode == 0.0 {
-        return Ok(None);
-    }
-    if mode != 1.0 {
-        return Err(ScenarioError(format!(
-            "{file}: line {line}: option {name} is {mode}: stancf reads MoorDyn's steady current \
-             profile (Currents 1, {CURRENT_PROFILE_FILE}) only; time-varying and 4D current \
-             grids are not mapped (give a steady profile, or [water.current] in a scenario)"
-        )));
-    }
+    let source = match mode {
+        0.0 => return Ok((None, None)),
+        1.0 => CURRENT_PROFILE_FILE,
+        2.0 => grids::DYNAMIC_PROFILE_FILE,
+        5.0 => grids::GRID_4D_FILE,
+        _ => {
+            return Err(ScenarioError(format!(
+                "{file}: line {line}: option {name} is {mode}: MoorDyn-C's current modes are 0, \
+                 1 (steady profile), 2 (dynamic profile) and 5 (4-D grid); its 3 and 4 are not \
+                 implemented by MoorDyn either"
+            )))
+        }
+    };
     let dir = path.parent().unwrap_or(Path::new(""));
-    let profile = dir.join(CURRENT_PROFILE_FILE);
-    let rows = read_current_profile(&profile).map_err(|e| {
+    let at = dir.join(source);
+    let read = |e: String| {
         ScenarioError(format!(
-            "{file}: line {line}: option {name} 1 reads {}: {e}",
-            profile.display()
+            "{file}: line {line}: option {name} {mode} reads {}: {e}",
+            at.display()
         ))
-    })?;
-    Ok(Some(Current {
-        rows,
+    };
+    let described = format!("{} (the deck's {name} {mode})", at.display());
+    if mode == 1.0 {
+        let rows = read_current_profile(&at).map_err(read)?;
+        let current = Current {
+            field: CurrentField::Profile(rows),
+            ramp: 0.0,
+            source: described,
+        };
+        return Ok((Some(current), None));
+    }
+    let text = crate::input_file::read_text(&at).map_err(read)?;
+    let grid = if mode == 2.0 {
+        grids::read_dynamic_profile(&text)
+    } else {
+        grids::read_grid_4d(&text)
+    }
+    .map_err(read)?;
+    let note = grids::grid_note(mode as u8, name, line, &at, &grid);
+    let current = Current {
+        field: CurrentField::Grid(Box::new(grid)),
         ramp: 0.0,
-        source: format!("{} (the deck's {name} 1)", profile.display()),
-    }))
+        source: described,
+    };
+    Ok((Some(current), Some(note)))
 }
 
 /// MoorDyn-C's steady current profile: 3 lines skipped, then rows
-/// `z ux uy uz` (m, m/s; z up, the still surface z = 0), blank lines
-/// skipped, z strictly increasing or decreasing. Errors name the line.
+/// `z ux [uy [uz]]` (m, m/s; z up, the still surface z = 0; uy and uz 0
+/// when left out and further columns ignored, as MoorDyn reads them),
+/// blank lines skipped, z strictly increasing or decreasing. Errors name
+/// the line.
 pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
     let text = crate::input_file::read_text(path)?;
     let mut rows = Vec::new();
     let mut lines = Vec::new();
-    for (at, v) in table_rows(&text, CURRENT_PROFILE_HEADER_LINES, 4..=4, "\"z ux uy uz\"")? {
+    let shape = "\"z ux [uy [uz]]\"";
+    for (at, mut v) in table_rows(&text, CURRENT_PROFILE_HEADER_LINES, 2..=usize::MAX, shape)? {
+        v.resize(v.len().max(4), 0.0);
         rows.push(CurrentRow {
             z: v[0],
             velocity: [v[1], v[2], v[3]],
@@ -119,8 +156,9 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<CurrentRow>, String> {
 
 /// The rows of a whitespace-separated table of MoorDyn's (a current
 /// profile, wave components): `skip` header lines left out, blank lines
-/// skipped, each row of `count` finite numbers (`row` says what one is in
-/// the error), with its 1-based line number. Errors name the line.
+/// skipped, each row of `count` finite numbers (`usize::MAX` as its end:
+/// any more; `row` says what one is in the error), with its 1-based line
+/// number. Errors name the line.
 pub(super) fn table_rows(
     text: &str,
     skip: usize,
@@ -138,6 +176,8 @@ pub(super) fn table_rows(
             let (lo, hi) = (count.start(), count.end());
             let numbers = if lo == hi {
                 format!("{lo}")
+            } else if *hi == usize::MAX {
+                format!("at least {lo}")
             } else {
                 format!("{lo} or {hi}")
             };
@@ -186,6 +226,7 @@ pub(super) fn deck_water(
     file: &str,
     deck: &Deck,
     added: Option<(&Ctx, WaterKeys)>,
+    host: &super::HostEnvironment,
 ) -> Result<(Water, Option<String>), ScenarioError> {
     let mut keys = match added {
         None => deck_keys,
@@ -205,15 +246,16 @@ pub(super) fn deck_water(
             }
             deck_keys.or(added)
         }
-    };
+    }
+    .or(host.water_keys());
     let mut note = None;
     if keys.depth.is_none() {
         if let Some(depth) = moordyn_depth(deck) {
             keys.depth = Some(depth);
             note = Some(format!(
                 "OPTIONS: no WtrDpth: MoorDyn's rule, the depth of the deepest point, {} m (its \
-                 anchors on the bed); give WtrDpth, or water.depth in a scenario that takes the \
-                 deck, for another",
+                 anchors on the bed); give WtrDpth, water.depth in a scenario that takes the \
+                 deck, or the host's depth (--water-depth, or from a coupling code), for another",
                 stancf::error::Sig(depth)
             ));
         }
@@ -221,8 +263,8 @@ pub(super) fn deck_water(
     let water = keys.water().ok_or_else(|| {
         ScenarioError(format!(
             "{file}: OPTIONS: WtrDpth is missing and no point is under the surface to take \
-             MoorDyn's depth from (the deepest point's): give WtrDpth, or water.depth in a \
-             scenario that takes the deck"
+             MoorDyn's depth from (the deepest point's): give WtrDpth, water.depth in a \
+             scenario that takes the deck, or the host's depth (--water-depth)"
         ))
     })?;
     Ok((water, note))

@@ -2,7 +2,8 @@
 //! §12.1): `WaveKin 7`, MoorDyn-C's summed wave components, read from
 //! `wave_frequencies.txt` beside the deck and given to the sea as regular
 //! Airy waves, superposed with any `[[water.waves]]` of a scenario that
-//! takes the deck. The other modes are refused by name.
+//! takes the deck; `WaveKin` 2 and 3, MoorDyn's FFT grids, by
+//! `super::moordyn_wave_grids`. The other modes are refused by name.
 //!
 //! MoorDyn (Waves/SpectrumKin.cpp) sums, for each row `w re im [beta]`
 //! (rad/s, m, m, rad), the elevation
@@ -27,25 +28,14 @@
 //! order in the waves' height over the depth) and differ in the splash
 //! zone.
 
+pub use super::moordyn_wave_frequencies::{
+    read_wave_frequencies, WaveComponent, WAVE_FREQUENCIES_FILE,
+};
 use super::ScenarioError;
 use crate::moordyn::{Deck, SupportedOption};
 use stancf::water::waves::AiryWave;
 use std::f64::consts::PI;
 use std::path::Path;
-
-/// The file MoorDyn-C reads its wave components from (`WaveKin` 2 and 7),
-/// in the deck's folder.
-pub const WAVE_FREQUENCIES_FILE: &str = "wave_frequencies.txt";
-
-/// One row of [`WAVE_FREQUENCIES_FILE`]: angular frequency (rad/s), the
-/// complex amplitude (m) and the heading (rad), and its line.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WaveComponent {
-    pub omega: f64,
-    pub amplitude: [f64; 2],
-    pub heading: f64,
-    pub line: usize,
-}
 
 /// The deck's waves and a note for `check` saying where they come from,
 /// from its `WaveKin`: 0 (or missing) none; 7 the components of
@@ -66,6 +56,7 @@ pub(super) fn deck_waves(
              that takes this deck (system.moordyn) as [[water.waves]] or [water.jonswap]"
         )))
     };
+    let dir = path.parent().unwrap_or(Path::new(""));
     match mode {
         0.0 => return Ok((Vec::new(), None)),
         7.0 => {}
@@ -76,15 +67,12 @@ pub(super) fn deck_waves(
             )
         }
         2.0 | 3.0 => {
-            return refuse(
-                "MoorDyn's FFT wave grids (wave_frequencies.txt or wave_elevation.txt over \
-                 water_grid.txt, interpolated linearly in space and time) are not mapped; \
-                 WaveKin 7 sums the same components exactly",
-            )
+            let grid = super::moordyn_wave_grids::deck_grid_waves;
+            let (waves, note) = grid(deck, mode as u8, (name, line), file, dir)?;
+            return Ok((waves, Some(note)));
         }
         _ => return refuse("MoorDyn-C's wave modes are 0, 1, 2, 3 and 7"),
     }
-    let dir = path.parent().unwrap_or(Path::new(""));
     let at = dir.join(WAVE_FREQUENCIES_FILE);
     let read = |e: String| {
         ScenarioError(format!(
@@ -107,43 +95,6 @@ pub(super) fn deck_waves(
         stancf::error::Sig(crest)
     );
     Ok((waves, Some(note)))
-}
-
-/// MoorDyn-C's `wave_frequencies.txt`: rows `w re im [beta]` (blank lines
-/// skipped), at least 2, w not negative and finite, |beta| <= 2 pi, as
-/// MoorDyn's `spectrumFromFile` reads them. Errors name the line.
-pub fn read_wave_frequencies(path: &Path) -> Result<Vec<WaveComponent>, String> {
-    let text = crate::input_file::read_text(path)?;
-    let mut rows = Vec::new();
-    let shape = "\"w re im [beta]\" (rad/s, m, m, rad)";
-    for (at, mut v) in super::moordyn_water::table_rows(&text, 0, 3..=4, shape)? {
-        v.resize(4, 0.0);
-        if v[0] < 0.0 {
-            return Err(format!(
-                "line {at}: the frequency {} rad/s is negative",
-                v[0]
-            ));
-        }
-        if v[3].abs() > 2.0 * PI {
-            return Err(format!(
-                "line {at}: the direction {} is beyond 2 pi; it is in radians",
-                v[3]
-            ));
-        }
-        rows.push(WaveComponent {
-            omega: v[0],
-            amplitude: [v[1], v[2]],
-            heading: v[3],
-            line: at,
-        });
-    }
-    if rows.len() < 2 {
-        return Err(format!(
-            "{} row(s); MoorDyn asks for 2 at least",
-            rows.len()
-        ));
-    }
-    Ok(rows)
 }
 
 /// The regular waves (W2b) of the components with a frequency and an

@@ -21,6 +21,7 @@ pub(super) fn system_scenario(
     mut raw: RawScenario,
     title: String,
     path: &Path,
+    host: &super::HostEnvironment,
 ) -> Result<SystemScenario, ScenarioError> {
     for (present, key) in [
         (raw.cable.is_some(), "cable"),
@@ -60,7 +61,7 @@ pub(super) fn system_scenario(
             ));
         }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
-        return deck_system(ctx, raw, title, path, &deck_path);
+        return deck_system(ctx, raw, title, path, &deck_path, host);
     }
     if !raw.mesh.is_empty() {
         return Err(ctx.err(
@@ -142,6 +143,7 @@ fn deck_system(
     title: String,
     path: &Path,
     deck_path: &Path,
+    host: &super::HostEnvironment,
 ) -> Result<SystemScenario, ScenarioError> {
     let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
     let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
@@ -152,6 +154,7 @@ fn deck_system(
         deck_path,
         title,
         added.map(|w| (ctx, w)),
+        host,
     )?;
     sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
         .with_rods(&sc.rods, deck.points.len());

@@ -11,6 +11,7 @@ use super::raw::{RawCurrent, RawJonswap, RawSeabed, RawWater, RawWave};
 use super::ScenarioError;
 use stancf::system::StaticFriction;
 use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
+use stancf::water::current_grid::CurrentGrid;
 use stancf::water::spectrum::Jonswap;
 use stancf::water::waves::AiryWave;
 use stancf::water::{Seabed, SeabedContact};
@@ -67,15 +68,48 @@ impl SeabedOptions {
     };
 }
 
-/// A steady current profile: rows (z, velocity), linear between rows and
-/// constant beyond the ends (W9), started by a ramp.
+/// A current, started by a ramp: a steady profile or a grid in space and
+/// time.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Current {
-    pub rows: Vec<CurrentRow>,
+    pub field: CurrentField,
     /// The ramp's duration (s), 0 for none.
     pub ramp: f64,
     /// Where the rows come from, for `stancf check` (a key or a file).
     pub source: String,
+}
+
+/// What a current is made of.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CurrentField {
+    /// A steady profile: rows (z, velocity), linear between rows and
+    /// constant beyond the ends (W9).
+    Profile(Vec<CurrentRow>),
+    /// A grid in x, y, z and t, multilinear, holding its edges (W9a): a
+    /// MoorDyn deck's dynamic profile (`Currents 2`) or 4-D grid
+    /// (`Currents 5`).
+    Grid(Box<CurrentGrid>),
+}
+
+impl Current {
+    /// The rows of a steady profile (None for a grid).
+    pub fn profile(&self) -> Option<&[CurrentRow]> {
+        match &self.field {
+            CurrentField::Profile(rows) => Some(rows),
+            CurrentField::Grid(_) => None,
+        }
+    }
+
+    /// The largest speed (m/s) of its rows or nodes.
+    pub fn fastest(&self) -> f64 {
+        let speed = |v: &[f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        match &self.field {
+            CurrentField::Profile(rows) => {
+                rows.iter().map(|r| speed(&r.velocity)).fold(0.0, f64::max)
+            }
+            CurrentField::Grid(g) => g.velocities().iter().map(speed).fold(0.0, f64::max),
+        }
+    }
 }
 
 /// The water's keys as one source gives them: a value for each key the
@@ -177,9 +211,15 @@ impl Water {
             .map_err(|e| e.under("water"))?
             .with_wave_ramp(Ramp::new(self.wave_ramp).map_err(|e| e.under("water.wave_ramp"))?);
         if let Some(c) = &self.current {
-            let profile = CurrentProfile::new(&c.rows).map_err(|e| e.under("water.current"))?;
             let ramp = Ramp::new(c.ramp).map_err(|e| e.under("water.current"))?;
-            sea = sea.with_current(profile, ramp);
+            sea = match &c.field {
+                CurrentField::Profile(rows) => {
+                    let profile =
+                        CurrentProfile::new(rows).map_err(|e| e.under("water.current"))?;
+                    sea.with_current(profile, ramp)
+                }
+                CurrentField::Grid(grid) => sea.with_current_grid((**grid).clone(), ramp),
+            };
         }
         Ok(stancf::water::Water {
             density: self.density,
@@ -304,7 +344,11 @@ fn current(ctx: &Ctx, c: RawCurrent) -> Result<Current, ScenarioError> {
         }
         (Some(p), None) => (profile(ctx, &p)?, "water.current.profile".to_string()),
     };
-    Ok(Current { rows, ramp, source })
+    Ok(Current {
+        field: CurrentField::Profile(rows),
+        ramp,
+        source,
+    })
 }
 
 /// The rows of `water.current.profile`: each [z, ux, uy, uz], finite, z

@@ -8,6 +8,7 @@
 //! allocating: it runs at every Gauss point of every step.
 
 use super::current::{CurrentProfile, Ramp};
+use super::current_grid::CurrentGrid;
 use super::waves::{AiryWave, SolvedWave, WaveFlow};
 use crate::error::ModelError;
 
@@ -42,6 +43,9 @@ pub struct Sea {
     waves: Vec<SolvedWave>,
     wave_ramp: Ramp,
     current: Option<CurrentProfile>,
+    /// A current on a grid in space and time (W9a), the alternative to
+    /// `current`: a sea has one current or none.
+    current_grid: Option<CurrentGrid>,
     current_ramp: Ramp,
 }
 
@@ -80,6 +84,7 @@ impl Sea {
             waves,
             wave_ramp: Ramp::NONE,
             current: None,
+            current_grid: None,
             current_ramp: Ramp::NONE,
         })
     }
@@ -100,8 +105,22 @@ impl Sea {
     /// current it had.
     pub fn with_current(mut self, current: CurrentProfile, ramp: Ramp) -> Sea {
         self.current = Some(current);
+        self.current_grid = None;
         self.current_ramp = ramp;
         self
+    }
+
+    /// The same sea with a current that varies in space and time (W9a),
+    /// started by `ramp` (W12); replaces any current it had.
+    pub fn with_current_grid(mut self, current: CurrentGrid, ramp: Ramp) -> Sea {
+        self.current_grid = Some(current);
+        self.current = None;
+        self.current_ramp = ramp;
+        self
+    }
+
+    pub fn current_grid(&self) -> Option<&CurrentGrid> {
+        self.current_grid.as_ref()
     }
 
     pub fn depth(&self) -> f64 {
@@ -148,7 +167,7 @@ impl Sea {
     /// r_c' U to the acceleration and (r_c dU/dz, r_c' dU/dz) to the z
     /// column of the gradients.
     pub fn kinematics(&self, position: &[f64; 3], t: f64) -> FluidKinematics {
-        if self.waves.is_empty() && self.current.is_none() {
+        if self.waves.is_empty() && self.current.is_none() && self.current_grid.is_none() {
             // Still water: every term below is zero.
             return FluidKinematics::default();
         }
@@ -184,12 +203,26 @@ impl Sea {
                 out.acceleration_gradient[i][2] += rc_rate * dudz[i];
             }
         }
+        if let Some(grid) = &self.current_grid {
+            let (rc, rc_rate) = self.current_ramp.factor_and_rate(t);
+            let c = grid.sample(position, t);
+            for i in 0..3 {
+                out.velocity[i] += rc * c.velocity[i];
+                out.acceleration[i] += rc * c.acceleration[i] + rc_rate * c.velocity[i];
+                for j in 0..3 {
+                    out.velocity_gradient[i][j] += rc * c.velocity_gradient[i][j];
+                    out.acceleration_gradient[i][j] +=
+                        rc * c.acceleration_gradient[i][j] + rc_rate * c.velocity_gradient[i][j];
+                }
+            }
+        }
         out
     }
 
     /// The steady current at `position` at full strength (its ramp
     /// ignored) and nothing else: the flow of statics (docs/method.md
-    /// §12.4). Still water without a current.
+    /// §12.4); a current on a grid in time as it is at t = 0, without
+    /// its acceleration. Still water without a current.
     pub fn steady_current(&self, position: &[f64; 3]) -> FluidKinematics {
         let mut out = FluidKinematics::default();
         if let Some(current) = &self.current {
@@ -198,6 +231,11 @@ impl Sea {
                 out.velocity[i] = u[i];
                 out.velocity_gradient[i][2] = dudz[i];
             }
+        }
+        if let Some(grid) = &self.current_grid {
+            let c = grid.sample(position, 0.0);
+            out.velocity = c.velocity;
+            out.velocity_gradient = c.velocity_gradient;
         }
         out
     }

@@ -405,3 +405,50 @@ fn still_water_may_be_weightless_waves_may_not() {
     assert_eq!(e.key, "gravity");
     assert!(Sea::new(DEPTH, -1.0, &[]).is_err());
 }
+
+/// A current on a grid in x, z and t (W9a), started by a ramp of 10 s:
+/// its acceleration is the time derivative of its velocity (W12) and its
+/// gradients the derivatives in space, by central differences inside
+/// the grid's cells (the field is linear along each axis there, so a
+/// difference errs by the ramp's h^2/6 |r'''| |U| < 1e-10 and round-off
+/// 8 eps |U| / h < 1e-11); statics sees it as it is at t = 0.
+#[test]
+fn a_current_on_a_grid_is_consistent_in_time_and_space() {
+    use crate::water::current_grid::CurrentGrid;
+    let axes = [
+        vec![-20.0, 30.0],
+        vec![0.0],
+        vec![-DEPTH, -10.0, 0.0],
+        vec![0.0, 12.0, 30.0],
+    ];
+    let mut velocity = Vec::new();
+    for x in &axes[0] {
+        for z in &axes[2] {
+            for t in &axes[3] {
+                velocity.push([0.4 + 0.01 * x + 0.002 * z * t, -0.2 + 0.01 * t, 0.001 * x]);
+            }
+        }
+    }
+    let grid = CurrentGrid::new(axes, velocity).unwrap();
+    let sea = Sea::still(DEPTH, 9.81).with_current_grid(grid.clone(), Ramp::new(10.0).unwrap());
+    let h = 1e-4;
+    for (p, t) in [
+        ([3.0, 1.0, -22.0], 4.0),
+        ([-11.0, -5.0, -4.5], 17.5),
+        ([25.0, 0.0, -1.0], 29.0),
+    ] {
+        let k = sea.kinematics(&p, t);
+        let (up, down) = (sea.kinematics(&p, t + h), sea.kinematics(&p, t - h));
+        for i in 0..3 {
+            let rate = (up.velocity[i] - down.velocity[i]) / (2.0 * h);
+            assert!(
+                (rate - k.acceleration[i]).abs() < 1e-9,
+                "t {t}: {rate} vs {k:?}"
+            );
+        }
+        check_gradients(&sea, &p, t, h, [1e-9, 1e-9]);
+        let statics = sea.steady_current(&p);
+        assert_eq!(statics.velocity, grid.sample(&p, 0.0).velocity);
+        assert_eq!(statics.acceleration, [0.0; 3]);
+    }
+}

@@ -5,9 +5,11 @@
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
 pub mod added_mass;
 pub mod current;
+pub mod current_grid;
 pub mod hydro;
 pub mod kinematics;
 pub mod point;
+pub mod record;
 pub mod seabed;
 pub mod spectrum;
 pub mod submerged;

@@ -1,0 +1,172 @@
+//! A MoorDyn deck's currents that vary in time (docs/interface.md,
+//! "Water"): `Currents 2` (`current_profile_dynamic.txt`) and `Currents 5`
+//! (`current_profile_4d.txt`) become a current on a grid in space and
+//! time (docs/method.md §12.1 (W9a)); their readers are checked against
+//! MoorDyn's documented examples in the scenario crate's
+//! `moordyn_current_grids` tests.
+
+use crate::common::*;
+use std::path::Path;
+
+/// A taut line from an anchor at (-80, 0, -50) to a fixed point at
+/// (0, 0, -5) in a current, `Currents {mode}`.
+fn deck(mode: u8) -> String {
+    format!(
+        "MoorDyn v2 deck: a line in a current
+------------------------------ LINE TYPES --------------------------------------
+TypeName  Diam    Mass/m   EA        BA/-zeta  EI       Cd    Ca    CdAx  CaAx
+(name)    (m)     (kg/m)   (N)       (N-s/-)   (N-m^2)  (-)   (-)   (-)   (-)
+rope      0.08    8.0      5.0E7     -0.8      0        1.2   1.0   0.01  0.5
+-------------------------------- POINTS ----------------------------------------
+ID  Attachment  X        Y        Z        Mass    Volume  CdA    Ca
+(#) (-)         (m)      (m)      (m)      (kg)    (m^3)   (m^2)  (-)
+1   Fixed       -80.0    0.0      -50.0    0       0       0      0
+2   Fixed       0.0      0.0      -5.0     0       0       0      0
+-------------------------------- LINES -----------------------------------------
+ID  LineType  AttachA  AttachB  UnstrLen  NumSegs  Outputs
+(#) (name)    (#)      (#)      (m)       (-)      (-)
+1   rope      1        2        92.0      12       -
+------------------------------- OPTIONS ----------------------------------------
+9.81      g
+50        WtrDpth
+{mode}         Currents
+------------------------- need this line ---------------------------------------
+"
+    )
+}
+
+/// The steady profile: ux 0.3, 0.6, 0.9 m/s and uy 0, 0.2, 0 m/s at
+/// z = -50, -20, 0 m.
+const STEADY: &str = "h\nh\nz ux uy uz\n-50 0.3 0 0\n-20 0.6 0.2 0\n0 0.9 0 0\n";
+
+/// The same profile in `current_profile_dynamic.txt` at t = 0 s and, at
+/// t = `later` s, `scale` times it.
+fn dynamic_profile(later: f64, scale: f64) -> String {
+    let row = |t: f64, s: f64| format!("{t} {} {} {} 0 {} 0\n", 0.3 * s, 0.6 * s, 0.9 * s, 0.2 * s);
+    format!(
+        "h\nh\nh\nh\n-50 -20 0\n\n{}{}",
+        row(0.0, 1.0),
+        row(later, scale)
+    )
+}
+
+/// The same steady profile on a 4-D grid of 2 x 2 x 3 x 2 nodes.
+fn grid_4d() -> String {
+    let mut s = "2 2 3 2\n-100 50\n-10 10\n-50 -20 0\n0 100\n".to_string();
+    for x in [-100, 50] {
+        for y in [-10, 10] {
+            for (z, u) in [(-50, [0.3, 0.0]), (-20, [0.6, 0.2]), (0, [0.9, 0.0])] {
+                for t in [0, 100] {
+                    s += &format!("{x} {y} {z} {t} {} {} 0\n", u[0], u[1]);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// Runs the deck in `dir` (with its current file) statically, or 20
+/// steps of 0.05 s from its equilibrium; the tensions.
+fn tensions(dir: &Path, dynamic: bool) -> Vec<Vec<f64>> {
+    let analysis = if dynamic {
+        "type = \"dynamic\"\ntime_scheme = \"galerkin\"\ntime_step = 0.05\nduration = 1.0\n"
+    } else {
+        "type = \"static\"\n"
+    };
+    let sc = write_scenario(
+        dir,
+        "run.toml",
+        &format!("[system]\nmoordyn = \"deck.txt\"\n[analysis]\n{analysis}"),
+    );
+    let out = dir.join(format!("out-{dynamic}"));
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{dir:?}: {}", text(&o).1);
+    read_tensions(&out.join("tensions.csv"))
+}
+
+fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x[6] - y[6]).abs())
+        .fold(0.0, f64::max)
+}
+
+/// Two runs of equations that agree to round-off stop their Newton
+/// iterations within the solver's tolerance of each other: 1e-10 of the
+/// line's length in the unknowns (docs/interface.md, `tolerance`), which
+/// an element's axial stiffness EA / l turns into a tension.
+const NEWTON_TENSION: f64 = 1e-10 * 92.0 * 5.0e7 / (92.0 / 12.0);
+
+/// A steady profile given as MoorDyn's dynamic profile (two equal times)
+/// or its 4-D grid (uniform in x, y and t) is the same current as
+/// `Currents 1` (the interpolations are all linear in z and differ in
+/// their arithmetic only): the static and dynamic tensions agree within
+/// the Newton iterations' tolerance ([`NEWTON_TENSION`], 0.06 N of 1e4),
+/// and `check` says what each is.
+#[test]
+fn a_steady_current_given_as_moordyns_time_grids_is_the_steady_profile() {
+    let mut runs = Vec::new();
+    for (mode, file, contents) in [
+        (1, "current_profile.txt", STEADY.to_string()),
+        (
+            2,
+            "current_profile_dynamic.txt",
+            dynamic_profile(100.0, 1.0),
+        ),
+        (5, "current_profile_4d.txt", grid_4d()),
+    ] {
+        let d = scratch(&format!("deck-current-{mode}"));
+        std::fs::write(d.join("deck.txt"), deck(mode)).unwrap();
+        std::fs::write(d.join(file), contents).unwrap();
+        if mode != 1 {
+            let (so, se) = text(&stancf(&["check", d.join("deck.txt").to_str().unwrap()]));
+            for words in [
+                format!("line 18: Currents {mode}: the current of"),
+                "multilinear in space and time".to_string(),
+                "a static run sees the current at t = 0".to_string(),
+            ] {
+                assert!(so.contains(&words), "{words}: {so}{se}");
+            }
+        }
+        runs.push((tensions(&d, false), tensions(&d, true)));
+    }
+    let size = runs[0].0[0][6];
+    assert!(size > 1e3, "{size}");
+    for (mode, run) in [2, 5].iter().zip(&runs[1..]) {
+        for (dynamic, (a, b)) in [(false, (&run.0, &runs[0].0)), (true, (&run.1, &runs[0].1))] {
+            let worst = largest_difference(a, b);
+            assert!(
+                worst < NEWTON_TENSION,
+                "Currents {mode}, dynamic {dynamic}: {worst} N from Currents 1's"
+            );
+        }
+    }
+}
+
+/// A dynamic profile that doubles over 2 s: the static equilibrium is the
+/// one of its first time (Currents 1's, within the Newton tolerance), and
+/// in the run the growing current pulls the line harder than the steady
+/// one does.
+#[test]
+fn a_current_that_grows_in_time_is_its_first_profile_in_statics_and_then_grows() {
+    let d = scratch("deck-current-growing");
+    std::fs::write(d.join("deck.txt"), deck(2)).unwrap();
+    std::fs::write(
+        d.join("current_profile_dynamic.txt"),
+        dynamic_profile(2.0, 2.0),
+    )
+    .unwrap();
+    let s = scratch("deck-current-steady");
+    std::fs::write(s.join("deck.txt"), deck(1)).unwrap();
+    std::fs::write(s.join("current_profile.txt"), STEADY).unwrap();
+    let (growing, steady) = (tensions(&d, false), tensions(&s, false));
+    assert!(largest_difference(&growing, &steady) < NEWTON_TENSION);
+    let (growing, steady) = (tensions(&d, true), tensions(&s, true));
+    let last = growing.len() - 1;
+    let (g, s) = (growing[last][6], steady[last][6]);
+    assert!(
+        g > s * 1.001,
+        "at 1 s: {g} N against the steady current's {s} N"
+    );
+}
