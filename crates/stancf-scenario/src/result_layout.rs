@@ -12,9 +12,11 @@
 //! - each of its entries, followed down, is a regular file or folder
 //!   named as stancf names them: [`RUN_FILES`], the figures
 //!   ([`FIGURES`] as `.png` and `.svg`), `vtk/cable_<k>.vtp` (k of 6 to 9
-//!   digits), `lines/<id>/` with [`LINE_FILES`] and, in a sweep's folder
-//!   (one with `sweep.csv`), `run_<k>/` (k of 4 or 5 digits) holding a
-//!   run's set.
+//!   digits), `lines/<id>/` with [`LINE_FILES`], the `<deck>.out` the
+//!   folder's `summary.json` names as its `moordyn_out` (MoorDyn's main
+//!   output file, named after the deck) and, in a sweep's folder (one
+//!   with `sweep.csv`), `run_<k>/` (k of 4 or 5 digits) holding a run's
+//!   set.
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -112,6 +114,10 @@ enum Level {
 /// The first entry of `dir` (at `level`) that stancf does not write, and
 /// why; None when every entry, followed down, is one of its.
 fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(PathBuf, String)>> {
+    let moordyn_out = match level {
+        Level::Top | Level::Sweep | Level::SweepRun => moordyn_out_of(&dir.join("summary.json")),
+        _ => None,
+    };
     for entry in std::fs::read_dir(dir)? {
         let entry = entry?;
         *seen += 1;
@@ -128,7 +134,7 @@ fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(
             return Ok(Some((path, "a symbolic link".into())));
         }
         if kind.is_file() {
-            if !is_result_file(level, name) {
+            if !is_result_file(level, name) && moordyn_out.as_deref() != Some(name) {
                 return Ok(Some((path, "a file stancf does not write".into())));
             }
             continue;
@@ -208,6 +214,19 @@ fn is_run_summary(path: &Path) -> bool {
         .is_ok_and(|v| v.get("title").is_some_and(|t| t.is_string()) && v.get("analysis").is_some())
 }
 
+/// The `<deck>.out` a run's `summary.json` names (`moordyn_out`): a plain
+/// file name ending `.out`, not one of [`RUN_FILES`].
+fn moordyn_out_of(summary: &Path) -> Option<String> {
+    if !is_regular_file(summary) {
+        return None;
+    }
+    let text = crate::input_file::read_text(summary).ok()?;
+    let value: serde_json::Value = serde_json::from_str(&text).ok()?;
+    let name = value.get("moordyn_out")?.as_str()?;
+    let plain = !name.contains(['/', '\\']) && name != ".out" && !name.starts_with('.');
+    (plain && name.ends_with(".out") && !RUN_FILES.contains(&name)).then(|| name.to_string())
+}
+
 /// A sweep's `sweep.csv`: a regular file whose header starts `run,`.
 fn is_sweep_table(path: &Path) -> bool {
     use std::io::Read;
@@ -246,6 +265,23 @@ mod tests {
         let p = dir.join(rel);
         std::fs::create_dir_all(p.parent().unwrap()).unwrap();
         std::fs::write(p, "x").unwrap();
+    }
+
+    /// The `<deck>.out` a run's summary names is its; another `.out`, or
+    /// one a summary names with a path, is foreign.
+    #[test]
+    fn the_out_file_a_summary_names_is_a_runs_and_no_other() {
+        let d = scratch("moordyn-out");
+        let named = r#"{"title": "t", "analysis": "static", "moordyn_out": "oc4.out"}"#;
+        std::fs::write(d.join("summary.json"), named).unwrap();
+        touch(&d, "oc4.out");
+        assert_eq!(contents(&d).unwrap(), Contents::ResultSet);
+        touch(&d, "other.out");
+        assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, _) if p.ends_with("other.out")));
+        std::fs::remove_file(d.join("other.out")).unwrap();
+        let escaping = r#"{"title": "t", "analysis": "static", "moordyn_out": "../oc4.out"}"#;
+        std::fs::write(d.join("summary.json"), escaping).unwrap();
+        assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, _) if p.ends_with("oc4.out")));
     }
 
     #[test]

@@ -26,6 +26,7 @@ mod hostile_inputs;
 mod hostile_scenarios;
 mod joints;
 mod mesh_sections;
+mod moordyn_out;
 mod motion_files;
 mod output_files;
 mod output_folder_safety;

@@ -31,6 +31,7 @@
 //!   refuses rows of other than 10, 11 or 13 words.
 
 mod bodies;
+mod channel_units;
 mod channels;
 mod ends;
 mod layout;

@@ -50,7 +50,7 @@ pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
 pub use rod_parts::{RodHolder, RodTypeValues, SystemRod};
 pub use system_model::EI_FACTOR;
 pub use system_parts::{
-    LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
+    LineType, MoorDynOutFile, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
 pub use water::{Current, CurrentField, SeabedOptions, Water};
 

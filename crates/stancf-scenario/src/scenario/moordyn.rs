@@ -118,11 +118,35 @@ pub(super) fn deck_scenario(
         end_forces: super::output::EndForces::StepMean,
         notes,
         water: Some(water),
+        moordyn_out: moordyn_out_file(deck, path, &channels).map(Box::new),
         channels,
         names,
     };
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     Ok(sc)
+}
+
+/// MoorDyn's `<deck>.out` of a deck at `path` whose OUTPUTS give
+/// `channels` (None without any): the deck file's stem and `.out`, the
+/// units row unless `WriteUnits` is 0.
+fn moordyn_out_file(
+    deck: &Deck,
+    path: &Path,
+    channels: &[OutputChannel],
+) -> Option<super::system_parts::MoorDynOutFile> {
+    if channels.is_empty() {
+        return None;
+    }
+    let stem = path.file_stem()?.to_string_lossy().into_owned();
+    let units = deck
+        .options
+        .iter()
+        .find(|o| o.name.eq_ignore_ascii_case("writeunits"))
+        .is_none_or(|o| !matches!(o.value, moordyn::OptionValue::Number(v) if v <= 0.0));
+    Some(super::system_parts::MoorDynOutFile {
+        file: format!("{stem}.out"),
+        units,
+    })
 }
 
 /// Notes on the deck's time stepping: a `tScheme` is MoorDyn's integrator,
@@ -373,7 +397,8 @@ fn deck_channels(deck: &Deck) -> (Vec<OutputChannel>, Vec<String>) {
         };
         if let Some(why) = &why {
             notes.push(format!(
-                "line {}: output channel {}: {why}; its column in channels.csv is left empty",
+                "line {}: output channel {}: {why}; its column in channels.csv is left empty, \
+                 and the deck's .out file has none",
                 o.line, o.name
             ));
         }

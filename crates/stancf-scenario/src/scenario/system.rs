@@ -126,6 +126,7 @@ pub(super) fn system_scenario(
         notes,
         water,
         channels: Vec::new(),
+        moordyn_out: None,
         names,
     };
     sc.notes.extend(static_waves_note(&sc));

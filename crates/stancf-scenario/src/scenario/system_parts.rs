@@ -172,8 +172,20 @@ pub struct SystemScenario {
     pub water: Option<Water>,
     /// Output channels (from a MoorDyn deck).
     pub channels: Vec<OutputChannel>,
+    /// MoorDyn's main output file of a deck with OUTPUTS (None without).
+    pub moordyn_out: Option<Box<MoorDynOutFile>>,
     /// Where its values were written (TOML keys or a deck's lines).
     pub names: super::names::Names,
+}
+
+/// The `<deck>.out` a deck's OUTPUTS ask for (`run/system/moordyn_out.rs`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MoorDynOutFile {
+    /// `<deck file stem>.out`, MoorDyn's `_basename + ".out"`.
+    pub file: String,
+    /// Whether the units row is written (MoorDyn's `WriteUnits`, 1 unless
+    /// the deck says 0).
+    pub units: bool,
 }
 
 impl SystemScenario {

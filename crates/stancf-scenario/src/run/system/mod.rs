@@ -4,6 +4,7 @@
 //! the time stepping; results per line, per point and per line end.
 
 mod bodies;
+mod moordyn_out;
 mod rods;
 mod rows;
 mod stiffness;
@@ -103,11 +104,14 @@ pub(super) fn run_system(
     let mut writers = SystemWriters::create(
         place.dest(),
         (&line_ids, &point_ids, &body_ids),
-        &sc.channels,
+        (&sc.channels, sc.moordyn_out.as_deref()),
         &sc.output_files,
-        opts.vtk,
-        damped,
-        wet,
+        writers::Extras {
+            vtk: opts.vtk,
+            damping: damped,
+            water: wet,
+            dynamic: sc.analysis.kind == AnalysisKind::Dynamic,
+        },
     )
     .map_err(io_err(place.shown))?;
     if sc.analysis.kind == AnalysisKind::Dynamic {
@@ -462,6 +466,15 @@ fn write_summary(
     }
     if !sc.notes.is_empty() {
         summary["notes"] = json!(sc.notes);
+    }
+    if let Some(out) = sc
+        .moordyn_out
+        .as_ref()
+        .filter(|_| sc.output_files.writes("channels.csv"))
+    {
+        // Named here so that a later run may replace the folder
+        // (crate::result_layout: the one file of a free name it writes).
+        summary["moordyn_out"] = json!(out.file);
     }
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())

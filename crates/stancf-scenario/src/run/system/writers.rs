@@ -23,6 +23,19 @@ struct LineFiles {
     node_loads: Option<AtomicFile>,
 }
 
+/// What a run writes beyond its tables' fixed columns.
+pub(super) struct Extras {
+    /// ParaView files (`--vtk`).
+    pub vtk: bool,
+    /// history.csv's `damping_work` column.
+    pub damping: bool,
+    /// history.csv's `water_work` and `seabed_work` columns.
+    pub water: bool,
+    /// A dynamic run (a static one writes its equilibrium as the `.out`'s
+    /// row of t = 0).
+    pub dynamic: bool,
+}
+
 /// The files of a system run.
 pub(super) struct SystemWriters {
     lines: Vec<LineFiles>,
@@ -36,6 +49,8 @@ pub(super) struct SystemWriters {
     history: Option<AtomicFile>,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
     channels: Option<(AtomicFile, Vec<(Channel, bool)>)>,
+    /// MoorDyn's `<deck>.out` of the same channels (beside channels.csv).
+    moordyn_out: Option<super::moordyn_out::MoorDynOut>,
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
@@ -55,12 +70,16 @@ impl SystemWriters {
     pub(super) fn create(
         dest: Dest,
         (line_ids, point_ids, body_ids): (&[i64], &[i64], &[i64]),
-        channels: &[OutputChannel],
+        (channels, moordyn_out): (&[OutputChannel], Option<&crate::scenario::MoorDynOutFile>),
         files: &OutputFiles,
-        with_vtk: bool,
-        with_damping: bool,
-        with_water: bool,
+        extras: Extras,
     ) -> std::io::Result<Self> {
+        let Extras {
+            vtk: with_vtk,
+            damping: with_damping,
+            water: with_water,
+            dynamic,
+        } = extras;
         // A chosen file with its header line (None where left out).
         let table = |path: &str, name: &str, header: &str| -> std::io::Result<_> {
             if !files.writes(name) {
@@ -125,6 +144,14 @@ impl SystemWriters {
                 }
             ),
         )?;
+        let moordyn_out = match moordyn_out {
+            Some(m) if files.writes("channels.csv") => {
+                Some(super::moordyn_out::MoorDynOut::create(
+                    &dest, &m.file, channels, m.units, !dynamic,
+                )?)
+            }
+            _ => None,
+        };
         let channels = if channels.is_empty() || !files.writes("channels.csv") {
             None
         } else {
@@ -143,6 +170,7 @@ impl SystemWriters {
                 None
             },
             channels,
+            moordyn_out,
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
@@ -187,21 +215,26 @@ impl SystemWriters {
             }
         }
         if let Some((file, channels)) = self.channels.as_mut() {
+            // None where not computed (the note says why).
+            let values = channels
+                .iter()
+                .map(|(c, computed)| computed.then(|| channel_value(c, row, &self.rods)))
+                .collect::<Vec<_>>();
+            if values.iter().flatten().any(|v| !v.is_finite()) {
+                return Err(non_finite("output channel", row.t));
+            }
             let w = file.writer();
             write!(w, "{}", Num(t))?;
-            for (c, computed) in channels.iter() {
-                if !computed {
-                    // Not computed: the column left empty (the note says why).
-                    write!(w, ",")?;
-                    continue;
+            for v in &values {
+                match v {
+                    Some(v) => write!(w, ",{}", Num(*v))?,
+                    None => write!(w, ",")?,
                 }
-                let v = channel_value(c, row, &self.rods);
-                if !v.is_finite() {
-                    return Err(non_finite("output channel", row.t));
-                }
-                write!(w, ",{}", Num(v))?;
             }
             writeln!(w)?;
+            if let Some(out) = self.moordyn_out.as_mut() {
+                out.write_row(t, &values)?;
+            }
         }
         self.write_history(row, t)
     }
@@ -351,6 +384,9 @@ impl SystemWriters {
         ];
         for file in files.chain(tables).flatten() {
             file.commit()?;
+        }
+        if let Some(out) = self.moordyn_out {
+            out.commit()?;
         }
         if let Some(vtk) = self.vtk {
             vtk.commit()?;

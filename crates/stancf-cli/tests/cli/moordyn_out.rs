@@ -1,0 +1,95 @@
+//! MoorDyn's main output file (docs/interface.md, "Results of a system"):
+//! a deck's OUTPUTS are also written as `<deck>.out`, the file MoorDyn
+//! writes, read here as MHKiT's `read_moordyn` reads it (whitespace
+//! separated, the first row the names, the second skipped as the units,
+//! the first column the index) and checked against channels.csv.
+
+use crate::common::*;
+use std::path::Path;
+
+/// The rope deck's OUTPUTS: three tensions and forces, a node's height,
+/// and `N4Px`, a name MoorDyn does not know (it skips it; so does the
+/// .out, while channels.csv keeps an empty column).
+const OUTPUTS: &str = "FairTen1\nAnchTen1\nPoint2FX\nL1N2PZ\nN4Px\n";
+
+/// The rows of a `.out` file: its words, row by row.
+fn words(path: &Path) -> Vec<Vec<String>> {
+    std::fs::read_to_string(path)
+        .unwrap_or_else(|e| panic!("{path:?}: {e}"))
+        .lines()
+        .map(|l| l.split_whitespace().map(String::from).collect())
+        .collect()
+}
+
+/// A dynamic run of the rope, its coupled point swung: `rope.out` beside
+/// channels.csv has MoorDyn's header and units rows, its column widths
+/// (10, then 20 per channel), and the same numbers as channels.csv to
+/// the 8 digits it writes (7 after the point: |error| <= 5e-8 |v|; the
+/// time to 4 decimals); the run again into the same folder replaces it
+/// (the layout knows the file by its summary).
+#[test]
+fn a_decks_outputs_are_also_moordyns_out_file() {
+    let d = scratch("moordyn-out");
+    std::fs::write(d.join("rope.txt"), rope_deck(OUTPUTS)).unwrap();
+    let sc = write_scenario(
+        &d,
+        "swing.toml",
+        "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\namplitude = [0.05, 0.0, 0.02]\n\
+         period = 0.5\n[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
+         time_step = 0.01\nduration = 0.3\n",
+    );
+    let out = d.join("out");
+    for _ in 0..2 {
+        let o = run_quiet(&sc, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    }
+    let table = words(&out.join("rope.out"));
+    assert_eq!(
+        table[0],
+        ["Time", "FairTen1", "AnchTen1", "Point2FX", "L1N2PZ"]
+    );
+    assert_eq!(table[1], ["(s)", "N", "N", "N", "m"]);
+    let text = std::fs::read_to_string(out.join("rope.out")).unwrap();
+    assert!(text.lines().all(|l| l.len() == 10 + 4 * 20), "{text}");
+    let (header, rows) = read_csv_with_blanks(&out.join("channels.csv"));
+    assert_eq!(header[5], "N4Px");
+    assert_eq!(rows.len(), table.len() - 2);
+    assert_eq!(rows.len(), 31);
+    for (row, written) in rows.iter().zip(&table[2..]) {
+        let t: f64 = written[0].parse().unwrap();
+        assert!((t - row[0]).abs() <= 5e-5, "{t} against {}", row[0]);
+        for c in 1..5 {
+            let v: f64 = written[c].parse().unwrap();
+            assert!(
+                (v - row[c]).abs() <= 5e-8 * row[c].abs(),
+                "{}: {v} against {}",
+                header[c],
+                row[c]
+            );
+        }
+    }
+    let swing = rows.iter().map(|r| r[1]).fold(f64::NEG_INFINITY, f64::max)
+        - rows.iter().map(|r| r[1]).fold(f64::INFINITY, f64::min);
+    assert!(swing > 1.0, "the fairlead tension moves by {swing} N only");
+    let summary = read_json(&out.join("summary.json"));
+    assert_eq!(summary["moordyn_out"], "rope.out");
+}
+
+/// `WriteUnits 0` leaves out the units row as MoorDyn does, and a static
+/// run (a deck alone) writes its equilibrium as MoorDyn's row of t = 0.
+#[test]
+fn without_units_and_at_rest_the_out_file_is_moordyns_too() {
+    let d = scratch("moordyn-out-static");
+    let deck = rope_deck(OUTPUTS).replace("50 WtrDpth\n", "50 WtrDpth\n0 WriteUnits\n");
+    std::fs::write(d.join("rope.txt"), deck).unwrap();
+    let out = d.join("out");
+    let o = run_quiet(&d.join("rope.txt"), &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let table = words(&out.join("rope.out"));
+    assert_eq!(table.len(), 2, "{table:?}");
+    assert_eq!(table[0][0], "Time");
+    assert_eq!(table[1][0], "0.0000");
+    let (_, rows) = read_csv_with_blanks(&out.join("channels.csv"));
+    let fairlead: f64 = table[1][1].parse().unwrap();
+    assert!((fairlead - rows[0][1]).abs() <= 5e-8 * rows[0][1]);
+}
