@@ -115,3 +115,19 @@ fn a_hosts_value_that_is_not_positive_and_finite_is_refused_naming_it() {
         assert!(message().contains(words), "{words}: {}", message());
     }
 }
+
+/// A deck whose host would set the waves at MoorDyn's nodes (`WaveKin
+/// 1`, Lowe and Langley's jumper in MoorDyn's tests) is not a system this
+/// API can step: refused naming the option's line, not run in still water.
+#[test]
+fn a_deck_waiting_for_a_hosts_wave_kinematics_is_refused() {
+    let deck = repo("crates/stancf-cli/tests/fixtures/lowe-langley-2006-jumper-moordyn.txt");
+    let s = unsafe { stancf_create(cstring(&deck).as_ptr()) };
+    assert!(s.is_null());
+    assert!(
+        message().contains("line 30: option WaveKin is 1")
+            && message().contains("static equilibrium only"),
+        "{}",
+        message()
+    );
+}

@@ -76,7 +76,7 @@ pub fn from_text_in(
     let file = path.display().to_string();
     let parsed = parse_input_with(text, &file, path, host).map_err(|e| Failure::Input(e.0))?;
     let mut sc = match parsed {
-        Input::System(sc) => sc,
+        Input::System(sc) => *sc,
         Input::Cable(_) => {
             return Err(Failure::Input(format!(
                 "{file}: a single cable has no points for a coupling code to move; give a \
@@ -85,6 +85,9 @@ pub fn from_text_in(
             )))
         }
     };
+    if let Some(why) = &sc.static_only {
+        return Err(Failure::Input(why.clone()));
+    }
     if crate::moordyn::looks_like_moordyn(text) {
         sc.analysis.time_step = deck_time_step(text, &file)?;
     }

@@ -12,9 +12,9 @@
 //! - each of its entries, followed down, is a regular file or folder
 //!   named as stancf names them: [`RUN_FILES`], the figures
 //!   ([`FIGURES`] as `.png` and `.svg`), `vtk/cable_<k>.vtp` (k of 6 to 9
-//!   digits), `lines/<id>/` with [`LINE_FILES`], the `<deck>.out` the
-//!   folder's `summary.json` names as its `moordyn_out` (MoorDyn's main
-//!   output file, named after the deck) and, in a sweep's folder (one
+//!   digits), `lines/<id>/` with [`LINE_FILES`], the `.out` files the
+//!   folder's `summary.json` names as its `moordyn_out` (MoorDyn's output
+//!   files, named after the deck) and, in a sweep's folder (one
 //!   with `sweep.csv`), `run_<k>/` (k of 4 or 5 digits) holding a run's
 //!   set.
 
@@ -116,7 +116,7 @@ enum Level {
 fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(PathBuf, String)>> {
     let moordyn_out = match level {
         Level::Top | Level::Sweep | Level::SweepRun => moordyn_out_of(&dir.join("summary.json")),
-        _ => None,
+        _ => Vec::new(),
     };
     for entry in std::fs::read_dir(dir)? {
         let entry = entry?;
@@ -134,7 +134,7 @@ fn foreign_in(dir: &Path, level: Level, seen: &mut usize) -> io::Result<Option<(
             return Ok(Some((path, "a symbolic link".into())));
         }
         if kind.is_file() {
-            if !is_result_file(level, name) && moordyn_out.as_deref() != Some(name) {
+            if !is_result_file(level, name) && !moordyn_out.iter().any(|n| n == name) {
                 return Ok(Some((path, "a file stancf does not write".into())));
             }
             continue;
@@ -214,17 +214,24 @@ fn is_run_summary(path: &Path) -> bool {
         .is_ok_and(|v| v.get("title").is_some_and(|t| t.is_string()) && v.get("analysis").is_some())
 }
 
-/// The `<deck>.out` a run's `summary.json` names (`moordyn_out`): a plain
-/// file name ending `.out`, not one of [`RUN_FILES`].
-fn moordyn_out_of(summary: &Path) -> Option<String> {
-    if !is_regular_file(summary) {
-        return None;
-    }
-    let text = crate::input_file::read_text(summary).ok()?;
-    let value: serde_json::Value = serde_json::from_str(&text).ok()?;
-    let name = value.get("moordyn_out")?.as_str()?;
-    let plain = !name.contains(['/', '\\']) && name != ".out" && !name.starts_with('.');
-    (plain && name.ends_with(".out") && !RUN_FILES.contains(&name)).then(|| name.to_string())
+/// The `.out` files a run's `summary.json` names (`moordyn_out`, a list
+/// of MoorDyn's files): plain file names ending `.out`, not hidden.
+fn moordyn_out_of(summary: &Path) -> Vec<String> {
+    let Some(value) = is_regular_file(summary)
+        .then(|| crate::input_file::read_text(summary).ok())
+        .flatten()
+        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
+    else {
+        return Vec::new();
+    };
+    let names = value.get("moordyn_out").and_then(|v| v.as_array());
+    names
+        .into_iter()
+        .flatten()
+        .filter_map(|n| n.as_str())
+        .filter(|n| !n.contains(['/', '\\']) && !n.starts_with('.') && n.ends_with(".out"))
+        .map(str::to_string)
+        .collect()
 }
 
 /// A sweep's `sweep.csv`: a regular file whose header starts `run,`.
@@ -272,14 +279,19 @@ mod tests {
     #[test]
     fn the_out_file_a_summary_names_is_a_runs_and_no_other() {
         let d = scratch("moordyn-out");
-        let named = r#"{"title": "t", "analysis": "static", "moordyn_out": "oc4.out"}"#;
+        let named =
+            r#"{"title": "t", "analysis": "static", "moordyn_out": ["oc4.out", "oc4_Line1.out"]}"#;
         std::fs::write(d.join("summary.json"), named).unwrap();
         touch(&d, "oc4.out");
+        touch(&d, "oc4_Line1.out");
         assert_eq!(contents(&d).unwrap(), Contents::ResultSet);
         touch(&d, "other.out");
-        assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, _) if p.ends_with("other.out")));
+        assert!(
+            matches!(contents(&d).unwrap(), Contents::Foreign(p, _) if p.ends_with("other.out"))
+        );
         std::fs::remove_file(d.join("other.out")).unwrap();
-        let escaping = r#"{"title": "t", "analysis": "static", "moordyn_out": "../oc4.out"}"#;
+        std::fs::remove_file(d.join("oc4_Line1.out")).unwrap();
+        let escaping = r#"{"title": "t", "analysis": "static", "moordyn_out": ["../oc4.out"]}"#;
         std::fs::write(d.join("summary.json"), escaping).unwrap();
         assert!(matches!(contents(&d).unwrap(), Contents::Foreign(p, _) if p.ends_with("oc4.out")));
     }

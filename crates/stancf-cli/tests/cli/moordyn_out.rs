@@ -72,7 +72,7 @@ fn a_decks_outputs_are_also_moordyns_out_file() {
         - rows.iter().map(|r| r[1]).fold(f64::INFINITY, f64::min);
     assert!(swing > 1.0, "the fairlead tension moves by {swing} N only");
     let summary = read_json(&out.join("summary.json"));
-    assert_eq!(summary["moordyn_out"], "rope.out");
+    assert_eq!(summary["moordyn_out"], serde_json::json!(["rope.out"]));
 }
 
 /// `WriteUnits 0` leaves out the units row as MoorDyn does, and a static
@@ -92,4 +92,78 @@ fn without_units_and_at_rest_the_out_file_is_moordyns_too() {
     let (_, rows) = read_csv_with_blanks(&out.join("channels.csv"));
     let fairlead: f64 = table[1][1].parse().unwrap();
     assert!((fairlead - rows[0][1]).abs() <= 5e-8 * rows[0][1]);
+}
+
+/// A line's `LineOutputs` flags `pKvUDtsb`: `rope_Line1.out` has MoorDyn's
+/// columns for the flags stancf computes, in MoorDyn's order (positions,
+/// curvatures, velocities of the 5 nodes; tensions and strains of the 4
+/// segments; seabed forces of the nodes), none for `U` and `D`, which
+/// `check` names; the positions are nodes.csv's and the tension of each
+/// segment is EA times its strain (EA 2e4 N), to the 8 digits written.
+#[test]
+fn a_lines_output_flags_are_moordyns_line_file() {
+    let d = scratch("moordyn-line-out");
+    let deck = rope_deck("FairTen1\n").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pKvUDtsb");
+    std::fs::write(d.join("rope.txt"), deck).unwrap();
+    let (so, se) = text(&stancf(&["check", d.join("rope.txt").to_str().unwrap()]));
+    assert!(
+        so.contains("LineOutputs \"pKvUDtsb\" of line 1: U (the water's velocity), D (the hydrodynamic force) not computed by stancf; rope_Line1.out has no columns for them"),
+        "{so}{se}"
+    );
+    let sc = write_scenario(
+        &d,
+        "swing.toml",
+        "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\namplitude = [0.05, 0.0, 0.02]\n\
+         period = 0.5\n[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
+         time_step = 0.01\nduration = 0.1\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let table = words(&out.join("rope_Line1.out"));
+    let mut header = vec!["Time".to_string()];
+    let node = |q: &[&str]| -> Vec<String> {
+        (0..5)
+            .flat_map(|i| q.iter().map(move |s| format!("Node{i}{s}")))
+            .collect()
+    };
+    header.extend(node(&["px", "py", "pz"]));
+    header.extend(node(&["Ku"]));
+    header.extend(node(&["vx", "vy", "vz"]));
+    header.extend((1..=4).map(|j| format!("Seg{j}Te")));
+    header.extend((1..=4).map(|j| format!("Seg{j}St")));
+    header.extend(node(&["bx", "by", "bz"]));
+    assert_eq!(table[0], header);
+    let units: Vec<&str> = std::iter::once("(s)")
+        .chain(std::iter::repeat_n("(m)", 15))
+        .chain(std::iter::repeat_n("(1/m)", 5))
+        .chain(std::iter::repeat_n("(m/s)", 15))
+        .chain(std::iter::repeat_n("(N)", 4))
+        .chain(std::iter::repeat_n("(-)", 4))
+        .chain(std::iter::repeat_n("(N)", 15))
+        .collect();
+    assert_eq!(table[1], units);
+    let (_, nodes) = read_csv(&out.join("lines/1/nodes.csv"));
+    assert_eq!(table.len() - 2, 11);
+    for (k, row) in table[2..].iter().enumerate() {
+        let v: Vec<f64> = row.iter().map(|w| w.parse().unwrap()).collect();
+        for i in 0..5 {
+            let n = &nodes[5 * k + i];
+            for c in 0..3 {
+                let (have, want) = (v[1 + 3 * i + c], n[2 + c]);
+                assert!(
+                    (have - want).abs() <= 5e-8 * want.abs() + 1e-15,
+                    "{have} against {want}"
+                );
+            }
+        }
+        for j in 0..4 {
+            let (tension, strain) = (v[36 + j], v[40 + j]);
+            assert!(tension > 0.0, "segment {j}: {tension} N");
+            assert!(
+                (tension - 2e4 * strain).abs() <= 2e-7 * tension,
+                "{tension} against {strain}"
+            );
+        }
+    }
 }

@@ -314,9 +314,9 @@ fn a_decks_current_mode_or_file_stancf_does_not_map_is_refused_naming_its_line()
         ("no rows", "1 Currents", "h\nh\nh\n\n", vec!["no rows"]),
         (
             "waves",
-            "1 WaveKin",
+            "5 WaveKin",
             good,
-            vec!["WaveKin", "[[water.waves]]"],
+            vec!["WaveKin is 5", "[[water.waves]]"],
         ),
     ] {
         let deck = wire_deck(options, FREE_POINT);

@@ -159,6 +159,23 @@ pub struct DeckPoint {
     pub ca: f64,
 }
 
+/// The `LineOutputs` flags whose quantities stancf writes to
+/// `<deck>_Line<n>.out`, in MoorDyn's order (`Line::Output`): node
+/// positions, curvatures, velocities, segment tensions and strains, the
+/// seabed's nodal forces.
+pub const WRITTEN_LINE_FLAGS: [char; 6] = ['p', 'K', 'v', 't', 's', 'b'];
+
+/// The flags MoorDyn knows whose quantities stancf does not compute: the
+/// water's velocity, the hydrodynamic and VIV forces at the nodes, the
+/// segments' internal damping force and strain rate.
+pub const UNCOMPUTED_LINE_FLAGS: [(char, &str); 5] = [
+    ('U', "the water's velocity"),
+    ('D', "the hydrodynamic force"),
+    ('V', "the VIV force"),
+    ('c', "the internal damping force"),
+    ('d', "the strain rate"),
+];
+
 /// A row of `LINES`: `ID LineType AttachA AttachB UnstrLen NumSegs
 /// Outputs`.
 #[derive(Debug, Clone, PartialEq)]

@@ -162,7 +162,7 @@ pub fn run_text(text: &str, path: &Path, opts: RunOptions) -> Result<(), Failure
         .map_err(|e| Failure::Input(e.0))?
     {
         return in_result_folder(text, path, &opts, |place| {
-            system::run_system(path, place, &opts, sc)
+            system::run_system(path, place, &opts, *sc)
         });
     }
     let (sc, model, state) = load_text(text, path)?;

@@ -97,8 +97,9 @@ pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
 /// What a scenario file describes: one cable or a system of lines.
 #[derive(Clone, Debug)]
 pub enum Input {
-    Cable(Scenario),
-    System(SystemScenario),
+    /// Boxed, as a system is: both are hundreds of bytes.
+    Cable(Box<Scenario>),
+    System(Box<SystemScenario>),
 }
 
 /// Parses and validates the text of a scenario of either kind: a system
@@ -126,15 +127,16 @@ pub fn parse_input_with(
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
         let sc = moordyn::deck_scenario(&deck, file, path, title, None, &host)?;
-        return Ok(Input::System(sc));
+        return Ok(Input::System(Box::new(sc)));
     }
     let ctx = Ctx { file };
     let raw = raw_scenario(text, file)?;
     if raw.is_system() {
         let title = title_of(raw.title.clone(), path);
-        return system::system_scenario(&ctx, raw, title, path, &host).map(Input::System);
+        return system::system_scenario(&ctx, raw, title, path, &host)
+            .map(|sc| Input::System(Box::new(sc)));
     }
-    cable_scenario(&ctx, raw, path).map(Input::Cable)
+    cable_scenario(&ctx, raw, path).map(|sc| Input::Cable(Box::new(sc)))
 }
 
 /// The TOML tables of a scenario; a file that is not TOML at all is told

@@ -99,6 +99,7 @@ pub(super) fn deck_scenario(
     notes.extend(depth_note);
     notes.extend(wave_note);
     notes.extend(current_note);
+    notes.extend(line_output_notes(deck, path));
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
@@ -118,6 +119,7 @@ pub(super) fn deck_scenario(
         end_forces: super::output::EndForces::StepMean,
         notes,
         water: Some(water),
+        static_only: super::moordyn_waves::static_only(deck, file),
         moordyn_out: moordyn_out_file(deck, path, &channels).map(Box::new),
         channels,
         names,
@@ -126,25 +128,63 @@ pub(super) fn deck_scenario(
     Ok(sc)
 }
 
-/// MoorDyn's `<deck>.out` of a deck at `path` whose OUTPUTS give
-/// `channels` (None without any): the deck file's stem and `.out`, the
-/// units row unless `WriteUnits` is 0.
+/// The notes on `LineOutputs` flags whose quantities stancf does not
+/// compute (`<deck>_Line<n>.out` has no columns for them).
+fn line_output_notes(deck: &Deck, path: &Path) -> Vec<String> {
+    let stem = path
+        .file_stem()
+        .map_or(String::new(), |s| s.to_string_lossy().into_owned());
+    deck.lines
+        .iter()
+        .filter_map(|l| {
+            let missing: Vec<String> = moordyn::UNCOMPUTED_LINE_FLAGS
+                .iter()
+                .filter(|(f, _)| l.outputs.contains(*f))
+                .map(|(f, what)| format!("{f} ({what})"))
+                .collect();
+            (!missing.is_empty() && l.outputs != "-").then(|| {
+                format!(
+                    "line {}: LineOutputs \"{}\" of line {}: {} not computed by stancf; \
+                     {stem}_Line{}.out has no columns for them",
+                    l.line,
+                    l.outputs,
+                    l.id,
+                    missing.join(", "),
+                    l.id
+                )
+            })
+        })
+        .collect()
+}
+
+/// MoorDyn's output files of a deck at `path` (None: it asks for none):
+/// `<stem>.out` where its OUTPUTS give `channels`, `<stem>_Line<n>.out`
+/// for each line with `LineOutputs` flags (not `-`), the units rows unless
+/// `WriteUnits` is 0.
 fn moordyn_out_file(
     deck: &Deck,
     path: &Path,
     channels: &[OutputChannel],
 ) -> Option<super::system_parts::MoorDynOutFile> {
-    if channels.is_empty() {
+    let stem = path.file_stem()?.to_string_lossy().into_owned();
+    let lines: Vec<(usize, String, String)> = deck
+        .lines
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.outputs != "-" && !l.outputs.is_empty())
+        .map(|(i, l)| (i, format!("{stem}_Line{}.out", l.id), l.outputs.clone()))
+        .collect();
+    if channels.is_empty() && lines.is_empty() {
         return None;
     }
-    let stem = path.file_stem()?.to_string_lossy().into_owned();
     let units = deck
         .options
         .iter()
         .find(|o| o.name.eq_ignore_ascii_case("writeunits"))
         .is_none_or(|o| !matches!(o.value, moordyn::OptionValue::Number(v) if v <= 0.0));
     Some(super::system_parts::MoorDynOutFile {
-        file: format!("{stem}.out"),
+        main: (!channels.is_empty()).then(|| format!("{stem}.out")),
+        lines,
         units,
     })
 }

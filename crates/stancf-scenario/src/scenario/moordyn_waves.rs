@@ -37,6 +37,22 @@ use stancf::water::waves::AiryWave;
 use std::f64::consts::PI;
 use std::path::Path;
 
+/// Why a deck runs statically only (None: it may run in time): its
+/// `WaveKin 1` waits for a host to set the water's kinematics at
+/// MoorDyn's nodes, which stancf's coupling API does not take.
+pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
+    let at = super::moordyn_water::option_at(deck, SupportedOption::WaveKin)?;
+    (deck.option(SupportedOption::WaveKin) == Some(1.0)).then(|| {
+        format!(
+            "{file}: line {}: option {} is 1: MoorDyn's host sets the water's kinematics at its \
+             nodes (MoorDyn_ExternalWaveKinSet), which stancf's coupling API does not take, so \
+             the deck runs its static equilibrium only; give the waves in a scenario that takes \
+             the deck (system.moordyn) as [[water.waves]] or [water.jonswap], with WaveKin 0",
+            at.1, at.0
+        )
+    })
+}
+
 /// The deck's waves and a note for `check` saying where they come from,
 /// from its `WaveKin`: 0 (or missing) none; 7 the components of
 /// [`WAVE_FREQUENCIES_FILE`] beside the deck at `path`; any other mode
@@ -61,10 +77,13 @@ pub(super) fn deck_waves(
         0.0 => return Ok((Vec::new(), None)),
         7.0 => {}
         1.0 => {
-            return refuse(
-                "MoorDyn's externally driven waves (a host sets the kinematics at the nodes \
-                 through MoorDyn_ExternalWaveKin*) are not supported",
-            )
+            let note = format!(
+                "line {line}: {name} 1: MoorDyn's host sets the water's kinematics at its nodes \
+                 (MoorDyn_ExternalWaveKinSet), which stancf's coupling API does not take: the \
+                 deck's static equilibrium (a deck alone), which sees no waves in either code, \
+                 runs; a dynamic or coupled run of it is refused"
+            );
+            return Ok((Vec::new(), Some(note)));
         }
         2.0 | 3.0 => {
             let grid = super::moordyn_wave_grids::deck_grid_waves;

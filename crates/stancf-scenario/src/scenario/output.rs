@@ -9,9 +9,11 @@ use super::ScenarioError;
 /// The result tables of a system run `files` may name (docs/interface.md,
 /// "Systems"): nodes.csv, stress.csv and node_loads.csv are written for
 /// every line, in `lines/<id>/`; bodies.csv where the system has bodies;
-/// stiffness.csv where it has free bodies and a static equilibrium.
-/// summary.json and scenario.toml are always written.
-pub const SYSTEM_FILES: [&str; 9] = [
+/// stiffness.csv where it has free bodies and a static equilibrium;
+/// `moordyn.out` names MoorDyn's output files of a deck that asks for
+/// them (`<deck>.out`, `<deck>_Line<n>.out`). summary.json and
+/// scenario.toml are always written.
+pub const SYSTEM_FILES: [&str; 10] = [
     "points.csv",
     "tensions.csv",
     "history.csv",
@@ -21,6 +23,7 @@ pub const SYSTEM_FILES: [&str; 9] = [
     "node_loads.csv",
     "bodies.csv",
     "stiffness.csv",
+    "moordyn.out",
 ];
 
 /// Which of a system's result tables a run writes (all by default).

@@ -126,6 +126,7 @@ pub(super) fn system_scenario(
         notes,
         water,
         channels: Vec::new(),
+        static_only: None,
         moordyn_out: None,
         names,
     };
@@ -168,6 +169,13 @@ fn deck_system(
         sc.has_free_bodies(),
     )?;
     sc.notes.extend(step_note);
+    if let Some(why) = sc
+        .static_only
+        .as_ref()
+        .filter(|_| analysis.kind == AnalysisKind::Dynamic)
+    {
+        return Err(ScenarioError(why.clone()));
+    }
     let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
     sc.analysis = analysis;

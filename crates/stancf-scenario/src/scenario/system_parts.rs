@@ -172,20 +172,40 @@ pub struct SystemScenario {
     pub water: Option<Water>,
     /// Output channels (from a MoorDyn deck).
     pub channels: Vec<OutputChannel>,
+    /// Why the scenario runs statically only (a deck's `WaveKin 1`): a
+    /// dynamic or coupled run of it is refused with this.
+    pub static_only: Option<String>,
     /// MoorDyn's main output file of a deck with OUTPUTS (None without).
     pub moordyn_out: Option<Box<MoorDynOutFile>>,
     /// Where its values were written (TOML keys or a deck's lines).
     pub names: super::names::Names,
 }
 
-/// The `<deck>.out` a deck's OUTPUTS ask for (`run/system/moordyn_out.rs`).
+/// MoorDyn's output files a deck asks for: `<deck>.out` of its OUTPUTS
+/// (`run/system/moordyn_out.rs`) and `<deck>_Line<n>.out` of each line
+/// with `LineOutputs` flags (`run/system/moordyn_line_out.rs`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MoorDynOutFile {
-    /// `<deck file stem>.out`, MoorDyn's `_basename + ".out"`.
-    pub file: String,
-    /// Whether the units row is written (MoorDyn's `WriteUnits`, 1 unless
-    /// the deck says 0).
+    /// `<deck file stem>.out`, MoorDyn's `_basename + ".out"` (None: the
+    /// deck has no OUTPUTS).
+    pub main: Option<String>,
+    /// Each line's file and flags: (line index, `<stem>_Line<id>.out`,
+    /// the flags as written).
+    pub lines: Vec<(usize, String, String)>,
+    /// Whether the units rows are written (MoorDyn's `WriteUnits`, 1
+    /// unless the deck says 0).
     pub units: bool,
+}
+
+impl MoorDynOutFile {
+    /// Every file name it writes.
+    pub fn names(&self) -> Vec<String> {
+        self.main
+            .iter()
+            .cloned()
+            .chain(self.lines.iter().map(|(_, name, _)| name.clone()))
+            .collect()
+    }
 }
 
 impl SystemScenario {

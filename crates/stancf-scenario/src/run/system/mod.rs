@@ -4,6 +4,7 @@
 //! the time stepping; results per line, per point and per line end.
 
 mod bodies;
+mod moordyn_line_out;
 mod moordyn_out;
 mod rods;
 mod rows;
@@ -101,10 +102,11 @@ pub(super) fn run_system(
         && system.lines().iter().any(|l| l.model.has_axial_damping());
     // ... and for the water's and the seabed's work in water.
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
+    let models: Vec<&stancf::Model> = system.lines().iter().map(|l| &l.model).collect();
     let mut writers = SystemWriters::create(
         place.dest(),
         (&line_ids, &point_ids, &body_ids),
-        (&sc.channels, sc.moordyn_out.as_deref()),
+        (&sc.channels, sc.moordyn_out.as_deref(), &models),
         &sc.output_files,
         writers::Extras {
             vtk: opts.vtk,
@@ -470,11 +472,11 @@ fn write_summary(
     if let Some(out) = sc
         .moordyn_out
         .as_ref()
-        .filter(|_| sc.output_files.writes("channels.csv"))
+        .filter(|_| sc.output_files.writes("moordyn.out"))
     {
         // Named here so that a later run may replace the folder
-        // (crate::result_layout: the one file of a free name it writes).
-        summary["moordyn_out"] = json!(out.file);
+        // (crate::result_layout: the files of free names it writes).
+        summary["moordyn_out"] = json!(out.names());
     }
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())

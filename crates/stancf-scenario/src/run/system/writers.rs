@@ -5,6 +5,8 @@
 //! `tensions.csv` and `history.csv`.
 
 use super::bodies::BodyRow;
+use super::moordyn_line_out::LineOut;
+use super::moordyn_out::MoorDynOut;
 use super::rods::{rod_value, RodFrame};
 use super::rows::SystemRow;
 use crate::moordyn::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
@@ -36,6 +38,28 @@ pub(super) struct Extras {
     pub dynamic: bool,
 }
 
+/// MoorDyn's `.out` files of a deck, `m`: `<deck>.out` of its OUTPUTS
+/// and a `<deck>_Line<n>.out` for each line (of `models`) that asks for
+/// one (None for the others).
+fn moordyn_files(
+    dest: &Dest,
+    m: &crate::scenario::MoorDynOutFile,
+    channels: &[OutputChannel],
+    models: &[&Model],
+    dynamic: bool,
+) -> std::io::Result<(Option<MoorDynOut>, Vec<Option<LineOut>>)> {
+    let mut line_outs: Vec<Option<LineOut>> = models.iter().map(|_| None).collect();
+    for (i, name, flags) in &m.lines {
+        let out = LineOut::create(dest, name, models[*i], flags, m.units, !dynamic)?;
+        line_outs[*i] = Some(out);
+    }
+    let main = match &m.main {
+        Some(main) => Some(MoorDynOut::create(dest, main, channels, m.units, !dynamic)?),
+        None => None,
+    };
+    Ok((main, line_outs))
+}
+
 /// The files of a system run.
 pub(super) struct SystemWriters {
     lines: Vec<LineFiles>,
@@ -50,7 +74,9 @@ pub(super) struct SystemWriters {
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
     channels: Option<(AtomicFile, Vec<(Channel, bool)>)>,
     /// MoorDyn's `<deck>.out` of the same channels (beside channels.csv).
-    moordyn_out: Option<super::moordyn_out::MoorDynOut>,
+    moordyn_out: Option<MoorDynOut>,
+    /// MoorDyn's `<deck>_Line<n>.out` of each line that asks for one.
+    line_outs: Vec<Option<LineOut>>,
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
@@ -70,16 +96,14 @@ impl SystemWriters {
     pub(super) fn create(
         dest: Dest,
         (line_ids, point_ids, body_ids): (&[i64], &[i64], &[i64]),
-        (channels, moordyn_out): (&[OutputChannel], Option<&crate::scenario::MoorDynOutFile>),
+        (channels, moordyn_out, models): (
+            &[OutputChannel],
+            Option<&crate::scenario::MoorDynOutFile>,
+            &[&Model],
+        ),
         files: &OutputFiles,
         extras: Extras,
     ) -> std::io::Result<Self> {
-        let Extras {
-            vtk: with_vtk,
-            damping: with_damping,
-            water: with_water,
-            dynamic,
-        } = extras;
         // A chosen file with its header line (None where left out).
         let table = |path: &str, name: &str, header: &str| -> std::io::Result<_> {
             if !files.writes(name) {
@@ -136,21 +160,17 @@ impl SystemWriters {
             "history.csv",
             &format!(
                 "t,kinetic,strain,gravity,total,iterations,residual{}{}",
-                if with_damping { ",damping_work" } else { "" },
-                if with_water {
+                if extras.damping { ",damping_work" } else { "" },
+                if extras.water {
                     ",water_work,seabed_work"
                 } else {
                     ""
                 }
             ),
         )?;
-        let moordyn_out = match moordyn_out {
-            Some(m) if files.writes("channels.csv") => {
-                Some(super::moordyn_out::MoorDynOut::create(
-                    &dest, &m.file, channels, m.units, !dynamic,
-                )?)
-            }
-            _ => None,
+        let (moordyn_out, line_outs) = match moordyn_out.filter(|_| files.writes("moordyn.out")) {
+            Some(m) => moordyn_files(&dest, m, channels, models, extras.dynamic)?,
+            None => (None, (0..line_ids.len()).map(|_| None).collect()),
         };
         let channels = if channels.is_empty() || !files.writes("channels.csv") {
             None
@@ -164,13 +184,14 @@ impl SystemWriters {
             ))
         };
         Ok(SystemWriters {
-            vtk: if with_vtk {
+            vtk: if extras.vtk {
                 Some(crate::vtk::VtkWriter::create(dest.dir)?)
             } else {
                 None
             },
             channels,
             moordyn_out,
+            line_outs,
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
@@ -180,8 +201,8 @@ impl SystemWriters {
             tensions,
             history,
             samples: Vec::new(),
-            damping: with_damping,
-            water: with_water,
+            damping: extras.damping,
+            water: extras.water,
             times: TimeGrid::default(),
             rods: Vec::new(),
             parts: None,
@@ -274,6 +295,10 @@ impl SystemWriters {
                 };
                 node_load_rows(node_loads.writer(), t, model, state, bed)
                     .map_err(|_| bad(format!("node loads of line {}", self.line_ids[i])))?;
+            }
+            if let Some(out) = self.line_outs[i].as_mut() {
+                let bed = row.seabed.as_ref().map(|f| f[i].as_slice());
+                out.write_row(t.0, model, state, bed, &mut self.samples)?;
             }
         }
         Ok(())
@@ -386,6 +411,9 @@ impl SystemWriters {
             file.commit()?;
         }
         if let Some(out) = self.moordyn_out {
+            out.commit()?;
+        }
+        for out in self.line_outs.into_iter().flatten() {
             out.commit()?;
         }
         if let Some(vtk) = self.vtk {

@@ -1,0 +1,172 @@
+//! MoorDyn's per-line output files, `<deck>_Line<n>.out` (docs/interface.md,
+//! "Results of a system"): for a line whose `LineOutputs` flags ask for
+//! them, the node and segment quantities stancf computes, written as
+//! MoorDyn's `Line::Output` writes them (`Time`, then per flag in its
+//! order: `p` `Node<i>px py pz` (m), `K` `Node<i>Ku` (1/m), `v` `Node<i>vx
+//! vy vz` (m/s), `t` `Seg<j>Te` (N), `s` `Seg<j>St` (-), `b` `Node<i>bx by
+//! bz` (N); a units row of `(m)` and the like unless `WriteUnits 0`; the
+//! widths and numbers of the main file, `super::moordyn_out`). The nodes
+//! are the line's (its NumSegs + 1 unless a scenario remeshes it), the
+//! segments its elements: a segment's tension and strain are the
+//! element's at its middle, EA eps and eps (MoorDyn's are its segment's,
+//! the stretch of the chord between its nodes); a node's seabed force is
+//! the contact's consistent nodal force. The flags stancf does not
+//! compute (`U` the water's velocity, `D` the hydrodynamic force, `V` the
+//! VIV force, `c` the internal damping force, `d` the strain rate) get
+//! no columns, which `check` notes.
+
+use super::moordyn_out::cpp_scientific;
+use crate::output::{AtomicFile, Dest};
+use stancf::model::SLOT_R;
+use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
+use stancf::{Model, State};
+use std::io::Write;
+
+const TIME_WIDTH: usize = 10;
+const WIDTH: usize = 20;
+const PRECISION: usize = 7;
+
+use crate::moordyn::WRITTEN_LINE_FLAGS as WRITTEN_FLAGS;
+
+/// One line's file.
+pub(super) struct LineOut {
+    file: AtomicFile,
+    /// The written flags the line asks for, in MoorDyn's order.
+    flags: Vec<char>,
+    at_rest: bool,
+}
+
+impl LineOut {
+    /// Creates `name` for a line of `model` whose `LineOutputs` are
+    /// `flags`, with its header (and units) rows.
+    pub(super) fn create(
+        dest: &Dest,
+        name: &str,
+        model: &Model,
+        flags: &str,
+        units: bool,
+        at_rest: bool,
+    ) -> std::io::Result<Self> {
+        let flags: Vec<char> = WRITTEN_FLAGS
+            .into_iter()
+            .filter(|f| flags.contains(*f))
+            .collect();
+        let nodes = model.nodes();
+        let segments = model.cable.elements;
+        let mut file = dest.create(name)?;
+        let w = file.writer();
+        write!(w, "{:>TIME_WIDTH$}", "Time")?;
+        for &f in &flags {
+            let (per_node, suffixes): (bool, &[&str]) = match f {
+                'p' => (true, &["px", "py", "pz"]),
+                'K' => (true, &["Ku"]),
+                'v' => (true, &["vx", "vy", "vz"]),
+                't' => (false, &["Te"]),
+                's' => (false, &["St"]),
+                _ => (true, &["bx", "by", "bz"]),
+            };
+            if per_node {
+                for i in 0..nodes {
+                    for s in suffixes {
+                        write!(w, "{:>WIDTH$}", format!("Node{i}{s}"))?;
+                    }
+                }
+            } else {
+                for j in 1..=segments {
+                    write!(w, "{:>WIDTH$}", format!("Seg{j}{}", suffixes[0]))?;
+                }
+            }
+        }
+        writeln!(w)?;
+        if units {
+            write!(w, "{:>TIME_WIDTH$}", "(s)")?;
+            for &f in &flags {
+                let (unit, count) = match f {
+                    'p' => ("(m)", 3 * nodes),
+                    'K' => ("(1/m)", nodes),
+                    'v' => ("(m/s)", 3 * nodes),
+                    't' => ("(N)", segments),
+                    's' => ("(-)", segments),
+                    _ => ("(N)", 3 * nodes),
+                };
+                for _ in 0..count {
+                    write!(w, "{unit:>WIDTH$}")?;
+                }
+            }
+            writeln!(w)?;
+        }
+        Ok(LineOut {
+            file,
+            flags,
+            at_rest,
+        })
+    }
+
+    /// The row of time `t`; `seabed` the line's seabed nodal forces where
+    /// the run has them (else computed here), `samples` scratch space.
+    pub(super) fn write_row(
+        &mut self,
+        t: f64,
+        model: &Model,
+        state: &State,
+        seabed: Option<&[[f64; 3]]>,
+        samples: &mut Vec<StressSample>,
+    ) -> std::io::Result<()> {
+        let t = if self.at_rest { 0.0 } else { t };
+        let w = self.file.writer();
+        write!(w, "{t:>TIME_WIDTH$.4}")?;
+        let mut value = |v: f64| write!(w, "{:>WIDTH$}", cpp_scientific(v, PRECISION));
+        let nodes = model.nodes();
+        for &f in &self.flags {
+            match f {
+                'p' | 'v' => {
+                    let of = if f == 'p' { &state.e } else { &state.v };
+                    for i in 0..nodes {
+                        let o = model.coordinate(i, SLOT_R, 0);
+                        for c in 0..3 {
+                            value(of[o + c])?;
+                        }
+                    }
+                }
+                'K' => {
+                    for b in node_bending(model, state) {
+                        value(b.curvature)?;
+                    }
+                }
+                't' | 's' => {
+                    // Three samples per element: its ends and its middle.
+                    stress_samples(model, state, 3, samples);
+                    let e = model.material.youngs_modulus;
+                    for mid in samples.iter().skip(1).step_by(3) {
+                        let strain = mid.axial_stress / e;
+                        value(if f == 't' {
+                            mid.axial_stress * model.material.area
+                        } else {
+                            strain
+                        })?;
+                    }
+                }
+                _ => {
+                    let computed;
+                    let forces = match seabed {
+                        Some(f) => f,
+                        None => {
+                            computed = seabed_nodal_forces(model, state);
+                            &computed
+                        }
+                    };
+                    for force in forces {
+                        for c in force {
+                            value(*c)?;
+                        }
+                    }
+                }
+            }
+        }
+        writeln!(w)
+    }
+
+    pub(super) fn commit(self) -> std::io::Result<()> {
+        self.file.commit()
+    }
+}
