@@ -231,3 +231,54 @@ fn moordyn_node_tension_channels_are_the_weight_hanging_below() {
         assert!((value - want).abs() < 1e-8 * want, "{name}: {value} {want}");
     }
 }
+
+/// MoorDyn's old 12-column point rows (`X Y Z Mass Volume FX FY FZ CdA
+/// Ca`) give a free point a constant force (Point.cpp's `pointF`): at the
+/// static equilibrium the two ropes hold it against that force and its
+/// weight, their pull on it (points.csv) (-30, 0, 5 + 0.5 g) N to the
+/// static solve's tolerance; a force on a point the deck holds is refused
+/// naming its row.
+#[test]
+fn an_old_point_rows_constant_force_acts_on_its_free_point() {
+    let deck = |second: &str| {
+        format!(
+            "--- MoorDyn input file ---\nTwo ropes and a weight pushed sideways\n\
+             --- LINE TYPES ---\n\
+             TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+             (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n\
+             rope 0.01 0.08 2.0e4 0 0 0 0 0 0\n\
+             --- POINTS ---\n\
+             ID Attachment X Y Z Mass Volume FX FY FZ CdA Ca\n\
+             (#) (-) (m) (m) (m) (kg) (m^3) (N) (N) (N) (m^2) (-)\n\
+             1 Fixed -1.0 0.0 -1.0 0 0 0 0 0 0 0\n\
+             {second}\n\
+             3 Fixed 1.0 0.0 -1.0 0 0 0 0 0 0 0\n\
+             --- LINES ---\n\
+             ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n\
+             (#) (name) (#) (#) (m) (-) (-)\n\
+             1 rope 1 2 1.05 8 -\n\
+             2 rope 2 3 1.05 8 -\n\
+             --- OPTIONS ---\n\
+             9.81 g\n50 WtrDpth\n--- need this line ---\n"
+        )
+    };
+    let d = scratch("point-force");
+    std::fs::write(d.join("deck.txt"), deck("2 Free 0.0 0.0 -1.0 0.5 0 30.0 0 -5.0 0 0")).unwrap();
+    let out = d.join("out");
+    let o = run_quiet(&d.join("deck.txt"), &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let p = rows.iter().find(|r| r[col("point")] == 2.0).unwrap();
+    let want = [-30.0, 0.0, 5.0 + 0.5 * 9.81];
+    for (i, name) in ["fx", "fy", "fz"].iter().enumerate() {
+        assert!((p[col(name)] - want[i]).abs() < 1e-6, "{name}: {} against {}", p[col(name)], want[i]);
+    }
+    std::fs::write(d.join("held.txt"), deck("2 Fixed 0.0 0.0 -1.0 0 0 30.0 0 0 0 0")).unwrap();
+    refused_by_check_and_run(
+        &d.join("held.txt"),
+        &d.join("never"),
+        &["line 11", "point 2 has a constant force (FX FY FZ) but is not free"],
+        &[],
+    );
+}

@@ -12,6 +12,20 @@ use std::path::Path;
 /// .out, while channels.csv keeps an empty column).
 const OUTPUTS: &str = "FairTen1\nAnchTen1\nPoint2FX\nL1N2PZ\nN4Px\n";
 
+/// `rope.txt` (beside it in `d`) run for `duration` s of 0.01 s steps, its
+/// coupled point swung.
+fn swing(d: &Path, duration: f64) -> std::path::PathBuf {
+    write_scenario(
+        d,
+        "swing.toml",
+        &format!(
+            "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\n\
+             amplitude = [0.05, 0.0, 0.02]\nperiod = 0.5\n[analysis]\ntype = \"dynamic\"\n\
+             time_scheme = \"galerkin\"\ntime_step = 0.01\nduration = {duration}\n"
+        ),
+    )
+}
+
 /// The rows of a `.out` file: its words, row by row.
 fn words(path: &Path) -> Vec<Vec<String>> {
     std::fs::read_to_string(path)
@@ -31,13 +45,7 @@ fn words(path: &Path) -> Vec<Vec<String>> {
 fn a_decks_outputs_are_also_moordyns_out_file() {
     let d = scratch("moordyn-out");
     std::fs::write(d.join("rope.txt"), rope_deck(OUTPUTS)).unwrap();
-    let sc = write_scenario(
-        &d,
-        "swing.toml",
-        "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\namplitude = [0.05, 0.0, 0.02]\n\
-         period = 0.5\n[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
-         time_step = 0.01\nduration = 0.3\n",
-    );
+    let sc = swing(&d, 0.3);
     let out = d.join("out");
     for _ in 0..2 {
         let o = run_quiet(&sc, &out, &[]);
@@ -110,13 +118,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         so.contains("LineOutputs \"pKvUDtsb\" of line 1: U (the water's velocity), D (the hydrodynamic force) not computed by stancf; rope_Line1.out has no columns for them"),
         "{so}{se}"
     );
-    let sc = write_scenario(
-        &d,
-        "swing.toml",
-        "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\namplitude = [0.05, 0.0, 0.02]\n\
-         period = 0.5\n[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
-         time_step = 0.01\nduration = 0.1\n",
-    );
+    let sc = swing(&d, 0.1);
     let out = d.join("out");
     let o = run_quiet(&sc, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);

@@ -157,6 +157,9 @@ pub struct DeckPoint {
     pub cda: f64,
     /// `Ca`: added-mass coefficient (on `Volume`).
     pub ca: f64,
+    /// `FX FY FZ` (N) of the old 12-column rows (MoorDyn's `pointF`, a
+    /// constant force on a free point); 0 without them.
+    pub force: [f64; 3],
 }
 
 /// The `LineOutputs` flags whose quantities stancf writes to

@@ -223,15 +223,22 @@ pub(crate) fn points(s: &Section) -> Result<Vec<DeckPoint>, DeckError> {
         sequential(row, id, out.len() + 1, "point")?;
         let attachment = attachment(row, id)?;
         let what = |col: &str| format!("{col} of point {id}");
-        // 12 words or more: MoorDyn reads `X Y Z Mass Volume FX FY FZ CdA Ca`.
+        // 12 words or more: MoorDyn reads `X Y Z Mass Volume FX FY FZ CdA Ca`,
+        // the force a constant one on the point (Point.cpp, `pointF`).
+        let mut force = [0.0; 3];
         let (cda, ca) = if row.words.len() >= 12 {
-            for (col, name) in [(7, "FX"), (8, "FY"), (9, "FZ")] {
-                if number(row, col, &what(name))? != 0.0 {
-                    return Err(DeckError::at(
-                        row.line,
-                        format!("point {id} has a constant force {name}; point forces are not supported"),
-                    ));
-                }
+            for (c, (col, name)) in [(7, "FX"), (8, "FY"), (9, "FZ")].into_iter().enumerate() {
+                force[c] = number(row, col, &what(name))?;
+            }
+            if force != [0.0; 3] && attachment != Attachment::Free {
+                return Err(DeckError::at(
+                    row.line,
+                    format!(
+                        "point {id} has a constant force (FX FY FZ) but is not free: stancf \
+                         takes a force on a free point only (on a point the deck holds it \
+                         would only change the reported force)"
+                    ),
+                ));
             }
             (10, 11)
         } else {
@@ -250,6 +257,7 @@ pub(crate) fn points(s: &Section) -> Result<Vec<DeckPoint>, DeckError> {
             volume: non_negative(row, 6, &what("Volume"), false)?,
             cda: non_negative(row, cda, &what("CdA"), false)?,
             ca: non_negative(row, ca, &what("Ca"), false)?,
+            force,
         });
     }
     Ok(out)

@@ -321,7 +321,7 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
         kind,
         position,
         mass: if_free(p.mass),
-        force: [0.0; 3],
+        force: p.force,
         volume: if_free(p.volume),
         drag_area: if_free(p.cda),
         ca: if_free(p.ca),

@@ -15,16 +15,12 @@
 //! VIV force, `c` the internal damping force, `d` the strain rate) get
 //! no columns, which `check` notes.
 
-use super::moordyn_out::cpp_scientific;
+use super::moordyn_out::{write_time, write_value, TIME_WIDTH, WIDTH};
 use crate::output::{AtomicFile, Dest};
 use stancf::model::SLOT_R;
 use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
 use stancf::{Model, State};
 use std::io::Write;
-
-const TIME_WIDTH: usize = 10;
-const WIDTH: usize = 20;
-const PRECISION: usize = 7;
 
 use crate::moordyn::WRITTEN_LINE_FLAGS as WRITTEN_FLAGS;
 
@@ -114,8 +110,8 @@ impl LineOut {
     ) -> std::io::Result<()> {
         let t = if self.at_rest { 0.0 } else { t };
         let w = self.file.writer();
-        write!(w, "{t:>TIME_WIDTH$.4}")?;
-        let mut value = |v: f64| write!(w, "{:>WIDTH$}", cpp_scientific(v, PRECISION));
+        write_time(w, t)?;
+        let mut value = |v: f64| write_value(w, v);
         let nodes = model.nodes();
         for &f in &self.flags {
             match f {

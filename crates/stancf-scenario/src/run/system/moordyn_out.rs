@@ -18,9 +18,20 @@ use std::io::Write;
 
 /// The widths of MoorDyn's columns (`setw(10)` for the time, `WIDTH` for
 /// the channels) and its `PRECISION`.
-const TIME_WIDTH: usize = 10;
-const WIDTH: usize = 20;
+pub(super) const TIME_WIDTH: usize = 10;
+pub(super) const WIDTH: usize = 20;
 const PRECISION: usize = 7;
+
+/// A row's time as MoorDyn writes it: `fixed`, 4 decimals, in 10.
+pub(super) fn write_time(w: &mut impl Write, t: f64) -> std::io::Result<()> {
+    write!(w, "{t:>TIME_WIDTH$.4}")
+}
+
+/// A value as MoorDyn writes it: `scientific`, `PRECISION` digits, in
+/// `WIDTH`.
+pub(super) fn write_value(w: &mut impl Write, v: f64) -> std::io::Result<()> {
+    write!(w, "{:>WIDTH$}", cpp_scientific(v, PRECISION))
+}
 
 /// The open file and the channels (their indices among the deck's) it
 /// has columns for.
@@ -75,10 +86,9 @@ impl MoorDynOut {
     pub(super) fn write_row(&mut self, t: f64, values: &[Option<f64>]) -> std::io::Result<()> {
         let t = if self.at_rest { 0.0 } else { t };
         let w = self.file.writer();
-        write!(w, "{t:>TIME_WIDTH$.4}")?;
+        write_time(w, t)?;
         for &i in &self.columns {
-            let v = values[i].expect("a column's channel is computed");
-            write!(w, "{:>WIDTH$}", cpp_scientific(v, PRECISION))?;
+            write_value(w, values[i].expect("a column's channel is computed"))?;
         }
         writeln!(w)
     }
