@@ -263,7 +263,11 @@ fn an_old_point_rows_constant_force_acts_on_its_free_point() {
         )
     };
     let d = scratch("point-force");
-    std::fs::write(d.join("deck.txt"), deck("2 Free 0.0 0.0 -1.0 0.5 0 30.0 0 -5.0 0 0")).unwrap();
+    std::fs::write(
+        d.join("deck.txt"),
+        deck("2 Free 0.0 0.0 -1.0 0.5 0 30.0 0 -5.0 0 0"),
+    )
+    .unwrap();
     let out = d.join("out");
     let o = run_quiet(&d.join("deck.txt"), &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
@@ -272,13 +276,25 @@ fn an_old_point_rows_constant_force_acts_on_its_free_point() {
     let p = rows.iter().find(|r| r[col("point")] == 2.0).unwrap();
     let want = [-30.0, 0.0, 5.0 + 0.5 * 9.81];
     for (i, name) in ["fx", "fy", "fz"].iter().enumerate() {
-        assert!((p[col(name)] - want[i]).abs() < 1e-6, "{name}: {} against {}", p[col(name)], want[i]);
+        assert!(
+            (p[col(name)] - want[i]).abs() < 1e-6,
+            "{name}: {} against {}",
+            p[col(name)],
+            want[i]
+        );
     }
-    std::fs::write(d.join("held.txt"), deck("2 Fixed 0.0 0.0 -1.0 0 0 30.0 0 0 0 0")).unwrap();
+    std::fs::write(
+        d.join("held.txt"),
+        deck("2 Fixed 0.0 0.0 -1.0 0 0 30.0 0 0 0 0"),
+    )
+    .unwrap();
     refused_by_check_and_run(
         &d.join("held.txt"),
         &d.join("never"),
-        &["line 11", "point 2 has a constant force (FX FY FZ) but is not free"],
+        &[
+            "line 11",
+            "point 2 has a constant force (FX FY FZ) but is not free",
+        ],
         &[],
     );
 }

@@ -49,10 +49,6 @@ impl HostEnvironment {
         Ok(self)
     }
 
-    pub fn is_none(&self) -> bool {
-        *self == HostEnvironment::NONE
-    }
-
     /// The water keys the host gives (depth and density).
     pub(super) fn water_keys(&self) -> WaterKeys {
         WaterKeys {

@@ -228,11 +228,10 @@ fn step_notes(deck: &Deck) -> Vec<String> {
     notes
 }
 
-/// The deck's acceleration of gravity (m/s^2; MoorDyn's 9.80665 unless
-/// `g` is given). It is the water's too (its pressure, its waves): out of
-/// range it is refused here by its line, before the water is built with
-/// it.
-/// The deck's `g`, else the host's, else MoorDyn's 9.80665 m/s^2.
+/// The deck's acceleration of gravity (m/s^2): its `g`, else the host's,
+/// else MoorDyn's 9.80665. It is the water's too (its pressure, its
+/// waves): out of range it is refused here by its line, before the water
+/// is built with it.
 fn deck_gravity(
     deck: &Deck,
     file: &str,

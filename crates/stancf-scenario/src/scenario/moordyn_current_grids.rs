@@ -190,8 +190,14 @@ pub fn read_grid_4d(text: &str) -> Result<CurrentGrid, String> {
         }
         axes[a] = values;
     }
-    let nodes: usize = counts[..4].iter().product();
-    let mut velocity: Vec<Option<([f64; 3], usize)>> = vec![None; nodes];
+    // The rows by node index, kept in a map: a count of nodes far beyond
+    // the file's rows allocates nothing the size of the grid.
+    let nodes = counts[..4]
+        .iter()
+        .try_fold(1usize, |n, c| n.checked_mul(*c))
+        .ok_or_else(|| "line 1: the counts' product, the grid's nodes, overflows".to_string())?;
+    let mut given: std::collections::HashMap<usize, ([f64; 3], usize)> =
+        std::collections::HashMap::new();
     for (at, words) in lines.iter().skip(5).filter(|(_, w)| !w.is_empty()) {
         if words.len() != 7 {
             return Err(format!(
@@ -216,16 +222,19 @@ pub fn read_grid_4d(text: &str) -> Result<CurrentGrid, String> {
             };
             node = node * counts[a] + i;
         }
-        if let Some((_, first)) = velocity[node] {
+        if let Some((_, first)) = given.get(&node) {
             return Err(format!(
                 "line {at}: the node ({}, {}, {}, {}) was given at line {first} already",
                 v[0], v[1], v[2], v[3]
             ));
         }
-        velocity[node] = Some(([v[4], v[5], v[6]], *at));
+        given.insert(node, ([v[4], v[5], v[6]], *at));
     }
-    let missing = velocity.iter().filter(|v| v.is_none()).count();
-    if let Some(first) = velocity.iter().position(Option::is_none) {
+    if given.len() < nodes {
+        // The first node without a row: among the first len + 1.
+        let first = (0..nodes)
+            .find(|k| !given.contains_key(k))
+            .expect("one is missing");
         let mut rest = first;
         let mut coordinates = [0.0; 4];
         for a in (0..4).rev() {
@@ -233,14 +242,15 @@ pub fn read_grid_4d(text: &str) -> Result<CurrentGrid, String> {
             rest /= counts[a];
         }
         return Err(format!(
-            "{missing} of the grid's {nodes} nodes have no row, the first ({}, {}, {}, {})",
-            coordinates[0], coordinates[1], coordinates[2], coordinates[3]
+            "{} of the grid's {nodes} nodes have no row, the first ({}, {}, {}, {})",
+            nodes - given.len(),
+            coordinates[0],
+            coordinates[1],
+            coordinates[2],
+            coordinates[3]
         ));
     }
-    let velocity = velocity
-        .into_iter()
-        .map(|v| v.expect("every node").0)
-        .collect();
+    let velocity = (0..nodes).map(|k| given[&k].0).collect();
     CurrentGrid::new(axes, velocity).map_err(|e| e.message)
 }
 

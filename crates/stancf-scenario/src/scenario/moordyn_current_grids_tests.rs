@@ -136,4 +136,12 @@ fn a_4d_grid_with_a_node_missing_repeated_or_off_its_axes_is_refused_naming_the_
     assert!(e.contains("line 2") && e.contains("rise"), "{e}");
     let e = read_grid_4d("2 2 x 2\n").unwrap_err();
     assert!(e.contains("line"), "{e}");
+    // A count beyond its axis's values is refused by the axis's line (the
+    // counts are bounded by the file; the rows are kept by node in a map,
+    // so a grid of far more nodes than rows allocates nothing its size).
+    let huge = GRID_4D
+        .replacen("2 2 2 2", "2 2 2 4611686018427387904", 1)
+        .replacen("0 15\n", "0 15 16\n", 1);
+    let e = read_grid_4d(&huge).unwrap_err();
+    assert!(e.contains("line 5") || e.contains("overflows"), "{e}");
 }
