@@ -34,6 +34,18 @@ const DEFAULT_WAVE_TIME_STEP: f64 = 0.25;
 /// field" (WaveGrid.cpp, `constructWaveGridElevationData`).
 const RECORD_HIGHEST_OMEGA: f64 = 0.5 * 2.0 * PI;
 
+/// The most samples of a resampled record (a day at 8.64 ms).
+const MOST_RECORD_SAMPLES: f64 = 1e7;
+
+/// The most work the transform of a record may take, samples times waves
+/// kept (W2c): 2e9 multiply-adds, a few seconds; a three-hour record at
+/// 4 Hz is 43 200 x 5 400 = 2.3e8.
+const MOST_TRANSFORM_WORK: f64 = 2e9;
+
+/// The most frequencies of MoorDyn's even grid a `wave_frequencies.txt`
+/// may make (MoorDyn's FFT of a million samples per grid node).
+const MOST_GRID_FREQUENCIES: f64 = 1e6;
+
 /// The waves of `WaveKin 2`: the rows of `wave_frequencies.txt` (read by
 /// `super::moordyn_wave_frequencies::read_wave_frequencies`) on MoorDyn's even
 /// grid (W2e): dw the smallest spacing of the rows, the frequencies k dw
@@ -69,7 +81,15 @@ pub fn fft_grid_waves(
         ));
     }
     let last = rows.last().expect("2 rows at least").omega;
-    let count = (last / dw).floor() as usize + 1;
+    let count = (last / dw).floor() + 1.0;
+    if count > MOST_GRID_FREQUENCIES {
+        return Err(format!(
+            "MoorDyn's grid of these rows has {count:.0} frequencies (dw = {dw} rad/s, the \
+             smallest spacing of the rows, up to {last} rad/s), beyond the \
+             {MOST_GRID_FREQUENCIES:e} stancf sums; space the rows more evenly"
+        ));
+    }
+    let count = count as usize;
     // k dw lands on a row given in decimals only to round-off (0.05 k
     // against k times the smallest spacing, 0.04999999999999999): such a
     // grid frequency takes the row's amplitude, where MoorDyn's
@@ -141,7 +161,19 @@ pub fn record_waves(text: &str, dt: f64) -> Result<RecordWaves, String> {
         ));
     }
     let t_last = rows.last().expect("2 rows").1[0];
-    let mut n = (t_last / dt).floor().max(0.0) as usize + 1;
+    // Bounded before anything the record's size is allocated: N samples,
+    // and the terms up to 0.5 Hz, k <= N dt / 2.
+    let count = (t_last / dt).floor().max(0.0) + 1.0;
+    let kept = (count * dt / 2.0).min(count / 2.0);
+    if count > MOST_RECORD_SAMPLES || count * kept > MOST_TRANSFORM_WORK {
+        return Err(format!(
+            "the record of {t_last} s every dtWave = {dt} s is {count:.0} samples with {kept:.0} \
+             waves up to 0.5 Hz, beyond the {MOST_RECORD_SAMPLES:e} samples and \
+             {MOST_TRANSFORM_WORK:e} samples x waves stancf transforms; give a larger dtWave or a \
+             shorter record"
+        ));
+    }
+    let mut n = count as usize;
     n -= n % 2;
     if n < 2 {
         return Err(format!(

@@ -182,6 +182,14 @@ fn what_moordyns_grid_cannot_make_a_wave_of_is_refused_naming_the_row() {
             ],
             vec!["line 3", "Nyquist", "no amplitude"],
         ),
+        (
+            vec![
+                (0.0, 0.0, 0.0, 0.0),
+                (1e-9, 1.0, 0.0, 0.0),
+                (2.0, 0.0, 0.0, 0.0),
+            ],
+            vec!["frequencies", "space the rows more evenly"],
+        ),
     ] {
         let e = fft_grid_waves(&rows(&r)).unwrap_err();
         for n in needles {
@@ -239,8 +247,15 @@ fn a_record_moordyn_cannot_grid_is_refused_naming_its_line() {
         ("0 0\n0.1 0.1\n", vec!["two samples"]),
         ("0 0\n1 x\n", vec!["line 2", "\"x\""]),
         ("0\n", vec!["line 1", "at least 2"]),
+        ("0 0\n1e12 0.1\n", vec!["samples", "larger dtWave"]),
+        ("0 0\n1 0.1\n", vec!["samples", "larger dtWave"]),
     ] {
-        let e = record_waves(text, 0.25).unwrap_err();
+        let dt = if text.starts_with("0 0\n1 ") {
+            1e-8
+        } else {
+            0.25
+        };
+        let e = record_waves(text, dt).unwrap_err();
         for n in needles {
             assert!(e.contains(n), "{n}: {e}");
         }
