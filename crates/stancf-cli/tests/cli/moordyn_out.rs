@@ -169,3 +169,27 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         }
     }
 }
+
+/// MoorDyn writes no output file under `disableOutput 1`, and opens a
+/// line's file only for the flags `pvUDVKctsd` (`b` alone opens none):
+/// neither does stancf; channels.csv is stancf's own and stays.
+#[test]
+fn disabled_outputs_and_a_seabed_flag_alone_write_no_moordyn_files() {
+    let d = scratch("moordyn-out-disabled");
+    let run = |name: &str, deck: String| {
+        std::fs::write(d.join(format!("{name}.txt")), deck).unwrap();
+        let out = d.join(name);
+        let o = run_quiet(&d.join(format!("{name}.txt")), &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        names(&out)
+    };
+    let disabled = rope_deck(OUTPUTS)
+        .replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pt")
+        .replace("50 WtrDpth\n", "50 WtrDpth\n1 disableOutput\n");
+    let files = run("off", disabled);
+    assert!(files.contains(&"channels.csv".to_string()));
+    assert!(!files.iter().any(|f| f.ends_with(".out")), "{files:?}");
+    let seabed = rope_deck("").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 b");
+    let files = run("bed", seabed);
+    assert!(!files.iter().any(|f| f.ends_with(".out")), "{files:?}");
+}

@@ -157,30 +157,38 @@ fn line_output_notes(deck: &Deck, path: &Path) -> Vec<String> {
         .collect()
 }
 
-/// MoorDyn's output files of a deck at `path` (None: it asks for none):
-/// `<stem>.out` where its OUTPUTS give `channels`, `<stem>_Line<n>.out`
-/// for each line with `LineOutputs` flags (not `-`), the units rows unless
-/// `WriteUnits` is 0.
+/// MoorDyn's output files of a deck at `path` (None: it asks for none,
+/// or says `disableOutput 1`): `<stem>.out` where its OUTPUTS give
+/// `channels`, `<stem>_Line<n>.out` for each line whose `LineOutputs`
+/// hold one of the flags MoorDyn opens a file for (`pvUDVKctsd`, MoorDyn2.cpp;
+/// `b` alone opens none), the units rows unless `WriteUnits` is 0.
 fn moordyn_out_file(
     deck: &Deck,
     path: &Path,
     channels: &[OutputChannel],
 ) -> Option<super::system_parts::MoorDynOutFile> {
+    let option = |name: &str| {
+        deck.options
+            .iter()
+            .find(|o| o.name.eq_ignore_ascii_case(name))
+    };
+    let disabled = option("disableoutput")
+        .is_some_and(|o| matches!(o.value, moordyn::OptionValue::Number(v) if v == 1.0));
+    if disabled {
+        return None;
+    }
     let stem = path.file_stem()?.to_string_lossy().into_owned();
     let lines: Vec<(usize, String, String)> = deck
         .lines
         .iter()
         .enumerate()
-        .filter(|(_, l)| l.outputs != "-" && !l.outputs.is_empty())
+        .filter(|(_, l)| l.outputs.contains(|c| "pvUDVKctsd".contains(c)))
         .map(|(i, l)| (i, format!("{stem}_Line{}.out", l.id), l.outputs.clone()))
         .collect();
     if channels.is_empty() && lines.is_empty() {
         return None;
     }
-    let units = deck
-        .options
-        .iter()
-        .find(|o| o.name.eq_ignore_ascii_case("writeunits"))
+    let units = option("writeunits")
         .is_none_or(|o| !matches!(o.value, moordyn::OptionValue::Number(v) if v <= 0.0));
     Some(super::system_parts::MoorDynOutFile {
         main: (!channels.is_empty()).then(|| format!("{stem}.out")),
