@@ -219,6 +219,19 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         );
     }
+    if let Some(out) = sc
+        .moordyn_out
+        .as_ref()
+        .filter(|_| sc.output_files.writes("moordyn.out"))
+    {
+        line(
+            "moordyn files",
+            format!(
+                "{}, as MoorDyn writes them (docs/interface.md, \"Results of a system\")",
+                out.names().join(", ")
+            ),
+        );
+    }
     for n in &sc.notes {
         let _ = writeln!(r, "note: {n}");
     }

@@ -115,6 +115,10 @@ fn a_lines_output_flags_are_moordyns_line_file() {
     std::fs::write(d.join("rope.txt"), deck).unwrap();
     let (so, se) = text(&stancf(&["check", d.join("rope.txt").to_str().unwrap()]));
     assert!(
+        so.contains("moordyn files               rope.out, rope_Line1.out, as MoorDyn"),
+        "{so}"
+    );
+    assert!(
         so.contains("LineOutputs \"pKvUDtsb\" of line 1: U (the water's velocity), D (the hydrodynamic force) not computed by stancf; rope_Line1.out has no columns for them"),
         "{so}{se}"
     );
