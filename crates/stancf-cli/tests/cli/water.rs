@@ -385,3 +385,27 @@ fn text_of_check(args: &[&str]) -> (String, String) {
     assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o).1);
     text(&o)
 }
+
+/// MoorDyn-F's `mu_kT` and `mu_kA` are the seabed's transverse and axial
+/// friction coefficients (`check` shows them); beside MoorDyn-C's one
+/// `FrictionCoefficient` they are refused naming both lines.
+#[test]
+fn moordyn_fs_friction_coefficients_are_the_seabeds_transverse_and_axial() {
+    let d = scratch("water-mu-k");
+    let deck = chain_deck("0.3 mu_kT\n0.6 mu_kA\n").replace("0.5       FrictionCoefficient\n", "");
+    std::fs::write(d.join("deck.txt"), &deck).unwrap();
+    std::fs::write(d.join("current_profile.txt"), CHAIN_CURRENT).unwrap();
+    let (so, se) = text_of_check(&["check", d.join("deck.txt").to_str().unwrap()]);
+    assert!(
+        so.contains("friction 0.6 axial and 0.3 transverse"),
+        "{so}{se}"
+    );
+    std::fs::write(d.join("both.txt"), chain_deck("0.3 mu_kT\n")).unwrap();
+    let o = stancf(&["check", d.join("both.txt").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = text(&o).1;
+    assert!(
+        e.contains("option mu_kT and FrictionCoefficient") && e.contains("give one of them"),
+        "{e}"
+    );
+}

@@ -41,6 +41,11 @@ pub enum SupportedOption {
     /// `WaveKin 3` at (s), read as MoorDyn reads it, in single precision
     /// ([`SupportedOption::as_moordyn_reads`]); MoorDyn's default 0.25 s.
     WaveTimeStep,
+    /// `mu_kT` (MoorDyn-F): the seabed's kinetic friction coefficient
+    /// across a line.
+    TransverseFriction,
+    /// `mu_kA` (MoorDyn-F): the same along a line.
+    AxialFriction,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
     /// MoorDyn ignores it.
@@ -64,6 +69,8 @@ impl SupportedOption {
             SupportedOption::Currents => "Currents",
             SupportedOption::WaveKin => "WaveKin",
             SupportedOption::WaveTimeStep => "dtWave",
+            SupportedOption::TransverseFriction => "mu_kT",
+            SupportedOption::AxialFriction => "mu_kA",
             SupportedOption::Courant => "CFL",
         }
     }
@@ -169,10 +176,8 @@ fn classify(lower: &str) -> Option<Class> {
         "waterkin" => Some(Class::Refused(
             "MoorDyn-F water kinematics (waves, currents) are not supported",
         )),
-        "mu_kt" | "mu_ka" => Some(Class::Refused(
-            "MoorDyn-F's separate transverse and axial friction coefficients are not \
-             supported; give FrictionCoefficient",
-        )),
+        "mu_kt" => s(S::TransverseFriction),
+        "mu_ka" => s(S::AxialFriction),
         _ => None,
     }
 }

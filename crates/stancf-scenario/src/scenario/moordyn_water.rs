@@ -41,14 +41,31 @@ pub(super) fn deck_water_keys(
     path: &Path,
 ) -> Result<(WaterKeys, Option<String>), ScenarioError> {
     let friction = deck.option(SupportedOption::FrictionCoefficient);
+    for separate in [
+        SupportedOption::AxialFriction,
+        SupportedOption::TransverseFriction,
+    ] {
+        if let (Some(one), Some(other)) = (
+            option_at(deck, SupportedOption::FrictionCoefficient),
+            option_at(deck, separate),
+        ) {
+            return Err(ScenarioError(format!(
+                "{file}: line {}: option {} and {} (line {}) both give the seabed's friction \
+                 (MoorDyn-C's one coefficient, MoorDyn-F's separate ones): give one of them",
+                other.1, other.0, one.0, one.1
+            )));
+        }
+    }
     let (current, note) = deck_current(deck, file, path)?;
     let keys = WaterKeys {
         depth: deck.option(SupportedOption::WaterDepth),
         density: deck.option(SupportedOption::WaterDensity),
         stiffness: deck.option(SupportedOption::BottomStiffness),
         damping: deck.option(SupportedOption::BottomDamping),
-        friction_axial: friction,
-        friction_transverse: friction,
+        friction_axial: deck.option(SupportedOption::AxialFriction).or(friction),
+        friction_transverse: deck
+            .option(SupportedOption::TransverseFriction)
+            .or(friction),
         current,
         ..WaterKeys::default()
     };
@@ -206,14 +223,22 @@ pub(super) fn table_rows(
 }
 
 /// The deck option a `[water]` key of [`WaterKeys::given`] collides with.
-fn deck_option_of(key: &str) -> SupportedOption {
+fn deck_option_of(key: &str, deck: &Deck) -> SupportedOption {
+    let separate = |which: SupportedOption| {
+        if deck.option(which).is_some() {
+            which
+        } else {
+            SupportedOption::FrictionCoefficient
+        }
+    };
     match key {
         "water.depth" => SupportedOption::WaterDepth,
         "water.density" => SupportedOption::WaterDensity,
         "water.seabed.stiffness" => SupportedOption::BottomStiffness,
         "water.seabed.damping" => SupportedOption::BottomDamping,
         "water.current" => SupportedOption::Currents,
-        _ => SupportedOption::FrictionCoefficient,
+        "water.seabed.friction_axial" => separate(SupportedOption::AxialFriction),
+        _ => separate(SupportedOption::TransverseFriction),
     }
 }
 
@@ -234,7 +259,7 @@ pub(super) fn deck_water(
             for ((key, in_deck), (_, in_scenario)) in deck_keys.given().iter().zip(added.given()) {
                 if *in_deck && in_scenario {
                     let (name, line) =
-                        option_at(deck, deck_option_of(key)).expect("the deck sets it");
+                        option_at(deck, deck_option_of(key, deck)).expect("the deck sets it");
                     return Err(ctx.err(
                         key,
                         format!(

@@ -34,7 +34,7 @@ fn an_unknown_option_is_refused_naming_its_line() {
 fn options_that_change_the_physics_are_refused_by_name() {
     for (row, words) in [
         ("bathy.txt SeafloorFile", "bathymetry"),
-        ("0.3 mu_kT", "FrictionCoefficient"),
+        ("1 WaterKin", "MoorDyn-F water kinematics"),
     ] {
         let text = with("0.001 dtM", &format!("0.001 dtM\n{row}"));
         let e = error(&text);
@@ -115,4 +115,11 @@ fn a_moordyn_time_scheme_is_accepted_and_an_unknown_one_refused() {
             "{e}"
         );
     }
+}
+
+#[test]
+fn moordyn_fs_separate_friction_coefficients_are_read() {
+    let deck = parse(&with("0.001 dtM", "0.001 dtM\n0.3 mu_kT\n0.6 mu_kA")).unwrap();
+    assert_eq!(deck.option(SupportedOption::TransverseFriction), Some(0.3));
+    assert_eq!(deck.option(SupportedOption::AxialFriction), Some(0.6));
 }
