@@ -219,23 +219,25 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
         );
     }
-    if let Some(out) = sc
-        .moordyn_out
-        .as_ref()
-        .filter(|_| sc.output_files.writes("moordyn.out"))
-    {
-        line(
-            "moordyn files",
-            format!(
-                "{}, as MoorDyn writes them (docs/interface.md, \"Results of a system\")",
-                out.names().join(", ")
-            ),
-        );
+    if let Some(words) = moordyn_files_words(sc) {
+        line("moordyn files", words);
     }
     for n in &sc.notes {
         let _ = writeln!(r, "note: {n}");
     }
     Ok(r)
+}
+
+/// The MoorDyn files a run of `sc` writes, if any.
+fn moordyn_files_words(sc: &SystemScenario) -> Option<String> {
+    let out = sc
+        .moordyn_out
+        .as_ref()
+        .filter(|_| sc.output_files.writes("moordyn.out"))?;
+    Some(format!(
+        "{}, as MoorDyn writes them (docs/interface.md, \"Results of a system\")",
+        out.names().join(", ")
+    ))
 }
 
 /// One line per point: what holds it (a coupled point's motion, a free
