@@ -6,6 +6,15 @@ use super::ScenarioError;
 
 pub use crate::echo::{clip, MAX_ECHO};
 
+/// A word of a whitespace table at line `at` as a finite number, or the
+/// message naming the line and the word.
+pub(super) fn finite_word(word: &str, at: usize) -> Result<f64, String> {
+    word.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("line {at}: \"{}\" is not a finite number", clip(word, 60)))
+}
+
 /// A TOML value in a message: its type and (clipped) value.
 pub(super) fn describe_value(v: &toml::Value) -> String {
     match v {

@@ -33,17 +33,7 @@ fn lines_of(text: &str) -> Vec<(usize, Vec<&str>)> {
         .collect()
 }
 
-fn number(word: &str, at: usize) -> Result<f64, String> {
-    word.parse::<f64>()
-        .ok()
-        .filter(|v| v.is_finite())
-        .ok_or_else(|| {
-            format!(
-                "line {at}: \"{}\" is not a finite number",
-                super::clip(word, 60)
-            )
-        })
-}
+use super::messages::finite_word as number;
 
 /// An axis's values by rising order: rising as given, or falling and
 /// then reversed (with `reversed` true). Refused naming the line.

@@ -205,17 +205,7 @@ pub(super) fn table_rows(
         }
         let values = words
             .iter()
-            .map(|w| {
-                w.parse::<f64>()
-                    .ok()
-                    .filter(|x| x.is_finite())
-                    .ok_or_else(|| {
-                        format!(
-                            "line {at}: \"{}\" is not a finite number",
-                            super::clip(w, 60)
-                        )
-                    })
-            })
+            .map(|w| super::messages::finite_word(w, at))
             .collect::<Result<Vec<f64>, String>>()?;
         rows.push((at, values));
     }

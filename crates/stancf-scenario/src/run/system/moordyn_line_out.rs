@@ -24,6 +24,20 @@ use std::io::Write;
 
 use crate::moordyn::WRITTEN_LINE_FLAGS as WRITTEN_FLAGS;
 
+/// A written flag's columns: per node (else per segment), the suffixes
+/// of their names (`Node<i>px`, `Seg<j>Te`) and their unit, as MoorDyn's
+/// `Line::openoutput` writes them.
+fn columns(flag: char) -> (bool, &'static [&'static str], &'static str) {
+    match flag {
+        'p' => (true, &["px", "py", "pz"], "(m)"),
+        'K' => (true, &["Ku"], "(1/m)"),
+        'v' => (true, &["vx", "vy", "vz"], "(m/s)"),
+        't' => (false, &["Te"], "(N)"),
+        's' => (false, &["St"], "(-)"),
+        _ => (true, &["bx", "by", "bz"], "(N)"),
+    }
+}
+
 /// One line's file.
 pub(super) struct LineOut {
     file: AtomicFile,
@@ -53,14 +67,7 @@ impl LineOut {
         let w = file.writer();
         write!(w, "{:>TIME_WIDTH$}", "Time")?;
         for &f in &flags {
-            let (per_node, suffixes): (bool, &[&str]) = match f {
-                'p' => (true, &["px", "py", "pz"]),
-                'K' => (true, &["Ku"]),
-                'v' => (true, &["vx", "vy", "vz"]),
-                't' => (false, &["Te"]),
-                's' => (false, &["St"]),
-                _ => (true, &["bx", "by", "bz"]),
-            };
+            let (per_node, suffixes, _) = columns(f);
             if per_node {
                 for i in 0..nodes {
                     for s in suffixes {
@@ -77,14 +84,8 @@ impl LineOut {
         if units {
             write!(w, "{:>TIME_WIDTH$}", "(s)")?;
             for &f in &flags {
-                let (unit, count) = match f {
-                    'p' => ("(m)", 3 * nodes),
-                    'K' => ("(1/m)", nodes),
-                    'v' => ("(m/s)", 3 * nodes),
-                    't' => ("(N)", segments),
-                    's' => ("(-)", segments),
-                    _ => ("(N)", 3 * nodes),
-                };
+                let (per_node, suffixes, unit) = columns(f);
+                let count = suffixes.len() * if per_node { nodes } else { segments };
                 for _ in 0..count {
                     write!(w, "{unit:>WIDTH$}")?;
                 }
@@ -113,6 +114,11 @@ impl LineOut {
         write_time(w, t)?;
         let mut value = |v: f64| write_value(w, v);
         let nodes = model.nodes();
+        // Three samples per element (its ends and its middle), taken once
+        // for both `t` and `s`.
+        if self.flags.iter().any(|f| matches!(f, 't' | 's')) {
+            stress_samples(model, state, 3, samples);
+        }
         for &f in &self.flags {
             match f {
                 'p' | 'v' => {
@@ -130,16 +136,14 @@ impl LineOut {
                     }
                 }
                 't' | 's' => {
-                    // Three samples per element: its ends and its middle.
-                    stress_samples(model, state, 3, samples);
-                    let e = model.material.youngs_modulus;
+                    // EA eps, or eps, at each element's middle.
+                    let per_stress = if f == 't' {
+                        model.material.area
+                    } else {
+                        1.0 / model.material.youngs_modulus
+                    };
                     for mid in samples.iter().skip(1).step_by(3) {
-                        let strain = mid.axial_stress / e;
-                        value(if f == 't' {
-                            mid.axial_stress * model.material.area
-                        } else {
-                            strain
-                        })?;
+                        value(mid.axial_stress * per_stress)?;
                     }
                 }
                 _ => {
