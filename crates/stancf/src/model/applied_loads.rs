@@ -100,14 +100,17 @@ pub(super) fn seabed(loads: &[Load]) -> Result<Option<crate::water::SeabedContac
             ));
         }
         let bed = &c.seabed;
-        check_vector(&format!("{k}.point"), &bed.point)?;
-        check_vector(&format!("{k}.normal"), &bed.normal)?;
-        let norm = crate::vec3::dot(bed.normal, bed.normal).sqrt();
-        if (norm - 1.0).abs() > 1e-12 {
-            return Err(ModelError::invalid(
-                format!("{k}.normal"),
-                format!("must be a unit vector, has length {norm}"),
-            ));
+        // A grid was checked when it was built (`Bathymetry::new`).
+        if let crate::water::BedSurface::Plane { point, normal } = &bed.surface {
+            check_vector(&format!("{k}.point"), point)?;
+            check_vector(&format!("{k}.normal"), normal)?;
+            let norm = crate::vec3::dot(*normal, *normal).sqrt();
+            if (norm - 1.0).abs() > 1e-12 {
+                return Err(ModelError::invalid(
+                    format!("{k}.normal"),
+                    format!("must be a unit vector, has length {norm}"),
+                ));
+            }
         }
         check_positive(&format!("{k}.diameter"), c.diameter)?;
         check_positive(&format!("{k}.stiffness"), bed.stiffness)?;
@@ -124,7 +127,7 @@ pub(super) fn seabed(loads: &[Load]) -> Result<Option<crate::water::SeabedContac
                 ));
             }
         }
-        found = Some(*c);
+        found = Some(c.clone());
     }
     Ok(found)
 }

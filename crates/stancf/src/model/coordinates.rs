@@ -63,7 +63,10 @@ impl Model {
             Load::PointForce { force, .. } => force[2] == 0.0,
             Load::EndMoment { moment, .. } => moment[0] == 0.0 && moment[1] == 0.0,
             Load::AirDrag(d) => d.fluid_velocity[2] == 0.0,
-            Load::Seabed(c) => c.seabed.normal[2] == 0.0,
+            Load::Seabed(c) => matches!(
+                c.seabed.surface,
+                crate::water::BedSurface::Plane { normal, .. } if normal[2] == 0.0
+            ),
             // Buoyancy acts along z, the plane's normal.
             Load::Water(_) => false,
         });

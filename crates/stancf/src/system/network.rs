@@ -266,7 +266,7 @@ fn bed_reaction(system: &System, p: usize, at: [f64; 3]) -> [f64; 3] {
         let depth = bed.seabed.penetration(&at);
         if depth > 0.0 {
             let k = bed.seabed.stiffness * bed.diameter * model.cable.length;
-            let f = crate::vec3::scale(k * depth, bed.seabed.normal);
+            let f = crate::vec3::scale(k * depth, bed.seabed.normal_at(&at));
             if crate::vec3::norm(f) > crate::vec3::norm(push) {
                 push = f;
             }

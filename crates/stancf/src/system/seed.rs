@@ -253,7 +253,8 @@ fn anchored_on_bed(model: &Model, a: [f64; 3], b: [f64; 3]) -> Option<AnchoredOn
     let bed = &model.seabed.as_ref()?.seabed;
     let g = norm(model.gravity);
     let down: [f64; 3] = model.gravity.map(|c| c / g);
-    if bed.normal != [0.0, 0.0, 1.0] || down != [0.0, 0.0, -1.0] {
+    let bed_height = bed.horizontal_height()?;
+    if down != [0.0, 0.0, -1.0] {
         return None;
     }
     let length = model.cable.length;
@@ -262,7 +263,7 @@ fn anchored_on_bed(model: &Model, a: [f64; 3], b: [f64; 3]) -> Option<AnchoredOn
     } else {
         (b, a, true)
     };
-    if (low[2] - bed.point[2]).abs() > 1e-6 * length {
+    if (low[2] - bed_height).abs() > 1e-6 * length {
         return None;
     }
     let span = ((high[0] - low[0]).powi(2) + (high[1] - low[1]).powi(2)).sqrt();

@@ -107,8 +107,8 @@ pub(super) fn pulled_targets(model: &Model, e: &[f64]) -> Option<Vec<f64>> {
         (0..nodes).rev().collect()
     };
     let away = if anchor == 0 { 1.0 } else { -1.0 };
-    let n = bed.normal;
     let along_bed = |j: usize| -> Option<[f64; 3]> {
+        let n = bed.normal_at(&position(j));
         let rx = tangent(j);
         let rn = dot(n, rx);
         let p: [f64; 3] = std::array::from_fn(|c| away * (rx[c] - rn * n[c]));

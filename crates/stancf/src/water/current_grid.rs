@@ -25,6 +25,7 @@
 //! the exact derivatives of the field the loads see, with kinks at the
 //! grid's planes. At a node the cell above it is used.
 
+use super::grid_axis::{check_axis, AxisCell};
 use crate::error::ModelError;
 
 /// A current on a rectilinear grid in x, y, z and t (W9a).
@@ -49,41 +50,6 @@ pub struct CurrentSample {
     pub acceleration_gradient: [[f64; 3]; 3],
 }
 
-/// Where a coordinate falls along one axis: the two nodes of its cell,
-/// the weights of each and their derivatives along the axis.
-#[derive(Clone, Copy, Debug)]
-struct AxisCell {
-    nodes: [usize; 2],
-    weights: [f64; 2],
-    slopes: [f64; 2],
-}
-
-impl AxisCell {
-    fn locate(axis: &[f64], c: f64) -> AxisCell {
-        let n = axis.len();
-        let held = |i: usize| AxisCell {
-            nodes: [i, i],
-            weights: [1.0, 0.0],
-            slopes: [0.0, 0.0],
-        };
-        if n == 1 || c <= axis[0] {
-            return held(0);
-        }
-        if c >= axis[n - 1] {
-            return held(n - 1);
-        }
-        // axis[i] <= c < axis[i + 1]: the cell above a node.
-        let i = axis.partition_point(|&a| a <= c) - 1;
-        let span = axis[i + 1] - axis[i];
-        let f = (c - axis[i]) / span;
-        AxisCell {
-            nodes: [i, i + 1],
-            weights: [1.0 - f, f],
-            slopes: [-1.0 / span, 1.0 / span],
-        }
-    }
-}
-
 const AXIS_NAMES: [&str; 4] = ["x", "y", "z", "t"];
 
 impl CurrentGrid {
@@ -94,29 +60,7 @@ impl CurrentGrid {
     /// (`velocity[12]`), a count of velocities other than the nodes'.
     pub fn new(axes: [Vec<f64>; 4], velocity: Vec<[f64; 3]>) -> Result<Self, ModelError> {
         for (axis, name) in axes.iter().zip(AXIS_NAMES) {
-            if axis.is_empty() {
-                return Err(ModelError::invalid(
-                    format!("axes.{name}"),
-                    "an axis needs at least one value",
-                ));
-            }
-            for (i, v) in axis.iter().enumerate() {
-                if !v.is_finite() {
-                    return Err(ModelError::invalid(
-                        format!("axes.{name}[{i}]"),
-                        "must be finite",
-                    ));
-                }
-                if i > 0 && *v <= axis[i - 1] {
-                    return Err(ModelError::invalid(
-                        format!("axes.{name}[{i}]"),
-                        format!(
-                            "the axis must be strictly increasing: {v} after {}",
-                            axis[i - 1]
-                        ),
-                    ));
-                }
-            }
+            check_axis(axis, &format!("axes.{name}"))?;
         }
         let nodes: usize = axes.iter().map(Vec::len).product();
         if velocity.len() != nodes {

@@ -4,8 +4,10 @@
 //!
 //! z is up, the still water surface is z = 0 and the seabed z = -depth.
 pub mod added_mass;
+pub mod bathymetry;
 pub mod current;
 pub mod current_grid;
+mod grid_axis;
 pub mod hydro;
 pub mod kinematics;
 pub mod point;
@@ -16,7 +18,8 @@ pub mod submerged;
 pub mod waves;
 
 pub use added_mass::{AddedMass, EntrainedAtPoint, EntrainedFirst};
+pub use bathymetry::Bathymetry;
 pub use hydro::{LineInWater, Morison, Water};
 pub use point::{PointForce, PointInWater};
-pub use seabed::{ForceAtPoint, Seabed, SeabedContact};
+pub use seabed::{BedSurface, ForceAtPoint, Seabed, SeabedContact};
 pub use submerged::SubmergedFraction;

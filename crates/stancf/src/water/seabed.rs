@@ -4,8 +4,11 @@
 //! transverse coefficients, regularized near zero velocity.
 //!
 //! The seabed is a plane through `point` with upward unit normal `n`
-//! (flat: n = e_z, point = (0, 0, -depth)). At a point r of the line's
-//! axis with velocity r_dot and tangent r_x, per unit unstretched length:
+//! (flat: n = e_z, point = (0, 0, -depth)), or a bathymetry grid
+//! ([`super::bathymetry`]), whose local tangent plane gives g and n at
+//! each point with their derivatives (W40b)-(W40c). At a point r of the
+//! line's axis with velocity r_dot and tangent r_x, per unit unstretched
+//! length:
 //!
 //! ```text
 //!   g = n . (p0 - r)                     penetration (> 0 in the bed)    (W40)
@@ -41,8 +44,21 @@
 //!   df/dr_x   = -N_e sum_{e = a, b} mu_e (phi'_e e r_dot^T + phi_e I) De,
 //!               Da = (I - a a^T) P_n / |P_n r_x|,  Db = [n]x Da          (W46)
 //! ```
+//!
+//! On a bathymetry, g and n depend on r through (W40c): in (W45) the
+//! normal force's -n (dg/dr = -n on a plane) becomes dg/dr, the normal's
+//! turn adds N dn/dr and -d c S n (r_dot^T dn/dr), and friction's
+//! directions turn with n:
+//!
+//! ```text
+//!   da/dr = (I - a a^T) / |P_n r_x| (-(n . r_x) I - n r_x^T) dn/dr,
+//!   db/dr = [n]x da/dr - [a]x dn/dr,
+//!   df_f/dr += -N_e sum_e mu_e (phi'_e e (r_dot^T de/dr) + phi_e de/dr)  (W46a)
+//! ```
 
+use super::bathymetry::{Bathymetry, BedPoint};
 use crate::vec3::{cross, dot, mat3_mul};
+use std::sync::Arc;
 
 /// Force per unit length at a point and its derivatives with respect to
 /// the position r, the tangent r_x and the velocity r_dot (rows: force
@@ -55,14 +71,22 @@ pub struct ForceAtPoint {
     pub d_rdot: [[f64; 3]; 3],
 }
 
-/// A plane seabed with a penalty contact and friction (MoorDyn's kBot,
-/// cBot and friction coefficients).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The seabed's surface: a plane, or a bathymetry grid (W40a).
+#[derive(Clone, Debug, PartialEq)]
+pub enum BedSurface {
+    /// The plane through `point` with upward unit normal `normal` (flat
+    /// bed: (0, 0, -depth) and (0, 0, 1)).
+    Plane { point: [f64; 3], normal: [f64; 3] },
+    /// A bed of varying height, contact on its local tangent plane
+    /// (W40b).
+    Grid(Arc<Bathymetry>),
+}
+
+/// A seabed with a penalty contact and friction (MoorDyn's kBot, cBot and
+/// friction coefficients).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Seabed {
-    /// A point of the plane (flat bed: (0, 0, -depth)).
-    pub point: [f64; 3],
-    /// Upward unit normal (flat bed: (0, 0, 1)).
-    pub normal: [f64; 3],
+    pub surface: BedSurface,
     /// kBot (Pa/m): normal force per unit length per metre of penetration
     /// per metre of diameter.
     pub stiffness: f64,
@@ -79,8 +103,10 @@ impl Seabed {
     /// A flat seabed at z = -depth.
     pub fn flat(depth: f64, stiffness: f64, damping: f64) -> Self {
         Seabed {
-            point: [0.0, 0.0, -depth],
-            normal: [0.0, 0.0, 1.0],
+            surface: BedSurface::Plane {
+                point: [0.0, 0.0, -depth],
+                normal: [0.0, 0.0, 1.0],
+            },
             stiffness,
             damping,
             friction_axial: 0.0,
@@ -94,8 +120,18 @@ impl Seabed {
     pub fn plane(point: [f64; 3], normal: [f64; 3], stiffness: f64, damping: f64) -> Self {
         let length = dot(normal, normal).sqrt();
         Seabed {
-            point,
-            normal: normal.map(|c| c / length),
+            surface: BedSurface::Plane {
+                point,
+                normal: normal.map(|c| c / length),
+            },
+            ..Seabed::flat(0.0, stiffness, damping)
+        }
+    }
+
+    /// A bed of varying height (W40a)-(W40c).
+    pub fn on_grid(bathymetry: Arc<Bathymetry>, stiffness: f64, damping: f64) -> Self {
+        Seabed {
+            surface: BedSurface::Grid(bathymetry),
             ..Seabed::flat(0.0, stiffness, damping)
         }
     }
@@ -113,19 +149,51 @@ impl Seabed {
         self.friction_axial != 0.0 || self.friction_transverse != 0.0
     }
 
-    /// The penetration g of (W40) at r.
+    /// The contact geometry at r: (W40) on a plane, (W40b)-(W40c) on a
+    /// grid.
+    pub fn contact_point(&self, r: &[f64; 3]) -> BedPoint {
+        match &self.surface {
+            BedSurface::Plane { normal, .. } => BedPoint {
+                penetration: self.penetration(r),
+                normal: *normal,
+                d_penetration: normal.map(|c| -c),
+                d_normal: [[0.0; 3]; 3],
+            },
+            BedSurface::Grid(b) => b.contact_point(r),
+        }
+    }
+
+    /// The penetration g of (W40) (or (W40b)) at r.
     pub fn penetration(&self, r: &[f64; 3]) -> f64 {
-        let d = [
-            self.point[0] - r[0],
-            self.point[1] - r[1],
-            self.point[2] - r[2],
-        ];
-        dot(self.normal, d)
+        match &self.surface {
+            BedSurface::Plane { point, normal } => {
+                let d = [point[0] - r[0], point[1] - r[1], point[2] - r[2]];
+                dot(*normal, d)
+            }
+            BedSurface::Grid(b) => b.contact_point(r).penetration,
+        }
+    }
+
+    /// The bed's upward unit normal at (above) r.
+    pub fn normal_at(&self, r: &[f64; 3]) -> [f64; 3] {
+        match &self.surface {
+            BedSurface::Plane { normal, .. } => *normal,
+            BedSurface::Grid(b) => b.contact_point(r).normal,
+        }
+    }
+
+    /// The height z of a horizontal plane bed; None for a sloped plane or
+    /// a grid.
+    pub fn horizontal_height(&self) -> Option<f64> {
+        match &self.surface {
+            BedSurface::Plane { point, normal } if *normal == [0.0, 0.0, 1.0] => Some(point[2]),
+            _ => None,
+        }
     }
 }
 
 /// The seabed as one line of diameter `diameter` touches it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SeabedContact {
     pub seabed: Seabed,
     /// The line's hydrodynamic diameter d (m).
@@ -231,9 +299,10 @@ impl SeabedContact {
         derivatives: bool,
     ) -> ForceAtPoint {
         let bed = &self.seabed;
-        let n = bed.normal;
+        let at = bed.contact_point(r);
+        let n = at.normal;
         let d = self.diameter;
-        let (p, s, ds) = smoothed_penetration(bed.penetration(r), self.ramp_width());
+        let (p, s, ds) = smoothed_penetration(at.penetration, self.ramp_width());
         let mut out = ForceAtPoint::default();
         if s == 0.0 {
             return out;
@@ -242,26 +311,42 @@ impl SeabedContact {
         let normal = d * (bed.stiffness * p - bed.damping * s * vn);
         out.force = n.map(|c| normal * c);
         if derivatives {
-            let nn = outer(&n, &n);
-            let stiffness = -d * (bed.stiffness * s - bed.damping * ds * vn);
-            add_scaled(&mut out.d_r, stiffness, &nn);
-            add_scaled(&mut out.d_rdot, -d * bed.damping * s, &nn);
+            // dN/dr = d (k S - c S' v_n) dg/dr - d c S r_dot^T dn/dr and
+            // df/dr = n dN/dr + N dn/dr ((W45), (W46a)).
+            let by_depth = d * (bed.stiffness * s - bed.damping * ds * vn);
+            let dn = &at.d_normal;
+            let d_normal_force: [f64; 3] = std::array::from_fn(|j| {
+                let turn: f64 = (0..3).map(|i| rdot[i] * dn[i][j]).sum();
+                by_depth * at.d_penetration[j] - d * bed.damping * s * turn
+            });
+            add_scaled(&mut out.d_r, 1.0, &outer(&n, &d_normal_force));
+            add_scaled(&mut out.d_r, normal, dn);
+            add_scaled(&mut out.d_rdot, -d * bed.damping * s, &outer(&n, &n));
         }
         if bed.has_friction() {
             let normal = (d * bed.stiffness * p, d * bed.stiffness * s);
             let slide = (slide, slip);
-            self.add_friction(normal, rx, slide, derivatives.then_some(sliding), &mut out);
+            self.add_friction(
+                &at,
+                normal,
+                rx,
+                slide,
+                derivatives.then_some(sliding),
+                &mut out,
+            );
         }
         out
     }
 
     /// Adds the friction (W43)-(W44) on the sliding `rdot` (a velocity,
     /// or in statics a displacement, regularized below `vs`) with elastic
-    /// normal force `ne` (and its derivative along -n, `dne`) and, given
-    /// what the sliding is (`derivatives`), its derivatives (W45)-(W46),
-    /// the sliding's into d_r or d_rdot.
+    /// normal force `ne` (and its derivative in the penetration, `dne`)
+    /// at the bed's point `at` and, given what the sliding is
+    /// (`derivatives`), its derivatives (W45)-(W46a), the sliding's into
+    /// d_r or d_rdot.
     fn add_friction(
         &self,
+        at: &BedPoint,
         (ne, dne): (f64, f64),
         rx: &[f64; 3],
         (rdot, vs): (&[f64; 3], f64),
@@ -269,7 +354,7 @@ impl SeabedContact {
         out: &mut ForceAtPoint,
     ) {
         let bed = &self.seabed;
-        let n = bed.normal;
+        let n = at.normal;
         // P_n r_x: the tangent's part along the bed.
         let rn = dot(n, rx);
         let pt = [rx[0] - rn * n[0], rx[1] - rn * n[1], rx[2] - rn * n[2]];
@@ -279,19 +364,7 @@ impl SeabedContact {
         }
         let a = pt.map(|c| c / len);
         let b = cross(n, a);
-        // Da = (I - a a^T) P_n / |P_n r_x|, Db = [n]x Da: only for the
-        // derivatives.
-        let directions = derivatives.map(|sliding| {
-            let pn: [[f64; 3]; 3] = std::array::from_fn(|i| {
-                std::array::from_fn(|j| f64::from(u8::from(i == j)) - n[i] * n[j])
-            });
-            let ia: [[f64; 3]; 3] = std::array::from_fn(|i| {
-                std::array::from_fn(|j| (f64::from(u8::from(i == j)) - a[i] * a[j]) / len)
-            });
-            let da = mat3_mul(&ia, &pn);
-            let nx = [[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]];
-            (sliding, da, mat3_mul(&nx, &da))
-        });
+        let directions = derivatives.map(|sliding| (sliding, Turns::of(at, a, rx, len)));
         let mut u = [0.0; 3];
         for (e, mu, axial) in [
             (a, bed.friction_axial, true),
@@ -305,200 +378,86 @@ impl SeabedContact {
                 u[i] += mu * phi * e[i];
                 out.force[i] -= ne * mu * phi * e[i];
             }
-            let Some((sliding, da, db)) = &directions else {
+            let Some((sliding, turns)) = &directions else {
                 continue;
             };
-            let de = if axial { da } else { db };
             let by_sliding = match sliding {
                 Sliding::Position => &mut out.d_r,
                 Sliding::Velocity => &mut out.d_rdot,
             };
             add_scaled(by_sliding, -ne * mu * dphi, &outer(&e, &e));
-            // d(phi e)/dr_x = phi' e (r_dot^T De) + phi De.
-            let rdot_de: [f64; 3] =
-                std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
-            add_scaled(&mut out.d_rx, -ne * mu * dphi, &outer(&e, &rdot_de));
-            add_scaled(&mut out.d_rx, -ne * mu * phi, de);
+            // d(phi e)/dq = phi' e (r_dot^T De) + phi De, for q = r_x and,
+            // on a bathymetry, q = r.
+            let (de_rx, de_r) = turns.of_direction(axial);
+            for (target, de) in [(&mut out.d_rx, Some(de_rx)), (&mut out.d_r, de_r)] {
+                let Some(de) = de else { continue };
+                let rdot_de: [f64; 3] =
+                    std::array::from_fn(|j| (0..3).map(|k| rdot[k] * de[k][j]).sum());
+                add_scaled(target, -ne * mu * dphi, &outer(&e, &rdot_de));
+                add_scaled(target, -ne * mu * phi, de);
+            }
         }
         if directions.is_some() {
-            // -u (dN_e/dr)^T with dN_e/dr = -dne n.
-            add_scaled(&mut out.d_r, dne, &outer(&u, &n));
+            // -u (dN_e/dr)^T with dN_e/dr = dne dg/dr.
+            add_scaled(&mut out.d_r, -dne, &outer(&u, &at.d_penetration));
         }
     }
+}
+
+/// How friction's directions a and b turn: with the tangent r_x (W46),
+/// and on a bathymetry with the position r through the normal (W46a).
+struct Turns {
+    da_rx: [[f64; 3]; 3],
+    db_rx: [[f64; 3]; 3],
+    /// (da/dr, db/dr), None on a plane.
+    by_position: Option<([[f64; 3]; 3], [[f64; 3]; 3])>,
+}
+
+impl Turns {
+    /// At the bed's point `at`, direction a = P_n r_x / `len`.
+    fn of(at: &BedPoint, a: [f64; 3], rx: &[f64; 3], len: f64) -> Turns {
+        let n = at.normal;
+        let identity = |i: usize, j: usize| f64::from(u8::from(i == j));
+        let pn: [[f64; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| identity(i, j) - n[i] * n[j]));
+        let ia: [[f64; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| (identity(i, j) - a[i] * a[j]) / len));
+        let nx = skew(n);
+        let da_rx = mat3_mul(&ia, &pn);
+        let db_rx = mat3_mul(&nx, &da_rx);
+        let curved = at.d_normal.iter().flatten().any(|c| *c != 0.0);
+        let by_position = curved.then(|| {
+            // d(P_n r_x)/dn = -(n . r_x) I - n r_x^T.
+            let rn = dot(n, *rx);
+            let dw_dn: [[f64; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|k| -rn * identity(i, k) - n[i] * rx[k])
+            });
+            let da_r = mat3_mul(&ia, &mat3_mul(&dw_dn, &at.d_normal));
+            let mut db_r = mat3_mul(&nx, &da_r);
+            add_scaled(&mut db_r, -1.0, &mat3_mul(&skew(a), &at.d_normal));
+            (da_r, db_r)
+        });
+        Turns {
+            da_rx,
+            db_rx,
+            by_position,
+        }
+    }
+
+    /// (de/dr_x, de/dr) of direction a (`axial`) or b.
+    fn of_direction(&self, axial: bool) -> (&[[f64; 3]; 3], Option<&[[f64; 3]; 3]>) {
+        match (axial, &self.by_position) {
+            (true, p) => (&self.da_rx, p.as_ref().map(|(da, _)| da)),
+            (false, p) => (&self.db_rx, p.as_ref().map(|(_, db)| db)),
+        }
+    }
+}
+
+/// [v]x, the matrix of v x.
+fn skew(v: [f64; 3]) -> [[f64; 3]; 3] {
+    [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]]
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn bed() -> SeabedContact {
-        SeabedContact {
-            seabed: Seabed::plane([0.3, 0.0, -50.0], [0.1, -0.2, 1.0], 3e6, 3e5)
-                .with_friction(0.6, 1.0, 0.05),
-            diameter: 0.08,
-        }
-    }
-
-    /// Central differences of `force` in argument `which` (r, r_x, r_dot)
-    /// against the analytic derivative, to 1e-6 of the largest derivative
-    /// (step h: round-off eps |f| / h and truncation h^2 f''' are both
-    /// below 1e-9 of it for these magnitudes; P is quadratic in the ramp).
-    fn check(c: &SeabedContact, args: [[f64; 3]; 3], which: usize, h: f64) {
-        let f0 = c.force(&args[0], &args[1], &args[2]);
-        let analytic = [f0.d_r, f0.d_rx, f0.d_rdot][which];
-        let scale = [f0.d_r, f0.d_rx, f0.d_rdot]
-            .iter()
-            .flatten()
-            .flatten()
-            .fold(0.0f64, |m, x| m.max(x.abs()));
-        for j in 0..3 {
-            let (mut plus, mut minus) = (args, args);
-            plus[which][j] += h;
-            minus[which][j] -= h;
-            let fp = c.force(&plus[0], &plus[1], &plus[2]).force;
-            let fm = c.force(&minus[0], &minus[1], &minus[2]).force;
-            for i in 0..3 {
-                let fd = (fp[i] - fm[i]) / (2.0 * h);
-                assert!(
-                    (fd - analytic[i][j]).abs() <= 1e-6 * scale + 1e-9,
-                    "arg {which} d f{i}/d x{j}: fd {fd} analytic {}",
-                    analytic[i][j]
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn the_contact_force_derivatives_match_finite_differences() {
-        let c = bed();
-        let n = c.seabed.normal;
-        let rx = [0.8, 0.5, -0.1];
-        let v = [0.03, -0.02, -0.01];
-        // Deep in the bed, in the ramp, and clear of it.
-        for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
-            let along = [0.4, 0.9, 0.0];
-            let along_n = dot(along, n);
-            let r: [f64; 3] = std::array::from_fn(|i| {
-                c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
-            });
-            assert!((c.seabed.penetration(&r) - below).abs() < 1e-12);
-            let h = if below.abs() < c.ramp_width() {
-                1e-8
-            } else {
-                1e-6
-            };
-            for which in 0..3 {
-                check(&c, [r, rx, v], which, h);
-            }
-        }
-    }
-
-    /// A residual's contact force (no derivatives) is the full one's to
-    /// the bit, with friction along and across the line, in and past the
-    /// ramp, sliding slower and faster than the slip velocity; its
-    /// derivatives are zero.
-    #[test]
-    fn the_force_without_derivatives_is_the_full_forces_to_the_bit() {
-        let c = bed();
-        let n = c.seabed.normal;
-        for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
-            for v in [[0.03, -0.02, -0.01], [2.0, 1.5, -0.3], [-1e-4, 3e-4, 0.0]] {
-                let r: [f64; 3] = std::array::from_fn(|i| c.seabed.point[i] - below * n[i]);
-                let rx = [0.8, 0.5, -0.1];
-                let full = c.force(&r, &rx, &v);
-                let lean = c.force_at(&r, &rx, &v, false);
-                assert_eq!(lean.force, full.force, "below {below}, v {v:?}");
-                assert_eq!((lean.d_r, lean.d_rx, lean.d_rdot), Default::default());
-            }
-        }
-    }
-
-    #[test]
-    fn a_line_resting_in_the_bed_feels_its_weight_back_without_friction_at_rest() {
-        let c = SeabedContact {
-            seabed: Seabed::flat(100.0, 3e6, 3e5).with_friction(0.5, 1.0, 1e-3),
-            diameter: 0.1,
-        };
-        let g = 2e-3;
-        let f = c.force(&[5.0, 2.0, -100.0 - g], &[1.0, 0.0, 0.0], &[0.0; 3]);
-        let expected = 3e6 * 0.1 * (g - 0.5 * c.ramp_width());
-        // The penetration 100 + g - 100 is exact to eps 100 / g = 1e-11.
-        assert!((f.force[2] - expected).abs() <= 1e-10 * expected);
-        assert_eq!((f.force[0], f.force[1]), (0.0, 0.0));
-    }
-
-    #[test]
-    fn sliding_friction_is_coulombs_well_above_the_slip_velocity() {
-        let c = SeabedContact {
-            seabed: Seabed::flat(100.0, 3e6, 0.0).with_friction(0.5, 1.0, 1e-3),
-            diameter: 0.1,
-        };
-        let r = [0.0, 0.0, -100.01];
-        let ne = 3e6 * 0.1 * (0.01 - 0.5 * c.ramp_width());
-        // Axial (along x) and transverse (along y) sliding at 1 m/s.
-        let fa = c.force(&r, &[2.0, 0.0, 0.3], &[1.0, 0.0, 0.0]).force;
-        let ft = c.force(&r, &[2.0, 0.0, 0.3], &[0.0, -1.0, 0.0]).force;
-        let coulomb = |mu: f64| mu * ne / (1.0f64 + 1e-6).sqrt();
-        assert!((fa[0] + coulomb(0.5)).abs() <= 1e-12 * ne);
-        assert!((ft[1] - coulomb(1.0)).abs() <= 1e-12 * ne);
-    }
-
-    /// Static friction (W48): the slide r - r_0 stands where the velocity
-    /// was, so the derivative in r of the force with r_0 held is the
-    /// velocity-free derivative plus the sliding's; against central
-    /// differences as above, in the bed and in the ramp.
-    #[test]
-    fn the_static_contact_force_derivatives_match_finite_differences() {
-        let c = bed();
-        let n = c.seabed.normal;
-        let rx = [0.8, 0.5, -0.1];
-        for below in [0.01, 0.3 * c.ramp_width()] {
-            let along = [0.4, 0.9, 0.0];
-            let along_n = dot(along, n);
-            let r: [f64; 3] = std::array::from_fn(|i| {
-                c.seabed.point[i] + along[i] - along_n * n[i] - below * n[i]
-            });
-            // Slid by a few u_s (where phi bends) from r_0.
-            let r0: [f64; 3] =
-                std::array::from_fn(|i| r[i] - [2.0, -1.0, 0.5][i] * c.static_slip());
-            let force = |r: &[f64; 3], rx: &[f64; 3]| {
-                c.static_force(r, rx, &std::array::from_fn(|i| r[i] - r0[i]))
-            };
-            let f0 = force(&r, &rx);
-            assert_eq!(f0.d_rdot, [[0.0; 3]; 3]);
-            let scale = [f0.d_r, f0.d_rx]
-                .iter()
-                .flatten()
-                .flatten()
-                .fold(0.0f64, |m, x| m.max(x.abs()));
-            // h = 1e-7: round-off eps |r| / h stays below 1e-7 at |r| ~ 50 m
-            // and truncation (h / u_s)^2 below 1e-5 across the slide's
-            // regularization (u_s = 8e-5 m).
-            let h = 1e-7;
-            for j in 0..3 {
-                for (which, analytic) in [(0, f0.d_r), (1, f0.d_rx)] {
-                    let (mut rp, mut rm, mut xp, mut xm) = (r, r, rx, rx);
-                    if which == 0 {
-                        rp[j] += h;
-                        rm[j] -= h;
-                    } else {
-                        xp[j] += h;
-                        xm[j] -= h;
-                    }
-                    let (fp, fm) = (force(&rp, &xp).force, force(&rm, &xm).force);
-                    for i in 0..3 {
-                        let fd = (fp[i] - fm[i]) / (2.0 * h);
-                        assert!(
-                            (fd - analytic[i][j]).abs() <= 1e-6 * scale,
-                            "arg {which} d f{i}/d x{j}: fd {fd} analytic {}",
-                            analytic[i][j]
-                        );
-                    }
-                }
-            }
-            // Slid far: Coulomb's friction against the slide, no damping.
-            let far = c.static_force(&r, &[1.0, 0.0, 0.0], &[1.0, 0.0, 0.0]);
-            assert!(far.force[0] < 0.0);
-        }
-    }
-}
+#[path = "seabed_tests.rs"]
+mod tests;

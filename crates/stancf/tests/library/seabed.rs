@@ -134,7 +134,7 @@ fn a_line_laid_on_a_flat_bed_sinks_in_by_its_weight_over_k_d() {
     };
     let w = 7800.0 * 1e-3 * 9.81;
     let cable = Cable::straight(20.0, 20, ElementType::Sac2).with_origin([0.0, 0.0, -depth]);
-    let model = cable_on(cable, material, contact, &[0, 20]);
+    let model = cable_on(cable, material, contact.clone(), &[0, 20]);
     let mut solver = StaticSolver::new(model, StaticSettings::default()).unwrap();
     solver.solve(|_, _| ControlFlow::Continue(())).unwrap();
     let m = solver.model();
@@ -232,7 +232,7 @@ fn the_seabed_s_nodal_forces_add_up_to_the_bed_s_push() {
     let cable = Cable::straight(20.0, 10, ElementType::Sac2)
         .with_origin([0.0, 0.0, -depth - g])
         .with_direction([0.6, 0.8, 0.0]);
-    let model = cable_on(cable, rope(), contact, &[]);
+    let model = cable_on(cable, rope(), contact.clone(), &[]);
     let state = model.initial_state();
     let per_metre = d * k * (g - 0.5 * contact.ramp_width());
     let forces = stancf::observe::seabed_nodal_forces(&model, &state);
