@@ -305,6 +305,31 @@ fn work_words(sc: &SystemScenario) -> String {
     )
 }
 
+/// The seabed's shape: its plane, or its grid and file.
+fn bed_shape(w: &Water) -> String {
+    let b = &w.seabed;
+    match &b.bathymetry {
+        None => format!(
+            "through z = {} m, slope [{}, {}]",
+            Sig(-w.depth),
+            Sig(b.slope[0]),
+            Sig(b.slope[1])
+        ),
+        Some(file) => {
+            let [xs, ys] = file.grid.axes();
+            let (lo, hi) = file.grid.height_range();
+            format!(
+                "a bathymetry of {} x {} nodes, z from {} to {} m, from {}",
+                xs.len(),
+                ys.len(),
+                Sig(lo),
+                Sig(hi),
+                file.source
+            )
+        }
+    }
+}
+
 /// The water as `check` reports it: depth, density and seabed; the
 /// current's rows and ramp; the waves, the JONSWAP sea and their ramp.
 fn water_words(w: &Water) -> Vec<(&'static str, String)> {
@@ -321,11 +346,9 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
         (
             "seabed",
             format!(
-                "through z = {} m, slope [{}, {}]; kBot {} Pa/m, cBot {} Pa s/m, friction {} \
-                 axial and {} transverse, regularized below {} m/s{}",
-                Sig(-w.depth),
-                Sig(b.slope[0]),
-                Sig(b.slope[1]),
+                "{}; kBot {} Pa/m, cBot {} Pa s/m, friction {} axial and {} transverse, \
+                 regularized below {} m/s{}",
+                bed_shape(w),
                 Sig(b.stiffness),
                 Sig(b.damping),
                 Sig(b.friction_axial),

@@ -50,7 +50,7 @@ pub fn check_geometry(
                 continue;
             }
             let [x, y, z] = pt.position;
-            let bed = -w.depth + w.seabed.slope[0] * x + w.seabed.slope[1] * y;
+            let bed = w.bed_height(x, y);
             if bed - z > bed_tolerance(w.depth) {
                 let depth_key = sc
                     .names

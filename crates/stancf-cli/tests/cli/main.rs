@@ -7,6 +7,7 @@ mod common;
 
 mod axial_damping;
 mod bad_input;
+mod bathymetry;
 mod bodies;
 mod bodies_in_waves;
 mod clamped_lines;

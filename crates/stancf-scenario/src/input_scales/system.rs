@@ -192,6 +192,13 @@ fn water_values(sc: &SystemScenario, w: &Water, values: &mut Vec<(String, f64)>)
         };
         values.push(("water.current".into(), fastest.max(deepest)));
     }
+    if let Some(bed) = &b.bathymetry {
+        let [xs, ys] = bed.grid.axes();
+        let farthest = largest(xs)
+            .max(largest(ys))
+            .max(largest(bed.grid.heights()));
+        values.push((n.option("water.seabed.file", Opt::SeafloorFile), farthest));
+    }
     keys
 }
 

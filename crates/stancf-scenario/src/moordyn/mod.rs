@@ -242,6 +242,17 @@ pub struct Output {
 
 impl Deck {
     /// The value of a supported option, if the deck sets it.
+    /// The text of an option whose value is a word or a path
+    /// (`SeafloorFile`), with its name as written and its line.
+    pub fn option_text(&self, which: SupportedOption) -> Option<(&str, &str, usize)> {
+        self.options.iter().find_map(|o| match (o.kind, &o.value) {
+            (OptionKind::Supported(s), OptionValue::Text(t)) if s == which => {
+                Some((t.as_str(), o.name.as_str(), o.line))
+            }
+            _ => None,
+        })
+    }
+
     pub fn option(&self, which: SupportedOption) -> Option<f64> {
         self.options.iter().find_map(|o| match (o.kind, &o.value) {
             (OptionKind::Supported(s), OptionValue::Number(v)) if s == which => Some(*v),

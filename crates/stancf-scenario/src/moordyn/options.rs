@@ -46,6 +46,10 @@ pub enum SupportedOption {
     TransverseFriction,
     /// `mu_kA` (MoorDyn-F): the same along a line.
     AxialFriction,
+    /// `SeafloorFile`: MoorDyn's 3-D seafloor, a grid of the bed's
+    /// heights in the file it names (the option's value is the file's
+    /// path, read by the scenario that takes the deck).
+    SeafloorFile,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
     /// MoorDyn ignores it.
@@ -72,6 +76,7 @@ impl SupportedOption {
             SupportedOption::TransverseFriction => "mu_kT",
             SupportedOption::AxialFriction => "mu_kA",
             SupportedOption::Courant => "CFL",
+            SupportedOption::SeafloorFile => "SeafloorFile",
         }
     }
 
@@ -172,7 +177,7 @@ fn classify(lower: &str) -> Option<Class> {
         )),
         "cfl" => s(S::Courant),
         "tscheme" => Some(Class::Scheme),
-        "seafloorfile" => Some(Class::Refused("bathymetry files are not supported")),
+        "seafloorfile" => s(S::SeafloorFile),
         "waterkin" => Some(Class::Refused(
             "MoorDyn-F water kinematics (waves, currents) are not supported",
         )),
@@ -241,6 +246,9 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
             Some(Class::Known(k)) => k,
         };
         let value = match (kind, number) {
+            (OptionKind::Supported(SupportedOption::SeafloorFile), _) => {
+                OptionValue::Text(text.to_string())
+            }
             (OptionKind::Supported(o), Some(v)) => supported_value(o, v, name, row.line)?,
             (OptionKind::Supported(_), None) => {
                 return Err(DeckError::at(

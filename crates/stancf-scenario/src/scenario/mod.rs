@@ -15,6 +15,7 @@ mod body_water;
 mod cable;
 mod constraints;
 mod context;
+mod deck_files;
 mod deck_mesh;
 mod host_environment;
 mod initial_velocity;
@@ -22,6 +23,7 @@ mod loads;
 mod messages;
 mod moordyn;
 mod moordyn_current_grids;
+mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_wave_frequencies;
 mod moordyn_wave_grids;
@@ -52,7 +54,7 @@ pub use system_model::EI_FACTOR;
 pub use system_parts::{
     LineType, MoorDynOutFile, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
 };
-pub use water::{Current, CurrentField, SeabedOptions, Water};
+pub use water::{Current, CurrentField, SeabedFile, SeabedOptions, Water};
 
 use context::Ctx;
 use raw::RawScenario;

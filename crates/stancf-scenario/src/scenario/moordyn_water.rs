@@ -34,12 +34,13 @@ pub(super) fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, us
 }
 
 /// The water keys the deck at `path` (named `file` in messages) gives,
-/// and a note on its current where it varies in time.
+/// and notes on its current where it varies in time and on its seafloor
+/// file.
 pub(super) fn deck_water_keys(
     deck: &Deck,
     file: &str,
     path: &Path,
-) -> Result<(WaterKeys, Option<String>), ScenarioError> {
+) -> Result<(WaterKeys, Vec<String>), ScenarioError> {
     let friction = deck.option(SupportedOption::FrictionCoefficient);
     for separate in [
         SupportedOption::AxialFriction,
@@ -57,8 +58,15 @@ pub(super) fn deck_water_keys(
         }
     }
     let (current, note) = deck_current(deck, file, path)?;
+    let (bathymetry, bed_note) = super::moordyn_seafloor::deck_seafloor(deck, file, path)?;
+    // MoorDyn's water depth with a seafloor file is the bed's mean depth,
+    // whatever WtrDpth says (MoorDyn2.cpp, after the options).
+    let depth = match &bathymetry {
+        Some(bed) => Some(-bed.grid.mean_height()),
+        None => deck.option(SupportedOption::WaterDepth),
+    };
     let keys = WaterKeys {
-        depth: deck.option(SupportedOption::WaterDepth),
+        depth,
         density: deck.option(SupportedOption::WaterDensity),
         stiffness: deck.option(SupportedOption::BottomStiffness),
         damping: deck.option(SupportedOption::BottomDamping),
@@ -67,9 +75,10 @@ pub(super) fn deck_water_keys(
             .option(SupportedOption::TransverseFriction)
             .or(friction),
         current,
+        bathymetry,
         ..WaterKeys::default()
     };
-    Ok((keys, note))
+    Ok((keys, note.into_iter().chain(bed_note).collect()))
 }
 
 /// `Currents`: 0 (or missing) none; 1 the steady profile of
@@ -221,7 +230,10 @@ fn deck_option_of(key: &str, deck: &Deck) -> SupportedOption {
             SupportedOption::FrictionCoefficient
         }
     };
+    let bed = deck.option_text(SupportedOption::SeafloorFile).is_some();
     match key {
+        "water.depth" if bed => SupportedOption::SeafloorFile,
+        "water.seabed.file" => SupportedOption::SeafloorFile,
         "water.depth" => SupportedOption::WaterDepth,
         "water.density" => SupportedOption::WaterDensity,
         "water.seabed.stiffness" => SupportedOption::BottomStiffness,
@@ -243,6 +255,7 @@ pub(super) fn deck_water(
     added: Option<(&Ctx, WaterKeys)>,
     host: &super::HostEnvironment,
 ) -> Result<(Water, Option<String>), ScenarioError> {
+    let scenario = added.as_ref().map(|(ctx, _)| *ctx);
     let mut keys = match added {
         None => deck_keys,
         Some((ctx, added)) => {
@@ -263,6 +276,18 @@ pub(super) fn deck_water(
         }
     }
     .or(host.water_keys());
+    if let (Some(_), Some((_, name, line))) =
+        (keys.slope, deck.option_text(SupportedOption::SeafloorFile))
+    {
+        let ctx = scenario.expect("a deck gives no slope: the scenario's");
+        return Err(ctx.err(
+            "water.seabed.slope",
+            format!(
+                "the deck {file} gives the bed's shape (option {name}, line {line}): give a \
+                 slope or a seafloor file, not both"
+            ),
+        ));
+    }
     let mut note = None;
     if keys.depth.is_none() {
         if let Some(depth) = moordyn_depth(deck) {

@@ -110,6 +110,7 @@ pub(super) struct RawSeabed {
     pub(super) friction_transverse: Option<f64>,
     pub(super) slip_velocity: Option<f64>,
     pub(super) slope: Option<Vec<f64>>,
+    pub(super) file: Option<String>,
     pub(super) static_friction: Option<String>,
 }
 

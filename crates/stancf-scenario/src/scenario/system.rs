@@ -71,7 +71,8 @@ pub(super) fn system_scenario(
         ));
     }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
-    let water = scenario_water(ctx, raw.water, gravity)?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let water = scenario_water(ctx, raw.water, gravity, dir)?;
     let line_types = line_types(ctx, &raw.line_types)?;
     let mut bodies = super::bodies::bodies(ctx, &raw.bodies)?;
     let rod_types = super::rod_toml::rod_types(ctx, &raw.rod_types)?;
@@ -148,7 +149,8 @@ fn deck_system(
     host: &super::HostEnvironment,
 ) -> Result<SystemScenario, ScenarioError> {
     let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
-    let added = raw.water.map(|w| water_keys(ctx, w)).transpose()?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let added = raw.water.map(|w| water_keys(ctx, w, dir)).transpose()?;
     let deck_file = deck_path.display().to_string();
     let mut sc = super::moordyn::deck_scenario(
         &deck,

@@ -4,7 +4,9 @@
 //! builds the library's sea (docs/method.md §12).
 //!
 //! z is up, the still water surface z = 0, the seabed the plane through
-//! (0, 0, -depth) (flat, or sloped by `seabed.slope`).
+//! (0, 0, -depth) (flat, or sloped by `seabed.slope`), or a bed of varying
+//! height from a MoorDyn seafloor file (`seabed.file`, a deck's
+//! `SeafloorFile`).
 
 use super::context::Ctx;
 use super::raw::{RawCurrent, RawJonswap, RawSeabed, RawWater, RawWave};
@@ -14,8 +16,10 @@ use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
 use stancf::water::current_grid::CurrentGrid;
 use stancf::water::spectrum::Jonswap;
 use stancf::water::waves::AiryWave;
-use stancf::water::{Seabed, SeabedContact};
+use stancf::water::{Bathymetry, Seabed, SeabedContact};
 use stancf::ModelError;
+use std::path::Path;
+use std::sync::Arc;
 
 /// The water around a system: z up, the still surface at z = 0.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,8 +39,17 @@ pub struct Water {
     pub wave_ramp: f64,
 }
 
+/// A bed of varying height read from a MoorDyn seafloor file, and where
+/// it came from (for `stancf check`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SeabedFile {
+    pub grid: Arc<Bathymetry>,
+    /// The file and how it was found.
+    pub source: String,
+}
+
 /// The seabed's contact and friction (docs/method.md §12.2).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SeabedOptions {
     /// MoorDyn's kBot (Pa/m).
     pub stiffness: f64,
@@ -49,6 +62,8 @@ pub struct SeabedOptions {
     pub slip_velocity: f64,
     /// dz/dx and dz/dy of the bed plane.
     pub slope: [f64; 2],
+    /// A bed of varying height in place of the plane (W40a).
+    pub bathymetry: Option<SeabedFile>,
     /// What friction holds at a static equilibrium (docs/method.md §12.2):
     /// nothing as laid (MoorDyn's), or the pull from an unstretched lay.
     pub static_friction: StaticFriction,
@@ -64,6 +79,7 @@ impl SeabedOptions {
         friction_transverse: 0.0,
         slip_velocity: 1.0e-3,
         slope: [0.0, 0.0],
+        bathymetry: None,
         static_friction: StaticFriction::AsLaid,
     };
 }
@@ -125,6 +141,7 @@ pub(super) struct WaterKeys {
     pub(super) friction_transverse: Option<f64>,
     pub(super) slip_velocity: Option<f64>,
     pub(super) slope: Option<[f64; 2]>,
+    pub(super) bathymetry: Option<SeabedFile>,
     pub(super) static_friction: Option<StaticFriction>,
     pub(super) current: Option<Current>,
     pub(super) waves: Vec<AiryWave>,
@@ -135,7 +152,7 @@ pub(super) struct WaterKeys {
 impl WaterKeys {
     /// The keys of `[water]` a key of the scenario names, each with
     /// whether it is set: the pairs a deck's option may collide with.
-    pub(super) fn given(&self) -> [(&'static str, bool); 7] {
+    pub(super) fn given(&self) -> [(&'static str, bool); 8] {
         [
             ("water.depth", self.depth.is_some()),
             ("water.density", self.density.is_some()),
@@ -147,6 +164,7 @@ impl WaterKeys {
                 self.friction_transverse.is_some(),
             ),
             ("water.current", self.current.is_some()),
+            ("water.seabed.file", self.bathymetry.is_some()),
         ]
     }
 
@@ -165,6 +183,7 @@ impl WaterKeys {
                 friction_transverse: self.friction_transverse.unwrap_or(d.friction_transverse),
                 slip_velocity: self.slip_velocity.unwrap_or(d.slip_velocity),
                 slope: self.slope.unwrap_or(d.slope),
+                bathymetry: self.bathymetry,
                 static_friction: self.static_friction.unwrap_or(d.static_friction),
             },
             current: self.current,
@@ -188,6 +207,7 @@ impl WaterKeys {
             friction_transverse: self.friction_transverse.or(other.friction_transverse),
             slip_velocity: self.slip_velocity.or(other.slip_velocity),
             slope: self.slope.or(other.slope),
+            bathymetry: self.bathymetry.or(other.bathymetry),
             static_friction: self.static_friction.or(other.static_friction),
             current: self.current.or(other.current),
             waves,
@@ -198,6 +218,15 @@ impl WaterKeys {
 }
 
 impl Water {
+    /// The seabed's height z (m) under (x, y).
+    pub fn bed_height(&self, x: f64, y: f64) -> f64 {
+        let b = &self.seabed;
+        match &b.bathymetry {
+            Some(file) => file.grid.height(x, y).height,
+            None => -self.depth + b.slope[0] * x + b.slope[1] * y,
+        }
+    }
+
     /// The library's water: the sea of this depth under gravity of
     /// magnitude `gravity` (m/s^2), the regular waves and the JONSWAP
     /// components superposed and started by the wave ramp, the current
@@ -228,17 +257,21 @@ impl Water {
     }
 
     /// The seabed as a line of diameter `diameter` touches it: the plane
-    /// z = -depth + sx x + sy y (upward normal (-sx, -sy, 1)), with the
-    /// contact's stiffness and damping and the friction.
+    /// z = -depth + sx x + sy y (upward normal (-sx, -sy, 1)) or the
+    /// bathymetry, with the contact's stiffness and damping and the
+    /// friction.
     pub fn seabed_contact(&self, diameter: f64) -> SeabedContact {
         let b = &self.seabed;
         let [sx, sy] = b.slope;
-        let bed = Seabed::plane(
-            [0.0, 0.0, -self.depth],
-            [-sx, -sy, 1.0],
-            b.stiffness,
-            b.damping,
-        )
+        let bed = match &b.bathymetry {
+            Some(file) => Seabed::on_grid(file.grid.clone(), b.stiffness, b.damping),
+            None => Seabed::plane(
+                [0.0, 0.0, -self.depth],
+                [-sx, -sy, 1.0],
+                b.stiffness,
+                b.damping,
+            ),
+        }
         .with_friction(b.friction_axial, b.friction_transverse, b.slip_velocity);
         SeabedContact {
             seabed: bed,
@@ -248,7 +281,9 @@ impl Water {
 }
 
 /// `[water]` of a scenario, each key checked (the message names it).
-pub(super) fn water_keys(ctx: &Ctx, raw: RawWater) -> Result<WaterKeys, ScenarioError> {
+/// Files it names (`seabed.file`) are relative to `dir`, the scenario's
+/// folder.
+pub(super) fn water_keys(ctx: &Ctx, raw: RawWater, dir: &Path) -> Result<WaterKeys, ScenarioError> {
     let positive = |k: &str, v: Option<f64>| v.map(|v| ctx.positive(k, v)).transpose();
     let non_negative = |k: &str, v: Option<f64>| v.map(|v| ctx.non_negative(k, v)).transpose();
     let mut keys = WaterKeys {
@@ -260,7 +295,7 @@ pub(super) fn water_keys(ctx: &Ctx, raw: RawWater) -> Result<WaterKeys, Scenario
         ..WaterKeys::default()
     };
     if let Some(s) = raw.seabed {
-        seabed_keys(ctx, s, &mut keys)?;
+        seabed_keys(ctx, s, &mut keys, dir)?;
     }
     keys.current = raw.current.map(|c| current(ctx, c)).transpose()?;
     keys.waves = raw
@@ -275,7 +310,12 @@ pub(super) fn water_keys(ctx: &Ctx, raw: RawWater) -> Result<WaterKeys, Scenario
 
 /// `[water.seabed]`: stiffness and slip velocity > 0; damping and
 /// friction >= 0; slope two finite numbers.
-fn seabed_keys(ctx: &Ctx, s: RawSeabed, keys: &mut WaterKeys) -> Result<(), ScenarioError> {
+fn seabed_keys(
+    ctx: &Ctx,
+    s: RawSeabed,
+    keys: &mut WaterKeys,
+    dir: &Path,
+) -> Result<(), ScenarioError> {
     let positive = |k: &str, v: Option<f64>| v.map(|v| ctx.positive(k, v)).transpose();
     let non_negative = |k: &str, v: Option<f64>| v.map(|v| ctx.non_negative(k, v)).transpose();
     keys.stiffness = positive("water.seabed.stiffness", s.stiffness)?;
@@ -312,6 +352,22 @@ fn seabed_keys(ctx: &Ctx, s: RawSeabed, keys: &mut WaterKeys) -> Result<(), Scen
             ctx.finite("water.seabed.slope", v[1])?,
         ]),
     };
+    if let Some(name) = s.file {
+        if keys.slope.is_some() {
+            return Err(ctx.err(
+                "water.seabed.slope",
+                "the bed of water.seabed.file has its own shape: give a slope or a file, not both",
+            ));
+        }
+        let path = dir.join(&name);
+        let read = |e: String| ctx.err("water.seabed.file", format!("{}: {e}", path.display()));
+        let text = crate::input_file::read_text(&path).map_err(read)?;
+        let grid = super::moordyn_seafloor::read_seafloor(&text).map_err(read)?;
+        keys.bathymetry = Some(SeabedFile {
+            grid: Arc::new(grid),
+            source: format!("{} (water.seabed.file)", path.display()),
+        });
+    }
     Ok(())
 }
 
@@ -435,15 +491,16 @@ fn jonswap(ctx: &Ctx, j: RawJonswap) -> Result<Jonswap, ScenarioError> {
 
 /// The water of a system without a deck: `[water]` (its depth required)
 /// under `gravity`, which must point along -z (the key named:
-/// `system.gravity`).
+/// `system.gravity`); files it names relative to `dir`.
 pub(super) fn scenario_water(
     ctx: &Ctx,
     raw: Option<RawWater>,
     gravity: [f64; 3],
+    dir: &Path,
 ) -> Result<Option<Water>, ScenarioError> {
     let Some(raw) = raw else { return Ok(None) };
     check_gravity(ctx, gravity)?;
-    let keys = water_keys(ctx, raw)?;
+    let keys = water_keys(ctx, raw, dir)?;
     match keys.water() {
         Some(w) => Ok(Some(w)),
         None => Err(ctx.err(

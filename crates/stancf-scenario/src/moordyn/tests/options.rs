@@ -32,10 +32,7 @@ fn an_unknown_option_is_refused_naming_its_line() {
 
 #[test]
 fn options_that_change_the_physics_are_refused_by_name() {
-    for (row, words) in [
-        ("bathy.txt SeafloorFile", "bathymetry"),
-        ("1 WaterKin", "MoorDyn-F water kinematics"),
-    ] {
+    for (row, words) in [("1 WaterKin", "MoorDyn-F water kinematics")] {
         let text = with("0.001 dtM", &format!("0.001 dtM\n{row}"));
         let e = error(&text);
         assert_eq!(e.line, Some(line_of(&text, row)), "{row}");
@@ -122,4 +119,18 @@ fn moordyn_fs_separate_friction_coefficients_are_read() {
     let deck = parse(&with("0.001 dtM", "0.001 dtM\n0.3 mu_kT\n0.6 mu_kA")).unwrap();
     assert_eq!(deck.option(SupportedOption::TransverseFriction), Some(0.3));
     assert_eq!(deck.option(SupportedOption::AxialFriction), Some(0.6));
+}
+
+/// `SeafloorFile`'s value is a path, kept as written for the scenario to
+/// find and read.
+#[test]
+fn a_seafloor_file_option_keeps_its_path() {
+    let text = with(
+        "0.001 dtM",
+        "0.001 dtM\nMooring/3D_seafloor/bed.txt SeafloorFile 3D seafloor file path",
+    );
+    let deck = parse(&text).unwrap();
+    let found = deck.option_text(SupportedOption::SeafloorFile).unwrap();
+    let line = line_of(&text, "SeafloorFile");
+    assert_eq!(found, ("Mooring/3D_seafloor/bed.txt", "SeafloorFile", line));
 }
