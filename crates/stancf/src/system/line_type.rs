@@ -5,7 +5,7 @@
 //! (§2.10, (M36)), the weight left in water (§11.8), and the stable P2
 //! step of a system (§4.6).
 
-use super::{straight_states, System};
+use super::{taut_states, System};
 use crate::integrator::TimeScheme;
 use crate::model::Material;
 use crate::quadrature::GaussRule;
@@ -93,7 +93,9 @@ impl LineSection {
 
 /// The largest P2 step every line of `system` is stable with
 /// (docs/method.md §4.5-4.6): the smallest over the lines of
-/// (w_max dt)_crit / w_max of its straight start, with `time_points`
+/// (w_max dt)_crit / w_max of its taut straight state ([`taut_states`]:
+/// a slack line judged on its compressed straight start would have no
+/// axial stiffness and a limit far above its axial modes'), with `time_points`
 /// Gauss points in time over `time_layers` layers. None for the Galerkin
 /// step (§5) or a quadrature without a limit.
 pub fn stable_step(
@@ -107,7 +109,7 @@ pub fn stable_step(
     }
     let rule = GaussRule::new(time_points).ok()?;
     let critical = stability::p2_critical_w_dt(&rule, time_layers)?;
-    let states = straight_states(system);
+    let states = taut_states(system);
     system
         .lines()
         .iter()

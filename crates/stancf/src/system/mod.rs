@@ -64,7 +64,7 @@ pub use line_type::{stable_step, LineSection, EI_FACTOR};
 pub use run::{run, RunProgress};
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,
-    straight_between, straight_states, OverlongLine,
+    straight_between, straight_states, taut_states, OverlongLine,
 };
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;

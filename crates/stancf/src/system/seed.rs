@@ -79,6 +79,43 @@ pub fn end_positions_at(
     }
 }
 
+/// The strain of a slack line's taut state in [`taut_states`]: just
+/// above zero, where a line without compression has its full axial
+/// stiffness, and far enough above the round-off of a unit tangent's
+/// length (1e-16) that it cannot read as slack.
+const JUST_TAUT: f64 = 1e-9;
+
+/// Every line straight along its chord from its end A, stretched as the
+/// chord stretches it, or just taut ([`JUST_TAUT`]) where the chord is
+/// shorter than the line (along -z for a chord of zero length): where
+/// its axial modes, a line's highest, are as stiff as they get short of
+/// a stretch. A slack line's straight start between its ends is
+/// compressed, and a line without compression has no axial stiffness
+/// there: its highest frequency would be its bending's, which its motion
+/// leaves as soon as it pulls taut. The states the P2 step's stability
+/// is judged on ([`super::stable_step`]).
+pub fn taut_states(system: &System) -> Vec<State> {
+    (0..system.lines().len())
+        .map(|i| {
+            let model = &system.lines()[i].model;
+            let (a, b) = end_positions(system, i);
+            let chord: [f64; 3] = std::array::from_fn(|k| b[k] - a[k]);
+            let span = norm(chord);
+            let length = model.cable.length;
+            let (direction, stretch) = if span > 0.0 {
+                (
+                    chord.map(|c| c / span),
+                    (span / length).max(1.0 + JUST_TAUT),
+                )
+            } else {
+                ([0.0, 0.0, -1.0], 1.0 + JUST_TAUT)
+            };
+            let end: [f64; 3] = std::array::from_fn(|k| a[k] + direction[k] * stretch * length);
+            straight_between(model, a, end)
+        })
+        .collect()
+}
+
 /// Every line straight between its end points ([`straight_between`],
 /// [`end_positions`]), with the constrained coordinates at their
 /// prescribed values and rates: the reference start of a system.

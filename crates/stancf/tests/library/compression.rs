@@ -87,3 +87,43 @@ fn a_rope_pushed_together_pushes_back_with_nothing() {
         assert!(stiff_force > 5.0, "{scheme:?}: {stiff_force}");
     }
 }
+
+/// The P2 step's stability of a rope without compression is judged on
+/// its axial modes whether it starts slack or taut (docs/method.md §4.5,
+/// `stancf::system::taut_states`): a slack rope straight between its ends
+/// is compressed and has no axial stiffness there, and judged so its
+/// "stable" step was that of its bending alone (here 45 times the
+/// axial modes' limit) while it pulls taut within a step. Slack and just
+/// taut, the limits agree to the geometric stiffness of a strain of
+/// 1e-9 against EA's (1e-6 is far above it).
+#[test]
+fn a_slack_ropes_stable_p2_step_is_its_taut_axial_modes() {
+    use crate::common::rope_systems::{line_model, G};
+    use stancf::quadrature::GaussRule;
+    use stancf::system::{stable_step, straight_states, End, Line, Point, System};
+    let system_of = |chord: f64| {
+        let (a, b) = ([0.0; 3], [chord, 0.0, -0.5]);
+        let model = line_model([0.0; 3], [1.0, 0.0, -0.5], 10).without_compression();
+        let line = Line {
+            model,
+            ends: [End::Point(0), End::Point(1)],
+        };
+        System::new(vec![line], vec![Point::fixed(a), Point::fixed(b)], G).unwrap()
+    };
+    let limit = |system: &System| stable_step(system, TimeScheme::P2, 3, 1).unwrap();
+    let length = (1.0f64 + 0.25).sqrt();
+    let slack = system_of(((0.8 * length).powi(2) - 0.25).sqrt());
+    let (slack_limit, taut_limit) = (limit(&slack), limit(&system_of(1.0)));
+    assert!(
+        (slack_limit - taut_limit).abs() <= 1e-6 * taut_limit,
+        "slack {slack_limit} s, taut {taut_limit} s"
+    );
+    let compressed = &straight_states(&slack)[0];
+    let rule = GaussRule::new(3).unwrap();
+    let bending_only =
+        stancf::stability::stable_step(&slack.lines()[0].model, &compressed.e, &rule, 1).unwrap();
+    assert!(
+        bending_only > 10.0 * taut_limit,
+        "{bending_only} s against {taut_limit} s"
+    );
+}
