@@ -223,8 +223,9 @@ impl MapJoin for Vec<f64> {
     }
 }
 
-/// What stancf refuses in a seafloor file, by line, from a deck and from
-/// a scenario; and a slope beside a seafloor file.
+/// What stancf refuses in a seafloor file, by line; a depth beside a
+/// deck's seafloor file (MoorDyn's depth is the bed's mean); a slope
+/// beside a seafloor file.
 #[test]
 fn a_seafloor_file_moordyn_would_misread_is_refused_by_line() {
     let deck = CHAIN.replace(
@@ -243,6 +244,12 @@ fn a_seafloor_file_moordyn_would_misread_is_refused_by_line() {
             "bed.txt",
             "no row gives the node (x, y) = (10, 5)",
         ],
+    );
+    expect_refusal_beside(
+        "bathymetry_and_depth",
+        "[system]\nmoordyn = \"deck.txt\"\n[water]\ndepth = 60\n",
+        &[("deck.txt", &deck), ("bed.txt", &plane_seafloor())],
+        &["water.depth", "gives it too (option SeafloorFile, line 21)"],
     );
     expect_refusal_beside(
         "bathymetry_and_slope",
