@@ -10,7 +10,9 @@
 # raced without added mass); `--bodies-check` runs bodies_check.py (with its
 # modules bodies_common, bodies_decks, bodies_codes, bodies_studies)
 # (MoorDyn's own body and rod decks: both codes' static equilibria,
-# out/bodies_check.{csv,md}, about 20 minutes);
+# out/bodies_check.{csv,md}, about 20 minutes); `--decks-check` runs
+# decks_check.py (every other third-party deck: both codes' static
+# equilibria, out/decks_check.{csv,md});
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -24,6 +26,10 @@ fi
 cd "$here"
 if [ "${1:-}" = "--added-mass-check" ]; then
   exec env PYTHONWARNINGS=ignore "$venv/bin/python" added_mass_check.py
+fi
+if [ "${1:-}" = "--decks-check" ]; then
+  shift
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" decks_check.py "$@"
 fi
 if [ "${1:-}" = "--bodies-check" ]; then
   shift

@@ -1,0 +1,142 @@
+"""Static equilibria of every third-party MoorDyn deck against MoorDyn 2.7
+(issue 31's check; CI does not run it). Writes out/decks_check.csv and
+out/decks_check.md; its scratch is out/decks_check/.
+
+Run through ./run.sh --decks-check (it builds stancf and makes the
+virtual environment with MoorDyn 2.7 or later from PyPI); `--deck=<part>`
+runs only the decks whose path contains it.
+
+The decks: every file under $MOORDYN_DECKS (an extracted tree of
+MoorDyn's repository, default /tmp/decks/md: its tests, benchmarks and
+examples) and $PEER_DECKS (default ../shared/peer-decks from the
+repository: OpenFAST's MoorDyn regression decks) that has a MoorDyn
+section header (LINE TYPES, LINE DICTIONARY, LINES, LINE PROPERTIES,
+POINTS, RODS, BODIES, ROD TYPES), less the body and rod decks that
+bodies_check.py compares with its own studies (out/bodies_check.md).
+Each deck's folder is copied (the files a deck names beside it come
+along: current profiles, wave files); the originals are never edited.
+Per deck, as bodies_check.py does (its steps 1 to 4, shared code):
+`stancf check`; stancf's static equilibrium (`stancf run`, a deck alone
+is static); MoorDyn's initial-condition solvers run until they settle
+(each chunk's deck beside the deck's own files), the coupled degrees of
+freedom held where the deck puts them; each line end's tension and each
+free point's position compared. A deck's `SeafloorFile` is named
+relative to MoorDyn's working directory: MoorDyn runs from the copied
+tree's root (the folder above `tests/`), as its own test suite does.
+"""
+import os
+import shutil
+import sys
+
+from bodies_common import *  # noqa: F401,F403
+from bodies_decks import *  # noqa: F401,F403
+from bodies_codes import *  # noqa: F401,F403
+from bodies_studies import *  # noqa: F401,F403
+import bodies_check as bc
+
+PEER_DECKS = os.environ.get("PEER_DECKS", os.path.join(race.ROOT, "..", "shared", "peer-decks"))
+DECKS_WORK = os.path.join(OUT, "decks_check")
+HEADER = re.compile(r"^-+ *(LINE TYPES|LINE DICTIONARY|LINES|LINE PROPERTIES|POINTS|RODS|BODIES|"
+                    r"ROD TYPES)", re.IGNORECASE | re.MULTILINE)
+# MoorDyn's wall budget per solver and deck (s): lines settle in seconds.
+WALL = 120.0
+
+
+def discover():
+    """(name, absolute path) of every deck, sorted; bodies_check.py's
+    decks left out."""
+    theirs = {os.path.join(DECKS_DIR, p) for _, p in DECKS}
+    found = []
+    for root in (DECKS_DIR, PEER_DECKS):
+        for folder, _, files in os.walk(root):
+            for f in files:
+                if not f.endswith((".txt", ".dat")):
+                    continue
+                path = os.path.join(folder, f)
+                try:
+                    with open(path, errors="replace") as h:
+                        text = h.read(200000)
+                except OSError:
+                    continue
+                if HEADER.search(text) and path not in theirs:
+                    base = "md" if root == DECKS_DIR else "peer"
+                    found.append(("%s:%s" % (base, os.path.relpath(path, root)), path))
+    return sorted(found)
+
+
+def check_one(name, path):
+    """One deck: check, both equilibria, the comparison rows (as
+    bodies_check.check_deck, on a copy of the deck's folder)."""
+    folder = os.path.join(DECKS_WORK, re.sub(r"[^A-Za-z0-9_.-]+", "_", name))
+    if os.path.exists(folder):
+        shutil.rmtree(folder)
+    src = os.path.join(folder, "src")
+    shutil.copytree(os.path.dirname(path), src,
+                    ignore=lambda d, names: [n for n in names if os.path.isdir(os.path.join(d, n))])
+    deck = os.path.join(src, os.path.basename(path))
+    with open(deck, errors="replace") as f:
+        text = f.read()
+    res = dict(name=name, path=path, text=text, folder=folder, deck=deck,
+               contents=contents(text), rows=[])
+    rc, reason = stancf_check(deck)
+    res["check"] = (rc, reason, "")
+    print("%-50s check exit %d %s" % (name, rc, reason[:100]), flush=True)
+    if rc != 0:
+        res["moordyn_reads"] = moordyn_reads(deck)
+        return res
+    st = stancf_run(deck, os.path.join(folder, "stancf"))
+    res["stancf"] = st
+    print("%-50s stancf exit %d in %.2f s %s" % (name, st["rc"], st["wall"], st["error"][:100]),
+          flush=True)
+    # Each MoorDyn chunk's deck beside the deck's own files.
+    md_folder = os.path.join(folder, "moordyn")
+    for sub in ("first", "second"):
+        shutil.copytree(src, os.path.join(md_folder, sub))
+    cwd = os.getcwd()
+    tests = path.split(os.sep + "tests" + os.sep)
+    os.chdir(tests[0] if len(tests) > 1 else os.path.dirname(path))
+    try:
+        md, runs = moordyn_settle(text, md_folder, wall_budget=WALL)
+    finally:
+        os.chdir(cwd)
+    res["moordyn"], res["moordyn_runs"] = md, runs
+    for r in runs:
+        print("%-50s MoorDyn %s: %s after %g s (%.0f s wall) %s" % (
+            name, r["solver"], "settled" if r["settled"] else "stalled" if r["stalled"]
+            else "NOT settled", r["time"], r["wall"], r["failed"]), flush=True)
+    if st["rc"] == 0 and "snapshot" in md:
+        st["objects"] = stancf_objects(st, text)
+        res["rows"] = compare(st, dict(tensions=md["snapshot"]["tensions"],
+                                       objects=md["snapshot"]["objects"]))
+    return res
+
+
+def main():
+    os.makedirs(DECKS_WORK, exist_ok=True)
+    t_start = time.perf_counter()
+    only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--deck=")]
+    decks = [(n, p) for n, p in discover() if not only or any(o in p for o in only)]
+    results = [check_one(n, p) for n, p in decks]
+    compared = [r for r in results if r["rows"]]
+    within = [r for r in compared
+              if max((x["difference"] for x in r["rows"] if x["unit"] == "%"), default=0.0)
+              <= 100 * LIMIT]
+    md = ["# Static equilibria of third-party MoorDyn decks against MoorDyn 2.7", "",
+          "stancf `%s`; MoorDyn %s (Python package). Written by decks_check.py "
+          "(the body and rod decks: bodies_check.md)." % (bc.git_describe(), bc.moordyn_version()),
+          "", "%d decks; %d pass `stancf check`; %d compared with a MoorDyn equilibrium, %d of "
+          "them with every line end tension within 1 %%." % (
+              len(results), sum(1 for r in results if r["check"][0] == 0), len(compared),
+              len(within)), ""]
+    md += bc.summary_table(results)
+    for res in compared:
+        md += ["", "## %s" % res["name"], ""] + bc.detail_table(res)
+    md += ["", "Total time %.0f s." % (time.perf_counter() - t_start)]
+    bc.write_csv(results, os.path.join(OUT, "decks_check.csv"))
+    with open(os.path.join(OUT, "decks_check.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    print("\n".join(md[:8]))
+
+
+if __name__ == "__main__":
+    main()
