@@ -69,6 +69,13 @@ pub fn check_geometry(
         }
     }
     let adjacent = adjacency(sc);
+    // A static solve (a static run, or a dynamic one from the equilibrium)
+    // places the free points by the lines' catenary network before it
+    // seeds the lines (docs/method.md (M32a)), as MoorDyn's initial
+    // conditions move them: there a free point's start is a guess. Only a
+    // run from the straight start starts the lines where it is.
+    let statics_place_free_points = sc.analysis.kind == crate::scenario::AnalysisKind::Static
+        || sc.initial == crate::scenario::InitialShape::Static;
     // Past this many lines only the lines between two placed points are
     // checked: the paths through free points cost a search from each
     // placed point.
@@ -81,8 +88,9 @@ pub fn check_geometry(
         };
         for (b, &(length, last_line)) in reach.iter().enumerate() {
             // A free point's position is where its lines' seeds start:
-            // it must be within their reach too.
-            let free = sc.point_moves(b);
+            // it must be within their reach too, unless a static solve
+            // places it first.
+            let free = sc.point_moves(b) && !statics_place_free_points;
             if b == a || !(placed(b) || free) || !length.is_finite() {
                 continue;
             }

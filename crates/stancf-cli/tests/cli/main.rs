@@ -21,6 +21,7 @@ mod deck_statics;
 mod deck_waves;
 mod decks_without_lines;
 mod extreme_values;
+mod fast_farm;
 mod figures_and_vtk;
 mod grading;
 mod hostile_inputs;

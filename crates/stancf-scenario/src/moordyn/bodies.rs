@@ -212,6 +212,30 @@ fn drag_areas(row: &Row, what: &str) -> Result<([f64; 3], [f64; 3]), DeckError> 
     })
 }
 
+/// Checks the points on a farm's turbines (`Turbine<n>`,
+/// [`Attachment::Turbine`]): like a point on a coupled body, none carries
+/// a mass, volume, drag or added mass of its own (the platform's are the
+/// turbine model's).
+pub(crate) fn check_turbine_points(points: &[DeckPoint]) -> Result<(), DeckError> {
+    for p in points {
+        let Attachment::Turbine(n) = p.attachment else {
+            continue;
+        };
+        if [p.mass, p.volume, p.cda, p.ca].iter().any(|v| *v != 0.0) {
+            return Err(DeckError::at(
+                p.line,
+                format!(
+                    "point {} is on turbine {n} with Mass {}, Volume {}, CdA {} and Ca {}: a \
+                     point on a turbine's platform carries no mass, volume or drag of its own \
+                     (the platform's are the turbine model's)",
+                    p.id, p.mass, p.volume, p.cda, p.ca
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Checks the points on bodies (`Body<n>`, [`Attachment::Body`]): body n
 /// exists, and the point carries no drag or added mass of its own (nor a
 /// mass or volume on a fixed or coupled body).

@@ -133,6 +133,12 @@ pub enum Attachment {
     /// `Body<n>`: fixed on body n (its id, from 1), `X Y Z` in the body's
     /// axes from its reference point.
     Body(usize),
+    /// `Turbine<n>` (a FAST.Farm deck's farm-level moorings): fixed on
+    /// turbine n's platform (n from 1, as the FAST.Farm input lists the
+    /// turbines), `X Y Z` from the turbine's reference position, which
+    /// the farm gives (MoorDyn's docs: "it acts similarly to a BodyN
+    /// attachment").
+    Turbine(usize),
 }
 
 /// A row of `POINTS`: `ID Attachment X Y Z Mass Volume CdA Ca` (a
@@ -367,6 +373,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         None => Vec::new(),
     };
     bodies::check_body_points(&points, &bodies)?;
+    bodies::check_turbine_points(&points)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
     if lines.is_empty() && bodies.is_empty() && rods.is_empty() {
         return Err(DeckError::whole(

@@ -274,12 +274,24 @@ fn attachment(row: &Row, id: usize) -> Result<Attachment, DeckError> {
         "POINT" | "CONNECT" | "CON" | "FREE" if !numbered => Attachment::Free,
         "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" if !numbered => Attachment::Coupled,
         _ if upper.starts_with("BODY") => return body_attachment(row, id, w),
-        "TURBINE" | "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" => {
+        "TURBINE" if numbered => match upper[letters.len()..].parse::<usize>() {
+            Ok(n) if n >= 1 => Attachment::Turbine(n),
+            _ => {
+                return Err(refused(
+                    row,
+                    id,
+                    w,
+                    "turbines are numbered from 1 (Turbine1)",
+                ))
+            }
+        },
+        "FAIRLEAD" | "VESSEL" | "VES" | "COUPLED" | "CPLD" => {
             return Err(refused(
                 row,
                 id,
                 w,
-                "coupling to one of several turbines (FAST.Farm) is not supported; use Coupled",
+                "a numbered coupled point is not MoorDyn's; a point on one of a farm's \
+                 turbines (FAST.Farm) is Turbine<n>",
             ))
         }
         _ if letters.contains("PIN") => {
@@ -291,7 +303,7 @@ fn attachment(row: &Row, id: usize) -> Result<Attachment, DeckError> {
                 format!(
                     "point {id} has the unknown attachment \"{w}\"; known: Fixed (Anchor, Fix), \
                      Free (Point, Connect, Con), Coupled (Vessel, Ves, Fairlead, Cpld), \
-                     Body<n> (on body n)"
+                     Body<n> (on body n), Turbine<n> (on a farm's turbine n)"
                 ),
             ))
         }

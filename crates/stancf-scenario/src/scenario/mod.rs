@@ -17,6 +17,7 @@ mod constraints;
 mod context;
 mod deck_files;
 mod deck_mesh;
+mod farm;
 mod host_environment;
 mod initial_velocity;
 mod loads;
@@ -128,7 +129,7 @@ pub fn parse_input_with(
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
-        let sc = moordyn::deck_scenario(&deck, file, path, title, None, &host)?;
+        let sc = moordyn::deck_scenario(&deck, file, path, title, None, &host, None)?;
         return Ok(Input::System(Box::new(sc)));
     }
     let ctx = Ctx { file };

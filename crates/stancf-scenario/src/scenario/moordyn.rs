@@ -57,8 +57,10 @@ pub(super) fn deck_scenario(
     title: String,
     added: Option<(&Ctx, WaterKeys)>,
     host: &super::HostEnvironment,
+    farm: Option<super::farm::Farm>,
 ) -> Result<SystemScenario, ScenarioError> {
     let g = deck_gravity(deck, file, host)?;
+    let (farm, farm_note) = super::farm::deck_farm(deck, file, path, farm)?;
     let (waves, wave_note) = super::moordyn_waves::deck_waves(deck, file, path)?;
     let (keys, current_note) = deck_water_keys(deck, file, path)?;
     let deck_keys = super::water::WaterKeys { waves, ..keys };
@@ -79,7 +81,14 @@ pub(super) fn deck_scenario(
             deck_body(b, rods, file)
         })
         .collect::<Result<Vec<_>, _>>()?;
-    let mut points: Vec<SystemPoint> = deck.points.iter().map(|p| deck_point(p, &bodies)).collect();
+    let turbines = farm
+        .as_ref()
+        .map_or(0, |f| super::farm::turbine_bodies(f, &mut bodies));
+    let mut points: Vec<SystemPoint> = deck
+        .points
+        .iter()
+        .map(|p| deck_point(p, &bodies, turbines))
+        .collect();
     host_pins(deck, &mut bodies, &mut points);
     // Rods after the deck's bodies and points: a free rod's body and the
     // points at rod ends come after them (super::rods).
@@ -97,6 +106,7 @@ pub(super) fn deck_scenario(
     notes.extend(channel_notes);
     notes.extend(host.notes(deck));
     notes.extend(depth_note);
+    notes.extend(farm_note);
     notes.extend(wave_note);
     notes.extend(current_note);
     notes.extend(line_output_notes(deck, path));
@@ -305,8 +315,13 @@ fn host_pins(deck: &Deck, bodies: &mut [SystemBody], points: &mut Vec<SystemPoin
 /// A POINTS row as a point: mass, volume, CdA and Ca act on free points
 /// only (a fixed or coupled point's motion is given; a point on a body
 /// has none, checked on reading). A point on a body (`bodies`: the
-/// deck's) is where the body's pose puts its X, Y, Z.
-fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoint {
+/// deck's, then a farm's turbines from index `turbines`) is where the
+/// body's pose puts its X, Y, Z.
+fn deck_point(
+    p: &crate::moordyn::DeckPoint,
+    bodies: &[SystemBody],
+    turbines: usize,
+) -> SystemPoint {
     // A free point's mass and water, and a point's on a body (its mass
     // and volume, which become the body's; checked on reading).
     let free = matches!(p.attachment, Attachment::Free | Attachment::Body(_));
@@ -321,6 +336,14 @@ fn deck_point(p: &crate::moordyn::DeckPoint, bodies: &[SystemBody]) -> SystemPoi
                 local: p.position,
             };
             (kind, bodies[n - 1].point(p.position))
+        }
+        Attachment::Turbine(n) => {
+            let body = turbines + n - 1;
+            let kind = PointType::Body {
+                body,
+                local: p.position,
+            };
+            (kind, bodies[body].point(p.position))
         }
     };
     SystemPoint {

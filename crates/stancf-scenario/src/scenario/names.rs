@@ -154,7 +154,11 @@ impl Names {
             return self.rod(k, key);
         }
         match &self.deck {
-            Some(d) => d.at(d.bodies[i], column),
+            // After the deck's bodies, a farm's turbines (super::farm).
+            Some(d) => match d.bodies.get(i) {
+                Some(&line) => d.at(line, column),
+                None => format!("turbine {} ({key})", i - d.bodies.len() + 1),
+            },
             None => format!("bodies[{i}].{key}"),
         }
     }

@@ -52,6 +52,8 @@ pub(super) struct RawScenario {
     pub(super) mesh: Vec<RawMesh>,
     /// The water a system's lines are in (docs/interface.md, "Water").
     pub(super) water: Option<RawWater>,
+    /// A FAST.Farm deck's turbines (docs/interface.md, "MoorDyn decks").
+    pub(super) farm: Option<super::farm::RawFarm>,
 }
 
 impl RawScenario {
@@ -66,6 +68,7 @@ impl RawScenario {
             || !self.lines.is_empty()
             || !self.motions.is_empty()
             || !self.mesh.is_empty()
+            || self.farm.is_some()
     }
 }
 

@@ -63,6 +63,13 @@ pub(super) fn system_scenario(
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
         return deck_system(ctx, raw, title, path, &deck_path, host);
     }
+    if raw.farm.is_some() {
+        return Err(ctx.err(
+            "farm",
+            "gives the turbines of a FAST.Farm deck's Turbine<n> points (system.moordyn); a \
+             TOML system's points give their own positions",
+        ));
+    }
     if !raw.mesh.is_empty() {
         return Err(ctx.err(
             "mesh",
@@ -151,6 +158,10 @@ fn deck_system(
     let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let added = raw.water.map(|w| water_keys(ctx, w, dir)).transpose()?;
+    let farm = raw
+        .farm
+        .map(|f| super::farm::scenario_farm(ctx, f, dir))
+        .transpose()?;
     let deck_file = deck_path.display().to_string();
     let mut sc = super::moordyn::deck_scenario(
         &deck,
@@ -159,6 +170,7 @@ fn deck_system(
         title,
         added.map(|w| (ctx, w)),
         host,
+        farm,
     )?;
     sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
         .with_rods(&sc.rods, deck.points.len());

@@ -31,12 +31,14 @@ fn point_attachment_synonyms_read_and_others_are_refused_by_name() {
         ("Cpld", Attachment::Coupled),
         ("Free", Attachment::Free),
         ("Connect", Attachment::Free),
+        ("Turbine2", Attachment::Turbine(2)),
+        ("TURBINE12", Attachment::Turbine(12)),
     ] {
         let deck = parse(&with("2 Coupled", &format!("2 {word}"))).unwrap();
         assert_eq!(deck.points[1].attachment, kind, "{word}");
     }
     for (word, words) in [
-        ("Turbine2", "turbines"),
+        ("Turbine0", "turbines are numbered from 1"),
         ("Vessel2", "turbines"),
         ("CpldPin", "pinned"),
         ("Floating", "unknown attachment \"Floating\""),
