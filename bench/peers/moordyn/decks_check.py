@@ -38,8 +38,9 @@ PEER_DECKS = os.environ.get("PEER_DECKS", os.path.join(race.ROOT, "..", "shared"
 DECKS_WORK = os.path.join(OUT, "decks_check")
 HEADER = re.compile(r"^-+ *(LINE TYPES|LINE DICTIONARY|LINES|LINE PROPERTIES|POINTS|RODS|BODIES|"
                     r"ROD TYPES)", re.IGNORECASE | re.MULTILINE)
-# MoorDyn's wall budget per solver and deck (s): lines settle in seconds.
-WALL = 120.0
+# MoorDyn's wall budget per solver and deck (s): lines settle within it
+# or come close (the table says which settled).
+WALL = 60.0
 
 
 def discover():
@@ -111,12 +112,8 @@ def check_one(name, path):
     return res
 
 
-def main():
-    os.makedirs(DECKS_WORK, exist_ok=True)
-    t_start = time.perf_counter()
-    only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--deck=")]
-    decks = [(n, p) for n, p in discover() if not only or any(o in p for o in only)]
-    results = [check_one(n, p) for n, p in decks]
+def write_tables(results, total, t_start):
+    """out/decks_check.{csv,md} of the decks run so far (of `total`)."""
     compared = [r for r in results if r["rows"]]
     within = [r for r in compared
               if max((x["difference"] for x in r["rows"] if x["unit"] == "%"), default=0.0)
@@ -124,18 +121,30 @@ def main():
     md = ["# Static equilibria of third-party MoorDyn decks against MoorDyn 2.7", "",
           "stancf `%s`; MoorDyn %s (Python package). Written by decks_check.py "
           "(the body and rod decks: bodies_check.md)." % (bc.git_describe(), bc.moordyn_version()),
-          "", "%d decks; %d pass `stancf check`; %d compared with a MoorDyn equilibrium, %d of "
-          "them with every line end tension within 1 %%." % (
-              len(results), sum(1 for r in results if r["check"][0] == 0), len(compared),
-              len(within)), ""]
+          "", "%d of %d decks run; %d pass `stancf check`; %d compared with a MoorDyn "
+          "equilibrium, %d of them with every line end tension within 1 %%." % (
+              len(results), total, sum(1 for r in results if r["check"][0] == 0),
+              len(compared), len(within)), ""]
     md += bc.summary_table(results)
     for res in compared:
         md += ["", "## %s" % res["name"], ""] + bc.detail_table(res)
-    md += ["", "Total time %.0f s." % (time.perf_counter() - t_start)]
+    md += ["", "Time so far %.0f s." % (time.perf_counter() - t_start)]
     bc.write_csv(results, os.path.join(OUT, "decks_check.csv"))
     with open(os.path.join(OUT, "decks_check.md"), "w") as f:
         f.write("\n".join(md) + "\n")
-    print("\n".join(md[:8]))
+    return md
+
+
+def main():
+    os.makedirs(DECKS_WORK, exist_ok=True)
+    t_start = time.perf_counter()
+    only = [a.split("=", 1)[1] for a in sys.argv if a.startswith("--deck=")]
+    decks = [(n, p) for n, p in discover() if not only or any(o in p for o in only)]
+    results = []
+    for n, p in decks:
+        results.append(check_one(n, p))
+        md = write_tables(results, len(decks), t_start)
+    print("\n".join(md[:6]))
 
 
 if __name__ == "__main__":
