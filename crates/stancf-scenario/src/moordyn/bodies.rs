@@ -81,7 +81,7 @@ pub(crate) fn bodies(s: &Section) -> Result<Vec<DeckBody>, DeckError> {
         let id = count(row, 0, "the body ID")?;
         sequential(row, id, out.len() + 1, "body")?;
         let what = |col: &str| format!("{col} of body {id}");
-        let attachment = attachment(row);
+        let attachment = attachment(row)?;
         let position = [
             number(row, 2, &what("X0"))?,
             number(row, 3, &what("Y0"))?,
@@ -130,20 +130,33 @@ pub(crate) fn bodies(s: &Section) -> Result<Vec<DeckBody>, DeckError> {
     Ok(out)
 }
 
-/// The attachment of a body: fixed, coupled, coupled pinned or free.
-fn attachment(row: &Row) -> BodyAttachment {
+/// The attachment of a body: fixed, coupled, coupled pinned or free (any
+/// other word, as MoorDyn-C reads it); `Turbine<n>`, a body on a farm's
+/// turbine in MoorDyn-F, refused rather than read as free.
+fn attachment(row: &Row) -> Result<BodyAttachment, DeckError> {
     let w = row.words[1];
     let upper = w.to_ascii_uppercase();
     let letters: String = upper
         .chars()
         .take_while(|c| c.is_ascii_alphabetic())
         .collect();
-    match letters.as_str() {
+    Ok(match letters.as_str() {
         "ANCHOR" | "FIXED" | "FIX" => BodyAttachment::Fixed,
         "VESSEL" | "VES" | "COUPLED" | "CPLD" => BodyAttachment::Coupled,
         "VESSELPINNED" | "VESPIN" | "CPLDPIN" | "COUPLEDPINNED" => BodyAttachment::CoupledPinned,
+        "TURBINE" if upper.len() > letters.len() => {
+            return Err(DeckError::at(
+                row.line,
+                format!(
+                    "body {} is attached to \"{w}\", a farm's turbine (FAST.Farm): a body on a \
+                     turbine is not supported (points on turbines are); MoorDyn-C would read \
+                     it as a free body",
+                    row.words[0]
+                ),
+            ))
+        }
         _ => BodyAttachment::Free,
-    }
+    })
 }
 
 /// The bar-separated values of column `col` (`a|b|c`), each a finite

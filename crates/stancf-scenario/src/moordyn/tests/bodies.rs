@@ -84,7 +84,7 @@ fn fixed_words_hold_a_body_coupled_words_couple_it_pinned_words_pin_it_and_every
         ("cpld2", BodyAttachment::Coupled),
         ("Free", BodyAttachment::Free),
         ("Body", BodyAttachment::Free),
-        ("Turbine1", BodyAttachment::Free),
+        ("Turbines", BodyAttachment::Free),
         ("CoupledPinned", BodyAttachment::CoupledPinned),
         ("vesselpinned", BodyAttachment::CoupledPinned),
         ("VesPin", BodyAttachment::CoupledPinned),
@@ -124,6 +124,10 @@ fn malformed_body_columns_are_refused_naming_the_line_and_column() {
             "Ca of body 1 is \"x\"",
         ),
         ("1 Free 0 0 nan 0 0 0 500 0 100 0 0 0", "Z0 of body 1"),
+        (
+            "1 Turbine2 0 0 -3 0 0 0 500 0 100 0 0 0",
+            "a body on a turbine is not supported",
+        ),
     ] {
         let text = with_body(row);
         let e = error(&text);
