@@ -197,3 +197,46 @@ fn disabled_outputs_and_a_seabed_flag_alone_write_no_moordyn_files() {
     let files = run("bed", seabed);
     assert!(!files.iter().any(|f| f.ends_with(".out")), "{files:?}");
 }
+
+/// A deck's body gets MoorDyn's `<deck>_Body<n>.out` (MoorDyn-C opens one
+/// for every body): its header and units rows as MoorDyn writes them,
+/// tab-separated, and each written time's reference point and roll,
+/// pitch, yaw as bodies.csv has them, to the six significant digits of
+/// C++'s default format (|error| <= 5e-6 |v|).
+#[test]
+fn a_decks_body_gets_moordyns_body_file() {
+    let d = scratch("moordyn-body-out");
+    std::fs::write(d.join("body.txt"), body_deck("", "", "Body1PZ\n")).unwrap();
+    let sc = write_scenario(
+        &d,
+        "drop.toml",
+        "[system]\nmoordyn = \"body.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_scheme = \"galerkin\"\ntime_step = 0.05\nduration = 0.5\ninitial = \"reference\"\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let raw = std::fs::read_to_string(out.join("body_Body1.out")).unwrap();
+    let mut lines = raw.lines();
+    assert_eq!(lines.next(), Some("Time\t x\ty\tz\troll\tpitch\tyaw"));
+    assert_eq!(
+        lines.next(),
+        Some("(s)\t (m)\t(m)\t(m)\t(deg)\t(deg)\t(deg)")
+    );
+    let table = words(&out.join("body_Body1.out"));
+    let (_, bodies) = read_csv(&out.join("bodies.csv"));
+    assert_eq!(table.len() - 2, bodies.len());
+    for (row, b) in table[2..].iter().zip(&bodies) {
+        let written: Vec<f64> = row.iter().map(|w| w.parse().unwrap()).collect();
+        // bodies.csv: t, body, x, y, z, roll, pitch, yaw, ...
+        let want = [b[0], b[2], b[3], b[4], b[5], b[6], b[7]];
+        for (w, v) in written.iter().zip(want) {
+            assert!((w - v).abs() <= 5e-6 * v.abs(), "{row:?} against {b:?}");
+        }
+    }
+    // The body falls: the file follows it.
+    assert!(bodies.last().unwrap()[4] != bodies[0][4]);
+    let summary = read_json(&out.join("summary.json"));
+    let names = summary["moordyn_out"].as_array().unwrap();
+    assert!(names.iter().any(|n| n == "body_Body1.out"), "{names:?}");
+}

@@ -195,7 +195,14 @@ fn moordyn_out_file(
         .filter(|(_, l)| l.outputs.contains(|c| "pvUDVKctsd".contains(c)))
         .map(|(i, l)| (i, format!("{stem}_Line{}.out", l.id), l.outputs.clone()))
         .collect();
-    if channels.is_empty() && lines.is_empty() {
+    // MoorDyn-C opens a file for every body (MoorDyn2.cpp, readBody).
+    let bodies: Vec<(usize, String)> = deck
+        .bodies
+        .iter()
+        .enumerate()
+        .map(|(i, b)| (i, format!("{stem}_Body{}.out", b.id)))
+        .collect();
+    if channels.is_empty() && lines.is_empty() && bodies.is_empty() {
         return None;
     }
     let units = option("writeunits")
@@ -203,6 +210,7 @@ fn moordyn_out_file(
     Some(super::system_parts::MoorDynOutFile {
         main: (!channels.is_empty()).then(|| format!("{stem}.out")),
         lines,
+        bodies,
         units,
     })
 }

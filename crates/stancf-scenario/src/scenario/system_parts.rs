@@ -192,6 +192,8 @@ pub struct MoorDynOutFile {
     /// Each line's file and flags: (line index, `<stem>_Line<id>.out`,
     /// the flags as written).
     pub lines: Vec<(usize, String, String)>,
+    /// Each of the deck's bodies' files: (body index, `<stem>_Body<id>.out`).
+    pub bodies: Vec<(usize, String)>,
     /// Whether the units rows are written (MoorDyn's `WriteUnits`, 1
     /// unless the deck says 0).
     pub units: bool,
@@ -204,6 +206,7 @@ impl MoorDynOutFile {
             .iter()
             .cloned()
             .chain(self.lines.iter().map(|(_, name, _)| name.clone()))
+            .chain(self.bodies.iter().map(|(_, name)| name.clone()))
             .collect()
     }
 }

@@ -5,6 +5,7 @@
 //! `tensions.csv` and `history.csv`.
 
 use super::bodies::BodyRow;
+use super::moordyn_body_out::BodyOut;
 use super::moordyn_line_out::LineOut;
 use super::moordyn_out::MoorDynOut;
 use super::rods::{rod_value, RodFrame};
@@ -47,7 +48,7 @@ fn moordyn_files(
     channels: &[OutputChannel],
     models: &[&Model],
     dynamic: bool,
-) -> std::io::Result<(Option<MoorDynOut>, Vec<Option<LineOut>>)> {
+) -> std::io::Result<MoorDynFiles> {
     let mut line_outs: Vec<Option<LineOut>> = models.iter().map(|_| None).collect();
     for (i, name, flags) in &m.lines {
         let out = LineOut::create(dest, name, models[*i], flags, m.units, !dynamic)?;
@@ -57,7 +58,24 @@ fn moordyn_files(
         Some(main) => Some(MoorDynOut::create(dest, main, channels, m.units, !dynamic)?),
         None => None,
     };
-    Ok((main, line_outs))
+    let body_outs = m
+        .bodies
+        .iter()
+        .map(|(b, name)| BodyOut::create(dest, name, *b, m.units, !dynamic))
+        .collect::<std::io::Result<_>>()?;
+    Ok(MoorDynFiles {
+        main,
+        line_outs,
+        body_outs,
+    })
+}
+
+/// MoorDyn's output files of a deck: the main file, each line's, each
+/// body's.
+struct MoorDynFiles {
+    main: Option<MoorDynOut>,
+    line_outs: Vec<Option<LineOut>>,
+    body_outs: Vec<BodyOut>,
 }
 
 /// The files of a system run.
@@ -77,6 +95,8 @@ pub(super) struct SystemWriters {
     moordyn_out: Option<MoorDynOut>,
     /// MoorDyn's `<deck>_Line<n>.out` of each line that asks for one.
     line_outs: Vec<Option<LineOut>>,
+    /// MoorDyn's `<deck>_Body<n>.out`, one per deck body.
+    body_outs: Vec<BodyOut>,
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
@@ -168,9 +188,13 @@ impl SystemWriters {
                 }
             ),
         )?;
-        let (moordyn_out, line_outs) = match moordyn_out.filter(|_| files.writes("moordyn.out")) {
+        let md = match moordyn_out.filter(|_| files.writes("moordyn.out")) {
             Some(m) => moordyn_files(&dest, m, channels, models, extras.dynamic)?,
-            None => (None, (0..line_ids.len()).map(|_| None).collect()),
+            None => MoorDynFiles {
+                main: None,
+                line_outs: (0..line_ids.len()).map(|_| None).collect(),
+                body_outs: Vec::new(),
+            },
         };
         let channels = if channels.is_empty() || !files.writes("channels.csv") {
             None
@@ -190,8 +214,9 @@ impl SystemWriters {
                 None
             },
             channels,
-            moordyn_out,
-            line_outs,
+            moordyn_out: md.main,
+            line_outs: md.line_outs,
+            body_outs: md.body_outs,
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
@@ -220,6 +245,9 @@ impl SystemWriters {
             .map_err(|what| non_finite(&what, row.t))?;
         if let Some(bodies) = self.bodies.as_mut() {
             super::bodies::write_rows(bodies.writer(), t, &self.body_ids, &row.bodies)?;
+        }
+        for out in &mut self.body_outs {
+            out.write_row(t, &row.bodies[out.body])?;
         }
         self.write_tensions(row, t)?;
         let [kinetic, strain, gravity] = row.energies;
@@ -414,6 +442,9 @@ impl SystemWriters {
             out.commit()?;
         }
         for out in self.line_outs.into_iter().flatten() {
+            out.commit()?;
+        }
+        for out in self.body_outs {
             out.commit()?;
         }
         if let Some(vtk) = self.vtk {
