@@ -16,6 +16,7 @@
 
 use super::bodies::{BodyType, SystemBody};
 use super::context::Ctx;
+use super::raw::RawFarm;
 use super::ScenarioError;
 use crate::moordyn::{Attachment, Deck};
 use stancf::error::Sig;
@@ -27,14 +28,6 @@ use std::path::Path;
 pub struct Farm {
     pub positions: Vec<[f64; 3]>,
     pub source: String,
-}
-
-/// `[farm]` of a scenario that takes a deck.
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawFarm {
-    turbines: Option<Vec<Vec<f64>>>,
-    fast_farm: Option<String>,
 }
 
 /// `[farm]`: the positions given, or read from the FAST.Farm input it

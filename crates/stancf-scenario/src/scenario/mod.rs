@@ -17,6 +17,7 @@ mod constraints;
 mod context;
 mod deck_files;
 mod deck_mesh;
+mod deck_system;
 mod farm;
 mod host_environment;
 mod initial_velocity;

@@ -20,13 +20,21 @@
 //! interpolation assumes it).
 
 use super::messages::finite_word;
-use super::water::SeabedFile;
 use super::ScenarioError;
 use crate::moordyn::{Deck, SupportedOption};
 use stancf::error::Sig;
 use stancf::water::Bathymetry;
 use std::path::Path;
 use std::sync::Arc;
+
+/// A bed of varying height read from a MoorDyn seafloor file, and where
+/// it came from (for `stancf check`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SeabedFile {
+    pub grid: Arc<Bathymetry>,
+    /// The file and how it was found.
+    pub source: String,
+}
 
 /// A number as MoorDyn's `stof` reads it: a finite float.
 fn float_word(word: &str, at: usize) -> Result<f64, String> {

@@ -53,7 +53,7 @@ pub(super) struct RawScenario {
     /// The water a system's lines are in (docs/interface.md, "Water").
     pub(super) water: Option<RawWater>,
     /// A FAST.Farm deck's turbines (docs/interface.md, "MoorDyn decks").
-    pub(super) farm: Option<super::farm::RawFarm>,
+    pub(super) farm: Option<RawFarm>,
 }
 
 impl RawScenario {
@@ -444,4 +444,12 @@ pub(super) struct RawPrescribed {
     pub(super) amplitude: Option<Vector>,
     pub(super) frequency: Option<f64>,
     pub(super) phase: Option<f64>,
+}
+
+/// `[farm]` of a scenario that takes a FAST.Farm deck (`super::farm`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawFarm {
+    pub(super) turbines: Option<Vec<Vec<f64>>>,
+    pub(super) fast_farm: Option<String>,
 }

@@ -65,3 +65,15 @@ pub(super) fn breaking_wave_notes(sc: &SystemScenario) -> Vec<String> {
     }
     notes
 }
+
+/// A note that a static analysis does not see the waves of its water
+/// (statics see buoyancy and the steady current, docs/method.md §12.4).
+pub(super) fn static_waves_note(sc: &SystemScenario) -> Option<String> {
+    let w = sc.water.as_ref()?;
+    let waves = !w.waves.is_empty() || w.jonswap.is_some();
+    (waves && sc.analysis.kind == super::AnalysisKind::Static).then(|| {
+        "water: a static analysis sees the water's buoyancy and steady current; its waves \
+         act in a dynamic one only"
+            .to_string()
+    })
+}

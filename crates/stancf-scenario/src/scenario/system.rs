@@ -9,7 +9,7 @@ use super::context::Ctx;
 use super::motions::motions;
 use super::raw::{RawLine, RawLineType, RawPoint, RawScenario};
 use super::system_parts::{LineType, PointType, SystemLine, SystemPoint, SystemScenario};
-use super::water::{scenario_water, water_keys};
+use super::water::scenario_water;
 use super::{Analysis, ScenarioError};
 use stancf::motion::CoupledMotion;
 use stancf::ElementType;
@@ -41,42 +41,10 @@ pub(super) fn system_scenario(
     }
     let rs = raw.system.take().unwrap_or_default();
     if let Some(deck) = rs.moordyn.as_deref() {
-        if let Some(key) = [
-            (rs.gravity.is_some(), "system.gravity"),
-            (!raw.line_types.is_empty(), "line_types"),
-            (!raw.bodies.is_empty(), "bodies"),
-            (!raw.rod_types.is_empty(), "rod_types"),
-            (!raw.rods.is_empty(), "rods"),
-            (!raw.points.is_empty(), "points"),
-            (!raw.lines.is_empty(), "lines"),
-        ]
-        .into_iter()
-        .find_map(|(present, key)| present.then_some(key))
-        {
-            return Err(ctx.err(
-                key,
-                "the MoorDyn deck of system.moordyn gives the line types, points, lines \
-                 and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
-                 [water] (what the deck does not give), [analysis] and [output]",
-            ));
-        }
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
-        return deck_system(ctx, raw, title, path, &deck_path, host);
+        return super::deck_system::deck_system(ctx, raw, (rs, &deck_path), (title, path), host);
     }
-    if raw.farm.is_some() {
-        return Err(ctx.err(
-            "farm",
-            "gives the turbines of a FAST.Farm deck's Turbine<n> points (system.moordyn); a \
-             TOML system's points give their own positions",
-        ));
-    }
-    if !raw.mesh.is_empty() {
-        return Err(ctx.err(
-            "mesh",
-            "gives the mesh of a MoorDyn deck's lines (system.moordyn); a [[lines]] entry takes \
-             its own elements and grading",
-        ));
-    }
+    super::deck_system::refuse_deck_keys(ctx, &raw)?;
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let water = scenario_water(ctx, raw.water, gravity, dir)?;
@@ -138,114 +106,10 @@ pub(super) fn system_scenario(
         moordyn_out: None,
         names,
     };
-    sc.notes.extend(static_waves_note(&sc));
+    sc.notes.extend(super::sea_limits::static_waves_note(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     Ok(sc)
-}
-
-/// A system whose lines, points and gravity come from the MoorDyn deck at
-/// `deck_path` (`system.moordyn`), with the scenario's motions, meshes,
-/// water keys, analysis and output.
-fn deck_system(
-    ctx: &Ctx,
-    raw: RawScenario,
-    title: String,
-    path: &Path,
-    deck_path: &Path,
-    host: &super::HostEnvironment,
-) -> Result<SystemScenario, ScenarioError> {
-    let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
-    let dir = path.parent().unwrap_or(Path::new(""));
-    let added = raw.water.map(|w| water_keys(ctx, w, dir)).transpose()?;
-    let farm = raw
-        .farm
-        .map(|f| super::farm::scenario_farm(ctx, f, dir))
-        .transpose()?;
-    let deck_file = deck_path.display().to_string();
-    let mut sc = super::moordyn::deck_scenario(
-        &deck,
-        &deck_file,
-        deck_path,
-        title,
-        added.map(|w| (ctx, w)),
-        host,
-        farm,
-    )?;
-    sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
-        .with_rods(&sc.rods, deck.points.len());
-    super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
-    let (raw_analysis, step_note) = with_deck_step(raw.analysis, &deck);
-    let (analysis, measures, initial, notes) = analysis_part(
-        ctx,
-        raw_analysis,
-        InitialShape::Static,
-        sc.has_free_bodies(),
-    )?;
-    sc.notes.extend(step_note);
-    if let Some(why) = sc
-        .static_only
-        .as_ref()
-        .filter(|_| analysis.kind == AnalysisKind::Dynamic)
-    {
-        return Err(ScenarioError(why.clone()));
-    }
-    let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
-    motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
-    sc.analysis = analysis;
-    sc.measures = measures;
-    sc.initial = initial;
-    sc.notes.extend(notes);
-    sc.notes.extend(static_waves_note(&sc));
-    sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
-    sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
-    sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
-    super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
-    sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
-    super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
-    let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
-    super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
-    Ok(sc)
-}
-
-/// The scenario's `[analysis]` with the deck's step (its dtM, or
-/// MoorDyn's step from its CFL) as `time_step` where a dynamic analysis
-/// gives none, and a note saying so: the step a coupled run of the deck
-/// takes.
-fn with_deck_step(
-    raw: Option<super::raw::RawAnalysis>,
-    deck: &crate::moordyn::Deck,
-) -> (Option<super::raw::RawAnalysis>, Option<String>) {
-    let Some(mut a) = raw else {
-        return (None, None);
-    };
-    // A missing type is a dynamic analysis (scenario/analysis.rs).
-    let dynamic = a.kind.as_deref().unwrap_or("dynamic") == "dynamic";
-    match (dynamic, a.time_step, deck.time_step()) {
-        (true, None, Some(dt)) => {
-            a.time_step = Some(dt);
-            let note = format!(
-                "analysis.time_step: the deck's step, {} s (MoorDyn's dtM, or its step from \
-                 its CFL; stancf's step is not bound by it: a larger time_step may do, \
-                 within the stable step `check` shows)",
-                stancf::error::Sig(dt)
-            );
-            (Some(a), Some(note))
-        }
-        _ => (Some(a), None),
-    }
-}
-
-/// A note that a static analysis does not see the waves of its water
-/// (statics see buoyancy and the steady current, docs/method.md §12.4).
-fn static_waves_note(sc: &SystemScenario) -> Option<String> {
-    let w = sc.water.as_ref()?;
-    let waves = !w.waves.is_empty() || w.jonswap.is_some();
-    (waves && sc.analysis.kind == super::AnalysisKind::Static).then(|| {
-        "water: a static analysis sees the water's buoyancy and steady current; its waves \
-         act in a dynamic one only"
-            .to_string()
-    })
 }
 
 /// `[[line_types]]` (none for a system of bodies and rods alone): `name`

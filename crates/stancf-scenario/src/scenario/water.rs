@@ -9,6 +9,7 @@
 //! `SeafloorFile`).
 
 use super::context::Ctx;
+pub use super::moordyn_seafloor::SeabedFile;
 use super::raw::{RawCurrent, RawJonswap, RawSeabed, RawWater, RawWave};
 use super::ScenarioError;
 use stancf::system::StaticFriction;
@@ -16,7 +17,7 @@ use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
 use stancf::water::current_grid::CurrentGrid;
 use stancf::water::spectrum::Jonswap;
 use stancf::water::waves::AiryWave;
-use stancf::water::{Bathymetry, Seabed, SeabedContact};
+use stancf::water::{Seabed, SeabedContact};
 use stancf::ModelError;
 use std::path::Path;
 use std::sync::Arc;
@@ -37,15 +38,6 @@ pub struct Water {
     pub jonswap: Option<Jonswap>,
     /// The duration (s) of the ramp that starts the waves (0: none).
     pub wave_ramp: f64,
-}
-
-/// A bed of varying height read from a MoorDyn seafloor file, and where
-/// it came from (for `stancf check`).
-#[derive(Clone, Debug, PartialEq)]
-pub struct SeabedFile {
-    pub grid: Arc<Bathymetry>,
-    /// The file and how it was found.
-    pub source: String,
 }
 
 /// The seabed's contact and friction (docs/method.md §12.2).

@@ -1,0 +1,143 @@
+//! A system whose lines, points and gravity come from a MoorDyn deck
+//! (`[system] moordyn = ...`; docs/interface.md, "MoorDyn decks"), with
+//! the scenario's motions, meshes, water keys, farm, analysis and output;
+//! and the keys that only such a scenario takes.
+
+use super::analysis::{analysis_part, AnalysisKind, InitialShape};
+use super::context::Ctx;
+use super::motions::motions;
+use super::raw::{RawScenario, RawSystem};
+use super::system_parts::SystemScenario;
+use super::water::water_keys;
+use super::ScenarioError;
+use std::path::Path;
+
+/// A system whose lines, points and gravity come from the MoorDyn deck at
+/// `deck_path` (`system.moordyn`), with the scenario's motions, meshes,
+/// water keys, analysis and output.
+pub(super) fn deck_system(
+    ctx: &Ctx,
+    raw: RawScenario,
+    (rs, deck_path): (RawSystem, &Path),
+    (title, path): (String, &Path),
+    host: &super::HostEnvironment,
+) -> Result<SystemScenario, ScenarioError> {
+    if let Some(key) = [
+        (rs.gravity.is_some(), "system.gravity"),
+        (!raw.line_types.is_empty(), "line_types"),
+        (!raw.bodies.is_empty(), "bodies"),
+        (!raw.rod_types.is_empty(), "rod_types"),
+        (!raw.rods.is_empty(), "rods"),
+        (!raw.points.is_empty(), "points"),
+        (!raw.lines.is_empty(), "lines"),
+    ]
+    .into_iter()
+    .find_map(|(present, key)| present.then_some(key))
+    {
+        return Err(ctx.err(
+            key,
+            "the MoorDyn deck of system.moordyn gives the line types, points, lines \
+             and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
+             [water] (what the deck does not give), [analysis] and [output]",
+        ));
+    }
+    let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let added = raw.water.map(|w| water_keys(ctx, w, dir)).transpose()?;
+    let farm = raw
+        .farm
+        .map(|f| super::farm::scenario_farm(ctx, f, dir))
+        .transpose()?;
+    let deck_file = deck_path.display().to_string();
+    let mut sc = super::moordyn::deck_scenario(
+        &deck,
+        &deck_file,
+        deck_path,
+        title,
+        added.map(|w| (ctx, w)),
+        host,
+        farm,
+    )?;
+    sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
+        .with_rods(&sc.rods, deck.points.len());
+    super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
+    let (raw_analysis, step_note) = with_deck_step(raw.analysis, &deck);
+    let (analysis, measures, initial, notes) = analysis_part(
+        ctx,
+        raw_analysis,
+        InitialShape::Static,
+        sc.has_free_bodies(),
+    )?;
+    sc.notes.extend(step_note);
+    if let Some(why) = sc
+        .static_only
+        .as_ref()
+        .filter(|_| analysis.kind == AnalysisKind::Dynamic)
+    {
+        return Err(ScenarioError(why.clone()));
+    }
+    let lengths: Vec<f64> = sc.lines.iter().map(|l| l.length).collect();
+    motions(ctx, &raw.motions, &mut sc.points, &lengths, path, &analysis)?;
+    sc.analysis = analysis;
+    sc.measures = measures;
+    sc.initial = initial;
+    sc.notes.extend(notes);
+    sc.notes.extend(super::sea_limits::static_waves_note(&sc));
+    sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
+    sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
+    super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
+    sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
+    super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
+    let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
+    super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
+    Ok(sc)
+}
+
+/// The scenario's `[analysis]` with the deck's step (its dtM, or
+/// MoorDyn's step from its CFL) as `time_step` where a dynamic analysis
+/// gives none, and a note saying so: the step a coupled run of the deck
+/// takes.
+fn with_deck_step(
+    raw: Option<super::raw::RawAnalysis>,
+    deck: &crate::moordyn::Deck,
+) -> (Option<super::raw::RawAnalysis>, Option<String>) {
+    let Some(mut a) = raw else {
+        return (None, None);
+    };
+    // A missing type is a dynamic analysis (scenario/analysis.rs).
+    let dynamic = a.kind.as_deref().unwrap_or("dynamic") == "dynamic";
+    match (dynamic, a.time_step, deck.time_step()) {
+        (true, None, Some(dt)) => {
+            a.time_step = Some(dt);
+            let note = format!(
+                "analysis.time_step: the deck's step, {} s (MoorDyn's dtM, or its step from \
+                 its CFL; stancf's step is not bound by it: a larger time_step may do, \
+                 within the stable step `check` shows)",
+                stancf::error::Sig(dt)
+            );
+            (Some(a), Some(note))
+        }
+        _ => (Some(a), None),
+    }
+}
+
+/// The keys only a scenario that takes a deck has, refused in a TOML
+/// system naming the key: `[farm]`, `[[mesh]]`.
+pub(super) fn refuse_deck_keys(ctx: &Ctx, raw: &RawScenario) -> Result<(), ScenarioError> {
+    if raw.farm.is_some() {
+        return Err(ctx.err(
+            "farm",
+            "gives the turbines of a FAST.Farm deck's Turbine<n> points (system.moordyn); a \
+             TOML system's points give their own positions",
+        ));
+    }
+    if !raw.mesh.is_empty() {
+        return Err(ctx.err(
+            "mesh",
+            "gives the mesh of a MoorDyn deck's lines (system.moordyn); a [[lines]] entry takes \
+             its own elements and grading",
+        ));
+    }
+    Ok(())
+}
