@@ -404,13 +404,15 @@ impl SeabedContact {
     }
 }
 
+type Mat3 = [[f64; 3]; 3];
+
 /// How friction's directions a and b turn: with the tangent r_x (W46),
 /// and on a bathymetry with the position r through the normal (W46a).
 struct Turns {
     da_rx: [[f64; 3]; 3],
     db_rx: [[f64; 3]; 3],
     /// (da/dr, db/dr), None on a plane.
-    by_position: Option<([[f64; 3]; 3], [[f64; 3]; 3])>,
+    by_position: Option<[Mat3; 2]>,
 }
 
 impl Turns {
@@ -435,7 +437,7 @@ impl Turns {
             let da_r = mat3_mul(&ia, &mat3_mul(&dw_dn, &at.d_normal));
             let mut db_r = mat3_mul(&nx, &da_r);
             add_scaled(&mut db_r, -1.0, &mat3_mul(&skew(a), &at.d_normal));
-            (da_r, db_r)
+            [da_r, db_r]
         });
         Turns {
             da_rx,
@@ -447,8 +449,8 @@ impl Turns {
     /// (de/dr_x, de/dr) of direction a (`axial`) or b.
     fn of_direction(&self, axial: bool) -> (&[[f64; 3]; 3], Option<&[[f64; 3]; 3]>) {
         match (axial, &self.by_position) {
-            (true, p) => (&self.da_rx, p.as_ref().map(|(da, _)| da)),
-            (false, p) => (&self.db_rx, p.as_ref().map(|(_, db)| db)),
+            (true, p) => (&self.da_rx, p.as_ref().map(|[da, _]| da)),
+            (false, p) => (&self.db_rx, p.as_ref().map(|[_, db]| db)),
         }
     }
 }
