@@ -6,32 +6,14 @@
 use crate::common::*;
 use std::path::Path;
 
-/// MoorDyn's WD0050_Chain test deck (410 m of chain, mu 0.5) without its
-/// water depth, its anchor at x = 400 m on a bed that falls towards the
-/// fairlead: z = -50 + 0.025 (x - 400).
-const CHAIN: &str = "--------------------- MoorDyn Input File ------------------------------------
-WD0050_Chain of MoorDyn's tests, on a sloping bed
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      0.252   390        1.674e9    -1.0        0          1.37   1.0    0.64    0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     400    0.0     -50.0    0      0       0      0
-2     Vessel    0.0     0.0     0.0     0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     chain      1        2         410       41      -
----------------------- OPTIONS -----------------------------------------
-0.001                dtM                  time step
-1.0e5                kBot                 bottom stiffness (Pa/m)
-1.0e4                cBot                 bottom damping (Pa-s/m)
-1025.0               WtrDnsty             water density (kg/m^3)
-0.5                  FrictionCoefficient  general bottom friction coefficient, as a start (-)
-------------------------- need this line --------------------------------------
-";
+/// MoorDyn's WD0050_Chain test deck without its water depth, its anchor
+/// at x = 400 m on a bed that falls towards the fairlead: z = -50 + 0.025
+/// (x - 400).
+fn chain() -> String {
+    let depth = "50                   WtrDpth              water depth (m)\n";
+    assert!(WD0050_CHAIN.contains(depth));
+    WD0050_CHAIN.replace(depth, "")
+}
 
 /// The bed's slope along x and its height at x = 0.
 const SLOPE: f64 = 0.025;
@@ -96,7 +78,7 @@ fn force_difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
 #[test]
 fn a_seafloor_file_that_is_a_plane_gives_the_tilted_beds_equilibrium_and_motion() {
     let dir = scratch("bathymetry_plane");
-    write_scenario(&dir, "deck.txt", CHAIN);
+    write_scenario(&dir, "deck.txt", &chain());
     write_scenario(&dir, "bed.txt", &plane_seafloor());
     let file = "[water.seabed]\nfile = \"bed.txt\"\n";
     let slope = format!("[water.seabed]\nslope = [{SLOPE}, 0.0]\n");
@@ -228,7 +210,7 @@ impl MapJoin for Vec<f64> {
 /// beside a seafloor file.
 #[test]
 fn a_seafloor_file_moordyn_would_misread_is_refused_by_line() {
-    let deck = CHAIN.replace(
+    let deck = chain().replace(
         "0.5                  FrictionCoefficient",
         "bed.txt SeafloorFile\n0.5                  FrictionCoefficient",
     );
@@ -255,7 +237,7 @@ fn a_seafloor_file_moordyn_would_misread_is_refused_by_line() {
         "bathymetry_and_slope",
         "[system]\nmoordyn = \"deck.txt\"\n[water]\ndepth = 60\n[water.seabed]\n\
          slope = [0.1, 0.0]\nfile = \"bed.txt\"\n",
-        &[("deck.txt", CHAIN), ("bed.txt", &plane_seafloor())],
+        &[("deck.txt", &chain()), ("bed.txt", &plane_seafloor())],
         &["water.seabed.slope", "give a slope or a file, not both"],
     );
 }

@@ -8,34 +8,6 @@ use crate::common::*;
 use std::f64::consts::PI;
 use std::path::Path;
 
-/// The deck, as MoorDyn's tests/Mooring/WD0050_Chain.txt gives it but
-/// for `dtM` in place of `cfl` and without its `fileIC`.
-const WD0050_CHAIN: &str =
-    "--------------------- MoorDyn Input File ------------------------------------
-MoorDyn input file of the mooring system for FD validation cases
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      0.252   390        1.674e9    -1.0        0          1.37   1.0    0.64    0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     400    0.0     -50.0    0      0       0      0
-2     Vessel    0.0     0.0     0.0     0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     chain      1        2         410       41      -
----------------------- OPTIONS -----------------------------------------
-0.001                dtM                  time step
-1.0e5                kBot                 bottom stiffness (Pa/m)
-1.0e4                cBot                 bottom damping (Pa-s/m)
-1025.0               WtrDnsty             water density (kg/m^3)
-50                   WtrDpth              water depth (m)
-0.5                  FrictionCoefficient  general bottom friction coefficient, as a start (-)
-------------------------- need this line -------------------------------------- 
-";
-
 /// The chain's wet weight per length (N/m).
 fn wet_weight() -> f64 {
     (390.0 - 1025.0 * PI / 4.0 * 0.252 * 0.252) * 9.80665

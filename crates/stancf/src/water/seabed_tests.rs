@@ -48,27 +48,32 @@ fn check(c: &SeabedContact, args: [[f64; 3]; 3], which: usize, h: f64) {
     }
 }
 
+/// [`check`] of all three arguments at r, `below` in the bed, with the
+/// line's tangent and velocity of these checks; the step 1e-8 within the
+/// ramp (P is quadratic there), 1e-6 beyond.
+fn check_at_depth(c: &SeabedContact, r: [f64; 3], below: f64) {
+    assert!((c.seabed.penetration(&r) - below).abs() < 1e-12);
+    let h = if below.abs() < c.ramp_width() {
+        1e-8
+    } else {
+        1e-6
+    };
+    for which in 0..3 {
+        check(c, [r, [0.8, 0.5, -0.1], [0.03, -0.02, -0.01]], which, h);
+    }
+}
+
 #[test]
 fn the_contact_force_derivatives_match_finite_differences() {
     let c = bed();
     let (point, n) = plane_of(&c);
-    let rx = [0.8, 0.5, -0.1];
-    let v = [0.03, -0.02, -0.01];
     // Deep in the bed, in the ramp, and clear of it.
     for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
         let along = [0.4, 0.9, 0.0];
         let along_n = dot(along, n);
         let r: [f64; 3] =
             std::array::from_fn(|i| point[i] + along[i] - along_n * n[i] - below * n[i]);
-        assert!((c.seabed.penetration(&r) - below).abs() < 1e-12);
-        let h = if below.abs() < c.ramp_width() {
-            1e-8
-        } else {
-            1e-6
-        };
-        for which in 0..3 {
-            check(&c, [r, rx, v], which, h);
-        }
+        check_at_depth(&c, r, below);
     }
 }
 
@@ -214,20 +219,9 @@ fn under_grid(c: &SeabedContact, x: f64, y: f64, below: f64) -> [f64; 3] {
 #[test]
 fn the_contact_force_derivatives_on_a_bathymetry_match_finite_differences() {
     let c = twisted_bed();
-    let rx = [0.8, 0.5, -0.1];
-    let v = [0.03, -0.02, -0.01];
     for (x, y) in [(-4.1, -2.2), (12.5, 6.3), (3.3, 1.1)] {
         for below in [0.01, 0.3 * c.ramp_width(), -0.01] {
-            let r = under_grid(&c, x, y, below);
-            assert!((c.seabed.penetration(&r) - below).abs() < 1e-12);
-            let h = if below.abs() < c.ramp_width() {
-                1e-8
-            } else {
-                1e-6
-            };
-            for which in 0..3 {
-                check(&c, [r, rx, v], which, h);
-            }
+            check_at_depth(&c, under_grid(&c, x, y, below), below);
         }
     }
 }

@@ -419,3 +419,34 @@ pub fn vtk_array(xml: &str, name: &str) -> Vec<f64> {
         .map(|v| v.parse::<f64>().unwrap())
         .collect()
 }
+
+/// MoorDyn's WD0050_Chain test deck (410 m of chain from an anchor on the
+/// bed at x = 400 m to a fairlead at the surface over x = 0, 50 m of
+/// water, FrictionCoefficient 0.5), as its tests/Mooring/WD0050_Chain.txt
+/// gives it but
+/// for `dtM` in place of `cfl` and without its `fileIC`.
+pub const WD0050_CHAIN: &str =
+    "--------------------- MoorDyn Input File ------------------------------------
+MoorDyn input file of the mooring system for FD validation cases
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain      0.252   390        1.674e9    -1.0        0          1.37   1.0    0.64    0.0
+---------------------- POINT PROPERTIES --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     400    0.0     -50.0    0      0       0      0
+2     Vessel    0.0     0.0     0.0     0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         410       41      -
+---------------------- OPTIONS -----------------------------------------
+0.001                dtM                  time step
+1.0e5                kBot                 bottom stiffness (Pa/m)
+1.0e4                cBot                 bottom damping (Pa-s/m)
+1025.0               WtrDnsty             water density (kg/m^3)
+50                   WtrDpth              water depth (m)
+0.5                  FrictionCoefficient  general bottom friction coefficient, as a start (-)
+------------------------- need this line -------------------------------------- 
+";
