@@ -179,7 +179,10 @@ fn classify(lower: &str) -> Option<Class> {
         "tscheme" => Some(Class::Scheme),
         "seafloorfile" => s(S::SeafloorFile),
         "waterkin" => Some(Class::Refused(
-            "MoorDyn-F water kinematics (waves, currents) are not supported",
+            "MoorDyn-F water kinematics (waves, currents) are not supported: neither its \
+             WaterKin file nor SEASTATE (the sea of OpenFAST's SeaState module) is read; give \
+             the sea as [water.waves], [water.jonswap] and [water.current] in a scenario that \
+             takes a copy of the deck without this option",
         )),
         "mu_kt" => s(S::TransverseFriction),
         "mu_ka" => s(S::AxialFriction),
