@@ -240,3 +240,50 @@ fn a_decks_body_gets_moordyns_body_file() {
     let names = summary["moordyn_out"].as_array().unwrap();
     assert!(names.iter().any(|n| n == "body_Body1.out"), "{names:?}");
 }
+
+/// A rod whose RodOutputs ask for positions and velocities gets MoorDyn's
+/// `<deck>_Rod<n>.out`: `Node<i>px py pz` then `vx vy vz` for its NumSegs
+/// + 1 nodes, the main file's widths and numbers; a static run's row is
+/// t = 0 with the nodes of the rigid rod at rest, equally spaced along
+/// its 4 m to the 8 digits written; the force flag `f` gets no columns
+/// and a note.
+#[test]
+fn a_rods_output_flags_are_moordyns_rod_file() {
+    let d = scratch("moordyn-rod-out");
+    let deck = body_rod_deck("p", "0").replace("4       -", "4       pvf");
+    let path = write_scenario(&d, "rods.txt", &deck);
+    let o = stancf(&["check", path.to_str().unwrap()]);
+    let said = text_of(&o);
+    assert!(said.contains("rod 1's RodOutputs \"pvf\""), "{said}");
+    assert!(
+        said.contains("\"f\" (forces, water, seabed) not computed"),
+        "{said}"
+    );
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let table = words(&out.join("rods_Rod1.out"));
+    assert_eq!(table[0].len(), 1 + 2 * 3 * 5);
+    assert_eq!(
+        (&table[0][1][..], &table[0][16][..]),
+        ("Node0px", "Node0vx")
+    );
+    assert_eq!((&table[1][1][..], &table[1][16][..]), ("(m)", "(m/s)"));
+    assert_eq!(table.len(), 3);
+    let row: Vec<f64> = table[2].iter().map(|w| w.parse().unwrap()).collect();
+    assert_eq!(row[0], 0.0);
+    let node = |i: usize| [row[1 + 3 * i], row[2 + 3 * i], row[3 + 3 * i]];
+    let gap = |a: [f64; 3], b: [f64; 3]| {
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    };
+    for i in 0..4 {
+        assert!((gap(node(i), node(i + 1)) - 1.0).abs() <= 1e-6, "{row:?}");
+    }
+    assert!((gap(node(0), node(4)) - 4.0).abs() <= 1e-6);
+    assert!(row[16..].iter().all(|v| *v == 0.0), "at rest: {row:?}");
+    // The zero-length rod's `p`: one node.
+    assert_eq!(
+        words(&out.join("rods_Rod2.out"))[0],
+        ["Time", "Node0px", "Node0py", "Node0pz"]
+    );
+}

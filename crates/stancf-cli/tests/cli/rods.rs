@@ -186,7 +186,8 @@ fn a_deck_with_a_rod_on_a_body_and_lines_at_its_ends_runs_to_the_balance() {
     assert!(line("body 1").contains("rods 1 fixed in it"), "{so}");
     assert!(
         so.contains(
-            "rod 2 asks for a file of its own (RodOutputs \"p\"), which stancf does not write"
+            "rod 2's RodOutputs \"p\": its file of MoorDyn's holds the node positions and \
+             velocities (p, v) it asks for"
         ),
         "{so}"
     );

@@ -202,7 +202,14 @@ fn moordyn_out_file(
         .enumerate()
         .map(|(i, b)| (i, format!("{stem}_Body{}.out", b.id)))
         .collect();
-    if channels.is_empty() && lines.is_empty() && bodies.is_empty() {
+    let rods: Vec<(usize, String, String)> = deck
+        .rods
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.wants_rod_file())
+        .map(|(i, r)| (i, format!("{stem}_Rod{}.out", r.id), r.outputs.clone()))
+        .collect();
+    if channels.is_empty() && lines.is_empty() && bodies.is_empty() && rods.is_empty() {
         return None;
     }
     let units = option("writeunits")
@@ -211,6 +218,7 @@ fn moordyn_out_file(
         main: (!channels.is_empty()).then(|| format!("{stem}.out")),
         lines,
         bodies,
+        rods,
         units,
     })
 }

@@ -424,12 +424,21 @@ pub(super) fn rod_file_notes(deck: &Deck) -> Vec<String> {
         .iter()
         .filter(|r| r.wants_rod_file())
         .map(|r| {
+            let unwritten: String = r.outputs.chars().filter(|c| !"pv".contains(*c)).collect();
             format!(
-                "line {}: rod {} asks for a file of its own (RodOutputs \"{}\"), which stancf \
-                 does not write (a free or pinned rod's pose is in bodies.csv)",
+                "line {}: rod {}'s RodOutputs \"{}\": its file of MoorDyn's holds the node \
+                 positions and velocities (p, v) it asks for{}",
                 r.line,
                 r.id,
-                crate::echo::clip(&r.outputs, 40)
+                crate::echo::clip(&r.outputs, 40),
+                if unwritten.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        "; \"{}\" (forces, water, seabed) not computed for a rod, no columns",
+                        crate::echo::clip(&unwritten, 40)
+                    )
+                }
             )
         })
         .collect()

@@ -194,6 +194,9 @@ pub struct MoorDynOutFile {
     pub lines: Vec<(usize, String, String)>,
     /// Each of the deck's bodies' files: (body index, `<stem>_Body<id>.out`).
     pub bodies: Vec<(usize, String)>,
+    /// Each rod's file and flags: (rod index, `<stem>_Rod<id>.out`, the
+    /// flags as written).
+    pub rods: Vec<(usize, String, String)>,
     /// Whether the units rows are written (MoorDyn's `WriteUnits`, 1
     /// unless the deck says 0).
     pub units: bool,
@@ -207,6 +210,7 @@ impl MoorDynOutFile {
             .cloned()
             .chain(self.lines.iter().map(|(_, name, _)| name.clone()))
             .chain(self.bodies.iter().map(|(_, name)| name.clone()))
+            .chain(self.rods.iter().map(|(_, name, _)| name.clone()))
             .collect()
     }
 }

@@ -7,6 +7,7 @@ mod bodies;
 mod moordyn_body_out;
 mod moordyn_line_out;
 mod moordyn_out;
+mod moordyn_rod_out;
 mod rods;
 mod rows;
 mod stiffness;
@@ -114,6 +115,11 @@ pub(super) fn run_system(
             damping: damped,
             water: wet,
             dynamic: sc.analysis.kind == AnalysisKind::Dynamic,
+            rod_nodes: sc
+                .rods
+                .iter()
+                .map(|r| r.rod.as_ref().map_or(0, |r| r.segments) + 1)
+                .collect(),
         },
     )
     .map_err(io_err(place.shown))?;

@@ -145,6 +145,14 @@ impl RodFrame {
         )
     }
 
+    /// Every node of the rod's segments at `row`, A to B (one for a rod
+    /// of zero length): position and velocity, MoorDyn's `r` and `rd`.
+    pub(super) fn nodes(&self, row: &SystemRow) -> Vec<([f64; 3], [f64; 3])> {
+        let s = self.state(row);
+        let segments = self.rod.as_ref().map_or(0, |r| r.segments);
+        (0..=segments).map(|k| self.node(&s, k)).collect()
+    }
+
     /// The net force of the lines attached at end `k` (0 where none is).
     fn end_tension(&self, row: &SystemRow, k: usize) -> f64 {
         self.points[k].map_or(0.0, |p| norm(row.points[p].2))

@@ -8,6 +8,7 @@ use super::bodies::BodyRow;
 use super::moordyn_body_out::BodyOut;
 use super::moordyn_line_out::LineOut;
 use super::moordyn_out::MoorDynOut;
+use super::moordyn_rod_out::RodOut;
 use super::rods::{rod_value, RodFrame};
 use super::rows::SystemRow;
 use crate::moordyn::{Axis, BodyQuantity, Channel, LineEnd, LineQuantity, PointQuantity};
@@ -37,6 +38,8 @@ pub(super) struct Extras {
     /// A dynamic run (a static one writes its equilibrium as the `.out`'s
     /// row of t = 0).
     pub dynamic: bool,
+    /// Each rod's node count (NumSegs + 1), for its MoorDyn file.
+    pub rod_nodes: Vec<usize>,
 }
 
 /// MoorDyn's `.out` files of a deck, `m`: `<deck>.out` of its OUTPUTS
@@ -47,7 +50,7 @@ fn moordyn_files(
     m: &crate::scenario::MoorDynOutFile,
     channels: &[OutputChannel],
     models: &[&Model],
-    dynamic: bool,
+    (dynamic, rod_nodes): (bool, &[usize]),
 ) -> std::io::Result<MoorDynFiles> {
     let mut line_outs: Vec<Option<LineOut>> = models.iter().map(|_| None).collect();
     for (i, name, flags) in &m.lines {
@@ -63,10 +66,19 @@ fn moordyn_files(
         .iter()
         .map(|(b, name)| BodyOut::create(dest, name, *b, m.units, !dynamic))
         .collect::<std::io::Result<_>>()?;
+    let rod_outs = m
+        .rods
+        .iter()
+        .map(|(k, name, flags)| {
+            let nodes = rod_nodes[*k];
+            RodOut::create(dest, name, (*k, nodes), flags, m.units, !dynamic)
+        })
+        .collect::<std::io::Result<_>>()?;
     Ok(MoorDynFiles {
         main,
         line_outs,
         body_outs,
+        rod_outs,
     })
 }
 
@@ -76,6 +88,7 @@ struct MoorDynFiles {
     main: Option<MoorDynOut>,
     line_outs: Vec<Option<LineOut>>,
     body_outs: Vec<BodyOut>,
+    rod_outs: Vec<RodOut>,
 }
 
 /// The files of a system run.
@@ -95,8 +108,10 @@ pub(super) struct SystemWriters {
     moordyn_out: Option<MoorDynOut>,
     /// MoorDyn's `<deck>_Line<n>.out` of each line that asks for one.
     line_outs: Vec<Option<LineOut>>,
-    /// MoorDyn's `<deck>_Body<n>.out`, one per deck body.
+    /// MoorDyn's `<deck>_Body<n>.out`, one per deck body, and
+    /// `<deck>_Rod<n>.out` of the rods that ask for one.
     body_outs: Vec<BodyOut>,
+    rod_outs: Vec<RodOut>,
     /// ParaView files (`--vtk`): one polyline per line.
     vtk: Option<crate::vtk::VtkWriter>,
     samples: Vec<StressSample>,
@@ -189,11 +204,15 @@ impl SystemWriters {
             ),
         )?;
         let md = match moordyn_out.filter(|_| files.writes("moordyn.out")) {
-            Some(m) => moordyn_files(&dest, m, channels, models, extras.dynamic)?,
+            Some(m) => {
+                let how = (extras.dynamic, &extras.rod_nodes[..]);
+                moordyn_files(&dest, m, channels, models, how)?
+            }
             None => MoorDynFiles {
                 main: None,
                 line_outs: (0..line_ids.len()).map(|_| None).collect(),
                 body_outs: Vec::new(),
+                rod_outs: Vec::new(),
             },
         };
         let channels = if channels.is_empty() || !files.writes("channels.csv") {
@@ -217,6 +236,7 @@ impl SystemWriters {
             moordyn_out: md.main,
             line_outs: md.line_outs,
             body_outs: md.body_outs,
+            rod_outs: md.rod_outs,
             lines,
             line_ids: line_ids.to_vec(),
             point_ids: point_ids.to_vec(),
@@ -248,6 +268,9 @@ impl SystemWriters {
         }
         for out in &mut self.body_outs {
             out.write_row(t, &row.bodies[out.body])?;
+        }
+        for out in &mut self.rod_outs {
+            out.write_row(t, &self.rods[out.rod].nodes(row))?;
         }
         self.write_tensions(row, t)?;
         let [kinetic, strain, gravity] = row.energies;
@@ -445,6 +468,9 @@ impl SystemWriters {
             out.commit()?;
         }
         for out in self.body_outs {
+            out.commit()?;
+        }
+        for out in self.rod_outs {
             out.commit()?;
         }
         if let Some(vtk) = self.vtk {
