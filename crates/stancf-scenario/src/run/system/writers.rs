@@ -83,12 +83,24 @@ fn moordyn_files(
 }
 
 /// MoorDyn's output files of a deck: the main file, each line's, each
-/// body's.
+/// body's, each rod's.
 struct MoorDynFiles {
     main: Option<MoorDynOut>,
     line_outs: Vec<Option<LineOut>>,
     body_outs: Vec<BodyOut>,
     rod_outs: Vec<RodOut>,
+}
+
+impl MoorDynFiles {
+    /// None of them, for a system of `lines` lines.
+    fn none(lines: usize) -> Self {
+        MoorDynFiles {
+            main: None,
+            line_outs: (0..lines).map(|_| None).collect(),
+            body_outs: Vec::new(),
+            rod_outs: Vec::new(),
+        }
+    }
 }
 
 /// The files of a system run.
@@ -208,12 +220,7 @@ impl SystemWriters {
                 let how = (extras.dynamic, &extras.rod_nodes[..]);
                 moordyn_files(&dest, m, channels, models, how)?
             }
-            None => MoorDynFiles {
-                main: None,
-                line_outs: (0..line_ids.len()).map(|_| None).collect(),
-                body_outs: Vec::new(),
-                rod_outs: Vec::new(),
-            },
+            None => MoorDynFiles::none(line_ids.len()),
         };
         let channels = if channels.is_empty() || !files.writes("channels.csv") {
             None
