@@ -21,8 +21,8 @@ is static); MoorDyn's initial-condition solvers run until they settle
 (each chunk's deck beside the deck's own files), the coupled degrees of
 freedom held where the deck puts them; each line end's tension and each
 free point's position compared. A deck's `SeafloorFile` is named
-relative to MoorDyn's working directory: MoorDyn runs from the copied
-tree's root (the folder above `tests/`), as its own test suite does.
+relative to the working directory: both codes run from the suite's root
+(the folder above `tests/`), as MoorDyn's own test suite does.
 """
 import os
 import shutil
@@ -79,6 +79,20 @@ def check_one(name, path):
         text = f.read()
     res = dict(name=name, path=path, text=text, folder=folder, deck=deck,
                contents=contents(text), rows=[])
+    # Both codes run from the suite's root (the folder above `tests/`),
+    # where a deck's SeafloorFile is named from, as MoorDyn's tests run.
+    cwd = os.getcwd()
+    tests = path.split(os.sep + "tests" + os.sep)
+    os.chdir(tests[0] if len(tests) > 1 else os.path.dirname(path))
+    try:
+        return run_both(name, path, text, res, folder, src)
+    finally:
+        os.chdir(cwd)
+
+
+def run_both(name, path, text, res, folder, src):
+    """check_one's runs, from the working directory it chose."""
+    deck = res["deck"]
     rc, reason = stancf_check(deck)
     res["check"] = (rc, reason, "")
     print("%-50s check exit %d %s" % (name, rc, reason[:100]), flush=True)
@@ -93,13 +107,7 @@ def check_one(name, path):
     md_folder = os.path.join(folder, "moordyn")
     for sub in ("first", "second"):
         shutil.copytree(src, os.path.join(md_folder, sub))
-    cwd = os.getcwd()
-    tests = path.split(os.sep + "tests" + os.sep)
-    os.chdir(tests[0] if len(tests) > 1 else os.path.dirname(path))
-    try:
-        md, runs = moordyn_settle(text, md_folder, wall_budget=WALL)
-    finally:
-        os.chdir(cwd)
+    md, runs = moordyn_settle(text, md_folder, wall_budget=WALL)
     res["moordyn"], res["moordyn_runs"] = md, runs
     for r in runs:
         print("%-50s MoorDyn %s: %s after %g s (%.0f s wall) %s" % (
