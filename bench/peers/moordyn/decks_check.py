@@ -35,7 +35,9 @@ from bodies_studies import *  # noqa: F401,F403
 import bodies_check as bc
 
 PEER_DECKS = os.environ.get("PEER_DECKS", os.path.join(race.ROOT, "..", "shared", "peer-decks"))
-DECKS_WORK = os.path.join(OUT, "decks_check")
+# The tables' and scratch's name (another for a second run in parallel).
+NAME = os.environ.get("DECKS_CHECK_NAME", "decks_check")
+DECKS_WORK = os.path.join(OUT, NAME)
 HEADER = re.compile(r"^-+ *(LINE TYPES|LINE DICTIONARY|LINES|LINE PROPERTIES|POINTS|RODS|BODIES|"
                     r"ROD TYPES)", re.IGNORECASE | re.MULTILINE)
 # MoorDyn's wall budget per solver and deck (s): lines settle within it
@@ -137,8 +139,8 @@ def write_tables(results, total, t_start):
     for res in compared:
         md += ["", "## %s" % res["name"], ""] + bc.detail_table(res)
     md += ["", "Time so far %.0f s." % (time.perf_counter() - t_start)]
-    bc.write_csv(results, os.path.join(OUT, "decks_check.csv"))
-    with open(os.path.join(OUT, "decks_check.md"), "w") as f:
+    bc.write_csv(results, os.path.join(OUT, NAME + ".csv"))
+    with open(os.path.join(OUT, NAME + ".md"), "w") as f:
         f.write("\n".join(md) + "\n")
     return md
 
