@@ -179,8 +179,8 @@ pub(super) fn deck_farm(
     }
     let note = format!(
         "POINTS: the Turbine<n> points are on {} turbines' platforms at {} (from {}), each a \
-         coupled body (bodies {} to {} after the deck's, in bodies.csv and the coupling's \
-         order), unturned at t = 0",
+         coupled body, unturned at t = 0: ids {} to {} in bodies.csv, after the deck's bodies, \
+         6 coupled degrees of freedom each in the coupling's order",
         farm.positions.len(),
         farm.positions
             .iter()
