@@ -118,6 +118,7 @@ pub unsafe extern "C" fn stancf_create_in(
         water_depth: given(water_depth),
         water_density: given(water_density),
         gravity: given(gravity),
+        turbines: None,
     };
     create_in(path, flags, &host)
 }

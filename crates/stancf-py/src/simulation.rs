@@ -128,7 +128,7 @@ impl PySimulation {
     /// `--allow-large` (the hard bound holds); the host's water depth,
     /// density and gravity fill what a MoorDyn deck leaves out.
     #[new]
-    #[pyo3(signature = (text, path, allow_large = false, water_depth = None, water_density = None, gravity = None))]
+    #[pyo3(signature = (text, path, allow_large = false, water_depth = None, water_density = None, gravity = None, turbines = None))]
     fn new(
         text: &str,
         path: PathBuf,
@@ -136,11 +136,13 @@ impl PySimulation {
         water_depth: Option<f64>,
         water_density: Option<f64>,
         gravity: Option<f64>,
+        turbines: Option<Vec<[f64; 3]>>,
     ) -> PyResult<Self> {
         let host = stancf_scenario::scenario::HostEnvironment {
             water_depth,
             water_density,
             gravity,
+            turbines,
         };
         let opened = stancf_scenario::coupling::from_text_in(text, &path, allow_large, &host)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;

@@ -7,6 +7,7 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import stancf
 
@@ -50,3 +51,18 @@ def test_each_turbine_of_a_farm_deck_is_six_coupled_degrees_of_freedom(tmp_path)
     sim.initialize(list(x1))
     f = np.array(sim.step_to(1e-3, list(x1)))
     assert np.max(np.abs(f - f1)) <= 1e-9 * np.max(np.abs(f1))
+
+
+def test_a_host_places_the_turbines_of_a_farm_deck_without_its_fast_farm_input(tmp_path):
+    deck = tmp_path / "SharedMooring2.dat"
+    shutil.copy(FIXTURES / "fast-farm-shared-mooring.dat", deck)
+    with pytest.raises(stancf.ScenarioError, match="point 1 is on turbine 1"):
+        stancf.Simulation(deck)
+    hosted = stancf.Simulation(deck, turbines=[[0.0, 0.0, 0.0], [1600.0, 0.0, 0.0]])
+    f_hosted = np.array(hosted.initialize(hosted.initial_positions()))
+    (tmp_path / "FAST.Farm.fstf").write_text(FSTF)
+    beside = stancf.Simulation(deck)
+    f_beside = np.array(beside.initialize(beside.initial_positions()))
+    assert np.array_equal(f_hosted, f_beside)
+    with pytest.raises(ValueError, match="each turbine's position is"):
+        stancf.Simulation(deck, turbines=[[0.0, 0.0]])

@@ -119,7 +119,10 @@ class Simulation:
     (m/s^2) are what a host gives a MoorDyn deck before init, as OpenFAST
     gives MoorDyn-F its depth, density and g: used where the deck leaves
     them out (a glue code's deck has no WtrDpth), the deck's own where it
-    gives them (``check`` notes which).
+    gives them (``check`` notes which). ``turbines``, a sequence of
+    [x, y, z] (m), places a FAST.Farm deck's turbines (turbine n at index
+    n - 1), as FAST.Farm gives them; without it, the FAST.Farm input
+    beside the deck that names it does.
 
     One ``step_to`` takes at most ``max_interval_steps`` internal steps
     (100 000 unless set, here or as ``Simulation(..., max_interval_steps=n)``);
@@ -146,14 +149,19 @@ class Simulation:
         water_depth=None,
         water_density=None,
         gravity=None,
+        turbines=None,
     ):
         if isinstance(scenario_or_deck, Scenario):
             text, name = scenario_or_deck.text, scenario_or_deck.name
         else:
             path = Path(scenario_or_deck)
             text, name = _stancf.read_input(str(path)), str(path)
+        if turbines is not None:
+            turbines = [[float(c) for c in p] for p in turbines]
+            if any(len(p) != 3 for p in turbines):
+                raise ValueError("turbines: each turbine's position is [x, y, z]")
         self._sim = _stancf.Simulation(
-            text, name, bool(allow_large), water_depth, water_density, gravity
+            text, name, bool(allow_large), water_depth, water_density, gravity, turbines
         )
         if max_interval_steps is not None:
             self.max_interval_steps = max_interval_steps

@@ -11,8 +11,9 @@ use super::water::WaterKeys;
 use crate::moordyn::{Deck, SupportedOption};
 use stancf::error::Sig;
 
-/// The host's sea and gravity; None where the host says nothing.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// The host's sea and gravity, and a farm's turbines; None where the host
+/// says nothing.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct HostEnvironment {
     /// m, positive.
     pub water_depth: Option<f64>,
@@ -20,6 +21,10 @@ pub struct HostEnvironment {
     pub water_density: Option<f64>,
     /// m/s^2, the magnitude, positive.
     pub gravity: Option<f64>,
+    /// The turbines' positions (m) of a FAST.Farm deck's `Turbine<n>`
+    /// points, turbine n at index n - 1, as FAST.Farm gives them
+    /// (`super::farm`); a scenario's `[farm]` wins.
+    pub turbines: Option<Vec<[f64; 3]>>,
 }
 
 impl HostEnvironment {
@@ -28,11 +33,12 @@ impl HostEnvironment {
         water_depth: None,
         water_density: None,
         gravity: None,
+        turbines: None,
     };
 
     /// Refused naming the quantity: a value that is not finite and
     /// positive.
-    pub fn checked(self) -> Result<Self, String> {
+    pub fn checked(&self) -> Result<&Self, String> {
         for (name, unit, v) in [
             ("water depth", "m", self.water_depth),
             ("water density", "kg/m^3", self.water_density),
@@ -45,6 +51,16 @@ impl HostEnvironment {
                     ));
                 }
             }
+        }
+        let turbines = self.turbines.iter().flatten().enumerate();
+        if let Some((k, p)) = turbines
+            .clone()
+            .find(|(_, p)| p.iter().any(|c| !c.is_finite()))
+        {
+            return Err(format!(
+                "the host's turbine {} is at {p:?}; its position must be finite",
+                k + 1
+            ));
         }
         Ok(self)
     }

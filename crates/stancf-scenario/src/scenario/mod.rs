@@ -130,7 +130,7 @@ pub fn parse_input_with(
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
         let title = title_of(None, path);
-        let sc = moordyn::deck_scenario(&deck, file, path, title, None, &host, None)?;
+        let sc = moordyn::deck_scenario(&deck, file, path, title, None, host, None)?;
         return Ok(Input::System(Box::new(sc)));
     }
     let ctx = Ctx { file };

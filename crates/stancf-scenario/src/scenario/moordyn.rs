@@ -60,6 +60,12 @@ pub(super) fn deck_scenario(
     farm: Option<super::farm::Farm>,
 ) -> Result<SystemScenario, ScenarioError> {
     let g = deck_gravity(deck, file, host)?;
+    let farm = farm.or_else(|| {
+        host.turbines.clone().map(|positions| super::farm::Farm {
+            positions,
+            source: "the host".into(),
+        })
+    });
     let (farm, farm_note) = super::farm::deck_farm(deck, file, path, farm)?;
     let (waves, wave_note) = super::moordyn_waves::deck_waves(deck, file, path)?;
     let (keys, current_note) = deck_water_keys(deck, file, path)?;
