@@ -80,6 +80,16 @@ StancfSystem *stancf_create_with(const char *path, unsigned int flags);
 StancfSystem *stancf_create_in(const char *path, unsigned int flags, double water_depth,
                                double water_density, double gravity);
 
+/* stancf_create_with for a FAST.Farm farm-level deck whose turbines the
+   host places, as FAST.Farm gives MoorDyn-F its turbines' positions:
+   positions holds n_turbines triples x, y, z (m), turbine n's at index
+   3 (n - 1); each turbine's platform is then 6 coupled degrees of freedom
+   (docs/interface.md, "FAST.Farm's farm-level decks"). NULL positions
+   with n_turbines > 0, more than 100000 turbines, or a position not
+   finite: NULL, the message naming it. */
+StancfSystem *stancf_create_farm(const char *path, unsigned int flags, unsigned int n_turbines,
+                                 const double *positions);
+
 /* Frees the system; s is refused from then on (a second close too). */
 int stancf_close(StancfSystem *s);
 

@@ -22,7 +22,7 @@ pub mod lines;
 pub use bodies::*;
 pub use lines::*;
 
-use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT_FILE};
+use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT, STANCF_INVALID_INPUT_FILE};
 use stancf::coupling::{CoupledForces, CoupledState};
 use stancf_scenario::coupling::Coupled;
 use stancf_scenario::scenario::HostEnvironment;
@@ -119,6 +119,54 @@ pub unsafe extern "C" fn stancf_create_in(
         water_density: given(water_density),
         gravity: given(gravity),
         turbines: None,
+    };
+    create_in(path, flags, &host)
+}
+
+/// The most turbines `stancf_create_farm` reads (a farm of a hundred
+/// thousand turbines is far beyond any; a wrong count must not read the
+/// host's memory without end).
+const MAX_TURBINES: c_uint = 100_000;
+
+/// `stancf_create_with` for a FAST.Farm farm-level deck whose turbines the
+/// host places, as FAST.Farm gives MoorDyn-F its turbines' positions:
+/// `positions` holds `n_turbines` triples x, y, z (m), turbine n's at
+/// index 3 (n - 1) (docs/interface.md, "FAST.Farm's farm-level decks").
+/// NULL `positions` with `n_turbines` > 0, more than 100 000 turbines, or
+/// a position not finite: NULL, the message naming it.
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string; `positions` is NULL or
+/// holds 3 `n_turbines` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_create_farm(
+    path: *const c_char,
+    flags: c_uint,
+    n_turbines: c_uint,
+    positions: *const f64,
+) -> *mut StancfSystem {
+    if n_turbines > MAX_TURBINES || (n_turbines > 0 && positions.is_null()) {
+        return guard_ptr(|| {
+            Err(Error::new(
+                STANCF_INVALID_INPUT,
+                format!(
+                    "positions: {n_turbines} turbines given with {} (at most {MAX_TURBINES}, \
+                     each x, y, z)",
+                    if positions.is_null() {
+                        "no positions"
+                    } else {
+                        "positions"
+                    }
+                ),
+            ))
+        });
+    }
+    let turbines = (0..n_turbines as usize)
+        .map(|k| std::array::from_fn(|c| *positions.add(3 * k + c)))
+        .collect();
+    let host = HostEnvironment {
+        turbines: Some(turbines),
+        ..HostEnvironment::NONE
     };
     create_in(path, flags, &host)
 }

@@ -131,3 +131,44 @@ fn a_deck_waiting_for_a_hosts_wave_kinematics_is_refused() {
         message()
     );
 }
+
+/// A FAST.Farm farm-level deck (OpenFAST r-test's MD_Shared) opened with
+/// the host's turbine positions (`stancf_create_farm`): two platforms of
+/// 6 coupled degrees of freedom each, at the positions given; no
+/// positions for its Turbine<n> points, or NULL ones, refused.
+#[test]
+fn a_host_places_a_farm_decks_turbines() {
+    let deck = scratch("capi_farm").join("SharedMooring2.dat");
+    std::fs::copy(
+        repo("crates/stancf-cli/tests/fixtures/fast-farm-shared-mooring.dat"),
+        &deck,
+    )
+    .unwrap();
+    let c = cstring(&deck);
+    let positions = [0.0, 0.0, 0.0, 1600.0, 0.0, 0.0];
+    let s = unsafe { stancf_create_farm(c.as_ptr(), 0, 2, positions.as_ptr()) };
+    assert!(!s.is_null(), "{}", message());
+    let mut n = 0u32;
+    let mut x = [0.0; 12];
+    unsafe {
+        assert_eq!(stancf_ncoupled_dof(s, &mut n), STANCF_SUCCESS);
+        assert_eq!(n, 12);
+        assert_eq!(stancf_coupled_positions(s, x.as_mut_ptr()), STANCF_SUCCESS);
+        assert_eq!(stancf_close(s), STANCF_SUCCESS);
+    }
+    assert_eq!((x[0], x[6]), (0.0, 1600.0));
+    let none = unsafe { stancf_create_in(c.as_ptr(), 0, 0.0, 0.0, 0.0) };
+    assert!(none.is_null());
+    assert!(
+        message().contains("point 1 is on turbine 1"),
+        "{}",
+        message()
+    );
+    let null = unsafe { stancf_create_farm(c.as_ptr(), 0, 2, std::ptr::null()) };
+    assert!(null.is_null());
+    assert!(
+        message().contains("2 turbines given with no positions"),
+        "{}",
+        message()
+    );
+}
