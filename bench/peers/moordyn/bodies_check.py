@@ -84,16 +84,9 @@ def check_deck(name, path):
         f.write(text)
     res = dict(name=name, path=path, text=text, folder=folder, deck=deck,
                contents=contents(text), rows=[])
-    rc, reason = stancf_check(deck)
-    res["check"] = (rc, reason, refusal_chain(text, folder, reason) if rc == 2 else "")
-    print("%-32s check exit %d %s" % (name, rc, reason[:100]), flush=True)
-    if rc != 0:
-        res["moordyn_reads"] = moordyn_reads(deck)
+    st = check_and_solve(res, lambda reason: refusal_chain(text, folder, reason))
+    if st is None:
         return res
-    st = stancf_run(deck, os.path.join(folder, "stancf"))
-    res["stancf"] = st
-    print("%-32s stancf run exit %d in %.2f s %s" % (name, st["rc"], st["wall"], st["error"][:120]),
-          flush=True)
     md, runs = moordyn_settle(text, os.path.join(folder, "moordyn"))
     res["moordyn"], res["moordyn_runs"] = md, runs
     for r in runs:

@@ -19,6 +19,26 @@ def stancf_check(path):
     return p.returncode, reason
 
 
+def check_and_solve(res, chain=None):
+    """Steps 1 and 2 of a deck `res` (name, deck, folder): `stancf check`,
+    its refusal recorded (with `chain(reason)`, where given, the reason
+    a copy without the integrator options is refused for) and whether
+    MoorDyn reads the deck; else stancf's equilibrium. Returns stancf's
+    run (stancf_run), None for a refused deck."""
+    name, deck = res["name"], res["deck"]
+    rc, reason = stancf_check(deck)
+    res["check"] = (rc, reason, chain(reason) if chain and rc == 2 else "")
+    print("%-32s check exit %d %s" % (name, rc, reason[:100]), flush=True)
+    if rc != 0:
+        res["moordyn_reads"] = moordyn_reads(deck)
+        return None
+    st = stancf_run(deck, os.path.join(res["folder"], "stancf"))
+    res["stancf"] = st
+    print("%-32s stancf run exit %d in %.2f s %s" % (name, st["rc"], st["wall"], st["error"][:120]),
+          flush=True)
+    return st
+
+
 def refusal_chain(text, folder, reason):
     """Where a deck is refused for a time-integration option (tScheme,
     cfl: MoorDyn's integrator and its step, which no equilibrium depends

@@ -94,17 +94,9 @@ def check_one(name, path):
 
 def run_both(name, path, text, res, folder, src):
     """check_one's runs, from the working directory it chose."""
-    deck = res["deck"]
-    rc, reason = stancf_check(deck)
-    res["check"] = (rc, reason, "")
-    print("%-50s check exit %d %s" % (name, rc, reason[:100]), flush=True)
-    if rc != 0:
-        res["moordyn_reads"] = moordyn_reads(deck)
+    st = check_and_solve(res)
+    if st is None:
         return res
-    st = stancf_run(deck, os.path.join(folder, "stancf"))
-    res["stancf"] = st
-    print("%-50s stancf exit %d in %.2f s %s" % (name, st["rc"], st["wall"], st["error"][:100]),
-          flush=True)
     # Each MoorDyn chunk's deck beside the deck's own files.
     md_folder = os.path.join(folder, "moordyn")
     for sub in ("first", "second"):
