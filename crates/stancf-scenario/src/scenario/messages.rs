@@ -15,6 +15,18 @@ pub(super) fn finite_word(word: &str, at: usize) -> Result<f64, String> {
         .ok_or_else(|| format!("line {at}: \"{}\" is not a finite number", clip(word, 60)))
 }
 
+/// A number as MoorDyn's `stof` reads it: a finite float.
+pub(super) fn stof_word(word: &str, at: usize) -> Result<f64, String> {
+    let v = finite_word(word, at)? as f32;
+    if v.is_finite() {
+        Ok(f64::from(v))
+    } else {
+        Err(format!(
+            "line {at}: {word} is beyond single precision, in which MoorDyn reads the file"
+        ))
+    }
+}
+
 /// A TOML value in a message: its type and (clipped) value.
 pub(super) fn describe_value(v: &toml::Value) -> String {
     match v {

@@ -137,7 +137,7 @@ pub fn parse_input_with(
     let raw = raw_scenario(text, file)?;
     if raw.is_system() {
         let title = title_of(raw.title.clone(), path);
-        return system::system_scenario(&ctx, raw, title, path, &host)
+        return system::system_scenario(&ctx, raw, title, path, host)
             .map(|sc| Input::System(Box::new(sc)));
     }
     cable_scenario(&ctx, raw, path).map(|sc| Input::Cable(Box::new(sc)))

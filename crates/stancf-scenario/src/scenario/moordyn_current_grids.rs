@@ -70,7 +70,7 @@ pub fn read_dynamic_profile(text: &str) -> Result<CurrentGrid, String> {
     };
     let depths = depth_words
         .iter()
-        .map(|w| number(w, at_depths).map(|v| v as f32 as f64))
+        .map(|w| super::messages::stof_word(w, at_depths))
         .collect::<Result<Vec<f64>, String>>()?;
     if depths.is_empty() {
         return Err(format!(

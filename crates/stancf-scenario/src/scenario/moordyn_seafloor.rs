@@ -19,7 +19,7 @@
 //! Blank lines are skipped; ticks must rise strictly (MoorDyn's
 //! interpolation assumes it).
 
-use super::messages::finite_word;
+use super::messages::stof_word as float_word;
 use super::ScenarioError;
 use crate::moordyn::{Deck, SupportedOption};
 use stancf::error::Sig;
@@ -34,18 +34,6 @@ pub struct SeabedFile {
     pub grid: Arc<Bathymetry>,
     /// The file and how it was found.
     pub source: String,
-}
-
-/// A number as MoorDyn's `stof` reads it: a finite float.
-fn float_word(word: &str, at: usize) -> Result<f64, String> {
-    let v = finite_word(word, at)? as f32;
-    if v.is_finite() {
-        Ok(f64::from(v))
-    } else {
-        Err(format!(
-            "line {at}: {word} is beyond single precision, in which MoorDyn reads the file"
-        ))
-    }
 }
 
 /// A count of ticks: a whole number >= 1 (MoorDyn's `stoi`).
