@@ -242,8 +242,9 @@ fn a_decks_body_gets_moordyns_body_file() {
 }
 
 /// A rod whose RodOutputs ask for positions and velocities gets MoorDyn's
-/// `<deck>_Rod<n>.out`: `Node<i>px py pz` then `vx vy vz` for its NumSegs
-/// + 1 nodes, the main file's widths and numbers; a static run's row is
+/// `<deck>_Rod<n>.out`: `Node<i>px py pz` then `vx vy vz` for each of its
+/// nodes (NumSegs and one), the main file's widths and numbers; a static
+/// run's row is
 /// t = 0 with the nodes of the rigid rod at rest, equally spaced along
 /// its 4 m to the 8 digits written; the force flag `f` gets no columns
 /// and a note.
