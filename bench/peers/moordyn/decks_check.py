@@ -21,8 +21,8 @@ is static); MoorDyn's initial-condition solvers run until they settle
 (each chunk's deck beside the deck's own files), the coupled degrees of
 freedom held where the deck puts them; each line end's tension and each
 free point's position compared. A deck's `SeafloorFile` is named
-relative to the working directory: both codes run from the suite's root
-(the folder above `tests/`), as MoorDyn's own test suite does.
+relative to the working directory: both codes run from the suite's
+`tests/` folder, as MoorDyn's own test suite does.
 """
 import os
 import shutil
@@ -81,11 +81,12 @@ def check_one(name, path):
         text = f.read()
     res = dict(name=name, path=path, text=text, folder=folder, deck=deck,
                contents=contents(text), rows=[])
-    # Both codes run from the suite's root (the folder above `tests/`),
-    # where a deck's SeafloorFile is named from, as MoorDyn's tests run.
+    # Both codes run from the suite's `tests/` folder, where a deck's
+    # SeafloorFile is named from (`Mooring/3D_seafloor/...`), as MoorDyn's
+    # tests run.
     cwd = os.getcwd()
     tests = path.split(os.sep + "tests" + os.sep)
-    os.chdir(tests[0] if len(tests) > 1 else os.path.dirname(path))
+    os.chdir(os.path.join(tests[0], "tests") if len(tests) > 1 else os.path.dirname(path))
     try:
         return run_both(name, path, text, res, folder, src)
     finally:

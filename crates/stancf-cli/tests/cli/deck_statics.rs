@@ -298,3 +298,77 @@ fn an_old_point_rows_constant_force_acts_on_its_free_point() {
         &[],
     );
 }
+
+/// OpenFAST's r-test deck md_bodyDrag: a 10 kg body (no volume) set 5 m
+/// over its anchor on a spring line of 4.5 m (EA 500 N, 1.95 kg/m wet).
+/// The line cannot hold it up, so it falls past its anchor and hangs
+/// below it on the taut line, stretched by its weight and the line's:
+///
+///   z = z_anchor - L - (P L + w L^2 / 2) / EA = -10.770207 m
+///
+/// (MoorDyn 2.7's initial conditions: -10.7702). The catenary network
+/// passes the vertical line through its slack, folded state (docs/
+/// method.md §11.6, (M32d)); before it, the static solve ended with the
+/// body on top of the line held up as a strut in compression (174 N,
+/// warned of). The same for a free point of the same weight. The claim:
+/// the closed form to 1e-8 m (the straight line's quadratic stretch is
+/// in the cubic elements' span, so what remains is the solve's
+/// tolerance), and no compression warned of.
+#[test]
+fn a_weight_set_over_its_anchor_falls_past_it_and_hangs_below() {
+    let deck = |object: &str, point: &str| {
+        format!(
+            "A weight set over its anchor\n\
+             --- LINE TYPES ---\n\
+             TypeName Diam MassDenInAir EA BA/-zeta EI Can Cat Cdn Cdt\n\
+             (-) (m) (kg/m) (N) (Pa-s/-) (n-m^2) (-) (-) (-) (-)\n\
+             spring 0.1 10.0 500.0 -0.4 0.0 0.0 0.0 0.0 0.00\n\
+             {object}\
+             --- POINTS ---\n\
+             ID Attachment X Y Z M V CdA CA\n\
+             (-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+             {point}\n\
+             2 Fixed 0.0 0 -5 0 0 0 0\n\
+             --- LINES ---\n\
+             ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs\n\
+             (-) (-) (-) (-) (m) (-) (-)\n\
+             1 spring 1 2 4.5 1 -\n\
+             --- SOLVER OPTIONS ---\n\
+             9.81 g\n0.002 dtM\n15 WtrDpth\n--- need this line ---\n"
+        )
+    };
+    let body = "--- BODIES ---\n\
+                ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca\n\
+                (#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n\
+                1 free 0 0 0 0 -90 0 1e1 0 5 0 0.1 0\n";
+    let (g, rho, length, ea) = (9.81, 1025.0, 4.5, 500.0);
+    let w = (10.0 - rho * std::f64::consts::PI / 4.0 * 0.1f64.powi(2)) * g;
+    let p = 10.0 * g;
+    let z = -5.0 - length - (p * length + 0.5 * w * length * length) / ea;
+    let d = scratch("weight-over-anchor");
+    for (name, deck_text, table, column) in [
+        (
+            "body",
+            deck(body, "1 Body1 0.0 0 0 0 0 0 0"),
+            "bodies.csv",
+            "z",
+        ),
+        (
+            "point",
+            deck("", "1 Free 0.0 0 0 10 0 0 0"),
+            "points.csv",
+            "z",
+        ),
+    ] {
+        let path = write_scenario(&d, &format!("{name}.txt"), &deck_text);
+        let out = d.join(format!("out-{name}"));
+        let o = run_quiet(&path, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        assert!(!text(&o).1.contains("shortens"), "{}", text(&o).1);
+        let (h, rows) = read_csv(&out.join(table));
+        let col = h.iter().position(|c| c == column).unwrap();
+        let got = rows[0][col];
+        eprintln!("{name}: z = {got} m against {z} m");
+        assert!((got - z).abs() < 1e-8, "{name}: z = {got} against {z}");
+    }
+}

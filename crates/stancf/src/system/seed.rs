@@ -164,9 +164,87 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
 pub(super) enum SeedShape {
     Catenary(Catenary),
     Resting(Resting),
-    /// No catenary (a slack weightless or vertical line): straight, and
-    /// no force on its ends.
+    /// A slack vertical line folded under its lower end (M32d): the
+    /// state straight between its ends, the folded line's end forces.
+    Folded(Folded),
+    /// No catenary (a slack weightless line, or a slack vertical one
+    /// whose fold would reach into its bed): straight, and no force on
+    /// its ends.
     Straight,
+}
+
+/// A slack line whose ends are one above the other, hanging as the
+/// limit of its catenary as the span goes to zero (docs/method.md
+/// §11.6, (M32d)): the line falls from each end to a fold below the
+/// lower one, the upper side's unstretched length s_u and the lower
+/// side's s_l with
+///
+/// ```text
+///   s_u + s_l = L,   (s_u - s_l) (1 + w L / (2 EA)) = |rise|,
+///   f_upper = w s_u g^,   f_lower = w s_l g^                          (M32d)
+/// ```
+///
+/// (each side stretched by its own weight, w s^2 / (2 EA); g^ the
+/// direction of gravity). At s_l = 0 it is the taut vertical line whose
+/// lower end is at zero tension, so the end forces are continuous as the
+/// line goes from taut to slack. A free point or body that hangs below
+/// its anchor passes this way in the catenary network: from above the
+/// anchor it falls, the fold pulling it down, past the anchor, until the
+/// line is taut under it.
+pub(super) struct Folded {
+    /// The force on end A and on end B.
+    forces: [[f64; 3]; 2],
+}
+
+/// (M32d) for a line between a and b, if it is vertical and slack, has
+/// weight, and its fold stays above its bed.
+fn folded_vertical(
+    model: &Model,
+    line: CatenaryLine,
+    a: [f64; 3],
+    b: [f64; 3],
+    gravity: [f64; 3],
+) -> Option<Folded> {
+    let g = norm(gravity);
+    if g == 0.0 || line.weight <= 0.0 || !(line.ea > 0.0) {
+        return None;
+    }
+    let down = gravity.map(|c| c / g);
+    let chord: [f64; 3] = std::array::from_fn(|k| b[k] - a[k]);
+    let drop_ab = crate::vec3::dot(chord, down);
+    let across: [f64; 3] = std::array::from_fn(|k| chord[k] - drop_ab * down[k]);
+    if norm(across) > 1e-12 * norm(chord).max(line.length) {
+        return None;
+    }
+    let w = line.weight;
+    let (upper_side, lower_side) = fold_sides(line, drop_ab.abs())?;
+    // End B below end A when the chord from A to B points down.
+    let (lower, upper_end) = if drop_ab > 0.0 { (b, 0) } else { (a, 1) };
+    if let Some(bed) = model.seabed.as_ref() {
+        let bottom: [f64; 3] = std::array::from_fn(|k| {
+            lower[k] + down[k] * lower_side * (1.0 + w * lower_side / (2.0 * line.ea))
+        });
+        if bed.seabed.penetration(&bottom) > 0.0 {
+            return None;
+        }
+    }
+    let mut forces = [[0.0; 3]; 2];
+    forces[upper_end] = down.map(|c| w * upper_side * c);
+    forces[1 - upper_end] = down.map(|c| w * lower_side * c);
+    Some(Folded { forces })
+}
+
+/// The unstretched lengths (s_u, s_l) of (M32d)'s upper and lower sides
+/// of a vertical line whose ends are `drop` apart; None where it is taut
+/// (s_l would be negative: |rise| >= L (1 + w L / (2 EA))).
+fn fold_sides(line: CatenaryLine, drop: f64) -> Option<(f64, f64)> {
+    let length = line.length;
+    let difference = drop / (1.0 + line.weight * length / (2.0 * line.ea));
+    if difference >= length {
+        return None;
+    }
+    let lower_side = 0.5 * (length - difference);
+    Some((length - lower_side, lower_side))
 }
 
 /// Line `line`'s seed shape from `a` to `b` (see [`catenary_states`]).
@@ -200,7 +278,8 @@ pub(super) fn seed_shape(system: &System, line: usize, a: [f64; 3], b: [f64; 3])
                 None => SeedShape::Catenary(c),
             }
         }
-        _ => SeedShape::Straight,
+        _ => folded_vertical(model, cat_line, a, b, direction)
+            .map_or(SeedShape::Straight, SeedShape::Folded),
     }
 }
 
@@ -212,7 +291,7 @@ impl SeedShape {
                 (c.position(x), c.derivative(x), c.second_derivative(x))
             }),
             SeedShape::Resting(rest) => shaped(model, |x| rest.at(x)),
-            SeedShape::Straight => straight_between(model, a, b),
+            SeedShape::Folded(_) | SeedShape::Straight => straight_between(model, a, b),
         }
     }
 
@@ -233,6 +312,7 @@ impl SeedShape {
                     [-sol.hf * hx, -sol.hf * hy, -sol.vf]
                 }
             }
+            SeedShape::Folded(fold) => fold.forces[end],
             SeedShape::Straight => [0.0; 3],
         }
     }
@@ -414,5 +494,47 @@ impl Resting {
         let rx = std::array::from_fn(|k| sign * (p[k] - m[k]) / (2.0 * h));
         let rxx = std::array::from_fn(|k| (p[k] - 2.0 * o[k] + m[k]) / (h * h));
         (r, rx, rxx)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// (M32d)'s sides meet the taut vertical catenary (§11.1) where the
+    /// line goes slack: just below the drop L (1 + w L / (2 EA)) the
+    /// lower side's length, and so its end's pull w s_l, goes to zero,
+    /// and the upper end's pull to w L, as the taut line's end forces
+    /// just above it; and the sides always add up to L.
+    #[test]
+    fn a_folded_vertical_lines_end_forces_meet_the_taut_lines() {
+        let line = CatenaryLine {
+            length: 4.5,
+            weight: 19.127,
+            ea: 500.0,
+        };
+        let taut_from = line.length * (1.0 + line.weight * line.length / (2.0 * line.ea));
+        let (upper, lower) = fold_sides(line, taut_from * (1.0 - 1e-9)).unwrap();
+        assert!((upper + lower - line.length).abs() < 1e-14);
+        let taut = Catenary::between(
+            line,
+            [0.0; 3],
+            [0.0, 0.0, -taut_from * (1.0 + 1e-9)],
+            [0.0, 0.0, -1.0],
+        )
+        .unwrap();
+        let (top, bottom) = (taut.end_force(LineEnd::A), taut.end_force(LineEnd::B));
+        let scale = line.weight * line.length;
+        assert!(
+            (line.weight * upper - top[2].abs()).abs() < 1e-6 * scale,
+            "{upper} {top:?}"
+        );
+        assert!(
+            (line.weight * lower - bottom[2].abs()).abs() < 1e-6 * scale,
+            "{lower} {bottom:?}"
+        );
+        assert!(fold_sides(line, taut_from * (1.0 + 1e-9)).is_none());
+        let (upper, lower) = fold_sides(line, 0.0).unwrap();
+        assert_eq!(upper, lower);
     }
 }
