@@ -45,6 +45,7 @@ pub mod bordered;
 pub mod catenary;
 pub mod constraints;
 pub mod coupling;
+pub mod damping;
 pub mod element;
 pub mod error;
 pub mod integrator;

@@ -161,7 +161,12 @@ fn attachment(row: &Row) -> Result<BodyAttachment, DeckError> {
 
 /// The bar-separated values of column `col` (`a|b|c`), each a finite
 /// number (`non_negative`: also >= 0).
-fn bars(row: &Row, col: usize, what: &str, non_negative: bool) -> Result<Vec<f64>, DeckError> {
+pub(crate) fn bars(
+    row: &Row,
+    col: usize,
+    what: &str,
+    non_negative: bool,
+) -> Result<Vec<f64>, DeckError> {
     let w = row.words[col];
     let mut out = Vec::new();
     for (k, piece) in w.split('|').enumerate() {

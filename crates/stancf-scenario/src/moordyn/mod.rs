@@ -34,6 +34,7 @@ mod bodies;
 mod channel_units;
 mod channels;
 mod ends;
+pub mod external_loads;
 mod layout;
 mod options;
 mod rods;
@@ -76,6 +77,8 @@ pub struct Deck {
     pub options: Vec<DeckOption>,
     /// `OUTPUTS` (or `OUTPUT`), in file order.
     pub outputs: Vec<Output>,
+    /// MoorDyn-F's `EXTERNAL LOADS`, in file order.
+    pub external_loads: Vec<external_loads::DeckExternalLoad>,
 }
 
 /// A row of `LINE TYPES`: `TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx
@@ -353,6 +356,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     let mut raw_lines = Vec::new();
     let mut options = Vec::new();
     let mut raw_outputs = Vec::new();
+    let mut external_rows = None;
     for section in &layout.sections {
         use layout::SectionKind as K;
         match section.kind {
@@ -365,6 +369,8 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
             K::Lines => raw_lines = sections::lines(section)?,
             K::Options => options = options::read(section)?,
             K::Outputs => raw_outputs = channels::words(section)?,
+            // Read once the points and bodies are.
+            K::ExternalLoads => external_rows = Some(section),
             other => sections::refuse_rows(section, other)?,
         }
     }
@@ -373,6 +379,10 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         None => Vec::new(),
     };
     bodies::check_body_points(&points, &bodies)?;
+    let external_loads = match external_rows {
+        Some(section) => external_loads::external_loads(section, &points, &bodies)?,
+        None => Vec::new(),
+    };
     bodies::check_turbine_points(&points)?;
     let lines = sections::link_lines(raw_lines, &line_types, &points)?;
     if lines.is_empty() && bodies.is_empty() && rods.is_empty() {
@@ -393,6 +403,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         lines,
         options,
         outputs,
+        external_loads,
     })
 }
 

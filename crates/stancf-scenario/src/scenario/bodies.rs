@@ -60,6 +60,12 @@ pub struct SystemBody {
     /// (global, N and N m; docs/method.md §15.13).
     pub force: [f64; 3],
     pub moment: [f64; 3],
+    /// A constant force at the reference point fixed in the body's axes
+    /// (N), and the reference point's damping along the global and the
+    /// body's axes (MoorDyn-F's EXTERNAL LOADS, docs/method.md §15.21).
+    pub body_force: [f64; 3],
+    pub damping: stancf::damping::AxisDamping,
+    pub body_damping: stancf::damping::AxisDamping,
     /// A free body pinned at its reference point to a coupled point (its
     /// index among the points) that a host moves: MoorDyn's
     /// CoupledPinned body (docs/method.md §15.17).
@@ -90,6 +96,9 @@ impl SystemBody {
             angular_velocity: [0.0; 3],
             force: [0.0; 3],
             moment: [0.0; 3],
+            body_force: [0.0; 3],
+            damping: Default::default(),
+            body_damping: Default::default(),
             host_pin: None,
             connector_axis: None,
         }
@@ -155,7 +164,7 @@ pub fn moments_of_a_body(m: [f64; 3]) -> bool {
 }
 
 /// The keys of `[[bodies]]` that only a free body takes.
-const FREE_KEYS: [&str; 11] = [
+const FREE_KEYS: [&str; 16] = [
     "mass",
     "centre_of_mass",
     "inertia",
@@ -167,6 +176,11 @@ const FREE_KEYS: [&str; 11] = [
     "angular_velocity",
     "force",
     "moment",
+    "body_force",
+    "damping_linear",
+    "damping_quadratic",
+    "body_damping_linear",
+    "body_damping_quadratic",
 ];
 
 /// `[[bodies]]`: `id` (required, unique), `type` ("free", "fixed" or
@@ -251,10 +265,7 @@ fn free_body(
             ),
         ));
     }
-    let optional = |k: &str, v: &Option<Vec<f64>>| match v {
-        Some(v) => non_negative_vector(ctx, &key(k), v),
-        None => Ok([0.0; 3]),
-    };
+    let optional = |k: &str, v: &Option<Vec<f64>>| optional_non_negative(ctx, &key(k), v);
     Ok(SystemBody {
         mass,
         centre_of_mass: ctx.vector_or(
@@ -278,8 +289,29 @@ fn free_body(
         )?,
         force: ctx.vector_or(&key("force"), r.force.as_deref(), [0.0; 3])?,
         moment: ctx.vector_or(&key("moment"), r.moment.as_deref(), [0.0; 3])?,
+        body_force: ctx.vector_or(&key("body_force"), r.body_force.as_deref(), [0.0; 3])?,
+        damping: stancf::damping::AxisDamping {
+            linear: optional("damping_linear", &r.damping_linear)?,
+            quadratic: optional("damping_quadratic", &r.damping_quadratic)?,
+        },
+        body_damping: stancf::damping::AxisDamping {
+            linear: optional("body_damping_linear", &r.body_damping_linear)?,
+            quadratic: optional("body_damping_quadratic", &r.body_damping_quadratic)?,
+        },
         ..body
     })
+}
+
+/// An optional vector of 3 finite numbers, each >= 0 (zero if not given).
+pub(super) fn optional_non_negative(
+    ctx: &Ctx,
+    key: &str,
+    v: &Option<Vec<f64>>,
+) -> Result<[f64; 3], ScenarioError> {
+    match v {
+        Some(v) => non_negative_vector(ctx, key, v),
+        None => Ok([0.0; 3]),
+    }
 }
 
 /// A vector of 3 finite numbers, each >= 0.

@@ -95,6 +95,7 @@ pub(super) fn deck_scenario(
         .iter()
         .map(|p| deck_point(p, &bodies, turbines))
         .collect();
+    let external_notes = super::external_loads::deck_external_loads(deck, &mut bodies, &mut points);
     host_pins(deck, &mut bodies, &mut points);
     // Rods after the deck's bodies and points: a free rod's body and the
     // points at rod ends come after them (super::rods).
@@ -116,6 +117,7 @@ pub(super) fn deck_scenario(
     notes.extend(wave_note);
     notes.extend(current_note);
     notes.extend(line_output_notes(deck, path));
+    notes.extend(external_notes);
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
@@ -379,6 +381,7 @@ fn deck_point(
         ca: if_free(p.ca),
         motion: CoupledMotion::NONE,
         motion_file: None,
+        damping: Default::default(),
     }
 }
 

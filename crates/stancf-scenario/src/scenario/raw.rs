@@ -178,6 +178,8 @@ pub(super) struct RawPoint {
     pub(super) volume: Option<f64>,
     pub(super) cda: Option<f64>,
     pub(super) ca: Option<f64>,
+    pub(super) damping_linear: Option<Vector>,
+    pub(super) damping_quadratic: Option<Vector>,
     /// The id of the body a point of type "body" is on.
     pub(super) body: Option<i64>,
     /// The id of the rod a point of type "rod" is at, and which end
@@ -234,13 +236,20 @@ pub(super) struct RawBody {
     pub(super) angular_velocity: Option<Vector>,
     pub(super) force: Option<Vector>,
     pub(super) moment: Option<Vector>,
+    pub(super) body_force: Option<Vector>,
+    pub(super) damping_linear: Option<Vector>,
+    pub(super) damping_quadratic: Option<Vector>,
+    pub(super) body_damping_linear: Option<Vector>,
+    pub(super) body_damping_quadratic: Option<Vector>,
 }
 
 impl RawBody {
     /// Whether each key only a free body takes is given, in the order
     /// mass, centre_of_mass, inertia, volume, cda, rotational_cda, ca,
-    /// velocity, angular_velocity, force, moment.
-    pub(super) fn free_keys(&self) -> [bool; 11] {
+    /// velocity, angular_velocity, force, moment, body_force,
+    /// damping_linear, damping_quadratic, body_damping_linear,
+    /// body_damping_quadratic.
+    pub(super) fn free_keys(&self) -> [bool; 16] {
         [
             self.mass.is_some(),
             self.centre_of_mass.is_some(),
@@ -253,6 +262,11 @@ impl RawBody {
             self.angular_velocity.is_some(),
             self.force.is_some(),
             self.moment.is_some(),
+            self.body_force.is_some(),
+            self.damping_linear.is_some(),
+            self.damping_quadratic.is_some(),
+            self.body_damping_linear.is_some(),
+            self.body_damping_quadratic.is_some(),
         ]
     }
 }

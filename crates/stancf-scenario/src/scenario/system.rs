@@ -4,7 +4,7 @@
 //! library's [`stancf::system::System`].
 
 use super::analysis::{analysis_part, AnalysisKind, InitialShape};
-use super::bodies::SystemBody;
+use super::bodies::{optional_non_negative, SystemBody};
 use super::context::Ctx;
 use super::motions::motions;
 use super::raw::{RawLine, RawLineType, RawPoint, RawScenario};
@@ -213,21 +213,26 @@ fn points(
             ("volume", r.volume.is_some()),
             ("cda", r.cda.is_some()),
             ("ca", r.ca.is_some()),
+            ("damping_linear", r.damping_linear.is_some()),
+            ("damping_quadratic", r.damping_quadratic.is_some()),
         ];
         // A point on a free body may carry a mass, a force and a volume:
         // they become the body's (docs/method.md §15.8); its drag and added
         // mass are not built.
         let on_free_body = word == "body"
             && matches!(kind, PointType::Body { body, .. } if bodies[body].is_free());
-        let allowed =
-            |k: &str| kind == PointType::Free || (on_free_body && !matches!(k, "cda" | "ca"));
+        let allowed = |k: &str| {
+            kind == PointType::Free
+                || (on_free_body
+                    && !matches!(k, "cda" | "ca" | "damping_linear" | "damping_quadratic"))
+        };
         if let Some((k, _)) = given.iter().find(|g| g.1 && !allowed(g.0)) {
             let why = if word == "rod" {
                 "a point at a rod's end carries no mass, force or water of its own (the rod's \
                  type gives the rod's)"
             } else if word == "body" && on_free_body {
-                "the drag and added mass of a point on a body are not built (give them to the \
-                 body)"
+                "the drag, added mass and damping of a point on a body are not built (give \
+                 them to the body)"
             } else if word == "body" {
                 "a point on a fixed or coupled body carries no mass, force or water of its own \
                  (a coupled body's are the coupling code's)"
@@ -255,6 +260,14 @@ fn points(
             ca: non_negative("ca", r.ca)?,
             motion: CoupledMotion::NONE,
             motion_file: None,
+            damping: stancf::damping::AxisDamping {
+                linear: optional_non_negative(ctx, &key("damping_linear"), &r.damping_linear)?,
+                quadratic: optional_non_negative(
+                    ctx,
+                    &key("damping_quadratic"),
+                    &r.damping_quadratic,
+                )?,
+            },
         });
     }
     Ok(out)

@@ -176,6 +176,14 @@ impl SystemScenario {
                     (None, Some(lw)) => Some(Arc::new(lw.sea.clone())),
                     _ => None,
                 },
+                external: external_of(b),
+            }),
+            // In air, a free body's external loads in a water of density 0
+            // (they are carried with the water's loads, docs/method.md
+            // §15.21).
+            (None, super::BodyType::Free) if !external_of(b).is_zero() => Some(BodyWater {
+                external: external_of(b),
+                ..BodyWater::default()
             }),
             _ => None,
         };
@@ -320,8 +328,20 @@ fn library_point(
                 mass,
                 force,
                 water,
+                damping: p.damping,
             }
         }
+    }
+}
+
+/// A body's external loads at its reference point (MoorDyn-F's EXTERNAL
+/// LOADS): its force in body axes and its damping (a global force is one
+/// of its constant loads).
+fn external_of(b: &super::SystemBody) -> stancf::body::BodyExternal {
+    stancf::body::BodyExternal {
+        body_force: b.body_force,
+        global: b.damping,
+        body: b.body_damping,
     }
 }
 

@@ -83,6 +83,9 @@ pub struct SystemPoint {
     pub motion: CoupledMotion,
     /// The file a tabulated motion was read from, as the scenario names it.
     pub motion_file: Option<String>,
+    /// Damping along the global axes of a free point (MoorDyn-F's
+    /// EXTERNAL LOADS; `damping_linear`, `damping_quadratic`).
+    pub damping: stancf::damping::AxisDamping,
 }
 
 impl SystemPoint {
@@ -111,6 +114,7 @@ impl SystemPoint {
             ca: 0.0,
             motion: CoupledMotion::NONE,
             motion_file: None,
+            damping: Default::default(),
         }
     }
 }

@@ -38,4 +38,4 @@ pub mod wet;
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;
 pub use rod::Rod;
-pub use terms::BodyWater;
+pub use terms::{BodyExternal, BodyWater};

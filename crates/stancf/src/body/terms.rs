@@ -52,6 +52,32 @@ pub struct BodyWater {
     /// inertia, its dynamic pressure on the rods' caps. With a sea the
     /// uniform `current` above must be zero (the sea carries the current).
     pub sea: Option<std::sync::Arc<Sea>>,
+    /// MoorDyn-F's EXTERNAL LOADS on the body at its reference point: a
+    /// force fixed in the body's axes and damping along the global and the
+    /// body's axes (docs/method.md §15.21, (B42)-(B43)). Carried with the
+    /// water's loads, being virtual work at the same point; a body in air
+    /// that has them takes a water of density 0.
+    pub external: BodyExternal,
+}
+
+/// A force and damping at a body's reference point (MoorDyn-F's EXTERNAL
+/// LOADS; a force in global axes is one of the body's constant loads).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BodyExternal {
+    /// A force fixed in the body's axes (N), following the body as it
+    /// turns.
+    pub body_force: [f64; 3],
+    /// Damping of the reference point's velocity along the global axes.
+    pub global: crate::damping::AxisDamping,
+    /// Damping of the reference point's velocity along the body's axes.
+    pub body: crate::damping::AxisDamping,
+}
+
+impl BodyExternal {
+    /// Whether there is nothing.
+    pub fn is_zero(&self) -> bool {
+        self.body_force == [0.0; 3] && self.global.is_zero() && self.body.is_zero()
+    }
 }
 
 impl BodyWater {
@@ -80,6 +106,14 @@ impl BodyWater {
         for (k, rod) in self.rods.iter().enumerate() {
             rod.validate(&format!("{key}.rods[{k}]"))?;
         }
+        if self.external.body_force.iter().any(|f| !f.is_finite()) {
+            return Err(crate::error::ModelError::invalid(
+                format!("{key}.body_force"),
+                "must be finite",
+            ));
+        }
+        self.external.global.check(&format!("{key}.global"))?;
+        self.external.body.check(&format!("{key}.body"))?;
         if self.current.iter().any(|v| !v.is_finite()) {
             return Err(crate::error::ModelError::invalid(
                 format!("{key}.current"),
@@ -162,6 +196,40 @@ impl Context<'_> {
         let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
         let u = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);
         (omega, u)
+    }
+
+    /// MoorDyn-F's external force and damping at the reference point
+    /// (B42)-(B43), in body axes: the body-fixed force F_L, the damping
+    /// of the reference point's velocity u_ref = R^T v_G + c x Omega along
+    /// the body's axes, and along the global axes on R u_ref, turned back
+    /// by R^T (R = R_a exp([theta]), so R^T x = exp(-[theta]) R_a^T x).
+    fn external_force<const H: usize>(
+        &self,
+        v: &[JetVec<NV, H>; 4],
+        external: &BodyExternal,
+    ) -> JetVec<NV, H> {
+        let mut f: JetVec<NV, H> = constant(external.body_force);
+        if external.global.is_zero() && external.body.is_zero() {
+            return f;
+        }
+        let [v_g, theta, theta_dot, _] = v;
+        let omega = body_rate(theta, theta_dot);
+        let start_axes = times(&crate::vec3::mat3_transpose(self.rotation_a), v_g);
+        let body_axes = turn(theta, &start_axes, -1.0);
+        let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
+        let u_ref: JetVec<NV, H> = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);
+        let along_body = external.body.force_on_jets(&u_ref);
+        let global = times(self.rotation_a, &turn(theta, &u_ref, 1.0));
+        let along_global = external.global.force_on_jets(&global);
+        let back = turn(
+            theta,
+            &times(&crate::vec3::mat3_transpose(self.rotation_a), &along_global),
+            -1.0,
+        );
+        for i in 0..3 {
+            f[i] = f[i] + along_body[i] + back[i];
+        }
+        f
     }
 
     /// The sea's flow (B31) at the body's point `xi` (body axes, from the
@@ -295,6 +363,7 @@ impl Context<'_> {
         let v: &[JetVec<NV, 0>; 4] = &pose.map(|x| x.map(Jet::first_order));
         let (omega, u) = self.rates(v);
         let half_rho = 0.5 * w.density;
+        let external = self.external_force(v, &w.external);
         // In a sea, the reference point's velocity through the water and
         // the fluid's inertia there, rho V (1 + Ca) a_f (B32).
         let rotation = self.rotation(v);
@@ -312,6 +381,9 @@ impl Context<'_> {
                 let inertia = w.density * w.volume * (1.0 + w.added_mass_coefficients[i]);
                 f[i] = f[i] + flow.acceleration[i].scale(inertia);
             }
+        }
+        for i in 0..3 {
+            f[i] = f[i] + external[i];
         }
         let spin = norm(&omega);
         // The reference point is at -c from the centre: (-c) x f = f x c.
@@ -371,6 +443,7 @@ mod tests {
             rods: Vec::new(),
             gravity: 9.81,
             sea: None,
+            external: external_sample(),
         };
         let ctx = test_context(&rotation_a, &water);
         // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r
@@ -408,9 +481,21 @@ mod tests {
         // the power against the ground is f . (u + R^T U) + M . Omega.
         let current_body: [f64; 3] =
             std::array::from_fn(|i| (0..3).map(|k| rotation[k][i] * water.current[k]).sum());
+        let v_ref: [f64; 3] = std::array::from_fn(|i| u[i] + current_body[i]);
+        // The external loads (B42)-(B43) at the reference point: the
+        // body-fixed force, the damping along the body's axes and along
+        // the global axes (on R v_ref).
+        let e = &water.external;
+        let along_body = e.body.force(v_ref).0;
+        let global = crate::body::pose::rotate(&rotation, v_ref);
+        let along_global = e.global.force(global).0;
+        let external_power = crate::vec3::dot(e.body_force, v_ref)
+            + crate::vec3::dot(along_body, v_ref)
+            + crate::vec3::dot(along_global, global);
         let power: f64 = (0..3)
-            .map(|i| f[i] * (u[i] + current_body[i]) + m[i] * omega[i])
-            .sum();
+            .map(|i| f[i] * v_ref[i] + m[i] * omega[i])
+            .sum::<f64>()
+            + external_power;
         assert!(power < 0.0);
         assert!(
             (power_q - power).abs() < 1e-12 * power.abs(),
@@ -435,9 +520,25 @@ mod tests {
             current: [0.2, -0.1, 0.05],
             rods: vec![rod.clone()],
             gravity: 9.81,
+            external: external_sample(),
             ..BodyWater::default()
         };
         terms_jets_are_exact(&water, FlowTime::At(0.0));
+    }
+
+    /// MoorDyn-F's external loads, every part of them given.
+    fn external_sample() -> BodyExternal {
+        BodyExternal {
+            body_force: [120.0, -40.0, 75.0],
+            global: crate::damping::AxisDamping {
+                linear: [300.0, 150.0, 80.0],
+                quadratic: [900.0, 0.0, 400.0],
+            },
+            body: crate::damping::AxisDamping {
+                linear: [50.0, 0.0, 210.0],
+                quadratic: [0.0, 700.0, 350.0],
+            },
+        }
     }
 
     /// The same in a sea (§15.15): two crossing waves over a sheared

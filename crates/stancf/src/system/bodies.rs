@@ -242,6 +242,12 @@ impl Body {
             if let Some(w) = &self.water {
                 w.validate(&format!("{key}.water"))?;
             }
+        } else if self.water.as_ref().is_some_and(|w| !w.external.is_zero()) {
+            return Err(ModelError::invalid(
+                format!("{key}.water.external"),
+                "only a free body takes an external force and damping (a fixed or coupled \
+                 body's motion is given)",
+            ));
         }
         Ok(())
     }

@@ -115,6 +115,9 @@ pub struct Point {
     /// The water on a free point: buoyancy, drag, the fluid's inertia and
     /// the added mass (docs/method.md §12.6); None in air.
     pub water: Option<crate::water::PointInWater>,
+    /// Damping of a free point along the global axes (MoorDyn-F's
+    /// EXTERNAL LOADS, docs/method.md §15.21, (B42)).
+    pub damping: crate::damping::AxisDamping,
 }
 
 impl Point {
@@ -125,6 +128,7 @@ impl Point {
             mass: 0.0,
             force: [0.0; 3],
             water: None,
+            damping: Default::default(),
         }
     }
 
@@ -135,6 +139,7 @@ impl Point {
             mass,
             force: [0.0; 3],
             water: None,
+            damping: Default::default(),
         }
     }
 
@@ -148,6 +153,7 @@ impl Point {
             mass: 0.0,
             force: [0.0; 3],
             water: None,
+            damping: Default::default(),
         }
     }
 
@@ -161,6 +167,7 @@ impl Point {
             mass: 0.0,
             force: [0.0; 3],
             water: None,
+            damping: Default::default(),
         }
     }
 
@@ -536,6 +543,14 @@ fn check_point(i: usize, p: &Point) -> Result<(), ModelError> {
             key,
             "only a free point carries a mass, a force or water loads (a fixed or coupled \
              point's position is given)",
+        ));
+    }
+    p.damping.check(&key)?;
+    if !p.damping.is_zero() && !p.is_free() {
+        return Err(ModelError::invalid(
+            format!("{key}.damping"),
+            "only a free point is damped (a fixed or coupled point's motion is given; a point \
+             on a body: give the body its damping)",
         ));
     }
     if let Some(w) = &p.water {

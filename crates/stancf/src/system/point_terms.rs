@@ -24,9 +24,11 @@
 //!   d2A_p/dy_m dy_n += sum_g w_g dt phi_m (phi_n df/dr + phidot_n df/dr_dot)
 //! ```
 //!
-//! and in statics - f of the steady current at rest.
+//! and in statics - f of the steady current at rest. A free point's
+//! damping (B42) adds its force f(r_dot) the same way (zero at rest).
 
 use crate::assembly::{Kind, SlabLayout};
+use crate::damping::AxisDamping;
 use crate::element::TimeSlab;
 use crate::linear::AddEntries;
 use crate::water::{PointForce, PointInWater};
@@ -48,6 +50,8 @@ pub struct PointTerms<'a> {
     pub load: [f64; 3],
     /// The water's drag and inertia on the point, if in water.
     pub water: Option<&'a PointInWater>,
+    /// The point's damping (B42), zero if none.
+    pub damping: &'a AxisDamping,
     /// The step's start time.
     pub time: f64,
     /// Global index of (slot, component): `index[3 slot + c]`.
@@ -71,6 +75,7 @@ impl<'a> PointTerms<'a> {
             mass: system.point_inertia(p),
             load: system.point_load(p),
             water: system.points()[p].water.as_ref(),
+            damping: &system.points()[p].damping,
             time,
             index,
             layout,
@@ -114,8 +119,8 @@ impl<'a> PointTerms<'a> {
             }
             p
         });
-        if let Some(water) = self.water {
-            for (tp, f) in self.water_forces(water, 0, &y) {
+        if self.has_own_forces() {
+            for (tp, f) in self.own_forces(0, &y) {
                 for c in 0..3 {
                     p[c] += tp.w_dt * tp.shape.t[2] * f.force[c];
                 }
@@ -124,18 +129,18 @@ impl<'a> PointTerms<'a> {
         p
     }
 
-    /// The work of the water's drag and inertia (W34) on the point over
-    /// the step, sum_layers sum_g w_g dt f_g . r_dot_g, from the expanded
-    /// time-node values `nodes` (0 in air): the same quadrature as its
-    /// virtual work in the rows.
+    /// The work of the water's drag and inertia (W34) and of the
+    /// damping (B42) on the point over the step, sum_layers sum_g w_g dt
+    /// f_g . r_dot_g, from the expanded time-node values `nodes` (0 in air
+    /// undamped): the same quadrature as its virtual work in the rows.
     pub fn water_work(&self, nodes: &PointNodes) -> f64 {
-        let Some(water) = self.water else {
+        if !self.has_own_forces() {
             return 0.0;
-        };
+        }
         let mut work = 0.0;
         for j in 0..self.layout.layers() {
             let y = [nodes.e[j], nodes.v[j], nodes.e[j + 1], nodes.v[j + 1]];
-            for (tp, f) in self.water_forces(water, j, &y) {
+            for (tp, f) in self.own_forces(j, &y) {
                 let mut rdot = [0.0; 3];
                 for (m, ym) in y.iter().enumerate() {
                     for c in 0..3 {
@@ -148,11 +153,15 @@ impl<'a> PointTerms<'a> {
         work
     }
 
-    /// The water's force (W34) at the time points of layer j, whose slot
-    /// values are `y` = [e_j, v_j, e_j+1, v_j+1].
-    fn water_forces<'s>(
+    /// Whether the point has forces of its motion: water or damping.
+    pub fn has_own_forces(&self) -> bool {
+        self.water.is_some() || !self.damping.is_zero()
+    }
+
+    /// The water's force (W34) and the damping (B42) at the time points
+    /// of layer j, whose slot values are `y` = [e_j, v_j, e_j+1, v_j+1].
+    fn own_forces<'s>(
         &'s self,
-        water: &'s PointInWater,
         j: usize,
         y: &'s [[f64; 3]; 4],
     ) -> impl Iterator<Item = (&'s crate::element::TimePoint, PointForce)> + 's {
@@ -166,7 +175,17 @@ impl<'a> PointTerms<'a> {
                     rdot[c] += tp.shape.t_dot[m] * ym[c];
                 }
             }
-            (tp, water.force(&r, &rdot, start + tp.offset))
+            let mut f = self.water.map_or_else(PointForce::default, |w| {
+                w.force(&r, &rdot, start + tp.offset)
+            });
+            if !self.damping.is_zero() {
+                let (force, slope) = self.damping.force(rdot);
+                for c in 0..3 {
+                    f.force[c] += force[c];
+                    f.d_rdot[c][c] += slope[c];
+                }
+            }
+            (tp, f)
         })
     }
 
@@ -206,16 +225,8 @@ impl<'a> PointTerms<'a> {
                     }
                     residual[self.index[3 * rs + c]] += g;
                 }
-                if let Some(water) = self.water {
-                    self.add_water(
-                        water,
-                        j,
-                        (a, rs),
-                        &slots,
-                        &y,
-                        residual,
-                        jacobian.as_deref_mut(),
-                    );
+                if self.has_own_forces() {
+                    self.add_water(j, (a, rs), &slots, &y, residual, jacobian.as_deref_mut());
                 }
                 let Some(jac) = jacobian.as_deref_mut() else {
                     continue;
@@ -288,7 +299,6 @@ impl<'a> PointTerms<'a> {
     #[allow(clippy::too_many_arguments)]
     fn add_water<J: AddEntries>(
         &self,
-        water: &PointInWater,
         j: usize,
         (a, rs): (usize, usize),
         slots: &[(usize, Kind); 4],
@@ -296,7 +306,7 @@ impl<'a> PointTerms<'a> {
         residual: &mut [f64],
         mut jacobian: Option<&mut J>,
     ) {
-        for (tp, f) in self.water_forces(water, j, y) {
+        for (tp, f) in self.own_forces(j, y) {
             let wa = tp.w_dt * tp.shape.t[a];
             for c in 0..3 {
                 residual[self.index[3 * rs + c]] += wa * f.force[c];

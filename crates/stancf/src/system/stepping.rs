@@ -100,7 +100,7 @@ impl SystemSimulation {
         let layout = &self.layout.time;
         for (p, idx) in self.point_index.iter().enumerate() {
             let point = &self.topology.points()[p];
-            if idx.is_empty() || point.water.is_none() {
+            if idx.is_empty() || (point.water.is_none() && point.damping.is_zero()) {
                 continue;
             }
             let m = &self.points[p];

@@ -201,6 +201,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             rods: Vec::new(),
             gravity: 0.0,
             sea: None,
+            external: Default::default(),
         });
     }
     let (system, states) =
@@ -360,6 +361,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             rods: Vec::new(),
             gravity: 0.0,
             sea: None,
+            external: Default::default(),
         });
         let system = System::with_bodies(
             vec![Line {

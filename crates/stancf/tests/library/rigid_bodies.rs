@@ -211,6 +211,7 @@ fn water(ca: [f64; 3], cda: [f64; 3], cda_r: [f64; 3]) -> BodyWater {
         rods: Vec::new(),
         gravity: 0.0,
         sea: None,
+        external: Default::default(),
     }
 }
 
