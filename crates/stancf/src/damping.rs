@@ -11,7 +11,6 @@
 //! virtual work at the slab's time points, as the water's drag; at rest it
 //! is zero, so statics never sees it.
 
-use crate::body::jet::{Jet, JetVec};
 use crate::error::ModelError;
 
 /// Linear (N s/m) and quadratic (N s^2/m^2) damping coefficients along
@@ -50,16 +49,6 @@ impl AxisDamping {
         let slope = std::array::from_fn(|i| -self.linear[i] - 2.0 * self.quadratic[i] * v[i].abs());
         (force, slope)
     }
-
-    /// (B42) on jets: |v_i| v_i is v_i^2 times the sign of v_i, whose
-    /// derivative 2 |v_i| is exact on both sides of zero.
-    pub fn force_on_jets<const N: usize, const H: usize>(&self, v: &JetVec<N, H>) -> JetVec<N, H> {
-        std::array::from_fn(|i| {
-            let sign = if v[i].v < 0.0 { -1.0 } else { 1.0 };
-            let quadratic: Jet<N, H> = (v[i] * v[i]).scale(sign * self.quadratic[i]);
-            -(v[i].scale(self.linear[i]) + quadratic)
-        })
-    }
 }
 
 #[cfg(test)]
@@ -67,7 +56,7 @@ mod tests {
     use super::*;
 
     /// (B42)'s derivative against central differences on both sides of
-    /// zero, and the jets' value and gradient against the plain form.
+    /// zero.
     #[test]
     fn axis_damping_derivatives_are_exact() {
         let d = AxisDamping {
@@ -75,7 +64,7 @@ mod tests {
             quadratic: [2.0, 5.0, 0.0],
         };
         for v in [[0.7, -1.3, 0.2], [-0.4, 0.9, -2.0]] {
-            let (f, slope) = d.force(v);
+            let slope = d.force(v).1;
             for i in 0..3 {
                 let h = 1e-6;
                 let mut vp = v;
@@ -88,15 +77,6 @@ mod tests {
                     "{fd} {}",
                     slope[i]
                 );
-            }
-            let jets: JetVec<3, 3> = std::array::from_fn(|i| Jet::variable(v[i], i));
-            let on = d.force_on_jets(&jets);
-            for i in 0..3 {
-                assert!((on[i].v - f[i]).abs() < 1e-14);
-                for k in 0..3 {
-                    let want = if i == k { slope[i] } else { 0.0 };
-                    assert!((on[i].g[k] - want).abs() < 1e-14);
-                }
             }
         }
     }

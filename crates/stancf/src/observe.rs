@@ -138,6 +138,17 @@ fn axial_stress(compression: bool, e_mod: f64, eps: f64) -> f64 {
     }
 }
 
+/// The elastic axial stress of `model` at the strain eps: E eps
+/// ([`axial_stress`]), or the nonlinear law's T(eps) / A (docs/method.md
+/// §2.2a, (M4b)).
+fn model_axial_stress(model: &Model, compression: bool, eps: f64) -> f64 {
+    match model.axial_curve() {
+        Some(_) if eps < 0.0 && !compression => 0.0,
+        Some(c) => c.at(eps).1 / model.material.area,
+        None => axial_stress(compression, model.material.youngs_modulus, eps),
+    }
+}
+
 /// One sample of the axial stress and curvature.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StressSample {
@@ -163,7 +174,6 @@ pub fn stress_samples(
 ) {
     out.clear();
     let dpn = model.dofs_per_node();
-    let e_mod = model.material.youngs_modulus;
     let compression = model.carries_compression();
     let m = model.options.measures;
     let n = per_element.max(2);
@@ -179,7 +189,11 @@ pub fn stress_samples(
             out.push(StressSample {
                 element: k,
                 s: model.material_coordinate(k, xi),
-                axial_stress: axial_stress(compression, e_mod, axial_strain(m.axial_strain, &rx)),
+                axial_stress: model_axial_stress(
+                    model,
+                    compression,
+                    axial_strain(m.axial_strain, &rx),
+                ),
                 curvature: curvature(m.curvature, &rx, &rxx),
             });
         }
@@ -207,7 +221,13 @@ pub fn node_axial_force(model: &Model, state: &State, k: usize) -> f64 {
     let o = coordinate(model.dofs_per_node(), k, crate::model::SLOT_R_X, 0);
     let rx = [state.e[o], state.e[o + 1], state.e[o + 2]];
     let vx = [state.v[o], state.v[o + 1], state.v[o + 2]];
-    let elastic = axial_stress(model.carries_compression(), ea, axial_strain(measure, &rx));
+    let elastic = match model.axial_curve() {
+        Some(_) => {
+            let compression = model.carries_compression();
+            model.material.area * model_axial_stress(model, compression, axial_strain(measure, &rx))
+        }
+        None => axial_stress(model.carries_compression(), ea, axial_strain(measure, &rx)),
+    };
     let a = match measure {
         crate::AxialStrain::Green => rx,
         crate::AxialStrain::Engineering => crate::vec3::normalized(rx),
@@ -227,7 +247,8 @@ pub fn largest_compression(model: &Model, state: &State) -> f64 {
         .enumerate()
         .map(|(k, el)| {
             let q = &state.e[coordinate(dpn, k, SLOT_R, 0)..];
-            -el.section.ea * el.least_axial_strain(q)
+            let least = el.least_axial_strain(q);
+            -el.section.curve.as_ref().map_or(el.section.ea * least, |c| c.at(least).1)
         })
         .fold(0.0, f64::max))
 }
@@ -293,7 +314,6 @@ pub struct CablePoint {
 pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<CablePoint> {
     let dpn = model.dofs_per_node();
     let n = per_element.max(2);
-    let e_mod = model.material.youngs_modulus;
     let compression = model.carries_compression();
     let m = model.options.measures;
     let mut out: Vec<CablePoint> = Vec::with_capacity(model.cable.elements * (n - 1) + 1);
@@ -325,7 +345,11 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
                 s: model.material_coordinate(k, xi),
                 r,
                 v,
-                axial_stress: axial_stress(compression, e_mod, axial_strain(m.axial_strain, &rx)),
+                axial_stress: model_axial_stress(
+                    model,
+                    compression,
+                    axial_strain(m.axial_strain, &rx),
+                ),
                 curvature: curvature(m.curvature, &rx, &rxx),
             };
             if p == 0 && k > 0 {

@@ -44,12 +44,12 @@ ID Object Fext Blin Bquad CSys
 --- need this line ---
 ";
 
+/// A CSV file's header and rows.
+type Table = (Vec<String>, Vec<Vec<f64>>);
+
 /// A dynamic run of 3 s in steps of 0.05 s of `deck` from the deck's
 /// positions; bodies.csv's and points.csv's (header, rows).
-fn run_deck(
-    name: &str,
-    deck: &str,
-) -> ((Vec<String>, Vec<Vec<f64>>), (Vec<String>, Vec<Vec<f64>>)) {
+fn run_deck(name: &str, deck: &str) -> (Table, Table) {
     let d = scratch(name);
     std::fs::write(d.join("deck.txt"), deck).unwrap();
     let path = write_scenario(
@@ -75,7 +75,7 @@ fn run_deck(
 }
 
 /// The value of `column` in the row of object `id` at time `t`.
-fn at(table: &(Vec<String>, Vec<Vec<f64>>), id_column: &str, id: f64, t: f64, column: &str) -> f64 {
+fn at(table: &Table, id_column: &str, id: f64, t: f64, column: &str) -> f64 {
     let col = |n: &str| table.0.iter().position(|c| c == n).unwrap();
     let row = table
         .1
@@ -93,6 +93,7 @@ fn at(table: &(Vec<String>, Vec<Vec<f64>>), id_column: &str, id: f64, t: f64, co
 /// - the point on its spring (k = 1025 N/m, omega = 1 rad/s, zeta = 0.2):
 ///   x = F/k (1 - exp(-zeta t) (cos w_d t + zeta / sqrt(1 - zeta^2) sin
 ///   w_d t)), w_d = sqrt(1 - zeta^2).
+///
 /// The bodies to 1e-9 (the Galerkin step's error at dt = tau / 20 is
 /// below 1e-12, measured 1.2e-13); the point to 2e-5 m and m/s, what its
 /// spring's own mass (0.01 kg, a third of it moving with the point: 3e-6

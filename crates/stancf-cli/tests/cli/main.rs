@@ -20,6 +20,7 @@ mod deck_currents;
 mod deck_statics;
 mod deck_waves;
 mod decks_without_lines;
+mod ea_curves;
 mod external_loads;
 mod extreme_values;
 mod fast_farm;

@@ -94,9 +94,12 @@ pub struct LineType {
     pub diameter: f64,
     /// `Mass/m`: mass per unit length (kg/m).
     pub mass_per_length: f64,
-    /// `EA`: axial stiffness (N), a constant (curve files and
-    /// viscoelastic `a|b` forms are refused).
+    /// `EA`: axial stiffness (N), a constant; 0 where the column names a
+    /// curve file (viscoelastic `a|b` forms are refused).
     pub ea: f64,
+    /// `EA` as the name of a file of MoorDyn's nonlinear tension-strain
+    /// curve (docs/method.md §2.2a), which the scenario reads.
+    pub ea_curve_file: Option<String>,
     /// `BA/-zeta` as written: if ≥ 0, the internal axial damping
     /// coefficient BA (N·s); if negative, minus the damping ratio ζ
     /// (fraction of critical) from which MoorDyn sets BA for each line

@@ -154,7 +154,16 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         }
     }
     let what = |col: &str| format!("{col} of line type \"{name}\"");
-    constant(row, 3, name, "EA")?;
+    // EA as a file name: MoorDyn's nonlinear curve (read by the scenario,
+    // which knows where the deck is).
+    let ea_word = row.words[3];
+    let ea_curve_file = (ea_word.parse::<f64>().is_err()
+        && !ea_word.contains('|')
+        && !ea_word.to_ascii_uppercase().starts_with("SYROPE:"))
+    .then(|| ea_word.to_string());
+    if ea_curve_file.is_none() {
+        constant(row, 3, name, "EA")?;
+    }
     constant(row, 4, name, "BA/-zeta")?;
     constant(row, 5, name, "EI")?;
     Ok(LineType {
@@ -162,7 +171,11 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         name: name.to_string(),
         diameter: non_negative(row, 1, &what("Diam"), true)?,
         mass_per_length: non_negative(row, 2, &what("Mass/m"), true)?,
-        ea: non_negative(row, 3, &what("EA"), true)?,
+        ea: match ea_curve_file {
+            Some(_) => 0.0,
+            None => non_negative(row, 3, &what("EA"), true)?,
+        },
+        ea_curve_file,
         ba: number(row, 4, &what("BA/-zeta"))?,
         ei: non_negative(row, 5, &what("EI"), false)?,
         cd_normal: non_negative(row, 6, &what("Cd"), false)?,
@@ -188,9 +201,10 @@ fn viv_off(row: &Row, name: &str) -> Result<(), DeckError> {
     Ok(())
 }
 
-/// EA, BA and EI must be plain numbers: MoorDyn also takes the name of a
-/// file holding a nonlinear curve, `a|b` or `a|b|c` viscoelastic forms
-/// and `SYROPE:...` for EA (`readLineProps`, `read_curve`).
+/// BA and EI must be plain numbers, and EA a number or a curve file's
+/// name: MoorDyn also takes the name of a file holding a nonlinear curve
+/// for BA and EI, `a|b` or `a|b|c` viscoelastic forms and `SYROPE:...`
+/// for EA (`readLineProps`, `read_curve`).
 fn constant(row: &Row, col: usize, name: &str, column: &str) -> Result<(), DeckError> {
     let w = row.words[col];
     if w.parse::<f64>().is_ok() {
@@ -201,7 +215,8 @@ fn constant(row: &Row, col: usize, name: &str, column: &str) -> Result<(), DeckE
     } else if w.contains('|') {
         "a viscoelastic (bar-separated) value"
     } else {
-        "not a number (MoorDyn would read a nonlinear curve from a file of that name)"
+        "not a number (MoorDyn would read a nonlinear curve from a file of that name; stancf \
+         reads one for EA only)"
     };
     Err(DeckError::at(
         row.line,

@@ -18,6 +18,7 @@ mod context;
 mod deck_files;
 mod deck_mesh;
 mod deck_system;
+mod ea_curves;
 mod external_loads;
 mod farm;
 mod host_environment;

@@ -59,6 +59,17 @@ pub(super) fn deck_scenario(
     host: &super::HostEnvironment,
     farm: Option<super::farm::Farm>,
 ) -> Result<SystemScenario, ScenarioError> {
+    // EA curve files, read here (the deck knows their names only); the
+    // deck's EA of such a type becomes the curve's secant at its last
+    // point (MoorDyn's EA for its damping ratio and CFL).
+    let (curves, curve_notes) = super::ea_curves::deck_curves(deck, file, path)?;
+    let mut with_curves = deck.clone();
+    for (t, c) in with_curves.line_types.iter_mut().zip(&curves) {
+        if let Some(c) = c {
+            t.ea = c.secant_stiffness();
+        }
+    }
+    let deck = &with_curves;
     let g = deck_gravity(deck, file, host)?;
     let farm = farm.or_else(|| {
         host.turbines.clone().map(|positions| super::farm::Farm {
@@ -118,12 +129,18 @@ pub(super) fn deck_scenario(
     notes.extend(current_note);
     notes.extend(line_output_notes(deck, path));
     notes.extend(external_notes);
+    notes.extend(curve_notes);
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
     let mut sc = SystemScenario {
         title,
-        line_types: deck.line_types.iter().map(deck_line_type).collect(),
+        line_types: deck
+            .line_types
+            .iter()
+            .zip(curves)
+            .map(|(t, c)| deck_line_type(t, c))
+            .collect(),
         points,
         bodies,
         rods,
@@ -299,12 +316,16 @@ fn deck_gravity(
 }
 
 /// A LINE TYPES row as a line type.
-fn deck_line_type(t: &crate::moordyn::LineType) -> LineType {
+fn deck_line_type(
+    t: &crate::moordyn::LineType,
+    ea_curve: Option<std::sync::Arc<stancf::element::AxialCurve>>,
+) -> LineType {
     LineType {
         name: t.name.clone(),
         diameter: t.diameter,
         mass_per_length: t.mass_per_length,
         ea: t.ea,
+        ea_curve,
         ei: t.ei,
         ba: t.ba,
         cd_normal: t.cd_normal,

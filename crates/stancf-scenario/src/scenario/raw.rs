@@ -156,6 +156,7 @@ pub(super) struct RawLineType {
     pub(super) diameter: Option<f64>,
     pub(super) mass_per_length: Option<f64>,
     pub(super) ea: Option<f64>,
+    pub(super) ea_curve: Option<Vec<Vec<f64>>>,
     pub(super) ei: Option<f64>,
     pub(super) ba: Option<f64>,
     pub(super) cd: Option<f64>,

@@ -129,10 +129,15 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             Some(v) => ctx.non_negative(&key(k), v),
             None => Ok(0.0),
         };
+        let ea_curve = super::ea_curves::toml_curve(ctx, &key("ea_curve"), r)?;
         out.push(LineType {
             diameter: ctx.required_positive(&key("diameter"), r.diameter)?,
             mass_per_length: ctx.required_positive(&key("mass_per_length"), r.mass_per_length)?,
-            ea: ctx.required_positive(&key("ea"), r.ea)?,
+            ea: match &ea_curve {
+                Some(c) => c.secant_stiffness(),
+                None => ctx.required_positive(&key("ea"), r.ea)?,
+            },
+            ea_curve,
             ei: optional("ei", r.ei)?,
             ba: match r.ba {
                 Some(v) => ctx.finite(&key("ba"), v)?,

@@ -271,7 +271,10 @@ impl SystemScenario {
             // The seed's lines see the bed too: they start resting on it.
             line_loads.push(Load::Seabed(w.seabed_contact(t.diameter)));
         }
-        let model = Model::new(cable, material, options, line_loads)?;
+        let mut model = Model::new(cable, material, options, line_loads)?;
+        if let Some(curve) = &t.ea_curve {
+            model = model.with_axial_curve(Arc::clone(curve))?;
+        }
         Ok(if t.compression {
             model
         } else {

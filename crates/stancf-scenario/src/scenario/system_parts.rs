@@ -19,8 +19,12 @@ pub struct LineType {
     pub diameter: f64,
     /// Mass per length (kg/m).
     pub mass_per_length: f64,
-    /// Axial stiffness EA (N).
+    /// Axial stiffness EA (N); with a curve, the curve's secant at its
+    /// last point (what a damping ratio and a seed take).
     pub ea: f64,
+    /// A nonlinear axial law from a tension-strain table (docs/method.md
+    /// §2.2a, (M4b)): `ea_curve`, a deck's EA curve file.
+    pub ea_curve: Option<std::sync::Arc<stancf::element::AxialCurve>>,
     /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
     pub ei: f64,
     /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's

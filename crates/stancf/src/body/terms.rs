@@ -130,6 +130,19 @@ impl BodyWater {
     }
 }
 
+/// (B42) on jets: |v_i| v_i is v_i^2 times the sign of v_i, whose
+/// derivative 2 |v_i| is exact on both sides of zero.
+fn damping_on_jets<const H: usize>(
+    d: &crate::damping::AxisDamping,
+    v: &JetVec<NV, H>,
+) -> JetVec<NV, H> {
+    std::array::from_fn(|i| {
+        let sign = if v[i].v < 0.0 { -1.0 } else { 1.0 };
+        let quadratic = (v[i] * v[i]).scale(sign * d.quadratic[i]);
+        -(v[i].scale(d.linear[i]) + quadratic)
+    })
+}
+
 /// A rotation matrix on jets, `[row][column]`.
 type Rotation<const H: usize> = [[Jet<NV, H>; 3]; 3];
 
@@ -218,9 +231,9 @@ impl Context<'_> {
         let body_axes = turn(theta, &start_axes, -1.0);
         let c_x_omega = cross(&constant(self.centre_of_mass), &omega);
         let u_ref: JetVec<NV, H> = std::array::from_fn(|i| body_axes[i] + c_x_omega[i]);
-        let along_body = external.body.force_on_jets(&u_ref);
+        let along_body = damping_on_jets(&external.body, &u_ref);
         let global = times(self.rotation_a, &turn(theta, &u_ref, 1.0));
-        let along_global = external.global.force_on_jets(&global);
+        let along_global = damping_on_jets(&external.global, &global);
         let back = turn(
             theta,
             &times(&crate::vec3::mat3_transpose(self.rotation_a), &along_global),

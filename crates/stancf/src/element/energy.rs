@@ -3,6 +3,7 @@
 //! Hessian with respect to the element coordinates q (docs/method.md §2.4,
 //! from the densities of §2.2 and §2.3; rules in §3.3).
 
+use super::axial_curve::curve_energy_terms;
 use super::curvature::{bending_energy_terms, curvature};
 use super::strain::{axial_energy_terms, axial_strain};
 use super::CableElement;
@@ -13,6 +14,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let mut u = 0.0;
         for p in &self.axial_points {
             let (rx, _) = p.shape.gradients(q);
+            if let Some(c) = &self.section.curve {
+                u += p.wl * curve_energy_terms(c, &rx, false, self.section.tension_only).0;
+                continue;
+            }
             let eps = axial_strain(self.measures.axial_strain, &rx);
             if !(self.section.tension_only && eps < 0.0) {
                 u += p.wl * 0.5 * self.section.ea * eps * eps;
@@ -75,13 +80,16 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let with_hessian = hess.is_some();
         for p in &self.axial_points {
             let (rx, _) = p.shape.gradients(q);
-            let (e, g, h) = axial_energy_terms(
-                self.measures.axial_strain,
-                self.section.ea,
-                &rx,
-                with_hessian,
-                self.section.tension_only,
-            );
+            let (e, g, h) = match &self.section.curve {
+                Some(c) => curve_energy_terms(c, &rx, with_hessian, self.section.tension_only),
+                None => axial_energy_terms(
+                    self.measures.axial_strain,
+                    self.section.ea,
+                    &rx,
+                    with_hessian,
+                    self.section.tension_only,
+                ),
+            };
             u += p.wl * e;
             let a = &p.shape.n_x;
             for k in 0..NS {

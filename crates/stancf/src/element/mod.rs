@@ -40,6 +40,7 @@
 //! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
 
 mod added_mass;
+mod axial_curve;
 mod curvature;
 mod damping;
 mod drag;
@@ -51,6 +52,7 @@ mod strain;
 mod water;
 
 pub use added_mass::AddedMassDerivatives;
+pub use axial_curve::AxialCurve;
 pub use curvature::{bending_energy_density, bending_energy_gradient, curvature};
 pub use slab::{SlabDerivatives, SlabLoads, TimePoint, TimeSlab};
 pub use strain::{
@@ -92,7 +94,7 @@ impl Curvature {
 }
 
 /// Cross-section stiffnesses and line density.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Section {
     /// Axial stiffness EA (N).
     pub ea: f64,
@@ -106,6 +108,24 @@ pub struct Section {
     /// No compression (chains, ropes; docs/method.md §2.2, (M4a)): the
     /// axial energy is 1/2 EA eps^2 where eps >= 0 and 0 where eps < 0.
     pub tension_only: bool,
+    /// A nonlinear axial law from a table (docs/method.md §2.2a, (M4b)),
+    /// taking the place of EA eps (engineering strain only); None: EA.
+    pub curve: Option<std::sync::Arc<AxialCurve>>,
+}
+
+impl Section {
+    /// The elastic axial force at the strain `eps`: EA eps, or the curve's
+    /// T(eps) (M4b); 0 where a line without compression is shortened
+    /// ((M4a)).
+    pub fn axial_force(&self, eps: f64) -> f64 {
+        if self.tension_only && eps < 0.0 {
+            return 0.0;
+        }
+        match &self.curve {
+            Some(c) => c.at(eps).1,
+            None => self.ea * eps,
+        }
+    }
 }
 
 /// Which strain and curvature the elastic energy uses.

@@ -54,6 +54,7 @@ impl Material {
             rho_a: self.density * self.area,
             ba: self.axial_damping,
             tension_only: false,
+            curve: None,
         }
     }
 

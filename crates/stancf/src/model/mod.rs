@@ -124,13 +124,15 @@ impl Mesh {
             ElementType::Sac2 => Mesh::Sac2(
                 lengths
                     .iter()
-                    .map(|&l| CableElement::new(cubic_hermite, l, section, measures, rules))
+                    .map(|&l| CableElement::new(cubic_hermite, l, section.clone(), measures, rules))
                     .collect(),
             ),
             ElementType::Sac3 => Mesh::Sac3(
                 lengths
                     .iter()
-                    .map(|&l| CableElement::new(quintic_hermite, l, section, measures, rules))
+                    .map(|&l| {
+                        CableElement::new(quintic_hermite, l, section.clone(), measures, rules)
+                    })
                     .collect(),
             ),
         }
@@ -194,6 +196,36 @@ impl Model {
             Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.tension_only = true),
         }
         self
+    }
+
+    /// The model whose elements' axial law is the table `curve` instead
+    /// of EA eps (docs/method.md §2.2a, (M4b)). The table is in
+    /// engineering strain: a model of Green's strain is refused.
+    pub fn with_axial_curve(
+        mut self,
+        curve: std::sync::Arc<crate::element::AxialCurve>,
+    ) -> Result<Self, ModelError> {
+        if self.options.measures.axial_strain != crate::AxialStrain::Engineering {
+            return Err(ModelError::invalid(
+                "axial_curve",
+                "a tension-strain curve is in engineering strain (|r_x| - 1); the model's axial \
+                 strain is Green's",
+            ));
+        }
+        match &mut self.mesh {
+            Mesh::Sac2(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.curve = Some(curve.clone())),
+            Mesh::Sac3(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.curve = Some(curve.clone())),
+        }
+        Ok(self)
+    }
+
+    /// The line's nonlinear axial law (M4b), if it has one.
+    pub fn axial_curve(&self) -> Option<&crate::element::AxialCurve> {
+        crate::with_elements!(&self.mesh, els => els.first().and_then(|e| e.section.curve.as_deref()))
     }
 
     /// The model with every element carrying compression again (what the

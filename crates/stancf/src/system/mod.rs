@@ -28,6 +28,7 @@ mod balance;
 mod bodies;
 mod body_clamps;
 mod body_holds;
+mod body_pins;
 mod body_statics;
 mod body_terms;
 mod clamp_checks;

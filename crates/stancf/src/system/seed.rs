@@ -92,8 +92,10 @@ const JUST_TAUT: f64 = 1e-9;
 /// a stretch. A slack line's straight start between its ends is
 /// compressed, and a line without compression has no axial stiffness
 /// there: its highest frequency would be its bending's, which its motion
-/// leaves as soon as it pulls taut. The states the P2 step's stability
-/// is judged on ([`super::stable_step`]).
+/// leaves as soon as it pulls taut. A line of a nonlinear axial law
+/// (docs/method.md §2.2a) is stretched into the middle of its stiffest
+/// segment. The states the P2 step's stability is judged on
+/// ([`super::stable_step`]).
 pub fn taut_states(system: &System) -> Vec<State> {
     (0..system.lines().len())
         .map(|i| {
@@ -110,6 +112,10 @@ pub fn taut_states(system: &System) -> Vec<State> {
             } else {
                 ([0.0, 0.0, -1.0], 1.0 + JUST_TAUT)
             };
+            // A nonlinear axial law (M4b) is judged where it is stiffest.
+            let stretch = model
+                .axial_curve()
+                .map_or(stretch, |c| 1.0 + c.stiffest_strain());
             let end: [f64; 3] = std::array::from_fn(|k| a[k] + direction[k] * stretch * length);
             straight_between(model, a, end)
         })
@@ -206,7 +212,7 @@ fn folded_vertical(
     gravity: [f64; 3],
 ) -> Option<Folded> {
     let g = norm(gravity);
-    if g == 0.0 || line.weight <= 0.0 || !(line.ea > 0.0) {
+    if g == 0.0 || line.weight <= 0.0 || line.ea.is_nan() || line.ea <= 0.0 {
         return None;
     }
     let down = gravity.map(|c| c / g);

@@ -499,3 +499,43 @@ fn initial_axial_forces_match_finite_differences() {
         }
     }
 }
+
+/// A nonlinear axial law from a table (docs/method.md §2.2a, (M4b)) in
+/// the slab: its gradient and Hessian against central differences of the
+/// action at random states, which stretch and shorten the element across
+/// the table's segments (kinks at strains 0.05 and 0.15; a central
+/// difference straddling one would show it, and none of these does), with
+/// and without compression.
+#[test]
+fn a_tension_strain_curves_slab_derivatives_match_finite_differences() {
+    let mut rng = Rng(0x5eed_c0de_0032_0001);
+    let curve = stancf::element::AxialCurve::new(
+        &[(0.0, 0.0), (0.05, 0.2), (0.15, 1.0), (0.6, 2.0)],
+        "curve",
+    )
+    .unwrap();
+    let m = stancf::element::Measures {
+        axial_strain: AxialStrain::Engineering,
+        curvature: Curvature::Exact,
+    };
+    let r = rules(4, 3);
+    for tension_only in [false, true] {
+        let sec = stancf::element::Section {
+            curve: Some(std::sync::Arc::new(curve.clone())),
+            tension_only,
+            ..section()
+        };
+        let el = CableElement::new(stancf::shape::cubic_hermite, 0.45, sec, m, &r);
+        let s = slab(0.08, 3);
+        for k in 0..3 {
+            let y = random_slab_state::<4, 12>(&mut rng, 0.45, 0.2);
+            check_slab(
+                &el,
+                &s,
+                &y,
+                &SlabLoads::gravity([0.3, -9.81, 0.1]),
+                &format!("curve, tension only {tension_only}, state {k}"),
+            );
+        }
+    }
+}

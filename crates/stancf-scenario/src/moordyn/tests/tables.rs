@@ -60,8 +60,17 @@ fn a_negative_ba_is_kept_as_a_damping_ratio() {
 
 #[test]
 fn a_non_constant_ea_is_refused_naming_the_form() {
+    // A file name is MoorDyn's nonlinear curve, which the scenario reads
+    // (docs/method.md §2.2a); a curve for BA is refused.
+    let curve = parse(&with("1e8 -0.8", "ea_curve.dat -0.8")).unwrap();
+    assert_eq!(
+        curve.line_types[0].ea_curve_file.as_deref(),
+        Some("ea_curve.dat")
+    );
+    let e = error(&with("1e8 -0.8", "1e8 ba_curve.dat"));
+    assert!(e.message.contains("BA/-zeta of line type \"chain\""), "{e}");
+    assert!(e.message.contains("nonlinear curve"), "{e}");
     for (ea, words) in [
-        ("ea_curve.dat", "nonlinear curve"),
         ("1e8|2e8", "viscoelastic"),
         ("SYROPE:owc.dat|0.1|0.2", "Syrope"),
     ] {

@@ -61,6 +61,7 @@ pub fn section() -> Section {
         rho_a: 1.3,
         ba: 0.0,
         tension_only: false,
+        curve: None,
     }
 }
 
