@@ -85,11 +85,13 @@ pub(in crate::system) fn static_bodies(system: &System) -> Vec<StaticBody> {
                     .water
                     .as_ref()
                     .filter(|w| {
-                        w.current != [0.0; 3]
+                        let current_drag = w.current != [0.0; 3]
                             && (w.drag_areas != [0.0; 3]
                                 || w.rods.iter().any(|r| {
                                     r.drag_coefficient != 0.0 || r.end_drag_coefficient != 0.0
-                                }))
+                                }));
+                        // A body-fixed external force (B43) acts at rest.
+                        current_drag || w.external.body_force != [0.0; 3]
                     })
                     .cloned(),
                 rods_water: body.water.as_ref().filter(|w| !w.rods.is_empty()).cloned(),

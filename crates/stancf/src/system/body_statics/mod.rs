@@ -59,7 +59,8 @@ pub(super) struct StaticBody {
     /// (the centre's rows it replaces: what balances the body's other
     /// loads, (B35) at rest).
     pub pin_force: [f64; 3],
-    /// The body's water where a steady current drags it (B10), (B19).
+    /// The body's water where a steady current drags it (B10), (B19), or
+    /// where it carries a body-fixed external force (B43).
     pub drag: Option<BodyWater>,
     /// The body's water where it has rods, whose buoyancy is a potential
     /// of the pose (B20).
