@@ -372,3 +372,40 @@ fn a_weight_set_over_its_anchor_falls_past_it_and_hangs_below() {
         assert!((got - z).abs() < 1e-8, "{name}: z = {got} against {z}");
     }
 }
+
+/// The catenary network's stiffness continuation (docs/method.md §11.6):
+/// a 1000 kg body hung level by three equal ropes of 30 m (EA 1e8 N, as
+/// dense as the water, so they hang straight) from the corners of a
+/// triangle about its centre, pushed aside by 3000 N. Its equilibrium is
+/// the pendulum's: the ropes parallel at tan(theta) = F / W, each
+/// stretched by |F + W| / (3 EA), the body at
+/// x = L (1 + eps) sin(theta), z = -L (1 + eps) cos(theta); the closed
+/// form to 1e-8 m (the ropes' stretch and the straight line are what the
+/// elements hold). Before, the network's Newton steps along the stiff
+/// ropes' tangent crept (|G| stalled at 2.8e3 N), the path started from
+/// the ropes hanging plumb and failed at load factor 0 (exit 3).
+#[test]
+fn a_weight_pushed_aside_on_stiff_ropes_rests_at_its_pendulum_angle() {
+    let (mass, push, length, ea, g) = (1000.0f64, 3000.0f64, 30.0f64, 1.0e8f64, 9.81f64);
+    let diameter = (4.0 * 2.0 / (1025.0 * std::f64::consts::PI)).sqrt();
+    let sc = weight_on_three_ropes(diameter, ea, &format!("force = [{push:?}, 0.0, 0.0]"));
+    let d = scratch("stiff-ropes-pushed");
+    let path = write_scenario(&d, "pushed.toml", &sc);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let weight = mass * g;
+    let theta = (push / weight).atan();
+    let eps = push.hypot(weight) / (3.0 * ea);
+    let want = [
+        length * (1.0 + eps) * theta.sin(),
+        -length * (1.0 + eps) * theta.cos(),
+    ];
+    let got = [rows[0][col("x")], rows[0][col("z")]];
+    eprintln!("body at {got:?} m against {want:?} m");
+    for k in 0..2 {
+        assert!((got[k] - want[k]).abs() < 1e-8, "{got:?} against {want:?}");
+    }
+}

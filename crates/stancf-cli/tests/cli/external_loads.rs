@@ -247,29 +247,7 @@ fn external_loads_stancf_does_not_build_are_refused_naming_the_row() {
 #[test]
 fn a_static_solve_holds_a_body_fixed_force_as_the_same_global_force() {
     let d = scratch("external-loads-static");
-    let mut ropes = String::new();
-    for k in 0..3 {
-        let a = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
-        let (x, y) = (a.cos(), a.sin());
-        ropes.push_str(&format!(
-            "[[points]]\nid = {}\ntype = \"fixed\"\nposition = [{x:?}, {y:?}, 0.0]\n\
-             [[points]]\nid = {}\ntype = \"body\"\nbody = 1\nposition = [{x:?}, {y:?}, 0.0]\n\
-             [[lines]]\nid = {}\ntype = \"rope\"\nlength = 30.0\nelements = 10\na = {}\nb = {}\n",
-            2 * k + 1,
-            2 * k + 2,
-            k + 1,
-            2 * k + 1,
-            2 * k + 2
-        ));
-    }
-    let scenario = |keys: &str| {
-        format!(
-            "title = \"pushed weight\"\n[water]\ndepth = 100.0\ndensity = 1025.0\n\
-             [[line_types]]\nname = \"rope\"\ndiameter = 0.05\nmass_per_length = 2.0\nea = 1.0e6\n\
-             [[bodies]]\nid = 1\ntype = \"free\"\nposition = [0.0, 0.0, -30.0]\nmass = 1000.0\n\
-             inertia = [50.0, 50.0, 50.0]\n{keys}\n{ropes}[analysis]\ntype = \"static\"\n"
-        )
-    };
+    let scenario = |keys: &str| weight_on_three_ropes(0.05, 1.0e6, keys);
     let rest = |name: &str, keys: &str| -> [f64; 6] {
         let path = write_scenario(&d, &format!("{name}.toml"), &scenario(keys));
         let out = d.join(format!("out-{name}"));

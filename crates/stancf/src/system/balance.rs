@@ -153,12 +153,15 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
         bodies,
         riders,
         yaw_springs,
+        ea_cap: f64::INFINITY,
     };
     if net.free.is_empty() && net.bodies.is_empty() {
         return (positions, poses);
     }
     let start = net.start(system, &positions);
-    if let Some(x) = solve_network(system, &net, &positions, start) {
+    let solved = solve_network(system, &net, &positions, start.clone())
+        .or_else(|| stiffening(system, net.clone(), &positions, start));
+    if let Some(x) = solved {
         net.place(system, &x, &mut positions);
         for k in 0..net.bodies.len() {
             for (b, pose) in net.members(system, &x, k) {
@@ -173,6 +176,46 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
     }
     (positions, poses)
 }
+
+/// The lines' stiffness continuation of (M32a), where Newton on the
+/// network itself does not converge: stiff lines (EA many thousands of
+/// times their tension) that must swing to their equilibrium (a weight
+/// pushed aside on taut ropes, a pendulum released from aside) make the
+/// Newton step move along the ropes' tangent and stretch them, and the
+/// halved steps creep. The network is solved with every line's EA capped
+/// at [`SOFT_EA`] times the forces at play, where a swing stretches the
+/// lines by a few per cent only, and then with the cap raised
+/// [`STIFFENING`] times at each stage, each from the last one's solution,
+/// until no line is capped (docs/method.md §11.6). None if a stage fails.
+fn stiffening(
+    system: &System,
+    mut net: Network,
+    start: &[[f64; 3]],
+    mut x: Vec<f64>,
+) -> Option<Vec<f64>> {
+    let mut positions = start.to_vec();
+    let scale = imbalance(system, &net, &mut positions, &x)?.1;
+    let stiffest = system
+        .lines()
+        .iter()
+        .map(|l| l.model.material.section().ea)
+        .fold(0.0f64, f64::max);
+    let mut cap = SOFT_EA * scale;
+    loop {
+        net.ea_cap = if cap >= stiffest { f64::INFINITY } else { cap };
+        x = solve_network(system, &net, start, x)?;
+        if net.ea_cap == f64::INFINITY {
+            return Some(x);
+        }
+        cap *= STIFFENING;
+    }
+}
+
+/// The softened network's EA over its forces (a few per cent of stretch
+/// under them).
+const SOFT_EA: f64 = 30.0;
+/// The factor the cap rises by at each stage of [`stiffening`].
+const STIFFENING: f64 = 30.0;
 
 /// Newton on (M32a) from `x`; the unknowns of `net`, or None if it does
 /// not converge.

@@ -6,7 +6,7 @@
 //! force and moment about its centre; the heading springs of assemblies
 //! that turn freely about the vertical. Newton on G is `balance.rs`.
 
-use super::seed::{end_positions_at, seed_shape};
+use super::seed::{end_positions_at, seed_shape_capped};
 use super::{End, System};
 use crate::body::pose::Pose;
 
@@ -39,6 +39,7 @@ fn rider_pose(system: &System, root: usize, (r, rotation): Pose, c: usize) -> Po
 
 /// The unknowns of (M32a): the free points' coordinates (3 each), then
 /// the free bodies' centres and rotation vectors (6 each).
+#[derive(Clone)]
 pub(super) struct Network {
     pub free: Vec<usize>,
     pub bodies: Vec<usize>,
@@ -48,6 +49,9 @@ pub(super) struct Network {
     /// Body k's heading spring (N m/rad) where its assembly turns freely
     /// about the vertical ([`super::body_holds::yaw_hold`]).
     pub yaw_springs: Vec<Option<f64>>,
+    /// The largest EA the lines' closed forms take (infinite: their own):
+    /// the softened network of the stiffness continuation (§11.6).
+    pub ea_cap: f64,
 }
 
 impl Network {
@@ -176,7 +180,7 @@ pub(super) fn imbalance(
             continue;
         }
         let (a, b) = end_positions_at(system, li, positions);
-        let shape = seed_shape(system, li, a, b);
+        let shape = seed_shape_capped(system, li, a, b, net.ea_cap);
         for (end, p) in ends {
             let f = shape.end_force(end);
             if f.iter().any(|v| !v.is_finite()) {

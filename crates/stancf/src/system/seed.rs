@@ -255,12 +255,24 @@ fn fold_sides(line: CatenaryLine, drop: f64) -> Option<(f64, f64)> {
 
 /// Line `line`'s seed shape from `a` to `b` (see [`catenary_states`]).
 pub(super) fn seed_shape(system: &System, line: usize, a: [f64; 3], b: [f64; 3]) -> SeedShape {
+    seed_shape_capped(system, line, a, b, f64::INFINITY)
+}
+
+/// [`seed_shape`] with the line's EA taken at most `ea_cap` (the
+/// softened catenary network, docs/method.md §11.6).
+pub(super) fn seed_shape_capped(
+    system: &System,
+    line: usize,
+    a: [f64; 3],
+    b: [f64; 3],
+    ea_cap: f64,
+) -> SeedShape {
     let model = &system.lines()[line].model;
     let section = model.material.section();
     let cat_line = CatenaryLine {
         length: model.cable.length,
         weight: section.rho_a * norm(model.gravity),
-        ea: section.ea,
+        ea: section.ea.min(ea_cap),
     };
     let direction = if norm(model.gravity) > 0.0 {
         model.gravity

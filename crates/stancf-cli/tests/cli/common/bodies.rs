@@ -130,3 +130,32 @@ pub fn worst_interval_mean(
         })
         .fold(0.0, f64::max)
 }
+
+/// A 1000 kg body (no volume, moments 50 kg m^2) hung level at z = -30 m
+/// by three equal 30 m ropes (2 kg/m, `diameter`, `ea`; 10 elements each)
+/// from the corners of a unit triangle about its centre at the surface,
+/// its ropes on body points at the same corners, in 100 m of water; the
+/// body's extra keys `body_keys`; a static run.
+pub fn weight_on_three_ropes(diameter: f64, ea: f64, body_keys: &str) -> String {
+    let mut ropes = String::new();
+    for k in 0..3 {
+        let a = 2.0 * std::f64::consts::PI * k as f64 / 3.0;
+        let (x, y) = (a.cos(), a.sin());
+        ropes.push_str(&format!(
+            "[[points]]\nid = {}\ntype = \"fixed\"\nposition = [{x:?}, {y:?}, 0.0]\n\
+             [[points]]\nid = {}\ntype = \"body\"\nbody = 1\nposition = [{x:?}, {y:?}, 0.0]\n\
+             [[lines]]\nid = {}\ntype = \"rope\"\nlength = 30.0\nelements = 10\na = {}\nb = {}\n",
+            2 * k + 1,
+            2 * k + 2,
+            k + 1,
+            2 * k + 1,
+            2 * k + 2
+        ));
+    }
+    format!(
+        "title = \"weight on three ropes\"\n[water]\ndepth = 100.0\ndensity = 1025.0\n\
+         [[line_types]]\nname = \"rope\"\ndiameter = {diameter:?}\nmass_per_length = 2.0\nea = {ea:?}\n\
+         [[bodies]]\nid = 1\ntype = \"free\"\nposition = [0.0, 0.0, -30.0]\nmass = 1000.0\n\
+         inertia = [50.0, 50.0, 50.0]\n{body_keys}\n{ropes}[analysis]\ntype = \"static\"\n"
+    )
+}
