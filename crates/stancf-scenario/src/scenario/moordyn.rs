@@ -63,13 +63,15 @@ pub(super) fn deck_scenario(
     // deck's EA of such a type becomes the curve's secant at its last
     // point (MoorDyn's EA for its damping ratio and CFL).
     let (curves, curve_notes) = super::ea_curves::deck_curves(deck, file, path)?;
-    let mut with_curves = deck.clone();
-    for (t, c) in with_curves.line_types.iter_mut().zip(&curves) {
-        if let Some(c) = c {
-            t.ea = c.secant_stiffness();
+    let mut deck = std::borrow::Cow::Borrowed(deck);
+    if curves.iter().any(Option::is_some) {
+        for (t, c) in deck.to_mut().line_types.iter_mut().zip(&curves) {
+            if let Some(c) = c {
+                t.ea = c.secant_stiffness();
+            }
         }
     }
-    let deck = &with_curves;
+    let deck: &Deck = &deck;
     let g = deck_gravity(deck, file, host)?;
     let farm = farm.or_else(|| {
         host.turbines.clone().map(|positions| super::farm::Farm {

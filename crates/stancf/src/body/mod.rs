@@ -32,10 +32,11 @@ pub mod pose;
 pub mod rod;
 pub mod rotation;
 pub mod terms;
+mod water;
 pub mod waterline;
 pub mod wet;
 
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;
 pub use rod::Rod;
-pub use terms::{BodyExternal, BodyWater};
+pub use water::{BodyExternal, BodyWater};

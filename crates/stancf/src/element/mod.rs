@@ -113,21 +113,6 @@ pub struct Section {
     pub curve: Option<std::sync::Arc<AxialCurve>>,
 }
 
-impl Section {
-    /// The elastic axial force at the strain `eps`: EA eps, or the curve's
-    /// T(eps) (M4b); 0 where a line without compression is shortened
-    /// ((M4a)).
-    pub fn axial_force(&self, eps: f64) -> f64 {
-        if self.tension_only && eps < 0.0 {
-            return 0.0;
-        }
-        match &self.curve {
-            Some(c) => c.at(eps).1,
-            None => self.ea * eps,
-        }
-    }
-}
-
 /// Which strain and curvature the elastic energy uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Measures {
