@@ -52,7 +52,14 @@ fn element_energies<const NS: usize, const ND: usize>(
         let qd: [f64; ND] = gather(&state.v, o);
         let mq = el.mass_times(&qd);
         en.kinetic += 0.5 * qd.iter().zip(mq.iter()).map(|(a, b)| a * b).sum::<f64>();
-        en.strain += el.strain_energy(&q);
+        en.strain += match &el.section.visco {
+            // A viscoelastic line's springs (docs/method.md §2.11).
+            Some(_) if !state.internal.is_empty() => {
+                let internal = &state.internal[k * el.axial_rule_points()..];
+                el.bending_energy(&q) + el.visco_stored_energy(&q, internal)
+            }
+            _ => el.strain_energy(&q),
+        };
         let fg = el.gravity_load(g);
         en.gravity -= fg.iter().zip(q.iter()).map(|(a, b)| a * b).sum::<f64>();
     }
@@ -149,6 +156,16 @@ fn model_axial_stress(model: &Model, compression: bool, eps: f64) -> f64 {
     }
 }
 
+/// A viscoelastic line's axial force at xi of element k (None without
+/// the law).
+fn visco_force(model: &Model, state: &State, k: usize, xi: f64) -> Option<f64> {
+    let o = coordinate(model.dofs_per_node(), k, SLOT_R, 0);
+    let internal = model.element_internal(&state.internal, k);
+    crate::with_elements!(&model.mesh, els => {
+        els[k].visco_axial_force(xi, &state.e[o..], &state.v[o..], internal)
+    })
+}
+
 /// One sample of the axial stress and curvature.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StressSample {
@@ -189,11 +206,10 @@ pub fn stress_samples(
             out.push(StressSample {
                 element: k,
                 s: model.material_coordinate(k, xi),
-                axial_stress: model_axial_stress(
-                    model,
-                    compression,
-                    axial_strain(m.axial_strain, &rx),
-                ),
+                axial_stress: match visco_force(model, state, k, xi) {
+                    Some(n) if !state.internal.is_empty() => n / model.material.area,
+                    _ => model_axial_stress(model, compression, axial_strain(m.axial_strain, &rx)),
+                },
                 curvature: curvature(m.curvature, &rx, &rxx),
             });
         }
@@ -213,8 +229,19 @@ pub fn node_axial_forces(model: &Model, state: &State) -> Vec<f64> {
         .collect()
 }
 
-/// [`node_axial_forces`] at node k alone.
+/// [`node_axial_forces`] at node k alone. A viscoelastic line's (with
+/// its internal state, docs/method.md §2.11): the law's N (V1) at the
+/// node, the mean of its elements' values there.
 pub fn node_axial_force(model: &Model, state: &State, k: usize) -> f64 {
+    if model.has_internal_state() && !state.internal.is_empty() {
+        let elements = model.cable.elements;
+        let sides = [(k.checked_sub(1), 1.0), ((k < elements).then_some(k), 0.0)];
+        let values: Vec<f64> = sides
+            .iter()
+            .filter_map(|&(el, xi)| visco_force(model, state, el?, xi))
+            .collect();
+        return values.iter().sum::<f64>() / values.len() as f64;
+    }
     let material = &model.material;
     let ea = material.youngs_modulus * material.area;
     let measure = model.options.measures.axial_strain;

@@ -127,7 +127,9 @@ impl StepProblem<'_> {
                         };
                         *ym = gather(src, i * n + o);
                     }
-                    elements[k].slab_derivatives(self.slab, &y, &loads, with_jacobian, d);
+                    let history = self.model.element_internal(&self.start.internal, k);
+                    let el = &elements[k];
+                    el.slab_derivatives_from(self.slab, &y, &loads, history, with_jacobian, d);
                 };
                 if count > 1 {
                     chunk.par_iter_mut().enumerate().for_each(evaluate);
@@ -140,6 +142,10 @@ impl StepProblem<'_> {
                     scratch.damping_work += d.damping_work;
                     scratch.seabed_work += d.seabed_work;
                     scratch.water_work += d.water_work;
+                    if d.visco.active {
+                        let per = d.visco.end.len();
+                        scratch.internal_end[k * per..(k + 1) * per].copy_from_slice(&d.visco.end);
+                    }
                     let at = (j * elements.len() + k) * per_element;
                     let targets = &all_targets[at..at + per_element];
                     for m in 0..4 {

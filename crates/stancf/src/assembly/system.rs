@@ -28,9 +28,17 @@ pub struct StepStart {
     /// element's axial rule, element after element (empty: none), taken
     /// off the elastic axial force (docs/method.md §11.6, (M32b)).
     pub initial_axial_force: Vec<f64>,
+    /// The internal state at the start ([`crate::State::internal`]).
+    pub internal: Vec<f64>,
 }
 
 impl StepStart {
+    /// Sets the internal state at the start.
+    pub fn set_internal(&mut self, internal: &[f64]) {
+        self.internal.clear();
+        self.internal.extend_from_slice(internal);
+    }
+
     pub fn new(model: &Model, time_nodes: usize) -> Self {
         let n = model.dofs();
         StepStart {
@@ -42,11 +50,13 @@ impl StepStart {
             fixed_v: vec![0.0; time_nodes * n],
             load_factor: 1.0,
             initial_axial_force: Vec::new(),
+            internal: Vec::new(),
         }
     }
 
     /// Sets the start to `(t, e, v)` and the prescribed values at the time
     /// nodes t + i h.
+    /// The internal state is set apart ([`Self::set_internal`]).
     pub fn set(&mut self, model: &Model, t: f64, e: &[f64], v: &[f64], h: f64) {
         self.t = t;
         self.e.copy_from_slice(e);
@@ -91,6 +101,9 @@ pub struct AssemblyScratch {
     /// Work of the axial damping over the step (-int int BA eps_dot^2 dx
     /// dt; docs/method.md §2.10).
     pub damping_work: f64,
+    /// A viscoelastic line's internal state at the end of the slab of the
+    /// last evaluation (docs/method.md §2.11).
+    pub internal_end: Vec<f64>,
     /// Work of the seabed contact over the step (W47).
     pub seabed_work: f64,
     pub water_work: f64,
@@ -114,6 +127,7 @@ impl AssemblyScratch {
             seabed_work: 0.0,
             water_work: 0.0,
             end_momentum: vec![0.0; n],
+            internal_end: vec![0.0; model.internal_state_len()],
         }
     }
 }

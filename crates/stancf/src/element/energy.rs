@@ -23,12 +23,19 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 u += p.wl * 0.5 * self.section.ea * eps * eps;
             }
         }
-        for p in &self.bending_points {
-            let (rx, rxx) = p.shape.gradients(q);
-            let k = curvature(self.measures.curvature, &rx, &rxx);
-            u += p.wl * 0.5 * self.section.ei * k * k;
-        }
-        u
+        u + self.bending_energy(q)
+    }
+
+    /// The bending share of [`Self::strain_energy`].
+    pub fn bending_energy(&self, q: &[f64; ND]) -> f64 {
+        self.bending_points
+            .iter()
+            .map(|p| {
+                let (rx, rxx) = p.shape.gradients(q);
+                let k = curvature(self.measures.curvature, &rx, &rxx);
+                p.wl * 0.5 * self.section.ei * k * k
+            })
+            .sum()
     }
 
     /// Strain energy, its gradient dU/dq and (if asked) its Hessian d2U/dq2.
@@ -42,7 +49,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) -> f64 {
-        self.energy_derivatives_in::<3>(q, grad, hess)
+        self.energy_derivatives_in::<3>(q, grad, hess, true)
     }
 
     /// [`Self::strain_energy_derivatives`] of a line held in the plane
@@ -59,17 +66,36 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) -> f64 {
-        self.energy_derivatives_in::<2>(q, grad, hess)
+        self.energy_derivatives_in::<2>(q, grad, hess, true)
+    }
+
+    /// The strain energy's derivatives in a slab (3 or, `in_plane`, 2
+    /// components): of a viscoelastic line only the bending energy's,
+    /// its axial force being the history's (docs/method.md §2.11).
+    pub(super) fn slab_energy_derivatives(
+        &self,
+        in_plane: bool,
+        q: &[f64; ND],
+        grad: &mut [f64; ND],
+        hess: Option<&mut [[f64; ND]; ND]>,
+    ) -> f64 {
+        let axial = self.section.visco.is_none();
+        if in_plane {
+            self.energy_derivatives_in::<2>(q, grad, hess, axial)
+        } else {
+            self.energy_derivatives_in::<3>(q, grad, hess, axial)
+        }
     }
 
     /// The derivatives in the first D components of every vector (3: all;
-    /// 2: x and y).
+    /// 2: x and y); without the axial energy unless `axial`.
     #[inline(always)]
     fn energy_derivatives_in<const D: usize>(
         &self,
         q: &[f64; ND],
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
+        axial: bool,
     ) -> f64 {
         *grad = [0.0; ND];
         let mut hess = hess;
@@ -78,7 +104,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         let mut u = 0.0;
         let with_hessian = hess.is_some();
-        for p in &self.axial_points {
+        let axial_points = if axial { &self.axial_points[..] } else { &[] };
+        for p in axial_points {
             let (rx, _) = p.shape.gradients(q);
             let (e, g, h) = match &self.section.curve {
                 Some(c) => curve_energy_terms(c, &rx, with_hessian, self.section.tension_only),

@@ -37,6 +37,8 @@
 //! | `drag` | air drag virtual work and its Jacobian | §2.8, §6.8 |
 //! | `damping` | axial (Kelvin-Voigt) damping virtual work and its Jacobian | §2.10 |
 //! | `added_mass` | the entrained water's kinetic energy, its momentum and derivatives | §12.5 |
+//! | `viscoelastic` | the viscoelastic rope's law and its collocation over a slab | §2.11 |
+//! | `visco_slab` | its axial forces in the slab derivatives, their Jacobian | §2.11 |
 //! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
 
 mod added_mass;
@@ -49,6 +51,8 @@ mod point_force;
 mod seabed;
 mod slab;
 mod strain;
+mod visco_slab;
+mod viscoelastic;
 mod water;
 
 pub use added_mass::AddedMassDerivatives;
@@ -59,6 +63,8 @@ pub use strain::{
     axial_energy_density, axial_energy_gradient, axial_strain, axial_strain_derivatives,
     tension_only_energy_density,
 };
+pub use visco_slab::ViscoDerivatives;
+pub use viscoelastic::{DynamicStiffness, Viscoelastic};
 
 use crate::quadrature::GaussRule;
 use crate::shape::SpatialShape;
@@ -111,6 +117,11 @@ pub struct Section {
     /// A nonlinear axial law from a table (docs/method.md §2.2a, (M4b)),
     /// taking the place of EA eps (engineering strain only); None: EA.
     pub curve: Option<std::sync::Arc<AxialCurve>>,
+    /// A viscoelastic law (docs/method.md §2.11, (V1)-(V4)): in a
+    /// slab the axial force is the law's, from the internal strain of
+    /// every axial point; EA is its static stiffness (statics). None:
+    /// elastic.
+    pub visco: Option<Viscoelastic>,
 }
 
 /// Which strain and curvature the elastic energy uses.
@@ -150,6 +161,9 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     pub mass: [[f64; NS]; NS],
     /// `int rho A N_k dx`: the gravity load of eq. (13) is this times g.
     pub weight_integrals: [f64; NS],
+    /// The shape functions (to evaluate the element between its
+    /// quadrature points).
+    shape: ShapeFn<NS>,
 }
 
 /// The NS shape functions as a function of (xi, l).
@@ -281,6 +295,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             mass_points: at(&exact),
             mass,
             weight_integrals,
+            shape,
         }
     }
 

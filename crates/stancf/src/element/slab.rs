@@ -52,6 +52,22 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         with_hessian: bool,
         out: &mut SlabDerivatives<ND>,
     ) {
+        self.slab_derivatives_from(slab, y, loads, &[], with_hessian, out);
+    }
+
+    /// [`Self::slab_derivatives`] from the internal state `history` of a
+    /// viscoelastic element at the slab's start (eps1 at each point of the
+    /// axial rule, docs/method.md §2.11; empty: at rest at e_a); its
+    /// state at the slab's end is left in `out.visco.end`.
+    pub fn slab_derivatives_from(
+        &self,
+        slab: &TimeSlab,
+        y: &[[f64; ND]; 4],
+        loads: &SlabLoads,
+        history: &[f64],
+        with_hessian: bool,
+        out: &mut SlabDerivatives<ND>,
+    ) {
         let fg = self.gravity_load(&loads.gravity);
         out.grad = [[0.0; ND]; 4];
         out.action = 0.0;
@@ -77,20 +93,33 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             out.c_at_points.resize(np, [[0.0; ND]; ND]);
             out.g_at_points.resize(np, [[0.0; ND]; ND]);
         }
+        out.visco.active = false;
+        if let Some(visco) = &self.section.visco {
+            let rest;
+            let start = if history.is_empty() {
+                rest = self.rest_internal_state(&y[0]);
+                &rest[..]
+            } else {
+                history
+            };
+            self.slab_viscoelastic(visco, slab, y, start, with_hessian, out);
+        }
+        let ns = self.axial_points.len();
         let mut du = [0.0; ND];
         for (gi, tp) in slab.points.iter().enumerate() {
             let (q, qdot) = interpolate_in_time(&tp.shape, y);
             let mut mq = self.mass_times(&qdot);
-            let hess = if with_hessian {
+            let mut hess = if with_hessian {
                 Some(&mut out.k_at_points[gi])
             } else {
                 None
             };
-            let strain = if loads.in_plane {
-                self.strain_energy_derivatives_in_plane(&q, &mut du, hess)
-            } else {
-                self.strain_energy_derivatives(&q, &mut du, hess)
-            };
+            let strain =
+                self.slab_energy_derivatives(loads.in_plane, &q, &mut du, hess.as_deref_mut());
+            if out.visco.active {
+                let force = &out.visco.force[gi * ns..(gi + 1) * ns];
+                self.add_axial_forces(&q, force, &mut du, hess);
+            }
             out.action += tp.w_dt * (0.5 * dot_n(&qdot, &mq) - strain + dot_n(&fg, &q));
             // Generalized drag and damping forces on q at this time point.
             let at = with_hessian.then_some(gi);
@@ -163,6 +192,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         if derivs.added_mass.active {
             self.add_entrained_block(slab, &derivs.added_mass, m, n, out);
+        }
+        if derivs.visco.active {
+            self.add_visco_block(slab, derivs, m, n, out);
         }
     }
 
@@ -239,6 +271,9 @@ pub struct SlabDerivatives<const ND: usize> {
     /// The entrained water's matrices (W28) at the time points, used
     /// only if the line is in water with added mass (docs/method.md §12.5).
     pub added_mass: super::AddedMassDerivatives<ND>,
+    /// A viscoelastic line's axial forces and their coupling of the time
+    /// points (docs/method.md §2.11).
+    pub visco: super::visco_slab::ViscoDerivatives,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -257,6 +292,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
             added_mass: super::AddedMassDerivatives::default(),
+            visco: super::visco_slab::ViscoDerivatives::default(),
         }
     }
 }
@@ -315,6 +351,11 @@ pub struct TimeSlab {
     pub kinetic: [[f64; 4]; 4],
     /// `b_m = sum_g w_g dt phi_m`: a constant force F does work b_m F . y_m.
     pub load: [f64; 4],
+    /// The time shapes at the slab's end (tau = 1).
+    pub end: TimeShape,
+    /// The collocation of a viscoelastic line's internal strain at the
+    /// time points and the end (docs/method.md §2.11, (V5)).
+    pub collocation: super::viscoelastic::Collocation,
 }
 
 impl TimeSlab {
@@ -337,17 +378,21 @@ impl TimeSlab {
                 }
             }
         }
+        let mut taus: Vec<f64> = rule.iter().map(|(tau, _)| tau).collect();
+        taus.push(1.0);
         TimeSlab {
             dt,
             points,
             kinetic,
             load,
+            end: crate::shape::time_hermite(1.0, dt),
+            collocation: super::viscoelastic::Collocation::new(&taus, dt),
         }
     }
 }
 
 /// q(t) and qdot(t) from the slab unknowns (eq. 6).
-fn interpolate_in_time<const ND: usize>(
+pub(super) fn interpolate_in_time<const ND: usize>(
     shape: &TimeShape,
     y: &[[f64; ND]; 4],
 ) -> ([f64; ND], [f64; ND]) {

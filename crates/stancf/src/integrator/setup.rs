@@ -49,6 +49,21 @@ impl Simulation {
         let n = model.dofs();
         let mut initial = initial;
         model.apply_constraints(&mut initial);
+        // A viscoelastic line without an internal state starts at rest.
+        model.check_internal_state(&initial.internal)?;
+        if model.has_internal_state() && settings.time_layers != 1 {
+            return Err(ModelError::invalid(
+                "analysis.time_layers",
+                format!(
+                    "a viscoelastic line is stepped with one time layer per step (got {}): its \
+                     internal strain is collocated over one slab (docs/method.md §2.11)",
+                    settings.time_layers
+                ),
+            ));
+        }
+        if initial.internal.is_empty() {
+            initial.internal = model.rest_internal_state(&initial.e);
+        }
         check_end_moments(&model, &initial.e)?;
         if settings.planar_reduction {
             model.reduce_to_plane(&initial);
@@ -69,6 +84,7 @@ impl Simulation {
         let scratch = AssemblyScratch::new(&model, &layout);
         let mut start = StepStart::new(&model, layout.time_nodes());
         start.set(&model, initial.t, &initial.e, &initial.v, h);
+        start.set_internal(&initial.internal);
         let moment_angles = moment_angles(&model, &initial.e);
         let reactions: Vec<(usize, [f64; 3])> = model
             .constraints

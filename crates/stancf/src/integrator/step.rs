@@ -103,6 +103,7 @@ impl Simulation {
         let h = self.slab.dt;
         self.start
             .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
+        self.start.set_internal(&self.state.internal);
     }
 
     /// Advances the state by one step. On failure the state is left at the
@@ -120,6 +121,7 @@ impl Simulation {
         let h = self.slab.dt;
         self.start
             .set(&self.model, self.state.t, &self.state.e, &self.state.v, h);
+        self.start.set_internal(&self.state.internal);
         self.predict();
     }
 
@@ -137,6 +139,13 @@ impl Simulation {
     pub(crate) fn expand_step(&mut self) {
         self.save_undo();
         self.expand_solution(self.settings.time_step);
+        // A viscoelastic line's internal state at the step's end, from
+        // the residual at the solution (docs/method.md §2.11).
+        if !self.state.internal.is_empty() {
+            self.state
+                .internal
+                .copy_from_slice(&self.scratch.internal_end);
+        }
     }
 
     /// Last part of [`Self::finish_step`], once the end rates are set:
@@ -353,6 +362,7 @@ impl Simulation {
         let galerkin = self.settings.time_scheme.carries_momentum();
         let works = !self.model.drag.is_empty()
             || self.model.has_axial_damping()
+            || self.model.has_internal_state()
             || self.model.seabed.is_some()
             || self.model.water.is_some();
         if eliminated || galerkin || works {

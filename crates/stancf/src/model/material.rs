@@ -55,6 +55,7 @@ impl Material {
             ba: self.axial_damping,
             tension_only: false,
             curve: None,
+            visco: None,
         }
     }
 

@@ -31,6 +31,7 @@ mod cable;
 mod coordinates;
 mod entrained;
 mod grading;
+mod internal_state;
 mod mass;
 mod material;
 mod quadrature_choice;
@@ -86,12 +87,18 @@ pub struct Model {
     node_x: Vec<f64>,
 }
 
-/// Positions e and velocities v of all coordinates at time t.
+/// Positions e and velocities v of all coordinates at time t, and the
+/// internal state of the line's material.
 #[derive(Debug, PartialEq)]
 pub struct State {
     pub t: f64,
     pub e: Vec<f64>,
     pub v: Vec<f64>,
+    /// A viscoelastic line's strain eps1 of its static spring at every
+    /// point of every element's axial rule, element after element
+    /// (docs/method.md §2.11; [`Model::internal_state_len`]). Empty: no
+    /// such line, or, given to a simulation, the line at rest at `e`.
+    pub internal: Vec<f64>,
 }
 
 impl Clone for State {
@@ -100,6 +107,7 @@ impl Clone for State {
             t: self.t,
             e: self.e.clone(),
             v: self.v.clone(),
+            internal: self.internal.clone(),
         }
     }
 
@@ -108,6 +116,7 @@ impl Clone for State {
         self.t = source.t;
         self.e.clone_from(&source.e);
         self.v.clone_from(&source.v);
+        self.internal.clone_from(&source.internal);
     }
 }
 
@@ -349,6 +358,7 @@ impl Model {
             t: 0.0,
             e: self.reference_coordinates(),
             v: vec![0.0; n],
+            internal: Vec::new(),
         };
         self.apply_constraints(&mut s);
         s

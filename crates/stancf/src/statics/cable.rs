@@ -39,6 +39,7 @@ impl CableStatics {
             t: 0.0,
             v: vec![0.0; model.dofs()],
             e: start_e,
+            internal: Vec::new(),
         };
         let mut start = StepStart::new(&model, 1);
         start.set(&model, 0.0, &state.e, &state.v, 0.0);

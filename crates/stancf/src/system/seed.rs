@@ -40,6 +40,7 @@ pub fn shaped(model: &Model, shape: impl Fn(f64) -> ([f64; 3], [f64; 3], [f64; 3
         t: 0.0,
         v: vec![0.0; e.len()],
         e,
+        internal: Vec::new(),
     }
 }
 

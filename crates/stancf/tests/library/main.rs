@@ -50,5 +50,6 @@ mod system_momentum;
 mod system_run;
 mod system_statics;
 mod systems;
+mod viscoelastic;
 mod watchdog;
 mod water;

@@ -62,6 +62,7 @@ pub fn section() -> Section {
         ba: 0.0,
         tension_only: false,
         curve: None,
+        visco: None,
     }
 }
 

@@ -1,0 +1,119 @@
+//! The internal state of a line's material (docs/method.md §2.11): a
+//! viscoelastic line carries the strain eps1 of its static spring at every
+//! point of the axial rule of every element, [`State::internal`], element
+//! after element. This file gives a model its law and the state's layout,
+//! its rest value and the energy it stores.
+
+use super::{coordinate, gather, Mesh, Model, State, SLOT_R};
+use crate::element::Viscoelastic;
+use crate::error::ModelError;
+
+impl Model {
+    /// The model whose lines follow the viscoelastic law `law` (static
+    /// stiffness: the material's EA; docs/method.md §2.11). Refused on a
+    /// line with a tension-strain curve or a Kelvin-Voigt BA (the law has
+    /// its own dashpots), or a law that [`Viscoelastic::check`] refuses.
+    pub fn with_viscoelastic(mut self, law: Viscoelastic) -> Result<Self, ModelError> {
+        let ea = self.material.youngs_modulus * self.material.area;
+        law.check(ea, "viscoelastic")?;
+        if self.axial_curve().is_some() {
+            return Err(ModelError::invalid(
+                "viscoelastic",
+                "a line takes a tension-strain curve or a viscoelastic law, not both (MoorDyn's \
+                 viscoelastic model uses a constant static EA)",
+            ));
+        }
+        if self.has_axial_damping() {
+            return Err(ModelError::invalid(
+                "viscoelastic",
+                "a viscoelastic line's damping is its law's two dashpots (BA beside the static \
+                 spring, BA_D beside the dynamic one); the material's axial damping must be 0",
+            ));
+        }
+        match &mut self.mesh {
+            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.visco = Some(law)),
+            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.visco = Some(law)),
+        }
+        Ok(self)
+    }
+
+    /// The line's viscoelastic law, if it has one.
+    pub fn viscoelastic(&self) -> Option<&Viscoelastic> {
+        crate::with_elements!(&self.mesh, els => els.first().and_then(|e| e.section.visco.as_ref()))
+    }
+
+    /// Whether a state of this model carries an internal state.
+    pub fn has_internal_state(&self) -> bool {
+        self.viscoelastic().is_some()
+    }
+
+    /// The internal state's length: one value per point of every
+    /// element's axial rule (0 without a viscoelastic law).
+    pub fn internal_state_len(&self) -> usize {
+        if !self.has_internal_state() {
+            return 0;
+        }
+        crate::with_elements!(&self.mesh, els => els.iter().map(|e| e.axial_rule_points()).sum())
+    }
+
+    /// The internal state at rest at positions `e`: every axial point's
+    /// eps1 where the law's rate vanishes, so the line carries EA eps
+    /// (empty without a viscoelastic law).
+    pub fn rest_internal_state(&self, e: &[f64]) -> Vec<f64> {
+        let dpn = self.dofs_per_node();
+        crate::with_elements!(&self.mesh, els => els
+            .iter()
+            .enumerate()
+            .flat_map(|(k, el)| el.rest_internal_state(&gather(e, coordinate(dpn, k, SLOT_R, 0))))
+            .collect())
+    }
+
+    /// Element k's share of an internal state.
+    pub fn element_internal<'a>(&self, internal: &'a [f64], k: usize) -> &'a [f64] {
+        if internal.is_empty() {
+            return internal;
+        }
+        let per = crate::with_elements!(&self.mesh, els => els[0].axial_rule_points());
+        &internal[k * per..(k + 1) * per]
+    }
+
+    /// The energy stored in the springs of a viscoelastic line in `state`
+    /// (docs/method.md §2.11, (V1)): sum over the axial points of
+    /// 1/2 k1 eps1^2 + 1/2 k2 (eps - eps1)^2; 0 without a law.
+    pub fn visco_stored_energy(&self, state: &State) -> f64 {
+        if !self.has_internal_state() || state.internal.is_empty() {
+            return 0.0;
+        }
+        let dpn = self.dofs_per_node();
+        crate::with_elements!(&self.mesh, els => els
+            .iter()
+            .enumerate()
+            .map(|(k, el)| {
+                let q = gather(&state.e, coordinate(dpn, k, SLOT_R, 0));
+                el.visco_stored_energy(&q, self.element_internal(&state.internal, k))
+            })
+            .sum())
+    }
+
+    /// Checks that `internal` fits the model: empty, or one value per
+    /// axial point.
+    pub(crate) fn check_internal_state(&self, internal: &[f64]) -> Result<(), ModelError> {
+        let want = self.internal_state_len();
+        if internal.is_empty() || internal.len() == want {
+            return Ok(());
+        }
+        Err(ModelError::invalid(
+            "state.internal",
+            format!(
+                "the internal state has {} values; this line has {want} (one per point of each \
+                 element's axial rule{})",
+                internal.len(),
+                if want == 0 {
+                    ", and no viscoelastic law"
+                } else {
+                    ""
+                }
+            ),
+        ))
+    }
+}

@@ -1,0 +1,379 @@
+//! A viscoelastic line's slab rows and their exact Jacobian
+//! (docs/method.md §2.11, (V5)-(V6)): against central differences of
+//! the rows, and at rest against the elastic line of the static EA.
+
+use crate::common::*;
+use stancf::element::{
+    CableElement, DynamicStiffness, Measures, SlabDerivatives, SlabLoads, TimeSlab, Viscoelastic,
+};
+use stancf::shape::{cubic_hermite, quintic_hermite};
+use stancf::{AxialStrain, Curvature};
+
+const H: f64 = 1e-6;
+
+fn laws() -> [Viscoelastic; 2] {
+    [
+        Viscoelastic {
+            dynamic: DynamicStiffness::Constant(7.0),
+            static_damping: 0.4,
+            dynamic_damping: 0.05,
+        },
+        Viscoelastic {
+            dynamic: DynamicStiffness::MeanLoad {
+                alpha: 4.0,
+                beta: 3.0,
+            },
+            static_damping: 0.2,
+            dynamic_damping: 0.0,
+        },
+    ]
+}
+
+fn visco_section(law: Viscoelastic, tension_only: bool) -> stancf::element::Section {
+    stancf::element::Section {
+        visco: Some(law),
+        tension_only,
+        ..section()
+    }
+}
+
+/// The slab rows' Jacobian against central differences of the rows, from
+/// a fixed internal state `history`.
+fn check_jacobian<const NS: usize, const ND: usize>(
+    el: &CableElement<NS, ND>,
+    slab: &TimeSlab,
+    y: &[[f64; ND]; 4],
+    history: &[f64],
+    label: &str,
+) {
+    let loads = SlabLoads::gravity([0.3, -9.81, 0.1]);
+    let mut d = SlabDerivatives::<ND>::default();
+    el.slab_derivatives_from(slab, y, &loads, history, true, &mut d);
+    let (mut dp, mut dm) = (
+        SlabDerivatives::<ND>::default(),
+        SlabDerivatives::<ND>::default(),
+    );
+    let mut exact = Vec::new();
+    let mut fd = Vec::new();
+    let mut block = [[0.0; ND]; ND];
+    let mut columns = vec![vec![[0.0; ND]; 4]; 4 * ND];
+    for n in 0..4 {
+        for b in 0..ND {
+            let (mut yp, mut ym) = (*y, *y);
+            yp[n][b] += H;
+            ym[n][b] -= H;
+            el.slab_derivatives_from(slab, &yp, &loads, history, false, &mut dp);
+            el.slab_derivatives_from(slab, &ym, &loads, history, false, &mut dm);
+            for m in 0..4 {
+                for a in 0..ND {
+                    columns[n * ND + b][m][a] = (dp.grad[m][a] - dm.grad[m][a]) / (2.0 * H);
+                }
+            }
+        }
+    }
+    for m in 0..4 {
+        for n in 0..4 {
+            el.slab_hessian_block(slab, &d, m, n, &mut block);
+            for a in 0..ND {
+                for b in 0..ND {
+                    exact.push(block[a][b]);
+                    fd.push(columns[n * ND + b][m][a]);
+                }
+            }
+        }
+    }
+    let e = rel_diff(&exact, &fd);
+    assert!(e < 1e-6, "{label}: Jacobian rel. error {e:e}");
+}
+
+#[test]
+fn a_viscoelastic_slabs_jacobian_is_the_finite_differences_of_its_rows() {
+    let mut rng = Rng(0x9e3779b97f4a7c15);
+    for law in laws() {
+        for (strain, tension_only) in [
+            (AxialStrain::Green, false),
+            (AxialStrain::Engineering, true),
+        ] {
+            let m = Measures {
+                axial_strain: strain,
+                curvature: Curvature::Exact,
+            };
+            let r = rules(4, 3);
+            let sec = visco_section(law, tension_only);
+            let el2 = CableElement::new(cubic_hermite, 0.45, sec.clone(), m, &r);
+            let el3 = CableElement::new(quintic_hermite, 0.45, sec, m, &r);
+            for points in [2, 3] {
+                let s = slab(0.08, points);
+                let history = [0.02, -0.01, 0.05, 0.03];
+                let y2 = random_slab_state::<4, 12>(&mut rng, 0.45, 0.2);
+                let label = format!("{law:?} {strain:?} SAC-2 {points} points");
+                check_jacobian(&el2, &s, &y2, &history, &label);
+                let y3 = random_slab_state::<6, 18>(&mut rng, 0.45, 0.2);
+                check_jacobian(&el3, &s, &y3, &history, &label.replace("SAC-2", "SAC-3"));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_viscoelastic_line_at_rest_has_the_rows_of_the_elastic_line_of_its_static_ea() {
+    let mut rng = Rng(0x2545f4914f6cdd1d);
+    let m = Measures {
+        axial_strain: AxialStrain::Engineering,
+        curvature: Curvature::Exact,
+    };
+    let r = rules(4, 3);
+    for law in laws() {
+        let visco = CableElement::new(cubic_hermite, 0.45, visco_section(law, false), m, &r);
+        let elastic = CableElement::new(cubic_hermite, 0.45, section(), m, &r);
+        // Held still: e_b = e_a, no velocity; the internal state at rest.
+        let mut y = random_slab_state::<4, 12>(&mut rng, 0.45, 0.05);
+        y[2] = y[0];
+        y[1] = [0.0; 12];
+        y[3] = [0.0; 12];
+        let history = visco.rest_internal_state(&y[0]);
+        let loads = SlabLoads::gravity([0.0, -9.81, 0.0]);
+        let s = slab(0.1, 3);
+        let (mut dv, mut de) = (
+            SlabDerivatives::<12>::default(),
+            SlabDerivatives::<12>::default(),
+        );
+        visco.slab_derivatives_from(&s, &y, &loads, &history, false, &mut dv);
+        elastic.slab_derivatives(&s, &y, &loads, false, &mut de);
+        let (gv, ge): (Vec<f64>, Vec<f64>) = (
+            dv.grad.iter().flatten().copied().collect(),
+            de.grad.iter().flatten().copied().collect(),
+        );
+        let e = rel_diff(&gv, &ge);
+        assert!(e < 1e-12, "{law:?}: rows differ by {e:e}");
+        // And the internal state stays where it was.
+        for (end, start) in dv.visco.end.iter().zip(&history) {
+            assert!(
+                (end - start).abs() <= 1e-13 * start.abs().max(1e-3),
+                "{end} vs {start}"
+            );
+        }
+    }
+}
+
+/// The line of the dynamic checks: 1 m in 4 SAC-2 elements (engineering
+/// strain), EA = 1e6 N static, so light (0.01 kg/m) that its axial modes
+/// (5 kHz) are far above the drive: its strain is uniform, and the
+/// tension is the law's under that strain's history alone. End A pinned,
+/// end B at x = 1 + `prestrain` driven along x by `amplitude` sin(w t).
+fn driven_line(
+    law: Viscoelastic,
+    prestrain: f64,
+    amplitude: f64,
+    period: f64,
+) -> (stancf::Model, stancf::State) {
+    use stancf::motion::{CoupledMotion, Oscillation};
+    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Material, ModelOptions};
+    let material = Material {
+        youngs_modulus: 1e9,
+        density: 10.0,
+        area: 1e-3,
+        second_moment: 1e-15,
+        axial_damping: 0.0,
+    };
+    let options = ModelOptions {
+        measures: Measures {
+            axial_strain: AxialStrain::Engineering,
+            ..Measures::default()
+        },
+        ..ModelOptions::default()
+    };
+    let b = [1.0 + prestrain, 0.0, 0.0];
+    let model = stancf::Model::new(
+        Cable::straight(1.0, 4, ElementType::Sac2),
+        material,
+        options,
+        vec![],
+    )
+    .unwrap()
+    .with_viscoelastic(law)
+    .unwrap()
+    .with_constraints(vec![
+        Constraint {
+            node: 0,
+            kind: ConstraintKind::Pinned,
+        },
+        Constraint {
+            node: 4,
+            kind: ConstraintKind::Attached {
+                position: b,
+                motion: CoupledMotion::Oscillation(Oscillation {
+                    amplitude: [amplitude, 0.0, 0.0],
+                    period,
+                    phase: 0.0,
+                    ramp: 0.0,
+                }),
+            },
+        },
+    ])
+    .unwrap();
+    // Uniformly stretched, stretching at the drive's rate a w x.
+    let w = 2.0 * std::f64::consts::PI / period;
+    let mut s = model.initial_state();
+    for j in 0..model.nodes() {
+        let x = model.node_coordinate(j);
+        s.e[model.coordinate(j, 0, 0)] = (1.0 + prestrain) * x;
+        s.e[model.coordinate(j, 1, 0)] = 1.0 + prestrain;
+        s.v[model.coordinate(j, 0, 0)] = amplitude * w * x;
+        s.v[model.coordinate(j, 1, 0)] = amplitude * w;
+    }
+    model.apply_constraints(&mut s);
+    (model, s)
+}
+
+/// N(t) of the law (V1)-(V2) with a constant k2 under eps = e0 + a sin(w t)
+/// from rest at e0: eps1 = eps1_rest + a Im(H e^{iwt}) + C e^{-k t / c},
+/// H = (k2 + i w c2) / (k + i w c), C = -a Im(H), k = k1 + k2,
+/// c = c1 + c2; N = k1 eps1 + c1 eps1_dot.
+fn standard_solid_tension(law: &Viscoelastic, ea: f64, e0: f64, a: f64, w: f64, t: f64) -> f64 {
+    let s = law.springs(ea, 0.0);
+    let (c1, c2) = (law.static_damping, law.dynamic_damping);
+    let (k, c) = (s.k1 + s.k2, c1 + c2);
+    let (nr, ni, dr, di) = (s.k2, w * c2, k, w * c);
+    let d = dr * dr + di * di;
+    let (hr, hi) = ((nr * dr + ni * di) / d, (ni * dr - nr * di) / d);
+    let lambda = k / c;
+    let rest = e0 * s.k2 / k;
+    let eps1 = rest + a * (hr * (w * t).sin() + hi * (w * t).cos()) - a * hi * (-lambda * t).exp();
+    let rate =
+        a * w * (hr * (w * t).cos() - hi * (w * t).sin()) + a * hi * lambda * (-lambda * t).exp();
+    s.k1 * eps1 + c1 * rate
+}
+
+/// No dashpot beside the dynamic spring (MoorDyn's BA_D = 0, the common
+/// case): N = k2 (eps - eps1) needs no strain rate, so the checks do not
+/// see the noise of the Galerkin step's end rates M^-1 p_b of this very
+/// light line's r_x (1e-4 of the stretch rate, bounded).
+const DRIVEN_LAW: Viscoelastic = Viscoelastic {
+    dynamic: DynamicStiffness::Constant(3e6),
+    static_damping: 2e5,
+    dynamic_damping: 0.0,
+};
+
+/// 2 s of the driven line (Galerkin step dt): the largest |N - N_exact|
+/// at nodes 0, 2, 4, the largest |E - E_0 - W| (W the work of the moving
+/// end and of the dashpots) and the dissipated energy.
+fn driven_run(dt: f64) -> (f64, f64, f64) {
+    let (e0, a, period) = (0.01, 0.005, 0.5);
+    let w = 2.0 * std::f64::consts::PI / period;
+    let (model, s) = driven_line(DRIVEN_LAW, e0, a, period);
+    let settings = step_settings(dt, stancf::TimeScheme::Galerkin, 1e-9);
+    let mut sim = stancf::Simulation::new(model, s, settings).unwrap();
+    let e_start = sim.energies().mechanical();
+    let (mut worst, mut balance) = (0.0f64, 0.0f64);
+    for _ in 0..(2.0 / dt).round() as usize {
+        sim.step().unwrap();
+        let exact = standard_solid_tension(&DRIVEN_LAW, 1e6, e0, a, w, sim.state().t);
+        for node in [0, 2, 4] {
+            let n = stancf::observe::node_axial_force(sim.model(), sim.state(), node);
+            worst = worst.max((n - exact).abs());
+        }
+        let gap = sim.energies().mechanical() - e_start - sim.external_work();
+        balance = balance.max(gap.abs());
+    }
+    (worst, balance, -sim.damping_work())
+}
+
+#[test]
+fn a_driven_viscoelastic_line_carries_the_standard_solids_tension() {
+    let (worst, _, _) = driven_run(0.0025);
+    // The line's inertia makes its tension differ from end to end by up
+    // to m L a w^2 = 0.008 N (the law's N is of the uniform strain); the
+    // time discretization (order 4 to 6 at w dt = 0.03) adds far less.
+    let inertia = 0.01 * 1.0 * 0.005 * (4.0 * std::f64::consts::PI).powi(2);
+    assert!(worst < 2.0 * inertia, "N off by {worst:e} N");
+}
+
+#[test]
+fn a_driven_viscoelastic_lines_energy_balance_closes_at_second_order() {
+    // E - E_0 - W: the springs' stored energy against the work of the
+    // moving end (its mean force over a step times its displacement,
+    // (M24), second order) and of the dashpots (collocated).
+    let (_, coarse, dissipated) = driven_run(0.005);
+    let (_, fine, _) = driven_run(0.0025);
+    assert!(dissipated > 0.0);
+    let order = (coarse / fine).log2();
+    assert!(
+        (order - 2.0).abs() < 0.15,
+        "balance {coarse:e} -> {fine:e} J, order {order}"
+    );
+    assert!(
+        fine < 1e-3 * dissipated,
+        "balance {fine:e} J of {dissipated:e} J dissipated"
+    );
+}
+
+/// Assembled steps of a viscoelastic cable under gravity: P2 and the
+/// Galerkin step, SAC-2 and SAC-3, free and with a clamped end and a
+/// moving node by both constraint routes: the step Jacobian (every
+/// unknown of the slab) against central differences.
+#[test]
+fn a_viscoelastic_lines_step_jacobian_is_the_finite_differences_of_its_rows() {
+    use crate::common::step_checks::check_schemes_and_routes;
+    use stancf::assembly::Scheme;
+    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Load, Material, ModelOptions};
+    let mut rng = Rng(0x5eed_0bad_cafe_0017);
+    for kind in [ElementType::Sac2, ElementType::Sac3] {
+        for law in laws() {
+            let model = |constrained: bool| {
+                let material = Material {
+                    youngs_modulus: 2.0e3,
+                    density: 1.0e3,
+                    area: 1e-3,
+                    second_moment: 1e-4,
+                    axial_damping: 0.0,
+                };
+                let options = ModelOptions {
+                    measures: Measures {
+                        axial_strain: AxialStrain::Engineering,
+                        ..Measures::default()
+                    },
+                    ..ModelOptions::default()
+                };
+                let gravity = vec![Load::Gravity {
+                    acceleration: [0.0, -9.81, 0.0],
+                }];
+                let cons = if constrained {
+                    vec![
+                        Constraint {
+                            node: 0,
+                            kind: ConstraintKind::Clamped {
+                                fix_curvature: false,
+                            },
+                        },
+                        Constraint {
+                            node: 2,
+                            kind: ConstraintKind::Prescribed {
+                                velocity: [0.1, 0.0, -0.2],
+                                amplitude: [0.0, 0.02, 0.01],
+                                frequency: 3.0,
+                                phase: 0.4,
+                            },
+                        },
+                    ]
+                } else {
+                    vec![]
+                };
+                stancf::Model::new(Cable::straight(0.9, 3, kind), material, options, gravity)
+                    .unwrap()
+                    .with_viscoelastic(law)
+                    .unwrap()
+                    .with_constraints(cons)
+                    .unwrap()
+            };
+            let schemes = [Scheme::P2 { layers: 1 }, Scheme::Galerkin];
+            check_schemes_and_routes(
+                &model,
+                &schemes,
+                &mut rng,
+                &format!("{kind:?} {law:?}"),
+                1e-7,
+            );
+        }
+    }
+}
