@@ -218,6 +218,28 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         )
     }
 
+    /// A viscoelastic element as the elastic one it is to a fast motion
+    /// (what the P2 step's stable step is judged on, docs/method.md
+    /// §2.11): the static spring's dashpot holds it, so its axial
+    /// stiffness is the dynamic k2, of the mean-load form at the rest
+    /// state of the element's largest strain at coordinates `q`. None
+    /// for an elastic element.
+    pub fn instantaneous(&self, q: &[f64]) -> Option<Self> {
+        let visco = self.section.visco.as_ref()?;
+        let ea = self.section.ea;
+        let measure = self.measures.axial_strain;
+        let largest = self
+            .axial_points
+            .iter()
+            .map(|p| axial_strain(measure, &p.shape.gradients(q).0))
+            .fold(0.0, f64::max);
+        let k2 = visco.springs(ea, visco.rest_state(ea, largest)).k2;
+        let mut stiff = self.clone();
+        stiff.section.visco = None;
+        stiff.section.ea = k2;
+        Some(stiff)
+    }
+
     /// The energy stored in a viscoelastic element's springs at
     /// coordinates `q` with internal strains `internal`: sum_s w_s l
     /// [`Viscoelastic::stored_energy`].

@@ -366,7 +366,10 @@ fn add_element_stiffness<const NS: usize, const ND: usize>(
     for (j, el) in els.iter().enumerate() {
         let o = coordinate(dpn, j, SLOT_R, 0);
         let q: [f64; ND] = crate::model::gather(e, o);
-        el.strain_energy_derivatives(&q, &mut grad, Some(&mut hess));
+        match el.instantaneous(&q) {
+            Some(stiff) => stiff.strain_energy_derivatives(&q, &mut grad, Some(&mut hess)),
+            None => el.strain_energy_derivatives(&q, &mut grad, Some(&mut hess)),
+        };
         for a in 0..ND {
             for b in a..ND {
                 k[(o + a) * w + b - a] += hess[a][b];
