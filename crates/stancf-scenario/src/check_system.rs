@@ -438,6 +438,9 @@ fn ramp_words(ramp: f64) -> String {
 fn damping_note(sc: &SystemScenario, i: usize) -> String {
     let l = &sc.lines[i];
     let t = &sc.line_types[l.line_type];
+    if let Some(dynamic) = t.ea_dynamic {
+        return visco_note(sc, i, dynamic);
+    }
     if t.ba == 0.0 {
         return String::new();
     }
@@ -458,6 +461,26 @@ fn damping_note(sc: &SystemScenario, i: usize) -> String {
         ""
     };
     format!("; axial damping BA {} N s{from}{unused}", Sig(ba))
+}
+
+/// A viscoelastic line's law as `check` reports it (docs/method.md §2.11).
+fn visco_note(sc: &SystemScenario, i: usize, dynamic: stancf::element::DynamicStiffness) -> String {
+    let t = &sc.line_types[sc.lines[i].line_type];
+    let k2 = match dynamic {
+        stancf::element::DynamicStiffness::Constant(k2) => format!("dynamic EA_D {} N", Sig(k2)),
+        stancf::element::DynamicStiffness::MeanLoad { alpha, beta } => format!(
+            "dynamic stiffness {} N + {} x the static spring's tension",
+            Sig(alpha),
+            Sig(beta)
+        ),
+    };
+    format!(
+        "; viscoelastic (docs/method.md §2.11): static EA {} N, {k2}, BA {} N s beside the \
+         static spring, BA_D {} N s beside the dynamic one; statics take the static EA",
+        Sig(t.ea),
+        Sig(sc.axial_damping(i)),
+        Sig(t.ba_dynamic)
+    )
 }
 
 /// The largest P2 step every line is stable with (None for the Galerkin

@@ -160,6 +160,9 @@ fn model_axial_stress(model: &Model, compression: bool, eps: f64) -> f64 {
 /// the law).
 fn visco_force(model: &Model, state: &State, k: usize, xi: f64) -> Option<f64> {
     let o = coordinate(model.dofs_per_node(), k, SLOT_R, 0);
+    if state.internal.is_empty() {
+        return None;
+    }
     let internal = model.element_internal(&state.internal, k);
     crate::with_elements!(&model.mesh, els => {
         els[k].visco_axial_force(xi, &state.e[o..], &state.v[o..], internal)
@@ -207,7 +210,7 @@ pub fn stress_samples(
                 element: k,
                 s: model.material_coordinate(k, xi),
                 axial_stress: match visco_force(model, state, k, xi) {
-                    Some(n) if !state.internal.is_empty() => n / model.material.area,
+                    Some(n) => n / model.material.area,
                     _ => model_axial_stress(model, compression, axial_strain(m.axial_strain, &rx)),
                 },
                 curvature: curvature(m.curvature, &rx, &rxx),

@@ -51,6 +51,7 @@ mod system_geometry;
 mod system_summary;
 mod systems;
 mod time_loop;
+mod viscoelastic;
 mod watchdog;
 mod water;
 mod water_refusals;

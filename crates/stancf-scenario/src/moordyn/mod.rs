@@ -41,6 +41,7 @@ mod rods;
 mod sections;
 #[cfg(test)]
 mod tests;
+mod visco_columns;
 
 use std::fmt;
 use std::path::Path;
@@ -94,9 +95,16 @@ pub struct LineType {
     pub diameter: f64,
     /// `Mass/m`: mass per unit length (kg/m).
     pub mass_per_length: f64,
-    /// `EA`: axial stiffness (N), a constant; 0 where the column names a
-    /// curve file (viscoelastic `a|b` forms are refused).
+    /// `EA`: axial stiffness (N), a constant (the static one of a
+    /// viscoelastic `EA|EA_D` or `EA|alpha|beta`); 0 where the column
+    /// names a curve file.
     pub ea: f64,
+    /// The dynamic stiffness of MoorDyn's viscoelastic forms (docs/method.md
+    /// §2.11): `EA|EA_D` (constant) or `EA|alphaMBL|vbeta` (mean-load).
+    pub ea_dynamic: Option<stancf::element::DynamicStiffness>,
+    /// `BA|BA_D`: the dashpot beside the dynamic spring (N s); 0 when the
+    /// column has one value.
+    pub ba_dynamic: f64,
     /// `EA` as the name of a file of MoorDyn's nonlinear tension-strain
     /// curve (docs/method.md §2.2a), which the scenario reads.
     pub ea_curve_file: Option<String>,

@@ -161,22 +161,35 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         && !ea_word.contains('|')
         && !ea_word.to_ascii_uppercase().starts_with("SYROPE:"))
     .then(|| ea_word.to_string());
-    if ea_curve_file.is_none() {
+    let visco = super::visco_columns::viscoelastic(row, name)?;
+    if ea_curve_file.is_none() && visco.is_none() {
         constant(row, 3, name, "EA")?;
     }
-    constant(row, 4, name, "BA/-zeta")?;
+    if visco.is_none() {
+        constant(row, 4, name, "BA/-zeta")?;
+    }
+    let (ea_dynamic, ba_dynamic) = match &visco {
+        Some(v) => (Some(v.dynamic), v.ba_dynamic),
+        None => (None, 0.0),
+    };
     constant(row, 5, name, "EI")?;
     Ok(LineType {
         line: row.line,
         name: name.to_string(),
         diameter: non_negative(row, 1, &what("Diam"), true)?,
         mass_per_length: non_negative(row, 2, &what("Mass/m"), true)?,
-        ea: match ea_curve_file {
-            Some(_) => 0.0,
-            None => non_negative(row, 3, &what("EA"), true)?,
+        ea: match (&ea_curve_file, &visco) {
+            (Some(_), _) => 0.0,
+            (None, Some(v)) => v.ea,
+            (None, None) => non_negative(row, 3, &what("EA"), true)?,
         },
         ea_curve_file,
-        ba: number(row, 4, &what("BA/-zeta"))?,
+        ea_dynamic,
+        ba_dynamic,
+        ba: match &visco {
+            Some(v) => v.ba,
+            None => number(row, 4, &what("BA/-zeta"))?,
+        },
         ei: non_negative(row, 5, &what("EI"), false)?,
         cd_normal: non_negative(row, 6, &what("Cd"), false)?,
         ca_normal: non_negative(row, 7, &what("Ca"), false)?,

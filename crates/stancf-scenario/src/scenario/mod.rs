@@ -43,6 +43,7 @@ mod sea_limits;
 mod system;
 mod system_model;
 mod system_parts;
+mod visco_types;
 mod water;
 
 pub use analysis::InitialShape;

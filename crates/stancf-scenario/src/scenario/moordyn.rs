@@ -73,6 +73,9 @@ pub(super) fn deck_scenario(
     }
     let deck: &Deck = &deck;
     let g = deck_gravity(deck, file, host)?;
+    for (t, c) in deck.line_types.iter().zip(&curves) {
+        check_deck_law(t, c.is_some(), file)?;
+    }
     let farm = farm.or_else(|| {
         host.turbines.clone().map(|positions| super::farm::Farm {
             positions,
@@ -162,6 +165,8 @@ pub(super) fn deck_scenario(
         names,
     };
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    sc.notes
+        .extend(crate::system_geometry::overstretched_notes(&sc));
     Ok(sc)
 }
 
@@ -317,6 +322,30 @@ fn deck_gravity(
     )))
 }
 
+/// A viscoelastic LINE TYPES row's law, checked (docs/method.md §2.11):
+/// an error naming the row.
+fn check_deck_law(
+    t: &crate::moordyn::LineType,
+    has_curve: bool,
+    file: &str,
+) -> Result<(), ScenarioError> {
+    let at = |m: String| {
+        ScenarioError(format!(
+            "{file}: line {}: line type \"{}\": {m}",
+            t.line, t.name
+        ))
+    };
+    if t.ea_dynamic.is_none() {
+        return Ok(());
+    }
+    if has_curve {
+        return Err(at(
+            "a viscoelastic EA needs a constant static EA, not a curve file".into(),
+        ));
+    }
+    super::visco_types::check_law(&deck_line_type(t, None)).map_err(|(_, m)| at(m))
+}
+
 /// A LINE TYPES row as a line type.
 fn deck_line_type(
     t: &crate::moordyn::LineType,
@@ -328,6 +357,8 @@ fn deck_line_type(
         mass_per_length: t.mass_per_length,
         ea: t.ea,
         ea_curve,
+        ea_dynamic: t.ea_dynamic,
+        ba_dynamic: t.ba_dynamic,
         ei: t.ei,
         ba: t.ba,
         cd_normal: t.cd_normal,

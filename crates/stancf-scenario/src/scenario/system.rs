@@ -107,6 +107,8 @@ pub(super) fn system_scenario(
         names,
     };
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
+    sc.notes
+        .extend(crate::system_geometry::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     Ok(sc)
@@ -130,6 +132,7 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             None => Ok(0.0),
         };
         let ea_curve = super::ea_curves::toml_curve(ctx, &key("ea_curve"), r)?;
+        let (ea_dynamic, ba_dynamic) = super::visco_types::toml_dynamic(ctx, i, r)?;
         out.push(LineType {
             diameter: ctx.required_positive(&key("diameter"), r.diameter)?,
             mass_per_length: ctx.required_positive(&key("mass_per_length"), r.mass_per_length)?,
@@ -138,6 +141,8 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
                 None => ctx.required_positive(&key("ea"), r.ea)?,
             },
             ea_curve,
+            ea_dynamic,
+            ba_dynamic,
             ei: optional("ei", r.ei)?,
             ba: match r.ba {
                 Some(v) => ctx.finite(&key("ba"), v)?,
@@ -150,6 +155,8 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             compression: r.compression.unwrap_or(true),
             name,
         });
+        let t = out.last().expect("pushed");
+        super::visco_types::check_law(t).map_err(|(k, m)| ctx.err(&key(k), m))?;
     }
     Ok(out)
 }

@@ -247,9 +247,16 @@ impl SystemScenario {
             .with_origin(origin)
             .with_direction(direction)
             .with_grading(l.grading.clone());
+        // A viscoelastic line's BA is its law's static dashpot (§2.11).
+        let law = super::visco_types::line_law(t, self.axial_damping(i));
+        let kelvin_voigt = if law.is_some() {
+            0.0
+        } else {
+            self.axial_damping(i)
+        };
         let material = section(t)
             .material(self.bending_stiffness(i))
-            .with_axial_damping(self.axial_damping(i));
+            .with_axial_damping(kelvin_voigt);
         let options = ModelOptions {
             measures: self.measures,
             space_points: self.analysis.space_points,
@@ -274,6 +281,9 @@ impl SystemScenario {
         let mut model = Model::new(cable, material, options, line_loads)?;
         if let Some(curve) = &t.ea_curve {
             model = model.with_axial_curve(Arc::clone(curve))?;
+        }
+        if let Some(law) = law {
+            model = model.with_viscoelastic(law)?;
         }
         Ok(if t.compression {
             model

@@ -25,6 +25,15 @@ pub struct LineType {
     /// A nonlinear axial law from a tension-strain table (docs/method.md
     /// §2.2a, (M4b)): `ea_curve`, a deck's EA curve file.
     pub ea_curve: Option<std::sync::Arc<stancf::element::AxialCurve>>,
+    /// A viscoelastic line's dynamic stiffness (docs/method.md §2.11):
+    /// `ea_dynamic` (constant), or `ea_dynamic_alpha` and
+    /// `ea_dynamic_beta` (alpha + beta T1); a deck's `EA|EA_D` or
+    /// `EA|alphaMBL|vbeta`. `ea` is then the static stiffness and `ba`
+    /// the dashpot beside the static spring.
+    pub ea_dynamic: Option<stancf::element::DynamicStiffness>,
+    /// The dashpot beside the dynamic spring (N s): `ba_dynamic`, a
+    /// deck's `BA|BA_D`.
+    pub ba_dynamic: f64,
     /// Bending stiffness EI (N m^2); 0 for chain and wire rope.
     pub ei: f64,
     /// Axial damping BA (N s), or minus a damping ratio (MoorDyn's

@@ -189,25 +189,26 @@ fn driven_line(
     if let Some(law) = law {
         model = model.with_viscoelastic(law).unwrap();
     }
-    let model = model.with_constraints(vec![
-        Constraint {
-            node: 0,
-            kind: ConstraintKind::Pinned,
-        },
-        Constraint {
-            node: 4,
-            kind: ConstraintKind::Attached {
-                position: b,
-                motion: CoupledMotion::Oscillation(Oscillation {
-                    amplitude: [amplitude, 0.0, 0.0],
-                    period,
-                    phase: 0.0,
-                    ramp: 0.0,
-                }),
+    let model = model
+        .with_constraints(vec![
+            Constraint {
+                node: 0,
+                kind: ConstraintKind::Pinned,
             },
-        },
-    ])
-    .unwrap();
+            Constraint {
+                node: 4,
+                kind: ConstraintKind::Attached {
+                    position: b,
+                    motion: CoupledMotion::Oscillation(Oscillation {
+                        amplitude: [amplitude, 0.0, 0.0],
+                        period,
+                        phase: 0.0,
+                        ramp: 0.0,
+                    }),
+                },
+            },
+        ])
+        .unwrap();
     // Uniformly stretched, stretching at the drive's rate a w x.
     let w = 2.0 * std::f64::consts::PI / period;
     let mut s = model.initial_state();

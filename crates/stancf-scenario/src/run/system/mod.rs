@@ -101,7 +101,10 @@ pub(super) fn run_system(
     };
     // history.csv accounts for the damping's work in a damped dynamic run.
     let damped = sc.analysis.kind == AnalysisKind::Dynamic
-        && system.lines().iter().any(|l| l.model.has_axial_damping());
+        && system
+            .lines()
+            .iter()
+            .any(|l| l.model.has_axial_damping() || l.model.has_internal_state());
     // ... and for the water's and the seabed's work in water.
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let models: Vec<&stancf::Model> = system.lines().iter().map(|l| &l.model).collect();
