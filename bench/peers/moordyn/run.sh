@@ -12,7 +12,8 @@
 # (MoorDyn's own body and rod decks: both codes' static equilibria,
 # out/bodies_check.{csv,md}, about 20 minutes); `--decks-check` runs
 # decks_check.py (every other third-party deck: both codes' static
-# equilibria, out/decks_check.{csv,md});
+# equilibria, out/decks_check.{csv,md}); `--visco-check` runs
+# visco_check.py (viscoelastic lines driven against MoorDyn, seconds);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -26,6 +27,9 @@ fi
 cd "$here"
 if [ "${1:-}" = "--added-mass-check" ]; then
   exec env PYTHONWARNINGS=ignore "$venv/bin/python" added_mass_check.py
+fi
+if [ "${1:-}" = "--visco-check" ]; then
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" visco_check.py
 fi
 if [ "${1:-}" = "--decks-check" ]; then
   shift
