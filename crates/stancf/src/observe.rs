@@ -175,8 +175,10 @@ pub struct StressSample {
     pub element: usize,
     /// Material coordinate (0 at end A).
     pub s: f64,
-    /// E eps.
+    /// E eps (a nonlinear or viscoelastic line's law's N / A).
     pub axial_stress: f64,
+    /// The axial strain eps of the model's measure.
+    pub axial_strain: f64,
     pub curvature: f64,
 }
 
@@ -206,12 +208,14 @@ pub fn stress_samples(
                 crate::model::ElementType::Sac2 => cubic_hermite(xi, l).gradients(q),
                 crate::model::ElementType::Sac3 => quintic_hermite(xi, l).gradients(q),
             };
+            let eps = axial_strain(m.axial_strain, &rx);
             out.push(StressSample {
                 element: k,
+                axial_strain: eps,
                 s: model.material_coordinate(k, xi),
                 axial_stress: match visco_force(model, state, k, xi) {
                     Some(n) => n / model.material.area,
-                    _ => model_axial_stress(model, compression, axial_strain(m.axial_strain, &rx)),
+                    _ => model_axial_stress(model, compression, eps),
                 },
                 curvature: curvature(m.curvature, &rx, &rxx),
             });

@@ -136,14 +136,14 @@ impl LineOut {
                     }
                 }
                 't' | 's' => {
-                    // EA eps, or eps, at each element's middle.
-                    let per_stress = if f == 't' {
-                        model.material.area
-                    } else {
-                        1.0 / model.material.youngs_modulus
-                    };
+                    // The axial force (EA eps, or the line's law's), or
+                    // eps, at each element's middle.
                     for mid in samples.iter().skip(1).step_by(3) {
-                        value(mid.axial_stress * per_stress)?;
+                        value(if f == 't' {
+                            mid.axial_stress * model.material.area
+                        } else {
+                            mid.axial_strain
+                        })?;
                     }
                 }
                 _ => {
