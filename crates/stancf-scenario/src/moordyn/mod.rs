@@ -244,6 +244,10 @@ pub struct DeckOption {
     pub value: OptionValue,
     /// What stancf does with it.
     pub kind: OptionKind,
+    /// The same option given before under this name at this line, which
+    /// this one replaces (MoorDyn reads its options in order: the last
+    /// one holds).
+    pub replaces: Option<(String, usize)>,
 }
 
 /// A word of `OUTPUTS`.

@@ -266,20 +266,18 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
             o.name.eq_ignore_ascii_case(name)
                 || matches!(kind, OptionKind::Supported(_)) && o.kind == kind
         };
-        if let Some(first) = out.iter().find(same) {
-            return Err(DeckError::at(
-                row.line,
-                format!(
-                    "option {name} is given twice (first as {} at line {})",
-                    first.name, first.line
-                ),
-            ));
-        }
+        // Given again: MoorDyn reads the options in order, so the last
+        // holds (a note says so).
+        let replaces = out.iter().position(|o| same(&o)).map(|i| {
+            let first = out.remove(i);
+            (first.name, first.line)
+        });
         out.push(DeckOption {
             line: row.line,
             name: name.to_string(),
             value,
             kind,
+            replaces,
         });
     }
     Ok(out)

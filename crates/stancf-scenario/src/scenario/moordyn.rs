@@ -262,6 +262,13 @@ fn moordyn_out_file(
 fn step_notes(deck: &Deck) -> Vec<String> {
     let mut notes = Vec::new();
     for o in &deck.options {
+        if let Some((name, line)) = &o.replaces {
+            notes.push(format!(
+                "line {}: option {} is given again (first as {name} at line {line}): this \
+                 value holds, as MoorDyn reads its options in order",
+                o.line, o.name
+            ));
+        }
         if o.name.eq_ignore_ascii_case("tscheme") {
             let scheme = match &o.value {
                 crate::moordyn::OptionValue::Text(t) => t.clone(),

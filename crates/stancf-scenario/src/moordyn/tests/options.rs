@@ -1,5 +1,5 @@
-//! OPTIONS: what is accepted, refused by name, or refused as given twice
-//! or not a number.
+//! OPTIONS: what is accepted, refused by name or as not a number, and
+//! which value holds when one is given twice.
 
 use super::*;
 
@@ -43,11 +43,18 @@ fn moordyn_f_water_kinematics_are_refused_by_name() {
 }
 
 #[test]
-fn an_option_given_twice_under_two_names_is_refused() {
+fn an_option_given_twice_under_two_names_takes_the_last_as_moordyn() {
     let text = with("0.001 dtM", "1025 rho\n0.001 dtM\n1000 WtrDnsty");
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "WtrDnsty")));
-    assert!(e.message.contains("first as rho"), "{e}");
+    let deck = parse(&text).unwrap();
+    let density: Vec<_> = deck
+        .options
+        .iter()
+        .filter(|o| o.kind == OptionKind::Supported(SupportedOption::WaterDensity))
+        .collect();
+    assert_eq!(density.len(), 1);
+    assert_eq!(density[0].value, OptionValue::Number(1000.0));
+    assert_eq!(density[0].line, line_of(&text, "WtrDnsty"));
+    assert_eq!(density[0].replaces, Some(("rho".to_string(), line_of(&text, "rho"))));
 }
 
 #[test]
