@@ -54,7 +54,10 @@ fn an_option_given_twice_under_two_names_takes_the_last_as_moordyn() {
     assert_eq!(density.len(), 1);
     assert_eq!(density[0].value, OptionValue::Number(1000.0));
     assert_eq!(density[0].line, line_of(&text, "WtrDnsty"));
-    assert_eq!(density[0].replaces, Some(("rho".to_string(), line_of(&text, "rho"))));
+    assert_eq!(
+        density[0].replaces,
+        Some(("rho".to_string(), line_of(&text, "rho")))
+    );
 }
 
 #[test]
