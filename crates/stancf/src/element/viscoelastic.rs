@@ -227,7 +227,8 @@ impl Collocation {
     pub fn new(taus: &[f64], dt: f64) -> Self {
         let n = taus.len();
         assert!(n <= MAX_NODES, "at most {MAX_NODES} collocation nodes");
-        let rule = crate::quadrature::GaussRule::shared(n.max(1));
+        // L_j has degree n - 1: ceil(n / 2) Gauss points integrate it.
+        let rule = crate::quadrature::GaussRule::shared(n.div_ceil(2).max(1));
         let lagrange = |j: usize, s: f64| -> f64 {
             (0..n)
                 .filter(|&k| k != j)

@@ -70,10 +70,31 @@ fn a_non_constant_ea_is_refused_naming_the_form() {
     let e = error(&with("1e8 -0.8", "1e8 ba_curve.dat"));
     assert!(e.message.contains("BA/-zeta of line type \"chain\""), "{e}");
     assert!(e.message.contains("nonlinear curve"), "{e}");
-    for (ea, words) in [
-        ("1e8|2e8", "viscoelastic"),
-        ("SYROPE:owc.dat|0.1|0.2", "Syrope"),
-    ] {
+    // The viscoelastic forms are read (docs/method.md §2.11); Syrope's is
+    // refused.
+    let visco = parse(&with("1e8 -0.8", "1e8|2e8 -0.8|1e3")).unwrap();
+    assert_eq!(
+        visco.line_types[0].ea_dynamic,
+        Some(stancf::element::DynamicStiffness::Constant(2e8))
+    );
+    assert_eq!(
+        (visco.line_types[0].ba, visco.line_types[0].ba_dynamic),
+        (-0.8, 1e3)
+    );
+    let mean = parse(&with("1e8 -0.8", "1e8|2e8|0.4 5e6")).unwrap();
+    assert_eq!(
+        mean.line_types[0].ea_dynamic,
+        Some(stancf::element::DynamicStiffness::MeanLoad {
+            alpha: 2e8,
+            beta: 0.4
+        })
+    );
+    let e = error(&with("1e8 -0.8", "1e8 5e6|1e3"));
+    assert!(
+        e.message.contains("more bar-separated values than EA"),
+        "{e}"
+    );
+    for (ea, words) in [("SYROPE:owc.dat|0.1|0.2", "Syrope")] {
         let text = with("1e8 -0.8", &format!("{ea} -0.8"));
         let e = error(&text);
         assert_eq!(e.line, Some(line_of(&text, ea)), "{ea}");
