@@ -190,10 +190,10 @@ fn direct_reach(
     best
 }
 
-/// Whether `line` alone joins points `a` and `b`.
 /// A note for every line straight between two placed points (fixed or
 /// coupled, where the scenario places them) that must stretch by more
-/// than [`MAX_SPAN_STRAIN`] to span them: it runs as given, with a
+/// than [`MAX_SPAN_STRAIN`] to span them, in a run from the reference
+/// shape (a static solve is refused it): it runs as given, with a
 /// tension beyond any mooring material's breaking strength.
 pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
     let placed = |p: usize| sc.point_is_fixed(p) || sc.point_is_coupled(p);
@@ -232,6 +232,7 @@ pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
         .collect()
 }
 
+/// Whether `line` alone joins points `a` and `b`.
 fn reach_is_direct(sc: &SystemScenario, line: usize, a: usize, b: usize) -> bool {
     let ends = sc.lines[line].ends;
     (ends == [Some(a), Some(b)]) || (ends == [Some(b), Some(a)])

@@ -379,11 +379,12 @@ pub fn cable_points(model: &Model, state: &State, per_element: usize) -> Vec<Cab
                 s: model.material_coordinate(k, xi),
                 r,
                 v,
-                axial_stress: model_axial_stress(
-                    model,
-                    compression,
-                    axial_strain(m.axial_strain, &rx),
-                ),
+                axial_stress: match visco_force(model, state, k, xi) {
+                    Some(n) => n / model.material.area,
+                    None => {
+                        model_axial_stress(model, compression, axial_strain(m.axial_strain, &rx))
+                    }
+                },
                 curvature: curvature(m.curvature, &rx, &rxx),
             };
             if p == 0 && k > 0 {

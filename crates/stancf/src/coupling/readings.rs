@@ -35,7 +35,8 @@ impl CoupledSystem {
         self.line_node_coordinates(line, true)
     }
 
-    /// The axial force EA eps at line i's nodes (N; the mean of the two
+    /// The axial force at line i's nodes (N; EA eps, or a nonlinear or
+    /// viscoelastic line's law's, docs/method.md §2.2a, §2.11; the mean of the two
     /// elements' values at a shared node, docs/method.md §1.2).
     pub fn line_tensions(&self, line: usize) -> Option<Vec<f64>> {
         let l = self.simulation()?.lines().get(line)?;

@@ -262,3 +262,26 @@ fn a_dynamic_stiffness_not_above_the_static_ea_is_refused_by_name() {
     assert!(undamped.check(EA, "k").is_err());
     assert!(constant().check(EA, "k").is_ok() && mean_load().check(EA, "k").is_ok());
 }
+
+#[test]
+fn the_collocation_integrates_polynomials_of_its_degree_on_every_time_rule() {
+    // int_0^tau_i s^k ds = tau_i^(k+1) / (k + 1) for k < n: the rows of
+    // dt A applied to the nodes' s^k, up to the largest rule (10 points).
+    for points in 1..=crate::quadrature::MAX_POINTS {
+        let taus = nodes(points);
+        let dt = 0.3;
+        let col = Collocation::new(&taus, dt);
+        for k in 0..taus.len() {
+            for (i, &ti) in taus.iter().enumerate() {
+                let sum: f64 = (0..taus.len())
+                    .map(|j| col.dt_a[i][j] * (taus[j] * dt).powi(k as i32))
+                    .sum();
+                let exact = (ti * dt).powi(k as i32 + 1) / (k as f64 + 1.0);
+                assert!(
+                    (sum - exact).abs() <= 1e-11 * dt,
+                    "{points} points, s^{k} at node {i}: {sum} vs {exact}"
+                );
+            }
+        }
+    }
+}

@@ -139,13 +139,6 @@ impl Simulation {
     pub(crate) fn expand_step(&mut self) {
         self.save_undo();
         self.expand_solution(self.settings.time_step);
-        // A viscoelastic line's internal state at the step's end, from
-        // the residual at the solution (docs/method.md §2.11).
-        if !self.state.internal.is_empty() {
-            self.state
-                .internal
-                .copy_from_slice(&self.scratch.internal_end);
-        }
     }
 
     /// Last part of [`Self::finish_step`], once the end rates are set:
@@ -437,6 +430,15 @@ impl Simulation {
                     self.scratch.end_momentum[g]
                 };
             }
+        }
+        // A viscoelastic line's internal state at the step's end, from
+        // the residual at the solution (docs/method.md §2.11), taken with
+        // e, v and t (a system's step may still fail after its lines'
+        // expand_step, and is then retried from the start).
+        if !self.state.internal.is_empty() {
+            self.state
+                .internal
+                .copy_from_slice(&self.scratch.internal_end);
         }
         self.state.t += dt;
         self.steps += 1;
