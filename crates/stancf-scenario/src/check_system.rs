@@ -438,7 +438,7 @@ fn ramp_words(ramp: f64) -> String {
 fn damping_note(sc: &SystemScenario, i: usize) -> String {
     let l = &sc.lines[i];
     let t = &sc.line_types[l.line_type];
-    if let Some(dynamic) = t.ea_dynamic {
+    if let Some(dynamic) = &t.ea_dynamic {
         return visco_note(sc, i, dynamic);
     }
     if t.ba == 0.0 {
@@ -464,9 +464,32 @@ fn damping_note(sc: &SystemScenario, i: usize) -> String {
 }
 
 /// A viscoelastic line's law as `check` reports it (docs/method.md §2.11).
-fn visco_note(sc: &SystemScenario, i: usize, dynamic: stancf::element::DynamicStiffness) -> String {
+fn visco_note(
+    sc: &SystemScenario,
+    i: usize,
+    dynamic: &stancf::element::DynamicStiffness,
+) -> String {
     let t = &sc.line_types[sc.lines[i].line_type];
-    let k2 = match dynamic {
+    let k2 = match *dynamic {
+        stancf::element::DynamicStiffness::Syrope { ref curves, .. } => {
+            let (lo, hi) = curves.tension_range();
+            return format!(
+                "; Syrope (docs/method.md §2.12): the working curve ({:?}, k1 {}, k2 {}) of \
+                 Tmax0 {} N below Tmax, the original curve ({} to {} N) above, dynamic stiffness \
+                 {} N + {} x the spring's tension, BA {} N s, BA_D {} N s; statics take the \
+                 working curve",
+                curves.form,
+                Sig(curves.k1),
+                Sig(curves.k2),
+                Sig(sc.lines[i].tmax0.unwrap_or(f64::NAN)),
+                Sig(lo),
+                Sig(hi),
+                Sig(curves.alpha),
+                Sig(curves.beta),
+                Sig(sc.axial_damping(i)),
+                Sig(t.ba_dynamic)
+            );
+        }
         stancf::element::DynamicStiffness::Constant(k2) => format!("dynamic EA_D {} N", Sig(k2)),
         stancf::element::DynamicStiffness::MeanLoad { alpha, beta } => format!(
             "dynamic stiffness {} N + {} x the static spring's tension",

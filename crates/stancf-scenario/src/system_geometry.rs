@@ -96,14 +96,11 @@ pub fn check_geometry(
             }
             let span = distance(sc.points[a].position, sc.points[b].position);
             // One line straight between two placed points is in
-            // equilibrium at any stretch: a dynamic run from the reference
-            // shape runs it, with a note ([`overstretched_notes`]; MoorDyn's
-            // own test decks stretch a line by 100 %). The static solve
-            // is refused it (its Newton iteration stalls on lines
-            // stretched beyond about 15 %).
+            // equilibrium at any stretch: it runs, with a note
+            // ([`overstretched_notes`]; MoorDyn's own test decks stretch
+            // a line by 100 %).
             let direct = last_line.is_some_and(|l| reach_is_direct(sc, l, a, b));
-            let runs_as_given = direct && !free && !statics_place_free_points;
-            if span > (1.0 + MAX_SPAN_STRAIN) * length && !runs_as_given {
+            if span > (1.0 + MAX_SPAN_STRAIN) * length && !(direct && !free) {
                 let line = last_line.expect("a reached point has a line to it");
                 let line_key = sc.names.line(line, "length", "UnstrLen");
                 let keys = if free {
@@ -131,16 +128,10 @@ pub fn check_geometry(
                         Sig(length)
                     )
                 };
-                let reference = if direct && !free {
-                    " (a dynamic run from the reference shape, initial = \"reference\", takes \
-                     it as given)"
-                } else {
-                    ""
-                };
                 return Err(Failure::Input(format!(
                     "{file}: {}: points {} and {} are {} m apart{start} and {via}: spanning \
                      them would stretch the lines by {} %, beyond the {:.0} % of any mooring \
-                     material's breaking strain; lengthen the line or move its points{reference}",
+                     material's breaking strain; lengthen the line or move its points",
                     keys,
                     sc.points[a].id,
                     sc.points[b].id,
@@ -192,16 +183,10 @@ fn direct_reach(
 
 /// A note for every line straight between two placed points (fixed or
 /// coupled, where the scenario places them) that must stretch by more
-/// than [`MAX_SPAN_STRAIN`] to span them, in a run from the reference
-/// shape (a static solve is refused it): it runs as given, with a
+/// than [`MAX_SPAN_STRAIN`] to span them: it runs as given, with a
 /// tension beyond any mooring material's breaking strength.
 pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
     let placed = |p: usize| sc.point_is_fixed(p) || sc.point_is_coupled(p);
-    let statics = sc.analysis.kind == crate::scenario::AnalysisKind::Static
-        || sc.initial == crate::scenario::InitialShape::Static;
-    if statics {
-        return Vec::new(); // refused by check_geometry
-    }
     sc.lines
         .iter()
         .enumerate()

@@ -54,8 +54,9 @@ fn element_energies<const NS: usize, const ND: usize>(
         en.kinetic += 0.5 * qd.iter().zip(mq.iter()).map(|(a, b)| a * b).sum::<f64>();
         en.strain += match &el.section.visco {
             // A viscoelastic line's springs (docs/method.md §2.11).
-            Some(_) if !state.internal.is_empty() => {
-                let internal = &state.internal[k * el.axial_rule_points()..];
+            Some(v) if !state.internal.is_empty() => {
+                let per = el.axial_rule_points() * v.values_per_point();
+                let internal = &state.internal[k * per..(k + 1) * per];
                 el.bending_energy(&q) + el.visco_stored_energy(&q, internal)
             }
             _ => el.strain_energy(&q),

@@ -39,6 +39,7 @@ mod layout;
 mod options;
 mod rods;
 mod sections;
+pub mod syrope_columns;
 #[cfg(test)]
 mod tests;
 mod visco_columns;
@@ -80,6 +81,8 @@ pub struct Deck {
     pub outputs: Vec<Output>,
     /// MoorDyn-F's `EXTERNAL LOADS`, in file order.
     pub external_loads: Vec<external_loads::DeckExternalLoad>,
+    /// `SYROPE IC` rows (docs/method.md §2.12).
+    pub syrope_ic: Vec<syrope_columns::SyropeIc>,
 }
 
 /// A row of `LINE TYPES`: `TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx
@@ -105,6 +108,9 @@ pub struct LineType {
     /// `BA|BA_D`: the dashpot beside the dynamic spring (N s); 0 when the
     /// column has one value.
     pub ba_dynamic: f64,
+    /// `SYROPE:<file>|alphaMBL|vbeta` (docs/method.md §2.12): the
+    /// settings file, alpha and beta (the scenario reads the file).
+    pub syrope: Option<syrope_columns::SyropeColumns>,
     /// `EA` as the name of a file of MoorDyn's nonlinear tension-strain
     /// curve (docs/method.md §2.2a), which the scenario reads.
     pub ea_curve_file: Option<String>,
@@ -372,6 +378,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     let mut options = Vec::new();
     let mut raw_outputs = Vec::new();
     let mut external_rows = None;
+    let mut syrope_ic = Vec::new();
     for section in &layout.sections {
         use layout::SectionKind as K;
         match section.kind {
@@ -386,6 +393,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
             K::Outputs => raw_outputs = channels::words(section)?,
             // Read once the points and bodies are.
             K::ExternalLoads => external_rows = Some(section),
+            K::SyropeIc => syrope_ic = syrope_columns::syrope_ic(section)?,
             other => sections::refuse_rows(section, other)?,
         }
     }
@@ -419,6 +427,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         options,
         outputs,
         external_loads,
+        syrope_ic,
     })
 }
 

@@ -162,15 +162,17 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         && !ea_word.to_ascii_uppercase().starts_with("SYROPE:"))
     .then(|| ea_word.to_string());
     let visco = super::visco_columns::viscoelastic(row, name)?;
-    if ea_curve_file.is_none() && visco.is_none() {
+    let syrope = super::syrope_columns::syrope_columns(row, name)?;
+    if ea_curve_file.is_none() && visco.is_none() && syrope.is_none() {
         constant(row, 3, name, "EA")?;
     }
-    if visco.is_none() {
+    if visco.is_none() && syrope.is_none() {
         constant(row, 4, name, "BA/-zeta")?;
     }
-    let (ea_dynamic, ba_dynamic) = match &visco {
-        Some(v) => (Some(v.dynamic), v.ba_dynamic),
-        None => (None, 0.0),
+    let (ea_dynamic, ba_dynamic) = match (&visco, &syrope) {
+        (Some(v), _) => (Some(v.dynamic.clone()), v.ba_dynamic),
+        (None, Some(s)) => (None, s.ba_dynamic),
+        (None, None) => (None, 0.0),
     };
     constant(row, 5, name, "EI")?;
     Ok(LineType {
@@ -181,15 +183,18 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         ea: match (&ea_curve_file, &visco) {
             (Some(_), _) => 0.0,
             (None, Some(v)) => v.ea,
+            (None, None) if syrope.is_some() => 0.0,
             (None, None) => non_negative(row, 3, &what("EA"), true)?,
         },
         ea_curve_file,
         ea_dynamic,
         ba_dynamic,
-        ba: match &visco {
-            Some(v) => v.ba,
-            None => number(row, 4, &what("BA/-zeta"))?,
+        ba: match (&visco, &syrope) {
+            (Some(v), _) => v.ba,
+            (None, Some(s)) => s.ba,
+            (None, None) => number(row, 4, &what("BA/-zeta"))?,
         },
+        syrope,
         ei: non_negative(row, 5, &what("EI"), false)?,
         cd_normal: non_negative(row, 6, &what("Cd"), false)?,
         ca_normal: non_negative(row, 7, &what("Ca"), false)?,

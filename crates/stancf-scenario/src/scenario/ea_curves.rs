@@ -104,7 +104,7 @@ pub(super) fn deck_curves(
 /// MoorDyn's curve file: three header lines, then a strain and a tension
 /// on each line (more words are ignored, as MoorDyn ignores them; blank
 /// lines are skipped).
-fn read_curve(path: &Path) -> Result<Vec<(f64, f64)>, String> {
+pub(super) fn read_curve(path: &Path) -> Result<Vec<(f64, f64)>, String> {
     let text =
         crate::input_file::read_text(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut points = Vec::new();

@@ -40,6 +40,7 @@ mod rod_parts;
 mod rod_toml;
 mod rods;
 mod sea_limits;
+mod syrope_files;
 mod system;
 mod system_model;
 mod system_parts;

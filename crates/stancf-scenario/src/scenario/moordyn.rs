@@ -63,15 +63,27 @@ pub(super) fn deck_scenario(
     // deck's EA of such a type becomes the curve's secant at its last
     // point (MoorDyn's EA for its damping ratio and CFL).
     let (curves, curve_notes) = super::ea_curves::deck_curves(deck, file, path)?;
+    let (syrope_laws, syrope_notes) = super::syrope_files::deck_syrope(deck, file, path)?;
     let mut deck = std::borrow::Cow::Borrowed(deck);
-    if curves.iter().any(Option::is_some) {
-        for (t, c) in deck.to_mut().line_types.iter_mut().zip(&curves) {
+    if curves.iter().any(Option::is_some) || syrope_laws.iter().any(Option::is_some) {
+        for ((t, c), s) in deck
+            .to_mut()
+            .line_types
+            .iter_mut()
+            .zip(&curves)
+            .zip(&syrope_laws)
+        {
             if let Some(c) = c {
                 t.ea = c.secant_stiffness();
+            }
+            if let Some(ea) = s.as_ref().and_then(super::syrope_files::syrope_ea) {
+                t.ea = ea;
+                t.ea_dynamic = s.clone();
             }
         }
     }
     let deck: &Deck = &deck;
+    let (tmax0, tmax0_notes) = super::syrope_files::deck_tmax0(deck, &syrope_laws, file)?;
     let g = deck_gravity(deck, file, host)?;
     for (t, c) in deck.line_types.iter().zip(&curves) {
         check_deck_law(t, c.is_some(), file)?;
@@ -135,6 +147,8 @@ pub(super) fn deck_scenario(
     notes.extend(line_output_notes(deck, path));
     notes.extend(external_notes);
     notes.extend(curve_notes);
+    notes.extend(syrope_notes);
+    notes.extend(tmax0_notes);
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
@@ -149,7 +163,14 @@ pub(super) fn deck_scenario(
         points,
         bodies,
         rods,
-        lines: deck.lines.iter().zip(ends).map(deck_line).collect(),
+        lines: deck
+            .lines
+            .iter()
+            .zip(ends)
+            .map(deck_line)
+            .zip(&tmax0)
+            .map(|(l, t)| SystemLine { tmax0: *t, ..l })
+            .collect(),
         gravity: [0.0, 0.0, -g],
         analysis,
         measures,
@@ -364,7 +385,7 @@ fn deck_line_type(
         mass_per_length: t.mass_per_length,
         ea: t.ea,
         ea_curve,
-        ea_dynamic: t.ea_dynamic,
+        ea_dynamic: t.ea_dynamic.clone(),
         ba_dynamic: t.ba_dynamic,
         ei: t.ei,
         ba: t.ba,
@@ -532,6 +553,7 @@ fn deck_line((l, ends): (&crate::moordyn::DeckLine, super::rods::DeckLineEnds)) 
         ends: ends.points.map(Some),
         grading: stancf::Grading::Uniform,
         clamps: ends.clamps,
+        tmax0: None,
     }
 }
 

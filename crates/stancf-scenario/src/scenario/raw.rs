@@ -161,6 +161,7 @@ pub(super) struct RawLineType {
     pub(super) ea_dynamic_alpha: Option<f64>,
     pub(super) ea_dynamic_beta: Option<f64>,
     pub(super) ba_dynamic: Option<f64>,
+    pub(super) syrope: Option<RawSyrope>,
     pub(super) ei: Option<f64>,
     pub(super) ba: Option<f64>,
     pub(super) cd: Option<f64>,
@@ -168,6 +169,20 @@ pub(super) struct RawLineType {
     pub(super) cdax: Option<f64>,
     pub(super) caax: Option<f64>,
     pub(super) compression: Option<bool>,
+}
+
+/// `syrope = { curve = [[strain, tension], ...], working_curve = "linear",
+/// k1 = ..., k2 = ..., alpha = ..., beta = ... }` of a line type
+/// (docs/method.md §2.12).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSyrope {
+    pub(super) curve: Option<Vec<Vec<f64>>>,
+    pub(super) working_curve: Option<String>,
+    pub(super) k1: Option<f64>,
+    pub(super) k2: Option<f64>,
+    pub(super) alpha: Option<f64>,
+    pub(super) beta: Option<f64>,
 }
 
 /// One `[[points]]` entry.
@@ -291,6 +306,7 @@ pub(super) struct RawLine {
     pub(super) clamp_a: Option<Vector>,
     pub(super) clamp_b: Option<Vector>,
     pub(super) grading: Option<RawGrading>,
+    pub(super) tmax0: Option<f64>,
 }
 
 /// `grading = { toward = "B", ratio = 4.0 }` or `grading = { sections =

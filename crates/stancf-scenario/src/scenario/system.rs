@@ -487,6 +487,7 @@ fn lines(
             ends,
             grading,
             clamps,
+            tmax0: super::visco_types::toml_tmax0(ctx, i, r, &types[line_type])?,
         });
     }
     for (p, point) in points.iter().enumerate() {

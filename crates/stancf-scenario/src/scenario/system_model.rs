@@ -248,7 +248,7 @@ impl SystemScenario {
             .with_direction(direction)
             .with_grading(l.grading.clone());
         // A viscoelastic line's BA is its law's static dashpot (§2.11).
-        let law = super::visco_types::line_law(t, self.axial_damping(i));
+        let law = super::visco_types::line_law(t, self.axial_damping(i), l.tmax0);
         let kelvin_voigt = if law.is_some() {
             0.0
         } else {

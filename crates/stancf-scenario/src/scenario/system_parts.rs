@@ -160,6 +160,9 @@ pub struct SystemLine {
     /// Ends A and B clamped in a direction (as given; the library
     /// normalizes it): r_x held parallel to it (docs/method.md §6.10).
     pub clamps: [Option<[f64; 3]>; 2],
+    /// A Syrope line's largest mean tension before the run (N; `tmax0`,
+    /// a deck's SYROPE IC; docs/method.md §2.12).
+    pub tmax0: Option<f64>,
 }
 
 /// A validated system scenario.

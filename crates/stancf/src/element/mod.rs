@@ -51,6 +51,7 @@ mod point_force;
 mod seabed;
 mod slab;
 mod strain;
+mod syrope;
 mod visco_slab;
 mod viscoelastic;
 mod water;
@@ -63,6 +64,7 @@ pub use strain::{
     axial_energy_density, axial_energy_gradient, axial_strain, axial_strain_derivatives,
     tension_only_energy_density,
 };
+pub use syrope::{Syrope, WorkingCurveForm};
 pub use visco_slab::ViscoDerivatives;
 pub use viscoelastic::{DynamicStiffness, Viscoelastic};
 

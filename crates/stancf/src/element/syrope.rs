@@ -81,7 +81,10 @@ impl Syrope {
     ) -> Result<Self, ModelError> {
         let bad = |m: String| Err(ModelError::invalid(key, m));
         if points.len() < 2 {
-            return bad(format!("the original working curve has {} points; it needs 2 or more", points.len()));
+            return bad(format!(
+                "the original working curve has {} points; it needs 2 or more",
+                points.len()
+            ));
         }
         if !(alpha > 0.0 && beta > 0.0 && alpha.is_finite() && beta.is_finite()) {
             return bad(format!(
@@ -102,7 +105,10 @@ impl Syrope {
         }
         let x: Vec<f64> = points.iter().map(|p| p.0).collect();
         let y: Vec<f64> = points.iter().map(|p| p.1).collect();
-        let z: Vec<f64> = points.iter().map(|&(x, y)| slow_strain(x, y, alpha, beta)).collect();
+        let z: Vec<f64> = points
+            .iter()
+            .map(|&(x, y)| slow_strain(x, y, alpha, beta))
+            .collect();
         if let Some(k) = (1..z.len()).find(|&k| z[k] <= z[k - 1]) {
             return bad(format!(
                 "the slow strains x - ln(1 + beta T / alpha) / beta of the original working curve \
@@ -113,7 +119,21 @@ impl Syrope {
                 y[k]
             ));
         }
-        Ok(Syrope { x, y, z, form, k1, k2, alpha, beta })
+        Ok(Syrope {
+            x,
+            y,
+            z,
+            form,
+            k1,
+            k2,
+            alpha,
+            beta,
+        })
+    }
+
+    /// The OWC's total strain at tension `t`.
+    pub fn strain_at(&self, t: f64) -> f64 {
+        interpolate(&self.y, &self.x, t).0
     }
 
     /// The OWC's tension range [first, last].
@@ -225,8 +245,19 @@ impl Syrope {
     pub fn static_curve(&self, tmax: f64) -> Vec<(f64, f64)> {
         let (x, y, _) = self.working_curve(tmax);
         let mut out = vec![(0.0, 0.0)];
-        out.extend(x.iter().zip(&y).map(|(&a, &b)| (a, b)).filter(|&(a, _)| a > 0.0));
-        out.extend(self.x.iter().zip(&self.y).map(|(&a, &b)| (a, b)).filter(|&(_, b)| b > tmax));
+        out.extend(
+            x.iter()
+                .zip(&y)
+                .map(|(&a, &b)| (a, b))
+                .filter(|&(a, _)| a > 0.0),
+        );
+        out.extend(
+            self.x
+                .iter()
+                .zip(&self.y)
+                .map(|(&a, &b)| (a, b))
+                .filter(|&(_, b)| b > tmax),
+        );
         out
     }
 }

@@ -32,7 +32,8 @@ pub struct ViscoDerivatives {
     pub active: bool,
     /// N at [g * points + s]: time point g, axial point s.
     pub force: Vec<f64>,
-    /// eps1 at the slab's end at each axial point (the next step's start).
+    /// The internal state at the slab's end at each axial point (the next
+    /// step's start): eps1 (and Syrope's Tmax), point after point.
     pub end: Vec<f64>,
     /// a_sg at [s * time points + g] (with the Hessian).
     pub a: Vec<[f64; 3]>,
@@ -41,9 +42,10 @@ pub struct ViscoDerivatives {
 }
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
-    /// The viscoelastic axial forces of the slab from the internal strains
-    /// `start` (one per axial point) at its start: fills `out.visco` and
-    /// adds the dashpots' work to `out.damping_work`.
+    /// The viscoelastic axial forces of the slab from the internal state
+    /// `start` at its start ([`Viscoelastic::values_per_point`] per axial
+    /// point): fills `out.visco` and adds the dashpots' work to
+    /// `out.damping_work`.
     pub(super) fn slab_viscoelastic(
         &self,
         visco: &Viscoelastic,
@@ -56,11 +58,16 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let np = slab.points.len();
         let nodes = np + 1;
         let ns = self.axial_points.len();
-        assert_eq!(start.len(), ns, "one internal strain per axial point");
+        let per = visco.values_per_point();
+        assert_eq!(
+            start.len(),
+            ns * per,
+            "the internal state of every axial point"
+        );
         let v_out = &mut out.visco;
         v_out.active = true;
         v_out.force.resize(np * ns, 0.0);
-        v_out.end.resize(ns, 0.0);
+        v_out.end.resize(ns * per, 0.0);
         if with_hessian {
             v_out.a.resize(ns * np, [0.0; 3]);
             v_out.v.resize(ns * np, [[0.0; 3]; 4]);
@@ -95,8 +102,20 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 a[h] = d;
                 hv[h] = std::array::from_fn(|i| (0..3).map(|j| hh[i][j] * rx_dot[j]).sum());
             }
-            let c = visco.collocate(ea, &slab.collocation, start[s], &eps, &eps_dot, &slack);
-            v_out.end[s] = c.state[np];
+            let history = if per > 1 { start[s * per + 1] } else { 0.0 };
+            let c = visco.collocate(
+                ea,
+                &slab.collocation,
+                start[s * per],
+                history,
+                &eps,
+                &eps_dot,
+                &slack,
+            );
+            v_out.end[s * per] = c.state[np];
+            if per > 1 {
+                v_out.end[s * per + 1] = visco.history_after(history, &c.state[..nodes]);
+            }
             for (g, tp) in slab.points.iter().enumerate() {
                 v_out.force[g * ns + s] = c.force[g];
                 out.damping_work -= tp.w_dt * p.wl * visco.dissipation(c.rate[g], eps_dot[g]);
@@ -166,15 +185,17 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             return Vec::new();
         };
         let measure = self.measures.axial_strain;
-        self.axial_points
-            .iter()
-            .map(|p| {
-                visco.rest_state(
-                    self.section.ea,
-                    axial_strain(measure, &p.shape.gradients(q).0),
-                )
-            })
-            .collect()
+        let (ea, history) = (self.section.ea, visco.initial_history());
+        let mut out = Vec::with_capacity(self.axial_points.len() * visco.values_per_point());
+        for p in &self.axial_points {
+            let eps = axial_strain(measure, &p.shape.gradients(q).0);
+            let eps1 = visco.rest_state(ea, eps, history);
+            out.push(eps1);
+            if visco.values_per_point() > 1 {
+                out.push(visco.history_after(history, &[eps1]));
+            }
+        }
+        out
     }
 
     /// A viscoelastic element's axial force N (V1) at xi (0 to 1) for
@@ -190,19 +211,24 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     ) -> Option<f64> {
         let visco = self.section.visco.as_ref()?;
         let pts = &self.axial_points;
-        let eps1: f64 = pts
-            .iter()
-            .enumerate()
-            .map(|(j, pj)| {
-                let basis: f64 = pts
-                    .iter()
-                    .enumerate()
-                    .filter(|&(k, _)| k != j)
-                    .map(|(_, pk)| (xi - pk.xi) / (pj.xi - pk.xi))
-                    .product();
-                basis * internal[j]
-            })
-            .sum();
+        let per = visco.values_per_point();
+        // The Lagrange polynomial through the axial points' value k.
+        let at_xi = |k: usize| -> f64 {
+            pts.iter()
+                .enumerate()
+                .map(|(j, pj)| {
+                    let basis: f64 = pts
+                        .iter()
+                        .enumerate()
+                        .filter(|&(m, _)| m != j)
+                        .map(|(_, pm)| (xi - pm.xi) / (pj.xi - pm.xi))
+                        .product();
+                    basis * internal[j * per + k]
+                })
+                .sum()
+        };
+        let eps1 = at_xi(0);
+        let history = if per > 1 { at_xi(1) } else { 0.0 };
         let shape = (self.shape)(xi, self.length);
         let (rx, _) = shape.gradients(q);
         let (rx_dot, _) = shape.gradients(qdot);
@@ -213,7 +239,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let slack = self.section.tension_only && eps < 0.0;
         Some(
             visco
-                .force(self.section.ea, eps1, eps, eps_dot, slack)
+                .force(self.section.ea, eps1, history, eps, eps_dot, slack)
                 .force,
         )
     }
@@ -233,7 +259,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             .iter()
             .map(|p| axial_strain(measure, &p.shape.gradients(q).0))
             .fold(0.0, f64::max);
-        let k2 = visco.springs(ea, visco.rest_state(ea, largest)).k2;
+        let k2 = visco.fast_stiffness(ea, largest, visco.initial_history());
         let mut stiff = self.clone();
         stiff.section.visco = None;
         stiff.section.ea = k2;
@@ -248,12 +274,14 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             return 0.0;
         };
         let measure = self.measures.axial_strain;
+        let per = visco.values_per_point();
         self.axial_points
             .iter()
-            .zip(internal)
-            .map(|(p, &eps1)| {
+            .zip(internal.chunks(per))
+            .map(|(p, state)| {
                 let eps = axial_strain(measure, &p.shape.gradients(q).0);
-                p.wl * visco.stored_energy(self.section.ea, eps1, eps)
+                let history = state.get(1).copied().unwrap_or(0.0);
+                p.wl * visco.stored_energy(self.section.ea, state[0], history, eps)
             })
             .sum()
     }

@@ -25,18 +25,26 @@ use crate::error::ModelError;
 
 /// The dynamic stiffness of a viscoelastic line (MoorDyn's second and
 /// third bar-separated EA values).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum DynamicStiffness {
     /// A constant k2 = EA_D (N): MoorDyn's `EA|EA_D`.
     Constant(f64),
     /// k2 = alpha + beta T1, T1 = k1 eps1 the static spring's tension (the
     /// mean load of the ABS rule): MoorDyn's `EA|alphaMBL|vbeta` (V4).
     MeanLoad { alpha: f64, beta: f64 },
+    /// Syrope's working curves (docs/method.md §2.12): the static spring
+    /// the working curve of the largest mean tension so far (from `tmax0`
+    /// at the start), the dynamic stiffness alpha + beta T of the spring's
+    /// tension T: MoorDyn's `SYROPE:<file>|alphaMBL|vbeta`.
+    Syrope {
+        curves: std::sync::Arc<super::syrope::Syrope>,
+        tmax0: f64,
+    },
 }
 
-/// A viscoelastic line's law (V1)-(V4); its static stiffness is the
-/// section's EA.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A viscoelastic line's law (V1)-(V4), or Syrope's (V7)-(V10); the
+/// static stiffness of (V1)-(V4) is the section's EA.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Viscoelastic {
     pub dynamic: DynamicStiffness,
     /// c1 (N s): the dashpot beside the static spring (MoorDyn's BA).
@@ -82,9 +90,10 @@ impl Viscoelastic {
                 ),
             ));
         }
-        let (lowest, what) = match self.dynamic {
-            DynamicStiffness::Constant(k2) => (k2, "the dynamic stiffness EA_D"),
-            DynamicStiffness::MeanLoad { alpha, beta } => {
+        let (lowest, what) = match &self.dynamic {
+            DynamicStiffness::Syrope { curves, tmax0 } => return curves.check_tmax(*tmax0, key),
+            &DynamicStiffness::Constant(k2) => (k2, "the dynamic stiffness EA_D"),
+            &DynamicStiffness::MeanLoad { alpha, beta } => {
                 if !(beta >= 0.0 && beta.is_finite()) {
                     return Err(ModelError::invalid(
                         key,
@@ -108,9 +117,28 @@ impl Viscoelastic {
         Ok(())
     }
 
-    /// k1, k2 at eps1 (V3)-(V4) with their derivatives in eps1.
+    /// The values of the internal state at each axial point: eps1, and
+    /// for Syrope the largest mean tension Tmax so far.
+    pub fn values_per_point(&self) -> usize {
+        match self.dynamic {
+            DynamicStiffness::Syrope { .. } => 2,
+            _ => 1,
+        }
+    }
+
+    /// The history at the start (Syrope's Tmax0; 0 for the others).
+    pub fn initial_history(&self) -> f64 {
+        match self.dynamic {
+            DynamicStiffness::Syrope { tmax0, .. } => tmax0,
+            _ => 0.0,
+        }
+    }
+
+    /// k1, k2 at eps1 (V3)-(V4) with their derivatives in eps1 (of the
+    /// two-spring forms; a Syrope law has its curves instead).
     pub fn springs(&self, ea: f64, eps1: f64) -> Springs {
         let (k2, dk2) = match self.dynamic {
+            DynamicStiffness::Syrope { .. } => unreachable!("Syrope has no k1, k2"),
             DynamicStiffness::Constant(k2) => (k2, 0.0),
             DynamicStiffness::MeanLoad { alpha, .. } if eps1 < 0.0 => (alpha, 0.0),
             DynamicStiffness::MeanLoad { alpha, beta } => {
@@ -137,10 +165,45 @@ impl Viscoelastic {
     /// eps_dot), and their partial derivatives. `slack`: the line carries
     /// no compression and eps < 0, where the springs' share k1 eps1 is
     /// dropped (MoorDyn's "cable can't push"; the dashpot's share stays).
-    pub fn force(&self, ea: f64, eps1: f64, eps: f64, eps_dot: f64, slack: bool) -> ViscoForce {
-        let s = self.springs(ea, eps1);
+    ///
+    /// `history` is Syrope's Tmax (unused by the others): there the
+    /// spring's tension is T(eps1) of the curve (V9) and the rate
+    /// ((eps - X(T)) (alpha + beta T) + c2 eps_dot) / (c1 + c2) (V10).
+    pub fn force(
+        &self,
+        ea: f64,
+        eps1: f64,
+        history: f64,
+        eps: f64,
+        eps_dot: f64,
+        slack: bool,
+    ) -> ViscoForce {
         let (c1, c2) = (self.static_damping, self.dynamic_damping);
         let c = c1 + c2;
+        if let DynamicStiffness::Syrope { curves, .. } = &self.dynamic {
+            let s = curves.spring(eps1, history);
+            let k = curves.alpha + curves.beta * s.tension;
+            let stretch = eps - s.strain_at_rest;
+            let rate = (stretch * k + c2 * eps_dot) / c;
+            let d_stretch = -s.d_strain_at_rest * s.d_tension;
+            let rate_d = [
+                (d_stretch * k + stretch * curves.beta * s.d_tension) / c,
+                k / c,
+                c2 / c,
+            ];
+            let (spring, spring_d) = if slack {
+                (0.0, 0.0)
+            } else {
+                (s.tension, s.d_tension)
+            };
+            return ViscoForce {
+                rate,
+                rate_d,
+                force: spring + c1 * rate,
+                force_d: [spring_d + c1 * rate_d[0], c1 * rate_d[1], c1 * rate_d[2]],
+            };
+        }
+        let s = self.springs(ea, eps1);
         let rate = (s.k2 * eps - (s.k1 + s.k2) * eps1 + c2 * eps_dot) / c;
         let rate_d = [
             (s.dk2 * eps - (s.dk1 + s.dk2) * eps1 - (s.k1 + s.k2)) / c,
@@ -162,8 +225,13 @@ impl Viscoelastic {
 
     /// The state at rest under the strain eps: the eps1 where the rate
     /// (V2) vanishes with eps_dot = 0, k2(eps1) eps = (k1 + k2) eps1, so
-    /// that N = k1 eps1 = EA eps.
-    pub fn rest_state(&self, ea: f64, eps: f64) -> f64 {
+    /// that N = k1 eps1 = EA eps. Syrope's: the slow strain of the
+    /// tension at rest at eps on the curve of `history` (Tmax).
+    pub fn rest_state(&self, ea: f64, eps: f64, history: f64) -> f64 {
+        if let DynamicStiffness::Syrope { curves, .. } = &self.dynamic {
+            let t = curves.tension_at_rest(eps, history);
+            return curves.slow_strain_at_rest(t, history.max(t));
+        }
         let mut eps1 = eps * (1.0 - ea / self.springs(ea, 0.0).k2);
         for _ in 0..50 {
             let s = self.springs(ea, eps1);
@@ -181,9 +249,40 @@ impl Viscoelastic {
     /// The stored energy per length of the two springs at (eps1, eps),
     /// 1/2 k1 eps1^2 + 1/2 k2 (eps - eps1)^2 (with the springs of the
     /// state; exact for a constant k2).
-    pub fn stored_energy(&self, ea: f64, eps1: f64, eps: f64) -> f64 {
+    /// Syrope's: the dynamic spring's 1/2 (alpha + beta T) (eps - X(T))^2
+    /// only (its static spring is hysteretic: what it takes is not
+    /// stored).
+    pub fn stored_energy(&self, ea: f64, eps1: f64, history: f64, eps: f64) -> f64 {
+        if let DynamicStiffness::Syrope { curves, .. } = &self.dynamic {
+            let s = curves.spring(eps1, history);
+            let d = eps - s.strain_at_rest;
+            return 0.5 * (curves.alpha + curves.beta * s.tension) * d * d;
+        }
         let s = self.springs(ea, eps1);
         0.5 * s.k1 * eps1 * eps1 + 0.5 * s.k2 * (eps - eps1) * (eps - eps1)
+    }
+
+    /// The history after a slab whose internal strains at its nodes are
+    /// `states`: Syrope's Tmax raised to the largest spring tension met
+    /// (the others have none).
+    pub fn history_after(&self, history: f64, states: &[f64]) -> f64 {
+        match &self.dynamic {
+            DynamicStiffness::Syrope { curves, .. } => states
+                .iter()
+                .map(|&z| curves.spring(z, history).tension)
+                .fold(history, f64::max),
+            _ => history,
+        }
+    }
+
+    /// The stiffness a fast motion meets at rest under the strain eps
+    /// (the static spring's dashpot holds): k2, or Syrope's
+    /// alpha + beta T.
+    pub fn fast_stiffness(&self, ea: f64, eps: f64, history: f64) -> f64 {
+        if let DynamicStiffness::Syrope { curves, .. } = &self.dynamic {
+            return curves.alpha + curves.beta * curves.tension_at_rest(eps, history);
+        }
+        self.springs(ea, self.rest_state(ea, eps, history)).k2
     }
 
     /// The power per length the dashpots dissipate at rate eps1_dot and
@@ -277,12 +376,15 @@ impl Viscoelastic {
     ///   dN_g/d eps_h = dN_g/d eps1 dZ_g/d eps_h + delta_gh dN_g/d eps.
     /// ```
     ///
-    /// `slack[i]`: no compression and eps < 0 at node i.
+    /// `slack[i]`: no compression and eps < 0 at node i; `history`:
+    /// Syrope's Tmax at the slab's start, held over it (its new value,
+    /// [`Self::history_after`], is taken at the end).
     pub fn collocate(
         &self,
         ea: f64,
         colloc: &Collocation,
         start: f64,
+        history: f64,
         eps: &[f64],
         eps_dot: &[f64],
         slack: &[bool],
@@ -294,7 +396,7 @@ impl Viscoelastic {
         let mut jac = [[0.0; MAX_NODES]; MAX_NODES];
         for _ in 0..60 {
             for i in 0..n {
-                f[i] = self.force(ea, z[i], eps[i], eps_dot[i], slack[i]);
+                f[i] = self.force(ea, z[i], history, eps[i], eps_dot[i], slack[i]);
             }
             let mut r = [0.0; MAX_NODES];
             for i in 0..n {
@@ -314,7 +416,7 @@ impl Viscoelastic {
             }
         }
         for i in 0..n {
-            f[i] = self.force(ea, z[i], eps[i], eps_dot[i], slack[i]);
+            f[i] = self.force(ea, z[i], history, eps[i], eps_dot[i], slack[i]);
             for j in 0..n {
                 jac[i][j] = f64::from(u8::from(i == j)) - a[i][j] * f[j].rate_d[0];
             }

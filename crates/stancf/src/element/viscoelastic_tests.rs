@@ -63,8 +63,8 @@ fn the_mean_load_stiffness_is_alpha_plus_beta_times_the_static_springs_tension()
 fn at_rest_a_viscoelastic_line_carries_the_static_ea_times_its_strain() {
     for v in [constant(), mean_load()] {
         for eps in [-0.01, 0.0, 0.002, 0.08, 1.0] {
-            let eps1 = v.rest_state(EA, eps);
-            let f = v.force(EA, eps1, eps, 0.0, false);
+            let eps1 = v.rest_state(EA, eps, 0.0);
+            let f = v.force(EA, eps1, 0.0, eps, 0.0, false);
             assert!(
                 f.rate.abs() <= 1e-12 * (eps.abs() + 1e-300),
                 "rate {}",
@@ -84,15 +84,15 @@ fn at_rest_a_viscoelastic_line_carries_the_static_ea_times_its_strain() {
 fn the_force_and_rate_derivatives_are_their_finite_differences() {
     for v in [constant(), mean_load()] {
         let x = [0.03, 0.05, 0.2];
-        let f = v.force(EA, x[0], x[1], x[2], false);
+        let f = v.force(EA, x[0], 0.0, x[1], x[2], false);
         for k in 0..3 {
             let h = 1e-7;
             let mut p = x;
             let mut m = x;
             p[k] += h;
             m[k] -= h;
-            let fp = v.force(EA, p[0], p[1], p[2], false);
-            let fm = v.force(EA, m[0], m[1], m[2], false);
+            let fp = v.force(EA, p[0], 0.0, p[1], p[2], false);
+            let fm = v.force(EA, m[0], 0.0, m[1], m[2], false);
             let d_rate = (fp.rate - fm.rate) / (2.0 * h);
             let d_force = (fp.force - fm.force) / (2.0 * h);
             let scale_rate = f.rate_d.iter().map(|c| c.abs()).fold(0.0, f64::max);
@@ -141,7 +141,7 @@ fn sine_drive(points: usize, steps: usize) -> (f64, f64) {
             .map(|tau| a * w * (w * (t0 + tau * dt)).cos())
             .collect();
         let slack = vec![false; taus.len()];
-        eps1 = v.collocate(EA, &col, eps1, &eps, &rate, &slack).state[taus.len() - 1];
+        eps1 = v.collocate(EA, &col, eps1, 0.0, &eps, &rate, &slack).state[taus.len() - 1];
     }
     // Exact: the particular solution a Im(H e^{iwt}), H = (k2 + i w c2) /
     // (k + i w c), and the homogeneous one decaying at k / c.
@@ -185,8 +185,8 @@ fn a_dashpot_far_faster_than_the_step_leaves_no_oscillation() {
     let col = Collocation::new(&taus, 0.1);
     let eps = vec![0.02; taus.len()];
     let zero = vec![0.0; taus.len()];
-    let out = v.collocate(EA, &col, 0.5, &eps, &zero, &vec![false; taus.len()]);
-    let rest = v.rest_state(EA, 0.02);
+    let out = v.collocate(EA, &col, 0.5, 0.0, &eps, &zero, &vec![false; taus.len()]);
+    let rest = v.rest_state(EA, 0.02, 0.0);
     let end = out.state[taus.len() - 1];
     assert!((end - rest).abs() <= 1e-6 * rest, "end {end} rest {rest}");
 }
@@ -200,7 +200,7 @@ fn the_collocated_forces_derivatives_are_their_finite_differences() {
         let eps: Vec<f64> = taus.iter().map(|t| 0.03 + 0.01 * t).collect();
         let rate: Vec<f64> = taus.iter().map(|t| 0.2 - 0.1 * t).collect();
         let slack = vec![false; n];
-        let out = v.collocate(EA, &col, 0.02, &eps, &rate, &slack);
+        let out = v.collocate(EA, &col, 0.02, 0.0, &eps, &rate, &slack);
         for h in 0..n {
             for (which, base) in [(0, &eps), (1, &rate)] {
                 let step = 1e-7;
@@ -209,13 +209,13 @@ fn the_collocated_forces_derivatives_are_their_finite_differences() {
                 m[h] -= step;
                 let (fp, fm) = if which == 0 {
                     (
-                        v.collocate(EA, &col, 0.02, &p, &rate, &slack),
-                        v.collocate(EA, &col, 0.02, &m, &rate, &slack),
+                        v.collocate(EA, &col, 0.02, 0.0, &p, &rate, &slack),
+                        v.collocate(EA, &col, 0.02, 0.0, &m, &rate, &slack),
                     )
                 } else {
                     (
-                        v.collocate(EA, &col, 0.02, &eps, &p, &slack),
-                        v.collocate(EA, &col, 0.02, &eps, &m, &slack),
+                        v.collocate(EA, &col, 0.02, 0.0, &eps, &p, &slack),
+                        v.collocate(EA, &col, 0.02, 0.0, &eps, &m, &slack),
                     )
                 };
                 for g in 0..n {

@@ -13,9 +13,35 @@ impl Model {
     /// stiffness: the material's EA; docs/method.md §2.11). Refused on a
     /// line with a tension-strain curve or a Kelvin-Voigt BA (the law has
     /// its own dashpots), or a law that [`Viscoelastic::check`] refuses.
+    ///
+    /// A Syrope law (docs/method.md §2.12) brings its static law, the
+    /// working curve of its Tmax0 and the original curve beyond
+    /// ([`crate::element::Syrope::static_curve`]), as the line's
+    /// tension-strain curve (engineering strain).
     pub fn with_viscoelastic(mut self, law: Viscoelastic) -> Result<Self, ModelError> {
         let ea = self.material.youngs_modulus * self.material.area;
         law.check(ea, "viscoelastic")?;
+        if let crate::element::DynamicStiffness::Syrope { curves, tmax0 } = &law.dynamic {
+            if self.has_axial_damping() {
+                return Err(ModelError::invalid(
+                    "viscoelastic",
+                    "a Syrope line's damping is its law's two dashpots; the material's axial \
+                     damping must be 0",
+                ));
+            }
+            let points = curves.static_curve(*tmax0);
+            let curve = crate::element::AxialCurve::new(&points, "syrope")?;
+            self = self.with_axial_curve(std::sync::Arc::new(curve))?;
+            match &mut self.mesh {
+                Mesh::Sac2(els) => els
+                    .iter_mut()
+                    .for_each(|e| e.section.visco = Some(law.clone())),
+                Mesh::Sac3(els) => els
+                    .iter_mut()
+                    .for_each(|e| e.section.visco = Some(law.clone())),
+            }
+            return Ok(self);
+        }
         if self.axial_curve().is_some() {
             return Err(ModelError::invalid(
                 "viscoelastic",
@@ -31,8 +57,12 @@ impl Model {
             ));
         }
         match &mut self.mesh {
-            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.visco = Some(law)),
-            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.visco = Some(law)),
+            Mesh::Sac2(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.visco = Some(law.clone())),
+            Mesh::Sac3(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.visco = Some(law.clone())),
         }
         Ok(self)
     }
@@ -53,7 +83,10 @@ impl Model {
         if !self.has_internal_state() {
             return 0;
         }
-        crate::with_elements!(&self.mesh, els => els.iter().map(|e| e.axial_rule_points()).sum())
+        let per = self
+            .viscoelastic()
+            .map_or(1, Viscoelastic::values_per_point);
+        crate::with_elements!(&self.mesh, els => els.iter().map(|e| e.axial_rule_points() * per).sum())
     }
 
     /// The internal state at rest at positions `e`: every axial point's
@@ -73,7 +106,10 @@ impl Model {
         if internal.is_empty() {
             return internal;
         }
-        let per = crate::with_elements!(&self.mesh, els => els[0].axial_rule_points());
+        let values = self
+            .viscoelastic()
+            .map_or(1, Viscoelastic::values_per_point);
+        let per = crate::with_elements!(&self.mesh, els => els[0].axial_rule_points()) * values;
         &internal[k * per..(k + 1) * per]
     }
 
