@@ -282,3 +282,7 @@ pub fn interpolate(xp: &[f64], yp: &[f64], x: f64) -> (f64, f64) {
     let slope = (yp[i] - yp[i - 1]) / (xp[i] - xp[i - 1]);
     (yp[i - 1] + slope * (x - xp[i - 1]), slope)
 }
+
+#[cfg(test)]
+#[path = "syrope_tests.rs"]
+mod tests;

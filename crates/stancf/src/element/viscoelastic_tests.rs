@@ -285,3 +285,71 @@ fn the_collocation_integrates_polynomials_of_its_degree_on_every_time_rule() {
         }
     }
 }
+
+fn syrope_law() -> Viscoelastic {
+    let owc = [
+        (2.06897e-3, 1.71768e5),
+        (1.24138e-2, 8.66556e5),
+        (3.10345e-2, 1.89540e6),
+        (6.0e-2, 4.38601e6),
+    ];
+    let curves = super::super::syrope::Syrope::new(
+        &owc,
+        super::super::syrope::WorkingCurveForm::Exponential,
+        (0.2, 1.5),
+        (1.53e8, 23.12),
+        "k",
+    )
+    .unwrap();
+    Viscoelastic {
+        dynamic: DynamicStiffness::Syrope {
+            curves: std::sync::Arc::new(curves),
+            tmax0: 1.302e6,
+        },
+        static_damping: 5e6,
+        dynamic_damping: 1e5,
+    }
+}
+
+#[test]
+fn syropes_force_and_rate_derivatives_are_their_finite_differences() {
+    // A state inside a segment of the working curve and one on the
+    // original curve (beyond Tmax), away from the tables' points.
+    let v = syrope_law();
+    let tmax = 1.302e6;
+    for x in [[0.0105, 0.0112, 0.01], [0.0262, 0.0301, -0.02]] {
+        let f = v.force(EA, x[0], tmax, x[1], x[2], false);
+        for k in 0..3 {
+            let h = 1e-9;
+            let (mut p, mut m) = (x, x);
+            p[k] += h;
+            m[k] -= h;
+            let fp = v.force(EA, p[0], tmax, p[1], p[2], false);
+            let fm = v.force(EA, m[0], tmax, m[1], m[2], false);
+            let d_rate = (fp.rate - fm.rate) / (2.0 * h);
+            let d_force = (fp.force - fm.force) / (2.0 * h);
+            let sr = f.rate_d.iter().map(|c| c.abs()).fold(0.0, f64::max);
+            let sf = f.force_d.iter().map(|c| c.abs()).fold(0.0, f64::max);
+            assert!(
+                (d_rate - f.rate_d[k]).abs() <= 1e-6 * sr,
+                "rate_d[{k}] at {x:?}"
+            );
+            assert!(
+                (d_force - f.force_d[k]).abs() <= 1e-6 * sf,
+                "force_d[{k}] at {x:?}"
+            );
+        }
+        // At rest under its strain the rate vanishes and the tension is
+        // the curve's.
+        let z = v.rest_state(EA, x[1], tmax);
+        let rest = v.force(
+            EA,
+            z,
+            tmax.max(v.history_after(tmax, &[z])),
+            x[1],
+            0.0,
+            false,
+        );
+        assert!(rest.rate.abs() < 1e-9, "{}", rest.rate);
+    }
+}
