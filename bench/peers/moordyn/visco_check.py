@@ -19,7 +19,17 @@ over the dashpot's time (BA + BA_D) / (k1 + k2), 5 to 6 s here; at 30 s
 it still pulls 1 % of the range harder), stancf to its rest value, so the
 fairlead tensions are compared after 150 s, 25 of those times later.
 Printed: each code's range and the largest difference, in % of the
-range. About ten seconds.
+range.
+
+Then Syrope's working curves (docs/method.md §2.12): OpenFAST's
+md_syrope deck and MoorDyn's three test decks (tests/Mooring/syrope:
+linear, quadratic and exponential working curves), one segment of
+polyester 1 m long, its coupled end driven 2 mm at 20 s for 300 s;
+MoorDyn at the decks' dtM (0.01 s), stancf with the Galerkin step of
+0.05 s, both from the static equilibrium (the decks' Tmean0 set to it:
+MoorDyn starts its slow strain from Tmean0 and the stretch relaxes over
+five minutes); compared after 100 s. MoorDyn's test decks are taken
+from its repository's mirror (/work/.mirror, `fetch`). About 15 seconds.
 """
 import math
 import os
@@ -130,6 +140,132 @@ def run_stancf(form):
         return np.array(b["t"], dtype=float), np.array(b["tension"], dtype=float)
 
 
+SYROPE_DECKS = {
+    # name: (the deck's folder in a copy of MoorDyn's or OpenFAST's suite,
+    # the files beside it, the coupled point's x)
+    "md_syrope": "openfast",
+    "linear_wc": "moordyn",
+    "quadratic_wc": "moordyn",
+    "exp_wc": "moordyn",
+}
+SYROPE_AMPLITUDE, SYROPE_PERIOD, SYROPE_DURATION, SYROPE_FROM = 0.002, 20.0, 300.0, 100.0
+SYROPE_DT = 0.05
+
+
+def syrope_files(name, d):
+    """Writes the deck and its files into d (MoorDyn's test decks name
+    ../owc.dat: the deck goes one folder down) and returns the deck's
+    path and its coupled point's position."""
+    peer = os.path.join(race.ROOT, "..", "shared", "peer-decks", "openfast-r-test", "modules",
+                        "moordyn", "md_syrope")
+    mirror = "/work/.mirror/FloatingArrayDesign+MoorDyn/repo"
+    if SYROPE_DECKS[name] == "openfast":
+        folder = os.path.join(d, name)
+        os.makedirs(folder)
+        for f in ("moordyn.dat", "owc.dat", "syrope.dat"):
+            with open(os.path.join(peer, f)) as src, open(os.path.join(folder, f), "w") as dst:
+                dst.write(src.read())
+        deck = os.path.join(folder, "moordyn.dat")
+    else:
+        folder = os.path.join(d, "syrope", name)
+        os.makedirs(folder)
+        def show(path):
+            return subprocess.run(["git", "-C", mirror, "show", "HEAD:" + path],
+                                  capture_output=True, text=True, check=True).stdout
+        with open(os.path.join(d, "syrope", "owc.dat"), "w") as f:
+            f.write(show("tests/Mooring/syrope/owc.dat"))
+        for f in ("line.txt", "syrope.dat"):
+            with open(os.path.join(folder, f), "w") as out:
+                out.write(show("tests/Mooring/syrope/%s/%s" % (name, f)))
+        deck = os.path.join(folder, "line.txt")
+    with open(deck) as f:
+        for line in f:
+            w = line.split()
+            if len(w) > 4 and w[0] == "2" and w[1].lower() == "coupled":
+                return deck, [float(w[2]), float(w[3]), float(w[4])]
+    sys.exit("no coupled point 2 in " + deck)
+
+
+def start_at_rest(deck):
+    """Sets the deck's SYROPE IC Tmean0 to the tension of its static
+    equilibrium (stancf's static solve of the deck alone): MoorDyn starts
+    its slow strain from Tmean0 on the working curve of Tmax0, stancf at
+    rest at its equilibrium, and the slow strain relaxes over
+    (BA + BA_D) / (alpha + beta T), 5 minutes for these ropes, so both
+    start from the same state."""
+    out = os.path.join(os.path.dirname(deck), "statics")
+    p = subprocess.run([race.STANCF, "run", deck, "--out", out, "--quiet"],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("stancf failed: " + p.stderr)
+    rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
+                         dtype=None, encoding=None)
+    tension = float(rows["tension"][0])
+    with open(deck) as f:
+        lines = f.read().split("\n")
+    inside = False
+    for i, line in enumerate(lines):
+        if "SYROPE IC" in line.upper():
+            inside, skip = True, 2
+            continue
+        if inside and line.startswith("---"):
+            break
+        if inside:
+            if skip > 0:
+                skip -= 1
+                continue
+            w = line.split()
+            if len(w) >= 3:
+                lines[i] = "%s %s %r" % (w[0], w[1], tension)
+    with open(deck, "w") as f:
+        f.write("\n".join(lines))
+    return tension
+
+
+def syrope_moordyn(deck, x0):
+    import moordyn
+    cwd = os.getcwd()
+    os.chdir(os.path.dirname(deck))
+    try:
+        with race.Quiet():
+            s = moordyn.Create(os.path.basename(deck))
+            moordyn.SetVerbosity(s, moordyn.LEVEL_NONE)
+            moordyn.Init(s, list(x0), [0.0, 0.0, 0.0])
+            dtm, times, tensions = 0.01, [], []
+            per_output = int(round(OUTPUT / dtm))
+            for k in range(int(round(SYROPE_DURATION / OUTPUT))):
+                for j in range(per_output):
+                    ta = (k * per_output + j) * dtm
+                    xa = x0[0] + SYROPE_AMPLITUDE * math.sin(2 * math.pi * ta / SYROPE_PERIOD)
+                    xb = x0[0] + SYROPE_AMPLITUDE * math.sin(2 * math.pi * (ta + dtm) / SYROPE_PERIOD)
+                    f = moordyn.Step(s, [xa, x0[1], x0[2]], [(xb - xa) / dtm, 0.0, 0.0], ta, dtm)
+                times.append((k + 1) * OUTPUT)
+                tensions.append(float(np.linalg.norm(f)))
+            moordyn.Close(s)
+    finally:
+        os.chdir(cwd)
+    return np.array(times), np.array(tensions)
+
+
+def syrope_stancf(deck):
+    sc = os.path.join(os.path.dirname(deck), "run.toml")
+    with open(sc, "w") as f:
+        f.write(SCENARIO.replace('moordyn = "deck.txt"', 'moordyn = "%s"' % os.path.basename(deck))
+                .replace('initial = "reference"', 'initial = "static"')
+                .format(form="syrope", amplitude=SYROPE_AMPLITUDE, period=SYROPE_PERIOD,
+                        dt=SYROPE_DT, duration=SYROPE_DURATION,
+                        every=int(round(OUTPUT / SYROPE_DT))))
+    out = os.path.join(os.path.dirname(deck), "out")
+    p = subprocess.run([race.STANCF, "run", sc, "--out", out, "--quiet"],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("stancf failed: " + p.stderr)
+    rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
+                         dtype=None, encoding=None)
+    a = rows[rows["end"] == "A"]
+    return np.array(a["t"], dtype=float), np.array(a["tension"], dtype=float)
+
+
 def main():
     print("form      code     range (N)          largest |diff| after %g s" % COMPARE_FROM)
     for form in FORMS:
@@ -142,6 +278,21 @@ def main():
         print("%-9s MoorDyn  %.6e .. %.6e" % (form, fm[keep].min(), fm[keep].max()))
         print("%-9s stancf   %.6e .. %.6e   %.4g N = %.3g %% of the range"
               % (form, fs_at[keep].min(), fs_at[keep].max(), diff, 100.0 * diff / rng))
+    print("\nSyrope decks, driven %g m at %g s for %g s (Galerkin dt %g s), after %g s"
+          % (SYROPE_AMPLITUDE, SYROPE_PERIOD, SYROPE_DURATION, SYROPE_DT, SYROPE_FROM))
+    for name in SYROPE_DECKS:
+        with tempfile.TemporaryDirectory() as d:
+            deck, x0 = syrope_files(name, d)
+            start_at_rest(deck)
+            tm, fm = syrope_moordyn(deck, x0)
+            ts, fs = syrope_stancf(deck)
+        fs_at = np.interp(tm, ts, fs)
+        keep = tm >= SYROPE_FROM
+        rng = fm[keep].max() - fm[keep].min()
+        diff = np.abs(fs_at[keep] - fm[keep]).max()
+        print("%-13s MoorDyn %.6e .. %.6e  stancf %.6e .. %.6e  %.4g N = %.3g %% of the range"
+              % (name, fm[keep].min(), fm[keep].max(), fs_at[keep].min(), fs_at[keep].max(),
+                 diff, 100.0 * diff / rng))
 
 
 if __name__ == "__main__":

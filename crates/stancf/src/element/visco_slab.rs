@@ -116,9 +116,17 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             if per > 1 {
                 v_out.end[s * per + 1] = visco.history_after(history, &c.state[..nodes]);
             }
+            if per > 2 {
+                v_out.end[s * per + 2] = start[s * per + 2];
+            }
             for (g, tp) in slab.points.iter().enumerate() {
                 v_out.force[g * ns + s] = c.force[g];
-                out.damping_work -= tp.w_dt * p.wl * visco.dissipation(c.rate[g], eps_dot[g]);
+                if per > 2 {
+                    // Syrope: the law's work is its energy (V11).
+                    v_out.end[s * per + 2] += tp.w_dt * c.force[g] * eps_dot[g];
+                } else {
+                    out.damping_work -= tp.w_dt * p.wl * visco.dissipation(c.rate[g], eps_dot[g]);
+                }
             }
             if !with_hessian {
                 continue;
@@ -193,6 +201,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             out.push(eps1);
             if visco.values_per_point() > 1 {
                 out.push(visco.history_after(history, &[eps1]));
+            }
+            if visco.values_per_point() > 2 {
+                out.push(0.0); // the law's work since the start
             }
         }
         out
@@ -280,8 +291,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             .zip(internal.chunks(per))
             .map(|(p, state)| {
                 let eps = axial_strain(measure, &p.shape.gradients(q).0);
-                let history = state.get(1).copied().unwrap_or(0.0);
-                p.wl * visco.stored_energy(self.section.ea, state[0], history, eps)
+                p.wl * visco.stored_energy(self.section.ea, state, eps)
             })
             .sum()
     }

@@ -118,10 +118,12 @@ impl Viscoelastic {
     }
 
     /// The values of the internal state at each axial point: eps1, and
-    /// for Syrope the largest mean tension Tmax so far.
+    /// for Syrope the largest mean tension Tmax so far and the work done
+    /// on the law per length since the start (its energy: a hysteretic
+    /// law's stored and dissipated energies do not separate).
     pub fn values_per_point(&self) -> usize {
         match self.dynamic {
-            DynamicStiffness::Syrope { .. } => 2,
+            DynamicStiffness::Syrope { .. } => 3,
             _ => 1,
         }
     }
@@ -249,15 +251,12 @@ impl Viscoelastic {
     /// The stored energy per length of the two springs at (eps1, eps),
     /// 1/2 k1 eps1^2 + 1/2 k2 (eps - eps1)^2 (with the springs of the
     /// state; exact for a constant k2).
-    /// Syrope's: the dynamic spring's 1/2 (alpha + beta T) (eps - X(T))^2
-    /// only (its static spring is hysteretic: what it takes is not
-    /// stored).
-    pub fn stored_energy(&self, ea: f64, eps1: f64, history: f64, eps: f64) -> f64 {
-        if let DynamicStiffness::Syrope { curves, .. } = &self.dynamic {
-            let s = curves.spring(eps1, history);
-            let d = eps - s.strain_at_rest;
-            return 0.5 * (curves.alpha + curves.beta * s.tension) * d * d;
+    /// Syrope's is the work done on its law (the third internal value).
+    pub fn stored_energy(&self, ea: f64, state: &[f64], eps: f64) -> f64 {
+        if let DynamicStiffness::Syrope { .. } = &self.dynamic {
+            return state[2];
         }
+        let eps1 = state[0];
         let s = self.springs(ea, eps1);
         0.5 * s.k1 * eps1 * eps1 + 0.5 * s.k2 * (eps - eps1) * (eps - eps1)
     }
