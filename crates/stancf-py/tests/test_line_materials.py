@@ -129,3 +129,54 @@ def test_a_dynamic_stiffness_below_the_static_one_is_refused_naming_its_key():
     law = "ea_dynamic = 5.0e5\nba = 1.0e3"
     with pytest.raises(stancf.ScenarioError, match=r"line_types\[0\]\.ea_dynamic.*not above the static EA"):
         stancf.Scenario(VISCO_ROPE.format(law=law))
+
+
+SYROPE_ROPE = """title = "Syrope rope"
+[[line_types]]
+name = "poly"
+diameter = 0.203
+mass_per_length = 40.0
+ba = 5.0e10
+ba_dynamic = 1.0e5
+syrope = {{ curve = [[2.06897e-3, 1.71768e5], [1.03448e-2, 7.45355e5], [2.06897e-2, 1.29953e6], [2.27586e-2, 1.40061e6]], working_curve = "linear", k1 = 1.25e8, k2 = 0.0, alpha = 1.53e8, beta = 23.12 }}
+[[points]]
+id = 1
+type = "fixed"
+position = [0.0, 0.0, 0.0]
+[[points]]
+id = 2
+type = "fixed"
+position = [{x!r}, 0.0, 0.0]
+[[lines]]
+id = 1
+type = "poly"
+length = 1.0
+elements = 2
+a = 1
+b = 2
+tmax0 = 1.302e6
+[system]
+gravity = [0.0, 0.0, 0.0]
+[analysis]
+type = "static"
+"""
+
+
+def test_a_syrope_rope_at_rest_pulls_with_its_working_curve(tmp_path):
+    # docs/method.md §2.12: below Tmax0 the static law is the linear
+    # working curve of slope k1 through the original curve's point at
+    # Tmax0 (eps_max, Tmax0).
+    x = 1.0137912
+    res = stancf.run(stancf.Scenario(SYROPE_ROPE.format(x=x)), out=tmp_path / "out")
+    rows = np.genfromtxt(res.directory / "tensions.csv", delimiter=",", names=True, dtype=None,
+                         encoding=None)
+    # Tmax0 lies on the curve's last segment.
+    eps_max = 2.06897e-2 + (1.302e6 - 1.29953e6) * (2.27586e-2 - 2.06897e-2) / (1.40061e6 - 1.29953e6)
+    expected = 1.302e6 + 1.25e8 * (x - 1.0 - eps_max)
+    assert np.max(np.abs(np.asarray(rows["tension"], dtype=float) - expected)) < 1e-9 * expected
+
+
+def test_a_syrope_line_without_its_history_is_refused_naming_the_key():
+    text = SYROPE_ROPE.format(x=1.0137912).replace("tmax0 = 1.302e6\n", "")
+    with pytest.raises(stancf.ScenarioError, match=r"lines\[0\]\.tmax0"):
+        stancf.Scenario(text)

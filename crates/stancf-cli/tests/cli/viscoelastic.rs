@@ -215,3 +215,91 @@ fn a_viscoelastic_law_that_cannot_hold_is_refused_naming_its_key() {
     );
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// OpenFAST's md_syrope deck (its numbers; a Syrope polyester segment of
+/// 1 m, linear working curve k1 1.25e8 N, Tmax0 1.302e6 N): `check` names
+/// the law and the files, the static solve pulls with the working curve's
+/// tension at the deck's strain (linear: k1 (eps - eps_max) + Tmax0, the
+/// closed form of the working curve through (eps_max, Tmax0)), and held
+/// 60 s the rope stays there.
+#[test]
+fn a_syrope_deck_runs_its_statics_and_sixty_seconds_held() {
+    let d = scratch("syrope-deck");
+    let owc = [
+        (0.0, 0.0),
+        (2.06897e-3, 1.71768e5),
+        (4.13793e-3, 3.30952e5),
+        (6.20690e-3, 4.78788e5),
+        (8.27586e-3, 6.16510e5),
+        (1.03448e-2, 7.45355e5),
+        (1.24138e-2, 8.66556e5),
+        (1.44828e-2, 9.81351e5),
+        (1.65517e-2, 1.09098e6),
+        (1.86207e-2, 1.19667e6),
+        (2.06897e-2, 1.29953e6),
+        (2.27586e-2, 1.40061e6),
+    ];
+    let mut curve = String::from("Strain Tension\n(-) (N)\n");
+    for (x, y) in owc {
+        curve.push_str(&format!("{x:e} {y:e}\n"));
+    }
+    std::fs::write(d.join("owc.dat"), curve).unwrap();
+    std::fs::write(
+        d.join("syrope.dat"),
+        "owc.dat OWC curve\nLINEAR WCType formula\n1.25e8 k1 slope\n0.0 k2 unused\n",
+    )
+    .unwrap();
+    let deck = "one Syrope segment\n--- LINE TYPES ---\n\
+        LineType Diam MassDenInAir EA BA/-zeta EI Can Cat Cdn Cdt\n\
+        (-) (m) (kg/m) (-) (Pa-s/-) (n-m^2) (-) (-) (-) (-)\n\
+        poly 0.203 40 SYROPE:syrope.dat|1.53e8|23.12 5.0e10|1.0e5 0.0 0.0 0.0 0.0 0.0\n\
+        --- POINTS ---\nNode Type X Y Z M V CdA CA\n(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+        1 Fixed 0.0 0 0.0 0 0 0 0\n2 Coupled 1.0137912 0 0.0 0 0 0 0\n\
+        --- LINES ---\nLine LineType NodeA NodeB UnstrLen NumSegs Flags/Outputs\n\
+        (-) (-) (-) (-) (m) (-) (-)\n1 poly 2 1 1.0 1 -\n\
+        --- SYROPE IC ---\nLine Tmax Tmean\n(-) (N) (N)\n1 1.302e6 4.339e5\n\
+        --- SOLVER OPTIONS ---\n0 g\n1025 rho\n1.0e-2 dtM\n70 WtrDpth\n--- need this line ---\n";
+    std::fs::write(d.join("syrope.txt"), deck).unwrap();
+    let checked = stancf(&["check", d.join("syrope.txt").to_str().unwrap()]);
+    assert_eq!(checked.status.code(), Some(0), "{}", text(&checked).1);
+    let (stdout, stderr) = text(&checked);
+    assert!(
+        stdout.contains("Syrope (docs/method.md §2.12): the working curve (Linear"),
+        "{stdout}"
+    );
+    let said = format!("{stdout}{stderr}");
+    assert!(
+        said.contains("owc.dat") && said.contains("Tmean0"),
+        "{said}"
+    );
+    // The working curve through the original curve's point at Tmax0.
+    let at = |x: f64| {
+        let i = (1..owc.len()).find(|&i| owc[i].1 >= x).unwrap();
+        let (a, b) = (owc[i - 1], owc[i]);
+        a.0 + (x - a.1) * (b.0 - a.0) / (b.1 - a.1)
+    };
+    let eps_max = at(1.302e6);
+    let expected = 1.302e6 + 1.25e8 * (0.0137912 - eps_max);
+    let path = write_scenario(
+        &d,
+        "held.toml",
+        "title = \"held\"\n[system]\nmoordyn = \"syrope.txt\"\n\
+         [analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\ntime_step = 0.05\nduration = 60.0\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let tensions = read_tensions(&out.join("tensions.csv"));
+    // The working curve is 30 points of the line through it: exact; the
+    // solve's tolerance leaves 1e-9.
+    for row in &tensions {
+        assert!(
+            (row[6] - expected).abs() < 1e-9 * expected,
+            "t {}: {} N vs {expected}",
+            row[0],
+            row[6]
+        );
+    }
+    assert!(tensions.last().unwrap()[0] > 59.9);
+    std::fs::remove_dir_all(&d).unwrap();
+}

@@ -136,9 +136,13 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
         out.push(LineType {
             diameter: ctx.required_positive(&key("diameter"), r.diameter)?,
             mass_per_length: ctx.required_positive(&key("mass_per_length"), r.mass_per_length)?,
-            ea: match &ea_curve {
-                Some(c) => c.secant_stiffness(),
-                None => ctx.required_positive(&key("ea"), r.ea)?,
+            ea: match (
+                &ea_curve,
+                ea_dynamic.as_ref().and_then(super::syrope_files::syrope_ea),
+            ) {
+                (Some(c), _) => c.secant_stiffness(),
+                (None, Some(syrope)) => syrope,
+                (None, None) => ctx.required_positive(&key("ea"), r.ea)?,
             },
             ea_curve,
             ea_dynamic,
