@@ -11,10 +11,7 @@ use stancf::error::Sig;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-/// The largest strain a line may need to span its points: 20 %, above the
-/// breaking strain of every mooring material (steel wire 1-2 %, chain
-/// 2-3 %, polyester 10-15 %, nylon up to 20 %).
-pub const MAX_SPAN_STRAIN: f64 = 0.2;
+pub use crate::scenario::overstretch::MAX_SPAN_STRAIN;
 
 /// How far a point may lie below the seabed (m): 1 mm and 1e-6 of the
 /// depth, the rounding of coordinates written to a few digits.
@@ -100,7 +97,7 @@ pub fn check_geometry(
             // ([`overstretched_notes`]; MoorDyn's own test decks stretch
             // a line by 100 %).
             let direct = last_line.is_some_and(|l| reach_is_direct(sc, l, a, b));
-            if span > (1.0 + MAX_SPAN_STRAIN) * length && !(direct && !free) {
+            if (free || !direct) && span > (1.0 + MAX_SPAN_STRAIN) * length {
                 let line = last_line.expect("a reached point has a line to it");
                 let line_key = sc.names.line(line, "length", "UnstrLen");
                 let keys = if free {
@@ -179,42 +176,6 @@ fn direct_reach(
         }
     }
     best
-}
-
-/// A note for every line straight between two placed points (fixed or
-/// coupled, where the scenario places them) that must stretch by more
-/// than [`MAX_SPAN_STRAIN`] to span them: it runs as given, with a
-/// tension beyond any mooring material's breaking strength.
-pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
-    let placed = |p: usize| sc.point_is_fixed(p) || sc.point_is_coupled(p);
-    sc.lines
-        .iter()
-        .enumerate()
-        .filter_map(|(i, l)| {
-            let [Some(a), Some(b)] = l.ends else {
-                return None;
-            };
-            if !(placed(a) && placed(b)) {
-                return None;
-            }
-            let span = distance(sc.points[a].position, sc.points[b].position);
-            (span > (1.0 + MAX_SPAN_STRAIN) * l.length).then(|| {
-                format!(
-                    "{}: line {} is {} m long between points {} and {}, {} m apart: it is \
-                     stretched by {} %, beyond the {:.0} % of any mooring material's breaking \
-                     strain (run as given)",
-                    sc.names.line(i, "length", "UnstrLen"),
-                    l.id,
-                    Sig(l.length),
-                    sc.points[a].id,
-                    sc.points[b].id,
-                    Sig(span),
-                    Sig((100.0 * (span / l.length - 1.0)).round()),
-                    100.0 * MAX_SPAN_STRAIN
-                )
-            })
-        })
-        .collect()
 }
 
 /// Whether `line` alone joins points `a` and `b`.

@@ -84,7 +84,7 @@ pub(super) fn deck_system(
     sc.notes.extend(notes);
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
     sc.notes
-        .extend(crate::system_geometry::overstretched_notes(&sc));
+        .extend(super::overstretch::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;

@@ -20,9 +20,7 @@ use super::bodies::{moments_of_a_body, BodyType, SystemBody};
 use super::context::Ctx;
 use super::moordyn_water::{deck_water, deck_water_keys};
 use super::raw::RawAnalysis;
-use super::system_parts::{
-    LineType, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
-};
+use super::system_parts::{OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario};
 use super::water::WaterKeys;
 use super::ScenarioError;
 use crate::moordyn::{
@@ -59,35 +57,12 @@ pub(super) fn deck_scenario(
     host: &super::HostEnvironment,
     farm: Option<super::farm::Farm>,
 ) -> Result<SystemScenario, ScenarioError> {
-    // EA curve files, read here (the deck knows their names only); the
-    // deck's EA of such a type becomes the curve's secant at its last
-    // point (MoorDyn's EA for its damping ratio and CFL).
-    let (curves, curve_notes) = super::ea_curves::deck_curves(deck, file, path)?;
-    let (syrope_laws, syrope_notes) = super::syrope_files::deck_syrope(deck, file, path)?;
-    let mut deck = std::borrow::Cow::Borrowed(deck);
-    if curves.iter().any(Option::is_some) || syrope_laws.iter().any(Option::is_some) {
-        for ((t, c), s) in deck
-            .to_mut()
-            .line_types
-            .iter_mut()
-            .zip(&curves)
-            .zip(&syrope_laws)
-        {
-            if let Some(c) = c {
-                t.ea = c.secant_stiffness();
-            }
-            if let Some(ea) = s.as_ref().and_then(super::syrope_files::syrope_ea) {
-                t.ea = ea;
-                t.ea_dynamic = s.clone();
-            }
-        }
-    }
-    let deck: &Deck = &deck;
-    let (tmax0, tmax0_notes) = super::syrope_files::deck_tmax0(deck, &syrope_laws, file)?;
+    // The line types' laws: EA curve files, Syrope's files and SYROPE IC,
+    // viscoelastic forms (the deck knows their files' names only).
+    let laws = super::deck_line_types::deck_line_laws(deck, file, path)?;
+    let deck: &Deck = &laws.deck;
+    let (curves, tmax0) = (laws.curves.clone(), laws.tmax0.clone());
     let g = deck_gravity(deck, file, host)?;
-    for (t, c) in deck.line_types.iter().zip(&curves) {
-        check_deck_law(t, c.is_some(), file)?;
-    }
     let farm = farm.or_else(|| {
         host.turbines.clone().map(|positions| super::farm::Farm {
             positions,
@@ -146,9 +121,7 @@ pub(super) fn deck_scenario(
     notes.extend(current_note);
     notes.extend(line_output_notes(deck, path));
     notes.extend(external_notes);
-    notes.extend(curve_notes);
-    notes.extend(syrope_notes);
-    notes.extend(tmax0_notes);
+    notes.extend(laws.notes.iter().cloned());
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
@@ -158,7 +131,7 @@ pub(super) fn deck_scenario(
             .line_types
             .iter()
             .zip(curves)
-            .map(|(t, c)| deck_line_type(t, c))
+            .map(|(t, c)| super::deck_line_types::deck_line_type(t, c))
             .collect(),
         points,
         bodies,
@@ -187,7 +160,7 @@ pub(super) fn deck_scenario(
     };
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     sc.notes
-        .extend(crate::system_geometry::overstretched_notes(&sc));
+        .extend(super::overstretch::overstretched_notes(&sc));
     Ok(sc)
 }
 
@@ -348,56 +321,6 @@ fn deck_gravity(
         "{file}: line {line}: {name}: {g:e} m/s^2 is out of the range the solver computes in \
          (1e-150 to 1e150 in SI units); give the acceleration of gravity in m/s^2"
     )))
-}
-
-/// A viscoelastic LINE TYPES row's law, checked (docs/method.md §2.11):
-/// an error naming the row.
-fn check_deck_law(
-    t: &crate::moordyn::LineType,
-    has_curve: bool,
-    file: &str,
-) -> Result<(), ScenarioError> {
-    let at = |m: String| {
-        ScenarioError(format!(
-            "{file}: line {}: line type \"{}\": {m}",
-            t.line, t.name
-        ))
-    };
-    if t.ea_dynamic.is_none() {
-        return Ok(());
-    }
-    if has_curve {
-        return Err(at(
-            "a viscoelastic EA needs a constant static EA, not a curve file".into(),
-        ));
-    }
-    super::visco_types::check_law(&deck_line_type(t, None)).map_err(|(_, m)| at(m))
-}
-
-/// A LINE TYPES row as a line type.
-fn deck_line_type(
-    t: &crate::moordyn::LineType,
-    ea_curve: Option<std::sync::Arc<stancf::element::AxialCurve>>,
-) -> LineType {
-    LineType {
-        name: t.name.clone(),
-        diameter: t.diameter,
-        mass_per_length: t.mass_per_length,
-        ea: t.ea,
-        ea_curve,
-        ea_dynamic: t.ea_dynamic.clone(),
-        ba_dynamic: t.ba_dynamic,
-        ei: t.ei,
-        ba: t.ba,
-        cd_normal: t.cd_normal,
-        ca_normal: t.ca_normal,
-        cd_axial: t.cd_axial,
-        ca_axial: t.ca_axial,
-        // MoorDyn's segments carry no compression (Line.cpp: T = 0
-        // when l_str <= l); the static solve keeps it (docs/method.md
-        // §2.2, (M4a)).
-        compression: false,
-    }
 }
 
 /// The points the host moves for the deck's CoupledPinned bodies: a

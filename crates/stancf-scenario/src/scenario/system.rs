@@ -108,7 +108,7 @@ pub(super) fn system_scenario(
     };
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
     sc.notes
-        .extend(crate::system_geometry::overstretched_notes(&sc));
+        .extend(super::overstretch::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     Ok(sc)

@@ -183,7 +183,9 @@ pub(super) fn check_law(t: &LineType) -> Result<(), (&'static str, String)> {
     };
     law.check(t.ea, "").map_err(|e| {
         let key = match dynamic {
-            DynamicStiffness::MeanLoad { beta, .. } if !(*beta >= 0.0) => "ea_dynamic_beta",
+            DynamicStiffness::MeanLoad { beta, .. } if beta.is_nan() || *beta < 0.0 => {
+                "ea_dynamic_beta"
+            }
             DynamicStiffness::MeanLoad { .. } => "ea_dynamic_alpha",
             _ => "ea_dynamic",
         };

@@ -65,7 +65,7 @@ pub use strain::{
     tension_only_energy_density,
 };
 pub use syrope::{Syrope, WorkingCurveForm};
-pub use visco_slab::ViscoDerivatives;
+pub use viscoelastic::ViscoDerivatives;
 pub use viscoelastic::{DynamicStiffness, Viscoelastic};
 
 use crate::quadrature::GaussRule;

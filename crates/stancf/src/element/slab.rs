@@ -273,7 +273,7 @@ pub struct SlabDerivatives<const ND: usize> {
     pub added_mass: super::AddedMassDerivatives<ND>,
     /// A viscoelastic line's axial forces and their coupling of the time
     /// points (docs/method.md §2.11).
-    pub visco: super::visco_slab::ViscoDerivatives,
+    pub visco: super::viscoelastic::ViscoDerivatives,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -292,7 +292,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
             added_mass: super::AddedMassDerivatives::default(),
-            visco: super::visco_slab::ViscoDerivatives::default(),
+            visco: super::viscoelastic::ViscoDerivatives::default(),
         }
     }
 }

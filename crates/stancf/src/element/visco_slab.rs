@@ -25,22 +25,6 @@ use super::strain::{axial_strain, axial_strain_derivatives};
 use super::viscoelastic::{Viscoelastic, MAX_NODES};
 use super::CableElement;
 
-/// What the slab derivatives keep of a viscoelastic line's axial forces.
-#[derive(Clone, Debug, Default)]
-pub struct ViscoDerivatives {
-    /// Whether the element is viscoelastic.
-    pub active: bool,
-    /// N at [g * points + s]: time point g, axial point s.
-    pub force: Vec<f64>,
-    /// The internal state at the slab's end at each axial point (the next
-    /// step's start): eps1 (and Syrope's Tmax), point after point.
-    pub end: Vec<f64>,
-    /// a_sg at [s * time points + g] (with the Hessian).
-    pub a: Vec<[f64; 3]>,
-    /// V_sgn at [s * time points + g], n = 0..4 (with the Hessian).
-    pub v: Vec<[[f64; 3]; 4]>,
-}
-
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// The viscoelastic axial forces of the slab from the internal state
     /// `start` at its start ([`Viscoelastic::values_per_point`] per axial
@@ -106,8 +90,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             let c = visco.collocate(
                 ea,
                 &slab.collocation,
-                start[s * per],
-                history,
+                (start[s * per], history),
                 &eps,
                 &eps_dot,
                 &slack,

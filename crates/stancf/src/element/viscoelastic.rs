@@ -292,6 +292,22 @@ impl Viscoelastic {
     }
 }
 
+/// What the slab derivatives keep of a viscoelastic line's axial forces.
+#[derive(Clone, Debug, Default)]
+pub struct ViscoDerivatives {
+    /// Whether the element is viscoelastic.
+    pub active: bool,
+    /// N at [g * points + s]: time point g, axial point s.
+    pub force: Vec<f64>,
+    /// The internal state at the slab's end at each axial point (the next
+    /// step's start): eps1 (and Syrope's Tmax), point after point.
+    pub end: Vec<f64>,
+    /// a_sg at [s * time points + g] (with the Hessian).
+    pub a: Vec<[f64; 3]>,
+    /// V_sgn at [s * time points + g], n = 0..4 (with the Hessian).
+    pub v: Vec<[[f64; 3]; 4]>,
+}
+
 /// The largest number of collocation nodes: the slab's time Gauss points
 /// and its end.
 pub const MAX_NODES: usize = 12;
@@ -382,8 +398,7 @@ impl Viscoelastic {
         &self,
         ea: f64,
         colloc: &Collocation,
-        start: f64,
-        history: f64,
+        (start, history): (f64, f64),
         eps: &[f64],
         eps_dot: &[f64],
         slack: &[bool],

@@ -141,7 +141,9 @@ fn sine_drive(points: usize, steps: usize) -> (f64, f64) {
             .map(|tau| a * w * (w * (t0 + tau * dt)).cos())
             .collect();
         let slack = vec![false; taus.len()];
-        eps1 = v.collocate(EA, &col, eps1, 0.0, &eps, &rate, &slack).state[taus.len() - 1];
+        eps1 = v
+            .collocate(EA, &col, (eps1, 0.0), &eps, &rate, &slack)
+            .state[taus.len() - 1];
     }
     // Exact: the particular solution a Im(H e^{iwt}), H = (k2 + i w c2) /
     // (k + i w c), and the homogeneous one decaying at k / c.
@@ -185,7 +187,7 @@ fn a_dashpot_far_faster_than_the_step_leaves_no_oscillation() {
     let col = Collocation::new(&taus, 0.1);
     let eps = vec![0.02; taus.len()];
     let zero = vec![0.0; taus.len()];
-    let out = v.collocate(EA, &col, 0.5, 0.0, &eps, &zero, &vec![false; taus.len()]);
+    let out = v.collocate(EA, &col, (0.5, 0.0), &eps, &zero, &vec![false; taus.len()]);
     let rest = v.rest_state(EA, 0.02, 0.0);
     let end = out.state[taus.len() - 1];
     assert!((end - rest).abs() <= 1e-6 * rest, "end {end} rest {rest}");
@@ -200,7 +202,7 @@ fn the_collocated_forces_derivatives_are_their_finite_differences() {
         let eps: Vec<f64> = taus.iter().map(|t| 0.03 + 0.01 * t).collect();
         let rate: Vec<f64> = taus.iter().map(|t| 0.2 - 0.1 * t).collect();
         let slack = vec![false; n];
-        let out = v.collocate(EA, &col, 0.02, 0.0, &eps, &rate, &slack);
+        let out = v.collocate(EA, &col, (0.02, 0.0), &eps, &rate, &slack);
         for h in 0..n {
             for (which, base) in [(0, &eps), (1, &rate)] {
                 let step = 1e-7;
@@ -209,13 +211,13 @@ fn the_collocated_forces_derivatives_are_their_finite_differences() {
                 m[h] -= step;
                 let (fp, fm) = if which == 0 {
                     (
-                        v.collocate(EA, &col, 0.02, 0.0, &p, &rate, &slack),
-                        v.collocate(EA, &col, 0.02, 0.0, &m, &rate, &slack),
+                        v.collocate(EA, &col, (0.02, 0.0), &p, &rate, &slack),
+                        v.collocate(EA, &col, (0.02, 0.0), &m, &rate, &slack),
                     )
                 } else {
                     (
-                        v.collocate(EA, &col, 0.02, 0.0, &eps, &p, &slack),
-                        v.collocate(EA, &col, 0.02, 0.0, &eps, &m, &slack),
+                        v.collocate(EA, &col, (0.02, 0.0), &eps, &p, &slack),
+                        v.collocate(EA, &col, (0.02, 0.0), &eps, &m, &slack),
                     )
                 };
                 for g in 0..n {

@@ -94,13 +94,15 @@ fn a_non_constant_ea_is_refused_naming_the_form() {
         e.message.contains("more bar-separated values than EA"),
         "{e}"
     );
-    for (ea, words) in [("SYROPE:owc.dat|0.1|0.2", "Syrope")] {
-        let text = with("1e8 -0.8", &format!("{ea} -0.8"));
-        let e = error(&text);
-        assert_eq!(e.line, Some(line_of(&text, ea)), "{ea}");
-        assert!(e.message.starts_with("EA of line type \"chain\""), "{e}");
-        assert!(e.message.contains(words), "{ea}: {e}");
-    }
+    // Syrope's form: the settings file, alpha, beta; BA|BA_D beside it.
+    let syrope = parse(&with("1e8 -0.8", "SYROPE:owc.dat|0.1|0.2 5e6|1e3")).unwrap();
+    let s = syrope.line_types[0].syrope.as_ref().unwrap();
+    assert_eq!(
+        (s.file.as_str(), s.alpha, s.beta, s.ba, s.ba_dynamic),
+        ("owc.dat", 0.1, 0.2, 5e6, 1e3)
+    );
+    let e = error(&with("1e8 -0.8", "SYROPE:owc.dat|0.1 -0.8"));
+    assert!(e.message.contains("3 bar-separated values"), "{e}");
 }
 
 #[test]
