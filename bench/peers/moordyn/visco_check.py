@@ -26,7 +26,7 @@ md_syrope deck and MoorDyn's three test decks (tests/Mooring/syrope:
 linear, quadratic and exponential working curves), one segment of
 polyester 1 m long, its coupled end driven 2 mm at 20 s for 300 s;
 MoorDyn at the decks' dtM (0.01 s), stancf with the Galerkin step of
-0.05 s, both from the static equilibrium (the decks' Tmean0 set to it:
+0.05 s, both from the segment at rest (the decks' Tmean0 set to its tension:
 MoorDyn starts its slow strain from Tmean0 and the stretch relaxes over
 five minutes); compared after 100 s. MoorDyn's test decks are taken
 from its repository's mirror (/work/.mirror, `fetch`). About 15 seconds.
@@ -187,14 +187,19 @@ def syrope_files(name, d):
 
 
 def start_at_rest(deck):
-    """Sets the deck's SYROPE IC Tmean0 to the tension of its static
-    equilibrium (stancf's static solve of the deck alone): MoorDyn starts
+    """Sets the deck's SYROPE IC Tmean0 to the tension of its segment held
+    straight at rest (stancf, a step from the reference shape): MoorDyn starts
     its slow strain from Tmean0 on the working curve of Tmax0, stancf at
     rest at its equilibrium, and the slow strain relaxes over
     (BA + BA_D) / (alpha + beta T), 5 minutes for these ropes, so both
     start from the same state."""
+    sc = os.path.join(os.path.dirname(deck), "rest.toml")
+    with open(sc, "w") as f:
+        f.write('title = "at rest"\n[system]\nmoordyn = "%s"\n[analysis]\ntype = "dynamic"\n'
+                'initial = "reference"\ntime_scheme = "galerkin"\ntime_step = %r\n'
+                'duration = %r\n' % (os.path.basename(deck), SYROPE_DT, SYROPE_DT))
     out = os.path.join(os.path.dirname(deck), "statics")
-    p = subprocess.run([race.STANCF, "run", deck, "--out", out, "--quiet"],
+    p = subprocess.run([race.STANCF, "run", sc, "--out", out, "--quiet"],
                        capture_output=True, text=True)
     if p.returncode != 0:
         sys.exit("stancf failed: " + p.stderr)
@@ -251,7 +256,6 @@ def syrope_stancf(deck):
     sc = os.path.join(os.path.dirname(deck), "run.toml")
     with open(sc, "w") as f:
         f.write(SCENARIO.replace('moordyn = "deck.txt"', 'moordyn = "%s"' % os.path.basename(deck))
-                .replace('initial = "reference"', 'initial = "static"')
                 .format(form="syrope", amplitude=SYROPE_AMPLITUDE, period=SYROPE_PERIOD,
                         dt=SYROPE_DT, duration=SYROPE_DURATION,
                         every=int(round(OUTPUT / SYROPE_DT))))

@@ -158,14 +158,18 @@ tmax0 = 1.302e6
 [system]
 gravity = [0.0, 0.0, 0.0]
 [analysis]
-type = "static"
+type = "dynamic"
+initial = "reference"
+time_scheme = "galerkin"
+time_step = 0.05
+duration = 0.5
 """
 
 
 def test_a_syrope_rope_at_rest_pulls_with_its_working_curve(tmp_path):
-    # docs/method.md §2.12: below Tmax0 the static law is the linear
-    # working curve of slope k1 through the original curve's point at
-    # Tmax0 (eps_max, Tmax0).
+    # docs/method.md §2.12: held straight at rest below Tmax0 it pulls
+    # with the linear working curve of slope k1 through the original
+    # curve's point at Tmax0 (eps_max, Tmax0).
     x = 1.0137912
     res = stancf.run(stancf.Scenario(SYROPE_ROPE.format(x=x)), out=tmp_path / "out")
     rows = np.genfromtxt(res.directory / "tensions.csv", delimiter=",", names=True, dtype=None,

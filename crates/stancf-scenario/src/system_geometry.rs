@@ -93,11 +93,14 @@ pub fn check_geometry(
             }
             let span = distance(sc.points[a].position, sc.points[b].position);
             // One line straight between two placed points is in
-            // equilibrium at any stretch: it runs, with a note
-            // ([`overstretched_notes`]; MoorDyn's own test decks stretch
-            // a line by 100 %).
+            // equilibrium at any stretch: a dynamic run from the reference
+            // shape runs it, with a note (`overstretch`; MoorDyn's own
+            // test decks stretch a line by 100 %). The static solve is
+            // refused it (its Newton iteration stalls on a straight line
+            // seeded without its tension: docs/method.md §2.11).
             let direct = last_line.is_some_and(|l| reach_is_direct(sc, l, a, b));
-            if (free || !direct) && span > (1.0 + MAX_SPAN_STRAIN) * length {
+            let runs_as_given = direct && !free && !statics_place_free_points;
+            if !runs_as_given && span > (1.0 + MAX_SPAN_STRAIN) * length {
                 let line = last_line.expect("a reached point has a line to it");
                 let line_key = sc.names.line(line, "length", "UnstrLen");
                 let keys = if free {
@@ -125,10 +128,16 @@ pub fn check_geometry(
                         Sig(length)
                     )
                 };
+                let reference = if direct && !free {
+                    " (a dynamic run from the reference shape, initial = \"reference\", takes \
+                     it as given)"
+                } else {
+                    ""
+                };
                 return Err(Failure::Input(format!(
                     "{file}: {}: points {} and {} are {} m apart{start} and {via}: spanning \
                      them would stretch the lines by {} %, beyond the {:.0} % of any mooring \
-                     material's breaking strain; lengthen the line or move its points",
+                     material's breaking strain; lengthen the line or move its points{reference}",
                     keys,
                     sc.points[a].id,
                     sc.points[b].id,

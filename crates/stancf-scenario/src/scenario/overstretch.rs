@@ -2,8 +2,9 @@
 //! stretch more than any mooring material can to span them: they run as
 //! given (one line between two held points is in equilibrium at any
 //! stretch; MoorDyn's own viscoelastic test stretches its segment
-//! 100 %), with a note (`system_geometry` refuses the paths through free
-//! points, which have no such equilibrium).
+//! 100 %) from the reference shape, with a note (`system_geometry`
+//! refuses the paths through free points, which have no such
+//! equilibrium, and the static solve of such a line, which stalls).
 
 use super::SystemScenario;
 use stancf::error::Sig;
@@ -19,6 +20,11 @@ pub const MAX_SPAN_STRAIN: f64 = 0.2;
 /// tension beyond any mooring material's breaking strength.
 pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
     let placed = |p: usize| sc.point_is_fixed(p) || sc.point_is_coupled(p);
+    let statics = sc.analysis.kind == super::AnalysisKind::Static
+        || sc.initial == super::InitialShape::Static;
+    if statics {
+        return Vec::new(); // refused by `system_geometry`
+    }
     sc.lines
         .iter()
         .enumerate()

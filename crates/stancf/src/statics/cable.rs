@@ -123,20 +123,11 @@ impl CableStatics {
     }
 
     /// Weights of the unknowns in the increment norm: each coordinate's
-    /// length scale over the cable length; for the multipliers (the
-    /// constraints' forces), 1 / EA, so that a change of the force is
-    /// weighed as the strain it would make (docs/method.md §6.9). (They
-    /// took their rows' weight, 1, before: a straight line seeded
-    /// without its tension, whose end forces must grow from 0 to EA eps,
-    /// then crept to it by the trust radius, 0.2 N per iteration.)
+    /// length scale over the cable length (0 for multipliers).
     pub fn unknown_weights(&self) -> Vec<f64> {
         let len = self.model.cable.length;
         let dpn = self.layout.dpn;
-        let ea = match self.model.axial_curve() {
-            Some(c) => c.largest_slope(),
-            None => self.model.material.youngs_modulus * self.model.material.area,
-        };
-        let mut w = vec![1.0 / ea; self.layout.size()];
+        let mut w = vec![0.0; self.layout.size()];
         for g in 0..self.model.dofs() {
             if let Some(u) = self.layout.unknown_at(0, g) {
                 w[u] = self.model.coordinate_length_scale(g / dpn, g % dpn) / len;
