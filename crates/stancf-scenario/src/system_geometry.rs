@@ -128,12 +128,7 @@ pub fn check_geometry(
                         Sig(length)
                     )
                 };
-                let reference = if direct && !free {
-                    " (a dynamic run from the reference shape, initial = \"reference\", takes \
-                     it as given)"
-                } else {
-                    ""
-                };
+                let reference = reference_hint(direct && !free);
                 return Err(Failure::Input(format!(
                     "{file}: {}: points {} and {} are {} m apart{start} and {via}: spanning \
                      them would stretch the lines by {} %, beyond the {:.0} % of any mooring \
@@ -185,6 +180,16 @@ fn direct_reach(
         }
     }
     best
+}
+
+/// The way a line straight between two placed points runs however far
+/// it is stretched (a dynamic run from the reference shape), or nothing.
+fn reference_hint(direct: bool) -> &'static str {
+    if direct {
+        " (a dynamic run from the reference shape, initial = \"reference\", takes it as given)"
+    } else {
+        ""
+    }
 }
 
 /// Whether `line` alone joins points `a` and `b`.
