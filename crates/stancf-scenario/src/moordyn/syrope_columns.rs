@@ -57,14 +57,9 @@ pub(crate) fn syrope_columns(row: &Row, name: &str) -> Result<Option<SyropeColum
         return Err(err(format!("BA is \"{}\": at most BA|BA_D", row.words[4])));
     }
     let ba_dynamic = match ba.get(1) {
-        Some(w) => value(w, "BA_D")?,
+        Some(w) => super::visco_columns::dynamic_damping(value(w, "BA_D")?).map_err(err)?,
         None => 0.0,
     };
-    if ba_dynamic < 0.0 {
-        return Err(err(format!(
-            "BA_D is {ba_dynamic}; the dynamic damping cannot be a ratio (MoorDyn refuses it too)"
-        )));
-    }
     Ok(Some(SyropeColumns {
         file: ea[0][7..].to_string(),
         alpha: value(ea[1], "alphaMBL")?,

@@ -20,6 +20,16 @@ pub(crate) struct ViscoColumns {
     pub ba_dynamic: f64,
 }
 
+/// BA_D, which must not be negative: MoorDyn refuses a ratio there.
+pub(crate) fn dynamic_damping(ba_dynamic: f64) -> Result<f64, String> {
+    if ba_dynamic < 0.0 {
+        return Err(format!(
+            "BA_D is {ba_dynamic}; the dynamic damping cannot be a ratio (MoorDyn refuses it too)"
+        ));
+    }
+    Ok(ba_dynamic)
+}
+
 /// The viscoelastic forms of row `row` (line type `name`), None when EA
 /// has one value (or is a Syrope form, refused elsewhere).
 pub(crate) fn viscoelastic(row: &Row, name: &str) -> Result<Option<ViscoColumns>, DeckError> {
@@ -74,14 +84,9 @@ pub(crate) fn viscoelastic(row: &Row, name: &str) -> Result<Option<ViscoColumns>
         }
     };
     let ba_dynamic = match ba.get(1) {
-        Some(w) => value(w, "BA_D")?,
+        Some(w) => dynamic_damping(value(w, "BA_D")?).map_err(err)?,
         None => 0.0,
     };
-    if ba_dynamic < 0.0 {
-        return Err(err(format!(
-            "BA_D is {ba_dynamic}; the dynamic damping cannot be a ratio (MoorDyn refuses it too)"
-        )));
-    }
     Ok(Some(ViscoColumns {
         ea: static_ea,
         dynamic,
