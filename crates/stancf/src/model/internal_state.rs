@@ -1,8 +1,10 @@
-//! The internal state of a line's material (docs/method.md §2.11): a
-//! viscoelastic line carries the strain eps1 of its static spring at every
-//! point of the axial rule of every element, [`State::internal`], element
-//! after element. This file gives a model its law and the state's layout,
-//! its rest value and the energy it stores.
+//! The internal state of a line's material (docs/method.md §2.11-§2.12):
+//! a viscoelastic line carries the strain eps1 of its static spring at
+//! every point of the axial rule of every element (a Syrope line also its
+//! largest mean tension and the work done on its law),
+//! [`State::internal`], element after element. This file gives a model
+//! its law and the state's layout, its rest value and the energy it
+//! stores.
 
 use super::{coordinate, gather, Mesh, Model, State, SLOT_R};
 use crate::element::Viscoelastic;
@@ -32,15 +34,7 @@ impl Model {
             let points = curves.static_curve(*tmax0);
             let curve = crate::element::AxialCurve::new(&points, "syrope")?;
             self = self.with_axial_curve(std::sync::Arc::new(curve))?;
-            match &mut self.mesh {
-                Mesh::Sac2(els) => els
-                    .iter_mut()
-                    .for_each(|e| e.section.visco = Some(law.clone())),
-                Mesh::Sac3(els) => els
-                    .iter_mut()
-                    .for_each(|e| e.section.visco = Some(law.clone())),
-            }
-            return Ok(self);
+            return Ok(self.with_law(&law));
         }
         if self.axial_curve().is_some() {
             return Err(ModelError::invalid(
@@ -56,6 +50,11 @@ impl Model {
                  spring, BA_D beside the dynamic one); the material's axial damping must be 0",
             ));
         }
+        Ok(self.with_law(&law))
+    }
+
+    /// Every element of the model with the law `law`.
+    fn with_law(mut self, law: &Viscoelastic) -> Self {
         match &mut self.mesh {
             Mesh::Sac2(els) => els
                 .iter_mut()
@@ -64,7 +63,7 @@ impl Model {
                 .iter_mut()
                 .for_each(|e| e.section.visco = Some(law.clone())),
         }
-        Ok(self)
+        self
     }
 
     /// The line's viscoelastic law, if it has one.
