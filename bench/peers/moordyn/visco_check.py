@@ -72,32 +72,60 @@ AMPLITUDE, PERIOD, DURATION, COMPARE_FROM = 0.05, 10.0, 300.0, 150.0
 DTM, DT, OUTPUT = 1e-3, 0.01, 0.1
 
 
-def motion(t):
-    return 2.0 + AMPLITUDE * math.sin(2.0 * math.pi * t / PERIOD)
+def drive_moordyn(deck, x0, amplitude, period, duration, dtm):
+    """MoorDyn 2.7 on `deck` (opened from its folder, as its files are
+    named), its coupled point at `x0` moved along x by amplitude
+    sin(2 pi t / period), one MoorDyn_Step per dtm with the secant rate (as
+    race.py drives it): the times and the coupled point's force every
+    OUTPUT s."""
+    import moordyn
+
+    def x(t):
+        return x0[0] + amplitude * math.sin(2.0 * math.pi * t / period)
+
+    per_output = int(round(OUTPUT / dtm))
+    times, tensions = [], []
+    cwd = os.getcwd()
+    os.chdir(os.path.dirname(deck))
+    try:
+        with race.Quiet():
+            s = moordyn.Create(os.path.basename(deck))
+            moordyn.SetVerbosity(s, moordyn.LEVEL_NONE)
+            moordyn.Init(s, list(x0), [0.0, 0.0, 0.0])
+            for k in range(int(round(duration / OUTPUT))):
+                for j in range(per_output):
+                    ta = (k * per_output + j) * dtm
+                    xa, xb = x(ta), x(ta + dtm)
+                    f = moordyn.Step(s, [xa, x0[1], x0[2]], [(xb - xa) / dtm, 0.0, 0.0], ta, dtm)
+                times.append((k + 1) * OUTPUT)
+                tensions.append(float(np.linalg.norm(f)))
+            moordyn.Close(s)
+    finally:
+        os.chdir(cwd)
+    return np.array(times), np.array(tensions)
+
+
+def stancf_tensions(scenario, end):
+    """stancf on the scenario file `scenario` (results beside it): the
+    times and tensions of line 1's end `end` ("A" or "B")."""
+    out = os.path.join(os.path.dirname(scenario), "out-" + os.path.basename(scenario))
+    p = subprocess.run([race.STANCF, "run", scenario, "--out", out, "--quiet"],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("stancf failed: " + p.stderr)
+    rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
+                         dtype=None, encoding=None)
+    at = rows[rows["end"] == end]
+    return np.array(at["t"], dtype=float), np.array(at["tension"], dtype=float)
 
 
 def run_moordyn(form):
-    import moordyn
     ea, ba = FORMS[form]
-    per_output = int(round(OUTPUT / DTM))
-    times, tensions = [], []
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "deck.txt")
         with open(path, "w") as f:
             f.write(DECK.format(form=form, ea=ea, ba=ba, dtm=DTM))
-        with race.Quiet():
-            s = moordyn.Create(path)
-            moordyn.SetVerbosity(s, moordyn.LEVEL_NONE)
-            moordyn.Init(s, [2.0, 0.0, 0.0], [0.0, 0.0, 0.0])
-            for k in range(int(round(DURATION / OUTPUT))):
-                for j in range(per_output):
-                    ta = (k * per_output + j) * DTM
-                    xa, xb = motion(ta), motion(ta + DTM)
-                    f = moordyn.Step(s, [xa, 0.0, 0.0], [(xb - xa) / DTM, 0.0, 0.0], ta, DTM)
-                times.append((k + 1) * OUTPUT)
-                tensions.append(float(np.linalg.norm(f)))
-            moordyn.Close(s)
-    return np.array(times), np.array(tensions)
+        return drive_moordyn(path, [2.0, 0.0, 0.0], AMPLITUDE, PERIOD, DURATION, DTM)
 
 
 SCENARIO = """title = "viscoelastic segment: {form}"
@@ -129,20 +157,12 @@ def run_stancf(form):
         with open(sc, "w") as f:
             f.write(SCENARIO.format(form=form, amplitude=AMPLITUDE, period=PERIOD, dt=DT,
                                     duration=DURATION, every=int(round(OUTPUT / DT))))
-        out = os.path.join(d, "out")
-        p = subprocess.run([race.STANCF, "run", sc, "--out", out, "--quiet"],
-                           capture_output=True, text=True)
-        if p.returncode != 0:
-            sys.exit("stancf failed: " + p.stderr)
-        rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
-                             dtype=None, encoding=None)
-        b = rows[rows["end"] == "B"]
-        return np.array(b["t"], dtype=float), np.array(b["tension"], dtype=float)
+        return stancf_tensions(sc, "B")
 
 
 SYROPE_DECKS = {
-    # name: (the deck's folder in a copy of MoorDyn's or OpenFAST's suite,
-    # the files beside it, the coupled point's x)
+    # name: the suite it comes from (OpenFAST's r-test beside the
+    # repository, or MoorDyn's tests from its mirror)
     "md_syrope": "openfast",
     "linear_wc": "moordyn",
     "quadratic_wc": "moordyn",
@@ -198,14 +218,7 @@ def start_at_rest(deck):
         f.write('title = "at rest"\n[system]\nmoordyn = "%s"\n[analysis]\ntype = "dynamic"\n'
                 'initial = "reference"\ntime_scheme = "galerkin"\ntime_step = %r\n'
                 'duration = %r\n' % (os.path.basename(deck), SYROPE_DT, SYROPE_DT))
-    out = os.path.join(os.path.dirname(deck), "statics")
-    p = subprocess.run([race.STANCF, "run", sc, "--out", out, "--quiet"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit("stancf failed: " + p.stderr)
-    rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
-                         dtype=None, encoding=None)
-    tension = float(rows["tension"][0])
+    tension = float(stancf_tensions(sc, "A")[1][0])
     with open(deck) as f:
         lines = f.read().split("\n")
     inside = False
@@ -228,28 +241,7 @@ def start_at_rest(deck):
 
 
 def syrope_moordyn(deck, x0):
-    import moordyn
-    cwd = os.getcwd()
-    os.chdir(os.path.dirname(deck))
-    try:
-        with race.Quiet():
-            s = moordyn.Create(os.path.basename(deck))
-            moordyn.SetVerbosity(s, moordyn.LEVEL_NONE)
-            moordyn.Init(s, list(x0), [0.0, 0.0, 0.0])
-            dtm, times, tensions = 0.01, [], []
-            per_output = int(round(OUTPUT / dtm))
-            for k in range(int(round(SYROPE_DURATION / OUTPUT))):
-                for j in range(per_output):
-                    ta = (k * per_output + j) * dtm
-                    xa = x0[0] + SYROPE_AMPLITUDE * math.sin(2 * math.pi * ta / SYROPE_PERIOD)
-                    xb = x0[0] + SYROPE_AMPLITUDE * math.sin(2 * math.pi * (ta + dtm) / SYROPE_PERIOD)
-                    f = moordyn.Step(s, [xa, x0[1], x0[2]], [(xb - xa) / dtm, 0.0, 0.0], ta, dtm)
-                times.append((k + 1) * OUTPUT)
-                tensions.append(float(np.linalg.norm(f)))
-            moordyn.Close(s)
-    finally:
-        os.chdir(cwd)
-    return np.array(times), np.array(tensions)
+    return drive_moordyn(deck, x0, SYROPE_AMPLITUDE, SYROPE_PERIOD, SYROPE_DURATION, 0.01)
 
 
 def syrope_stancf(deck):
@@ -259,15 +251,7 @@ def syrope_stancf(deck):
                 .format(form="syrope", amplitude=SYROPE_AMPLITUDE, period=SYROPE_PERIOD,
                         dt=SYROPE_DT, duration=SYROPE_DURATION,
                         every=int(round(OUTPUT / SYROPE_DT))))
-    out = os.path.join(os.path.dirname(deck), "out")
-    p = subprocess.run([race.STANCF, "run", sc, "--out", out, "--quiet"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit("stancf failed: " + p.stderr)
-    rows = np.genfromtxt(os.path.join(out, "tensions.csv"), delimiter=",", names=True,
-                         dtype=None, encoding=None)
-    a = rows[rows["end"] == "A"]
-    return np.array(a["t"], dtype=float), np.array(a["tension"], dtype=float)
+    return stancf_tensions(sc, "A")
 
 
 def main():

@@ -167,6 +167,13 @@ impl Syrope {
 
     /// WC(Tmax) (V8): its total strains, tensions and slow strains.
     pub fn working_curve(&self, tmax: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let [x, y, z] = self.working_points(tmax);
+        (x.to_vec(), y.to_vec(), z.to_vec())
+    }
+
+    /// WC(Tmax) on the stack (the spring evaluates it at every collocation
+    /// node of every Newton iteration: no allocation there).
+    fn working_points(&self, tmax: f64) -> [[f64; WORKING_CURVE_POINTS]; 3] {
         let eps_max = interpolate(&self.y, &self.x, tmax).0;
         let x0 = self.x[0];
         let eps_min = if self.form == WorkingCurveForm::Linear && self.k1 >= 1.0 {
@@ -175,9 +182,7 @@ impl Syrope {
             x0 + self.k1 * (eps_max - x0)
         };
         let n = WORKING_CURVE_POINTS;
-        let mut x = Vec::with_capacity(n);
-        let mut y = Vec::with_capacity(n);
-        let mut z = Vec::with_capacity(n);
+        let mut out = [[0.0; WORKING_CURVE_POINTS]; 3];
         for i in 0..n {
             let xi = i as f64 / (n - 1) as f64;
             let xs = eps_min + (eps_max - eps_min) * xi;
@@ -188,11 +193,11 @@ impl Syrope {
                     tmax * (1.0 - (self.k2 * xi).exp()) / (1.0 - self.k2.exp())
                 }
             };
-            x.push(xs);
-            y.push(ys);
-            z.push(slow_strain(xs, ys, self.alpha, self.beta));
+            out[0][i] = xs;
+            out[1][i] = ys;
+            out[2][i] = slow_strain(xs, ys, self.alpha, self.beta);
         }
-        (x, y, z)
+        out
     }
 
     /// The spring at slow strain `z` under the history `tmax` (the
@@ -204,8 +209,8 @@ impl Syrope {
         let (xs, ys, zs) = if z >= z_top {
             (&self.x[..], &self.y[..], &self.z[..])
         } else {
-            curve = self.working_curve(tmax);
-            (&curve.0[..], &curve.1[..], &curve.2[..])
+            curve = self.working_points(tmax);
+            (&curve[0][..], &curve[1][..], &curve[2][..])
         };
         let (tension, d_tension) = interpolate(zs, ys, z);
         let (strain_at_rest, d_strain_at_rest) = interpolate(ys, xs, tension);

@@ -218,27 +218,7 @@ fn step_jacobian_with_axial_damping_matches_finite_differences() {
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for strain in [AxialStrain::Green, AxialStrain::Engineering] {
             let model = |constrained: bool| {
-                let cons = if constrained {
-                    vec![
-                        Constraint {
-                            node: 0,
-                            kind: ConstraintKind::Clamped {
-                                fix_curvature: false,
-                            },
-                        },
-                        Constraint {
-                            node: 2,
-                            kind: ConstraintKind::Prescribed {
-                                velocity: [0.1, 0.0, -0.2],
-                                amplitude: [0.0, 0.02, 0.01],
-                                frequency: 3.0,
-                                phase: 0.4,
-                            },
-                        },
-                    ]
-                } else {
-                    vec![]
-                };
+                let cons = clamped_and_driven(constrained);
                 damped_model(kind, strain, cons)
             };
             let schemes = [

@@ -168,7 +168,7 @@ fn driven_line(
     period: f64,
 ) -> (stancf::Model, stancf::State) {
     use stancf::motion::{CoupledMotion, Oscillation};
-    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Material, ModelOptions};
+    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Material};
     let material = Material {
         youngs_modulus: 1e9,
         density: 10.0,
@@ -176,13 +176,7 @@ fn driven_line(
         second_moment: 1e-15,
         axial_damping: 0.0,
     };
-    let options = ModelOptions {
-        measures: Measures {
-            axial_strain: AxialStrain::Engineering,
-            ..Measures::default()
-        },
-        ..ModelOptions::default()
-    };
+    let options = engineering_options();
     let b = [1.0 + prestrain, 0.0, 0.0];
     let cable = Cable::straight(1.0, 4, ElementType::Sac2);
     let mut model = stancf::Model::new(cable, material, options, vec![]).unwrap();
@@ -313,7 +307,7 @@ fn a_driven_viscoelastic_lines_energy_balance_closes_at_second_order() {
 fn a_viscoelastic_lines_step_jacobian_is_the_finite_differences_of_its_rows() {
     use crate::common::step_checks::check_schemes_and_routes;
     use stancf::assembly::Scheme;
-    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Load, Material, ModelOptions};
+    use stancf::{Cable, ElementType, Load, Material};
     let mut rng = Rng(0x5eed_0bad_cafe_0017);
     for kind in [ElementType::Sac2, ElementType::Sac3] {
         for law in laws() {
@@ -325,37 +319,11 @@ fn a_viscoelastic_lines_step_jacobian_is_the_finite_differences_of_its_rows() {
                     second_moment: 1e-4,
                     axial_damping: 0.0,
                 };
-                let options = ModelOptions {
-                    measures: Measures {
-                        axial_strain: AxialStrain::Engineering,
-                        ..Measures::default()
-                    },
-                    ..ModelOptions::default()
-                };
+                let options = engineering_options();
                 let gravity = vec![Load::Gravity {
                     acceleration: [0.0, -9.81, 0.0],
                 }];
-                let cons = if constrained {
-                    vec![
-                        Constraint {
-                            node: 0,
-                            kind: ConstraintKind::Clamped {
-                                fix_curvature: false,
-                            },
-                        },
-                        Constraint {
-                            node: 2,
-                            kind: ConstraintKind::Prescribed {
-                                velocity: [0.1, 0.0, -0.2],
-                                amplitude: [0.0, 0.02, 0.01],
-                                frequency: 3.0,
-                                phase: 0.4,
-                            },
-                        },
-                    ]
-                } else {
-                    vec![]
-                };
+                let cons = clamped_and_driven(constrained);
                 stancf::Model::new(Cable::straight(0.9, 3, kind), material, options, gravity)
                     .unwrap()
                     .with_viscoelastic(law.clone())
@@ -483,7 +451,7 @@ fn syrope_rope() -> Viscoelastic {
 #[test]
 fn a_syrope_rope_loaded_past_its_history_unloads_along_a_new_working_curve() {
     use stancf::motion::{CoupledMotion, MotionTable};
-    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Material, ModelOptions};
+    use stancf::{Cable, Constraint, ConstraintKind, ElementType, Material};
     let law = syrope_rope();
     let DynamicStiffness::Syrope { curves, tmax0 } = &law.dynamic else {
         unreachable!()
@@ -505,13 +473,7 @@ fn a_syrope_rope_loaded_past_its_history_unloads_along_a_new_working_curve() {
         second_moment: 1e-12,
         axial_damping: 0.0,
     };
-    let options = ModelOptions {
-        measures: Measures {
-            axial_strain: AxialStrain::Engineering,
-            ..Measures::default()
-        },
-        ..ModelOptions::default()
-    };
+    let options = engineering_options();
     let cable = Cable::straight(1.0, 2, ElementType::Sac2);
     let model = stancf::Model::new(cable, material, options, vec![])
         .unwrap()

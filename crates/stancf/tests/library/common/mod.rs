@@ -536,3 +536,41 @@ pub fn spun_and_drifting(model: &stancf::Model, spin: [f64; 3], drift: [f64; 3])
     }
     state
 }
+
+/// The constraints of the step Jacobian checks with `constrained`: node 0
+/// clamped, node 2 driven (a drift and a sine); none otherwise.
+pub fn clamped_and_driven(constrained: bool) -> Vec<stancf::Constraint> {
+    use stancf::{Constraint, ConstraintKind};
+    if !constrained {
+        return vec![];
+    }
+    vec![
+        Constraint {
+            node: 0,
+            kind: ConstraintKind::Clamped {
+                fix_curvature: false,
+            },
+        },
+        Constraint {
+            node: 2,
+            kind: ConstraintKind::Prescribed {
+                velocity: [0.1, 0.0, -0.2],
+                amplitude: [0.0, 0.02, 0.01],
+                frequency: 3.0,
+                phase: 0.4,
+            },
+        },
+    ]
+}
+
+/// Model options with the engineering strain (MoorDyn's), the rest the
+/// defaults.
+pub fn engineering_options() -> stancf::ModelOptions {
+    stancf::ModelOptions {
+        measures: Measures {
+            axial_strain: AxialStrain::Engineering,
+            ..Measures::default()
+        },
+        ..stancf::ModelOptions::default()
+    }
+}
