@@ -89,7 +89,13 @@ pub struct PySimulation {
     line_ids: Vec<i64>,
     point_ids: Vec<i64>,
     body_ids: Vec<i64>,
+    failure_ids: Vec<i64>,
 }
+
+/// A line failure that happened (docs/method.md §11.16): its id, the
+/// time, "time" or "tension", the tension that set it off, the released
+/// lines' ids and the new point's id.
+type Released = (i64, f64, &'static str, Option<f64>, Vec<i64>, i64);
 
 /// What a call of a Simulation changes: the handle and the forces of its
 /// last `step_to`.
@@ -157,7 +163,24 @@ impl PySimulation {
             line_ids: opened.line_ids,
             point_ids: opened.point_ids,
             body_ids: opened.body_ids,
+            failure_ids: opened.failure_ids,
         })
+    }
+
+    /// The line failures that happened so far, in order (see
+    /// [`Released`]).
+    #[getter]
+    fn releases(&self) -> PyResult<Vec<Released>> {
+        let inner = self.inner()?;
+        let events = stancf_scenario::scenario::failure_events(
+            inner.handle.releases(),
+            &self.failure_ids,
+            (&self.line_ids, &self.point_ids),
+        );
+        Ok(events
+            .into_iter()
+            .map(|e| (e.failure, e.t, e.trigger, e.tension, e.lines, e.new_point))
+            .collect())
     }
 
     /// 6 per coupled body (3 per body pinned to the host, MoorDyn's

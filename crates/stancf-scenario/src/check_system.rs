@@ -23,7 +23,7 @@ pub struct Prepared {
 }
 
 /// The dynamic simulation of `system` from the lines' `states` with the
-/// scenario's step settings and step halvings; the lines attached to a
+/// scenario's step settings, step halvings and line failures; the lines attached to a
 /// body that starts moving move with it
 /// ([`stancf::system::System::start_lines_with_bodies`]).
 pub fn simulation(
@@ -34,6 +34,7 @@ pub fn simulation(
     system.start_lines_with_bodies(&mut states);
     let mut sim = SystemSimulation::new(system, states, sc.analysis.step_settings())?;
     sim.set_step_halvings(sc.analysis.step_halvings)?;
+    sim.set_failures(sc.failures.iter().map(|f| f.to_library()).collect())?;
     Ok(sim)
 }
 
@@ -170,6 +171,14 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     }
     for (k, v) in point_words(sc) {
         line(&k, v);
+    }
+    for f in &sc.failures {
+        let text = f.describe(sc);
+        let (k, v) = text.split_once(": ").expect("failure <id>: ...");
+        line(
+            k,
+            format!("{v}, at a new free point of no mass (docs/method.md §11.16)"),
+        );
     }
     if let Some(w) = &sc.water {
         for (k, v) in water_words(w) {

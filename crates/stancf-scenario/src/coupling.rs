@@ -27,6 +27,21 @@ pub struct Coupled {
     /// in the order of the system's bodies: index b here is body b of
     /// [`CoupledSystem::body_stiffness`].
     pub body_ids: Vec<i64>,
+    /// The line failures' ids (docs/method.md §11.16), in the scenario's
+    /// order.
+    pub failure_ids: Vec<i64>,
+}
+
+impl Coupled {
+    /// The line failures that happened so far, by ids (the new points
+    /// numbered as a run numbers them in points.csv).
+    pub fn releases(&self) -> Vec<crate::scenario::FailureEvent> {
+        crate::scenario::failure_events(
+            self.handle.releases(),
+            &self.failure_ids,
+            (&self.line_ids, &self.point_ids),
+        )
+    }
 }
 
 /// Reads the scenario or deck at `path` and builds its coupled system,
@@ -135,13 +150,17 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     // are numbered in order; a TOML file's `[[bodies]]` may not be).
     let mut bodies = handle.coupled_bodies();
     bodies.sort_by_key(|&b| sc.bodies[b].id);
-    let handle = handle.with_body_order(bodies.clone()).map_err(input)?;
+    let handle = handle
+        .with_body_order(bodies.clone())
+        .and_then(|h| h.with_failures(sc.failures.iter().map(|f| f.to_library()).collect()))
+        .map_err(input)?;
     Ok(Coupled {
         coupled_body_ids: bodies.iter().map(|&b| sc.bodies[b].id).collect(),
         coupled_ids: order.iter().map(|&p| sc.points[p].id).collect(),
         line_ids: sc.lines.iter().map(|l| l.id).collect(),
         point_ids: sc.points.iter().map(|p| p.id).collect(),
         body_ids: sc.bodies.iter().map(|b| b.id).collect(),
+        failure_ids: sc.failures.iter().map(|f| f.id).collect(),
         handle: handle
             .with_order(order)
             .and_then(|h| h.with_step_halvings(sc.analysis.step_halvings))

@@ -29,6 +29,7 @@ mod grading;
 mod hostile_inputs;
 mod hostile_scenarios;
 mod joints;
+mod line_failures;
 mod mesh_sections;
 mod moordyn_out;
 mod motion_files;

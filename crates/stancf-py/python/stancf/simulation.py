@@ -196,6 +196,16 @@ class Simulation:
         return list(self._sim.body_ids)
 
     @property
+    def releases(self):
+        """The line failures that happened so far (docs/method.md §11.16),
+        in order: each a dict of ``failure`` (its id), ``t`` (s),
+        ``trigger`` ("time" or "tension"), ``tension`` (N, or None),
+        ``lines`` (the released lines' ids) and ``new_point`` (the id of
+        the free point the released ends go on at)."""
+        keys = ("failure", "t", "trigger", "tension", "lines", "new_point")
+        return [dict(zip(keys, r)) for r in self._sim.releases]
+
+    @property
     def time(self):
         return self._sim.time
 

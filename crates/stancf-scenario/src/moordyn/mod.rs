@@ -35,6 +35,7 @@ mod channel_units;
 mod channels;
 mod ends;
 pub mod external_loads;
+pub mod failures;
 mod layout;
 mod options;
 mod rods;
@@ -83,6 +84,8 @@ pub struct Deck {
     pub external_loads: Vec<external_loads::DeckExternalLoad>,
     /// `SYROPE IC` rows (docs/method.md §2.12).
     pub syrope_ic: Vec<syrope_columns::SyropeIc>,
+    /// MoorDyn-F's `FAILURE` rows (docs/method.md §11.16).
+    pub failures: Vec<failures::DeckFailure>,
 }
 
 /// A row of `LINE TYPES`: `TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx
@@ -379,6 +382,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
     let mut raw_outputs = Vec::new();
     let mut external_rows = None;
     let mut syrope_ic = Vec::new();
+    let mut failure_rows = None;
     for section in &layout.sections {
         use layout::SectionKind as K;
         match section.kind {
@@ -394,6 +398,8 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
             // Read once the points and bodies are.
             K::ExternalLoads => external_rows = Some(section),
             K::SyropeIc => syrope_ic = syrope_columns::syrope_ic(section)?,
+            // Read once the lines are.
+            K::Failure => failure_rows = Some(section),
             other => sections::refuse_rows(section, other)?,
         }
     }
@@ -415,6 +421,10 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         ));
     }
     rods::check_rods(&rods, bodies.len(), &lines)?;
+    let failures = match failure_rows {
+        Some(section) => failures::failures(section, (points.len(), rods.len()), &lines)?,
+        None => Vec::new(),
+    };
     let outputs = channels::resolve(raw_outputs, &lines, &points, (&bodies, &rods))?;
     Ok(Deck {
         title: layout.title,
@@ -428,6 +438,7 @@ pub fn parse(text: &str) -> Result<Deck, DeckError> {
         outputs,
         external_loads,
         syrope_ic,
+        failures,
     })
 }
 

@@ -531,7 +531,6 @@ pub(crate) fn refuse_rows(s: &Section, kind: SectionKind) -> Result<(), DeckErro
         return Ok(());
     };
     let why = match kind {
-        SectionKind::Failure => "line failures are not supported",
         SectionKind::Control => "line length control is not supported",
         SectionKind::SyropeIc => "the Syrope polyester model is not supported",
         _ => "this section is not supported",

@@ -30,14 +30,15 @@ pub(super) fn deck_system(
         (!raw.rods.is_empty(), "rods"),
         (!raw.points.is_empty(), "points"),
         (!raw.lines.is_empty(), "lines"),
+        (!raw.failures.is_empty(), "failures"),
     ]
     .into_iter()
     .find_map(|(present, key)| present.then_some(key))
     {
         return Err(ctx.err(
             key,
-            "the MoorDyn deck of system.moordyn gives the line types, points, lines \
-             and gravity; the scenario adds motions, [[mesh]] (the lines' meshes), \
+            "the MoorDyn deck of system.moordyn gives the line types, points, lines, \
+             gravity and failures (its FAILURE section); the scenario adds motions, [[mesh]] (the lines' meshes), \
              [water] (what the deck does not give), [analysis] and [output]",
         ));
     }

@@ -125,7 +125,18 @@ pub(super) fn deck_scenario(
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
+    let lines: Vec<SystemLine> = deck
+        .lines
+        .iter()
+        .zip(ends)
+        .map(deck_line)
+        .zip(&tmax0)
+        .map(|(l, t)| SystemLine { tmax0: *t, ..l })
+        .collect();
+    let (failures, failure_notes) = super::failures::deck_failures(deck, file, &points, &lines);
+    notes.extend(failure_notes);
     let mut sc = SystemScenario {
+        failures,
         title,
         line_types: deck
             .line_types
@@ -136,14 +147,7 @@ pub(super) fn deck_scenario(
         points,
         bodies,
         rods,
-        lines: deck
-            .lines
-            .iter()
-            .zip(ends)
-            .map(deck_line)
-            .zip(&tmax0)
-            .map(|(l, t)| SystemLine { tmax0: *t, ..l })
-            .collect(),
+        lines,
         gravity: [0.0, 0.0, -g],
         analysis,
         measures,

@@ -54,6 +54,9 @@ pub(super) struct RawScenario {
     pub(super) water: Option<RawWater>,
     /// A FAST.Farm deck's turbines (docs/interface.md, "MoorDyn decks").
     pub(super) farm: Option<RawFarm>,
+    /// Line failures (docs/interface.md, "Line failures").
+    #[serde(default)]
+    pub(super) failures: Vec<super::failures::RawFailure>,
 }
 
 impl RawScenario {
@@ -69,6 +72,7 @@ impl RawScenario {
             || !self.motions.is_empty()
             || !self.mesh.is_empty()
             || self.farm.is_some()
+            || !self.failures.is_empty()
     }
 }
 

@@ -85,7 +85,9 @@ pub(super) fn system_scenario(
     super::output::stiffness_to_write(ctx, &output_files, free_bodies, statics)?;
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
+    let failures = super::failures::failures(ctx, &raw.failures, &points, &lines)?;
     let mut sc = SystemScenario {
+        failures,
         title,
         line_types,
         bodies,

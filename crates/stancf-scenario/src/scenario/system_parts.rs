@@ -199,6 +199,8 @@ pub struct SystemScenario {
     pub moordyn_out: Option<Box<MoorDynOutFile>>,
     /// Where its values were written (TOML keys or a deck's lines).
     pub names: super::names::Names,
+    /// Line failures (docs/method.md §11.16).
+    pub failures: Vec<super::failures::SystemFailure>,
 }
 
 /// MoorDyn's output files a deck asks for: `<deck>.out` of its OUTPUTS

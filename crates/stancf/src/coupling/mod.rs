@@ -124,6 +124,9 @@ pub struct CoupledSystem {
     identity: Identity,
     /// The most internal steps one call may take.
     max_interval_steps: usize,
+    /// The line failures the simulation starts with (docs/method.md
+    /// §11.16).
+    failures: Vec<crate::system::LineFailure>,
     running: Option<Running>,
 }
 
@@ -172,8 +175,29 @@ impl CoupledSystem {
             layout,
             array_points,
             max_interval_steps: MAX_INTERVAL_STEPS,
+            failures: Vec::new(),
             running: None,
         })
+    }
+
+    /// The handle whose simulation lets go of line ends as `failures`
+    /// say (docs/method.md §11.16; checked here, keys `failures[i]`): the
+    /// releases happen inside [`Self::step_to`]'s steps; the coupled
+    /// points stay what they are.
+    pub fn with_failures(
+        mut self,
+        failures: Vec<crate::system::LineFailure>,
+    ) -> Result<Self, ModelError> {
+        let models: Vec<&crate::Model> = self.system.lines().iter().map(|l| &l.model).collect();
+        crate::system::check_failures(&self.system, &models, &failures)?;
+        self.failures = failures;
+        Ok(self)
+    }
+
+    /// The line failures that happened so far (none before
+    /// [`Self::initialize`]).
+    pub fn releases(&self) -> &[crate::system::Release] {
+        self.running.as_ref().map_or(&[], |r| r.sim.releases())
     }
 
     /// The handle whose steps that Newton fails are taken again in halves,
@@ -403,7 +427,8 @@ impl CoupledSystem {
         }
         let stiffness = stiffness::body_stiffness(&mut statics, &self.layout, x);
         let point_stiffness = stiffness::point_stiffness(&statics, &self.layout, &self.coupled);
-        let sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
+        let mut sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
+        sim.set_failures(self.failures.clone())?;
         self.running = Some(Running {
             sim,
             position,

@@ -33,6 +33,44 @@ impl Simulation {
         Self::build(model, initial, settings, own_solver)
     }
 
+    /// This line of a system rebuilt on `model` (the same line with
+    /// other constraints: an end released from its point, or the planar
+    /// reduction lifted when the system's lines join, docs/method.md
+    /// §11.16) at its current state, carrying what a run accumulates: the
+    /// steps, the work counters, the predictor's rates and the Galerkin
+    /// momentum, except at node `released`, whose momentum restarts as
+    /// M v (the reaction's impulse it held is gone with the point).
+    pub(crate) fn rebuilt(
+        &self,
+        model: Model,
+        settings: StepSettings,
+        own_solver: bool,
+        released: Option<usize>,
+    ) -> Result<Self, ModelError> {
+        let mut next = Self::build(model, self.state.clone(), settings, own_solver)?;
+        next.steps = self.steps;
+        next.constraint_work = self.constraint_work;
+        next.drag_work = self.drag_work;
+        next.damping_work = self.damping_work;
+        next.seabed_work = self.seabed_work;
+        next.water_work = self.water_work;
+        next.acceleration.clone_from(&self.acceleration);
+        next.last_slopes.clone_from(&self.last_slopes);
+        next.last_dt = self.last_dt;
+        next.clock.clone_from(&self.clock);
+        if next.moment_angles.len() == self.moment_angles.len() {
+            next.moment_angles.clone_from(&self.moment_angles);
+        }
+        let dpn = self.model.dofs_per_node();
+        for (g, p) in next.momentum.iter_mut().enumerate() {
+            if released != Some(g / dpn) {
+                *p = self.momentum[g];
+            }
+        }
+        next.previous.momentum.clone_from(&next.momentum);
+        Ok(next)
+    }
+
     fn build(
         model: Model,
         initial: State,

@@ -59,6 +59,9 @@ pub(super) struct ForcesAtTime {
     /// The previous step's length (0: no step before the last one).
     previous_dt: f64,
     at_time: Vec<[EndForce; 2]>,
+    /// Ends whose force history starts again at the next step (a line
+    /// end released, docs/method.md §11.16): (M23a) has no step before.
+    fresh: Vec<[bool; 2]>,
 }
 
 impl ForcesAtTime {
@@ -67,7 +70,15 @@ impl ForcesAtTime {
             previous_mean: vec![[EndForce::default(); 2]; lines],
             previous_dt: 0.0,
             at_time: vec![[EndForce::default(); 2]; lines],
+            fresh: vec![[false; 2]; lines],
         }
+    }
+
+    /// Starts the history of line `line`'s end `end` again: its next
+    /// estimate is the next step's mean (the end was released, its force
+    /// before is not the same function of time).
+    pub(super) fn restart(&mut self, line: usize, end: usize) {
+        self.fresh[line][end] = true;
     }
 
     /// The forces at t = 0, before any step (a static equilibrium's): read
@@ -85,17 +96,20 @@ impl ForcesAtTime {
         } else {
             0.0
         };
-        for ((now, m), before) in self
+        for (((now, m), before), fresh) in self
             .at_time
             .iter_mut()
             .zip(mean)
             .zip(self.previous_mean.iter_mut())
+            .zip(self.fresh.iter_mut())
         {
             for k in 0..2 {
+                let w = if fresh[k] { 0.0 } else { w };
                 now[k].force = std::array::from_fn(|c| {
                     m[k].force[c] + w * (m[k].force[c] - before[k].force[c])
                 });
                 before[k] = m[k];
+                fresh[k] = false;
             }
         }
         self.previous_dt = dt;

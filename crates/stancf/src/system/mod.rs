@@ -36,6 +36,7 @@ mod clamp_mass;
 mod clamp_moments;
 mod end_forces;
 mod energy;
+mod failure;
 mod halving;
 mod held;
 mod layout;
@@ -58,6 +59,7 @@ mod topology;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};
 pub use bodies::{Body, BodyKind, Pin};
+pub use failure::{check_failures, Dropped, LineFailure, Release, Trigger};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use held::{held_push, HeldMotion};
 pub use layout::SystemLayout;

@@ -96,6 +96,9 @@ pub struct SystemSimulation {
     /// How many times a step that Newton fails is halved (see
     /// [`SystemSimulation::set_step_halvings`]).
     pub(super) step_halvings: u32,
+    /// The line failures still to come and those that happened
+    /// (docs/method.md §11.16).
+    pub(super) failures: super::failure::Failures,
     pub(super) steps: usize,
     pub(super) t: f64,
 }
@@ -159,35 +162,24 @@ impl SystemSimulation {
                     .map_err(|e| e.under(&format!("lines[{i}]")))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
-        let scheme = settings.time_scheme.layout(settings.time_layers);
-        let layout = SystemLayout::new(&topology, &models, scheme, settings.constraint_method);
         let h = settings.time_step / settings.time_layers as f64;
         let rule = GaussRule::new(settings.time_points)
             .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
         let slab = TimeSlab::new(h, &rule);
         let points = point_motions(&topology, &lines, t)?;
-        let point_index = (0..topology.points().len())
-            .map(|p| match layout.point_base[p] {
-                Some(_) => (0..3 * layout.slots)
-                    .map(|k| layout.point_unknown(p, k / 3, k % 3).expect("free"))
-                    .collect(),
-                None => Vec::new(),
-            })
-            .collect();
-        let lu = BorderedLu::new(&layout.shapes, layout.border);
+        let Frame {
+            layout,
+            point_index,
+            workspace,
+            unknown_scale,
+            equation_scale,
+            mass,
+        } = Frame::new(&topology, &lines, &bodies, &settings)?;
         let n = layout.size;
-        let workspace = NewtonWorkspace::with_factors(lu, n, settings.newton.max_iterations);
         let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
-        let (unknown_scale, equation_scale) =
-            system_scales(&topology, &lines, &layout, &bodies, settings.time_step);
-        let mass = if joined && settings.time_scheme.carries_momentum() {
-            Some(SystemMass::new(&topology, &models, &bodies)?)
-        } else {
-            None
-        };
         Ok(SystemSimulation {
+            failures: Default::default(),
             mass,
             body_rows: vec![0.0; n],
             body_momentum: vec![[0.0; 6]; bodies.len()],
@@ -434,11 +426,68 @@ impl SystemSimulation {
     }
 
     /// Advances the system by one step of the step length (in halves
-    /// where Newton fails, see [`SystemSimulation::set_step_halvings`]).
+    /// where Newton fails, see [`SystemSimulation::set_step_halvings`]),
+    /// then releases the line ends whose failure came due at its end
+    /// ([`SystemSimulation::set_failures`]).
     /// On failure every line and point is left at the last converged
     /// step.
     pub fn step(&mut self) -> Result<StepReport, SolverError> {
-        self.step_halving(self.step_halvings)
+        let report = self.step_halving(self.step_halvings)?;
+        self.trigger_failures(&report)?;
+        Ok(report)
+    }
+}
+
+/// What a system's step is laid out on (its unknowns, their indices
+/// and scales, the bordered solver's workspace and the Galerkin step's
+/// mass matrix): built with the simulation and again when a line end is
+/// released and the unknowns change (docs/method.md §11.16).
+pub(super) struct Frame {
+    pub layout: SystemLayout,
+    pub point_index: Vec<Vec<usize>>,
+    pub workspace: NewtonWorkspace<BorderedLu>,
+    pub unknown_scale: Vec<f64>,
+    pub equation_scale: Vec<f64>,
+    pub mass: Option<SystemMass>,
+}
+
+impl Frame {
+    pub fn new(
+        topology: &Topology,
+        lines: &[Simulation],
+        bodies: &[StepBody],
+        settings: &StepSettings,
+    ) -> Result<Self, ModelError> {
+        let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
+        let scheme = settings.time_scheme.layout(settings.time_layers);
+        let layout = SystemLayout::new(topology, &models, scheme, settings.constraint_method);
+        let point_index = (0..topology.points().len())
+            .map(|p| match layout.point_base[p] {
+                Some(_) => (0..3 * layout.slots)
+                    .map(|k| layout.point_unknown(p, k / 3, k % 3).expect("free"))
+                    .collect(),
+                None => Vec::new(),
+            })
+            .collect();
+        let lu = BorderedLu::new(&layout.shapes, layout.border);
+        let workspace =
+            NewtonWorkspace::with_factors(lu, layout.size, settings.newton.max_iterations);
+        let (unknown_scale, equation_scale) =
+            system_scales(topology, lines, &layout, bodies, settings.time_step);
+        let joined = topology.has_free_points() || topology.has_free_bodies();
+        let mass = if joined && settings.time_scheme.carries_momentum() {
+            Some(SystemMass::new(topology, &models, bodies)?)
+        } else {
+            None
+        };
+        Ok(Frame {
+            layout,
+            point_index,
+            workspace,
+            unknown_scale,
+            equation_scale,
+            mass,
+        })
     }
 }
 

@@ -29,6 +29,7 @@ mod galerkin;
 mod grading;
 mod highest_frequency;
 mod joints;
+mod line_failures;
 mod lines_apart;
 mod mhk_rm1_lines;
 mod motion_tables;

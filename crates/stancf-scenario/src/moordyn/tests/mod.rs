@@ -6,6 +6,7 @@ use super::*;
 mod bodies;
 mod channels;
 mod decks;
+mod failures;
 mod options;
 mod rods;
 mod tables;

@@ -179,12 +179,6 @@ fn unknown_and_repeated_section_headers_are_refused_naming_the_line() {
     let e = error(&text);
     assert_eq!(e.line, Some(text.lines().count() - 1));
     assert!(e.message.contains("a second OPTIONS section"), "{e}");
-    let text = with("1 chain 1 2 110 10 -", "1 chain 1 2 110 10 -\n--- FAILURE ---\nID Point Lines FailTime FailTen\n() () (,) (s) (N)\n1 2 1 10 0");
-    let e = error(&text);
-    assert!(
-        e.message.starts_with("line failures are not supported"),
-        "{e}"
-    );
 }
 
 #[test]

@@ -8,6 +8,7 @@ mod moordyn_body_out;
 mod moordyn_line_out;
 mod moordyn_out;
 mod moordyn_rod_out;
+mod releases;
 mod rods;
 mod rows;
 mod stiffness;
@@ -360,7 +361,9 @@ fn step_through(
     let times = super::times_of(&sc.analysis);
     let mut last_written = 0;
     let mut written = Ok(());
+    let mut reported = releases::Reported::default();
     let result = stancf::system::run(sim, sc.analysis.duration, |sim, rep, at| {
+        reported.catch_up(sim, sc, writers);
         outcome.steps = at.step;
         outcome.iterations += rep.newton.iterations;
         outcome.t = times.time(sim.time());
@@ -475,6 +478,9 @@ fn write_summary(
     }
     if !sc.rods.is_empty() {
         summary["rods"] = Value::Array(bodies::rods_json(sc));
+    }
+    if !sc.failures.is_empty() {
+        summary["failures"] = releases::failures_json(sc, sim);
     }
     if !sc.notes.is_empty() {
         summary["notes"] = json!(sc.notes);

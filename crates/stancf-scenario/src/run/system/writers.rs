@@ -261,6 +261,12 @@ impl SystemWriters {
         })
     }
 
+    /// A point the run added (a line failure's, docs/method.md §11.16):
+    /// its rows in points.csv under `id` from the next moment written.
+    pub(super) fn add_point(&mut self, id: i64) {
+        self.point_ids.push(id);
+    }
+
     /// Writes one moment. Refuses non-finite values (none may reach a
     /// file): the lines', the points', the line ends', the energies, the
     /// works, in this order.
