@@ -173,7 +173,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(&k, v);
     }
     for f in &sc.failures {
-        let text = f.describe(sc);
+        let text = crate::scenario::describe_failure(f, sc);
         let (k, v) = text.split_once(": ").expect("failure <id>: ...");
         line(
             k,

@@ -6,77 +6,36 @@
 //! ([`stancf::system::SystemSimulation::set_failures`]).
 
 use super::context::Ctx;
-use super::system_parts::{PointType, SystemLine, SystemPoint, SystemScenario};
+use super::raw::RawFailure;
+use super::system_parts::{PointType, SystemFailure, SystemLine, SystemPoint, SystemScenario};
 use super::ScenarioError;
 use crate::moordyn::{Deck, LineAttachment};
-use serde::Deserialize;
 use stancf::error::Sig;
-use stancf::system::{LineFailure, Release, Trigger};
+use stancf::system::{Release, Trigger};
 
-/// One `[[failures]]` entry.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawFailure {
-    pub(super) id: Option<i64>,
-    pub(super) point: Option<i64>,
-    pub(super) lines: Option<Vec<i64>>,
-    pub(super) time: Option<f64>,
-    pub(super) tension: Option<f64>,
-}
-
-/// A failure of a system: the ends of `lines` (indices) let go of `point`
-/// (index) at `time` (s) or when one of their tensions reaches `tension`
-/// (N), whichever comes first.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SystemFailure {
-    /// Its id (a deck's FailureID; TOML `id`, default its place from 1).
-    pub id: i64,
-    pub point: usize,
-    pub lines: Vec<usize>,
-    pub time: Option<f64>,
-    pub tension: Option<f64>,
-    /// The point as the input names it: `point 3`, a deck's `R1A`.
-    pub place: String,
-}
-
-impl SystemFailure {
-    /// The library's failure.
-    pub fn to_library(&self) -> LineFailure {
-        LineFailure {
-            point: self.point,
-            lines: self.lines.clone(),
-            time: self.time,
-            tension: self.tension,
-        }
-    }
-
-    /// What it does, for `check` and the notes: "line 2 lets go of point
-    /// 5 at t = 15 s or at 1e5 N".
-    pub fn describe(&self, sc: &SystemScenario) -> String {
-        let ids: Vec<String> = self
-            .lines
-            .iter()
-            .map(|&l| sc.lines[l].id.to_string())
-            .collect();
-        let when: Vec<String> = self
-            .time
-            .map(|t| format!("at t = {} s", Sig(t)))
-            .into_iter()
-            .chain(
-                self.tension
-                    .map(|f| format!("at a tension of {} N", Sig(f))),
-            )
-            .collect();
-        format!(
-            "failure {}: line{} {} let{} go of {} {}",
-            self.id,
-            if ids.len() > 1 { "s" } else { "" },
-            ids.join(", "),
-            if ids.len() > 1 { "" } else { "s" },
-            self.place,
-            when.join(" or ")
-        )
-    }
+/// What failure `f` of `sc` does, for `check` and the notes: "failure 1:
+/// line 2 lets go of point 5 at t = 15 s or at a tension of 1e5 N".
+pub fn describe_failure(f: &SystemFailure, sc: &SystemScenario) -> String {
+    let ids: Vec<String> = f
+        .lines
+        .iter()
+        .map(|&l| sc.lines[l].id.to_string())
+        .collect();
+    let when: Vec<String> = f
+        .time
+        .map(|t| format!("at t = {} s", Sig(t)))
+        .into_iter()
+        .chain(f.tension.map(|t| format!("at a tension of {} N", Sig(t))))
+        .collect();
+    format!(
+        "failure {}: line{} {} let{} go of {} {}",
+        f.id,
+        if ids.len() > 1 { "s" } else { "" },
+        ids.join(", "),
+        if ids.len() > 1 { "" } else { "s" },
+        f.place,
+        when.join(" or ")
+    )
 }
 
 /// `[[failures]]`: `point` (a point's id) and `lines` (line ids, each

@@ -53,7 +53,7 @@ mod water;
 pub use analysis::InitialShape;
 pub use analysis::{Analysis, AnalysisKind, MAX_COUNTABLE_STEPS, MAX_STEPS};
 pub use bodies::{moments_of_a_body, uniform_current, BodyType, SystemBody};
-pub use failures::{failure_events, FailureEvent, SystemFailure};
+pub use failures::{describe_failure, failure_events, FailureEvent};
 pub use host_environment::HostEnvironment;
 pub use initial_velocity::{InitialVelocity, NodeSet};
 pub use messages::{clip, MAX_ECHO};
@@ -62,7 +62,8 @@ pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
 pub use rod_parts::{RodHolder, RodTypeValues, SystemRod};
 pub use system_model::EI_FACTOR;
 pub use system_parts::{
-    LineType, MoorDynOutFile, OutputChannel, PointType, SystemLine, SystemPoint, SystemScenario,
+    LineType, MoorDynOutFile, OutputChannel, PointType, SystemFailure, SystemLine, SystemPoint,
+    SystemScenario,
 };
 pub use water::{Current, CurrentField, SeabedFile, SeabedOptions, Water};
 

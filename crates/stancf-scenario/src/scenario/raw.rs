@@ -56,7 +56,7 @@ pub(super) struct RawScenario {
     pub(super) farm: Option<RawFarm>,
     /// Line failures (docs/interface.md, "Line failures").
     #[serde(default)]
-    pub(super) failures: Vec<super::failures::RawFailure>,
+    pub(super) failures: Vec<RawFailure>,
 }
 
 impl RawScenario {
@@ -491,4 +491,15 @@ pub(super) struct RawPrescribed {
 pub(super) struct RawFarm {
     pub(super) turbines: Option<Vec<Vec<f64>>>,
     pub(super) fast_farm: Option<String>,
+}
+
+/// One `[[failures]]` entry.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawFailure {
+    pub(super) id: Option<i64>,
+    pub(super) point: Option<i64>,
+    pub(super) lines: Option<Vec<i64>>,
+    pub(super) time: Option<f64>,
+    pub(super) tension: Option<f64>,
 }

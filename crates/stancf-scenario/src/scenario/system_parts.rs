@@ -200,7 +200,7 @@ pub struct SystemScenario {
     /// Where its values were written (TOML keys or a deck's lines).
     pub names: super::names::Names,
     /// Line failures (docs/method.md §11.16).
-    pub failures: Vec<super::failures::SystemFailure>,
+    pub failures: Vec<SystemFailure>,
 }
 
 /// MoorDyn's output files a deck asks for: `<deck>.out` of its OUTPUTS
@@ -270,6 +270,33 @@ impl SystemScenario {
             PointType::Coupled => true,
             PointType::Body { body, .. } => self.bodies[body].is_coupled(),
             PointType::Fixed | PointType::Free => false,
+        }
+    }
+}
+
+/// A failure of a system: the ends of `lines` (indices) let go of `point`
+/// (index) at `time` (s) or when one of their tensions reaches `tension`
+/// (N), whichever comes first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemFailure {
+    /// Its id (a deck's FailureID; TOML `id`, default its place from 1).
+    pub id: i64,
+    pub point: usize,
+    pub lines: Vec<usize>,
+    pub time: Option<f64>,
+    pub tension: Option<f64>,
+    /// The point as the input names it: `point 3`, a deck's `R1A`.
+    pub place: String,
+}
+
+impl SystemFailure {
+    /// The library's failure.
+    pub fn to_library(&self) -> stancf::system::LineFailure {
+        stancf::system::LineFailure {
+            point: self.point,
+            lines: self.lines.clone(),
+            time: self.time,
+            tension: self.tension,
         }
     }
 }

@@ -36,7 +36,8 @@ mod clamp_mass;
 mod clamp_moments;
 mod end_forces;
 mod energy;
-mod failure;
+mod failures;
+mod frame;
 mod halving;
 mod held;
 mod layout;
@@ -45,6 +46,7 @@ mod mass;
 mod network;
 mod pins;
 mod point_terms;
+mod release;
 mod run;
 mod seed;
 mod simulation;
@@ -59,11 +61,12 @@ mod topology;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};
 pub use bodies::{Body, BodyKind, Pin};
-pub use failure::{check_failures, Dropped, LineFailure, Release, Trigger};
+pub use failures::{Dropped, LineFailure, Release, Trigger};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use held::{held_push, HeldMotion};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
+pub use release::check_failures;
 pub use run::{run, RunProgress};
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,

@@ -11,6 +11,7 @@
 use super::body_terms::{BodyPoint, PinHold, StepBody};
 pub use super::end_forces::EndForce;
 use super::end_forces::ForcesAtTime;
+use super::frame::Frame;
 use super::layout::SystemLayout;
 use super::mass::SystemMass;
 use super::point_terms::PointNodes;
@@ -98,7 +99,7 @@ pub struct SystemSimulation {
     pub(super) step_halvings: u32,
     /// The line failures still to come and those that happened
     /// (docs/method.md §11.16).
-    pub(super) failures: super::failure::Failures,
+    pub(super) failures: super::failures::Failures,
     pub(super) steps: usize,
     pub(super) t: f64,
 }
@@ -435,59 +436,6 @@ impl SystemSimulation {
         let report = self.step_halving(self.step_halvings)?;
         self.trigger_failures(&report)?;
         Ok(report)
-    }
-}
-
-/// What a system's step is laid out on (its unknowns, their indices
-/// and scales, the bordered solver's workspace and the Galerkin step's
-/// mass matrix): built with the simulation and again when a line end is
-/// released and the unknowns change (docs/method.md §11.16).
-pub(super) struct Frame {
-    pub layout: SystemLayout,
-    pub point_index: Vec<Vec<usize>>,
-    pub workspace: NewtonWorkspace<BorderedLu>,
-    pub unknown_scale: Vec<f64>,
-    pub equation_scale: Vec<f64>,
-    pub mass: Option<SystemMass>,
-}
-
-impl Frame {
-    pub fn new(
-        topology: &Topology,
-        lines: &[Simulation],
-        bodies: &[StepBody],
-        settings: &StepSettings,
-    ) -> Result<Self, ModelError> {
-        let models: Vec<_> = lines.iter().map(|l| l.model()).collect();
-        let scheme = settings.time_scheme.layout(settings.time_layers);
-        let layout = SystemLayout::new(topology, &models, scheme, settings.constraint_method);
-        let point_index = (0..topology.points().len())
-            .map(|p| match layout.point_base[p] {
-                Some(_) => (0..3 * layout.slots)
-                    .map(|k| layout.point_unknown(p, k / 3, k % 3).expect("free"))
-                    .collect(),
-                None => Vec::new(),
-            })
-            .collect();
-        let lu = BorderedLu::new(&layout.shapes, layout.border);
-        let workspace =
-            NewtonWorkspace::with_factors(lu, layout.size, settings.newton.max_iterations);
-        let (unknown_scale, equation_scale) =
-            system_scales(topology, lines, &layout, bodies, settings.time_step);
-        let joined = topology.has_free_points() || topology.has_free_bodies();
-        let mass = if joined && settings.time_scheme.carries_momentum() {
-            Some(SystemMass::new(topology, &models, bodies)?)
-        } else {
-            None
-        };
-        Ok(Frame {
-            layout,
-            point_index,
-            workspace,
-            unknown_scale,
-            equation_scale,
-            mass,
-        })
     }
 }
 

@@ -4,6 +4,7 @@
 //! the time stepping; results per line, per point and per line end.
 
 mod bodies;
+mod channel_values;
 mod moordyn_body_out;
 mod moordyn_line_out;
 mod moordyn_out;

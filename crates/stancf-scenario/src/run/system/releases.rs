@@ -38,7 +38,7 @@ impl Reported {
                 "note: t = {} s: {} (set off by {why}); the released {} on at the new free \
                  point {}",
                 Sig(e.t),
-                sc.failures[r.failure].describe(sc),
+                crate::scenario::describe_failure(&sc.failures[r.failure], sc),
                 if e.lines.len() > 1 {
                     "ends go"
                 } else {
