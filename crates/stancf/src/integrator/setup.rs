@@ -71,6 +71,20 @@ impl Simulation {
         Ok(next)
     }
 
+    /// Restarts the carried Galerkin momentum at `node` as M v of the
+    /// current state (a junction split by a release, docs/method.md
+    /// §11.16: the line's share of a junction's momentum is its own end
+    /// momentum, which differs from M v by its share of the junction's
+    /// internal impulse; once apart, each part carries M v).
+    pub(crate) fn restart_momentum_at(&mut self, node: usize) {
+        let mut mv = vec![0.0; self.model.dofs()];
+        self.model.momentum(&self.state.e, &self.state.v, &mut mv);
+        let dpn = self.model.dofs_per_node();
+        let node_coordinates = node * dpn..(node + 1) * dpn;
+        self.momentum[node_coordinates.clone()].copy_from_slice(&mv[node_coordinates.clone()]);
+        self.previous.momentum[node_coordinates.clone()].copy_from_slice(&mv[node_coordinates]);
+    }
+
     fn build(
         model: Model,
         initial: State,

@@ -136,6 +136,33 @@ impl CableStatics {
         w
     }
 
+    /// Each multiplier's unknown and the equilibrium row of the coordinate
+    /// it holds (a direction hold's: the row of its node's first r_x
+    /// coordinate), for the increment norm's weights
+    /// (`StaticNewton::set_weight_rows`).
+    pub fn multiplier_rows(&self) -> Vec<(usize, usize)> {
+        let mut out = Vec::new();
+        for g in 0..self.model.dofs() {
+            if let (Some(m), Some(r)) = (self.layout.multiplier_at(0, g), self.layout.row_at(0, g))
+            {
+                out.push((m, r));
+            }
+        }
+        let dpn = self.layout.dpn;
+        for (h, hold) in self.model.constraints.directions.iter().enumerate() {
+            let rx = coordinate(dpn, hold.node, SLOT_R_X, 0);
+            let Some(r) = self.layout.row_at(0, rx) else {
+                continue;
+            };
+            for k in 0..2 {
+                if let Some(m) = self.layout.hold_multiplier(h, 0, k) {
+                    out.push((m, r));
+                }
+            }
+        }
+        out
+    }
+
     /// Whether a prescribed support moves away from its reference position.
     pub fn moves_supports(&self) -> bool {
         self.model

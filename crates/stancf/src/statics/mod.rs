@@ -193,13 +193,14 @@ impl StaticSolver {
         let cable = CableStatics::new(model, settings.constraint_method, reference);
         let n = cable.layout.size();
         let (kl, ku) = cable.layout.bandwidths();
-        let newton = StaticNewton::new(
+        let mut newton = StaticNewton::new(
             cable.unknowns_of_state(),
             cable.unknown_weights(),
             BandLu::new(n, kl, ku),
             BandMatrix::new(n, kl, ku),
             settings,
         );
+        newton.set_weight_rows(&cable.multiplier_rows());
         Ok(StaticSolver {
             equations: SingleCable::new(cable),
             newton,

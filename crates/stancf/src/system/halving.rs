@@ -4,9 +4,10 @@
 //! line touches down on a stiff seabed the contact's force has a kink
 //! that Newton can cycle around at a long step; half the step moves the
 //! touchdown less. Until a step fails, the run is the one without
-//! halvings, to the bit; the energy
-//! watchdog's unstable step (P2 above its stable step) is not halved:
-//! it is the step the scenario chose, reported as such.
+//! halvings, to the bit. A Galerkin step whose energy jumps is undone
+//! and halved too, by the run (`run.rs`, §11.15); the energy watchdog's
+//! unstable step (P2 above its stable step) is not halved: it is the
+//! step the scenario chose, reported as such.
 
 use super::SystemSimulation;
 use crate::error::{ModelError, SolverError};

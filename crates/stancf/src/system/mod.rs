@@ -51,6 +51,7 @@ mod run;
 mod seed;
 mod simulation;
 mod static_friction;
+mod static_lines;
 mod static_paths;
 mod static_water;
 mod statics;
@@ -58,6 +59,7 @@ mod step_equations;
 mod stepping;
 mod stiffness;
 mod topology;
+mod undo;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};
 pub use bodies::{Body, BodyKind, Pin};

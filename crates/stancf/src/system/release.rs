@@ -61,6 +61,11 @@ impl SystemSimulation {
         check_release(&self.topology, &models, point, lines)?;
         let was_joined = self.topology.has_free_points() || self.topology.has_free_bodies();
         let held = !self.topology.points[point].is_unknown();
+        let junction: Vec<(usize, usize)> = self
+            .topology
+            .attachments(point)
+            .map(|(li, end)| (li, end_node(self.lines[li].model(), end)))
+            .collect();
         let (first, end) = attached_end(&self.topology, point, lines[0]).expect("checked");
         let (e, v) = end_state(&self.lines[first], end);
         let new_point = self.topology.points.len();
@@ -89,6 +94,13 @@ impl SystemSimulation {
             self.lines[li] = line
                 .rebuilt(model, settings, false, node)
                 .map_err(|e| e.under(&format!("lines[{li}]")))?;
+        }
+        // Each line's share of the junction's momentum restarts as its
+        // own M v: apart, each part carries its own (docs/method.md §11.16).
+        if !held {
+            for (li, node) in junction {
+                self.lines[li].restart_momentum_at(node);
+            }
         }
         self.points.push(PointMotion {
             e,

@@ -38,14 +38,14 @@
 
 use super::body_clamps::{add_static_clamp, hold_spin};
 use super::body_statics::{static_bodies, StaticBody};
-use super::layout::{add_lines_rows, SystemLayout};
+use super::layout::SystemLayout;
 use super::simulation::EndForce;
 use super::static_friction::{line_statics, StaticFriction};
-use super::{AttachedEnd, System};
+use super::System;
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::error::{ModelError, SolverError};
 use crate::linear::{AddEntries, Jacobian};
-use crate::model::{coordinate, State, SLOT_R};
+use crate::model::State;
 use crate::statics::{
     CableStatics, StaticEquations, StaticIncrement, StaticNewton, StaticSettings,
 };
@@ -224,7 +224,8 @@ impl SystemStatics {
         equations.converged(&x);
         let lu = BorderedLu::new(&equations.layout.shapes, equations.layout.border);
         let jacobian = BorderedMatrix::new(&equations.layout.shapes, equations.layout.border);
-        let newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings.clone());
+        let mut newton = StaticNewton::new(x, unknown_weight, lu, jacobian, settings.clone());
+        newton.set_weight_rows(&equations.multiplier_rows());
         let check_compression = !own_law.iter().any(|&o| o);
         Ok(SystemStatics {
             equations,
@@ -411,27 +412,6 @@ impl SystemStatics {
     }
 }
 
-impl SystemEquations {
-    /// Each line's rows at x into `residual` and their Jacobians into
-    /// `jacobian` (both cleared first).
-    fn line_rows(
-        &mut self,
-        x: &[f64],
-        residual: &mut [f64],
-        jacobian: Option<&mut BorderedMatrix>,
-    ) {
-        add_lines_rows(
-            &mut self.lines,
-            &self.layout.maps,
-            (&mut self.x_local, &mut self.residual_local),
-            x,
-            residual,
-            jacobian,
-            |line, xl, rl, view| line.assemble_into(xl, rl, view),
-        );
-    }
-}
-
 impl StaticEquations for SystemEquations {
     type Matrix = BorderedMatrix;
 
@@ -556,40 +536,5 @@ impl StaticEquations for SystemEquations {
             body.converged = body.unknowns(&self.layout, x);
         }
         self.collect_end_forces();
-    }
-}
-
-impl SystemEquations {
-    /// The forces of the line ends on their points: at a free point
-    /// minus the line's rows there (the rows are dU/de - f, the force the
-    /// point exerts on the line; the residual of `converged`); at a fixed
-    /// or coupled point minus the line's reaction.
-    fn collect_end_forces(&mut self) {
-        for (i, line) in self.lines.iter().enumerate() {
-            let dpn = line.model.dofs_per_node();
-            self.end_forces[i] = [EndForce::default(); 2];
-            for AttachedEnd {
-                end: k,
-                point: p,
-                node,
-            } in self.system.attached_ends(i, &line.model)
-            {
-                let force = if self.system.points()[p].is_unknown() {
-                    std::array::from_fn(|c| {
-                        let g = coordinate(dpn, node, SLOT_R, c);
-                        let u = line.layout.row_at(0, g).expect("a free end's row");
-                        -self.residual_local[i][u]
-                    })
-                } else {
-                    let r = line
-                        .reactions
-                        .iter()
-                        .find(|(n, _)| *n == node)
-                        .map_or([0.0; 3], |(_, f)| *f);
-                    r.map(|f| -f)
-                };
-                self.end_forces[i][k] = EndForce { force };
-            }
-        }
     }
 }

@@ -252,7 +252,11 @@ fn ending(
         } else {
             format!("no equilibrium was reached; {shown} holds the result files' headers")
         };
-        let hint = if outcome.failed_stepping && f.newton_failed() {
+        // A Galerkin step whose energy jumps is halved too (docs/method.md
+        // §11.15); a P2 step above its stable step is not.
+        let galerkin_jump = f.kind == stancf::error::FailureKind::EnergyGrowth
+            && sc.analysis.time_scheme == stancf::TimeScheme::Galerkin;
+        let hint = if outcome.failed_stepping && (f.newton_failed() || galerkin_jump) {
             halving_hint(sc.analysis.step_halvings)
         } else {
             String::new()

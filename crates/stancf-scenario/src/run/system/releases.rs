@@ -73,6 +73,8 @@ fn events(sc: &SystemScenario, sim: &SystemSimulation) -> Vec<FailureEvent> {
 /// dropped: when and why; else null).
 pub(super) fn failures_json(sc: &SystemScenario, sim: Option<&SystemSimulation>) -> Value {
     let events = sim.map(|s| events(sc, s)).unwrap_or_default();
+    // The times as the tables write them (the decimals of the step).
+    let times = super::super::times_of(&sc.analysis);
     let entries = sc.failures.iter().enumerate().map(|(i, f)| {
         let mut entry = json!({
             "id": f.id,
@@ -85,7 +87,7 @@ pub(super) fn failures_json(sc: &SystemScenario, sim: Option<&SystemSimulation>)
         });
         if let Some(e) = events.iter().find(|e| e.failure == f.id) {
             entry["released"] = json!({
-                "t": json_num(e.t),
+                "t": json_num(times.time(e.t)),
                 "trigger": e.trigger,
                 "tension": e.tension.map(json_num),
                 "lines": e.lines,
@@ -94,7 +96,7 @@ pub(super) fn failures_json(sc: &SystemScenario, sim: Option<&SystemSimulation>)
         }
         let dropped = sim.and_then(|s| s.dropped_failures().iter().find(|d| d.failure == i));
         if let Some(d) = dropped {
-            entry["dropped"] = json!({ "t": json_num(d.time), "why": d.why });
+            entry["dropped"] = json!({ "t": json_num(times.time(d.time)), "why": d.why });
         }
         entry
     });

@@ -39,8 +39,13 @@ pub(crate) struct StaticNewton<F: Factorization> {
     dx: Vec<f64>,
     /// Row weights 1 / |K_ii| (refreshed with every Jacobian).
     row_weight: Vec<f64>,
-    /// Weights of the unknowns in the increment norm (0: take the row's).
+    /// Weights of the unknowns in the increment norm (0: take the weight
+    /// of row `weight_row[i]`).
     unknown_weight: Vec<f64>,
+    /// The row whose weight an unknown of weight 0 takes: its own index,
+    /// but for a multiplier the equilibrium row of the coordinate it
+    /// holds ([`Self::set_weight_rows`]).
+    weight_row: Vec<usize>,
     lu: F,
     jacobian: F::Matrix,
     settings: StaticSettings,
@@ -72,6 +77,7 @@ impl<F: Factorization> StaticNewton<F> {
             dx: vec![0.0; n],
             row_weight: vec![1.0; n],
             unknown_weight,
+            weight_row: (0..n).collect(),
             lu,
             jacobian,
             settings,
@@ -111,17 +117,33 @@ impl<F: Factorization> StaticNewton<F> {
         m
     }
 
+    /// The largest weighted increment: a coordinate's over its length
+    /// scale; a multiplier's (a force) as the displacement it would
+    /// cause at the coordinate it holds, its weight that coordinate's
+    /// equilibrium row's, s / |K_rr| (docs/method.md §6.9). Weighted by its
+    /// own constraint row's s instead, a multiplier would move by at most
+    /// the trust radius times L newtons per iteration, and a stiff line
+    /// seeded without its tension would creep to it for thousands of
+    /// iterations.
     fn increment_norm(&self) -> f64 {
         let mut m = 0.0f64;
         for (i, d) in self.dx.iter().enumerate() {
             let w = if self.unknown_weight[i] > 0.0 {
                 self.unknown_weight[i]
             } else {
-                self.row_weight[i]
+                self.row_weight[self.weight_row[i]]
             };
             m = m.max((d * w).abs());
         }
         m
+    }
+
+    /// The multipliers' weight rows: (multiplier unknown, the equilibrium
+    /// row of the coordinate it holds) (see [`Self::increment_norm`]).
+    pub fn set_weight_rows(&mut self, pairs: &[(usize, usize)]) {
+        for &(m, r) in pairs {
+            self.weight_row[m] = r;
+        }
     }
 
     /// Factorizes K, or K + mu D (D = diag |K|) with the smallest shift
