@@ -91,3 +91,18 @@ def test_a_failure_of_a_line_elsewhere_is_refused_naming_the_row(tmp_path):
     (tmp_path / "deck.txt").write_text(DECK.replace("1 3 2 1.0 0", "1 1 2 1.0 0"))
     with pytest.raises(stancf.ScenarioError, match=r"line 20: failure 1: line 2 is not attached to 1"):
         stancf.Scenario.from_file(tmp_path / "deck.txt")
+
+
+def test_a_coupled_step_above_p2s_stable_step_fails_the_call(tmp_path):
+    # The deck's chains at dtM 0.05 s, twenty times P2's stable step
+    # (0.00234 s, `stancf check`): the energy watchdog stops the call at
+    # the step that grew, where the held fairlead's forces went wild
+    # unreported before.
+    (tmp_path / "deck.txt").write_text(DECK.replace("0.002 dtM", "0.05 dtM"))
+    sim = stancf.Simulation(tmp_path / "deck.txt")
+    x = sim.initial_positions()
+    sim.initialize(x)
+    with pytest.raises(stancf.SolverError, match="energy"):
+        for k in range(1, 11):
+            sim.step_to(0.5 * k, x)
+    assert sim.time < 5.0

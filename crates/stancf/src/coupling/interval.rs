@@ -115,7 +115,10 @@ impl CoupledSystem {
         };
         let mut impulse = vec![0.0; x.len()];
         for taken in 1..=steps {
-            if let Err(e) = running.sim.step() {
+            let halvings = running.sim.step_halvings();
+            let watched =
+                crate::system::watched_step(&mut running.sim, &mut running.watch, halvings);
+            if let Err(e) = watched {
                 running.stop_on_motion(&coupled, &references);
                 running.stop_held(&paths);
                 return Err(e.into());

@@ -72,6 +72,11 @@ pub struct PointReading {
 #[derive(Clone)]
 struct Running {
     sim: SystemSimulation,
+    /// The energy watchdog over the run since the initial equilibrium
+    /// (docs/method.md §11.15): a step whose balance grows without a
+    /// source fails the call (a P2 step above its stable step), a
+    /// Galerkin step's jump is taken again in halves.
+    watch: crate::integrator::EnergyWatch,
     /// Positions and (when given) velocities of the last call, 3 per
     /// coupled point (those on coupled bodies included).
     position: Vec<f64>,
@@ -430,6 +435,7 @@ impl CoupledSystem {
         let mut sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
         sim.set_failures(self.failures.clone())?;
         self.running = Some(Running {
+            watch: sim.energy_watch(),
             sim,
             position,
             velocity,

@@ -71,6 +71,12 @@ pub(super) struct StepPin {
     /// force on the body over the last step (B35).
     pub momentum_a: [f64; 3],
     pub force: [f64; 3],
+    /// How far a host's motion moved the pinned point over the step, and
+    /// the work the pin did on the body so far: its mean force times that,
+    /// step by step (second order, as a coupled point's (M24)); zero at a
+    /// fixed point or a joint.
+    pub moved: [f64; 3],
+    pub work: f64,
 }
 
 /// What holds a pinned point: a fixed point (global); a point whose

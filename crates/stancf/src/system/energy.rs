@@ -89,6 +89,18 @@ impl SystemSimulation {
         self.lines.iter().map(|l| l.external_work()).sum::<f64>()
             + self.point_water_work
             + self.body_water_work()
+            + self.pin_work()
+    }
+
+    /// The work of the pins a host's motion moves on their bodies so far
+    /// (§15.17: each step's mean pin force times the pinned point's
+    /// displacement).
+    fn pin_work(&self) -> f64 {
+        self.bodies
+            .iter()
+            .filter_map(|b| b.pin)
+            .map(|p| p.work)
+            .sum()
     }
 
     /// The work of the free bodies' drag so far (B10), and of their
@@ -103,7 +115,7 @@ impl SystemSimulation {
     /// The energy watchdog of a run from the current state (docs/method.md
     /// §8, (M29)): the lines' energy units summed, and the free points'
     /// loads over the longest line as theirs.
-    pub(super) fn energy_watch(&self) -> EnergyWatch {
+    pub(crate) fn energy_watch(&self) -> EnergyWatch {
         let longest = self
             .lines
             .iter()

@@ -69,6 +69,7 @@ pub use held::{held_push, HeldMotion};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
 pub use release::check_failures;
+pub(crate) use run::watched_step;
 pub use run::{run, RunProgress};
 pub use seed::{
     catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,

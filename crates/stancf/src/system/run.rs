@@ -78,7 +78,7 @@ where
 /// long step, its contact's kink between the iterates), and a shorter step
 /// starts nearer the motion's. A P2 step above its stable step is the
 /// step the scenario chose and is reported as it is.
-fn watched_step(
+pub(crate) fn watched_step(
     sim: &mut SystemSimulation,
     watch: &mut EnergyWatch,
     halvings: u32,

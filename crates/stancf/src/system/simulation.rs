@@ -532,6 +532,8 @@ fn step_bodies(system: &Topology, dt: f64) -> Result<Vec<StepBody>, ModelError> 
                     held: [[0.0; 3], point.position, [0.0; 3]],
                     momentum_a: [0.0; 3],
                     force: [0.0; 3],
+                    moved: [0.0; 3],
+                    work: 0.0,
                 }
             });
             // A pinned body keeps its own loads' impulse: its pin's force

@@ -66,9 +66,10 @@ impl SystemSimulation {
             pin.momentum_a = body.body.linear_momentum();
             if let PinHold::Moving(p) = pin.hold {
                 let point = &self.topology.points()[p];
-                let (_, start) = point.state_at(self.t);
+                let (from, start) = point.state_at(self.t);
                 let (end, end_velocity) = point.state_at(self.t + dt);
                 pin.held = [start, end, end_velocity];
+                pin.moved = crate::vec3::sub(end, from);
             }
         }
     }
@@ -91,6 +92,7 @@ impl SystemSimulation {
             }
             if let Some(pin) = self.bodies[k].pin.as_mut() {
                 pin.force = impulse.map(|c| c / dt);
+                pin.work += crate::vec3::dot(pin.force, pin.moved);
             }
         }
     }
