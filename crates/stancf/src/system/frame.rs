@@ -64,4 +64,13 @@ impl Frame {
             mass,
         })
     }
+
+    /// Zeroed buffers of each line's unknowns (its local x and residual).
+    pub fn line_buffers(&self) -> Vec<Vec<f64>> {
+        self.layout
+            .lines
+            .iter()
+            .map(|l| vec![0.0; l.size()])
+            .collect()
+    }
 }

@@ -119,18 +119,8 @@ impl SystemSimulation {
     fn lay_out_again(&mut self) -> Result<(), ModelError> {
         let frame = Frame::new(&self.topology, &self.lines, &self.bodies, &self.settings)?;
         let n = frame.layout.size;
-        self.x_local = frame
-            .layout
-            .lines
-            .iter()
-            .map(|l| vec![0.0; l.size()])
-            .collect();
-        self.residual_local = frame
-            .layout
-            .lines
-            .iter()
-            .map(|l| vec![0.0; l.size()])
-            .collect();
+        self.x_local = frame.line_buffers();
+        self.residual_local = frame.line_buffers();
         self.x = vec![0.0; n];
         self.body_rows = vec![0.0; n];
         self.layout = frame.layout;

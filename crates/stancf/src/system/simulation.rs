@@ -168,6 +168,8 @@ impl SystemSimulation {
             .map_err(|e| ModelError::invalid("analysis.quadrature", e.message))?;
         let slab = TimeSlab::new(h, &rule);
         let points = point_motions(&topology, &lines, t)?;
+        let frame = Frame::new(&topology, &lines, &bodies, &settings)?;
+        let (x_local, residual_local) = (frame.line_buffers(), frame.line_buffers());
         let Frame {
             layout,
             point_index,
@@ -175,10 +177,8 @@ impl SystemSimulation {
             unknown_scale,
             equation_scale,
             mass,
-        } = Frame::new(&topology, &lines, &bodies, &settings)?;
+        } = frame;
         let n = layout.size;
-        let x_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
-        let residual_local = layout.lines.iter().map(|l| vec![0.0; l.size()]).collect();
         Ok(SystemSimulation {
             failures: Default::default(),
             mass,

@@ -3,30 +3,13 @@
 //! at the steps' middles, off the forces at their ends by dt/2 times the
 //! rate; the estimate (M23a) through the last two means is second order.
 
-use crate::common::rope_systems::three_to_a_point;
-use stancf::system::SystemSimulation;
-use stancf::{NewtonSettings, StepSettings, TimeScheme};
+use crate::common::rope_systems::galerkin_three_to_a_point;
 
 /// The force of the lines on the swinging anchor (point 2) of the rope
 /// system of `rope_systems` (4 elements per line, Galerkin steps of `dt`,
 /// Newton to 1e-12) at t = 0.1 s: the step mean and the estimate at t.
 fn anchor_force_at(dt: f64) -> ([f64; 3], [f64; 3]) {
-    let system = three_to_a_point(4);
-    let states = system
-        .lines()
-        .iter()
-        .map(|l| l.model.initial_state())
-        .collect();
-    let settings = StepSettings {
-        time_step: dt,
-        time_scheme: TimeScheme::Galerkin,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    };
-    let mut sim = SystemSimulation::new(system, states, settings).expect("system");
+    let mut sim = galerkin_three_to_a_point(dt);
     let steps = (0.1 / dt).round() as usize;
     for _ in 0..steps {
         sim.step().expect("step");

@@ -4,32 +4,8 @@
 //! system's energy balance carries through it; which step sets a failure
 //! off is decided by its time or by the end tensions the run computes.
 
-use crate::common::rope_systems::three_to_a_point;
-use stancf::system::{LineFailure, SystemSimulation, Trigger};
-use stancf::{NewtonSettings, StepSettings, TimeScheme};
-
-/// The rope system of `rope_systems` (three lines from two fixed anchors
-/// and a swinging one to a free point of 0.2 kg, 4 elements per line,
-/// starting straight and at rest in gravity) with Galerkin steps of
-/// `dt`, Newton to 1e-12.
-fn rope_system(dt: f64) -> SystemSimulation {
-    let system = three_to_a_point(4);
-    let states = system
-        .lines()
-        .iter()
-        .map(|l| l.model.initial_state())
-        .collect();
-    let settings = StepSettings {
-        time_step: dt,
-        time_scheme: TimeScheme::Galerkin,
-        newton: NewtonSettings {
-            tolerance: 1e-12,
-            ..NewtonSettings::default()
-        },
-        ..StepSettings::default()
-    };
-    SystemSimulation::new(system, states, settings).expect("system")
-}
+use crate::common::rope_systems::galerkin_three_to_a_point;
+use stancf::system::{LineFailure, Trigger};
 
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>().sqrt()
@@ -40,7 +16,7 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// (point 0) at 0.1 s where `release`; and how far line 0's end A is
 /// from the anchor at the end.
 fn energy_drift(dt: f64, release: bool) -> (f64, f64) {
-    let mut sim = rope_system(dt);
+    let mut sim = galerkin_three_to_a_point(dt);
     if release {
         sim.set_failures(vec![LineFailure {
             point: 0,
@@ -97,7 +73,7 @@ fn a_line_let_go_of_by_its_anchor_keeps_the_energy_balance() {
 /// where the old point was.
 #[test]
 fn a_release_changes_no_state() {
-    let mut sim = rope_system(2e-3);
+    let mut sim = galerkin_three_to_a_point(2e-3);
     for _ in 0..20 {
         sim.step().expect("step");
     }
@@ -120,7 +96,7 @@ fn a_release_changes_no_state() {
 fn a_tension_failure_lets_go_at_the_first_step_at_its_threshold() {
     // Without the failure: the tension of line 2's end A at the swinging
     // anchor (point 2), step by step.
-    let mut sim = rope_system(2e-3);
+    let mut sim = galerkin_three_to_a_point(2e-3);
     let mut tensions = Vec::new();
     for _ in 0..100 {
         sim.step().expect("step");
@@ -135,7 +111,7 @@ fn a_tension_failure_lets_go_at_the_first_step_at_its_threshold() {
         .iter()
         .position(|&t| t >= threshold)
         .expect("reached");
-    let mut sim = rope_system(2e-3);
+    let mut sim = galerkin_three_to_a_point(2e-3);
     sim.set_failures(vec![LineFailure {
         point: 2,
         lines: vec![2],
@@ -161,7 +137,7 @@ fn a_tension_failure_lets_go_at_the_first_step_at_its_threshold() {
 /// same point; a failure left without lines is dropped, and said so.
 #[test]
 fn a_released_line_drops_out_of_later_failures_at_its_point() {
-    let mut sim = rope_system(2e-3);
+    let mut sim = galerkin_three_to_a_point(2e-3);
     let at = |time: f64, lines: Vec<usize>| LineFailure {
         point: 3,
         lines,
@@ -248,7 +224,7 @@ fn failures_that_cannot_happen_are_refused() {
         ),
     ];
     for (failure, says) in cases {
-        let mut sim = rope_system(2e-3);
+        let mut sim = galerkin_three_to_a_point(2e-3);
         let err = sim
             .set_failures(vec![failure.clone()])
             .expect_err("refused");

@@ -49,6 +49,20 @@ fn pendulum_system(
     System::with_bodies(Vec::new(), points, vec![body], [0.0, 0.0, -g]).expect("system")
 }
 
+/// A pin's path V t + a t^2 / 2 upward over `span` from the origin, as a
+/// host's cubic (K2) over one interval holds it exactly.
+fn accelerating(v: [f64; 3], a: f64, span: f64) -> CoupledMotion {
+    let at = |t: f64| [v[0] * t, v[1] * t, 0.5 * a * t * t];
+    let rate = |t: f64| [v[0], v[1], a * t];
+    CoupledMotion::Interval(MotionInterval {
+        t0: 0.0,
+        duration: span,
+        start: at(0.0),
+        end: at(span),
+        rates: Some((rate(0.0), rate(span))),
+    })
+}
+
 /// A pendulum whose pin moves at a constant velocity V and accelerates
 /// upward at a swings about it as a pendulum on a fixed pin under
 /// gravity g + a (Galileo and Einstein): the pin's path V t + a t^2 / 2
@@ -62,14 +76,7 @@ fn pendulum_system(
 fn a_pendulum_on_an_accelerating_pin_swings_as_under_more_gravity() {
     let (top, v, a, span) = ([0.0, 0.0, 0.0], [0.7, -0.2, 0.0], 3.0, 2.0);
     let at = |t: f64| [v[0] * t, v[1] * t, 0.5 * a * t * t];
-    let rate = |t: f64| [v[0], v[1], a * t];
-    let moving = CoupledMotion::Interval(MotionInterval {
-        t0: 0.0,
-        duration: span,
-        start: at(0.0),
-        end: at(span),
-        rates: Some((rate(0.0), rate(span))),
-    });
+    let moving = accelerating(v, a, span);
     let mut driven = pendulum(top, moving, v, G, 30.0);
     let mut still = pendulum(top, CoupledMotion::NONE, [0.0; 3], G + a, 30.0);
     let end_b = [
@@ -161,17 +168,8 @@ fn a_rod_at_rest_on_a_pin_is_held_by_its_weight() {
 #[test]
 fn a_pin_moved_by_its_host_does_the_work_the_energy_balance_needs() {
     let (v, a, span) = ([0.7, -0.2, 0.0], 3.0, 2.0);
-    let at = |t: f64| [v[0] * t, v[1] * t, 0.5 * a * t * t];
-    let rate = |t: f64| [v[0], v[1], a * t];
     let drift = |dt: f64| {
-        let moving = CoupledMotion::Interval(MotionInterval {
-            t0: 0.0,
-            duration: span,
-            start: at(0.0),
-            end: at(span),
-            rates: Some((rate(0.0), rate(span))),
-        });
-        let system = pendulum_system([0.0; 3], moving, v, G, 30.0);
+        let system = pendulum_system([0.0; 3], accelerating(v, a, span), v, G, 30.0);
         let settings = StepSettings {
             time_step: dt,
             time_scheme: TimeScheme::Galerkin,

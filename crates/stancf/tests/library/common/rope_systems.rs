@@ -162,3 +162,24 @@ pub fn independent_ropes(which: &[usize], of: usize, elements: usize) -> System 
     }
     System::new(lines, points, G).unwrap()
 }
+
+/// [`three_to_a_point`] of 4 elements per line, straight and at rest, in
+/// Galerkin steps of `dt`, Newton to 1e-12.
+pub fn galerkin_three_to_a_point(dt: f64) -> stancf::system::SystemSimulation {
+    let system = three_to_a_point(4);
+    let states = system
+        .lines()
+        .iter()
+        .map(|l| l.model.initial_state())
+        .collect();
+    let settings = StepSettings {
+        time_step: dt,
+        time_scheme: stancf::TimeScheme::Galerkin,
+        newton: stancf::NewtonSettings {
+            tolerance: 1e-12,
+            ..stancf::NewtonSettings::default()
+        },
+        ..StepSettings::default()
+    };
+    stancf::system::SystemSimulation::new(system, states, settings).expect("system")
+}
