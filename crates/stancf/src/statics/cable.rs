@@ -136,19 +136,25 @@ impl CableStatics {
         w
     }
 
-    /// Each multiplier's unknown and the equilibrium row of the coordinate
-    /// it holds (a direction hold's: the row of its node's first r_x
-    /// coordinate), for the increment norm's weights
+    /// Each multiplier's unknown and the equilibrium rows of its node's
+    /// three coordinates of the kind it holds (r for a position's, r_x for
+    /// a direction hold's), for the increment norm's weights
     /// (`StaticNewton::set_weight_rows`).
-    pub fn multiplier_rows(&self) -> Vec<(usize, usize)> {
+    pub fn multiplier_rows(&self) -> Vec<(usize, [usize; 3])> {
+        let dpn = self.layout.dpn;
+        let rows = |node: usize, slot: usize, own: usize| -> [usize; 3] {
+            std::array::from_fn(|c| {
+                let g = coordinate(dpn, node, slot, c);
+                self.layout.row_at(0, g).unwrap_or(own)
+            })
+        };
         let mut out = Vec::new();
         for g in 0..self.model.dofs() {
             if let (Some(m), Some(r)) = (self.layout.multiplier_at(0, g), self.layout.row_at(0, g))
             {
-                out.push((m, r));
+                out.push((m, rows(g / dpn, (g % dpn) / 3, r)));
             }
         }
-        let dpn = self.layout.dpn;
         for (h, hold) in self.model.constraints.directions.iter().enumerate() {
             let rx = coordinate(dpn, hold.node, SLOT_R_X, 0);
             let Some(r) = self.layout.row_at(0, rx) else {
@@ -156,7 +162,7 @@ impl CableStatics {
             };
             for k in 0..2 {
                 if let Some(m) = self.layout.hold_multiplier(h, 0, k) {
-                    out.push((m, r));
+                    out.push((m, rows(hold.node, SLOT_R_X, r)));
                 }
             }
         }

@@ -45,6 +45,12 @@ impl SystemSimulation {
         self.step_halvings
     }
 
+    /// [`Self::step`] without its failures' check (the run's watched
+    /// step checks the energy first, `run.rs`).
+    pub(super) fn step_before_failures(&mut self) -> Result<StepReport, SolverError> {
+        self.step_halving(self.step_halvings)
+    }
+
     /// One step of the current length, in halves where Newton fails, up
     /// to `halvings` levels. The step length is the same after as before.
     /// The report counts the Newton iterations of the parts that

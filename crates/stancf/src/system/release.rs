@@ -134,7 +134,7 @@ impl SystemSimulation {
 
     /// Releases the ends of every failure due at the end of the step
     /// `report` (see [`Self::set_failures`]).
-    pub(super) fn trigger_failures(&mut self, report: &StepReport) -> Result<(), SolverError> {
+    pub(crate) fn trigger_failures(&mut self, report: &StepReport) -> Result<(), SolverError> {
         let mut k = 0;
         while k < self.failures.pending.len() {
             let (index, failure) = self.failures.pending[k].clone();
@@ -177,6 +177,9 @@ impl SystemSimulation {
                 trigger,
             });
             self.forget_released(failure.point, &failure.lines);
+            // Failures before this one may have been dropped (their lines
+            // released here): scan again from the first.
+            k = 0;
         }
         Ok(())
     }
@@ -304,11 +307,7 @@ fn check_release(
             .constraints
             .list
             .iter()
-            .any(|c| c.node == node && !matches!(c.kind, ConstraintKind::Attached { .. }))
-            || topology
-                .clamps
-                .iter()
-                .any(|c| c.line == li && c.node == node);
+            .any(|c| c.node == node && !matches!(c.kind, ConstraintKind::Attached { .. }));
         if held {
             return Err(ModelError::invalid(
                 "lines",
@@ -316,6 +315,19 @@ fn check_release(
                     "line {li}'s end {} at point {point} is clamped in a direction: releasing a \
                      clamped end is not built",
                     ["A", "B"][end]
+                ),
+            ));
+        }
+        // A clamp at a free body's point is a frame in the line's model
+        // that the steps turn with the body; a line rebuilt without its
+        // released end's constraint would start it again from the given
+        // direction.
+        if topology.clamps.iter().any(|c| c.line == li) {
+            return Err(ModelError::invalid(
+                "lines",
+                format!(
+                    "line {li} is clamped at a free body's point: releasing a line clamped to a \
+                     body is not built"
                 ),
             ));
         }

@@ -70,22 +70,36 @@ where
     Ok(true)
 }
 
-/// One step of the run through the energy watchdog. A Galerkin step
-/// whose balance jumps is taken again in halves, each watched, as a step
-/// Newton fails is (up to `halvings` levels, §11.13): the Galerkin step
-/// is stable at any length, so its energy can only jump where Newton
-/// converged to a root that is not the motion's (a rope on the bed at a
-/// long step, its contact's kink between the iterates), and a shorter step
-/// starts nearer the motion's. A P2 step above its stable step is the
-/// step the scenario chose and is reported as it is.
+/// One step of the run through the energy watchdog, then the line
+/// failures due at its end (§11.16; after the watch, so that a step
+/// undone sets none off). A Galerkin step whose balance jumps is taken
+/// again in halves, each watched, as a step Newton fails is (up to
+/// `halvings` levels, §11.13): the Galerkin step is stable at any length,
+/// so its energy can only jump where Newton converged to a root that is
+/// not the motion's (a rope on the bed at a long step, its contact's kink
+/// between the iterates), and a shorter step starts nearer the motion's.
+/// A P2 step above its stable step is the step the scenario chose and is
+/// reported as it is.
 pub(crate) fn watched_step(
+    sim: &mut SystemSimulation,
+    watch: &mut EnergyWatch,
+    halvings: u32,
+) -> Result<StepReport, SolverError> {
+    let report = watched_part(sim, watch, halvings)?;
+    sim.trigger_failures(&report)?;
+    Ok(report)
+}
+
+/// [`watched_step`] without the failures' check (a part of a halved
+/// step).
+fn watched_part(
     sim: &mut SystemSimulation,
     watch: &mut EnergyWatch,
     halvings: u32,
 ) -> Result<StepReport, SolverError> {
     let retry = halvings > 0 && sim.settings.time_scheme.carries_momentum();
     let saved = retry.then(|| (sim.undo_point(), watch.clone()));
-    let report = sim.step()?;
+    let report = sim.step_before_failures()?;
     let Err(e) = watched(sim, &report, watch) else {
         return Ok(report);
     };
@@ -98,8 +112,8 @@ pub(crate) fn watched_step(
     *watch = watch_before;
     let dt = sim.time_step();
     sim.set_time_step(0.5 * dt);
-    let halves = watched_step(sim, watch, halvings - 1)
-        .and_then(|a| watched_step(sim, watch, halvings - 1).map(|b| (a, b)));
+    let halves = watched_part(sim, watch, halvings - 1)
+        .and_then(|a| watched_part(sim, watch, halvings - 1).map(|b| (a, b)));
     sim.set_time_step(dt);
     let (a, mut b) = halves?;
     b.newton.iterations += a.newton.iterations + report.newton.iterations;

@@ -13,11 +13,11 @@ use crate::model::{coordinate, SLOT_R};
 impl SystemEquations {
     /// Each line's multipliers and the rows of the coordinates they hold,
     /// in the system's numbering (the increment norm's weights, §6.9).
-    pub(super) fn multiplier_rows(&self) -> Vec<(usize, usize)> {
+    pub(super) fn multiplier_rows(&self) -> Vec<(usize, [usize; 3])> {
         let mut rows = Vec::new();
         for (line, map) in self.lines.iter().zip(&self.layout.maps) {
             let global = line.multiplier_rows().into_iter();
-            rows.extend(global.map(|(m, r)| (map.global[m], map.global[r])));
+            rows.extend(global.map(|(m, r)| (map.global[m], r.map(|r| map.global[r]))));
         }
         rows
     }

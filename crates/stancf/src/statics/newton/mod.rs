@@ -42,10 +42,10 @@ pub(crate) struct StaticNewton<F: Factorization> {
     /// Weights of the unknowns in the increment norm (0: take the weight
     /// of row `weight_row[i]`).
     unknown_weight: Vec<f64>,
-    /// The row whose weight an unknown of weight 0 takes: its own index,
-    /// but for a multiplier the equilibrium row of the coordinate it
-    /// holds ([`Self::set_weight_rows`]).
-    weight_row: Vec<usize>,
+    /// The rows whose smallest weight an unknown of weight 0 takes: its
+    /// own index, but for a multiplier the equilibrium rows of the node's
+    /// coordinates of the kind it holds ([`Self::set_weight_rows`]).
+    weight_rows: Vec<[usize; 3]>,
     lu: F,
     jacobian: F::Matrix,
     settings: StaticSettings,
@@ -77,7 +77,7 @@ impl<F: Factorization> StaticNewton<F> {
             dx: vec![0.0; n],
             row_weight: vec![1.0; n],
             unknown_weight,
-            weight_row: (0..n).collect(),
+            weight_rows: (0..n).map(|i| [i; 3]).collect(),
             lu,
             jacobian,
             settings,
@@ -119,19 +119,24 @@ impl<F: Factorization> StaticNewton<F> {
 
     /// The largest weighted increment: a coordinate's over its length
     /// scale; a multiplier's (a force) as the displacement it would
-    /// cause at the coordinate it holds, its weight that coordinate's
-    /// equilibrium row's, s / |K_rr| (docs/method.md §6.9). Weighted by its
-    /// own constraint row's s instead, a multiplier would move by at most
-    /// the trust radius times L newtons per iteration, and a stiff line
-    /// seeded without its tension would creep to it for thousands of
-    /// iterations.
+    /// cause at the node it holds, its weight the smallest of that node's
+    /// equilibrium rows' of the coordinates' kind, s / |K_rr|, the stiffest
+    /// direction's (docs/method.md §6.9): not a soft direction's, whose
+    /// near-zero diagonal (a slack line's bending) would make any force
+    /// huge. Weighted by its own constraint row's s instead, a multiplier
+    /// would move by at most the trust radius times L newtons per
+    /// iteration, and a stiff line seeded without its tension would creep
+    /// to it for thousands of iterations.
     fn increment_norm(&self) -> f64 {
         let mut m = 0.0f64;
         for (i, d) in self.dx.iter().enumerate() {
             let w = if self.unknown_weight[i] > 0.0 {
                 self.unknown_weight[i]
             } else {
-                self.row_weight[self.weight_row[i]]
+                let rows = self.weight_rows[i];
+                rows.iter()
+                    .map(|&r| self.row_weight[r])
+                    .fold(f64::INFINITY, f64::min)
             };
             m = m.max((d * w).abs());
         }
@@ -139,10 +144,11 @@ impl<F: Factorization> StaticNewton<F> {
     }
 
     /// The multipliers' weight rows: (multiplier unknown, the equilibrium
-    /// row of the coordinate it holds) (see [`Self::increment_norm`]).
-    pub fn set_weight_rows(&mut self, pairs: &[(usize, usize)]) {
-        for &(m, r) in pairs {
-            self.weight_row[m] = r;
+    /// rows of the node's coordinates it holds) (see
+    /// [`Self::increment_norm`]).
+    pub fn set_weight_rows(&mut self, pairs: &[(usize, [usize; 3])]) {
+        for &(m, rows) in pairs {
+            self.weight_rows[m] = rows;
         }
     }
 
