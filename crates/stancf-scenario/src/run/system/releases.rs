@@ -27,6 +27,10 @@ impl Reported {
         sc: &SystemScenario,
         writers: &mut SystemWriters,
     ) {
+        // Called after every step: nothing to build until something happened.
+        if sim.releases().len() == self.releases && sim.dropped_failures().len() == self.dropped {
+            return;
+        }
         let events = events(sc, sim);
         for (e, r) in events.iter().zip(sim.releases()).skip(self.releases) {
             writers.add_point(e.new_point);
