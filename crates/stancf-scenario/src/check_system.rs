@@ -144,7 +144,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         line(
             &format!("line {}", l.id),
             format!(
-                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}{}",
+                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}{}{}",
                 t.name,
                 Sig(l.length),
                 l.elements,
@@ -159,7 +159,8 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
                     ""
                 } else {
                     "; no compression (docs/method.md §2.2)"
-                }
+                },
+                crate::scenario::viv_words(t),
             ),
         );
     }

@@ -54,9 +54,9 @@ fn element_energies<const NS: usize, const ND: usize>(
         en.kinetic += 0.5 * qd.iter().zip(mq.iter()).map(|(a, b)| a * b).sum::<f64>();
         en.strain += match &el.section.visco {
             // A viscoelastic line's springs (docs/method.md §2.11).
-            Some(v) if !state.internal.is_empty() => {
-                let per = el.axial_rule_points() * v.values_per_point();
-                let internal = &state.internal[k * per..(k + 1) * per];
+            Some(_) if !state.internal.is_empty() => {
+                let per = el.axial_rule_points() * el.internal_values_per_point();
+                let (internal, _) = el.split_internal(&state.internal[k * per..(k + 1) * per]);
                 el.bending_energy(&q) + el.visco_stored_energy(&q, internal)
             }
             _ => el.strain_energy(&q),
@@ -165,6 +165,7 @@ fn visco_force(model: &Model, state: &State, k: usize, xi: f64) -> Option<f64> {
         return None;
     }
     let internal = model.element_internal(&state.internal, k);
+    let (internal, _) = crate::with_elements!(&model.mesh, els => els[k].split_internal(internal));
     crate::with_elements!(&model.mesh, els => {
         els[k].visco_axial_force(xi, &state.e[o..], &state.v[o..], internal)
     })
@@ -241,7 +242,7 @@ pub fn node_axial_forces(model: &Model, state: &State) -> Vec<f64> {
 /// its internal state, docs/method.md §2.11): the law's N (V1) at the
 /// node, the mean of its elements' values there.
 pub fn node_axial_force(model: &Model, state: &State, k: usize) -> f64 {
-    if model.has_internal_state() && !state.internal.is_empty() {
+    if model.viscoelastic().is_some() && !state.internal.is_empty() {
         let elements = model.cable.elements;
         let sides = [(k.checked_sub(1), 1.0), ((k < elements).then_some(k), 0.0)];
         let values: Vec<f64> = sides

@@ -53,6 +53,7 @@ mod system_summary;
 mod systems;
 mod time_loop;
 mod viscoelastic;
+mod viv;
 mod watchdog;
 mod water;
 mod water_refusals;

@@ -89,8 +89,8 @@ pub struct Deck {
 }
 
 /// A row of `LINE TYPES`: `TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx
-/// CaAx`, optionally followed by `Cl` or `Cl dF cF` (VIV), accepted only
-/// with `Cl` = 0 (VIV off).
+/// CaAx`, optionally followed by `Cl` or `Cl dF cF` (VIV, docs/method.md
+/// §12.7; `Cl` = 0 is VIV off).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LineType {
     /// 1-based line number in the file.
@@ -133,6 +133,28 @@ pub struct LineType {
     pub cd_axial: f64,
     /// `CaAx`: tangential added-mass coefficient.
     pub ca_axial: f64,
+    /// `Cl dF cF`: MoorDyn's VIV lift (docs/method.md §12.7); None where
+    /// the columns are absent or `Cl` = 0.
+    pub viv: Option<VivColumns>,
+}
+
+/// A LINE TYPES row's VIV columns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VivColumns {
+    /// `Cl`: the cross-flow lift coefficient (> 0).
+    pub cl: f64,
+    /// `dF`: the half-width of the synchronisation range.
+    pub range: f64,
+    /// `cF`: its centre.
+    pub centre: f64,
+}
+
+impl VivColumns {
+    /// MoorDyn's dF and cF where a row gives Cl alone.
+    pub const RANGE: f64 = 0.08;
+    pub const CENTRE: f64 = 0.18;
+    /// MoorDyn's running mean squares span n_m = 500 of its steps.
+    pub const MEAN_SQUARE_STEPS: f64 = 500.0;
 }
 
 impl LineType {

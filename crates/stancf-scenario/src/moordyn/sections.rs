@@ -139,9 +139,9 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
     }
     columns(row, 10, "LINE TYPES", LINE_TYPE_COLUMNS)?;
     let name = row.words[0];
-    match row.words.len() {
-        10 => {}
-        11 | 13 => viv_off(row, name)?,
+    let viv = match row.words.len() {
+        10 => None,
+        11 | 13 => viv_columns(row, name)?,
         n => {
             return Err(DeckError::at(
                 row.line,
@@ -152,7 +152,7 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
                 ),
             ))
         }
-    }
+    };
     let what = |col: &str| format!("{col} of line type \"{name}\"");
     // EA as a file name: MoorDyn's nonlinear curve (read by the scenario,
     // which knows where the deck is).
@@ -200,23 +200,37 @@ fn line_type(row: &Row) -> Result<LineType, DeckError> {
         ca_normal: non_negative(row, 7, &what("Ca"), false)?,
         cd_axial: non_negative(row, 8, &what("CdAx"), false)?,
         ca_axial: non_negative(row, 9, &what("CaAx"), false)?,
+        viv,
     })
 }
 
-/// The optional VIV columns are accepted only with `Cl` = 0, which
-/// MoorDyn reads as VIV off.
-fn viv_off(row: &Row, name: &str) -> Result<(), DeckError> {
-    let cl = number(row, 10, &format!("Cl of line type \"{name}\""))?;
-    if cl != 0.0 {
+/// The optional VIV columns `Cl` or `Cl dF cF` (docs/method.md §12.7):
+/// None where `Cl` = 0 (MoorDyn's VIV off); dF and cF default to
+/// MoorDyn's 0.08 and 0.18.
+fn viv_columns(row: &Row, name: &str) -> Result<Option<super::VivColumns>, DeckError> {
+    let what = |col: &str| format!("{col} of line type \"{name}\"");
+    let cl = non_negative(row, 10, &what("Cl"), false)?;
+    if cl == 0.0 {
+        return Ok(None);
+    }
+    let (range, centre) = if row.words.len() == 13 {
+        (
+            non_negative(row, 11, &what("dF"), false)?,
+            non_negative(row, 12, &what("cF"), false)?,
+        )
+    } else {
+        (super::VivColumns::RANGE, super::VivColumns::CENTRE)
+    };
+    if centre <= 0.0 || range >= centre {
         return Err(DeckError::at(
             row.line,
             format!(
-                "line type \"{name}\" has the VIV lift coefficient Cl = {cl}; vortex-induced \
-                 vibration is not supported (Cl = 0 turns it off)"
+                "line type \"{name}\": the VIV synchronisation range is cF = {centre} +- dF = \
+                 {range}; it needs cF > 0 and dF < cF (the shedding frequency stays positive)"
             ),
         ));
     }
-    Ok(())
+    Ok(Some(super::VivColumns { cl, range, centre }))
 }
 
 /// BA and EI must be plain numbers, and EA a number or a curve file's

@@ -78,13 +78,16 @@ fn check_deck_law(
             "a viscoelastic EA needs a constant static EA, not a curve file".into(),
         ));
     }
-    super::visco_types::check_law(&deck_line_type(t, None)).map_err(|(_, m)| at(m))
+    super::visco_types::check_law(&deck_line_type(t, None, 0.0)).map_err(|(_, m)| at(m))
 }
 
-/// A LINE TYPES row as a line type.
+/// A LINE TYPES row as a line type; `dtm` is the deck's MoorDyn step,
+/// over 500 of which MoorDyn takes a VIV line's running mean squares
+/// (docs/method.md §12.7).
 pub(super) fn deck_line_type(
     t: &crate::moordyn::LineType,
     ea_curve: Option<std::sync::Arc<stancf::element::AxialCurve>>,
+    dtm: f64,
 ) -> LineType {
     LineType {
         name: t.name.clone(),
@@ -104,5 +107,11 @@ pub(super) fn deck_line_type(
         // when l_str <= l); the static solve keeps it (docs/method.md
         // §2.2, (M4a)).
         compression: false,
+        viv: t.viv.map(|v| stancf::element::Viv {
+            lift: v.cl,
+            centre: v.centre,
+            range: v.range,
+            averaging_time: crate::moordyn::VivColumns::MEAN_SQUARE_STEPS * dtm,
+        }),
     }
 }

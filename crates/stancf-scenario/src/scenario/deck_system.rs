@@ -87,6 +87,12 @@ pub(super) fn deck_system(
     sc.notes
         .extend(super::overstretch::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    for note in super::viv_types::viv_notes(&sc) {
+        // The deck's own notes may hold it already.
+        if !sc.notes.contains(&note) {
+            sc.notes.push(note);
+        }
+    }
     sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;

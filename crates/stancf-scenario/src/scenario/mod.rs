@@ -48,6 +48,7 @@ mod system;
 mod system_model;
 mod system_parts;
 mod visco_types;
+mod viv_types;
 mod water;
 
 pub use analysis::InitialShape;
@@ -61,6 +62,7 @@ pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
 pub use rod_parts::{RodHolder, RodTypeValues, SystemRod};
 pub use system_model::EI_FACTOR;
+pub use viv_types::viv_words;
 pub use system_parts::{
     LineType, MoorDynOutFile, OutputChannel, PointType, SystemFailure, SystemLine, SystemPoint,
     SystemScenario,

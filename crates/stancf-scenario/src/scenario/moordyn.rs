@@ -142,7 +142,7 @@ pub(super) fn deck_scenario(
             .line_types
             .iter()
             .zip(curves)
-            .map(|(t, c)| super::deck_line_types::deck_line_type(t, c))
+            .map(|(t, c)| super::deck_line_types::deck_line_type(t, c, deck.time_step().unwrap_or(0.0)))
             .collect(),
         points,
         bodies,
@@ -163,6 +163,7 @@ pub(super) fn deck_scenario(
         names,
     };
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    sc.notes.extend(super::viv_types::viv_notes(&sc));
     sc.notes
         .extend(super::overstretch::overstretched_notes(&sc));
     Ok(sc)

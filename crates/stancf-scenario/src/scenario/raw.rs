@@ -173,6 +173,18 @@ pub(super) struct RawLineType {
     pub(super) cdax: Option<f64>,
     pub(super) caax: Option<f64>,
     pub(super) compression: Option<bool>,
+    pub(super) viv: Option<RawViv>,
+}
+
+/// `viv = { cl = ..., df = 0.08, cf = 0.18, averaging_time = ... }` of a
+/// line type (docs/method.md §12.7).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawViv {
+    pub(super) cl: Option<f64>,
+    pub(super) df: Option<f64>,
+    pub(super) cf: Option<f64>,
+    pub(super) averaging_time: Option<f64>,
 }
 
 /// `syrope = { curve = [[strain, tension], ...], working_curve = "linear",

@@ -112,7 +112,9 @@ pub(super) fn system_scenario(
     sc.notes
         .extend(super::overstretch::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
+    sc.notes.extend(super::viv_types::viv_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
+    super::viv_types::refuse_viv_in_air(ctx.file, &sc)?;
     Ok(sc)
 }
 
@@ -159,6 +161,7 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             cd_axial: optional("cdax", r.cdax)?,
             ca_axial: optional("caax", r.caax)?,
             compression: r.compression.unwrap_or(true),
+            viv: super::viv_types::toml_viv(ctx, &key("viv"), r.viv.as_ref())?,
             name,
         });
         let t = out.last().expect("pushed");

@@ -285,6 +285,10 @@ impl SystemScenario {
         if let Some(law) = law {
             model = model.with_viscoelastic(law)?;
         }
+        // The VIV lift acts in water (docs/method.md §12.7), in dynamics.
+        if let (Some(viv), Some(_)) = (&t.viv, water) {
+            model = model.with_viv(viv.clone())?;
+        }
         Ok(if t.compression {
             model
         } else {

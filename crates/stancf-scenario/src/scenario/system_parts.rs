@@ -52,6 +52,10 @@ pub struct LineType {
     /// true); chains and ropes do not (docs/method.md §2.2, (M4a)), nor
     /// do a MoorDyn deck's lines.
     pub compression: bool,
+    /// MoorDyn's VIV lift (docs/method.md §12.7): `viv = { cl, df, cf,
+    /// averaging_time }`, a deck's `Cl dF cF` (its averaging time 500
+    /// dtM). None: no VIV.
+    pub viv: Option<stancf::element::Viv>,
 }
 
 impl LineType {

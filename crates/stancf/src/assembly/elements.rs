@@ -142,9 +142,17 @@ impl StepProblem<'_> {
                     scratch.damping_work += d.damping_work;
                     scratch.seabed_work += d.seabed_work;
                     scratch.water_work += d.water_work;
-                    if d.visco.active {
-                        let per = d.visco.end.len();
-                        scratch.internal_end[k * per..(k + 1) * per].copy_from_slice(&d.visco.end);
+                    if d.visco.active || d.viv.active {
+                        // The element's internal state at the slab's end:
+                        // the viscoelastic law's, then the VIV's.
+                        let (pv, pw) = (d.visco.end.len() * usize::from(d.visco.active), d.viv.end.len() * usize::from(d.viv.active));
+                        let at = k * (pv + pw);
+                        if d.visco.active {
+                            scratch.internal_end[at..at + pv].copy_from_slice(&d.visco.end);
+                        }
+                        if d.viv.active {
+                            scratch.internal_end[at + pv..at + pv + pw].copy_from_slice(&d.viv.end);
+                        }
                     }
                     let at = (j * elements.len() + k) * per_element;
                     let targets = &all_targets[at..at + per_element];

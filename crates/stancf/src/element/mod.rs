@@ -39,6 +39,9 @@
 //! | `added_mass` | the entrained water's kinetic energy, its momentum and derivatives | §12.5 |
 //! | `viscoelastic` | the viscoelastic rope's law and its collocation over a slab | §2.11 |
 //! | `visco_slab` | its axial forces in the slab derivatives, their Jacobian | §2.11 |
+//! | `viv` | MoorDyn's VIV law at a point: shedding phase rate and lift | §12.7 |
+//! | `viv_slab` | the phase collocated over a slab, the lift's work and Jacobian | §12.7 |
+//! | `dual` | forward-mode dual numbers for the VIV law's derivatives | §12.7 |
 //! | `slab` | time slabs and the quadrature of the action, gradient, Hessian | §3.1-3.2 |
 
 mod added_mass;
@@ -54,7 +57,10 @@ mod strain;
 mod syrope;
 mod visco_slab;
 mod viscoelastic;
+mod viv;
+mod viv_slab;
 mod water;
+mod dual;
 
 pub use added_mass::AddedMassDerivatives;
 pub use axial_curve::AxialCurve;
@@ -67,6 +73,8 @@ pub use strain::{
 pub use syrope::{Syrope, WorkingCurveForm};
 pub use viscoelastic::ViscoDerivatives;
 pub use viscoelastic::{DynamicStiffness, Viscoelastic};
+pub use viv::{Viv, VIV_VALUES};
+pub use viv_slab::VivDerivatives;
 
 use crate::quadrature::GaussRule;
 use crate::shape::SpatialShape;
@@ -124,6 +132,9 @@ pub struct Section {
     /// every axial point; EA is its static stiffness (statics). None:
     /// elastic.
     pub visco: Option<Viscoelastic>,
+    /// MoorDyn's VIV lift (docs/method.md §12.7, (V20)-(V26)), acting
+    /// where the line is in water; None: no VIV.
+    pub viv: Option<Viv>,
 }
 
 /// Which strain and curvature the elastic energy uses.

@@ -94,15 +94,21 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             out.g_at_points.resize(np, [[0.0; ND]; ND]);
         }
         out.visco.active = false;
+        out.viv.active = false;
+        let rest;
+        let history = if history.is_empty() && self.internal_values_per_point() > 0 {
+            rest = self.rest_internal(&y[0], 0.0, self.length);
+            &rest[..]
+        } else {
+            history
+        };
+        let (visco_start, viv_start) = self.split_internal(history);
         if let Some(visco) = &self.section.visco {
-            let rest;
-            let start = if history.is_empty() {
-                rest = self.rest_internal_state(&y[0]);
-                &rest[..]
-            } else {
-                history
-            };
-            self.slab_viscoelastic(visco, slab, y, start, with_hessian, out);
+            self.slab_viscoelastic(visco, slab, y, visco_start, with_hessian, out);
+        }
+        if let (Some(viv), Some(water)) = (&self.section.viv, loads.water) {
+            let start = (viv_start, loads.time);
+            self.slab_viv(viv, water, slab, y, start, with_hessian, out);
         }
         let ns = self.axial_points.len();
         let mut du = [0.0; ND];
@@ -142,6 +148,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 let when = (loads.time + tp.offset, tp.w_dt);
                 let g = &loads.gravity;
                 self.slab_water_at_point(water, when, g, (&q, &qdot), at, &mut fq, out);
+            }
+            if out.viv.active {
+                self.add_viv_lift(&out.viv, gi, &mut fq);
             }
             if let Some(am) = &added {
                 // (W28): dT_a/dqdot joins M qdot, dT_a/dq the forces.
@@ -195,6 +204,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
         if derivs.visco.active {
             self.add_visco_block(slab, derivs, m, n, out);
+        }
+        if derivs.viv.active {
+            self.add_viv_block(&derivs.viv, m, n, out);
         }
     }
 
@@ -274,6 +286,9 @@ pub struct SlabDerivatives<const ND: usize> {
     /// A viscoelastic line's axial forces and their coupling of the time
     /// points (docs/method.md §2.11).
     pub visco: super::viscoelastic::ViscoDerivatives,
+    /// A line's VIV lift and its coupling of the time points
+    /// (docs/method.md §12.7).
+    pub viv: super::viv_slab::VivDerivatives,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -293,6 +308,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             g_at_points: Vec::new(),
             added_mass: super::AddedMassDerivatives::default(),
             visco: super::viscoelastic::ViscoDerivatives::default(),
+            viv: super::viv_slab::VivDerivatives::default(),
         }
     }
 }

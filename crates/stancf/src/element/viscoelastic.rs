@@ -463,7 +463,7 @@ impl Viscoelastic {
 
 /// Solves the n x n system `m x = b` by Gaussian elimination with partial
 /// pivoting (n at most [`MAX_NODES`]).
-fn solve_small(
+pub(super) fn solve_small(
     n: usize,
     m: &[[f64; MAX_NODES]; MAX_NODES],
     b: &[f64; MAX_NODES],

@@ -7,7 +7,7 @@
 //! stores.
 
 use super::{coordinate, gather, Mesh, Model, State, SLOT_R};
-use crate::element::Viscoelastic;
+use crate::element::{Viscoelastic, Viv};
 use crate::error::ModelError;
 
 impl Model {
@@ -71,33 +71,59 @@ impl Model {
         crate::with_elements!(&self.mesh, els => els.first().and_then(|e| e.section.visco.as_ref()))
     }
 
-    /// Whether a state of this model carries an internal state.
-    pub fn has_internal_state(&self) -> bool {
-        self.viscoelastic().is_some()
+    /// The model whose lines carry MoorDyn's VIV lift `viv`
+    /// (docs/method.md §12.7), acting where the line is in water.
+    pub fn with_viv(mut self, viv: Viv) -> Result<Self, ModelError> {
+        viv.check("viv")?;
+        match &mut self.mesh {
+            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.viv = Some(viv.clone())),
+            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.viv = Some(viv.clone())),
+        }
+        Ok(self)
     }
 
-    /// The internal state's length: one value per point of every
-    /// element's axial rule (0 without a viscoelastic law).
+    /// The line's VIV law, if it has one.
+    pub fn viv(&self) -> Option<&Viv> {
+        crate::with_elements!(&self.mesh, els => els.first().and_then(|e| e.section.viv.as_ref()))
+    }
+
+    /// Whether a state of this model carries an internal state (a
+    /// viscoelastic law's strains, a VIV's phases).
+    pub fn has_internal_state(&self) -> bool {
+        self.internal_values_per_point() > 0
+    }
+
+    /// The internal state's values per point of the axial rule: the
+    /// viscoelastic law's, then the VIV's (phi, A^2, B^2).
+    fn internal_values_per_point(&self) -> usize {
+        crate::with_elements!(&self.mesh, els => els.first().map_or(0, |e| e.internal_values_per_point()))
+    }
+
+    /// The internal state's length: its values at every point of every
+    /// element's axial rule (0 without a viscoelastic law or VIV).
     pub fn internal_state_len(&self) -> usize {
-        if !self.has_internal_state() {
-            return 0;
-        }
-        let per = self
-            .viscoelastic()
-            .map_or(1, Viscoelastic::values_per_point);
+        let per = self.internal_values_per_point();
         crate::with_elements!(&self.mesh, els => els.iter().map(|e| e.axial_rule_points() * per).sum())
     }
 
     /// The internal state at rest at positions `e`: every axial point's
-    /// eps1 where the law's rate vanishes, so the line carries EA eps
-    /// (empty without a viscoelastic law).
+    /// eps1 where the law's rate vanishes, so the line carries EA eps,
+    /// and the VIV's phases spread over 0..2 pi along the line with no
+    /// mean squares (empty without either).
     pub fn rest_internal_state(&self, e: &[f64]) -> Vec<f64> {
         let dpn = self.dofs_per_node();
-        crate::with_elements!(&self.mesh, els => els
-            .iter()
-            .enumerate()
-            .flat_map(|(k, el)| el.rest_internal_state(&gather(e, coordinate(dpn, k, SLOT_R, 0))))
-            .collect())
+        let length = self.cable.length;
+        crate::with_elements!(&self.mesh, els => {
+            let mut x0 = 0.0;
+            els.iter()
+                .enumerate()
+                .flat_map(|(k, el)| {
+                    let rest = el.rest_internal(&gather(e, coordinate(dpn, k, SLOT_R, 0)), x0, length);
+                    x0 += el.length;
+                    rest
+                })
+                .collect()
+        })
     }
 
     /// Element k's share of an internal state.
@@ -105,10 +131,8 @@ impl Model {
         if internal.is_empty() {
             return internal;
         }
-        let values = self
-            .viscoelastic()
-            .map_or(1, Viscoelastic::values_per_point);
-        let per = crate::with_elements!(&self.mesh, els => els[0].axial_rule_points()) * values;
+        let per = crate::with_elements!(&self.mesh, els => els[0].axial_rule_points())
+            * self.internal_values_per_point();
         &internal[k * per..(k + 1) * per]
     }
 
@@ -125,7 +149,8 @@ impl Model {
             .enumerate()
             .map(|(k, el)| {
                 let q = gather(&state.e, coordinate(dpn, k, SLOT_R, 0));
-                el.visco_stored_energy(&q, self.element_internal(&state.internal, k))
+                let (visco, _) = el.split_internal(self.element_internal(&state.internal, k));
+                el.visco_stored_energy(&q, visco)
             })
             .sum())
     }
@@ -140,11 +165,11 @@ impl Model {
         Err(ModelError::invalid(
             "state.internal",
             format!(
-                "the internal state has {} values; this line has {want} (one per point of each \
-                 element's axial rule{})",
+                "the internal state has {} values; this line has {want} (its values at each point of \
+                 each element's axial rule{})",
                 internal.len(),
                 if want == 0 {
-                    ", and no viscoelastic law"
+                    ", and no viscoelastic law or VIV"
                 } else {
                     ""
                 }

@@ -56,6 +56,7 @@ impl Material {
             tension_only: false,
             curve: None,
             visco: None,
+            viv: None,
         }
     }
 

@@ -52,5 +52,6 @@ mod system_run;
 mod system_statics;
 mod systems;
 mod viscoelastic;
+mod viv;
 mod watchdog;
 mod water;

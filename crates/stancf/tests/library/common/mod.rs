@@ -63,6 +63,7 @@ pub fn section() -> Section {
         tension_only: false,
         curve: None,
         visco: None,
+        viv: None,
     }
 }
 
