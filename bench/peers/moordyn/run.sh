@@ -14,6 +14,8 @@
 # decks_check.py (every other third-party deck: both codes' static
 # equilibria, out/decks_check.{csv,md}); `--visco-check` runs
 # visco_check.py (viscoelastic lines driven against MoorDyn, seconds);
+# `--viv-check` runs viv_check.py (MoorDyn's VIV riser in both codes and
+# the published frequency, out/viv_check.md, minutes);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -30,6 +32,9 @@ if [ "${1:-}" = "--added-mass-check" ]; then
 fi
 if [ "${1:-}" = "--visco-check" ]; then
   exec env PYTHONWARNINGS=ignore "$venv/bin/python" visco_check.py
+fi
+if [ "${1:-}" = "--viv-check" ]; then
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" viv_check.py
 fi
 if [ "${1:-}" = "--decks-check" ]; then
   shift

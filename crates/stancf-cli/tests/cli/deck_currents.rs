@@ -170,3 +170,50 @@ fn a_current_that_grows_in_time_is_its_first_profile_in_statics_and_then_grows()
         "at 1 s: {g} N against the steady current's {s} N"
     );
 }
+
+/// MoorDyn-F's water kinematics file with `WaveKinMod` `wave_mode` and
+/// `CurrentMod` 1 with the rows `current_rows`.
+fn waterkin(wave_mode: u8, current_rows: &str) -> String {
+    format!(
+        "MoorDyn Waves and Currents input file\nnotes\n--- WAVES ---\n{wave_mode} WaveKinMod\n\
+         \"\" WaveKinFile\n0.5 dtWave\n0 WaveDir\n2 - X type\n-24, 150, 100 - X\n2 - Y type\n\
+         -100, 100, 5 - Y\n2 - Z type\n-600, 0, 60 - Z\n--- CURRENT ---\n1 CurrentMod\n\
+         z-depth x-current y-current\n(m) (m/s) (m/s)\n{current_rows}--- need this line ---\n"
+    )
+}
+
+/// MoorDyn-F's water kinematics file (the `WaterKin` option, as OpenFAST's
+/// md_VIV gives its current) with no waves and `CurrentMod` 1: its rows
+/// `z ux uy` (here from the surface down, which MoorDyn-F turns round)
+/// are the steady profile of `Currents 1`, and the static and dynamic
+/// tensions are the same to the bit.
+#[test]
+fn a_moordyn_f_waterkin_files_current_profile_is_the_same_current_as_currents_1() {
+    let steady = scratch("deck-current-1-again");
+    std::fs::write(steady.join("deck.txt"), deck(1)).unwrap();
+    std::fs::write(steady.join("current_profile.txt"), STEADY).unwrap();
+    let d = scratch("deck-waterkin");
+    let with_file = deck(0).replace("0         Currents", "\"WaterKin.dat\" WaterKin");
+    std::fs::write(d.join("deck.txt"), with_file).unwrap();
+    std::fs::write(
+        d.join("WaterKin.dat"),
+        waterkin(0, "0 0.9 0\n-20 0.6 0.2\n-50 0.3 0\n"),
+    )
+    .unwrap();
+    let (so, se) = text(&stancf(&["check", d.join("deck.txt").to_str().unwrap()]));
+    assert!(
+        so.contains("no waves, a steady current profile of 3 rows"),
+        "{so}{se}"
+    );
+    for dynamic in [false, true] {
+        assert_eq!(tensions(&d, dynamic), tensions(&steady, dynamic), "dynamic {dynamic}");
+    }
+    // A wave grid is refused naming the file's line.
+    std::fs::write(d.join("WaterKin.dat"), waterkin(1, "0 0.9 0\n")).unwrap();
+    refused_by_check_and_run(
+        &d.join("deck.txt"),
+        &d.join("never"),
+        &["WaterKin.dat", "line 4: WaveKinMod 1", "[water.waves]"],
+        &[],
+    );
+}

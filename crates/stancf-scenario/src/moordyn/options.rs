@@ -50,6 +50,10 @@ pub enum SupportedOption {
     /// heights in the file it names (the option's value is the file's
     /// path, read by the scenario that takes the deck).
     SeafloorFile,
+    /// `WaterKin` (MoorDyn-F): the file of its water kinematics (a steady
+    /// current profile is read; its wave grids and `SEASTATE` are
+    /// refused by the scenario that reads the deck).
+    WaterKinFile,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
     /// MoorDyn ignores it.
@@ -77,6 +81,7 @@ impl SupportedOption {
             SupportedOption::AxialFriction => "mu_kA",
             SupportedOption::Courant => "CFL",
             SupportedOption::SeafloorFile => "SeafloorFile",
+            SupportedOption::WaterKinFile => "WaterKin",
         }
     }
 
@@ -128,7 +133,6 @@ enum Class {
     Known(OptionKind),
     /// Accepted and ignored only when the value is 0.
     IgnoredIfZero(&'static str),
-    Refused(&'static str),
     /// `tScheme`: accepted and unused (stancf steps with its own scheme,
     /// noted by the scenario) if MoorDyn knows the name.
     Scheme,
@@ -178,12 +182,7 @@ fn classify(lower: &str) -> Option<Class> {
         "cfl" => s(S::Courant),
         "tscheme" => Some(Class::Scheme),
         "seafloorfile" => s(S::SeafloorFile),
-        "waterkin" => Some(Class::Refused(
-            "MoorDyn-F water kinematics (waves, currents) are not supported: neither its \
-             WaterKin file nor SEASTATE (the sea of OpenFAST's SeaState module) is read; give \
-             the sea as [water.waves], [water.jonswap] and [water.current] in a scenario that \
-             takes a copy of the deck without this option",
-        )),
+        "waterkin" => s(S::WaterKinFile),
         "mu_kt" => s(S::TransverseFriction),
         "mu_ka" => s(S::AxialFriction),
         _ => None,
@@ -225,9 +224,6 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
                     format!("unknown option \"{name}\""),
                 ))
             }
-            Some(Class::Refused(why)) => {
-                return Err(DeckError::at(row.line, format!("option {name}: {why}")))
-            }
             Some(Class::IgnoredIfZero(why)) if number != Some(0.0) => {
                 return Err(DeckError::at(
                     row.line,
@@ -251,6 +247,21 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
         let value = match (kind, number) {
             (OptionKind::Supported(SupportedOption::SeafloorFile), _) => {
                 OptionValue::Text(text.to_string())
+            }
+            (OptionKind::Supported(SupportedOption::WaterKinFile), _) => {
+                let path = text.trim_matches('"');
+                if path.eq_ignore_ascii_case("seastate") {
+                    return Err(DeckError::at(
+                        row.line,
+                        format!(
+                            "option {name} is SEASTATE: the sea of OpenFAST's SeaState module \
+                             is not read; give the sea as [water.waves], [water.jonswap] and \
+                             [water.current] in a scenario that takes a copy of the deck \
+                             without this option, or a WaterKin file of a steady current"
+                        ),
+                    ));
+                }
+                OptionValue::Text(path.to_string())
             }
             (OptionKind::Supported(o), Some(v)) => supported_value(o, v, name, row.line)?,
             (OptionKind::Supported(_), None) => {

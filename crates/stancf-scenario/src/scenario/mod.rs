@@ -33,6 +33,7 @@ mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_wave_frequencies;
 mod moordyn_wave_grids;
+mod moordyn_waterkin;
 mod moordyn_waves;
 mod motions;
 pub mod names;

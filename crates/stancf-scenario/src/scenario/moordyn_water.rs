@@ -57,7 +57,10 @@ pub(super) fn deck_water_keys(
             )));
         }
     }
-    let (current, note) = deck_current(deck, file, path)?;
+    let (current, note) = match super::moordyn_waterkin::deck_waterkin(deck, file, path)? {
+        Some((current, note)) => (current, Some(note)),
+        None => deck_current(deck, file, path)?,
+    };
     let (bathymetry, bed_note) = super::moordyn_seafloor::deck_seafloor(deck, file, path)?;
     // MoorDyn's water depth with a seafloor file is the bed's mean depth,
     // whatever WtrDpth says (MoorDyn2.cpp, after the options).
