@@ -115,6 +115,42 @@ fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Res
     )))
 }
 
+/// `check`'s words on line i: its type, length, mesh, ends, bending
+/// stiffness, damping, compression and VIV.
+fn line_words(sc: &SystemScenario, system: &System, i: usize) -> String {
+    let l = &sc.lines[i];
+    let t = &sc.line_types[l.line_type];
+    let ei = sc.bending_stiffness(i);
+    let bending = if t.ei > 0.0 {
+        format!("EI {} N m^2", Sig(ei))
+    } else {
+        format!(
+            "EI = 0 taken as {} N m^2 ({:e} w L^3, docs/method.md §11.7)",
+            Sig(ei),
+            crate::scenario::EI_FACTOR
+        )
+    };
+    format!(
+        "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}{}{}",
+        t.name,
+        Sig(l.length),
+        l.elements,
+        l.element_type.name(),
+        element_sizes(&system.lines()[i].model),
+        end_name(sc, l.ends[0]),
+        clamp_words(l.clamps[0]),
+        end_name(sc, l.ends[1]),
+        clamp_words(l.clamps[1]),
+        damping_note(sc, i),
+        if t.compression {
+            ""
+        } else {
+            "; no compression (docs/method.md §2.2)"
+        },
+        crate::scenario::viv_words(t),
+    )
+}
+
 /// Validates the system of `sc` as `run` does and returns the report.
 pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
     let system = prepare(path, sc)?.system;
@@ -130,39 +166,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         ),
     );
     for (i, l) in sc.lines.iter().enumerate() {
-        let t = &sc.line_types[l.line_type];
-        let ei = sc.bending_stiffness(i);
-        let bending = if t.ei > 0.0 {
-            format!("EI {} N m^2", Sig(ei))
-        } else {
-            format!(
-                "EI = 0 taken as {} N m^2 ({:e} w L^3, docs/method.md §11.7)",
-                Sig(ei),
-                crate::scenario::EI_FACTOR
-            )
-        };
-        line(
-            &format!("line {}", l.id),
-            format!(
-                "type {}, {} m, {} {} elements ({}), ends {}{} and {}{}; {bending}{}{}{}",
-                t.name,
-                Sig(l.length),
-                l.elements,
-                l.element_type.name(),
-                element_sizes(&system.lines()[i].model),
-                end_name(sc, l.ends[0]),
-                clamp_words(l.clamps[0]),
-                end_name(sc, l.ends[1]),
-                clamp_words(l.clamps[1]),
-                damping_note(sc, i),
-                if t.compression {
-                    ""
-                } else {
-                    "; no compression (docs/method.md §2.2)"
-                },
-                crate::scenario::viv_words(t),
-            ),
-        );
+        line(&format!("line {}", l.id), line_words(sc, &system, i));
     }
     for (k, v) in crate::check_bodies::body_words(sc) {
         line(&k, v);

@@ -206,7 +206,11 @@ fn a_moordyn_f_waterkin_files_current_profile_is_the_same_current_as_currents_1(
         "{so}{se}"
     );
     for dynamic in [false, true] {
-        assert_eq!(tensions(&d, dynamic), tensions(&steady, dynamic), "dynamic {dynamic}");
+        assert_eq!(
+            tensions(&d, dynamic),
+            tensions(&steady, dynamic),
+            "dynamic {dynamic}"
+        );
     }
     // A wave grid is refused naming the file's line.
     std::fs::write(d.join("WaterKin.dat"), waterkin(1, "0 0.9 0\n")).unwrap();

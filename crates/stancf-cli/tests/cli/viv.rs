@@ -81,7 +81,11 @@ fn thorsen_catenary_riser_locks_in_at_the_published_cross_flow_frequency() {
     let mean = ys.iter().sum::<f64>() / ys.len() as f64;
     let rms = (ys.iter().map(|y| (y - mean).powi(2)).sum::<f64>() / ys.len() as f64).sqrt();
     eprintln!("midspan cross-flow RMS {:.3} D", rms / 0.024);
-    assert!((0.05..0.5).contains(&(rms / 0.024)), "RMS {} D", rms / 0.024);
+    assert!(
+        (0.05..0.5).contains(&(rms / 0.024)),
+        "RMS {} D",
+        rms / 0.024
+    );
 }
 
 /// A deck's `Cl` column alone takes MoorDyn's dF 0.08 and cF 0.18 and an
@@ -105,8 +109,14 @@ fn a_decks_cl_column_turns_the_lift_on_with_moordyns_defaults_and_notes_its_step
         stdout.contains("VIV lift Cl 0.7, shedding at f d / |v_n| = cF 0.18 +- dF 0.08, running RMS over 0.05 s"),
         "{stdout}"
     );
-    assert!(stdout.contains("validated with the Galerkin step, not with P2"), "{stdout}");
-    assert!(stdout.contains("validated in a steady current; this water has none"), "{stdout}");
+    assert!(
+        stdout.contains("validated with the Galerkin step, not with P2"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("validated in a steady current; this water has none"),
+        "{stdout}"
+    );
     // In a current, the step is judged against the shedding period.
     let current = "[water.current]\nprofile = [[-10.0, 0.2, 0.0, 0.0], [0.0, 0.2, 0.0, 0.0]]\n";
     let text_with = std::fs::read_to_string(&sc).unwrap() + current;
@@ -115,7 +125,9 @@ fn a_decks_cl_column_turns_the_lift_on_with_moordyns_defaults_and_notes_its_step
     let (stdout, stderr) = text(&o);
     assert_eq!(o.status.code(), Some(0), "{stderr}");
     assert!(
-        stdout.contains("the step 0.05 s is 0.075 of the VIV shedding period d / (cF U) = 0.666667 s"),
+        stdout.contains(
+            "the step 0.05 s is 0.075 of the VIV shedding period d / (cF U) = 0.666667 s"
+        ),
         "{stdout}"
     );
     // Cl = 0 is MoorDyn's VIV off.
@@ -123,7 +135,10 @@ fn a_decks_cl_column_turns_the_lift_on_with_moordyns_defaults_and_notes_its_step
     let o = stancf(&["check", d.join("deck.txt").to_str().unwrap()]);
     let (stdout, stderr) = text(&o);
     assert_eq!(o.status.code(), Some(0), "{stderr}");
-    assert!(!stdout.contains("VIV") && !stderr.contains("VIV"), "{stdout}{stderr}");
+    assert!(
+        !stdout.contains("VIV") && !stderr.contains("VIV"),
+        "{stdout}{stderr}"
+    );
 }
 
 /// The riser as a MoorDyn deck with `Cl` = `cl` (one VIV column) and
@@ -155,7 +170,11 @@ fn bad_viv_input_is_refused_by_key_and_row() {
     );
     expect_input_error(
         "viv-range",
-        &riser("viv = { cl = 0.7, df = 0.2, cf = 0.18, averaging_time = 0.05 }", 10, steady),
+        &riser(
+            "viv = { cl = 0.7, df = 0.2, cf = 0.18, averaging_time = 0.05 }",
+            10,
+            steady,
+        ),
         &["line_types[0].viv", "dF must be >= 0 and below cF"],
     );
     let in_air = riser(VIV, 10, steady)
@@ -167,5 +186,10 @@ fn bad_viv_input_is_refused_by_key_and_row() {
     let deck = riser_deck("0.7 0.2 0.18", "0.0001").replace("CaAx Cl\n", "CaAx Cl dF cF\n");
     let path = d.join("deck.txt");
     std::fs::write(&path, deck).unwrap();
-    refused_by_check_and_run(&path, &d.join("never"), &["deck.txt", "line 5", "dF < cF"], &[]);
+    refused_by_check_and_run(
+        &path,
+        &d.join("never"),
+        &["deck.txt", "line 5", "dF < cF"],
+        &[],
+    );
 }

@@ -296,9 +296,17 @@ pub struct Output {
 }
 
 impl Deck {
-    /// The value of a supported option, if the deck sets it.
+    /// The option `which` if the deck sets it: its name as written and
+    /// its line.
+    pub fn option_at(&self, which: SupportedOption) -> Option<(&str, usize)> {
+        self.options
+            .iter()
+            .find(|o| o.kind == OptionKind::Supported(which))
+            .map(|o| (o.name.as_str(), o.line))
+    }
+
     /// The text of an option whose value is a word or a path
-    /// (`SeafloorFile`), with its name as written and its line.
+    /// (`SeafloorFile`, `WaterKin`), with its name as written and its line.
     pub fn option_text(&self, which: SupportedOption) -> Option<(&str, &str, usize)> {
         self.options.iter().find_map(|o| match (o.kind, &o.value) {
             (OptionKind::Supported(s), OptionValue::Text(t)) if s == which => {
@@ -308,6 +316,7 @@ impl Deck {
         })
     }
 
+    /// The value of a supported option, if the deck sets it.
     pub fn option(&self, which: SupportedOption) -> Option<f64> {
         self.options.iter().find_map(|o| match (o.kind, &o.value) {
             (OptionKind::Supported(s), OptionValue::Number(v)) if s == which => Some(*v),

@@ -81,6 +81,20 @@ fn check_deck_law(
     super::visco_types::check_law(&deck_line_type(t, None, 0.0)).map_err(|(_, m)| at(m))
 }
 
+/// The deck's LINE TYPES rows as line types, with their EA curves
+/// `curves` (one per row).
+pub(super) fn deck_line_types(
+    deck: &crate::moordyn::Deck,
+    curves: Vec<Option<std::sync::Arc<stancf::element::AxialCurve>>>,
+) -> Vec<LineType> {
+    let dtm = deck.time_step().unwrap_or(0.0);
+    deck.line_types
+        .iter()
+        .zip(curves)
+        .map(|(t, c)| deck_line_type(t, c, dtm))
+        .collect()
+}
+
 /// A LINE TYPES row as a line type; `dtm` is the deck's MoorDyn step,
 /// over 500 of which MoorDyn takes a VIV line's running mean squares
 /// (docs/method.md §12.7).

@@ -31,9 +31,9 @@ mod moordyn;
 mod moordyn_current_grids;
 mod moordyn_seafloor;
 mod moordyn_water;
+mod moordyn_waterkin;
 mod moordyn_wave_frequencies;
 mod moordyn_wave_grids;
-mod moordyn_waterkin;
 mod moordyn_waves;
 mod motions;
 pub mod names;
@@ -63,11 +63,11 @@ pub use moordyn_water::{read_current_profile, CURRENT_PROFILE_FILE};
 pub use output::{EndForces, OutputFiles, SYSTEM_FILES};
 pub use rod_parts::{RodHolder, RodTypeValues, SystemRod};
 pub use system_model::EI_FACTOR;
-pub use viv_types::viv_words;
 pub use system_parts::{
     LineType, MoorDynOutFile, OutputChannel, PointType, SystemFailure, SystemLine, SystemPoint,
     SystemScenario,
 };
+pub use viv_types::viv_words;
 pub use water::{Current, CurrentField, SeabedFile, SeabedOptions, Water};
 
 use context::Ctx;

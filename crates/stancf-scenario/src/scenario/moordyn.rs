@@ -138,12 +138,7 @@ pub(super) fn deck_scenario(
     let mut sc = SystemScenario {
         failures,
         title,
-        line_types: deck
-            .line_types
-            .iter()
-            .zip(curves)
-            .map(|(t, c)| super::deck_line_types::deck_line_type(t, c, deck.time_step().unwrap_or(0.0)))
-            .collect(),
+        line_types: super::deck_line_types::deck_line_types(deck, curves),
         points,
         bodies,
         rods,

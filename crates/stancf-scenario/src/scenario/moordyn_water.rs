@@ -13,7 +13,7 @@
 use super::context::Ctx;
 use super::water::{Current, CurrentField, Water, WaterKeys};
 use super::ScenarioError;
-use crate::moordyn::{Deck, OptionKind, SupportedOption};
+use crate::moordyn::{Deck, SupportedOption};
 use stancf::water::current::{CurrentProfile, CurrentRow};
 use std::path::Path;
 
@@ -27,10 +27,7 @@ const CURRENT_PROFILE_HEADER_LINES: usize = 3;
 
 /// The deck's option `which`: its name as written and its line.
 pub(super) fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, usize)> {
-    deck.options
-        .iter()
-        .find(|o| o.kind == OptionKind::Supported(which))
-        .map(|o| (o.name.as_str(), o.line))
+    deck.option_at(which)
 }
 
 /// The water keys the deck at `path` (named `file` in messages) gives,

@@ -33,7 +33,7 @@ pub(super) fn deck_waterkin(
     };
     let refuse = |e: String| ScenarioError(format!("{file}: line {line}: option {name}: {e}"));
     for other in [SupportedOption::Currents, SupportedOption::WaveKin] {
-        if let Some((_, other_line)) = super::moordyn_water::option_at(deck, other) {
+        if let Some((_, other_line)) = deck.option_at(other) {
             return Err(refuse(format!(
                 "MoorDyn-F's water kinematics file and MoorDyn-C's {} (line {other_line}) both \
                  describe the sea: give one of them",
@@ -67,10 +67,13 @@ pub(super) fn deck_waterkin(
 fn read_waterkin(text: &str) -> Result<Option<Vec<CurrentRow>>, String> {
     let lines: Vec<&str> = text.lines().collect();
     let at = |i: usize| -> Result<&str, String> {
-        lines
-            .get(i)
-            .copied()
-            .ok_or_else(|| format!("the file ends at line {}, before line {}", lines.len(), i + 1))
+        lines.get(i).copied().ok_or_else(|| {
+            format!(
+                "the file ends at line {}, before line {}",
+                lines.len(),
+                i + 1
+            )
+        })
     };
     let mode = |i: usize, what: &str| -> Result<i64, String> {
         let word = at(i)?.split_whitespace().next().unwrap_or("");
@@ -87,17 +90,25 @@ fn read_waterkin(text: &str) -> Result<Option<Vec<CurrentRow>>, String> {
                  WaveKinMod 0 here"
             ))
         }
-        m => return Err(format!("line 4: WaveKinMod is {m}; MoorDyn-F's are 0, 1 and 2")),
+        m => {
+            return Err(format!(
+                "line 4: WaveKinMod is {m}; MoorDyn-F's are 0, 1 and 2"
+            ))
+        }
     }
     // WaveKinFile, dtWave, WaveDir (lines 5-7), the grid's x, y, z (8-13),
     // the current's header (14), CurrentMod (15).
     match mode(14, "CurrentMod")? {
         0 => Ok(None),
         1 => profile(&lines).map(Some),
-        2 => Err("line 15: CurrentMod 2: a current from OpenFAST's SeaState module is not \
+        2 => Err(
+            "line 15: CurrentMod 2: a current from OpenFAST's SeaState module is not \
                   read; give it as [water.current] in a scenario that takes the deck"
-            .into()),
-        m => Err(format!("line 15: CurrentMod is {m}; MoorDyn-F's are 0, 1 and 2")),
+                .into(),
+        ),
+        m => Err(format!(
+            "line 15: CurrentMod is {m}; MoorDyn-F's are 0, 1 and 2"
+        )),
     }
 }
 
@@ -129,7 +140,8 @@ fn profile(lines: &[&str]) -> Result<Vec<CurrentRow>, String> {
     if rows.first().map(|r| r.z) > rows.last().map(|r| r.z) {
         rows.reverse();
     }
-    CurrentProfile::new(&rows).map_err(|e| format!("the current profile from line {}: {}", first + 1, e.message))?;
+    CurrentProfile::new(&rows)
+        .map_err(|e| format!("the current profile from line {}: {}", first + 1, e.message))?;
     Ok(rows)
 }
 

@@ -13,7 +13,11 @@ use stancf::error::Sig;
 /// `viv` of a line type at `key`: `cl` (> 0, required), `df` and `cf`
 /// (MoorDyn's defaults 0.08 and 0.18), `averaging_time` (s, > 0,
 /// required: MoorDyn's is 500 of its steps).
-pub(super) fn toml_viv(ctx: &Ctx, key: &str, raw: Option<&RawViv>) -> Result<Option<Viv>, ScenarioError> {
+pub(super) fn toml_viv(
+    ctx: &Ctx,
+    key: &str,
+    raw: Option<&RawViv>,
+) -> Result<Option<Viv>, ScenarioError> {
     let Some(r) = raw else {
         return Ok(None);
     };
@@ -75,8 +79,9 @@ pub fn viv_words(t: &super::system_parts::LineType) -> String {
 
 /// The steps per shedding period d / (cF U) at which stancf's VIV is
 /// validated: Thorsen's riser (MoorDyn's viv.txt) with the Galerkin step
-/// at dt = 0.02 s, 33 steps per period, is within 0.5 % of the frequency
-/// and 3 % of the swing of dt = 2.5 ms (docs/method.md §12.7).
+/// at dt = 0.02 s, 33 steps per period, is within 0.25 % of the
+/// frequency, 2 % of the cross-flow swing and 5 % of the tension's swing
+/// at dt = 2.5 ms (docs/method.md §12.7).
 pub const VALIDATED_STEPS_PER_SHEDDING: f64 = 30.0;
 
 /// The notes on a dynamic run with VIV outside what it is validated for

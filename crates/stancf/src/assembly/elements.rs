@@ -145,7 +145,10 @@ impl StepProblem<'_> {
                     if d.visco.active || d.viv.active {
                         // The element's internal state at the slab's end:
                         // the viscoelastic law's, then the VIV's.
-                        let (pv, pw) = (d.visco.end.len() * usize::from(d.visco.active), d.viv.end.len() * usize::from(d.viv.active));
+                        let (pv, pw) = (
+                            d.visco.end.len() * usize::from(d.visco.active),
+                            d.viv.end.len() * usize::from(d.viv.active),
+                        );
                         let at = k * (pv + pw);
                         if d.visco.active {
                             scratch.internal_end[at..at + pv].copy_from_slice(&d.visco.end);

@@ -85,6 +85,8 @@ impl<const N: usize> Sub for Dual<N> {
     }
 }
 
+// The product and quotient rules mix the operations.
+#[allow(clippy::suspicious_arithmetic_impl)]
 impl<const N: usize> Mul for Dual<N> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
@@ -105,6 +107,7 @@ impl<const N: usize> Mul<f64> for Dual<N> {
     }
 }
 
+#[allow(clippy::suspicious_arithmetic_impl)]
 impl<const N: usize> Div for Dual<N> {
     type Output = Self;
     fn div(self, o: Self) -> Self {

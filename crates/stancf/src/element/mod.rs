@@ -49,6 +49,7 @@ mod axial_curve;
 mod curvature;
 mod damping;
 mod drag;
+mod dual;
 mod energy;
 mod point_force;
 mod seabed;
@@ -60,7 +61,6 @@ mod viscoelastic;
 mod viv;
 mod viv_slab;
 mod water;
-mod dual;
 
 pub use added_mass::AddedMassDerivatives;
 pub use axial_curve::AxialCurve;
@@ -73,8 +73,7 @@ pub use strain::{
 pub use syrope::{Syrope, WorkingCurveForm};
 pub use viscoelastic::ViscoDerivatives;
 pub use viscoelastic::{DynamicStiffness, Viscoelastic};
-pub use viv::{Viv, VIV_VALUES};
-pub use viv_slab::VivDerivatives;
+pub use viv::{Viv, VivDerivatives, VIV_VALUES};
 
 use crate::quadrature::GaussRule;
 use crate::shape::SpatialShape;

@@ -288,7 +288,7 @@ pub struct SlabDerivatives<const ND: usize> {
     pub visco: super::viscoelastic::ViscoDerivatives,
     /// A line's VIV lift and its coupling of the time points
     /// (docs/method.md §12.7).
-    pub viv: super::viv_slab::VivDerivatives,
+    pub viv: super::viv::VivDerivatives,
 }
 
 impl<const ND: usize> Default for SlabDerivatives<ND> {
@@ -308,7 +308,7 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             g_at_points: Vec::new(),
             added_mass: super::AddedMassDerivatives::default(),
             visco: super::viscoelastic::ViscoDerivatives::default(),
-            viv: super::viv_slab::VivDerivatives::default(),
+            viv: super::viv::VivDerivatives::default(),
         }
     }
 }

@@ -65,10 +65,16 @@ impl Viv {
     pub fn check(&self, what: &str) -> Result<(), crate::error::ModelError> {
         let bad = |m: String| Err(crate::error::ModelError::invalid(what, m));
         if !(self.lift.is_finite() && self.lift > 0.0) {
-            return bad(format!("the lift coefficient Cl must be > 0 (found {})", self.lift));
+            return bad(format!(
+                "the lift coefficient Cl must be > 0 (found {})",
+                self.lift
+            ));
         }
         if !(self.centre.is_finite() && self.centre > 0.0) {
-            return bad(format!("the synchronisation centre cF must be > 0 (found {})", self.centre));
+            return bad(format!(
+                "the synchronisation centre cF must be > 0 (found {})",
+                self.centre
+            ));
         }
         if !(self.range.is_finite() && self.range >= 0.0 && self.range < self.centre) {
             return bad(format!(
@@ -175,4 +181,19 @@ impl Viv {
         }
         (a, b)
     }
+}
+
+/// A line's VIV over a slab: the lift at the time points, the state at
+/// the slab's end and the matrices of the Jacobian.
+#[derive(Clone, Debug, Default)]
+pub struct VivDerivatives {
+    pub active: bool,
+    /// The lift per unit length at [g * axial points + s].
+    pub lift: Vec<[f64; 3]>,
+    /// phi, A^2, B^2 of every axial point at the slab's end.
+    pub end: Vec<f64>,
+    /// The matrices multiplying N_s (position-like: r, r_dot, r_ddot) and
+    /// N_x,s (r_x) in block (m, n), at [(s * 4 + m) * 4 + n].
+    pub by_shape: Vec<[[f64; 3]; 3]>,
+    pub by_slope: Vec<[[f64; 3]; 3]>,
 }

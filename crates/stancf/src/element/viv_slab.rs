@@ -24,24 +24,9 @@
 
 use super::slab::{SlabDerivatives, TimeSlab};
 use super::viscoelastic::MAX_NODES;
-use super::viv::{Viv, VivAtPoint, INPUTS, PHI, VIV_VALUES};
+use super::viv::{Viv, VivAtPoint, VivDerivatives, INPUTS, PHI, VIV_VALUES};
 use super::CableElement;
 use crate::water::LineInWater;
-
-/// A line's VIV over a slab: the lift at the time points, the state at
-/// the slab's end and the matrices of the Jacobian.
-#[derive(Clone, Debug, Default)]
-pub struct VivDerivatives {
-    pub active: bool,
-    /// The lift per unit length at [g * axial points + s].
-    pub lift: Vec<[f64; 3]>,
-    /// phi, A^2, B^2 of every axial point at the slab's end.
-    pub end: Vec<f64>,
-    /// The matrices multiplying N_s (position-like: r, r_dot, r_ddot) and
-    /// N_x,s (r_x) in block (m, n), at [(s * 4 + m) * 4 + n].
-    pub by_shape: Vec<[[f64; 3]; 3]>,
-    pub by_slope: Vec<[[f64; 3]; 3]>,
-}
 
 /// The kinematics of one axial point at the nodes of the collocation.
 struct NodeKinematics {
@@ -68,7 +53,11 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let np = slab.points.len();
         let nodes = np + 1;
         let ns = self.axial_points.len();
-        assert_eq!(start.len(), ns * VIV_VALUES, "phi, A^2, B^2 of every axial point");
+        assert_eq!(
+            start.len(),
+            ns * VIV_VALUES,
+            "phi, A^2, B^2 of every axial point"
+        );
         let shapes = time_shapes(slab);
         let o = &mut out.viv;
         o.active = true;
@@ -94,7 +83,6 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 })
                 .collect();
             let (z, jac) = collocate_phase(viv, a, nodes, state[0], &law);
-            let phi = |g: usize| super::dual::Dual::<INPUTS>::input(z[g], PHI);
             let end = &mut out.viv.end[s * VIV_VALUES..(s + 1) * VIV_VALUES];
             end[0] = z[np].rem_euclid(std::f64::consts::TAU);
             let samples = slab
@@ -110,47 +98,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 let k = self.kinematics_at(&p.shape, &shapes[g], y);
                 out.water_work += tp.w_dt * p.wl * (0..3).map(|i| f[i] * k.rdot[i]).sum::<f64>();
             }
-            if !with_hessian {
-                continue;
-            }
-            // dZ_g/dw_h (12 inputs), column h: J^-1 (dt A e_h) d rate_h/d w_h.
-            let mut dz = [[[0.0; PHI]; MAX_NODES]; MAX_NODES];
-            for h in 0..nodes {
-                let rate = viv.rate(&law[h], phi(h));
-                let col: [f64; MAX_NODES] = std::array::from_fn(|i| a[i][h]);
-                let x = super::viscoelastic::solve_small(nodes, &jac, &col);
-                for g in 0..np {
-                    for k in 0..PHI {
-                        dz[g][h][k] = x[g] * rate.d[k];
-                    }
-                }
-            }
-            for (g, tp) in slab.points.iter().enumerate() {
-                let (c, sn) = (z[g].cos(), z[g].sin());
-                for h in 0..nodes {
-                    // D_sgh, 3 x 12.
-                    let d: [[f64; PHI]; 3] = std::array::from_fn(|i| {
-                        std::array::from_fn(|k| {
-                            let local = if g == h { c * law[g].lift[i].d[k] } else { 0.0 };
-                            local - sn * law[g].lift[i].v * dz[g][h][k]
-                        })
-                    });
-                    let (t, tdot, tddot) = (&shapes[h].1, &shapes[h].2, &shapes[h].3);
-                    for m in 0..4 {
-                        let wm = tp.w_dt * tp.shape.t[m];
-                        for n in 0..4 {
-                            let at = (s * 4 + m) * 4 + n;
-                            let (bs, bx) = (&mut out.viv.by_shape[at], &mut out.viv.by_slope[at]);
-                            for i in 0..3 {
-                                for j in 0..3 {
-                                    bs[i][j] += wm
-                                        * (d[i][j] * t[n] + d[i][6 + j] * tdot[n] + d[i][9 + j] * tddot[n]);
-                                    bx[i][j] += wm * d[i][3 + j] * t[n];
-                                }
-                            }
-                        }
-                    }
-                }
+            if with_hessian {
+                let jacobian = PhaseJacobian {
+                    z: &z,
+                    jac: &jac,
+                    law: &law,
+                };
+                jacobian.add_blocks(viv, slab, &shapes, &mut out.viv, s);
             }
         }
     }
@@ -229,14 +183,25 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// The values of the internal state per axial point: the
     /// viscoelastic law's, then the VIV's (phi, A^2, B^2).
     pub fn internal_values_per_point(&self) -> usize {
-        self.section.visco.as_ref().map_or(0, super::Viscoelastic::values_per_point)
-            + if self.section.viv.is_some() { VIV_VALUES } else { 0 }
+        self.section
+            .visco
+            .as_ref()
+            .map_or(0, super::Viscoelastic::values_per_point)
+            + if self.section.viv.is_some() {
+                VIV_VALUES
+            } else {
+                0
+            }
     }
 
     /// An element's internal state split into the viscoelastic law's
     /// part (every axial point's) and the VIV's.
     pub fn split_internal<'a>(&self, internal: &'a [f64]) -> (&'a [f64], &'a [f64]) {
-        let visco = self.section.visco.as_ref().map_or(0, super::Viscoelastic::values_per_point);
+        let visco = self
+            .section
+            .visco
+            .as_ref()
+            .map_or(0, super::Viscoelastic::values_per_point);
         internal.split_at((self.axial_points.len() * visco).min(internal.len()))
     }
 
@@ -261,6 +226,74 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             .iter()
             .flat_map(|p| [std::f64::consts::TAU * (x0 + p.xi * l) / length, 0.0, 0.0])
             .collect()
+    }
+}
+
+/// The phase's collocation at one axial point, solved: Z at the nodes,
+/// J of (V25) and the law at every node.
+struct PhaseJacobian<'a> {
+    z: &'a [f64; MAX_NODES],
+    jac: &'a [[f64; MAX_NODES]; MAX_NODES],
+    law: &'a [VivAtPoint],
+}
+
+impl PhaseJacobian<'_> {
+    /// Adds axial point s's share of every block (m, n) (V26): D_sgh
+    /// = df_sg/dw_sh summed against dw_sh/dy_n and the test functions
+    /// phi_m(g) w_g dt into the matrices of N_s and N_x,s.
+    fn add_blocks(
+        &self,
+        viv: &Viv,
+        slab: &TimeSlab,
+        shapes: &[NodeShapes],
+        out: &mut VivDerivatives,
+        s: usize,
+    ) {
+        let (z, law) = (self.z, self.law);
+        let np = slab.points.len();
+        let nodes = np + 1;
+        let a = &slab.collocation.dt_a;
+        // dZ_g/dw_h (12 inputs), column h: J^-1 (dt A e_h) d rate_h/d w_h.
+        let mut dz = [[[0.0; PHI]; MAX_NODES]; MAX_NODES];
+        for h in 0..nodes {
+            let rate = viv.rate(&law[h], super::dual::Dual::<INPUTS>::input(z[h], PHI));
+            let col: [f64; MAX_NODES] = std::array::from_fn(|i| a[i][h]);
+            let x = super::viscoelastic::solve_small(nodes, self.jac, &col);
+            for g in 0..np {
+                for k in 0..PHI {
+                    dz[g][h][k] = x[g] * rate.d[k];
+                }
+            }
+        }
+        for (g, tp) in slab.points.iter().enumerate() {
+            let (c, sn) = (z[g].cos(), z[g].sin());
+            for h in 0..nodes {
+                // D_sgh, 3 x 12.
+                let d: [[f64; PHI]; 3] = std::array::from_fn(|i| {
+                    std::array::from_fn(|k| {
+                        let local = if g == h { c * law[g].lift[i].d[k] } else { 0.0 };
+                        local - sn * law[g].lift[i].v * dz[g][h][k]
+                    })
+                });
+                let (_, t, tdot, tddot) = &shapes[h];
+                for m in 0..4 {
+                    let wm = tp.w_dt * tp.shape.t[m];
+                    for n in 0..4 {
+                        let at = (s * 4 + m) * 4 + n;
+                        let (bs, bx) = (&mut out.by_shape[at], &mut out.by_slope[at]);
+                        for i in 0..3 {
+                            for j in 0..3 {
+                                bs[i][j] += wm
+                                    * (d[i][j] * t[n]
+                                        + d[i][6 + j] * tdot[n]
+                                        + d[i][9 + j] * tddot[n]);
+                                bx[i][j] += wm * d[i][3 + j] * t[n];
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -76,8 +76,12 @@ impl Model {
     pub fn with_viv(mut self, viv: Viv) -> Result<Self, ModelError> {
         viv.check("viv")?;
         match &mut self.mesh {
-            Mesh::Sac2(els) => els.iter_mut().for_each(|e| e.section.viv = Some(viv.clone())),
-            Mesh::Sac3(els) => els.iter_mut().for_each(|e| e.section.viv = Some(viv.clone())),
+            Mesh::Sac2(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.viv = Some(viv.clone())),
+            Mesh::Sac3(els) => els
+                .iter_mut()
+                .for_each(|e| e.section.viv = Some(viv.clone())),
         }
         Ok(self)
     }

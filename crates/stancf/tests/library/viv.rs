@@ -132,7 +132,11 @@ fn check_jacobian<const NS: usize, const ND: usize>(
 }
 
 /// An element 2 m down, moved by random slab unknowns about it.
-fn submerged<const ND: usize>(mut y: [[f64; ND]; 4], depth: f64, per_node: usize) -> [[f64; ND]; 4] {
+fn submerged<const ND: usize>(
+    mut y: [[f64; ND]; 4],
+    depth: f64,
+    per_node: usize,
+) -> [[f64; ND]; 4] {
     for m in [0, 2] {
         for node in 0..2 {
             y[m][node * per_node + 2] -= depth;
@@ -168,17 +172,29 @@ fn a_viv_slabs_jacobian_is_the_finite_differences_of_its_rows() {
             let water = in_water(sea, d);
             for points in [2, 3] {
                 let s = slab(0.02, points);
-                let visco_start: Vec<f64> = if with_visco { vec![0.02, -0.01, 0.05, 0.03] } else { vec![] };
+                let visco_start: Vec<f64> = if with_visco {
+                    vec![0.02, -0.01, 0.05, 0.03]
+                } else {
+                    vec![]
+                };
                 for squares in [(0.0, 0.0), (0.04, 0.9)] {
                     let y2 = submerged(random_slab_state::<4, 12>(&mut rng, 0.45, 0.2), depth, 6);
                     let mut history = visco_start.clone();
                     for k in 0..4 {
                         history.extend([0.4 + 1.3 * k as f64, squares.0, squares.1]);
                     }
-                    let label = format!("visco {with_visco} depth {depth} {points} points {squares:?} SAC-2");
+                    let label = format!(
+                        "visco {with_visco} depth {depth} {points} points {squares:?} SAC-2"
+                    );
                     check_jacobian(&el2, &s, &y2, (&water, &history), &label);
                     let y3 = submerged(random_slab_state::<6, 18>(&mut rng, 0.45, 0.2), depth, 9);
-                    check_jacobian(&el3, &s, &y3, (&water, &history), &label.replace("SAC-2", "SAC-3"));
+                    check_jacobian(
+                        &el3,
+                        &s,
+                        &y3,
+                        (&water, &history),
+                        &label.replace("SAC-2", "SAC-3"),
+                    );
                 }
             }
         }
@@ -248,7 +264,9 @@ fn a_held_lines_shedding_phase_follows_adlers_equation_at_the_collocations_order
     // exactly in a flow that moves it).
     let mut y = [[0.0; 12]; 4];
     for m in [0, 2] {
-        y[m] = [0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0];
+        y[m] = [
+            0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0,
+        ];
     }
     let loads = SlabLoads {
         water: Some(&water),

@@ -108,20 +108,34 @@ fn a_non_constant_ea_is_refused_naming_the_form() {
 #[test]
 fn viv_columns_give_the_lift_with_moordyns_defaults_and_zero_turns_it_off() {
     use crate::moordyn::VivColumns;
-    assert_eq!(parse(&with("0.4 0.5", "0.4 0.5 0")).unwrap().line_types[0].viv, None);
     assert_eq!(
-        parse(&with("0.4 0.5", "0.4 0.5 0.0 0.08 0.18")).unwrap().line_types[0].viv,
+        parse(&with("0.4 0.5", "0.4 0.5 0")).unwrap().line_types[0].viv,
+        None
+    );
+    assert_eq!(
+        parse(&with("0.4 0.5", "0.4 0.5 0.0 0.08 0.18"))
+            .unwrap()
+            .line_types[0]
+            .viv,
         None
     );
     let one = parse(&with("0.4 0.5", "0.4 0.5 0.8")).unwrap();
     assert_eq!(
         one.line_types[0].viv,
-        Some(VivColumns { cl: 0.8, range: 0.08, centre: 0.18 })
+        Some(VivColumns {
+            cl: 0.8,
+            range: 0.08,
+            centre: 0.18
+        })
     );
     let three = parse(&with("0.4 0.5", "0.4 0.5 0.7 0.05 0.2")).unwrap();
     assert_eq!(
         three.line_types[0].viv,
-        Some(VivColumns { cl: 0.7, range: 0.05, centre: 0.2 })
+        Some(VivColumns {
+            cl: 0.7,
+            range: 0.05,
+            centre: 0.2
+        })
     );
     let e = error(&with("0.4 0.5", "0.4 0.5 0.7 0.3 0.2"));
     assert!(e.message.contains("dF < cF"), "{e}");
