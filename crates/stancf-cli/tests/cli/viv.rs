@@ -50,8 +50,8 @@ fn crossing_frequency(samples: &[(f64, f64)]) -> f64 {
 /// same frequency to 0.1 %), the top tension's mean-crossing
 /// frequency over 8-15 s is within 2 % of 2.08 Hz: the published value
 /// has three digits, and the cross-flow frequency varies along the riser
-/// by 2 % (1.045 to 1.075 Hz at its quarter points, MoorDyn 1.026 to
-/// 1.049). Its midspan moves across the flow by an RMS of 0.05 to 0.5
+/// by up to 3 % (1.045 to 1.075 Hz at its quarter points, MoorDyn 1.026
+/// to 1.049). Its midspan moves across the flow by an RMS of 0.05 to 0.5
 /// diameters: locked-in flexible cylinders stay below one diameter
 /// (MoorDyn 2.7.2: 0.18).
 #[test]

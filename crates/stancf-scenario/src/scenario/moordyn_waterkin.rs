@@ -4,8 +4,10 @@
 //! `WaveKinFile`, `dtWave`, `WaveDir`, the wave grid's x, y and z (a type
 //! line and an entries line each), the current's header and `CurrentMod`;
 //! with `CurrentMod` 1, two header lines and rows `z ux uy` up to the
-//! first line that is not three numbers (at most 100 rows), in either
-//! order of z. stancf takes `WaveKinMod` 0 (no waves) with `CurrentMod` 0
+//! first line that is not three numbers (blank lines skipped, as Fortran's
+//! list-directed read skips them; at most 100 rows, noted beyond), in
+//! either order of z. A relative path is taken from the deck's folder, as
+//! MoorDyn-F opens it. stancf takes `WaveKinMod` 0 (no waves) with `CurrentMod` 0
 //! or 1 (a steady current profile, as `[water.current] profile`); a wave
 //! grid (`WaveKinMod` 1 or 2) and a current from SeaState (`CurrentMod`
 //! 2) are refused naming the file's line.
@@ -33,7 +35,8 @@ pub(super) fn deck_waterkin(
     };
     let refuse = |e: String| ScenarioError(format!("{file}: line {line}: option {name}: {e}"));
     for other in [SupportedOption::Currents, SupportedOption::WaveKin] {
-        if let Some((_, other_line)) = deck.option_at(other) {
+        let set = deck.option(other).is_some_and(|v| v != 0.0);
+        if let (true, Some((_, other_line))) = (set, deck.option_at(other)) {
             return Err(refuse(format!(
                 "MoorDyn-F's water kinematics file and MoorDyn-C's {} (line {other_line}) both \
                  describe the sea: give one of them",
@@ -41,30 +44,36 @@ pub(super) fn deck_waterkin(
             )));
         }
     }
-    let found = super::deck_files::locate(named, path).map_err(refuse)?;
-    let read = |e: String| refuse(format!("{}: {e}", found.path.display()));
-    let text = crate::input_file::read_text(&found.path).map_err(read)?;
-    let rows = read_waterkin(&text).map_err(read)?;
+    let at = path.parent().unwrap_or(Path::new("")).join(named);
+    let read = |e: String| refuse(format!("{}: {e}", at.display()));
+    let text = crate::input_file::read_text(&at).map_err(read)?;
+    let profile = read_waterkin(&text).map_err(read)?;
     let note = format!(
-        "OPTIONS: {name} {named} (line {line}): found at {} ({}): no waves, {}",
-        found.path.display(),
-        found.place,
-        match &rows {
+        "OPTIONS: {name} {named} (line {line}): {} (from the deck's folder, as MoorDyn-F opens \
+         it): no waves, {}",
+        at.display(),
+        match &profile {
             None => "no current".to_string(),
-            Some(r) => format!("a steady current profile of {} rows", r.len()),
+            Some((r, false)) => format!("a steady current profile of {} rows", r.len()),
+            Some((r, true)) => format!(
+                "a steady current profile of its first {} rows (MoorDyn-F reads no more; the \
+                 rest are left out as it leaves them)",
+                r.len()
+            ),
         }
     );
-    let current = rows.map(|rows| Current {
+    let current = profile.map(|(rows, _)| Current {
         field: CurrentField::Profile(rows),
         ramp: 0.0,
-        source: format!("{} (the deck's {name})", found.path.display()),
+        source: format!("{} (the deck's {name})", at.display()),
     });
     Ok(Some((current, note)))
 }
 
 /// The current profile of a WaterKin file's text (None for `CurrentMod`
-/// 0), z increasing. Errors name the line.
-fn read_waterkin(text: &str) -> Result<Option<Vec<CurrentRow>>, String> {
+/// 0), z increasing, and whether rows beyond MoorDyn-F's 100 were left
+/// out. Errors name the line.
+fn read_waterkin(text: &str) -> Result<Option<(Vec<CurrentRow>, bool)>, String> {
     let lines: Vec<&str> = text.lines().collect();
     let at = |i: usize| -> Result<&str, String> {
         lines.get(i).copied().ok_or_else(|| {
@@ -113,9 +122,10 @@ fn read_waterkin(text: &str) -> Result<Option<Vec<CurrentRow>>, String> {
 }
 
 /// `CurrentMod` 1's rows after its two header lines (line 18 on): the
-/// first of the next three lines that reads as three numbers starts the
-/// table, which ends at the first that does not (MoorDyn-F's reading).
-fn profile(lines: &[&str]) -> Result<Vec<CurrentRow>, String> {
+/// first of the next three lines (blank ones skipped) that reads as three
+/// numbers starts the table, which ends at the first that does not
+/// (MoorDyn-F's reading); whether rows beyond 100 were left out.
+fn profile(lines: &[&str]) -> Result<(Vec<CurrentRow>, bool), String> {
     let row = |l: &str| -> Option<CurrentRow> {
         let v: Vec<f64> = l
             .split(|c: char| c.is_whitespace() || c == ',')
@@ -129,20 +139,29 @@ fn profile(lines: &[&str]) -> Result<Vec<CurrentRow>, String> {
             velocity: [v[1], v[2], 0.0],
         })
     };
-    let first = (17..20)
-        .find(|&i| lines.get(i).is_some_and(|l| row(l).is_some()))
-        .ok_or("lines 18-20: no row \"z ux uy\" of the current profile (MoorDyn-F looks there)")?;
-    let mut rows: Vec<CurrentRow> = lines[first..]
+    let filled: Vec<(usize, &str)> = lines
         .iter()
-        .map_while(|l| row(l))
-        .take(MAX_ROWS)
+        .enumerate()
+        .skip(17)
+        .filter(|(_, l)| !l.trim().is_empty())
+        .map(|(i, l)| (i, *l))
         .collect();
+    let first = (0..3)
+        .find(|&k| filled.get(k).is_some_and(|(_, l)| row(l).is_some()))
+        .ok_or(
+            "lines 18 on: none of the first three lines is a row \"z ux uy\" of the current \
+                profile (MoorDyn-F looks there)",
+        )?;
+    let table: Vec<CurrentRow> = filled[first..].iter().map_while(|(_, l)| row(l)).collect();
+    let beyond = table.len() > MAX_ROWS;
+    let mut rows: Vec<CurrentRow> = table.into_iter().take(MAX_ROWS).collect();
+    let first = filled[first].0;
     if rows.first().map(|r| r.z) > rows.last().map(|r| r.z) {
         rows.reverse();
     }
     CurrentProfile::new(&rows)
         .map_err(|e| format!("the current profile from line {}: {}", first + 1, e.message))?;
-    Ok(rows)
+    Ok((rows, beyond))
 }
 
 #[cfg(test)]
@@ -160,11 +179,23 @@ mod tests {
     #[test]
     fn a_steady_profile_is_read_to_its_last_row_in_increasing_z() {
         let text = file("1 CurrentMod\nz-depth x y\n(m) (m/s) (m/s)\n0.0 0.3 0.1\n-5 0.2 0\n-11.0 0.1 0\n--- need this line ---\n");
-        let rows = read_waterkin(&text).unwrap().unwrap();
+        let (rows, beyond) = read_waterkin(&text).unwrap().unwrap();
+        assert!(!beyond);
         let z: Vec<f64> = rows.iter().map(|r| r.z).collect();
         assert_eq!(z, [-11.0, -5.0, 0.0]);
         assert_eq!(rows[2].velocity, [0.3, 0.1, 0.0]);
         assert_eq!(read_waterkin(&file("0 CurrentMod\n")).unwrap(), None);
+        // Blank lines are skipped, before the table and in it.
+        let gaps = file("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n\n\n-11 0.1 0\n\n0 0.3 0\n");
+        let (rows, _) = read_waterkin(&gaps).unwrap().unwrap();
+        assert_eq!(rows.len(), 2);
+        // MoorDyn-F reads 100 rows at most.
+        let many: String = (0..120)
+            .map(|k| format!("{} 0.2 0\n", -f64::from(k)))
+            .collect();
+        let text = file(&format!("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n{many}"));
+        let (rows, beyond) = read_waterkin(&text).unwrap().unwrap();
+        assert_eq!((rows.len(), beyond), (100, true));
     }
 
     #[test]
@@ -175,6 +206,6 @@ mod tests {
         let e = read_waterkin(&file("2 CurrentMod\n")).unwrap_err();
         assert!(e.contains("line 15: CurrentMod 2"), "{e}");
         let e = read_waterkin(&file("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n")).unwrap_err();
-        assert!(e.contains("no row"), "{e}");
+        assert!(e.contains("none of the first three lines"), "{e}");
     }
 }

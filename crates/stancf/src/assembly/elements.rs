@@ -145,16 +145,13 @@ impl StepProblem<'_> {
                     if d.visco.active || d.viv.active {
                         // The element's internal state at the slab's end:
                         // the viscoelastic law's, then the VIV's.
-                        let (pv, pw) = (
-                            d.visco.end.len() * usize::from(d.visco.active),
-                            d.viv.end.len() * usize::from(d.viv.active),
-                        );
-                        let at = k * (pv + pw);
-                        if d.visco.active {
-                            scratch.internal_end[at..at + pv].copy_from_slice(&d.visco.end);
-                        }
+                        let el = &elements[k];
+                        let per = el.axial_rule_points() * el.internal_values_per_point();
+                        let end = &mut scratch.internal_end[k * per..(k + 1) * per];
+                        let pv = d.visco.end.len() * usize::from(d.visco.active);
+                        end[..pv].copy_from_slice(&d.visco.end[..pv]);
                         if d.viv.active {
-                            scratch.internal_end[at + pv..at + pv + pw].copy_from_slice(&d.viv.end);
+                            end[pv..].copy_from_slice(&d.viv.end);
                         }
                     }
                     let at = (j * elements.len() + k) * per_element;

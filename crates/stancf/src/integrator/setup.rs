@@ -101,14 +101,15 @@ impl Simulation {
         let n = model.dofs();
         let mut initial = initial;
         model.apply_constraints(&mut initial);
-        // A viscoelastic line without an internal state starts at rest.
+        // A line without its internal state starts at rest.
         model.check_internal_state(&initial.internal)?;
         if model.has_internal_state() && settings.time_layers != 1 {
             return Err(ModelError::invalid(
                 "analysis.time_layers",
                 format!(
-                    "a viscoelastic line is stepped with one time layer per step (got {}): its \
-                     internal strain is collocated over one slab (docs/method.md §2.11)",
+                    "a viscoelastic or VIV line is stepped with one time layer per step (got \
+                     {}): its internal state is collocated over one slab (docs/method.md §2.11, \
+                     §12.7)",
                     settings.time_layers
                 ),
             ));

@@ -1,8 +1,10 @@
-//! The internal state of a line's material (docs/method.md §2.11-§2.12):
-//! a viscoelastic line carries the strain eps1 of its static spring at
+//! The internal state of a line (docs/method.md §2.11-§2.12, §12.7): a
+//! viscoelastic line carries the strain eps1 of its static spring at
 //! every point of the axial rule of every element (a Syrope line also its
-//! largest mean tension and the work done on its law),
-//! [`State::internal`], element after element. This file gives a model
+//! largest mean tension and the work done on its law), a line with VIV
+//! the shedding phase phi and the mean squares A^2, B^2 there;
+//! [`State::internal`], element after element, in each the viscoelastic
+//! values of every axial point, then the VIV's. This file gives a model
 //! its law and the state's layout, its rest value and the energy it
 //! stores.
 
@@ -73,8 +75,15 @@ impl Model {
 
     /// The model whose lines carry MoorDyn's VIV lift `viv`
     /// (docs/method.md §12.7), acting where the line is in water.
+    /// Refused on a model without water (the lift acts in water only).
     pub fn with_viv(mut self, viv: Viv) -> Result<Self, ModelError> {
         viv.check("viv")?;
+        if self.water.is_none() {
+            return Err(ModelError::invalid(
+                "viv",
+                "the VIV lift acts in water: give the line a Load::Water",
+            ));
+        }
         match &mut self.mesh {
             Mesh::Sac2(els) => els
                 .iter_mut()

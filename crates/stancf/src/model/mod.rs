@@ -94,10 +94,11 @@ pub struct State {
     pub t: f64,
     pub e: Vec<f64>,
     pub v: Vec<f64>,
-    /// A viscoelastic line's strain eps1 of its static spring at every
-    /// point of every element's axial rule, element after element
-    /// (docs/method.md §2.11; [`Model::internal_state_len`]). Empty: no
-    /// such line, or, given to a simulation, the line at rest at `e`.
+    /// A viscoelastic line's strain eps1 of its static spring, and a VIV
+    /// line's shedding phase and mean squares, at every point of every
+    /// element's axial rule, element after element (docs/method.md
+    /// §2.11, §12.7; [`Model::internal_state_len`]). Empty: no such line,
+    /// or, given to a simulation, the line at rest at `e`.
     pub internal: Vec<f64>,
 }
 

@@ -106,7 +106,7 @@ pub(super) fn run_system(
         && system
             .lines()
             .iter()
-            .any(|l| l.model.has_axial_damping() || l.model.has_internal_state());
+            .any(|l| l.model.has_axial_damping() || l.model.viscoelastic().is_some());
     // ... and for the water's and the seabed's work in water.
     let wet = sc.analysis.kind == AnalysisKind::Dynamic && sc.water.is_some();
     let models: Vec<&stancf::Model> = system.lines().iter().map(|l| &l.model).collect();
