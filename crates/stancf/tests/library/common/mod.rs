@@ -575,3 +575,52 @@ pub fn engineering_options() -> stancf::ModelOptions {
         ..stancf::ModelOptions::default()
     }
 }
+
+/// The slab rows' Jacobian (every block of [`CableElement::slab_hessian_block`])
+/// against central differences (h = 1e-6) of the rows under `loads`, from
+/// the internal state `history`: the relative error.
+pub fn slab_jacobian_error<const NS: usize, const ND: usize>(
+    el: &CableElement<NS, ND>,
+    slab: &TimeSlab,
+    y: &[[f64; ND]; 4],
+    loads: &stancf::element::SlabLoads,
+    history: &[f64],
+) -> f64 {
+    use stancf::element::SlabDerivatives;
+    const H: f64 = 1e-6;
+    let mut d = SlabDerivatives::<ND>::default();
+    el.slab_derivatives_from(slab, y, loads, history, true, &mut d);
+    let (mut dp, mut dm) = (
+        SlabDerivatives::<ND>::default(),
+        SlabDerivatives::<ND>::default(),
+    );
+    let (mut exact, mut fd) = (Vec::new(), Vec::new());
+    let mut block = [[0.0; ND]; ND];
+    let mut columns = vec![vec![[0.0; ND]; 4]; 4 * ND];
+    for n in 0..4 {
+        for b in 0..ND {
+            let (mut yp, mut ym) = (*y, *y);
+            yp[n][b] += H;
+            ym[n][b] -= H;
+            el.slab_derivatives_from(slab, &yp, loads, history, false, &mut dp);
+            el.slab_derivatives_from(slab, &ym, loads, history, false, &mut dm);
+            for m in 0..4 {
+                for a in 0..ND {
+                    columns[n * ND + b][m][a] = (dp.grad[m][a] - dm.grad[m][a]) / (2.0 * H);
+                }
+            }
+        }
+    }
+    for m in 0..4 {
+        for n in 0..4 {
+            el.slab_hessian_block(slab, &d, m, n, &mut block);
+            for a in 0..ND {
+                for b in 0..ND {
+                    exact.push(block[a][b]);
+                    fd.push(columns[n * ND + b][m][a]);
+                }
+            }
+        }
+    }
+    rel_diff(&exact, &fd)
+}
