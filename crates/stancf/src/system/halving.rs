@@ -9,6 +9,7 @@
 //! unstable step (P2 above its stable step) is not halved: it is the
 //! step the scenario chose, reported as such.
 
+use super::end_forces::EndForce;
 use super::SystemSimulation;
 use crate::error::{ModelError, SolverError};
 use crate::integrator::StepReport;
@@ -55,7 +56,9 @@ impl SystemSimulation {
     /// to `halvings` levels. The step length is the same after as before.
     /// The report counts the Newton iterations of the parts that
     /// converged and carries the last part's residual; the error is the
-    /// deepest failed part's (its time, step and residual).
+    /// deepest failed part's (its time, step and residual). The step's
+    /// mean end forces and pin forces (what a coupling interval's impulse
+    /// and the result files take) are the means of its halves'.
     pub(super) fn step_halving(&mut self, halvings: u32) -> Result<StepReport, SolverError> {
         match self.step_once() {
             Err(e) if halvings > 0 && e.newton_failed() => {}
@@ -63,14 +66,42 @@ impl SystemSimulation {
         }
         let dt = self.time_step();
         self.set_time_step(0.5 * dt);
-        let halves = self
-            .step_halving(halvings - 1)
-            .and_then(|a| self.step_halving(halvings - 1).map(|b| (a, b)));
+        let first = self.step_halving(halvings - 1);
+        let first_means = self.mean_forces();
+        let halves = first.and_then(|a| self.step_halving(halvings - 1).map(|b| (a, b)));
         self.set_time_step(dt);
         let (a, b) = halves?;
+        self.average_mean_forces(&first_means);
         let mut report = b;
         report.newton.iterations += a.newton.iterations;
         report.newton.factorizations += a.newton.factorizations;
         Ok(report)
     }
+
+    /// The last step's mean end forces of every line and pin forces of
+    /// every pinned body.
+    fn mean_forces(&self) -> MeanForces {
+        let pins = self.bodies.iter().map(|b| b.pin.map(|p| p.force)).collect();
+        (self.end_forces.clone(), pins)
+    }
+
+    /// The mean forces of a step taken in two equal halves: the first
+    /// half's `first` and the second's (the current ones) averaged.
+    fn average_mean_forces(&mut self, first: &MeanForces) {
+        let half = |a: [f64; 3], b: [f64; 3]| std::array::from_fn(|c| 0.5 * (a[c] + b[c]));
+        for (now, before) in self.end_forces.iter_mut().zip(&first.0) {
+            for k in 0..2 {
+                now[k].force = half(before[k].force, now[k].force);
+            }
+        }
+        for (body, before) in self.bodies.iter_mut().zip(&first.1) {
+            if let (Some(pin), Some(f)) = (body.pin.as_mut(), before) {
+                pin.force = half(*f, pin.force);
+            }
+        }
+    }
 }
+
+/// A step's mean end forces of every line and pin forces of every body
+/// (None: not pinned).
+type MeanForces = (Vec<[EndForce; 2]>, Vec<Option<[f64; 3]>>);

@@ -1,8 +1,9 @@
 //! A step that Newton fails is taken again in halves (docs/method.md
 //! §11.13): until the first failure the run is the one without halvings,
 //! to the bit; the failed step becomes the two half steps a simulation at
-//! half the step would take from there, to the bit; and the run goes on
-//! at its own step length.
+//! half the step would take from there, to the bit, its mean forces on
+//! the points the means of the halves'; and the run goes on at its own
+//! step length.
 
 use crate::common::rope_systems::three_to_a_point;
 use stancf::system::{straight_states, SystemSimulation, MAX_STEP_HALVINGS};
@@ -27,6 +28,13 @@ fn rope_star(halvings: u32) -> SystemSimulation {
     let mut sim = SystemSimulation::new(system, start, settings).unwrap();
     sim.set_step_halvings(halvings).unwrap();
     sim
+}
+
+/// The lines' mean forces over the last step on every point.
+fn point_forces(sim: &SystemSimulation) -> Vec<[f64; 3]> {
+    (0..sim.topology().points().len())
+        .map(|p| sim.point_force(p))
+        .collect()
 }
 
 /// Every line's coordinates and rates, and every point's state.
@@ -66,9 +74,26 @@ fn a_step_newton_fails_is_taken_in_halves_and_the_run_goes_on() {
                 let mut halves = before;
                 halves.set_time_step(2.5e-3);
                 halves.step().unwrap();
+                let first = point_forces(&halves);
                 halves.step().unwrap();
                 assert_eq!(snapshot(&halves), snapshot(&halving), "step {k}");
                 assert_eq!(halving.time_step(), 5e-3);
+                // Its mean forces on the points (what a coupling
+                // interval's impulse takes) are the means of the halves'.
+                let second = point_forces(&halves);
+                for (p, f) in point_forces(&halving).iter().enumerate() {
+                    for c in 0..3 {
+                        let mean = 0.5 * (first[p][c] + second[p][c]);
+                        let size = first[p]
+                            .iter()
+                            .chain(&second[p])
+                            .fold(0.0f64, |m, x| m.max(x.abs()));
+                        assert!(
+                            (f[c] - mean).abs() <= 1e-12 * size,
+                            "point {p}: {f:?} against the halves' mean at {c}: {mean}"
+                        );
+                    }
+                }
             }
         }
     }
