@@ -80,14 +80,14 @@ impl SystemSimulation {
 
     /// The last step's mean end forces of every line and pin forces of
     /// every pinned body.
-    fn mean_forces(&self) -> MeanForces {
+    pub(super) fn mean_forces(&self) -> MeanForces {
         let pins = self.bodies.iter().map(|b| b.pin.map(|p| p.force)).collect();
         (self.end_forces.clone(), pins)
     }
 
     /// The mean forces of a step taken in two equal halves: the first
     /// half's `first` and the second's (the current ones) averaged.
-    fn average_mean_forces(&mut self, first: &MeanForces) {
+    pub(super) fn average_mean_forces(&mut self, first: &MeanForces) {
         let half = |a: [f64; 3], b: [f64; 3]| std::array::from_fn(|c| 0.5 * (a[c] + b[c]));
         for (now, before) in self.end_forces.iter_mut().zip(&first.0) {
             for k in 0..2 {
@@ -104,4 +104,4 @@ impl SystemSimulation {
 
 /// A step's mean end forces of every line and pin forces of every body
 /// (None: not pinned).
-type MeanForces = (Vec<[EndForce; 2]>, Vec<Option<[f64; 3]>>);
+pub(super) type MeanForces = (Vec<[EndForce; 2]>, Vec<Option<[f64; 3]>>);

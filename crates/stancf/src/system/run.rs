@@ -112,10 +112,12 @@ fn watched_part(
     *watch = watch_before;
     let dt = sim.time_step();
     sim.set_time_step(0.5 * dt);
-    let halves = watched_part(sim, watch, halvings - 1)
-        .and_then(|a| watched_part(sim, watch, halvings - 1).map(|b| (a, b)));
+    let first = watched_part(sim, watch, halvings - 1);
+    let first_means = sim.mean_forces();
+    let halves = first.and_then(|a| watched_part(sim, watch, halvings - 1).map(|b| (a, b)));
     sim.set_time_step(dt);
     let (a, mut b) = halves?;
+    sim.average_mean_forces(&first_means);
     b.newton.iterations += a.newton.iterations + report.newton.iterations;
     b.newton.factorizations += a.newton.factorizations + report.newton.factorizations;
     Ok(b)
