@@ -1,6 +1,8 @@
 //! Benchmarks: the element kernel (slab residual plus the tangent blocks a
-//! one-layer P2 step uses) and one whole P2 step for 8, 64 and 512
-//! elements. Report ratios measured in one run (the machine is shared).
+//! one-layer P2 step uses), in air and in water (a current, the added
+//! mass, a wave, the bed: the water's cost beside the elastic kernel's,
+//! issue 33), and one whole P2 step for 8, 64 and 512 elements. Report
+//! ratios measured in one run (the machine is shared).
 //!
 //! cargo bench --manifest-path bench/criterion/Cargo.toml --bench kernels
 
@@ -55,13 +57,38 @@ fn element_kernel<const NS: usize, const ND: usize>(
     el: &CableElement<NS, ND>,
     slab: &TimeSlab,
 ) {
-    let y = slab_state::<NS, ND>(el.length);
-    let g = [0.0, -9.81, 0.0];
+    element_kernel_in(
+        c,
+        name,
+        el,
+        slab,
+        &SlabLoads::gravity([0.0, -9.81, 0.0]),
+        [0.0; 3],
+    );
+}
+
+/// [`element_kernel`] under `loads`, the element's state moved by `shift`.
+fn element_kernel_in<const NS: usize, const ND: usize>(
+    c: &mut Criterion,
+    name: &str,
+    el: &CableElement<NS, ND>,
+    slab: &TimeSlab,
+    loads: &SlabLoads,
+    shift: [f64; 3],
+) {
+    let mut y = slab_state::<NS, ND>(el.length);
+    for t in [0, 2] {
+        for a in (0..NS).step_by(NS / 2) {
+            for i in 0..3 {
+                y[t][3 * a + i] += shift[i];
+            }
+        }
+    }
     let mut d = SlabDerivatives::<ND>::default();
     let mut block = [[0.0; ND]; ND];
     c.bench_function(name, |b| {
         b.iter(|| {
-            el.slab_derivatives(slab, black_box(&y), &SlabLoads::gravity(g), true, &mut d);
+            el.slab_derivatives(slab, black_box(&y), loads, true, &mut d);
             // The four blocks of a one-layer P2 step: rows e_a, e_b; columns e_b, v_b.
             for m in [0, 2] {
                 for n in [2, 3] {
@@ -145,10 +172,111 @@ fn kernels(c: &mut Criterion) {
         axial: GaussRule::new(5).unwrap(),
         bending: GaussRule::new(5).unwrap(),
     };
-    let sac2 = CableElement::<4, 12>::new(cubic_hermite, 0.5, section, Measures::default(), &r3);
+    let sac2 = CableElement::<4, 12>::new(
+        cubic_hermite,
+        0.5,
+        section.clone(),
+        Measures::default(),
+        &r3,
+    );
     let sac3 = CableElement::<6, 18>::new(quintic_hermite, 0.5, section, Measures::default(), &r5);
     element_kernel(c, "element SAC-2 3x3 residual+tangent", &sac2, &slab);
     element_kernel(c, "element SAC-3 5x3 residual+tangent", &sac3, &slab);
+    water_kernels(c, &sac2, &slab);
+}
+
+/// The SAC-2 kernel in water (issue 33: the water's cost beside the
+/// elastic kernel's in air): 20 m down in a sheared current with Morison
+/// drag, the fluid's inertia and buoyancy (no added mass), then with the
+/// entrained water's added mass, then in a wave over the current, then
+/// resting on the bed with its contact and friction.
+fn water_kernels(c: &mut Criterion, el: &CableElement<4, 12>, slab: &TimeSlab) {
+    use stancf::water::current::{CurrentProfile, CurrentRow, Ramp};
+    use stancf::water::kinematics::Sea;
+    use stancf::water::waves::AiryWave;
+    use stancf::water::{LineInWater, Morison, Seabed, SeabedContact, Water};
+    use std::sync::Arc;
+    let current = CurrentProfile::new(&[
+        CurrentRow {
+            z: -50.0,
+            velocity: [0.2, 0.0, 0.0],
+        },
+        CurrentRow {
+            z: 0.0,
+            velocity: [0.8, 0.1, 0.0],
+        },
+    ])
+    .unwrap();
+    let calm = Sea::still(50.0, 9.81).with_current(current.clone(), Ramp::new(0.0).unwrap());
+    let wave = AiryWave {
+        amplitude: 1.0,
+        period: 8.0,
+        heading_deg: 20.0,
+        phase_deg: 0.0,
+    };
+    let rough = Sea::new(50.0, 9.81, &[wave])
+        .unwrap()
+        .with_current(current, Ramp::new(0.0).unwrap());
+    let morison = |ca: f64| Morison {
+        diameter: 0.05,
+        cd_normal: 1.2,
+        cd_axial: 0.1,
+        ca_normal: ca,
+        ca_axial: 0.0,
+    };
+    let water = |sea: &Sea, ca: f64| {
+        LineInWater::new(
+            Arc::new(Water {
+                density: 1025.0,
+                sea: sea.clone(),
+            }),
+            morison(ca),
+        )
+    };
+    let g = [0.0, 0.0, -9.81];
+    let (plain, added, waves) = (water(&calm, 0.0), water(&calm, 1.0), water(&rough, 1.0));
+    let air = SlabLoads::gravity(g);
+    element_kernel_in(
+        c,
+        "element SAC-2 3x3 in air (z up)",
+        el,
+        slab,
+        &air,
+        [0.0; 3],
+    );
+    let deep = [0.0, 0.0, -20.0];
+    let cases: [(&str, &LineInWater); 3] = [
+        ("element SAC-2 3x3 in a current", &plain),
+        ("element SAC-2 3x3 in a current, added mass", &added),
+        (
+            "element SAC-2 3x3 in a wave and a current, added mass",
+            &waves,
+        ),
+    ];
+    for (name, w) in cases {
+        let loads = SlabLoads {
+            water: Some(w),
+            ..SlabLoads::gravity(g)
+        };
+        element_kernel_in(c, name, el, slab, &loads, deep);
+    }
+    let bed = SeabedContact {
+        seabed: Seabed::flat(20.0, 3e6, 3e5).with_friction(0.5, 0.5, 1e-3),
+        diameter: 0.05,
+    };
+    let loads = SlabLoads {
+        water: Some(&added),
+        seabed: Some(&bed),
+        ..SlabLoads::gravity(g)
+    };
+    element_kernel_in(
+        c,
+        "element SAC-2 3x3 on the bed in a current, added mass",
+        el,
+        slab,
+        &loads,
+        deep,
+    );
 }
 
 /// One P2 step of the transverse impact (example 2) on n SAC-2 elements,
