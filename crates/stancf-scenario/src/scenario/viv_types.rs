@@ -86,8 +86,8 @@ pub const VALIDATED_STEPS_PER_SHEDDING: f64 = 30.0;
 
 /// The notes on a dynamic run with VIV outside what it is validated for
 /// (docs/method.md §12.7): the P2 step, a step longer than 1/30 of the
-/// shedding period d / (cF U) in the fastest steady current U of the
-/// water column, or no steady current.
+/// shedding period d / (cF U) in the fastest steady current U (the
+/// profile's fastest row), or no steady current.
 pub(super) fn viv_notes(sc: &SystemScenario) -> Vec<String> {
     if sc.analysis.kind != super::AnalysisKind::Dynamic {
         return Vec::new();
@@ -96,7 +96,7 @@ pub(super) fn viv_notes(sc: &SystemScenario) -> Vec<String> {
     let Some(water) = &sc.water else {
         return Vec::new();
     };
-    let speed = fastest_current(water, sc.gravity);
+    let speed = fastest_current(water);
     let mut notes = Vec::new();
     for (i, t) in sc.line_types.iter().enumerate() {
         let Some(v) = t.viv.as_ref().filter(|_| used(i)) else {
@@ -109,14 +109,19 @@ pub(super) fn viv_notes(sc: &SystemScenario) -> Vec<String> {
                 t.name
             ));
         }
-        if speed <= 0.0 {
+        let Some(speed) = speed.filter(|u| *u > 0.0) else {
             notes.push(format!(
                 "line type \"{}\": VIV (docs/method.md §12.7) is validated in a steady current; \
-                 this water has none, and the lift follows the waves' flow unvalidated",
-                t.name
+                 this water has {}, and the lift follows its flow unvalidated",
+                t.name,
+                if water.current.is_some() {
+                    "one that varies in time"
+                } else {
+                    "none"
+                }
             ));
             continue;
-        }
+        };
         let period = t.diameter / (v.centre * speed);
         let dt = sc.analysis.time_step;
         if dt * VALIDATED_STEPS_PER_SHEDDING > period {
@@ -136,18 +141,16 @@ pub(super) fn viv_notes(sc: &SystemScenario) -> Vec<String> {
     notes
 }
 
-/// The fastest steady current (m/s) from the bed to the surface, sampled
-/// every hundredth of the depth (0 without one).
-fn fastest_current(water: &super::Water, gravity: [f64; 3]) -> f64 {
-    let g = (gravity[0].powi(2) + gravity[1].powi(2) + gravity[2].powi(2)).sqrt();
-    let Ok(sea) = water.library(g) else {
-        return 0.0;
-    };
-    (0..=100)
-        .map(|k| {
-            let z = -water.depth * f64::from(k) / 100.0;
-            let u = sea.sea.steady_current(&[0.0, 0.0, z]).velocity;
-            (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]).sqrt()
-        })
-        .fold(0.0, f64::max)
+/// The fastest speed (m/s) of a steady current profile, its largest
+/// row (the profile is linear between rows and constant beyond them);
+/// None without a steady current (none, or one on a grid in time).
+fn fastest_current(water: &super::Water) -> Option<f64> {
+    match &water.current.as_ref()?.field {
+        super::CurrentField::Profile(rows) => Some(
+            rows.iter()
+                .map(|r| r.velocity.iter().map(|u| u * u).sum::<f64>().sqrt())
+                .fold(0.0, f64::max),
+        ),
+        super::CurrentField::Grid(_) => None,
+    }
 }
