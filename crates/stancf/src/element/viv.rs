@@ -60,6 +60,19 @@ pub(crate) struct VivAtPoint {
     pub y_ddot: f64,
 }
 
+impl VivAtPoint {
+    /// Where the water does not move past the line: no shedding, no lift.
+    pub(crate) fn still() -> Self {
+        VivAtPoint {
+            frequency: Dual::constant(0.0),
+            response_phase: Dual::constant(0.0),
+            lift: [Dual::constant(0.0); 3],
+            y_dot: 0.0,
+            y_ddot: 0.0,
+        }
+    }
+}
+
 impl Viv {
     /// Refuses a law MoorDyn's model cannot take, naming `what`.
     pub fn check(&self, what: &str) -> Result<(), crate::error::ModelError> {
@@ -128,15 +141,8 @@ impl Viv {
         let along = dot3(&v, &tangent);
         let v_n: Vec3D<INPUTS> = std::array::from_fn(|i| v[i] - along * tangent[i]);
         let speed = dot3(&v_n, &v_n).sqrt();
-        let zero = VivAtPoint {
-            frequency: Dual::constant(0.0),
-            response_phase: Dual::constant(0.0),
-            lift: [Dual::constant(0.0); 3],
-            y_dot: 0.0,
-            y_ddot: 0.0,
-        };
         if speed.v == 0.0 {
-            return zero;
+            return VivAtPoint::still();
         }
         let across = cross3(&tangent, &v_n);
         let e_y = across.map(|c| c / speed);

@@ -75,34 +75,39 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         for (s, p) in self.axial_points.iter().enumerate() {
             let state = &start[s * VIV_VALUES..(s + 1) * VIV_VALUES];
             let squares = (state[1], state[2]);
-            let law: Vec<VivAtPoint> = (0..nodes)
-                .map(|h| {
-                    let k = self.kinematics_at(&p.shape, &shapes[h], y);
-                    let when = t0 + shapes[h].0 * slab.dt;
-                    viv.at_point(water, (&k.r, &k.rx, &k.rdot, &k.rddot), when, squares)
-                })
-                .collect();
-            let (z, jac) = collocate_phase(viv, a, nodes, state[0], &law);
+            // The law at the nodes, and the point's velocity there (on
+            // the stack: the residual allocates nothing per point).
+            let mut rdot = [[0.0; 3]; MAX_NODES];
+            let law: [VivAtPoint; MAX_NODES] = std::array::from_fn(|h| {
+                if h >= nodes {
+                    return VivAtPoint::still();
+                }
+                let k = self.kinematics_at(&p.shape, &shapes[h], y);
+                rdot[h] = k.rdot;
+                let when = t0 + shapes[h].0 * slab.dt;
+                viv.at_point(water, (&k.r, &k.rx, &k.rdot, &k.rddot), when, squares)
+            });
+            let law = &law[..nodes];
+            let (z, jac) = collocate_phase(viv, a, nodes, state[0], law);
             let end = &mut out.viv.end[s * VIV_VALUES..(s + 1) * VIV_VALUES];
             end[0] = z[np].rem_euclid(std::f64::consts::TAU);
             let samples = slab
                 .points
                 .iter()
-                .zip(&law)
+                .zip(law)
                 .map(|(tp, l)| (tp.w_dt, tp.offset, l.y_dot, l.y_ddot));
             (end[1], end[2]) = viv.mean_squares_after(slab.dt, squares, samples);
             for (g, tp) in slab.points.iter().enumerate() {
                 let c = z[g].cos();
                 let f = law[g].lift.map(|l| l.v * c);
                 out.viv.lift[g * ns + s] = f;
-                let k = self.kinematics_at(&p.shape, &shapes[g], y);
-                out.water_work += tp.w_dt * p.wl * (0..3).map(|i| f[i] * k.rdot[i]).sum::<f64>();
+                out.water_work += tp.w_dt * p.wl * (0..3).map(|i| f[i] * rdot[g][i]).sum::<f64>();
             }
             if with_hessian {
                 let jacobian = PhaseJacobian {
                     z: &z,
                     jac: &jac,
-                    law: &law,
+                    law,
                 };
                 jacobian.add_blocks(viv, slab, &shapes, &mut out.viv, s);
             }
@@ -300,18 +305,19 @@ impl PhaseJacobian<'_> {
 /// (tau, phi_m, phidot_m, phiddot_m) at a node of the collocation.
 type NodeShapes = (f64, [f64; 4], [f64; 4], [f64; 4]);
 
-/// The time shapes at the slab's time points and its end.
-fn time_shapes(slab: &TimeSlab) -> Vec<NodeShapes> {
-    let taus = slab
-        .points
-        .iter()
-        .map(|p| p.offset / slab.dt)
-        .chain(std::iter::once(1.0));
-    taus.map(|tau| {
+/// The time shapes at the slab's time points and its end (the entries
+/// past them unused).
+fn time_shapes(slab: &TimeSlab) -> [NodeShapes; MAX_NODES] {
+    let np = slab.points.len();
+    std::array::from_fn(|h| {
+        let tau = match h {
+            _ if h < np => slab.points[h].offset / slab.dt,
+            _ if h == np => 1.0,
+            _ => return (0.0, [0.0; 4], [0.0; 4], [0.0; 4]),
+        };
         let [t, tdot, tddot] = crate::shape::hermite3(tau, slab.dt);
         (tau, t, tdot, tddot)
     })
-    .collect()
 }
 
 /// Solves (V5) for the phase: Z_i = phi0 + sum_j dt A_ij rate(Z_j), by
