@@ -101,7 +101,7 @@ impl HostEnvironment {
                     Sig(host)
                 )),
                 Some(own) if own != host => {
-                    let line = super::moordyn_water::option_at(deck, option).map_or(0, |a| a.1);
+                    let line = deck.option_at(option).map_or(0, |a| a.1);
                     notes.push(format!(
                         "line {line}: the deck's {} {} {unit} is used; the host's {what}, {} \
                          {unit}, is not",

@@ -25,11 +25,6 @@ pub const CURRENT_PROFILE_FILE: &str = "current_profile.txt";
 /// title, a description, the column names), skipped as MoorDyn skips them.
 const CURRENT_PROFILE_HEADER_LINES: usize = 3;
 
-/// The deck's option `which`: its name as written and its line.
-pub(super) fn option_at(deck: &Deck, which: SupportedOption) -> Option<(&str, usize)> {
-    deck.option_at(which)
-}
-
 /// The water keys the deck at `path` (named `file` in messages) gives,
 /// and notes on its current where it varies in time and on its seafloor
 /// file.
@@ -44,8 +39,8 @@ pub(super) fn deck_water_keys(
         SupportedOption::TransverseFriction,
     ] {
         if let (Some(one), Some(other)) = (
-            option_at(deck, SupportedOption::FrictionCoefficient),
-            option_at(deck, separate),
+            deck.option_at(SupportedOption::FrictionCoefficient),
+            deck.option_at(separate),
         ) {
             return Err(ScenarioError(format!(
                 "{file}: line {}: option {} and {} (line {}) both give the seabed's friction \
@@ -94,7 +89,9 @@ fn deck_current(
     let Some(mode) = deck.option(SupportedOption::Currents) else {
         return Ok((None, None));
     };
-    let (name, line) = option_at(deck, SupportedOption::Currents).expect("the option is set");
+    let (name, line) = deck
+        .option_at(SupportedOption::Currents)
+        .expect("the option is set");
     let source = match mode {
         0.0 => return Ok((None, None)),
         1.0 => CURRENT_PROFILE_FILE,
@@ -261,8 +258,9 @@ pub(super) fn deck_water(
         Some((ctx, added)) => {
             for ((key, in_deck), (_, in_scenario)) in deck_keys.given().iter().zip(added.given()) {
                 if *in_deck && in_scenario {
-                    let (name, line) =
-                        option_at(deck, deck_option_of(key, deck)).expect("the deck sets it");
+                    let (name, line) = deck
+                        .option_at(deck_option_of(key, deck))
+                        .expect("the deck sets it");
                     return Err(ctx.err(
                         key,
                         format!(

@@ -41,7 +41,7 @@ use std::path::Path;
 /// `WaveKin 1` waits for a host to set the water's kinematics at
 /// MoorDyn's nodes, which stancf's coupling API does not take.
 pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
-    let at = super::moordyn_water::option_at(deck, SupportedOption::WaveKin)?;
+    let at = deck.option_at(SupportedOption::WaveKin)?;
     (deck.option(SupportedOption::WaveKin) == Some(1.0)).then(|| {
         format!(
             "{file}: line {}: option {} is 1: MoorDyn's host sets the water's kinematics at its \
@@ -62,7 +62,7 @@ pub(super) fn deck_waves(
     file: &str,
     path: &Path,
 ) -> Result<(Vec<AiryWave>, Option<String>), ScenarioError> {
-    let at = super::moordyn_water::option_at(deck, SupportedOption::WaveKin);
+    let at = deck.option_at(SupportedOption::WaveKin);
     let Some(((name, line), mode)) = at.zip(deck.option(SupportedOption::WaveKin)) else {
         return Ok((Vec::new(), None));
     };
