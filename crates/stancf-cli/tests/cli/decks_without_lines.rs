@@ -225,3 +225,79 @@ fn a_decks_sinking_rod_is_refused_naming_its_row() {
         );
     }
 }
+
+/// MoorDyn's body_tests/orbitalBody.txt: body 1 has no mass of its own
+/// and two 20 kg point masses on a line (its moment about the line is
+/// completed, docs/method.md (B2a)), body 2 a rod; no gravity, and the
+/// bodies above the water. The deck is read; nothing acts on the bodies,
+/// so a deck alone (a static run) has no isolated equilibrium to find and
+/// is refused naming the row and the dynamic route, which runs: the
+/// bodies stay where the deck puts them.
+#[test]
+fn moordyns_orbital_body_deck_is_read_and_runs_from_its_pose() {
+    let d = scratch("orbital");
+    let deck = write_scenario(
+        &d,
+        "orbitalBody.txt",
+        "--------------------- MoorDyn Input File -------------------------------------------------------
+Testing body kinematics when body origin != COM
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+buoy          1        1.0e1     0.0    0.0     0.0      0.0
+---------------------------- BODIES -----------------------------------------------------
+ID      Attachment  X0     Y0      Z0      r0        p0     y0      Mass  CG*        I*        Volume   CdA*   Ca
+(#)     (-)         (m)    (m)     (m)     (deg)     (deg)  (deg)   (kg)  (m)        (kg-m^2)  (m^3)    (m^2)  (-)
+1       free        0      10      20      0.0       0      0       0     0|-10|0    0         0        0      0
+2       free        0      10      20      0.0       0      0       0     0|-10|0    0         0        0      0
+----------------------- POINTS ----------------------------------------------
+Node      Type       X         Y          Z        M        V          CdA    CA
+(-)       (-)        (m)       (m)        (m)      (kg)     (m^3)      (m^2)  (-)
+1         Body1      0.0       -10        -2       20.0     0          0      0
+2         Body1      0.0       -10        2        20.0     0          0      0
+---------------------- RODS ----------------------------------------
+ID     RodType   Attachment  Xa    Ya    Za    Xb    Yb     Zb    NumSegs   RodOutputs
+(#)    (name)    (#/key)     (m)   (m)   (m)   (m)   (m)    (m)   (-)       (-)
+1      buoy      Body2       0     -10   -2    0     -10.0  2     10        -
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+0.0      g            - No gravity
+1e-3     dtM          - time step to use in mooring integration
+70       WtrDpth      - water depth
+0.0      TmaxIC       - threshold for IC convergence
+--------------------------- need this line -------------------------------------------------
+",
+    );
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let se = text(&o).1;
+    assert_eq!(o.status.code(), Some(2), "{se}");
+    assert!(
+        se.contains("line 10: body 1")
+            && se.contains("nothing acts on it")
+            && se.contains("initial = \"reference\""),
+        "{se}"
+    );
+    let scenario = write_scenario(
+        &d,
+        "orbit.toml",
+        "[system]\nmoordyn = \"orbitalBody.txt\"\n[analysis]\ntype = \"dynamic\"\n\
+         initial = \"reference\"\nduration = 0.01\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&scenario, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let last = &rows[rows.len() - 1];
+    assert!(
+        (last[col("t")] - 0.01).abs() <= 1e-12,
+        "t = {}",
+        last[col("t")]
+    );
+    for (name, want) in [("x", 0.0), ("y", 10.0), ("z", 20.0), ("pitch", 0.0)] {
+        assert!(
+            (last[col(name)] - want).abs() <= 1e-12,
+            "{name}: {}",
+            last[col(name)]
+        );
+    }
+}

@@ -80,16 +80,19 @@ pub(super) fn deck_scenario(
         kind: Some("static".into()),
         ..RawAnalysis::default()
     };
-    let mut bodies = deck
-        .bodies
-        .iter()
-        .map(|b| {
-            let rods = deck.rods.iter().any(|r| {
-                r.attachment == crate::moordyn::RodAttachment::Body(b.id) && r.segments > 0
-            });
-            deck_body(b, rods, file)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut bodies =
+        deck.bodies
+            .iter()
+            .map(|b| {
+                let rods = deck.rods.iter().any(|r| {
+                    r.attachment == crate::moordyn::RodAttachment::Body(b.id) && r.segments > 0
+                });
+                let masses = deck.points.iter().any(|p| {
+                    p.attachment == crate::moordyn::Attachment::Body(b.id) && p.mass > 0.0
+                });
+                deck_body(b, rods || masses, file)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
     let turbines = farm
         .as_ref()
         .map_or(0, |f| super::farm::turbine_bodies(f, &mut bodies));
@@ -398,10 +401,12 @@ fn deck_point(
 /// takes a zero mass or zero moments, its body's mass matrix holding the
 /// masses of the line ends and rods attached to it
 /// (docs/moordyn-bodies-rods.md §2.3): refused naming the deck's line,
-/// unless rods of the body's (`rods`) give it their mass and inertia
-/// (a float made of rods, MoorDyn's md_float; the library folds them in
-/// and refuses a sum that is no body's).
-fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, ScenarioError> {
+/// unless rods or points with mass on the body (`parts`) give it their
+/// mass and inertia (a float made of rods, MoorDyn's md_float; point
+/// masses, its orbitalBody; the library folds them in, completes the
+/// inertia of mass on a line (docs/method.md (B2a)) and refuses a sum
+/// that is no body's).
+fn deck_body(b: &DeckBody, parts: bool, file: &str) -> Result<SystemBody, ScenarioError> {
     let fixed = SystemBody::fixed(b.id as i64, b.position, b.angles);
     match b.attachment {
         BodyAttachment::Fixed => return Ok(fixed),
@@ -418,14 +423,14 @@ fn deck_body(b: &DeckBody, rods: bool, file: &str) -> Result<SystemBody, Scenari
     let moordyn_differs = "MoorDyn accepts it, its body's mass matrix also holding the masses \
                            of the line ends and rods attached to the body; stancf's body \
                            carries its own mass and inertia (the lines' ends are the lines')";
-    if b.mass < 0.0 || (b.mass == 0.0 && !rods) {
+    if b.mass < 0.0 || (b.mass == 0.0 && !parts) {
         return Err(ScenarioError(format!(
             "{file}: line {}: Mass: free body {} has mass {} kg; a free body needs a positive \
              mass ({moordyn_differs})",
             b.line, b.id, b.mass
         )));
     }
-    if !(moments_of_a_body(b.moments) || (rods && b.moments.iter().all(|m| *m >= 0.0))) {
+    if !(moments_of_a_body(b.moments) || (parts && b.moments.iter().all(|m| *m >= 0.0))) {
         return Err(ScenarioError(format!(
             "{file}: line {}: I: free body {} has the moments of inertia {:?} kg m^2; a free \
              body needs those of a body with extent in all three directions, each less than \

@@ -261,13 +261,15 @@ pub(super) type BodyPoints = Vec<Vec<(usize, [f64; 3])>>;
 /// coupled body a coupled point there (at rest until a coupling code
 /// moves the body); a point on a free body gets its position at t = 0,
 /// and its mass, weight, buoyancy and given force become the body's
-/// ([`fold_point`]). Returns every body's points with their body
-/// coordinates. Keys: `bodies[i]`, `points[i]`.
+/// ([`fold_point`]); a free body whose mass then lies on a line has its
+/// inertia completed about it ((B2a), [`super::line_body`]). Returns every
+/// body's points with their body coordinates, and which bodies' inertia
+/// was completed. Keys: `bodies[i]`, `points[i]`.
 pub(super) fn place_points(
     bodies: &mut [Body],
     points: &mut [Point],
     gravity: [f64; 3],
-) -> Result<BodyPoints, ModelError> {
+) -> Result<(BodyPoints, Vec<bool>), ModelError> {
     let mut on_body = vec![Vec::new(); bodies.len()];
     for (i, b) in bodies.iter_mut().enumerate() {
         fold_rods(b, gravity).map_err(|e| e.under(&format!("bodies[{i}]")))?;
@@ -280,8 +282,20 @@ pub(super) fn place_points(
             fold_point(b, p, local, gravity).map_err(|e| e.under(&format!("points[{i}]")))?;
         }
     }
-    for (i, b) in bodies.iter().enumerate() {
-        b.check(&format!("bodies[{i}]"))?;
+    let mut on_a_line = vec![false; bodies.len()];
+    for (i, b) in bodies.iter_mut().enumerate() {
+        let key = format!("bodies[{i}]");
+        if b.kind == BodyKind::Free {
+            let locals: Vec<[f64; 3]> = points
+                .iter()
+                .filter_map(|p| match p.kind {
+                    PointKind::Body { body, local } if body == i => Some(local),
+                    _ => None,
+                })
+                .collect();
+            on_a_line[i] = super::line_body::complete_inertia_on_a_line(b, &locals, &key)?;
+        }
+        b.check(&key)?;
     }
     for (i, p) in points.iter_mut().enumerate() {
         let PointKind::Body { body, local } = p.kind else {
@@ -326,7 +340,7 @@ pub(super) fn place_points(
             .map_err(|e| e.under(&format!("bodies[{i}].pin")))?;
     }
     super::body_pins::check_joint_loops(bodies, points)?;
-    Ok(on_body)
+    Ok((on_body, on_a_line))
 }
 
 /// A point on a free body with a mass m, a force F or water (a volume V
@@ -439,16 +453,18 @@ fn fold_rods(body: &mut Body, gravity: [f64; 3]) -> Result<(), ModelError> {
         water.rods.clear();
     }
     if !rods.is_empty() {
-        if !(gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] < 0.0) {
+        // Without gravity (a deck's g 0) the rods have no buoyancy, and
+        // their drag and added mass act below z = 0 as with it.
+        if !(gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] <= 0.0) {
             return Err(ModelError::invalid(
                 "rods",
                 format!(
-                    "rods in water need gravity along -z (the water's surface is z = 0), \
-                     not {gravity:?}"
+                    "rods in water need gravity along -z or none (the water's surface is z = \
+                     0), not {gravity:?}"
                 ),
             ));
         }
-        water.gravity = -gravity[2];
+        water.gravity = gravity[2].abs();
     }
     water.rods.extend(rods);
     Ok(())

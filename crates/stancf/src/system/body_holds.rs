@@ -43,14 +43,36 @@ pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError
             check_afloat(system, b)?;
         }
         if !held {
+            let why = if unloaded(system, b) {
+                "nothing acts on it (no gravity, force, moment or moving water), so every pose \
+                 is an equilibrium and none is isolated"
+            } else {
+                "it has no static equilibrium (nothing balances its weight and buoyancy)"
+            };
             return Err(crate::error::ModelError::invalid(
                 format!("bodies[{b}]"),
-                "is free and no line holds it: it has no static equilibrium (nothing balances \
-                 its weight and buoyancy); start a dynamic run from its given pose instead",
+                format!(
+                    "is free and no line holds it: {why}; start a dynamic run from its given \
+                     pose instead"
+                ),
             ));
         }
     }
     Ok(())
+}
+
+/// Whether nothing acts on free body b at rest: no gravity, no constant
+/// force or moment, no current, waves or external loads of its water.
+fn unloaded(system: &System, b: usize) -> bool {
+    let body = &system.bodies()[b];
+    let still = body
+        .water
+        .as_ref()
+        .is_none_or(|w| w.current == [0.0; 3] && w.sea.is_none() && w.external.is_zero());
+    system.gravity() == [0.0; 3]
+        && body.loads.iter().all(|(f, _)| *f == [0.0; 3])
+        && body.moment == [0.0; 3]
+        && still
 }
 
 /// Refuses a body floating on its rods alone that their whole buoyancy

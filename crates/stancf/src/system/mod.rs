@@ -41,6 +41,7 @@ mod frame;
 mod halving;
 mod held;
 mod layout;
+mod line_body;
 mod line_type;
 mod mass;
 mod network;
@@ -285,7 +286,7 @@ impl System {
         mut bodies: Vec<Body>,
         gravity: [f64; 3],
     ) -> Result<Self, ModelError> {
-        let body_points = bodies::place_points(&mut bodies, &mut points, gravity)?;
+        let (body_points, on_a_line) = bodies::place_points(&mut bodies, &mut points, gravity)?;
         if lines.is_empty() && bodies.is_empty() {
             return Err(ModelError::invalid(
                 "lines",
@@ -358,6 +359,17 @@ impl System {
             }
         }
         clamp_checks::check_connectors(&bodies, &body_points, &clamps)?;
+        if let Some(c) = clamps.iter().find(|c| on_a_line[c.body]) {
+            return Err(ModelError::invalid(
+                format!("lines[{}]", c.line),
+                format!(
+                    "is clamped in a direction at body {}, whose mass lies on a line and which \
+                     has no inertia about it: the clamp's moment would turn it about the line \
+                     (docs/method.md (B2a))",
+                    c.body
+                ),
+            ));
+        }
         let topology = Topology {
             ends: out.iter().map(|l| l.ends).collect(),
             points,

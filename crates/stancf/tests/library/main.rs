@@ -11,6 +11,7 @@ mod added_mass_systems;
 mod axial_damping;
 mod bodies_in_systems;
 mod bodies_in_waves;
+mod bodies_on_a_line;
 mod body_statics;
 mod broyden;
 mod catenary_on_seabed;
