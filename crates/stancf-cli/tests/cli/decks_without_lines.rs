@@ -229,10 +229,11 @@ fn a_decks_sinking_rod_is_refused_naming_its_row() {
 /// MoorDyn's body_tests/orbitalBody.txt: body 1 has no mass of its own
 /// and two 20 kg point masses on a line (its moment about the line is
 /// completed, docs/method.md (B2a)), body 2 a rod; no gravity, and the
-/// bodies above the water. The deck is read; nothing acts on the bodies,
-/// so a deck alone (a static run) has no isolated equilibrium to find and
-/// is refused naming the row and the dynamic route, which runs: the
-/// bodies stay where the deck puts them.
+/// bodies above the water. Nothing holds or loads the bodies: every pose
+/// is an equilibrium, and the static solve holds each where the deck
+/// puts it (§15.8), its mooring stiffness zero (nothing is attached);
+/// `check` describes the deck, `run` (a deck alone, static) and a
+/// dynamic run from the deck's pose leave the bodies where they are.
 #[test]
 fn moordyns_orbital_body_deck_is_read_and_runs_from_its_pose() {
     let d = scratch("orbital");
@@ -268,14 +269,35 @@ ID     RodType   Attachment  Xa    Ya    Za    Xb    Yb     Zb    NumSegs   RodO
 ",
     );
     let o = stancf(&["check", deck.to_str().unwrap()]);
-    let se = text(&o).1;
-    assert_eq!(o.status.code(), Some(2), "{se}");
+    let so = text(&o).0;
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     assert!(
-        se.contains("line 10: body 1")
-            && se.contains("nothing acts on it")
-            && se.contains("initial = \"reference\""),
-        "{se}"
+        so.contains("6 per free body (2))")
+            && so.contains("point 2                     on free body 1"),
+        "{so}"
     );
+    let statics = d.join("statics");
+    let o = run_quiet(&deck, &statics, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&statics.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    for row in &rows {
+        for (name, want) in [("x", 0.0), ("y", 10.0), ("z", 20.0), ("pitch", 0.0)] {
+            assert!(
+                (row[col(name)] - want).abs() <= 1e-12,
+                "{name}: {}",
+                row[col(name)]
+            );
+        }
+    }
+    // Nothing is attached to the bodies: their mooring stiffness is zero.
+    let stiffness = std::fs::read_to_string(statics.join("stiffness.csv")).unwrap();
+    let rows: Vec<&str> = stiffness.lines().skip(1).collect();
+    assert_eq!(rows.len(), 12, "{stiffness}");
+    for row in rows {
+        let values = row.split(',').skip(2).map(|v| v.parse::<f64>().unwrap());
+        assert!(values.into_iter().all(|v| v == 0.0), "{row}");
+    }
     let scenario = write_scenario(
         &d,
         "orbit.toml",

@@ -18,10 +18,14 @@ fn on_lines(system: &System, b: usize) -> bool {
 
 /// Whether free body b floats on its rods alone: no line and no pin hold
 /// it, it has rods in water (their buoyancy a potential of the pose, with
-/// a waterplane's stiffness where they cross the surface, §15.11) and no
+/// a waterplane's stiffness where they cross the surface, §15.11), there
+/// is gravity (without it nothing floats: no weight, no buoyancy) and no
 /// current drags it (which would push it away for ever).
 fn floats(system: &System, b: usize) -> bool {
     let body = &system.bodies()[b];
+    if system.gravity() == [0.0; 3] {
+        return false;
+    }
     let Some(w) = &body.water else { return false };
     let dragged = w.current != [0.0; 3]
         && (w.drag_areas != [0.0; 3]
@@ -31,34 +35,44 @@ fn floats(system: &System, b: usize) -> bool {
     body.pin.is_none() && !on_lines(system, b) && !w.rods.is_empty() && !dragged
 }
 
-/// Refuses a free body that no line or pin holds and that does not float
-/// on its rods ([`floats`]): its weight and buoyancy have nothing to
+/// Refuses a free body that no line or pin holds, that does not float on
+/// its rods ([`floats`]) and that something acts on ([`rest_hold`]): its
+/// weight and buoyancy have nothing to
 /// balance them, so it has no static equilibrium (it sinks or rises for
 /// ever, and drifts sideways on nothing); a dynamic run from its given
 /// pose is its motion. Key `bodies[b]`.
 pub(super) fn check_held(system: &System) -> Result<(), crate::error::ModelError> {
     for b in system.free_bodies() {
         let held = system.bodies()[b].pin.is_some() || on_lines(system, b) || floats(system, b);
+        if !held && rest_hold(system, b).is_some() {
+            continue;
+        }
         if held && floats(system, b) {
             check_afloat(system, b)?;
         }
         if !held {
-            let why = if unloaded(system, b) {
-                "nothing acts on it (no gravity, force, moment or moving water), so every pose \
-                 is an equilibrium and none is isolated"
-            } else {
-                "it has no static equilibrium (nothing balances its weight and buoyancy)"
-            };
             return Err(crate::error::ModelError::invalid(
                 format!("bodies[{b}]"),
-                format!(
-                    "is free and no line holds it: {why}; start a dynamic run from its given \
-                     pose instead"
-                ),
+                "is free and no line holds it: it has no static equilibrium (nothing balances \
+                 its weight and buoyancy); start a dynamic run from its given pose instead",
             ));
         }
     }
     Ok(())
+}
+
+/// Where free body b stays in a static solve because nothing holds it
+/// and nothing acts on it ([`unloaded`]; no line, pin or buoyancy): every
+/// pose is an equilibrium, none isolated, and its rows are zero with a
+/// zero Jacobian. The solve holds it where it is given with springs on
+/// all six unknowns, k (r_G - r_G0) and k theta (k = 1 N/m and 1 N m, any
+/// positive stiffness: their forces are zero at the solution, the given
+/// pose; docs/method.md §15.8). Its centre of mass at t = 0, if so.
+pub(super) fn rest_hold(system: &System, b: usize) -> Option<[f64; 3]> {
+    let body = &system.bodies()[b];
+    let held = body.pin.is_some() || on_lines(system, b) || floats(system, b);
+    (!held && !body.connector && unloaded(system, b))
+        .then(|| body.point(body.inertia.centre_of_mass))
 }
 
 /// Whether nothing acts on free body b at rest: no gravity, no constant

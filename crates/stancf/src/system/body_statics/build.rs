@@ -104,6 +104,7 @@ pub(in crate::system) fn static_bodies(system: &System) -> Vec<StaticBody> {
                     (crate::vec3::sub(pin.local, c), hold)
                 }),
                 float_hold: crate::system::body_holds::float_hold(system, b),
+                rest_hold: crate::system::body_holds::rest_hold(system, b),
                 moment: body.moment,
                 own_stiffness: own_stiffness(body, net),
                 // A connector's spin is held by its own row (§15.20).

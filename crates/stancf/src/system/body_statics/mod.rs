@@ -78,6 +78,9 @@ pub(super) struct StaticBody {
     pub pin: Option<([f64; 3], PinHold)>,
     /// The holds of a body that floats on its rods alone.
     pub float_hold: Option<super::body_holds::FloatHold>,
+    /// The centre of mass a body nothing holds or loads is held at
+    /// ([`super::body_holds::rest_hold`]).
+    pub rest_hold: Option<[f64; 3]>,
     /// A constant moment (global, B27).
     pub moment: [f64; 3],
     /// The stiffness scale of a body that its lines do not give one (a
@@ -109,6 +112,7 @@ impl StaticBody {
             yaw_hold: None,
             pin: None,
             float_hold: None,
+            rest_hold: None,
             moment: [0.0; 3],
             ..self.clone()
         }
@@ -182,6 +186,15 @@ impl StaticBody {
         }
         if let Some(hold) = self.float_hold {
             self.add_float_hold(&hold, &q, &g, residual, jacobian.as_deref_mut());
+        }
+        if let Some(at) = self.rest_hold {
+            // k (r_G - r_G0) and k theta, k = 1: zero at the given pose.
+            for k in 0..6 {
+                residual[g(k)] += if k < 3 { q[k] - at[k] } else { q[k] };
+                if let Some(m) = jacobian.as_deref_mut() {
+                    m.add(g(k), g(k), 1.0);
+                }
+            }
         }
         if jacobian.is_some() {
             self.stiffness = self.own_stiffness;
