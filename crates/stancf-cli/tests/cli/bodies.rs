@@ -345,19 +345,24 @@ fn a_heavy_point_on_a_deck_body_adds_its_weight_and_buoyancy_to_the_body() {
     assert!(net.abs() < 1e-9 * weight, "net force {net}");
 }
 
+/// md_BdyExtLdDmpg's body: a point mass (moments of inertia 0).
+const POINT_MASS_BODY: &str =
+    " 1     free       0      0    -50     0      0      0    2.1244e4    0    0    0     0        0";
+
 /// The deck's refusals name its line: a point on a body with a drag area
-/// of its own, a free body without moments of inertia (which MoorDyn
-/// takes, its body's inertia holding the line ends').
+/// of its own, a point mass (a body without moments of inertia, which
+/// MoorDyn takes) whose line pulls off its centre, turning it with no
+/// inertia to resist (docs/method.md (B2a)).
 #[test]
-fn a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line() {
+fn a_dragging_body_point_or_a_point_mass_pulled_off_its_centre_in_a_deck_is_refused_by_line() {
     let dragging_point = body_deck(
         "",
         " 1        Body1     0        0         0        0        0        1.5        0",
         "",
     );
-    let no_inertia = body_deck(
-        " 1     free       0      0    -50     0      0      0    2.1244e4    0    0    0     0        0",
-        "",
+    let pulled_off_centre = body_deck(
+        POINT_MASS_BODY,
+        " 1        Body1     1        0         0        0        0        0        0",
         "",
     );
     for (name, deck, needle, words) in [
@@ -367,11 +372,72 @@ fn a_dragging_body_point_or_a_body_without_inertia_in_a_deck_is_refused_by_line(
             "Body1     0        0         0        0        0        1.5",
             "the drag and added mass of a point on a body are not built",
         ),
-        ("no-inertia", no_inertia, "1     free", "MoorDyn accepts it"),
+        (
+            "pulled-off-centre",
+            pulled_off_centre,
+            "1     free",
+            "no inertia about any line through it, and its point at [1.0, 0.0, 0.0]",
+        ),
     ] {
         let line = deck.lines().position(|l| l.contains(needle)).unwrap() + 1;
         let at = format!("line {line}:");
         expect_refusal_beside(name, &deck, &[], &["bad.toml", &at, words]);
+    }
+}
+
+/// OpenFAST's r-test md_BdyExtLdDmpg: a point mass (a body of 21 244 kg
+/// without moments of inertia, its line at its centre, docs/method.md
+/// (B2a)) hanging by a nylon line, pushed by MoorDyn-F's external force
+/// (104.17, 50, -10) kN and damped along the global axes. At its static
+/// equilibrium the line holds the force and the weight, -(F + m g), to
+/// 1e-9 (the static tolerance), and the body does not turn; a dynamic
+/// run from there stays to 1e-9 m over 2 s (the damping acts on no
+/// velocity).
+#[test]
+fn r_test_md_bdy_ext_ld_dmpg_a_pushed_point_mass_hangs_where_its_forces_balance() {
+    let d = scratch("point-mass");
+    let deck = body_deck(POINT_MASS_BODY, "", "").replace(
+        "-------------------------- SOLVER OPTIONS",
+        "---------------------- EXTERNAL LOADS --------------------------------
+ID    Object            Fext                Blin               Bquad            CSys
+(#)   (name)            (N)                (Ns/m)            (Ns^2/m^2)         (-)
+ 1     Body1  1.0417e5|0.5e5|-1.0e4   1.0e3|0.7e3|0.6e2  3.0e3|2.1e3|1.0e4       G
+-------------------------- SOLVER OPTIONS",
+    );
+    let deck = write_scenario(&d, "md_BdyExtLdDmpg.dat", &deck);
+    let out = d.join("statics");
+    let o = run_quiet(&deck, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let weight = 2.1244e4 * 9.80665;
+    let held = [-1.0417e5, -0.5e5, 1.0e4 + weight];
+    for (c, name) in ["fx", "fy", "fz"].iter().enumerate() {
+        let f = rows[0][col(name)];
+        assert!(
+            (f - held[c]).abs() <= 1e-9 * weight,
+            "{name}: {f} against {}",
+            held[c]
+        );
+    }
+    for name in ["roll", "pitch", "yaw", "mx", "my", "mz"] {
+        assert_eq!(rows[0][col(name)], 0.0, "{name}");
+    }
+    let at: Vec<f64> = ["x", "y", "z"].iter().map(|n| rows[0][col(n)]).collect();
+    let scenario = write_scenario(
+        &d,
+        "dynamic.toml",
+        "[system]\nmoordyn = \"md_BdyExtLdDmpg.dat\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 0.05\nduration = 2.0\n",
+    );
+    let out = d.join("dynamic");
+    let o = run_quiet(&scenario, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let last = &rows[rows.len() - 1];
+    for (c, name) in ["x", "y", "z"].iter().enumerate() {
+        let x = last[header.iter().position(|h| h == name).unwrap()];
+        assert!((x - at[c]).abs() <= 1e-9, "{name}: {x} against {}", at[c]);
     }
 }
 

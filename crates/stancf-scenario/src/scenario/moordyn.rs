@@ -430,7 +430,13 @@ fn deck_body(b: &DeckBody, parts: bool, file: &str) -> Result<SystemBody, Scenar
             b.line, b.id, b.mass
         )));
     }
-    if !(moments_of_a_body(b.moments) || (parts && b.moments.iter().all(|m| *m >= 0.0))) {
+    // Zero moments: a point mass (md_BdyExtLdDmpg), which the library
+    // takes where everything acts at its centre (docs/method.md (B2a)).
+    let point_mass = b.moments == [0.0; 3] && b.mass > 0.0;
+    if !(moments_of_a_body(b.moments)
+        || point_mass
+        || (parts && b.moments.iter().all(|m| *m >= 0.0)))
+    {
         return Err(ScenarioError(format!(
             "{file}: line {}: I: free body {} has the moments of inertia {:?} kg m^2; a free \
              body needs those of a body with extent in all three directions, each less than \

@@ -103,3 +103,49 @@ fn a_force_off_the_line_of_a_bodys_mass_or_a_spin_about_it_is_refused() {
     let quiet = Point::on_body(0, [0.0, -10.0, 5.0]);
     assert!(dumbbell([0.2, 0.0, 0.0], vec![quiet]).is_ok());
 }
+
+/// A body whose mass is at its centre alone (moments of inertia 0, OpenFAST's
+/// md_BdyExtLdDmpg) is a point mass: its inertia is completed on every
+/// axis (B2a), and pushed at its centre it accelerates as a point,
+/// r = r0 + F t^2 / (2 m), which the step's cubic holds exactly, without
+/// turning.
+#[test]
+fn a_point_mass_body_pushed_at_its_centre_moves_as_a_point() {
+    let (m, force) = (5.0, [3.0, -2.0, 1.0]);
+    let mut body = Body::new(
+        BodyKind::Free,
+        REFERENCE,
+        IDENTITY,
+        RigidInertia::principal(m, [0.0; 3], [0.0; 3]),
+    );
+    body.loads.push((force, [0.0; 3]));
+    let system = System::with_bodies(vec![], vec![], vec![body], [0.0; 3]).expect("a point mass");
+    let mut settings = StepSettings {
+        time_step: 0.1,
+        time_scheme: TimeScheme::Galerkin,
+        ..StepSettings::default()
+    };
+    settings.newton.tolerance = 1e-13;
+    let mut sim = SystemSimulation::new(system, vec![], settings).expect("simulation");
+    for _ in 0..20 {
+        sim.step().expect("step");
+    }
+    let t = sim.time();
+    let body = sim.free_body(0).expect("free body");
+    let r = body.position();
+    for c in 0..3 {
+        let want = REFERENCE[c] + force[c] * t * t / (2.0 * m);
+        assert!((r[c] - want).abs() <= 1e-10, "{c}: {} against {want}", r[c]);
+    }
+    assert_eq!(body.angular_velocity(), [0.0; 3]);
+    // Pushed off its centre it would turn with nothing to resist: refused.
+    let mut off = Body::new(
+        BodyKind::Free,
+        REFERENCE,
+        IDENTITY,
+        RigidInertia::principal(m, [0.0; 3], [0.0; 3]),
+    );
+    off.loads.push((force, [0.0, 0.0, 1.0]));
+    let e = System::with_bodies(vec![], vec![], vec![off], [0.0; 3]).unwrap_err();
+    assert!(e.to_string().contains("no inertia about any line"), "{e}");
+}
