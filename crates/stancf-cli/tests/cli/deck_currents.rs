@@ -221,3 +221,69 @@ fn a_moordyn_f_waterkin_files_current_profile_is_the_same_current_as_currents_1(
         &[],
     );
 }
+
+/// The `U` and `D` flags of MoorDyn's line file at the static equilibrium
+/// in `Currents 1`'s steady profile: each node's water velocity is the
+/// profile's, linear in z between its rows, at the node's written height
+/// (to the 8 digits written), and the line's hydrodynamic forces (the
+/// current's drag at rest, as MoorDyn's `D` without buoyancy) are what its
+/// two points hold horizontally: the sum of D along x and y equals the
+/// sum of the points' forces, to the Newton tolerance's tension
+/// ([`NEWTON_TENSION`]); the strain rates `d` of a line at rest are 0.
+#[test]
+fn moordyns_u_and_d_line_outputs_are_the_current_and_the_drag_its_points_hold() {
+    let d = scratch("deck-current-line-out");
+    let deck = deck(1).replace("12       -", "12       pUDd");
+    std::fs::write(d.join("deck.txt"), deck).unwrap();
+    std::fs::write(d.join("current_profile.txt"), STEADY).unwrap();
+    let out = d.join("out");
+    let o = run_quiet(&d.join("deck.txt"), &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let file = std::fs::read_to_string(out.join("deck_Line1.out")).unwrap();
+    let rows: Vec<Vec<&str>> = file
+        .lines()
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    let (header, values) = (&rows[0], &rows[2]);
+    let value = |name: &str| -> f64 {
+        let c = header.iter().position(|h| *h == name).unwrap();
+        values[c].parse().unwrap()
+    };
+    let profile = |z: f64| -> [f64; 2] {
+        let (z0, u0, z1, u1) = if z <= -20.0 {
+            (-50.0, [0.3, 0.0], -20.0, [0.6, 0.2])
+        } else {
+            (-20.0, [0.6, 0.2], 0.0, [0.9, 0.0])
+        };
+        let f = (z - z0) / (z1 - z0);
+        [u0[0] + f * (u1[0] - u0[0]), u0[1] + f * (u1[1] - u0[1])]
+    };
+    let mut drag = [0.0; 2];
+    for i in 0..13 {
+        let want = profile(value(&format!("Node{i}pz")));
+        for (c, q) in ["Ux", "Uy"].iter().enumerate() {
+            let have = value(&format!("Node{i}{q}"));
+            assert!(
+                (have - want[c]).abs() <= 5e-8,
+                "node {i} {q}: {have} against {}",
+                want[c]
+            );
+        }
+        assert_eq!(value(&format!("Node{i}Uz")), 0.0);
+        drag[0] += value(&format!("Node{i}Dx"));
+        drag[1] += value(&format!("Node{i}Dy"));
+    }
+    for j in 1..=12 {
+        assert_eq!(value(&format!("Seg{j}dSt")), 0.0);
+    }
+    let (_, points) = read_csv(&out.join("points.csv"));
+    for (c, axis) in ["x", "y"].iter().enumerate() {
+        let held = points[0][8 + c] + points[1][8 + c];
+        assert!(drag[c].abs() > 100.0, "{axis}: {} N of drag", drag[c]);
+        assert!(
+            (drag[c] - held).abs() <= 2.0 * NEWTON_TENSION + 1e-7 * held.abs(),
+            "{axis}: drag {} N, the points hold {held} N",
+            drag[c]
+        );
+    }
+}

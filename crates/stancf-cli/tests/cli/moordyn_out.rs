@@ -102,16 +102,19 @@ fn without_units_and_at_rest_the_out_file_is_moordyns_too() {
     assert!((fairlead - rows[0][1]).abs() <= 5e-8 * rows[0][1]);
 }
 
-/// A line's `LineOutputs` flags `pKvUDtsb`: `rope_Line1.out` has MoorDyn's
-/// columns for the flags stancf computes, in MoorDyn's order (positions,
-/// curvatures, velocities of the 5 nodes; tensions and strains of the 4
-/// segments; seabed forces of the nodes), none for `U` and `D`, which
-/// `check` names; the positions are nodes.csv's and the tension of each
-/// segment is EA times its strain (EA 2e4 N), to the 8 digits written.
+/// A line's `LineOutputs` flags `pKvUDtscdb`: `rope_Line1.out` has
+/// MoorDyn's columns for the flags stancf computes, in MoorDyn's order
+/// (positions, curvatures, velocities, water velocities and hydrodynamic
+/// forces of the 5 nodes; tensions, strains and strain rates of the 4
+/// segments; seabed forces of the nodes), none for `c`, which `check`
+/// names; the positions are nodes.csv's, the tension of each segment is
+/// EA times its strain (EA 2e4 N), to the 8 digits written, and in still
+/// water the rope (Cd and Ca 0) has no water velocity and no
+/// hydrodynamic force.
 #[test]
 fn a_lines_output_flags_are_moordyns_line_file() {
     let d = scratch("moordyn-line-out");
-    let deck = rope_deck("FairTen1\n").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pKvUDtsb");
+    let deck = rope_deck("FairTen1\n").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pKvUDtscdb");
     std::fs::write(d.join("rope.txt"), deck).unwrap();
     let (so, se) = text(&stancf(&["check", d.join("rope.txt").to_str().unwrap()]));
     assert!(
@@ -119,7 +122,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         "{so}"
     );
     assert!(
-        so.contains("LineOutputs \"pKvUDtsb\" of line 1: U (the water's velocity), D (the hydrodynamic force) not computed by stancf; rope_Line1.out has no columns for them"),
+        so.contains("LineOutputs \"pKvUDtscdb\" of line 1: c (the internal damping force) not computed by stancf; rope_Line1.out has no columns for them"),
         "{so}{se}"
     );
     let sc = swing(&d, 0.1);
@@ -133,42 +136,106 @@ fn a_lines_output_flags_are_moordyns_line_file() {
             .flat_map(|i| q.iter().map(move |s| format!("Node{i}{s}")))
             .collect()
     };
+    let segment = |q: &str| -> Vec<String> { (1..=4).map(|j| format!("Seg{j}{q}")).collect() };
     header.extend(node(&["px", "py", "pz"]));
     header.extend(node(&["Ku"]));
     header.extend(node(&["vx", "vy", "vz"]));
-    header.extend((1..=4).map(|j| format!("Seg{j}Te")));
-    header.extend((1..=4).map(|j| format!("Seg{j}St")));
+    header.extend(node(&["Ux", "Uy", "Uz"]));
+    header.extend(node(&["Dx", "Dy", "Dz"]));
+    header.extend(segment("Te"));
+    header.extend(segment("St"));
+    header.extend(segment("dSt"));
     header.extend(node(&["bx", "by", "bz"]));
     assert_eq!(table[0], header);
     let units: Vec<&str> = std::iter::once("(s)")
         .chain(std::iter::repeat_n("(m)", 15))
         .chain(std::iter::repeat_n("(1/m)", 5))
-        .chain(std::iter::repeat_n("(m/s)", 15))
+        .chain(std::iter::repeat_n("(m/s)", 30))
+        .chain(std::iter::repeat_n("(N)", 15))
         .chain(std::iter::repeat_n("(N)", 4))
         .chain(std::iter::repeat_n("(-)", 4))
+        .chain(std::iter::repeat_n("(-/s)", 4))
         .chain(std::iter::repeat_n("(N)", 15))
         .collect();
     assert_eq!(table[1], units);
+    let at = |name: &str| header.iter().position(|h| h == name).unwrap();
     let (_, nodes) = read_csv(&out.join("lines/1/nodes.csv"));
     assert_eq!(table.len() - 2, 11);
     for (k, row) in table[2..].iter().enumerate() {
         let v: Vec<f64> = row.iter().map(|w| w.parse().unwrap()).collect();
         for i in 0..5 {
             let n = &nodes[5 * k + i];
-            for c in 0..3 {
-                let (have, want) = (v[1 + 3 * i + c], n[2 + c]);
+            for (c, q) in ["px", "py", "pz"].iter().enumerate() {
+                let (have, want) = (v[at(&format!("Node{i}{q}"))], n[2 + c]);
                 assert!(
                     (have - want).abs() <= 5e-8 * want.abs() + 1e-15,
                     "{have} against {want}"
                 );
             }
+            for q in ["Ux", "Uy", "Uz", "Dx", "Dy", "Dz"] {
+                assert_eq!(v[at(&format!("Node{i}{q}"))], 0.0, "{q}");
+            }
         }
-        for j in 0..4 {
-            let (tension, strain) = (v[36 + j], v[40 + j]);
+        for j in 1..=4 {
+            let (tension, strain) = (v[at(&format!("Seg{j}Te"))], v[at(&format!("Seg{j}St"))]);
             assert!(tension > 0.0, "segment {j}: {tension} N");
             assert!(
                 (tension - 2e4 * strain).abs() <= 2e-7 * tension,
                 "{tension} against {strain}"
+            );
+        }
+    }
+}
+
+/// The `d` flag's strain rate of each segment is the rate of its strain
+/// `s` (both at the element's middle): against the central difference of
+/// the written strains of a slow rope (80 kg/m, EA 200 N: an axial period
+/// of 1.26 s) swung at 0.5 s, written every 1 ms step, to 1e-3 of the
+/// largest rate. The difference's truncation (dt omega)^2 / 6 is below
+/// 3e-5 of the rate, and the 8 digits written round the strains by 5e-8
+/// of themselves, 2.5e-5 of them per 2 ms.
+#[test]
+fn a_segments_strain_rate_is_the_rate_of_its_written_strain() {
+    let d = scratch("moordyn-strain-rate");
+    let deck = rope_deck("FairTen1\n")
+        .replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 sd")
+        .replace(
+            "rope 0.01 0.08 2.0e4 0 0 0 0 0 0",
+            "rope 0.01 80 2.0e2 0 0 0 0 0 0",
+        );
+    std::fs::write(d.join("rope.txt"), deck).unwrap();
+    let sc = write_scenario(
+        &d,
+        "swing.toml",
+        "[system]\nmoordyn = \"rope.txt\"\n[[motions]]\npoint = 2\n\
+         amplitude = [0.05, 0.0, 0.02]\nperiod = 0.5\n[analysis]\ntype = \"dynamic\"\n\
+         time_scheme = \"galerkin\"\ntime_step = 0.001\nduration = 0.3\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&sc, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let table = words(&out.join("rope_Line1.out"));
+    let rows: Vec<Vec<f64>> = table[2..]
+        .iter()
+        .map(|r| r.iter().map(|w| w.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 301);
+    // Time, then the 4 strains, then the 4 rates.
+    let largest = rows
+        .iter()
+        .flat_map(|r| r[5..9].iter().map(|x| x.abs()))
+        .fold(0.0, f64::max);
+    assert!(largest > 0.1, "the rope hardly stretches: {largest} 1/s");
+    for k in 1..rows.len() - 1 {
+        let dt = rows[k + 1][0] - rows[k - 1][0];
+        for j in 0..4 {
+            let difference = (rows[k + 1][1 + j] - rows[k - 1][1 + j]) / dt;
+            let rate = rows[k][5 + j];
+            assert!(
+                (rate - difference).abs() <= 1e-3 * largest,
+                "t = {}, segment {}: {rate} against {difference}",
+                rows[k][0],
+                j + 1
             );
         }
     }

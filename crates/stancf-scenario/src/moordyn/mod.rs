@@ -215,20 +215,15 @@ pub struct DeckPoint {
 
 /// The `LineOutputs` flags whose quantities stancf writes to
 /// `<deck>_Line<n>.out`, in MoorDyn's order (`Line::Output`): node
-/// positions, curvatures, velocities, segment tensions and strains, the
+/// positions, curvatures, velocities, the water's velocities, the
+/// hydrodynamic forces, segment tensions, strains and strain rates, the
 /// seabed's nodal forces.
-pub const WRITTEN_LINE_FLAGS: [char; 6] = ['p', 'K', 'v', 't', 's', 'b'];
+pub const WRITTEN_LINE_FLAGS: [char; 9] = ['p', 'K', 'v', 'U', 'D', 't', 's', 'd', 'b'];
 
 /// The flags MoorDyn knows whose quantities stancf does not compute: the
-/// water's velocity, the hydrodynamic and VIV forces at the nodes, the
-/// segments' internal damping force and strain rate.
-pub const UNCOMPUTED_LINE_FLAGS: [(char, &str); 5] = [
-    ('U', "the water's velocity"),
-    ('D', "the hydrodynamic force"),
-    ('V', "the VIV force"),
-    ('c', "the internal damping force"),
-    ('d', "the strain rate"),
-];
+/// VIV force at the nodes, the segments' internal damping force.
+pub const UNCOMPUTED_LINE_FLAGS: [(char, &str); 2] =
+    [('V', "the VIV force"), ('c', "the internal damping force")];
 
 /// A row of `LINES`: `ID LineType AttachA AttachB UnstrLen NumSegs
 /// Outputs`.

@@ -3,22 +3,28 @@
 //! them, the node and segment quantities stancf computes, written as
 //! MoorDyn's `Line::Output` writes them (`Time`, then per flag in its
 //! order: `p` `Node<i>px py pz` (m), `K` `Node<i>Ku` (1/m), `v` `Node<i>vx
-//! vy vz` (m/s), `t` `Seg<j>Te` (N), `s` `Seg<j>St` (-), `b` `Node<i>bx by
-//! bz` (N); a units row of `(m)` and the like unless `WriteUnits 0`; the
-//! widths and numbers of the main file, `super::moordyn_out`). The nodes
-//! are the line's (its NumSegs + 1 unless a scenario remeshes it), the
-//! segments its elements: a segment's tension and strain are the
-//! element's at its middle, EA eps and eps (MoorDyn's are its segment's,
-//! the stretch of the chord between its nodes); a node's seabed force is
-//! the contact's consistent nodal force. The flags stancf does not
-//! compute (`U` the water's velocity, `D` the hydrodynamic force, `V` the
-//! VIV force, `c` the internal damping force, `d` the strain rate) get
-//! no columns, which `check` notes.
+//! vy vz` (m/s), `U` `Node<i>Ux Uy Uz` (m/s), `D` `Node<i>Dx Dy Dz` (N),
+//! `t` `Seg<j>Te` (N), `s` `Seg<j>St` (-), `d` `Seg<j>dSt` (-/s), `b`
+//! `Node<i>bx by bz` (N); a units row of `(m)` and the like unless
+//! `WriteUnits 0`; the widths and numbers of the main file,
+//! `super::moordyn_out`). The nodes are the line's (its NumSegs + 1
+//! unless a scenario remeshes it), the segments its elements: a segment's
+//! tension, strain and strain rate are the element's at its middle, EA
+//! eps, eps and d|r_x|/dt (MoorDyn's are its segment's, the stretch of
+//! the chord between its nodes); a node's water velocity is the sea's
+//! there; its hydrodynamic and seabed forces are the consistent nodal
+//! forces of the water's drag and fluid inertia (without buoyancy, as
+//! MoorDyn's) and of the contact. The flags stancf does not compute (`V`
+//! the VIV force, `c` the internal damping force) get no columns, which
+//! `check` notes.
 
 use super::moordyn_out::{write_time, write_value, TIME_WIDTH, WIDTH};
 use crate::output::{AtomicFile, Dest};
 use stancf::model::SLOT_R;
-use stancf::observe::{node_bending, seabed_nodal_forces, stress_samples, StressSample};
+use stancf::observe::{
+    element_strain_rates, hydrodynamic_nodal_forces, node_bending, node_water_velocities,
+    seabed_nodal_forces, stress_samples, StressSample,
+};
 use stancf::{Model, State};
 use std::io::Write;
 
@@ -32,8 +38,11 @@ fn columns(flag: char) -> (bool, &'static [&'static str], &'static str) {
         'p' => (true, &["px", "py", "pz"], "(m)"),
         'K' => (true, &["Ku"], "(1/m)"),
         'v' => (true, &["vx", "vy", "vz"], "(m/s)"),
+        'U' => (true, &["Ux", "Uy", "Uz"], "(m/s)"),
+        'D' => (true, &["Dx", "Dy", "Dz"], "(N)"),
         't' => (false, &["Te"], "(N)"),
         's' => (false, &["St"], "(-)"),
+        'd' => (false, &["dSt"], "(-/s)"),
         _ => (true, &["bx", "by", "bz"], "(N)"),
     }
 }
@@ -133,6 +142,25 @@ impl LineOut {
                 'K' => {
                     for b in node_bending(model, state) {
                         value(b.curvature)?;
+                    }
+                }
+                'U' | 'D' => {
+                    // At rest (a static run): the steady current's.
+                    let at = (!self.at_rest).then_some(t);
+                    let at_nodes = if f == 'U' {
+                        node_water_velocities(model, state, at)
+                    } else {
+                        hydrodynamic_nodal_forces(model, state, at)
+                    };
+                    for u in at_nodes {
+                        for c in u {
+                            value(c)?;
+                        }
+                    }
+                }
+                'd' => {
+                    for rate in element_strain_rates(model, state) {
+                        value(rate)?;
                     }
                 }
                 't' | 's' => {

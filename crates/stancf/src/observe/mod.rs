@@ -7,6 +7,9 @@ use crate::element::{axial_strain, curvature, CableElement};
 use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
+mod line_outputs;
+pub use line_outputs::{element_strain_rates, hydrodynamic_nodal_forces, node_water_velocities};
+
 /// Energies of a state (J).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Energies {
@@ -463,7 +466,7 @@ pub fn static_seabed_nodal_forces(model: &Model, state: &State, targets: &[f64])
 /// `sum_e int N_k f dx` on the nodes' positions of a force per length
 /// `force(r, r_x, rdot)`, r and r_x from the coordinates `e` and rdot
 /// interpolated from `rates` as a velocity.
-fn nodal_forces_per_length(
+pub(crate) fn nodal_forces_per_length(
     model: &Model,
     e: &[f64],
     rates: &[f64],
