@@ -102,19 +102,20 @@ fn without_units_and_at_rest_the_out_file_is_moordyns_too() {
     assert!((fairlead - rows[0][1]).abs() <= 5e-8 * rows[0][1]);
 }
 
-/// A line's `LineOutputs` flags `pKvUDtscdb`: `rope_Line1.out` has
+/// A line's `LineOutputs` flags `pKvUDVtscdb`: `rope_Line1.out` has
 /// MoorDyn's columns for the flags stancf computes, in MoorDyn's order
 /// (positions, curvatures, velocities, water velocities and hydrodynamic
-/// forces of the 5 nodes; tensions, strains and strain rates of the 4
-/// segments; seabed forces of the nodes), none for `c`, which `check`
-/// names; the positions are nodes.csv's, the tension of each segment is
-/// EA times its strain (EA 2e4 N), to the 8 digits written, and in still
-/// water the rope (Cd and Ca 0) has no water velocity and no
-/// hydrodynamic force.
+/// forces of the 5 nodes; tensions, damping forces, strains and strain
+/// rates of the 4 segments; seabed forces of the nodes), none for `V`,
+/// which `check` names; the positions are nodes.csv's, the tension of
+/// each segment is EA times its strain (EA 2e4 N), to the 8 digits
+/// written, and in still water the rope (Cd and Ca 0, BA 0) has no water
+/// velocity, no hydrodynamic force and no damping force.
 #[test]
 fn a_lines_output_flags_are_moordyns_line_file() {
     let d = scratch("moordyn-line-out");
-    let deck = rope_deck("FairTen1\n").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pKvUDtscdb");
+    let deck =
+        rope_deck("FairTen1\n").replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 pKvUDVtscdb");
     std::fs::write(d.join("rope.txt"), deck).unwrap();
     let (so, se) = text(&stancf(&["check", d.join("rope.txt").to_str().unwrap()]));
     assert!(
@@ -122,7 +123,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         "{so}"
     );
     assert!(
-        so.contains("LineOutputs \"pKvUDtscdb\" of line 1: c (the internal damping force) not computed by stancf; rope_Line1.out has no columns for them"),
+        so.contains("LineOutputs \"pKvUDVtscdb\" of line 1: V (the VIV force) not computed by stancf; rope_Line1.out has no columns for them"),
         "{so}{se}"
     );
     let sc = swing(&d, 0.1);
@@ -143,6 +144,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
     header.extend(node(&["Ux", "Uy", "Uz"]));
     header.extend(node(&["Dx", "Dy", "Dz"]));
     header.extend(segment("Te"));
+    header.extend((1..=4).flat_map(|j| ["cx", "cy", "cz"].map(|q| format!("Seg{j}{q}"))));
     header.extend(segment("St"));
     header.extend(segment("dSt"));
     header.extend(node(&["bx", "by", "bz"]));
@@ -152,7 +154,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         .chain(std::iter::repeat_n("(1/m)", 5))
         .chain(std::iter::repeat_n("(m/s)", 30))
         .chain(std::iter::repeat_n("(N)", 15))
-        .chain(std::iter::repeat_n("(N)", 4))
+        .chain(std::iter::repeat_n("(N)", 4 + 12))
         .chain(std::iter::repeat_n("(-)", 4))
         .chain(std::iter::repeat_n("(-/s)", 4))
         .chain(std::iter::repeat_n("(N)", 15))
@@ -179,6 +181,9 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         for j in 1..=4 {
             let (tension, strain) = (v[at(&format!("Seg{j}Te"))], v[at(&format!("Seg{j}St"))]);
             assert!(tension > 0.0, "segment {j}: {tension} N");
+            for q in ["cx", "cy", "cz"] {
+                assert_eq!(v[at(&format!("Seg{j}{q}"))], 0.0, "{q}");
+            }
             assert!(
                 (tension - 2e4 * strain).abs() <= 2e-7 * tension,
                 "{tension} against {strain}"
@@ -193,15 +198,17 @@ fn a_lines_output_flags_are_moordyns_line_file() {
 /// of 1.26 s) swung at 0.5 s, written every 1 ms step, to 1e-3 of the
 /// largest rate. The difference's truncation (dt omega)^2 / 6 is below
 /// 3e-5 of the rate, and the 8 digits written round the strains by 5e-8
-/// of themselves, 2.5e-5 of them per 2 ms.
+/// of themselves, 2.5e-5 of them per 2 ms. The `c` flag's damping force
+/// is BA (5 N s) times that rate along the rope (engineering strain), to
+/// the 8 digits written.
 #[test]
 fn a_segments_strain_rate_is_the_rate_of_its_written_strain() {
     let d = scratch("moordyn-strain-rate");
     let deck = rope_deck("FairTen1\n")
-        .replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 sd")
+        .replace("1 rope 1 2 1.0 4 -", "1 rope 1 2 1.0 4 csd")
         .replace(
             "rope 0.01 0.08 2.0e4 0 0 0 0 0 0",
-            "rope 0.01 80 2.0e2 0 0 0 0 0 0",
+            "rope 0.01 80 2.0e2 5 0 0 0 0 0",
         );
     std::fs::write(d.join("rope.txt"), deck).unwrap();
     let sc = write_scenario(
@@ -220,21 +227,29 @@ fn a_segments_strain_rate_is_the_rate_of_its_written_strain() {
         .map(|r| r.iter().map(|w| w.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 301);
-    // Time, then the 4 strains, then the 4 rates.
+    // Time, the 4 damping forces (x, y, z), the 4 strains, the 4 rates.
+    let (strain, rate) = (13, 17);
     let largest = rows
         .iter()
-        .flat_map(|r| r[5..9].iter().map(|x| x.abs()))
+        .flat_map(|r| r[rate..rate + 4].iter().map(|x| x.abs()))
         .fold(0.0, f64::max);
     assert!(largest > 0.1, "the rope hardly stretches: {largest} 1/s");
     for k in 1..rows.len() - 1 {
         let dt = rows[k + 1][0] - rows[k - 1][0];
         for j in 0..4 {
-            let difference = (rows[k + 1][1 + j] - rows[k - 1][1 + j]) / dt;
-            let rate = rows[k][5 + j];
+            let difference = (rows[k + 1][strain + j] - rows[k - 1][strain + j]) / dt;
+            let r = rows[k][rate + j];
             assert!(
-                (rate - difference).abs() <= 1e-3 * largest,
-                "t = {}, segment {}: {rate} against {difference}",
+                (r - difference).abs() <= 1e-3 * largest,
+                "t = {}, segment {}: {r} against {difference}",
                 rows[k][0],
+                j + 1
+            );
+            let c = &rows[k][1 + 3 * j..4 + 3 * j];
+            let damping = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+            assert!(
+                (damping - 5.0 * r.abs()).abs() <= 1e-7 * 5.0 * largest,
+                "segment {}: {damping} N against BA |{r}|",
                 j + 1
             );
         }

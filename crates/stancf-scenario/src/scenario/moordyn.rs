@@ -176,7 +176,11 @@ fn line_output_notes(deck: &Deck, path: &Path) -> Vec<String> {
     deck.lines
         .iter()
         .filter_map(|l| {
-            let missing: Vec<String> = moordyn::UNCOMPUTED_LINE_FLAGS
+            let viscoelastic = deck
+                .line_types
+                .iter()
+                .any(|t| t.name == l.line_type && t.ea_dynamic.is_some());
+            let missing: Vec<String> = moordyn::uncomputed_line_flags(viscoelastic)
                 .iter()
                 .filter(|(f, _)| l.outputs.contains(*f))
                 .map(|(f, what)| format!("{f} ({what})"))

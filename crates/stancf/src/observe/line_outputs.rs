@@ -1,6 +1,7 @@
-//! The water's velocity, the hydrodynamic force and the strain rate
-//! along a line: what MoorDyn's `LineOutputs` flags `U`, `D` and `d` ask
-//! for (its `Line::Output`), for its per-line output files.
+//! The water's velocity, the hydrodynamic force, the strain rate and the
+//! internal damping force along a line: what MoorDyn's `LineOutputs`
+//! flags `U`, `D`, `d` and `c` ask for (its `Line::Output`), for its
+//! per-line output files.
 
 use super::nodal_forces_per_length;
 use crate::model::{coordinate, Model, State, SLOT_R};
@@ -42,27 +43,56 @@ pub fn hydrodynamic_nodal_forces(model: &Model, state: &State, t: Option<f64>) -
     })
 }
 
+/// r_x and its rate r_x_dot at the middle of element k.
+fn middle_tangent(model: &Model, state: &State, k: usize) -> ([f64; 3], [f64; 3]) {
+    let l = model.element_length(k);
+    let o = coordinate(model.dofs_per_node(), k, SLOT_R, 0);
+    let (q, qdot) = (&state.e[o..], &state.v[o..]);
+    match model.element_type() {
+        crate::model::ElementType::Sac2 => {
+            let shape = cubic_hermite(0.5, l);
+            (shape.gradients(q).0, shape.gradients(qdot).0)
+        }
+        crate::model::ElementType::Sac3 => {
+            let shape = quintic_hermite(0.5, l);
+            (shape.gradients(q).0, shape.gradients(qdot).0)
+        }
+    }
+}
+
 /// The engineering strain rate d|r_x|/dt = r_x . r_x_dot / |r_x| at each
 /// element's middle: MoorDyn's `d`, its segments' stretch rate over their
 /// unstretched length (the strain of `s` is the element's middle too).
 pub fn element_strain_rates(model: &Model, state: &State) -> Vec<f64> {
-    let dpn = model.dofs_per_node();
     (0..model.cable.elements)
         .map(|k| {
-            let l = model.element_length(k);
-            let o = coordinate(dpn, k, SLOT_R, 0);
-            let (q, qdot) = (&state.e[o..], &state.v[o..]);
-            let (rx, rx_dot) = match model.element_type() {
-                crate::model::ElementType::Sac2 => {
-                    let shape = cubic_hermite(0.5, l);
-                    (shape.gradients(q).0, shape.gradients(qdot).0)
-                }
-                crate::model::ElementType::Sac3 => {
-                    let shape = quintic_hermite(0.5, l);
-                    (shape.gradients(q).0, shape.gradients(qdot).0)
-                }
-            };
+            let (rx, rx_dot) = middle_tangent(model, state, k);
             crate::vec3::dot(rx, rx_dot) / crate::vec3::norm(rx)
         })
         .collect()
+}
+
+/// The axial damping force BA eps_dot t (N, docs/method.md §2.10) at
+/// each element's middle, eps_dot the rate of the model's strain
+/// (a . r_x_dot, a = r_x for Green's, r_x / |r_x| for the engineering
+/// one) and t the unit tangent: MoorDyn's `c`, its segments' internal
+/// damping force. None for a viscoelastic line, whose damping is its
+/// law's (docs/method.md §2.11).
+pub fn element_damping_forces(model: &Model, state: &State) -> Option<Vec<[f64; 3]>> {
+    if model.viscoelastic().is_some() {
+        return None;
+    }
+    let ba = model.material.axial_damping;
+    let forces = (0..model.cable.elements)
+        .map(|k| {
+            let (rx, rx_dot) = middle_tangent(model, state, k);
+            let t = crate::vec3::normalized(rx);
+            let rate = match model.options.measures.axial_strain {
+                crate::AxialStrain::Green => crate::vec3::dot(rx, rx_dot),
+                crate::AxialStrain::Engineering => crate::vec3::dot(t, rx_dot),
+            };
+            t.map(|c| ba * rate * c)
+        })
+        .collect();
+    Some(forces)
 }

@@ -8,7 +8,9 @@ use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
 mod line_outputs;
-pub use line_outputs::{element_strain_rates, hydrodynamic_nodal_forces, node_water_velocities};
+pub use line_outputs::{
+    element_damping_forces, element_strain_rates, hydrodynamic_nodal_forces, node_water_velocities,
+};
 
 /// Energies of a state (J).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -4,26 +4,28 @@
 //! MoorDyn's `Line::Output` writes them (`Time`, then per flag in its
 //! order: `p` `Node<i>px py pz` (m), `K` `Node<i>Ku` (1/m), `v` `Node<i>vx
 //! vy vz` (m/s), `U` `Node<i>Ux Uy Uz` (m/s), `D` `Node<i>Dx Dy Dz` (N),
-//! `t` `Seg<j>Te` (N), `s` `Seg<j>St` (-), `d` `Seg<j>dSt` (-/s), `b`
+//! `t` `Seg<j>Te` (N), `c` `Seg<j>cx cy cz` (N), `s` `Seg<j>St` (-), `d`
+//! `Seg<j>dSt` (-/s), `b`
 //! `Node<i>bx by bz` (N); a units row of `(m)` and the like unless
 //! `WriteUnits 0`; the widths and numbers of the main file,
 //! `super::moordyn_out`). The nodes are the line's (its NumSegs + 1
 //! unless a scenario remeshes it), the segments its elements: a segment's
-//! tension, strain and strain rate are the element's at its middle, EA
-//! eps, eps and d|r_x|/dt (MoorDyn's are its segment's, the stretch of
-//! the chord between its nodes); a node's water velocity is the sea's
+//! tension, damping force, strain and strain rate are the element's at
+//! its middle, EA eps, BA eps_dot t, eps and d|r_x|/dt (MoorDyn's are its
+//! segment's, the stretch of the chord between its nodes); a node's water
+//! velocity is the sea's
 //! there; its hydrodynamic and seabed forces are the consistent nodal
 //! forces of the water's drag and fluid inertia (without buoyancy, as
 //! MoorDyn's) and of the contact. The flags stancf does not compute (`V`
-//! the VIV force, `c` the internal damping force) get no columns, which
+//! the VIV force, and `c` of a viscoelastic line) get no columns, which
 //! `check` notes.
 
 use super::moordyn_out::{write_time, write_value, TIME_WIDTH, WIDTH};
 use crate::output::{AtomicFile, Dest};
 use stancf::model::SLOT_R;
 use stancf::observe::{
-    element_strain_rates, hydrodynamic_nodal_forces, node_bending, node_water_velocities,
-    seabed_nodal_forces, stress_samples, StressSample,
+    element_damping_forces, element_strain_rates, hydrodynamic_nodal_forces, node_bending,
+    node_water_velocities, seabed_nodal_forces, stress_samples, StressSample,
 };
 use stancf::{Model, State};
 use std::io::Write;
@@ -41,6 +43,7 @@ fn columns(flag: char) -> (bool, &'static [&'static str], &'static str) {
         'U' => (true, &["Ux", "Uy", "Uz"], "(m/s)"),
         'D' => (true, &["Dx", "Dy", "Dz"], "(N)"),
         't' => (false, &["Te"], "(N)"),
+        'c' => (false, &["cx", "cy", "cz"], "(N)"),
         's' => (false, &["St"], "(-)"),
         'd' => (false, &["dSt"], "(-/s)"),
         _ => (true, &["bx", "by", "bz"], "(N)"),
@@ -66,9 +69,10 @@ impl LineOut {
         units: bool,
         at_rest: bool,
     ) -> std::io::Result<Self> {
+        let viscoelastic = model.viscoelastic().is_some();
         let flags: Vec<char> = WRITTEN_FLAGS
             .into_iter()
-            .filter(|f| flags.contains(*f))
+            .filter(|f| flags.contains(*f) && !(*f == 'c' && viscoelastic))
             .collect();
         let nodes = model.nodes();
         let segments = model.cable.elements;
@@ -85,7 +89,9 @@ impl LineOut {
                 }
             } else {
                 for j in 1..=segments {
-                    write!(w, "{:>WIDTH$}", format!("Seg{j}{}", suffixes[0]))?;
+                    for s in suffixes {
+                        write!(w, "{:>WIDTH$}", format!("Seg{j}{s}"))?;
+                    }
                 }
             }
         }
@@ -161,6 +167,14 @@ impl LineOut {
                 'd' => {
                     for rate in element_strain_rates(model, state) {
                         value(rate)?;
+                    }
+                }
+                'c' => {
+                    let forces = element_damping_forces(model, state).unwrap_or_default();
+                    for force in forces {
+                        for c in force {
+                            value(c)?;
+                        }
                     }
                 }
                 't' | 's' => {
