@@ -1,5 +1,6 @@
 //! A free body whose mass lies on one line through its centre (point
-//! masses on a line, MoorDyn's orbitalBody deck; docs/method.md §15.2,
+//! masses on a line, MoorDyn's orbitalBody deck), or at its centre alone
+//! (a point mass, OpenFAST's md_BdyExtLdDmpg; docs/method.md §15.2,
 //! (B2a)).
 //!
 //! Its second moment (B2) is J_G = a n n^T (n the line's direction in
