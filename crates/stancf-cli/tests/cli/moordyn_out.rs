@@ -102,15 +102,15 @@ fn without_units_and_at_rest_the_out_file_is_moordyns_too() {
     assert!((fairlead - rows[0][1]).abs() <= 5e-8 * rows[0][1]);
 }
 
-/// A line's `LineOutputs` flags `pKvUDVtscdb`: `rope_Line1.out` has
-/// MoorDyn's columns for the flags stancf computes, in MoorDyn's order
-/// (positions, curvatures, velocities, water velocities and hydrodynamic
-/// forces of the 5 nodes; tensions, damping forces, strains and strain
-/// rates of the 4 segments; seabed forces of the nodes), none for `V`,
-/// which `check` names; the positions are nodes.csv's, the tension of
-/// each segment is EA times its strain (EA 2e4 N), to the 8 digits
-/// written, and in still water the rope (Cd and Ca 0, BA 0) has no water
-/// velocity, no hydrodynamic force and no damping force.
+/// A line's `LineOutputs` flags `pKvUDVtscdb`, every flag MoorDyn knows:
+/// `rope_Line1.out` has MoorDyn's columns for each, in MoorDyn's order
+/// (positions, curvatures, velocities, water velocities, hydrodynamic
+/// and VIV forces of the 5 nodes; tensions, damping forces, strains and
+/// strain rates of the 4 segments; seabed forces of the nodes), and
+/// `check` notes none as not computed; the positions are nodes.csv's, the
+/// tension of each segment is EA times its strain (EA 2e4 N), to the 8
+/// digits written, and in still water the rope (Cd and Ca 0, BA 0, no
+/// VIV) has no water velocity and no hydrodynamic, VIV or damping force.
 #[test]
 fn a_lines_output_flags_are_moordyns_line_file() {
     let d = scratch("moordyn-line-out");
@@ -122,10 +122,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         so.contains("moordyn files               rope.out, rope_Line1.out, as MoorDyn"),
         "{so}"
     );
-    assert!(
-        so.contains("LineOutputs \"pKvUDVtscdb\" of line 1: V (the VIV force) not computed by stancf; rope_Line1.out has no columns for them"),
-        "{so}{se}"
-    );
+    assert!(!so.contains("LineOutputs"), "{so}{se}");
     let sc = swing(&d, 0.1);
     let out = d.join("out");
     let o = run_quiet(&sc, &out, &[]);
@@ -143,6 +140,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
     header.extend(node(&["vx", "vy", "vz"]));
     header.extend(node(&["Ux", "Uy", "Uz"]));
     header.extend(node(&["Dx", "Dy", "Dz"]));
+    header.extend(node(&["Vx", "Vy", "Vz"]));
     header.extend(segment("Te"));
     header.extend((1..=4).flat_map(|j| ["cx", "cy", "cz"].map(|q| format!("Seg{j}{q}"))));
     header.extend(segment("St"));
@@ -153,7 +151,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
         .chain(std::iter::repeat_n("(m)", 15))
         .chain(std::iter::repeat_n("(1/m)", 5))
         .chain(std::iter::repeat_n("(m/s)", 30))
-        .chain(std::iter::repeat_n("(N)", 15))
+        .chain(std::iter::repeat_n("(N)", 30))
         .chain(std::iter::repeat_n("(N)", 4 + 12))
         .chain(std::iter::repeat_n("(-)", 4))
         .chain(std::iter::repeat_n("(-/s)", 4))
@@ -174,7 +172,7 @@ fn a_lines_output_flags_are_moordyns_line_file() {
                     "{have} against {want}"
                 );
             }
-            for q in ["Ux", "Uy", "Uz", "Dx", "Dy", "Dz"] {
+            for q in ["Ux", "Uy", "Uz", "Dx", "Dy", "Dz", "Vx", "Vy", "Vz"] {
                 assert_eq!(v[at(&format!("Node{i}{q}"))], 0.0, "{q}");
             }
         }

@@ -216,20 +216,20 @@ pub struct DeckPoint {
 /// The `LineOutputs` flags whose quantities stancf writes to
 /// `<deck>_Line<n>.out`, in MoorDyn's order (`Line::Output`): node
 /// positions, curvatures, velocities, the water's velocities, the
-/// hydrodynamic forces, segment tensions, internal damping forces,
-/// strains and strain rates, the seabed's nodal forces (`c` not for a
-/// viscoelastic line, [`uncomputed_line_flags`]).
-pub const WRITTEN_LINE_FLAGS: [char; 10] = ['p', 'K', 'v', 'U', 'D', 't', 'c', 's', 'd', 'b'];
+/// hydrodynamic and VIV forces, segment tensions, internal damping
+/// forces, strains and strain rates, the seabed's nodal forces (`c` not
+/// for a viscoelastic line, [`uncomputed_line_flags`]).
+pub const WRITTEN_LINE_FLAGS: [char; 11] = ['p', 'K', 'v', 'U', 'D', 'V', 't', 'c', 's', 'd', 'b'];
 
 /// The flags MoorDyn knows whose quantities stancf does not compute for a
-/// line (`viscoelastic`: of a viscoelastic type): the VIV force at the
-/// nodes, and a viscoelastic line's internal damping force (its law's).
+/// line (`viscoelastic`: of a viscoelastic type): a viscoelastic line's
+/// internal damping force (its law's).
 pub fn uncomputed_line_flags(viscoelastic: bool) -> Vec<(char, &'static str)> {
-    let mut flags = vec![('V', "the VIV force")];
     if viscoelastic {
-        flags.push(('c', "the internal damping force of a viscoelastic line"));
+        vec![('c', "the internal damping force of a viscoelastic line")]
+    } else {
+        Vec::new()
     }
-    flags
 }
 
 /// A row of `LINES`: `ID LineType AttachA AttachB UnstrLen NumSegs

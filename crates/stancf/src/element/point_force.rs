@@ -68,15 +68,27 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         qdot: &[f64; ND],
         force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
     ) -> [f64; ND] {
+        self.generalized_force_at_points(q, qdot, |_, r, rx, rdot| force(r, rx, rdot).force)
+    }
+
+    /// [`Self::generalized_force_per_length`] of a force per unit length
+    /// `force(s, r, r_x, r_dot)` that also depends on the axial point s
+    /// (0, 1, ... in the element's axial rule: a state held there).
+    pub fn generalized_force_at_points(
+        &self,
+        q: &[f64; ND],
+        qdot: &[f64; ND],
+        force: impl Fn(usize, &[f64; 3], &[f64; 3], &[f64; 3]) -> [f64; 3],
+    ) -> [f64; ND] {
         let mut fq = [0.0; ND];
-        for p in &self.axial_points {
+        for (s, p) in self.axial_points.iter().enumerate() {
             let r = position(&p.shape, q);
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
-            let f = force(&r, &rx, &rdot);
+            let f = force(s, &r, &rx, &rdot);
             for k in 0..NS {
                 for i in 0..3 {
-                    fq[3 * k + i] += p.wl * p.shape.n[k] * f.force[i];
+                    fq[3 * k + i] += p.wl * p.shape.n[k] * f[i];
                 }
             }
         }

@@ -185,6 +185,30 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
+    /// The generalized force of the VIV lift (V23), f_L = 1/2 rho_w d Cl
+    /// s cos(phi) |v_n| (t x v_n) at each axial point with its phase phi
+    /// from `viv_state` (phi, A^2, B^2 per point), at the coordinates `q`,
+    /// rates `qdot` and time `t` in `water` (the consistent nodal loads,
+    /// (M14)). Zero for an element without VIV.
+    pub fn viv_generalized_force(
+        &self,
+        (q, qdot): (&[f64; ND], &[f64; ND]),
+        viv_state: &[f64],
+        t: f64,
+        water: &LineInWater,
+    ) -> [f64; ND] {
+        let Some(viv) = &self.section.viv else {
+            return [0.0; ND];
+        };
+        self.generalized_force_at_points(q, qdot, |s, r, rx, rdot| {
+            // The lift does not depend on the acceleration or the mean
+            // squares (they set the phase's rate only).
+            let at = viv.at_point(water, (r, rx, rdot, &[0.0; 3]), t, (0.0, 0.0));
+            let phi = viv_state[VIV_VALUES * s];
+            at.lift.map(|c| c.v * phi.cos())
+        })
+    }
+
     /// The values of the internal state per axial point: the
     /// viscoelastic law's, then the VIV's (phi, A^2, B^2).
     pub fn internal_values_per_point(&self) -> usize {

@@ -1,10 +1,10 @@
-//! The water's velocity, the hydrodynamic force, the strain rate and the
-//! internal damping force along a line: what MoorDyn's `LineOutputs`
-//! flags `U`, `D`, `d` and `c` ask for (its `Line::Output`), for its
-//! per-line output files.
+//! The water's velocity, the hydrodynamic and VIV forces, the strain rate
+//! and the internal damping force along a line: what MoorDyn's
+//! `LineOutputs` flags `U`, `D`, `V`, `d` and `c` ask for (its
+//! `Line::Output`), for its per-line output files.
 
 use super::nodal_forces_per_length;
-use crate::model::{coordinate, Model, State, SLOT_R};
+use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
 /// The sea's velocity u(r, t) (its current and waves, as the line's water
@@ -95,4 +95,37 @@ pub fn element_damping_forces(model: &Model, state: &State) -> Option<Vec<[f64; 
         })
         .collect();
     Some(forces)
+}
+
+/// The consistent nodal forces (N) of the VIV lift (V23) at time `t`,
+/// each axial point's lift with its phase in the state's internal values
+/// (docs/method.md §12.7): MoorDyn's `V`, its nodes' cross-flow lift.
+/// Zero on a line without VIV, in air, or without its internal state (a
+/// static equilibrium, which has no lift).
+pub fn viv_nodal_forces(model: &Model, state: &State, t: f64) -> Vec<[f64; 3]> {
+    let mut out = vec![[0.0; 3]; model.nodes()];
+    let Some(water) = &model.water else {
+        return out;
+    };
+    if state.internal.is_empty() {
+        return out;
+    }
+    let dpn = model.dofs_per_node();
+    crate::with_elements!(&model.mesh, els => {
+        for (k, el) in els.iter().enumerate() {
+            let o = coordinate(dpn, k, SLOT_R, 0);
+            let (q, qdot) = (gather(&state.e, o), gather(&state.v, o));
+            let internal = model.element_internal(&state.internal, k);
+            let (_, viv_state) = el.split_internal(internal);
+            let fq = el.viv_generalized_force((&q, &qdot), viv_state, t, water);
+            // Each node holds half of the element's coordinates, r first.
+            for (end, node) in [(0, k), (1, k + 1)] {
+                let a = end * fq.len() / 2;
+                for i in 0..3 {
+                    out[node][i] += fq[a + i];
+                }
+            }
+        }
+    });
+    out
 }

@@ -10,6 +10,7 @@ use crate::shape::{cubic_hermite, quintic_hermite};
 mod line_outputs;
 pub use line_outputs::{
     element_damping_forces, element_strain_rates, hydrodynamic_nodal_forces, node_water_velocities,
+    viv_nodal_forces,
 };
 
 /// Energies of a state (J).

@@ -288,3 +288,46 @@ fn a_line_in_air_is_refused_the_viv_lift() {
         .unwrap_err();
     assert!(e.to_string().contains("acts in water"), "{e}");
 }
+
+/// MoorDyn's `V` output: the consistent nodal forces of the lift (V23).
+/// An upright element, 0.5 m long, held still in a uniform current u
+/// along x with every point's phase phi: the lift per length is
+/// f = 1/2 rho_w d Cl u^2 cos(phi) along t x v_n = z x x = y, uniform, so
+/// its generalized force is f l / 2 on each end's position and
+/// +-f l^2 / 12 on its slopes (the cubic's integrals, exact under the
+/// 3-point rule), to round-off.
+#[test]
+fn a_held_lines_viv_nodal_forces_are_the_uniform_lifts_integrals() {
+    let (u, d, phi, l) = (0.6, 0.05, 0.7, 0.5);
+    let current = CurrentProfile::uniform([u, 0.0, 0.0]).unwrap();
+    let sea = Sea::still(50.0, 9.81).with_current(current, Ramp::new(0.0).unwrap());
+    let water = in_water(sea, d);
+    let sec = Section {
+        viv: Some(law()),
+        ..section()
+    };
+    let el = CableElement::new(cubic_hermite, l, sec, Measures::default(), &rules(3, 3));
+    let q = [
+        0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0,
+    ];
+    let state: Vec<f64> = (0..3).flat_map(|_| [phi, 0.0, 0.0]).collect();
+    let fq = el.viv_generalized_force((&q, &[0.0; 12]), &state, 3.0, &water);
+    let f = 0.5 * RHO_W * d * law().lift * u * u * phi.cos();
+    let want = [
+        0.0,
+        f * l / 2.0,
+        0.0,
+        0.0,
+        f * l * l / 12.0,
+        0.0,
+        0.0,
+        f * l / 2.0,
+        0.0,
+        0.0,
+        -f * l * l / 12.0,
+        0.0,
+    ];
+    for (k, (got, want)) in fq.iter().zip(want).enumerate() {
+        assert!((got - want).abs() <= 1e-13 * f, "{k}: {got} against {want}");
+    }
+}

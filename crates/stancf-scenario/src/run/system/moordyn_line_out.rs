@@ -4,6 +4,7 @@
 //! MoorDyn's `Line::Output` writes them (`Time`, then per flag in its
 //! order: `p` `Node<i>px py pz` (m), `K` `Node<i>Ku` (1/m), `v` `Node<i>vx
 //! vy vz` (m/s), `U` `Node<i>Ux Uy Uz` (m/s), `D` `Node<i>Dx Dy Dz` (N),
+//! `V` `Node<i>Vx Vy Vz` (N),
 //! `t` `Seg<j>Te` (N), `c` `Seg<j>cx cy cz` (N), `s` `Seg<j>St` (-), `d`
 //! `Seg<j>dSt` (-/s), `b`
 //! `Node<i>bx by bz` (N); a units row of `(m)` and the like unless
@@ -14,18 +15,18 @@
 //! its middle, EA eps, BA eps_dot t, eps and d|r_x|/dt (MoorDyn's are its
 //! segment's, the stretch of the chord between its nodes); a node's water
 //! velocity is the sea's
-//! there; its hydrodynamic and seabed forces are the consistent nodal
-//! forces of the water's drag and fluid inertia (without buoyancy, as
-//! MoorDyn's) and of the contact. The flags stancf does not compute (`V`
-//! the VIV force, and `c` of a viscoelastic line) get no columns, which
-//! `check` notes.
+//! there; its hydrodynamic, VIV and seabed forces are the consistent
+//! nodal forces of the water's drag and fluid inertia (without buoyancy,
+//! as MoorDyn's), of the VIV lift and of the contact (MoorDyn writes no
+//! units for `V`; stancf writes `(N)`). `c` of a viscoelastic line (its
+//! law's damping) is not computed: no columns, which `check` notes.
 
 use super::moordyn_out::{write_time, write_value, TIME_WIDTH, WIDTH};
 use crate::output::{AtomicFile, Dest};
 use stancf::model::SLOT_R;
 use stancf::observe::{
     element_damping_forces, element_strain_rates, hydrodynamic_nodal_forces, node_bending,
-    node_water_velocities, seabed_nodal_forces, stress_samples, StressSample,
+    node_water_velocities, seabed_nodal_forces, stress_samples, viv_nodal_forces, StressSample,
 };
 use stancf::{Model, State};
 use std::io::Write;
@@ -42,6 +43,7 @@ fn columns(flag: char) -> (bool, &'static [&'static str], &'static str) {
         'v' => (true, &["vx", "vy", "vz"], "(m/s)"),
         'U' => (true, &["Ux", "Uy", "Uz"], "(m/s)"),
         'D' => (true, &["Dx", "Dy", "Dz"], "(N)"),
+        'V' => (true, &["Vx", "Vy", "Vz"], "(N)"),
         't' => (false, &["Te"], "(N)"),
         'c' => (false, &["cx", "cy", "cz"], "(N)"),
         's' => (false, &["St"], "(-)"),
@@ -160,6 +162,13 @@ impl LineOut {
                     };
                     for u in at_nodes {
                         for c in u {
+                            value(c)?;
+                        }
+                    }
+                }
+                'V' => {
+                    for force in viv_nodal_forces(model, state, t) {
+                        for c in force {
                             value(c)?;
                         }
                     }
