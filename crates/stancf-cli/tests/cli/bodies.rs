@@ -441,6 +441,43 @@ ID    Object            Fext                Blin               Bquad            
     }
 }
 
+/// The r-test's point mass as a TOML body (`inertia = [0, 0, 0]`, its
+/// force a constant `force`, gravity 9.81): the line holds -(F + m g) to
+/// 1e-9 of the weight, and the body does not turn.
+#[test]
+fn a_toml_point_mass_body_hangs_where_its_force_and_weight_balance() {
+    let d = scratch("toml-point-mass");
+    let scenario = write_scenario(
+        &d,
+        "point_mass.toml",
+        "[water]\ndepth = 100.0\ndensity = 1025.0\n[[line_types]]\nname = \"nylon\"\n\
+         diameter = 0.124\nmass_per_length = 35.0\nea = 5.0e6\n[[bodies]]\nid = 1\n\
+         type = \"free\"\nposition = [0.0, 0.0, -50.0]\nmass = 21244.0\n\
+         inertia = [0.0, 0.0, 0.0]\nforce = [104170.0, 50000.0, -10000.0]\n[[points]]\nid = 1\n\
+         type = \"body\"\nbody = 1\nposition = [0.0, 0.0, 0.0]\n[[points]]\nid = 2\n\
+         type = \"fixed\"\nposition = [0.0, 0.0, 0.0]\n[[lines]]\nid = 1\ntype = \"nylon\"\n\
+         length = 48.0\nelements = 10\na = 2\nb = 1\n[analysis]\ntype = \"static\"\n",
+    );
+    let out = d.join("out");
+    let o = run_quiet(&scenario, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let weight = 21244.0 * 9.81;
+    let held = [-104170.0, -50000.0, 10000.0 + weight];
+    for (c, name) in ["fx", "fy", "fz"].iter().enumerate() {
+        let f = rows[0][col(name)];
+        assert!(
+            (f - held[c]).abs() <= 1e-9 * weight,
+            "{name}: {f} against {}",
+            held[c]
+        );
+    }
+    for name in ["roll", "pitch", "yaw"] {
+        assert_eq!(rows[0][col(name)], 0.0, "{name}");
+    }
+}
+
 /// A free body is stepped by the Galerkin scheme: an explicit "p2" is
 /// refused naming the key (and so are time layers, which it does not
 /// take).

@@ -255,13 +255,15 @@ fn free_body(
         &key("inertia"),
         &ctx.required(&key("inertia"), r.inertia.clone())?,
     )?;
-    if !moments_of_a_body(moments) {
+    // Zero moments: a point mass, which the library takes where everything
+    // acts at its centre (docs/method.md (B2a)).
+    if !(moments_of_a_body(moments) || moments == [0.0; 3]) {
         return Err(ctx.err(
             &key("inertia"),
             format!(
                 "the moments {moments:?} kg m^2 about the centre of mass are not those of a body \
                  with extent in all three directions: each must be less than the sum of the \
-                 other two (zero moments, a point mass or a rod, are not a body's)"
+                 other two (or all 0, a point mass)"
             ),
         ));
     }
