@@ -3,7 +3,7 @@
 //! `LineOutputs` flags `U`, `D`, `V`, `d` and `c` ask for (its
 //! `Line::Output`), for its per-line output files.
 
-use super::nodal_forces_per_length;
+use super::{add_to_end_nodes, nodal_forces_per_length};
 use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
@@ -118,13 +118,7 @@ pub fn viv_nodal_forces(model: &Model, state: &State, t: f64) -> Vec<[f64; 3]> {
             let internal = model.element_internal(&state.internal, k);
             let (_, viv_state) = el.split_internal(internal);
             let fq = el.viv_generalized_force((&q, &qdot), viv_state, t, water);
-            // Each node holds half of the element's coordinates, r first.
-            for (end, node) in [(0, k), (1, k + 1)] {
-                let a = end * fq.len() / 2;
-                for i in 0..3 {
-                    out[node][i] += fq[a + i];
-                }
-            }
+            add_to_end_nodes(&mut out, k, &fq);
         }
     });
     out

@@ -483,17 +483,22 @@ pub(crate) fn nodal_forces_per_length(
             let q = gather(e, o);
             let qdot = gather(rates, o);
             let fq = el.generalized_force_per_length(&q, &qdot, force);
-            // The position slots of the element's two nodes: each node
-            // holds half of the element's coordinates, r first.
-            for (end, node) in [(0, k), (1, k + 1)] {
-                let a = end * fq.len() / 2;
-                for i in 0..3 {
-                    out[node][i] += fq[a + i];
-                }
-            }
+            add_to_end_nodes(&mut out, k, &fq);
         }
     });
     out
+}
+
+/// Adds element k's generalized force `fq` on its two end nodes'
+/// positions to their nodal forces `out`: each node holds half of the
+/// element's coordinates, r first.
+pub(crate) fn add_to_end_nodes(out: &mut [[f64; 3]], k: usize, fq: &[f64]) {
+    for (end, node) in [(0, k), (1, k + 1)] {
+        let a = end * fq.len() / 2;
+        for i in 0..3 {
+            out[node][i] += fq[a + i];
+        }
+    }
 }
 
 #[cfg(test)]

@@ -211,6 +211,24 @@ fn a_viv_lines_step_jacobian_is_the_finite_differences_of_its_rows() {
     eprintln!("step Jacobians with VIV: worst rel. error {worst:.1e}");
 }
 
+/// An upright SAC-2 element 0.5 m long, 10 m down (its coordinates).
+const UPRIGHT: [f64; 12] = [
+    0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0,
+];
+
+/// Water of a uniform current `u` along x, 50 m deep, and a 0.5 m element
+/// of diameter `d` with the VIV law (three axial and three time points).
+fn upright_in_a_current(u: f64, d: f64) -> (LineInWater, CableElement<4, 12>) {
+    let current = CurrentProfile::uniform([u, 0.0, 0.0]).unwrap();
+    let sea = Sea::still(50.0, 9.81).with_current(current, Ramp::new(0.0).unwrap());
+    let sec = Section {
+        viv: Some(law()),
+        ..section()
+    };
+    let el = CableElement::new(cubic_hermite, 0.5, sec, Measures::default(), &rules(3, 3));
+    (in_water(sea, d), el)
+}
+
 /// An upright line held still in a uniform current U: its cross-flow velocity
 /// and acceleration are zero, psi = 0, and (V22) is Adler's equation
 /// phi' = a - b sin(phi), a = 2 pi cF U / d, b = 2 pi dF U / d, whose
@@ -221,24 +239,14 @@ fn a_viv_lines_step_jacobian_is_the_finite_differences_of_its_rows() {
 #[test]
 fn a_held_lines_shedding_phase_follows_adlers_equation_at_the_collocations_order() {
     let (u, d) = (0.6, 0.05);
-    let current = CurrentProfile::uniform([u, 0.0, 0.0]).unwrap();
-    let sea = Sea::still(50.0, 9.81).with_current(current, Ramp::new(0.0).unwrap());
-    let water = in_water(sea, d);
-    let sec = Section {
-        viv: Some(law()),
-        ..section()
-    };
-    let m = Measures::default();
-    let el = CableElement::new(cubic_hermite, 0.5, sec, m, &rules(3, 3));
-    // Upright, 10 m down, still: its velocity and acceleration are
-    // exactly zero across the flow (psi is the angle of a scale-free pair,
-    // so a round-off motion would set it anywhere; a line never rests
-    // exactly in a flow that moves it).
+    let (water, el) = upright_in_a_current(u, d);
+    // Still: its velocity and acceleration are exactly zero across the
+    // flow (psi is the angle of a scale-free pair, so a round-off motion
+    // would set it anywhere; a line never rests exactly in a flow that
+    // moves it).
     let mut y = [[0.0; 12]; 4];
     for m in [0, 2] {
-        y[m] = [
-            0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0,
-        ];
+        y[m] = UPRIGHT;
     }
     let loads = SlabLoads {
         water: Some(&water),
@@ -299,19 +307,9 @@ fn a_line_in_air_is_refused_the_viv_lift() {
 #[test]
 fn a_held_lines_viv_nodal_forces_are_the_uniform_lifts_integrals() {
     let (u, d, phi, l) = (0.6, 0.05, 0.7, 0.5);
-    let current = CurrentProfile::uniform([u, 0.0, 0.0]).unwrap();
-    let sea = Sea::still(50.0, 9.81).with_current(current, Ramp::new(0.0).unwrap());
-    let water = in_water(sea, d);
-    let sec = Section {
-        viv: Some(law()),
-        ..section()
-    };
-    let el = CableElement::new(cubic_hermite, l, sec, Measures::default(), &rules(3, 3));
-    let q = [
-        0.0, 0.0, -10.0, 0.0, 0.0, 1.0, 0.0, 0.0, -9.5, 0.0, 0.0, 1.0,
-    ];
+    let (water, el) = upright_in_a_current(u, d);
     let state: Vec<f64> = (0..3).flat_map(|_| [phi, 0.0, 0.0]).collect();
-    let fq = el.viv_generalized_force((&q, &[0.0; 12]), &state, 3.0, &water);
+    let fq = el.viv_generalized_force((&UPRIGHT, &[0.0; 12]), &state, 3.0, &water);
     let f = 0.5 * RHO_W * d * law().lift * u * u * phi.cos();
     let want = [
         0.0,
