@@ -7,113 +7,11 @@
 use crate::scenario::{AnalysisKind, InitialShape, PointType, SystemScenario, Water};
 use crate::Failure;
 use stancf::error::Sig;
-use stancf::system::{straight_states, System, SystemSimulation, SystemStatics};
+use stancf::system::System;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// What a run of a system starts from, built before anything is
-/// written (each refuses what it cannot run): the system, its static
-/// solve from the lines' catenaries (a static analysis, or
-/// `initial = "static"`), and its simulation from the straight start (a
-/// dynamic analysis).
-pub struct Prepared {
-    pub system: System,
-    pub statics: Option<SystemStatics>,
-    pub dynamics: Option<SystemSimulation>,
-}
-
-/// The dynamic simulation of `system` from the lines' `states` with the
-/// scenario's step settings, step halvings and line failures; the lines attached to a
-/// body that starts moving move with it
-/// ([`stancf::system::System::start_lines_with_bodies`]).
-pub fn simulation(
-    sc: &SystemScenario,
-    system: System,
-    mut states: Vec<stancf::State>,
-) -> Result<SystemSimulation, stancf::ModelError> {
-    system.start_lines_with_bodies(&mut states);
-    let mut sim = SystemSimulation::new(system, states, sc.analysis.step_settings())?;
-    sim.set_step_halvings(sc.analysis.step_halvings)?;
-    sim.set_failures(sc.failures.iter().map(|f| f.to_library()).collect())?;
-    Ok(sim)
-}
-
-/// Builds what `sc` runs (see [`Prepared`]); errors are input errors
-/// naming `path`.
-pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
-    let input = |e: stancf::ModelError| {
-        let key = sc.names.library_key(&e.key);
-        let route = dynamic_route(path, sc, &e.message);
-        Failure::Input(format!("{}: {key}: {}{route}", path.display(), e.message))
-    };
-    crate::input_scales::system_scales(&path.display().to_string(), sc)?;
-    crate::system_geometry::check_geometry(&path.display().to_string(), sc, true)?;
-    let system = sc.system().map_err(input)?;
-    let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
-    {
-        let seed_system = sc.seed_system().map_err(input)?;
-        refuse_overlong_lines(path, sc, &seed_system)?;
-        let settings = sc.static_settings();
-        Some(SystemStatics::seeded(system.clone(), &seed_system, settings).map_err(input)?)
-    } else {
-        None
-    };
-    let dynamics = if sc.analysis.kind == AnalysisKind::Dynamic {
-        let start = straight_states(&system);
-        Some(simulation(sc, system.clone(), start).map_err(input)?)
-    } else {
-        None
-    };
-    Ok(Prepared {
-        system,
-        statics,
-        dynamics,
-    })
-}
-
-/// Where the library refuses a static analysis because a body has no
-/// static equilibrium ("start a dynamic run from its given pose
-/// instead"), how to start one from the file at `path`: a deck alone is a
-/// static run (MoorDyn's own tests of sinking rods start from the deck's
-/// placement, TmaxIC 0), so from a scenario that takes it; a scenario by
-/// its `[analysis]`. Empty otherwise.
-fn dynamic_route(path: &Path, sc: &SystemScenario, message: &str) -> String {
-    if sc.analysis.kind != AnalysisKind::Static
-        || !message.ends_with("start a dynamic run from its given pose instead")
-    {
-        return String::new();
-    }
-    let toml = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
-    if sc.names.is_deck() && !toml {
-        let name = path
-            .file_name()
-            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        format!(
-            " (a deck alone is a static run: take it in a scenario, [system] moordyn = \"{name}\" \
-             with [analysis] type = \"dynamic\" and initial = \"reference\")"
-        )
-    } else {
-        " ([analysis] type = \"dynamic\" with initial = \"reference\")".into()
-    }
-}
-
-/// Refuses a static solve of a system with a line anchored on its bed
-/// that is longer than its path to the fairlead can hold (C20), naming
-/// the line by its id and saying what to do (the core refuses it too,
-/// by index: `SystemStatics::seeded`).
-fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Result<(), Failure> {
-    let Some(l) = stancf::system::overlong_lines(seed).into_iter().next() else {
-        return Ok(());
-    };
-    Err(Failure::Input(format!(
-        "{}: line {}: {l}. Shorten it, move its ends apart, or start a dynamic run from the \
-         straight lines ([analysis] initial = \"reference\")",
-        path.display(),
-        sc.lines[l.line].id,
-    )))
-}
+pub use crate::system_start::{prepare, simulation, Prepared};
 
 /// `check`'s words on line i: its type, length, mesh, ends, bending
 /// stiffness, damping, compression and VIV.
@@ -201,6 +99,12 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             ),
             (AnalysisKind::Dynamic, InitialShape::Reference) => format!(
                 "dynamic from the lines straight between their points, {} s in steps of {} s",
+                Sig(sc.analysis.duration),
+                Sig(sc.analysis.time_step)
+            ),
+            (AnalysisKind::Dynamic, InitialShape::Catenary) => format!(
+                "dynamic from the lines' catenaries between their points as given (MoorDyn's \
+                 start without initial conditions), {} s in steps of {} s",
                 Sig(sc.analysis.duration),
                 Sig(sc.analysis.time_step)
             ),

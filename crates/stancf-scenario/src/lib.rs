@@ -25,6 +25,7 @@ pub mod scenario;
 pub mod signals;
 pub mod sweep;
 pub mod system_geometry;
+mod system_start;
 pub mod vtk;
 pub mod work_bounds;
 

@@ -31,6 +31,7 @@ mod hostile_scenarios;
 mod joints;
 mod line_failures;
 mod mesh_sections;
+mod moordyn_driver;
 mod moordyn_out;
 mod motion_files;
 mod output_files;

@@ -33,6 +33,7 @@
 mod bodies;
 mod channel_units;
 mod channels;
+pub mod driver;
 mod ends;
 pub mod external_loads;
 pub mod failures;
@@ -316,6 +317,20 @@ impl Deck {
             }
             _ => None,
         })
+    }
+
+    /// Whether MoorDyn generates initial conditions for this deck before
+    /// it runs: its `TmaxIC` (`ICTmax`), the last given, is positive, or
+    /// absent (MoorDyn's default is positive). With `TmaxIC 0` MoorDyn
+    /// starts from the deck's positions, each line in its catenary.
+    pub fn generates_initial_conditions(&self) -> bool {
+        self.options
+            .iter()
+            .rev()
+            .find(|o| {
+                o.name.eq_ignore_ascii_case("tmaxic") || o.name.eq_ignore_ascii_case("ictmax")
+            })
+            .is_none_or(|o| !matches!(o.value, OptionValue::Number(v) if v <= 0.0))
     }
 
     /// The value of a supported option, if the deck sets it.

@@ -23,6 +23,11 @@ pub enum InitialShape {
     Reference,
     /// The static equilibrium (solved first).
     Static,
+    /// Every line in its elastic catenary of its wet weight between its
+    /// ends where the scenario places them, free points and bodies at
+    /// their given positions, at rest: MoorDyn's start when it generates
+    /// no initial conditions (a deck's `TmaxIC 0`; docs/method.md §13.7).
+    Catenary,
 }
 
 /// Dynamic (P2 steps in time) or static (load steps).
@@ -388,14 +393,16 @@ pub(super) fn analysis_part(
     let default_word = match default {
         InitialShape::Static => "static",
         InitialShape::Reference => "reference",
+        InitialShape::Catenary => "catenary",
     };
     let initial = match ctx.choice(
         "analysis.initial",
         initial_key.as_deref(),
         default_word,
-        &["reference", "static"],
+        &["reference", "static", "catenary"],
     )? {
         "static" => InitialShape::Static,
+        "catenary" => InitialShape::Catenary,
         _ => InitialShape::Reference,
     };
     Ok((analysis, measures, initial, notes))

@@ -29,6 +29,8 @@ mod loads;
 mod messages;
 mod moordyn;
 mod moordyn_current_grids;
+mod moordyn_driver;
+mod moordyn_driver_motions;
 mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_waterkin;
@@ -138,6 +140,10 @@ pub fn parse_input_with(
     let host = host
         .checked()
         .map_err(|e| ScenarioError(format!("{file}: {e}")))?;
+    if moordyn_driver::is_driver(text) {
+        let sc = moordyn_driver::driver_scenario(text, file, path)?;
+        return Ok(Input::System(Box::new(sc)));
+    }
     if crate::moordyn::looks_like_moordyn(text) {
         let deck =
             crate::moordyn::parse(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;

@@ -464,6 +464,7 @@ fn write_summary(
         "initial": match sc.initial {
             InitialShape::Static => "static",
             InitialShape::Reference => "reference",
+            InitialShape::Catenary => "catenary",
         },
         "end_forces": sc.end_forces.name(),
         "lines": lines,

@@ -1,0 +1,255 @@
+//! MoorDyn driver files (OpenFAST's `md_driver.inp` and `*.dvr`): the
+//! deck they name runs in their sea, for their TMax, from MoorDyn's start
+//! (docs/interface.md, "MoorDyn driver files").
+
+use crate::common::*;
+
+/// OpenFAST's r-test md_horizontal deck: a free rod of 10 m, 2 m across
+/// and 3250 kg/m, level 5 m down, a dummy line between two fixed points.
+const HORIZONTAL_DECK: &str = "Horizontal sinking rod. Line is dummy just to run code
+------------------------- LINE TYPES --------------------------------------------------
+LineType  Diam    MassDenInAir    EA       BA/-zeta    EI      Can   Cat  Cdn   Cdt
+(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2)   (-)   (-)  (-)   (-)
+nylon      0.124      35.0    5515288.0     -0.8      0.0     1.0   0.0  1.6   0.05
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+Can          2       0.325e4     0.6    1.0     1.2      1.0
+---------------------- RODS ----------------------------------------
+ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb     Zb    NumSegs  RodOutputs
+(#)  (name)    (#/key)    (m)   (m)   (m)   (m)   (m)    (m)   (-)       (-)
+1      Can   Free        -5    0    -5.0    5      0     -5     2         -
+----------------------- POINTS ----------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed      3        0        -4       0        0          0     0
+2         Fixed     3        0        -5       0        0          0     0
+-------------------------- LINES -------------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)   (m)         (-)          (-)
+1        nylon      2       1    1.0        1           -
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+0.001    dtM          - time step to use in mooring integration
+75       WtrDpth      - water depth
+0.0      TmaxIC       - threshold for IC convergence
+0.1      dtOut
+------------------------------ OUTPUTS -----------------------------------------------------
+ROD1PX
+ROD1PZ
+ROD1RY
+--------------------------- need this line -------------------------------------------------
+";
+
+/// A MoorDyn driver file (the layout of OpenFAST's r-test drivers) for
+/// `deck`, run `t_max` s at coupling step `dt_c`, with InputsMode `mode`,
+/// InputsFile `inputs` and the initial platform row `platform`.
+fn driver(
+    deck: &str,
+    (t_max, dt_c): (f64, f64),
+    (mode, inputs): (u8, &str),
+    platform: &str,
+) -> String {
+    format!(
+        "MoorDyn driver input file\nanother comment line\n\
+         ---------------------- ENVIRONMENTAL CONDITIONS -------------------------------\n\
+         9.80665            Gravity          - Gravity (m/s^2)\n\
+         1025.0             rhoW             - Water density (kg/m^3)\n\
+         75.0               WtrDpth          - Water depth (m)\n\
+         ---------------------- MOORDYN ------------------------------------------------\n\
+         \"{deck}\"          MDInputFile      - Primary MoorDyn input file name (quoted string)\n\
+         \"driver\"          OutRootName      - The name which prefixes all generated files\n\
+         {t_max}             TMax             - Total run time (s)\n\
+         {dt_c}              dtC              - TimeInterval for the simulation (sec)\n\
+         {mode}              InputsMode       - MoorDyn coupled object inputs (switch)\n\
+         \"{inputs}\"        InputsFile       - Filename for the MoorDyn inputs file\n\
+         0                   NumTurbines      - Number of wind turbines (-)\n\
+         ---------------------- Initial Positions --------------------------------------\n\
+         ref_X    ref_Y    surge_init   sway_init  heave_init  roll_init  pitch_init   yaw_init\n\
+         (m)      (m)        (m)          (m)        (m)       (rad)       (rad)        (rad)\n\
+         {platform}\n\
+         END of driver input file\n"
+    )
+}
+
+const AT_REST: &str = "0 0 0 0 0 0 0 0";
+
+/// md_horizontal's rod sinks level (TmaxIC 0: from the deck's pose) under
+/// its net weight F = (3250 - 1025 pi) g 10 m, its mass and added mass
+/// M = (3250 + 1025 pi) 10 m, against its transverse drag
+/// k v^2 = 1/2 rho Cd D L v^2: z(t) = z0 - (M / k) ln cosh(t sqrt(k F) / M),
+/// to 1e-8 m over 20 s at the driver's step of 0.01 s (the Galerkin
+/// step's error at this step is far below; the rest is the step's Newton
+/// tolerance on a fall of 10 m). MoorDyn-F's r-test output,
+/// driver.MD.out, is -5.0226186 m at 1 s and -9.9659360 at 16 s; the
+/// closed form's -5.02261859 and -9.96593596.
+#[test]
+fn openfasts_md_horizontal_driver_sinks_its_rod_as_its_drag_closed_form() {
+    let d = scratch("driver-horizontal");
+    write_scenario(&d, "horizontal.dat", HORIZONTAL_DECK);
+    let dvr = write_scenario(
+        &d,
+        "horizontal_driver.dvr",
+        &driver("horizontal.dat", (20.0, 0.01), (0, ""), AT_REST),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
+    // dtOut 0.1 s: a row every 10 steps, t = 0 to 20 s.
+    assert_eq!(rows.len(), 201);
+    let g = 9.80665;
+    let (rho, a, l) = (1025.0, std::f64::consts::PI, 10.0);
+    let f = (3250.0 - rho * a) * g * l;
+    let m = (3250.0 + rho * a) * l;
+    let k = 0.5 * rho * 0.6 * 2.0 * l;
+    let mut worst: f64 = 0.0;
+    for r in &rows {
+        let t = r[col("t")];
+        let z = -5.0 - m / k * (t * (k * f).sqrt() / m).cosh().ln();
+        worst = worst.max((r[col("ROD1PZ")] - z).abs());
+        assert_eq!(r[col("ROD1PX")], -5.0);
+        assert!((r[col("ROD1RY")] - 90.0).abs() < 1e-9);
+    }
+    assert!(worst < 1e-8, "worst {worst:e} m");
+}
+
+/// A deck with TmaxIC 0 starts each line in its elastic catenary between
+/// the deck's points (MoorDyn's start without initial conditions), not
+/// straight: a chain of 120 m hung between two fixed points 100 m apart
+/// stays within 2 mm of its start over 2 s (the catenary is the line's
+/// equilibrium but for the 12 elements' discretization, of the order of
+/// (h/L)^4 L); from the straight start it would fall metres.
+#[test]
+fn a_tmaxic_0_deck_starts_its_lines_in_their_catenaries() {
+    let d = scratch("driver-catenary");
+    let deck = "hung chain
+------------------------- LINE TYPES -------------------------------------------
+LineType  Diam  MassDen  EA      BA/-zeta  EI   Cd   Ca   CdAx  CaAx
+(-)       (m)   (kg/m)   (N)     (N-s/-)   (-)  (-)  (-)  (-)   (-)
+chain     0.1   100.0    7.0e8   -0.5      0    1.2  1.0  0.4   0.5
+----------------------- POINTS -------------------------------------------------
+ID  Attachment  X      Y    Z      M  V  CdA  CA
+(-) (-)         (m)    (m)  (m)    (kg) (m^3) (m^2) (-)
+1   Fixed       -50    0    -20    0  0  0    0
+2   Fixed       50     0    -20    0  0  0    0
+-------------------------- LINES -----------------------------------------------
+ID  LineType  AttachA  AttachB  UnstrLen  NumSegs  Outputs
+(-) (-)       (-)      (-)      (m)       (-)      (-)
+1   chain     1        2        120.0     12       -
+-------------------------- OPTIONS ---------------------------------------------
+0.01     dtM
+200      WtrDpth
+0        TmaxIC
+------------------------------ OUTPUTS -----------------------------------------
+L1N6PZ
+--------------------------- need this line -------------------------------------
+";
+    write_scenario(&d, "chain.dat", deck);
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver("chain.dat", (2.0, 0.01), (0, ""), AT_REST),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let z = header.iter().position(|h| h == "L1N6PZ").unwrap();
+    let z0 = rows[0][z];
+    // The inextensible catenary's sag, a (cosh(50 / a) - 1) with
+    // 2 a sinh(50 / a) = 120 m: 29.2344 m; the chain's stretch under its
+    // 42 kN (6e-5) adds about a centimetre.
+    assert!(
+        (z0 + 20.0 + 29.2344).abs() < 0.05,
+        "the middle starts at {z0} m"
+    );
+    let drift = rows.iter().map(|r| (r[z] - z0).abs()).fold(0.0, f64::max);
+    assert!(drift < 2e-3, "the middle moved {drift} m from its catenary");
+}
+
+/// InputsMode 1: the coupled point follows the driver's time series as
+/// MoorDyn's driver prepares it, sampled at dtC and smoothed forward and
+/// back (docs/interface.md (D1)): a point moved at 0.5 m/s along x for
+/// 6 s is, 2.5 s from either end of the record, on the straight line to
+/// 1e-9 m (the smoothing keeps a line; its transients at the ends decay
+/// as 0.9^i, below 1e-11 of the 9 samples' lag there).
+#[test]
+fn a_drivers_time_series_moves_its_coupled_point() {
+    let d = scratch("driver-series");
+    let deck = rope_deck("FairTen1\nPoint2PX\n");
+    write_scenario(&d, "rope.dat", &deck);
+    let (header, rows) = read_csv(&{
+        // Where the deck puts the coupled point.
+        let out = d.join("statics");
+        let o = run_quiet(&d.join("rope.dat"), &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+        out.join("points.csv")
+    });
+    let id = header.iter().position(|h| h == "point").unwrap();
+    let x = header.iter().position(|h| h == "x").unwrap();
+    let coupled = rows.iter().find(|r| r[id] == 2.0).unwrap();
+    let [x0, y0, z0] = [coupled[x], coupled[x + 1], coupled[x + 2]];
+    let series: String = (0..=120)
+        .map(|i| {
+            let t = 0.05 * i as f64;
+            format!("{t} {} {y0} {z0}\n", x0 + 0.5 * t)
+        })
+        .collect();
+    write_scenario(
+        &d,
+        "motion.dat",
+        &format!("# Time PointX PointY PointZ\n{series}"),
+    );
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver("rope.dat", (6.0, 0.01), (1, "motion.dat"), AT_REST),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let t = header.iter().position(|h| h == "t").unwrap();
+    let px = header.iter().position(|h| h == "Point2PX").unwrap();
+    let inside: Vec<_> = rows.iter().filter(|r| r[t] >= 2.5 && r[t] <= 3.5).collect();
+    assert_eq!(inside.len(), 101);
+    for r in inside {
+        let want = x0 + 0.5 * r[t];
+        assert!(
+            (r[px] - want).abs() < 1e-9,
+            "t {}: {} against {want}",
+            r[t],
+            r[px]
+        );
+    }
+}
+
+/// A driver that cannot run is refused naming its line: a deck that is
+/// not there, InputsMode 1 without its file, an offset platform with the
+/// objects held.
+#[test]
+fn a_bad_driver_file_is_refused_naming_its_line() {
+    for (name, dvr, needle) in [
+        (
+            "no-deck",
+            driver("absent.dat", (1.0, 0.01), (0, ""), AT_REST),
+            "line 8: MDInputFile",
+        ),
+        (
+            "no-series",
+            driver("h.dat", (1.0, 0.01), (1, ""), AT_REST),
+            "line 13: InputsMode 1 needs InputsFile",
+        ),
+        (
+            "offset",
+            driver("h.dat", (1.0, 0.01), (0, ""), "0 0 5 0 0 0 0 0"),
+            "line 18: initial platform offsets",
+        ),
+    ] {
+        let d = scratch(name);
+        write_scenario(&d, "h.dat", HORIZONTAL_DECK);
+        let file = write_scenario(&d, "md_driver.inp", &dvr);
+        refused_by_check_and_run(&file, &d.join("never"), &["md_driver.inp", needle], &[]);
+    }
+}
