@@ -43,10 +43,12 @@ fn validate(text: &str, name: &str) -> PyResult<()> {
         .map_err(scenario_err)
 }
 
-/// Whether scenario text is a MoorDyn v2 deck (not TOML).
+/// Whether scenario text is a MoorDyn input (not TOML): a v2 deck, or
+/// a MoorDyn driver file that names one.
 #[pyfunction]
 fn is_moordyn(text: &str) -> bool {
     stancf_scenario::moordyn::looks_like_moordyn(text)
+        || stancf_scenario::moordyn::driver::looks_like_driver(text)
 }
 
 /// The text of an input file as the command line reads it: a regular

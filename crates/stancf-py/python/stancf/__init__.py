@@ -48,7 +48,7 @@ class Scenario:
         name = str(path)
         _stancf.validate(text, name)
         if _stancf.is_moordyn(text):
-            # A MoorDyn deck: its title is the file's stem already.
+            # A MoorDyn deck or driver file: its title is the file's stem already.
             return cls(text, name)
         if not any(line.split("=")[0].strip() == "title" for line in text.splitlines()
                    if not line.lstrip().startswith("[")):
