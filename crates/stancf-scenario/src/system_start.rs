@@ -59,11 +59,10 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         let start = match sc.initial {
             // MoorDyn's start without initial conditions (§13.7): each line's
             // catenary of its wet weight between its ends as given.
-            InitialShape::Catenary => {
-                let seed_system = sc.seed_system().map_err(input)?;
-                refuse_overlong_lines(path, sc, &seed_system)?;
-                catenary_states(&seed_system)
-            }
+            InitialShape::Catenary => catenary_start(path, sc, &system).map_err(|e| match e {
+                StartError::Model(e) => input(e),
+                StartError::Failure(f) => f,
+            })?,
             InitialShape::Static | InitialShape::Reference => straight_states(&system),
         };
         Some(simulation(sc, system.clone(), start).map_err(input)?)
@@ -75,6 +74,34 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         statics,
         dynamics,
     })
+}
+
+/// Why the catenary start could not be built.
+enum StartError {
+    Model(stancf::ModelError),
+    Failure(Failure),
+}
+
+/// MoorDyn's start without initial conditions (docs/method.md §13.7):
+/// each line in its catenary of its wet weight between its ends as the
+/// scenario places them; a line longer than its catenary can hold (C20)
+/// straight between its ends, as MoorDyn-F lays it, where it carries no
+/// compression (its segments slack, (M4a)), else refused.
+fn catenary_start(
+    path: &Path,
+    sc: &SystemScenario,
+    system: &System,
+) -> Result<Vec<stancf::State>, StartError> {
+    let seed_system = sc.seed_system().map_err(StartError::Model)?;
+    let mut states = catenary_states(&seed_system);
+    let straight = straight_states(system);
+    for l in stancf::system::overlong_lines(&seed_system) {
+        if system.lines()[l.line].model.carries_compression() {
+            return Err(StartError::Failure(overlong_refusal(path, sc, &l)));
+        }
+        states[l.line] = straight[l.line].clone();
+    }
+    Ok(states)
 }
 
 /// Where the library refuses a static analysis because a body has no
@@ -111,13 +138,18 @@ fn dynamic_route(path: &Path, sc: &SystemScenario, message: &str) -> String {
 /// the line by its id and saying what to do (the core refuses it too,
 /// by index: `SystemStatics::seeded`).
 fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Result<(), Failure> {
-    let Some(l) = stancf::system::overlong_lines(seed).into_iter().next() else {
-        return Ok(());
-    };
-    Err(Failure::Input(format!(
+    match stancf::system::overlong_lines(seed).first() {
+        Some(l) => Err(overlong_refusal(path, sc, l)),
+        None => Ok(()),
+    }
+}
+
+/// The refusal of overlong line `l` (C20), naming it by its id.
+fn overlong_refusal(path: &Path, sc: &SystemScenario, l: &stancf::system::OverlongLine) -> Failure {
+    Failure::Input(format!(
         "{}: line {}: {l}. Shorten it, move its ends apart, or start a dynamic run from the \
          straight lines ([analysis] initial = \"reference\")",
         path.display(),
         sc.lines[l.line].id,
-    )))
+    ))
 }

@@ -168,6 +168,54 @@ L1N6PZ
     assert!(drift < 2e-3, "the middle moved {drift} m from its catenary");
 }
 
+/// OpenFAST's r-test md_case5: an 850 m chain from an anchor on the bed
+/// 400 m off to a fairlead 200 m up, longer than the 600 m that can hang
+/// and lie straight (C20), with TmaxIC 0. MoorDyn-F finds no catenary and
+/// lays it straight between its ends; stancf starts it the same way, its
+/// segments shortened and slack (a deck's lines carry no compression,
+/// (M4a)): the fairlead holds nothing at t = 0, then the falling chain
+/// pulls (MoorDyn-F's driver.MD.out: 2.0800e5 N at 0.1 s, 7.2697e5 N at
+/// 2 s).
+#[test]
+fn r_test_md_case5_an_overlong_chain_starts_straight_and_slack_as_moordyn_lays_it() {
+    let d = scratch("driver-case5");
+    let deck = "Near vertical line, hitting bottom
+----------------------- LINE TYPES ------------------------------------------
+TypeName  Diam  MassDen  EA       BA/-zeta   EI    Cd    Ca   CdAx   CaAx
+(-)   (m)   (kg/m)   (N)      (N-s/-)   (-)   (-)   (-)   (-)   (-)
+main  0.333  685.00  3.27E+09  -1        0     1    0.27  1      0.20
+---------------------- POINTS --------------------------------
+ID Attachment      X     Y      Z     M    V   CdA   CA
+(-)  (-)      (m)   (m)    (m)   (kg) (m^3)  (m^2) (-)
+1   Fixed  -400.0   0.0  -200.0    0    0    0    0
+2   Coupled   0.0   0.0     0.0    0    0    0    0
+---------------------- LINES --------------------------------------
+ID  LineType AttachAnch  NodeFair UnstrLen  NumSegs    LineOutputs
+(-)   (-)      (-)       (-)      (m)       (-)        (-)
+1     main      1         2       850.00    40          -
+---------------------- SOLVER OPTIONS ---------------------------------------
+200      WtrDpth
+0.001    dtM       - time step to use in mooring integration (s)
+0.0     TmaxIC    - max time for ic gen (s)
+0.1      dtOut
+------------------------ OUTPUTS --------------------------------------------
+FAIRTEN1
+------------------------- need this line --------------------------------------
+";
+    write_scenario(&d, "case5.dat", deck);
+    let dvr = write_scenario(&d, "md_driver.inp", &driver("case5.dat", (2.0, 0.01), (0, ""), AT_REST));
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let ten = header.iter().position(|h| h == "FAIRTEN1").unwrap();
+    assert_eq!(rows[0][ten], 0.0);
+    // Pulling, and less than the chain's wet weight, 4.97 MN.
+    for r in &rows[1..] {
+        assert!(r[ten] > 0.0 && r[ten] < 4.97e6, "{r:?}");
+    }
+}
+
 /// InputsMode 1: the coupled point follows the driver's time series as
 /// MoorDyn's driver prepares it, sampled at dtC and smoothed forward and
 /// back (docs/interface.md (D1)): a point moved at 0.5 m/s along x for
