@@ -147,8 +147,10 @@ fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Res
 /// The refusal of overlong line `l` (C20), naming it by its id.
 fn overlong_refusal(path: &Path, sc: &SystemScenario, l: &stancf::system::OverlongLine) -> Failure {
     Failure::Input(format!(
-        "{}: line {}: {l}. Shorten it, move its ends apart, or start a dynamic run from the \
-         straight lines ([analysis] initial = \"reference\")",
+        "{}: line {}: {l}. Shorten it, move its ends apart, or start a dynamic run as \
+         MoorDyn starts it without initial conditions, the line laid straight and slack \
+         ([analysis] initial = \"catenary\" for a line without compression, or a MoorDyn \
+         driver file whose deck has TmaxIC 0)",
         path.display(),
         sc.lines[l.line].id,
     ))
