@@ -128,7 +128,7 @@ def main():
                 print(f"| {name} | exit {p.returncode}: {why[:160]} | {wall:.1f} | | |")
                 continue
             n, total, worst = compare(case, out)
-            w = "" if worst is None else f"{worst[0]}: {worst[1]:.2%} ({worst[2]:.4g})"
+            w = "" if worst is None else f"{worst[0]}: {worst[1]:.3e} ({worst[2]:.4g})"
             print(f"| {name} | ran | {wall:.1f} | {n} of {total} | {w} |")
 
 
