@@ -203,7 +203,11 @@ FAIRTEN1
 ------------------------- need this line --------------------------------------
 ";
     write_scenario(&d, "case5.dat", deck);
-    let dvr = write_scenario(&d, "md_driver.inp", &driver("case5.dat", (2.0, 0.01), (0, ""), AT_REST));
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver("case5.dat", (2.0, 0.01), (0, ""), AT_REST),
+    );
     let out = d.join("out");
     let o = run_quiet(&dvr, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);

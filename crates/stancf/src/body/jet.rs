@@ -53,13 +53,16 @@ impl<const N: usize, const H: usize> Jet<N, H> {
     /// f(self) from f and its first two derivatives at self's value
     /// (the chain rule to second order).
     pub fn compose(self, f: f64, df: f64, d2f: f64) -> Self {
-        let mut out = Self::constant(f);
+        let mut out = self;
+        out.v = f;
         for i in 0..N {
             out.g[i] = df * self.g[i];
         }
         for i in 0..H {
-            for k in 0..H {
-                out.h[i][k] = df * self.h[i][k] + d2f * self.g[i] * self.g[k];
+            for k in i..H {
+                let x = df * self.h[i][k] + d2f * self.g[i] * self.g[k];
+                out.h[i][k] = x;
+                out.h[k][i] = x;
             }
         }
         out
@@ -114,17 +117,22 @@ impl<const N: usize, const H: usize> Neg for Jet<N, H> {
 /// The product rule to second order: (ab)'' = a'' b + a' b'^T + b' a'^T + a b''.
 impl<const N: usize, const H: usize> Mul for Jet<N, H> {
     type Output = Self;
+    /// The Hessians of jets are symmetric (every operation keeps them so):
+    /// the upper triangle is computed and mirrored.
     fn mul(self, o: Self) -> Self {
-        let mut out = Self::constant(self.v * o.v);
+        let mut out = self;
+        out.v = self.v * o.v;
         for i in 0..N {
             out.g[i] = self.g[i] * o.v + self.v * o.g[i];
         }
         for i in 0..H {
-            for k in 0..H {
-                out.h[i][k] = self.h[i][k] * o.v
+            for k in i..H {
+                let x = self.h[i][k] * o.v
                     + self.g[i] * o.g[k]
                     + o.g[i] * self.g[k]
                     + self.v * o.h[i][k];
+                out.h[i][k] = x;
+                out.h[k][i] = x;
             }
         }
         out

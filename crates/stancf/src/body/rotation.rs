@@ -26,15 +26,15 @@ const TERMS: usize = 24;
 pub fn series(k: usize, s: f64) -> (f64, f64, f64) {
     let (mut f, mut df, mut d2f) = (0.0, 0.0, 0.0);
     let mut c = 1.0 / (1..=k + 1).map(|i| i as f64).product::<f64>();
+    // s^j, s^(j-1) and s^(j-2) as the sum goes (0 before their first
+    // term, where j or j (j - 1) is 0 too).
+    let (mut p0, mut p1, mut p2) = (1.0, 0.0, 0.0);
     for j in 0..TERMS {
         let jf = j as f64;
-        f += c * s.powi(j as i32);
-        if j >= 1 {
-            df += c * jf * s.powi(j as i32 - 1);
-        }
-        if j >= 2 {
-            d2f += c * jf * (jf - 1.0) * s.powi(j as i32 - 2);
-        }
+        f += c * p0;
+        df += c * jf * p1;
+        d2f += c * jf * (jf - 1.0) * p2;
+        (p2, p1, p0) = (p1, p0, p0 * s);
         c /= -(((2 * j + k + 2) * (2 * j + k + 3)) as f64);
     }
     (f, df, d2f)

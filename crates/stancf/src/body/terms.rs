@@ -66,15 +66,17 @@ pub struct Context<'a> {
 /// first derivatives (its second would need x's third derivatives; the
 /// water's virtual work, where it enters, takes none).
 fn rate_along(x: &Jet<NV>, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+    // The product rule to first order, term by term: d/dq_j of
+    // (dx/dq_k) q_k_dot is (d2x/dq_k dq_j) q_k_dot + (dx/dq_k) dq_k_dot/dq_j.
     let mut rate = Jet::constant(0.0);
     for i in 0..3 {
-        for (k, speed) in [(3 + i, v[2][i]), (9 + i, v[0][i])] {
-            let mut slope = Jet::constant(x.g[k]);
-            slope.g = x.h[k];
-            rate = rate + slope * speed;
+        for (k, speed) in [(3 + i, &v[2][i]), (9 + i, &v[0][i])] {
+            rate.v += x.g[k] * speed.v;
+            for j in 0..NV {
+                rate.g[j] += x.h[k][j] * speed.v + x.g[k] * speed.g[j];
+            }
         }
     }
-    rate.h = [[0.0; NV]; NV];
     rate
 }
 
@@ -207,18 +209,31 @@ impl Context<'_> {
             let arm = crate::vec3::sub(rod.end_a, self.centre_of_mass);
             let z_a = v[3][2] + height(arm);
             let (wet, under) = rod.wet_part(z_a, height(rod.axis()));
-            (rod, wet.with_rates(|x| rate_along(x, v)), under)
+            (rod, wet, under)
         })
+    }
+
+    /// A rod's wet part with the rates of its pose-dependent numbers
+    /// along the motion of `v` (what its added mass and drag take).
+    fn moving(wet: WetPart<NV>, v: &[JetVec<NV>; 4]) -> WetPart<NV> {
+        wet.with_rates(|x| rate_along(x, v))
     }
 
     /// The buoyancy's potential of the body's rods, -rho g sum I (B20):
     /// zero in air.
     pub fn buoyancy_potential(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+        let rods: Vec<_> = self.rods_in_water(v).collect();
+        self.buoyancy_of(&rods)
+    }
+
+    /// [`Self::buoyancy_potential`] of the rods in water as
+    /// [`Self::rods_in_water`] found them.
+    fn buoyancy_of(&self, rods: &[(&Rod, WetPart<NV>, Submerged<NV>)]) -> Jet<NV> {
         let Some(w) = self.water else {
             return Jet::constant(0.0);
         };
         let mut u = Jet::constant(0.0);
-        for (_, _, under) in self.rods_in_water(v) {
+        for (_, _, under) in rods {
             u = u + under.first_moment.scale(-w.density * w.gravity);
         }
         u
@@ -242,6 +257,17 @@ impl Context<'_> {
 
     /// The kinetic energy T of (B9).
     pub fn kinetic(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
+        let rods: Vec<_> = self.rods_in_water(v).collect();
+        self.kinetic_of(v, rods)
+    }
+
+    /// [`Self::kinetic`] with the rods in water as
+    /// [`Self::rods_in_water`] found them.
+    fn kinetic_of(
+        &self,
+        v: &[JetVec<NV>; 4],
+        rods: Vec<(&Rod, WetPart<NV>, Submerged<NV>)>,
+    ) -> Jet<NV> {
         let (omega, u) = self.rates(v);
         let mut t = dot(&v[0], &v[0]).scale(0.5 * self.mass)
             + dot(&omega, &times(self.inertia_at_centre, &omega)).scale(0.5);
@@ -251,7 +277,8 @@ impl Context<'_> {
             for i in 0..3 {
                 t = t + (u[i] * u[i]).scale(0.5 * a[i]);
             }
-            for (rod, wet, _) in self.rods_in_water(v) {
+            for (rod, wet, _) in rods {
+                let wet = Self::moving(wet, v);
                 t = t + rod.added_mass_energy(&wet, &u, &omega, w.density);
             }
         }
@@ -261,7 +288,10 @@ impl Context<'_> {
     /// The integrand of (B5) without the centre's linear load term:
     /// T + sum_j F_j . exp([theta]) xi'_j - U_b (B20).
     pub fn density(&self, v: &[JetVec<NV>; 4]) -> Jet<NV> {
-        let mut density = self.kinetic(v) - self.buoyancy_potential(v);
+        // The rods' wet parts once, for both terms.
+        let rods: Vec<_> = self.rods_in_water(v).collect();
+        let buoyancy = self.buoyancy_of(&rods);
+        let mut density = self.kinetic_of(v, rods) - buoyancy;
         for (f, xi) in self.loads {
             let turned = turn(&v[1], &constant(*xi), 1.0);
             density = density + dot(&constant(*f), &turned);
@@ -311,6 +341,7 @@ impl Context<'_> {
             f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
         });
         for (rod, wet, _) in self.rods_in_water(pose) {
+            let wet = Self::moving(wet, pose);
             let wet = wet.first_order();
             let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass, &flow);
             for i in 0..3 {
