@@ -220,6 +220,62 @@ FAIRTEN1
     }
 }
 
+/// MoorDyn's BodiesAndRods.dat's buoyant cable (its lines 4 to 6 over
+/// free points 8 and 9, here 1 to 3 over 2 and 3, its body end fixed), started from its catenaries
+/// (TmaxIC 0): each line's closed form meets the free points where the
+/// deck puts them, so the lines start joined there, exactly (the closed
+/// form's far end carries 1e-14 m of round-off, which the start leaves
+/// out), and the run goes on.
+#[test]
+fn lines_started_from_their_catenaries_meet_at_their_free_points() {
+    let d = scratch("driver-joined");
+    let deck = "a buoyant cable over two free points
+------------------------- LINE TYPES --------------------------------------------------
+LineType  Diam    MassDenInAir    EA       BA/-zeta    EI    Can   Cat  Cdn   Cdt
+(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2) (-)   (-)  (-)   (-)
+cable     0.175      40       751e6         -0.8      0.0    1.0   0.0  1.2   0.008
+buoyancy  0.26       40       751e6         -0.8      0.0    1.0   0.0  1.2   0.008
+----------------------- POINTS ----------------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed   -200       0      -70         0        0         0     0
+2         Free     -60       0      -30         0        0         0     0
+3         Free     -20       0      -30         0        0         0     0
+4         Fixed      0       0        0         0        0         0     0
+-------------------------- LINES -------------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)   (m)         (-)          (-)
+1        cable      1         2    200          12           -
+2      buoyancy     2         3     50           6           -
+3        cable      3         4     50           6           -
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+0.0005   dtM          - time step to use in mooring integration
+70       WtrDpth      - water depth
+0.0      TmaxIC       - no initial conditions
+------------------------------ OUTPUTS -----------------------------------------------------
+--------------------------- need this line -------------------------------------------------
+";
+    write_scenario(&d, "cable.dat", deck);
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver("cable.dat", (0.2, 0.01), (0, ""), AT_REST),
+    );
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
+    let start = rows
+        .iter()
+        .find(|r| r[col("t")] == 0.0 && r[col("point")] == 2.0)
+        .unwrap();
+    assert_eq!(
+        [start[col("x")], start[col("y")], start[col("z")]],
+        [-60.0, 0.0, -30.0]
+    );
+}
+
 /// InputsMode 1: the coupled point follows the driver's time series as
 /// MoorDyn's driver prepares it, sampled at dtC and smoothed forward and
 /// back (docs/interface.md (D1)): a point moved at 0.5 m/s along x for

@@ -161,6 +161,16 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
             let model = &system.lines()[i].model;
             let (a, b) = end_positions_at(system, i, positions);
             let mut s = seed_shape(system, i, a, b).state(model, a, b);
+            // The end nodes exactly at their ends: the closed form's far
+            // end carries its round-off (1e-14 m), and a dynamic start
+            // from these states asks the ends of the lines at a point to
+            // coincide.
+            let dpn = model.dofs_per_node();
+            for (node, at) in [(0, a), (model.nodes() - 1, b)] {
+                for k in 0..3 {
+                    s.e[coordinate(dpn, node, SLOT_R, k)] = at[k];
+                }
+            }
             model.apply_constraints(&mut s);
             s
         })
