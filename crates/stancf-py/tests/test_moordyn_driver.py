@@ -5,41 +5,16 @@ it names runs in its sea for its TMax from MoorDyn's start (docs/method.md
 mass and quadratic drag."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 
 import stancf
 
-DECK = """Horizontal sinking rod, a dummy line
-------------------------- LINE TYPES ------------------------------------------
-LineType  Diam    MassDenInAir    EA       BA/-zeta    EI      Can   Cat  Cdn   Cdt
-(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2)   (-)   (-)  (-)   (-)
-nylon      0.124      35.0    5515288.0     -0.8      0.0     1.0   0.0  1.6   0.05
----------------------- ROD TYPES ------------------------------------
-TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
-(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
-Can          2       0.325e4     0.6    1.0     1.2      1.0
----------------------- RODS ----------------------------------------
-ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb     Zb    NumSegs  RodOutputs
-(#)  (name)    (#/key)    (m)   (m)   (m)   (m)   (m)    (m)   (-)       (-)
-1      Can   Free        -5    0    -5.0    5      0     -5     2         -
------------------------ POINTS ----------------------------------------
-Node      Type      X        Y         Z        M        V         CdA   CA
-(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
-1         Fixed      3        0        -4       0        0          0     0
-2         Fixed     3        0        -5       0        0          0     0
--------------------------- LINES -------------------------------------------------
-Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
-(-)      (-)       (-)       (-)   (m)         (-)          (-)
-1        nylon      2       1    1.0        1           -
--------------------------- SOLVER OPTIONS-------------------------------------------
-0.001    dtM          - time step to use in mooring integration
-75       WtrDpth      - water depth
-0.0      TmaxIC       - threshold for IC convergence
------------------------------- OUTPUTS ---------------------------------------------
-ROD1PZ
---------------------------- need this line -----------------------------------------
-"""
+# OpenFAST's r-test md_horizontal deck (a free rod 10 m long, 2 m across,
+# 3250 kg/m, level 5 m down; a dummy line between two fixed points).
+DECK = (Path(__file__).resolve().parents[2] / "stancf-cli" / "tests" / "fixtures"
+        / "md-horizontal-moordyn.txt")
 
 DRIVER = """MoorDyn driver input file
 another comment line
@@ -64,7 +39,7 @@ END of driver input file
 
 
 def test_a_driver_file_sinks_md_horizontals_rod_as_its_closed_form(tmp_path):
-    (tmp_path / "horizontal.dat").write_text(DECK)
+    (tmp_path / "horizontal.dat").write_text(DECK.read_text())
     driver = tmp_path / "md_driver.inp"
     driver.write_text(DRIVER)
     res = stancf.run(stancf.Scenario.from_file(driver), out=tmp_path / "out")

@@ -92,35 +92,12 @@ fn moordyn_point_force_channels_are_the_net_forces_on_the_points() {
 /// most L_max = XF + V0/W = 600 m (C20); the other 250 m would lie slack
 /// on the bed in no determined shape. `check` and `run` refuse it naming
 /// the line, both lengths and (C20) (exit 2, nothing written); MoorDyn's
-/// dynamic relaxation does not settle there either.
+/// dynamic relaxation does not settle there either. Its driver runs it
+/// from MoorDyn's start (`moordyn_driver::r_test_md_case5_...`).
 #[test]
 fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
-    let deck = "MoorDyn Input File
-Near vertical line, hitting bottom
------------------------ LINE TYPES ------------------------------------------
-TypeName  Diam  MassDen  EA       BA/-zeta   EI    Cd    Ca   CdAx   CaAx
-(-)   (m)   (kg/m)   (N)      (N-s/-)   (-)   (-)   (-)   (-)   (-)
-main  0.333  685.00  3.27E+09  -1        0     1    0.27  1      0.20
----------------------- POINTS --------------------------------
-ID Attachment      X     Y      Z     M    V   CdA   CA
-(-)  (-)      (m)   (m)    (m)   (kg) (m^3)  (m^2) (-)
-1   Fixed  -400.0   0.0  -200.0    0    0    0    0
-2   Coupled   0.0   0.0     0.0    0    0    0    0
----------------------- LINES --------------------------------------
-ID  LineType AttachAnch  NodeFair UnstrLen  NumSegs    LineOutputs
-(-)   (-)      (-)       (-)      (m)       (-)        (-)
-1     main      1         2       850.00    40          p
----------------------- SOLVER OPTIONS ---------------------------------------
-200      WtrDpth
-0.001    dtM       - time step to use in mooring integration (s)
-3.0e6    kBot      - bottom stiffness (Pa/m)
-3.0e5    cBot      - bottom damping (Pa-s/m)
------------------------- OUTPUTS --------------------------------------------
-FAIRTEN1
-------------------------- need this line --------------------------------------
-";
     let dir = scratch("overlong_line");
-    let path = write_scenario(&dir, "md_case5.dat", deck);
+    let path = copy_fixture(&dir, "md-case5-moordyn.txt", "md_case5.dat");
     refused_by_check_and_run(
         &path,
         &dir.join("out"),
@@ -136,6 +113,10 @@ FAIRTEN1
     );
     // 590 m fit: the same deck runs.
     let dir = scratch("overlong_line_shortened");
+    let deck = std::fs::read_to_string(repo_file(
+        "crates/stancf-cli/tests/fixtures/md-case5-moordyn.txt",
+    ))
+    .unwrap();
     let path = write_scenario(&dir, "md.dat", &deck.replace("850.00", "590.00"));
     let o = run_quiet(&path, &dir.join("out"), &[]);
     assert!(o.status.success(), "{}", text(&o).1);

@@ -4,42 +4,6 @@
 
 use crate::common::*;
 
-/// OpenFAST's r-test md_horizontal deck: a free rod of 10 m, 2 m across
-/// and 3250 kg/m, level 5 m down, a dummy line between two fixed points.
-const HORIZONTAL_DECK: &str = "Horizontal sinking rod. Line is dummy just to run code
-------------------------- LINE TYPES --------------------------------------------------
-LineType  Diam    MassDenInAir    EA       BA/-zeta    EI      Can   Cat  Cdn   Cdt
-(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2)   (-)   (-)  (-)   (-)
-nylon      0.124      35.0    5515288.0     -0.8      0.0     1.0   0.0  1.6   0.05
----------------------- ROD TYPES ------------------------------------
-TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
-(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
-Can          2       0.325e4     0.6    1.0     1.2      1.0
----------------------- RODS ----------------------------------------
-ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb     Zb    NumSegs  RodOutputs
-(#)  (name)    (#/key)    (m)   (m)   (m)   (m)   (m)    (m)   (-)       (-)
-1      Can   Free        -5    0    -5.0    5      0     -5     2         -
------------------------ POINTS ----------------------------------------
-Node      Type      X        Y         Z        M        V         CdA   CA
-(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
-1         Fixed      3        0        -4       0        0          0     0
-2         Fixed     3        0        -5       0        0          0     0
--------------------------- LINES -------------------------------------------------
-Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
-(-)      (-)       (-)       (-)   (m)         (-)          (-)
-1        nylon      2       1    1.0        1           -
--------------------------- SOLVER OPTIONS---------------------------------------------------
-0.001    dtM          - time step to use in mooring integration
-75       WtrDpth      - water depth
-0.0      TmaxIC       - threshold for IC convergence
-0.1      dtOut
------------------------------- OUTPUTS -----------------------------------------------------
-ROD1PX
-ROD1PZ
-ROD1RY
---------------------------- need this line -------------------------------------------------
-";
-
 /// A MoorDyn driver file (the layout of OpenFAST's r-test drivers) for
 /// `deck`, run `t_max` s at coupling step `dt_c`, with InputsMode `mode`,
 /// InputsFile `inputs` and the initial platform row `platform`.
@@ -73,7 +37,20 @@ fn driver(
 
 const AT_REST: &str = "0 0 0 0 0 0 0 0";
 
-/// md_horizontal's rod sinks level (TmaxIC 0: from the deck's pose) under
+/// Writes `contents` as the driver file `name` in `d` and runs it into
+/// `d/out`, which it returns (the run must succeed).
+fn run_driver(d: &std::path::Path, name: &str, contents: &str) -> std::path::PathBuf {
+    let dvr = write_scenario(d, name, contents);
+    let out = d.join("out");
+    let o = run_quiet(&dvr, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    out
+}
+
+/// OpenFAST's r-test md_horizontal deck (fixture md-horizontal-moordyn.txt:
+/// a free rod of 10 m, 2 m across and 3250 kg/m, level 5 m down, a dummy
+/// line between two fixed points): its rod sinks level (TmaxIC 0: from
+/// the deck's pose) under
 /// its net weight F = (3250 - 1025 pi) g 10 m, its mass and added mass
 /// M = (3250 + 1025 pi) 10 m, against its transverse drag
 /// k v^2 = 1/2 rho Cd D L v^2: z(t) = z0 - (M / k) ln cosh(t sqrt(k F) / M),
@@ -85,15 +62,12 @@ const AT_REST: &str = "0 0 0 0 0 0 0 0";
 #[test]
 fn openfasts_md_horizontal_driver_sinks_its_rod_as_its_drag_closed_form() {
     let d = scratch("driver-horizontal");
-    write_scenario(&d, "horizontal.dat", HORIZONTAL_DECK);
-    let dvr = write_scenario(
+    copy_fixture(&d, "md-horizontal-moordyn.txt", "horizontal.dat");
+    let out = run_driver(
         &d,
         "horizontal_driver.dvr",
         &driver("horizontal.dat", (20.0, 0.01), (0, ""), AT_REST),
     );
-    let out = d.join("out");
-    let o = run_quiet(&dvr, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (header, rows) = read_csv(&out.join("channels.csv"));
     let col = |n: &str| header.iter().position(|h| h == n).unwrap();
     // dtOut 0.1 s: a row every 10 steps, t = 0 to 20 s.
@@ -146,14 +120,11 @@ L1N6PZ
 --------------------------- need this line -------------------------------------
 ";
     write_scenario(&d, "chain.dat", deck);
-    let dvr = write_scenario(
+    let out = run_driver(
         &d,
         "md_driver.inp",
         &driver("chain.dat", (2.0, 0.01), (0, ""), AT_REST),
     );
-    let out = d.join("out");
-    let o = run_quiet(&dvr, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (header, rows) = read_csv(&out.join("channels.csv"));
     let z = header.iter().position(|h| h == "L1N6PZ").unwrap();
     let z0 = rows[0][z];
@@ -179,38 +150,12 @@ L1N6PZ
 #[test]
 fn r_test_md_case5_an_overlong_chain_starts_straight_and_slack_as_moordyn_lays_it() {
     let d = scratch("driver-case5");
-    let deck = "Near vertical line, hitting bottom
------------------------ LINE TYPES ------------------------------------------
-TypeName  Diam  MassDen  EA       BA/-zeta   EI    Cd    Ca   CdAx   CaAx
-(-)   (m)   (kg/m)   (N)      (N-s/-)   (-)   (-)   (-)   (-)   (-)
-main  0.333  685.00  3.27E+09  -1        0     1    0.27  1      0.20
----------------------- POINTS --------------------------------
-ID Attachment      X     Y      Z     M    V   CdA   CA
-(-)  (-)      (m)   (m)    (m)   (kg) (m^3)  (m^2) (-)
-1   Fixed  -400.0   0.0  -200.0    0    0    0    0
-2   Coupled   0.0   0.0     0.0    0    0    0    0
----------------------- LINES --------------------------------------
-ID  LineType AttachAnch  NodeFair UnstrLen  NumSegs    LineOutputs
-(-)   (-)      (-)       (-)      (m)       (-)        (-)
-1     main      1         2       850.00    40          -
----------------------- SOLVER OPTIONS ---------------------------------------
-200      WtrDpth
-0.001    dtM       - time step to use in mooring integration (s)
-0.0     TmaxIC    - max time for ic gen (s)
-0.1      dtOut
------------------------- OUTPUTS --------------------------------------------
-FAIRTEN1
-------------------------- need this line --------------------------------------
-";
-    write_scenario(&d, "case5.dat", deck);
-    let dvr = write_scenario(
+    copy_fixture(&d, "md-case5-moordyn.txt", "case5.dat");
+    let out = run_driver(
         &d,
         "md_driver.inp",
         &driver("case5.dat", (2.0, 0.01), (0, ""), AT_REST),
     );
-    let out = d.join("out");
-    let o = run_quiet(&dvr, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (header, rows) = read_csv(&out.join("channels.csv"));
     let ten = header.iter().position(|h| h == "FAIRTEN1").unwrap();
     assert_eq!(rows[0][ten], 0.0);
@@ -256,14 +201,11 @@ Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
 --------------------------- need this line -------------------------------------------------
 ";
     write_scenario(&d, "cable.dat", deck);
-    let dvr = write_scenario(
+    let out = run_driver(
         &d,
         "md_driver.inp",
         &driver("cable.dat", (0.2, 0.01), (0, ""), AT_REST),
     );
-    let out = d.join("out");
-    let o = run_quiet(&dvr, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (header, rows) = read_csv(&out.join("points.csv"));
     let col = |n: &str| header.iter().position(|h| h == n).unwrap();
     let start = rows
@@ -309,14 +251,11 @@ fn a_drivers_time_series_moves_its_coupled_point() {
         "motion.dat",
         &format!("# Time PointX PointY PointZ\n{series}"),
     );
-    let dvr = write_scenario(
+    let out = run_driver(
         &d,
         "md_driver.inp",
         &driver("rope.dat", (6.0, 0.01), (1, "motion.dat"), AT_REST),
     );
-    let out = d.join("out");
-    let o = run_quiet(&dvr, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let (header, rows) = read_csv(&out.join("channels.csv"));
     let t = header.iter().position(|h| h == "t").unwrap();
     let px = header.iter().position(|h| h == "Point2PX").unwrap();
@@ -356,7 +295,7 @@ fn a_bad_driver_file_is_refused_naming_its_line() {
         ),
     ] {
         let d = scratch(name);
-        write_scenario(&d, "h.dat", HORIZONTAL_DECK);
+        copy_fixture(&d, "md-horizontal-moordyn.txt", "h.dat");
         let file = write_scenario(&d, "md_driver.inp", &dvr);
         refused_by_check_and_run(&file, &d.join("never"), &["md_driver.inp", needle], &[]);
     }
