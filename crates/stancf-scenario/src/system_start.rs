@@ -5,14 +5,16 @@
 
 use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
 use crate::Failure;
-use stancf::system::{catenary_states, straight_states, System, SystemSimulation, SystemStatics};
+use stancf::system::{
+    moordyn_start_states, straight_states, System, SystemSimulation, SystemStatics,
+};
 use std::path::Path;
 
 /// What a run of a system starts from, built before anything is
 /// written (each refuses what it cannot run): the system, its static
 /// solve from the lines' catenaries (a static analysis, or
-/// `initial = "static"`), and its simulation from the straight start (a
-/// dynamic analysis).
+/// `initial = "static"`), and its simulation (a dynamic analysis) from
+/// the straight lines, or from MoorDyn's start (`initial = "catenary"`).
 pub struct Prepared {
     pub system: System,
     pub statics: Option<SystemStatics>,
@@ -59,10 +61,11 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         let start = match sc.initial {
             // MoorDyn's start without initial conditions (§13.7): each line's
             // catenary of its wet weight between its ends as given.
-            InitialShape::Catenary => catenary_start(path, sc, &system).map_err(|e| match e {
-                StartError::Model(e) => input(e),
-                StartError::Failure(f) => f,
-            })?,
+            InitialShape::Catenary => {
+                let seed_system = sc.seed_system().map_err(input)?;
+                moordyn_start_states(&system, &seed_system)
+                    .map_err(|l| overlong_refusal(path, sc, &l))?
+            }
             InitialShape::Static | InitialShape::Reference => straight_states(&system),
         };
         Some(simulation(sc, system.clone(), start).map_err(input)?)
@@ -74,34 +77,6 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         statics,
         dynamics,
     })
-}
-
-/// Why the catenary start could not be built.
-enum StartError {
-    Model(stancf::ModelError),
-    Failure(Failure),
-}
-
-/// MoorDyn's start without initial conditions (docs/method.md §13.7):
-/// each line in its catenary of its wet weight between its ends as the
-/// scenario places them; a line longer than its catenary can hold (C20)
-/// straight between its ends, as MoorDyn-F lays it, where it carries no
-/// compression (its segments slack, (M4a)), else refused.
-fn catenary_start(
-    path: &Path,
-    sc: &SystemScenario,
-    system: &System,
-) -> Result<Vec<stancf::State>, StartError> {
-    let seed_system = sc.seed_system().map_err(StartError::Model)?;
-    let mut states = catenary_states(&seed_system);
-    let straight = straight_states(system);
-    for l in stancf::system::overlong_lines(&seed_system) {
-        if system.lines()[l.line].model.carries_compression() {
-            return Err(StartError::Failure(overlong_refusal(path, sc, &l)));
-        }
-        states[l.line] = straight[l.line].clone();
-    }
-    Ok(states)
 }
 
 /// Where the library refuses a static analysis because a body has no

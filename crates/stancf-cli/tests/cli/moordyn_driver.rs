@@ -300,3 +300,36 @@ fn a_bad_driver_file_is_refused_naming_its_line() {
         refused_by_check_and_run(&file, &d.join("never"), &["md_driver.inp", needle], &[]);
     }
 }
+
+/// The catenary start of a TOML system: md_case5's overlong chain starts
+/// straight and slack when its line type carries no compression
+/// (`compression = false`, as a deck's lines), and is refused naming the
+/// line when it carries compression (TOML's default), since it would
+/// start pushing its ends apart (docs/method.md §13.7).
+#[test]
+fn an_overlong_line_that_carries_compression_is_refused_a_catenary_start() {
+    let scenario = |compression: &str| {
+        format!(
+            "[water]\ndepth = 200.0\n[[line_types]]\nname = \"chain\"\ndiameter = 0.333\n\
+             mass_per_length = 685.0\nea = 3.27e9\n{compression}\
+             {}{}[[lines]]\nid = 1\ntype = \"chain\"\nlength = 850.0\nelements = 20\na = 1\nb = 2\n\
+             [analysis]\ntype = \"dynamic\"\ninitial = \"catenary\"\nduration = 0.1\n\
+             time_step = 0.01\n",
+            toml_point(1, "fixed", [-400.0, 0.0, -200.0]),
+            toml_point(2, "fixed", [0.0, 0.0, 0.0]),
+        )
+    };
+    expect_input_error(
+        "catenary-start-compression",
+        &scenario(""),
+        &[
+            "line 1",
+            "850 m",
+            "initial = \"catenary\" for a line without compression",
+        ],
+    );
+    let d = scratch("catenary-start-slack");
+    let file = write_scenario(&d, "slack.toml", &scenario("compression = false\n"));
+    let o = run_quiet(&file, &d.join("out"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+}

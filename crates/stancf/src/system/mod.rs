@@ -73,8 +73,8 @@ pub use release::check_failures;
 pub(crate) use run::watched_step;
 pub use run::{run, RunProgress};
 pub use seed::{
-    catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,
-    straight_between, straight_states, taut_states, OverlongLine,
+    catenary_states, catenary_states_at, end_positions, end_positions_at, moordyn_start_states,
+    overlong_lines, shaped, straight_between, straight_states, taut_states, OverlongLine,
 };
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;

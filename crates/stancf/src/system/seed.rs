@@ -177,6 +177,26 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
         .collect()
 }
 
+/// MoorDyn's start when it generates no initial conditions (a deck's
+/// TmaxIC 0; docs/method.md §13.7): each line of `system` in its seed
+/// shape of `seed` (the same lines with their wet weights,
+/// [`catenary_states`]); a line longer than its catenary can hold (C20)
+/// straight between its ends, as MoorDyn-F lays it, shortened and slack
+/// where it carries no compression (M4a). A line that carries
+/// compression would start pushing its ends apart: the first such line
+/// is the error.
+pub fn moordyn_start_states(system: &System, seed: &System) -> Result<Vec<State>, OverlongLine> {
+    let mut states = catenary_states(seed);
+    let straight = straight_states(system);
+    for l in overlong_lines(seed) {
+        if system.lines()[l.line].model.carries_compression() {
+            return Err(l);
+        }
+        states[l.line] = straight[l.line].clone();
+    }
+    Ok(states)
+}
+
 /// The seed shape of one line between end positions a and b.
 pub(super) enum SeedShape {
     Catenary(Catenary),
