@@ -165,6 +165,38 @@ fn r_test_md_case5_an_overlong_chain_starts_straight_and_slack_as_moordyn_lays_i
     }
 }
 
+/// OpenFAST's r-test md_case2 (TmaxIC 0): a 500 m chain from an anchor on
+/// the bed to a free point 400 m off and 100 m up, exactly as long as its
+/// "L" (XF + ZF, past L_max of (C20) by its stretch), and a rope stretched
+/// 18 % from that point to a fixed one. MoorDyn finds no catenary for the
+/// chain and lays it straight, though its end is free, so at first only
+/// the rope pulls the point, up along its chord: MoorDyn-F's
+/// driver.MD.out has the point 2.72 m higher at 0.1 s (Line1NBPZ
+/// -97.279 m) and the rope at 5.4931e8 N. A chain hung from the point
+/// would pull it down instead (6.4 m down at 0.1 s). The release of the
+/// stretch is a wave front, which the lumped masses of MoorDyn's 24 and 10
+/// segments and these elements carry differently: 0.15 m (5 % of the
+/// rise) and 1 % of the tension allow for that; the step, 0.005 s, is
+/// converged (0.001 s gives the same to 1 mm).
+#[test]
+fn r_test_md_case2_a_chain_to_a_free_point_as_long_as_its_l_starts_straight() {
+    let d = scratch("driver-case2");
+    copy_fixture(&d, "md-case2-moordyn.txt", "case2.dat");
+    let out = run_driver(
+        &d,
+        "md_driver.inp",
+        &driver("case2.dat", (0.1, 0.005), (0, ""), AT_REST),
+    );
+    let (header, rows) = read_csv(&out.join("channels.csv"));
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let last = rows.last().unwrap();
+    assert!((last[column("t")] - 0.1).abs() < 1e-9);
+    let z = last[column("Line1NBPZ")];
+    assert!((z - -97.279).abs() < 0.15, "the free point at z = {z} m");
+    let tension = last[column("FAIRTEN2")];
+    assert!((tension / 5.4931e8 - 1.0).abs() < 0.01, "the rope pulls {tension} N");
+}
+
 /// MoorDyn's BodiesAndRods.dat's buoyant cable (its lines 4 to 6 over
 /// free points 8 and 9, here 1 to 3 over 2 and 3, its body end fixed), started from its catenaries
 /// (TmaxIC 0): each line's closed form meets the free points where the

@@ -181,14 +181,18 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
 /// TmaxIC 0; docs/method.md §13.7): each line of `system` in its seed
 /// shape of `seed` (the same lines with their wet weights,
 /// [`catenary_states`]); a line longer than its catenary can hold (C20)
-/// straight between its ends, as MoorDyn-F lays it, shortened and slack
-/// where it carries no compression (M4a). A line that carries
-/// compression would start pushing its ends apart: the first such line
-/// is the error.
+/// straight between its ends, as MoorDyn lays it, shortened and slack
+/// where it carries no compression (M4a). Every line is judged where its
+/// ends are, a line to a free point too, as MoorDyn judges each line
+/// before anything moves (OpenFAST's md_case2: a chain to a free point
+/// exactly as long as its "L", L = XF + ZF, starts straight). A line that
+/// carries compression would start pushing its ends apart: the first
+/// such line is the error.
 pub fn moordyn_start_states(system: &System, seed: &System) -> Result<Vec<State>, OverlongLine> {
     let mut states = catenary_states(seed);
     let straight = straight_states(system);
-    for l in overlong_lines(seed) {
+    let overlong = (0..seed.lines().len()).filter_map(|i| overlong_line(seed, i));
+    for l in overlong.collect::<Vec<_>>() {
         if system.lines()[l.line].model.carries_compression() {
             return Err(l);
         }
@@ -481,31 +485,36 @@ impl std::fmt::Display for OverlongLine {
 /// pass the seed system (wet weights, §11.6).
 pub fn overlong_lines(system: &System) -> Vec<OverlongLine> {
     (0..system.lines().len())
-        .filter_map(|i| {
-            let held = system.lines()[i].ends.iter().all(|e| match *e {
+        .filter(|&i| {
+            system.lines()[i].ends.iter().all(|e| match *e {
                 End::Point(p) => !system.points()[p].is_free(),
                 End::Loose => false,
-            });
-            if !held {
-                return None;
-            }
-            let model = &system.lines()[i].model;
-            let (a, b) = end_positions(system, i);
-            let ends = anchored_on_bed(model, a, b)?;
-            let section = model.material.section();
-            let weight = section.rho_a * norm(model.gravity);
-            let zf = ends.high[2] - ends.low[2];
-            if weight <= 0.0 || zf <= 0.0 {
-                return None;
-            }
-            let max_length = max_resting_length(weight, section.ea, ends.span, zf);
-            (model.cable.length >= max_length).then_some(OverlongLine {
-                line: i,
-                length: model.cable.length,
-                max_length,
             })
         })
+        .filter_map(|i| overlong_line(system, i))
         .collect()
+}
+
+/// Line `i` of `system`, if it is anchored on its flat bed and its length
+/// reaches L_max (C20) between its ends where they are now, whatever
+/// holds them: MoorDyn's catenary start refuses such a line and lays it
+/// straight (MoorDyn's `Catenary`, "line length too large").
+fn overlong_line(system: &System, i: usize) -> Option<OverlongLine> {
+    let model = &system.lines()[i].model;
+    let (a, b) = end_positions(system, i);
+    let ends = anchored_on_bed(model, a, b)?;
+    let section = model.material.section();
+    let weight = section.rho_a * norm(model.gravity);
+    let zf = ends.high[2] - ends.low[2];
+    if weight <= 0.0 || zf <= 0.0 {
+        return None;
+    }
+    let max_length = max_resting_length(weight, section.ea, ends.span, zf);
+    (model.cable.length >= max_length).then_some(OverlongLine {
+        line: i,
+        length: model.cable.length,
+        max_length,
+    })
 }
 
 /// A line resting on the bed, as [`resting_shape`] solves it.
