@@ -194,7 +194,10 @@ fn r_test_md_case2_a_chain_to_a_free_point_as_long_as_its_l_starts_straight() {
     let z = last[column("Line1NBPZ")];
     assert!((z - -97.279).abs() < 0.15, "the free point at z = {z} m");
     let tension = last[column("FAIRTEN2")];
-    assert!((tension / 5.4931e8 - 1.0).abs() < 0.01, "the rope pulls {tension} N");
+    assert!(
+        (tension / 5.4931e8 - 1.0).abs() < 0.01,
+        "the rope pulls {tension} N"
+    );
 }
 
 /// MoorDyn's BodiesAndRods.dat's buoyant cable (its lines 4 to 6 over
@@ -305,8 +308,9 @@ fn a_drivers_time_series_moves_its_coupled_point() {
 }
 
 /// A driver that cannot run is refused naming its line: a deck that is
-/// not there, InputsMode 1 without its file, an offset platform with the
-/// objects held.
+/// not there, InputsMode 1 without its file, an offset platform with a
+/// coupled body of the deck's own (MoorDyn-F puts it at the offsets, not
+/// at its pose moved by them).
 #[test]
 fn a_bad_driver_file_is_refused_naming_its_line() {
     for (name, dvr, needle) in [
@@ -322,12 +326,13 @@ fn a_bad_driver_file_is_refused_naming_its_line() {
         ),
         (
             "offset",
-            driver("h.dat", (1.0, 0.01), (0, ""), "0 0 5 0 0 0 0 0"),
+            driver("b.dat", (1.0, 0.01), (0, ""), "0 0 5 0 0 0 0 0"),
             "line 18: initial platform offsets",
         ),
     ] {
         let d = scratch(name);
         copy_fixture(&d, "md-horizontal-moordyn.txt", "h.dat");
+        write_scenario(&d, "b.dat", &coupled_body_deck());
         let file = write_scenario(&d, "md_driver.inp", &dvr);
         refused_by_check_and_run(&file, &d.join("never"), &["md_driver.inp", needle], &[]);
     }
@@ -364,4 +369,104 @@ fn an_overlong_line_that_carries_compression_is_refused_a_catenary_start() {
     let file = write_scenario(&d, "slack.toml", &scenario("compression = false\n"));
     let o = run_quiet(&file, &d.join("out"), &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+}
+
+/// A deck whose chain of 360 m runs from an anchor on the bed at
+/// (-300, 0, -75) to `fairlead` (a row's attachment and body-axes
+/// position, `Coupled 20 0 -10` or `Turbine1 20 0 -10`).
+fn chain_deck(fairlead: &str) -> String {
+    format!(
+        "a chain to a platform's fairlead\n\
+         ---------------------- LINE TYPES ----------------------------------\n\
+         TypeName   Diam    Mass/m     EA     BA/-zeta    EI    Cd     Ca    CdAx    CaAx\n\
+         (name)     (m)     (kg/m)     (N)    (N-s/-)     (-)   (-)    (-)   (-)     (-)\n\
+         chain      0.1     20.0    5.0e8     -1.0        0     1.2    1.0   0.2     0.0\n\
+         ---------------------- POINTS --------------------------------------\n\
+         ID  Attachment  X       Y     Z      M   V    CdA  CA\n\
+         (-)  (-)       (m)     (m)   (m)    (kg) (m^3) (m^2) (-)\n\
+         1   Fixed     -300     0    -75     0    0    0    0\n\
+         2   {fairlead}   0    0    0    0    0\n\
+         ---------------------- LINES ---------------------------------------\n\
+         ID  LineType  AttachA  AttachB  UnstrLen  NumSegs  Outputs\n\
+         (-)   (-)      (-)      (-)      (m)       (-)      (-)\n\
+         1    chain      1        2       360       10       -\n\
+         ---------------------- OPTIONS -------------------------------------\n\
+         0.01    dtM\n\
+         ------------------------- need this line --------------------------\n"
+    )
+}
+
+/// `chain_deck`'s chain to a point on a coupled body of its own.
+fn coupled_body_deck() -> String {
+    chain_deck("Body1 20 0 -10").replace(
+        "---------------------- POINTS",
+        "---------------------- BODIES ----------------------------------\n\
+         ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca\n\
+         (#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n\
+         1 Coupled 0 0 0 0 0 0 1000 0 0 0 0 0\n\
+         ---------------------- POINTS",
+    )
+}
+
+/// Point `id`'s position in points.csv at t = 0.
+fn start_position(out: &std::path::Path, id: f64) -> [f64; 3] {
+    let (header, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
+    let row = rows
+        .iter()
+        .find(|r| r[col("t")] == 0.0 && r[col("point")] == id)
+        .expect("the point at t = 0");
+    [row[col("x")], row[col("y")], row[col("z")]]
+}
+
+/// OpenFAST's driver places a coupled point by its platform's initial
+/// offsets as MoorDyn-F's MD_Init does, x = t + R x_deck (D3), R
+/// OpenFAST's small-angle rotation, which about one axis turns by
+/// atan(theta) (D2): surge 10 m, heave -2 m and pitch 0.1 rad (the row's
+/// 5.7295779513 deg) take the fairlead at (20, 0, -10) to (10 + 20 c - 10
+/// s, 0, -2 - 20 s - 10 c), c, s the cosine and sine of atan(0.1), where
+/// the run starts (its static equilibrium with the fairlead held there),
+/// to round-off.
+#[test]
+fn a_drivers_platform_offsets_place_its_coupled_points_as_moordyn_f() {
+    let d = scratch("driver-offsets");
+    write_scenario(&d, "chain.dat", &chain_deck("Coupled 20 0 -10"));
+    let pitch = 0.1f64;
+    let row = format!("0 0 10 0 -2 0 {} 0", pitch.to_degrees());
+    let out = run_driver(
+        &d,
+        "md_driver.inp",
+        &driver("chain.dat", (0.02, 0.01), (0, ""), &row),
+    );
+    let a = pitch.atan();
+    let (s, c) = a.sin_cos();
+    let want = [10.0 + 20.0 * c - 10.0 * s, 0.0, -2.0 - 20.0 * s - 10.0 * c];
+    let got = start_position(&out, 2.0);
+    for k in 0..3 {
+        assert!((got[k] - want[k]).abs() < 1e-12, "{got:?} against {want:?}");
+    }
+}
+
+/// With NumTurbines 1 (FAST.Farm's mode) the row's ref_X, ref_Y place
+/// the turbine and its offsets move and turn its platform (D3): yaw
+/// 30 deg (0.5236 rad, beyond OpenFAST's small-angle bound of 0.4, which
+/// OpenFAST warns of and goes on) turns the platform by atan(0.5236)
+/// about z, and its Turbine1 fairlead at (20, 0, -10) is at (-20 + 10 +
+/// 20 c, 20 s, -10) at the start, to round-off.
+#[test]
+fn a_fast_farm_drivers_offsets_move_and_turn_the_turbines_platform() {
+    let d = scratch("driver-farm-offsets");
+    write_scenario(&d, "farm.dat", &chain_deck("Turbine1 20 0 -10"));
+    let text = driver("farm.dat", (0.02, 0.01), (0, ""), "-20 0 10 0 0 0 0 30").replace(
+        "0                   NumTurbines",
+        "1                   NumTurbines",
+    );
+    let out = run_driver(&d, "md_driver.inp", &text);
+    let a = 30f64.to_radians().atan();
+    let (s, c) = a.sin_cos();
+    let want = [-10.0 + 20.0 * c, 20.0 * s, -10.0];
+    let got = start_position(&out, 2.0);
+    for k in 0..3 {
+        assert!((got[k] - want[k]).abs() < 1e-12, "{got:?} against {want:?}");
+    }
 }

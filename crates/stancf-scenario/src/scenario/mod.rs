@@ -31,6 +31,7 @@ mod moordyn;
 mod moordyn_current_grids;
 mod moordyn_driver;
 mod moordyn_driver_motions;
+mod moordyn_driver_platforms;
 mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_waterkin;

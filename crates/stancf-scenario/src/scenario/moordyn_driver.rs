@@ -10,7 +10,7 @@
 use super::context::Ctx;
 use super::system_parts::SystemScenario;
 use super::{HostEnvironment, ScenarioError};
-use crate::moordyn::driver::{parse_driver, DriverFile};
+use crate::moordyn::driver::parse_driver;
 use stancf::error::Sig;
 use std::path::Path;
 
@@ -25,7 +25,6 @@ pub(super) fn driver_scenario(
     let at =
         |line: usize, message: String| ScenarioError(format!("{file}: line {line}: {message}"));
     let d = parse_driver(text).map_err(|e| ScenarioError(format!("{file}: {e}")))?;
-    refuse_platform_offsets(&d, file)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let deck_path = dir.join(&d.deck);
     let deck_text = crate::input_file::read_text(&deck_path).map_err(|e| {
@@ -78,8 +77,9 @@ pub(super) fn driver_scenario(
     let ctx = Ctx { file };
     let mut sc = super::system::system_scenario(&ctx, raw, title, path, &host)
         .map_err(|e| ScenarioError(driver_words(&e.0)))?;
-    if let Some(m) = motions {
-        super::moordyn_driver_motions::apply(&m, &mut sc, file, &d)?;
+    match motions {
+        Some(m) => super::moordyn_driver_motions::apply(&m, &mut sc, file, &d)?,
+        None => super::moordyn_driver_platforms::place(&d, &deck, &mut sc, file)?,
     }
     sc.notes.push(format!(
         "{file}: MoorDyn's driver file: {} in g {} m/s^2, water {} kg/m^3, {} m deep; {} s \
@@ -109,29 +109,6 @@ pub(super) fn driver_scenario(
 /// Whether `text` is a MoorDyn driver file.
 pub(super) fn is_driver(text: &str) -> bool {
     crate::moordyn::driver::looks_like_driver(text)
-}
-
-/// The driver's initial platform offsets (surge, sway, heave, roll,
-/// pitch, yaw) with the coupled objects held (InputsMode 0) are refused
-/// unless zero: MoorDyn-F moves its coupled objects by them at
-/// initialisation only, and a run that starts there is not built. With a
-/// time series (InputsMode 1) its first row places the coupled points.
-fn refuse_platform_offsets(d: &DriverFile, file: &str) -> Result<(), ScenarioError> {
-    if d.inputs_mode == 1 {
-        return Ok(());
-    }
-    for (k, row) in d.platforms.iter().enumerate() {
-        if row[2..].iter().any(|&v| v != 0.0) {
-            return Err(ScenarioError(format!(
-                "{file}: line {}: initial platform offsets {:?} (surge, sway, heave, roll, \
-                 pitch, yaw): a driver run from an offset platform is not built; give zeros \
-                 and place the coupled objects in the deck",
-                d.lines[10] + k,
-                &row[2..]
-            )));
-        }
-    }
-    Ok(())
 }
 
 /// Rows written every `dtOut / dtC` steps (the nearest whole number, at

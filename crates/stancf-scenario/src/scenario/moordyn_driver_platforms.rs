@@ -1,0 +1,130 @@
+//! A MoorDyn driver's initial platform offsets with its coupled objects
+//! held (InputsMode 0; docs/interface.md "MoorDyn driver files",
+//! docs/method.md §13.7): each platform row's surge, sway, heave (m) and
+//! roll, pitch, yaw (the driver's degrees, taken to radians) place the
+//! platform's coupled objects as MoorDyn-F's `MD_Init` places them, with
+//! OpenFAST's small-angle rotation R of the angles (D2):
+//!
+//! ```text
+//!   x = t + R x_deck + ref                                           (D3)
+//! ```
+//!
+//! (t the offsets, ref the turbine's reference position in FAST.Farm
+//! mode, 0 in OpenFAST's). OpenFAST mode: the deck's coupled points, by
+//! the one platform row. FAST.Farm mode (NumTurbines > 0): each turbine's
+//! platform body (a coupled body at its reference position) moves to
+//! ref + t and turns by R, with its `Turbine<n>` points on it; a deck's
+//! own coupled points take turbine 1's row, as MoorDyn-F counts them on
+//! turbine 1. A coupled body or rod of the deck with nonzero offsets is
+//! refused: MoorDyn-F sets such a body at t itself, not at its deck
+//! pose moved by t, and that placement is not taken here.
+
+use super::system_parts::{PointType, SystemScenario};
+use super::ScenarioError;
+use crate::moordyn::driver::DriverFile;
+use crate::moordyn::{Attachment, Deck};
+use stancf::body::pose::{moordyn_angles, openfast_small_rotation, point, rotate};
+use stancf::vec3::add;
+
+/// The offsets t and rotation R of platform row `row` (D2), or None when
+/// they are all zero.
+fn offsets(row: &[f64; 8]) -> Option<([f64; 3], [[f64; 3]; 3])> {
+    if row[2..].iter().all(|&v| v == 0.0) {
+        return None;
+    }
+    let angles = [row[5], row[6], row[7]].map(f64::to_radians);
+    Some(([row[2], row[3], row[4]], openfast_small_rotation(angles)))
+}
+
+/// Places the coupled objects of `sc` (built from `deck`) by the driver's
+/// platform rows (D3). Refused naming the driver's row: offsets with a
+/// coupled body or rod of the deck's own.
+pub(super) fn place(
+    d: &DriverFile,
+    deck: &Deck,
+    sc: &mut SystemScenario,
+    file: &str,
+) -> Result<(), ScenarioError> {
+    let turbine_bodies = turbine_bodies(deck, sc);
+    for (k, row) in d.platforms.iter().enumerate() {
+        let Some((t, r)) = offsets(row) else {
+            continue;
+        };
+        let own_coupled = sc
+            .bodies
+            .iter()
+            .enumerate()
+            .find(|(b, body)| body.is_coupled() && !turbine_bodies.contains(&Some(*b)));
+        if let Some((_, body)) = own_coupled {
+            return Err(ScenarioError(format!(
+                "{file}: line {}: initial platform offsets {:?} (surge, sway, heave, roll, \
+                 pitch, yaw) with the deck's coupled body or rod (body {} of the deck): \
+                 MoorDyn-F puts such a body at the offsets themselves, not at its deck pose \
+                 moved by them, which is not built; give zeros and place the body in the deck",
+                d.lines[10] + k,
+                &row[2..],
+                body.id
+            )));
+        }
+        sc.notes.push(format!(
+            "{file}: line {}: initial platform offsets {:?} (surge, sway, heave in m; roll, \
+             pitch, yaw in degrees) place {} as MoorDyn-F's MD_Init does, turned by OpenFAST's \
+             small-angle rotation of the angles (docs/method.md (D2)-(D3))",
+            d.lines[10] + k,
+            &row[2..],
+            if d.turbines > 0 {
+                format!("turbine {}'s platform", k + 1)
+            } else {
+                "the coupled points".to_string()
+            }
+        ));
+        if k == 0 {
+            let reference = if d.turbines > 0 {
+                [row[0], row[1], 0.0]
+            } else {
+                [0.0; 3]
+            };
+            for p in sc
+                .points
+                .iter_mut()
+                .filter(|p| p.kind == PointType::Coupled)
+            {
+                p.position = add(add(t, rotate(&r, p.position)), reference);
+            }
+        }
+        if let Some(Some(b)) = turbine_bodies.get(k) {
+            let body = &mut sc.bodies[*b];
+            body.position = add(body.position, t);
+            body.angles = moordyn_angles(&r);
+            let (position, r) = (body.position, r);
+            for p in sc.points.iter_mut() {
+                if let PointType::Body { body, local } = p.kind {
+                    if body == *b {
+                        p.position = point(position, &r, local);
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The index in `sc.bodies` of turbine n's platform body (n = 1, 2, ...
+/// at index n - 1; None for a turbine no point is on), found through the
+/// deck's `Turbine<n>` points.
+fn turbine_bodies(deck: &Deck, sc: &SystemScenario) -> Vec<Option<usize>> {
+    let mut bodies = Vec::new();
+    for p in &deck.points {
+        let Attachment::Turbine(n) = p.attachment else {
+            continue;
+        };
+        let on = sc.points.iter().find(|q| q.id == p.id as i64);
+        if let Some(PointType::Body { body, .. }) = on.map(|q| q.kind) {
+            if bodies.len() < n {
+                bodies.resize(n, None);
+            }
+            bodies[n - 1] = Some(body);
+        }
+    }
+    bodies
+}
