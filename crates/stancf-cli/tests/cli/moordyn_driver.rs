@@ -47,6 +47,24 @@ fn run_driver(d: &std::path::Path, name: &str, contents: &str) -> std::path::Pat
     out
 }
 
+/// Runs the r-test deck `fixture` (copied as `deck`) from a driver of
+/// `t_max` s at `dt_c` with its objects held, and reads its channels.csv.
+fn r_test_channels(
+    name: &str,
+    fixture: &str,
+    deck: &str,
+    (t_max, dt_c): (f64, f64),
+) -> (Vec<String>, Vec<Vec<f64>>) {
+    let d = scratch(name);
+    copy_fixture(&d, fixture, deck);
+    let out = run_driver(
+        &d,
+        "md_driver.inp",
+        &driver(deck, (t_max, dt_c), (0, ""), AT_REST),
+    );
+    read_csv(&out.join("channels.csv"))
+}
+
 /// OpenFAST's r-test md_horizontal deck (fixture md-horizontal-moordyn.txt:
 /// a free rod of 10 m, 2 m across and 3250 kg/m, level 5 m down, a dummy
 /// line between two fixed points): its rod sinks level (TmaxIC 0: from
@@ -61,14 +79,12 @@ fn run_driver(d: &std::path::Path, name: &str, contents: &str) -> std::path::Pat
 /// closed form's -5.02261859 and -9.96593596.
 #[test]
 fn openfasts_md_horizontal_driver_sinks_its_rod_as_its_drag_closed_form() {
-    let d = scratch("driver-horizontal");
-    copy_fixture(&d, "md-horizontal-moordyn.txt", "horizontal.dat");
-    let out = run_driver(
-        &d,
-        "horizontal_driver.dvr",
-        &driver("horizontal.dat", (20.0, 0.01), (0, ""), AT_REST),
+    let (header, rows) = r_test_channels(
+        "driver-horizontal",
+        "md-horizontal-moordyn.txt",
+        "horizontal.dat",
+        (20.0, 0.01),
     );
-    let (header, rows) = read_csv(&out.join("channels.csv"));
     let col = |n: &str| header.iter().position(|h| h == n).unwrap();
     // dtOut 0.1 s: a row every 10 steps, t = 0 to 20 s.
     assert_eq!(rows.len(), 201);
@@ -149,14 +165,12 @@ L1N6PZ
 /// 2 s).
 #[test]
 fn r_test_md_case5_an_overlong_chain_starts_straight_and_slack_as_moordyn_lays_it() {
-    let d = scratch("driver-case5");
-    copy_fixture(&d, "md-case5-moordyn.txt", "case5.dat");
-    let out = run_driver(
-        &d,
-        "md_driver.inp",
-        &driver("case5.dat", (2.0, 0.01), (0, ""), AT_REST),
+    let (header, rows) = r_test_channels(
+        "driver-case5",
+        "md-case5-moordyn.txt",
+        "case5.dat",
+        (2.0, 0.01),
     );
-    let (header, rows) = read_csv(&out.join("channels.csv"));
     let ten = header.iter().position(|h| h == "FAIRTEN1").unwrap();
     assert_eq!(rows[0][ten], 0.0);
     // Pulling, and less than the chain's wet weight, 4.97 MN.
@@ -180,14 +194,12 @@ fn r_test_md_case5_an_overlong_chain_starts_straight_and_slack_as_moordyn_lays_i
 /// converged (0.001 s gives the same to 1 mm).
 #[test]
 fn r_test_md_case2_a_chain_to_a_free_point_as_long_as_its_l_starts_straight() {
-    let d = scratch("driver-case2");
-    copy_fixture(&d, "md-case2-moordyn.txt", "case2.dat");
-    let out = run_driver(
-        &d,
-        "md_driver.inp",
-        &driver("case2.dat", (0.1, 0.005), (0, ""), AT_REST),
+    let (header, rows) = r_test_channels(
+        "driver-case2",
+        "md-case2-moordyn.txt",
+        "case2.dat",
+        (0.1, 0.005),
     );
-    let (header, rows) = read_csv(&out.join("channels.csv"));
     let column = |name: &str| header.iter().position(|h| h == name).unwrap();
     let last = rows.last().unwrap();
     assert!((last[column("t")] - 0.1).abs() < 1e-9);
