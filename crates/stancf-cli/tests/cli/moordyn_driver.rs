@@ -482,3 +482,31 @@ fn a_fast_farm_drivers_offsets_move_and_turn_the_turbines_platform() {
         assert!((got[k] - want[k]).abs() < 1e-12, "{got:?} against {want:?}");
     }
 }
+
+/// With InputsMode 1 the inputs' first row places the coupled points, so
+/// a platform row's offsets move nothing; `check` says so, naming the
+/// row.
+#[test]
+fn a_drivers_offsets_under_a_time_series_are_noted_as_moving_nothing() {
+    let d = scratch("driver-offsets-series");
+    write_scenario(&d, "chain.dat", &chain_deck("Coupled 20 0 -10"));
+    write_scenario(&d, "motion.dat", "0 20 0 -10\n1 21 0 -10\n");
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver(
+            "chain.dat",
+            (1.0, 0.01),
+            (1, "motion.dat"),
+            "0 0 5 0 0 0 0 0",
+        ),
+    );
+    let o = stancf(&["check", dvr.to_str().unwrap()]);
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(
+        out.contains("line 18: initial platform offsets")
+            && out.contains("the offsets do not move"),
+        "{out}"
+    );
+}

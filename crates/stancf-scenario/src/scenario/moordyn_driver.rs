@@ -78,7 +78,10 @@ pub(super) fn driver_scenario(
     let mut sc = super::system::system_scenario(&ctx, raw, title, path, &host)
         .map_err(|e| ScenarioError(driver_words(&e.0)))?;
     match motions {
-        Some(m) => super::moordyn_driver_motions::apply(&m, &mut sc, file, &d)?,
+        Some(m) => {
+            super::moordyn_driver_motions::apply(&m, &mut sc, file, &d)?;
+            super::moordyn_driver_platforms::superseded_note(&d, &mut sc, file);
+        }
         None => super::moordyn_driver_platforms::place(&d, &deck, &mut sc, file)?,
     }
     sc.notes.push(format!(

@@ -128,3 +128,18 @@ fn turbine_bodies(deck: &Deck, sc: &SystemScenario) -> Vec<Option<usize>> {
     }
     bodies
 }
+
+/// With InputsMode 1 the inputs' positions place the coupled points from
+/// their first row, so a platform row's offsets move nothing: noted.
+pub(super) fn superseded_note(d: &DriverFile, sc: &mut SystemScenario, file: &str) {
+    for (k, row) in d.platforms.iter().enumerate() {
+        if offsets(row).is_some() {
+            sc.notes.push(format!(
+                "{file}: line {}: initial platform offsets {:?}: with InputsMode 1 the coupled \
+                 points start at the inputs' first positions, which the offsets do not move",
+                d.lines[10] + k,
+                &row[2..]
+            ));
+        }
+    }
+}
