@@ -321,8 +321,8 @@ fn a_drivers_time_series_moves_its_coupled_point() {
 
 /// A driver that cannot run is refused naming its line: a deck that is
 /// not there, InputsMode 1 without its file, an offset platform with a
-/// coupled body of the deck's own (MoorDyn-F puts it at the offsets, not
-/// at its pose moved by them).
+/// coupled body or a CoupledPinned rod of the deck's own (moving them by
+/// the offsets is not built).
 #[test]
 fn a_bad_driver_file_is_refused_naming_its_line() {
     for (name, dvr, needle) in [
@@ -341,10 +341,16 @@ fn a_bad_driver_file_is_refused_naming_its_line() {
             driver("b.dat", (1.0, 0.01), (0, ""), "0 0 5 0 0 0 0 0"),
             "line 18: initial platform offsets",
         ),
+        (
+            "offset-pinned-rod",
+            driver("r.dat", (1.0, 0.01), (0, ""), "0 0 0 0 0 0 0 2"),
+            "with a coupled body or rod of the deck",
+        ),
     ] {
         let d = scratch(name);
         copy_fixture(&d, "md-horizontal-moordyn.txt", "h.dat");
         write_scenario(&d, "b.dat", &coupled_body_deck());
+        write_scenario(&d, "r.dat", &pinned_rod_deck());
         let file = write_scenario(&d, "md_driver.inp", &dvr);
         refused_by_check_and_run(&file, &d.join("never"), &["md_driver.inp", needle], &[]);
     }
@@ -420,6 +426,23 @@ fn coupled_body_deck() -> String {
     )
 }
 
+/// `chain_deck` with a CoupledPinned rod of 10 m hanging from (0, 20,
+/// -5).
+fn pinned_rod_deck() -> String {
+    chain_deck("Coupled 20 0 -10").replace(
+        "---------------------- POINTS",
+        "---------------------- ROD TYPES -----------------------------------\n\
+         TypeName Diam Mass/m Cd Ca CdEnd CaEnd\n\
+         (name) (m) (kg/m) (-) (-) (-) (-)\n\
+         can 1.0 1000 0.6 1.0 0.6 1.0\n\
+         ---------------------- RODS ----------------------------------------\n\
+         ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n\
+         (#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)\n\
+         1 can CoupledPinned 0 20 -5 0 20 -15 2 -\n\
+         ---------------------- POINTS",
+    )
+}
+
 /// Point `id`'s position in points.csv at t = 0.
 fn start_position(out: &std::path::Path, id: f64) -> [f64; 3] {
     let (header, rows) = read_csv(&out.join("points.csv"));
@@ -432,13 +455,12 @@ fn start_position(out: &std::path::Path, id: f64) -> [f64; 3] {
 }
 
 /// OpenFAST's driver places a coupled point by its platform's initial
-/// offsets as MoorDyn-F's MD_Init does, x = t + R x_deck (D3), R
-/// OpenFAST's small-angle rotation, which about one axis turns by
-/// atan(theta) (D2): surge 10 m, heave -2 m and pitch 0.1 rad (the row's
-/// 5.7295779513 deg) take the fairlead at (20, 0, -10) to (10 + 20 c - 10
-/// s, 0, -2 - 20 s - 10 c), c, s the cosine and sine of atan(0.1), where
-/// the run starts (its static equilibrium with the fairlead held there),
-/// to round-off.
+/// offsets as MoorDyn-F's MD_Init does, x = t + R x_deck (D3), R the
+/// platform's rotation R_z R_y R_x (D2): surge 10 m, heave -2 m and pitch
+/// 0.1 rad (the row's 5.7295779513 deg) take the fairlead at (20, 0, -10)
+/// to (10 + 20 c - 10 s, 0, -2 - 20 s - 10 c), c, s the cosine and sine of
+/// 0.1, where the run starts (its static equilibrium with the fairlead
+/// held there), to round-off.
 #[test]
 fn a_drivers_platform_offsets_place_its_coupled_points_as_moordyn_f() {
     let d = scratch("driver-offsets");
@@ -450,37 +472,44 @@ fn a_drivers_platform_offsets_place_its_coupled_points_as_moordyn_f() {
         "md_driver.inp",
         &driver("chain.dat", (0.02, 0.01), (0, ""), &row),
     );
-    let a = pitch.atan();
-    let (s, c) = a.sin_cos();
+    let (s, c) = pitch.sin_cos();
     let want = [10.0 + 20.0 * c - 10.0 * s, 0.0, -2.0 - 20.0 * s - 10.0 * c];
-    let got = start_position(&out, 2.0);
+    assert_near(start_position(&out, 2.0), want, 1e-12);
+}
+
+/// `got` within `tol` of `want` in each coordinate.
+fn assert_near(got: [f64; 3], want: [f64; 3], tol: f64) {
     for k in 0..3 {
-        assert!((got[k] - want[k]).abs() < 1e-12, "{got:?} against {want:?}");
+        assert!((got[k] - want[k]).abs() < tol, "{got:?} against {want:?}");
     }
 }
 
 /// With NumTurbines 1 (FAST.Farm's mode) the row's ref_X, ref_Y place
 /// the turbine and its offsets move and turn its platform (D3): yaw
-/// 30 deg (0.5236 rad, beyond OpenFAST's small-angle bound of 0.4, which
-/// OpenFAST warns of and goes on) turns the platform by atan(0.5236)
-/// about z, and its Turbine1 fairlead at (20, 0, -10) is at (-20 + 10 +
-/// 20 c, 20 s, -10) at the start, to round-off.
+/// 30 deg turns its Turbine1 fairlead at (20, 0, -10) to (-20 + 10 +
+/// 20 cos 30, 20 sin 30, -10) at the start; a deck's own coupled point is
+/// turbine 1's in MoorDyn-F and takes its ref without offsets too
+/// ((20, 0, -10) with ref (-20, 5) at (0, 5, -10)); both to round-off.
 #[test]
-fn a_fast_farm_drivers_offsets_move_and_turn_the_turbines_platform() {
-    let d = scratch("driver-farm-offsets");
-    write_scenario(&d, "farm.dat", &chain_deck("Turbine1 20 0 -10"));
-    let text = driver("farm.dat", (0.02, 0.01), (0, ""), "-20 0 10 0 0 0 0 30").replace(
-        "0                   NumTurbines",
-        "1                   NumTurbines",
+fn a_fast_farm_drivers_rows_move_and_turn_the_turbines_platform() {
+    let farm = |name: &str, fairlead: &str, row: &str| {
+        let d = scratch(name);
+        write_scenario(&d, "farm.dat", &chain_deck(fairlead));
+        let text = driver("farm.dat", (0.02, 0.01), (0, ""), row).replace(
+            "0                   NumTurbines",
+            "1                   NumTurbines",
+        );
+        start_position(&run_driver(&d, "md_driver.inp", &text), 2.0)
+    };
+    let (s, c) = 30f64.to_radians().sin_cos();
+    let turned = farm(
+        "driver-farm-offsets",
+        "Turbine1 20 0 -10",
+        "-20 0 10 0 0 0 0 30",
     );
-    let out = run_driver(&d, "md_driver.inp", &text);
-    let a = 30f64.to_radians().atan();
-    let (s, c) = a.sin_cos();
-    let want = [-10.0 + 20.0 * c, 20.0 * s, -10.0];
-    let got = start_position(&out, 2.0);
-    for k in 0..3 {
-        assert!((got[k] - want[k]).abs() < 1e-12, "{got:?} against {want:?}");
-    }
+    assert_near(turned, [-10.0 + 20.0 * c, 20.0 * s, -10.0], 1e-12);
+    let placed = farm("driver-farm-ref", "Coupled 20 0 -10", "-20 5 0 0 0 0 0 0");
+    assert_near(placed, [0.0, 5.0, -10.0], 1e-12);
 }
 
 /// With InputsMode 1 the inputs' first row places the coupled points, so

@@ -49,41 +49,27 @@ pub fn moordyn_angles(r: &[[f64; 3]; 3]) -> [f64; 3] {
     [roll, pitch, yaw].map(f64::to_degrees)
 }
 
-/// The rotation (body axes to global) of a platform turned by the small
-/// angles theta = (theta_1, theta_2, theta_3) (rad, about global x, y, z)
-/// as OpenFAST places it: the transpose of its `SmllRotTrans`, the
-/// orthonormal matrix nearest the linearised transformation I - [theta]x
-/// (global to body axes), which with S = |theta|^2 and Q = sqrt(1 + S) is
+/// The rotation (body axes to global) of a platform at OpenFAST's roll,
+/// pitch and yaw (phi, theta, psi, rad): the transpose of the direction
+/// cosine matrix `EulerConstructZYX` that OpenFAST's MoorDyn-F (v4.0 on)
+/// builds from a driver's initial platform angles,
 ///
 /// ```text
-///   T_ii = (theta_i^2 Q + S - theta_i^2) / (S Q)
-///   T_ij = (e_ijk theta_k S + theta_i theta_j (Q - 1)) / (S Q)   (i != j)   (D2)
+///   R = R_z(psi) R_y(theta) R_x(phi)                                    (D2)
 /// ```
 ///
-/// (e_ijk the permutation symbol; T = I at theta = 0). About one axis it
-/// is the rotation by atan(theta), not theta: OpenFAST's small-angle
-/// convention, which MoorDyn-F's MD_Init applies to a driver's initial
-/// platform offsets (docs/method.md §13.7).
-pub fn openfast_small_rotation(theta: [f64; 3]) -> [[f64; 3]; 3] {
-    let s: f64 = theta.iter().map(|t| t * t).sum();
-    if s == 0.0 {
-        return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    }
-    let q = (1.0 + s).sqrt();
-    let denominator = s * q;
-    // T (global to body); its transpose is returned.
-    let t: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            if i == j {
-                (theta[i] * theta[i] * q + s - theta[i] * theta[i]) / denominator
-            } else {
-                let k = 3 - i - j;
-                let sign = if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 };
-                (sign * theta[k] * s + theta[i] * theta[j] * (q - 1.0)) / denominator
-            }
-        })
-    });
-    crate::vec3::mat3_transpose(&t)
+/// (yaw, then pitch, then roll about the turned axes; the same single-axis
+/// rotations as MoorDyn's body angles, [`rotation_from_moordyn_angles`],
+/// composed in the other order). It is exact at any angle (OpenFAST v3's
+/// small-angle `SmllRotTrans` it replaced turned by atan(theta)).
+pub fn openfast_platform_rotation(roll_pitch_yaw: [f64; 3]) -> [[f64; 3]; 3] {
+    let [phi, theta, psi] = roll_pitch_yaw.map(f64::to_degrees);
+    let about = |k: usize, angle: f64| {
+        let mut a = [0.0; 3];
+        a[k] = angle;
+        rotation_from_moordyn_angles(a)
+    };
+    mat3_mul(&mat3_mul(&about(2, psi), &about(1, theta)), &about(0, phi))
 }
 
 /// R brought back to a rotation by one step of the polar decomposition's
@@ -101,39 +87,23 @@ pub fn reorthonormalized(r: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
 mod tests {
     use super::*;
 
-    /// (D2) about one axis is the rotation by atan(theta) about it, in
-    /// MoorDyn's sense (+pitch puts +x down); about all three it is a
-    /// rotation (orthonormal, det 1) that is I + [theta]x to first order.
+    /// (D2): roll, pitch and yaw each turn as MoorDyn's angles do, and
+    /// together as yaw of the pitched and rolled platform: a point on the
+    /// platform's x axis, pitched 30 deg (bow down) and yawed 90 deg, lies
+    /// along +y, 30 deg down, whatever the roll; to first order R is
+    /// I + [theta]x.
     #[test]
-    fn openfasts_small_rotation_is_a_rotation_by_atan_of_each_angle() {
-        for (axis, angles) in [
-            (0, [0.3, 0.0, 0.0]),
-            (1, [0.0, 0.3, 0.0]),
-            (2, [0.0, 0.0, 0.3]),
-        ] {
-            let mut deg = [0.0; 3];
-            deg[axis] = 0.3f64.atan().to_degrees();
-            let exact = rotation_from_moordyn_angles(deg);
-            let r = openfast_small_rotation(angles);
-            for i in 0..3 {
-                for j in 0..3 {
-                    assert!(
-                        (r[i][j] - exact[i][j]).abs() < 1e-15,
-                        "{axis}: {r:?} {exact:?}"
-                    );
-                }
+    fn openfasts_platform_rotation_is_yaw_of_the_pitched_and_rolled_platform() {
+        let (p, y) = (30f64.to_radians(), 90f64.to_radians());
+        for roll in [0.0, 0.4, -1.0] {
+            let r = openfast_platform_rotation([roll, p, y]);
+            let bow = rotate(&r, [1.0, 0.0, 0.0]);
+            let want = [0.0, p.cos(), -p.sin()];
+            for k in 0..3 {
+                assert!((bow[k] - want[k]).abs() < 1e-15, "{roll}: {bow:?}");
             }
         }
-        let theta = [0.05, -0.12, 0.3];
-        let r = openfast_small_rotation(theta);
-        let rtr = mat3_mul(&crate::vec3::mat3_transpose(&r), &r);
-        for i in 0..3 {
-            for j in 0..3 {
-                let delta = if i == j { 1.0 } else { 0.0 };
-                assert!((rtr[i][j] - delta).abs() < 1e-15, "{rtr:?}");
-            }
-        }
-        let small = openfast_small_rotation([1e-6, -2e-6, 3e-6]);
+        let small = openfast_platform_rotation([1e-6, -2e-6, 3e-6]);
         let linear = [[1.0, -3e-6, -2e-6], [3e-6, 1.0, -1e-6], [2e-6, 1e-6, 1.0]];
         for i in 0..3 {
             for j in 0..3 {
