@@ -3,9 +3,10 @@
 //! OpenFAST's `MoorDyn_Driver` runs it: from MoorDyn's initial conditions
 //! (stancf's static equilibrium where the deck has MoorDyn generate them;
 //! the lines' catenaries between the deck's positions where its `TmaxIC`
-//! is 0, docs/method.md §13.7), the coupled objects held (InputsMode 0)
-//! or moved by the driver's time series (InputsMode 1,
-//! [`super::moordyn_driver_motions`]).
+//! is 0, docs/method.md §13.7), the coupled objects held where the
+//! platform rows' offsets put them (InputsMode 0,
+//! [`super::moordyn_driver_platforms`]) or moved by the driver's time
+//! series (InputsMode 1, [`super::moordyn_driver_motions`]).
 
 use super::context::Ctx;
 use super::system_parts::SystemScenario;

@@ -47,8 +47,8 @@ pub(super) fn place(
     file: &str,
 ) -> Result<(), ScenarioError> {
     let turbine_bodies = turbine_bodies(deck, sc);
-    let placed = d.platforms.iter().map(offsets);
-    for (k, (row, placed)) in d.platforms.iter().zip(placed).enumerate() {
+    for (k, row) in d.platforms.iter().enumerate() {
+        let placed = offsets(row);
         // The deck's own coupled points are turbine 1's: its ref always
         // (FAST.Farm mode), its offsets if any.
         if k == 0 {

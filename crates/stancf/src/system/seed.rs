@@ -191,8 +191,7 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
 pub fn moordyn_start_states(system: &System, seed: &System) -> Result<Vec<State>, OverlongLine> {
     let mut states = catenary_states(seed);
     let straight = straight_states(system);
-    let overlong = (0..seed.lines().len()).filter_map(|i| overlong_line(seed, i));
-    for l in overlong.collect::<Vec<_>>() {
+    for l in (0..seed.lines().len()).filter_map(|i| overlong_line(seed, i)) {
         if system.lines()[l.line].model.carries_compression() {
             return Err(l);
         }
