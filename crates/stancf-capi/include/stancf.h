@@ -195,6 +195,22 @@ int stancf_point_id(StancfSystem *s, unsigned int point, int64_t *id);
 int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double *vel,
                        double *force);
 
+/* A host that sets the water's kinematics (a deck's WaveKin 1, a
+   scenario's water.host_waves; MoorDyn's MoorDyn_ExternalWaveKin*):
+   after stancf_init, n = the points where it is asked (every line's nodes,
+   every point, then 1 for MoorDyn's ground body, in MoorDyn's order), r =
+   their positions now (3 n values), and stancf_wave_kin_set gives the
+   water's velocity u (m/s) and local acceleration ud (m/s^2) there (3 n
+   values each), added to the sea's current and held for the steps from
+   then until set again (t, the time they are for, must be finite; as in
+   MoorDyn it does not move them in time). Still water until set.
+   STANCF_INVALID_INPUT before stancf_init or for a system whose waves are
+   not a host's; STANCF_INVALID_VALUE for a value that is not finite. */
+int stancf_wave_kin_init(StancfSystem *s, unsigned int *n);
+int stancf_wave_kin_n(StancfSystem *s, unsigned int *n);
+int stancf_wave_kin_coordinates(StancfSystem *s, double *r);
+int stancf_wave_kin_set(StancfSystem *s, const double *u, const double *ud, double t);
+
 /* Free or coupled body body_id's (the scenario's or deck's id) 6 x 6 mooring stiffness
    at the static equilibrium of the last stancf_init, docs/method.md
    section 15.9; row-major in out (36 values): rows the lines' force

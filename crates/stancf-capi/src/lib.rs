@@ -18,9 +18,11 @@ pub mod bodies;
 pub mod error;
 pub mod handles;
 pub mod lines;
+pub mod waves;
 
 pub use bodies::*;
 pub use lines::*;
+pub use waves::*;
 
 use error::{guard, guard_ptr, Error, STANCF_INVALID_INPUT, STANCF_INVALID_INPUT_FILE};
 use stancf::coupling::{CoupledForces, CoupledState};
@@ -119,6 +121,7 @@ pub unsafe extern "C" fn stancf_create_in(
         water_density: given(water_density),
         gravity: given(gravity),
         turbines: None,
+        sets_waves: false,
     };
     create_in(path, flags, &host)
 }

@@ -63,6 +63,13 @@ fn every_call(s: *mut StancfSystem) -> Vec<(&'static str, c_int)> {
                 "stancf_point_state",
                 stancf_point_state(s, 0, b, b.add(3), b.add(6)),
             ),
+            ("stancf_wave_kin_init", stancf_wave_kin_init(s, &mut n)),
+            ("stancf_wave_kin_n", stancf_wave_kin_n(s, &mut n)),
+            (
+                "stancf_wave_kin_coordinates",
+                stancf_wave_kin_coordinates(s, b),
+            ),
+            ("stancf_wave_kin_set", stancf_wave_kin_set(s, x, x, 0.0)),
             ("stancf_close", stancf_close(s)),
         ]
     };

@@ -24,7 +24,7 @@ fn header_prototypes() -> BTreeMap<String, usize> {
 /// crate's sources.
 fn exported_functions() -> BTreeMap<String, usize> {
     let mut all = BTreeMap::new();
-    for file in ["lib.rs", "lines.rs", "bodies.rs"] {
+    for file in ["lib.rs", "lines.rs", "bodies.rs", "waves.rs"] {
         let text = std::fs::read_to_string(repo("crates/stancf-capi/src").join(file)).unwrap();
         let code = text
             .split("extern \"C\" fn ")
@@ -130,6 +130,11 @@ int main(int argc, char **argv) {
     /* Its anchor 1 is fixed, its fairlead 2 coupled: a 3 x 3 of the lines'. */
     if (stancf_point_stiffness(s, 1, k) != STANCF_INVALID_INPUT) return 38;
     if (stancf_point_stiffness(s, 2, k) != STANCF_SUCCESS || !(k[0] > 0.0)) return 39;
+    /* The bridle's waves are not a host's: nothing to set. */
+    if (stancf_wave_kin_init(s, &n) != STANCF_INVALID_INPUT) return 42;
+    if (stancf_wave_kin_n(s, &n) != STANCF_INVALID_INPUT) return 43;
+    if (stancf_wave_kin_coordinates(s, k) != STANCF_INVALID_INPUT) return 44;
+    if (stancf_wave_kin_set(s, k, k, 0.0) != STANCF_INVALID_INPUT) return 45;
     if (stancf_close(s) != STANCF_SUCCESS) return 29;
     if (stancf_close(NULL) != STANCF_INVALID_INPUT) return 30;
     /* A closed handle is refused, not read. */

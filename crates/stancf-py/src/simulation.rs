@@ -149,6 +149,7 @@ impl PySimulation {
             water_density,
             gravity,
             turbines,
+            sets_waves: false,
         };
         let opened = stancf_scenario::coupling::from_text_in(text, &path, allow_large, &host)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;
@@ -363,6 +364,36 @@ impl PySimulation {
     /// the system is singular with it held.
     fn point_stiffness(&self, index: usize) -> PyResult<Option<[[f64; 3]; 3]>> {
         Ok(self.inner()?.handle.point_stiffness(index))
+    }
+
+    /// Whether a host sets the sea's waves (a deck's `WaveKin 1`, a
+    /// scenario's `water.host_waves`).
+    #[getter]
+    fn takes_host_waves(&self) -> PyResult<bool> {
+        Ok(self.inner()?.handle.takes_host_waves())
+    }
+
+    /// Where the host is asked for the water's kinematics now, flat (3
+    /// per point, MoorDyn's order: the lines' nodes, the points, the
+    /// ground at the origin); None before `initialize`.
+    fn wave_kinematics_points(&self) -> PyResult<Option<Vec<f64>>> {
+        let points = self.inner()?.handle.host_flow_points();
+        Ok(points.map(|p| p.into_iter().flatten().collect()))
+    }
+
+    /// Sets the water's velocity and local acceleration at those points
+    /// (flat, 3 per point) for the steps from now on (docs/method.md
+    /// §12.1, (W2f)-(W2g)).
+    fn set_wave_kinematics(&self, u: Vec<f64>, a: Vec<f64>) -> PyResult<()> {
+        let triples = |v: &[f64]| -> Vec<[f64; 3]> {
+            v.chunks(3)
+                .map(|c| std::array::from_fn(|i| c.get(i).copied().unwrap_or(f64::NAN)))
+                .collect()
+        };
+        self.inner()?
+            .handle
+            .set_host_flow(&triples(&u), &triples(&a))
+            .map_err(coupling_err)
     }
 
     /// Line `index`'s (in the order of `line_ids`) node positions, node

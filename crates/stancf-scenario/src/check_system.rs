@@ -338,6 +338,14 @@ fn water_words(w: &Water) -> Vec<(&'static str, String)> {
             ),
         ));
     }
+    if w.host_waves {
+        out.push((
+            "waves",
+            "set by a host at the nodes and points through the coupling API (MoorDyn's \
+             WaveKin 1, docs/method.md (W2f)-(W2g)); still water until it sets them"
+                .to_string(),
+        ));
+    }
     out
 }
 

@@ -89,7 +89,12 @@ pub fn from_text_in(
     host: &HostEnvironment,
 ) -> Result<Coupled, Failure> {
     let file = path.display().to_string();
-    let parsed = parse_input_with(text, &file, path, host).map_err(|e| Failure::Input(e.0))?;
+    // A coupling code may set the waves at the nodes (WaveKin 1).
+    let host = HostEnvironment {
+        sets_waves: true,
+        ..host.clone()
+    };
+    let parsed = parse_input_with(text, &file, path, &host).map_err(|e| Failure::Input(e.0))?;
     let mut sc = match parsed {
         Input::System(sc) => *sc,
         Input::Cable(_) => {
@@ -100,9 +105,6 @@ pub fn from_text_in(
             )))
         }
     };
-    if let Some(why) = &sc.static_only {
-        return Err(Failure::Input(why.clone()));
-    }
     if crate::moordyn::looks_like_moordyn(text) {
         sc.analysis.time_step = deck_time_step(text, &file)?;
     }

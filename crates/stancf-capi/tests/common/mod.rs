@@ -146,3 +146,14 @@ pub fn line_positions(s: *mut StancfSystem, line: u32) -> Vec<f64> {
     );
     pos
 }
+
+/// One `stancf_step` of `s` over `dt` from `*t` with the coupled points
+/// held at `x` (at rest): the force it returns; `*t` the time reached.
+pub fn step_held(s: *mut StancfSystem, x: &[f64], t: &mut f64, dt: f64) -> Vec<f64> {
+    let mut f = vec![0.0; x.len()];
+    let mut h = dt;
+    let rest = vec![0.0; x.len()];
+    let code = unsafe { stancf_step(s, x.as_ptr(), rest.as_ptr(), f.as_mut_ptr(), t, &mut h) };
+    assert_eq!(code, STANCF_SUCCESS, "{}", message());
+    f
+}

@@ -9,6 +9,7 @@
 //! its line.
 
 use crate::common::*;
+use std::path::{Path, PathBuf};
 
 /// MoorDyn's wavekin_7 deck in short: a 410 m line from an anchor on a
 /// 50 m bed to a vessel point at the surface, `WaveKin 7`.
@@ -292,6 +293,61 @@ fn lowe_langley_2006_static_forces() {
         &sc,
         &d.join("never"),
         &["line 30: option WaveKin is 1", "static equilibrium only"],
+        &[],
+    );
+}
+
+/// examples/lazy-wave.toml with its `[water]` table's `wave_ramp` line
+/// replaced by `replacement` (its waves, when `waves` is false, left out)
+/// and its analysis of type `kind`.
+fn lazy_wave_with(dir: &Path, replacement: &str, waves: bool, kind: &str) -> PathBuf {
+    let text = std::fs::read_to_string(repo_file("examples/lazy-wave.toml")).unwrap();
+    let mut text = text
+        .replace("wave_ramp = 10.0\n", &format!("{replacement}\n"))
+        .replace("type = \"dynamic\"\n", &format!("type = \"{kind}\"\n"));
+    if !waves {
+        let at = text.find("[[water.waves]]").unwrap();
+        let end = at + text[at..].find("[analysis]").unwrap();
+        text.replace_range(at..end, "");
+    }
+    write_scenario(dir, "lazy-wave.toml", &text)
+}
+
+/// A scenario whose host sets the waves (`water.host_waves`, a deck's
+/// `WaveKin 1`; docs/method.md (W2f)-(W2g)): `check` says so and its
+/// static equilibrium runs (the host's flow is not in statics); a
+/// dynamic run from the command line, which has no host, is refused
+/// naming the key and pointing to the coupling API, and so are waves of
+/// the scenario's own beside the host's.
+#[test]
+fn a_scenario_whose_host_sets_the_waves_runs_its_equilibrium_and_steps_only_coupled() {
+    let d = scratch("host-waves-toml");
+    let statics = lazy_wave_with(&d, "host_waves = true", false, "static");
+    let o = stancf(&["check", statics.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(
+        text(&o).0.contains("set by a host at the nodes"),
+        "{}",
+        text(&o).0
+    );
+    let o = run_quiet(&statics, &d.join("out"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let dynamic = lazy_wave_with(&d, "host_waves = true", false, "dynamic");
+    refused_by_check_and_run(
+        &dynamic,
+        &d.join("never"),
+        &[
+            "water.host_waves",
+            "static equilibrium only",
+            "stancf_wave_kin_set",
+        ],
+        &[],
+    );
+    let both = lazy_wave_with(&d, "host_waves = true", true, "static");
+    refused_by_check_and_run(
+        &both,
+        &d.join("never"),
+        &["water.waves", "no waves of its own"],
         &[],
     );
 }

@@ -315,6 +315,46 @@ class Simulation:
                 % (point_id,))
         return np.asarray(k, dtype=float)
 
+    def wave_kinematics_points(self):
+        """Where a host that sets the waves (a deck's ``WaveKin 1``, a
+        scenario's ``water.host_waves``) evaluates them now: an (n, 3)
+        array of positions (m) in MoorDyn's order (its
+        ``ExternalWaveKinGetCoordinates``): every line's nodes, line by
+        line, then every point, then MoorDyn's ground body at the origin.
+        ScenarioError before :meth:`initialize` or where the waves are not
+        a host's."""
+        self._require_host_waves()
+        return np.asarray(self._sim.wave_kinematics_points(), dtype=float).reshape(-1, 3)
+
+    def set_wave_kinematics(self, u, a, t=None):
+        """Sets the water's velocity `u` (m/s) and local acceleration `a`
+        (m/s^2) at the points of :meth:`wave_kinematics_points`, each an
+        (n, 3) array (or flat, 3 n values), MoorDyn's
+        ``ExternalWaveKinSet``: added to the sea's current and held for the
+        steps from now until set again (docs/method.md §12.1,
+        (W2f)-(W2g)); still water until first set. `t`, the time they are
+        for, is checked to be a real number and, as in MoorDyn, does not
+        move them in time. A count other than the points', or a value that
+        is not finite, raises ScenarioError and sets nothing."""
+        self._require_host_waves()
+        if t is not None:
+            _seconds("t", t)
+        n = 3 * len(self.wave_kinematics_points())
+        flat = [_coupling_array(name, np.asarray(v, dtype=float).reshape(-1), n)
+                for name, v in (("u", u), ("a", a))]
+        for name, v in zip(("u", "a"), flat):
+            if len(v) != n:
+                raise ScenarioError("%s: %d values given, the host's waves are asked at %d "
+                                    "points (3 values each, %d)" % (name, len(v), n // 3, n))
+        self._sim.set_wave_kinematics(*flat)
+
+    def _require_host_waves(self):
+        if not self._sim.takes_host_waves:
+            raise ScenarioError(
+                "the system's waves are not a host's (a deck's WaveKin 1, a scenario's "
+                "water.host_waves): there are no water kinematics to set")
+        self._require_initialized("the host's water kinematics")
+
     def _require_initialized(self, what):
         """Point and line values exist from :meth:`initialize` on; before,
         ScenarioError naming the user's id (and where the coupled points'

@@ -73,7 +73,7 @@ pub(super) fn deck_system(
     if let Some(why) = sc
         .static_only
         .as_ref()
-        .filter(|_| analysis.kind == AnalysisKind::Dynamic)
+        .filter(|_| analysis.kind == AnalysisKind::Dynamic && !host.sets_waves)
     {
         return Err(ScenarioError(why.clone()));
     }

@@ -25,6 +25,11 @@ pub struct HostEnvironment {
     /// points, turbine n at index n - 1, as FAST.Farm gives them
     /// (`super::farm`); a scenario's `[farm]` wins.
     pub turbines: Option<Vec<[f64; 3]>>,
+    /// The host sets the water's kinematics at the nodes while it steps
+    /// the system (the coupling API: a deck's `WaveKin 1`, a scenario's
+    /// `water.host_waves`, docs/method.md §12.1); a run without such a
+    /// host runs those statically only.
+    pub sets_waves: bool,
 }
 
 impl HostEnvironment {
@@ -34,6 +39,7 @@ impl HostEnvironment {
         water_density: None,
         gravity: None,
         turbines: None,
+        sets_waves: false,
     };
 
     /// Refused naming the quantity: a value that is not finite and

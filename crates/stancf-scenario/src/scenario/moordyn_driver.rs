@@ -74,6 +74,7 @@ pub(super) fn driver_scenario(
         water_density: Some(d.water_density),
         gravity: Some(d.gravity),
         turbines: (d.turbines > 0).then(|| d.platforms.iter().map(|p| [p[0], p[1], 0.0]).collect()),
+        sets_waves: false,
     };
     let ctx = Ctx { file };
     let mut sc = super::system::system_scenario(&ctx, raw, title, path, &host)

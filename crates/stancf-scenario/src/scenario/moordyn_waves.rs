@@ -37,16 +37,26 @@ use stancf::water::waves::AiryWave;
 use std::f64::consts::PI;
 use std::path::Path;
 
-/// Why a deck runs statically only (None: it may run in time): its
-/// `WaveKin 1` waits for a host to set the water's kinematics at
-/// MoorDyn's nodes, which stancf's coupling API does not take.
+/// Whether the deck's waves are a host's: `WaveKin 1`, MoorDyn's
+/// external wave kinematics, which the host sets at the nodes while it
+/// steps the system (docs/method.md §12.1, (W2f)-(W2g)).
+pub(super) fn host_waves(deck: &Deck) -> bool {
+    deck.option(SupportedOption::WaveKin) == Some(1.0)
+}
+
+/// Why a deck runs statically only from the command line or a scenario
+/// (None: it may run in time): its `WaveKin 1` waits for a host to set
+/// the water's kinematics at MoorDyn's nodes, and a run without a host
+/// has none. The coupling API steps it.
 pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
     let at = deck.option_at(SupportedOption::WaveKin)?;
-    (deck.option(SupportedOption::WaveKin) == Some(1.0)).then(|| {
+    host_waves(deck).then(|| {
         format!(
             "{file}: line {}: option {} is 1: MoorDyn's host sets the water's kinematics at its \
-             nodes (MoorDyn_ExternalWaveKinSet), which stancf's coupling API does not take, so \
-             the deck runs its static equilibrium only; give the waves in a scenario that takes \
+             nodes (MoorDyn_ExternalWaveKinSet), and a run from the command line or a scenario \
+             has no host, so the deck runs its static equilibrium only; step it through the \
+             coupling API, which takes the host's kinematics (stancf_wave_kin_set in C, \
+             Coupled.set_wave_kinematics in Python), or give the waves in a scenario that takes \
              the deck (system.moordyn) as [[water.waves]] or [water.jonswap], with WaveKin 0",
             at.1, at.0
         )
@@ -79,9 +89,11 @@ pub(super) fn deck_waves(
         1.0 => {
             let note = format!(
                 "line {line}: {name} 1: MoorDyn's host sets the water's kinematics at its nodes \
-                 (MoorDyn_ExternalWaveKinSet), which stancf's coupling API does not take: the \
-                 deck's static equilibrium (a deck alone), which sees no waves in either code, \
-                 runs; a dynamic or coupled run of it is refused"
+                 (MoorDyn_ExternalWaveKinSet): the coupling API takes them (stancf_wave_kin_set \
+                 in C, Coupled.set_wave_kinematics in Python; still water until the host sets \
+                 them, as in MoorDyn, docs/method.md §12.1 (W2f)-(W2g)); the deck's static \
+                 equilibrium (a deck alone), which sees no waves in either code, runs; a dynamic \
+                 run without a host is refused"
             );
             return Ok((Vec::new(), Some(note)));
         }

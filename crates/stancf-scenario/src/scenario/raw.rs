@@ -100,6 +100,7 @@ pub(super) struct RawWater {
     pub(super) density: Option<f64>,
     pub(super) depth: Option<f64>,
     pub(super) wave_ramp: Option<f64>,
+    pub(super) host_waves: Option<bool>,
     pub(super) seabed: Option<RawSeabed>,
     pub(super) current: Option<RawCurrent>,
     #[serde(default)]

@@ -86,6 +86,11 @@ pub(super) fn system_scenario(
     let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
     let failures = super::failures::failures(ctx, &raw.failures, &points, &lines)?;
+    let static_only = host_waves_static_only(ctx.file, water.as_ref());
+    let dynamic = analysis.kind == AnalysisKind::Dynamic;
+    if let Some(why) = static_only.as_ref().filter(|_| dynamic && !host.sets_waves) {
+        return Err(ScenarioError(why.clone()));
+    }
     let mut sc = SystemScenario {
         failures,
         title,
@@ -104,7 +109,7 @@ pub(super) fn system_scenario(
         notes,
         water,
         channels: Vec::new(),
-        static_only: None,
+        static_only,
         moordyn_out: None,
         names,
     };
@@ -116,6 +121,20 @@ pub(super) fn system_scenario(
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     super::viv_types::refuse_viv_in_air(ctx.file, &sc)?;
     Ok(sc)
+}
+
+/// Why a scenario whose waves a host sets (`water.host_waves`) runs its
+/// static equilibrium only from the command line: a run there has no
+/// host; the coupling API steps it (docs/method.md §12.1, (W2f)-(W2g)).
+fn host_waves_static_only(file: &str, water: Option<&super::Water>) -> Option<String> {
+    water.filter(|w| w.host_waves).map(|_| {
+        format!(
+            "{file}: water.host_waves: a host sets the water's kinematics at the nodes through \
+             the coupling API (stancf_wave_kin_set in C, Coupled.set_wave_kinematics in \
+             Python), and a run from the command line has no host, so it runs its static \
+             equilibrium only; give the waves as [[water.waves]] or [water.jonswap] instead"
+        )
+    })
 }
 
 /// `[[line_types]]` (none for a system of bodies and rods alone): `name`

@@ -380,6 +380,7 @@ fn own_loads(
             volume: p.volume,
             drag_area: p.drag_area,
             ca: p.ca,
+            host: None,
         });
     let buoyancy = match (water, &in_water) {
         (Some(w), None) => w.density * p.volume,

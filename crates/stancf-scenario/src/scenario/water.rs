@@ -38,6 +38,10 @@ pub struct Water {
     pub jonswap: Option<Jonswap>,
     /// The duration (s) of the ramp that starts the waves (0: none).
     pub wave_ramp: f64,
+    /// The waves are a host's, set at the nodes through the coupling API
+    /// (`water.host_waves`, a deck's `WaveKin 1`; docs/method.md §12.1,
+    /// (W2f)-(W2g)).
+    pub host_waves: bool,
 }
 
 /// The seabed's contact and friction (docs/method.md §12.2).
@@ -139,6 +143,7 @@ pub(super) struct WaterKeys {
     pub(super) waves: Vec<AiryWave>,
     pub(super) jonswap: Option<Jonswap>,
     pub(super) wave_ramp: Option<f64>,
+    pub(super) host_waves: Option<bool>,
 }
 
 impl WaterKeys {
@@ -182,6 +187,7 @@ impl WaterKeys {
             waves: self.waves,
             jonswap: self.jonswap,
             wave_ramp: self.wave_ramp.unwrap_or(0.0),
+            host_waves: self.host_waves.unwrap_or(false),
         })
     }
 
@@ -205,6 +211,7 @@ impl WaterKeys {
             waves,
             jonswap: self.jonswap.or(other.jonswap),
             wave_ramp: self.wave_ramp.or(other.wave_ramp),
+            host_waves: self.host_waves.or(other.host_waves),
         }
     }
 }
@@ -241,6 +248,9 @@ impl Water {
                 }
                 CurrentField::Grid(grid) => sea.with_current_grid((**grid).clone(), ramp),
             };
+        }
+        if self.host_waves {
+            sea = sea.with_host_waves().map_err(|e| e.under("water"))?;
         }
         Ok(stancf::water::Water {
             density: self.density,
@@ -284,6 +294,7 @@ pub(super) fn water_keys(ctx: &Ctx, raw: RawWater, dir: &Path) -> Result<WaterKe
         // leaves the water out; the seabed stays).
         density: non_negative("water.density", raw.density)?,
         wave_ramp: non_negative("water.wave_ramp", raw.wave_ramp)?,
+        host_waves: raw.host_waves,
         ..WaterKeys::default()
     };
     if let Some(s) = raw.seabed {

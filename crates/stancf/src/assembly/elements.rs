@@ -84,6 +84,7 @@ impl StepProblem<'_> {
             drag: &self.model.drag,
             seabed: self.model.seabed.as_ref(),
             water: self.model.water.as_ref(),
+            host_flow: None,
             time: self.start.t,
             in_plane: self.model.constraints.in_plane,
         };
@@ -129,6 +130,11 @@ impl StepProblem<'_> {
                     }
                     let history = self.model.element_internal(&self.start.internal, k);
                     let el = &elements[k];
+                    let host = self.model.water.as_ref().and_then(|w| w.host.as_ref());
+                    let loads = SlabLoads {
+                        host_flow: host.map(|h| h.element(k)),
+                        ..loads
+                    };
                     el.slab_derivatives_from(self.slab, &y, &loads, history, with_jacobian, d);
                 };
                 if count > 1 {

@@ -24,6 +24,7 @@ mod bodies;
 mod bounds;
 mod error;
 mod held_loads;
+mod host_waves;
 mod identity;
 mod interval;
 mod readings;

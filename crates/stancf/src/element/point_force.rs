@@ -9,9 +9,9 @@ use crate::shape::SpatialShape;
 use crate::water::ForceAtPoint;
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
-    /// A force per unit length `force(r, r_x, r_dot, derivatives)` (its
-    /// derivatives asked for only where the Jacobian is) at one time point
-    /// of a slab, weight
+    /// A force per unit length `force(xi, r, r_x, r_dot, derivatives)` (xi:
+    /// where the point is along the element, 0 to 1; its derivatives asked
+    /// for only where the Jacobian is) at one time point of a slab, weight
     /// `w_dt`: adds the generalized force `f_q,k = sum_s w_s l N_k f` to
     /// `fq`, returns its work `w_dt sum_s w_s l f . r_dot` and, if
     /// `hessian_at` names the time point, adds its derivatives to the
@@ -28,14 +28,14 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         hessian_at: Option<usize>,
         fq: &mut [f64; ND],
         out: &mut SlabDerivatives<ND>,
-        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3], bool) -> ForceAtPoint,
+        force: impl Fn(f64, &[f64; 3], &[f64; 3], &[f64; 3], bool) -> ForceAtPoint,
     ) -> f64 {
         let mut work = 0.0;
         for p in &self.axial_points {
             let r = position(&p.shape, q);
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
-            let f = force(&r, &rx, &rdot, hessian_at.is_some());
+            let f = force(p.xi, &r, &rx, &rdot, hessian_at.is_some());
             // Without a Hessian the derivatives are zero: the force says
             // whether the point adds anything.
             let nothing = match hessian_at {
@@ -60,32 +60,35 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     }
 
     /// The generalized force `f_q,k = sum_s w_s l N_k f` of a force per
-    /// unit length `force(r, r_x, r_dot)` at the element's coordinates `q`
-    /// and rates `qdot` (the consistent nodal loads; (M14)).
+    /// unit length `force(xi, r, r_x, r_dot)` (xi: where the point is
+    /// along the element, 0 to 1) at the element's coordinates `q` and
+    /// rates `qdot` (the consistent nodal loads; (M14)).
     pub fn generalized_force_per_length(
         &self,
         q: &[f64; ND],
         qdot: &[f64; ND],
-        force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+        force: impl Fn(f64, &[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
     ) -> [f64; ND] {
-        self.generalized_force_at_points(q, qdot, |_, r, rx, rdot| force(r, rx, rdot).force)
+        self.generalized_force_at_points(q, qdot, |(_, xi), r, rx, rdot| {
+            force(xi, r, rx, rdot).force
+        })
     }
 
     /// [`Self::generalized_force_per_length`] of a force per unit length
-    /// `force(s, r, r_x, r_dot)` that also depends on the axial point s
-    /// (0, 1, ... in the element's axial rule: a state held there).
+    /// `force((s, xi), r, r_x, r_dot)` that also depends on the axial
+    /// point s (0, 1, ... in the element's axial rule: a state held there).
     pub fn generalized_force_at_points(
         &self,
         q: &[f64; ND],
         qdot: &[f64; ND],
-        force: impl Fn(usize, &[f64; 3], &[f64; 3], &[f64; 3]) -> [f64; 3],
+        force: impl Fn((usize, f64), &[f64; 3], &[f64; 3], &[f64; 3]) -> [f64; 3],
     ) -> [f64; ND] {
         let mut fq = [0.0; ND];
         for (s, p) in self.axial_points.iter().enumerate() {
             let r = position(&p.shape, q);
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
-            let f = force(s, &r, &rx, &rdot);
+            let f = force((s, p.xi), &r, &rx, &rdot);
             for k in 0..NS {
                 for i in 0..3 {
                     fq[3 * k + i] += p.wl * p.shape.n[k] * f[i];

@@ -22,7 +22,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut SlabDerivatives<ND>,
     ) {
         out.seabed_work +=
-            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot, d| {
+            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |_, r, rx, rdot, d| {
                 contact.force_at(r, rx, rdot, d)
             });
     }

@@ -147,6 +147,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             if let Some(water) = loads.water {
                 let when = (loads.time + tp.offset, tp.w_dt);
                 let g = &loads.gravity;
+                let water = (water, loads.host_flow.as_ref());
                 self.slab_water_at_point(water, when, g, (&q, &qdot), at, &mut fq, out);
             }
             if out.viv.active {
@@ -323,6 +324,9 @@ pub struct SlabLoads<'a> {
     pub seabed: Option<&'a crate::water::SeabedContact>,
     /// The water, if the line is in water (docs/method.md §12.3-12.5).
     pub water: Option<&'a crate::water::LineInWater>,
+    /// The flow a host has set at the element's end nodes (MoorDyn's
+    /// `WaveKin 1`, docs/method.md §12.1, (W2f)-(W2g)), if it sets one.
+    pub host_flow: Option<crate::water::ElementFlow>,
     /// The time at the slab's start (s): time point g is at
     /// `time + offset_g` (the sea's kinematics depend on it).
     pub time: f64,
@@ -340,6 +344,7 @@ impl SlabLoads<'_> {
             drag: &[],
             seabed: None,
             water: None,
+            host_flow: None,
             time: 0.0,
             in_plane: false,
         }

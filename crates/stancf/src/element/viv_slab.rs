@@ -200,7 +200,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         let Some(viv) = &self.section.viv else {
             return [0.0; ND];
         };
-        self.generalized_force_at_points(q, qdot, |s, r, rx, rdot| {
+        self.generalized_force_at_points(q, qdot, |(s, _), r, rx, rdot| {
             // The lift does not depend on the acceleration or the mean
             // squares (they set the phase's rate only).
             let at = viv.at_point(water, (r, rx, rdot, &[0.0; 3]), t, (0.0, 0.0));

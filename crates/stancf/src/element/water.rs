@@ -8,17 +8,19 @@
 
 use super::slab::SlabDerivatives;
 use super::CableElement;
-use crate::water::LineInWater;
+use crate::water::{ElementFlow, LineInWater};
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// The water at one time point of a slab, at time `t`, weight `w_dt`,
     /// under gravity `gravity` (W24): its generalized force into `fq`, its
     /// work into `out.water_work`, its derivatives into the point's C_g,
-    /// G_g (see [`Self::slab_force_per_length`]).
+    /// G_g (see [`Self::slab_force_per_length`]). `host`: the flow a host
+    /// has set at the element's end nodes, interpolated to each point of
+    /// the axial rule (W2f) and added to the sea's (W2g).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn slab_water_at_point(
         &self,
-        water: &LineInWater,
+        (water, host): (&LineInWater, Option<&ElementFlow>),
         (t, w_dt): (f64, f64),
         gravity: &[f64; 3],
         state: (&[f64; ND], &[f64; ND]),
@@ -27,8 +29,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut SlabDerivatives<ND>,
     ) {
         out.water_work +=
-            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |r, rx, rdot, d| {
-                water.force_at(r, rx, rdot, t, gravity, d)
+            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |xi, r, rx, rdot, d| {
+                water.force_at(r, rx, rdot, t, gravity, d, host.map(|h| h.at(xi)))
             });
     }
 

@@ -170,6 +170,15 @@ impl Simulation {
         &self.model
     }
 
+    /// Sets the flow a host gives at the line's nodes (docs/method.md
+    /// §12.1, (W2f)); a line whose sea's waves are not a host's keeps
+    /// none.
+    pub(crate) fn set_host_flow(&mut self, flow: crate::water::NodeFlow) {
+        if let Some(w) = self.model.water.as_mut().filter(|w| w.host.is_some()) {
+            w.host = Some(flow);
+        }
+    }
+
     pub fn state(&self) -> &State {
         &self.state
     }

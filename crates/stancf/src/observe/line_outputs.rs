@@ -7,8 +7,9 @@ use super::{add_to_end_nodes, nodal_forces_per_length};
 use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
 
-/// The sea's velocity u(r, t) (its current and waves, as the line's water
-/// load takes it, (W19)) at each node at time `t`, or at rest (`t` None:
+/// The sea's velocity u(r, t) (its current and waves, and a host's flow
+/// where it sets the waves, (W2g), as the line's water load takes it,
+/// (W19)) at each node at time `t`, or at rest (`t` None:
 /// the steady current, as a static solve takes it, §12.4): MoorDyn's `U`.
 /// Zero on a line in air.
 pub fn node_water_velocities(model: &Model, state: &State, t: Option<f64>) -> Vec<[f64; 3]> {
@@ -19,9 +20,14 @@ pub fn node_water_velocities(model: &Model, state: &State, t: Option<f64>) -> Ve
         .map(|k| {
             let o = coordinate(model.dofs_per_node(), k, SLOT_R, 0);
             let r = [state.e[o], state.e[o + 1], state.e[o + 2]];
-            match t {
-                Some(t) => water.water.sea.kinematics(&r, t).velocity,
-                None => water.water.sea.steady_current(&r).velocity,
+            match (t, &water.host) {
+                // (W2g) at node k.
+                (Some(t), Some(host)) => {
+                    let u = water.water.sea.kinematics(&r, t).velocity;
+                    std::array::from_fn(|i| u[i] + host.velocity[k][i])
+                }
+                (Some(t), None) => water.water.sea.kinematics(&r, t).velocity,
+                (None, _) => water.water.sea.steady_current(&r).velocity,
             }
         })
         .collect()
@@ -37,8 +43,11 @@ pub fn hydrodynamic_nodal_forces(model: &Model, state: &State, t: Option<f64>) -
     let Some(water) = &model.water else {
         return vec![[0.0; 3]; model.nodes()];
     };
-    nodal_forces_per_length(model, &state.e, &state.v, |r, rx, rdot| match t {
-        Some(t) => water.force(r, rx, rdot, t, &[0.0; 3]),
+    nodal_forces_per_length(model, &state.e, &state.v, |(k, xi), r, rx, rdot| match t {
+        Some(t) => {
+            let host = water.host.as_ref().map(|h| h.element(k).at(xi));
+            water.force_at(r, rx, rdot, t, &[0.0; 3], true, host)
+        }
         None => water.static_force(r, rx, &[0.0; 3]),
     })
 }

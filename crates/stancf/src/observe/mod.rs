@@ -445,7 +445,7 @@ pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
     let Some(contact) = &model.seabed else {
         return vec![[0.0; 3]; model.nodes()];
     };
-    nodal_forces_per_length(model, &state.e, &state.v, |r, rx, rdot| {
+    nodal_forces_per_length(model, &state.e, &state.v, |_, r, rx, rdot| {
         contact.force(r, rx, rdot)
     })
 }
@@ -461,19 +461,20 @@ pub fn static_seabed_nodal_forces(model: &Model, state: &State, targets: &[f64])
     // The slide r - r_0 is linear in the coordinates: interpolated from
     // e - e_0 as a velocity is from v.
     let slide: Vec<f64> = state.e.iter().zip(targets).map(|(e, e0)| e - e0).collect();
-    nodal_forces_per_length(model, &state.e, &slide, |r, rx, slide| {
+    nodal_forces_per_length(model, &state.e, &slide, |_, r, rx, slide| {
         contact.static_force(r, rx, slide)
     })
 }
 
 /// `sum_e int N_k f dx` on the nodes' positions of a force per length
-/// `force(r, r_x, rdot)`, r and r_x from the coordinates `e` and rdot
+/// `force((k, xi), r, r_x, rdot)` (at xi, 0 to 1, along element k), r and
+/// r_x from the coordinates `e` and rdot
 /// interpolated from `rates` as a velocity.
 pub(crate) fn nodal_forces_per_length(
     model: &Model,
     e: &[f64],
     rates: &[f64],
-    force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
+    force: impl Fn((usize, f64), &[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
 ) -> Vec<[f64; 3]> {
     let mut out = vec![[0.0; 3]; model.nodes()];
     let dpn = model.dofs_per_node();
@@ -482,7 +483,9 @@ pub(crate) fn nodal_forces_per_length(
             let o = coordinate(dpn, k, SLOT_R, 0);
             let q = gather(e, o);
             let qdot = gather(rates, o);
-            let fq = el.generalized_force_per_length(&q, &qdot, force);
+            let fq = el.generalized_force_per_length(&q, &qdot, |xi, r, rx, rdot| {
+                force((k, xi), r, rx, rdot)
+            });
             add_to_end_nodes(&mut out, k, &fq);
         }
     });

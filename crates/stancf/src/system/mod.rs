@@ -40,6 +40,7 @@ mod failures;
 mod frame;
 mod halving;
 mod held;
+mod host_waves;
 mod layout;
 mod line_body;
 mod line_type;
@@ -370,7 +371,7 @@ impl System {
                 ),
             ));
         }
-        let topology = Topology {
+        let mut topology = Topology {
             ends: out.iter().map(|l| l.ends).collect(),
             points,
             bodies,
@@ -378,6 +379,7 @@ impl System {
             clamps,
             gravity,
         };
+        host_waves::start_still(&mut out, &mut topology)?;
         Ok(System {
             lines: out,
             topology,

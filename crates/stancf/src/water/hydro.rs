@@ -23,6 +23,7 @@
 //! -s rho_w A (Can P_n + Cat P_t) r_ddot, is not in f: it enters the action
 //! as the kinetic energy of the entrained water (§12.5).
 
+use super::host_flow::{FlowAt, NodeFlow};
 use super::kinematics::{FluidKinematics, Sea};
 use super::seabed::ForceAtPoint;
 use super::submerged::SubmergedFraction;
@@ -68,11 +69,18 @@ pub struct Water {
 pub struct LineInWater {
     pub water: Arc<Water>,
     pub morison: Morison,
+    /// The flow a host sets at the line's nodes, when the sea's waves are
+    /// the host's ([`Sea::host_waves`], (W2f)-(W2g)); None otherwise.
+    pub host: Option<NodeFlow>,
 }
 
 impl LineInWater {
     pub fn new(water: Arc<Water>, morison: Morison) -> Self {
-        LineInWater { water, morison }
+        LineInWater {
+            water,
+            morison,
+            host: None,
+        }
     }
 
     /// The submerged fraction (W17) of the section centred at `r`.
@@ -80,6 +88,19 @@ impl LineInWater {
     pub fn submerged(&self, r: &[f64; 3]) -> SubmergedFraction {
         SubmergedFraction::at(r[2], self.morison.diameter)
     }
+}
+
+/// The sea's flow `flow` with a host's `host` added to it (W2g): its
+/// velocity and local acceleration, not their gradients (the host's values
+/// do not depend on where the line is).
+pub(crate) fn with_host_flow(mut flow: FluidKinematics, host: Option<FlowAt>) -> FluidKinematics {
+    if let Some((u, a)) = host {
+        for i in 0..3 {
+            flow.velocity[i] += u[i];
+            flow.acceleration[i] += a[i];
+        }
+    }
+    flow
 }
 
 /// The derivatives of (W18)-(W20), for the slab's Jacobian, with
@@ -114,12 +135,14 @@ impl LineInWater {
         t: f64,
         gravity: &[f64; 3],
     ) -> ForceAtPoint {
-        self.force_at(r, rx, rdot, t, gravity, true)
+        self.force_at(r, rx, rdot, t, gravity, true, None)
     }
 
     /// [`Self::force`], its derivatives only when `derivatives` (else
     /// zero): a residual without a Jacobian skips them, with the same
-    /// force to the bit.
+    /// force to the bit. `host`: the flow a host has set there, added to
+    /// the sea's (W2g).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn force_at(
         &self,
         r: &[f64; 3],
@@ -128,12 +151,13 @@ impl LineInWater {
         t: f64,
         gravity: &[f64; 3],
         derivatives: bool,
+        host: Option<FlowAt>,
     ) -> ForceAtPoint {
         let s = self.submerged(r);
         if s.is_dry() {
             return ForceAtPoint::default();
         }
-        let flow = self.water.sea.kinematics(r, t);
+        let flow = with_host_flow(self.water.sea.kinematics(r, t), host);
         self.force_in(&s, rx, rdot, &flow, gravity, derivatives)
     }
 

@@ -47,6 +47,9 @@ pub struct Sea {
     /// `current`: a sea has one current or none.
     current_grid: Option<CurrentGrid>,
     current_ramp: Ramp,
+    /// The waves are a host's, set at the nodes while it steps the system
+    /// (MoorDyn's `WaveKin 1`, (W2f)-(W2g), [`super::host_flow`]).
+    host_waves: bool,
 }
 
 impl Sea {
@@ -86,6 +89,7 @@ impl Sea {
             current: None,
             current_grid: None,
             current_ramp: Ramp::NONE,
+            host_waves: false,
         })
     }
 
@@ -117,6 +121,26 @@ impl Sea {
         self.current = None;
         self.current_ramp = ramp;
         self
+    }
+
+    /// The same sea with its waves left to a host, which sets the water's
+    /// velocity and acceleration at the system's nodes while it steps it
+    /// (MoorDyn's `WaveKin 1`; docs/method.md §12.1, (W2f)-(W2g)). Refused
+    /// for a sea with waves of its own (`waves`).
+    pub fn with_host_waves(mut self) -> Result<Sea, ModelError> {
+        if !self.waves.is_empty() {
+            return Err(ModelError::invalid(
+                "waves",
+                "a sea whose waves a host sets has no waves of its own".to_string(),
+            ));
+        }
+        self.host_waves = true;
+        Ok(self)
+    }
+
+    /// Whether a host sets the waves ([`Self::with_host_waves`]).
+    pub fn host_waves(&self) -> bool {
+        self.host_waves
     }
 
     pub fn current_grid(&self) -> Option<&CurrentGrid> {

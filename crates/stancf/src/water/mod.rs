@@ -8,6 +8,7 @@ pub mod bathymetry;
 pub mod current;
 pub mod current_grid;
 mod grid_axis;
+pub mod host_flow;
 pub mod hydro;
 pub mod kinematics;
 pub mod point;
@@ -19,6 +20,7 @@ pub mod waves;
 
 pub use added_mass::{AddedMass, EntrainedAtPoint, EntrainedFirst};
 pub use bathymetry::Bathymetry;
+pub use host_flow::{ElementFlow, NodeFlow};
 pub use hydro::{LineInWater, Morison, Water};
 pub use point::{PointForce, PointInWater};
 pub use seabed::{BedSurface, ForceAtPoint, Seabed, SeabedContact};

@@ -21,7 +21,8 @@
 //!   Q = 1/2 rho_w CdA (|v| I + v v^T / |v|)
 //! ```
 
-use super::hydro::Water;
+use super::host_flow::FlowAt;
+use super::hydro::{with_host_flow, Water};
 use super::kinematics::FluidKinematics;
 use crate::error::ModelError;
 use std::sync::Arc;
@@ -44,6 +45,9 @@ pub struct PointInWater {
     pub drag_area: f64,
     /// Added-mass coefficient Ca on the volume.
     pub ca: f64,
+    /// The flow a host has set at the point, when the sea's waves are the
+    /// host's ([`super::Sea::host_waves`], (W2g)); None otherwise.
+    pub host: Option<FlowAt>,
 }
 
 impl PointInWater {
@@ -79,7 +83,8 @@ impl PointInWater {
     /// Drag and the fluid's inertia (W34) at `r` moving at `rdot` at time
     /// `t`, with their derivatives.
     pub fn force(&self, r: &[f64; 3], rdot: &[f64; 3], t: f64) -> PointForce {
-        self.force_in(&self.water.sea.kinematics(r, t), rdot)
+        let flow = with_host_flow(self.water.sea.kinematics(r, t), self.host);
+        self.force_in(&flow, rdot)
     }
 
     /// The force at rest in the steady current (statics, as the lines'
@@ -146,6 +151,7 @@ mod tests {
             volume: 0.4,
             drag_area: 0.6,
             ca: 0.8,
+            host: None,
         }
     }
 

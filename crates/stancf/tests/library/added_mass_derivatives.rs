@@ -25,6 +25,7 @@ const TOL: f64 = 1e-6;
 fn wet(water: &LineInWater) -> SlabLoads<'_> {
     SlabLoads {
         gravity: [0.0, 0.0, -9.81],
+        host_flow: None,
         drag: &[],
         seabed: None,
         water: Some(water),

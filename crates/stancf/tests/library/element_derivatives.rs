@@ -285,6 +285,7 @@ fn slab_jacobian_with_drag_matches_finite_differences() {
         }];
         let loads = SlabLoads {
             gravity: [0.0, -9.81, 0.0],
+            host_flow: None,
             drag: &drag,
             seabed: None,
             water: None,
@@ -364,6 +365,7 @@ fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
     };
     let loads = SlabLoads {
         gravity: [0.0, 0.0, -9.81],
+        host_flow: None,
         drag: &[],
         seabed: Some(&contact),
         water: None,

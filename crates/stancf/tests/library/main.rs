@@ -29,6 +29,7 @@ mod free_cable;
 mod galerkin;
 mod grading;
 mod highest_frequency;
+mod host_waves;
 mod joints;
 mod line_failures;
 mod lines_apart;

@@ -72,6 +72,7 @@ fn buoy_system(water: &Arc<Water>, drag_area: f64, lean: f64) -> System {
         volume: 1.0,
         drag_area,
         ca: 1.0,
+        host: None,
     });
     System::new(
         vec![Line {
