@@ -333,6 +333,13 @@ impl Deck {
             .is_none_or(|o| !matches!(o.value, OptionValue::Number(v) if v <= 0.0))
     }
 
+    /// Whether the deck's waves are a host's: `WaveKin 1`, MoorDyn's
+    /// external wave kinematics, which the host sets at the nodes while it
+    /// steps the system (docs/method.md §12.1, (W2f)-(W2g)).
+    pub fn host_sets_waves(&self) -> bool {
+        self.option(SupportedOption::WaveKin) == Some(1.0)
+    }
+
     /// The value of a supported option, if the deck sets it.
     pub fn option(&self, which: SupportedOption) -> Option<f64> {
         self.options.iter().find_map(|o| match (o.kind, &o.value) {

@@ -71,7 +71,7 @@ pub(super) fn deck_water_keys(
             .or(friction),
         current,
         bathymetry,
-        host_waves: Some(super::moordyn_waves::host_waves(deck)),
+        host_waves: Some(deck.host_sets_waves()),
         ..WaterKeys::default()
     };
     Ok((keys, note.into_iter().chain(bed_note).collect()))

@@ -37,20 +37,13 @@ use stancf::water::waves::AiryWave;
 use std::f64::consts::PI;
 use std::path::Path;
 
-/// Whether the deck's waves are a host's: `WaveKin 1`, MoorDyn's
-/// external wave kinematics, which the host sets at the nodes while it
-/// steps the system (docs/method.md §12.1, (W2f)-(W2g)).
-pub(super) fn host_waves(deck: &Deck) -> bool {
-    deck.option(SupportedOption::WaveKin) == Some(1.0)
-}
-
 /// Why a deck runs statically only from the command line or a scenario
 /// (None: it may run in time): its `WaveKin 1` waits for a host to set
 /// the water's kinematics at MoorDyn's nodes, and a run without a host
 /// has none. The coupling API steps it.
 pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
     let at = deck.option_at(SupportedOption::WaveKin)?;
-    host_waves(deck).then(|| {
+    deck.host_sets_waves().then(|| {
         format!(
             "{file}: line {}: option {} is 1: MoorDyn's host sets the water's kinematics at its \
              nodes (MoorDyn_ExternalWaveKinSet), and a run from the command line or a scenario \
