@@ -86,6 +86,10 @@ def test_a_hosts_water_kinematics_are_refused_where_they_cannot_be_taken(tmp_pat
     n = len(sim.wave_kinematics_points())
     with pytest.raises(stancf.ScenarioError, match="asked at 72 points"):
         sim.set_wave_kinematics(np.zeros((n - 1, 3)), np.zeros((n, 3)))
+    with pytest.raises(TypeError, match="complex"):
+        sim.set_wave_kinematics(np.zeros((n, 3)) + 0j, np.zeros((n, 3)))
+    with pytest.raises(ValueError, match="must be finite"):
+        sim.set_wave_kinematics(np.zeros((n, 3)), np.zeros((n, 3)), float("inf"))
     bad = np.zeros((n, 3))
     bad[4, 2] = np.nan
     with pytest.raises(stancf.ScenarioError, match=r"acceleration\[4\]"):

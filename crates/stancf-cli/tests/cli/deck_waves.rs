@@ -351,3 +351,35 @@ fn a_scenario_whose_host_sets_the_waves_runs_its_equilibrium_and_steps_only_coup
         &[],
     );
 }
+
+/// `water.host_waves` given by a scenario beside a deck whose `WaveKin` is
+/// 1 is given twice: refused naming both, as the other `[water]` keys a
+/// deck gives. A deck with a rod and `WaveKin 1` runs its static
+/// equilibrium (the host's flow, which stancf does not take at rods yet,
+/// is not in statics).
+#[test]
+fn a_hosts_waves_given_twice_are_refused_and_a_rod_decks_statics_run() {
+    let d = scratch("host-waves-twice");
+    copy_fixture(&d, "lowe-langley-2006-jumper-moordyn.txt", "line.txt");
+    let sc = write_scenario(
+        &d,
+        "twice.toml",
+        "[system]\nmoordyn = \"line.txt\"\n[water]\nhost_waves = true\n",
+    );
+    refused_by_check_and_run(
+        &sc,
+        &d.join("never"),
+        &["water.host_waves", "option WaveKin", "give it in one place"],
+        &[],
+    );
+    let rod = std::fs::read_to_string(repo_file("examples/rod-hanging-moordyn.txt"))
+        .unwrap()
+        .replacen(
+            "150           WtrDpth",
+            "1             WaveKin\n150           WtrDpth",
+            1,
+        );
+    let deck = write_scenario(&d, "rod.txt", &rod);
+    let o = run_quiet(&deck, &d.join("out"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+}

@@ -2,6 +2,7 @@
 coupled points (docs/method.md §13; MoorDyn's create/init/step in memory),
 over the Rust handle `stancf::coupling::CoupledSystem`."""
 
+import math
 import numbers
 import sys
 from pathlib import Path
@@ -46,6 +47,29 @@ def _coupling_array(name, values, n):
                          "coupled body, then x, y, z of each coupled point), got an array of "
                          "shape %s" % (name, n, a.shape))
     return a.astype(float).tolist()
+
+
+def _host_array(name, values, n):
+    """A host's water kinematics at `n` points as a flat list of 3 n floats:
+    an (n, 3) or flat array of real numbers. Complex values (even with a
+    zero imaginary part) and other types raise TypeError, another count
+    ScenarioError, naming the argument; non-finite values are the
+    handle's to refuse."""
+    try:
+        a = np.asarray(values)
+    except (ValueError, TypeError) as e:
+        raise ValueError("%s: expected %d points of 3 real numbers: %s" % (name, n, e)) from None
+    if a.dtype.kind == "c":
+        raise TypeError("%s: complex values are refused (even with a zero imaginary part); "
+                        "give the %d points' real components" % (name, n))
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: expected %d points of 3 real numbers, got values of type %s"
+                        % (name, n, a.dtype))
+    if a.shape not in ((n, 3), (3 * n,)):
+        raise ScenarioError("%s: an array of shape %s given, the host's waves are asked at %d "
+                            "points: give (%d, 3) values (or %d flat)"
+                            % (name, a.shape, n, n, 3 * n))
+    return a.astype(float).reshape(-1).tolist()
 
 
 class LineState:
@@ -337,16 +361,10 @@ class Simulation:
         move them in time. A count other than the points', or a value that
         is not finite, raises ScenarioError and sets nothing."""
         self._require_host_waves()
-        if t is not None:
-            _seconds("t", t)
-        n = 3 * len(self.wave_kinematics_points())
-        flat = [_coupling_array(name, np.asarray(v, dtype=float).reshape(-1), n)
-                for name, v in (("u", u), ("a", a))]
-        for name, v in zip(("u", "a"), flat):
-            if len(v) != n:
-                raise ScenarioError("%s: %d values given, the host's waves are asked at %d "
-                                    "points (3 values each, %d)" % (name, len(v), n // 3, n))
-        self._sim.set_wave_kinematics(*flat)
+        if t is not None and not math.isfinite(_seconds("t", t)):
+            raise ValueError("t: the time the values are for must be finite, got %r" % (t,))
+        n = len(self.wave_kinematics_points())
+        self._sim.set_wave_kinematics(*(_host_array(name, v, n) for name, v in (("u", u), ("a", a))))
 
     def _require_host_waves(self):
         if not self._sim.takes_host_waves:

@@ -71,7 +71,7 @@ pub(super) fn deck_water_keys(
             .or(friction),
         current,
         bathymetry,
-        host_waves: Some(deck.host_sets_waves()),
+        host_waves: deck.host_sets_waves().then_some(true),
         ..WaterKeys::default()
     };
     Ok((keys, note.into_iter().chain(bed_note).collect()))
@@ -237,6 +237,7 @@ fn deck_option_of(key: &str, deck: &Deck) -> SupportedOption {
         "water.seabed.stiffness" => SupportedOption::BottomStiffness,
         "water.seabed.damping" => SupportedOption::BottomDamping,
         "water.current" => SupportedOption::Currents,
+        "water.host_waves" => SupportedOption::WaveKin,
         "water.seabed.friction_axial" => separate(SupportedOption::AxialFriction),
         _ => separate(SupportedOption::TransverseFriction),
     }

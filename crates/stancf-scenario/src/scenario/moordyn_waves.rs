@@ -49,7 +49,7 @@ pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
              nodes (MoorDyn_ExternalWaveKinSet), and a run from the command line or a scenario \
              has no host, so the deck runs its static equilibrium only; step it through the \
              coupling API, which takes the host's kinematics (stancf_wave_kin_set in C, \
-             Coupled.set_wave_kinematics in Python), or give the waves in a scenario that takes \
+             Simulation.set_wave_kinematics in Python), or give the waves in a scenario that takes \
              the deck (system.moordyn) as [[water.waves]] or [water.jonswap], with WaveKin 0",
             at.1, at.0
         )
@@ -83,7 +83,7 @@ pub(super) fn deck_waves(
             let note = format!(
                 "line {line}: {name} 1: MoorDyn's host sets the water's kinematics at its nodes \
                  (MoorDyn_ExternalWaveKinSet): the coupling API takes them (stancf_wave_kin_set \
-                 in C, Coupled.set_wave_kinematics in Python; still water until the host sets \
+                 in C, Simulation.set_wave_kinematics in Python; still water until the host sets \
                  them, as in MoorDyn, docs/method.md §12.1 (W2f)-(W2g)); the deck's static \
                  equilibrium (a deck alone), which sees no waves in either code, runs; a dynamic \
                  run without a host is refused"

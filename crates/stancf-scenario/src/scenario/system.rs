@@ -130,7 +130,7 @@ fn host_waves_static_only(file: &str, water: Option<&super::Water>) -> Option<St
     water.filter(|w| w.host_waves).map(|_| {
         format!(
             "{file}: water.host_waves: a host sets the water's kinematics at the nodes through \
-             the coupling API (stancf_wave_kin_set in C, Coupled.set_wave_kinematics in \
+             the coupling API (stancf_wave_kin_set in C, Simulation.set_wave_kinematics in \
              Python), and a run from the command line has no host, so it runs its static \
              equilibrium only; give the waves as [[water.waves]] or [water.jonswap] instead"
         )

@@ -149,7 +149,7 @@ pub(super) struct WaterKeys {
 impl WaterKeys {
     /// The keys of `[water]` a key of the scenario names, each with
     /// whether it is set: the pairs a deck's option may collide with.
-    pub(super) fn given(&self) -> [(&'static str, bool); 8] {
+    pub(super) fn given(&self) -> [(&'static str, bool); 9] {
         [
             ("water.depth", self.depth.is_some()),
             ("water.density", self.density.is_some()),
@@ -162,6 +162,7 @@ impl WaterKeys {
             ),
             ("water.current", self.current.is_some()),
             ("water.seabed.file", self.bathymetry.is_some()),
+            ("water.host_waves", self.host_waves.is_some()),
         ]
     }
 

@@ -13,47 +13,49 @@
 //! Rods and bodies in such a sea are refused: the host's flow at them is
 //! not taken in this version.
 
-use super::{Line, SystemSimulation, Topology};
+use super::{Line, System, SystemSimulation, Topology};
 use crate::error::ModelError;
 use crate::model::{coordinate, SLOT_R};
 use crate::water::NodeFlow;
 
 /// Gives every line and point in a sea whose waves a host sets still
 /// water to start from (the host has set nothing yet, as in MoorDyn).
-/// Refused: a line with vortex-induced vibration, or any body or rod,
-/// in such a sea (the host's flow at them is not taken).
-pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) -> Result<(), ModelError> {
+pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) {
     let hosted = |sea: &crate::water::kinematics::Sea| sea.host_waves();
-    let mut any = false;
-    for (i, line) in lines.iter_mut().enumerate() {
+    for line in lines.iter_mut() {
         let nodes = line.model.nodes();
-        let has_viv = line.model.viv().is_some();
-        let Some(water) = line.model.water.as_mut().filter(|w| hosted(&w.water.sea)) else {
-            continue;
-        };
-        if has_viv {
-            return Err(ModelError::invalid(
-                format!("lines[{i}]"),
-                "vortex-induced vibration in a sea whose waves a host sets is not taken in \
-                 this version (the lift's flow would leave out the host's)",
-            ));
+        if let Some(water) = line.model.water.as_mut().filter(|w| hosted(&w.water.sea)) {
+            water.host = Some(NodeFlow::still(nodes));
         }
-        water.host = Some(NodeFlow::still(nodes));
-        any = true;
     }
     for p in &mut topology.points {
         if let Some(water) = p.water.as_mut().filter(|w| hosted(&w.water.sea)) {
             water.host = Some(([0.0; 3], [0.0; 3]));
-            any = true;
         }
     }
-    let wet_body = topology.bodies.iter().any(|b| {
-        b.water
-            .as_ref()
-            .and_then(|w| w.sea.as_deref())
-            .is_some_and(hosted)
-    });
-    if (any || wet_body) && !topology.bodies.is_empty() {
+}
+
+/// Refuses to step `system` in a sea whose waves a host sets where the
+/// host's flow would be left out: a line with vortex-induced vibration
+/// (its lift's flow), or any body or rod (MoorDyn asks at their nodes
+/// too). Its static solve, which sees no host's flow, is not refused.
+pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
+    let hosted = |l: &Line| l.model.water.as_ref().is_some_and(|w| w.host.is_some());
+    if !system.lines().iter().any(hosted) {
+        return Ok(());
+    }
+    if let Some(i) = system
+        .lines()
+        .iter()
+        .position(|l| hosted(l) && l.model.viv().is_some())
+    {
+        return Err(ModelError::invalid(
+            format!("lines[{i}]"),
+            "vortex-induced vibration in a sea whose waves a host sets is not taken in this \
+             version (the lift's flow would leave out the host's)",
+        ));
+    }
+    if !system.bodies().is_empty() {
         return Err(ModelError::invalid(
             "bodies[0]",
             "bodies and rods in a sea whose waves a host sets are not taken in this version: \
@@ -87,9 +89,17 @@ impl SystemSimulation {
                 [e[o], e[o + 1], e[o + 2]]
             }));
         }
-        out.extend((0..self.topology.points.len()).map(|p| self.point_state(p).0));
+        out.extend((0..self.points_at_start()).map(|p| self.point_state(p).0));
         out.push([0.0; 3]);
         out
+    }
+
+    /// The points the system started with: a line failure's release
+    /// appends a free point of its own (docs/method.md §11.16), which
+    /// MoorDyn does not add to the points its host is asked at (its count
+    /// is fixed at init), nor does stancf.
+    fn points_at_start(&self) -> usize {
+        self.topology.points.len() - self.releases().len()
     }
 
     /// Sets the water's velocity `velocity` and local acceleration
@@ -137,7 +147,8 @@ impl SystemSimulation {
             });
             next += nodes;
         }
-        for (p, point) in self.topology.points.iter_mut().enumerate() {
+        let at_start = self.points_at_start();
+        for (p, point) in self.topology.points.iter_mut().take(at_start).enumerate() {
             if let Some(w) = point.water.as_mut().filter(|w| w.host.is_some()) {
                 w.host = Some((velocity[next + p], acceleration[next + p]));
             }

@@ -379,7 +379,7 @@ impl System {
             clamps,
             gravity,
         };
-        host_waves::start_still(&mut out, &mut topology)?;
+        host_waves::start_still(&mut out, &mut topology);
         Ok(System {
             lines: out,
             topology,

@@ -113,6 +113,7 @@ impl SystemSimulation {
         initial: Vec<State>,
         settings: StepSettings,
     ) -> Result<Self, ModelError> {
+        super::host_waves::refuse_untaken(&system)?;
         if initial.len() != system.lines().len() {
             return Err(ModelError::invalid(
                 "initial_state",

@@ -126,7 +126,9 @@ pub(crate) fn with_host_flow(mut flow: FluidKinematics, host: Option<FlowAt>) ->
 impl LineInWater {
     /// The water's force per unit length on the line at `r` with tangent
     /// `rx` and velocity `rdot` at time `t`, under gravity `gravity`
-    /// (W18)-(W20), with its derivatives (W21)-(W23).
+    /// (W18)-(W20), with its derivatives (W21)-(W23), in the sea's own
+    /// flow (a host's, (W2g), which belongs to a point of an element, is
+    /// added where the step knows the point).
     pub fn force(
         &self,
         r: &[f64; 3],

@@ -4,7 +4,9 @@
 //! current, the step's Jacobian against finite differences, the points
 //! the host is asked at in MoorDyn's order, and the refusals.
 
-use stancf::system::{catenary_states, End, Line, Point, System, SystemSimulation, SystemStatics};
+use stancf::system::{
+    catenary_states, End, Line, LineFailure, Point, System, SystemSimulation, SystemStatics,
+};
 use stancf::water::current::{CurrentProfile, Ramp};
 use stancf::water::kinematics::Sea;
 use stancf::water::waves::AiryWave;
@@ -234,4 +236,31 @@ fn a_hosts_flow_is_refused_where_it_cannot_be_taken() {
         .with_host_waves()
         .unwrap_err();
     assert!(e.to_string().contains("no waves of its own"), "{e}");
+}
+
+/// A line failure's release adds a free point (docs/method.md §11.16),
+/// which MoorDyn does not add to the points its host is asked at (its
+/// count is fixed at init): the tether let go of its anchor at 0.1 s, the
+/// host is asked at the same points as before, and its arrays of that
+/// count are taken.
+#[test]
+fn a_line_failures_new_point_is_not_asked_for_the_hosts_waves() {
+    let mut sim = simulation(host_sea(), TimeScheme::Galerkin);
+    let before = sim.host_flow_points().len();
+    sim.set_failures(vec![LineFailure {
+        point: 0,
+        lines: vec![0],
+        time: Some(0.1),
+        tension: None,
+    }])
+    .unwrap();
+    for _ in 0..4 {
+        sim.step().unwrap();
+    }
+    assert_eq!(sim.releases().len(), 1);
+    assert_eq!(sim.topology().points().len(), 3);
+    assert_eq!(sim.host_flow_points().len(), before);
+    let u = vec![[0.3, 0.0, 0.0]; before];
+    sim.set_host_flow(&u, &vec![[0.0; 3]; before]).unwrap();
+    sim.step().unwrap();
 }
