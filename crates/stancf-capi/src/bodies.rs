@@ -58,6 +58,7 @@ fn stiffness_of(sys: &StancfSystem, body_id: i64) -> Result<[[f64; 6]; 6], Error
             "no stiffness of body {body_id} before stancf_init"
         )));
     }
+    no_equilibrium(handle, &format!("body {body_id}"))?;
     handle.body_stiffness(b).ok_or_else(|| {
         Error::new(
             STANCF_NUMERICAL_ERROR,
@@ -67,6 +68,19 @@ fn stiffness_of(sys: &StancfSystem, body_id: i64) -> Result<[[f64; 6]; 6], Error
             ),
         )
     })
+}
+
+/// Refused (`STANCF_INVALID_INPUT`, naming `what`): a system started
+/// from MoorDyn's start without initial conditions (a deck's TmaxIC 0),
+/// which has no equilibrium to take a stiffness at.
+fn no_equilibrium(handle: &stancf::coupling::CoupledSystem, what: &str) -> Result<(), Error> {
+    if handle.starts_from_catenaries() {
+        return Err(Error::input(format!(
+            "{what}: no mooring stiffness: the system started from MoorDyn's start without \
+             initial conditions (TmaxIC 0), not from an equilibrium"
+        )));
+    }
+    Ok(())
 }
 
 /// Coupled point `point_id`'s 3 x 3 mooring stiffness, row-major in `out`
@@ -126,6 +140,7 @@ fn point_stiffness_of(sys: &StancfSystem, point_id: i64) -> Result<[[f64; 3]; 3]
             "no stiffness of point {point_id} before stancf_init"
         )));
     }
+    no_equilibrium(handle, &format!("point {point_id}"))?;
     handle.point_stiffness(p).ok_or_else(|| {
         Error::new(
             STANCF_NUMERICAL_ERROR,

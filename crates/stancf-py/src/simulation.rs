@@ -366,6 +366,13 @@ impl PySimulation {
         Ok(self.inner()?.handle.point_stiffness(index))
     }
 
+    /// Whether `initialize` starts from MoorDyn's start without initial
+    /// conditions (a deck's `TmaxIC 0`), not from an equilibrium.
+    #[getter]
+    fn starts_from_catenaries(&self) -> PyResult<bool> {
+        Ok(self.inner()?.handle.starts_from_catenaries())
+    }
+
     /// Whether a host sets the sea's waves (a deck's `WaveKin 1`, a
     /// scenario's `water.host_waves`).
     #[getter]

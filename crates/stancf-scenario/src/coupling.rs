@@ -4,7 +4,7 @@
 //! [`stancf::coupling::CoupledSystem`]. The Python `stancf.Simulation`
 //! and the C library `stancf_c` open their systems here.
 
-use crate::scenario::{parse_input_with, HostEnvironment, Input, SystemScenario};
+use crate::scenario::{parse_input_with, HostEnvironment, InitialShape, Input, SystemScenario};
 use crate::Failure;
 use stancf::coupling::CoupledSystem;
 use std::path::Path;
@@ -67,7 +67,9 @@ pub fn open_in(path: &Path, allow_large: bool, host: &HostEnvironment) -> Result
 
 /// The coupled system of scenario text (`path` names it in messages and
 /// resolves the files it refers to); a MoorDyn deck steps with its
-/// `dtM`. Refused: a single cable (no points)
+/// `dtM`, and with `TmaxIC 0` starts from its lines' catenaries as
+/// MoorDyn does (as does a scenario's `initial = "catenary"`; docs/method.md
+/// §13.7). Refused: a single cable (no points)
 /// and a system without coupled points or coupled bodies. The coupled
 /// points' motions in the scenario are replaced by the coupling code's;
 /// the coupling arrays hold the coupled bodies first, in the order of
@@ -106,7 +108,14 @@ pub fn from_text_in(
         }
     };
     if crate::moordyn::looks_like_moordyn(text) {
-        sc.analysis.time_step = deck_time_step(text, &file)?;
+        let deck =
+            crate::moordyn::parse(text).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+        sc.analysis.time_step = deck_time_step(&deck, &file)?;
+        // A deck whose TmaxIC is 0 starts as MoorDyn starts without
+        // initial conditions (docs/method.md §13.7).
+        if !deck.generates_initial_conditions() {
+            sc.initial = InitialShape::Catenary;
+        }
     }
     // The coupling code decides the duration: the elements are bounded
     // here, the steps of each coupling call by the handle.
@@ -116,8 +125,7 @@ pub fn from_text_in(
 
 /// A deck alone is a static analysis; coupled, it steps with its `dtM`,
 /// as MoorDyn does.
-fn deck_time_step(text: &str, file: &str) -> Result<f64, Failure> {
-    let deck = crate::moordyn::parse(text).map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+fn deck_time_step(deck: &crate::moordyn::Deck, file: &str) -> Result<f64, Failure> {
     deck.time_step().ok_or_else(|| {
         Failure::Input(format!(
             "{file}: OPTIONS: the deck gives no dtM and has no lines to derive MoorDyn's step \
@@ -171,6 +179,12 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
     // are numbered in order; a TOML file's `[[bodies]]` may not be).
     let mut bodies = handle.coupled_bodies();
     bodies.sort_by_key(|&b| sc.bodies[b].id);
+    // `initial = "catenary"` (a deck's TmaxIC 0): MoorDyn's start without
+    // initial conditions at initialize, not the static equilibrium.
+    let handle = match sc.initial {
+        InitialShape::Catenary => handle.with_catenary_start(),
+        _ => handle,
+    };
     let handle = handle
         .with_body_order(bodies.clone())
         .and_then(|h| h.with_failures(sc.failures.iter().map(|f| f.to_library()).collect()))

@@ -6,7 +6,8 @@
 use crate::scenario::{AnalysisKind, InitialShape, SystemScenario};
 use crate::Failure;
 use stancf::system::{
-    moordyn_start_states, straight_states, System, SystemSimulation, SystemStatics,
+    moordyn_start_forces, moordyn_start_states, straight_states, System, SystemSimulation,
+    SystemStatics,
 };
 use std::path::Path;
 
@@ -58,17 +59,23 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         None
     };
     let dynamics = if sc.analysis.kind == AnalysisKind::Dynamic {
-        let start = match sc.initial {
+        let (start, forces) = match sc.initial {
             // MoorDyn's start without initial conditions (§13.7): each line's
-            // catenary of its wet weight between its ends as given.
+            // catenary of its wet weight between its ends as given, and
+            // the forces it puts on its ends (the t = 0 row's).
             InitialShape::Catenary => {
                 let seed_system = sc.seed_system().map_err(input)?;
-                moordyn_start_states(&system, &seed_system)
-                    .map_err(|l| overlong_refusal(path, sc, &l))?
+                let states = moordyn_start_states(&system, &seed_system)
+                    .map_err(|l| overlong_refusal(path, sc, &l))?;
+                (states, Some(moordyn_start_forces(&seed_system)))
             }
-            InitialShape::Static | InitialShape::Reference => straight_states(&system),
+            InitialShape::Static | InitialShape::Reference => (straight_states(&system), None),
         };
-        Some(simulation(sc, system.clone(), start).map_err(input)?)
+        let mut sim = simulation(sc, system.clone(), start).map_err(input)?;
+        if let Some(forces) = forces {
+            sim.set_start_forces(&forces).map_err(input)?;
+        }
+        Some(sim)
     } else {
         None
     };

@@ -312,6 +312,7 @@ class Simulation:
                 "body %r is fixed: only a free or coupled body has a mooring stiffness "
                 "(free and coupled bodies: %s)" % (body_id, moving))
         self._require_initialized("body %r" % (body_id,))
+        self._require_equilibrium("body %r" % (body_id,))
         k = self._sim.body_stiffness(index)
         if k is None:
             raise ScenarioError(
@@ -331,6 +332,7 @@ class Simulation:
         if point_id not in ids:
             raise KeyError("no point %r (points: %s)" % (point_id, ids))
         self._require_initialized("point %r" % (point_id,))
+        self._require_equilibrium("point %r" % (point_id,))
         k = self._sim.point_stiffness(ids.index(point_id))
         if k is None:
             raise ScenarioError(
@@ -365,6 +367,15 @@ class Simulation:
             raise ValueError("t: the time the values are for must be finite, got %r" % (t,))
         n = len(self.wave_kinematics_points())
         self._sim.set_wave_kinematics(*(_host_array(name, v, n) for name, v in (("u", u), ("a", a))))
+
+    def _require_equilibrium(self, what):
+        """A mooring stiffness is taken at the equilibrium of initialize();
+        a system that starts as MoorDyn starts without initial conditions
+        (a deck's TmaxIC 0) has none: ScenarioError naming the id."""
+        if self._sim.starts_from_catenaries:
+            raise ScenarioError(
+                "%s: no mooring stiffness: the system started from MoorDyn's start without "
+                "initial conditions (TmaxIC 0), not from an equilibrium" % (what,))
 
     def _require_host_waves(self):
         if not self._sim.takes_host_waves:

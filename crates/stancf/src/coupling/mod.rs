@@ -22,6 +22,7 @@
 
 mod bodies;
 mod bounds;
+mod catenary_start;
 mod error;
 mod held_loads;
 mod host_waves;
@@ -90,9 +91,14 @@ struct Running {
     held: Vec<Option<held_loads::HeldEnd>>,
     /// The free and coupled bodies' mooring stiffness at the initial
     /// equilibrium, and the coupled points' not on a body.
-    stiffness: Vec<(usize, Option<[[f64; 6]; 6]>)>,
-    point_stiffness: Vec<(usize, Option<[[f64; 3]; 3]>)>,
+    stiffness: BodyStiffness,
+    point_stiffness: PointStiffness,
 }
+
+/// Each free and coupled body's mooring stiffness (body index, 6 x 6).
+type BodyStiffness = Vec<(usize, Option<[[f64; 6]; 6]>)>;
+/// Each coupled point's not on a body (point index, 3 x 3).
+type PointStiffness = Vec<(usize, Option<[[f64; 3]; 3]>)>;
 
 /// The whole state of a [`CoupledSystem`] (opaque; [`CoupledSystem::save`])
 /// and the identity of the system it was saved from.
@@ -134,6 +140,19 @@ pub struct CoupledSystem {
     /// §11.16).
     failures: Vec<crate::system::LineFailure>,
     running: Option<Running>,
+    /// [`Self::initialize`] starts from MoorDyn's start without initial
+    /// conditions (a deck's `TmaxIC 0`), not from the static equilibrium
+    /// ([`Self::with_catenary_start`]).
+    catenary_start: bool,
+}
+
+/// Where [`CoupledSystem::initialize`] puts the coupled points: the
+/// coupling arrays and the points' positions and velocities from them.
+struct Start<'a> {
+    x: &'a [f64],
+    xd: Option<&'a [f64]>,
+    position: Vec<f64>,
+    velocity: Option<Vec<f64>>,
 }
 
 impl CoupledSystem {
@@ -183,6 +202,7 @@ impl CoupledSystem {
             max_interval_steps: MAX_INTERVAL_STEPS,
             failures: Vec::new(),
             running: None,
+            catenary_start: false,
         })
     }
 
@@ -400,6 +420,15 @@ impl CoupledSystem {
             system.set_point_motion(p, at.clone())?;
             seed.set_point_motion(p, at)?;
         }
+        if self.catenary_start {
+            let start = Start {
+                x,
+                xd,
+                position,
+                velocity,
+            };
+            return self.start_from_catenaries(system, &seed, start);
+        }
         let mut statics = SystemStatics::seeded(system.clone(), &seed, self.statics.clone())?;
         let finished = statics.solve(|_, _| {
             if stop() {
@@ -417,25 +446,39 @@ impl CoupledSystem {
             |k| statics.point_position(coupled[k]),
             |b| self.layout.reference(x, b),
         );
-        let bodies = 0..self.layout.bodies.len();
-        let held: Vec<_> = bodies
-            .clone()
-            .map(|b| self.layout.held_end(x, xd, b))
-            .collect();
-        // The coupled bodies' own parts at rest at their poses, in the
-        // static solve's steady water (B36).
-        for (k, end) in held.iter().enumerate() {
-            let body = &system.bodies()[self.layout.bodies[k].body];
-            if let (Some(end), true) = (end, held_loads::carries_loads(body)) {
-                let push = held_loads::rest_push(body, system.gravity(), end);
-                self.layout.add_push(&mut forces, k, &push);
-            }
-        }
+        let held = self.held_ends(&system, x, xd, &mut forces);
         let stiffness = stiffness::body_stiffness(&mut statics, &self.layout, x);
         let point_stiffness = stiffness::point_stiffness(&statics, &self.layout, &self.coupled);
         let mut sim = stiffness::start_at(&statics, self.steps.clone(), self.step_halvings)?;
         sim.set_failures(self.failures.clone())?;
-        self.running = Some(Running {
+        let start = Start {
+            x,
+            xd,
+            position,
+            velocity,
+        };
+        self.running = Some(self.running(sim, start, held, (stiffness, point_stiffness)));
+        Ok(forces)
+    }
+
+    /// The running part from `sim` at the start `start`, the coupled
+    /// bodies' `held` ends and the mooring stiffness at the start's
+    /// equilibrium (none without one).
+    fn running(
+        &self,
+        sim: SystemSimulation,
+        start: Start<'_>,
+        held: Vec<Option<held_loads::HeldEnd>>,
+        (stiffness, point_stiffness): (BodyStiffness, PointStiffness),
+    ) -> Running {
+        let bodies = 0..self.layout.bodies.len();
+        let Start {
+            x,
+            xd,
+            position,
+            velocity,
+        } = start;
+        Running {
             watch: sim.energy_watch(),
             sim,
             position,
@@ -448,8 +491,30 @@ impl CoupledSystem {
             held,
             stiffness,
             point_stiffness,
-        });
-        Ok(forces)
+        }
+    }
+
+    /// The coupled bodies' poses and rates of `x`, `xd` (None for a body
+    /// pinned to the host), each body's own parts' push at rest at its
+    /// pose, in the static solve's steady water (B36), added to `forces`.
+    fn held_ends(
+        &self,
+        system: &System,
+        x: &[f64],
+        xd: Option<&[f64]>,
+        forces: &mut [f64],
+    ) -> Vec<Option<held_loads::HeldEnd>> {
+        let held: Vec<_> = (0..self.layout.bodies.len())
+            .map(|b| self.layout.held_end(x, xd, b))
+            .collect();
+        for (k, end) in held.iter().enumerate() {
+            let body = &system.bodies()[self.layout.bodies[k].body];
+            if let (Some(end), true) = (end, held_loads::carries_loads(body)) {
+                let push = held_loads::rest_push(body, system.gravity(), end);
+                self.layout.add_push(forces, k, &push);
+            }
+        }
+        held
     }
 
     /// The whole state: the simulation (its kept factors included), the

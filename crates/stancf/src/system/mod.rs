@@ -45,6 +45,7 @@ mod layout;
 mod line_body;
 mod line_type;
 mod mass;
+mod moordyn_start;
 mod network;
 mod pins;
 mod point_terms;
@@ -70,12 +71,13 @@ pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use held::{held_push, HeldMotion};
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
+pub use moordyn_start::{moordyn_start_forces, moordyn_start_states};
 pub use release::check_failures;
 pub(crate) use run::watched_step;
 pub use run::{run, RunProgress};
 pub use seed::{
-    catenary_states, catenary_states_at, end_positions, end_positions_at, moordyn_start_states,
-    overlong_lines, shaped, straight_between, straight_states, taut_states, OverlongLine,
+    catenary_states, catenary_states_at, end_positions, end_positions_at, overlong_lines, shaped,
+    straight_between, straight_states, taut_states, OverlongLine,
 };
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;

@@ -177,29 +177,6 @@ pub fn catenary_states_at(system: &System, positions: &[[f64; 3]]) -> Vec<State>
         .collect()
 }
 
-/// MoorDyn's start when it generates no initial conditions (a deck's
-/// TmaxIC 0; docs/method.md §13.7): each line of `system` in its seed
-/// shape of `seed` (the same lines with their wet weights,
-/// [`catenary_states`]); a line longer than its catenary can hold (C20)
-/// straight between its ends, as MoorDyn lays it, shortened and slack
-/// where it carries no compression (M4a). Every line is judged where its
-/// ends are, a line to a free point too, as MoorDyn judges each line
-/// before anything moves (OpenFAST's md_case2: a chain to a free point
-/// exactly as long as its "L", L = XF + ZF, starts straight). A line that
-/// carries compression would start pushing its ends apart: the first
-/// such line is the error.
-pub fn moordyn_start_states(system: &System, seed: &System) -> Result<Vec<State>, OverlongLine> {
-    let mut states = catenary_states(seed);
-    let straight = straight_states(system);
-    for l in (0..seed.lines().len()).filter_map(|i| overlong_line(seed, i)) {
-        if system.lines()[l.line].model.carries_compression() {
-            return Err(l);
-        }
-        states[l.line] = straight[l.line].clone();
-    }
-    Ok(states)
-}
-
 /// The seed shape of one line between end positions a and b.
 pub(super) enum SeedShape {
     Catenary(Catenary),
@@ -498,7 +475,7 @@ pub fn overlong_lines(system: &System) -> Vec<OverlongLine> {
 /// reaches L_max (C20) between its ends where they are now, whatever
 /// holds them: MoorDyn's catenary start refuses such a line and lays it
 /// straight (MoorDyn's `Catenary`, "line length too large").
-fn overlong_line(system: &System, i: usize) -> Option<OverlongLine> {
+pub(super) fn overlong_line(system: &System, i: usize) -> Option<OverlongLine> {
     let model = &system.lines()[i].model;
     let (a, b) = end_positions(system, i);
     let ends = anchored_on_bed(model, a, b)?;

@@ -167,8 +167,11 @@ pub(super) fn run_system(
     }
     if let Some(s) = sim.as_mut() {
         if !from_static {
+            // MoorDyn's start gives its lines' shapes' forces at t = 0
+            // (docs/method.md §13.7); a straight start, none.
+            let catenary = sc.initial == crate::scenario::InitialShape::Catenary;
             writers
-                .write(&dynamic_row(s, None))
+                .write(&dynamic_row(s, catenary.then_some(sc.end_forces)))
                 .map_err(io_err(place.shown))?;
         }
         step_through(s, &sc, opts, &mut writers, &mut outcome).map_err(io_err(place.shown))?;
