@@ -110,11 +110,12 @@ fn openfasts_md_horizontal_driver_sinks_its_rod_as_its_drag_closed_form() {
 /// stays within 2 mm of its start over 2 s (the catenary is the line's
 /// equilibrium but for the 12 elements' discretization, of the order of
 /// (h/L)^4 L); from the straight start it would fall metres. The t = 0
-/// row gives the catenary's fairlead tension (C12), as MoorDyn's start
-/// gives its own: the tension the line holds, on average over the 2 s,
-/// to 1e-4 (measured 2e-6); the 12 cubics' strain, which cannot follow
-/// the catenary's between the nodes (docs/method.md (M32b)), sets it
-/// swinging about it by up to 9 % at first (EA 7e8 N), damped by its BA.
+/// row gives the catenary's fairlead tension (C12) (MoorDyn's output has
+/// zero there, docs/method.md §13.7): the tension the line holds, on
+/// average over the 2 s, to 1e-4 (measured 2e-6); the 12 cubics'
+/// strain, which cannot follow the catenary's between the nodes
+/// (docs/method.md (M32b)), sets it swinging about it by up to 9 % at
+/// first (EA 7e8 N), damped by its BA.
 #[test]
 fn a_tmaxic_0_deck_starts_its_lines_in_their_catenaries() {
     let d = scratch("driver-catenary");

@@ -3,8 +3,9 @@
 //! [`CoupledSystem::initialize`] every line is laid in its seed shape
 //! between its ends where the coupling code puts the coupled points, at
 //! rest, with no static solve, and the coupling code gets the forces
-//! those shapes put on their ends, as `MoorDyn_Init` gives the forces of
-//! its start. There is no equilibrium, so no mooring stiffness.
+//! those shapes put on their ends (MoorDyn 2.7 gives zero until its first
+//! step: docs/method.md §13.7). There is no equilibrium, so no mooring
+//! stiffness.
 
 use super::{CoupledSystem, CouplingError, Start};
 use crate::error::ModelError;

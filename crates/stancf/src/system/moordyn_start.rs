@@ -1,8 +1,9 @@
 //! MoorDyn's start when it generates no initial conditions (a deck's
 //! `TmaxIC 0`; docs/method.md §13.7): every line in its seed shape
 //! between its ends where the scenario puts them, at rest, and the forces
-//! those shapes put on their ends, which a coupling code is given at
-//! init as MoorDyn's `MoorDyn_Init` gives the forces of its start.
+//! those shapes put on their ends, which the run's t = 0 row and a
+//! coupling code's init are given (where MoorDyn 2.7 gives zero until its
+//! first step, docs/method.md §13.7).
 
 use super::seed::{catenary_states, end_positions, overlong_line, seed_shape, straight_states};
 use super::{EndForce, OverlongLine, System};

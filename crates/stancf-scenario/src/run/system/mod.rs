@@ -167,8 +167,9 @@ pub(super) fn run_system(
     }
     if let Some(s) = sim.as_mut() {
         if !from_static {
-            // MoorDyn's start gives its lines' shapes' forces at t = 0
-            // (docs/method.md §13.7); a straight start, none.
+            // MoorDyn's start without initial conditions: its lines'
+            // shapes' forces at t = 0 (docs/method.md §13.7, where MoorDyn
+            // writes zeros); a straight start, none.
             let catenary = sc.initial == crate::scenario::InitialShape::Catenary;
             writers
                 .write(&dynamic_row(s, catenary.then_some(sc.end_forces)))
