@@ -9,9 +9,9 @@ use crate::error::{guard, Error, STANCF_INVALID_VALUE};
 use crate::StancfSystem;
 use std::ffi::{c_int, c_uint};
 
-/// The points where the host is asked, now: refused before `stancf_init`
-/// and for a system whose waves are not a host's.
-fn host_points(sys: &StancfSystem) -> Result<Vec<[f64; 3]>, Error> {
+/// The number of points where the host is asked: refused before
+/// `stancf_init` and for a system whose waves are not a host's.
+fn host_count(sys: &StancfSystem) -> Result<usize, Error> {
     let handle = &sys.coupled.handle;
     if !handle.takes_host_waves() {
         return Err(Error::input(
@@ -20,7 +20,7 @@ fn host_points(sys: &StancfSystem) -> Result<Vec<[f64; 3]>, Error> {
         ));
     }
     handle
-        .host_flow_points()
+        .host_flow_count()
         .ok_or_else(|| Error::input("the host's water kinematics are set after stancf_init"))
 }
 
@@ -45,8 +45,7 @@ pub unsafe extern "C" fn stancf_wave_kin_init(s: *mut StancfSystem, n: *mut c_ui
 pub unsafe extern "C" fn stancf_wave_kin_n(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let count = host_points(sys)?.len();
-            *args::place(n, "n")? = count as c_uint;
+            *args::place(n, "n")? = host_count(sys)? as c_uint;
             Ok(())
         })
     })
@@ -62,8 +61,8 @@ pub unsafe extern "C" fn stancf_wave_kin_n(s: *mut StancfSystem, n: *mut c_uint)
 pub unsafe extern "C" fn stancf_wave_kin_coordinates(s: *mut StancfSystem, r: *mut f64) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let points = host_points(sys)?;
-            let out = args::room(r, 3 * points.len(), "r")?;
+            let out = args::room(r, 3 * host_count(sys)?, "r")?;
+            let points = sys.coupled.handle.host_flow_points().unwrap_or_default();
             for (o, v) in out.iter_mut().zip(points.iter().flatten()) {
                 *o = *v;
             }
@@ -92,7 +91,7 @@ pub unsafe extern "C" fn stancf_wave_kin_set(
 ) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let count = host_points(sys)?.len();
+            let count = host_count(sys)?;
             let triples = |v: &[f64]| -> Vec<[f64; 3]> {
                 v.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
             };

@@ -388,6 +388,12 @@ impl PySimulation {
         Ok(points.map(|p| p.into_iter().flatten().collect()))
     }
 
+    /// How many points `wave_kinematics_points` names (0 before
+    /// `initialize`).
+    fn wave_kinematics_count(&self) -> PyResult<usize> {
+        Ok(self.inner()?.handle.host_flow_count().unwrap_or(0))
+    }
+
     /// Sets the water's velocity and local acceleration at those points
     /// (flat, 3 per point) for the steps from now on (docs/method.md
     /// §12.1, (W2f)-(W2g)).

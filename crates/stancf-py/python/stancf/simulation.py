@@ -365,7 +365,7 @@ class Simulation:
         self._require_host_waves()
         if t is not None and not math.isfinite(_seconds("t", t)):
             raise ValueError("t: the time the values are for must be finite, got %r" % (t,))
-        n = len(self.wave_kinematics_points())
+        n = self._sim.wave_kinematics_count()
         self._sim.set_wave_kinematics(*(_host_array(name, v, n) for name, v in (("u", u), ("a", a))))
 
     def _require_equilibrium(self, what):

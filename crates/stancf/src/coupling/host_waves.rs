@@ -9,10 +9,16 @@ use crate::error::ModelError;
 impl CoupledSystem {
     /// Whether a host sets the sea's waves (a deck's `WaveKin 1`).
     pub fn takes_host_waves(&self) -> bool {
-        self.system
-            .lines()
+        let lines = self.system.lines();
+        lines
             .iter()
-            .any(|l| l.model.water.as_ref().is_some_and(|w| w.host.is_some()))
+            .any(|l| crate::system::takes_host_flow(&l.model))
+    }
+
+    /// How many points [`Self::host_flow_points`] names (None before
+    /// [`Self::initialize`]; 0 if no host sets the waves).
+    pub fn host_flow_count(&self) -> Option<usize> {
+        self.simulation().map(|s| s.host_flow_count())
     }
 
     /// Where the host is asked for the water's velocity and acceleration

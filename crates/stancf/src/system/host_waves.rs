@@ -15,8 +15,14 @@
 
 use super::{Line, System, SystemSimulation, Topology};
 use crate::error::ModelError;
-use crate::model::{coordinate, SLOT_R};
+use crate::model::{coordinate, Model, SLOT_R};
 use crate::water::NodeFlow;
+
+/// Whether the line of `model` takes a host's flow at its nodes (its sea's
+/// waves are a host's, [`start_still`]).
+pub(crate) fn takes_host_flow(model: &Model) -> bool {
+    model.water.as_ref().is_some_and(|w| w.host.is_some())
+}
 
 /// Gives every line and point in a sea whose waves a host sets still
 /// water to start from (the host has set nothing yet, as in MoorDyn).
@@ -40,7 +46,7 @@ pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) {
 /// (its lift's flow), or any body or rod (MoorDyn asks at their nodes
 /// too). Its static solve, which sees no host's flow, is not refused.
 pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
-    let hosted = |l: &Line| l.model.water.as_ref().is_some_and(|w| w.host.is_some());
+    let hosted = |l: &Line| takes_host_flow(&l.model);
     if !system.lines().iter().any(hosted) {
         return Ok(());
     }
@@ -68,9 +74,18 @@ pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
 impl SystemSimulation {
     /// Whether a host sets the waves ([`crate::water::kinematics::Sea::with_host_waves`]).
     pub fn takes_host_waves(&self) -> bool {
-        self.lines
-            .iter()
-            .any(|l| l.model().water.as_ref().is_some_and(|w| w.host.is_some()))
+        self.lines.iter().any(|l| takes_host_flow(l.model()))
+    }
+
+    /// How many points [`Self::host_flow_points`] names: every line's
+    /// nodes, the points the system started with, the ground; 0 if no
+    /// host sets the waves.
+    pub fn host_flow_count(&self) -> usize {
+        if !self.takes_host_waves() {
+            return 0;
+        }
+        let nodes: usize = self.lines.iter().map(|l| l.model().nodes()).sum();
+        nodes + self.points_at_start() + 1
     }
 
     /// Where the host is asked for the water's kinematics, now, in
@@ -80,7 +95,7 @@ impl SystemSimulation {
         if !self.takes_host_waves() {
             return Vec::new();
         }
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity(self.host_flow_count());
         for l in &self.lines {
             let (m, e) = (l.model(), &l.state().e);
             let dpn = m.dofs_per_node();
@@ -119,7 +134,7 @@ impl SystemSimulation {
                  to set",
             ));
         }
-        let count = self.host_flow_points().len();
+        let count = self.host_flow_count();
         for (name, values) in [("velocity", velocity), ("acceleration", acceleration)] {
             if values.len() != count {
                 return Err(ModelError::invalid(
