@@ -198,7 +198,8 @@ int stancf_point_state(StancfSystem *s, unsigned int point, double *pos, double 
 /* A host that sets the water's kinematics (a deck's WaveKin 1, a
    scenario's water.host_waves; MoorDyn's MoorDyn_ExternalWaveKin*):
    after stancf_init, n = the points where it is asked (every line's nodes,
-   every point, then 1 for MoorDyn's ground body, in MoorDyn's order), r =
+   every rod's nodes, every point, then 1 for MoorDyn's ground body and 1
+   for each body, in MoorDyn's order), r =
    their positions now (3 n values), and stancf_wave_kin_set gives the
    water's velocity u (m/s) and local acceleration ud (m/s^2) there (3 n
    values each), added to the sea's current and held for the steps from

@@ -1,8 +1,9 @@
 //! A host that sets the water's kinematics (docs/interface.md, "C
-//! library"; docs/method.md §12.1, (W2f)-(W2g)): MoorDyn's external wave
+//! library"; docs/method.md §12.1, (W2f)-(W2h)): MoorDyn's external wave
 //! kinematics (`WaveKin 1`, `MoorDyn_ExternalWaveKinInit`,
 //! `..GetN`, `..GetCoordinates`, `..Set`), in its order of points: every
-//! line's nodes, every point, then MoorDyn's ground body at the origin.
+//! line's nodes, every rod's nodes, every point, then MoorDyn's ground
+//! body at the origin and every body.
 
 use crate::args;
 use crate::error::{guard, Error, STANCF_INVALID_VALUE};
@@ -25,8 +26,9 @@ fn host_count(sys: &StancfSystem) -> Result<usize, Error> {
 }
 
 /// The number of points where the host sets the water's velocity and
-/// acceleration (`MoorDyn_ExternalWaveKinInit`): the lines' nodes, the
-/// points and 1 (MoorDyn's ground body). After `stancf_init`; until the
+/// acceleration (`MoorDyn_ExternalWaveKinInit`): the lines' and rods'
+/// nodes, the points, 1 (MoorDyn's ground body) and the bodies. After
+/// `stancf_init`; until the
 /// host sets them the water is still, as in MoorDyn.
 ///
 /// # Safety
@@ -74,7 +76,7 @@ pub unsafe extern "C" fn stancf_wave_kin_coordinates(s: *mut StancfSystem, r: *m
 /// Sets the water's velocity `u` (m/s) and local acceleration `ud`
 /// (m/s^2) at the points of `stancf_wave_kin_init`, 3 per point in its
 /// order (`MoorDyn_ExternalWaveKinSet`): added to the sea's current, held
-/// for the steps from now until set again (docs/method.md (W2f)-(W2g)).
+/// for the steps from now until set again (docs/method.md (W2f)-(W2h)).
 /// `t` is the time the values are for; as in MoorDyn it does not move
 /// them in time, and must be finite. STANCF_INVALID_VALUE for a value
 /// that is not finite; nothing is set on an error.

@@ -1,8 +1,9 @@
 //! A host that sets the water's kinematics through the C library
 //! (`stancf_wave_kin_*`, MoorDyn's `MoorDyn_ExternalWaveKin*`;
-//! docs/method.md §12.1, (W2f)-(W2g)): Lowe and Langley's flexible
+//! docs/method.md §12.1, (W2f)-(W2h)): Lowe and Langley's flexible
 //! jumper in regular waves, as MoorDyn's tests drive it, against the top
-//! tensions of their paper; the calls' refusals.
+//! tensions of their paper; a rod and a coupled body in such a sea; the
+//! calls' refusals.
 
 mod common;
 
@@ -235,18 +236,25 @@ fn edited_example(name: &str, example: &str, edits: &[(&str, &str)]) -> PathBuf 
     path
 }
 
-/// Rods and bodies in a sea whose waves a host sets are not taken yet:
-/// MoorDyn asks at their nodes too, and stancf would leave the host's
-/// flow out there. A deck with a rod is refused when opened, naming the
-/// rod; a system with a body when it starts stepping (`stancf_init`),
-/// naming the body's place; neither is run without the host's flow.
+/// Rods and bodies in a sea whose waves a host sets take its flow
+/// (docs/method.md (W2h)), asked in MoorDyn's order. MoorDyn's
+/// RodHanging deck (a free rod hung by two lines from two points, here
+/// coupled) with `WaveKin 1`: the host is asked at 97 places, MoorDyn 2.7's
+/// count for the same deck (`MoorDyn_ExternalWaveKinInit`): the lines' 46
+/// and 46 nodes, the rod's 2 (its one segment's ends, where the lines
+/// hold it), the 2 points and the ground. A flow of 0.5 m/s across the
+/// rod (along y), set at every place, carries the rod downstream: its
+/// nodes move along +y, where in still water (symmetric about y = 0)
+/// nothing moves them off it. A coupled body carrying a can (the
+/// moored-buoy example) in such a sea starts and steps too.
 #[test]
-fn rods_and_bodies_in_a_hosts_waves_are_refused() {
+fn rods_and_bodies_in_a_hosts_waves_take_its_flow() {
     let deck = edited_example(
         "wave-kin-rod",
         "rod-hanging-moordyn.txt",
         &[
             ("1     Fixed     -450", "1     Coupled   -450"),
+            ("2     Fixed      450", "2     Coupled    450"),
             (
                 "150           WtrDpth",
                 "1             WaveKin\n150           WtrDpth",
@@ -254,12 +262,44 @@ fn rods_and_bodies_in_a_hosts_waves_are_refused() {
         ],
     );
     let s = unsafe { stancf_create(cstring(&deck).as_ptr()) };
-    assert!(s.is_null());
-    assert!(
-        message().contains("rod 1: rods in a sea whose waves a host sets"),
+    assert!(!s.is_null(), "{}", message());
+    let x = [-450.0, 0.0, 0.0, 450.0, 0.0, 0.0];
+    assert_eq!(
+        unsafe { stancf_init(s, x.as_ptr(), [0.0; 6].as_ptr()) },
+        STANCF_SUCCESS,
         "{}",
         message()
     );
+    let mut n = 0u32;
+    assert_eq!(unsafe { stancf_wave_kin_init(s, &mut n) }, STANCF_SUCCESS);
+    assert_eq!(n, 46 + 46 + 2 + 2 + 1);
+    let n = n as usize;
+    let mut r = vec![0.0; 3 * n];
+    assert_eq!(
+        unsafe { stancf_wave_kin_coordinates(s, r.as_mut_ptr()) },
+        STANCF_SUCCESS
+    );
+    // The rod's nodes: its ends, where the lines' last nodes are.
+    assert_eq!(&r[3 * 92..3 * 93], &r[3 * 45..3 * 46]);
+    assert_eq!(&r[3 * 93..3 * 94], &r[3 * 91..3 * 92]);
+    let u: Vec<f64> = (0..n).flat_map(|_| [0.0, 0.5, 0.0]).collect();
+    let a = vec![0.0; 3 * n];
+    assert_eq!(
+        unsafe { stancf_wave_kin_set(s, u.as_ptr(), a.as_ptr(), 0.0) },
+        STANCF_SUCCESS
+    );
+    let mut t = 0.0;
+    for _ in 0..20 {
+        step_held(s, &x, &mut t, 0.05);
+    }
+    assert_eq!(
+        unsafe { stancf_wave_kin_coordinates(s, r.as_mut_ptr()) },
+        STANCF_SUCCESS
+    );
+    let drift = [r[3 * 92 + 1], r[3 * 93 + 1]];
+    eprintln!("the rod's ends moved {drift:?} m along the flow in 1 s");
+    assert!(drift.iter().all(|&y| y > 1e-3), "{drift:?}");
+    assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
     let toml = edited_example(
         "wave-kin-body",
         "moored-buoy.toml",
@@ -270,19 +310,24 @@ fn rods_and_bodies_in_a_hosts_waves_are_refused() {
     );
     let s = unsafe { stancf_create(cstring(&toml).as_ptr()) };
     assert!(!s.is_null(), "{}", message());
-    let mut n = 0u32;
-    assert_eq!(unsafe { stancf_ncoupled_dof(s, &mut n) }, STANCF_SUCCESS);
-    let mut x = vec![0.0; n as usize];
+    let mut dof = 0u32;
+    assert_eq!(unsafe { stancf_ncoupled_dof(s, &mut dof) }, STANCF_SUCCESS);
+    let mut x = vec![0.0; dof as usize];
     assert_eq!(
         unsafe { stancf_coupled_positions(s, x.as_mut_ptr()) },
         STANCF_SUCCESS
     );
     let code = unsafe { stancf_init(s, x.as_ptr(), std::ptr::null()) };
-    assert_ne!(code, STANCF_SUCCESS);
-    assert!(
-        message().contains("bodies and rods in a sea whose waves a host sets"),
-        "{}",
-        message()
+    assert_eq!(code, STANCF_SUCCESS, "{}", message());
+    let mut n = 0u32;
+    assert_eq!(unsafe { stancf_wave_kin_init(s, &mut n) }, STANCF_SUCCESS);
+    let u = vec![0.1; 3 * n as usize];
+    let a = vec![0.0; 3 * n as usize];
+    assert_eq!(
+        unsafe { stancf_wave_kin_set(s, u.as_ptr(), a.as_ptr(), 0.0) },
+        STANCF_SUCCESS
     );
+    let mut t = 0.0;
+    step_held(s, &x, &mut t, 0.1);
     assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
 }

@@ -381,8 +381,8 @@ impl PySimulation {
     }
 
     /// Where the host is asked for the water's kinematics now, flat (3
-    /// per point, MoorDyn's order: the lines' nodes, the points, the
-    /// ground at the origin); None before `initialize`.
+    /// per point, MoorDyn's order: the lines' and rods' nodes, the points,
+    /// the ground at the origin, the bodies); None before `initialize`.
     fn wave_kinematics_points(&self) -> PyResult<Option<Vec<f64>>> {
         let points = self.inner()?.handle.host_flow_points();
         Ok(points.map(|p| p.into_iter().flatten().collect()))
@@ -396,7 +396,7 @@ impl PySimulation {
 
     /// Sets the water's velocity and local acceleration at those points
     /// (flat, 3 per point) for the steps from now on (docs/method.md
-    /// §12.1, (W2f)-(W2g)).
+    /// §12.1, (W2f)-(W2h)).
     fn set_wave_kinematics(&self, u: Vec<f64>, a: Vec<f64>) -> PyResult<()> {
         let triples = |v: &[f64]| -> Vec<[f64; 3]> {
             v.chunks(3)

@@ -1,7 +1,8 @@
 """A host that sets the water's kinematics from Python (docs/method.md §12.1,
 (W2f)-(W2g); MoorDyn's ExternalWaveKin*): ``Simulation.wave_kinematics_points``
 and ``set_wave_kinematics`` on Lowe and Langley's jumper (MoorDyn's test
-deck, ``WaveKin 1``), against the paper's top tension; the refusals."""
+deck, ``WaveKin 1``), against the paper's top tension; the places it is asked
+at with rods and bodies, against MoorDyn's; the refusals."""
 
 import math
 import shutil
@@ -78,6 +79,43 @@ def test_the_host_is_asked_at_the_nodes_then_the_points_then_the_ground(tmp_path
     assert np.array_equal(points[69], sim.point(1).position)
     assert np.array_equal(points[70], sim.point(2).position)
     assert np.array_equal(points[71], [0.0, 0.0, 0.0])
+
+
+# What MoorDyn 2.7 gives (MoorDyn_ExternalWaveKinGetCoordinates) for the
+# deck host-waves-rods-bodies-moordyn.txt at the pose below, after its
+# first step (at init it has not yet placed the inner nodes of a rod on
+# a body): rod 2's 3 nodes (fixed), rod 3's 4 (on the coupled body), then
+# the 5 points, the ground and the body (places 107 to 113, 115 to 121).
+MOORDYN_RODS = [[0.0, 50.0, -100.0], [0.0, 50.0, -97.5], [0.0, 50.0, -95.0],
+                [-0.1736481777, 0.0, -20.9848077530], [-0.0578827259, 0.0, -20.3282692510],
+                [0.0578827259, 0.0, -19.6717307490], [0.1736481777, 0.0, -19.0151922470]]
+MOORDYN_POINTS_AND_BODIES = [[-450.0, 0.0, 0.0], [450.0, 0.0, 0.0], [200.0, 0.0, -50.0],
+                             [0.8528685320, 0.5, -20.1503837332], [30.0, 0.0, -150.0],
+                             [0.0, 0.0, 0.0], [0.0, 0.0, -20.0]]
+
+
+def test_the_host_is_asked_where_moordyn_asks_at_rods_points_and_bodies(tmp_path):
+    """A deck with every kind of rod (free, fixed, on a coupled body, of
+    zero length), points of every kind and a coupled body turned by
+    pitch 10 deg and yaw 30 deg (docs/method.md (W2h)): the host is asked
+    at MoorDyn 2.7's 122 places (the lines' 46, 46, 5 and 8 nodes; the
+    rods' 2, 3, 4 and 1; the 5 points; the ground; the body), the fixed
+    rod's, the body's rod's, the points' and the bodies' where MoorDyn
+    puts them, to 1e-9 m (the lines' nodes and the free rods' follow each
+    code's own start); and a flow set there is taken by a step."""
+    shutil.copy(FIXTURES / "host-waves-rods-bodies-moordyn.txt", tmp_path / "deck.txt")
+    sim = stancf.Simulation(tmp_path / "deck.txt")
+    x = [0.0, 0.0, -20.0, 0.0, math.radians(10.0), math.radians(30.0),
+         -450.0, 0.0, 0.0, 450.0, 0.0, 0.0, 200.0, 0.0, -50.0]
+    sim.initialize(x)
+    r = sim.wave_kinematics_points()
+    assert r.shape == (122, 3)
+    np.testing.assert_allclose(r[107:114], MOORDYN_RODS, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(r[115:], MOORDYN_POINTS_AND_BODIES, rtol=0, atol=1e-9)
+    u = np.tile([0.2, 0.1, 0.0], (122, 1))
+    sim.set_wave_kinematics(u, np.zeros((122, 3)), 0.0)
+    sim.step_to(0.1, x)
+    assert sim.time == pytest.approx(0.1)
 
 
 def test_a_hosts_water_kinematics_are_refused_where_they_cannot_be_taken(tmp_path):

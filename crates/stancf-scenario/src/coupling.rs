@@ -134,24 +134,6 @@ fn deck_time_step(deck: &crate::moordyn::Deck, file: &str) -> Result<f64, Failur
     })
 }
 
-/// MoorDyn asks a host that sets the waves at every rod's nodes, between
-/// the lines' nodes and the points; stancf takes the host's flow at
-/// neither rods nor bodies yet (the library refuses bodies; a rod the
-/// scenario makes a point would be asked out of MoorDyn's order), so a
-/// rod in such a sea is refused, naming it (docs/method.md (W2f)-(W2g)).
-fn refuse_rods_in_host_waves(file: &str, sc: &SystemScenario) -> Result<(), Failure> {
-    match sc.rods.first() {
-        Some(rod) if sc.water.as_ref().is_some_and(|w| w.host_waves) => {
-            Err(Failure::Input(format!(
-                "{file}: rod {}: rods in a sea whose waves a host sets are not taken in this \
-                 version: the host's flow is used at the lines' nodes and the points only",
-                rod.id
-            )))
-        }
-        _ => Ok(()),
-    }
-}
-
 /// The coupled system of a validated system scenario.
 pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> {
     let input = |e: stancf::ModelError| {
@@ -159,7 +141,6 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
         Failure::Input(format!("{file}: {key}: {}", e.message))
     };
     crate::input_scales::system_scales(file, sc)?;
-    refuse_rods_in_host_waves(file, sc)?;
     // The coupling code places the coupled points (stancf_init).
     crate::system_geometry::check_geometry(file, sc, false)?;
     let system = sc.system().map_err(input)?;

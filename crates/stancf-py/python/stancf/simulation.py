@@ -346,7 +346,8 @@ class Simulation:
         scenario's ``water.host_waves``) evaluates them now: an (n, 3)
         array of positions (m) in MoorDyn's order (its
         ``ExternalWaveKinGetCoordinates``): every line's nodes, line by
-        line, then every point, then MoorDyn's ground body at the origin.
+        line, then every rod's nodes, every point, then MoorDyn's ground
+        body at the origin and every body.
         ScenarioError before :meth:`initialize` or where the waves are not
         a host's."""
         self._require_host_waves()
@@ -358,7 +359,7 @@ class Simulation:
         (n, 3) array (or flat, 3 n values), MoorDyn's
         ``ExternalWaveKinSet``: added to the sea's current and held for the
         steps from now until set again (docs/method.md §12.1,
-        (W2f)-(W2g)); still water until first set. `t`, the time they are
+        (W2f)-(W2h)); still water until first set. `t`, the time they are
         for, is checked to be a real number and, as in MoorDyn, does not
         move them in time. A count other than the points', or a value that
         is not finite, raises ScenarioError and sets nothing."""

@@ -24,6 +24,7 @@ mod external_loads;
 mod failures;
 mod farm;
 mod host_environment;
+mod host_order;
 mod initial_velocity;
 mod loads;
 mod messages;

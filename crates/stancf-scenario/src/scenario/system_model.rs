@@ -115,8 +115,15 @@ impl SystemScenario {
         let bodies = (0..self.bodies.len())
             .map(|b| self.library_body(b, water.as_ref()))
             .collect();
-        System::with_bodies(lines, points, bodies, self.gravity)
-            .map_err(|e| super::rods::rod_error(self, e))
+        let system = System::with_bodies(lines, points, bodies, self.gravity)
+            .map_err(|e| super::rods::rod_error(self, e))?;
+        // A host that sets the waves is asked in MoorDyn's order.
+        match &self.water {
+            Some(w) if w.host_waves && water.is_some() => {
+                system.with_host_order(super::host_order::host_order(self))
+            }
+            _ => Ok(system),
+        }
     }
 
     /// The library's body: in water, a free body's volume, added mass and
@@ -177,6 +184,7 @@ impl SystemScenario {
                     _ => None,
                 },
                 external: external_of(b),
+                host: None,
             }),
             // In air, a free body's external loads in a water of density 0
             // (they are carried with the water's loads, docs/method.md
@@ -403,7 +411,8 @@ fn section(t: &LineType) -> LineSection {
 /// every depth (zero in still water): no waves, no current ramp. None
 /// where a body must see the sea's flow where it is (§15.15).
 fn steady_uniform_current(w: &super::water::Water) -> Option<[f64; 3]> {
-    let waves = !w.waves.is_empty() || w.jonswap.is_some();
+    // A host's waves are the sea's, whose flow the body takes (W2h).
+    let waves = !w.waves.is_empty() || w.jonswap.is_some() || w.host_waves;
     let ramped = w.current.as_ref().is_some_and(|c| c.ramp > 0.0);
     if waves || ramped {
         return None;

@@ -231,6 +231,14 @@ impl FreeBody {
         Ok(self)
     }
 
+    /// Sets the water's flow a host gives at the body (docs/method.md
+    /// (W2h)) for the steps from now on; nothing in air.
+    pub fn set_host_flow(&mut self, host: super::BodyHostFlow) {
+        if let Some(w) = self.water.as_mut() {
+            w.host = Some(host);
+        }
+    }
+
     pub fn time(&self) -> f64 {
         self.time
     }

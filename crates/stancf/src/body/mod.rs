@@ -39,4 +39,4 @@ pub mod wet;
 pub use free::{BodyForces, FreeBody};
 pub use inertia::RigidInertia;
 pub use rod::Rod;
-pub use water::{BodyExternal, BodyWater};
+pub use water::{BodyExternal, BodyHostFlow, BodyWater};

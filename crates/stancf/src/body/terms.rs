@@ -22,9 +22,10 @@ use super::flow::{flow_at, Flow, FlowTime};
 use super::jet::{cross, dot, norm, Grad, Jet, JetVec};
 use super::rod::Rod;
 use super::rotation::{body_rate, times, turn};
-use super::water::{BodyExternal, BodyWater};
+use super::water::{BodyExternal, BodyHostFlow, BodyWater};
 use super::waterline::Submerged;
 use super::wet::WetPart;
+use crate::water::host_flow::FlowAt;
 
 /// Variables at a time point: v_G (0..3), theta (3..6), theta_dot
 /// (6..9), r_G (9..12).
@@ -156,12 +157,14 @@ impl Context<'_> {
     /// The sea's flow (B31) at the body's point `xi` (body axes, from the
     /// reference point) at the pose (r_G, theta) of `v`, in body axes:
     /// x = r_G + R (xi - c), turned back by R^T = exp(-[theta]) R_a^T.
-    /// None without a sea.
+    /// With `host`, the host's flow there (global) added (W2g), (W2h):
+    /// it does not depend on the pose. None without a sea.
     fn flow<const H: usize>(
         &self,
         v: &[JetVec<NV, H>; 4],
         rotation: &Rotation<H>,
         xi: &JetVec<NV, H>,
+        host: Option<FlowAt>,
     ) -> Option<Flow<NV, H>> {
         let sea = self.water?.sea.as_deref()?;
         let arm: JetVec<NV, H> =
@@ -174,7 +177,23 @@ impl Context<'_> {
                 rotation[0][i] * g[0] + rotation[1][i] * g[1] + rotation[2][i] * g[2]
             })
         };
-        Some(flow_at(sea, &x, self.time).turned(back))
+        let mut global = flow_at(sea, &x, self.time);
+        if let Some((u, a)) = host {
+            for i in 0..3 {
+                global.velocity[i] = global.velocity[i] + Jet::constant(u[i]);
+                global.acceleration[i] = global.acceleration[i] + Jet::constant(a[i]);
+            }
+        }
+        Some(global.turned(back))
+    }
+
+    /// The host's flow at the body (W2h), in a step (statics see none of
+    /// it, as MoorDyn's).
+    fn host_flow(&self) -> Option<&BodyHostFlow> {
+        match self.time {
+            FlowTime::At(_) => self.water?.host.as_ref(),
+            FlowTime::Steady => None,
+        }
     }
 
     /// R = R_a exp([theta]) on jets, its columns exp([theta]) e_k turned
@@ -316,8 +335,11 @@ impl Context<'_> {
         // In a sea, the reference point's velocity through the water and
         // the fluid's inertia there, rho V (1 + Ca) a_f (B32).
         let rotation = self.rotation(v);
-        let flow = |xi: &JetVec<NV, 0>| rotation.as_ref().and_then(|r| self.flow(v, r, xi));
-        let at_reference = flow(&constant([0.0; 3]));
+        let host = self.host_flow();
+        let flow = |xi: &JetVec<NV, 0>, at: Option<FlowAt>| {
+            rotation.as_ref().and_then(|r| self.flow(v, r, xi, at))
+        };
+        let at_reference = flow(&constant([0.0; 3]), host.map(|h| h.reference));
         let relative: JetVec<NV, 0> = match &at_reference {
             Some(flow) => std::array::from_fn(|i| u[i] - flow.velocity[i]),
             None => u,
@@ -340,10 +362,13 @@ impl Context<'_> {
         let mut on_eta: JetVec<NV, 0> = std::array::from_fn(|i| {
             f_x_c[i] + (omega[i] * spin).scale(-half_rho * w.rotational_drag_areas[i])
         });
-        for (rod, wet, _) in self.rods_in_water(pose) {
+        for (k, (rod, wet, _)) in self.rods_in_water(pose).enumerate() {
             let wet = Self::moving(wet, pose);
             let wet = wet.first_order();
-            let (force, moment) = rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass, &flow);
+            let on_rod =
+                |xi: &JetVec<NV, 0>| flow(xi, host.map(|h| h.on_rod(k, rod, xi.map(|c| c.v))));
+            let (force, moment) =
+                rod.drag(&wet, &u, &omega, w.density, self.centre_of_mass, &on_rod);
             for i in 0..3 {
                 f[i] = f[i] + force[i];
                 on_eta[i] = on_eta[i] + moment[i];

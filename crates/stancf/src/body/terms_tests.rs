@@ -37,6 +37,7 @@ fn the_drags_generalized_forces_do_the_drags_power() {
         gravity: 9.81,
         sea: None,
         external: external_sample(),
+        host: None,
     };
     let ctx = test_context(&rotation_a, &water);
     // At theta != 0 in the chart: R = R_a exp([theta]), Omega = J_r

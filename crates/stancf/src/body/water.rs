@@ -4,6 +4,8 @@
 //! and MoorDyn-F's external force and damping. Validated here; the terms
 //! they give at a time point are `terms.rs`'.
 
+use super::rod::Rod;
+use crate::water::host_flow::{FlowAt, NodeFlow};
 use crate::water::kinematics::Sea;
 
 /// A body's water: MoorDyn's Volume, Ca and CdA (body axes; the rotational
@@ -34,6 +36,49 @@ pub struct BodyWater {
     /// water's loads, being virtual work at the same point; a body in air
     /// that has them takes a water of density 0.
     pub external: BodyExternal,
+    /// The water's velocity and local acceleration a host sets at the
+    /// body (MoorDyn's `WaveKin 1`, docs/method.md §12.1, (W2h)): at its
+    /// reference point and at each of its rods' nodes. Some only in a sea
+    /// whose waves a host sets (still until it sets them).
+    pub host: Option<BodyHostFlow>,
+}
+
+/// The host's flow at a body (W2h): at its reference point (MoorDyn asks
+/// at a body's position), and at the N + 1 nodes of each of its rods
+/// (`rods[k]` for the water's rod k; MoorDyn's rod of N segments has its
+/// nodes evenly along it, node 0 at end A).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BodyHostFlow {
+    pub reference: FlowAt,
+    pub rods: Vec<NodeFlow>,
+}
+
+impl BodyHostFlow {
+    /// Still water at the reference point and at the nodes of `rods`.
+    pub fn still(rods: &[Rod]) -> Self {
+        BodyHostFlow {
+            reference: ([0.0; 3], [0.0; 3]),
+            rods: rods
+                .iter()
+                .map(|r| NodeFlow::still(r.segments + 1))
+                .collect(),
+        }
+    }
+
+    /// (W2h): the flow at the point `xi` (body axes) of rod k: its
+    /// nodes' values interpolated linearly along the rod (W2f), at the
+    /// point's place s = (xi - A) . q along it (clamped to the rod).
+    pub fn on_rod(&self, k: usize, rod: &Rod, xi: [f64; 3]) -> FlowAt {
+        let nodes = &self.rods[k];
+        let segments = nodes.velocity.len() - 1;
+        if segments == 0 {
+            return (nodes.velocity[0], nodes.acceleration[0]);
+        }
+        let along = crate::vec3::dot(crate::vec3::sub(xi, rod.end_a), rod.axis()) / rod.length();
+        let place = (along.clamp(0.0, 1.0) * segments as f64).min(segments as f64);
+        let element = (place.floor() as usize).min(segments - 1);
+        nodes.element(element).at(place - element as f64)
+    }
 }
 
 /// A force and damping at a body's reference point (MoorDyn-F's EXTERNAL
@@ -103,5 +148,47 @@ impl BodyWater {
             ));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// (W2h): a rod's host flow is its nodes' values at the nodes, linear
+    /// between them along the rod, and its end nodes' beyond its ends (a
+    /// cap's centre).
+    #[test]
+    fn a_rods_host_flow_is_its_nodes_values_linear_between_them() {
+        let rod = Rod {
+            end_a: [1.0, 0.0, -2.0],
+            end_b: [1.0, 0.0, 4.0],
+            diameter: 0.5,
+            mass_per_length: 10.0,
+            drag_coefficient: 1.0,
+            added_mass_coefficient: 1.0,
+            end_drag_coefficient: 0.5,
+            end_added_mass_coefficient: 0.5,
+            segments: 3,
+        };
+        let value = |s: f64| [s, 2.0 * s * s, -1.0];
+        let mut host = BodyHostFlow::still(std::slice::from_ref(&rod));
+        for j in 0..4 {
+            host.rods[0].velocity[j] = value(j as f64);
+            host.rods[0].acceleration[j] = value(10.0 + j as f64);
+        }
+        let at = |z: f64| host.on_rod(0, &rod, [1.0, 0.3, z]);
+        // At the nodes (z = -2, 0, 2, 4).
+        for j in 0..4 {
+            let (u, a) = at(-2.0 + 2.0 * j as f64);
+            assert_eq!(u, value(j as f64));
+            assert_eq!(a, value(10.0 + j as f64));
+        }
+        // A quarter of the way from node 1 to node 2.
+        let (u, _) = at(0.5);
+        assert!((u[1] - (0.75 * 2.0 + 0.25 * 8.0)).abs() < 1e-14, "{u:?}");
+        // Beyond the ends: the end nodes'.
+        assert_eq!(at(-3.0).0, value(0.0));
+        assert_eq!(at(5.0).0, value(3.0));
     }
 }

@@ -1,6 +1,6 @@
 //! A host that sets the water's kinematics (MoorDyn's `WaveKin 1`,
 //! `MoorDyn_ExternalWaveKinInit`, `..GetCoordinates`, `..Set`;
-//! docs/method.md §12.1, (W2f)-(W2g)): where it is asked, and the
+//! docs/method.md §12.1, (W2f)-(W2h)): where it is asked, and the
 //! values it gives, held over the intervals until it gives them again.
 
 use super::{CoupledSystem, CouplingError};
@@ -13,6 +13,7 @@ impl CoupledSystem {
         lines
             .iter()
             .any(|l| crate::system::takes_host_flow(&l.model))
+            || self.system.takes_host_flow()
     }
 
     /// How many points [`Self::host_flow_points`] names (None before
@@ -22,12 +23,18 @@ impl CoupledSystem {
     }
 
     /// Where the host is asked for the water's velocity and acceleration
-    /// now, in MoorDyn's order: every line's nodes, every point, then
-    /// MoorDyn's ground body at the origin
-    /// ([`crate::system::SystemSimulation::host_flow_points`]). None
-    /// before [`Self::initialize`]; empty if no host sets the waves.
+    /// now, in MoorDyn's order: every line's nodes, every rod's nodes,
+    /// every point, then MoorDyn's ground body at the origin and every
+    /// body ([`crate::system::SystemSimulation::host_flow_points_with`]),
+    /// a coupled body where the host's last call put it. None before
+    /// [`Self::initialize`]; empty if no host sets the waves.
     pub fn host_flow_points(&self) -> Option<Vec<[f64; 3]>> {
-        self.simulation().map(|s| s.host_flow_points())
+        let running = self.running.as_ref()?;
+        let pose = |b: usize| {
+            let k = self.layout.bodies.iter().position(|c| c.body == b)?;
+            running.held[k].map(|end| (end.position, end.rotation))
+        };
+        Some(running.sim.host_flow_points_with(pose))
     }
 
     /// Sets the water's velocity and local acceleration at the points of

@@ -1,5 +1,5 @@
 //! A system in a sea whose waves a host sets (MoorDyn's `WaveKin 1`;
-//! docs/method.md §12.1, (W2f)-(W2g)): the points where the host is
+//! docs/method.md §12.1, (W2f)-(W2h)): the points where the host is
 //! asked for the water's velocity and local acceleration, in MoorDyn's
 //! order, and the values it sets there, held until it sets them again.
 //!
@@ -8,12 +8,15 @@
 //! every body, its ground body first (`Waves::kinematicsForAllNodes`). A
 //! host written for MoorDyn sizes its arrays by that count, so stancf
 //! asks at the same places in the same order: its line nodes are the
-//! deck's (N segments, N + 1 nodes), then the points, then MoorDyn's
-//! ground body at the origin (whose value nothing uses, as in MoorDyn).
-//! Rods and bodies in such a sea are refused: the host's flow at them is
-//! not taken in this version.
+//! deck's (N segments, N + 1 nodes), then the rods' nodes, the points and
+//! the bodies as [`HostOrder`] names them, with MoorDyn's ground body at
+//! the origin (whose value nothing uses, as in MoorDyn). A body takes
+//! the value at its reference point for its own drag and fluid inertia,
+//! and each of its rods its nodes' values along it (W2h).
 
-use super::{Line, System, SystemSimulation, Topology};
+use super::host_order::{rod_node, HostOrder, HostRod};
+use super::{BodyKind, Line, System, SystemSimulation, Topology};
+use crate::body::BodyHostFlow;
 use crate::error::ModelError;
 use crate::model::{coordinate, Model, SLOT_R};
 use crate::water::NodeFlow;
@@ -39,15 +42,52 @@ pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) {
             water.host = Some(([0.0; 3], [0.0; 3]));
         }
     }
+    for body in &mut topology.bodies {
+        let in_hosted_sea = |w: &crate::body::BodyWater| w.sea.as_ref().is_some_and(|s| hosted(s));
+        if let Some(water) = body.water.as_mut().filter(|w| in_hosted_sea(w)) {
+            water.host = Some(BodyHostFlow::still(&water.rods));
+        }
+    }
+}
+
+impl System {
+    /// The system with MoorDyn's order of the rods, points and bodies a
+    /// host that sets the waves is asked at ([`HostOrder`]; a scenario
+    /// built from a deck gives the deck's). Refused: a body, rod or point
+    /// the system does not have.
+    pub fn with_host_order(mut self, order: HostOrder) -> Result<Self, ModelError> {
+        order.check(&self.topology)?;
+        self.topology.host_order = Some(order);
+        Ok(self)
+    }
+}
+
+impl Topology {
+    /// Whether a point or a body takes a host's flow (in a sea whose waves
+    /// a host sets).
+    pub(crate) fn takes_host_flow(&self) -> bool {
+        let point = |p: &super::Point| p.water.as_ref().is_some_and(|w| w.host.is_some());
+        let body = |b: &super::Body| b.water.as_ref().is_some_and(|w| w.host.is_some());
+        self.points.iter().any(point) || self.bodies.iter().any(body)
+    }
+
+    /// The order a host is asked in ([`HostOrder`]): the one given, or the
+    /// system's own.
+    pub fn host_order(&self) -> HostOrder {
+        self.host_order
+            .clone()
+            .unwrap_or_else(|| HostOrder::of(self))
+    }
 }
 
 /// Refuses to step `system` in a sea whose waves a host sets where the
 /// host's flow would be left out: a line with vortex-induced vibration
-/// (its lift's flow), or any body or rod (MoorDyn asks at their nodes
-/// too). Its static solve, which sees no host's flow, is not refused.
+/// (its lift's flow), or a body in water without the sea (whose flow the
+/// host's joins). Its static solve, which sees no host's flow, is not
+/// refused.
 pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
     let hosted = |l: &Line| takes_host_flow(&l.model);
-    if !system.lines().iter().any(hosted) {
+    if !system.lines().iter().any(hosted) && !system.takes_host_flow() {
         return Ok(());
     }
     if let Some(i) = system
@@ -61,37 +101,66 @@ pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
              version (the lift's flow would leave out the host's)",
         ));
     }
-    if !system.bodies().is_empty() {
+    if let Some(b) = system.bodies().iter().position(|b| {
+        b.kind != BodyKind::Fixed
+            && b.water
+                .as_ref()
+                .is_some_and(|w| w.density > 0.0 && w.host.is_none())
+    }) {
         return Err(ModelError::invalid(
-            "bodies[0]",
-            "bodies and rods in a sea whose waves a host sets are not taken in this version: \
-             the host's flow is used at the lines' nodes and the points only",
+            format!("bodies[{b}].water"),
+            "the body is in water but not in the sea whose waves a host sets: the host's \
+             flow would not reach it (give the body the sea)",
         ));
     }
     Ok(())
 }
 
 impl SystemSimulation {
-    /// Whether a host sets the waves ([`crate::water::kinematics::Sea::with_host_waves`]).
+    /// Whether a host sets the waves ([`crate::water::kinematics::Sea::with_host_waves`]):
+    /// a line, point or body takes the host's flow.
     pub fn takes_host_waves(&self) -> bool {
-        self.lines.iter().any(|l| takes_host_flow(l.model()))
+        self.lines.iter().any(|l| takes_host_flow(l.model())) || self.topology.takes_host_flow()
     }
 
     /// How many points [`Self::host_flow_points`] names: every line's
-    /// nodes, the points the system started with, the ground; 0 if no
-    /// host sets the waves.
+    /// nodes, then the rods' nodes, the points, the ground and the bodies
+    /// of the system's [`HostOrder`]; 0 if no host sets the waves.
     pub fn host_flow_count(&self) -> usize {
         if !self.takes_host_waves() {
             return 0;
         }
         let nodes: usize = self.lines.iter().map(|l| l.model().nodes()).sum();
-        nodes + self.points_at_start() + 1
+        nodes + self.host_order_now().count(&self.topology)
+    }
+
+    /// [`Topology::host_order`], its points no more than the system
+    /// started with: a line failure's release appends a free point of its
+    /// own (docs/method.md §11.16), which MoorDyn does not add to the
+    /// points its host is asked at (its count is fixed at init), nor does
+    /// stancf.
+    fn host_order_now(&self) -> HostOrder {
+        let mut order = self.topology.host_order();
+        let at_start = self.topology.points.len() - self.releases().len();
+        order.points.retain(|&p| p < at_start);
+        order
     }
 
     /// Where the host is asked for the water's kinematics, now, in
-    /// MoorDyn's order (module doc): every line's nodes, every point, the
-    /// ground at the origin. Empty if no host sets the waves.
+    /// MoorDyn's order (module doc), a coupled body where the system
+    /// holds it (its pose at the start; see
+    /// [`Self::host_flow_points_with`]). Empty if no host sets the waves.
     pub fn host_flow_points(&self) -> Vec<[f64; 3]> {
+        self.host_flow_points_with(|_| None)
+    }
+
+    /// [`Self::host_flow_points`] with a coupled body b's pose (its
+    /// reference point and rotation) from `coupled(b)`, where a host
+    /// moves it.
+    pub fn host_flow_points_with(
+        &self,
+        coupled: impl Fn(usize) -> Option<([f64; 3], [[f64; 3]; 3])>,
+    ) -> Vec<[f64; 3]> {
         if !self.takes_host_waves() {
             return Vec::new();
         }
@@ -104,23 +173,40 @@ impl SystemSimulation {
                 [e[o], e[o + 1], e[o + 2]]
             }));
         }
-        out.extend((0..self.points_at_start()).map(|p| self.point_state(p).0));
+        let order = self.host_order_now();
+        let body_point = |b: usize, local: [f64; 3]| -> [f64; 3] {
+            if let Some(free) = self.free_body(b) {
+                return free.point(local);
+            }
+            let body = &self.topology.bodies[b];
+            match coupled(b).filter(|_| body.kind == BodyKind::Coupled) {
+                Some((position, rotation)) => crate::body::pose::point(position, &rotation, local),
+                None => body.point(local),
+            }
+        };
+        for (k, rod) in order.rods.iter().enumerate() {
+            let nodes = order.rod_nodes(&self.topology, k);
+            let ends = match *rod {
+                HostRod::InBody { body, rod } => {
+                    let water = self.topology.bodies[body].water.as_ref();
+                    let r = &water.expect("checked: a rod in the body's water").rods[rod];
+                    [body_point(body, r.end_a), body_point(body, r.end_b)]
+                }
+                HostRod::Fixed { ends, .. } => ends,
+                HostRod::AtPoint(p) => [self.point_state(p).0; 2],
+            };
+            out.extend((0..nodes).map(|j| rod_node(&ends, nodes - 1, j)));
+        }
+        out.extend(order.points.iter().map(|&p| self.point_state(p).0));
         out.push([0.0; 3]);
+        out.extend(order.bodies.iter().map(|&b| body_point(b, [0.0; 3])));
         out
-    }
-
-    /// The points the system started with: a line failure's release
-    /// appends a free point of its own (docs/method.md §11.16), which
-    /// MoorDyn does not add to the points its host is asked at (its count
-    /// is fixed at init), nor does stancf.
-    fn points_at_start(&self) -> usize {
-        self.topology.points.len() - self.releases().len()
     }
 
     /// Sets the water's velocity `velocity` and local acceleration
     /// `acceleration` at the points of [`Self::host_flow_points`] (one
     /// each, in its order), used from the next step on until they are set
-    /// again (W2f)-(W2g). Refused: no host sets the waves, a count other
+    /// again (W2f)-(W2h). Refused: no host sets the waves, a count other
     /// than the points', or a value that is not finite.
     pub fn set_host_flow(
         &mut self,
@@ -153,19 +239,57 @@ impl SystemSimulation {
             }
         }
         let mut next = 0;
-        for l in &mut self.lines {
-            let nodes = l.model().nodes();
-            let range = next..next + nodes;
-            l.set_host_flow(NodeFlow {
+        let mut take = |n: usize| {
+            let range = next..next + n;
+            next += n;
+            NodeFlow {
                 velocity: velocity[range.clone()].to_vec(),
                 acceleration: acceleration[range].to_vec(),
-            });
-            next += nodes;
+            }
+        };
+        for l in &mut self.lines {
+            let nodes = l.model().nodes();
+            l.set_host_flow(take(nodes));
         }
-        let at_start = self.points_at_start();
-        for (p, point) in self.topology.points.iter_mut().take(at_start).enumerate() {
+        let order = self.host_order_now();
+        let mut bodies: Vec<Option<BodyHostFlow>> = self
+            .topology
+            .bodies
+            .iter()
+            .map(|b| {
+                let water = b.water.as_ref().filter(|w| w.host.is_some());
+                water.map(|w| BodyHostFlow::still(&w.rods))
+            })
+            .collect();
+        for (k, rod) in order.rods.iter().enumerate() {
+            let at_nodes = take(order.rod_nodes(&self.topology, k));
+            if let HostRod::InBody { body, rod } = *rod {
+                if let Some(host) = bodies[body].as_mut() {
+                    host.rods[rod] = at_nodes;
+                }
+            }
+        }
+        let points = take(order.points.len());
+        for (j, &p) in order.points.iter().enumerate() {
+            let point = &mut self.topology.points[p];
             if let Some(w) = point.water.as_mut().filter(|w| w.host.is_some()) {
-                w.host = Some((velocity[next + p], acceleration[next + p]));
+                w.host = Some((points.velocity[j], points.acceleration[j]));
+            }
+        }
+        let _ground = take(1);
+        let references = take(order.bodies.len());
+        for (j, &b) in order.bodies.iter().enumerate() {
+            if let Some(host) = bodies[b].as_mut() {
+                host.reference = (references.velocity[j], references.acceleration[j]);
+            }
+        }
+        for (b, host) in bodies.into_iter().enumerate() {
+            let Some(host) = host else { continue };
+            if let Some(step) = self.bodies.iter_mut().find(|s| s.index == b) {
+                step.body.set_host_flow(host.clone());
+            }
+            if let Some(w) = self.topology.bodies[b].water.as_mut() {
+                w.host = Some(host);
             }
         }
         Ok(())

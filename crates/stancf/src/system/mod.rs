@@ -40,6 +40,7 @@ mod failures;
 mod frame;
 mod halving;
 mod held;
+mod host_order;
 mod host_waves;
 mod layout;
 mod line_body;
@@ -69,6 +70,7 @@ pub use bodies::{Body, BodyKind, Pin};
 pub use failures::{Dropped, LineFailure, Release, Trigger};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use held::{held_push, HeldMotion};
+pub use host_order::{HostOrder, HostRod};
 pub(crate) use host_waves::takes_host_flow;
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
@@ -381,6 +383,7 @@ impl System {
             body_points,
             clamps,
             gravity,
+            host_order: None,
         };
         host_waves::start_still(&mut out, &mut topology);
         Ok(System {

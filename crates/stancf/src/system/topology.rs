@@ -24,6 +24,9 @@ pub struct Topology {
     pub(super) clamps: Vec<super::body_clamps::BodyClamp>,
     /// Acceleration of gravity on the points' masses (m/s^2).
     pub(super) gravity: [f64; 3],
+    /// MoorDyn's order of the rods, points and bodies a host that sets the
+    /// waves is asked at (None: the system's own, [`super::HostOrder`]).
+    pub(super) host_order: Option<super::HostOrder>,
 }
 
 /// A line end attached to a point: the end (0 = A, 1 = B), the point and

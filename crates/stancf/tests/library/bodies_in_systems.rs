@@ -202,6 +202,7 @@ fn a_systems_jacobian_with_a_free_body_is_the_derivative_of_its_rows() {
             gravity: 0.0,
             sea: None,
             external: Default::default(),
+            host: None,
         });
     }
     let (system, states) =
@@ -362,6 +363,7 @@ fn a_swinging_body_in_water_loses_what_its_drag_takes() {
             gravity: 0.0,
             sea: None,
             external: Default::default(),
+            host: None,
         });
         let system = System::with_bodies(
             vec![Line {

@@ -9,6 +9,7 @@ mod added_mass;
 mod added_mass_derivatives;
 mod added_mass_systems;
 mod axial_damping;
+mod bodies_in_host_waves;
 mod bodies_in_systems;
 mod bodies_in_waves;
 mod bodies_on_a_line;

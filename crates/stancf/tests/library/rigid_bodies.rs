@@ -212,6 +212,7 @@ fn water(ca: [f64; 3], cda: [f64; 3], cda_r: [f64; 3]) -> BodyWater {
         gravity: 0.0,
         sea: None,
         external: Default::default(),
+        host: None,
     }
 }
 
