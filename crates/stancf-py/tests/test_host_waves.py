@@ -94,19 +94,28 @@ MOORDYN_POINTS_AND_BODIES = [[-450.0, 0.0, 0.0], [450.0, 0.0, 0.0], [200.0, 0.0,
                              [0.0, 0.0, 0.0], [0.0, 0.0, -20.0]]
 
 
-def test_the_host_is_asked_where_moordyn_asks_at_rods_points_and_bodies(tmp_path):
-    """A deck with every kind of rod (free, fixed, on a coupled body, of
-    zero length), points of every kind and a coupled body turned by
+@pytest.mark.parametrize("body", ["Coupled", "Fixed"])
+def test_the_host_is_asked_where_moordyn_asks_at_rods_points_and_bodies(tmp_path, body):
+    """A deck with every kind of rod (free, fixed, on a body, of zero
+    length), points of every kind and a body, coupled or fixed, turned by
     pitch 10 deg and yaw 30 deg (docs/method.md (W2h)): the host is asked
     at MoorDyn 2.7's 122 places (the lines' 46, 46, 5 and 8 nodes; the
     rods' 2, 3, 4 and 1; the 5 points; the ground; the body), the fixed
     rod's, the body's rod's, the points' and the bodies' where MoorDyn
     puts them, to 1e-9 m (the lines' nodes and the free rods' follow each
-    code's own start); and a flow set there is taken by a step."""
-    shutil.copy(FIXTURES / "host-waves-rods-bodies-moordyn.txt", tmp_path / "deck.txt")
+    code's own start; on the fixed body MoorDyn 2.7 never places its rod's
+    two inner nodes, which stay at the rod's body coordinates, 0, 0 and
+    +-0.33 m: stancf's are where the coupled body's are, MoorDyn's
+    there); and a flow set there is taken by a step."""
+    text = (FIXTURES / "host-waves-rods-bodies-moordyn.txt").read_text()
+    if body == "Fixed":
+        text = text.replace("1       Coupled   0     0      -20", "1       Fixed     0     0      -20")
+    (tmp_path / "deck.txt").write_text(text)
     sim = stancf.Simulation(tmp_path / "deck.txt")
-    x = [0.0, 0.0, -20.0, 0.0, math.radians(10.0), math.radians(30.0),
-         -450.0, 0.0, 0.0, 450.0, 0.0, 0.0, 200.0, 0.0, -50.0]
+    pose = [0.0, 0.0, -20.0, 0.0, math.radians(10.0), math.radians(30.0)]
+    x = (pose if body == "Coupled" else []) + [
+        -450.0, 0.0, 0.0, 450.0, 0.0, 0.0, 200.0, 0.0, -50.0]
+    assert sim.coupled_dof == len(x)
     sim.initialize(x)
     r = sim.wave_kinematics_points()
     assert r.shape == (122, 3)

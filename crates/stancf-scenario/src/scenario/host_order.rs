@@ -2,7 +2,8 @@
 //! (`WaveKin 1`; docs/method.md §12.1, (W2h)), for the system a scenario
 //! builds ([`stancf::system::HostOrder`]): its rods in the order given
 //! (a deck's RODS), each where the system holds it (in its body's water,
-//! fixed, or a point for a rod of zero length); its points but those it
+//! fixed, on a fixed body where it is, or a point for a rod of zero
+//! length); its points but those it
 //! adds at rods' ends or for a rod of zero length; its bodies but the
 //! rods' own bodies and the connectors of rods of zero length.
 
@@ -31,6 +32,15 @@ pub(super) fn host_order(sc: &SystemScenario) -> HostOrder {
                     segments: 0,
                 },
             },
+            // On a fixed body (which has no water of its own): where it is.
+            (RodHolder::Body { body }, Some(rod))
+                if sc.bodies[body].kind == super::BodyType::Fixed =>
+            {
+                HostRod::Fixed {
+                    ends: r.ends,
+                    segments: rod.segments,
+                }
+            }
             (_, Some(_)) => {
                 let body = r.body().expect("a rod on a body or its own body");
                 // The body's water holds its rods as rods_of_body lists
