@@ -3,21 +3,18 @@
 //! reference point and at its rods' nodes against the sea's own current,
 //! and a body as dense as the water following the host's acceleration.
 
-use stancf::body::{BodyForces, BodyHostFlow, BodyWater, FreeBody, RigidInertia, Rod};
+use crate::common::lumped_bodies::{neutral_lumped_body, G, RHO};
+use stancf::body::{BodyHostFlow, FreeBody, Rod};
 use stancf::water::current::{CurrentProfile, Ramp};
 use stancf::water::host_flow::NodeFlow;
 use stancf::water::kinematics::Sea;
 use stancf::TimeScheme;
-use std::sync::Arc;
 
-const RHO: f64 = 1025.0;
-const G: f64 = 9.80665;
-const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-
-/// A body of MoorDyn's lumped water (0.5 m^3, Ca and CdA in each
-/// direction, `drag` scaling the areas) with a rod fixed in it across x
-/// (1 m, 0.2 m across, Cd 1.2 times `drag`), as dense as the water, 10 m
-/// down in `sea`, stepped by `scheme` at 0.1 s.
+/// A body of MoorDyn's lumped water as dense as the water
+/// ([`neutral_lumped_body`], its drag areas times `drag`) with a rod fixed
+/// in it across x (1 m, 0.2 m across, Cd 1.2 and CdEnd 0.6 times `drag`,
+/// as dense as the water), 10 m down in `sea`, stepped by `scheme` at
+/// 0.1 s.
 fn neutral_body(sea: Sea, scheme: TimeScheme, drag: f64) -> FreeBody {
     let rod = Rod {
         end_a: [-0.5, 0.0, 0.0],
@@ -30,32 +27,7 @@ fn neutral_body(sea: Sea, scheme: TimeScheme, drag: f64) -> FreeBody {
         end_added_mass_coefficient: 0.5,
         segments: 4,
     };
-    let lumped = RigidInertia::principal(RHO * 0.5, [0.0; 3], [40.0; 3]);
-    let inertia = lumped.with_part(&rod.inertia());
-    let forces = BodyForces::weight_and_buoyancy(&inertia, 0.5, RHO, [0.0, 0.0, -G]);
-    let water = BodyWater {
-        density: RHO,
-        volume: 0.5,
-        added_mass_coefficients: [0.5, 0.7, 0.9],
-        drag_areas: [0.8 * drag, 1.0 * drag, 1.2 * drag],
-        rods: vec![rod],
-        gravity: G,
-        sea: Some(Arc::new(sea)),
-        ..BodyWater::default()
-    };
-    FreeBody::new(
-        &inertia,
-        &forces,
-        [0.0, 0.0, -10.0],
-        &IDENTITY,
-        [0.0; 3],
-        [0.0; 3],
-        0.1,
-    )
-    .unwrap()
-    .with_scheme(scheme)
-    .with_water(water)
-    .unwrap()
+    neutral_lumped_body(sea, vec![rod], drag, scheme, 0.1)
 }
 
 fn host_sea() -> Sea {

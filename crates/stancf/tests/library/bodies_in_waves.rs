@@ -3,6 +3,7 @@
 //! fluid's inertia (B32) and the dynamic pressure on the rods' caps (B33),
 //! against linear wave theory's closed forms.
 
+use crate::common::lumped_bodies::neutral_lumped_body;
 use stancf::body::{BodyForces, BodyWater, FreeBody, Rod};
 use stancf::water::current::Ramp;
 use stancf::water::kinematics::Sea;
@@ -58,34 +59,6 @@ fn neutral_rod(a: [f64; 3], axis: [f64; 3], sea: Sea, dt: f64) -> FreeBody {
         .unwrap()
 }
 
-/// A body of MoorDyn's lumped water (0.5 m^3, Ca and CdA in each
-/// direction) as dense as the water, 10 m down in `sea`.
-fn neutral_body(sea: Sea, dt: f64) -> FreeBody {
-    let inertia = stancf::body::RigidInertia::principal(RHO * 0.5, [0.0; 3], [40.0; 3]);
-    let forces = BodyForces::weight_and_buoyancy(&inertia, 0.5, RHO, [0.0, 0.0, -G]);
-    let water = BodyWater {
-        density: RHO,
-        volume: 0.5,
-        added_mass_coefficients: [0.5, 0.7, 0.9],
-        drag_areas: [0.8, 1.0, 1.2],
-        gravity: G,
-        sea: Some(Arc::new(sea)),
-        ..BodyWater::default()
-    };
-    FreeBody::new(
-        &inertia,
-        &forces,
-        [0.0, 0.0, -10.0],
-        &IDENTITY,
-        [0.0; 3],
-        [0.0; 3],
-        dt,
-    )
-    .unwrap()
-    .with_water(water)
-    .unwrap()
-}
-
 /// A rod as dense as the water, released at rest in still water that a
 /// wave then starts to move, moves with the water around it: its weight
 /// and buoyancy cancel, and its mass plus its added mass, (1 + Ca) rho V
@@ -120,7 +93,7 @@ fn a_rod_as_dense_as_the_water_moves_with_it_in_a_wave() {
         .into_iter()
         .chain([(
             "a lumped body".to_string(),
-            neutral_body(water.clone(), 0.1),
+            neutral_lumped_body(water.clone(), Vec::new(), 1.0, TimeScheme::Galerkin, 0.1),
         )]);
     for (name, mut rod) in bodies {
         let centre = rod.centre();

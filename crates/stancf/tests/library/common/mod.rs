@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod lumped_bodies;
 pub mod rods;
 pub mod rope_systems;
 pub mod step_checks;
