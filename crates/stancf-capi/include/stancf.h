@@ -133,8 +133,9 @@ int stancf_init_n(StancfSystem *s, unsigned int n, const double *x, const double
 int stancf_init_force(StancfSystem *s, double *f);
 
 /* Advances from *t (the time reached) to *t + *dt with the coupled points
-   moving to x (cubically when this call and the last gave velocities xd,
-   else linearly; xd may be NULL); f = the lines' force on each coupled
+   moving to x (cubically, with the velocities xd or, where xd is NULL,
+   velocities estimated from this call's and the two last calls'
+   positions, docs/method.md (K2a)); f = the lines' force on each coupled
    point, and on each coupled body their force and moment with its rods'
    push (the mean over the last internal step); then *t += *dt. The
    interval is split into the fewest equal steps no longer than the

@@ -373,8 +373,9 @@ pub unsafe extern "C" fn stancf_init_force(s: *mut StancfSystem, f: *mut f64) ->
 }
 
 /// Advances from `*t`, the time reached, to `*t + *dt` with the coupled
-/// points moving to `x` (cubically in time when this call and the last
-/// gave velocities `xd`, else linearly; `xd` may be NULL), and writes
+/// points moving to `x` (cubically in time, with the velocities `xd` or,
+/// where `xd` is NULL, velocities estimated from this call's and the two
+/// last calls' positions, docs/method.md (K2a)), and writes
 /// into `f` the force of the lines on each coupled point (N; the mean
 /// over the interval's last step), then `*t += *dt` (`MoorDyn_Step`).
 /// The interval is split into the fewest equal steps no longer than the

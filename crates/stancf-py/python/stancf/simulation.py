@@ -122,8 +122,9 @@ class Simulation:
     order of their ids (``coupled_ids``). A point on a coupled body
     moves with it (docs/method.md §13.6). ``initialize(x, xd=None)`` solves the static
     equilibrium with the coupled points at x and starts at t = 0;
-    ``step_to(t, x, xd=None)`` moves them to x at t (cubically when this
-    call and the last gave velocities, else linearly), taking the fewest
+    ``step_to(t, x, xd=None)`` moves them to x at t (cubically, with the
+    velocities given or, without them, estimated from this call's and the
+    two last calls' positions, docs/method.md (K2a)), taking the fewest
     equal steps no longer than the scenario's time step. Both return the
     forces of the lines on the coupled points (N; after ``step_to`` the
     mean over its last step, what ``stancf run`` writes for that step);

@@ -104,7 +104,7 @@ impl CoupledSystem {
 }
 
 /// The pose of a body from its 6 numbers: the reference point and R.
-fn pose(x: &[f64]) -> ([f64; 3], [[f64; 3]; 3]) {
+pub(super) fn pose(x: &[f64]) -> ([f64; 3], [[f64; 3]; 3]) {
     let degrees = [x[3], x[4], x[5]].map(f64::to_degrees);
     ([x[0], x[1], x[2]], rotation_from_moordyn_angles(degrees))
 }
@@ -117,10 +117,10 @@ impl ArrayLayout {
     }
 
     /// Start of body k's numbers and of plain point k's.
-    fn body_start(&self, k: usize) -> usize {
+    pub(super) fn body_start(&self, k: usize) -> usize {
         self.bodies[..k].iter().map(CoupledBody::width).sum()
     }
-    fn point_start(&self, k: usize) -> usize {
+    pub(super) fn point_start(&self, k: usize) -> usize {
         self.body_start(self.bodies.len()) + 3 * k
     }
 

@@ -28,6 +28,7 @@ mod held_loads;
 mod host_waves;
 mod identity;
 mod interval;
+mod rates;
 mod readings;
 mod stiffness;
 
@@ -89,6 +90,9 @@ struct Running {
     /// The coupled bodies' poses and rates of the last call, for their
     /// own push (None for a body pinned to the host; §15.18).
     held: Vec<Option<held_loads::HeldEnd>>,
+    /// The host's positions of its last calls, for the rates it does not
+    /// give ((K2a), `rates.rs`).
+    samples: rates::Samples,
     /// The free and coupled bodies' mooring stiffness at the initial
     /// equilibrium, and the coupled points' not on a body.
     stiffness: BodyStiffness,
@@ -478,6 +482,7 @@ impl CoupledSystem {
             position,
             velocity,
         } = start;
+        let t0 = sim.time();
         Running {
             watch: sim.energy_watch(),
             sim,
@@ -489,6 +494,7 @@ impl CoupledSystem {
                 .collect(),
             reference_rate: xd.map(|v| bodies.map(|b| self.layout.reference(v, b)).collect()),
             held,
+            samples: vec![(t0, x.to_vec())],
             stiffness,
             point_stiffness,
         }
