@@ -94,7 +94,61 @@ impl ArrayLayout {
 
 #[cfg(test)]
 mod tests {
-    use super::rate_at_end;
+    use super::super::bodies::{ArrayLayout, CoupledBody};
+    use super::{rate_at_end, remember, Samples};
+    use crate::body::pose::{moordyn_angles, rotation_from_moordyn_angles};
+    use crate::body::rotation::exp_map;
+    use crate::vec3::mat3_mul;
+
+    /// A coupled body turning at a constant angular velocity w (global)
+    /// from a pose pitched and yawed, its reference point on a quadratic
+    /// path, and a coupled point on a quadratic: from the host's
+    /// positions alone at unequal intervals, (K2a) gives the reference
+    /// point's and the point's velocities and w, exactly (to round-off):
+    /// R(t) = exp([w] t) R_0 has log(R_i R_b^T) = w (t_i - t_b).
+    #[test]
+    fn a_body_turning_steadily_has_its_angular_velocity_estimated() {
+        let layout = ArrayLayout {
+            bodies: vec![CoupledBody {
+                body: 0,
+                points: Vec::new(),
+                pin: None,
+            }],
+            plain: vec![0],
+        };
+        let r0 = rotation_from_moordyn_angles([10.0, 20.0, 30.0]);
+        let w = [0.05, -0.02, 0.1];
+        let x_at = |t: f64| -> Vec<f64> {
+            let r = mat3_mul(&exp_map(w.map(|c| c * t)), &r0);
+            let a = moordyn_angles(&r).map(f64::to_radians);
+            let reference = [1.0 + 0.5 * t - 0.1 * t * t, -2.0 + 0.3 * t * t, 0.2 * t];
+            let point = [3.0 - t * t, 0.7 * t, -1.0];
+            [&reference[..], &a[..], &point[..]].concat()
+        };
+        let mut samples = Samples::new();
+        for t in [0.0, 0.4, 1.1] {
+            remember(&mut samples, t, &x_at(t));
+        }
+        let tb = 1.5;
+        let v = layout.estimated_rates(&samples, tb, &x_at(tb)).unwrap();
+        let expected = [
+            0.5 - 0.2 * tb,
+            0.6 * tb,
+            0.2,
+            w[0],
+            w[1],
+            w[2],
+            -2.0 * tb,
+            0.7,
+            0.0,
+        ];
+        for (i, (a, b)) in v.iter().zip(expected).enumerate() {
+            assert!((a - b).abs() < 1e-12, "{i}: {a} against {b}");
+        }
+        // Only the last two calls are kept.
+        assert_eq!(samples.len(), 2);
+        assert_eq!(samples[0].0, 0.4);
+    }
 
     /// (K2a) is exact for a quadratic at unequal intervals, and the
     /// second-order backward difference at equal ones.
