@@ -94,10 +94,11 @@ MOORDYN_POINTS_AND_BODIES = [[-450.0, 0.0, 0.0], [450.0, 0.0, 0.0], [200.0, 0.0,
                              [0.0, 0.0, 0.0], [0.0, 0.0, -20.0]]
 
 
-@pytest.mark.parametrize("body", ["Coupled", "Fixed"])
+@pytest.mark.parametrize("body", ["Coupled", "Fixed", "CoupledPinned"])
 def test_the_host_is_asked_where_moordyn_asks_at_rods_points_and_bodies(tmp_path, body):
     """A deck with every kind of rod (free, fixed, on a body, of zero
-    length), points of every kind and a body, coupled or fixed, turned by
+    length), points of every kind and a body, coupled, fixed or pinned to
+    the host, turned by
     pitch 10 deg and yaw 30 deg (docs/method.md (W2h)): the host is asked
     at MoorDyn 2.7's 122 places (the lines' 46, 46, 5 and 8 nodes; the
     rods' 2, 3, 4 and 1; the 5 points; the ground; the body), the fixed
@@ -106,14 +107,17 @@ def test_the_host_is_asked_where_moordyn_asks_at_rods_points_and_bodies(tmp_path
     code's own start; on the fixed body MoorDyn 2.7 never places its rod's
     two inner nodes, which stay at the rod's body coordinates, 0, 0 and
     +-0.33 m: stancf's are where the coupled body's are, MoorDyn's
-    there); and a flow set there is taken by a step."""
+    there; a CoupledPinned body's pin, a point stancf adds for the host to
+    move, is not asked at: 122 places too, as in MoorDyn 2.7); and a flow
+    set there is taken by a step."""
     text = (FIXTURES / "host-waves-rods-bodies-moordyn.txt").read_text()
-    if body == "Fixed":
-        text = text.replace("1       Coupled   0     0      -20", "1       Fixed     0     0      -20")
+    if body != "Coupled":
+        text = text.replace("1       Coupled   0     0      -20", "1  %s  0  0  -20" % body)
     (tmp_path / "deck.txt").write_text(text)
     sim = stancf.Simulation(tmp_path / "deck.txt")
     pose = [0.0, 0.0, -20.0, 0.0, math.radians(10.0), math.radians(30.0)]
-    x = (pose if body == "Coupled" else []) + [
+    held = {"Coupled": pose, "Fixed": [], "CoupledPinned": pose[:3]}[body]
+    x = held + [
         -450.0, 0.0, 0.0, 450.0, 0.0, 0.0, 200.0, 0.0, -50.0]
     assert sim.coupled_dof == len(x)
     sim.initialize(x)

@@ -24,10 +24,17 @@ pub(super) fn host_order(sc: &SystemScenario) -> HostOrder {
             },
             (RodHolder::Point { point, .. }, _) => HostRod::AtPoint(point),
             // A rod of zero length on a body: MoorDyn's one node, at the
-            // point there (or where it is, if no line makes one).
-            (_, None) => match r.points[0] {
-                Some(p) => HostRod::AtPoint(p),
-                None => HostRod::Fixed {
+            // point there, or on the body where it is if no line makes
+            // one (where it is, on a fixed body).
+            (_, None) => match (r.points[0].or(r.points[1]), r.body()) {
+                (Some(p), _) => HostRod::AtPoint(p),
+                (None, Some(body)) if sc.bodies[body].kind != super::BodyType::Fixed => {
+                    HostRod::OnBody {
+                        body,
+                        local: r.local[0],
+                    }
+                }
+                (None, _) => HostRod::Fixed {
                     ends: r.ends,
                     segments: 0,
                 },
@@ -56,8 +63,11 @@ pub(super) fn host_order(sc: &SystemScenario) -> HostOrder {
         .iter()
         .flat_map(|r| r.points.iter().flatten().copied())
         .collect();
+    // Neither the points at rods' ends nor those a CoupledPinned body's
+    // pin makes for its host are MoorDyn's.
+    let pins: Vec<usize> = sc.bodies.iter().filter_map(|b| b.host_pin).collect();
     let points = (0..sc.points.len())
-        .filter(|p| !rod_points.contains(p))
+        .filter(|p| !rod_points.contains(p) && !pins.contains(p))
         .collect();
     let rod_bodies: Vec<usize> = sc.rods.iter().filter_map(|r| r.own_body()).collect();
     let bodies = (0..sc.bodies.len())

@@ -232,11 +232,15 @@ impl FreeBody {
     }
 
     /// Sets the water's flow a host gives at the body (docs/method.md
-    /// (W2h)) for the steps from now on; nothing in air.
-    pub fn set_host_flow(&mut self, host: super::BodyHostFlow) {
+    /// (W2h)) for the steps from now on; nothing in air. Refused: not one
+    /// node flow per rod of the body's water, each at the rod's N + 1
+    /// nodes.
+    pub fn set_host_flow(&mut self, host: super::BodyHostFlow) -> Result<(), ModelError> {
         if let Some(w) = self.water.as_mut() {
+            host.check(&w.rods, "host_flow")?;
             w.host = Some(host);
         }
+        Ok(())
     }
 
     pub fn time(&self) -> f64 {

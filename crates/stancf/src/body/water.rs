@@ -65,6 +65,40 @@ impl BodyHostFlow {
         }
     }
 
+    /// Refuses a flow that is not one node flow per rod of `rods`, each
+    /// with the rod's N + 1 velocities and accelerations, or a value that
+    /// is not finite, naming `key`.
+    pub fn check(&self, rods: &[Rod], key: &str) -> Result<(), crate::error::ModelError> {
+        let shaped = self.rods.len() == rods.len()
+            && self.rods.iter().zip(rods).all(|(f, r)| {
+                f.velocity.len() == r.segments + 1 && f.acceleration.len() == r.segments + 1
+            });
+        if !shaped {
+            return Err(crate::error::ModelError::invalid(
+                key,
+                format!(
+                    "the flow at {} rods given, the body has {}: one per rod, at its N + 1 nodes",
+                    self.rods.len(),
+                    rods.len()
+                ),
+            ));
+        }
+        let values = self
+            .rods
+            .iter()
+            .flat_map(|f| f.velocity.iter().chain(&f.acceleration));
+        let reference = [&self.reference.0, &self.reference.1];
+        if reference
+            .into_iter()
+            .chain(values)
+            .flatten()
+            .any(|c| !c.is_finite())
+        {
+            return Err(crate::error::ModelError::invalid(key, "must be finite"));
+        }
+        Ok(())
+    }
+
     /// (W2h): the flow at the point `xi` (body axes) of rod k: its
     /// nodes' values interpolated linearly along the rod (W2f), at the
     /// point's place s = (xi - A) . q along it (clamped to the rod).
@@ -140,6 +174,9 @@ impl BodyWater {
                 format!("{key}.current"),
                 "must be finite",
             ));
+        }
+        if let Some(host) = &self.host {
+            host.check(&self.rods, &format!("{key}.host"))?;
         }
         if self.sea.is_some() && self.current != [0.0; 3] {
             return Err(crate::error::ModelError::invalid(

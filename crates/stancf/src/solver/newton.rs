@@ -60,6 +60,9 @@ pub fn newton<F: Factorization, S: NonlinearSystem<F::Matrix>>(
         if !r.is_finite() {
             return fail(FailureKind::NonFinite, report);
         }
+        if before_update.is_some_and(|b| super::at_residual_floor(b, r, report.increment, tol)) {
+            return Ok(report);
+        }
         if report.iterations == 1 {
             ws.one_update_sufficed = r <= tol;
         }

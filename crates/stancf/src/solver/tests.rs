@@ -345,3 +345,55 @@ fn modified_newton_rebuilds_a_tangent_that_contracts_slowly() {
     let report = broyden(&mut soft, &mut x, &broyden_settings, &mut wb, None).unwrap();
     assert_eq!(report.factorizations, 0, "{report:?}");
 }
+
+/// r = 1e4 (x - 1) + (-1)^k 2e-10 at the k-th evaluation: a residual
+/// whose round-off floor, 2e-10 to 4e-10, is above the tolerance 1e-10,
+/// while the unknown settles to 4e-14 (a stiff line at a long Galerkin
+/// step: scaled residuals of 1.3e-10 to 4.2e-10 for 47 iterations
+/// running, increments 1e-14, docs/method.md §7.2).
+struct FloorAboveTolerance {
+    evaluations: usize,
+}
+
+impl NonlinearSystem for FloorAboveTolerance {
+    fn evaluate(&mut self, x: &[f64], r: &mut [f64], jac: Option<&mut BandMatrix>) {
+        self.evaluations += 1;
+        let noise = if self.evaluations.is_multiple_of(2) {
+            -2e-10
+        } else {
+            2e-10
+        };
+        r[0] = 1e4 * (x[0] - 1.0) + noise;
+        if let Some(j) = jac {
+            j.clear();
+            j.add(0, 0, 1e4);
+        }
+    }
+    fn residual_norm(&self, r: &[f64]) -> f64 {
+        r[0].abs()
+    }
+    fn increment_norm(&self, dx: &[f64]) -> f64 {
+        dx[0].abs()
+    }
+}
+
+/// Newton ends at the residual's round-off floor (`at_residual_floor`):
+/// once an update has moved the unknown by less than 1e-2 of the
+/// tolerance and the residual, within 100 times it, did not halve, the
+/// iterate is the root to the unknowns' last bits. It used to iterate
+/// to the limit and fail, and the step was taken again in halves.
+#[test]
+fn newton_ends_at_a_residual_floor_above_the_tolerance() {
+    let settings = NewtonSettings {
+        tolerance: 1e-10,
+        max_iterations: 50,
+        method: SolverMethod::Newton,
+    };
+    let mut sys = FloorAboveTolerance { evaluations: 0 };
+    let mut x = [0.0];
+    let mut ws = NewtonWorkspace::new(1, 0, 0, 60);
+    let report = newton(&mut sys, &mut x, &settings, &mut ws, None).unwrap();
+    assert!(report.iterations <= 3, "{report:?}");
+    assert!(report.residual > settings.tolerance, "{report:?}");
+    assert!((x[0] - 1.0).abs() < 1e-13, "{x:?}");
+}

@@ -29,6 +29,9 @@ pub enum HostRod {
     },
     /// A rod of zero length: MoorDyn's one node, at point `0`.
     AtPoint(usize),
+    /// A rod of zero length on body `body` with no point there: its one
+    /// node at `local` in the body's axes (from its reference point).
+    OnBody { body: usize, local: [f64; 3] },
 }
 
 /// The rods, points and bodies a host is asked at, in MoorDyn's order
@@ -73,6 +76,9 @@ impl HostOrder {
                     .is_some_and(|w| rod < w.rods.len()),
                 HostRod::Fixed { ends, .. } => ends.iter().flatten().all(|c| c.is_finite()),
                 HostRod::AtPoint(p) => p < topology.points.len(),
+                HostRod::OnBody { body, local } => {
+                    body < bodies && local.iter().all(|c| c.is_finite())
+                }
             };
             if !known {
                 return Err(ModelError::invalid(
@@ -104,7 +110,7 @@ impl HostOrder {
                 water.map_or(1, |w| w.rods[rod].segments + 1)
             }
             HostRod::Fixed { segments, .. } => segments + 1,
-            HostRod::AtPoint(_) => 1,
+            HostRod::AtPoint(_) | HostRod::OnBody { .. } => 1,
         }
     }
 

@@ -43,9 +43,10 @@ pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) {
         }
     }
     for body in &mut topology.bodies {
-        let in_hosted_sea = |w: &crate::body::BodyWater| w.sea.as_ref().is_some_and(|s| hosted(s));
-        if let Some(water) = body.water.as_mut().filter(|w| in_hosted_sea(w)) {
-            water.host = Some(BodyHostFlow::still(&water.rods));
+        if let Some(water) = body.water.as_mut() {
+            // Only in a host's sea (a host flow given elsewhere is dropped).
+            let in_hosted_sea = water.sea.as_ref().is_some_and(|s| hosted(s));
+            water.host = in_hosted_sea.then(|| BodyHostFlow::still(&water.rods));
         }
     }
 }
@@ -194,6 +195,7 @@ impl SystemSimulation {
                 }
                 HostRod::Fixed { ends, .. } => ends,
                 HostRod::AtPoint(p) => [self.point_state(p).0; 2],
+                HostRod::OnBody { body, local } => [body_point(body, local); 2],
             };
             out.extend((0..nodes).map(|j| rod_node(&ends, nodes - 1, j)));
         }
@@ -286,7 +288,7 @@ impl SystemSimulation {
         for (b, host) in bodies.into_iter().enumerate() {
             let Some(host) = host else { continue };
             if let Some(step) = self.bodies.iter_mut().find(|s| s.index == b) {
-                step.body.set_host_flow(host.clone());
+                step.body.set_host_flow(host.clone())?;
             }
             if let Some(w) = self.topology.bodies[b].water.as_mut() {
                 w.host = Some(host);

@@ -60,7 +60,7 @@ fn a_hosts_uniform_flow_drags_a_body_and_its_rod_as_the_same_current_does() {
         let own_sea = Sea::still(200.0, G).with_current(current, Ramp::NONE);
         let mut own = neutral_body(own_sea, scheme, 1.0);
         let mut hosted = neutral_body(host_sea(), scheme, 1.0);
-        hosted.set_host_flow(uniform(u, [0.0; 3]));
+        hosted.set_host_flow(uniform(u, [0.0; 3])).unwrap();
         for _ in 0..20 {
             own.step().unwrap();
             hosted.step().unwrap();
@@ -94,7 +94,8 @@ fn a_body_as_dense_as_the_water_follows_a_hosts_uniform_acceleration() {
             let mut worst = 0.0f64;
             while body.time() < 5.0 - 1e-9 {
                 let t_mid = body.time() + 0.05;
-                body.set_host_flow(uniform(a.map(|c| c * t_mid), a));
+                body.set_host_flow(uniform(a.map(|c| c * t_mid), a))
+                    .unwrap();
                 body.step().unwrap();
                 let t = body.time();
                 let distance = 0.5 * t * t * stancf::vec3::norm(a);
