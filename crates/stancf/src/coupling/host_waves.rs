@@ -9,11 +9,8 @@ use crate::error::ModelError;
 impl CoupledSystem {
     /// Whether a host sets the sea's waves (a deck's `WaveKin 1`).
     pub fn takes_host_waves(&self) -> bool {
-        let lines = self.system.lines();
-        lines
-            .iter()
-            .any(|l| crate::system::takes_host_flow(&l.model))
-            || self.system.takes_host_flow()
+        let models = self.system.lines().iter().map(|l| &l.model);
+        crate::system::takes_host_waves(models, &self.system)
     }
 
     /// How many points [`Self::host_flow_points`] names (None before

@@ -4,8 +4,7 @@
 //! (§15.18) averaged over it.
 
 use super::{
-    held_loads, not_initialized, rates, triple, CoupledForces, CoupledSystem, CouplingError,
-    Running,
+    held_loads, not_initialized, triple, CoupledForces, CoupledSystem, CouplingError, Running,
 };
 use crate::motion::{CoupledMotion, MotionInterval};
 use crate::system::SystemSimulation;
@@ -15,8 +14,8 @@ impl CoupledSystem {
     /// last call put them to `x` (3 per point): along the cubic (K2) with
     /// the velocities given or, without them, estimated from the host's
     /// positions (K2a) (along the line (K1) in the first interval of a
-    /// start without velocities). The interval is split into the fewest equal steps no longer
-    /// than the scenario's (§13.3); an interval of more steps than
+    /// start without velocities). The interval is split into the fewest
+    /// equal steps no longer than the scenario's (§13.3); an interval of more steps than
     /// [`Self::max_interval_steps`] is refused before anything moves. On a
     /// solver failure the state stays at the last converged step, with
     /// the coupled points on this interval's motion, so a later call
@@ -154,21 +153,6 @@ impl CoupledSystem {
             interval_mean: impulse.iter().map(|i| i / span).collect(),
             steps,
         })
-    }
-}
-
-impl CoupledSystem {
-    /// The velocities of the call `(t_next, x, xd)`: the host's `xd`, or
-    /// without them (K2a)'s estimate from its earlier positions; its
-    /// positions kept for the next call's.
-    fn call_rates(&mut self, t_next: f64, x: &[f64], xd: Option<&[f64]>) -> Option<Vec<f64>> {
-        let running = self.running.as_mut()?;
-        let rates = match xd {
-            Some(v) => Some(v.to_vec()),
-            None => self.layout.estimated_rates(&running.samples, t_next, x),
-        };
-        rates::remember(&mut running.samples, t_next, x);
-        rates
     }
 }
 

@@ -25,6 +25,7 @@
 //! call.
 
 use super::bodies::{pose, ArrayLayout};
+use super::CoupledSystem;
 use crate::body::rotation::log_map;
 use crate::vec3::mat3_mul;
 
@@ -89,6 +90,26 @@ impl ArrayLayout {
             translation(self.point_start(k), &mut out);
         }
         Some(out)
+    }
+}
+
+impl CoupledSystem {
+    /// The velocities of the call `(t_next, x, xd)`: the host's `xd`, or
+    /// without them (K2a)'s estimate from its earlier positions; its
+    /// positions kept for the next call's.
+    pub(super) fn call_rates(
+        &mut self,
+        t_next: f64,
+        x: &[f64],
+        xd: Option<&[f64]>,
+    ) -> Option<Vec<f64>> {
+        let running = self.running.as_mut()?;
+        let rates = match xd {
+            Some(v) => Some(v.to_vec()),
+            None => self.layout.estimated_rates(&running.samples, t_next, x),
+        };
+        remember(&mut running.samples, t_next, x);
+        rates
     }
 }
 

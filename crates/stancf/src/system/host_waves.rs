@@ -27,6 +27,16 @@ pub(crate) fn takes_host_flow(model: &Model) -> bool {
     model.water.as_ref().is_some_and(|w| w.host.is_some())
 }
 
+/// Whether a host sets the waves: a line of `models`, or a point or body
+/// of `topology`, takes its flow (the one test of it, for a system, a
+/// simulation and a coupling handle).
+pub(crate) fn takes_host_waves<'a>(
+    mut models: impl Iterator<Item = &'a Model>,
+    topology: &Topology,
+) -> bool {
+    models.any(takes_host_flow) || topology.takes_host_flow()
+}
+
 /// Gives every line and point in a sea whose waves a host sets still
 /// water to start from (the host has set nothing yet, as in MoorDyn).
 pub(super) fn start_still(lines: &mut [Line], topology: &mut Topology) {
@@ -66,7 +76,7 @@ impl System {
 impl Topology {
     /// Whether a point or a body takes a host's flow (in a sea whose waves
     /// a host sets).
-    pub(crate) fn takes_host_flow(&self) -> bool {
+    fn takes_host_flow(&self) -> bool {
         let point = |p: &super::Point| p.water.as_ref().is_some_and(|w| w.host.is_some());
         let body = |b: &super::Body| b.water.as_ref().is_some_and(|w| w.host.is_some());
         self.points.iter().any(point) || self.bodies.iter().any(body)
@@ -88,7 +98,7 @@ impl Topology {
 /// refused.
 pub(super) fn refuse_untaken(system: &System) -> Result<(), ModelError> {
     let hosted = |l: &Line| takes_host_flow(&l.model);
-    if !system.lines().iter().any(hosted) && !system.takes_host_flow() {
+    if !takes_host_waves(system.lines().iter().map(|l| &l.model), system) {
         return Ok(());
     }
     if let Some(i) = system
@@ -121,7 +131,7 @@ impl SystemSimulation {
     /// Whether a host sets the waves ([`crate::water::kinematics::Sea::with_host_waves`]):
     /// a line, point or body takes the host's flow.
     pub fn takes_host_waves(&self) -> bool {
-        self.lines.iter().any(|l| takes_host_flow(l.model())) || self.topology.takes_host_flow()
+        takes_host_waves(self.lines.iter().map(|l| l.model()), &self.topology)
     }
 
     /// How many points [`Self::host_flow_points`] names: every line's

@@ -71,7 +71,7 @@ pub use failures::{Dropped, LineFailure, Release, Trigger};
 pub use halving::{DEFAULT_STEP_HALVINGS, MAX_STEP_HALVINGS};
 pub use held::{held_push, HeldMotion};
 pub use host_order::{HostOrder, HostRod};
-pub(crate) use host_waves::takes_host_flow;
+pub(crate) use host_waves::takes_host_waves;
 pub use layout::SystemLayout;
 pub use line_type::{stable_step, LineSection, EI_FACTOR};
 pub use moordyn_start::{moordyn_start_forces, moordyn_start_states};
