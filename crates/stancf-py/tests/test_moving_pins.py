@@ -7,7 +7,9 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pytest
 
+from stancf import ScenarioError
 from stancf.simulation import Simulation
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -74,6 +76,25 @@ def test_a_coupled_pinned_body_takes_three_numbers_and_pulls_by_its_wet_weight(t
     wet_weight = (50_000.0 - 1025.0 * math.pi * 10.0) * 9.80665
     assert abs(f[2] + wet_weight) < 1e-9 * wet_weight
     assert abs(f[0]) < 1e-9 * wet_weight and abs(f[1]) < 1e-9 * wet_weight
+
+
+def test_moordyns_count_for_a_coupled_pinned_body_is_refused_naming_why(tmp_path):
+    """MoorDyn-C 2.7's NCoupledDOF counts 6 per CoupledPinned body, but it
+    reads 3 per such body: an array of its count (here 6 for 3) is refused
+    with both counts named, nothing started."""
+    path = tmp_path / "pinned.txt"
+    path.write_text(DECK)
+    sim = Simulation(str(path))
+    with pytest.raises(ScenarioError) as e:
+        sim.initialize(np.array([0.0, 0.0, -5.0, 0.0, 0.0, 0.0]))
+    message = str(e.value)
+    assert "NCoupledDOF counts 6 per CoupledPinned body" in message
+    assert "give the 3 values" in message
+    with pytest.raises(ScenarioError) as e:
+        sim.initialize(np.array([0.0, 0.0, -5.0, 0.0]))
+    assert "NCoupledDOF" not in str(e.value) and "expected 3 values" in str(e.value)
+    f = sim.initialize(np.array([0.0, 0.0, -5.0]))
+    assert len(f) == 3
 
 
 ROD_DECK = DECK[: DECK.index("---------------------- BODIES")] + DECK[

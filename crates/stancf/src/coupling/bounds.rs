@@ -144,19 +144,37 @@ impl CoupledSystem {
         Ok(())
     }
 
+    /// Why an array of `got` values is not a coupling array. MoorDyn-C
+    /// 2.7's `NCoupledDOF` counts 6 per CoupledPinned body, but its `Init`,
+    /// `Step` and `GetForces` read and write 3 per such body, in this order,
+    /// and leave the last 3 per body of an array of that length unread (a
+    /// host that laid out 6 per body, as the count suggests, would give
+    /// MoorDyn a point's coordinates from the body's angles). An array of
+    /// MoorDyn's count is refused by name: which layout the host meant is
+    /// not for stancf to guess.
+    fn length_message(&self, got: usize) -> String {
+        let n = self.coupled_dof();
+        let pinned = self.layout.bodies.iter().filter(|b| b.pin.is_some()).count();
+        let layout = "coupled_dof: 6 per coupled body, 3 per body pinned to the host \
+                      (CoupledPinned), 3 per coupled point";
+        if pinned > 0 && got == n + 3 * pinned {
+            return format!(
+                "expected {n} values ({layout}), got {got}: MoorDyn-C's NCoupledDOF counts 6 \
+                 per CoupledPinned body ({got} here) but its Init, Step and GetForces read 3 \
+                 per such body, these {n} in this order, and leave the last {} unread; give \
+                 the {n} values",
+                3 * pinned
+            );
+        }
+        format!("expected {n} values ({layout}), got {got}")
+    }
+
     /// A coupling array: `coupled_dof` finite values; positions (`x`)
     /// within [`MAX_COUPLED_COORDINATE`] of the origin, velocities (`xd`)
     /// of speeds up to [`MAX_COUPLED_SPEED`].
     pub(super) fn check_values(&self, key: &str, values: &[f64]) -> Result<(), ModelError> {
         if values.len() != self.coupled_dof() {
-            return Err(ModelError::invalid(
-                key,
-                format!(
-                    "expected {} values (coupled_dof: 6 per coupled body, 3 per coupled point), got {}",
-                    self.coupled_dof(),
-                    values.len()
-                ),
-            ));
+            return Err(ModelError::invalid(key, self.length_message(values.len())));
         }
         if let Some(i) = values.iter().position(|v| !v.is_finite()) {
             return Err(ModelError::invalid(
