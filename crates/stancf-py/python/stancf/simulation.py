@@ -33,14 +33,14 @@ def _coupling_array(name, values, n):
         a = np.asarray(values)
     except (ValueError, TypeError) as e:
         raise ValueError("%s: expected %d real numbers (coupled_dof: 6 per coupled body, "
-                         "3 per coupled point): %s"
+                         "3 per CoupledPinned body, 3 per coupled point): %s"
                          % (name, n, e)) from None
     if a.dtype.kind == "c":
         raise TypeError("%s: complex values are refused (even with a zero imaginary part); "
                         "give the %d real coordinates" % (name, n))
     if a.dtype.kind not in "iuf":
         raise TypeError("%s: expected %d real numbers (coupled_dof: 6 per coupled body, "
-                        "3 per coupled point), "
+                        "3 per CoupledPinned body, 3 per coupled point), "
                         "got values of type %s" % (name, n, a.dtype))
     if a.ndim != 1:
         raise ValueError("%s: expected a flat sequence of %d values (coupled_dof: 6 per "
