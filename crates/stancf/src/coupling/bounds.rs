@@ -154,7 +154,12 @@ impl CoupledSystem {
     /// not for stancf to guess.
     fn length_message(&self, got: usize) -> String {
         let n = self.coupled_dof();
-        let pinned = self.layout.bodies.iter().filter(|b| b.pin.is_some()).count();
+        let pinned = self
+            .layout
+            .bodies
+            .iter()
+            .filter(|b| b.pin.is_some())
+            .count();
         let layout = "coupled_dof: 6 per coupled body, 3 per body pinned to the host \
                       (CoupledPinned), 3 per coupled point";
         if pinned > 0 && got == n + 3 * pinned {

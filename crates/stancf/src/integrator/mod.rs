@@ -23,6 +23,7 @@ mod step;
 mod watchdog;
 
 pub use crate::scheme::TimeScheme;
+pub(crate) use reactions::time_function;
 pub use run::{run, step_count, step_length};
 pub use setup::step_unknowns;
 pub use watchdog::{

@@ -14,28 +14,63 @@ impl Simulation {
         let n = self.model.dofs();
         let dpn = self.layout.dpn;
         let last = self.layout.layers();
-        for (node, force) in self.reactions.iter_mut() {
+        for k in 0..self.reactions.len() {
+            let node = self.reactions[k].0;
             for c in 0..3 {
-                let g = coordinate(dpn, *node, SLOT_R, c);
+                let g = coordinate(dpn, node, SLOT_R, c);
                 let mut impulse = 0.0;
                 for (s, &(_, kind)) in self.layout.row_slots.iter().enumerate() {
-                    if kind != Kind::Position {
-                        continue;
+                    if kind == Kind::Position {
+                        impulse += self.reaction_row(s, g);
                     }
-                    impulse += match self.layout.multiplier_at(s, g) {
-                        Some(m) => self.x[m],
-                        None => -self.scratch.reaction_rows[s * n + g],
-                    };
                 }
                 if self.settings.time_scheme.carries_momentum() {
                     // Galerkin: the end part, p_b - dA/de_b with p_b = M v_b.
                     impulse += self.mass_v[g] - self.scratch.end_momentum[g];
                 }
-                force[c] = impulse / dt;
+                let force = impulse / dt;
+                self.reactions[k].1[c] = force;
                 let moved = self.scratch.node_e[last * n + g] - self.state.e[g];
-                self.constraint_work += force[c] * moved;
+                self.constraint_work += force * moved;
             }
         }
+    }
+
+    /// The constraint's generalized impulse on row slot `s` of coordinate
+    /// `g`: its multiplier, or the eliminated row's value with its sign
+    /// turned (§6.3-6.4). On the row of the variation of e along the time
+    /// function T_j it is int R T_j dt (§6.5).
+    fn reaction_row(&self, s: usize, g: usize) -> f64 {
+        match self.layout.multiplier_at(s, g) {
+            Some(m) => self.x[m],
+            None => -self.scratch.reaction_rows[s * self.model.dofs() + g],
+        }
+    }
+
+    /// The Galerkin step's four moments of the reaction on node `node`'s
+    /// r over the step, int R T_j dt for the time functions T1..T4 of
+    /// eq. (6) (T2, T4 the slopes' times dt): the multipliers of the rows
+    /// of e_a, w_a and w_b, and the end part M v_b - dA/de_b for T3
+    /// (docs/method.md §5.1, §6.5, (M23b)). After a converged step, until
+    /// the next one starts; None for P2 (its rows give T1 and T3 only) or
+    /// a node with no reaction.
+    pub(crate) fn reaction_moments(&self, node: usize) -> Option<[[f64; 3]; 4]> {
+        if !self.settings.time_scheme.carries_momentum()
+            || !self.reactions.iter().any(|(k, _)| *k == node)
+        {
+            return None;
+        }
+        let dpn = self.layout.dpn;
+        let mut moments = [[0.0; 3]; 4];
+        for c in 0..3 {
+            let g = coordinate(dpn, node, SLOT_R, c);
+            for (s, &(i, kind)) in self.layout.row_slots.iter().enumerate() {
+                let j = time_function(i, kind);
+                moments[j][c] += self.reaction_row(s, g);
+            }
+            moments[2][c] += self.mass_v[g] - self.scratch.end_momentum[g];
+        }
+        Some(moments)
     }
 
     /// The moment each direction hold (a line end clamped in a direction,
@@ -79,4 +114,11 @@ impl Simulation {
             })
             .collect()
     }
+}
+
+/// The index j of the time function T_(j+1) of eq. (6) whose variation a
+/// one-layer step's row slot (time node i, kind) is: T1, T2 at the start
+/// (value, slope), T3, T4 at the end.
+pub(crate) fn time_function(i: usize, kind: Kind) -> usize {
+    2 * i + usize::from(kind == Kind::Velocity)
 }

@@ -51,6 +51,42 @@ pub(super) fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -
     out
 }
 
+/// The force at the end of a Galerkin step from its four moments over
+/// the step, `m_j = int R T_j dt` (T1..T4 the time functions of eq. (6),
+/// T2 and T4 the slopes' times dt): the cubic with these moments (the
+/// force's L2 projection on the step's cubics, the Gram matrix of the
+/// four functions inverted in closed form) taken at the end,
+///
+/// ```text
+///   R(t_b) = (-4 m1 + 16 m3) / dt + (60 m2 + 120 m4) / dt^2           (M23b)
+/// ```
+///
+/// exact for a force cubic in time, O(dt^4) for a smooth one, from the
+/// step alone (docs/method.md §6.5). Its mean, (m1 + m3) / dt, is (M23).
+pub(crate) fn force_at_end(moments: &[[f64; 3]; 4], dt: f64) -> [f64; 3] {
+    let [m1, m2, m3, m4] = moments;
+    std::array::from_fn(|c| {
+        (-4.0 * m1[c] + 16.0 * m3[c]) / dt + (60.0 * m2[c] + 120.0 * m4[c]) / (dt * dt)
+    })
+}
+
+/// The moments over a one-layer step of the rows of r at `node`: row slot
+/// (time node i, kind) is the variation along T_j, j = 2 i (+1 for a
+/// slope); [`force_at_end`] takes them. A Galerkin step has no row of
+/// e_b: its moment is the caller's to add.
+pub(super) fn row_moments(layout: &SlabLayout, node: usize, rows: &[f64]) -> [[f64; 3]; 4] {
+    let mut out = [[0.0; 3]; 4];
+    for (s, &(i, kind)) in layout.row_slots.iter().enumerate() {
+        let j = crate::integrator::time_function(i, kind);
+        for c in 0..3 {
+            if let Some(r) = layout.row_of_node(s, node, c) {
+                out[j][c] += rows[r];
+            }
+        }
+    }
+    out
+}
+
 /// The previous step's mean end forces and the estimate at the end of the
 /// last step.
 #[derive(Clone, Debug)]
@@ -111,6 +147,18 @@ impl ForcesAtTime {
                 before[k] = m[k];
                 fresh[k] = false;
             }
+        }
+        self.previous_dt = dt;
+    }
+
+    /// Takes a Galerkin step of length `dt` just converged: its end
+    /// forces at its end from its own moments (M23b), and its means for
+    /// a P2 step after it (M23a).
+    pub(super) fn set_at_end(&mut self, mean: &[[EndForce; 2]], at_end: &[[EndForce; 2]], dt: f64) {
+        self.at_time.copy_from_slice(at_end);
+        self.previous_mean.copy_from_slice(mean);
+        for fresh in &mut self.fresh {
+            *fresh = [false; 2];
         }
         self.previous_dt = dt;
     }

@@ -86,6 +86,9 @@ pub struct SystemSimulation {
     pub(super) unknown_scale: Vec<f64>,
     pub(super) equation_scale: Vec<f64>,
     pub(super) end_forces: Vec<[EndForce; 2]>,
+    /// The last Galerkin step's end forces at its end (M23b), before
+    /// [`ForcesAtTime`] takes them.
+    pub(super) end_forces_at_end: Vec<[EndForce; 2]>,
     /// The end forces at the end of the last step (M23a).
     pub(super) forces_at_time: ForcesAtTime,
     /// The Galerkin step's system mass matrix (free points only).
@@ -192,6 +195,7 @@ impl SystemSimulation {
             point_water_work: 0.0,
             step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
+            end_forces_at_end: vec![[EndForce::default(); 2]; lines.len()],
             forces_at_time: ForcesAtTime::new(lines.len()),
             point_nodes: vec![PointNodes::default(); topology.points().len()],
             topology,

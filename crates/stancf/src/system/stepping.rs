@@ -6,7 +6,7 @@
 
 use super::body_terms::PinHold;
 use super::clamp_moments::clamp_turn;
-use super::end_forces::position_row_sum;
+use super::end_forces::{force_at_end, position_row_sum, row_moments};
 use super::layout::add_line_rows;
 use super::point_terms::PointTerms;
 use super::simulation::{step_problem, SystemSimulation};
@@ -44,7 +44,12 @@ impl SystemSimulation {
         self.add_point_water_work();
         self.collect_end_forces(dt);
         self.collect_pin_forces(dt);
-        self.forces_at_time.update(&self.end_forces, dt);
+        if self.settings.time_scheme.carries_momentum() {
+            let (mean, at_end) = (&self.end_forces, &self.end_forces_at_end);
+            self.forces_at_time.set_at_end(mean, at_end, dt);
+        } else {
+            self.forces_at_time.update(&self.end_forces, dt);
+        }
         self.advance_points(dt);
         self.steps += 1;
         self.t += dt;
@@ -294,8 +299,11 @@ impl SystemSimulation {
     /// free point the line's share of the point's position rows, summed
     /// over the step's position rows and divided by dt (the negative of
     /// the impulse the point gives the line, docs/method.md §11.4); at a
-    /// fixed or coupled point minus the line's reaction (§6.5).
+    /// fixed or coupled point minus the line's reaction (§6.5). With the
+    /// Galerkin step, also the forces at the step's end from the same
+    /// rows' four moments (M23b), into `end_forces_at_end`.
     pub(super) fn collect_end_forces(&mut self, dt: f64) {
+        let galerkin = self.settings.time_scheme.carries_momentum();
         for (i, line) in self.lines.iter_mut().enumerate() {
             let ends = self.topology.line_ends()[i];
             let free_end = ends
@@ -310,28 +318,41 @@ impl SystemSimulation {
             }
             let layout = &self.layout.lines[i];
             self.end_forces[i] = [EndForce::default(); 2];
+            self.end_forces_at_end[i] = [EndForce::default(); 2];
             for AttachedEnd {
                 end: k,
                 point: p,
                 node,
             } in self.topology.attached_ends(i, line.model())
             {
-                let force = if self.topology.points()[p].is_unknown() {
+                let (force, end) = if self.topology.points()[p].is_unknown() {
                     let rows = position_row_sum(layout, node, &self.residual_local[i]);
                     let dpn = line.model().dofs_per_node();
-                    std::array::from_fn(|c| {
-                        let g = coordinate(dpn, node, SLOT_R, c);
-                        (rows[c] + line.galerkin_end_term(g)) / dt
-                    })
+                    let end_term: [f64; 3] = std::array::from_fn(|c| {
+                        line.galerkin_end_term(coordinate(dpn, node, SLOT_R, c))
+                    });
+                    let force = std::array::from_fn(|c| (rows[c] + end_term[c]) / dt);
+                    let end = galerkin.then(|| {
+                        let mut moments = row_moments(layout, node, &self.residual_local[i]);
+                        moments[2] = end_term;
+                        force_at_end(&moments, dt)
+                    });
+                    (force, end)
                 } else {
                     let r = line
                         .reactions()
                         .iter()
                         .find(|(n, _)| *n == node)
                         .map_or([0.0; 3], |(_, f)| *f);
-                    r.map(|f| -f)
+                    let end = line
+                        .reaction_moments(node)
+                        .map(|m| force_at_end(&m, dt).map(|f| -f));
+                    (r.map(|f| -f), end)
                 };
                 self.end_forces[i][k] = EndForce { force };
+                self.end_forces_at_end[i][k] = EndForce {
+                    force: end.unwrap_or(force),
+                };
             }
         }
     }

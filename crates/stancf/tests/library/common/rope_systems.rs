@@ -166,6 +166,14 @@ pub fn independent_ropes(which: &[usize], of: usize, elements: usize) -> System 
 /// [`three_to_a_point`] of 4 elements per line, straight and at rest, in
 /// Galerkin steps of `dt`, Newton to 1e-12.
 pub fn galerkin_three_to_a_point(dt: f64) -> stancf::system::SystemSimulation {
+    three_to_a_point_stepped(dt, stancf::TimeScheme::Galerkin)
+}
+
+/// [`galerkin_three_to_a_point`] in steps of `scheme`.
+pub fn three_to_a_point_stepped(
+    dt: f64,
+    scheme: stancf::TimeScheme,
+) -> stancf::system::SystemSimulation {
     let system = three_to_a_point(4);
     let states = system
         .lines()
@@ -174,7 +182,7 @@ pub fn galerkin_three_to_a_point(dt: f64) -> stancf::system::SystemSimulation {
         .collect();
     let settings = StepSettings {
         time_step: dt,
-        time_scheme: stancf::TimeScheme::Galerkin,
+        time_scheme: scheme,
         newton: stancf::NewtonSettings {
             tolerance: 1e-12,
             ..stancf::NewtonSettings::default()
