@@ -59,6 +59,10 @@ pub struct Analysis {
     /// A system's step that Newton fails is taken again in halves, this
     /// many levels deep (docs/method.md §11.13; 0: fail at once).
     pub step_halvings: u32,
+    /// A system's steps chosen by this tolerance on the end forces'
+    /// estimated error (docs/method.md §11.18, (M23c)), `time_step` the
+    /// first and largest; None: every step `time_step`.
+    pub force_tolerance: Option<f64>,
 }
 
 /// What the rest of the file holds that a static analysis refuses.
@@ -143,8 +147,13 @@ pub(super) fn analysis(
         )? as u32,
         None => 0,
     };
+    let force_tolerance = match ra.force_tolerance {
+        Some(t) => Some(force_tolerance(ctx, t, kind)?),
+        None => None,
+    };
     let analysis = Analysis {
         step_halvings,
+        force_tolerance,
         kind,
         time_step,
         duration,
@@ -378,6 +387,9 @@ pub(super) fn analysis_part(
     if free_bodies {
         galerkin_for_bodies(ctx, &mut raw)?;
     }
+    if raw.as_ref().is_some_and(|a| a.force_tolerance.is_some()) {
+        galerkin_for_tolerance(ctx, &mut raw)?;
+    }
     let initial_key = raw.as_ref().and_then(|a| a.initial.clone());
     let axial_given = raw.as_ref().is_some_and(|a| a.axial_strain.is_some());
     let halvings_given = raw.as_ref().is_some_and(|a| a.step_halvings.is_some());
@@ -411,6 +423,54 @@ pub(super) fn analysis_part(
 /// A system with a free body is stepped by the Galerkin scheme: the
 /// default `analysis.time_scheme` there; "p2" is refused, and so are the
 /// time layers the Galerkin step does not take, naming the keys.
+/// `analysis.force_tolerance`: a relative error in (0, 0.5), dynamic
+/// analyses only.
+fn force_tolerance(ctx: &Ctx, t: f64, kind: AnalysisKind) -> Result<f64, ScenarioError> {
+    if kind == AnalysisKind::Static {
+        return Err(ctx.err(
+            "analysis.force_tolerance",
+            "a static analysis has no time steps to choose",
+        ));
+    }
+    if !(t.is_finite() && t > 0.0 && t < 0.5) {
+        return Err(ctx.err(
+            "analysis.force_tolerance",
+            format!(
+                "{t}: the largest relative error of an end force, above 0 and below 0.5 \
+                 (0.01 is 1 %)"
+            ),
+        ));
+    }
+    Ok(t)
+}
+
+/// A system whose steps a tolerance chooses is stepped by the Galerkin
+/// scheme: its rows give the end forces over a step (docs/method.md
+/// (M23b)), P2's do not.
+fn galerkin_for_tolerance(ctx: &Ctx, raw: &mut Option<RawAnalysis>) -> Result<(), ScenarioError> {
+    let ra = raw.get_or_insert_with(RawAnalysis::default);
+    match ra.time_scheme.as_deref() {
+        Some("p2") => Err(ctx.err(
+            "analysis.time_scheme",
+            "\"p2\" with analysis.force_tolerance: steps chosen by a tolerance need the \
+             Galerkin step, whose rows give the end forces over a step (docs/method.md (M23b)); \
+             leave time_scheme out, or give \"galerkin\"",
+        )),
+        Some(_) => Ok(()),
+        None => {
+            if ra.time_layers.is_some_and(|n| n > 1) {
+                return Err(ctx.err(
+                    "analysis.time_layers",
+                    "steps chosen by analysis.force_tolerance are Galerkin steps, one layer \
+                     each",
+                ));
+            }
+            ra.time_scheme = Some("galerkin".into());
+            Ok(())
+        }
+    }
+}
+
 fn galerkin_for_bodies(ctx: &Ctx, raw: &mut Option<RawAnalysis>) -> Result<(), ScenarioError> {
     let ra = raw.get_or_insert_with(RawAnalysis::default);
     match ra.time_scheme.as_deref() {

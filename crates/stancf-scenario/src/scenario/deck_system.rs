@@ -96,7 +96,11 @@ pub(super) fn deck_system(
     sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
-    sc.end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
+    sc.end_forces = super::output::output_end_forces(
+        ctx,
+        raw.output.as_ref(),
+        sc.analysis.force_tolerance.is_some(),
+    )?;
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
     super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;

@@ -257,6 +257,13 @@ fn cable_scenario(ctx: &Ctx, raw: RawScenario, path: &Path) -> Result<Scenario, 
             "halving failed steps is for systems of lines in this version, not a single cable",
         ));
     }
+    if analysis.force_tolerance.is_some() {
+        return Err(ctx.err(
+            "analysis.force_tolerance",
+            "steps chosen by a tolerance on the end forces are for systems of lines in this \
+             version, not a single cable (give the cable as a [system] of one line)",
+        ));
+    }
     initial_velocity::check_initial_velocities(ctx, &initial_velocity, &constraints)?;
     output::no_output_files(ctx, raw.output.as_ref())?;
     let output_every = output::output_every(ctx, raw.output.as_ref())?;

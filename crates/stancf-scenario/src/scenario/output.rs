@@ -76,17 +76,20 @@ impl EndForces {
     }
 }
 
-/// `output.end_forces` of a system: "step_mean" (the default) or
-/// "at_time".
+/// `output.end_forces` of a system: "step_mean" or "at_time"; the
+/// default is "step_mean", but "at_time" where a tolerance chooses the
+/// steps (`controlled`: the tolerance bounds the forces at t, (M23c)).
 pub(super) fn output_end_forces(
     ctx: &Ctx,
     raw: Option<&RawOutput>,
+    controlled: bool,
 ) -> Result<EndForces, ScenarioError> {
     let chosen = raw.and_then(|r| r.end_forces.as_deref());
+    let default = if controlled { "at_time" } else { "step_mean" };
     match ctx.choice(
         "output.end_forces",
         chosen,
-        "step_mean",
+        default,
         &["step_mean", "at_time"],
     )? {
         "at_time" => Ok(EndForces::AtTime),

@@ -411,6 +411,7 @@ pub(super) struct RawAnalysis {
     pub(super) constraint_method: Option<String>,
     pub(super) planar_reduction: Option<bool>,
     pub(super) step_halvings: Option<i64>,
+    pub(super) force_tolerance: Option<f64>,
     pub(super) initial: Option<String>,
 }
 

@@ -83,7 +83,11 @@ pub(super) fn system_scenario(
     super::output::bodies_to_write(ctx, &output_files, bodies.len())?;
     let statics = analysis.kind == AnalysisKind::Static || initial == InitialShape::Static;
     super::output::stiffness_to_write(ctx, &output_files, free_bodies, statics)?;
-    let end_forces = super::output::output_end_forces(ctx, raw.output.as_ref())?;
+    let end_forces = super::output::output_end_forces(
+        ctx,
+        raw.output.as_ref(),
+        analysis.force_tolerance.is_some(),
+    )?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
     let failures = super::failures::failures(ctx, &raw.failures, &points, &lines)?;
     let static_only = host_waves_static_only(ctx.file, water.as_ref());

@@ -51,23 +51,47 @@ pub(super) fn position_row_sum(layout: &SlabLayout, node: usize, rows: &[f64]) -
     out
 }
 
-/// The force at the end of a Galerkin step from its four moments over
-/// the step, `m_j = int R T_j dt` (T1..T4 the time functions of eq. (6),
-/// T2 and T4 the slopes' times dt): the cubic with these moments (the
-/// force's L2 projection on the step's cubics, the Gram matrix of the
-/// four functions inverted in closed form) taken at the end,
+/// The force over a Galerkin step from its four moments over the step,
+/// `m_j = int R T_j dt` (T1..T4 the time functions of eq. (6), T2 and T4
+/// the slopes' times dt): the cubic with these moments, the force's L2
+/// projection on the step's cubics. With the Gram matrix of the four
+/// functions, `dt D g D` (D = diag(1, dt, 1, dt), g the unit step's,
+/// [156, 22, 54, -13; 22, 4, 13, -3; 54, 13, 156, -22; -13, -3, -22, 4] / 420)
+/// inverted in closed form, the cubic is `R(t_a + s dt) = sum_j b_j H_j(s)`
+/// in the unit Hermite basis (values at s = 0 and 1, slopes per unit s),
 ///
 /// ```text
-///   R(t_b) = (-4 m1 + 16 m3) / dt + (60 m2 + 120 m4) / dt^2           (M23b)
+///   b = g^-1 (m1, m2 / dt, m3, m4 / dt) / dt,
+///   g^-1 = [16, -120, -4, -60; -120, 1200, 60, 840; -4, 60, 16, 120; -60, 840, 120, 1200]
 /// ```
 ///
-/// exact for a force cubic in time, O(dt^4) for a smooth one, from the
-/// step alone (docs/method.md §6.5). Its mean, (m1 + m3) / dt, is (M23).
-pub(crate) fn force_at_end(moments: &[[f64; 3]; 4], dt: f64) -> [f64; 3] {
-    let [m1, m2, m3, m4] = moments;
-    std::array::from_fn(|c| {
-        (-4.0 * m1[c] + 16.0 * m3[c]) / dt + (60.0 * m2[c] + 120.0 * m4[c]) / (dt * dt)
+/// exact for a force cubic in time (docs/method.md §6.5, (M23b)).
+pub(crate) fn force_cubic(moments: &[[f64; 3]; 4], dt: f64) -> [[f64; 3]; 4] {
+    const G_INV: [[f64; 4]; 4] = [
+        [16.0, -120.0, -4.0, -60.0],
+        [-120.0, 1200.0, 60.0, 840.0],
+        [-4.0, 60.0, 16.0, 120.0],
+        [-60.0, 840.0, 120.0, 1200.0],
+    ];
+    let scaled: [[f64; 3]; 4] = std::array::from_fn(|k| {
+        let w = if k % 2 == 1 { 1.0 / dt } else { 1.0 };
+        moments[k].map(|m| m * w)
+    });
+    std::array::from_fn(|j| {
+        std::array::from_fn(|c| (0..4).map(|k| G_INV[j][k] * scaled[k][c]).sum::<f64>() / dt)
     })
+}
+
+/// The force at the end of a Galerkin step from its four moments,
+///
+/// ```text
+///   R(t_b) = (16 m3 - 4 m1) / dt + (60 m2 + 120 m4) / dt^2           (M23b)
+/// ```
+///
+/// ([`force_cubic`] at s = 1), O(dt^4) for a smooth force, from the step
+/// alone. Its mean, (m1 + m3) / dt, is (M23).
+pub(crate) fn force_at_end(moments: &[[f64; 3]; 4], dt: f64) -> [f64; 3] {
+    force_cubic(moments, dt)[2]
 }
 
 /// The moments over a one-layer step of the rows of r at `node`: row slot

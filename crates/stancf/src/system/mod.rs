@@ -59,6 +59,7 @@ mod static_lines;
 mod static_paths;
 mod static_water;
 mod statics;
+mod step_control;
 mod step_equations;
 mod stepping;
 mod stiffness;
@@ -85,6 +86,7 @@ pub use seed::{
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;
 pub use statics::SystemStatics;
+pub use step_control::{run_to_tolerance, ControlledSteps, StepControl, MIN_STEP_FRACTION};
 pub use topology::{attached_ends, AttachedEnd, Topology};
 
 use crate::constraints::{Constraint, ConstraintKind};

@@ -325,33 +325,33 @@ impl SystemSimulation {
                 node,
             } in self.topology.attached_ends(i, line.model())
             {
-                let (force, end) = if self.topology.points()[p].is_unknown() {
+                let (force, moments) = if self.topology.points()[p].is_unknown() {
                     let rows = position_row_sum(layout, node, &self.residual_local[i]);
                     let dpn = line.model().dofs_per_node();
                     let end_term: [f64; 3] = std::array::from_fn(|c| {
                         line.galerkin_end_term(coordinate(dpn, node, SLOT_R, c))
                     });
                     let force = std::array::from_fn(|c| (rows[c] + end_term[c]) / dt);
-                    let end = galerkin.then(|| {
+                    let moments = galerkin.then(|| {
                         let mut moments = row_moments(layout, node, &self.residual_local[i]);
                         moments[2] = end_term;
-                        force_at_end(&moments, dt)
+                        moments
                     });
-                    (force, end)
+                    (force, moments)
                 } else {
                     let r = line
                         .reactions()
                         .iter()
                         .find(|(n, _)| *n == node)
                         .map_or([0.0; 3], |(_, f)| *f);
-                    let end = line
+                    let moments = line
                         .reaction_moments(node)
-                        .map(|m| force_at_end(&m, dt).map(|f| -f));
-                    (r.map(|f| -f), end)
+                        .map(|m| m.map(|mj| mj.map(|v| -v)));
+                    (r.map(|f| -f), moments)
                 };
                 self.end_forces[i][k] = EndForce { force };
                 self.end_forces_at_end[i][k] = EndForce {
-                    force: end.unwrap_or(force),
+                    force: moments.map_or(force, |m| force_at_end(&m, dt)),
                 };
             }
         }

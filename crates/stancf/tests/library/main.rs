@@ -48,6 +48,7 @@ mod rods_in_systems;
 mod seabed;
 mod statics;
 mod step_assembly;
+mod step_control;
 mod step_halving;
 mod step_unknowns;
 mod system_momentum;

@@ -24,7 +24,9 @@ use crate::Failure;
 use rows::{dynamic_row, static_row, step_end_forces};
 use serde_json::{json, Value};
 use stancf::error::Sig;
-use stancf::system::{EndForce, SystemSimulation, SystemStatics};
+use stancf::system::{
+    run_to_tolerance, ControlledSteps, EndForce, StepControl, SystemSimulation, SystemStatics,
+};
 use stancf::SolverError;
 use std::ops::ControlFlow;
 use std::path::Path;
@@ -43,6 +45,8 @@ struct Outcome {
     /// The failure was a time step's (not the static solve's).
     failed_stepping: bool,
     interrupted: bool,
+    /// How the steps went where a tolerance chose them.
+    controlled: Option<ControlledSteps>,
 }
 
 impl Outcome {
@@ -100,6 +104,7 @@ pub(super) fn run_system(
         failure: None,
         failed_stepping: false,
         interrupted: false,
+        controlled: None,
     };
     // history.csv accounts for the damping's work in a damped dynamic run.
     let damped = sc.analysis.kind == AnalysisKind::Dynamic
@@ -371,7 +376,10 @@ fn step_through(
     let mut last_written = 0;
     let mut written = Ok(());
     let mut reported = releases::Reported::default();
-    let result = stancf::system::run(sim, sc.analysis.duration, |sim, rep, at| {
+    let mut controlled = None;
+    let observe = |sim: &SystemSimulation,
+                   rep: &stancf::integrator::StepReport,
+                   at: stancf::system::RunProgress| {
         reported.catch_up(sim, sc, writers);
         outcome.steps = at.step;
         outcome.iterations += rep.newton.iterations;
@@ -392,7 +400,25 @@ fn step_through(
             return ControlFlow::Break(());
         }
         ControlFlow::Continue(())
-    });
+    };
+    let result = match sc.analysis.force_tolerance {
+        None => stancf::system::run(sim, sc.analysis.duration, observe).map(|_| ()),
+        Some(tolerance) => {
+            let control = StepControl::new(sim, tolerance).map_err(|e| SolverError {
+                kind: stancf::FailureKind::NotConverged,
+                time: sim.time(),
+                step: sim.steps(),
+                residual: 0.0,
+                iterations: 0,
+                detail: e.to_string(),
+            });
+            control.and_then(|c| {
+                run_to_tolerance(sim, sc.analysis.duration, c, observe)
+                    .map(|(_, steps)| controlled = Some(steps))
+            })
+        }
+    };
+    outcome.controlled = controlled;
     written?;
     if let Err(f) = result {
         outcome.failure = Some(f);
@@ -477,10 +503,20 @@ fn write_summary(
         "t_final": json_num(outcome.t),
         "load_increments": outcome.increments,
         "iterations": outcome.iterations,
+
         "wall_time_s": json_num(wall),
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
         "interrupted": outcome.interrupted,
     });
+    if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
+        summary["step_control"] = json!({
+            "force_tolerance": json_num(tol),
+            "steps": c.accepted,
+            "rejected": c.rejected,
+            "shortest_step": json_num(c.shortest),
+            "longest_step": json_num(c.longest),
+        });
+    }
     if !sc.bodies.is_empty() {
         let mut entries = bodies::bodies_json(sc, sim, statics);
         stiffness::add_to_summary(&mut entries, matrices);

@@ -1,0 +1,300 @@
+//! A run whose steps are chosen by a tolerance on the end forces
+//! (docs/method.md §11.18): the run is written at the multiples of its
+//! step length, as [`super::run`] writes it, and each such interval is
+//! crossed in as many equal steps as the tolerance needs; the step length
+//! is the first and the largest step.
+//!
+//! The estimate is step doubling: each step is taken once whole and once
+//! as two halves from the same state, and the largest difference of the
+//! line ends' forces at its end (M23b), relative to the larger of each
+//! end's force and its line's weight, is the step's error
+//!
+//! ```text
+//!   err = max_ends |R_whole(t_b) - R_halves(t_b)| / max(|R_halves(t_b)|, w L g)   (M23c)
+//! ```
+//!
+//! The halves are kept. No asymptotic constant enters: where the step
+//! resolves the motion the halves' own error is about err / 15 (M23b is
+//! O(dt^4), the state's error smaller still), and where it does not (a
+//! mode the step carries at a wrong frequency, a force noisy from step to
+//! step) the two differ by about what each is off. Estimates from one
+//! step's smoothness (the last step's force cubic extrapolated, the jump
+//! between two steps' cubics at their common end) were tried on the
+//! jumper of the README and missed that second case by 30 to 100 times.
+//! A step is kept when err is within the tolerance; otherwise it is taken
+//! again shorter. The next step is `0.9 (tol / err)^(1/4)` times this
+//! one, at most twice and at least a fifth, never longer than the step
+//! length and never past the interval's end. A step costs three solves
+//! (whole and halves) and advances as two halves do: 1.5 times the cost
+//! of a fixed step of its half.
+
+use super::run::{watched_step, RunProgress};
+use super::SystemSimulation;
+use crate::error::{FailureKind, ModelError, SolverError};
+use crate::integrator::{step_count, step_length, StepReport};
+use std::ops::ControlFlow;
+
+/// The step control of a run: the tolerance on the end forces' estimated
+/// error, relative to each end's force (or its line's weight, if more).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepControl {
+    tolerance: f64,
+}
+
+impl StepControl {
+    /// The control of `sim`'s run at `tolerance`, the largest relative
+    /// error of an end force at a step's end (M23c): positive and finite,
+    /// and the Galerkin step (P2's rows do not give the forces' cubics).
+    pub fn new(sim: &SystemSimulation, tolerance: f64) -> Result<Self, ModelError> {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(ModelError::invalid(
+                "tolerance",
+                format!("must be positive and finite, got {tolerance}"),
+            ));
+        }
+        if !sim.settings.time_scheme.carries_momentum() {
+            return Err(ModelError::invalid(
+                "tolerance",
+                "a step chosen by a tolerance needs the Galerkin step: P2's rows do not give \
+                 the end forces over a step (docs/method.md (M23b))",
+            ));
+        }
+        Ok(StepControl { tolerance })
+    }
+
+    /// The tolerance.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+}
+
+/// How a controlled run stepped.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ControlledSteps {
+    /// Steps kept.
+    pub accepted: usize,
+    /// Steps undone for their error and taken again shorter.
+    pub rejected: usize,
+    /// The shortest and the longest step kept (s).
+    pub shortest: f64,
+    pub longest: f64,
+}
+
+/// The smallest step the control may take, as a fraction of the run's
+/// step length: a tolerance that needs shorter steps is not met
+/// ([`FailureKind::NotConverged`] names it).
+pub const MIN_STEP_FRACTION: f64 = 1e-6;
+
+/// The largest relative difference between the end forces at t (M23b)
+/// of `whole`, after one step, and of `halves`, after two steps of half
+/// its length from the same state: each end's difference over the larger
+/// of its force and its line's weight (a slack end is judged against the
+/// weight, not against nothing).
+fn force_difference(whole: &SystemSimulation, halves: &SystemSimulation) -> f64 {
+    let g = crate::vec3::norm(halves.topology.gravity());
+    let mut worst = 0.0f64;
+    for (i, line) in halves.lines.iter().enumerate() {
+        let model = line.model();
+        let weight = model.material.density * model.material.area * model.cable.length * g;
+        let (a, b) = (whole.end_forces_at_time(i), halves.end_forces_at_time(i));
+        for k in 0..2 {
+            let scale = b[k].tension().max(weight);
+            if scale > 0.0 {
+                let d = crate::vec3::norm(crate::vec3::sub(a[k].force, b[k].force));
+                worst = worst.max(d / scale);
+            }
+        }
+    }
+    worst
+}
+
+/// The next step's length after a step of `dt` whose error was `error`
+/// of the tolerance `tol`.
+fn next_step(dt: f64, error: f64, tol: f64) -> f64 {
+    let factor = if error > 0.0 {
+        0.9 * (tol / error).powf(0.25)
+    } else {
+        2.0
+    };
+    dt * factor.clamp(0.2, 2.0)
+}
+
+/// Steps `sim` until `duration` is covered, as [`super::run`] does, but
+/// each of its steps (of the simulation's step length, the last
+/// shortened) crossed in steps chosen by `control` (M23c): `observer` is
+/// called at the end of each such interval, with the interval's Newton
+/// iterations summed, and may stop the run. Needs the Galerkin step (its
+/// end forces' cubics); the step length is the simulation's again after
+/// the run. Fails where the tolerance needs a step below
+/// [`MIN_STEP_FRACTION`] of the step length, with the time, the step and
+/// the estimated error; the states already observed stay valid.
+pub fn run_to_tolerance<F>(
+    sim: &mut SystemSimulation,
+    duration: f64,
+    control: StepControl,
+    mut observer: F,
+) -> Result<(bool, ControlledSteps), SolverError>
+where
+    F: FnMut(&SystemSimulation, &StepReport, RunProgress) -> ControlFlow<()>,
+{
+    let big = sim.time_step();
+    let intervals = step_count(duration, big);
+    let t0 = sim.time();
+    let mut stepper = Stepper::new(sim, control, big);
+    let mut interval_start = t0;
+    for k in 1..=intervals {
+        let end = interval_start + step_length(k, intervals, duration, big);
+        let report = stepper.cross(sim, end);
+        sim.set_time_step(big);
+        let report = report?;
+        interval_start = end;
+        if observer(
+            sim,
+            &report,
+            RunProgress {
+                step: k,
+                steps: intervals,
+            },
+        )
+        .is_break()
+        {
+            return Ok((false, stepper.steps));
+        }
+    }
+    Ok((true, stepper.steps))
+}
+
+/// The control's state across intervals: the next step's length and how
+/// the steps went.
+struct Stepper {
+    control: StepControl,
+    big: f64,
+    next: f64,
+    watch: crate::integrator::EnergyWatch,
+    steps: ControlledSteps,
+}
+
+impl Stepper {
+    fn new(sim: &SystemSimulation, control: StepControl, big: f64) -> Self {
+        Stepper {
+            control,
+            big,
+            next: big,
+            watch: sim.energy_watch(),
+            steps: ControlledSteps::default(),
+        }
+    }
+
+    /// Steps `sim` to `end` exactly; the report of the last step with the
+    /// Newton iterations of all (whole steps and halves) summed.
+    fn cross(&mut self, sim: &mut SystemSimulation, end: f64) -> Result<StepReport, SolverError> {
+        let (mut iterations, mut factorizations) = (0, 0);
+        loop {
+            let left = end - sim.time();
+            let n = (left / self.next - 1e-9).ceil().max(1.0);
+            let dt = left / n;
+            let start = sim.clone();
+            let watch = self.watch.clone();
+            let (whole, halves) = self.doubled(sim, dt);
+            let tol = self.control.tolerance;
+            let (error, mut report) = match (whole, halves) {
+                (Ok((whole, w)), Ok(h)) => {
+                    iterations += w.newton.iterations + h.newton.iterations;
+                    factorizations += w.newton.factorizations + h.newton.factorizations;
+                    (force_difference(&whole, sim), h)
+                }
+                // The whole step failed where its halves did not: too long.
+                (Err(_), Ok(h)) => (f64::INFINITY, h),
+                (_, Err(e)) => {
+                    sim.clone_from(&start);
+                    self.watch = watch;
+                    if 0.25 * dt < MIN_STEP_FRACTION * self.big {
+                        return Err(e);
+                    }
+                    self.steps.rejected += 1;
+                    self.next = 0.25 * dt;
+                    continue;
+                }
+            };
+            if error > tol {
+                let shorter = next_step(dt, error, tol).min(0.5 * dt);
+                if shorter < MIN_STEP_FRACTION * self.big {
+                    return Err(too_short(sim, &report, error, tol, shorter));
+                }
+                sim.clone_from(&start);
+                self.watch = watch;
+                self.steps.rejected += 1;
+                self.next = shorter;
+                continue;
+            }
+            self.keep(dt, error);
+            if sim.time() >= end - 1e-9 * self.big {
+                report.newton.iterations = iterations;
+                report.newton.factorizations = factorizations;
+                return Ok(report);
+            }
+        }
+    }
+
+    /// A step of `dt` taken whole on a copy of `sim` and in two halves
+    /// on `sim` (the second half's report, the halves' iterations summed).
+    #[allow(clippy::type_complexity)]
+    fn doubled(
+        &mut self,
+        sim: &mut SystemSimulation,
+        dt: f64,
+    ) -> (
+        Result<(SystemSimulation, StepReport), SolverError>,
+        Result<StepReport, SolverError>,
+    ) {
+        let mut whole = sim.clone();
+        whole.set_time_step(dt);
+        let mut watch = self.watch.clone();
+        let halvings = sim.step_halvings();
+        let whole = watched_step(&mut whole, &mut watch, halvings).map(|r| (whole, r));
+        sim.set_time_step(0.5 * dt);
+        let halves = watched_step(sim, &mut self.watch, halvings).and_then(|a| {
+            let mut b = watched_step(sim, &mut self.watch, halvings)?;
+            b.newton.iterations += a.newton.iterations;
+            b.newton.factorizations += a.newton.factorizations;
+            Ok(b)
+        });
+        (whole, halves)
+    }
+
+    /// Books a kept step of `dt` (its halves) and chooses the next.
+    fn keep(&mut self, dt: f64, error: f64) {
+        let s = &mut self.steps;
+        s.accepted += 1;
+        s.shortest = if s.accepted == 1 {
+            dt
+        } else {
+            s.shortest.min(dt)
+        };
+        s.longest = s.longest.max(dt);
+        let tol = self.control.tolerance;
+        self.next = next_step(dt, error, tol).min(self.big);
+    }
+}
+
+fn too_short(
+    sim: &SystemSimulation,
+    report: &StepReport,
+    error: f64,
+    tol: f64,
+    shorter: f64,
+) -> SolverError {
+    SolverError {
+        kind: FailureKind::NotConverged,
+        time: sim.time(),
+        step: report.step,
+        residual: report.newton.residual,
+        iterations: report.newton.iterations,
+        detail: format!(
+            "the end forces' estimated error {error:.3e} is above the tolerance {tol:.3e} and \
+             needs a step of {shorter:.3e} s, below {MIN_STEP_FRACTION:e} of the step length \
+             (docs/method.md (M23c)); loosen the tolerance or look for a motion the lines \
+             cannot follow"
+        ),
+    }
+}
