@@ -25,6 +25,7 @@ mod external_loads;
 mod extreme_values;
 mod fast_farm;
 mod figures_and_vtk;
+mod force_tolerance;
 mod grading;
 mod hostile_inputs;
 mod hostile_scenarios;

@@ -68,12 +68,14 @@ impl StepControl {
     }
 }
 
-/// How a controlled run stepped.
+/// How a controlled run stepped. A step is checked whole and kept as its
+/// two halves (M23c): its length is the whole's.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ControlledSteps {
     /// Steps kept.
     pub accepted: usize,
-    /// Steps undone for their error and taken again shorter.
+    /// Steps taken again shorter (their error above the tolerance, or
+    /// their halves not converged).
     pub rejected: usize,
     /// The shortest and the longest step kept (s).
     pub shortest: f64,

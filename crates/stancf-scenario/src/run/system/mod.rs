@@ -427,6 +427,11 @@ fn step_through(
     if outcome.steps > last_written {
         writers.write(&dynamic_row(sim, Some(sc.end_forces)))?;
     }
+    if let Some(c) = controlled {
+        // The steps the tolerance kept (each taken whole and in halves),
+        // not the intervals written.
+        outcome.steps = c.accepted;
+    }
     Ok(())
 }
 
