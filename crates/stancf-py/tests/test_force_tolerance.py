@@ -1,5 +1,5 @@
 """Steps chosen by a tolerance on the end forces from Python
-(`analysis.force_tolerance`, docs/method.md §11.18): the jumper example
+(`analysis.force_tolerance`, docs/method.md §11.17): the jumper example
 over its first 40 s, against fixed steps of 0.05 s (forces at t)."""
 
 from pathlib import Path
@@ -33,6 +33,6 @@ def test_a_tighter_force_tolerance_lands_closer_to_fine_fixed_steps():
         errors.append((np.max(np.abs(top_tension(res) - top_tension(fine))), control["steps"]))
     # 100 times tighter: more steps, each with a smaller local error, and
     # closer (measured: 167 N in 20 steps, 25 N in 63; the top tension is
-    # about 45 kN: 0.37 and 5.5 times the tolerance, docs/method.md §11.18).
+    # about 45 kN: 0.37 and 5.5 times the tolerance, docs/method.md §11.17).
     assert errors[1][1] > errors[0][1], errors
     assert errors[1][0] < errors[0][0], errors

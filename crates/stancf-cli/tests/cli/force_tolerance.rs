@@ -1,5 +1,5 @@
 //! `[analysis] force_tolerance` (docs/interface.md, docs/method.md
-//! §11.18): a system's steps chosen by a tolerance on its end forces,
+//! §11.17): a system's steps chosen by a tolerance on its end forces,
 //! from a scenario; refused by name where it cannot be.
 
 use crate::common::{

@@ -60,7 +60,7 @@ pub struct Analysis {
     /// many levels deep (docs/method.md §11.13; 0: fail at once).
     pub step_halvings: u32,
     /// A system's steps chosen by this tolerance on the end forces'
-    /// estimated error (docs/method.md §11.18, (M23c)), `time_step` the
+    /// estimated error (docs/method.md §11.17, (M23c)), `time_step` the
     /// first and largest; None: every step `time_step`.
     pub force_tolerance: Option<f64>,
 }

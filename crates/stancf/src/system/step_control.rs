@@ -1,5 +1,5 @@
 //! A run whose steps are chosen by a tolerance on the end forces
-//! (docs/method.md §11.18): the run is written at the multiples of its
+//! (docs/method.md §11.17): the run is written at the multiples of its
 //! step length, as [`super::run`] writes it, and each such interval is
 //! crossed in as many equal steps as the tolerance needs; the step length
 //! is the first and the largest step.

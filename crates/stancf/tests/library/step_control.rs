@@ -1,4 +1,4 @@
-//! Steps chosen by a tolerance on the end forces (docs/method.md §11.18,
+//! Steps chosen by a tolerance on the end forces (docs/method.md §11.17,
 //! (M23c)): step doubling on the Galerkin step's end forces at t.
 
 use crate::common::rope_systems::three_to_a_point_stepped;
