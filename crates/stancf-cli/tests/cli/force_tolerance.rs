@@ -13,14 +13,7 @@ use crate::common::{
 fn the_jumper_example_runs_in_steps_chosen_by_its_force_tolerance() {
     let dir = scratch("force-tolerance");
     let text = std::fs::read_to_string(repo_file("examples/jumper-tolerance.toml")).unwrap();
-    let text = text
-        .replace(
-            "jumper-moordyn.txt",
-            &repo_file("examples/jumper-moordyn.txt")
-                .display()
-                .to_string(),
-        )
-        .replace("duration = 107.0", "duration = 30.0");
+    let text = text.replace("duration = 107.0", "duration = 30.0");
     let mut runs = Vec::new();
     for tol in ["1e-2", "1e-3"] {
         let scenario = write_scenario(
@@ -68,14 +61,7 @@ fn the_jumper_example_runs_in_steps_chosen_by_its_force_tolerance() {
 
 #[test]
 fn a_force_tolerance_is_refused_where_it_cannot_choose_steps() {
-    let jumper = std::fs::read_to_string(repo_file("examples/jumper-tolerance.toml"))
-        .unwrap()
-        .replace(
-            "jumper-moordyn.txt",
-            &repo_file("examples/jumper-moordyn.txt")
-                .display()
-                .to_string(),
-        );
+    let jumper = std::fs::read_to_string(repo_file("examples/jumper-tolerance.toml")).unwrap();
     expect_input_error(
         "tolerance-p2",
         &jumper.replace(
