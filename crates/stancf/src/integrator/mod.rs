@@ -103,6 +103,9 @@ pub struct Simulation {
     /// extrapolating predictor; valid when `last_dt` is the current step.
     last_slopes: Vec<f64>,
     last_dt: Option<f64>,
+    /// A cubic in time the next step's predictor takes instead of the
+    /// last step's (a doubled step's whole, for its first half; §11.17).
+    guide: Option<TimeCubic>,
     start: StepStart,
     x: Vec<f64>,
     /// The step's predicted unknowns, kept while a system's lines are
@@ -308,4 +311,36 @@ impl Simulation {
         self.scales = Scales::new(&self.model, &self.layout, h);
         self.workspace.factors_valid = false;
     }
+}
+
+/// A step's motion as the cubic of eq. (6) in time of every coordinate:
+/// its end values e0, e1, its end slopes de/dt w0, w1, its length and
+/// its start time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TimeCubic {
+    e0: Vec<f64>,
+    w0: Vec<f64>,
+    e1: Vec<f64>,
+    w1: Vec<f64>,
+    length: f64,
+    /// The time at its start.
+    t0: f64,
+}
+
+impl TimeCubic {
+    /// Coordinate g's value and rate at s (units of the cubic's length
+    /// from its start; s > 1 extrapolates).
+    fn at(&self, g: usize, s: f64) -> (f64, f64) {
+        let ends = [self.e0[g], self.w0[g], self.e1[g], self.w1[g]];
+        on_cubic(ends, self.length, s)
+    }
+}
+
+/// The value and rate at s of the cubic of eq. (6) of length `l` with
+/// end values and slopes `[e0, w0, e1, w1]` (slopes de/dt).
+pub(crate) fn on_cubic([e0, w0, e1, w1]: [f64; 4], l: f64, s: f64) -> (f64, f64) {
+    let [value, slope, _] = crate::shape::hermite3(s, 1.0);
+    let e = value[0] * e0 + value[1] * l * w0 + value[2] * e1 + value[3] * l * w1;
+    let v = (slope[0] * e0 + slope[2] * e1) / l + slope[1] * w0 + slope[3] * w1;
+    (e, v)
 }

@@ -170,6 +170,7 @@ impl Simulation {
             acceleration: vec![0.0; n],
             last_slopes: vec![0.0; 2 * n],
             last_dt: None,
+            guide: None,
             model,
             settings,
             time_rule,

@@ -3,7 +3,7 @@
 //! for the Galerkin step, the momentum carried to the next step; and the
 //! undo of the last step.
 
-use super::{Simulation, StepReport};
+use super::{on_cubic, Simulation, StepReport, TimeCubic};
 use crate::assembly::{AssemblyScratch, Kind, Scales, StepProblem};
 use crate::band::BandMatrix;
 use crate::constraints::ConstraintMethod;
@@ -31,45 +31,48 @@ impl NonlinearSystem for StepSystem<'_> {
 }
 
 impl Simulation {
-    /// Predictor (docs/method.md §4.8). After a converged step of the same
-    /// length: the last step's cubic in time (end values e, end slopes,
-    /// eq. 6) extrapolated over the new step, which is third order in dt
-    /// (a predictor error of O(dt^4) in e), so the corrector needs fewer
-    /// iterations. Otherwise (first step, after an undo or a change of
-    /// step): Taylor expansion with the last step's acceleration,
-    /// e(t_i) = e_a + tau v_a + tau^2 a / 2, v(t_i) = v_a + tau a.
-    /// Constrained coordinates take their prescribed values; the
-    /// multipliers keep their last values.
+    /// Predictor (docs/method.md §4.8). A guide cubic, where one is set
+    /// ([`Self::guide_next_step`]: a doubled step's whole, §11.17), is
+    /// evaluated over the step. Otherwise, after a converged step at
+    /// least half as long as this one: the last step's cubic in time (end
+    /// values e, end slopes, eq. 6) extrapolated over the new step, which
+    /// is third order in dt (a predictor error of O(dt^4) in e), so the
+    /// corrector needs fewer iterations. Otherwise (first step, after an
+    /// undo or after a much shorter step): Taylor expansion with the last
+    /// step's acceleration, e(t_i) = e_a + tau v_a + tau^2 a / 2,
+    /// v(t_i) = v_a + tau a. Constrained coordinates take their
+    /// prescribed values; the multipliers keep their last values.
     fn predict(&mut self) {
         let h = self.slab.dt;
-        let dt = self.settings.time_step;
         let n = self.model.dofs();
-        let extrapolate = self.last_dt == Some(dt);
+        // A guide is a cubic from this step's start (none other is taken).
+        let guide = self.guide.take().filter(|c| c.t0 == self.state.t);
+        let last = self.last_dt.filter(|&l| h <= 2.0 * l * (1.0 + 1e-12));
         for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
             let tau = h * i as f64;
-            // Hermite basis of the last step at s = 1 + tau / dt (eq. 6 in
-            // s, slopes per unit s).
-            let [value, slope, _] = crate::shape::hermite3(1.0 + tau / dt, 1.0);
             for g in 0..n {
                 let Some(u) = self.layout.unknown_at(slot, g) else {
                     continue;
+                };
+                let pick = |(e, v): (f64, f64)| match kind {
+                    Kind::Position => e,
+                    Kind::Velocity => v,
                 };
                 self.x[u] = if self.model.constraints.is_constrained(g) {
                     match kind {
                         Kind::Position => self.start.fixed_e[i * n + g],
                         Kind::Velocity => self.start.fixed_v[i * n + g],
                     }
-                } else if extrapolate {
-                    let (e0, e1) = (self.previous.state.e[g], self.state.e[g]);
-                    let (w0, w1) = (self.last_slopes[g], self.last_slopes[n + g]);
-                    match kind {
-                        Kind::Position => {
-                            value[0] * e0 + value[1] * dt * w0 + value[2] * e1 + value[3] * dt * w1
-                        }
-                        Kind::Velocity => {
-                            (slope[0] * e0 + slope[2] * e1) / dt + slope[1] * w0 + slope[3] * w1
-                        }
-                    }
+                } else if let Some(c) = &guide {
+                    pick(c.at(g, tau / c.length))
+                } else if let Some(l) = last {
+                    let ends = [
+                        self.previous.state.e[g],
+                        self.last_slopes[g],
+                        self.state.e[g],
+                        self.last_slopes[n + g],
+                    ];
+                    pick(on_cubic(ends, l, 1.0 + tau / l))
                 } else {
                     let (e, v, a) = (self.state.e[g], self.state.v[g], self.acceleration[g]);
                     match kind {
@@ -79,6 +82,31 @@ impl Simulation {
                 };
             }
         }
+    }
+
+    /// The last converged step's cubic in time (None before the first
+    /// step and after an undo).
+    pub fn last_cubic(&self) -> Option<TimeCubic> {
+        self.last_dt.map(|l| self.last_cubic_of(l))
+    }
+
+    fn last_cubic_of(&self, length: f64) -> TimeCubic {
+        let n = self.model.dofs();
+        TimeCubic {
+            e0: self.previous.state.e.clone(),
+            w0: self.last_slopes[..n].to_vec(),
+            e1: self.state.e.clone(),
+            w1: self.last_slopes[n..].to_vec(),
+            length,
+            t0: self.previous.state.t,
+        }
+    }
+
+    /// The next step's predictor evaluates `cubic` from its start (a
+    /// step over the same start, e.g. a doubled step's whole for its
+    /// first half, docs/method.md §11.17), once.
+    pub fn guide_next_step(&mut self, cubic: TimeCubic) {
+        self.guide = Some(cubic);
     }
 
     /// Returns to the state before the last converged step (once).

@@ -254,6 +254,14 @@ impl Stepper {
         let mut watch = self.watch.clone();
         let halvings = sim.step_halvings();
         let whole = watched_step(&mut whole, &mut watch, halvings).map(|r| (whole, r));
+        if let Ok((w, _)) = &whole {
+            // The first half starts from the whole step's cubic (§4.8).
+            for (line, done) in sim.lines.iter_mut().zip(&w.lines) {
+                if let Some(cubic) = done.last_cubic() {
+                    line.guide_next_step(cubic);
+                }
+            }
+        }
         sim.set_time_step(0.5 * dt);
         let halves = watched_step(sim, &mut self.watch, halvings).and_then(|a| {
             let mut b = watched_step(sim, &mut self.watch, halvings)?;
