@@ -49,6 +49,7 @@ mod mass;
 mod moordyn_start;
 mod network;
 mod pins;
+mod point_forces;
 mod point_terms;
 mod release;
 mod run;
