@@ -166,6 +166,12 @@ where
     Ok((true, stepper.steps))
 }
 
+/// A doubled step's whole: the copy it was taken on and its report.
+type Whole = Result<(SystemSimulation, StepReport), SolverError>;
+
+/// A doubled step's halves: the second half's report.
+type Halves = Result<StepReport, SolverError>;
+
 /// The control's state across intervals: the next step's length and how
 /// the steps went.
 struct Stepper {
@@ -240,15 +246,7 @@ impl Stepper {
 
     /// A step of `dt` taken whole on a copy of `sim` and in two halves
     /// on `sim` (the second half's report, the halves' iterations summed).
-    #[allow(clippy::type_complexity)]
-    fn doubled(
-        &mut self,
-        sim: &mut SystemSimulation,
-        dt: f64,
-    ) -> (
-        Result<(SystemSimulation, StepReport), SolverError>,
-        Result<StepReport, SolverError>,
-    ) {
+    fn doubled(&mut self, sim: &mut SystemSimulation, dt: f64) -> (Whole, Halves) {
         let mut whole = sim.clone();
         whole.set_time_step(dt);
         let mut watch = self.watch.clone();

@@ -385,7 +385,7 @@ fn step_through(
         outcome.iterations += rep.newton.iterations;
         outcome.t = times.time(sim.time());
         outcome.record_step_tensions(sim, sc.end_forces);
-        if at.step % sc.output_every == 0 || at.is_last() {
+        if at.step.is_multiple_of(sc.output_every) || at.is_last() {
             let mut row = dynamic_row(sim, Some(sc.end_forces));
             row.iterations = rep.newton.iterations;
             row.residual = rep.newton.residual;
