@@ -33,13 +33,13 @@ impl NonlinearSystem for StepSystem<'_> {
 impl Simulation {
     /// Predictor (docs/method.md §4.8). A guide cubic, where one is set
     /// ([`Self::guide_next_step`]: a doubled step's whole, §11.17), is
-    /// evaluated over the step. Otherwise, after a converged step at
-    /// least half as long as this one: the last step's cubic in time (end
-    /// values e, end slopes, eq. 6) extrapolated over the new step, which
-    /// is third order in dt (a predictor error of O(dt^4) in e), so the
-    /// corrector needs fewer iterations. Otherwise (first step, after an
-    /// undo or after a much shorter step): Taylor expansion with the last
-    /// step's acceleration, e(t_i) = e_a + tau v_a + tau^2 a / 2,
+    /// evaluated over the step. Otherwise, after a converged step of the
+    /// same length: the last step's cubic in time (end values e, end
+    /// slopes, eq. 6) extrapolated over the new step, which is third order
+    /// in dt (a predictor error of O(dt^4) in e), so the corrector needs
+    /// fewer iterations. Otherwise (first step, after an undo or a change
+    /// of step): Taylor expansion with the last step's acceleration,
+    /// e(t_i) = e_a + tau v_a + tau^2 a / 2,
     /// v(t_i) = v_a + tau a. Constrained coordinates take their
     /// prescribed values; the multipliers keep their last values.
     fn predict(&mut self) {
@@ -47,7 +47,11 @@ impl Simulation {
         let n = self.model.dofs();
         // A guide is a cubic from this step's start (none other is taken).
         let guide = self.guide.take().filter(|c| c.t0 == self.state.t);
-        let last = self.last_dt.filter(|&l| h <= 2.0 * l * (1.0 + 1e-12));
+        // Extrapolated over a step of the same length only: over a longer
+        // one the cubic of a short step (a halved one's) can carry Newton
+        // to a root that is not the motion's (an energy jump; the rope
+        // swung in tests/cli/moordyn_out.rs did).
+        let last = self.last_dt.filter(|&l| l == self.settings.time_step);
         for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
             let tau = h * i as f64;
             for g in 0..n {

@@ -20,13 +20,15 @@
 //! step) the two differ by about what each is off. Estimates from one
 //! step's smoothness (the last step's force cubic extrapolated, the jump
 //! between two steps' cubics at their common end) were tried on the
-//! jumper of the README and missed that second case by 30 to 100 times.
+//! jumper of examples/jumper-tolerance.toml and missed that second case
+//! by about 40 times.
 //! A step is kept when err is within the tolerance; otherwise it is taken
 //! again shorter. The next step is `0.9 (tol / err)^(1/4)` times this
 //! one, at most twice and at least a fifth, never longer than the step
 //! length and never past the interval's end. A step costs three solves
 //! (whole and halves) and advances as two halves do: 1.5 times the cost
-//! of a fixed step of its half.
+//! of a fixed step of its half, less for the first half, which starts
+//! from the whole step's cubic (§4.8).
 
 use super::run::{watched_step, RunProgress};
 use super::SystemSimulation;
