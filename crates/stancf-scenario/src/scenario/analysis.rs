@@ -448,45 +448,43 @@ fn force_tolerance(ctx: &Ctx, t: f64, kind: AnalysisKind) -> Result<f64, Scenari
 /// scheme: its rows give the end forces over a step (docs/method.md
 /// (M23b)), P2's do not.
 fn galerkin_for_tolerance(ctx: &Ctx, raw: &mut Option<RawAnalysis>) -> Result<(), ScenarioError> {
-    let ra = raw.get_or_insert_with(RawAnalysis::default);
-    match ra.time_scheme.as_deref() {
-        Some("p2") => Err(ctx.err(
-            "analysis.time_scheme",
-            "\"p2\" with analysis.force_tolerance: steps chosen by a tolerance need the \
-             Galerkin step, whose rows give the end forces over a step (docs/method.md (M23b)); \
-             leave time_scheme out, or give \"galerkin\"",
-        )),
-        Some(_) => Ok(()),
-        None => {
-            if ra.time_layers.is_some_and(|n| n > 1) {
-                return Err(ctx.err(
-                    "analysis.time_layers",
-                    "steps chosen by analysis.force_tolerance are Galerkin steps, one layer \
-                     each",
-                ));
-            }
-            ra.time_scheme = Some("galerkin".into());
-            Ok(())
-        }
-    }
+    galerkin_required(
+        ctx,
+        raw,
+        "\"p2\" with analysis.force_tolerance: steps chosen by a tolerance need the Galerkin \
+         step, whose rows give the end forces over a step (docs/method.md (M23b)); leave \
+         time_scheme out, or give \"galerkin\"",
+        "steps chosen by analysis.force_tolerance are Galerkin steps, one layer each",
+    )
 }
 
 fn galerkin_for_bodies(ctx: &Ctx, raw: &mut Option<RawAnalysis>) -> Result<(), ScenarioError> {
+    galerkin_required(
+        ctx,
+        raw,
+        "\"p2\": a system with a free body is stepped by the Galerkin scheme (the P2 step of \
+         bodies in a system is not built); leave time_scheme out, or give \"galerkin\"",
+        "a system with a free body is stepped by the Galerkin scheme, which takes one layer \
+         per step",
+    )
+}
+
+/// The Galerkin scheme where a scenario needs it: "p2" is refused with
+/// `why_p2`, more than one time layer with `why_layers`, and an absent
+/// `time_scheme` becomes "galerkin".
+fn galerkin_required(
+    ctx: &Ctx,
+    raw: &mut Option<RawAnalysis>,
+    why_p2: &str,
+    why_layers: &str,
+) -> Result<(), ScenarioError> {
     let ra = raw.get_or_insert_with(RawAnalysis::default);
     match ra.time_scheme.as_deref() {
-        Some("p2") => Err(ctx.err(
-            "analysis.time_scheme",
-            "\"p2\": a system with a free body is stepped by the Galerkin scheme (the P2 step \
-             of bodies in a system is not built); leave time_scheme out, or give \"galerkin\"",
-        )),
+        Some("p2") => Err(ctx.err("analysis.time_scheme", why_p2)),
         Some(_) => Ok(()),
         None => {
             if ra.time_layers.is_some_and(|n| n > 1) {
-                return Err(ctx.err(
-                    "analysis.time_layers",
-                    "a system with a free body is stepped by the Galerkin scheme, which takes \
-                     one layer per step",
-                ));
+                return Err(ctx.err("analysis.time_layers", why_layers));
             }
             ra.time_scheme = Some("galerkin".into());
             Ok(())

@@ -328,19 +328,33 @@ pub struct TimeCubic {
 }
 
 impl TimeCubic {
-    /// Coordinate g's value and rate at s (units of the cubic's length
-    /// from its start; s > 1 extrapolates).
-    fn at(&self, g: usize, s: f64) -> (f64, f64) {
-        let ends = [self.e0[g], self.w0[g], self.e1[g], self.w1[g]];
-        on_cubic(ends, self.length, s)
+    /// Coordinate g's value and rate at the point of `basis`.
+    fn at(&self, g: usize, basis: &CubicBasis) -> (f64, f64) {
+        basis.on([self.e0[g], self.w0[g], self.e1[g], self.w1[g]])
     }
 }
 
-/// The value and rate at s of the cubic of eq. (6) of length `l` with
-/// end values and slopes `[e0, w0, e1, w1]` (slopes de/dt).
-pub(crate) fn on_cubic([e0, w0, e1, w1]: [f64; 4], l: f64, s: f64) -> (f64, f64) {
-    let [value, slope, _] = crate::shape::hermite3(s, 1.0);
-    let e = value[0] * e0 + value[1] * l * w0 + value[2] * e1 + value[3] * l * w1;
-    let v = (slope[0] * e0 + slope[2] * e1) / l + slope[1] * w0 + slope[3] * w1;
-    (e, v)
+/// The cubic of eq. (6) of length `l` evaluated at s (units of its
+/// length from its start; s > 1 extrapolates): the Hermite values and
+/// slopes there, computed once for every coordinate.
+pub(crate) struct CubicBasis {
+    value: [f64; 4],
+    slope: [f64; 4],
+    l: f64,
+}
+
+impl CubicBasis {
+    pub(crate) fn new(l: f64, s: f64) -> Self {
+        let [value, slope, _] = crate::shape::hermite3(s, 1.0);
+        CubicBasis { value, slope, l }
+    }
+
+    /// The value and rate of the cubic with end values and slopes
+    /// `[e0, w0, e1, w1]` (slopes de/dt).
+    pub(crate) fn on(&self, [e0, w0, e1, w1]: [f64; 4]) -> (f64, f64) {
+        let (value, slope, l) = (&self.value, &self.slope, self.l);
+        let e = value[0] * e0 + value[1] * l * w0 + value[2] * e1 + value[3] * l * w1;
+        let v = (slope[0] * e0 + slope[2] * e1) / l + slope[1] * w0 + slope[3] * w1;
+        (e, v)
+    }
 }

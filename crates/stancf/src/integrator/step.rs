@@ -3,7 +3,7 @@
 //! for the Galerkin step, the momentum carried to the next step; and the
 //! undo of the last step.
 
-use super::{on_cubic, Simulation, StepReport, TimeCubic};
+use super::{CubicBasis, Simulation, StepReport, TimeCubic};
 use crate::assembly::{AssemblyScratch, Kind, Scales, StepProblem};
 use crate::band::BandMatrix;
 use crate::constraints::ConstraintMethod;
@@ -54,6 +54,10 @@ impl Simulation {
         let last = self.last_dt.filter(|&l| l == self.settings.time_step);
         for (slot, &(i, kind)) in self.layout.unknown_slots.iter().enumerate() {
             let tau = h * i as f64;
+            let guided = guide
+                .as_ref()
+                .map(|c| CubicBasis::new(c.length, tau / c.length));
+            let extrapolated = last.map(|l| CubicBasis::new(l, 1.0 + tau / l));
             for g in 0..n {
                 let Some(u) = self.layout.unknown_at(slot, g) else {
                     continue;
@@ -67,16 +71,15 @@ impl Simulation {
                         Kind::Position => self.start.fixed_e[i * n + g],
                         Kind::Velocity => self.start.fixed_v[i * n + g],
                     }
-                } else if let Some(c) = &guide {
-                    pick(c.at(g, tau / c.length))
-                } else if let Some(l) = last {
-                    let ends = [
+                } else if let (Some(c), Some(basis)) = (&guide, &guided) {
+                    pick(c.at(g, basis))
+                } else if let Some(basis) = &extrapolated {
+                    pick(basis.on([
                         self.previous.state.e[g],
                         self.last_slopes[g],
                         self.state.e[g],
                         self.last_slopes[n + g],
-                    ];
-                    pick(on_cubic(ends, l, 1.0 + tau / l))
+                    ]))
                 } else {
                     let (e, v, a) = (self.state.e[g], self.state.v[g], self.acceleration[g]);
                     match kind {

@@ -1,6 +1,7 @@
 //! The forces of the line ends on their points: the step means of (M23)
-//! (docs/method.md §6.5, §11.4), and their second-order estimate at the
-//! end of a step (M23a).
+//! (docs/method.md §6.5, §11.4), and their value at the end of a step:
+//! from the Galerkin step's own four moments of the force (M23b,
+//! [`force_at_end`]), or for P2 the second-order estimate (M23a) below.
 //!
 //! A step's reaction is an impulse, so what it gives is the *mean* end
 //! force over the step, R_k = (1/dt_k) int R dt, which is the force at the
@@ -176,8 +177,9 @@ impl ForcesAtTime {
     }
 
     /// Takes a Galerkin step of length `dt` just converged: its end
-    /// forces at its end from its own moments (M23b), and its means for
-    /// a P2 step after it (M23a).
+    /// forces at its end from its own moments (M23b); its means and
+    /// length are kept as [`Self::update`] keeps them, so the history
+    /// stays that of the steps taken.
     pub(super) fn set_at_end(&mut self, mean: &[[EndForce; 2]], at_end: &[[EndForce; 2]], dt: f64) {
         self.at_time.copy_from_slice(at_end);
         self.previous_mean.copy_from_slice(mean);
