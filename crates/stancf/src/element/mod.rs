@@ -46,6 +46,7 @@
 
 mod added_mass;
 mod axial_curve;
+mod contact_rule;
 mod curvature;
 mod damping;
 mod drag;
@@ -167,6 +168,11 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     /// The NS Gauss points that integrate the mass matrix exactly; the
     /// added mass's rule (docs/method.md §12.5, (W28)).
     mass_points: Vec<SpacePoint<NS>>,
+    /// The Gauss rule exact for the seabed's push on a plane bed, degree
+    /// 3 (NS - 1) along the element (docs/method.md §12.2, (W47a)): its
+    /// points on [0, 1], and its (x, w) to map onto a piece in the bed.
+    bed_points: Vec<SpacePoint<NS>>,
+    bed_rule: GaussRule,
     /// Consistent mass matrix per coordinate direction,
     /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
     /// (docs/method.md §2.1, (M2)).
@@ -287,6 +293,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 .collect()
         };
         let exact = GaussRule::new(NS).expect("NS <= 10");
+        // m points are exact to degree 2 m - 1 >= 3 (NS - 1).
+        let bed_rule = GaussRule::new((3 * (NS - 1) + 1).div_ceil(2)).expect("NS <= 6");
         let mut mass = [[0.0; NS]; NS];
         let mut weight_integrals = [0.0; NS];
         for (xi, w) in exact.iter() {
@@ -305,6 +313,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             axial_points: at(&rules.axial),
             bending_points: at(&rules.bending),
             mass_points: at(&exact),
+            bed_points: at(&bed_rule),
+            bed_rule,
             mass,
             weight_integrals,
             shape,

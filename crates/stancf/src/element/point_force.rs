@@ -4,9 +4,19 @@
 //! the water (§12.3-12.4).
 
 use super::slab::SlabDerivatives;
-use super::CableElement;
+use super::{CableElement, SpacePoint};
 use crate::shape::SpatialShape;
-use crate::water::ForceAtPoint;
+use crate::water::seabed::Part;
+use crate::water::{ForceAtPoint, SeabedContact};
+
+/// Where a force per length is integrated along an element: at the
+/// points of its axial rule, or where it is in the bed (the seabed's
+/// contact, split at the touchdown, (W47a)).
+#[derive(Clone, Copy, Debug)]
+pub enum Along<'a> {
+    AxialRule,
+    InTheBed(&'a SeabedContact),
+}
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// A force per unit length `force(xi, r, r_x, r_dot, derivatives)` (xi:
@@ -21,8 +31,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     ///   C_g += sum_s w_s l N_k N_l df/dr_dot
     ///   G_g += sum_s w_s l N_k (N_l df/dr + N_x,l df/dr_x)
     /// ```
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn slab_force_per_length(
         &self,
+        along: Along,
         w_dt: f64,
         (q, qdot): (&[f64; ND], &[f64; ND]),
         hessian_at: Option<usize>,
@@ -31,7 +43,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         force: impl Fn(f64, &[f64; 3], &[f64; 3], &[f64; 3], bool) -> ForceAtPoint,
     ) -> f64 {
         let mut work = 0.0;
-        for p in &self.axial_points {
+        self.for_each_point(along, q, |p| {
             let r = position(&p.shape, q);
             let rdot = position(&p.shape, qdot);
             let (rx, _) = p.shape.gradients(q);
@@ -43,7 +55,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 None => f.force == [0.0; 3],
             };
             if nothing {
-                continue;
+                return;
             }
             work += w_dt * p.wl * (0..3).map(|i| f.force[i] * rdot[i]).sum::<f64>();
             for k in 0..NS {
@@ -55,8 +67,16 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 let (c, g) = (&mut out.c_at_points[gi], &mut out.g_at_points[gi]);
                 add_point_derivatives(&p.shape, p.wl, &f, c, g);
             }
-        }
+        });
         work
+    }
+
+    /// Calls `visit` at the points `along` says, for coordinates `q`.
+    fn for_each_point(&self, along: Along, q: &[f64; ND], visit: impl FnMut(&SpacePoint<NS>)) {
+        match along {
+            Along::AxialRule => self.axial_points.iter().for_each(visit),
+            Along::InTheBed(contact) => self.for_each_contact_point(contact, q, visit),
+        }
     }
 
     /// The generalized force `f_q,k = sum_s w_s l N_k f` of a force per
@@ -72,6 +92,34 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         self.generalized_force_at_points(q, qdot, |(_, xi), r, rx, rdot| {
             force(xi, r, rx, rdot).force
         })
+    }
+
+    /// [`Self::generalized_force_per_length`] of the seabed's contact
+    /// force, `force(part, r, r_x, rate)`, integrated as the slab and the
+    /// static rows integrate it: the push exactly where the element is in
+    /// the bed, the friction at the axial rule (W47a).
+    pub(crate) fn generalized_seabed_force(
+        &self,
+        contact: &SeabedContact,
+        q: &[f64; ND],
+        rates: &[f64; ND],
+        force: impl Fn(Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+    ) -> [f64; ND] {
+        let mut fq = [0.0; ND];
+        for (along, part) in seabed_parts(contact) {
+            self.for_each_point(along, q, |p| {
+                let r = position(&p.shape, q);
+                let rate = position(&p.shape, rates);
+                let (rx, _) = p.shape.gradients(q);
+                let f = force(part, &r, &rx, &rate).force;
+                for k in 0..NS {
+                    for i in 0..3 {
+                        fq[3 * k + i] += p.wl * p.shape.n[k] * f[i];
+                    }
+                }
+            });
+        }
+        fq
     }
 
     /// [`Self::generalized_force_per_length`] of a force per unit length
@@ -104,6 +152,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// its derivative from `hess`.
     pub(super) fn add_static_force_per_length(
         &self,
+        along: Along,
         factor: f64,
         (q, seed): (&[f64; ND], &[f64; ND]),
         grad: &mut [f64; ND],
@@ -111,13 +160,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         force: impl Fn(&[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
     ) {
         let mut unused = [[0.0; ND]; ND];
-        for p in &self.axial_points {
+        self.for_each_point(along, q, |p| {
             let r = position(&p.shape, q);
             let r0 = position(&p.shape, seed);
             let (rx, _) = p.shape.gradients(q);
             let f = force(&r, &rx, &r0);
             if f == ForceAtPoint::default() {
-                continue;
+                return;
             }
             for k in 0..NS {
                 for i in 0..3 {
@@ -133,12 +182,12 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                     }
                 }
             }
-        }
+        });
     }
 }
 
 /// r = sum_k N_k q_k at a spatial point.
-fn position<const NS: usize>(shape: &SpatialShape<NS>, q: &[f64]) -> [f64; 3] {
+pub(super) fn position<const NS: usize>(shape: &SpatialShape<NS>, q: &[f64]) -> [f64; 3] {
     let mut r = [0.0; 3];
     for k in 0..NS {
         for (i, ri) in r.iter_mut().enumerate() {
@@ -171,4 +220,13 @@ fn add_point_derivatives<const NS: usize, const ND: usize>(
             }
         }
     }
+}
+
+/// Where each part of the seabed's contact force is integrated (W47a):
+/// the push exactly in the bed, the friction (if any) at the axial rule.
+pub(super) fn seabed_parts(contact: &SeabedContact) -> impl Iterator<Item = (Along<'_>, Part)> {
+    let friction = contact.seabed.has_friction();
+    [(Along::InTheBed(contact), Part::Normal)]
+        .into_iter()
+        .chain(friction.then_some((Along::AxialRule, Part::Friction)))
 }

@@ -6,6 +6,7 @@
 //! C_g, G_g of its exact Jacobian, and its static form (buoyancy and the
 //! steady current).
 
+use super::point_force::Along;
 use super::slab::SlabDerivatives;
 use super::CableElement;
 use crate::water::{ElementFlow, LineInWater};
@@ -28,10 +29,15 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         fq: &mut [f64; ND],
         out: &mut SlabDerivatives<ND>,
     ) {
-        out.water_work +=
-            self.slab_force_per_length(w_dt, state, hessian_at, fq, out, |xi, r, rx, rdot, d| {
-                water.force_at(r, rx, rdot, t, gravity, d, host.map(|h| h.at(xi)))
-            });
+        out.water_work += self.slab_force_per_length(
+            Along::AxialRule,
+            w_dt,
+            state,
+            hessian_at,
+            fq,
+            out,
+            |xi, r, rx, rdot, d| water.force_at(r, rx, rdot, t, gravity, d, host.map(|h| h.at(xi))),
+        );
     }
 
     /// The water on a line at rest (docs/method.md §12.4): subtracts
@@ -46,8 +52,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         grad: &mut [f64; ND],
         hess: Option<&mut [[f64; ND]; ND]>,
     ) {
-        self.add_static_force_per_length(factor, (q, q), grad, hess, |r, rx, _| {
-            water.static_force(r, rx, gravity)
-        });
+        self.add_static_force_per_length(
+            Along::AxialRule,
+            factor,
+            (q, q),
+            grad,
+            hess,
+            |r, rx, _| water.static_force(r, rx, gravity),
+        );
     }
 }

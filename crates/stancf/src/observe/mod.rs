@@ -6,6 +6,7 @@
 use crate::element::{axial_strain, curvature, CableElement};
 use crate::model::{coordinate, gather, Model, State, SLOT_R};
 use crate::shape::{cubic_hermite, quintic_hermite};
+use crate::water::seabed::Part;
 
 mod line_outputs;
 pub use line_outputs::{
@@ -445,8 +446,8 @@ pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
     let Some(contact) = &model.seabed else {
         return vec![[0.0; 3]; model.nodes()];
     };
-    nodal_forces_per_length(model, &state.e, &state.v, |_, r, rx, rdot| {
-        contact.force(r, rx, rdot)
+    seabed_forces_per_length(model, contact, &state.e, &state.v, |part, r, rx, rdot| {
+        contact.part_at(part, r, rx, rdot, true)
     })
 }
 
@@ -461,9 +462,32 @@ pub fn static_seabed_nodal_forces(model: &Model, state: &State, targets: &[f64])
     // The slide r - r_0 is linear in the coordinates: interpolated from
     // e - e_0 as a velocity is from v.
     let slide: Vec<f64> = state.e.iter().zip(targets).map(|(e, e0)| e - e0).collect();
-    nodal_forces_per_length(model, &state.e, &slide, |_, r, rx, slide| {
-        contact.static_force(r, rx, slide)
+    seabed_forces_per_length(model, contact, &state.e, &slide, |part, r, rx, slide| {
+        contact.static_part(part, r, rx, slide)
     })
+}
+
+/// [`nodal_forces_per_length`] of the bed's contact force `force(part,
+/// r, r_x, rate)`, integrated as the slab and the static rows integrate
+/// it (W47a).
+fn seabed_forces_per_length(
+    model: &Model,
+    contact: &crate::water::SeabedContact,
+    e: &[f64],
+    rates: &[f64],
+    force: impl Fn(Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
+) -> Vec<[f64; 3]> {
+    let mut out = vec![[0.0; 3]; model.nodes()];
+    let dpn = model.dofs_per_node();
+    crate::with_elements!(&model.mesh, els => {
+        for (k, el) in els.iter().enumerate() {
+            let o = coordinate(dpn, k, SLOT_R, 0);
+            let (q, qdot) = (gather(e, o), gather(rates, o));
+            let fq = el.generalized_seabed_force(contact, &q, &qdot, force);
+            add_to_end_nodes(&mut out, k, &fq);
+        }
+    });
+    out
 }
 
 /// `sum_e int N_k f dx` on the nodes' positions of a force per length

@@ -208,6 +208,17 @@ enum Sliding {
     Position,
 }
 
+/// Which part of the contact force: the whole, the normal push with its
+/// damping (W42), or the friction (W44). The element integrates the
+/// first exactly where it is in the bed and the second at its axial rule
+/// (docs/method.md §12.2, (W47a)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Part {
+    Whole,
+    Normal,
+    Friction,
+}
+
 /// P(g), P'(g) = S(g) and P''(g) = S'(g) of (W40)-(W41).
 fn smoothed_penetration(g: f64, delta: f64) -> (f64, f64, f64) {
     if g <= 0.0 {
@@ -266,8 +277,20 @@ impl SeabedContact {
         rdot: &[f64; 3],
         derivatives: bool,
     ) -> ForceAtPoint {
+        self.part_at(Part::Whole, r, rx, rdot, derivatives)
+    }
+
+    /// [`Self::force_at`]'s `part`.
+    pub(crate) fn part_at(
+        &self,
+        part: Part,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        rdot: &[f64; 3],
+        derivatives: bool,
+    ) -> ForceAtPoint {
         let slide = (rdot, self.seabed.slip_velocity);
-        self.force_with(r, rx, rdot, slide, Sliding::Velocity, derivatives)
+        self.force_with(part, (r, rx, rdot), slide, Sliding::Velocity, derivatives)
     }
 
     /// The contact force on a line at rest whose point at `r` has slid by
@@ -278,8 +301,20 @@ impl SeabedContact {
     /// once it has moved by a few u_s. The derivatives in r include the
     /// slide's (d slide / dr = I); d_rdot is zero.
     pub fn static_force(&self, r: &[f64; 3], rx: &[f64; 3], slide: &[f64; 3]) -> ForceAtPoint {
+        self.static_part(Part::Whole, r, rx, slide)
+    }
+
+    /// [`Self::static_force`]'s `part`.
+    pub(crate) fn static_part(
+        &self,
+        part: Part,
+        r: &[f64; 3],
+        rx: &[f64; 3],
+        slide: &[f64; 3],
+    ) -> ForceAtPoint {
         let slide = (slide, self.static_slip());
-        let mut out = self.force_with(r, rx, &[0.0; 3], slide, Sliding::Position, true);
+        let at_rest = (r, rx, &[0.0; 3]);
+        let mut out = self.force_with(part, at_rest, slide, Sliding::Position, true);
         out.d_rdot = [[0.0; 3]; 3];
         out
     }
@@ -291,9 +326,8 @@ impl SeabedContact {
     /// when `derivatives`.
     fn force_with(
         &self,
-        r: &[f64; 3],
-        rx: &[f64; 3],
-        rdot: &[f64; 3],
+        part: Part,
+        (r, rx, rdot): (&[f64; 3], &[f64; 3], &[f64; 3]),
         (slide, slip): (&[f64; 3], f64),
         sliding: Sliding,
         derivatives: bool,
@@ -309,8 +343,10 @@ impl SeabedContact {
         }
         let vn = dot(n, rdot);
         let normal = d * (bed.stiffness * p - bed.damping * s * vn);
-        out.force = n.map(|c| normal * c);
-        if derivatives {
+        if part != Part::Friction {
+            out.force = n.map(|c| normal * c);
+        }
+        if derivatives && part != Part::Friction {
             // dN/dr = d (k S - c S' v_n) dg/dr - d c S r_dot^T dn/dr and
             // df/dr = n dN/dr + N dn/dr ((W45), (W46a)).
             let by_depth = d * (bed.stiffness * s - bed.damping * ds * vn);
@@ -323,7 +359,7 @@ impl SeabedContact {
             add_scaled(&mut out.d_r, normal, dn);
             add_scaled(&mut out.d_rdot, -d * bed.damping * s, &outer(&n, &n));
         }
-        if bed.has_friction() {
+        if bed.has_friction() && part != Part::Normal {
             let normal = (d * bed.stiffness * p, d * bed.stiffness * s);
             let slide = (slide, slip);
             self.add_friction(

@@ -407,3 +407,23 @@ fn a_chain_longer_than_its_path_can_hold_is_refused_by_the_static_solve() {
     let ok = anchored_to_the_fairlead(seed_chain(LENGTH));
     assert!(SystemStatics::seeded(ok.clone(), &ok, StaticSettings::default()).is_ok());
 }
+
+/// The seabed's push integrated exactly on the pieces of each element in
+/// the bed (docs/method.md §12.2, (W47a)-(W47c)): the chain's static
+/// fairlead force H_F converges at fourth order in the element length,
+/// the order of its cubic elements, from 40 to 160 elements (two halvings:
+/// the error must fall by more than 4^3 = 64; measured 250). The axial
+/// rule across the touchdown's kink fell by 28, its error changing sign
+/// with where the touchdown falls between its points. The reference is
+/// the same solve at 640 elements.
+#[test]
+fn touchdown_quadrature_converges_at_the_elements_order() {
+    let reference = chain_on_the_bed(640, 0.0).hf;
+    let error = |n: usize| ((chain_on_the_bed(n, 0.0).hf - reference) / reference).abs();
+    let (coarse, fine) = (error(40), error(160));
+    eprintln!("H_F error: 40 elements {coarse:.2e}, 160 elements {fine:.2e}");
+    assert!(
+        coarse > 64.0 * fine,
+        "H_F error {coarse:e} at 40 elements, {fine:e} at 160: below third order"
+    );
+}

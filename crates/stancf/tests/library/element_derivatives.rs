@@ -7,7 +7,9 @@
 //! Tolerance: central differences with step h have truncation error
 //! O(h^2 f''') and round-off O(eps f / h); with h = 1e-5 on O(1) states
 //! both are ~1e-10 relative, so 1e-6 leaves four orders of margin and still
-//! catches any wrong term (a wrong term is an O(1) relative error).
+//! catches any wrong term (a wrong term is an O(1) relative error). The
+//! slab's differences combine h and h/2 (Richardson, O(h^4)): a touchdown
+//! in the element has large third derivatives (see `check_slab`).
 
 use crate::common::*;
 use stancf::element::{
@@ -77,6 +79,40 @@ fn energy_densities_match_finite_differences() {
     }
 }
 
+/// Central differences at step h of the slab action (its gradient) and of
+/// the slab gradient (its Hessian, rows m ND + a, columns n ND + b).
+fn slab_differences<const NS: usize, const ND: usize>(
+    el: &CableElement<NS, ND>,
+    slab: &TimeSlab,
+    y: &[[f64; ND]; 4],
+    loads: &SlabLoads,
+    h: f64,
+) -> (Vec<f64>, Vec<Vec<f64>>) {
+    let g = &loads.gravity;
+    let mut grad_fd = vec![0.0; 4 * ND];
+    let mut hess_fd = vec![vec![0.0; 4 * ND]; 4 * ND];
+    let mut dp = SlabDerivatives::<ND>::default();
+    let mut dm = SlabDerivatives::<ND>::default();
+    for n in 0..4 {
+        for b in 0..ND {
+            let mut yp = *y;
+            let mut ym = *y;
+            yp[n][b] += h;
+            ym[n][b] -= h;
+            grad_fd[n * ND + b] =
+                (el.slab_action(slab, &yp, g) - el.slab_action(slab, &ym, g)) / (2.0 * h);
+            el.slab_derivatives(slab, &yp, loads, false, &mut dp);
+            el.slab_derivatives(slab, &ym, loads, false, &mut dm);
+            for m in 0..4 {
+                for a in 0..ND {
+                    hess_fd[m * ND + a][n * ND + b] = (dp.grad[m][a] - dm.grad[m][a]) / (2.0 * h);
+                }
+            }
+        }
+    }
+    (grad_fd, hess_fd)
+}
+
 /// Checks the slab gradient against differences of the slab action and
 /// each Hessian block against differences of the gradient.
 fn check_slab<const NS: usize, const ND: usize>(
@@ -95,25 +131,21 @@ fn check_slab<const NS: usize, const ND: usize>(
         (d.action - a0).abs() <= 1e-12 * a0.abs().max(1.0),
         "{label}: action"
     );
-    let mut grad_fd = vec![0.0; 4 * ND];
-    let mut hess_fd = vec![vec![0.0; 4 * ND]; 4 * ND];
-    let mut dp = SlabDerivatives::<ND>::default();
-    let mut dm = SlabDerivatives::<ND>::default();
-    for n in 0..4 {
-        for b in 0..ND {
-            let mut yp = *y;
-            let mut ym = *y;
-            yp[n][b] += H;
-            ym[n][b] -= H;
-            grad_fd[n * ND + b] =
-                (el.slab_action(slab, &yp, g) - el.slab_action(slab, &ym, g)) / (2.0 * H);
-            el.slab_derivatives(slab, &yp, loads, false, &mut dp);
-            el.slab_derivatives(slab, &ym, loads, false, &mut dm);
-            for m in 0..4 {
-                for a in 0..ND {
-                    hess_fd[m * ND + a][n * ND + b] = (dp.grad[m][a] - dm.grad[m][a]) / (2.0 * H);
-                }
-            }
+    // Richardson's combination of central differences at h and h/2,
+    // (4 D(h/2) - D(h)) / 3, truncation O(h^4): the seabed's push is
+    // integrated on the pieces of the element in the bed (W47a), whose
+    // points include some in the contact ramp of width delta = 1e-3 d
+    // (W41), where the force's derivatives scale as 1/delta; central
+    // differences alone at h were 7.3e-6 off in SAC-3, falling as h^2
+    // (7.4e-4 at 10 h), the mark of truncation, not of a wrong term.
+    let (mut grad_fd, mut hess_fd) = slab_differences(el, slab, y, loads, H);
+    let (grad_half, hess_half) = slab_differences(el, slab, y, loads, 0.5 * H);
+    for (g, g2) in grad_fd.iter_mut().zip(&grad_half) {
+        *g = (4.0 * g2 - *g) / 3.0;
+    }
+    for (row, row2) in hess_fd.iter_mut().zip(&hess_half) {
+        for (h, h2) in row.iter_mut().zip(row2) {
+            *h = (4.0 * h2 - *h) / 3.0;
         }
     }
     let grad: Vec<f64> = d.grad.iter().flatten().copied().collect();
@@ -384,6 +416,81 @@ fn slab_jacobian_with_seabed_contact_matches_finite_differences() {
     let el3 = sac3(0.4, ALL_MEASURES[2], &r5);
     let y3 = random_slab_state::<6, 18>(&mut rng, 0.4, 0.2);
     check_slab(&el3, &s, &y3, &loads, "SAC-3 seabed");
+}
+
+/// The static rows of the seabed (docs/method.md §12.2, (W48)) on an
+/// element with touchdowns in it (the push integrated exactly on the
+/// pieces in the bed, split where it enters the bed and where it leaves
+/// the contact ramp, (W47a)-(W47c)), with friction against the slide
+/// from a seed: their Jacobian against central differences (Richardson's
+/// h and h/2, as `check_slab`), in SAC-2 and SAC-3.
+#[test]
+fn static_seabed_rows_with_a_touchdown_match_finite_differences() {
+    use stancf::water::{Seabed, SeabedContact};
+    fn check<const NS: usize, const ND: usize>(
+        el: &CableElement<NS, ND>,
+        contact: &SeabedContact,
+        (q, seed): (&[f64; ND], &[f64; ND]),
+        label: &str,
+    ) {
+        let gradient = |q: &[f64; ND]| {
+            let mut g = [0.0; ND];
+            el.add_static_seabed(contact, 1.3, (q, seed), &mut g, None);
+            g
+        };
+        let mut grad = [0.0; ND];
+        let mut hess = [[0.0; ND]; ND];
+        el.add_static_seabed(contact, 1.3, (q, seed), &mut grad, Some(&mut hess));
+        assert_eq!(
+            grad,
+            gradient(q),
+            "{label}: the same rows with the Jacobian"
+        );
+        assert!(
+            grad.iter().any(|&g| g != 0.0),
+            "{label}: the state touches the bed"
+        );
+        let column = |b: usize, h: f64| {
+            let (mut p, mut m) = (*q, *q);
+            p[b] += h;
+            m[b] -= h;
+            let (gp, gm) = (gradient(&p), gradient(&m));
+            std::array::from_fn::<f64, ND, _>(|a| (gp[a] - gm[a]) / (2.0 * h))
+        };
+        let mut exact = Vec::new();
+        let mut fd = Vec::new();
+        for b in 0..ND {
+            let (c1, c2) = (column(b, H), column(b, 0.5 * H));
+            for a in 0..ND {
+                exact.push(hess[a][b]);
+                fd.push((4.0 * c2[a] - c1[a]) / 3.0);
+            }
+        }
+        let e = rel_diff(&exact, &fd);
+        assert!(e < TOL, "{label}: static Jacobian rel. error {e:e}");
+    }
+    let bed =
+        Seabed::plane([0.0, 0.0, 0.06], [0.2, -0.1, 1.0], 1e5, 2e3).with_friction(0.5, 0.9, 0.3);
+    let contact = SeabedContact {
+        seabed: bed,
+        diameter: 0.5,
+    };
+    // An element dipping through the bed: its middle in it, its ends out.
+    let r = rules(3, 3);
+    let el2 = sac2(0.4, ALL_MEASURES[0], &r);
+    let q2 = [
+        0.0, 0.0, 0.1, 1.0, 0.1, -0.6, 0.4, 0.05, 0.04, 1.0, -0.1, 0.7,
+    ];
+    let seed2: [f64; 12] = std::array::from_fn(|i| q2[i] + 0.01 * (i as f64 - 5.0));
+    check(&el2, &contact, (&q2, &seed2), "SAC-2");
+    let r5 = rules(5, 5);
+    let el3 = sac3(0.4, ALL_MEASURES[2], &r5);
+    let q3 = [
+        0.0, 0.0, 0.1, 1.0, 0.1, -0.6, 0.0, 0.0, 1.0, 0.4, 0.05, 0.04, 1.0, -0.1, 0.7, 0.0, 0.0,
+        -1.0,
+    ];
+    let seed3: [f64; 18] = std::array::from_fn(|i| q3[i] - 0.01 * (i as f64 - 7.0));
+    check(&el3, &contact, (&q3, &seed3), "SAC-3");
 }
 
 /// The residual path's gradient-only densities are the full densities'

@@ -1,0 +1,216 @@
+//! Where the seabed's push is integrated along an element (docs/method.md
+//! §12.2, (W47a)-(W47c)): exactly, on the part of the element that is in
+//! the bed.
+//!
+//! The push per length f_n = d (k P(g) - c S(g) n . r_dot) n (W42) is zero
+//! clear of the bed, with kinks where the line touches down (g = 0) and at
+//! the contact ramp's edge (g = delta, (W41)). The element's axial Gauss
+//! rule spread over a touchdown element integrates the kinks to first
+//! order in the element length: where the touchdown falls between two of
+//! its points decides how much of the bed's push the element feels.
+//! Instead, at coordinates q, the roots of g(xi) = 0 and g(xi) = delta in
+//! (0, 1) cut the element into pieces, and each piece in the bed, [a, b],
+//! carries a Gauss rule of m points mapped onto it:
+//!
+//! ```text
+//!   int_0^1 f_n l dxi = sum_pieces sum_s (b - a) w_s l f_n(a + (b - a) x_s)  (W47a)
+//! ```
+//!
+//! On a plane bed g is a polynomial of degree NS - 1 in xi (cubic in
+//! SAC-2, quintic in SAC-3), and on a piece f_n N_k is one of degree at
+//! most 3 (NS - 1): m = 5 (SAC-2) or 8 (SAC-3) points integrate it
+//! exactly, and an element wholly in the bed takes the same rule. The sum
+//! being the integral, it does not jump when a piece is born or vanishes,
+//! and by Leibniz's rule its derivative is the sum of the derivatives at
+//! the mapped points with the pieces held: the boundary terms vanish at a
+//! touchdown (f_n = 0) and cancel at the ramp's edge (f_n continuous)
+//! (W47b). The exact Jacobian is (W47) at those points.
+//!
+//! The roots (W47c): g's monomial coefficients come from its values at NS
+//! equally spaced points, and its real roots are isolated exactly, the
+//! roots of its derivative (found the same way, recursively) cutting
+//! [0, 1] into pieces on which it is monotone, each with at most one root,
+//! bisected. On a bathymetry grid, g is replaced by that interpolant to
+//! find the pieces, and the rule is exact only as far as the grid is a
+//! plane along the element. Friction (W44) is no polynomial: it stays at
+//! the axial rule (crate::element::point_force::seabed_parts).
+
+use super::point_force::position;
+use super::{CableElement, SpacePoint};
+use crate::water::SeabedContact;
+
+/// Bisection steps of a bracketed root: 2^-50 of the element.
+const BISECTIONS: usize = 50;
+
+impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
+    /// Calls `visit` at every point where the seabed's push is integrated
+    /// for coordinates `q` (W47a): the exact rule on each piece between
+    /// the touchdowns and the ramp's edges that is in the bed (on all of
+    /// the element if it has none in it).
+    pub(super) fn for_each_contact_point(
+        &self,
+        contact: &SeabedContact,
+        q: &[f64; ND],
+        mut visit: impl FnMut(&SpacePoint<NS>),
+    ) {
+        let mut splits = [0.0; 2 * MAX_COEFFICIENTS];
+        let found = self.touchdowns(contact, q, &mut splits);
+        if found == 0 {
+            // Wholly in the bed, or wholly clear of it.
+            if self.penetration_at(contact, q, 0.5) > 0.0 {
+                self.bed_points.iter().for_each(visit);
+            }
+            return;
+        }
+        let mut start = 0.0;
+        for end in splits[..found].iter().copied().chain([1.0]) {
+            let span = end - start;
+            if span > 0.0 && self.penetration_at(contact, q, 0.5 * (start + end)) > 0.0 {
+                for (x, w) in self.bed_rule.iter() {
+                    let xi = start + span * x;
+                    visit(&SpacePoint {
+                        xi,
+                        wl: span * w * self.length,
+                        shape: (self.shape)(xi, self.length),
+                    });
+                }
+            }
+            start = end;
+        }
+    }
+
+    /// The penetration g (W40) at xi along the element for coordinates q.
+    fn penetration_at(&self, contact: &SeabedContact, q: &[f64; ND], xi: f64) -> f64 {
+        let r = position(&(self.shape)(xi, self.length), q);
+        contact.seabed.penetration(&r)
+    }
+
+    /// The roots of g(xi) = 0 and of g(xi) = delta (the contact ramp's
+    /// edge, (W41)) in (0, 1), ascending, into `roots` (W47c); returns
+    /// how many. g is taken as the polynomial of degree NS - 1 through its
+    /// values at NS equally spaced points: g itself on a plane bed, its
+    /// interpolant on a bathymetry grid.
+    fn touchdowns(&self, contact: &SeabedContact, q: &[f64; ND], roots: &mut [f64]) -> usize {
+        let mut g = [0.0; MAX_COEFFICIENTS];
+        let n = NS;
+        for (j, gj) in g.iter_mut().enumerate().take(n) {
+            *gj = self.penetration_at(contact, q, j as f64 / (n - 1) as f64);
+        }
+        let mut p = monomials(&g[..n]);
+        let mut found = real_roots(&p[..n], &mut roots[..MAX_COEFFICIENTS]);
+        p[0] -= contact.ramp_width();
+        found += real_roots(&p[..n], &mut roots[found..found + MAX_COEFFICIENTS]);
+        roots[..found].sort_by(f64::total_cmp);
+        found
+    }
+}
+
+/// Coefficients at most of g(xi): degree 5 (SAC-3).
+const MAX_COEFFICIENTS: usize = 6;
+
+/// The monomial coefficients c_0 .. c_d of the polynomial of degree d =
+/// values.len() - 1 through `values` at d + 1 equally spaced points of
+/// [0, 1] (Newton's divided differences, then expanded).
+fn monomials(values: &[f64]) -> [f64; MAX_COEFFICIENTS] {
+    let n = values.len();
+    let x = |j: usize| j as f64 / (n - 1) as f64;
+    let mut dd = [0.0; MAX_COEFFICIENTS];
+    dd[..n].copy_from_slice(values);
+    for level in 1..n {
+        for j in (level..n).rev() {
+            dd[j] = (dd[j] - dd[j - 1]) / (x(j) - x(j - level));
+        }
+    }
+    // Horner on the Newton form: p = dd_0 + (xi - x_0)(dd_1 + (xi - x_1)(...)).
+    let mut c = [0.0; MAX_COEFFICIENTS];
+    for j in (0..n).rev() {
+        // c <- c (xi - x_j) + dd_j
+        for k in (1..n).rev() {
+            c[k] = c[k - 1] - x(j) * c[k];
+        }
+        c[0] = dd[j] - x(j) * c[0];
+    }
+    c
+}
+
+/// p(xi) for monomial coefficients p.
+fn evaluate(p: &[f64], xi: f64) -> f64 {
+    p.iter().rev().fold(0.0, |acc, c| acc * xi + c)
+}
+
+/// The roots in (0, 1) where p changes sign, ascending, into `roots`;
+/// returns how many (a root p only touches may count twice: a split
+/// between two pieces on the same side, which changes no exact sum). Exact isolation: the
+/// roots of p' cut [0, 1] into pieces on which p is monotone, and a piece
+/// whose ends differ in sign holds one root, bisected to 2^-50.
+fn real_roots(p: &[f64], roots: &mut [f64]) -> usize {
+    let degree = p.iter().rposition(|&c| c != 0.0).unwrap_or(0);
+    if degree == 0 {
+        return 0;
+    }
+    let mut derivative = [0.0; MAX_COEFFICIENTS];
+    for k in 1..=degree {
+        derivative[k - 1] = k as f64 * p[k];
+    }
+    let mut turns = [0.0; MAX_COEFFICIENTS];
+    let n_turns = real_roots(&derivative[..degree], &mut turns);
+    let mut found = 0;
+    let mut a = 0.0;
+    for b in turns[..n_turns].iter().copied().chain([1.0]) {
+        let (pa, pb) = (evaluate(p, a), evaluate(p, b));
+        if (pa > 0.0) != (pb > 0.0) && found < roots.len() {
+            roots[found] = bisect(|xi| evaluate(p, xi) > 0.0, (a, pa > 0.0), b);
+            found += 1;
+        }
+        a = b;
+    }
+    found
+}
+
+/// The point between a and b where `above` changes from its value at a,
+/// by bisection.
+fn bisect(above: impl Fn(f64) -> bool, (mut a, above_a): (f64, bool), mut b: f64) -> f64 {
+    for _ in 0..BISECTIONS {
+        let m = 0.5 * (a + b);
+        if above(m) == above_a {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The interpolant through a polynomial's values is that polynomial:
+    /// (xi - 0.2)(xi - 0.5)(xi - 0.9) = -0.09 + 0.73 xi - 1.6 xi^2 + xi^3.
+    #[test]
+    fn a_cubic_is_its_own_interpolant_and_its_roots_are_found() {
+        let p = |x: f64| (x - 0.2) * (x - 0.5) * (x - 0.9);
+        let values: Vec<f64> = (0..4).map(|j| p(j as f64 / 3.0)).collect();
+        let c = monomials(&values);
+        for (got, want) in c.iter().zip([-0.09, 0.73, -1.6, 1.0]) {
+            assert!((got - want).abs() < 1e-14, "{c:?}");
+        }
+        let mut roots = [0.0; MAX_COEFFICIENTS];
+        let found = real_roots(&c[..4], &mut roots);
+        assert_eq!(found, 3);
+        for (got, want) in roots.iter().zip([0.2, 0.5, 0.9]) {
+            assert!((got - want).abs() < 1e-14, "{roots:?}");
+        }
+    }
+
+    /// A narrow dip between two equally spaced points of the same sign
+    /// is found: (xi - 0.41)(xi - 0.43), positive at 0, 1/3, 2/3 and 1,
+    /// held as a quintic's coefficients.
+    #[test]
+    fn a_narrow_dip_between_the_sampled_points_is_found() {
+        let p = [0.41 * 0.43, -(0.41 + 0.43), 1.0, 0.0, 0.0, 0.0];
+        let mut roots = [0.0; MAX_COEFFICIENTS];
+        assert_eq!(real_roots(&p, &mut roots), 2);
+        assert!((roots[0] - 0.41).abs() < 1e-14 && (roots[1] - 0.43).abs() < 1e-14);
+    }
+}
