@@ -94,24 +94,31 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         })
     }
 
-    /// [`Self::generalized_force_per_length`] of the seabed's contact
-    /// force, `force(part, r, r_x, rate)`, integrated as the slab and the
-    /// static rows integrate it: the push exactly where the element is in
-    /// the bed, the friction at the axial rule (W47a).
-    pub(crate) fn generalized_seabed_force(
+    /// [`Self::generalized_force_per_length`] of `force(xi, part, r, r_x,
+    /// rate)`: with `bed`, the seabed's contact force integrated as the
+    /// slab and the static rows integrate it, the push exactly where the
+    /// element is in the bed and the friction at the axial rule (W47a);
+    /// without, any force at the axial rule (`part` Whole).
+    pub(crate) fn generalized_force_on_bed(
         &self,
-        contact: &SeabedContact,
-        q: &[f64; ND],
-        rates: &[f64; ND],
-        force: impl Fn(Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
+        bed: Option<&SeabedContact>,
+        (q, rates): (&[f64; ND], &[f64; ND]),
+        force: impl Fn(f64, Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> ForceAtPoint,
     ) -> [f64; ND] {
         let mut fq = [0.0; ND];
-        for (along, part) in seabed_parts(contact) {
+        let parts = match bed {
+            Some(contact) => {
+                let mut parts = seabed_parts(contact);
+                [parts.next(), parts.next()]
+            }
+            None => [Some((Along::AxialRule, Part::Whole)), None],
+        };
+        for (along, part) in parts.into_iter().flatten() {
             self.for_each_point(along, q, |p| {
                 let r = position(&p.shape, q);
                 let rate = position(&p.shape, rates);
                 let (rx, _) = p.shape.gradients(q);
-                let f = force(part, &r, &rx, &rate).force;
+                let f = force(p.xi, part, &r, &rx, &rate).force;
                 for k in 0..NS {
                     for i in 0..3 {
                         fq[3 * k + i] += p.wl * p.shape.n[k] * f[i];

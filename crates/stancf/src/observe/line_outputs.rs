@@ -43,7 +43,8 @@ pub fn hydrodynamic_nodal_forces(model: &Model, state: &State, t: Option<f64>) -
     let Some(water) = &model.water else {
         return vec![[0.0; 3]; model.nodes()];
     };
-    nodal_forces_per_length(model, &state.e, &state.v, |(k, xi), r, rx, rdot| match t {
+    let states = (&state.e[..], &state.v[..]);
+    nodal_forces_per_length(model, states, None, |(k, xi), _, r, rx, rdot| match t {
         Some(t) => {
             let host = water.host.as_ref().map(|h| h.element(k).at(xi));
             water.force_at(r, rx, rdot, t, &[0.0; 3], true, host)

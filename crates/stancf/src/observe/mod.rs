@@ -446,9 +446,12 @@ pub fn seabed_nodal_forces(model: &Model, state: &State) -> Vec<[f64; 3]> {
     let Some(contact) = &model.seabed else {
         return vec![[0.0; 3]; model.nodes()];
     };
-    seabed_forces_per_length(model, contact, &state.e, &state.v, |part, r, rx, rdot| {
-        contact.part_at(part, r, rx, rdot, true)
-    })
+    nodal_forces_per_length(
+        model,
+        (&state.e, &state.v),
+        Some(contact),
+        |_, part, r, rx, rdot| contact.part_at(part, r, rx, rdot, true),
+    )
 }
 
 /// The seabed's consistent nodal forces (N) on a line at rest whose
@@ -462,20 +465,25 @@ pub fn static_seabed_nodal_forces(model: &Model, state: &State, targets: &[f64])
     // The slide r - r_0 is linear in the coordinates: interpolated from
     // e - e_0 as a velocity is from v.
     let slide: Vec<f64> = state.e.iter().zip(targets).map(|(e, e0)| e - e0).collect();
-    seabed_forces_per_length(model, contact, &state.e, &slide, |part, r, rx, slide| {
-        contact.static_part(part, r, rx, slide)
-    })
+    nodal_forces_per_length(
+        model,
+        (&state.e, &slide),
+        Some(contact),
+        |_, part, r, rx, slide| contact.static_part(part, r, rx, slide),
+    )
 }
 
-/// [`nodal_forces_per_length`] of the bed's contact force `force(part,
-/// r, r_x, rate)`, integrated as the slab and the static rows integrate
-/// it (W47a).
-fn seabed_forces_per_length(
+/// `sum_e int N_k f dx` on the nodes' positions of a force per length
+/// `force((k, xi), part, r, r_x, rdot)` (at xi, 0 to 1, along element k),
+/// r and r_x from the coordinates `e` and rdot interpolated from `rates`
+/// as a velocity; with `bed`, the seabed's contact force in its parts,
+/// integrated as the slab integrates it (W47a), else at the axial rule.
+pub(crate) fn nodal_forces_per_length(
     model: &Model,
-    contact: &crate::water::SeabedContact,
-    e: &[f64],
-    rates: &[f64],
-    force: impl Fn(Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
+    (e, rates): (&[f64], &[f64]),
+    bed: Option<&crate::water::SeabedContact>,
+    force: impl Fn((usize, f64), Part, &[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint
+        + Copy,
 ) -> Vec<[f64; 3]> {
     let mut out = vec![[0.0; 3]; model.nodes()];
     let dpn = model.dofs_per_node();
@@ -483,32 +491,8 @@ fn seabed_forces_per_length(
         for (k, el) in els.iter().enumerate() {
             let o = coordinate(dpn, k, SLOT_R, 0);
             let (q, qdot) = (gather(e, o), gather(rates, o));
-            let fq = el.generalized_seabed_force(contact, &q, &qdot, force);
-            add_to_end_nodes(&mut out, k, &fq);
-        }
-    });
-    out
-}
-
-/// `sum_e int N_k f dx` on the nodes' positions of a force per length
-/// `force((k, xi), r, r_x, rdot)` (at xi, 0 to 1, along element k), r and
-/// r_x from the coordinates `e` and rdot
-/// interpolated from `rates` as a velocity.
-pub(crate) fn nodal_forces_per_length(
-    model: &Model,
-    e: &[f64],
-    rates: &[f64],
-    force: impl Fn((usize, f64), &[f64; 3], &[f64; 3], &[f64; 3]) -> crate::water::ForceAtPoint + Copy,
-) -> Vec<[f64; 3]> {
-    let mut out = vec![[0.0; 3]; model.nodes()];
-    let dpn = model.dofs_per_node();
-    crate::with_elements!(&model.mesh, els => {
-        for (k, el) in els.iter().enumerate() {
-            let o = coordinate(dpn, k, SLOT_R, 0);
-            let q = gather(e, o);
-            let qdot = gather(rates, o);
-            let fq = el.generalized_force_per_length(&q, &qdot, |xi, r, rx, rdot| {
-                force((k, xi), r, rx, rdot)
+            let fq = el.generalized_force_on_bed(bed, (&q, &qdot), |xi, part, r, rx, rdot| {
+                force((k, xi), part, r, rx, rdot)
             });
             add_to_end_nodes(&mut out, k, &fq);
         }
