@@ -10,16 +10,17 @@
 //! its points decides how much of the bed's push the element feels.
 //! Instead, at coordinates q, the roots of g(xi) = 0 and g(xi) = delta in
 //! (0, 1) cut the element into pieces, and each piece in the bed, [a, b],
-//! carries a Gauss rule of m points mapped onto it:
+//! carries a Gauss rule mapped onto it:
 //!
 //! ```text
 //!   int_0^1 f_n l dxi = sum_pieces sum_s (b - a) w_s l f_n(a + (b - a) x_s)  (W47a)
 //! ```
 //!
 //! On a plane bed g is a polynomial of degree NS - 1 in xi (cubic in
-//! SAC-2, quintic in SAC-3), and on a piece f_n N_k is one of degree at
-//! most 3 (NS - 1): m = 5 (SAC-2) or 8 (SAC-3) points integrate it
-//! exactly, and an element wholly in the bed takes the same rule. The sum
+//! SAC-2, quintic in SAC-3), and on a piece f_n N_k is one of degree
+//! 2 (NS - 1) past the ramp, which the NS points of the mass's rule
+//! integrate exactly, and 3 (NS - 1) in it, which m = 5 (SAC-2) or 8
+//! (SAC-3) points do; an element wholly in the bed takes the same. The sum
 //! being the integral, it does not jump when a piece is born or vanishes,
 //! and by Leibniz's rule its derivative is the sum of the derivatives at
 //! the mapped points with the pieces held: the boundary terms vanish at a
@@ -49,9 +50,9 @@ const ROOT_RESOLUTION: f64 = 4.0 * f64::EPSILON;
 
 impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// Calls `visit` at every point where the seabed's push is integrated
-    /// for coordinates `q` (W47a): the exact rule on each piece between
-    /// the touchdowns and the ramp's edges that is in the bed (on all of
-    /// the element if it has none in it).
+    /// for coordinates `q` (W47a): a rule exact for it on each piece
+    /// between the touchdowns and the ramp's edges that is in the bed (on
+    /// all of the element if it has none in it).
     pub(super) fn for_each_contact_point(
         &self,
         contact: &SeabedContact,
@@ -60,23 +61,30 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     ) {
         let mut splits = [0.0; 2 * MAX_COEFFICIENTS];
         let found = self.touchdowns(contact, q, &mut splits);
-        if found == 0 {
-            // Wholly in the bed, or wholly clear of it.
-            if self.penetration_at(contact, q, 0.5) > 0.0 {
-                self.bed_points.iter().for_each(visit);
-            }
-            return;
-        }
+        let delta = contact.ramp_width();
         let mut start = 0.0;
         for end in splits[..found].iter().copied().chain([1.0]) {
             let span = end - start;
-            if span > 0.0 && self.penetration_at(contact, q, 0.5 * (start + end)) > 0.0 {
-                for (x, w) in self.bed_rule.iter() {
-                    let xi = start + span * x;
+            let g = self.penetration_at(contact, q, 0.5 * (start + end));
+            if span > 0.0 && g > 0.0 {
+                // Past the ramp the push is of degree 2 (NS - 1): the NS
+                // points of the mass's rule take it exactly; in the ramp,
+                // of degree 3 (NS - 1): the bed's rule.
+                let rule = if g > delta {
+                    &self.mass_points
+                } else {
+                    &self.bed_points
+                };
+                for p in rule {
+                    let xi = start + span * p.xi;
                     visit(&SpacePoint {
                         xi,
-                        wl: span * w * self.length,
-                        shape: (self.shape)(xi, self.length),
+                        wl: span * p.wl,
+                        shape: if found == 0 {
+                            p.shape
+                        } else {
+                            (self.shape)(xi, self.length)
+                        },
                     });
                 }
             }
@@ -102,9 +110,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             *gj = self.penetration_at(contact, q, j as f64 / (n - 1) as f64);
         }
         let mut p = monomials(&g[..n]);
-        let mut found = real_roots(&p[..n], &mut roots[..MAX_COEFFICIENTS]);
+        // p and p - delta turn at the same points: found once.
+        let (derivative, mut turns) = (derivative(&p[..n]), [0.0; MAX_COEFFICIENTS]);
+        let n_turns = real_roots(&derivative[..n - 1], &mut turns);
+        let turns = &turns[..n_turns];
+        let mut found = monotone_roots(&p[..n], &derivative[..n - 1], turns, roots);
         p[0] -= contact.ramp_width();
-        found += real_roots(&p[..n], &mut roots[found..found + MAX_COEFFICIENTS]);
+        found += monotone_roots(&p[..n], &derivative[..n - 1], turns, &mut roots[found..]);
         roots[..found].sort_by(f64::total_cmp);
         found
     }
@@ -146,36 +158,79 @@ fn evaluate(p: &[f64], xi: f64) -> f64 {
 /// The roots in (0, 1) where p changes sign, ascending, into `roots`;
 /// returns how many (a root p only touches may count twice: a split
 /// between two pieces on the same side, which changes no exact sum).
-/// Exact isolation: the roots of p' cut [0, 1] into pieces on which p is
-/// monotone, and a piece whose ends differ in sign holds one root,
-/// found by Newton's method kept inside its bracket.
+/// Exact isolation: a line's or a quadratic's in closed form; above, the
+/// roots of p' cut [0, 1] into pieces on which p is monotone
+/// ([`monotone_roots`]).
 fn real_roots(p: &[f64], roots: &mut [f64]) -> usize {
     let degree = p.iter().rposition(|&c| c != 0.0).unwrap_or(0);
-    if degree == 0 || one_signed(&p[..=degree]) {
-        return 0;
-    }
-    if degree == 1 {
-        // One-signed failed: the line crosses zero in [0, 1].
-        let root = -p[0] / p[1];
-        if root > 0.0 && root < 1.0 && !roots.is_empty() {
-            roots[0] = root;
-            return 1;
+    match degree {
+        0 => 0,
+        1 => {
+            let root = -p[0] / p[1];
+            let inside = root > 0.0 && root < 1.0 && !roots.is_empty();
+            if inside {
+                roots[0] = root;
+            }
+            usize::from(inside)
         }
+        2 => quadratic_roots(p, roots),
+        _ => {
+            let p = &p[..=degree];
+            let dp = derivative(p);
+            let mut turns = [0.0; MAX_COEFFICIENTS];
+            let n_turns = real_roots(&dp[..degree], &mut turns);
+            monotone_roots(p, &dp[..degree], &turns[..n_turns], roots)
+        }
+    }
+}
+
+/// p' of p (monomial coefficients; one fewer).
+fn derivative(p: &[f64]) -> [f64; MAX_COEFFICIENTS] {
+    let mut dp = [0.0; MAX_COEFFICIENTS];
+    for k in 1..p.len() {
+        dp[k - 1] = k as f64 * p[k];
+    }
+    dp
+}
+
+/// The real roots in (0, 1) of c0 + c1 xi + c2 xi^2, ascending, in the
+/// form that loses no digits to cancellation (q = -(c1 + sign(c1)
+/// sqrt(disc)) / 2, the roots q / c2 and c0 / q); a double root is none.
+fn quadratic_roots(p: &[f64], roots: &mut [f64]) -> usize {
+    let (c0, c1, c2) = (p[0], p[1], p[2]);
+    let disc = c1 * c1 - 4.0 * c0 * c2;
+    if disc <= 0.0 {
         return 0;
     }
-    let mut derivative = [0.0; MAX_COEFFICIENTS];
-    for k in 1..=degree {
-        derivative[k - 1] = k as f64 * p[k];
+    let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+    let (mut r1, mut r2) = (q / c2, if q != 0.0 { c0 / q } else { -q / c2 });
+    if r1 > r2 {
+        std::mem::swap(&mut r1, &mut r2);
     }
-    let derivative = &derivative[..degree];
-    let mut turns = [0.0; MAX_COEFFICIENTS];
-    let n_turns = real_roots(derivative, &mut turns);
+    let mut found = 0;
+    for r in [r1, r2] {
+        if r > 0.0 && r < 1.0 && found < roots.len() {
+            roots[found] = r;
+            found += 1;
+        }
+    }
+    found
+}
+
+/// The roots in (0, 1) where p (derivative dp) changes sign, ascending,
+/// into `roots`, given the points `turns` (ascending) where dp does:
+/// between two of them p is monotone, and a piece whose ends differ in
+/// sign holds one root.
+fn monotone_roots(p: &[f64], dp: &[f64], turns: &[f64], roots: &mut [f64]) -> usize {
+    if one_signed(p) {
+        return 0;
+    }
     let mut found = 0;
     let (mut a, mut pa) = (0.0, evaluate(p, 0.0));
-    for b in turns[..n_turns].iter().copied().chain([1.0]) {
+    for b in turns.iter().copied().chain([1.0]) {
         let pb = evaluate(p, b);
         if (pa > 0.0) != (pb > 0.0) && found < roots.len() {
-            roots[found] = bracketed_root(p, derivative, (a, pa), (b, pb));
+            roots[found] = bracketed_root(p, dp, (a, pa), (b, pb));
             found += 1;
         }
         (a, pa) = (b, pb);

@@ -168,11 +168,10 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     /// The NS Gauss points that integrate the mass matrix exactly; the
     /// added mass's rule (docs/method.md §12.5, (W28)).
     mass_points: Vec<SpacePoint<NS>>,
-    /// The Gauss rule exact for the seabed's push on a plane bed, degree
-    /// 3 (NS - 1) along the element (docs/method.md §12.2, (W47a)): its
-    /// points on [0, 1], and its (x, w) to map onto a piece in the bed.
+    /// The Gauss points exact for the seabed's push in its ramp on a plane
+    /// bed, of degree 3 (NS - 1) along the element (docs/method.md §12.2,
+    /// (W47a)), on [0, 1], to be mapped onto a piece in the bed.
     bed_points: Vec<SpacePoint<NS>>,
-    bed_rule: GaussRule,
     /// Consistent mass matrix per coordinate direction,
     /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
     /// (docs/method.md §2.1, (M2)).
@@ -314,7 +313,6 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             bending_points: at(&rules.bending),
             mass_points: at(&exact),
             bed_points: at(&bed_rule),
-            bed_rule,
             mass,
             weight_integrals,
             shape,

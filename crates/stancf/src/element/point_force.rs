@@ -10,8 +10,8 @@ use crate::water::seabed::Part;
 use crate::water::{ForceAtPoint, SeabedContact};
 
 /// Where a force per length is integrated along an element: at the
-/// points of its axial rule, or where it is in the bed (the seabed's
-/// contact, split at the touchdown, (W47a)).
+/// points of its axial rule, or exactly on its pieces in the bed (the
+/// seabed's push, (W47a)).
 #[derive(Clone, Copy, Debug)]
 pub enum Along<'a> {
     AxialRule,

@@ -1,7 +1,7 @@
 //! Seabed contact on the element (docs/method.md §12.2, (W40)-(W49)): the
-//! contact force per unit length of [`crate::water::SeabedContact`] where
-//! the element is in the bed (the axial rule split at the touchdown,
-//! (W47a)), its virtual work over a slab with the matrices
+//! contact force per unit length of [`crate::water::SeabedContact`], its
+//! push integrated exactly on the element's pieces in the bed and its
+//! friction at the axial rule (W47a), its virtual work over a slab with the matrices
 //! C_g, G_g of its exact Jacobian at the time points, and its static form.
 
 use super::point_force::seabed_parts;
