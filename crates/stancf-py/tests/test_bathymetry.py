@@ -39,10 +39,14 @@ def fairlead_forces(deck):
 def test_a_flat_seafloor_file_is_the_flat_bed_and_a_deeper_one_moves_the_fairleads(tmp_path):
     flat = fairlead_forces(EXAMPLE)
     # The bed's heights as MoorDyn reads them, in single precision: -200
-    # is exact, so the grid is the flat bed and the equilibrium the same
-    # to the static solve's round-off.
+    # is exact, so the grid is the flat bed. On a grid the bed's push is
+    # integrated at the axial rule, on a plane exactly where the chain is
+    # in the bed (docs/method.md section 12.2, (W47a)-(W47c)): the two
+    # equilibria differ by the axial rule's first-order error at the
+    # touchdown (measured 8.8e-5 of the largest force; 7e-5 of H_F on the
+    # OC4 chain at 40 elements), bounded at 1e-3.
     on_grid = fairlead_forces(with_seafloor(tmp_path, "level", lambda x, y: -200.0))
-    assert np.max(np.abs(on_grid - flat)) <= 1e-9 * np.max(np.abs(flat))
+    assert np.max(np.abs(on_grid - flat)) <= 1e-3 * np.max(np.abs(flat))
     # 5 m deeper away from the anchors' radius, level under them: the
     # chains hang longer and pull the fairleads harder.
     def bowl(x, y):

@@ -71,10 +71,17 @@ fn force_difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
 /// `slope`: the same equilibrium and the same 4 s of motion under a
 /// fairlead surge. The grid reproduces the plane to round-off (its
 /// bilinear is exact on a plane, its nodes exact in single precision)
-/// and its normal from the slopes is the plane's to 1e-16, so the runs
-/// solve the same equations to round-off: they may differ by Newton's
-/// tolerance (1e-10 of the scaled rows), bounded here at 1e-9 of the
-/// largest force (measured: 3.5e-15 static, 1.7e-11 over the 40 steps).
+/// and its normal from the slopes is the plane's to 1e-16, so the two
+/// solve the same contact law. They integrate it differently: on a plane
+/// the push is integrated exactly where the chain is in the bed, on a
+/// grid at the axial rule (docs/method.md §12.2, (W47a)-(W47c)), so they
+/// differ by the axial rule's error across the touchdown's kink, of first
+/// order in the element length: on the OC4 chain at 40 elements 7e-5 of
+/// H_F at rest, and in motion at 30 elements 0.4 % of the tension's range
+/// (docs/method.md §12.2). Bounded at 1e-3 of the largest force at rest
+/// and 2e-2 in motion (measured: 9.4e-5 and 6.7e-3); the earlier bound,
+/// 1e-9, held when both took the axial rule (measured 3.5e-15 and
+/// 1.7e-11).
 #[test]
 fn a_seafloor_file_that_is_a_plane_gives_the_tilted_beds_equilibrium_and_motion() {
     let dir = scratch("bathymetry_plane");
@@ -88,7 +95,7 @@ fn a_seafloor_file_that_is_a_plane_gives_the_tilted_beds_equilibrium_and_motion(
         chain_on(&dir, "slope-static", &slope, statics),
     );
     let static_gap = force_difference(&a, &b);
-    assert!(static_gap <= 1e-9, "static forces differ by {static_gap:e}");
+    assert!(static_gap <= 1e-3, "static forces differ by {static_gap:e}");
     // The bed is felt: the anchor's force is not the fairlead's
     // horizontal pull alone (the resting chain's weight along the slope).
     assert!((a[0][3].abs() - a[1][3].abs()).abs() > 1e3, "{a:?}");
@@ -104,7 +111,7 @@ fn a_seafloor_file_that_is_a_plane_gives_the_tilted_beds_equilibrium_and_motion(
     );
     let dynamic_gap = force_difference(&a, &b);
     assert!(
-        dynamic_gap <= 1e-9,
+        dynamic_gap <= 2e-2,
         "forces in motion differ by {dynamic_gap:e}"
     );
 }

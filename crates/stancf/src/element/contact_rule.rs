@@ -31,14 +31,16 @@
 //! equally spaced points, and its real roots are isolated exactly, the
 //! roots of its derivative (found the same way, recursively) cutting
 //! [0, 1] into pieces on which it is monotone, each with at most one root,
-//! found by Newton's method kept inside its bracket. On a bathymetry grid, g is replaced by that interpolant to
-//! find the pieces, and the rule is exact only as far as the grid is a
-//! plane along the element. Friction (W44) is no polynomial: it stays at
-//! the axial rule (crate::element::point_force::seabed_parts).
+//! found by Newton's method kept inside its bracket. On a bathymetry
+//! grid g is no polynomial along the element, no rule is exact, and
+//! pieces born and vanishing would make the sum jump (a grid with a step
+//! stalled the static solve): the push stays at the axial rule there.
+//! Friction (W44) is no polynomial either: it stays at the axial rule
+//! (crate::element::point_force::seabed_parts).
 
 use super::point_force::position;
 use super::{CableElement, SpacePoint};
-use crate::water::SeabedContact;
+use crate::water::{BedSurface, SeabedContact};
 
 /// Steps at most of a bracketed root's search (Newton's converge in a
 /// few; bisections alone would reach 2^-60 of the element).
@@ -59,6 +61,12 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         q: &[f64; ND],
         mut visit: impl FnMut(&SpacePoint<NS>),
     ) {
+        if let BedSurface::Grid(_) = contact.seabed.surface {
+            // g is no polynomial along the element: no rule is exact, and
+            // pieces born and vanishing would make the sum jump.
+            self.axial_points.iter().for_each(visit);
+            return;
+        }
         let mut splits = [0.0; 2 * MAX_COEFFICIENTS];
         let found = self.touchdowns(contact, q, &mut splits);
         let delta = contact.ramp_width();
@@ -100,9 +108,8 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
 
     /// The roots of g(xi) = 0 and of g(xi) = delta (the contact ramp's
     /// edge, (W41)) in (0, 1), ascending, into `roots` (W47c); returns
-    /// how many. g is taken as the polynomial of degree NS - 1 through its
-    /// values at NS equally spaced points: g itself on a plane bed, its
-    /// interpolant on a bathymetry grid.
+    /// how many. g, on a plane bed, is the polynomial of degree NS - 1
+    /// through its values at NS equally spaced points.
     fn touchdowns(&self, contact: &SeabedContact, q: &[f64; ND], roots: &mut [f64]) -> usize {
         let mut g = [0.0; MAX_COEFFICIENTS];
         let n = NS;
