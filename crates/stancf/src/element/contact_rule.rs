@@ -111,8 +111,7 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
     /// how many. g, on a plane bed, is the polynomial of degree NS - 1
     /// through its values at NS equally spaced points.
     fn touchdowns(&self, contact: &SeabedContact, q: &[f64; ND], roots: &mut [f64]) -> usize {
-        let mut g = [0.0; MAX_COEFFICIENTS];
-        let n = NS;
+        let (n, mut g) = (NS, [0.0; MAX_COEFFICIENTS]);
         for (j, gj) in g.iter_mut().enumerate().take(n) {
             *gj = self.penetration_at(contact, q, j as f64 / (n - 1) as f64);
         }

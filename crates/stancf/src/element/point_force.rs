@@ -13,7 +13,7 @@ use crate::water::{ForceAtPoint, SeabedContact};
 /// points of its axial rule, or exactly on its pieces in the bed (the
 /// seabed's push, (W47a)).
 #[derive(Clone, Copy, Debug)]
-pub enum Along<'a> {
+pub(super) enum Along<'a> {
     AxialRule,
     InTheBed(&'a SeabedContact),
 }
