@@ -25,20 +25,86 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>().sqrt()
 }
 
-/// OpenFAST's md_BodiesAndRods (a wave energy converter: a float of 1e6 kg
-/// with a can 10 m across fixed in it and a flap of the same can pinned
-/// to it at (2, 0, 2), leaning to (5, 0, 15); three nylon lines to one
-/// point under the float). `check` names the joint; the static analysis
-/// stands the flap upright (a buoyant rod pinned at its foot: turned by
-/// -atan(3/13) from its lean, to 1e-9 degrees), keeps the float in the
+/// The float and flap of md_BodiesAndRods at a static equilibrium in
+/// `out` (a float of 1e6 kg with a can 10 m across fixed in it from
+/// (0, 0, 2) to (0, 0, 15) and a flap of the same can pinned to it at
+/// (2, 0, 2), leaning to (5, 0, 15)), checked against statics by hand:
+/// the flap stands upright (a buoyant rod pinned at its foot: turned by
+/// -atan(3/13) from its lean, to 1e-9 degrees), the float stays in the
 /// plane of the flap (y, roll and yaw zero to 1e-9: the heading is held,
-/// §15.14), keeps the joint closed to 1e-9 m, and floats the float on
-/// its can: rho A s_can = m - F_z / g to 1e-8 of it, s_can the length of
-/// the can under water along its axis (the surface cuts only its side:
-/// no cap is cut), F_z bodies.csv's pull on the float of the lines and of
-/// the flap at the joint (the flap's buoyancy less its weight: it stands
-/// on its own can, s_flap of it under water), g MoorDyn's 9.80665 (the
-/// static tolerance is 1e-10 of the rows).
+/// §15.14), the joint is closed to 1e-9 m, and the float floats on its
+/// can in force and in moment. Force: rho A s_can = m - F_z / g to 1e-8
+/// of it, s_can the length of the can under water along its axis (the
+/// surface cuts only its side, no cap), F_z bodies.csv's pull on the
+/// float of the lines and of the flap at the joint, g MoorDyn's 9.80665
+/// (the static tolerance is 1e-10 of the rows). Moment about the float's
+/// reference point (its centre of mass): bodies.csv's moment, the can's
+/// weight at its middle and its buoyancy at the centroid of a cylinder
+/// cut obliquely at tilt alpha, h / 2 + a^2 tan^2(alpha) / (8 h) up the
+/// axis from the cut's foot and a^2 tan(alpha) / (4 h) across it towards
+/// the deeper side (h = s_can, a = 5 m), to 1e-8 of the buoyancy's
+/// moment at arm a.
+fn assert_float_and_flap_balance(out: &std::path::Path, tag: &str) {
+    let float = poses(out, 1.0)[0];
+    let flap = poses(out, 2.0)[0];
+    let lean = -(3.0f64 / 13.0).atan().to_degrees();
+    let joint = point_of(&float, [2.0, 0.0, 2.0]);
+    let gap = distance(joint, [flap[0], flap[1], flap[2]]);
+    // The cans' lengths under water along their axes: the float's from
+    // (0, 0, 2) in its axes; the flap's from its end A, upright.
+    let foot = point_of(&float, [0.0, 0.0, 2.0]);
+    let up = point_of(&float, [0.0, 0.0, 3.0]);
+    let axis: [f64; 3] = std::array::from_fn(|c| up[c] - foot[c]);
+    let s_can = -foot[2] / axis[2];
+    let s_flap = -flap[2];
+    let (header, rows) = read_csv(&out.join("bodies.csv"));
+    let column = |name: &str| rows[0][header.iter().position(|h| h == name).unwrap()];
+    let (g, a) = (9.80665, 5.0);
+    let area = std::f64::consts::PI * a * a;
+    let displaced = 1025.0 * area * s_can;
+    let mass = 1e6 + 1000.0 * 13.0 - column("fz") / g;
+    // The moment about the reference point, y (the float's plane is x-z).
+    let (c, s) = (axis[2], (1.0 - axis[2] * axis[2]).sqrt());
+    let across = if s > 0.0 {
+        std::array::from_fn(|i| ([0.0, 0.0, 1.0][i] - c * axis[i]) / s)
+    } else {
+        [0.0; 3]
+    };
+    let tan = s / c;
+    let along = s_can / 2.0 + a * a * tan * tan / (8.0 * s_can);
+    let centroid: [f64; 3] = std::array::from_fn(|i| {
+        foot[i] + along * axis[i] - a * a * tan / (4.0 * s_can) * across[i]
+    });
+    let middle = point_of(&float, [0.0, 0.0, 8.5]);
+    let buoyancy = 1025.0 * g * area * s_can;
+    let arm = |p: [f64; 3]| p[0] - float[0];
+    // m_y of an upward force F at p: (p - x_ref) x F . e_y = -(p_x - x_x) F.
+    let moment = column("my") - arm(centroid) * buoyancy + arm(middle) * 13_000.0 * g;
+    eprintln!(
+        "{tag}: float at {float:?}, flap pitch {} (upright at {lean}); joint gap {gap:.1e} m; \
+         displaced {displaced:.6} kg against {mass:.6} kg (cans in by {s_can:.4} and \
+         {s_flap:.4} m); moment {moment:.2e} N m of {:.3e}",
+        flap[4],
+        buoyancy * a
+    );
+    assert!((flap[4] - lean).abs() < 1e-9, "{} {lean}", flap[4]);
+    for v in [float[1], float[3], float[5]] {
+        assert!(v.abs() < 1e-9, "{float:?}");
+    }
+    assert!(gap < 1e-9, "{gap:e}");
+    // Neither cap cut: the surface crosses each axis more than r tan(tilt)
+    // from its ends.
+    let reach = a * float[4].to_radians().tan().abs();
+    assert!(s_can > reach && s_can < 13.0 - reach, "{s_can}");
+    assert!(s_flap > 0.0 && s_flap < 178.0f64.sqrt(), "{s_flap}");
+    assert!((displaced - mass).abs() < 1e-8 * mass, "{displaced} {mass}");
+    assert!(moment.abs() < 1e-8 * buoyancy * a, "{moment}");
+}
+
+/// OpenFAST's md_BodiesAndRods (a wave energy converter: the float and
+/// flap of [`assert_float_and_flap_balance`], three nylon lines to one
+/// point under the float): `check` names the joint, and the static
+/// analysis balances the float and the flap.
 #[test]
 fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
     let d = scratch("md-bodies-and-rods");
@@ -51,39 +117,36 @@ fn openfasts_md_bodies_and_rods_flap_stands_upright_on_its_float() {
     let out = d.join("out");
     let o = run_quiet(&deck, &out, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    let float = poses(&out, 1.0)[0];
-    let flap = poses(&out, 2.0)[0];
-    let lean = -(3.0f64 / 13.0).atan().to_degrees();
-    let joint = point_of(&float, [2.0, 0.0, 2.0]);
-    let gap = distance(joint, [flap[0], flap[1], flap[2]]);
-    // The cans' lengths under water along their axes: the float's from
-    // (0, 0, 2) in its axes; the flap's from its end A, upright.
-    let foot = point_of(&float, [0.0, 0.0, 2.0]);
-    let up = point_of(&float, [0.0, 0.0, 3.0]);
-    let s_can = -foot[2] / (up[2] - foot[2]);
-    let s_flap = -flap[2];
-    let (header, rows) = read_csv(&out.join("bodies.csv"));
-    let fz = rows[0][header.iter().position(|h| h == "fz").unwrap()];
-    let area = std::f64::consts::PI * 25.0;
-    let displaced = 1025.0 * area * s_can;
-    let mass = 1e6 + 1000.0 * 13.0 - fz / 9.80665;
-    eprintln!(
-        "md_BodiesAndRods: float at {float:?}, flap pitch {} (upright at {lean}); joint gap \
-         {gap:.1e} m; displaced {displaced:.6} kg against {mass:.6} kg (cans in by {s_can:.4} \
-         and {s_flap:.4} m)",
-        flap[4]
+    assert_eq!(
+        read_json(&out.join("summary.json"))["static_path"],
+        "load path"
     );
-    assert!((flap[4] - lean).abs() < 1e-9, "{} {lean}", flap[4]);
-    for v in [float[1], float[3], float[5]] {
-        assert!(v.abs() < 1e-9, "{float:?}");
-    }
-    assert!(gap < 1e-9, "{gap:e}");
-    // Neither cap cut: the surface crosses each axis more than r tan(tilt)
-    // from its ends.
-    let reach = 5.0 * float[4].to_radians().tan().abs();
-    assert!(s_can > reach && s_can < 13.0 - reach, "{s_can}");
-    assert!(s_flap > 0.0 && s_flap < 178.0f64.sqrt(), "{s_flap}");
-    assert!((displaced - mass).abs() < 1e-8 * mass, "{displaced} {mass}");
+    assert_float_and_flap_balance(&out, "md_BodiesAndRods");
+}
+
+/// MoorDyn's own BodiesAndRods.dat: md_BodiesAndRods with a buoyant cable
+/// from an anchor 200 m off to the float's reference point over two free
+/// points, the float and both cans out of the water in the deck's pose.
+/// The load path from the lines' catenaries stalls at load factor 0 (the
+/// float hangs on slack lines until its cans float it); pseudo-transient
+/// continuation (docs/method.md §6.9, (M26b)) reaches the equilibrium,
+/// `run` says so, summary.json's `static_path` names it, and the float
+/// and flap balance as in [`assert_float_and_flap_balance`] (the cable
+/// pulls the float aside and pitches it by 12.7 degrees).
+#[test]
+fn moordyns_bodies_and_rods_reaches_its_equilibrium_by_pseudo_transient_continuation() {
+    let d = scratch("md-bodies-and-rods-cable");
+    let deck = copy_fixture(&d, "bodies-and-rods-cable-moordyn.txt", "BodiesAndRods.dat");
+    let out = d.join("out");
+    let o = run_quiet(&deck, &out, &[]);
+    let (_, stderr) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("pseudo-transient continuation"), "{stderr}");
+    assert_eq!(
+        read_json(&out.join("summary.json"))["static_path"],
+        "pseudo-transient continuation"
+    );
+    assert_float_and_flap_balance(&out, "BodiesAndRods.dat");
 }
 
 /// The buoy of `moored_buoy` (pushed at 0.3 m/s in surge) with a rod

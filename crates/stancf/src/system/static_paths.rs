@@ -6,7 +6,7 @@
 
 use super::static_friction::{self, StaticFriction};
 use super::statics::{SystemStatics, KEPT_SHORTENING};
-use crate::error::SolverError;
+use crate::error::{SolverError, STATIC_SOLVE};
 use crate::statics::StaticIncrement;
 use std::ops::ControlFlow;
 
@@ -146,6 +146,54 @@ impl SystemStatics {
             }
             OwnLawPath::Failed | OwnLawPath::Singular => Err(()),
         }
+    }
+
+    /// Where every load path failed with `error`: the equilibrium at the
+    /// full load by pseudo-transient continuation from this path's seeds
+    /// (docs/method.md §6.9, (M26b)), which the observer sees as one
+    /// increment. Ok(true): `self` is that solve, converged; Ok(false):
+    /// the observer stopped it; Err: the path's error, followed by where
+    /// the continuation stopped.
+    pub(super) fn relax_after_failure<F>(
+        &mut self,
+        error: SolverError,
+        observer: &mut F,
+    ) -> Result<bool, SolverError>
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        if self.relaxed {
+            return Err(error);
+        }
+        let (system, seeds) = (self.equations.system.clone(), self.seeds.clone());
+        let (settings, targets) = (self.settings.clone(), self.targets.clone());
+        let own_law = self.own_law.clone();
+        let Ok(mut relaxed) = Self::build(system, seeds, settings, own_law, targets) else {
+            return Err(error);
+        };
+        relaxed.relaxed = true;
+        relaxed.pulling = self.pulling;
+        match relaxed.newton.relax(&mut relaxed.equations) {
+            Ok(increment) => {
+                let go_on = observer(&relaxed, &increment).is_continue();
+                *self = relaxed;
+                Ok(go_on)
+            }
+            Err(stopped) => {
+                let then = stopped.detail.trim_start_matches(STATIC_SOLVE);
+                Err(SolverError {
+                    detail: format!("{}; then{}", error.detail, then.trim_start_matches(':')),
+                    ..error
+                })
+            }
+        }
+    }
+
+    /// Whether this equilibrium was reached by pseudo-transient
+    /// continuation (docs/method.md §6.9, (M26b)), every load path from
+    /// the seeds having failed.
+    pub fn relaxed(&self) -> bool {
+        self.relaxed
     }
 
     /// The path from this one's seeds with the lines marked in `own_law`

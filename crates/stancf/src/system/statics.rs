@@ -76,6 +76,9 @@ pub struct SystemStatics {
     /// Whether the path's end is still to be checked for lines to solve
     /// again without their compression (M32c).
     pub(super) check_compression: bool,
+    /// Whether this solve is the pseudo-transient continuation's, from
+    /// the seeds at the full load (M26b), after the load path failed.
+    pub(super) relaxed: bool,
 }
 
 /// The shortening above which the path's end of a line without
@@ -238,6 +241,7 @@ impl SystemStatics {
             seeds,
             own_law,
             check_compression,
+            relaxed: false,
         })
     }
 
@@ -395,7 +399,11 @@ impl SystemStatics {
                         match self.own_law_after_failure(&mut observer) {
                             Ok(true) => continue,
                             Ok(false) => return Ok(false),
-                            Err(()) => return Err(e),
+                            Err(()) => match self.relax_after_failure(e, &mut observer) {
+                                Ok(true) => continue,
+                                Ok(false) => return Ok(false),
+                                Err(e) => return Err(e),
+                            },
                         }
                     };
                     // The system was accepted with the first seeds; the

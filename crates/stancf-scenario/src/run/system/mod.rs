@@ -12,6 +12,7 @@ mod moordyn_rod_out;
 mod releases;
 mod rods;
 mod rows;
+mod static_report;
 mod stiffness;
 mod vtk_parts;
 mod writers;
@@ -150,7 +151,8 @@ pub(super) fn run_system(
             } else {
                 0.0
             };
-            warn_of_static_compression(&sc, st);
+            static_report::warn_of_static_compression(&sc, st);
+            static_report::note_static_path(st);
             matrices = stiffness::at_equilibrium(st, &sc);
             stiffness::write_csv(place.dest(), &sc, &matrices).map_err(io_err(place.shown))?;
             let mut row = static_row(st, t);
@@ -302,39 +304,6 @@ fn halving_hint(halvings: u32) -> String {
             " (after the step was halved {halvings} times, the most there are: take a shorter \
              analysis.time_step)"
         )
-    }
-}
-
-/// The axial strain below which a line without compression is reported
-/// shortened at its static equilibrium: well above what the static
-/// solve's tolerance leaves (its equilibrium carries compression there,
-/// which the motion sheds).
-const STATIC_SHORTENING: f64 = 1e-6;
-
-/// Warns of every line without compression that its static equilibrium
-/// shortens anywhere by more than [`STATIC_SHORTENING`] with the
-/// compressive stiffness kept (docs/method.md §2.2, (M4a)): the static
-/// solve could not release it (§11.6, (M32c)), so the dynamics start out
-/// of balance there. A released line is slack where it is shortened and
-/// carries no compression.
-fn warn_of_static_compression(sc: &SystemScenario, st: &SystemStatics) {
-    for (i, line) in st.system().lines().iter().enumerate() {
-        if line.model.carries_compression() || st.released(i) {
-            continue;
-        }
-        let ea = sc.line_types[sc.lines[i].line_type].ea;
-        let force = stancf::observe::largest_compression(&line.model, st.line_state(i));
-        if force > STATIC_SHORTENING * ea {
-            eprintln!(
-                "warning: lines[{i}] (id {}): its static equilibrium shortens it by up to {} \
-                 (a compression of {} N, which the static solve keeps: docs/method.md §2.2); \
-                 the line carries no compression in motion, so a dynamic run starts out of \
-                 balance there",
-                sc.lines[i].id,
-                Sig(force / ea),
-                Sig(force)
-            );
-        }
     }
 }
 
@@ -513,6 +482,9 @@ fn write_summary(
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
         "interrupted": outcome.interrupted,
     });
+    if let Some(st) = statics.filter(|_| outcome.failure.is_none()) {
+        summary["static_path"] = json!(static_report::static_path(st));
+    }
     if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
         summary["step_control"] = json!({
             "force_tolerance": json_num(tol),

@@ -5,6 +5,7 @@
 //! bordered by the free points), through [`StaticEquations`].
 
 mod convergence;
+mod relax;
 
 use super::{StaticIncrement, StaticSettings};
 use crate::error::{FailureKind, Sig, SolverError, STATIC_SOLVE};

@@ -113,3 +113,99 @@ fn a_load_path_of_few_cuts_reaches_the_full_load() {
     assert!(e.is_none(), "{e:?}");
     assert!((50..=110).contains(&n), "{n}");
 }
+
+/// The scalar equation r(x) = 0 on the Newton homotopy from x0,
+/// R(x; t) = r(x) - (1 - t) r(x0) (as a system's path, (M32)), its row
+/// weighted `weight` (the flow's D is 1 / weight).
+struct Scalar {
+    r: fn(f64) -> (f64, f64),
+    offset: f64,
+    homotopy: f64,
+    weight: f64,
+}
+
+impl StaticEquations for Scalar {
+    type Matrix = BandMatrix;
+    fn evaluate(&mut self, x: &[f64], residual: &mut [f64], jacobian: Option<&mut BandMatrix>) {
+        let (r, dr) = (self.r)(x[0]);
+        residual[0] = r - self.homotopy * self.offset;
+        if let Some(j) = jacobian {
+            j.clear();
+            j.add(0, 0, dr);
+        }
+    }
+    fn row_weights(&mut self, _jacobian: &BandMatrix, weights: &mut [f64]) {
+        weights[0] = self.weight;
+    }
+    fn set_load_factor(&mut self, t: f64) {
+        self.homotopy = 1.0 - t;
+    }
+    fn legs(&self) -> usize {
+        1
+    }
+    fn converged(&mut self, _x: &[f64]) {}
+}
+
+/// The driver and the equations of `r` from x0, the row weighted
+/// `weight`.
+fn scalar(r: fn(f64) -> (f64, f64), x0: f64, weight: f64) -> (StaticNewton<BandLu>, Scalar) {
+    let eq = Scalar {
+        r,
+        offset: r(x0).0,
+        homotopy: 1.0,
+        weight,
+    };
+    let newton = StaticNewton::new(
+        vec![x0],
+        vec![1.0],
+        BandLu::new(1, 0, 0),
+        BandMatrix::new(1, 0, 0),
+        StaticSettings::default(),
+    );
+    (newton, eq)
+}
+
+/// r(x) = x^3 - 2 x + 2 from x0 = 0: the path x^3 - 2 x = -2 t turns back
+/// at x = (2/3)^(1/2), t = 0.544 (a fold, where the load path stalls;
+/// Newton at the full load cycles between 0 and 1), and |r| has a local
+/// minimum of 0.911 there that is not a root. The flow takes every step
+/// and runs down to the root x = -1.769292354 (Cardano's), to the
+/// tolerance.
+#[test]
+fn the_flow_reaches_the_root_past_a_fold_where_the_load_path_stalls() {
+    let cubic = |x: f64| (x * x * x - 2.0 * x + 2.0, 3.0 * x * x - 2.0);
+    let (mut newton, mut eq) = scalar(cubic, 0.0, 1.0);
+    let stalled = loop {
+        match newton.advance(&mut eq) {
+            Ok(Some(_)) => {}
+            Ok(None) => panic!("the path went past its fold"),
+            Err(e) => break e,
+        }
+    };
+    assert!(
+        (0.45..0.545).contains(&stalled.time),
+        "stalled at {}",
+        stalled.time
+    );
+    let (mut newton, mut eq) = scalar(cubic, 0.0, 1.0);
+    let end = newton.relax(&mut eq).expect("the flow converges");
+    let root = {
+        let q = (1.0f64 - 8.0 / 27.0).sqrt();
+        (-1.0 + q).cbrt() + (-1.0 - q).cbrt()
+    };
+    assert!((newton.x[0] - root).abs() < 1e-10, "{} {root}", newton.x[0]);
+    assert_eq!(end.load_factor, 1.0);
+}
+
+/// r = dU/dx of U = x^4 / 4 - x^2 / 2, from x0 = 0.01 beside its
+/// maximum at 0, the row's scale D = 0.01 a hundredth of |r'(0)| = 1:
+/// the shifted step r / (r' + mu D) at mu = 1 lands on the maximum, as
+/// Newton's does, but with N (twice the negative part of K's diagonal)
+/// the flow's steps run downhill, and it ends at the minimum x = 1.
+#[test]
+fn the_flow_runs_down_from_a_maximum_of_the_energy() {
+    let gradient = |x: f64| (x * x * x - x, 3.0 * x * x - 1.0);
+    let (mut newton, mut eq) = scalar(gradient, 0.01, 100.0);
+    newton.relax(&mut eq).expect("the flow converges");
+    assert!((newton.x[0] - 1.0).abs() < 1e-10, "{}", newton.x[0]);
+}
