@@ -229,7 +229,7 @@ def main():
     if bd and bd["rows"]:
         studies += [""] + body_drag_text(bd)
     bar = by_name.get("BodiesAndRods.dat")
-    if bar and bar.get("stancf"):
+    if bar and bar.get("stancf") and bar["stancf"]["rc"] == 0:
         studies += [""] + bodies_and_rods_text(bar)
     body = by_name.get("example/body.txt")
     if body and body["rows"]:

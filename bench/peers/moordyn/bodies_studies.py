@@ -120,87 +120,93 @@ def study_body_drag(folder, text, st, md):
                 top=za - 5.0, w=w, gap=float(body[4]) - za)
 
 
-def study_bodies_and_rods(folder, text):
-    """BodiesAndRods.dat, which stancf does not solve, taken apart:
-    (1) a copy without rod 2 (pinned to the body, no line on it: the
-    limitation docs/interface.md documents); (2) without rod 2 and the
-    buoyant cable (lines 4 to 6, points 7 to 10): the body floating on
-    rod 1, against the closed form of its heave (rod 1's wet length h
-    from rho g A h = (body + rod) g - the lines' vertical force on the
-    body); (3) the buoyant cable alone, the body fixed where (2) floats
-    it, line 4 (the deck's 200 m) shortened, and (4) at 200 m in 96
-    elements instead of 12. Returns a dict of the runs and numbers."""
+def study_bodies_and_rods(folder, text, res):
+    """BodiesAndRods.dat's buoyant cable (lines 4 to 6 over free points 8
+    and 9, from an anchor to the float's reference point) with the float
+    held at stancf's equilibrium (`res`), its lines 4 to 6 in 1, 2, 4 and
+    8 times the deck's segments, against the closed-form catenaries of
+    the three lines (cable_closed_form). Returns a dict of the runs and
+    numbers."""
     os.makedirs(folder, exist_ok=True)
-
-    def run(name, t):
-        """stancf's equilibrium of the copy `t`, written as <name>.txt."""
-        path = os.path.join(folder, name + ".txt")
-        with open(path, "w") as f:
-            f.write(t)
-        return stancf_run(path, os.path.join(folder, "stancf_" + name))
-
-    out = {}
-    no_pin = with_rows_replaced(text, "RODS",
-                                lambda f: None if rod_kind(f) == "pinned to a body" else f)
-    out["no_rod2"] = run("without_rod2", no_pin)
-    spar = with_rows_replaced(no_pin, "LINES", lambda f: None if int(f[0]) >= 4 else f)
-    spar = with_rows_replaced(spar, "POINTS", lambda f: None if int(f[0]) >= 7 else f)
-    out["spar"] = sp = run("without_rod2_and_lines_4_to_6", spar)
+    float_row = res["bodies"][1]
     opts = options(text)
     g, rho = float(opts.get("g", 9.80665)), float(opts.get("WtrDnsty", 1025.0))
-    body = [f for _, f in table_rows(text, "BODIES")][0]
-    rod = [f for _, f in table_rows(no_pin, "RODS")][0]
-    rtype = {f[0]: f for _, f in table_rows(text, "ROD TYPES")}[rod[1]]
-    d, w = float(rtype[1]), float(rtype[2])
-    length = abs(float(rod[8]) - float(rod[5]))
-    area = math.pi * d * d / 4
-    if sp["rc"] == 0:
-        fz = sp["bodies"][1]["fz"]
-        h = ((float(body[8]) + w * length) * g - fz) / (rho * g * area)
-        out["spar_closed"] = -float(rod[5]) - h
-        out["spar_z"] = sp["bodies"][1]["z"]
-        out["spar_fz"] = fz
-    z_body = out.get("spar_z", -14.586)
-
-    def cable(length4):
-        """The buoyant cable alone: the body fixed at z_body, lines 4-6
-        renumbered 1-3, line 4 `length4` m."""
-        t = with_rows_replaced(no_pin, "BODIES", lambda f: f[:1] + ["Fixed"] + f[2:4]
-                               + ["%r" % z_body] + f[5:])
-        t = with_rows_replaced(t, "LINES", lambda f: None if int(f[0]) <= 3 else
-                               [str(int(f[0]) - 3)] + f[1:4]
-                               + ([repr(length4)] if int(f[0]) == 4 else [f[4]]) + f[5:])
-        return t
-
-    out["cable"] = []
-    for length4 in (150.0, 170.0, 180.0, 190.0, 195.0, 200.0):
-        r = run("cable_%g" % length4, cable(length4))
-        h = r["points"][7]["fx"] if r["rc"] == 0 else None
-        out["cable"].append((length4, r, h))
-    path = os.path.join(folder, "cable_200.txt")
-    sc = os.path.join(folder, "cable_200_96.toml")
-    with open(sc, "w") as f:
-        f.write('title = "the cable, line 4 in 96 elements"\n[system]\nmoordyn = "%s"\n'
-                '[analysis]\ntype = "static"\n[[mesh]]\nlines = [1]\nelements = 96\n'
-                % os.path.basename(path))
-    out["cable_96"] = c96 = stancf_run(sc, os.path.join(folder, "stancf_cable_200_96"))
-    if c96["rc"] == 0:
-        # Line 1's stretch |r_x| - 1 at its nodes: where it goes negative
-        # (the compression the warning names) and the touchdown (the first
-        # node from the anchor more than 1 cm above the bed).
-        nodes = read_csv(os.path.join(folder, "stancf_cable_200_96", "lines", "1", "nodes.csv"))
-        bed = -float(opts["WtrDpth"])
-        stretch = [(math.sqrt(n["dx_ds"] ** 2 + n["dy_ds"] ** 2 + n["dz_ds"] ** 2) - 1.0,
-                    n["x"], n["z"]) for n in nodes]
-        lo = min(stretch)
-        hi = max(stretch)
-        touch = next(n for n in nodes if n["z"] > bed + 0.01)
-        out["cable_96_stretch"] = dict(low=lo[0], low_x=lo[1], high=hi[0], high_x=hi[1],
-                                       touchdown_x=touch["x"])
-    cab = [f for _, f in table_rows(text, "LINE TYPES") if f[0] == "cable"][0]
-    out["cable_w"] = (float(cab[2]) - rho * math.pi * float(cab[1]) ** 2 / 4) * g
+    depth = float(opts["WtrDpth"])
+    types = {f[0]: f for _, f in table_rows(text, "LINE TYPES")}
+    lines = {int(f[0]): f for _, f in table_rows(text, "LINES")}
+    points = {int(f[0]): f for _, f in table_rows(text, "POINTS")}
+    held = with_rows_replaced(text, "BODIES", lambda f: f[:1] + ["Fixed"] + [
+        "%r" % float_row[c] for c in ("x", "y", "z", "roll", "pitch", "yaw")] + f[8:])
+    held = with_rows_replaced(held, "RODS", lambda f: None if rod_kind(f) == "pinned to a body"
+                              else f)
+    out = dict(refined=[])
+    for factor in (1, 2, 4, 8):
+        t = with_rows_replaced(held, "LINES", lambda f: f[:5] + [str(int(f[5]) * factor)] + f[6:]
+                               if int(f[0]) >= 4 else f)
+        path = os.path.join(folder, "held_x%d.txt" % factor)
+        with open(path, "w") as f:
+            f.write(t)
+        r = stancf_run(path, os.path.join(folder, "stancf_held_x%d" % factor))
+        out["refined"].append((factor, r))
+    # The closed form: lines 6, 5, 4 from the float's point 10 down to the
+    # anchor, point 7.
+    def wet(name):
+        f = types[name]
+        d, m = float(f[1]), float(f[2])
+        return (m - rho * math.pi * d * d / 4) * g, float(f[3])
+    segs = []
+    for n in (6, 5, 4):
+        w, ea = wet(lines[n][1])
+        segs.append((float(lines[n][4]), w, ea))
+    top = np.array([float_row["x"], float_row["z"]])
+    anchor = np.array([float(points[7][2]), float(points[7][4])])
+    out["closed"] = cable_closed_form(top, anchor, -depth, segs)
     return out
 
+
+def cable_closed_form(top, anchor, bed, segs, n=20000):
+    """The equilibrium of elastic catenaries in series in a vertical plane
+    (x, z), hung from `top` down to `anchor` on the bed z = `bed`, the
+    last one's end part lying on the frictionless bed: each (length, wet
+    weight per length, EA), their joints weightless. Shooting from the
+    top on (H, V_top), the horizontal tension (the same in every line)
+    and the top's vertical pull, the lines integrated by the midpoint
+    rule in n steps each, the touchdown where V reaches 0 on the bed;
+    Newton on the miss of the anchor. Returns H, V_top and the joints'
+    (x, z)."""
+    def shoot(h, v):
+        x, z = top
+        joints = []
+        for k, (length, w, ea) in enumerate(segs):
+            ds = length / n
+            for i in range(n):
+                vm = v - 0.5 * w * ds
+                t = math.hypot(h, vm)
+                st = ds * (1 + t / ea)
+                xn, zn = x - h / t * st, z - vm / t * st
+                if k == len(segs) - 1 and zn <= bed and vm <= 0:
+                    rest = length - (i + 0.5) * ds
+                    return np.array([xn - rest * (1 + h / ea) - anchor[0], zn - anchor[1]]), joints
+                x, z, v = xn, zn, v - w * ds
+            joints.append((x, z))
+        return np.array([x - anchor[0], z - anchor[1]]), joints
+
+    p = np.array([100.0, sum(w * length for length, w, _ in segs[:1])])
+    for _ in range(200):
+        miss, _ = shoot(*p)
+        if np.max(np.abs(miss)) < 1e-7:
+            break
+        jac = np.zeros((2, 2))
+        for j in range(2):
+            q = p.copy()
+            q[j] += 1e-6 * max(abs(p[j]), 1.0)
+            jac[:, j] = (shoot(*q)[0] - miss) / (q[j] - p[j])
+        step = np.linalg.solve(jac, miss)
+        cut = min(1.0, 0.1 * abs(p[0]) / max(abs(step[0]), 1e-30),
+                  0.1 * abs(p[1]) / max(abs(step[1]), 1e-30))
+        p = p - cut * step
+    miss, joints = shoot(*p)
+    return dict(H=p[0], V=p[1], joints=joints, miss=float(np.max(np.abs(miss))))
 
 def study_refinement(folder, text, factors=(1, 2, 4, 8)):
     """Both codes' line end tensions as their lines are refined: stancf
@@ -266,62 +272,46 @@ def body_drag_text(res):
 
 def bodies_and_rods_text(res):
     """The paragraph of BodiesAndRods.dat (study_bodies_and_rods)."""
-    s = study_bodies_and_rods(os.path.join(res["folder"], "study"), res["text"])
-    nr = s["no_rod2"]
-    m = re.search(r"load factor ([\d.]+) \(increment \d+, \d+ iterations, scaled residual "
-                  r"([\d.eE+-]+)\)", nr["error"])
-    first = re.search(r"load factor ([\d.]+) \(increment \d+, \d+ iterations, scaled residual "
-                      r"([\d.eE+-]+)\)", res["stancf"]["error"])
-    lines = ["### BodiesAndRods.dat: stancf does not solve it, MoorDyn does not settle it", ""]
-    text = ("stancf exits 3 (Newton does not converge at load factor %s, scaled residual %s). "
-            "The deck's rod 2 is pinned to the free body (Body1Pinned) with no line on it: the "
-            "static solve of such a rod does not converge in this version (docs/interface.md, "
-            "\"Known limitation\"). " % (first.group(1) if first else "?",
-                                         first.group(2) if first else "?"))
-    if nr["rc"] == 0:
-        text += "A copy without rod 2 is solved. "
-    else:
-        text += ("A copy without rod 2 gets to load factor %s and stops there (scaled residual "
-                 "%s against the tolerance 1e-10). " % (m.group(1) if m else "?",
-                                                        m.group(2) if m else "?"))
-    if s["spar"]["rc"] == 0:
-        text += ("Without rod 2 and the buoyant cable (lines 4 to 6, points 7 to 10) it is: the "
-                 "body floats on rod 1 at z = %.6f m, the closed form of its heave (rod 1's wet "
-                 "length from rho g A h = (body + rod) g + the lines' pull %.1f N) %.6f m. "
-                 % (s["spar_z"], -s["spar_fz"], s["spar_closed"]))
-    ok = [(L, h) for L, r, h in s["cable"] if r["rc"] == 0]
-    bad = [L for L, r, h in s["cable"] if r["rc"] != 0]
-    text += ("The cable alone (the body fixed where it floats) fails as the whole does, and "
-             "converges when its line 4 is shorter: the anchor's horizontal pull H falls as "
-             "line 4 lengthens, %s, and the solve stops at %s m (the deck's is 200 m). " % (
-                 ", ".join("%.0f N at %g m" % (h, L) for L, h in ok),
-                 " and ".join("%g" % L for L in bad)))
-    c96 = s["cable_96"]
-    if c96["rc"] == 0:
-        comp = [re.search(r"shortens it by up to ([\d.eE+-]+) \(a compression of ([\d.eE+-]+) N",
-                          w) for w in c96["warnings"]]
-        comp = [(float(x.group(1)), float(x.group(2))) for x in comp if x]
-        h96 = c96["points"][7]["fx"]
-        text += ("With line 4 at 200 m in 96 elements instead of 12 stancf solves it: H = %.0f "
-                 "N, H/w = %.2f m (w = %.1f N/m wet), a touchdown the elements (%.2f m) hardly "
-                 "follow, and the solve keeps compressions of up to %.4g N (line 4 shortened by "
-                 "%.3g) where the anchor pulls %.0f N. They are at the touchdown (it leaves the "
-                 "bed at x = %.1f m), where line 4's stretch at its nodes, |r_x| - 1, alternates "
-                 "in sign (%.2g at x = %.1f m, %.2g at x = %.1f m): the locking docs/method.md "
-                 "§11.6 describes at a touchdown the elements do not follow."
-                 % (h96, h96 / s["cable_w"], s["cable_w"], 200.0 / 96,
-                    max(c[1] for c in comp) if comp else float("nan"),
-                    max(c[0] for c in comp) if comp else float("nan"),
-                    math.hypot(h96, c96["points"][7]["fz"]),
-                    s["cable_96_stretch"]["touchdown_x"], s["cable_96_stretch"]["low"],
-                    s["cable_96_stretch"]["low_x"], s["cable_96_stretch"]["high"],
-                    s["cable_96_stretch"]["high_x"]))
-    else:
-        text += "At 200 m in 96 elements it still fails (%s)." % c96["error"][:120]
-    lines.append(text)
-    lines += ["", "MoorDyn: " + "; ".join(run_text(r) for r in res["moordyn_runs"]) + "."]
+    st = res["stancf"]
+    fl = st["bodies"][1]
+    s = study_bodies_and_rods(os.path.join(res["folder"], "study"), res["text"], st)
+    c = s["closed"]
+    lines = ["### BodiesAndRods.dat: stancf solves it, MoorDyn does not settle it", ""]
+    text = ("stancf reaches the equilibrium by pseudo-transient continuation (docs/method.md "
+            "§6.9, (M26b): summary.json's static_path is \"%s\") in %.1f s: the float at "
+            "(%.4f, %.4f, %.4f) m pitched %.3f deg, the flap upright; its balance in force and "
+            "moment is checked by hand in `cargo test --release -p stancf-cli --test cli "
+            "joints::moordyns_bodies_and_rods`. "
+            % (st["summary"].get("static_path"), st["wall"], fl["x"], fl["y"], fl["z"],
+               fl["pitch"]))
+    text += ("The deck's buoyant cable is too coarse for its shape: with the float held at that "
+             "pose, the anchor's horizontal pull H and the free points against the closed-form "
+             "catenaries of lines 6, 5 and 4 (H = %.1f N, points 9 and 8 at x, z = %s m):"
+             % (c["H"], ", ".join("(%.2f, %.2f)" % j for j in c["joints"][:2])))
+    lines += [text, "", "| segments | H (N) | difference | point 9 (m) | point 8 (m) |",
+              "|---|---|---|---|---|"]
+    for factor, r in s["refined"]:
+        if r["rc"] != 0:
+            lines.append("| x%d | the static solve fails (exit %d) | | | |" % (factor, r["rc"]))
+            continue
+        h = r["points"][7]["fx"]
+        p9, p8 = r["points"][9], r["points"][8]
+        lines.append("| x%d | %.1f | %.2f %% | (%.2f, %.2f) | (%.2f, %.2f) |" % (
+            factor, h, 100 * (h - c["H"]) / c["H"], p9["x"], p9["z"], p8["x"], p8["z"]))
+    lines += ["", "Line 6 hangs in a U of radius H/w = %.2f m at its bottom, which the deck's "
+              "8.3 m segments do not follow; on such meshes the discrete cable has more than one "
+              "equilibrium, and which one the static solve reaches depends on its seeds."
+              % (c["H"] / segs_weight(res["text"]))]
     return lines
 
+
+def segs_weight(text):
+    """The wet weight per length (N/m) of the deck's line 6's type."""
+    types = {f[0]: f for _, f in table_rows(text, "LINE TYPES")}
+    lines = {int(f[0]): f for _, f in table_rows(text, "LINES")}
+    f = types[lines[6][1]]
+    d, m = float(f[1]), float(f[2])
+    return (m - 1025.0 * math.pi * d * d / 4) * 9.80665
 
 def refinement_text(res):
     """The table of both codes refined on example/body.txt

@@ -58,6 +58,7 @@ mod simulation;
 mod static_friction;
 mod static_lines;
 mod static_paths;
+mod static_stability;
 mod static_water;
 mod statics;
 mod step_control;

@@ -190,8 +190,9 @@ impl SystemStatics {
     }
 
     /// Whether this equilibrium was reached by pseudo-transient
-    /// continuation (docs/method.md §6.9, (M26b)), every load path from
-    /// the seeds having failed.
+    /// continuation (docs/method.md §6.9, (M26b)): every load path from
+    /// the seeds failed, or the path's end was unstable at a body
+    /// (M26c).
     pub fn relaxed(&self) -> bool {
         self.relaxed
     }

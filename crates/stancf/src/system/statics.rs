@@ -391,7 +391,7 @@ impl SystemStatics {
                     }
                     match self.pull()? {
                         Some(stage) => *self = stage,
-                        None => return Ok(true),
+                        None => return self.leave_unstable(&mut observer),
                     }
                 }
                 Err(e) => {

@@ -176,7 +176,7 @@ impl SystemStatics {
 /// J_y,rest J_rest^-1 J_rest,y (row-major, m x m), the derivative of
 /// their rows as they move with everything else in equilibrium, and
 /// their rows at x. None where the rest is singular with them held.
-fn condensed_onto(
+pub(super) fn condensed_onto(
     eq: &mut super::statics::SystemEquations,
     x: &[f64],
     ys: &[usize],

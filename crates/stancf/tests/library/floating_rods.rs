@@ -308,3 +308,39 @@ fn a_spar_on_no_line_too_heavy_to_float_is_refused_by_the_static_solve() {
     assert_eq!(err.key, "bodies[0]");
     assert!(err.message.contains("sinks"), "{}", err.message);
 }
+
+/// The spar on no line started 1 m above the water and heeled by 2.5
+/// rad, nearly upside down: the load path from there ends on the spar
+/// floating upside down (its ballast 4.5 m above the water, an
+/// equilibrium: its buoyancy on the line of its weight), where its pitch
+/// stiffness is rho g V GM < 0. The solve finds the condensed Hessian's
+/// negative eigenvalue, moves the spar along its eigenvector and follows
+/// the flow (docs/method.md §6.9, (M26b), (M26c)) to the stable
+/// equilibrium: upright at Archimedes' draft m = rho A h, to the static
+/// tolerance.
+#[test]
+fn a_spar_started_upside_down_floats_upright_at_its_draft() {
+    let draft = SPAR_MASS / (RHO * SPAR_AREA);
+    let mut body = spar([0.0, 0.0, 1.0], 0.0, 1.0);
+    body.rotation = stancf::body::rotation::exp_map([2.5, 0.0, 0.0]);
+    let (system, _) = crate::common::body_on_no_line(body, [30.0, 0.0, -1.0]);
+    let mut statics = crate::common::seeded_equilibrium(system, 1e-10);
+    let (reference, rotation) = statics.body_pose(0).expect("a free body");
+    let tilt = (rotation[0][2].powi(2) + rotation[1][2].powi(2)).sqrt();
+    eprintln!(
+        "spar started upside down: bottom at {:.9} m (draft {draft:.9}), axis z {:.3}, tilt \
+         {tilt:.1e}, left by the flow: {}",
+        reference[2],
+        rotation[2][2],
+        statics.relaxed()
+    );
+    assert!(statics.relaxed());
+    assert!(rotation[2][2] > 0.0, "upside down: {rotation:?}");
+    assert!(tilt < 1e-9, "{tilt:e}");
+    assert!(
+        (reference[2] + draft).abs() < 1e-9 * draft,
+        "{}",
+        reference[2]
+    );
+    assert!(statics.body_downhill(0).is_none());
+}

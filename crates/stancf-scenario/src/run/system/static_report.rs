@@ -52,14 +52,14 @@ pub(super) fn static_path(st: &SystemStatics) -> &'static str {
 }
 
 /// Says on stderr when the equilibrium came from the pseudo-transient
-/// continuation: the load path from the seeds stalled (docs/method.md
-/// §6.9, (M26b)).
+/// continuation: the load path from the seeds stalled, or ended where a
+/// body was unstable (docs/method.md §6.9, (M26b), (M26c)).
 pub(super) fn note_static_path(st: &SystemStatics) {
     if st.relaxed() {
         eprintln!(
-            "note: the static load path from the lines' catenaries stalled; the equilibrium \
-             was reached by pseudo-transient continuation at the full load (docs/method.md \
-             §6.9, (M26b))"
+            "note: the equilibrium was reached by pseudo-transient continuation at the full \
+             load (docs/method.md §6.9, (M26b)): the static load path from the lines' \
+             catenaries stalled, or ended where a body was unstable (M26c)"
         );
     }
 }
