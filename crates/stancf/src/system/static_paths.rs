@@ -90,14 +90,7 @@ impl SystemStatics {
         if !std::mem::take(&mut self.check_compression) {
             return true;
         }
-        let eq = &self.equations;
-        let own_law: Vec<bool> = (0..eq.lines.len())
-            .map(|i| {
-                let own = &eq.system.lines()[i].model;
-                !own.carries_compression()
-                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
-            })
-            .collect();
+        let own_law = self.shortened_without_compression();
         if !own_law.iter().any(|&o| o) {
             return true;
         }
@@ -177,7 +170,7 @@ impl SystemStatics {
             Ok(increment) => {
                 let go_on = observer(&relaxed, &increment).is_continue();
                 *self = relaxed;
-                Ok(go_on)
+                Ok(go_on && self.release_by_flow(observer))
             }
             Err(stopped) => {
                 let then = stopped.detail.trim_start_matches(STATIC_SOLVE);
@@ -187,6 +180,54 @@ impl SystemStatics {
                 })
             }
         }
+    }
+
+    /// Which lines are without compression and left shortened by more
+    /// than [`KEPT_SHORTENING`] at the last converged increment (their
+    /// compressive stiffness kept): those to solve again with their own
+    /// law (M4a), (M32c).
+    fn shortened_without_compression(&self) -> Vec<bool> {
+        let eq = &self.equations;
+        (0..eq.lines.len())
+            .map(|i| {
+                let own = &eq.system.lines()[i].model;
+                !own.carries_compression()
+                    && crate::observe::largest_shortening(own, &eq.lines[i].state) > KEPT_SHORTENING
+            })
+            .collect()
+    }
+
+    /// At the flow's end (M26b): the lines without compression that it
+    /// leaves shortened by more than [`KEPT_SHORTENING`] are given their
+    /// own law (M4a) and the flow is followed on from this equilibrium
+    /// (the system at it, the lines' states its seeds), as the path is
+    /// followed again in (M32c); its end replaces this one if it is
+    /// reached and isolated. False if the observer stopped it.
+    fn release_by_flow<F>(&mut self, observer: &mut F) -> bool
+    where
+        F: FnMut(&SystemStatics, &StaticIncrement) -> ControlFlow<()>,
+    {
+        let own_law = self.shortened_without_compression();
+        if !own_law.iter().any(|&o| o) {
+            return true;
+        }
+        let (settings, targets) = (self.settings.clone(), self.targets.clone());
+        let system = self.system_at_equilibrium();
+        let Ok(mut released) = Self::build(system, self.line_states(), settings, own_law, targets)
+        else {
+            return true;
+        };
+        released.relaxed = true;
+        released.pulling = self.pulling;
+        let Ok(increment) = released.newton.relax(&mut released.equations) else {
+            return true;
+        };
+        if !released.newton.regular_at(&mut released.equations) {
+            return true;
+        }
+        let go_on = observer(&released, &increment).is_continue();
+        *self = released;
+        go_on
     }
 
     /// Whether this equilibrium was reached by pseudo-transient

@@ -19,9 +19,9 @@
 //! eigenvalue and the flow of (M26b), which runs downhill, is followed
 //! from there.
 
+use super::body_statics::StaticBody;
 use super::statics::SystemStatics;
-use super::stiffness::condensed_onto;
-use crate::error::SolverError;
+use crate::error::{SolverError, STATIC_SOLVE};
 use crate::statics::StaticIncrement;
 use std::ops::ControlFlow;
 
@@ -41,8 +41,8 @@ const NUDGE: f64 = 0.2;
 const MOST_NUDGES: usize = 3;
 
 impl SystemStatics {
-    /// The direction (in body b's unknowns, the turn in radians and the
-    /// move in its length scale's units) along which its equilibrium
+    /// The direction (in body b's unknowns [r_G; theta]: metres and
+    /// radians) along which its equilibrium
     /// loses energy: the eigenvector of the condensed Hessian's most
     /// negative eigenvalue, scaled to its diagonal; None where the body
     /// is stable there (or is fixed, coupled or a connector, or the rest
@@ -52,28 +52,17 @@ impl SystemStatics {
         if self.system().bodies()[b].connector {
             return None;
         }
-        let eq = &mut self.equations;
-        let pinned = eq.bodies[k].pin.is_some();
-        let first = if pinned { 3 } else { 0 };
-        let unknowns: Vec<usize> = (first..6)
-            .map(|q| eq.layout.body_unknown(b, 0, q).expect("a free body"))
-            .collect();
-        let saved = eq.bodies[k].clone();
-        let mut x = self.newton.x.clone();
-        let q = saved.unknowns(&eq.layout, &x);
-        // The chart centred at the equilibrium: theta = 0 at R*.
-        let rotation = saved.rotation_at(&q);
-        eq.bodies[k] = super::body_statics::StaticBody {
-            rotation,
-            ..saved.clone()
+        let first = if self.equations.bodies[k].pin.is_some() {
+            3
+        } else {
+            0
         };
-        for &i in &unknowns[unknowns.len() - 3..] {
-            x[i] = 0.0;
-        }
-        let condensed = condensed_onto(eq, &x, &unknowns);
-        eq.bodies[k] = saved;
-        let (s, _) = condensed?;
-        let m = unknowns.len();
+        // The chart centred at the equilibrium, the body whole.
+        let ((s, _), _) = self.condensed_body(b, first, |body, rotation| StaticBody {
+            rotation,
+            ..body.clone()
+        })?;
+        let m = 6 - first;
         let scale: Vec<f64> = (0..m).map(|i| s[i * m + i].abs()).collect();
         let largest = scale.iter().fold(0.0f64, |a, &b| a.max(b));
         if largest == 0.0 {
@@ -126,7 +115,18 @@ impl SystemStatics {
                 return Ok(true);
             };
             self.nudge(b, &direction);
-            let increment = self.newton.relax(&mut self.equations)?;
+            let increment = self.newton.relax(&mut self.equations).map_err(|e| {
+                let then = e.detail.trim_start_matches(STATIC_SOLVE);
+                SolverError {
+                    detail: format!(
+                        "{STATIC_SOLVE}: the equilibrium reached is unstable at bodies[{b}] (its \
+                         condensed stiffness has a negative eigenvalue: docs/method.md §6.9, \
+                         (M26c)); moved off it, {}",
+                        then.trim_start_matches(": ")
+                    ),
+                    ..e
+                }
+            })?;
             self.relaxed = true;
             if observer(self, &increment).is_break() {
                 return Ok(false);

@@ -76,8 +76,9 @@ pub struct SystemStatics {
     /// Whether the path's end is still to be checked for lines to solve
     /// again without their compression (M32c).
     pub(super) check_compression: bool,
-    /// Whether this solve is the pseudo-transient continuation's, from
-    /// the seeds at the full load (M26b), after the load path failed.
+    /// Whether this solve's equilibrium is the pseudo-transient
+    /// continuation's (M26b): from the seeds at the full load where the
+    /// load paths failed, or from an end unstable at a body (M26c).
     pub(super) relaxed: bool,
 }
 

@@ -36,6 +36,7 @@
 //! differences): the matrix designers take from MoorPy's finite
 //! differences.
 
+use super::body_statics::StaticBody;
 use super::SystemStatics;
 use crate::bordered::{BorderedLu, BorderedMatrix};
 use crate::linear::{AddEntries, Factorization, Jacobian};
@@ -70,26 +71,41 @@ impl SystemStatics {
         if body.pin.is_some() || body.connector {
             return None;
         }
-        let k = self.equations.bodies.iter().position(|s| s.index == b)?;
-        let eq = &mut self.equations;
-        let unknowns: Vec<usize> = (0..6)
-            .map(|q| eq.layout.body_unknown(b, 0, q).expect("a free body"))
-            .collect();
         // The body bare, its chart centred at the equilibrium (theta = 0
         // at R*): its rows are the lines' force and moment.
+        let ((s, rows), rotation) = self.condensed_body(b, 0, |body, r| body.bare(r))?;
+        let k = self.equations.bodies.iter().position(|s| s.index == b)?;
+        let centre = crate::body::pose::rotate(&rotation, self.equations.bodies[k].centre_of_mass);
+        Some(from_chart(&s, &rows, &rotation, centre))
+    }
+
+    /// Free body b's static rows condensed onto its unknowns `from..6`,
+    /// everything else in equilibrium ([`condensed_onto`]: S and the
+    /// rows), with its chart centred at the equilibrium's rotation R*
+    /// (theta = 0 there) and the body evaluated as `body_at(its statics,
+    /// R*)` makes it; and R*. None where the rest of the system is
+    /// singular with those unknowns held.
+    pub(super) fn condensed_body(
+        &mut self,
+        b: usize,
+        from: usize,
+        body_at: impl Fn(&StaticBody, [[f64; 3]; 3]) -> StaticBody,
+    ) -> Option<(Condensed, [[f64; 3]; 3])> {
+        let k = self.equations.bodies.iter().position(|s| s.index == b)?;
+        let eq = &mut self.equations;
+        let unknown = |q: usize| eq.layout.body_unknown(b, 0, q).expect("a free body");
+        let unknowns: Vec<usize> = (from..6).map(unknown).collect();
+        let turns: Vec<usize> = (3..6).map(unknown).collect();
         let saved = eq.bodies[k].clone();
         let mut x = self.newton.x.clone();
-        let q = saved.unknowns(&eq.layout, &x);
-        let rotation = saved.rotation_at(&q);
-        eq.bodies[k] = saved.bare(rotation);
-        for &i in &unknowns[3..] {
+        let rotation = saved.rotation_at(&saved.unknowns(&eq.layout, &x));
+        eq.bodies[k] = body_at(&saved, rotation);
+        for i in turns {
             x[i] = 0.0;
         }
-        let centre = crate::body::pose::rotate(&rotation, saved.centre_of_mass);
         let condensed = condensed_onto(eq, &x, &unknowns);
         eq.bodies[k] = saved;
-        let (s, rows) = condensed?;
-        Some(from_chart(&s, &rows, &rotation, centre))
+        Some((condensed?, rotation))
     }
 
     /// (B16a) from the condensed K_PQ at `points` about `reference`.
@@ -172,6 +188,9 @@ impl SystemStatics {
     }
 }
 
+/// A condensed Jacobian S (row-major) and the rows it is of.
+pub(super) type Condensed = (Vec<f64>, Vec<f64>);
+
 /// The static Jacobian condensed onto the unknowns `ys`: S = J_yy -
 /// J_y,rest J_rest^-1 J_rest,y (row-major, m x m), the derivative of
 /// their rows as they move with everything else in equilibrium, and
@@ -180,7 +199,7 @@ pub(super) fn condensed_onto(
     eq: &mut super::statics::SystemEquations,
     x: &[f64],
     ys: &[usize],
-) -> Option<(Vec<f64>, Vec<f64>)> {
+) -> Option<Condensed> {
     let n = eq.layout.size;
     let mut jac = BorderedMatrix::new(&eq.layout.shapes, eq.layout.border);
     let mut residual = vec![0.0; n];
