@@ -8,6 +8,10 @@ use std::ffi::{CStr, CString};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+#[path = "../../../stancf-cli/tests/cli/common/scratch_root.rs"]
+mod scratch_root;
+use scratch_root::scratch_root;
+
 /// A file of the repository.
 pub fn repo(path: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -123,44 +127,14 @@ pub fn c_program(exe: &Path) -> Command {
     cmd
 }
 
-/// A fresh folder for a test's files, in cargo's folder for integration
-/// tests' files (inside target/), from which, the first time, the folders
-/// of earlier runs whose process has ended are removed (in the system's
-/// temp folder they used to pile up).
+/// A fresh folder for a test's files, in [`scratch_root`] (the folders
+/// of ended runs removed).
 pub fn scratch(name: &str) -> PathBuf {
-    static CLEANED: std::sync::Once = std::sync::Once::new();
-    let root = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
-    CLEANED.call_once(|| remove_ended_runs(&root));
-    let dir = root.join(format!("stancf-capi-{name}-{}", std::process::id()));
+    let dir =
+        scratch_root("stancf-capi-").join(format!("stancf-capi-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
-}
-
-/// Removes the folders in `root` named `stancf-capi-<name>-<pid>` whose
-/// process has ended (where the system says which have: /proc).
-fn remove_ended_runs(root: &Path) {
-    if !Path::new("/proc/self").exists() {
-        return;
-    }
-    let Ok(entries) = std::fs::read_dir(root) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(pid) = name
-            .strip_prefix("stancf-capi-")
-            .and_then(|rest| rest.rsplit('-').next())
-        else {
-            continue;
-        };
-        let ended = pid
-            .parse::<u32>()
-            .is_ok_and(|p| p != std::process::id() && !Path::new(&format!("/proc/{p}")).exists());
-        if ended {
-            let _ = std::fs::remove_dir_all(entry.path());
-        }
-    }
 }
 
 /// The node positions of line `line` of `s` (3 per node), through

@@ -5,12 +5,14 @@
 
 mod bodies;
 mod rods;
+mod scratch_root;
 // The properties binary shares this module and uses none of them.
 #[allow(unused_imports)]
 pub use bodies::*;
 #[allow(unused_imports)]
 pub use rods::*;
 
+use scratch_root::scratch_root;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -19,52 +21,15 @@ pub const BIN: &str = env!("CARGO_BIN_EXE_stancf");
 
 /// A scratch folder of its own for each call (the process and a count of
 /// calls in the name: the tests of one binary share the process), emptied
-/// first, in [`scratch_root`].
+/// first, in [`scratch_root`] (the folders of ended runs removed).
 pub fn scratch(name: &str) -> PathBuf {
     static CALLS: AtomicUsize = AtomicUsize::new(0);
     let call = CALLS.fetch_add(1, Ordering::Relaxed);
-    let d = scratch_root().join(format!("stancf-t-{}-{call}-{name}", std::process::id()));
+    let d =
+        scratch_root("stancf-t-").join(format!("stancf-t-{}-{call}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-/// Where the scratch folders go: cargo's folder for integration tests'
-/// files (inside target/), from which, the first time, the folders of
-/// earlier runs whose process has ended are removed (a run leaves some
-/// 500 behind; in the system's temp folder they used to pile up by the
-/// tens of thousands).
-fn scratch_root() -> PathBuf {
-    static CLEANED: std::sync::Once = std::sync::Once::new();
-    let root = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
-    CLEANED.call_once(|| remove_ended_runs(&root));
-    root
-}
-
-/// Removes the folders in `root` named `stancf-t-<pid>-...` whose process
-/// has ended (where the system says which have: /proc).
-fn remove_ended_runs(root: &Path) {
-    if !Path::new("/proc/self").exists() {
-        return;
-    }
-    let Ok(entries) = std::fs::read_dir(root) else {
-        return;
-    };
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(pid) = name
-            .strip_prefix("stancf-t-")
-            .and_then(|rest| rest.split('-').next())
-        else {
-            continue;
-        };
-        let ended = pid
-            .parse::<u32>()
-            .is_ok_and(|p| p != std::process::id() && !Path::new(&format!("/proc/{p}")).exists());
-        if ended {
-            let _ = std::fs::remove_dir_all(entry.path());
-        }
-    }
 }
 
 pub fn repo_file(rel: &str) -> PathBuf {
