@@ -51,10 +51,12 @@ enum Command {
     /// keys, list entries by index: `loads.1.drag_coefficient`), one folder
     /// per run and DIR/sweep.csv with the summary figures of all.
     Sweep {
-        /// Scenario file (TOML).
-        scenario: PathBuf,
+        /// Scenario files (TOML) or MoorDyn decks; several make one more
+        /// axis, `scenario` (intact and damaged variants).
+        #[arg(required = true)]
+        scenario: Vec<PathBuf>,
         /// key=v1,v2,... (repeat for a grid).
-        #[arg(long = "set", required = true)]
+        #[arg(long = "set")]
         sets: Vec<String>,
         /// Runs at a time (default: the number of cores).
         #[arg(long)]

@@ -5,6 +5,7 @@
 
 mod results;
 mod simulation;
+mod sweeps;
 
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyOSError, PyTypeError, PyValueError};
@@ -113,12 +114,12 @@ fn dict_to_toml(d: &Bound<'_, PyDict>) -> PyResult<String> {
 }
 
 /// Scenario text with dotted keys set (`{"analysis.time_step": 1e-4,
-/// "loads.1.drag_coefficient": 0.5}`), validated.
+/// "loads.1.drag_coefficient": 0.5}`), validated. A MoorDyn deck's keys
+/// are set in the scenario that takes it (`[system] moordyn = "<deck>"`,
+/// `name` the deck's path), as a sweep varies it.
 #[pyfunction]
 fn with_values(text: &str, name: &str, values: &Bound<'_, PyDict>) -> PyResult<String> {
-    let mut doc: toml::Table = text
-        .parse()
-        .map_err(|e: toml::de::Error| ScenarioError::new_err(format!("{name}: {e}")))?;
+    let mut doc = sweep::base_document(text, Path::new(name)).map_err(ScenarioError::new_err)?;
     for (k, v) in values.iter() {
         let key: String = k.extract()?;
         let value = to_toml(&v, &key)?;
@@ -268,6 +269,10 @@ fn _stancf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_figures, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_points, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_base, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::summary_figures, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_extremes, m)?)?;
     m.add("SWEEP_LIMIT", sweep::MAX_POINTS)?;
     m.add_class::<PyResultFolder>()?;
     m.add_class::<simulation::PySimulation>()?;

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import stancf
+from sweep_executors import KillsTheWorkerOfRun0 as _KillsTheWorkerOfRun0, cluster as _cluster
 
 ROOT = Path(__file__).resolve().parents[3]
 CLI = Path(os.environ.get("STANCF_BIN", ROOT / "target" / "release" / "stancf"))
@@ -371,13 +372,6 @@ def test_sweep_on_a_process_pool_matches_separate_runs(tmp_path):
 
 
 
-def _cluster(**kw):
-    from dask.distributed import Client, LocalCluster
-    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                           dashboard_address=None, **kw)
-    return cluster, Client(cluster)
-
-
 def test_twelve_point_sweep_on_a_dask_cluster(tmp_path):
     sc = stancf.Scenario(PENDULUM)
     grid = {"loads.1.drag_coefficient": [0.0, 0.5, 1.0, 1.5, 2.0, 2.5],
@@ -398,41 +392,6 @@ def test_twelve_point_sweep_on_a_dask_cluster(tmp_path):
             assert r[name] == alone.summary["tip"][k]
         assert r["steps"] == alone.summary["steps"]
         assert r["energy_max_rel_drift"] == alone.summary["energy"]["max_rel_drift"]
-
-
-class _KillsTheWorkerOfRun0:
-    """A Dask executor for the sweep that loses, on purpose, the worker
-    holding run 0: run 0's task starts its run (made to last minutes) and
-    ends its own process once the run has begun writing. Run 0 goes to one
-    worker and every other run to the other, so no other run can be on the
-    dying worker by chance: what fails does not depend on scheduling."""
-
-    def __init__(self, client):
-        client.wait_for_workers(2)
-        self.client = client
-        self.doomed, self.spared = sorted(client.scheduler_info()["workers"])[:2]
-
-    def submit(self, fn, text, name, folder):
-        if not folder.endswith("run_0000"):
-            return self.client.submit(fn, text, name, folder, workers=[self.spared],
-                                      allow_other_workers=False, pure=False)
-
-        def die_holding_run_0(fn, text, name, folder):
-            import os
-            import threading
-            import time
-            import stancf
-            long = stancf.Scenario(text).with_values({"analysis.duration": 100.0}).text
-            run = threading.Thread(target=fn, args=(long, name, folder), daemon=True)
-            run.start()
-            parent, me = os.path.split(folder)
-            # Until the run has taken its folder (its lock appears beside it).
-            while run.is_alive() and not any(me in f for f in os.listdir(parent)):
-                time.sleep(0.001)
-            os._exit(1)
-
-        return self.client.submit(die_holding_run_0, fn, text, name, folder,
-                                  workers=[self.doomed], allow_other_workers=False, pure=False)
 
 
 def _columns(keys):

@@ -15,8 +15,8 @@
 //!   digits), `lines/<id>/` with [`LINE_FILES`], the `.out` files the
 //!   folder's `summary.json` names as its `moordyn_out` (MoorDyn's output
 //!   files, named after the deck) and, in a sweep's folder (one
-//!   with `sweep.csv`), `run_<k>/` (k of 4 or 5 digits) holding a run's
-//!   set.
+//!   with `sweep.csv`), its `extremes.csv` and `run_<k>/` (k of 4 or 5
+//!   digits) holding a run's set.
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -158,7 +158,11 @@ fn is_result_file(level: Level, name: &str) -> bool {
         Level::Top | Level::SweepRun => RUN_FILES.contains(&name) || is_figure(name),
         // A sweep's own files; a run's beside its runs' folders when the
         // sweep's folder was a run's before.
-        Level::Sweep => name == "sweep.csv" || RUN_FILES.contains(&name) || is_figure(name),
+        Level::Sweep => {
+            ["sweep.csv", "extremes.csv"].contains(&name)
+                || RUN_FILES.contains(&name)
+                || is_figure(name)
+        }
         Level::Vtk => name
             .strip_prefix("cable_")
             .and_then(|r| r.strip_suffix(".vtp"))

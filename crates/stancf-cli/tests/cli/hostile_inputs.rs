@@ -146,7 +146,7 @@ fn a_file_neither_toml_nor_a_deck_and_a_deck_without_lines_say_so() {
         &[],
         2000,
     );
-    // `sweep` takes single cables: a deck is told so, not parsed as TOML.
+    // `sweep` reads a deck as a deck: its error, not TOML's.
     let o = stancf(&[
         "sweep",
         d.join("nolines.txt").to_str().unwrap(),
@@ -155,7 +155,11 @@ fn a_file_neither_toml_nor_a_deck_and_a_deck_without_lines_say_so() {
     ]);
     let (_, err) = text(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("a MoorDyn deck describes a system"), "{err}");
+    assert!(
+        err.contains("nolines.txt: the deck defines no lines"),
+        "{err}"
+    );
+    assert!(!err.contains("system.moordyn"), "{err}");
     assert!(!err.contains("TOML parse error"), "{err}");
     std::fs::remove_dir_all(&d).unwrap();
 }

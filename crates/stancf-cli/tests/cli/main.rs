@@ -49,6 +49,7 @@ mod solver_and_schemes;
 mod step_halvings;
 mod stiffness;
 mod sweep;
+mod sweep_systems;
 mod system_bounds;
 mod system_geometry;
 mod system_summary;

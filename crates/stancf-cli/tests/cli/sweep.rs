@@ -2,7 +2,10 @@
 //! (RFC 4180, read back here with a CSV reader), failures kept row by row,
 //! and the refusals (exit 2, naming the key or the size, nothing written).
 
-use crate::common::{names, pendulum, run_to, scratch, stancf, text, BIN};
+use crate::common::{column as col, sweep_table as table};
+use crate::common::{
+    names, pendulum, read_rfc4180 as read_csv, run_to, scratch, stancf, text, BIN,
+};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -13,74 +16,6 @@ fn write_scenario(dir: &Path, contents: &str) -> PathBuf {
     let p = dir.join("s.toml");
     std::fs::write(&p, contents).unwrap();
     p
-}
-
-/// An RFC 4180 reader: fields separated by commas, records by line breaks
-/// (CRLF or LF); a quoted field may hold commas, line breaks and quotes
-/// (doubled). Panics on a quote inside an unquoted field or an unclosed
-/// quote, which a writer without quoting produces.
-fn read_csv(s: &str) -> Vec<Vec<String>> {
-    let mut records = Vec::new();
-    let mut record = Vec::new();
-    let mut field = String::new();
-    let mut chars = s.chars().peekable();
-    let mut quoted_field = false;
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if field.is_empty() && !quoted_field => {
-                quoted_field = true;
-                loop {
-                    match chars.next().expect("a quoted field is closed") {
-                        '"' if chars.peek() == Some(&'"') => {
-                            chars.next();
-                            field.push('"');
-                        }
-                        '"' => break,
-                        c => field.push(c),
-                    }
-                }
-                assert!(
-                    matches!(chars.peek(), None | Some(',' | '\n' | '\r')),
-                    "text after a closing quote in {s:?}"
-                );
-            }
-            '"' => panic!("a quote inside an unquoted field in {s:?}"),
-            ',' => {
-                record.push(std::mem::take(&mut field));
-                quoted_field = false;
-            }
-            '\r' if chars.peek() == Some(&'\n') => {}
-            '\n' => {
-                record.push(std::mem::take(&mut field));
-                records.push(std::mem::take(&mut record));
-                quoted_field = false;
-            }
-            c => field.push(c),
-        }
-    }
-    if !field.is_empty() || !record.is_empty() {
-        record.push(field);
-        records.push(record);
-    }
-    records
-}
-
-/// sweep.csv of `dir` as rows of named cells, with its header.
-fn table(dir: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let s = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
-    let mut rows = read_csv(&s);
-    let header = rows.remove(0);
-    for r in &rows {
-        assert_eq!(r.len(), header.len(), "{r:?} against {header:?}");
-    }
-    (header, rows)
-}
-
-fn col(header: &[String], name: &str) -> usize {
-    header
-        .iter()
-        .position(|h| h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
 }
 
 const FIGURES: [&str; 10] = [

@@ -63,7 +63,10 @@ class Scenario:
 
     def with_values(self, values):
         """A copy with dotted keys set: ``{"analysis.time_step": 1e-4,
-        "loads.1.drag_coefficient": 0.5}`` (list entries by 0-based index)."""
+        "loads.1.drag_coefficient": 0.5}`` (list entries by 0-based index).
+        A MoorDyn deck's copy is the scenario that takes the deck
+        (``[system] moordyn = "<deck>"``) with the keys set:
+        ``water.jonswap.hs``, ``analysis.duration``, ``system.mbl.chain``."""
         return Scenario(_stancf.with_values(self._text, self.name, dict(values)), self.name)
 
     @property

@@ -127,5 +127,7 @@ pub(super) fn deck_line_type(
             range: v.range,
             averaging_time: crate::moordyn::VivColumns::MEAN_SQUARE_STEPS * dtm,
         }),
+        // A MoorDyn deck has no breaking load (the scenario's system.mbl).
+        mbl: None,
     }
 }

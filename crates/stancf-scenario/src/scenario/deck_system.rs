@@ -62,13 +62,21 @@ pub(super) fn deck_system(
     sc.names = super::names::Names::of_deck(&deck, Some(deck_file.clone()))
         .with_rods(&sc.rods, deck.points.len());
     super::deck_mesh::deck_meshes(ctx, &raw.mesh, &mut sc)?;
+    if let Some(mbl) = &rs.mbl {
+        breaking_loads(ctx, mbl, &mut sc)?;
+    }
+    let deck_alone = raw.analysis.is_none();
     let (raw_analysis, step_note) = with_deck_step(raw.analysis, &deck);
-    let (analysis, measures, initial, notes) = analysis_part(
+    let (mut analysis, measures, initial, notes) = analysis_part(
         ctx,
         raw_analysis,
         InitialShape::Static,
         sc.has_free_bodies(),
     )?;
+    if deck_alone {
+        // As the deck alone: its step is a coupled run's.
+        analysis.time_step = deck.time_step().unwrap_or(0.0);
+    }
     sc.notes.extend(step_note);
     if let Some(why) = sc
         .static_only
@@ -101,6 +109,7 @@ pub(super) fn deck_system(
         raw.output.as_ref(),
         sc.analysis.force_tolerance.is_some(),
     )?;
+    sc.statistics_after = super::output::statistics_after(ctx, raw.output.as_ref())?;
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;
     super::output::stiffness_to_write(ctx, &sc.output_files, sc.has_free_bodies(), statics)?;
@@ -115,8 +124,14 @@ fn with_deck_step(
     raw: Option<super::raw::RawAnalysis>,
     deck: &crate::moordyn::Deck,
 ) -> (Option<super::raw::RawAnalysis>, Option<String>) {
+    // No [analysis]: the deck's own analysis, static, as the deck alone
+    // (super::moordyn::deck_scenario).
     let Some(mut a) = raw else {
-        return (None, None);
+        let statics = super::raw::RawAnalysis {
+            kind: Some("static".into()),
+            ..Default::default()
+        };
+        return (Some(statics), None);
     };
     // A missing type is a dynamic analysis (scenario/analysis.rs).
     let dynamic = a.kind.as_deref().unwrap_or("dynamic") == "dynamic";
@@ -151,6 +166,37 @@ pub(super) fn refuse_deck_keys(ctx: &Ctx, raw: &RawScenario) -> Result<(), Scena
             "gives the mesh of a MoorDyn deck's lines (system.moordyn); a [[lines]] entry takes \
              its own elements and grading",
         ));
+    }
+    Ok(())
+}
+
+/// `system.mbl = { <type name> = N, ... }`: the minimum breaking loads
+/// of the deck's line types (a MoorDyn deck gives none), each positive
+/// and naming one of its types.
+fn breaking_loads(
+    ctx: &Ctx,
+    mbl: &toml::Table,
+    sc: &mut SystemScenario,
+) -> Result<(), ScenarioError> {
+    for (name, value) in mbl {
+        let key = format!("system.mbl.{name}");
+        let v = match value {
+            toml::Value::Float(v) => *v,
+            toml::Value::Integer(v) => *v as f64,
+            other => return Err(ctx.err(&key, format!("{other} is not a number of newtons"))),
+        };
+        let v = ctx.positive(&key, v)?;
+        let Some(k) = sc.line_types.iter().position(|t| t.name == *name) else {
+            let names: Vec<&str> = sc.line_types.iter().map(|t| t.name.as_str()).collect();
+            return Err(ctx.err(
+                &key,
+                format!(
+                    "the deck has no line type \"{name}\" (its types: {})",
+                    names.join(", ")
+                ),
+            ));
+        };
+        sc.line_types[k].mbl = Some(v);
     }
     Ok(())
 }

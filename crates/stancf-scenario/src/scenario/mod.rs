@@ -163,6 +163,12 @@ pub fn parse_input_with(
     cable_scenario(&ctx, raw, path).map(|sc| Input::Cable(Box::new(sc)))
 }
 
+/// Whether `text` is a MoorDyn driver file (`md_driver.inp`: docs/interface.md,
+/// "MoorDyn driver files").
+pub fn is_moordyn_driver(text: &str) -> bool {
+    moordyn_driver::is_driver(text)
+}
+
 /// The TOML tables of a scenario; a file that is not TOML at all is told
 /// what stancf reads (a TOML scenario or a MoorDyn v2 deck, known by its
 /// dashed section headers).

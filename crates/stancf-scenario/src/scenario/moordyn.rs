@@ -153,6 +153,7 @@ pub(super) fn deck_scenario(
         output_every: 1,
         output_files: super::OutputFiles::all(),
         end_forces: super::output::EndForces::StepMean,
+        statistics_after: 0.0,
         notes,
         water: Some(water),
         static_only: super::moordyn_waves::static_only(deck, file),

@@ -97,6 +97,17 @@ pub(super) fn output_end_forces(
     }
 }
 
+/// `output.statistics_after` of a system (s, >= 0, default 0): the
+/// design statistics of summary.json (docs/interface.md, "Design
+/// statistics") take the written moments at this time and after, so that
+/// a start-up transient stays out of them.
+pub(super) fn statistics_after(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<f64, ScenarioError> {
+    match raw.and_then(|r| r.statistics_after) {
+        Some(t) => ctx.non_negative("output.statistics_after", t),
+        None => Ok(0.0),
+    }
+}
+
 /// `output.every` (at least 1, default 1): the steps between two written
 /// steps.
 pub(super) fn output_every(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<usize, ScenarioError> {
@@ -215,6 +226,13 @@ pub(super) fn no_output_files(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<(), 
             "output.end_forces",
             "chooses the end forces of a system of lines ([system] or [[lines]]); a single \
              cable's reactions.csv holds the mean over each step in this version",
+        ));
+    }
+    if raw.is_some_and(|r| r.statistics_after.is_some()) {
+        return Err(ctx.err(
+            "output.statistics_after",
+            "starts the design statistics of a system of lines ([system] or [[lines]]): its \
+             line ends' tensions and its points' offsets; a single cable has none",
         ));
     }
     Ok(())

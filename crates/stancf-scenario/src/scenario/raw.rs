@@ -91,6 +91,9 @@ pub(super) struct RawMesh {
 pub(super) struct RawSystem {
     pub(super) gravity: Option<Vector>,
     pub(super) moordyn: Option<String>,
+    /// With `moordyn`: the minimum breaking load of deck line types, by
+    /// name (N).
+    pub(super) mbl: Option<toml::Table>,
 }
 
 /// `[water]`.
@@ -175,6 +178,7 @@ pub(super) struct RawLineType {
     pub(super) caax: Option<f64>,
     pub(super) compression: Option<bool>,
     pub(super) viv: Option<RawViv>,
+    pub(super) mbl: Option<f64>,
 }
 
 /// `viv = { cl = ..., df = 0.08, cf = 0.18, averaging_time = ... }` of a
@@ -422,6 +426,7 @@ pub(super) struct RawOutput {
     pub(super) every: Option<i64>,
     pub(super) files: Option<Vec<String>>,
     pub(super) end_forces: Option<String>,
+    pub(super) statistics_after: Option<f64>,
 }
 
 /// A `[[loads]]` entry of type `"gravity"`.

@@ -45,6 +45,13 @@ pub(super) fn system_scenario(
         return super::deck_system::deck_system(ctx, raw, (rs, &deck_path), (title, path), host);
     }
     super::deck_system::refuse_deck_keys(ctx, &raw)?;
+    if rs.mbl.is_some() {
+        return Err(ctx.err(
+            "system.mbl",
+            "names the breaking loads of a MoorDyn deck's line types (with system.moordyn); \
+             give a [[line_types]] entry's own mbl",
+        ));
+    }
     let gravity = ctx.vector_or("system.gravity", rs.gravity.as_deref(), [0.0, 0.0, -9.81])?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let water = scenario_water(ctx, raw.water, gravity, dir)?;
@@ -88,6 +95,7 @@ pub(super) fn system_scenario(
         raw.output.as_ref(),
         analysis.force_tolerance.is_some(),
     )?;
+    let statistics_after = super::output::statistics_after(ctx, raw.output.as_ref())?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
     let failures = super::failures::failures(ctx, &raw.failures, &points, &lines)?;
     let static_only = host_waves_static_only(ctx.file, water.as_ref());
@@ -110,6 +118,7 @@ pub(super) fn system_scenario(
         output_every,
         output_files,
         end_forces,
+        statistics_after,
         notes,
         water,
         channels: Vec::new(),
@@ -185,6 +194,7 @@ fn line_types(ctx: &Ctx, raw: &[RawLineType]) -> Result<Vec<LineType>, ScenarioE
             ca_axial: optional("caax", r.caax)?,
             compression: r.compression.unwrap_or(true),
             viv: super::viv_types::toml_viv(ctx, &key("viv"), r.viv.as_ref())?,
+            mbl: r.mbl.map(|v| ctx.positive(&key("mbl"), v)).transpose()?,
             name,
         });
         let t = out.last().expect("pushed");

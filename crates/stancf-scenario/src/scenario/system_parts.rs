@@ -56,6 +56,9 @@ pub struct LineType {
     /// averaging_time }`, a deck's `Cl dF cF` (its averaging time 500
     /// dtM). None: no VIV.
     pub viv: Option<stancf::element::Viv>,
+    /// The minimum breaking load (N): `mbl`, or `system.mbl` for a deck's
+    /// type. None: not given (no safety factor is reported).
+    pub mbl: Option<f64>,
 }
 
 impl LineType {
@@ -191,6 +194,9 @@ pub struct SystemScenario {
     pub output_files: super::OutputFiles,
     /// The end forces written: step means or estimates at t.
     pub end_forces: super::output::EndForces,
+    /// `output.statistics_after` (s): the design statistics of summary.json
+    /// take the written moments from this time on (after a transient).
+    pub statistics_after: f64,
     pub notes: Vec<String>,
     /// The water the lines are in (None: air).
     pub water: Option<Water>,

@@ -18,14 +18,19 @@
 //! time, nothing of them kept, so validation needs memory for the table
 //! only (a few bytes per point) and takes about 0.1 ms per point.
 
+mod extremes;
+mod figures;
+mod grid;
+
+pub use extremes::{extremes_csv, gumbel_fit, seed_axis, Gumbel, RunRow};
+pub use figures::{columns, figures, FIGURES, SYSTEM_FIGURES};
+
 use crate::output::{write_atomic, Num, ResultFolder};
-use crate::run::{run_text, RunOptions};
-use crate::scenario;
 use crate::Failure;
-use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use grid::Grid;
+
+pub use grid::{base_document, SCENARIO_AXIS};
+use std::path::PathBuf;
 
 /// One swept key and its values.
 #[derive(Clone, Debug, PartialEq)]
@@ -253,71 +258,19 @@ pub fn csv_field(s: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
-/// The scenario text of point `k`: the base document with the point's
-/// values put in, and its name for messages (`file with key=value, ...`).
-fn point_text(
-    base: &toml::Table,
-    axes: &[Axis],
-    k: usize,
-    file: &str,
-) -> Result<(String, String), Failure> {
-    let values = point(axes, k);
-    let mut doc = base.clone();
-    for (a, v) in axes.iter().zip(&values) {
-        apply(&mut doc, &a.key, (*v).clone())
-            .map_err(|e| Failure::Input(format!("{file}: --set {}: {e}", a.key)))?;
-    }
-    let text =
-        toml::to_string(&doc).map_err(|e| Failure::Other(format!("{file}: run {k}: {e}")))?;
-    let label: Vec<String> = axes
-        .iter()
-        .zip(&values)
-        .map(|(a, v)| format!("{}={}", a.key, cell(v)))
-        .collect();
-    Ok((text, format!("{file} with {}", label.join(", "))))
-}
-
-/// The summary figures of sweep.csv (and of the Python package's sweep),
-/// in order, with their paths in summary.json (list entries by index).
-pub const FIGURES: [(&str, &[&str]); 10] = [
-    ("steps", &["steps"]),
-    ("time", &["time"]),
-    ("wall_time_s", &["wall_time_s"]),
-    ("iterations_per_step", &["iterations", "mean_per_step"]),
-    ("factorizations", &["iterations", "factorizations"]),
-    ("energy_max_rel_drift", &["energy", "max_rel_drift"]),
-    ("stress_peak_pa", &["stress_peak", "axial_stress"]),
-    ("tip_x", &["tip", "0"]),
-    ("tip_y", &["tip", "1"]),
-    ("tip_z", &["tip", "2"]),
-];
-
-fn figure(summary: &serde_json::Value, path: &[&str]) -> String {
-    let mut v = summary;
-    for p in path {
-        v = match p.parse::<usize>() {
-            Ok(i) => &v[i],
-            Err(_) => &v[*p],
-        };
-    }
-    match v {
-        serde_json::Value::Number(n) => n.as_f64().map(|x| Num(x).to_string()).unwrap_or_default(),
-        _ => String::new(),
-    }
-}
-
-/// `stancf sweep`: every point of the grid of `sets` validated first, then
-/// run `jobs` at a time into `run_<k>` of one result folder with its
-/// sweep.csv (docs/interface.md, "stancf sweep").
+/// `stancf sweep`: every point of the grid of `sets` over the scenario
+/// files `paths` (one more axis, `scenario`, when there are several)
+/// validated first, then run `jobs` at a time into `run_<k>` of one
+/// result folder with its sweep.csv (docs/interface.md, "stancf sweep").
 pub fn sweep(
-    path: &Path,
+    paths: &[PathBuf],
     sets: &[String],
     jobs: Option<usize>,
     out: Option<PathBuf>,
 ) -> Result<(), Failure> {
-    let grid = Grid::read(path, sets)?;
+    let grid = Grid::read(paths, sets)?;
     let target = out.unwrap_or_else(|| {
-        let stem = path
+        let stem = paths[0]
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
@@ -333,12 +286,15 @@ pub fn sweep(
                 .unwrap_or(1)
         })
         .clamp(1, grid.points);
-    let outcomes = grid.run_all(path, &dir, &target, jobs);
+    let outcomes = grid.run_all(&dir, &target, jobs);
     let table = grid.table(&dir, outcomes);
     let cannot = |e: std::io::Error| {
         Failure::Other(format!("{}: cannot write results: {e}", target.display()))
     };
     write_atomic(&dir, "sweep.csv", table.csv.as_bytes()).map_err(cannot)?;
+    if let Some(extremes) = &table.extremes {
+        write_atomic(&dir, "extremes.csv", extremes.as_bytes()).map_err(cannot)?;
+    }
     folder.commit().map_err(cannot)?;
     let shown = target.join("sweep.csv");
     if table.interrupted {
@@ -368,157 +324,6 @@ pub fn sweep(
             .join(", "),
         shown.display()
     )))
-}
-
-/// How a run of the sweep ended: its status (`ok`, `failed`,
-/// `interrupted`) and message; None if it never started.
-type Outcome = Option<(&'static str, String)>;
-
-/// The grid of a sweep: the base scenario, its axes, how many points.
-struct Grid {
-    file: String,
-    base: toml::Table,
-    axes: Vec<Axis>,
-    points: usize,
-}
-
-/// sweep.csv's text, the runs that failed and whether any was cut short.
-struct Table {
-    csv: String,
-    failed: Vec<usize>,
-    interrupted: bool,
-}
-
-impl Grid {
-    /// The scenario at `path` and its axes from `sets`; every point is
-    /// built and validated before anything runs, one at a time and then
-    /// dropped (its run builds the text again).
-    fn read(path: &Path, sets: &[String]) -> Result<Grid, Failure> {
-        let file = path.display().to_string();
-        let text = crate::input_file::read_text(path)
-            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-        scenario::parse(&text, &file, path).map_err(|e| Failure::Input(e.0))?;
-        let base: toml::Table = text
-            .parse()
-            .map_err(|e: toml::de::Error| Failure::Input(format!("{file}: {e}")))?;
-        if sets.is_empty() {
-            return Err(Failure::Input(
-                "sweep: give at least one --set key=v1,v2,...".into(),
-            ));
-        }
-        let axes: Vec<Axis> = sets
-            .iter()
-            .map(|s| parse_set(s))
-            .collect::<Result<_, _>>()
-            .map_err(Failure::Input)?;
-        let keys: Vec<&str> = axes.iter().map(|a| a.key.as_str()).collect();
-        check_keys(&keys).map_err(Failure::Input)?;
-        let lengths: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
-        let points = grid_size(&lengths).map_err(Failure::Input)?;
-        for k in 0..points {
-            let (text, name) = point_text(&base, &axes, k, &file)?;
-            scenario::parse(&text, &name, path).map_err(|e| Failure::Input(e.0))?;
-        }
-        Ok(Grid {
-            file,
-            base,
-            axes,
-            points,
-        })
-    }
-
-    /// Runs every point into `dir/run_<k>`, `jobs` at a time; after
-    /// Ctrl-C or SIGTERM no further run starts. Messages name the folders
-    /// as they will be after the sweep's commit, under `target`.
-    fn run_all(&self, path: &Path, dir: &Path, target: &Path, jobs: usize) -> Vec<Outcome> {
-        let cancel = crate::signals::cancel();
-        let next = AtomicUsize::new(0);
-        let outcomes: Mutex<Vec<Outcome>> = Mutex::new(vec![None; self.points]);
-        std::thread::scope(|s| {
-            for _ in 0..jobs {
-                s.spawn(|| loop {
-                    if (cancel.0)() {
-                        break;
-                    }
-                    let k = next.fetch_add(1, Ordering::SeqCst);
-                    if k >= self.points {
-                        break;
-                    }
-                    // The run writes its results and its scenario.toml.
-                    let run_dir = format!("run_{k:04}");
-                    let result =
-                        point_text(&self.base, &self.axes, k, &self.file).and_then(|(text, _)| {
-                            run_text(
-                                &text,
-                                path,
-                                RunOptions {
-                                    out: Some(dir.join(&run_dir)),
-                                    quiet: true,
-                                    cancel: Some(cancel.clone()),
-                                    shown_as: Some(target.join(&run_dir)),
-                                    ..RunOptions::default()
-                                },
-                            )
-                        });
-                    let outcome = match result {
-                        Ok(()) => ("ok", String::new()),
-                        Err(Failure::Interrupted(m)) => ("interrupted", m),
-                        Err(e) => ("failed", e.to_string()),
-                    };
-                    outcomes.lock().expect("no run panics holding it")[k] = Some(outcome);
-                });
-            }
-        });
-        outcomes.into_inner().expect("all runs joined")
-    }
-
-    /// sweep.csv: a row per run with its point, status, the figures of
-    /// its summary.json ([`FIGURES`]) and its error.
-    fn table(&self, dir: &Path, outcomes: Vec<Outcome>) -> Table {
-        let mut csv = String::from("run");
-        for a in &self.axes {
-            write!(csv, ",{}", csv_field(&a.key)).ok();
-        }
-        csv.push_str(",status");
-        for (name, _) in FIGURES {
-            write!(csv, ",{name}").ok();
-        }
-        csv.push_str(",error\n");
-        let mut failed = Vec::new();
-        let mut interrupted = false;
-        for (k, outcome) in outcomes.into_iter().enumerate() {
-            let (status, error) = outcome.unwrap_or_else(|| {
-                (
-                    "not run",
-                    "the sweep was interrupted before this run started".into(),
-                )
-            });
-            write!(csv, "{k}").ok();
-            for v in point(&self.axes, k) {
-                write!(csv, ",{}", csv_field(&cell(v))).ok();
-            }
-            let summary: Option<serde_json::Value> =
-                std::fs::read_to_string(dir.join(format!("run_{k:04}")).join("summary.json"))
-                    .ok()
-                    .and_then(|t| serde_json::from_str(&t).ok());
-            write!(csv, ",{status}").ok();
-            for (_, p) in FIGURES {
-                let value = summary.as_ref().map(|s| figure(s, p)).unwrap_or_default();
-                write!(csv, ",{value}").ok();
-            }
-            writeln!(csv, ",{}", csv_field(&error)).ok();
-            match status {
-                "ok" => {}
-                "failed" => failed.push(k),
-                _ => interrupted = true,
-            }
-        }
-        Table {
-            csv,
-            failed,
-            interrupted,
-        }
-    }
 }
 
 #[cfg(test)]

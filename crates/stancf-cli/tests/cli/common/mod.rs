@@ -6,11 +6,14 @@
 mod bodies;
 mod rods;
 mod scratch_root;
+mod sweep_tables;
 // The properties binary shares this module and uses none of them.
 #[allow(unused_imports)]
 pub use bodies::*;
 #[allow(unused_imports)]
 pub use rods::*;
+#[allow(unused_imports)]
+pub use sweep_tables::*;
 
 use scratch_root::scratch_root;
 use std::path::{Path, PathBuf};

@@ -13,6 +13,7 @@ mod releases;
 mod rods;
 mod rows;
 mod static_report;
+mod statistics;
 mod stiffness;
 mod vtk_parts;
 mod writers;
@@ -138,6 +139,7 @@ pub(super) fn run_system(
         writers.times = super::times_of(&sc.analysis);
     }
     writers.rods = rods::frames(&sc);
+    writers.statistics = statistics::Statistics::new(&sc);
     writers.parts = vtk_parts::BodyParts::of(&sc);
     let mut from_static = false;
     let mut matrices = Vec::new();
@@ -184,12 +186,13 @@ pub(super) fn run_system(
         }
         step_through(s, &sc, opts, &mut writers, &mut outcome).map_err(io_err(place.shown))?;
     }
+    let statistics = std::mem::take(&mut writers.statistics).to_json(&sc);
     writers.commit().map_err(io_err(place.shown))?;
     let wall = clock.elapsed().as_secs_f64();
     write_summary(
         place.dest(),
         &sc,
-        &outcome,
+        (&outcome, statistics),
         wall,
         (sim.as_ref(), static_solve.as_ref()),
         &matrices,
@@ -410,7 +413,7 @@ fn step_through(
 fn write_summary(
     dest: Dest,
     sc: &SystemScenario,
-    outcome: &Outcome,
+    (outcome, statistics): (&Outcome, Value),
     wall: f64,
     (sim, statics): (Option<&SystemSimulation>, Option<&SystemStatics>),
     matrices: &[stiffness::BodyStiffness],
@@ -481,6 +484,7 @@ fn write_summary(
         "wall_time_s": json_num(wall),
         "error": error_json(outcome.interrupted, outcome.failure.as_ref()),
         "interrupted": outcome.interrupted,
+        "statistics": statistics,
     });
     if let Some(st) = statics.filter(|_| outcome.failure.is_none()) {
         summary["static_path"] = json!(static_report::static_path(st));

@@ -102,6 +102,27 @@ impl MoorDynFiles {
     }
 }
 
+/// channels.csv of a deck's OUTPUTS with its header, and what fills each
+/// column (None: no channels, or left out by `output.files`).
+type ChannelsFile = Option<(AtomicFile, Vec<(Channel, bool)>)>;
+
+fn channels_file(
+    dest: &Dest,
+    channels: &[OutputChannel],
+    files: &OutputFiles,
+) -> std::io::Result<ChannelsFile> {
+    if channels.is_empty() || !files.writes("channels.csv") {
+        return Ok(None);
+    }
+    let mut file = dest.create("channels.csv")?;
+    let names: Vec<&str> = channels.iter().map(|c| c.name.as_str()).collect();
+    writeln!(file.writer(), "t,{}", names.join(","))?;
+    Ok(Some((
+        file,
+        channels.iter().map(|c| (c.channel, c.computed)).collect(),
+    )))
+}
+
 /// The files of a system run.
 pub(super) struct SystemWriters {
     lines: Vec<LineFiles>,
@@ -114,7 +135,7 @@ pub(super) struct SystemWriters {
     tensions: Option<AtomicFile>,
     history: Option<AtomicFile>,
     /// channels.csv of a MoorDyn deck's OUTPUTS (none without).
-    channels: Option<(AtomicFile, Vec<(Channel, bool)>)>,
+    channels: ChannelsFile,
     /// MoorDyn's `<deck>.out` of the same channels (beside channels.csv).
     moordyn_out: Option<MoorDynOut>,
     /// MoorDyn's `<deck>_Line<n>.out` of each line that asks for one.
@@ -136,6 +157,8 @@ pub(super) struct SystemWriters {
     pub(super) rods: Vec<RodFrame>,
     /// The bodies and rods as ParaView draws them (with `--vtk`).
     pub(super) parts: Option<super::vtk_parts::BodyParts>,
+    /// The design statistics of the moments written.
+    pub(super) statistics: super::statistics::Statistics,
 }
 
 impl SystemWriters {
@@ -221,17 +244,7 @@ impl SystemWriters {
             }
             None => MoorDynFiles::none(line_ids.len()),
         };
-        let channels = if channels.is_empty() || !files.writes("channels.csv") {
-            None
-        } else {
-            let mut file = dest.create("channels.csv")?;
-            let names: Vec<&str> = channels.iter().map(|c| c.name.as_str()).collect();
-            writeln!(file.writer(), "t,{}", names.join(","))?;
-            Some((
-                file,
-                channels.iter().map(|c| (c.channel, c.computed)).collect(),
-            ))
-        };
+        let channels = channels_file(&dest, channels, files)?;
         Ok(SystemWriters {
             vtk: if extras.vtk {
                 Some(crate::vtk::VtkWriter::create(dest.dir)?)
@@ -257,6 +270,7 @@ impl SystemWriters {
             times: TimeGrid::default(),
             rods: Vec::new(),
             parts: None,
+            statistics: Default::default(),
         })
     }
 
@@ -320,7 +334,9 @@ impl SystemWriters {
                 out.write_row(t, &values)?;
             }
         }
-        self.write_history(row, t)
+        self.write_history(row, t)?;
+        self.statistics.add(t, row);
+        Ok(())
     }
 
     /// Each line's nodes.csv, stress.csv and node_loads.csv rows at the
