@@ -391,3 +391,81 @@ fn intact_and_damaged_variants_are_one_more_axis() {
     let lost_mean = column(&eh, "tension_max_line2_A_mean");
     assert!(!extremes[0][lost_mean].is_empty() && extremes[1][lost_mean].is_empty());
 }
+
+/// `[deck]` sets a deck's values as its own columns would: a sweep of
+/// line 1's UnstrLen and the chain's Cd gives, row by row, the static
+/// tensions of copies of the deck with those columns edited (to the
+/// bit), and a shorter line pulls harder at its fairlead.
+#[test]
+fn deck_values_are_swept_as_edited_copies_of_the_deck() {
+    let d = scratch("sweep-systems-deck-values");
+    let deck_text =
+        std::fs::read_to_string(repo_file("examples/oc4-deepcwind-moordyn.txt")).unwrap();
+    let deck = d.join("oc4.txt");
+    std::fs::write(&deck, &deck_text).unwrap();
+    let out = d.join("sw");
+    sweep(
+        &deck,
+        &[
+            "deck.lines.1.length=830.0,840.0",
+            "deck.line_types.chain.cd=1.5",
+        ],
+        &out,
+    );
+    let (header, rows) = sweep_table(&out);
+    let fairlead = column(&header, "tension_max_line1_B");
+    let mut tensions = Vec::new();
+    for (row, length) in rows.iter().zip(["830.0", "840.0"]) {
+        let edited = deck_text
+            .replace(
+                "1   chain     1        4        835.35",
+                &format!("1   chain     1        4        {length}"),
+            )
+            .replace(
+                "chain     0.0766  113.35   7.536E8   -1.0      0        2.0",
+                "chain     0.0766  113.35   7.536E8   -1.0      0        1.5",
+            );
+        assert_ne!(edited, deck_text);
+        let copy = d.join(format!("oc4-{length}.txt"));
+        std::fs::write(&copy, edited).unwrap();
+        let alone = d.join(format!("alone-{length}"));
+        let o = run_quiet(&copy, &alone, &[]);
+        assert!(o.status.success(), "{:?}", text(&o));
+        let summary = read_json(&alone.join("summary.json"));
+        let swept: f64 = row[fairlead].parse().unwrap();
+        assert_eq!(
+            Some(swept),
+            end_statistics(&summary, 1, "B")["max"].as_f64()
+        );
+        tensions.push(swept);
+    }
+    assert!(tensions[0] > tensions[1], "{tensions:?}");
+    // Refused naming the key: an id the deck lacks, a column it has not,
+    // a value its column refuses, and [deck] without a deck.
+    for (values, needle) in [
+        ("[deck.lines.4]\nlength = 10.0\n", "deck.lines.4"),
+        ("[deck.lines.1]\nsag = 1.0\n", "deck.lines.1.sag"),
+        (
+            "[deck.line_types.chain]\ncd = -1.0\n",
+            "deck.line_types.chain.cd",
+        ),
+        ("[deck.line_types.wire]\ncd = 1.0\n", "deck.line_types.wire"),
+        (
+            "[deck.points.1]\nposition = [1.0, 2.0]\n",
+            "deck.points.1.position",
+        ),
+    ] {
+        let sc = write_scenario(
+            &d,
+            "bad.toml",
+            &format!("[system]\nmoordyn = \"oc4.txt\"\n{values}"),
+        );
+        refused_by_check_and_run(&sc, &d.join("never"), &[needle], &[]);
+    }
+    let sc = write_scenario(
+        &d,
+        "no-deck.toml",
+        &format!("{SEA}\n[deck.lines.1]\nlength = 1.0\n"),
+    );
+    refused_by_check_and_run(&sc, &d.join("never"), &["deck", "system.moordyn"], &[]);
+}

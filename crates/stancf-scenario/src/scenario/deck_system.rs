@@ -42,7 +42,10 @@ pub(super) fn deck_system(
              [water] (what the deck does not give), [analysis] and [output]",
         ));
     }
-    let deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
+    let mut deck = super::moordyn::load_deck(ctx, "system.moordyn", deck_path)?;
+    if let Some(values) = &raw.deck {
+        super::deck_values::set_deck_values(ctx, values, &mut deck)?;
+    }
     let dir = path.parent().unwrap_or(Path::new(""));
     let added = raw.water.map(|w| water_keys(ctx, w, dir)).transpose()?;
     let farm = raw
@@ -153,6 +156,13 @@ fn with_deck_step(
 /// The keys only a scenario that takes a deck has, refused in a TOML
 /// system naming the key: `[farm]`, `[[mesh]]`.
 pub(super) fn refuse_deck_keys(ctx: &Ctx, raw: &RawScenario) -> Result<(), ScenarioError> {
+    if raw.deck.is_some() {
+        return Err(ctx.err(
+            "deck",
+            "sets values of a MoorDyn deck (system.moordyn); a TOML system's [[line_types]], \
+             [[lines]] and [[points]] hold their own",
+        ));
+    }
     if raw.farm.is_some() {
         return Err(ctx.err(
             "farm",

@@ -19,6 +19,7 @@ mod deck_files;
 mod deck_line_types;
 mod deck_mesh;
 mod deck_system;
+mod deck_values;
 mod ea_curves;
 mod external_loads;
 mod failures;

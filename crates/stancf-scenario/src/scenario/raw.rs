@@ -54,6 +54,9 @@ pub(super) struct RawScenario {
     pub(super) water: Option<RawWater>,
     /// A FAST.Farm deck's turbines (docs/interface.md, "MoorDyn decks").
     pub(super) farm: Option<RawFarm>,
+    /// Values of the MoorDyn deck of `system.moordyn` set by name
+    /// (`scenario/deck_values.rs`).
+    pub(super) deck: Option<toml::Table>,
     /// Line failures (docs/interface.md, "Line failures").
     #[serde(default)]
     pub(super) failures: Vec<RawFailure>,
