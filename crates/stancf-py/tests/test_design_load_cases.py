@@ -6,6 +6,7 @@ Gumbel most probable maximum against scipy's maximum-likelihood fit
 
 import csv
 import os
+from pathlib import Path
 from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
@@ -14,70 +15,10 @@ import scipy.stats
 import stancf
 
 # Two chains in 50 m of water under a JONSWAP sea, one fairlead moved
-# sideways: 20 s in steps of 0.25 s, the statistics from 5 s on.
-SEA = """
-title = "two lines in a sea"
-[system]
-gravity = [0.0, 0.0, -9.81]
-[water]
-depth = 50.0
-[water.jonswap]
-hs = 2.0
-tp = 8.0
-seed = 0
-components = 20
-[[line_types]]
-name = "chain"
-diameter = 0.05
-mass_per_length = 20.0
-ea = 1.0e8
-cd = 1.2
-ca = 1.0
-compression = false
-mbl = 2.0e6
-[[points]]
-id = 1
-type = "fixed"
-position = [-120.0, 0.0, -50.0]
-[[points]]
-id = 2
-type = "fixed"
-position = [120.0, 0.0, -50.0]
-[[points]]
-id = 3
-type = "coupled"
-position = [-5.0, 0.0, -5.0]
-[[points]]
-id = 4
-type = "coupled"
-position = [5.0, 0.0, -5.0]
-[[lines]]
-id = 1
-type = "chain"
-length = 130.0
-elements = 8
-a = 1
-b = 3
-[[lines]]
-id = 2
-type = "chain"
-length = 130.0
-elements = 8
-a = 2
-b = 4
-[[motions]]
-point = 3
-amplitude = [2.0, 0.0, 0.0]
-period = 10.0
-ramp = 5.0
-[analysis]
-initial = "static"
-duration = 20.0
-time_step = 0.25
-time_scheme = "galerkin"
-[output]
-statistics_after = 5.0
-"""
+# sideways: 20 s in steps of 0.25 s, the statistics from 5 s on (the
+# command line's tests run the same file).
+SEA = (Path(__file__).resolve().parents[2] / "stancf-cli" / "tests" / "fixtures"
+       / "two-lines-in-a-sea.toml").read_text()
 
 
 def test_a_system_runs_statistics_are_numpys_on_its_tensions():

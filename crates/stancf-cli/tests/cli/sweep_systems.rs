@@ -11,69 +11,7 @@ use std::path::Path;
 
 /// Two chains in 50 m of water under a JONSWAP sea, one fairlead moved
 /// sideways: 20 s in steps of 0.25 s, the statistics from 5 s on.
-const SEA: &str = r#"
-title = "two lines in a sea"
-[system]
-gravity = [0.0, 0.0, -9.81]
-[water]
-depth = 50.0
-[water.jonswap]
-hs = 2.0
-tp = 8.0
-seed = 0
-components = 20
-[[line_types]]
-name = "chain"
-diameter = 0.05
-mass_per_length = 20.0
-ea = 1.0e8
-cd = 1.2
-ca = 1.0
-compression = false
-mbl = 2.0e6
-[[points]]
-id = 1
-type = "fixed"
-position = [-120.0, 0.0, -50.0]
-[[points]]
-id = 2
-type = "fixed"
-position = [120.0, 0.0, -50.0]
-[[points]]
-id = 3
-type = "coupled"
-position = [-5.0, 0.0, -5.0]
-[[points]]
-id = 4
-type = "coupled"
-position = [5.0, 0.0, -5.0]
-[[lines]]
-id = 1
-type = "chain"
-length = 130.0
-elements = 8
-a = 1
-b = 3
-[[lines]]
-id = 2
-type = "chain"
-length = 130.0
-elements = 8
-a = 2
-b = 4
-[[motions]]
-point = 3
-amplitude = [2.0, 0.0, 0.0]
-period = 10.0
-ramp = 5.0
-[analysis]
-initial = "static"
-duration = 20.0
-time_step = 0.25
-time_scheme = "galerkin"
-[output]
-statistics_after = 5.0
-"#;
+const SEA: &str = include_str!("../fixtures/two-lines-in-a-sea.toml");
 
 /// SEA with its significant wave height and seed set.
 fn sea(hs: &str, seed: &str) -> String {

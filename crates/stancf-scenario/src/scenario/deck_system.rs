@@ -190,22 +190,9 @@ fn breaking_loads(
 ) -> Result<(), ScenarioError> {
     for (name, value) in mbl {
         let key = format!("system.mbl.{name}");
-        let v = match value {
-            toml::Value::Float(v) => *v,
-            toml::Value::Integer(v) => *v as f64,
-            other => return Err(ctx.err(&key, format!("{other} is not a number of newtons"))),
-        };
-        let v = ctx.positive(&key, v)?;
-        let Some(k) = sc.line_types.iter().position(|t| t.name == *name) else {
-            let names: Vec<&str> = sc.line_types.iter().map(|t| t.name.as_str()).collect();
-            return Err(ctx.err(
-                &key,
-                format!(
-                    "the deck has no line type \"{name}\" (its types: {})",
-                    names.join(", ")
-                ),
-            ));
-        };
+        let v = ctx.positive(&key, super::deck_values::number(ctx, &key, value)?)?;
+        let names = sc.line_types.iter().map(|t| t.name.as_str());
+        let k = super::deck_values::type_named(ctx, &key, name, names)?;
         sc.line_types[k].mbl = Some(v);
     }
     Ok(())

@@ -54,7 +54,7 @@ fn sub_table<'a>(
 }
 
 /// A number (an integer is taken as one).
-fn number(ctx: &Ctx, key: &str, v: &toml::Value) -> Result<f64, ScenarioError> {
+pub(super) fn number(ctx: &Ctx, key: &str, v: &toml::Value) -> Result<f64, ScenarioError> {
     let x = match v {
         toml::Value::Float(x) => *x,
         toml::Value::Integer(i) => *i as f64,
@@ -75,19 +75,31 @@ fn by_id(ctx: &Ctx, key: &str, id: &str, count: usize, what: &str) -> Result<usi
     }
 }
 
+/// The index of the deck's line type `name` among `names` (its
+/// TypeNames, in order), or an error at `key` listing them.
+pub(super) fn type_named<'a>(
+    ctx: &Ctx,
+    key: &str,
+    name: &str,
+    names: impl Iterator<Item = &'a str> + Clone,
+) -> Result<usize, ScenarioError> {
+    names.clone().position(|n| n == name).ok_or_else(|| {
+        let all: Vec<&str> = names.collect();
+        ctx.err(
+            key,
+            format!(
+                "the deck has no line type \"{name}\" (its types: {})",
+                all.join(", ")
+            ),
+        )
+    })
+}
+
 fn line_types(ctx: &Ctx, entries: &toml::Table, deck: &mut Deck) -> Result<(), ScenarioError> {
     for (name, columns) in entries {
         let key = format!("deck.line_types.{name}");
-        let Some(k) = deck.line_types.iter().position(|t| t.name == *name) else {
-            let names: Vec<&str> = deck.line_types.iter().map(|t| t.name.as_str()).collect();
-            return Err(ctx.err(
-                &key,
-                format!(
-                    "the deck has no line type \"{name}\" (its types: {})",
-                    names.join(", ")
-                ),
-            ));
-        };
+        let names = deck.line_types.iter().map(|t| t.name.as_str());
+        let k = type_named(ctx, &key, name, names)?;
         for (column, v) in sub_table(ctx, &key, columns)? {
             let key = format!("{key}.{column}");
             let x = number(ctx, &key, v)?;
