@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The race against MoorDyn (issue 15): builds stancf, makes a virtual
 # environment with MoorDyn (2.7 or later), numpy and matplotlib from PyPI,
-# and runs both codes on the same decks. `./run.sh --quick` runs a few
-# coarse points only (a smoke test, minutes); the full race takes about
-# an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
+# and runs both codes on the same decks (OC4, the steep wave, the riser).
+# `./run.sh --quick` runs a few coarse points only (a smoke test,
+# minutes); the full race takes about an hour on a 2-core machine. Results: bench/peers/moordyn/out/, copied
 # to docs/race/ by `./run.sh --publish`. `./run.sh --coupling-check` runs
 # coupling_check.py instead (why MoorDyn is driven at its own step);
 # `--added-mass-check` runs added_mass_check.py (why the steep wave is

@@ -262,7 +262,7 @@ fn the_shipped_moordyn_decks_are_read() {
         .map(|e| e.unwrap().path().display().to_string())
         .filter(|p| p.ends_with("-moordyn.txt"))
         .collect();
-    assert_eq!(decks.len(), 6, "{decks:?}");
+    assert_eq!(decks.len(), 7, "{decks:?}");
     for deck in decks {
         let o = stancf(&["check", &deck]);
         let (so, se) = text(&o);
