@@ -87,9 +87,9 @@ fn a_system_runs_statistics_are_those_of_its_written_time_series() {
                 "{s} against {}",
                 var.sqrt()
             );
-            // The moved fairlead's line swings its tension by a quarter
-            // of its mean (a 2 m motion on 10 m of sag); the other line
-            // only by the sea.
+            // The line whose fairlead moves 2 m swings its tension by a
+            // quarter of its mean (measured: std 3.4 kN on 13 kN at end
+            // A); the other line only by the sea (19 N).
             if line == 1 {
                 assert!(s > 0.1 * mean, "{s}");
             } else {
