@@ -31,6 +31,7 @@
 use super::csv_field;
 use super::figures::{value, MAXIMA};
 use crate::output::Num;
+use std::collections::HashMap;
 use std::fmt::Write as _;
 
 /// A Gumbel law fitted by maximum likelihood: location mu (the most
@@ -153,15 +154,19 @@ pub fn extremes_csv(keys: &[String], seed: usize, columns: &[String], rows: &[Ru
             .map(|(_, c)| c.clone())
             .collect()
     };
-    let mut states: Vec<Vec<String>> = Vec::new();
+    // Each row's sea state once, the states in the order they first
+    // appear (a grid of 10 000 runs groups in one pass, not 10 000).
+    let mut states: Vec<(Vec<String>, Vec<&RunRow>)> = Vec::new();
+    let mut index: HashMap<Vec<String>, usize> = HashMap::new();
     for r in rows {
         let s = state(r);
-        if !states.contains(&s) {
-            states.push(s);
-        }
+        let k = *index.entry(s.clone()).or_insert_with(|| {
+            states.push((s, Vec::new()));
+            states.len() - 1
+        });
+        states[k].1.push(r);
     }
-    for s in &states {
-        let runs: Vec<&RunRow> = rows.iter().filter(|r| state(r) == *s).collect();
+    for (s, runs) in &states {
         let ok: Vec<&&RunRow> = runs.iter().filter(|r| r.ok).collect();
         for c in s {
             write!(csv, "{},", csv_field(c)).ok();
