@@ -17,8 +17,14 @@ ROOT = Path(__file__).resolve().parents[3]
 FIXTURES = ROOT / "crates" / "stancf-cli" / "tests" / "fixtures"
 
 
-def jumper(tmp_path, dt):
-    shutil.copy(FIXTURES / "lowe-langley-2006-jumper-moordyn.txt", tmp_path / "line.txt")
+def jumper(tmp_path, dt, sea_row=None):
+    """Lowe and Langley's jumper (MoorDyn's deck, `WaveKin 1`), stepped at
+    `dt`; `sea_row`, if given, in place of the deck's WaveKin row."""
+    deck = (FIXTURES / "lowe-langley-2006-jumper-moordyn.txt").read_text()
+    if sea_row is not None:
+        row = next(r for r in deck.splitlines() if r.split()[1:2] == ["WaveKin"])
+        deck = deck.replace(row, sea_row)
+    (tmp_path / "line.txt").write_text(deck)
     scenario = tmp_path / "jumper.toml"
     scenario.write_text(
         '[system]\nmoordyn = "line.txt"\n[analysis]\ntype = "dynamic"\n'
@@ -66,6 +72,31 @@ def test_lowe_langley_2006_case_6_with_waves_set_from_python(tmp_path):
             worst = max(worst, abs(np.linalg.norm(f) / 1e3 - reference[k, 1]))
             k += 1
     assert worst < 1.2, worst
+
+
+def test_a_moordyn_f_deck_whose_sea_is_seastates_takes_it_from_the_host(tmp_path):
+    """MoorDyn-F's `SEASTATE WaterKin` (the glue code's SeaState sea) is a
+    host's sea as `WaveKin 1` is: asked at the same places, and 2 s of case
+    6's wave give the same top forces to the last bit."""
+    forces = []
+    for name, row in (("wavekin1", None), ("seastate", "SEASTATE  WaterKin")):
+        folder = tmp_path / name
+        folder.mkdir()
+        sim = jumper(folder, 0.1, row)
+        sim.initialize([0.0, 0.0, -5.0])
+        points = sim.wave_kinematics_points()
+        run, t = [], 0.0
+        while t < 2.0 - 1e-9:
+            u, a = wave(points, t + 0.05, math.pi / 2.0, 0.0)
+            sim.set_wave_kinematics(u, a, t + 0.05)
+            t = round(t + 0.1, 9)
+            run.append(sim.step_to(t, [0.0, 0.0, -5.0], [0.0, 0.0, 0.0]))
+        forces.append((points, np.array(run)))
+    (p1, f1), (p2, f2) = forces
+    assert np.array_equal(p1, p2)
+    assert np.array_equal(f1, f2)
+    # The wave moved the top's force: the host's flow was taken.
+    assert np.ptp(np.linalg.norm(f1, axis=1)) > 1e3
 
 
 def test_the_host_is_asked_at_the_nodes_then_the_points_then_the_ground(tmp_path):

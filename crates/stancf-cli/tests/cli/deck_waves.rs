@@ -383,3 +383,50 @@ fn a_hosts_waves_given_twice_are_refused_and_a_rod_decks_statics_run() {
     let o = run_quiet(&deck, &d.join("out"), &[]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
 }
+
+/// OpenFAST's md_waterkin3 (`SEASTATE WaterKin`: MoorDyn-F interpolates
+/// the glue code's SeaState sea at its nodes) takes its sea from a host as
+/// `WaveKin 1` does: `check` passes and notes it; alone, its statics are
+/// those of the same deck in still water (its WaterKin row removed), to
+/// the digit; a dynamic run without a host is refused naming the option
+/// and pointing to the coupling API.
+#[test]
+fn openfasts_md_waterkin3_takes_its_seastate_sea_from_a_host() {
+    let d = scratch("seastate");
+    let deck = copy_fixture(&d, "md-waterkin3-moordyn.dat", "moordyn.dat");
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let said = format!("{}{}", text(&o).0, text(&o).1);
+    assert!(said.contains("WaterKin SEASTATE (line 35)"), "{said}");
+    assert!(said.contains("set by a host"), "{said}");
+    let o = run_quiet(&deck, &d.join("seastate"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let still: String = std::fs::read_to_string(&deck)
+        .unwrap()
+        .lines()
+        .filter(|row| !row.starts_with("SEASTATE WaterKin"))
+        .map(|row| format!("{row}\n"))
+        .collect();
+    let still = write_scenario(&d, "still.dat", &still);
+    let o = run_quiet(&still, &d.join("still"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let tensions = |run: &str| std::fs::read_to_string(d.join(run).join("tensions.csv")).unwrap();
+    assert_eq!(tensions("seastate"), tensions("still"));
+    let dynamic = write_scenario(
+        &d,
+        "dynamic.toml",
+        "[system]\nmoordyn = \"moordyn.dat\"\n[analysis]\ntype = \"dynamic\"\n\
+         time_step = 0.01\nduration = 1.0\n",
+    );
+    refused_by_check_and_run(
+        &dynamic,
+        &d.join("never"),
+        &[
+            "line 35",
+            "SEASTATE",
+            "static equilibrium only",
+            "stancf_wave_kin_set",
+        ],
+        &[],
+    );
+}

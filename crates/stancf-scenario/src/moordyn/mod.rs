@@ -335,9 +335,21 @@ impl Deck {
 
     /// Whether the deck's waves are a host's: `WaveKin 1`, MoorDyn's
     /// external wave kinematics, which the host sets at the nodes while it
-    /// steps the system (docs/method.md §12.1, (W2f)-(W2g)).
+    /// steps the system (docs/method.md §12.1, (W2f)-(W2g)), or MoorDyn-F's
+    /// `SEASTATE WaterKin` ([`Deck::sea_from_seastate`]).
     pub fn host_sets_waves(&self) -> bool {
-        self.option(SupportedOption::WaveKin) == Some(1.0)
+        self.option(SupportedOption::WaveKin) == Some(1.0) || self.sea_from_seastate().is_some()
+    }
+
+    /// The option's name and line where a MoorDyn-F deck's `WaterKin` is
+    /// `SEASTATE`: its water's kinematics (waves and current) are those of
+    /// the glue code's SeaState module, which MoorDyn-F interpolates on
+    /// SeaState's grid at its nodes. stancf takes them from the host as
+    /// `WaveKin 1`'s, at MoorDyn's points (docs/method.md (W2f)-(W2h)).
+    pub fn sea_from_seastate(&self) -> Option<(&str, usize)> {
+        self.option_text(SupportedOption::WaterKinFile)
+            .filter(|(value, _, _)| value.eq_ignore_ascii_case("seastate"))
+            .map(|(_, name, line)| (name, line))
     }
 
     /// The value of a supported option, if the deck sets it.

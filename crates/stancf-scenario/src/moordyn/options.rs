@@ -51,8 +51,10 @@ pub enum SupportedOption {
     /// path, read by the scenario that takes the deck).
     SeafloorFile,
     /// `WaterKin` (MoorDyn-F): the file of its water kinematics (a steady
-    /// current profile is read; its wave grids and `SEASTATE` are
-    /// refused by the scenario that reads the deck).
+    /// current profile is read; its wave grids are refused by the
+    /// scenario that reads the deck), or `SEASTATE`: the sea of the host's
+    /// SeaState module, which stancf takes from the host at MoorDyn's
+    /// points as `WaveKin 1` ([`super::Deck::host_sets_waves`]).
     WaterKinFile,
     /// `CFL` without a `dtM`: the Courant number MoorDyn derives its step
     /// from ([`super::Deck::time_step`]); beside a `dtM` it is ignored, as
@@ -250,17 +252,6 @@ pub(crate) fn read(s: &Section) -> Result<Vec<DeckOption>, DeckError> {
             }
             (OptionKind::Supported(SupportedOption::WaterKinFile), _) => {
                 let path = text.trim_matches('"');
-                if path.eq_ignore_ascii_case("seastate") {
-                    return Err(DeckError::at(
-                        row.line,
-                        format!(
-                            "option {name} is SEASTATE: the sea of OpenFAST's SeaState module \
-                             is not read; give the sea as [water.waves], [water.jonswap] and \
-                             [water.current] in a scenario that takes a copy of the deck \
-                             without this option, or a WaterKin file of a steady current"
-                        ),
-                    ));
-                }
                 OptionValue::Text(path.to_string())
             }
             (OptionKind::Supported(o), Some(v)) => supported_value(o, v, name, row.line)?,

@@ -237,6 +237,7 @@ fn deck_option_of(key: &str, deck: &Deck) -> SupportedOption {
         "water.seabed.stiffness" => SupportedOption::BottomStiffness,
         "water.seabed.damping" => SupportedOption::BottomDamping,
         "water.current" => SupportedOption::Currents,
+        "water.host_waves" if deck.sea_from_seastate().is_some() => SupportedOption::WaterKinFile,
         "water.host_waves" => SupportedOption::WaveKin,
         "water.seabed.friction_axial" => separate(SupportedOption::AxialFriction),
         _ => separate(SupportedOption::TransverseFriction),

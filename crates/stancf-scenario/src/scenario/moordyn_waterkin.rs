@@ -23,6 +23,7 @@ const MAX_ROWS: usize = 100;
 
 /// The deck's `WaterKin` file's steady current (None for `CurrentMod`
 /// 0), with a note of where the file was found; None without the option.
+/// `SEASTATE` is a host's sea (no current of the deck's, a note).
 /// Refused naming the option's line and the file's: a file not found, a
 /// wave grid, SeaState's current, a profile MoorDyn-F refuses.
 pub(super) fn deck_waterkin(
@@ -43,6 +44,15 @@ pub(super) fn deck_waterkin(
                 other.name()
             )));
         }
+    }
+    if deck.sea_from_seastate().is_some() {
+        let note = format!(
+            "OPTIONS: {name} SEASTATE (line {line}): the water's kinematics (waves and current) \
+             are the host's SeaState's, taken from the host at MoorDyn's points as WaveKin 1's \
+             (stancf_wave_kin_set in C, Simulation.set_wave_kinematics in Python; docs/method.md \
+             (W2f)-(W2h)); without a host the deck's statics are in still water"
+        );
+        return Ok(Some((None, note)));
     }
     let at = path.parent().unwrap_or(Path::new("")).join(named);
     let read = |e: String| refuse(format!("{}: {e}", at.display()));

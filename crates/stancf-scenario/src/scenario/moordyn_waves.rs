@@ -38,19 +38,29 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 /// Why a deck runs statically only from the command line or a scenario
-/// (None: it may run in time): its `WaveKin 1` waits for a host to set
-/// the water's kinematics at MoorDyn's nodes, and a run without a host
-/// has none. The coupling API steps it.
+/// (None: it may run in time): its `WaveKin 1`, or MoorDyn-F's `SEASTATE
+/// WaterKin`, waits for a host to set the water's kinematics at MoorDyn's
+/// nodes, and a run without a host has none. The coupling API steps it.
 pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
+    let coupling = "step it through the coupling API, which takes the host's kinematics \
+                    (stancf_wave_kin_set in C, Simulation.set_wave_kinematics in Python), or give \
+                    the waves in a scenario that takes the deck (system.moordyn) as \
+                    [[water.waves]] or [water.jonswap]";
+    if let Some((name, line)) = deck.sea_from_seastate() {
+        return Some(format!(
+            "{file}: line {line}: option {name} is SEASTATE: the water's kinematics are those of \
+             the host's SeaState module, and a run from the command line or a scenario has no \
+             host, so the deck runs its static equilibrium only (in still water); {coupling}, \
+             with the deck's WaterKin row removed"
+        ));
+    }
     let at = deck.option_at(SupportedOption::WaveKin)?;
     deck.host_sets_waves().then(|| {
         format!(
             "{file}: line {}: option {} is 1: MoorDyn's host sets the water's kinematics at its \
              nodes (MoorDyn_ExternalWaveKinSet), and a run from the command line or a scenario \
-             has no host, so the deck runs its static equilibrium only; step it through the \
-             coupling API, which takes the host's kinematics (stancf_wave_kin_set in C, \
-             Simulation.set_wave_kinematics in Python), or give the waves in a scenario that takes \
-             the deck (system.moordyn) as [[water.waves]] or [water.jonswap], with WaveKin 0",
+             has no host, so the deck runs its static equilibrium only; {coupling}, with \
+             WaveKin 0",
             at.1, at.0
         )
     })

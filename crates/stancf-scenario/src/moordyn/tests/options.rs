@@ -31,16 +31,26 @@ fn an_unknown_option_is_refused_naming_its_line() {
 }
 
 #[test]
-fn moordyn_f_water_kinematics_name_a_file_and_seastate_is_refused_by_name() {
+fn moordyn_f_water_kinematics_name_a_file_or_a_hosts_seastate() {
     let text = with("0.001 dtM", "0.001 dtM\n\"WaterKin.dat\" WaterKin");
     let deck = parse(&text).unwrap();
     let (file, name, _) = deck.option_text(SupportedOption::WaterKinFile).unwrap();
     assert_eq!((file, name), ("WaterKin.dat", "WaterKin"));
-    let row = "SEASTATE WaterKin";
-    let text = with("0.001 dtM", &format!("0.001 dtM\n{row}"));
-    let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, row)), "{row}");
-    assert!(e.message.contains("SeaState module"), "{row}: {e}");
+    assert!(!deck.host_sets_waves());
+    assert_eq!(deck.sea_from_seastate(), None);
+    for row in [
+        "SEASTATE WaterKin",
+        "\"SeaState\"   WaterKin  - the host's sea",
+    ] {
+        let text = with("0.001 dtM", &format!("0.001 dtM\n{row}"));
+        let deck = parse(&text).unwrap();
+        assert_eq!(
+            deck.sea_from_seastate(),
+            Some(("WaterKin", line_of(&text, row))),
+            "{row}"
+        );
+        assert!(deck.host_sets_waves(), "{row}");
+    }
 }
 
 #[test]
