@@ -332,6 +332,22 @@ impl TimeCubic {
     fn at(&self, g: usize, basis: &CubicBasis) -> (f64, f64) {
         basis.on([self.e0[g], self.w0[g], self.e1[g], self.w1[g]])
     }
+
+    /// The step's start time and length.
+    pub fn span(&self) -> (f64, f64) {
+        (self.t0, self.length)
+    }
+
+    /// Every coordinate's value and rate at time `t` of the step (eq. (6)
+    /// in time: the Hermite cubic of the end values and slopes), into `e`
+    /// and `v` (the model's coordinate count each). A `t` outside the
+    /// step extrapolates; the caller keeps it inside.
+    pub fn state_at(&self, t: f64, e: &mut [f64], v: &mut [f64]) {
+        let basis = CubicBasis::new(self.length, (t - self.t0) / self.length);
+        for (g, (e, v)) in e.iter_mut().zip(v.iter_mut()).enumerate() {
+            (*e, *v) = self.at(g, &basis);
+        }
+    }
 }
 
 /// The cubic of eq. (6) of length `l` evaluated at s (units of its

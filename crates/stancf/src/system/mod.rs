@@ -67,6 +67,8 @@ mod stepping;
 mod stiffness;
 mod topology;
 mod undo;
+mod within_step;
+pub use within_step::StepRecord;
 
 pub use balance::{balanced_bodies, balanced_points, static_seed_states};
 pub use bodies::{Body, BodyKind, Pin};

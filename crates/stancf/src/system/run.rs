@@ -56,6 +56,7 @@ where
     let steps = step_count(duration, dt);
     let mut watch = sim.energy_watch();
     for step in 1..=steps {
+        sim.clear_step_records();
         if step == steps {
             let h = step_length(step, steps, duration, dt);
             if h != dt {

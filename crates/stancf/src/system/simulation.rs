@@ -91,6 +91,14 @@ pub struct SystemSimulation {
     pub(super) end_forces_at_end: Vec<[EndForce; 2]>,
     /// The end forces at the end of the last step (M23a).
     pub(super) forces_at_time: ForcesAtTime,
+    /// The last Galerkin step's end forces over it, each end's cubic in
+    /// the unit Hermite basis ([`super::end_forces::force_cubic`], (M23b);
+    /// None at a loose end and with P2), and the step's start and length:
+    /// [`super::StepRecord`] (docs/method.md §6.5).
+    pub(super) force_cubics: Vec<[Option<[[f64; 3]; 4]>; 2]>,
+    /// The steps' records kept for output between their ends (None: not
+    /// kept; [`Self::record_steps`]).
+    pub(super) step_records: Option<Vec<super::StepRecord>>,
     /// The Galerkin step's system mass matrix (free points only).
     pub(super) mass: Option<SystemMass>,
     /// The Galerkin step's end momenta of the free points.
@@ -196,6 +204,8 @@ impl SystemSimulation {
             step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             end_forces_at_end: vec![[EndForce::default(); 2]; lines.len()],
+            force_cubics: vec![[None; 2]; lines.len()],
+            step_records: None,
             forces_at_time: ForcesAtTime::new(lines.len()),
             point_nodes: vec![PointNodes::default(); topology.points().len()],
             topology,

@@ -148,6 +148,7 @@ where
     let mut interval_start = t0;
     for k in 1..=intervals {
         let end = interval_start + step_length(k, intervals, duration, big);
+        sim.clear_step_records();
         let report = stepper.cross(sim, end);
         sim.set_time_step(big);
         let report = report?;

@@ -6,7 +6,7 @@
 
 use super::body_terms::PinHold;
 use super::clamp_moments::clamp_turn;
-use super::end_forces::{force_at_end, position_row_sum, row_moments};
+use super::end_forces::{force_at_end, force_cubic, position_row_sum, row_moments};
 use super::layout::add_line_rows;
 use super::point_terms::PointTerms;
 use super::simulation::{step_problem, SystemSimulation};
@@ -51,6 +51,7 @@ impl SystemSimulation {
             self.forces_at_time.update(&self.end_forces, dt);
         }
         self.advance_points(dt);
+        self.keep_step_record(self.t, dt);
         self.steps += 1;
         self.t += dt;
         Ok(StepReport {
@@ -319,6 +320,7 @@ impl SystemSimulation {
             let layout = &self.layout.lines[i];
             self.end_forces[i] = [EndForce::default(); 2];
             self.end_forces_at_end[i] = [EndForce::default(); 2];
+            self.force_cubics[i] = [None; 2];
             for AttachedEnd {
                 end: k,
                 point: p,
@@ -353,6 +355,7 @@ impl SystemSimulation {
                 self.end_forces_at_end[i][k] = EndForce {
                     force: moments.map_or(force, |m| force_at_end(&m, dt)),
                 };
+                self.force_cubics[i][k] = moments.map(|m| force_cubic(&m, dt));
             }
         }
     }

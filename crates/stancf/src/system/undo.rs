@@ -73,6 +73,7 @@ impl SystemSimulation {
         self.failures = undo.failures;
         self.steps = undo.steps;
         self.t = undo.t;
+        self.drop_last_step_record();
         // The clamps' frames turned back with their bodies.
         for clamp in self.topology.body_clamps() {
             let body = self.bodies.iter().find(|b| b.index == clamp.body);

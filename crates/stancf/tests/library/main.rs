@@ -59,3 +59,4 @@ mod viscoelastic;
 mod viv;
 mod watchdog;
 mod water;
+mod within_step;
