@@ -1,5 +1,5 @@
-//! The system at a time inside its last step (docs/method.md §6.5a): what
-//! a run writes at output times that the steps do not land on (a step of
+//! The system at a time inside its recent steps (docs/method.md §6.5a):
+//! what a run writes at output times that the steps do not land on (a step of
 //! 1 s written every 0.1 s), from the step's own functions of time, not
 //! by shortening the steps.
 //!
@@ -131,11 +131,11 @@ impl SystemSimulation {
         if self.step_records.is_none() {
             return;
         }
-        let lines = self
-            .lines
-            .iter()
-            .map(|l| l.last_cubic().expect("a converged step's cubic"))
-            .collect();
+        // Every line has its cubic after a converged step; should one not,
+        // the step is not recorded and a time inside it is refused.
+        let Some(lines) = self.lines.iter().map(|l| l.last_cubic()).collect() else {
+            return;
+        };
         let points = (0..self.points.len())
             .map(|p| {
                 let m = &self.points[p];
