@@ -338,14 +338,14 @@ solver = "{solver}"
 step_halvings = 4
 {tolerance}
 [output]
-every = {every}
+{writing}
 files = ["points.csv"]
 end_forces = "at_time"
 """
 
 
 def run_stancf(pb, refine, dt, tolerance=None, sections=None, scheme="galerkin",
-               solver="modified-newton"):
+               solver="modified-newton", between=False):
     """(wall seconds, times, tensions k x points, summary) or None;
     `tolerance`: the scenario's `analysis.tolerance` (None: stancf's
     default, 1e-10 of the line's length); `sections`: the touchdown
@@ -357,16 +357,23 @@ def run_stancf(pb, refine, dt, tolerance=None, sections=None, scheme="galerkin",
     # Every run is judged at the same 0.1 s output times: a step that
     # does not divide them (0.2 s wrote every 0.2 s, half the samples) is
     # refused, as MoorDyn's is.
+    # With `between`, the steps need not divide it: the tables are
+    # written at its multiples from the steps' cubics (`[output]
+    # interval`, docs/method.md §6.5a).
     every = int(round(OUTPUT_DT / dt))
-    if every < 1 or abs(every * dt - OUTPUT_DT) > 1e-12:
+    if between:
+        writing = "interval = %r" % OUTPUT_DT
+    elif every < 1 or abs(every * dt - OUTPUT_DT) > 1e-12:
         sys.exit("stancf step %r does not divide the output interval %r" % (dt, OUTPUT_DT))
+    else:
+        writing = "every = %d" % every
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, "deck.txt"), "w") as f:
             f.write(deck_text(pb, refine, 1e-3))
         sc = os.path.join(d, "race.toml")
         with open(sc, "w") as f:
             f.write(SCENARIO.format(motions=motions, dt=dt, duration=pb.duration, scheme=scheme,
-                                    solver=solver, every=every,
+                                    solver=solver, writing=writing,
                                     tolerance="" if tolerance is None
                                     else "tolerance = %r\n" % tolerance))
             if sections:

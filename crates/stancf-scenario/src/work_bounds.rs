@@ -175,6 +175,19 @@ fn steps_problem(sc: &SystemScenario, allow_large: bool) -> Option<String> {
             MAX_STEPS as f64
         ));
     }
+    // The moments `output.interval` writes, bounded as the steps are.
+    let moments = sc
+        .output_interval
+        .map_or(0.0, |interval| sc.analysis.duration / interval);
+    if !allow_large && moments > MAX_STEPS as f64 {
+        return Some(format!(
+            "analysis.duration, output.interval: {} moments written, above the {:e} a run \
+             writes without --allow-large; take a longer interval or a shorter run, or pass \
+             --allow-large",
+            Sig(moments),
+            MAX_STEPS as f64
+        ));
+    }
     None
 }
 

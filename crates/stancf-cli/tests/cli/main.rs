@@ -37,6 +37,7 @@ mod moordyn_out;
 mod motion_files;
 mod output_files;
 mod output_folder_safety;
+mod output_interval;
 mod pinned_rods;
 mod reproduce;
 mod result_folder;

@@ -107,11 +107,13 @@ pub(super) fn deck_system(
     sc.output_every = super::output::output_every(ctx, raw.output.as_ref())?;
     sc.output_files = super::output::output_files(ctx, raw.output.as_ref())?;
     super::output::channels_to_write(ctx, &sc.output_files, true, sc.channels.len())?;
+    let interval = raw.output.as_ref().is_some_and(|o| o.interval.is_some());
     sc.end_forces = super::output::output_end_forces(
         ctx,
         raw.output.as_ref(),
-        sc.analysis.force_tolerance.is_some(),
+        sc.analysis.force_tolerance.is_some() || interval,
     )?;
+    sc.output_interval = super::output_interval::output_interval(ctx, raw.output.as_ref(), &sc)?;
     sc.statistics_after = super::output::statistics_after(ctx, raw.output.as_ref())?;
     super::output::bodies_to_write(ctx, &sc.output_files, sc.bodies.len())?;
     let statics = sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static;

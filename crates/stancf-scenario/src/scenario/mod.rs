@@ -43,6 +43,7 @@ mod moordyn_waves;
 mod motions;
 pub mod names;
 mod output;
+mod output_interval;
 pub(crate) mod overstretch;
 mod raw;
 mod rod_parts;

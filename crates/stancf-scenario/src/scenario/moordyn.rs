@@ -151,6 +151,7 @@ pub(super) fn deck_scenario(
         measures,
         initial,
         output_every: 1,
+        output_interval: None,
         output_files: super::OutputFiles::all(),
         end_forces: super::output::EndForces::StepMean,
         statistics_after: 0.0,

@@ -228,6 +228,13 @@ pub(super) fn no_output_files(ctx: &Ctx, raw: Option<&RawOutput>) -> Result<(), 
              cable's reactions.csv holds the mean over each step in this version",
         ));
     }
+    if raw.is_some_and(|r| r.interval.is_some()) {
+        return Err(ctx.err(
+            "output.interval",
+            "writes a system of lines ([system] or [[lines]]) between its steps; a single \
+             cable writes at its steps (output.every) in this version",
+        ));
+    }
     if raw.is_some_and(|r| r.statistics_after.is_some()) {
         return Err(ctx.err(
             "output.statistics_after",

@@ -430,6 +430,7 @@ pub(super) struct RawOutput {
     pub(super) files: Option<Vec<String>>,
     pub(super) end_forces: Option<String>,
     pub(super) statistics_after: Option<f64>,
+    pub(super) interval: Option<f64>,
 }
 
 /// A `[[loads]]` entry of type `"gravity"`.

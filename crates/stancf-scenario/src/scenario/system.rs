@@ -93,7 +93,8 @@ pub(super) fn system_scenario(
     let end_forces = super::output::output_end_forces(
         ctx,
         raw.output.as_ref(),
-        analysis.force_tolerance.is_some(),
+        analysis.force_tolerance.is_some()
+            || raw.output.as_ref().is_some_and(|o| o.interval.is_some()),
     )?;
     let statistics_after = super::output::statistics_after(ctx, raw.output.as_ref())?;
     let names = super::names::Names::default().with_rods(&rods, usize::MAX);
@@ -116,6 +117,7 @@ pub(super) fn system_scenario(
         measures,
         initial,
         output_every,
+        output_interval: None,
         output_files,
         end_forces,
         statistics_after,
@@ -133,6 +135,7 @@ pub(super) fn system_scenario(
     sc.notes.extend(super::viv_types::viv_notes(&sc));
     super::body_water::refuse_water_in_air(ctx.file, &sc)?;
     super::viv_types::refuse_viv_in_air(ctx.file, &sc)?;
+    sc.output_interval = super::output_interval::output_interval(ctx, raw.output.as_ref(), &sc)?;
     Ok(sc)
 }
 

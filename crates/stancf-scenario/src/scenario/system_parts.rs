@@ -190,6 +190,9 @@ pub struct SystemScenario {
     pub measures: Measures,
     pub initial: InitialShape,
     pub output_every: usize,
+    /// `output.interval` (s): the result tables written at its multiples,
+    /// between the steps (docs/method.md §6.5a); None: at the steps.
+    pub output_interval: Option<f64>,
     /// The result files written (`output.files`; all by default).
     pub output_files: super::OutputFiles,
     /// The end forces written: step means or estimates at t.

@@ -3,6 +3,7 @@
 //! the start of a dynamic one with `analysis.initial = "static"`), then
 //! the time stepping; results per line, per point and per line end.
 
+mod between;
 mod bodies;
 mod channel_values;
 mod moordyn_body_out;
@@ -23,6 +24,7 @@ use super::{io_err, Place, RunOptions};
 use crate::output::{json_num, Dest};
 use crate::scenario::{AnalysisKind, EndForces, InitialShape, SystemScenario};
 use crate::Failure;
+use between::Between;
 use rows::{dynamic_row, static_row, step_end_forces};
 use serde_json::{json, Value};
 use stancf::error::Sig;
@@ -136,7 +138,7 @@ pub(super) fn run_system(
     )
     .map_err(io_err(place.shown))?;
     if sc.analysis.kind == AnalysisKind::Dynamic {
-        writers.times = super::times_of(&sc.analysis);
+        writers.times = time_grid(&sc);
     }
     writers.rods = rods::frames(&sc);
     writers.statistics = statistics::Statistics::new(&sc);
@@ -333,10 +335,21 @@ fn solve_statics(st: &mut SystemStatics, opts: &RunOptions, outcome: &mut Outcom
     }
 }
 
+/// The times a dynamic run writes, on the decimals of its step, its
+/// duration and its output interval.
+fn time_grid(sc: &SystemScenario) -> crate::output::TimeGrid {
+    let a = &sc.analysis;
+    let mut given = vec![a.time_step, a.duration];
+    given.extend(sc.output_interval);
+    crate::output::TimeGrid::of(&given)
+}
+
 /// Steps to the end of the analysis with the core's run of a system
 /// (docs/method.md §11.15: the single cable's step count, the last step
 /// shortened to land on the duration), writing every `output.every`-th
-/// step and the last; a solver failure or a cancel ends it early.
+/// step and the last, or with `output.interval` the state at the
+/// interval's multiples from the steps' cubics (§6.5a) and every step's
+/// row of history.csv; a solver failure or a cancel ends it early.
 fn step_through(
     sim: &mut SystemSimulation,
     sc: &SystemScenario,
@@ -344,11 +357,15 @@ fn step_through(
     writers: &mut SystemWriters,
     outcome: &mut Outcome,
 ) -> std::io::Result<()> {
-    let times = super::times_of(&sc.analysis);
+    let times = time_grid(sc);
     let mut last_written = 0;
     let mut written = Ok(());
     let mut reported = releases::Reported::default();
     let mut controlled = None;
+    let mut between = sc
+        .output_interval
+        .map(|interval| Between::new(sim, interval))
+        .transpose()?;
     let observe = |sim: &SystemSimulation,
                    rep: &stancf::integrator::StepReport,
                    at: stancf::system::RunProgress| {
@@ -357,7 +374,18 @@ fn step_through(
         outcome.iterations += rep.newton.iterations;
         outcome.t = times.time(sim.time());
         outcome.record_step_tensions(sim, sc.end_forces);
-        if at.step.is_multiple_of(sc.output_every) || at.is_last() {
+        if let Some(between) = between.as_mut() {
+            let mut row = dynamic_row(sim, Some(sc.end_forces));
+            row.iterations = rep.newton.iterations;
+            row.residual = rep.newton.residual;
+            written = writers
+                .write_step(&row)
+                .and_then(|()| between.write(sim, writers, at.is_last()));
+            if written.is_err() {
+                return ControlFlow::Break(());
+            }
+            last_written = at.step;
+        } else if at.step.is_multiple_of(sc.output_every) || at.is_last() {
             let mut row = dynamic_row(sim, Some(sc.end_forces));
             row.iterations = rep.newton.iterations;
             row.residual = rep.newton.residual;

@@ -97,6 +97,68 @@ pub(super) fn dynamic_row(sim: &SystemSimulation, forces: Option<EndForces>) -> 
     }
 }
 
+/// The state of a system simulation at time `t` inside the steps it has
+/// recorded since its run step began (docs/method.md §6.5a, (M23d)): the
+/// lines' states (written into `states`, one per line, which the row
+/// borrows), the points', the end forces at t. Its energies are not
+/// computed (zero: the row is written by `SystemWriters::write_state`,
+/// which writes none; history.csv keeps the steps' own).
+pub(super) fn interval_row<'a>(
+    sim: &'a SystemSimulation,
+    t: f64,
+    states: &'a mut Vec<State>,
+) -> Result<SystemRow<'a>, stancf::ModelError> {
+    let system = sim.topology();
+    states.resize_with(sim.lines().len(), || State {
+        t,
+        e: Vec::new(),
+        v: Vec::new(),
+        internal: Vec::new(),
+    });
+    for (i, state) in states.iter_mut().enumerate() {
+        sim.line_state_within(i, t, state)?;
+    }
+    let lines = sim
+        .lines()
+        .iter()
+        .zip(states.iter())
+        .map(|(l, s)| (l.model(), s))
+        .collect();
+    let points = (0..system.points().len())
+        .map(|p| {
+            let (x, v) = sim.point_state_within(p, t)?;
+            Ok((x, v, sim.point_force_within(p, t)?))
+        })
+        .collect::<Result<Vec<_>, stancf::ModelError>>()?;
+    let forces = (0..sim.lines().len())
+        .map(|i| sim.end_forces_within(i, t))
+        .collect::<Result<Vec<_>, _>>()?;
+    let ends = ends_of(system, |i| forces[i], true);
+    let point_net = net_point_forces(system, &points, |w, x, v| w.force(x, v, t).force);
+    let bodies = body_rows(
+        system,
+        |b| at_rest(&system.bodies()[b]),
+        &points,
+        |b| sim.clamp_moment(b),
+        FlowTime::At(t),
+    );
+    Ok(SystemRow {
+        t,
+        point_net,
+        bodies,
+        lines,
+        points,
+        ends,
+        energies: [0.0; 3],
+        iterations: 0,
+        residual: 0.0,
+        damping_work: 0.0,
+        water_work: 0.0,
+        seabed_work: 0.0,
+        seabed: None,
+    })
+}
+
 /// The row of a static solve's equilibrium, at time `t`.
 pub(super) fn static_row(st: &SystemStatics, t: f64) -> SystemRow<'_> {
     let system = st.system();

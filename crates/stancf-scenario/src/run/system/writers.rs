@@ -280,10 +280,18 @@ impl SystemWriters {
         self.point_ids.push(id);
     }
 
-    /// Writes one moment. Refuses non-finite values (none may reach a
-    /// file): the lines', the points', the line ends', the energies, the
-    /// works, in this order.
+    /// Writes one moment: its state ([`Self::write_state`]) and its row of
+    /// history.csv ([`Self::write_step`]).
     pub(super) fn write(&mut self, row: &SystemRow) -> std::io::Result<()> {
+        self.write_state(row)?;
+        self.write_step(row)
+    }
+
+    /// Writes the state of one moment: every table but history.csv, and
+    /// the design statistics. Refuses non-finite values (none may reach a
+    /// file): the lines', the points', the bodies', the line ends', the
+    /// channels', in this order.
+    pub(super) fn write_state(&mut self, row: &SystemRow) -> std::io::Result<()> {
         let t = self.times.time(row.t);
         self.write_lines(row, t)?;
         self.write_points(row, t)?;
@@ -299,13 +307,6 @@ impl SystemWriters {
             out.write_row(t, &self.rods[out.rod].nodes(row))?;
         }
         self.write_tensions(row, t)?;
-        let [kinetic, strain, gravity] = row.energies;
-        if ![kinetic, strain, gravity, row.residual]
-            .iter()
-            .all(|v| v.is_finite())
-        {
-            return Err(non_finite("energy or residual", row.t));
-        }
         if let Some(vtk) = self.vtk.as_mut() {
             vtk.write_lines(t, &row.lines, Some(&self.line_ids))?;
             if let Some(parts) = &self.parts {
@@ -334,9 +335,22 @@ impl SystemWriters {
                 out.write_row(t, &values)?;
             }
         }
-        self.write_history(row, t)?;
         self.statistics.add(t, row);
         Ok(())
+    }
+
+    /// Writes a step's row of history.csv (its energies, Newton's
+    /// iterations and residual, the works so far). Refuses non-finite
+    /// values: the energies, the residual, the works.
+    pub(super) fn write_step(&mut self, row: &SystemRow) -> std::io::Result<()> {
+        let [kinetic, strain, gravity] = row.energies;
+        if ![kinetic, strain, gravity, row.residual]
+            .iter()
+            .all(|v| v.is_finite())
+        {
+            return Err(non_finite("energy or residual", row.t));
+        }
+        self.write_history(row, self.times.time(row.t))
     }
 
     /// Each line's nodes.csv, stress.csv and node_loads.csv rows at the
