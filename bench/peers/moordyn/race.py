@@ -213,9 +213,12 @@ def segments(pb, refine, sections=None):
                else int(round(int(f[5]) * refine)) for f in deck_rows(pb, "LINES"))
 
 
-def mesh_name(sections):
-    """The CSV's name of a mesh: "uniform" or "sections a/b/c"."""
-    return "sections " + "/".join(str(n) for n in sections) if sections else "uniform"
+def mesh_name(sections, between=False):
+    """The CSV's name of a mesh: "uniform" or "sections a/b/c", with ",
+    between steps" for a run written at the 0.1 s outputs from its steps'
+    cubics (`[output] interval`, its step longer than 0.1 s)."""
+    name = "sections " + "/".join(str(n) for n in sections) if sections else "uniform"
+    return name + (", between steps" if between else "")
 
 
 def mesh_entry(pb, sections):
@@ -452,6 +455,12 @@ GRIDS = {
                                                 ((2, 28, 6), (0.05, 0.025)),
                                                 ((2, 40, 8), (0.05, 0.025))]
                       for dt in dts],
+                  # Steps longer than the 0.1 s output, written between
+                  # them from the steps' cubics (docs/method.md §6.5a).
+                  between=[(r, dt) for r in (0.75, 1) for dt in (0.5, 1.0, 2.0)] + [
+                      (1, dt, n) for n in ((1, 2, 1), (1, 3, 1), (1, 3, 2), (1, 4, 2),
+                                           (1, 5, 3), (1, 8, 3))
+                      for dt in (0.5, 1.0, 2.0)],
                   reference=(1, 0.00625, (8, 112, 32)), check=(1, 0.0125, (4, 56, 16)),
                   moordyn=[(0.5, 1e-2), (0.5, 5e-3), (1, 5e-3), (1, 2.5e-3), (2, 2e-3),
                            (2, 1e-3), (4, 5e-4), (4, 2.5e-4), (8, 2.5e-4), (8, 1.25e-4)])),
@@ -479,12 +488,12 @@ GRIDS = {
 }
 
 
-def stancf_row(pb, code, refine, dt, sections, out, ref_series):
+def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False):
     """A CSV row of a stancf run (`out` None: failed)."""
     return dict(problem=pb.name, code=code, segments=segments(pb, refine, sections), dt=dt,
                 ic_s="", wall_s=out[0] if out else "",
                 error=error(out[1], out[2], ref_series, pb) if out else "", driver_s="",
-                mesh=mesh_name(sections))
+                mesh=mesh_name(sections, between))
 
 
 PROBLEMS = (OC4, STEEP, RISER, LAZY)
@@ -499,10 +508,12 @@ def race(pb):
         sys.exit("%s: the reference run failed: %r" % (pb.name, grid["reference"]))
     ref_series = (ref[1], ref[2])
     rows = []
-    for run in grid["stancf"]:
+    runs = [(run, False) for run in grid["stancf"]]
+    runs += [(run, True) for run in grid.get("between", [])]
+    for run, between in runs:
         refine, dt, sections = run if len(run) == 3 else run + (None,)
-        out = run_stancf(pb, refine, dt, RACE_TOLERANCE, sections)
-        rows.append(stancf_row(pb, "stancf", refine, dt, sections, out, ref_series))
+        out = run_stancf(pb, refine, dt, RACE_TOLERANCE, sections, between=between)
+        rows.append(stancf_row(pb, "stancf", refine, dt, sections, out, ref_series, between))
         print(rows[-1], flush=True)
     for r, dtm in grid["moordyn"]:
         out = run_moordyn(pb, r, dtm)

@@ -31,13 +31,14 @@ def cheapest(rows, code, level, uniform_only=False, cost=lambda r: r["wall_s"]):
     """The cheapest run of `code` within `level` by `cost` (on the deck's
     uniform mesh only, if asked)."""
     ok = [r for r in rows if r["code"] == code and r["error"] != "" and r["error"] <= level
-          and (not uniform_only or r["mesh"] == "uniform")]
+          and (not uniform_only or r["mesh"].startswith("uniform"))]
     return min(ok, key=cost) if ok else None
 
 
 def run_text(r):
     """ "60 segments, dt 0.005 (0.889 %)", the mesh named if in sections."""
     mesh = "" if r["mesh"] == "uniform" else " in %s" % r["mesh"]
+    mesh = mesh.replace(" in uniform, between steps", ", between steps")
     return "%d segments%s, dt %g (%.3g %%)" % (r["segments"], mesh, r["dt"], 100 * r["error"])
 
 
@@ -113,13 +114,16 @@ def write(rows, all_problems, out):
         return
     fig, axes = plt.subplots(1, len(problems), figsize=(6.0 * len(problems), 4.5), squeeze=False)
     for ax, pb in zip(axes[0], problems):
-        for code, uniform, marker, label in [
-                ("moordyn", True, "s", "MoorDyn"),
-                ("stancf", True, "o", "stancf, the deck's uniform mesh"),
-                ("stancf", False, "^", "stancf, touchdown in sections")]:
+        for code, uniform, between, marker, label in [
+                ("moordyn", True, False, "s", "MoorDyn"),
+                ("stancf", True, False, "o", "stancf, the deck's uniform mesh"),
+                ("stancf", False, False, "^", "stancf, touchdown in sections"),
+                ("stancf", True, True, "D", "stancf, uniform, written between steps"),
+                ("stancf", False, True, "v", "stancf, sections, written between steps")]:
             pts = [(r["wall_s"], r["error"]) for r in rows if r["problem"] == pb.name
                    and r["code"] == code and r["error"] not in ("", 0.0)
-                   and (r["mesh"] == "uniform") == uniform]
+                   and r["mesh"].startswith("uniform") == uniform
+                   and r["mesh"].endswith("between steps") == between]
             if pts:
                 x, y = zip(*sorted(pts))
                 ax.loglog(x, [100 * v for v in y], marker, label=label)

@@ -96,7 +96,7 @@ fn a_system_written_between_its_steps_follows_its_finely_stepped_run() {
 /// Refused naming the key (exit 2, nothing written): beside
 /// `output.every`, with the step means, not positive, writing more
 /// moments than a run writes without `--allow-large`, with P2, in a
-/// static analysis, in a single cable's scenario.
+/// static analysis, with line failures, in a single cable's scenario.
 #[test]
 fn an_output_interval_the_run_cannot_write_is_refused_by_name() {
     let d = scratch("output-interval-refused");
@@ -138,6 +138,25 @@ fn an_output_interval_the_run_cannot_write_is_refused_by_name() {
         &statics,
         &d.join("never"),
         &["output.interval", "static"],
+        &[],
+    );
+    let deck = std::fs::read_to_string(d.join("oc4-deepcwind-moordyn.txt")).unwrap();
+    let failing = deck.replacen(
+        "------------------------------- OPTIONS",
+        "--- FAILURE ---\nID Point Lines FailTime FailTen\n() () (,) (s) (N)\n1 4 1 15 0\n\
+         ------------------------------- OPTIONS",
+        1,
+    );
+    std::fs::write(d.join("failing.txt"), failing).unwrap();
+    let failures = oc4(&d, "failures.toml", 1.0, "interval = 0.1");
+    let text = std::fs::read_to_string(&failures)
+        .unwrap()
+        .replace("oc4-deepcwind-moordyn.txt", "failing.txt");
+    std::fs::write(&failures, text).unwrap();
+    refused_by_check_and_run(
+        &failures,
+        &d.join("never"),
+        &["output.interval", "failures"],
         &[],
     );
     let cable = std::fs::read_to_string(repo_file("examples/impact-axial.toml")).unwrap();

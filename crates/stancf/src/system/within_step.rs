@@ -202,7 +202,13 @@ impl SystemSimulation {
     /// step's ends, a fixed or coupled point's motion at t.
     pub fn point_state_within(&self, p: usize, t: f64) -> Result<([f64; 3], [f64; 3]), ModelError> {
         let record = self.record_at(t)?;
-        let Some([e0, v0, e1, v1]) = record.points[p] else {
+        let Some(kept) = record.points.get(p) else {
+            return Err(ModelError::invalid(
+                format!("points[{p}]"),
+                "the point was added after the recorded step (a line end released, §11.16)",
+            ));
+        };
+        let Some([e0, v0, e1, v1]) = *kept else {
             return Ok(self.topology.points()[p].state_at(t));
         };
         let h = record.h;
