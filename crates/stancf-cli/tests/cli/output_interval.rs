@@ -172,3 +172,38 @@ fn an_output_interval_the_run_cannot_write_is_refused_by_name() {
         &[],
     );
 }
+
+/// With steps chosen by a force tolerance (docs/method.md §11.17) the
+/// interval's moments fall inside the steps the tolerance took (a run
+/// step crossed in several): a row at every 0.1 s, and the fairlead
+/// tension within the tolerance's 1e-3 of the tension of the run at
+/// steps of 0.1 s written at each (the tolerance bounds each end force's
+/// estimated error relative to its size, (M23c)).
+#[test]
+fn a_system_whose_steps_a_tolerance_chooses_is_written_between_them() {
+    let d = scratch("output-interval-tolerance");
+    let between = oc4(&d, "between.toml", 2.0, "interval = 0.1");
+    let controlled = std::fs::read_to_string(&between)
+        .unwrap()
+        .replace("time_scheme", "force_tolerance = 1e-3\ntime_scheme");
+    std::fs::write(&between, controlled).unwrap();
+    let fine = oc4(&d, "fine.toml", 0.1, "every = 1");
+    for (sc, out) in [(&between, "between"), (&fine, "fine")] {
+        let o = run_quiet(sc, &d.join(out), &[]);
+        assert_eq!(o.status.code(), Some(0), "{out}: {}", text(&o).1);
+    }
+    let between = point_rows(&d.join("between"), 4.0);
+    let fine = point_rows(&d.join("fine"), 4.0);
+    assert_eq!(between.len(), 301);
+    let tension = |r: &[f64; 7]| (r[4] * r[4] + r[5] * r[5] + r[6] * r[6]).sqrt();
+    let worst = between
+        .iter()
+        .zip(&fine)
+        .map(|(b, f)| {
+            assert!((b[0] - f[0]).abs() < 1e-12);
+            (tension(b) - tension(f)).abs() / tension(f)
+        })
+        .fold(0.0, f64::max);
+    eprintln!("worst relative difference {worst}");
+    assert!(worst <= 1e-3, "{worst}");
+}
