@@ -15,14 +15,8 @@ use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
 
-/// The system parts of a scenario file, in the file's order.
-pub(super) fn system_scenario(
-    ctx: &Ctx,
-    mut raw: RawScenario,
-    title: String,
-    path: &Path,
-    host: &super::HostEnvironment,
-) -> Result<SystemScenario, ScenarioError> {
+/// Refuses a single cable's sections in a system's file, naming the first.
+fn refuse_cable_keys(ctx: &Ctx, raw: &RawScenario) -> Result<(), ScenarioError> {
     for (present, key) in [
         (raw.cable.is_some(), "cable"),
         (raw.material.is_some(), "material"),
@@ -39,6 +33,18 @@ pub(super) fn system_scenario(
             ));
         }
     }
+    Ok(())
+}
+
+/// The system parts of a scenario file, in the file's order.
+pub(super) fn system_scenario(
+    ctx: &Ctx,
+    mut raw: RawScenario,
+    title: String,
+    path: &Path,
+    host: &super::HostEnvironment,
+) -> Result<SystemScenario, ScenarioError> {
+    refuse_cable_keys(ctx, &raw)?;
     let rs = raw.system.take().unwrap_or_default();
     if let Some(deck) = rs.moordyn.as_deref() {
         let deck_path = path.parent().unwrap_or(Path::new("")).join(deck);
