@@ -8,10 +8,10 @@
 //! `output.every` or `output.end_forces = "step_mean"` (a step's mean is
 //! not a force at a time between its ends).
 
-use super::analysis::{Analysis, AnalysisKind};
+use super::analysis::AnalysisKind;
 use super::context::Ctx;
 use super::raw::RawOutput;
-use super::system_parts::{LineType, SystemScenario};
+use super::system_parts::SystemScenario;
 use super::ScenarioError;
 use crate::scenario::bodies::BodyType;
 use stancf::TimeScheme;
@@ -44,7 +44,7 @@ pub(super) fn output_interval(
                 .into(),
         );
     }
-    if let Err(why) = refuse_where_not_interpolated(&sc.analysis, sc, &sc.line_types) {
+    if let Err(why) = refuse_where_not_interpolated(sc) {
         return refuse(why);
     }
     Ok(Some(interval))
@@ -52,11 +52,8 @@ pub(super) fn output_interval(
 
 /// The reason the system's state between the ends of its steps is not
 /// interpolated, if it is not (see the module's doc).
-fn refuse_where_not_interpolated(
-    analysis: &Analysis,
-    sc: &SystemScenario,
-    types: &[LineType],
-) -> Result<(), String> {
+fn refuse_where_not_interpolated(sc: &SystemScenario) -> Result<(), String> {
+    let analysis = &sc.analysis;
     if analysis.kind != AnalysisKind::Dynamic {
         return Err(
             "is the writing of a dynamic analysis; a static one writes its \
@@ -86,7 +83,8 @@ fn refuse_where_not_interpolated(
                 .into(),
         );
     }
-    if let Some(t) = types
+    if let Some(t) = sc
+        .line_types
         .iter()
         .find(|t| t.ea_dynamic.is_some() || t.viv.is_some())
     {
