@@ -333,11 +333,6 @@ impl TimeCubic {
         basis.on([self.e0[g], self.w0[g], self.e1[g], self.w1[g]])
     }
 
-    /// The step's start time and length.
-    pub fn span(&self) -> (f64, f64) {
-        (self.t0, self.length)
-    }
-
     /// Every coordinate's value and rate at time `t` of the step (eq. (6)
     /// in time: the Hermite cubic of the end values and slopes), into `e`
     /// and `v` (the model's coordinate count each). A `t` outside the

@@ -50,11 +50,6 @@ pub struct StepRecord {
 }
 
 impl StepRecord {
-    /// The step's start time and length.
-    pub fn span(&self) -> (f64, f64) {
-        (self.t_a, self.h)
-    }
-
     fn holds(&self, t: f64) -> bool {
         let slack = 1e-9 * self.h;
         t >= self.t_a - slack && t <= self.t_a + self.h + slack
