@@ -154,6 +154,11 @@ int stancf_step_n(StancfSystem *s, unsigned int n, const double *x, const double
    impulse over its length; ncoupled_dof values). */
 int stancf_interval_mean_force(StancfSystem *s, double *f);
 
+/* *n = the internal steps the last stancf_step took: its interval's equal
+   steps, or the kept half steps where the scenario's
+   analysis.force_tolerance chooses them. */
+int stancf_last_steps(StancfSystem *s, unsigned int *n);
+
 /* *t = the time reached (0 before stancf_init). */
 int stancf_time(StancfSystem *s, double *t);
 

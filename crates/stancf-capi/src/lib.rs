@@ -479,6 +479,27 @@ pub unsafe extern "C" fn stancf_interval_mean_force(s: *mut StancfSystem, f: *mu
     })
 }
 
+/// The internal steps the last `stancf_step` took: the interval's equal
+/// steps, or, where the scenario's `analysis.force_tolerance` chooses
+/// them, its kept half steps (docs/method.md §13.3, (M23c)). Refused
+/// before the first step.
+///
+/// # Safety
+/// `s` is looked up, never read; `n` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn stancf_last_steps(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
+    guard(|| {
+        args::with_system(s, |sys| {
+            let last = sys
+                .last
+                .as_ref()
+                .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
+            *args::place(n, "n")? = c_uint::try_from(last.steps).unwrap_or(c_uint::MAX);
+            Ok(())
+        })
+    })
+}
+
 /// The time reached (s; 0 before `stancf_init`).
 ///
 /// # Safety

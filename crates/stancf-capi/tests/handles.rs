@@ -44,6 +44,7 @@ fn every_call(s: *mut StancfSystem) -> Vec<(&'static str, c_int)> {
                 stancf_interval_mean_force(s, b),
             ),
             ("stancf_time", stancf_time(s, b)),
+            ("stancf_last_steps", stancf_last_steps(s, &mut n)),
             (
                 "stancf_set_max_interval_steps",
                 stancf_set_max_interval_steps(s, 10),

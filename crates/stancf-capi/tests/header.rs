@@ -113,6 +113,8 @@ int main(int argc, char **argv) {
     if (stancf_step_n(s, 2, x, NULL, f, &t, &dt) != STANCF_INVALID_VALUE) return 19;
     /* The time reached: the internal steps' sum, t to round-off. */
     if (stancf_interval_mean_force(s, f) || stancf_time(s, &v) || fabs(v - t) > 1e-12) return 20;
+    /* Equal steps of the bridle's 0.15 ms over 10 ms: 67. */
+    if (stancf_last_steps(s, &nodes) || nodes != 67) return 60;
     StancfState *state = stancf_save(s);
     if (state == NULL || stancf_restore(s, state) || stancf_free_state(state)) return 21;
     if (stancf_free_state(state) != STANCF_INVALID_INPUT) return 33;

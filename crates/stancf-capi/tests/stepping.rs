@@ -150,3 +150,46 @@ fn lines_and_points_read_node_by_node_or_whole_agree() {
     assert_eq!(force, f[2]);
     assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
 }
+
+/// The jumper's top as a host moves it, from rest: 10 m along x over its
+/// 27 s period (examples/jumper-tolerance.toml).
+fn top_from_rest(t: f64) -> ([f64; 3], [f64; 3]) {
+    let w = 2.0 * std::f64::consts::PI / 27.0;
+    (
+        [5.0 * (1.0 - (w * t).cos()), 0.0, -5.0],
+        [5.0 * w * (w * t).sin(), 0.0, 0.0],
+    )
+}
+
+/// A scenario whose `analysis.force_tolerance` chooses the steps
+/// (examples/jumper-tolerance.toml) steps through C as the Rust handle
+/// of the same file does, to the bit, and the C library reports the
+/// kept half steps each call took (an even number, at least 2).
+#[test]
+fn a_scenarios_force_tolerance_chooses_the_steps_through_c_as_in_rust() {
+    let path = repo("examples/jumper-tolerance.toml");
+    let s = unsafe { stancf_create(common::cstring(&path).as_ptr()) };
+    assert!(!s.is_null(), "{}", message());
+    let mut rust = stancf_scenario::coupling::open(&path).unwrap().handle;
+    assert_eq!(rust.force_tolerance(), Some(1e-3));
+    let (x0, v0) = top_from_rest(0.0);
+    assert_eq!(
+        unsafe { stancf_init(s, x0.as_ptr(), v0.as_ptr()) },
+        STANCF_SUCCESS
+    );
+    rust.initialize(&x0, Some(&v0)).unwrap();
+    let mut t = 0.0;
+    for k in 1..=6 {
+        let (x, v) = top_from_rest(k as f64);
+        let (mut f, mut dt, mut steps) = ([0.0; 3], 1.0, 0u32);
+        let code =
+            unsafe { stancf_step(s, x.as_ptr(), v.as_ptr(), f.as_mut_ptr(), &mut t, &mut dt) };
+        assert_eq!(code, STANCF_SUCCESS, "{}", message());
+        let forces = rust.step_to(k as f64, &x, Some(&v)).unwrap();
+        assert_eq!(forces.last_step, f.to_vec());
+        assert_eq!(unsafe { stancf_last_steps(s, &mut steps) }, STANCF_SUCCESS);
+        assert_eq!(steps as usize, forces.steps);
+        assert!(steps >= 2 && steps % 2 == 0, "{steps}");
+    }
+    assert_eq!(unsafe { stancf_close(s) }, STANCF_SUCCESS);
+}

@@ -276,6 +276,13 @@ impl PySimulation {
         Ok(self.inner()?.last.as_ref().map_or(0, |f| f.steps))
     }
 
+    /// The scenario's `analysis.force_tolerance`, which chooses the
+    /// internal steps (None: equal steps).
+    #[getter]
+    fn force_tolerance(&self) -> PyResult<Option<f64>> {
+        Ok(self.inner()?.handle.force_tolerance())
+    }
+
     #[pyo3(signature = (x, xd = None))]
     fn initialize(&self, py: Python<'_>, x: Vec<f64>, xd: Option<Vec<f64>>) -> PyResult<Vec<f64>> {
         let mut guard = self.inner()?;

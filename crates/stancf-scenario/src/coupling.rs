@@ -180,6 +180,10 @@ pub fn of_scenario(sc: &SystemScenario, file: &str) -> Result<Coupled, Failure> 
         handle: handle
             .with_order(order)
             .and_then(|h| h.with_step_halvings(sc.analysis.step_halvings))
+            .and_then(|h| match sc.analysis.force_tolerance {
+                Some(tolerance) => h.with_force_tolerance(tolerance),
+                None => Ok(h),
+            })
             .map_err(input)?,
     })
 }

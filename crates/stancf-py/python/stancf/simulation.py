@@ -151,7 +151,11 @@ class Simulation:
 
     One ``step_to`` takes at most ``max_interval_steps`` internal steps
     (100 000 unless set, here or as ``Simulation(..., max_interval_steps=n)``);
-    a longer interval is refused before anything moves.
+    a longer interval is refused before anything moves. A scenario with
+    ``analysis.force_tolerance`` (``force_tolerance``) crosses each
+    interval in the steps that tolerance chooses, at most its
+    ``time_step`` each, as ``stancf.run`` does (``last_steps`` counts
+    them).
 
     Nothing is written to disk. The arguments are checked: ``t`` a real
     number, ``x`` and ``xd`` flat sequences or arrays of ``coupled_dof``
@@ -241,7 +245,18 @@ class Simulation:
 
     @property
     def last_steps(self):
+        """The internal steps the last ``step_to`` took: its interval's
+        equal steps, or its kept half steps where ``force_tolerance``
+        chooses them (0 before the first)."""
         return self._sim.last_steps
+
+    @property
+    def force_tolerance(self):
+        """The scenario's ``analysis.force_tolerance``, the tolerance on the
+        end forces that chooses the internal steps (docs/method.md
+        §11.17), or None: each interval in equal steps of at most the
+        scenario's ``time_step``."""
+        return self._sim.force_tolerance
 
     @property
     def max_interval_steps(self):

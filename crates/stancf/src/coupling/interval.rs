@@ -3,11 +3,13 @@
 //! into equal steps, the lines' forces and the held bodies' own push
 //! (§15.18) averaged over it.
 
+use super::bodies::ArrayLayout;
 use super::{
     held_loads, not_initialized, triple, CoupledForces, CoupledSystem, CouplingError, Running,
 };
+use crate::error::{FailureKind, SolverError};
 use crate::motion::{CoupledMotion, MotionInterval};
-use crate::system::SystemSimulation;
+use crate::system::{Stepper, SystemSimulation};
 
 impl CoupledSystem {
     /// Advances to `t_next` with the coupled points moving from where the
@@ -15,8 +17,10 @@ impl CoupledSystem {
     /// the velocities given or, without them, estimated from the host's
     /// positions (K2a) (along the line (K1) in the first interval of a
     /// start without velocities). The interval is split into the fewest
-    /// equal steps no longer than the scenario's (§13.3); an interval of more steps than
-    /// [`Self::max_interval_steps`] is refused before anything moves. On a
+    /// equal steps no longer than the scenario's (§13.3), or, with a
+    /// tolerance ([`Self::with_force_tolerance`]), crossed in the steps it
+    /// chooses (M23c); an interval of more steps of the scenario's length
+    /// than [`Self::max_interval_steps`] is refused before anything moves. On a
     /// solver failure the state stays at the last converged step, with
     /// the coupled points on this interval's motion, so a later call
     /// continues from there.
@@ -53,53 +57,21 @@ impl CoupledSystem {
         let running = self.running.as_mut().ok_or_else(not_initialized)?;
         let t0 = running.sim.time();
         let span = steps as f64 * h;
-        let rates = match (&running.velocity, &end_rate) {
-            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1.as_slice())),
-            _ => None,
-        };
-        for (k, &p) in coupled.iter().enumerate() {
-            let interval = MotionInterval {
-                t0,
-                duration: span,
-                start: triple(&running.position, k),
-                end: triple(&end, k),
-                rates: rates.map(|(a, b)| (triple(a, k), triple(b, k))),
-            };
-            running
-                .sim
-                .set_point_motion(p, CoupledMotion::Interval(interval))?;
-        }
-        // The bodies' reference points on the same motion (the moments'
-        // arms).
-        let references: Vec<MotionInterval> = (0..layout.bodies.len())
-            .map(|b| MotionInterval {
-                t0,
-                duration: span,
-                start: running.reference[b],
-                end: layout.reference(x, b),
-                rates: match (&running.reference_rate, xd) {
-                    (Some(r0), Some(v)) => Some((r0[b], layout.reference(v, b))),
-                    _ => None,
-                },
-            })
-            .collect();
+        let references = running.move_on(
+            (&coupled, &layout),
+            (t0, span),
+            (&end, end_rate.as_deref()),
+            (x, xd),
+        )?;
         running.sim.set_time_step(h);
         // The coupled bodies' own parts on the host's motion (§15.18).
         let held_end: Vec<_> = (0..layout.bodies.len())
             .map(|b| layout.held_end(x, xd, b))
             .collect();
-        let paths: Vec<Option<held_loads::HeldPath>> = (0..layout.bodies.len())
-            .map(|k| {
-                let body = &running.sim.topology().bodies()[layout.bodies[k].body];
-                match (&running.held[k], &held_end[k]) {
-                    (Some(a), Some(b)) if held_loads::carries_loads(body) => {
-                        Some(held_loads::HeldPath::new(t0, span, a, b))
-                    }
-                    _ => None,
-                }
-            })
-            .collect();
-        let loads = |sim: &SystemSimulation| {
+        let paths = running.held_paths(&layout, &held_end, (t0, span));
+        // The lines' forces on the coupling arrays, the mean over the
+        // last step of `h` (with the held bodies' own push over it).
+        let loads = |sim: &SystemSimulation, h: f64| {
             let mut out = layout.forces(
                 |k| sim.point_force(coupled[k]),
                 |k| sim.point_state(coupled[k]).0,
@@ -117,25 +89,50 @@ impl CoupledSystem {
             out
         };
         let mut impulse = vec![0.0; x.len()];
-        for taken in 1..=steps {
-            let halvings = running.sim.step_halvings();
-            let watched =
-                crate::system::watched_step(&mut running.sim, &mut running.watch, halvings);
-            if let Err(e) = watched {
-                running.stop_on_motion(&coupled, &references);
-                running.stop_held(&paths);
-                return Err(e.into());
+        let mut last_step = Vec::new();
+        let mut taken = 0;
+        let mut book = |f: Vec<f64>, h: f64| {
+            for (i, v) in f.iter().enumerate() {
+                impulse[i] += v * h;
             }
-            for (i, f) in loads(&running.sim).iter().enumerate() {
-                impulse[i] += f * h;
+            last_step = f;
+            taken += 1;
+        };
+        let stepped = match self.control {
+            None => fixed_steps(
+                &mut running.sim,
+                &mut running.watch,
+                steps,
+                stop,
+                &mut |sim| book(loads(sim, h), h),
+            ),
+            Some(control) => {
+                let big = self.steps.time_step;
+                let next = running.next_step.unwrap_or(big);
+                let mut stepper = Stepper::resume(control, big, next, running.watch.clone());
+                let result = controlled_steps(
+                    &mut running.sim,
+                    &mut stepper,
+                    (t0 + span, self.max_interval_steps),
+                    stop,
+                    &mut |sim, h| (loads(sim, h), h),
+                    &mut |kept| {
+                        for (f, h) in kept {
+                            book(f, h);
+                        }
+                    },
+                );
+                let (next, watch) = stepper.into_parts();
+                running.next_step = Some(next);
+                running.watch = watch;
+                running.sim.set_time_step(h);
+                result
             }
-            if taken < steps && stop() {
-                running.stop_on_motion(&coupled, &references);
-                running.stop_held(&paths);
-                return Err(CouplingError::Interrupted {
-                    time: running.sim.time(),
-                });
-            }
+        };
+        if let Err(e) = stepped {
+            running.stop_on_motion(&coupled, &references);
+            running.stop_held(&paths);
+            return Err(e);
         }
         running.position = end;
         running.velocity = end_rate;
@@ -149,14 +146,137 @@ impl CoupledSystem {
                 .collect()
         });
         Ok(CoupledForces {
-            last_step: loads(&running.sim),
+            last_step,
             interval_mean: impulse.iter().map(|i| i / span).collect(),
-            steps,
+            steps: taken,
         })
     }
 }
 
+/// The interval's `steps` equal steps (of the simulation's step length),
+/// `book` called after each; `stop` asked after each but the last.
+fn fixed_steps(
+    sim: &mut SystemSimulation,
+    watch: &mut crate::integrator::EnergyWatch,
+    steps: usize,
+    stop: &mut dyn FnMut() -> bool,
+    book: &mut dyn FnMut(&SystemSimulation),
+) -> Result<(), CouplingError> {
+    for taken in 1..=steps {
+        let halvings = sim.step_halvings();
+        crate::system::watched_step(sim, watch, halvings)?;
+        book(sim);
+        if taken < steps && stop() {
+            return Err(CouplingError::Interrupted { time: sim.time() });
+        }
+    }
+    Ok(())
+}
+
+/// Steps chosen by the tolerance (docs/method.md (M23c)) to `end`, each
+/// kept step taken as two halves: `half` gives what a half step leaves
+/// for the interval, `book` takes a kept step's two; `stop` asked after
+/// each kept step but the last. More than `most` half steps fail the
+/// call (the bound on one call's internal steps, §13.3).
+fn controlled_steps<T>(
+    sim: &mut SystemSimulation,
+    stepper: &mut Stepper,
+    (end, most): (f64, usize),
+    stop: &mut dyn FnMut() -> bool,
+    half: &mut dyn FnMut(&SystemSimulation, f64) -> T,
+    book: &mut dyn FnMut([T; 2]),
+) -> Result<(), CouplingError> {
+    let mut taken = 0;
+    loop {
+        let kept = stepper.advance(sim, end, half)?;
+        book(kept.halves);
+        taken += 2;
+        if stepper.reached(sim, end) {
+            return Ok(());
+        }
+        if taken >= most {
+            return Err(CouplingError::Solver(SolverError {
+                kind: FailureKind::NotConverged,
+                time: sim.time(),
+                step: kept.report.step,
+                residual: kept.report.newton.residual,
+                iterations: kept.report.newton.iterations,
+                detail: format!(
+                    "the force tolerance took {taken} internal steps, the most one call may \
+                     take (max_interval_steps), and {:.6e} s of the interval are left; \
+                     loosen the tolerance, couple more often or raise the bound",
+                    end - sim.time()
+                ),
+            }));
+        }
+        if stop() {
+            return Err(CouplingError::Interrupted { time: sim.time() });
+        }
+    }
+}
+
 impl Running {
+    /// The coupled bodies' paths from their last poses to `held_end` over
+    /// `(t0, span)`, for those whose own parts carry loads (§15.18).
+    fn held_paths(
+        &self,
+        layout: &ArrayLayout,
+        held_end: &[Option<held_loads::HeldEnd>],
+        (t0, span): (f64, f64),
+    ) -> Vec<Option<held_loads::HeldPath>> {
+        (0..layout.bodies.len())
+            .map(|k| {
+                let body = &self.sim.topology().bodies()[layout.bodies[k].body];
+                match (&self.held[k], &held_end[k]) {
+                    (Some(a), Some(b)) if held_loads::carries_loads(body) => {
+                        Some(held_loads::HeldPath::new(t0, span, a, b))
+                    }
+                    _ => None,
+                }
+            })
+            .collect()
+    }
+
+    /// Puts the coupled points on the interval's motion from where the
+    /// last call left them to `end` (with the rates `end_rate`, where
+    /// both calls gave them) over `(t0, span)`, (K2); the coupled bodies'
+    /// reference points on the same motion (the moments' arms), returned.
+    fn move_on(
+        &mut self,
+        (coupled, layout): (&[usize], &ArrayLayout),
+        (t0, span): (f64, f64),
+        (end, end_rate): (&[f64], Option<&[f64]>),
+        (x, xd): (&[f64], Option<&[f64]>),
+    ) -> Result<Vec<MotionInterval>, CouplingError> {
+        let rates = match (&self.velocity, end_rate) {
+            (Some(v0), Some(v1)) => Some((v0.as_slice(), v1)),
+            _ => None,
+        };
+        for (k, &p) in coupled.iter().enumerate() {
+            let interval = MotionInterval {
+                t0,
+                duration: span,
+                start: triple(&self.position, k),
+                end: triple(end, k),
+                rates: rates.map(|(a, b)| (triple(a, k), triple(b, k))),
+            };
+            self.sim
+                .set_point_motion(p, CoupledMotion::Interval(interval))?;
+        }
+        Ok((0..layout.bodies.len())
+            .map(|b| MotionInterval {
+                t0,
+                duration: span,
+                start: self.reference[b],
+                end: layout.reference(x, b),
+                rates: match (&self.reference_rate, xd) {
+                    (Some(r0), Some(v)) => Some((r0[b], layout.reference(v, b))),
+                    _ => None,
+                },
+            })
+            .collect())
+    }
+
     /// After a failed or stopped step: the held bodies' poses (and rates,
     /// where the last call had them) where their paths have them at the
     /// time reached.

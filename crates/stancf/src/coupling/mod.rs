@@ -97,6 +97,9 @@ struct Running {
     /// equilibrium, and the coupled points' not on a body.
     stiffness: BodyStiffness,
     point_stiffness: PointStiffness,
+    /// The next step's length of a handle whose steps a tolerance chooses
+    /// ([`CoupledSystem::with_force_tolerance`]), None before its first.
+    next_step: Option<f64>,
 }
 
 /// Each free and coupled body's mooring stiffness (body index, 6 x 6).
@@ -148,6 +151,9 @@ pub struct CoupledSystem {
     /// conditions (a deck's `TmaxIC 0`), not from the static equilibrium
     /// ([`Self::with_catenary_start`]).
     catenary_start: bool,
+    /// The tolerance on the end forces that chooses the internal steps
+    /// ([`Self::with_force_tolerance`]); None: equal steps.
+    control: Option<crate::system::StepControl>,
 }
 
 /// Where [`CoupledSystem::initialize`] puts the coupled points: the
@@ -207,6 +213,7 @@ impl CoupledSystem {
             failures: Vec::new(),
             running: None,
             catenary_start: false,
+            control: None,
         })
     }
 
@@ -228,6 +235,28 @@ impl CoupledSystem {
     /// [`Self::initialize`]).
     pub fn releases(&self) -> &[crate::system::Release] {
         self.running.as_ref().map_or(&[], |r| r.sim.releases())
+    }
+
+    /// The handle whose internal steps are chosen by a tolerance on the
+    /// end forces (docs/method.md §11.17, (M23c)), as `stancf run` with
+    /// `analysis.force_tolerance` chooses them: each interval is crossed
+    /// in steps of at most the step length, each taken whole and in two
+    /// halves, kept when the forces at its end differ by at most
+    /// `tolerance` of each end's force (or its line's weight), the halves
+    /// kept; the next step's length is carried from call to call. Needs
+    /// the Galerkin step. [`CoupledForces::steps`] counts the halves.
+    pub fn with_force_tolerance(mut self, tolerance: f64) -> Result<Self, ModelError> {
+        self.control = Some(crate::system::StepControl::for_steps(
+            &self.steps,
+            tolerance,
+        )?);
+        Ok(self)
+    }
+
+    /// The tolerance on the end forces that chooses the internal steps,
+    /// if one does ([`Self::with_force_tolerance`]).
+    pub fn force_tolerance(&self) -> Option<f64> {
+        self.control.map(|c| c.tolerance())
     }
 
     /// The handle whose steps that Newton fails are taken again in halves,
@@ -497,6 +526,7 @@ impl CoupledSystem {
             samples: vec![(t0, x.to_vec())],
             stiffness,
             point_stiffness,
+            next_step: None,
         }
     }
 

@@ -90,6 +90,7 @@ pub use seed::{
 pub use simulation::{EndForce, SystemSimulation};
 pub use static_friction::StaticFriction;
 pub use statics::SystemStatics;
+pub(crate) use step_control::Stepper;
 pub use step_control::{run_to_tolerance, ControlledSteps, StepControl, MIN_STEP_FRACTION};
 pub use topology::{attached_ends, AttachedEnd, Topology};
 

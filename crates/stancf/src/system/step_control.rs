@@ -33,7 +33,7 @@
 use super::run::{watched_step, RunProgress};
 use super::SystemSimulation;
 use crate::error::{FailureKind, ModelError, SolverError};
-use crate::integrator::{step_count, step_length, StepReport};
+use crate::integrator::{step_count, step_length, StepReport, StepSettings};
 use std::ops::ControlFlow;
 
 /// The step control of a run: the tolerance on the end forces' estimated
@@ -48,13 +48,18 @@ impl StepControl {
     /// error of an end force at a step's end (M23c): positive and finite,
     /// and the Galerkin step (P2's rows do not give the forces' cubics).
     pub fn new(sim: &SystemSimulation, tolerance: f64) -> Result<Self, ModelError> {
+        Self::for_steps(&sim.settings, tolerance)
+    }
+
+    /// [`Self::new`] for a simulation stepped with `settings`.
+    pub fn for_steps(settings: &StepSettings, tolerance: f64) -> Result<Self, ModelError> {
         if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(ModelError::invalid(
                 "tolerance",
                 format!("must be positive and finite, got {tolerance}"),
             ));
         }
-        if !sim.settings.time_scheme.carries_momentum() {
+        if !settings.time_scheme.carries_momentum() {
             return Err(ModelError::invalid(
                 "tolerance",
                 "a step chosen by a tolerance needs the Galerkin step: P2's rows do not give \
@@ -172,12 +177,24 @@ where
 /// A doubled step's whole: the copy it was taken on and its report.
 type Whole = Result<(SystemSimulation, StepReport), SolverError>;
 
-/// A doubled step's halves: the second half's report.
-type Halves = Result<StepReport, SolverError>;
+/// A doubled step's halves: the second half's report and what the
+/// caller's `half` gave after each.
+type Halves<T> = Result<(StepReport, [T; 2]), SolverError>;
 
-/// The control's state across intervals: the next step's length and how
-/// the steps went.
-struct Stepper {
+/// One kept step of a controlled run: taken whole and as two halves
+/// (M23c), the halves kept.
+pub(crate) struct Kept<T> {
+    /// The second half's report, with the Newton iterations and
+    /// factorizations of every solve the step took (its whole steps and
+    /// halves, those of rejected tries included).
+    pub report: StepReport,
+    /// What the caller's `half` gave after each kept half step.
+    pub halves: [T; 2],
+}
+
+/// The control's state across intervals (and across a coupling code's
+/// calls): the next step's length and how the steps went.
+pub(crate) struct Stepper {
     control: StepControl,
     big: f64,
     next: f64,
@@ -187,13 +204,29 @@ struct Stepper {
 
 impl Stepper {
     fn new(sim: &SystemSimulation, control: StepControl, big: f64) -> Self {
+        Self::resume(control, big, big, sim.energy_watch())
+    }
+
+    /// A control of steps of at most `big` whose next step is `next`
+    /// (clamped to `big`), its energy watch `watch`.
+    pub(crate) fn resume(
+        control: StepControl,
+        big: f64,
+        next: f64,
+        watch: crate::integrator::EnergyWatch,
+    ) -> Self {
         Stepper {
             control,
             big,
-            next: big,
-            watch: sim.energy_watch(),
+            next: next.min(big),
+            watch,
             steps: ControlledSteps::default(),
         }
+    }
+
+    /// The next step's length and the energy watch.
+    pub(crate) fn into_parts(self) -> (f64, crate::integrator::EnergyWatch) {
+        (self.next, self.watch)
     }
 
     /// Steps `sim` to `end` exactly; the report of the last step with the
@@ -201,21 +234,54 @@ impl Stepper {
     fn cross(&mut self, sim: &mut SystemSimulation, end: f64) -> Result<StepReport, SolverError> {
         let (mut iterations, mut factorizations) = (0, 0);
         loop {
+            let kept = self.advance(sim, end, &mut |_: &SystemSimulation, _: f64| ())?;
+            iterations += kept.report.newton.iterations;
+            factorizations += kept.report.newton.factorizations;
+            if self.reached(sim, end) {
+                let mut report = kept.report;
+                report.newton.iterations = iterations;
+                report.newton.factorizations = factorizations;
+                return Ok(report);
+            }
+        }
+    }
+
+    /// Whether `sim` is at `end` (to a billionth of the step length).
+    pub(crate) fn reached(&self, sim: &SystemSimulation, end: f64) -> bool {
+        sim.time() >= end - 1e-9 * self.big
+    }
+
+    /// Takes one step toward `end` that the tolerance keeps: the next
+    /// step's length shortened to divide what is left of the way to `end`
+    /// into equal steps, taken whole and in halves, and taken again
+    /// shorter until its error (M23c) is within the tolerance. `half` is
+    /// called after each half step with the half's length; what it gives
+    /// for a rejected try is dropped. On failure (a step below
+    /// [`MIN_STEP_FRACTION`] of the step length needed) `sim` is where
+    /// the step started.
+    pub(crate) fn advance<T>(
+        &mut self,
+        sim: &mut SystemSimulation,
+        end: f64,
+        half: &mut dyn FnMut(&SystemSimulation, f64) -> T,
+    ) -> Result<Kept<T>, SolverError> {
+        let (mut iterations, mut factorizations) = (0, 0);
+        loop {
             let left = end - sim.time();
             let n = (left / self.next - 1e-9).ceil().max(1.0);
             let dt = left / n;
             let start = sim.clone();
             let watch = self.watch.clone();
-            let (whole, halves) = self.doubled(sim, dt);
+            let (whole, halves) = self.doubled(sim, dt, half);
             let tol = self.control.tolerance;
-            let (error, mut report) = match (whole, halves) {
-                (Ok((whole, w)), Ok(h)) => {
+            let (error, mut report, given) = match (whole, halves) {
+                (Ok((whole, w)), Ok((h, given))) => {
                     iterations += w.newton.iterations + h.newton.iterations;
                     factorizations += w.newton.factorizations + h.newton.factorizations;
-                    (force_difference(&whole, sim), h)
+                    (force_difference(&whole, sim), h, given)
                 }
                 // The whole step failed where its halves did not: too long.
-                (Err(_), Ok(h)) => (f64::INFINITY, h),
+                (Err(_), Ok((h, given))) => (f64::INFINITY, h, given),
                 (_, Err(e)) => {
                     sim.clone_from(&start);
                     self.watch = watch;
@@ -229,27 +295,36 @@ impl Stepper {
             };
             if error > tol {
                 let shorter = next_step(dt, error, tol).min(0.5 * dt);
-                if shorter < MIN_STEP_FRACTION * self.big {
-                    return Err(too_short(sim, &report, error, tol, shorter));
-                }
+                let failure = (shorter < MIN_STEP_FRACTION * self.big)
+                    .then(|| too_short(sim, &report, error, tol, shorter));
                 sim.clone_from(&start);
                 self.watch = watch;
+                if let Some(failure) = failure {
+                    return Err(failure);
+                }
                 self.steps.rejected += 1;
                 self.next = shorter;
                 continue;
             }
             self.keep(dt, error);
-            if sim.time() >= end - 1e-9 * self.big {
-                report.newton.iterations = iterations;
-                report.newton.factorizations = factorizations;
-                return Ok(report);
-            }
+            report.newton.iterations = iterations;
+            report.newton.factorizations = factorizations;
+            return Ok(Kept {
+                report,
+                halves: given,
+            });
         }
     }
 
     /// A step of `dt` taken whole on a copy of `sim` and in two halves
-    /// on `sim` (the second half's report, the halves' iterations summed).
-    fn doubled(&mut self, sim: &mut SystemSimulation, dt: f64) -> (Whole, Halves) {
+    /// on `sim` (the second half's report, the halves' iterations summed),
+    /// `half` called after each half.
+    fn doubled<T>(
+        &mut self,
+        sim: &mut SystemSimulation,
+        dt: f64,
+        half: &mut dyn FnMut(&SystemSimulation, f64) -> T,
+    ) -> (Whole, Halves<T>) {
         let mut whole = sim.clone();
         whole.set_time_step(dt);
         let mut watch = self.watch.clone();
@@ -265,10 +340,12 @@ impl Stepper {
         }
         sim.set_time_step(0.5 * dt);
         let halves = watched_step(sim, &mut self.watch, halvings).and_then(|a| {
+            let first = half(sim, 0.5 * dt);
             let mut b = watched_step(sim, &mut self.watch, halvings)?;
+            let second = half(sim, 0.5 * dt);
             b.newton.iterations += a.newton.iterations;
             b.newton.factorizations += a.newton.factorizations;
-            Ok(b)
+            Ok((b, [first, second]))
         });
         (whole, halves)
     }

@@ -21,6 +21,7 @@ mod clamped_ends;
 mod compression;
 mod constrained_dynamics;
 mod coupled_bodies;
+mod coupled_tolerance;
 mod coupling;
 mod drag;
 mod element_derivatives;
