@@ -38,6 +38,9 @@ fn a_static_systems_summary_gives_the_tension_at_equilibrium_in_one_number_form(
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     let stdout = text(&o).0;
     expect_tension_lines(&out, &stdout, "tension at equilibrium");
+    // A static run has no steps to time.
+    let summary = read_json(&out.join("summary.json"));
+    assert!(summary["stepping_wall_time_s"].is_null(), "{summary}");
     // The README's figures: 13889.8 N at the anchor end of line 1.
     assert!(
         stdout.contains("line 1: tension at equilibrium 1.38898e4 N at end A"),
@@ -55,4 +58,9 @@ fn a_dynamic_systems_summary_gives_the_largest_tension_in_one_number_form() {
     let o = run_to(&sc, &out);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     expect_tension_lines(&out, &text(&o).0, "largest tension");
+    // The steps' own wall time, a part of the whole run's.
+    let summary = read_json(&out.join("summary.json"));
+    let stepping = summary["stepping_wall_time_s"].as_f64().expect("timed");
+    let whole = summary["wall_time_s"].as_f64().unwrap();
+    assert!(stepping > 0.0 && stepping <= whole, "{stepping} {whole}");
 }
