@@ -489,9 +489,16 @@ GRIDS = {
 
 
 def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False):
-    """A CSV row of a stancf run (`out` None: failed)."""
+    """A CSV row of a stancf run (`out` None: failed). Its `wall_s` is the
+    simulation's time, summary.json's `stepping_wall_time_s` (the steps
+    and their writing), as MoorDyn's is its simulation after its initial
+    conditions; its `ic_s` is the rest of the process (start, reading,
+    the static solve), as MoorDyn's is its initial-condition generation:
+    the two add up to the whole process, the time to the answer."""
+    stepping = out[3].get("stepping_wall_time_s") if out else None
     return dict(problem=pb.name, code=code, segments=segments(pb, refine, sections), dt=dt,
-                ic_s="", wall_s=out[0] if out else "",
+                ic_s=max(out[0] - stepping, 0.0) if stepping is not None else "",
+                wall_s=(stepping if stepping is not None else out[0]) if out else "",
                 error=error(out[1], out[2], ref_series, pb) if out else "", driver_s="",
                 mesh=mesh_name(sections, between))
 
