@@ -469,14 +469,19 @@ unsafe fn step(
 pub unsafe extern "C" fn stancf_interval_mean_force(s: *mut StancfSystem, f: *mut f64) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let last = sys
-                .last
-                .as_ref()
-                .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
+            let last = last_step(sys)?;
             args::room(f, last.interval_mean.len(), "f")?.copy_from_slice(&last.interval_mean);
             Ok(())
         })
     })
+}
+
+/// The forces of the last `stancf_step`, refused before the first (and
+/// after a restore).
+fn last_step(sys: &StancfSystem) -> Result<&CoupledForces, Error> {
+    sys.last
+        .as_ref()
+        .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))
 }
 
 /// The internal steps the last `stancf_step` took: the interval's equal
@@ -490,10 +495,7 @@ pub unsafe extern "C" fn stancf_interval_mean_force(s: *mut StancfSystem, f: *mu
 pub unsafe extern "C" fn stancf_last_steps(s: *mut StancfSystem, n: *mut c_uint) -> c_int {
     guard(|| {
         args::with_system(s, |sys| {
-            let last = sys
-                .last
-                .as_ref()
-                .ok_or_else(|| Error::input("no step since stancf_init or stancf_restore"))?;
+            let last = last_step(sys)?;
             *args::place(n, "n")? = c_uint::try_from(last.steps).unwrap_or(c_uint::MAX);
             Ok(())
         })
