@@ -213,12 +213,15 @@ def segments(pb, refine, sections=None):
                else int(round(int(f[5]) * refine)) for f in deck_rows(pb, "LINES"))
 
 
-def mesh_name(sections, between=False):
+def mesh_name(sections, between=False, force_tolerance=None):
     """The CSV's name of a mesh: "uniform" or "sections a/b/c", with ",
     between steps" for a run written at the 0.1 s outputs from its steps'
-    cubics (`[output] interval`, its step longer than 0.1 s)."""
+    cubics (`[output] interval`, its step longer than 0.1 s), and ",
+    force tolerance <tol>" for a run whose steps that tolerance chose
+    (`analysis.force_tolerance`, its dt the largest step)."""
     name = "sections " + "/".join(str(n) for n in sections) if sections else "uniform"
-    return name + (", between steps" if between else "")
+    name += ", between steps" if between else ""
+    return name + (", force tolerance %g" % force_tolerance if force_tolerance else "")
 
 
 def mesh_entry(pb, sections):
@@ -348,7 +351,7 @@ end_forces = "at_time"
 
 
 def run_stancf(pb, refine, dt, tolerance=None, sections=None, scheme="galerkin",
-               solver="modified-newton", between=False):
+               solver="modified-newton", between=False, force_tolerance=None):
     """(wall seconds, times, tensions k x points, summary) or None;
     `tolerance`: the scenario's `analysis.tolerance` (None: stancf's
     default, 1e-10 of the line's length); `sections`: the touchdown
@@ -377,8 +380,10 @@ def run_stancf(pb, refine, dt, tolerance=None, sections=None, scheme="galerkin",
         with open(sc, "w") as f:
             f.write(SCENARIO.format(motions=motions, dt=dt, duration=pb.duration, scheme=scheme,
                                     solver=solver, writing=writing,
-                                    tolerance="" if tolerance is None
-                                    else "tolerance = %r\n" % tolerance))
+                                    tolerance=("" if tolerance is None
+                                               else "tolerance = %r\n" % tolerance)
+                                    + ("" if force_tolerance is None
+                                       else "force_tolerance = %r\n" % force_tolerance)))
             if sections:
                 f.write(mesh_entry(pb, sections))
         out = os.path.join(d, "out")
@@ -461,6 +466,9 @@ GRIDS = {
                       (1, dt, n) for n in ((1, 2, 1), (1, 3, 1), (1, 3, 2), (1, 4, 2),
                                            (1, 5, 3), (1, 8, 3))
                       for dt in (0.5, 1.0, 2.0)],
+                  # Steps chosen by a force tolerance, dt the largest.
+                  controlled=[(1, 2.0, n, tol) for n in ((1, 3, 2), (1, 5, 3))
+                              for tol in (1e-2, 3e-3, 1e-3)],
                   reference=(1, 0.00625, (8, 112, 32)), check=(1, 0.0125, (4, 56, 16)),
                   moordyn=[(0.5, 1e-2), (0.5, 5e-3), (1, 5e-3), (1, 2.5e-3), (2, 2e-3),
                            (2, 1e-3), (4, 5e-4), (4, 2.5e-4), (8, 2.5e-4), (8, 1.25e-4)])),
@@ -469,6 +477,8 @@ GRIDS = {
                    moordyn=[(1, 8e-4)]),
         full=dict(stancf=[(r, dt) for r in (0.25, 0.375, 0.5, 0.75, 1, 2)
                           for dt in (0.1, 0.05, 0.025, 0.0125)],
+                  controlled=[(r, 1.0, None, tol) for r in (0.5, 0.75)
+                              for tol in (1e-2, 3e-3, 1e-3)],
                   reference=(4, 0.00625, None), check=(2, 0.0125, None),
                   moordyn=[(0.5, 2e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
                            (2, 1e-4), (4, 1e-4), (4, 5e-5)])),
@@ -476,19 +486,24 @@ GRIDS = {
         quick=dict(stancf=[(1, 0.1)], reference=(2, 0.0125, None), check=None,
                    moordyn=[(1, 5e-4)]),
         full=dict(stancf=[(r, dt) for r in (0.5, 0.7, 0.8, 1, 1.5, 2) for dt in (0.1, 0.05)],
+                  controlled=[(r, 1.0, None, tol) for r in (0.7, 1)
+                              for tol in (1e-2, 3e-3, 1e-3)],
                   reference=(4, 0.00625, None), check=(2, 0.0125, None),
                   moordyn=[(1, 5e-4), (2, 2.5e-4), (3, 1.25e-4), (4, 1e-4), (6, 6.25e-5)])),
     "lazy_wave": dict(
         quick=dict(stancf=[(1, 0.05)], reference=(1, 0.025, None), check=None,
                    moordyn=[(1, 8e-4)]),
         full=dict(stancf=[(r, dt) for r in (0.5, 1, 2) for dt in (0.05, 0.025, 0.0125)],
+                  controlled=[(r, 1.0, None, tol) for r in (0.5, 0.75)
+                              for tol in (1e-2, 3e-3, 1e-3)],
                   reference=(4, 0.00625, None), check=(2, 0.0125, None),
                   moordyn=[(0.5, 2e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
                            (2, 1e-4), (4, 1e-4), (4, 5e-5)])),
 }
 
 
-def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False):
+def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False,
+               force_tolerance=None):
     """A CSV row of a stancf run (`out` None: failed). Its `wall_s` is the
     simulation's time, summary.json's `stepping_wall_time_s` (the steps
     and their writing), as MoorDyn's is its simulation after its initial
@@ -500,10 +515,29 @@ def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False):
                 ic_s=max(out[0] - stepping, 0.0) if stepping is not None else "",
                 wall_s=(stepping if stepping is not None else out[0]) if out else "",
                 error=error(out[1], out[2], ref_series, pb) if out else "", driver_s="",
-                mesh=mesh_name(sections, between))
+                mesh=mesh_name(sections, between, force_tolerance))
 
 
 PROBLEMS = (OC4, STEEP, RISER, LAZY)
+
+
+def controlled_rows(pb, grid, ref_series):
+    """The rows of `pb`'s runs whose steps a force tolerance chose
+    (`analysis.force_tolerance`, dt the first and largest step), written
+    at the 0.1 s outputs from the steps' cubics."""
+    rows = []
+    for refine, dt, sections, tol in grid.get("controlled", []):
+        out = run_stancf(pb, refine, dt, RACE_TOLERANCE, sections, between=True,
+                         force_tolerance=tol)
+        rows.append(stancf_row(pb, "stancf", refine, dt, sections, out, ref_series, True, tol))
+        print(rows[-1], flush=True)
+    return rows
+
+
+# `--controlled-only`: the reference and the force-tolerance series
+# alone, merged into out/moordyn_race.csv in place of that file's
+# force-tolerance rows.
+CONTROLLED_ONLY = "--controlled-only" in sys.argv
 
 
 def race(pb):
@@ -515,13 +549,16 @@ def race(pb):
         sys.exit("%s: the reference run failed: %r" % (pb.name, grid["reference"]))
     ref_series = (ref[1], ref[2])
     rows = []
-    runs = [(run, False) for run in grid["stancf"]]
-    runs += [(run, True) for run in grid.get("between", [])]
+    runs = [] if CONTROLLED_ONLY else [(run, False) for run in grid["stancf"]]
+    runs += [] if CONTROLLED_ONLY else [(run, True) for run in grid.get("between", [])]
     for run, between in runs:
         refine, dt, sections = run if len(run) == 3 else run + (None,)
         out = run_stancf(pb, refine, dt, RACE_TOLERANCE, sections, between=between)
         rows.append(stancf_row(pb, "stancf", refine, dt, sections, out, ref_series, between))
         print(rows[-1], flush=True)
+    rows += controlled_rows(pb, grid, ref_series)
+    if CONTROLLED_ONLY:
+        return rows
     for r, dtm in grid["moordyn"]:
         out = run_moordyn(pb, r, dtm)
         rows.append(dict(problem=pb.name, code="moordyn", segments=segments(pb, r), dt=dtm,
@@ -550,6 +587,10 @@ def main():
     for pb in PROBLEMS:
         if (not only and pb is not LAZY) or pb.name in only:
             rows += race(pb)
+    if CONTROLLED_ONLY:
+        kept = [r for r in read_rows(os.path.join(OUT, "moordyn_race.csv"))
+                if "force tolerance" not in r["mesh"]]
+        rows = kept + rows
     write(rows, PROBLEMS, OUT)
     if "--publish" in sys.argv:
         # The committed copy: docs/race/moordyn_race.{csv,md,png}.

@@ -40,6 +40,7 @@ def run_text(r):
     """ "60 segments, dt 0.005 (0.889 %)", the mesh named if in sections."""
     mesh = "" if r["mesh"] == "uniform" else " in %s" % r["mesh"]
     mesh = mesh.replace(" in uniform, between steps", ", between steps")
+    mesh = mesh.replace(" in uniform, force tolerance", ", force tolerance")
     return "%d segments%s, dt %g (%.3g %%)" % (r["segments"], mesh, r["dt"], 100 * r["error"])
 
 
@@ -125,11 +126,14 @@ def write(rows, all_problems, out):
                 ("stancf", True, False, "o", "stancf, the deck's uniform mesh"),
                 ("stancf", False, False, "^", "stancf, touchdown in sections"),
                 ("stancf", True, True, "D", "stancf, uniform, written between steps"),
-                ("stancf", False, True, "v", "stancf, sections, written between steps")]:
+                ("stancf", False, True, "v", "stancf, sections, written between steps"),
+                ("stancf", None, None, "*", "stancf, steps chosen by a force tolerance")]:
+            controlled = uniform is None
             pts = [(r["wall_s"], r["error"]) for r in rows if r["problem"] == pb.name
                    and r["code"] == code and r["error"] not in ("", 0.0)
-                   and r["mesh"].startswith("uniform") == uniform
-                   and r["mesh"].endswith("between steps") == between]
+                   and ("force tolerance" in r["mesh"]) == controlled
+                   and (controlled or (r["mesh"].startswith("uniform") == uniform
+                                       and r["mesh"].endswith("between steps") == between))]
             if pts:
                 x, y = zip(*sorted(pts))
                 ax.loglog(x, [100 * v for v in y], marker, label=label)
