@@ -54,10 +54,15 @@ Cost: wall time of the whole simulation. MoorDyn: MoorDyn_Init (its
 initial-condition generation, reported separately) and one MoorDyn_Step
 per dtM (the coupled points must move as the motion does inside MoorDyn's
 steps: see run_moordyn), less the Python driver's own time, measured by
-the same loop without stepping and reported apart. stancf: the whole
-`stancf run` process (parsing, static equilibrium, the steps, writing
-points.csv, the one table the race reads: `[output] files`; MoorDyn
-writes none).
+the same loop without stepping and reported apart. stancf: its steps and
+their writing of points.csv, the one table the race reads (`[output]
+files`; MoorDyn writes none), after its static solve: summary.json's
+`stepping_wall_time_s`; the rest of its process (start, parsing, the
+static equilibrium) stands beside MoorDyn's initial conditions, and the
+two add up to the time to the answer.
+
+The problems and their decks are in race_problems.py, the runs of each
+code in race_grids.py, the tables and figure in race_tables.py.
 """
 import csv
 import json
@@ -73,168 +78,14 @@ import numpy as np
 
 from race_tables import read_rows, write
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
+from race_grids import GRIDS, RACE_TOLERANCE
+from race_problems import (HERE, LAZY, OC4, OUTPUT_DT, PROBLEMS, RISER, ROOT, STEEP,  # noqa: F401
+                           Problem, deck_rows, deck_text, mesh_entry, mesh_name, positions0,
+                           segments, surge)
+
 STANCF = os.path.join(ROOT, "target", "release", "stancf")
 OUT = os.path.join(HERE, "out")
 QUICK = "--quick" in sys.argv
-OUTPUT_DT = 0.1
-
-
-class Problem:
-    """A race problem: a deck, its coupled points moved along x by
-    f(t) A sin(2 pi t / T) (ramp over one period), the resolutions, and
-    the lines stancf may mesh in sections (`touchdown_lines`, from end A:
-    `touchdown_sections` metres each, the middle one where the line
-    touches down as the motion moves it; a `[[mesh]]` of the scenario)."""
-
-    def __init__(self, name, deck, coupled, amplitude, period, duration, ba, title,
-                 touchdown_lines, touchdown_sections, without_added_mass=False):
-        self.name, self.deck, self.coupled = name, deck, coupled
-        self.amplitude, self.period, self.duration = amplitude, period, duration
-        self.ba, self.title = ba, title
-        self.touchdown_lines, self.touchdown_sections = touchdown_lines, touchdown_sections
-        self.without_added_mass = without_added_mass
-
-
-# OC4: BA = zeta l sqrt(EA m) at zeta = 1, l = 835.35 / 20 m (docs/method.md (M36)).
-# The chains touch down between about 125 m and 345 m from their anchors
-# (line 1, in line with the surge; lines 2 and 3: 195 m to 300 m).
-OC4 = Problem("oc4", os.path.join(ROOT, "examples", "oc4-deepcwind-moordyn.txt"), [4, 5, 6],
-              8.0, 100.0, 300.0, 1.0 * 835.35 / 20 * math.sqrt(7.536e8 * 113.35),
-              "OC4 DeepCwind, 8 m surge at 100 s, 300 s", [1, 2, 3], [100.0, 280.0, 455.35])
-# The steep wave: the lazy wave's cable ending on a riser base above the
-# bed (no contact); its deck fixes its own BA. Raced without added mass
-# (Ca = CaAx = 0 in both codes): the codes' added masses are different
-# laws. stancf's is the entrained water's kinetic energy (docs/method.md
-# §12.5, (W25)), whose Lagrange equations hold the terms of the turning
-# tangent, -(dM_a/dt) r_dot + dT_a/dq; MoorDyn's is the force -M_a r_ddot
-# alone. On this cable, whose tangents turn as it swings, they differ by
-# 0.8 % of the tension's range: with the deck's Ca = 1, MoorDyn's runs at
-# 96 and 192 segments stay 0.812 and 0.781 % from stancf's converged
-# line (the error mostly at twice and three times the motion's
-# frequency), where without added mass they converge to it (0.535 % at
-# 48 segments, 0.195 % at 96). MoorDyn's stable step is set by the axial
-# waves, whose inertia CaAx = 0 leaves as it was.
-STEEP = Problem("steep_wave", os.path.join(ROOT, "examples", "steep-wave-moordyn.txt"), [1],
-                5.0, 20.0, 120.0, None, "steep-wave cable (EI > 0, Ca = 0), 5 m at 20 s, "
-                "120 s", [], [], without_added_mass=True)
-# The lazy wave's deck fixes its own BA. Its line 3 touches down between
-# about 60 m and 73 m from point 3. Raced only when asked
-# (--problem=lazy_wave): the bed contact makes both codes' fairlead
-# tension ring (a few tens of newtons, 1 % of its range) and stancf's
-# own references at 192 and 384 elements differ by 1.1 %, so neither
-# 1 % nor 0.1 % can be judged (README).
-LAZY = Problem("lazy_wave", os.path.join(ROOT, "examples", "lazy-wave-moordyn.txt"), [1],
-               5.0, 20.0, 120.0, None, "lazy-wave cable, 5 m at 20 s, 120 s", [3],
-               [50.0, 35.0, 35.0])
-
-
-# The riser (issue 33): a free-hanging flexible pipe, 150 m from a base on
-# the bed 80 m down to a hang-off 1 m below the surface, 100 m away,
-# moved 8 m at 20 s after a one-period ramp, 100 s. It touches down
-# between about 38 m and 60 m from the base as the hang-off moves (the
-# quasi-static catenary). Raced without added mass, as the steep wave
-# (see STEEP): with the deck's Ca = 1, MoorDyn at 100 and 150 segments
-# stayed 3.95 and 3.54 % from stancf's converged line (200 elements, dt
-# 0.00625 s), without it 1.27 and 1.11 % (against 100 elements at
-# 0.0125 s, itself within 0.05 % of the 200).
-RISER = Problem("riser", os.path.join(ROOT, "examples", "riser-moordyn.txt"), [2],
-                8.0, 20.0, 100.0, None, "flexible riser (EI > 0, Ca = 0), 8 m at 20 s, 100 s",
-                [], [], without_added_mass=True)
-
-
-def surge(t, pb):
-    """x offset and rate of the coupled points at t (stancf's [[motions]])."""
-    s = min(t / pb.period, 1.0)
-    f = s * s * s * (s * (6.0 * s - 15.0) + 10.0)
-    df = 30.0 * s * s * (s - 1.0) ** 2 / pb.period if t < pb.period else 0.0
-    w = 2.0 * math.pi / pb.period
-    a = pb.amplitude
-    return f * a * math.sin(w * t), df * a * math.sin(w * t) + f * a * w * math.cos(w * t)
-
-
-def deck_text(pb, refine, dtm):
-    """The race's deck: every line's NumSegs times `refine`, BA set (when
-    the problem fixes it here), Ca and CaAx zero (when the problem is
-    raced without added mass), dtM set, no OUTPUTS channels, a tight
-    initial-condition threshold for MoorDyn."""
-    out, section = [], None
-    with open(pb.deck) as f:
-        for line in f:
-            if line.startswith("---"):
-                section = line.strip("- \n").upper()
-                out.append(line)
-                continue
-            fields = line.split()
-            data = bool(fields) and not fields[0].startswith("(") and fields[0] != "TypeName" \
-                and fields[0] != "ID"
-            if section == "LINE TYPES" and data and (pb.ba is not None
-                                                     or pb.without_added_mass):
-                if pb.ba is not None:
-                    fields[4] = "%.6e" % pb.ba
-                if pb.without_added_mass:
-                    # Ca and CaAx (see STEEP).
-                    fields[7] = fields[9] = "0.0"
-                line = "  ".join(fields) + "\n"
-            elif section == "LINES" and data:
-                fields[5] = str(int(round(int(fields[5]) * refine)))
-                line = "  ".join(fields) + "\n"
-            elif section == "OPTIONS" and data and fields[1] == "dtM":
-                line = "%r  dtM\n" % dtm
-            elif section == "OPTIONS" and data and fields[1] in ("threshIC", "TmaxIC"):
-                continue
-            elif section == "OUTPUTS" and data and fields[0] != "END":
-                continue
-            out.append(line)
-    k = next(i for i, line in enumerate(out) if line.startswith("---") and "OUTPUTS" in line)
-    return "".join(out[:k] + ["0.0001  threshIC\n", "200.0  TmaxIC\n"] + out[k:])
-
-
-def deck_rows(pb, section):
-    """The fields of the data rows (first field a number) of a section of
-    the problem's deck."""
-    current = None
-    with open(pb.deck) as f:
-        for line in f:
-            if line.startswith("---"):
-                current = line.strip("- \n").upper()
-                continue
-            fields = line.split()
-            if current == section and fields and fields[0].isdigit():
-                yield fields
-
-
-def segments(pb, refine, sections=None):
-    """The total segments (elements) of a resolution: the deck's NumSegs
-    times `refine`, the touchdown lines in `sections` (element counts) if
-    given."""
-    return sum(sum(sections) if sections and int(f[0]) in pb.touchdown_lines
-               else int(round(int(f[5]) * refine)) for f in deck_rows(pb, "LINES"))
-
-
-def mesh_name(sections, between=False, force_tolerance=None):
-    """The CSV's name of a mesh: "uniform" or "sections a/b/c", with ",
-    between steps" for a run written at the 0.1 s outputs from its steps'
-    cubics (`[output] interval`, its step longer than 0.1 s), and ",
-    force tolerance <tol>" for a run whose steps that tolerance chose
-    (`analysis.force_tolerance`, its dt the largest step)."""
-    name = "sections " + "/".join(str(n) for n in sections) if sections else "uniform"
-    name += ", between steps" if between else ""
-    return name + (", force tolerance %g" % force_tolerance if force_tolerance else "")
-
-
-def mesh_entry(pb, sections):
-    """The scenario's `[[mesh]]` putting the touchdown lines in sections."""
-    parts = ", ".join("{ length = %r, elements = %d }" % (length, n)
-                      for length, n in zip(pb.touchdown_sections, sections))
-    return "[[mesh]]\nlines = %r\ngrading = { sections = [%s] }\n" % (pb.touchdown_lines, parts)
-
-
-def positions0(pb):
-    """The coupled points' positions in the deck."""
-    rows = {int(f[0]): [float(v) for v in f[2:5]] for f in deck_rows(pb, "POINTS")}
-    return np.array([rows[i] for i in pb.coupled])
 
 
 class Quiet:
@@ -424,84 +275,6 @@ def error(times, tensions, ref, pb):
     return float((np.abs(a - b).max(axis=0) / span).max())
 
 
-# Resolutions: (refinement of the deck's NumSegs, step). MoorDyn's step
-# is bounded by its explicit scheme's stability, which falls with the
-# segment length: each resolution is run at the largest steps that
-# complete (found by trying; an unstable step either stops MoorDyn or
-# shows as a large error), so its cheapest accurate run is in the table.
-# stancf's step has no such bound; its Newton tolerance (a fraction of
-# the line's length, docs/method.md §7.1) is a setting like the step:
-# 1e-8 for the runs raced, the default 1e-10 for the reference. A
-# position left off by tol L moves a stiff line's end force by up to
-# (EA / l) tol L: at 1e-6 on the steep wave (EA 5e8 N, 2.5 m elements,
-# 120 m) that is far above the tension's 3 kN range, and the runs at
-# short steps showed it (48 elements at dt 0.0125: 0.45 % of the range at
-# 1e-6, 0.022 % at 1e-8, in the same time). On OC4 1e-8 and 1e-6 give
-# the same errors to three digits, 1e-8 about 10 % slower.
-RACE_TOLERANCE = 1e-8
-# stancf's runs: (refine, dt) on the deck's uniform mesh, (refine, dt,
-# sections) with the touchdown lines in sections (element counts of
-# Problem.touchdown_sections). The reference is the finest, in sections
-# at the default tolerance; its check is the same with half the elements
-# and twice the step (their difference, in the table, bounds the
-# reference's own error: both codes converge at first order near the
-# touchdown, so a halving roughly halves it).
-UNIFORM = [(r, dt) for r in (0.25, 0.5, 1, 2) for dt in (0.1, 0.05, 0.025)]
-GRIDS = {
-    "oc4": dict(
-        quick=dict(stancf=[(0.5, 0.1), (1, 0.1, (1, 4, 2))], reference=(1, 0.025, (1, 8, 3)),
-                   check=None, moordyn=[(0.5, 5e-3), (1, 2.5e-3)]),
-        full=dict(stancf=UNIFORM + [(4, 0.025)] + [
-                      (1, dt, n) for n, dts in [((1, 2, 1), (0.1,)), ((1, 3, 1), (0.1,)),
-                                                ((1, 3, 2), (0.1,)),
-                                                ((1, 4, 2), (0.1,)), ((1, 5, 3), (0.1,)),
-                                                ((1, 8, 3), (0.1, 0.05)), ((2, 12, 4), (0.1, 0.05)),
-                                                ((2, 20, 5), (0.05, 0.025)),
-                                                ((2, 28, 6), (0.05, 0.025)),
-                                                ((2, 40, 8), (0.05, 0.025))]
-                      for dt in dts],
-                  # Steps longer than the 0.1 s output, written between
-                  # them from the steps' cubics (docs/method.md §6.5a).
-                  between=[(r, dt) for r in (0.75, 1) for dt in (0.5, 1.0, 2.0)] + [
-                      (1, dt, n) for n in ((1, 2, 1), (1, 3, 1), (1, 3, 2), (1, 4, 2),
-                                           (1, 5, 3), (1, 8, 3))
-                      for dt in (0.5, 1.0, 2.0)],
-                  # Steps chosen by a force tolerance, dt the largest.
-                  controlled=[(1, 2.0, n, tol) for n in ((1, 3, 2), (1, 5, 3))
-                              for tol in (1e-2, 3e-3, 1e-3)],
-                  reference=(1, 0.00625, (8, 112, 32)), check=(1, 0.0125, (4, 56, 16)),
-                  moordyn=[(0.5, 1e-2), (0.5, 5e-3), (1, 5e-3), (1, 2.5e-3), (2, 2e-3),
-                           (2, 1e-3), (4, 5e-4), (4, 2.5e-4), (8, 2.5e-4), (8, 1.25e-4)])),
-    "steep_wave": dict(
-        quick=dict(stancf=[(1, 0.05)], reference=(1, 0.025, None), check=None,
-                   moordyn=[(1, 8e-4)]),
-        full=dict(stancf=[(r, dt) for r in (0.25, 0.375, 0.5, 0.75, 1, 2)
-                          for dt in (0.1, 0.05, 0.025, 0.0125)],
-                  controlled=[(r, 1.0, None, tol) for r in (0.5, 0.75)
-                              for tol in (1e-2, 3e-3, 1e-3)],
-                  reference=(4, 0.00625, None), check=(2, 0.0125, None),
-                  moordyn=[(0.5, 2e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
-                           (2, 1e-4), (4, 1e-4), (4, 5e-5)])),
-    "riser": dict(
-        quick=dict(stancf=[(1, 0.1)], reference=(2, 0.0125, None), check=None,
-                   moordyn=[(1, 5e-4)]),
-        full=dict(stancf=[(r, dt) for r in (0.5, 0.7, 0.8, 1, 1.5, 2) for dt in (0.1, 0.05)],
-                  controlled=[(r, 1.0, None, tol) for r in (0.7, 1)
-                              for tol in (1e-2, 3e-3, 1e-3)],
-                  reference=(4, 0.00625, None), check=(2, 0.0125, None),
-                  moordyn=[(1, 5e-4), (2, 2.5e-4), (3, 1.25e-4), (4, 1e-4), (6, 6.25e-5)])),
-    "lazy_wave": dict(
-        quick=dict(stancf=[(1, 0.05)], reference=(1, 0.025, None), check=None,
-                   moordyn=[(1, 8e-4)]),
-        full=dict(stancf=[(r, dt) for r in (0.5, 1, 2) for dt in (0.05, 0.025, 0.0125)],
-                  controlled=[(r, 1.0, None, tol) for r in (0.5, 0.75)
-                              for tol in (1e-2, 3e-3, 1e-3)],
-                  reference=(4, 0.00625, None), check=(2, 0.0125, None),
-                  moordyn=[(0.5, 2e-3), (0.5, 8e-4), (1, 8e-4), (1, 4e-4), (2, 2e-4),
-                           (2, 1e-4), (4, 1e-4), (4, 5e-5)])),
-}
-
-
 def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False,
                force_tolerance=None):
     """A CSV row of a stancf run (`out` None: failed). Its `wall_s` is the
@@ -518,7 +291,6 @@ def stancf_row(pb, code, refine, dt, sections, out, ref_series, between=False,
                 mesh=mesh_name(sections, between, force_tolerance))
 
 
-PROBLEMS = (OC4, STEEP, RISER, LAZY)
 
 
 def controlled_rows(pb, grid, ref_series):
