@@ -63,7 +63,6 @@ impl CoupledSystem {
             (&end, end_rate.as_deref()),
             (x, xd),
         )?;
-        running.sim.set_time_step(h);
         // The coupled bodies' own parts on the host's motion (§15.18).
         let held_end: Vec<_> = (0..layout.bodies.len())
             .map(|b| layout.held_end(x, xd, b))
@@ -102,7 +101,7 @@ impl CoupledSystem {
             None => fixed_steps(
                 &mut running.sim,
                 &mut running.watch,
-                steps,
+                (steps, h),
                 stop,
                 &mut |sim| book(loads(sim, h), h),
             ),
@@ -122,10 +121,11 @@ impl CoupledSystem {
                         }
                     },
                 );
+                // The simulation keeps the last half step's length: set
+                // back to h, its factors would be dropped for nothing.
                 let (next, watch) = stepper.into_parts();
                 running.next_step = Some(next);
                 running.watch = watch;
-                running.sim.set_time_step(h);
                 result
             }
         };
@@ -153,15 +153,16 @@ impl CoupledSystem {
     }
 }
 
-/// The interval's `steps` equal steps (of the simulation's step length),
-/// `book` called after each; `stop` asked after each but the last.
+/// The interval's `steps` equal steps of `h`, `book` called after each;
+/// `stop` asked after each but the last.
 fn fixed_steps(
     sim: &mut SystemSimulation,
     watch: &mut crate::integrator::EnergyWatch,
-    steps: usize,
+    (steps, h): (usize, f64),
     stop: &mut dyn FnMut() -> bool,
     book: &mut dyn FnMut(&SystemSimulation),
 ) -> Result<(), CouplingError> {
+    sim.set_time_step(h);
     for taken in 1..=steps {
         let halvings = sim.step_halvings();
         crate::system::watched_step(sim, watch, halvings)?;
