@@ -16,11 +16,16 @@
 # visco_check.py (viscoelastic lines driven against MoorDyn, seconds);
 # `--viv-check` runs viv_check.py (MoorDyn's VIV riser in both codes and
 # the published frequency, out/viv_check.md, minutes);
+# `--check-all` runs check_all.py (`stancf check` over every third-party
+# deck, bodies and rods included: out/check_all.md, a minute, no MoorDyn);
 # `--tables-only` redraws the table and figure from out/moordyn_race.csv.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
 (cd "$root" && cargo build --release -p stancf-cli)
+if [ "${1:-}" = "--check-all" ]; then
+  exec python3 "$here/check_all.py"
+fi
 venv="$here/.venv"
 if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"

@@ -51,7 +51,9 @@ fn line_words(sc: &SystemScenario, system: &System, i: usize) -> String {
 
 /// Validates the system of `sc` as `run` does and returns the report.
 pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
-    let system = prepare(path, sc)?.system;
+    let Prepared {
+        system, unbalanced, ..
+    } = prepare(path, sc)?;
     let mut r = String::new();
     let mut line = |k: &str, v: String| {
         let _ = writeln!(r, "{k:<28}{v}");
@@ -91,7 +93,14 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
     line(
         "analysis",
         match (sc.analysis.kind, sc.initial) {
-            (AnalysisKind::Static, _) => "static equilibrium from the lines' catenaries".into(),
+            (AnalysisKind::Static, _) => match &unbalanced {
+                None => "static equilibrium from the lines' catenaries".into(),
+                Some(why) => format!(
+                    "MoorDyn's start, the lines' catenaries between their points as given (the \
+                     deck's TmaxIC is 0: no initial conditions), written at t = 0: no static \
+                     equilibrium ({why}; docs/method.md §13.7)"
+                ),
+            },
             (AnalysisKind::Dynamic, InitialShape::Static) => format!(
                 "dynamic from the static equilibrium, {} s in steps of {} s",
                 Sig(sc.analysis.duration),

@@ -93,13 +93,13 @@ pub fn check_geometry(
             }
             let span = distance(sc.points[a].position, sc.points[b].position);
             // One line straight between two placed points is in
-            // equilibrium at any stretch: a dynamic run from the reference
-            // shape runs it, with a note (`overstretch`; MoorDyn's own
-            // test decks stretch a line by 100 %). The static solve is
-            // refused it (its Newton iteration stalls on a straight line
-            // seeded without its tension: docs/method.md §2.11).
+            // equilibrium at any stretch: it runs as given, statics
+            // included, with a note (`overstretch`; MoorDyn's own test
+            // decks stretch a line by 100 %: its static solve converges
+            // since the trust radius weighs a multiplier by the
+            // displacement it causes, docs/method.md §6.9).
             let direct = last_line.is_some_and(|l| reach_is_direct(sc, l, a, b));
-            let runs_as_given = direct && !free && !statics_place_free_points;
+            let runs_as_given = direct && !free;
             if !runs_as_given && span > (1.0 + MAX_SPAN_STRAIN) * length {
                 let line = last_line.expect("a reached point has a line to it");
                 let line_key = sc.names.line(line, "length", "UnstrLen");
@@ -128,11 +128,10 @@ pub fn check_geometry(
                         Sig(length)
                     )
                 };
-                let reference = reference_hint(direct && !free);
                 return Err(Failure::Input(format!(
                     "{file}: {}: points {} and {} are {} m apart{start} and {via}: spanning \
                      them would stretch the lines by {} %, beyond the {:.0} % of any mooring \
-                     material's breaking strain; lengthen the line or move its points{reference}",
+                     material's breaking strain; lengthen the line or move its points",
                     keys,
                     sc.points[a].id,
                     sc.points[b].id,
@@ -180,16 +179,6 @@ fn direct_reach(
         }
     }
     best
-}
-
-/// The way a line straight between two placed points runs however far
-/// it is stretched (a dynamic run from the reference shape), or nothing.
-fn reference_hint(direct: bool) -> &'static str {
-    if direct {
-        " (a dynamic run from the reference shape, initial = \"reference\", takes it as given)"
-    } else {
-        ""
-    }
 }
 
 /// Whether `line` alone joins points `a` and `b`.

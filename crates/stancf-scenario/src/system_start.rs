@@ -20,6 +20,10 @@ pub struct Prepared {
     pub system: System,
     pub statics: Option<SystemStatics>,
     pub dynamics: Option<SystemSimulation>,
+    /// Why a deck alone whose `TmaxIC` is 0 has no static equilibrium:
+    /// its run writes MoorDyn's start, `dynamics` at t = 0, instead
+    /// ([`SystemScenario::start_without_equilibrium`]).
+    pub unbalanced: Option<String>,
 }
 
 /// The dynamic simulation of `system` from the lines' `states` with the
@@ -49,42 +53,95 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
     crate::input_scales::system_scales(&path.display().to_string(), sc)?;
     crate::system_geometry::check_geometry(&path.display().to_string(), sc, true)?;
     let system = sc.system().map_err(input)?;
+    let mut unbalanced = None;
     let statics = if sc.analysis.kind == AnalysisKind::Static || sc.initial == InitialShape::Static
     {
         let seed_system = sc.seed_system().map_err(input)?;
-        refuse_overlong_lines(path, sc, &seed_system)?;
-        let settings = sc.static_settings();
-        Some(SystemStatics::seeded(system.clone(), &seed_system, settings).map_err(input)?)
+        let solve = match stancf::system::overlong_lines(&seed_system).first() {
+            Some(l) => Err(Unbalanced::Overlong(
+                overlong_refusal(path, sc, l),
+                format!("line {}: {l}", sc.lines[l.line].id),
+            )),
+            None => SystemStatics::seeded(system.clone(), &seed_system, sc.static_settings())
+                .map_err(|e| {
+                    if sinks(&e.message) {
+                        let why = e.message.trim_end_matches(NO_BODY_EQUILIBRIUM);
+                        let why = format!(
+                            "{}: {}",
+                            sc.names.library_key(&e.key),
+                            why.trim_end_matches([';', ' '])
+                        );
+                        Unbalanced::Sinks(input(e), why)
+                    } else {
+                        Unbalanced::Not(input(e))
+                    }
+                }),
+        };
+        match solve {
+            Ok(statics) => Some(statics),
+            Err(Unbalanced::Not(f)) => return Err(f),
+            Err(Unbalanced::Overlong(f, why) | Unbalanced::Sinks(f, why)) => {
+                if !(sc.start_without_equilibrium && sc.analysis.kind == AnalysisKind::Static) {
+                    return Err(f);
+                }
+                unbalanced = Some(why);
+                None
+            }
+        }
     } else {
         None
     };
-    let dynamics = if sc.analysis.kind == AnalysisKind::Dynamic {
-        let (start, forces) = match sc.initial {
-            // MoorDyn's start without initial conditions (§13.7): each line's
-            // catenary of its wet weight between its ends as given, and
-            // the forces it puts on its ends (the t = 0 row's).
-            InitialShape::Catenary => {
-                let seed_system = sc.seed_system().map_err(input)?;
-                let states = moordyn_start_states(&system, &seed_system)
-                    .map_err(|l| overlong_refusal(path, sc, &l))?;
-                (states, Some(moordyn_start_forces(&seed_system)))
-            }
-            InitialShape::Static | InitialShape::Reference => (straight_states(&system), None),
-        };
-        let mut sim = simulation(sc, system.clone(), start).map_err(input)?;
-        if let Some(forces) = forces {
-            sim.set_start_forces(&forces).map_err(input)?;
-        }
-        Some(sim)
+    let start = if unbalanced.is_some() {
+        Some(InitialShape::Catenary)
     } else {
-        None
+        (sc.analysis.kind == AnalysisKind::Dynamic).then_some(sc.initial)
+    };
+    let dynamics = match start {
+        Some(initial) => {
+            let (start, forces) = match initial {
+                // MoorDyn's start without initial conditions (§13.7): each line's
+                // catenary of its wet weight between its ends as given, and
+                // the forces it puts on its ends (the t = 0 row's).
+                InitialShape::Catenary => {
+                    let seed_system = sc.seed_system().map_err(input)?;
+                    let states = moordyn_start_states(&system, &seed_system)
+                        .map_err(|l| overlong_refusal(path, sc, &l))?;
+                    (states, Some(moordyn_start_forces(&seed_system)))
+                }
+                InitialShape::Static | InitialShape::Reference => (straight_states(&system), None),
+            };
+            let mut sim = simulation(sc, system.clone(), start).map_err(input)?;
+            if let Some(forces) = forces {
+                sim.set_start_forces(&forces).map_err(input)?;
+            }
+            Some(sim)
+        }
+        None => None,
     };
     Ok(Prepared {
         system,
         statics,
         dynamics,
+        unbalanced,
     })
 }
+
+/// A static solve refused for want of an equilibrium (with the refusal
+/// and its reason), or refused for another reason.
+enum Unbalanced {
+    Overlong(Failure, String),
+    Sinks(Failure, String),
+    Not(Failure),
+}
+
+/// Whether the library refused a static analysis because a body or rod
+/// has no static equilibrium (it floats on no line and sinks, or rises).
+fn sinks(message: &str) -> bool {
+    message.ends_with(NO_BODY_EQUILIBRIUM)
+}
+
+/// How the library's refusal of a body without static equilibrium ends.
+const NO_BODY_EQUILIBRIUM: &str = "start a dynamic run from its given pose instead";
 
 /// Where the library refuses a static analysis because a body has no
 /// static equilibrium ("start a dynamic run from its given pose
@@ -93,9 +150,7 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
 /// placement, TmaxIC 0), so from a scenario that takes it; a scenario by
 /// its `[analysis]`. Empty otherwise.
 fn dynamic_route(path: &Path, sc: &SystemScenario, message: &str) -> String {
-    if sc.analysis.kind != AnalysisKind::Static
-        || !message.ends_with("start a dynamic run from its given pose instead")
-    {
+    if sc.analysis.kind != AnalysisKind::Static || !sinks(message) {
         return String::new();
     }
     let toml = path
@@ -112,17 +167,6 @@ fn dynamic_route(path: &Path, sc: &SystemScenario, message: &str) -> String {
         )
     } else {
         " ([analysis] type = \"dynamic\" with initial = \"reference\")".into()
-    }
-}
-
-/// Refuses a static solve of a system with a line anchored on its bed
-/// that is longer than its path to the fairlead can hold (C20), naming
-/// the line by its id and saying what to do (the core refuses it too,
-/// by index: `SystemStatics::seeded`).
-fn refuse_overlong_lines(path: &Path, sc: &SystemScenario, seed: &System) -> Result<(), Failure> {
-    match stancf::system::overlong_lines(seed).first() {
-        Some(l) => Err(overlong_refusal(path, sc, l)),
-        None => Ok(()),
     }
 }
 

@@ -90,14 +90,24 @@ fn moordyn_point_force_channels_are_the_net_forces_on_the_points() {
 /// on the bed at 400 m to a fairlead at the surface, in 200 m of water.
 /// Hanging from the fairlead and lying straight to the anchor it needs at
 /// most L_max = XF + V0/W = 600 m (C20); the other 250 m would lie slack
-/// on the bed in no determined shape. `check` and `run` refuse it naming
+/// on the bed in no determined shape. Where the deck asks for MoorDyn's
+/// initial conditions (TmaxIC above 0) `check` and `run` refuse it naming
 /// the line, both lengths and (C20) (exit 2, nothing written); MoorDyn's
-/// dynamic relaxation does not settle there either. Its driver runs it
-/// from MoorDyn's start (`moordyn_driver::r_test_md_case5_...`).
+/// dynamic relaxation does not settle there either. As the r-test has it,
+/// TmaxIC 0, MoorDyn's `Init` lays it straight and slack between its ends:
+/// the deck alone passes `check` and its run writes that start, the
+/// fairlead holding nothing, with the reason (docs/method.md §13.7). Its
+/// driver runs it on from there (`moordyn_driver::r_test_md_case5_...`).
 #[test]
 fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
     let dir = scratch("overlong_line");
-    let path = copy_fixture(&dir, "md-case5-moordyn.txt", "md_case5.dat");
+    let given = std::fs::read_to_string(repo_file(
+        "crates/stancf-cli/tests/fixtures/md-case5-moordyn.txt",
+    ))
+    .unwrap();
+    let with_ic = given.replace("0.0      TmaxIC", "60.0     TmaxIC");
+    assert_ne!(with_ic, given);
+    let path = write_scenario(&dir, "md_case5.dat", &with_ic);
     refused_by_check_and_run(
         &path,
         &dir.join("out"),
@@ -111,13 +121,24 @@ fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
         ],
         &[],
     );
+    let path = write_scenario(&dir, "md_case5.dat", &given);
+    let start = dir.join("start");
+    let o = run_quiet(&path, &start, &[]);
+    assert!(o.status.success(), "{}", text(&o).1);
+    let why = read_json(&start.join("summary.json"))["no_static_equilibrium"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    assert!(
+        why.starts_with("line 1: its 850 m") && why.contains("(C20)"),
+        "{why}"
+    );
+    for row in read_tensions(&start.join("tensions.csv")) {
+        assert_eq!((row[0], row[6]), (0.0, 0.0));
+    }
     // 590 m fit: the same deck runs.
     let dir = scratch("overlong_line_shortened");
-    let deck = std::fs::read_to_string(repo_file(
-        "crates/stancf-cli/tests/fixtures/md-case5-moordyn.txt",
-    ))
-    .unwrap();
-    let path = write_scenario(&dir, "md.dat", &deck.replace("850.00", "590.00"));
+    let path = write_scenario(&dir, "md.dat", &given.replace("850.00", "590.00"));
     let o = run_quiet(&path, &dir.join("out"), &[]);
     assert!(o.status.success(), "{}", text(&o).1);
 }
@@ -183,6 +204,24 @@ fn a_deck_without_wtrdpth_takes_moordyns_depth_of_its_deepest_point() {
         text(&o).1.contains("no point is under the surface"),
         "{}",
         text(&o).1
+    );
+}
+
+/// MoorPy's decks name the water depth `depth` (its examples' sample.txt,
+/// its tests' case8.dat): taken as WtrDpth, with a note that MoorDyn 2.7
+/// does not read the name.
+#[test]
+fn a_moorpy_decks_depth_option_is_its_water_depth() {
+    let d = scratch("deck-depth-moorpy");
+    let deck = rope_deck("").replace("50 WtrDpth\n", "50 depth\n");
+    let file = write_scenario(&d, "rope.txt", &deck);
+    let o = stancf(&["check", file.to_str().unwrap()]);
+    let (stdout, stderr) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{stderr}");
+    assert!(stdout.contains("depth 50 m,"), "{stdout}");
+    assert!(
+        stdout.contains("option depth: MoorPy's name for WtrDpth"),
+        "{stdout}"
     );
 }
 

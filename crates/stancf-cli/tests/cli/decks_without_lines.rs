@@ -179,10 +179,15 @@ fn a_scenario_taking_a_deck_steps_at_the_decks_step_by_default() {
 }
 
 /// A deck's rod that sinks (OpenFAST's md_vertical: heavier than the
-/// water it displaces, no line) has no static equilibrium: `check` and
-/// `run` of the deck alone (a static run) refuse it naming its row and
-/// the rod, not the library's body, and say how to run it dynamically;
-/// so run, it sinks as a body of its mass and added mass (to 1e-6 m).
+/// water it displaces, no line) has no static equilibrium. With MoorDyn's
+/// initial conditions asked for (TmaxIC above 0), `check` and `run` of
+/// the deck alone (a static run) refuse it naming its row and the rod,
+/// not the library's body, and say how to run it dynamically. With
+/// TmaxIC 0, as md_vertical has it, MoorDyn's `Init` generates none and
+/// leaves the rod where the deck puts it: the deck alone passes `check`
+/// and its run writes that start at t = 0, saying why there is no
+/// equilibrium (docs/method.md §13.7). Run dynamically, it sinks as a
+/// body of its mass and added mass (to 1e-6 m).
 #[test]
 fn a_decks_sinking_rod_is_refused_naming_its_row() {
     let heavy = rods_alone("1 floatRod Free 0 0 -10 0 1 -10 2 -\n")
@@ -194,10 +199,33 @@ fn a_decks_sinking_rod_is_refused_naming_its_row() {
         + 1;
     let named = format!("bad.txt: line {row}: rod 1: floats on no line and sinks");
     let d = scratch("rod-sinks");
-    let deck = write_scenario(&d, "bad.txt", &heavy);
+    let with_ic = heavy.replace("0         TmaxIC", "60        TmaxIC");
+    let deck = write_scenario(&d, "bad.txt", &with_ic);
     let route =
         "take it in a scenario, [system] moordyn = \"bad.txt\" with [analysis] type = \"dynamic\"";
     refused_by_check_and_run(&deck, &d.join("never"), &[&named, route], &[]);
+    // Without initial conditions: MoorDyn's start.
+    write_scenario(&d, "bad.txt", &heavy);
+    let o = stancf(&["check", deck.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        so.contains("MoorDyn's start") && so.contains("rod 1: floats on no line and sinks"),
+        "{so}"
+    );
+    let start = d.join("start");
+    let o = run_quiet(&deck, &start, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let summary = read_json(&start.join("summary.json"));
+    let why = summary["no_static_equilibrium"].as_str().unwrap();
+    assert!(
+        why.starts_with(&format!("line {row}: rod 1: floats on no line")),
+        "{why}"
+    );
+    let (header, rows) = read_csv(&start.join("bodies.csv"));
+    let col = |n: &str| header.iter().position(|h| h == n).unwrap();
+    assert_eq!(rows.len(), 1);
+    assert_eq!((rows[0][col("t")], rows[0][col("z")]), (0.0, -10.0));
     // Taken so, it sinks.
     let sc = write_scenario(
         &d,

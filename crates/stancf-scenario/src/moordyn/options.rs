@@ -163,7 +163,9 @@ fn classify(lower: &str) -> Option<Class> {
     match lower {
         "dtm" | "dt" => s(S::TimeStep),
         "g" | "gravity" => s(S::Gravity),
-        "wtrdpth" => s(S::WaterDepth),
+        // MoorPy's names for it too (`System.load`: "depth", "wtrdepth");
+        // MoorDyn 2.7 warns of them and ignores them (a note says so).
+        "wtrdpth" | "depth" | "wtrdepth" => s(S::WaterDepth),
         "rho" | "wtrdnsty" | "rhow" => s(S::WaterDensity),
         "kbot" | "kb" => s(S::BottomStiffness),
         "cbot" | "cb" => s(S::BottomDamping),

@@ -93,12 +93,13 @@ pub(super) fn deck_system(
     sc.analysis = analysis;
     sc.measures = measures;
     sc.initial = initial;
+    // A scenario's own analysis says what it starts from.
+    sc.start_without_equilibrium &= deck_alone;
     sc.notes.extend(notes);
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
-    sc.notes
-        .extend(super::overstretch::overstretched_notes(&sc));
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
-    for note in super::viv_types::viv_notes(&sc) {
+    let again = super::overstretch::overstretched_notes(&sc);
+    for note in again.into_iter().chain(super::viv_types::viv_notes(&sc)) {
         // The deck's own notes may hold it already.
         if !sc.notes.contains(&note) {
             sc.notes.push(note);

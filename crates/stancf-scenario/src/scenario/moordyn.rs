@@ -161,6 +161,7 @@ pub(super) fn deck_scenario(
         moordyn_out: moordyn_out_file(deck, path, &channels).map(Box::new),
         channels,
         names,
+        start_without_equilibrium: !deck.generates_initial_conditions(),
     };
     sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
     sc.notes.extend(super::viv_types::viv_notes(&sc));
@@ -269,6 +270,14 @@ fn step_notes(deck: &Deck) -> Vec<String> {
             notes.push(format!(
                 "line {}: option {} is given again (first as {name} at line {line}): this \
                  value holds, as MoorDyn reads its options in order",
+                o.line, o.name
+            ));
+        }
+        let lower = o.name.to_ascii_lowercase();
+        if lower == "depth" || lower == "wtrdepth" {
+            notes.push(format!(
+                "line {}: option {}: MoorPy's name for WtrDpth, taken as the water depth \
+                 (MoorDyn 2.7 does not read it: it warns and takes the deepest point's depth)",
                 o.line, o.name
             ));
         }

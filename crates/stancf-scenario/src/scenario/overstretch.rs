@@ -2,9 +2,10 @@
 //! stretch more than any mooring material can to span them: they run as
 //! given (one line between two held points is in equilibrium at any
 //! stretch; MoorDyn's own viscoelastic test stretches its segment
-//! 100 %) from the reference shape, with a note (`system_geometry`
-//! refuses the paths through free points, which have no such
-//! equilibrium, and the static solve of such a line, which stalls).
+//! 100 %), in statics and in motion, with a note (`system_geometry`
+//! refuses the paths through free points: their placement by the
+//! catenary network, docs/method.md (M32a), and their lines' seeds need
+//! lines that reach them).
 
 use super::SystemScenario;
 use stancf::error::Sig;
@@ -20,11 +21,6 @@ pub const MAX_SPAN_STRAIN: f64 = 0.2;
 /// tension beyond any mooring material's breaking strength.
 pub fn overstretched_notes(sc: &SystemScenario) -> Vec<String> {
     let placed = |p: usize| sc.point_is_fixed(p) || sc.point_is_coupled(p);
-    let statics = sc.analysis.kind == super::AnalysisKind::Static
-        || sc.initial == super::InitialShape::Static;
-    if statics {
-        return Vec::new(); // refused by `system_geometry`
-    }
     sc.lines
         .iter()
         .enumerate()

@@ -133,6 +133,7 @@ pub(super) fn system_scenario(
         static_only,
         moordyn_out: None,
         names,
+        start_without_equilibrium: false,
     };
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
     sc.notes

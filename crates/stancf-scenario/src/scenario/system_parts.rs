@@ -214,6 +214,12 @@ pub struct SystemScenario {
     pub names: super::names::Names,
     /// Line failures (docs/method.md §11.16).
     pub failures: Vec<SystemFailure>,
+    /// A deck alone whose `TmaxIC` is 0: MoorDyn generates no initial
+    /// conditions for it and starts from the deck's positions. Where it
+    /// has no static equilibrium (a line longer than its path, (C20); a
+    /// body or rod that floats on no line and sinks) its run writes that
+    /// start, as MoorDyn's `Init` leaves it (docs/method.md §13.7).
+    pub start_without_equilibrium: bool,
 }
 
 /// MoorDyn's output files a deck asks for: `<deck>.out` of its OUTPUTS

@@ -18,16 +18,31 @@ fn ic_generator_options_are_accepted() {
 
 #[test]
 fn an_unknown_option_is_refused_naming_its_line() {
-    let text = with("0.001 dtM", "0.001 dtM\n3 WtrDepth water depth");
+    let text = with("0.001 dtM", "0.001 dtM\n3 WtrDpht water depth");
     let e = error(&text);
-    assert_eq!(e.line, Some(line_of(&text, "WtrDepth")));
+    assert_eq!(e.line, Some(line_of(&text, "WtrDpht")));
     assert_eq!(
         e.to_string(),
         format!(
-            "line {}: unknown option \"WtrDepth\"",
-            line_of(&text, "WtrDepth")
+            "line {}: unknown option \"WtrDpht\"",
+            line_of(&text, "WtrDpht")
         )
     );
+}
+
+/// MoorPy's decks name the water depth `depth` or `WtrDepth` (MoorPy's
+/// `System.load` reads both beside `WtrDpth`): taken as WtrDpth.
+#[test]
+fn moorpys_names_for_the_water_depth_are_the_water_depth() {
+    for name in ["depth", "WtrDepth", "WtrDpth"] {
+        let text = with("0.001 dtM", &format!("0.001 dtM\n600.0 {name} water depth"));
+        let deck = parse(&text).unwrap();
+        assert_eq!(
+            deck.option(SupportedOption::WaterDepth),
+            Some(600.0),
+            "{name}"
+        );
+    }
 }
 
 #[test]

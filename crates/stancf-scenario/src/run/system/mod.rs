@@ -54,6 +54,9 @@ struct Outcome {
     /// The wall time of the time steps and their writing (s), after the
     /// static solve.
     stepping_wall: Option<f64>,
+    /// Why a deck alone whose TmaxIC is 0 has no static equilibrium: its
+    /// run wrote MoorDyn's start instead (`Prepared::unbalanced`).
+    unbalanced: Option<String>,
 }
 
 impl Outcome {
@@ -70,6 +73,7 @@ impl Outcome {
             interrupted: false,
             controlled: None,
             stepping_wall: None,
+            unbalanced: None,
         }
     }
 
@@ -113,12 +117,14 @@ pub(super) fn run_system(
         system,
         statics: mut static_solve,
         dynamics: mut sim,
+        unbalanced,
     } = admit(path, opts, &sc)?;
     let line_ids: Vec<i64> = sc.lines.iter().map(|l| l.id).collect();
     let point_ids: Vec<i64> = sc.points.iter().map(|p| p.id).collect();
     let body_ids: Vec<i64> = sc.bodies.iter().map(|b| b.id).collect();
     let clock = Instant::now();
     let mut outcome = Outcome::new(sc.lines.len());
+    outcome.unbalanced = unbalanced;
     // history.csv accounts for the damping's work in a damped dynamic run.
     let damped = sc.analysis.kind == AnalysisKind::Dynamic
         && system
@@ -185,7 +191,13 @@ pub(super) fn run_system(
             writers.write(&row).map_err(io_err(place.shown))?;
         }
     }
-    if let Some(s) = sim.as_mut() {
+    if let Some(s) = sim.as_mut().filter(|_| outcome.unbalanced.is_some()) {
+        // A deck alone without an equilibrium, TmaxIC 0: MoorDyn's start,
+        // as its Init leaves it (docs/method.md §13.7), its one row.
+        let row = dynamic_row(s, Some(sc.end_forces));
+        outcome.record_tensions(&row.ends);
+        writers.write(&row).map_err(io_err(place.shown))?;
+    } else if let Some(s) = sim.as_mut() {
         if !from_static {
             // MoorDyn's start without initial conditions: its lines'
             // shapes' forces at t = 0 (docs/method.md §13.7, where MoorDyn

@@ -94,6 +94,11 @@ pub(super) fn write_summary(
     if let Some(st) = statics.filter(|_| outcome.failure.is_none()) {
         summary["static_path"] = json!(static_report::static_path(st));
     }
+    if let Some(why) = &outcome.unbalanced {
+        // A deck alone, TmaxIC 0, without an equilibrium: MoorDyn's start.
+        summary["initial"] = json!("catenary");
+        summary["no_static_equilibrium"] = json!(why);
+    }
     if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
         summary["step_control"] = json!({
             "force_tolerance": json_num(tol),
@@ -147,19 +152,30 @@ pub(super) fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &
         if sc.lines.len() == 1 { "" } else { "s" },
         sc.points.len(),
         if sc.points.len() == 1 { "" } else { "s" },
-        match sc.analysis.kind {
-            AnalysisKind::Static => format!("equilibrium in {} increments", outcome.increments),
-            AnalysisKind::Dynamic => format!("{} steps to t = {} s", outcome.steps, Sig(outcome.t)),
+        match (sc.analysis.kind, &outcome.unbalanced) {
+            (AnalysisKind::Static, Some(_)) => {
+                "no static equilibrium: MoorDyn's start (TmaxIC 0) written at t = 0".to_string()
+            }
+            (AnalysisKind::Static, None) => {
+                format!("equilibrium in {} increments", outcome.increments)
+            }
+            (AnalysisKind::Dynamic, _) => {
+                format!("{} steps to t = {} s", outcome.steps, Sig(outcome.t))
+            }
         },
         wall
     );
     // Tensions in one form, 6 significant digits in exponent form
     // (1.10601e6, 9.08050e5), as the cable summaries print their figures;
     // a static run's are those at equilibrium, a dynamic run's the largest.
-    let what = match sc.analysis.kind {
-        AnalysisKind::Static => "tension at equilibrium",
-        AnalysisKind::Dynamic => "largest tension",
+    let what = match (sc.analysis.kind, &outcome.unbalanced) {
+        (AnalysisKind::Static, Some(_)) => "tension at the start",
+        (AnalysisKind::Static, None) => "tension at equilibrium",
+        (AnalysisKind::Dynamic, _) => "largest tension",
     };
+    if let Some(why) = &outcome.unbalanced {
+        say!(r, "no static equilibrium: {why}");
+    }
     for (l, m) in sc.lines.iter().zip(&outcome.max_tension) {
         say!(
             r,
