@@ -34,6 +34,7 @@ mod moordyn_current_grids;
 mod moordyn_driver;
 mod moordyn_driver_motions;
 mod moordyn_driver_platforms;
+mod moordyn_option_notes;
 mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_waterkin;

@@ -27,7 +27,6 @@ use crate::moordyn::{
     self, Attachment, BodyAttachment, BodyQuantity, Channel, Deck, DeckBody, DeckRod, LineQuantity,
     PointQuantity, RodAttachment, RodQuantity, SupportedOption,
 };
-use stancf::error::Sig;
 use stancf::motion::CoupledMotion;
 use stancf::ElementType;
 use std::path::Path;
@@ -115,7 +114,7 @@ pub(super) fn deck_scenario(
     // the step of a coupled run of it (checked with the other values,
     // crate::input_scales).
     analysis.time_step = deck.time_step().unwrap_or(0.0);
-    notes.extend(step_notes(deck));
+    notes.extend(super::moordyn_option_notes::option_notes(deck));
     notes.extend(channel_notes);
     notes.extend(host.notes(deck));
     notes.extend(depth_note);
@@ -163,11 +162,17 @@ pub(super) fn deck_scenario(
         names,
         start_without_equilibrium: !deck.generates_initial_conditions(),
     };
-    sc.notes.extend(super::sea_limits::breaking_wave_notes(&sc));
-    sc.notes.extend(super::viv_types::viv_notes(&sc));
-    sc.notes
-        .extend(super::overstretch::overstretched_notes(&sc));
+    sc.notes.extend(system_notes(&sc));
     Ok(sc)
+}
+
+/// The notes on the system a deck makes: breaking waves, VIV, lines
+/// stretched past any material's breaking strain.
+fn system_notes(sc: &SystemScenario) -> Vec<String> {
+    let mut notes = super::sea_limits::breaking_wave_notes(sc);
+    notes.extend(super::viv_types::viv_notes(sc));
+    notes.extend(super::overstretch::overstretched_notes(sc));
+    notes
 }
 
 /// The notes on `LineOutputs` flags whose quantities stancf does not
@@ -257,60 +262,6 @@ fn moordyn_out_file(
         rods,
         units,
     })
-}
-
-/// Notes on the deck's time stepping: a `tScheme` is MoorDyn's integrator,
-/// which stancf does not use (it steps with its own scheme); without a
-/// `dtM`, the step MoorDyn derives from its Courant number
-/// ([`Deck::time_step`]).
-fn step_notes(deck: &Deck) -> Vec<String> {
-    let mut notes = Vec::new();
-    for o in &deck.options {
-        if let Some((name, line)) = &o.replaces {
-            notes.push(format!(
-                "line {}: option {} is given again (first as {name} at line {line}): this \
-                 value holds, as MoorDyn reads its options in order",
-                o.line, o.name
-            ));
-        }
-        let lower = o.name.to_ascii_lowercase();
-        if lower == "depth" || lower == "wtrdepth" {
-            notes.push(format!(
-                "line {}: option {}: MoorPy's name for WtrDpth, taken as the water depth \
-                 (MoorDyn 2.7 does not read it: it warns and takes the deepest point's depth)",
-                o.line, o.name
-            ));
-        }
-        if o.name.eq_ignore_ascii_case("tscheme") {
-            let scheme = match &o.value {
-                crate::moordyn::OptionValue::Text(t) => t.clone(),
-                crate::moordyn::OptionValue::Number(v) => v.to_string(),
-            };
-            notes.push(format!(
-                "line {}: tScheme {scheme}: MoorDyn's integrator is not used; stancf steps \
-                 with its own scheme (a system's Galerkin step, docs/method.md §5), at the \
-                 deck's step in a coupled or dynamic run",
-                o.line
-            ));
-        }
-    }
-    if deck.option(SupportedOption::TimeStep).is_none() {
-        if let Some(dt) = deck.time_step() {
-            let cfl = deck.option(SupportedOption::Courant);
-            notes.push(format!(
-                "OPTIONS: no dtM: MoorDyn's step from {} is {} s (the Courant number times \
-                 the shortest line segment's natural period 2 pi sqrt(m/k)), the step of a \
-                 coupled run; stancf's Galerkin step is stable at any step, not bound by a \
-                 Courant number",
-                match cfl {
-                    Some(c) => format!("CFL {}", Sig(c)),
-                    None => "its default CFL 0.5".to_string(),
-                },
-                Sig(dt)
-            ));
-        }
-    }
-    notes
 }
 
 /// The deck's acceleration of gravity (m/s^2): its `g`, else the host's,

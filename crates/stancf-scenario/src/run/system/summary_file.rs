@@ -94,20 +94,7 @@ pub(super) fn write_summary(
     if let Some(st) = statics.filter(|_| outcome.failure.is_none()) {
         summary["static_path"] = json!(static_report::static_path(st));
     }
-    if let Some(why) = &outcome.unbalanced {
-        // A deck alone, TmaxIC 0, without an equilibrium: MoorDyn's start.
-        summary["initial"] = json!("catenary");
-        summary["no_static_equilibrium"] = json!(why);
-    }
-    if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
-        summary["step_control"] = json!({
-            "force_tolerance": json_num(tol),
-            "steps": c.accepted,
-            "rejected": c.rejected,
-            "shortest_step": json_num(c.shortest),
-            "longest_step": json_num(c.longest),
-        });
-    }
+    how_it_started_and_stepped(&mut summary, sc, outcome);
     if !sc.bodies.is_empty() {
         let mut entries = bodies::bodies_json(sc, sim, statics);
         stiffness::add_to_summary(&mut entries, matrices);
@@ -134,6 +121,25 @@ pub(super) fn write_summary(
     let text = serde_json::to_string_pretty(&summary).expect("serializable") + "\n";
     dest.write("summary.json", text.as_bytes())
         .map_err(io_err(dest.dir))
+}
+
+/// summary.json's `step_control` (where a tolerance chose the steps) and
+/// `no_static_equilibrium` (a deck alone, TmaxIC 0, without an
+/// equilibrium: MoorDyn's start was written, its `initial` "catenary").
+fn how_it_started_and_stepped(summary: &mut Value, sc: &SystemScenario, outcome: &Outcome) {
+    if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
+        summary["step_control"] = json!({
+            "force_tolerance": json_num(tol),
+            "steps": c.accepted,
+            "rejected": c.rejected,
+            "shortest_step": json_num(c.shortest),
+            "longest_step": json_num(c.longest),
+        });
+    }
+    if let Some(why) = &outcome.unbalanced {
+        summary["initial"] = json!("catenary");
+        summary["no_static_equilibrium"] = json!(why);
+    }
 }
 
 /// The printed report: the largest end tensions and where the results are.
