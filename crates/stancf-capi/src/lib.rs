@@ -122,6 +122,7 @@ pub unsafe extern "C" fn stancf_create_in(
         gravity: given(gravity),
         turbines: None,
         sets_waves: false,
+        run_length: None,
     };
     create_in(path, flags, &host)
 }

@@ -150,6 +150,7 @@ impl PySimulation {
             gravity,
             turbines,
             sets_waves: false,
+            run_length: None,
         };
         let opened = stancf_scenario::coupling::from_text_in(text, &path, allow_large, &host)
             .map_err(|e| ScenarioError::new_err(e.to_string()))?;

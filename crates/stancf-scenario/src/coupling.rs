@@ -94,6 +94,7 @@ pub fn from_text_in(
     // A coupling code may set the waves at the nodes (WaveKin 1).
     let host = HostEnvironment {
         sets_waves: true,
+        run_length: None,
         ..host.clone()
     };
     let parsed = parse_input_with(text, &file, path, &host).map_err(|e| Failure::Input(e.0))?;

@@ -212,12 +212,25 @@ fn a_moordyn_f_waterkin_files_current_profile_is_the_same_current_as_currents_1(
             "dynamic {dynamic}"
         );
     }
-    // A wave grid is refused naming the file's line.
+    // The hybrid method's waves (OpenFAST's SeaState's) are refused
+    // naming the file's line; a record without its file, naming the field.
+    std::fs::write(d.join("WaterKin.dat"), waterkin(2, "0 0.9 0\n")).unwrap();
+    refused_by_check_and_run(
+        &d.join("deck.txt"),
+        &d.join("never"),
+        &[
+            "WaterKin.dat",
+            "line 4: WaveKinMod 2",
+            "SeaState",
+            "[[water.waves]]",
+        ],
+        &[],
+    );
     std::fs::write(d.join("WaterKin.dat"), waterkin(1, "0 0.9 0\n")).unwrap();
     refused_by_check_and_run(
         &d.join("deck.txt"),
         &d.join("never"),
-        &["WaterKin.dat", "line 4: WaveKinMod 1", "[water.waves]"],
+        &["WaterKin.dat", "line 5: WaveKinMod 1 needs a WaveKinFile"],
         &[],
     );
 }

@@ -257,6 +257,84 @@ fn a_regular_wave_given_as_moordyns_record_or_grid_is_the_same_wave_given_in_tom
     }
 }
 
+/// The same wave as MoorDyn-F's elevation record (its WaterKin file's
+/// `WaveKinMod 1`, WaveKinFile `eta.txt` beside the deck, a header line
+/// and the rows to 15 s, dtWave 0.25 s, WaveDir 30 deg) over a run of
+/// one period, 15 s: MoorDyn-F resamples it over the run (60 samples, a
+/// transform size already), and its series (W2d) is that one wave of
+/// heading 30 deg. The line's end tensions are those of the wave given
+/// in TOML to round-off, and `check` says where the wave comes from.
+#[test]
+fn a_regular_wave_given_as_moordyn_fs_elevation_record_is_the_same_wave_given_in_toml() {
+    let d = scratch("deck-waterkin-record");
+    let omega = 2.0 * std::f64::consts::PI / 15.0;
+    let record: String = std::iter::once("time elevation\n".to_string())
+        .chain((0..=60).map(|i| {
+            let t = 0.25 * i as f64;
+            format!("{t} {}\n", 1.5 * (omega * t).sin())
+        }))
+        .collect();
+    std::fs::write(d.join("eta.txt"), record).unwrap();
+    std::fs::write(
+        d.join("waterkin.dat"),
+        "MoorDyn Waves and Currents input file\nnotes\n--- WAVES ---\n1 WaveKinMod\n\
+         \"eta.txt\" WaveKinFile\n0.25 dtWave\n30 WaveDir\n2 - X\n-400, 0, 41\n0 - Y\n0\n\
+         2 - Z\n-50, 0, 26\n--- CURRENT ---\n0 CurrentMod\n",
+    )
+    .unwrap();
+    let row = "\"waterkin.dat\"   WaterKin   water kinematics";
+    std::fs::write(d.join("record.txt"), DECK.replace("WAVEKIN", row)).unwrap();
+    std::fs::write(d.join("still.txt"), deck("0")).unwrap();
+    let analysis = "[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
+                    time_step = 0.25\nduration = 15.0\n";
+    let runs = [
+        ("record", "[system]\nmoordyn = \"record.txt\"\n"),
+        (
+            "toml",
+            "[system]\nmoordyn = \"still.txt\"\n[[water.waves]]\namplitude = 1.5\n\
+             period = 15.0\nheading = 30.0\nphase = 90.0\n",
+        ),
+    ];
+    let mut tensions = Vec::new();
+    for (name, system) in runs {
+        let sc = write_scenario(&d, &format!("{name}.toml"), &format!("{system}{analysis}"));
+        let (so, se) = text(&stancf(&["check", sc.to_str().unwrap()]));
+        assert!(so.contains("1 regular Airy wave(s)"), "{name}: {so}{se}");
+        if name == "record" {
+            assert!(
+                so.contains("WaveKinMod 1, 1 wave component(s) heading 30 deg")
+                    && so.contains("over the run's 15 s"),
+                "{so}"
+            );
+        }
+        let out = d.join(format!("out-{name}"));
+        let o = run_quiet(&sc, &out, &[]);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
+        tensions.push(read_tensions(&out.join("tensions.csv")));
+    }
+    let (record, toml) = (&tensions[0], &tensions[1]);
+    let first = toml[0][6];
+    let swing = toml
+        .iter()
+        .map(|r| (r[6] - first).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        swing > 100.0,
+        "the waves move the tension by {swing} N only"
+    );
+    assert_eq!(record.len(), toml.len());
+    let worst = record
+        .iter()
+        .zip(toml)
+        .map(|(a, b)| (a[6] - b[6]).abs())
+        .fold(0.0, f64::max);
+    eprintln!("record against TOML: {worst:e} N of a {swing:e} N swing about {first:e} N");
+    assert!(
+        worst < 1e-9 * first,
+        "{worst} N apart (swing {swing} N of {first} N)"
+    );
+}
+
 /// Lowe and Langley (OMAE 2006)'s flexible jumper, as MoorDyn's tests
 /// give it (a 170 m line of 165 kg/m, EA 5e8 N, EI 1.208e5 N m^2, from
 /// (-100, 0, -55) to a top held at (0, 0, -5) m): its static end forces

@@ -53,6 +53,17 @@ pub(super) fn deck_system(
         .map(|f| super::farm::scenario_farm(ctx, f, dir))
         .transpose()?;
     let deck_file = deck_path.display().to_string();
+    // A dynamic analysis' duration is the run's length a host would give
+    // (a WaterKin file's wave record is resampled over it).
+    let dynamic = raw
+        .analysis
+        .as_ref()
+        .is_some_and(|a| a.kind.as_deref().is_none_or(|k| k == "dynamic"));
+    let run_length = raw.analysis.as_ref().and_then(|a| a.duration);
+    let host = &super::HostEnvironment {
+        run_length: host.run_length.or(run_length.filter(|_| dynamic)),
+        ..host.clone()
+    };
     let mut sc = super::moordyn::deck_scenario(
         &deck,
         &deck_file,

@@ -30,6 +30,12 @@ pub struct HostEnvironment {
     /// `water.host_waves`, docs/method.md §12.1); a run without such a
     /// host runs those statically only.
     pub sets_waves: bool,
+    /// The run's length (s), as OpenFAST passes MoorDyn-F its TMax
+    /// (`InitInp%Tmax`): the elevation record of a WaterKin file's
+    /// `WaveKinMod 1` is resampled over it
+    /// (`super::moordyn_waterkin_waves`). A scenario that takes the deck
+    /// gives its dynamic analysis' duration.
+    pub run_length: Option<f64>,
 }
 
 impl HostEnvironment {
@@ -40,6 +46,7 @@ impl HostEnvironment {
         gravity: None,
         turbines: None,
         sets_waves: false,
+        run_length: None,
     };
 
     /// Refused naming the quantity: a value that is not finite and

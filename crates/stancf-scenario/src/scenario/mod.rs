@@ -38,6 +38,7 @@ mod moordyn_option_notes;
 mod moordyn_seafloor;
 mod moordyn_water;
 mod moordyn_waterkin;
+mod moordyn_waterkin_waves;
 mod moordyn_wave_frequencies;
 mod moordyn_wave_grids;
 mod moordyn_waves;

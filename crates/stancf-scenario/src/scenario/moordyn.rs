@@ -69,7 +69,8 @@ pub(super) fn deck_scenario(
         })
     });
     let (farm, farm_note) = super::farm::deck_farm(deck, file, path, farm)?;
-    let (waves, wave_note) = super::moordyn_waves::deck_waves(deck, file, path)?;
+    let (waves, wave_notes) =
+        super::moordyn_waves::every_deck_wave(deck, file, path, host.run_length)?;
     let (keys, current_note) = deck_water_keys(deck, file, path)?;
     let deck_keys = super::water::WaterKeys { waves, ..keys };
     let (water, depth_note) = deck_water(deck_keys, file, deck, added, host)?;
@@ -119,7 +120,7 @@ pub(super) fn deck_scenario(
     notes.extend(host.notes(deck));
     notes.extend(depth_note);
     notes.extend(farm_note);
-    notes.extend(wave_note);
+    notes.extend(wave_notes);
     notes.extend(current_note);
     notes.extend(line_output_notes(deck, path));
     notes.extend(external_notes);

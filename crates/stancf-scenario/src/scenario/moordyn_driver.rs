@@ -75,6 +75,8 @@ pub(super) fn driver_scenario(
         gravity: Some(d.gravity),
         turbines: (d.turbines > 0).then(|| d.platforms.iter().map(|p| [p[0], p[1], 0.0]).collect()),
         sets_waves: false,
+        // The driver passes MoorDyn-F its TMax (MoorDyn_Driver.f90).
+        run_length: Some(d.t_max),
     };
     let ctx = Ctx { file };
     let mut sc = super::system::system_scenario(&ctx, raw, title, path, &host)

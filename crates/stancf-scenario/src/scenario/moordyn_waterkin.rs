@@ -7,10 +7,12 @@
 //! first line that is not three numbers (blank lines skipped, as Fortran's
 //! list-directed read skips them; at most 100 rows, noted beyond), in
 //! either order of z. A relative path is taken from the deck's folder, as
-//! MoorDyn-F opens it. stancf takes `WaveKinMod` 0 (no waves) with `CurrentMod` 0
-//! or 1 (a steady current profile, as `[water.current] profile`); a wave
-//! grid (`WaveKinMod` 1 or 2) and a current from SeaState (`CurrentMod`
-//! 2) are refused naming the file's line.
+//! MoorDyn-F opens it. stancf takes `WaveKinMod` 0 (no waves) or 1 (an
+//! elevation record, `super::moordyn_waterkin_waves`) with `CurrentMod` 0
+//! or 1 (a steady current profile, as `[water.current] profile`); the
+//! hybrid method's waves (`WaveKinMod` 2) and a current from SeaState
+//! (`CurrentMod` 2), OpenFAST's SeaState module's, are refused naming the
+//! file's line.
 
 use super::water::{Current, CurrentField};
 use super::ScenarioError;
@@ -60,8 +62,13 @@ pub(super) fn deck_waterkin(
     let profile = read_waterkin(&text).map_err(read)?;
     let note = format!(
         "OPTIONS: {name} {named} (line {line}): {} (from the deck's folder, as MoorDyn-F opens \
-         it): no waves, {}",
+         it): {}, {}",
         at.display(),
+        if waves_given(&text) {
+            "waves from its elevation record (WaveKinMod 1, below)"
+        } else {
+            "no waves"
+        },
         match &profile {
             None => "no current".to_string(),
             Some((r, false)) => format!("a steady current profile of {} rows", r.len()),
@@ -78,6 +85,16 @@ pub(super) fn deck_waterkin(
         source: format!("{} (the deck's {name})", at.display()),
     });
     Ok(Some((current, note)))
+}
+
+/// Whether a WaterKin file's text gives waves (`WaveKinMod` 1; read
+/// and checked by `read_waterkin` first).
+fn waves_given(text: &str) -> bool {
+    let lines: Vec<&str> = text.lines().collect();
+    matches!(
+        super::moordyn_waterkin_waves::read_wave_settings(&lines),
+        Ok(Some(_))
+    )
 }
 
 /// The current profile of a WaterKin file's text (None for `CurrentMod`
@@ -99,22 +116,9 @@ fn read_waterkin(text: &str) -> Result<Option<(Vec<CurrentRow>, bool)>, String> 
         word.parse::<i64>()
             .map_err(|_| format!("line {}: {what} is \"{word}\", not a whole number", i + 1))
     };
-    // Lines 1-2 header, 3 the waves' header, 4 WaveKinMod.
-    match mode(3, "WaveKinMod")? {
-        0 => {}
-        m @ (1 | 2) => {
-            return Err(format!(
-                "line 4: WaveKinMod {m}: MoorDyn-F's wave grid is not supported; give the waves \
-                 as [water.waves] or [water.jonswap] in a scenario that takes the deck, and \
-                 WaveKinMod 0 here"
-            ))
-        }
-        m => {
-            return Err(format!(
-                "line 4: WaveKinMod is {m}; MoorDyn-F's are 0, 1 and 2"
-            ))
-        }
-    }
+    // Lines 1-2 header, 3 the waves' header, 4 WaveKinMod: its waves are
+    // read by super::moordyn_waterkin_waves (here only checked).
+    super::moordyn_waterkin_waves::read_wave_settings(&lines)?;
     // WaveKinFile, dtWave, WaveDir (lines 5-7), the grid's x, y, z (8-13),
     // the current's header (14), CurrentMod (15).
     match mode(14, "CurrentMod")? {
@@ -209,10 +213,10 @@ mod tests {
     }
 
     #[test]
-    fn a_wave_grid_and_seastates_current_are_refused_by_line() {
-        let waves = file("0 CurrentMod\n").replacen("0 WaveKinMod", "1 WaveKinMod", 1);
+    fn seastates_waves_and_current_are_refused_by_line() {
+        let waves = file("0 CurrentMod\n").replacen("0 WaveKinMod", "2 WaveKinMod", 1);
         let e = read_waterkin(&waves).unwrap_err();
-        assert!(e.contains("line 4: WaveKinMod 1"), "{e}");
+        assert!(e.contains("line 4: WaveKinMod 2: the hybrid method"), "{e}");
         let e = read_waterkin(&file("2 CurrentMod\n")).unwrap_err();
         assert!(e.contains("line 15: CurrentMod 2"), "{e}");
         let e = read_waterkin(&file("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n")).unwrap_err();

@@ -66,6 +66,27 @@ pub(super) fn static_only(deck: &Deck, file: &str) -> Option<String> {
     })
 }
 
+/// Every wave a deck gives, with the notes for `check`: MoorDyn-C's
+/// (`WaveKin`, `super::moordyn_waves::deck_waves`) and MoorDyn-F's record
+/// (`super::moordyn_waterkin_waves::waterkin_waves`, over
+/// `run_length`); a deck gives one or the
+/// other (`super::moordyn_waterkin` refuses both).
+pub(super) fn every_deck_wave(
+    deck: &Deck,
+    file: &str,
+    path: &Path,
+    run_length: Option<f64>,
+) -> Result<(Vec<AiryWave>, Vec<String>), ScenarioError> {
+    let (mut waves, note) = deck_waves(deck, file, path)?;
+    let mut notes: Vec<String> = note.into_iter().collect();
+    let record = super::moordyn_waterkin_waves::waterkin_waves(deck, file, path, run_length)?;
+    if let Some((record, note)) = record {
+        waves.extend(record);
+        notes.push(note);
+    }
+    Ok((waves, notes))
+}
+
 /// The deck's waves and a note for `check` saying where they come from,
 /// from its `WaveKin`: 0 (or missing) none; 7 the components of
 /// [`WAVE_FREQUENCIES_FILE`] beside the deck at `path`; any other mode
