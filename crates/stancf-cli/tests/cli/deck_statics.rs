@@ -429,3 +429,61 @@ fn a_weight_pushed_aside_on_stiff_ropes_rests_at_its_pendulum_angle() {
         assert!((got[k] - want[k]).abs() < 1e-8, "{got:?} against {want:?}");
     }
 }
+
+/// A 10 kg weight set on a frictionless bed of slope 0.2 (z = -30 + 0.2 x)
+/// at x = 10 m, on a neutrally buoyant rope of 32 m (EA 1e6 N) from a
+/// fixed point at (0, 0, -5) m, 29.7 m away: the rope is slack, and the
+/// weight slides down the slope until the rope is straight (its only
+/// frictionless equilibrium: a weightless rope bends only where a force
+/// acts, and the plane bed cannot bend it along itself). The catenary
+/// network slides it there first (docs/method.md (M32e)); before, the
+/// load path stalled at load factor 0 and the pseudo-transient
+/// continuation ended on a rope folded in compression 29.1 m long. The
+/// equilibrium: the weight 25 m down the slope, the rope 32 m long to its
+/// stretch T L / EA (1 mm; the bed's penalty lets the weight 5 cm into
+/// it), and the anchor pulling with T such that the rope's pull up the
+/// slope carries the weight's share down it, m g sin(theta) = 19.24 N,
+/// to 1e-6.
+#[test]
+fn a_weight_on_a_slope_slides_until_its_slack_rope_is_straight() {
+    let d = scratch("slope-slide");
+    let wet = 1025.0 * std::f64::consts::PI / 4.0 * 0.02 * 0.02;
+    let sc = format!(
+        "title = \"a weight on a slope\"\n\
+         [[line_types]]\nname = \"rope\"\ndiameter = 0.02\nmass_per_length = {wet:?}\nea = 1.0e6\n\
+         {}{}[[lines]]\nid = 1\ntype = \"rope\"\nlength = 32.0\nelements = 16\na = 1\nb = 2\n\
+         [water]\ndepth = 30.0\ndensity = 1025.0\n[water.seabed]\nslope = [0.2, 0.0]\n\
+         [analysis]\ntype = \"static\"\n",
+        toml_point(1, "fixed", [0.0, 0.0, -5.0]),
+        toml_point(2, "free", [10.0, 0.0, -28.0]) + "mass = 10.0\n",
+    );
+    let path = write_scenario(&d, "slope.toml", &sc);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(!text(&o).1.contains("pseudo-transient"), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let weight = &rows[1];
+    let p = [weight[col("x")], weight[col("y")], weight[col("z")]];
+    let a = [0.0, 0.0, -5.0];
+    let chord = ((p[0] - a[0]).powi(2) + (p[1] - a[1]).powi(2) + (p[2] - a[2]).powi(2)).sqrt();
+    let ends = read_tensions(&out.join("tensions.csv"));
+    let tension = ends[0][6];
+    assert!(p[0] < -15.0, "the weight is at {p:?}");
+    assert!(
+        (chord - 32.0 * (1.0 + tension / 1e6)).abs() < 2e-3,
+        "chord {chord} m"
+    );
+    // The whole rope's balance along the frictionless slope: the anchor's
+    // pull (the force of end A on its point, down the slope) carries the
+    // weight's share down it.
+    let norm = (1.0f64 + 0.04).sqrt();
+    let downhill = [-1.0 / norm, 0.0, -0.2 / norm];
+    let pull: f64 = (0..3).map(|c| ends[0][3 + c] * downhill[c]).sum();
+    let share = 10.0 * 9.81 * 0.2 / norm;
+    assert!(
+        (pull - share).abs() < 1e-6 * share,
+        "{pull} N down the slope against {share} N"
+    );
+}

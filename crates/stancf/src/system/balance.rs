@@ -158,6 +158,7 @@ fn balanced(system: &System) -> (Vec<[f64; 3]>, Vec<Pose>) {
     if net.free.is_empty() && net.bodies.is_empty() {
         return (positions, poses);
     }
+    super::network::slide_slack_points(system, &net, &mut positions);
     let start = net.start(system, &positions);
     let solved = solve_network(system, &net, &positions, start.clone())
         .or_else(|| stiffening(system, net.clone(), &positions, start));

@@ -256,6 +256,97 @@ fn add_body_loads(
     }
 }
 
+/// The most the lines at a free point may pull with (their end forces
+/// and weights in water), as a fraction of its imbalance, for
+/// [`slide_slack_points`] to slide it: lines that light hold the point
+/// only once one of them is nearly straight (its sag under its weight a
+/// fraction of a per cent of its length when it carries the load).
+const SLACK_PULL: f64 = 1e-2;
+
+/// Slides each free point that its lines hardly pull (every line at it
+/// slack and next to weightless in water, end forces and weights
+/// within [`SLACK_PULL`] of the point's imbalance: the network's closed
+/// forms give it next to no stiffness, so Newton on (M32a) has no
+/// direction to move it in) along its imbalance G_p (its load and the bed's push),
+/// within the bed's tangent plane where G_p pushes into the bed it
+/// rests on, to where the first of its lines is straight between its
+/// ends (docs/method.md (M32e)):
+///
+/// ```text
+///   P' = P + s d,   s = min over lines j > 0 of |P + s d - A_j| = L_j,   d = G_t / |G_t|
+/// ```
+///
+/// (A_j the line's other end, L_j its length). The point then hangs on a
+/// line that pulls, and Newton takes it the rest of the way. MoorDyn's
+/// seafloor.txt: a 10 kg point on a bed of slope 0.2, its neutrally
+/// buoyant 32 m line slack, slides 16.9 m down the slope.
+pub(super) fn slide_slack_points(system: &System, net: &Network, positions: &mut [[f64; 3]]) {
+    let x = net.start(system, positions);
+    let Some((g, _)) = imbalance(system, net, positions, &x) else {
+        return;
+    };
+    for (k, &p) in net.free.iter().enumerate() {
+        let load = crate::vec3::norm([g[3 * k], g[3 * k + 1], g[3 * k + 2]]);
+        // What the lines at p can pull with: their end forces there and
+        // their weights in water.
+        let mut pull = 0.0;
+        let mut others = Vec::new();
+        for (li, end) in system.attachments(p) {
+            let (a, b) = end_positions_at(system, li, positions);
+            let shape = seed_shape_capped(system, li, a, b, f64::INFINITY);
+            let model = &system.lines()[li].model;
+            let weight = model.material.section().rho_a
+                * crate::vec3::norm(model.gravity)
+                * model.cable.length;
+            pull += crate::vec3::norm(shape.end_force(end)) + weight.abs();
+            let other = if end == 0 { b } else { a };
+            others.push((other, model.cable.length));
+        }
+        if others.is_empty() || pull > SLACK_PULL * load {
+            continue;
+        }
+        let at = positions[p];
+        let mut d = [g[3 * k], g[3 * k + 1], g[3 * k + 2]];
+        if let Some(n) = bed_under(system, p, at) {
+            let into = crate::vec3::dot(d, n);
+            if into < 0.0 {
+                d = crate::vec3::sub(d, crate::vec3::scale(into, n));
+            }
+        }
+        let size = crate::vec3::norm(d);
+        if size == 0.0 {
+            continue;
+        }
+        let d = crate::vec3::scale(1.0 / size, d);
+        let s = others
+            .iter()
+            .filter_map(|&(other, length)| {
+                let r = crate::vec3::sub(at, other);
+                let half_b = crate::vec3::dot(r, d);
+                let c = crate::vec3::dot(r, r) - length * length;
+                let disc = half_b * half_b - c;
+                (disc >= 0.0).then(|| -half_b + disc.sqrt())
+            })
+            .filter(|&s| s > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if s.is_finite() {
+            positions[p] = crate::vec3::add(at, crate::vec3::scale(s, d));
+        }
+    }
+}
+
+/// The normal of the bed under free point p at `at` where p rests on it
+/// (within 1e-6 of its lines' length above it, the digits a deck gives
+/// positions to, or in it): the bed of a line attached there.
+fn bed_under(system: &System, p: usize, at: [f64; 3]) -> Option<[f64; 3]> {
+    system.attachments(p).find_map(|(li, _)| {
+        let model = &system.lines()[li].model;
+        let bed = model.seabed.as_ref()?;
+        (bed.seabed.penetration(&at) >= -1e-6 * model.cable.length)
+            .then(|| bed.seabed.normal_at(&at))
+    })
+}
+
 /// The seabed's push on free point p at `at` when it is below the bed of
 /// a line attached there: the catenaries of (M32a) do not see the bed,
 /// and a free point between a line on the bed and one that lifts it
