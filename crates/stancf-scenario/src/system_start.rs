@@ -135,7 +135,7 @@ enum Unbalanced {
 }
 
 /// Whether the library refused a static analysis because a body or rod
-/// has no static equilibrium (it floats on no line and sinks, or rises).
+/// has no static equilibrium (it floats on no line and sinks).
 fn sinks(message: &str) -> bool {
     message.ends_with(NO_BODY_EQUILIBRIUM)
 }

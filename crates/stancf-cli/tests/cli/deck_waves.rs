@@ -223,17 +223,38 @@ fn a_regular_wave_given_as_moordyns_record_or_grid_is_the_same_wave_given_in_tom
                 .to_string(),
         ),
     ];
-    let mut tensions = Vec::new();
-    for (name, system) in runs {
-        let sc = write_scenario(&d, &format!("{name}.toml"), &format!("{system}{analysis}"));
-        let (so, se) = text(&stancf(&["check", sc.to_str().unwrap()]));
-        assert!(so.contains("1 regular Airy wave(s)"), "{name}: {so}{se}");
-        let out = d.join(format!("out-{name}"));
-        let o = run_quiet(&sc, &out, &[]);
-        assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
-        tensions.push(read_tensions(&out.join("tensions.csv")));
+    let outputs = wave_runs(&d, &runs, analysis);
+    let toml = &outputs[2].1;
+    for ((name, _), (_, run)) in runs.iter().zip(&outputs).take(2) {
+        let (worst, swing, first) = apart_from(run, toml);
+        assert!(
+            worst < 1e-9 * first,
+            "{name}: {worst} N apart from the TOML wave's (swing {swing} N of {first} N)"
+        );
     }
-    let toml = &tensions[2];
+}
+
+/// Checks and runs each of `runs` (a name, its `[system]` and `[water]`
+/// keys) with `analysis`, each `check` listing one wave; each run's
+/// `check` output and tensions.csv rows.
+fn wave_runs(d: &Path, runs: &[(&str, String)], analysis: &str) -> Vec<(String, Vec<Vec<f64>>)> {
+    runs.iter()
+        .map(|(name, system)| {
+            let sc = write_scenario(d, &format!("{name}.toml"), &format!("{system}{analysis}"));
+            let (so, se) = text(&stancf(&["check", sc.to_str().unwrap()]));
+            assert!(so.contains("1 regular Airy wave(s)"), "{name}: {so}{se}");
+            let out = d.join(format!("out-{name}"));
+            let o = run_quiet(&sc, &out, &[]);
+            assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
+            (so, read_tensions(&out.join("tensions.csv")))
+        })
+        .collect()
+}
+
+/// How far `run`'s end tensions are from `toml`'s at the same rows (N),
+/// with the swing the waves make in `toml`'s (asserted above 100 N: the
+/// waves load the line) and its first tension.
+fn apart_from(run: &[Vec<f64>], toml: &[Vec<f64>]) -> (f64, f64, f64) {
     let first = toml[0][6];
     let swing = toml
         .iter()
@@ -243,18 +264,13 @@ fn a_regular_wave_given_as_moordyns_record_or_grid_is_the_same_wave_given_in_tom
         swing > 100.0,
         "the waves move the tension by {swing} N only"
     );
-    for (name, run) in ["record", "grid"].iter().zip(&tensions) {
-        assert_eq!(run.len(), toml.len());
-        let worst = run
-            .iter()
-            .zip(toml)
-            .map(|(a, b)| (a[6] - b[6]).abs())
-            .fold(0.0, f64::max);
-        assert!(
-            worst < 1e-9 * first,
-            "{name}: {worst} N apart from the TOML wave's (swing {swing} N of {first} N)"
-        );
-    }
+    assert_eq!(run.len(), toml.len());
+    let worst = run
+        .iter()
+        .zip(toml)
+        .map(|(a, b)| (a[6] - b[6]).abs())
+        .fold(0.0, f64::max);
+    (worst, swing, first)
 }
 
 /// The same wave as MoorDyn-F's elevation record (its WaterKin file's
@@ -288,46 +304,22 @@ fn a_regular_wave_given_as_moordyn_fs_elevation_record_is_the_same_wave_given_in
     let analysis = "[analysis]\ntype = \"dynamic\"\ntime_scheme = \"galerkin\"\n\
                     time_step = 0.25\nduration = 15.0\n";
     let runs = [
-        ("record", "[system]\nmoordyn = \"record.txt\"\n"),
+        ("record", "[system]\nmoordyn = \"record.txt\"\n".to_string()),
         (
             "toml",
             "[system]\nmoordyn = \"still.txt\"\n[[water.waves]]\namplitude = 1.5\n\
-             period = 15.0\nheading = 30.0\nphase = 90.0\n",
+             period = 15.0\nheading = 30.0\nphase = 90.0\n"
+                .to_string(),
         ),
     ];
-    let mut tensions = Vec::new();
-    for (name, system) in runs {
-        let sc = write_scenario(&d, &format!("{name}.toml"), &format!("{system}{analysis}"));
-        let (so, se) = text(&stancf(&["check", sc.to_str().unwrap()]));
-        assert!(so.contains("1 regular Airy wave(s)"), "{name}: {so}{se}");
-        if name == "record" {
-            assert!(
-                so.contains("WaveKinMod 1, 1 wave component(s) heading 30 deg")
-                    && so.contains("over the run's 15 s"),
-                "{so}"
-            );
-        }
-        let out = d.join(format!("out-{name}"));
-        let o = run_quiet(&sc, &out, &[]);
-        assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o).1);
-        tensions.push(read_tensions(&out.join("tensions.csv")));
-    }
-    let (record, toml) = (&tensions[0], &tensions[1]);
-    let first = toml[0][6];
-    let swing = toml
-        .iter()
-        .map(|r| (r[6] - first).abs())
-        .fold(0.0, f64::max);
+    let outputs = wave_runs(&d, &runs, analysis);
+    let said = &outputs[0].0;
     assert!(
-        swing > 100.0,
-        "the waves move the tension by {swing} N only"
+        said.contains("WaveKinMod 1, 1 wave component(s) heading 30 deg")
+            && said.contains("over the run's 15 s"),
+        "{said}"
     );
-    assert_eq!(record.len(), toml.len());
-    let worst = record
-        .iter()
-        .zip(toml)
-        .map(|(a, b)| (a[6] - b[6]).abs())
-        .fold(0.0, f64::max);
+    let (worst, swing, first) = apart_from(&outputs[0].1, &outputs[1].1);
     eprintln!("record against TOML: {worst:e} N of a {swing:e} N swing about {first:e} N");
     assert!(
         worst < 1e-9 * first,
