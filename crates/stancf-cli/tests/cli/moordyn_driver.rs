@@ -553,3 +553,49 @@ fn a_drivers_offsets_under_a_time_series_are_noted_as_moving_nothing() {
         "{out}"
     );
 }
+
+/// A driver passes MoorDyn-F its TMax, over which a WaterKin file's
+/// elevation record (`WaveKinMod 1`) is resampled: `chain_deck` with a
+/// 20 s record of a 10 s wave, run 10 s at dtC 0.05 s, takes the record's
+/// first 10 s (40 samples every 0.25 s: one period, one wave) and says so
+/// (docs/method.md (W2i)).
+#[test]
+fn a_drivers_tmax_is_the_run_length_a_wave_record_is_resampled_over() {
+    let d = scratch("driver-wave-record");
+    let omega = 2.0 * std::f64::consts::PI / 10.0;
+    let record: String = (0..=80)
+        .map(|i| {
+            let t = 0.25 * f64::from(i);
+            format!("{t} {}\n", 0.5 * (omega * t).cos())
+        })
+        .collect();
+    std::fs::write(d.join("eta.txt"), record).unwrap();
+    std::fs::write(
+        d.join("waterkin.dat"),
+        "waves and currents\nnotes\n--- WAVES ---\n1 WaveKinMod\n\"eta.txt\" WaveKinFile\n\
+         0.25 dtWave\n0 WaveDir\n0 - X\n0\n0 - Y\n0\n0 - Z\n0\n--- CURRENT ---\n0 CurrentMod\n",
+    )
+    .unwrap();
+    let deck = chain_deck("Coupled 20 0 -10")
+        .replace("0.01    dtM\n", "0.01    dtM\n\"waterkin.dat\"  WaterKin\n");
+    std::fs::write(d.join("deck.dat"), deck).unwrap();
+    let dvr = write_scenario(
+        &d,
+        "md_driver.inp",
+        &driver("deck.dat", (10.0, 0.05), (0, ""), AT_REST),
+    );
+    let o = stancf(&["check", dvr.to_str().unwrap()]);
+    let (so, se) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{se}");
+    assert!(
+        so.contains("WaveKinMod 1, 1 wave component(s) heading 0 deg")
+            && so.contains("over the run's 10 s")
+            && so.contains("40 samples"),
+        "{so}"
+    );
+    run_driver(
+        &d,
+        "md_driver.inp",
+        &driver("deck.dat", (10.0, 0.05), (0, ""), AT_REST),
+    );
+}

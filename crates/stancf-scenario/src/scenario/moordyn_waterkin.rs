@@ -65,7 +65,7 @@ pub(super) fn deck_waterkin(
          it): {}, {}",
         at.display(),
         if waves_given(&text) {
-            "waves from its elevation record (WaveKinMod 1, below)"
+            "waves from its elevation record (WaveKinMod 1, noted apart)"
         } else {
             "no waves"
         },
