@@ -110,7 +110,15 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
                 }
                 InitialShape::Static | InitialShape::Reference => (straight_states(&system), None),
             };
-            let mut sim = simulation(sc, system.clone(), start).map_err(input)?;
+            // MoorDyn's start written alone is never stepped: a deck
+            // without dtM (or lines to take a step from) gets one second.
+            let stepped = (unbalanced.is_some() && sc.analysis.time_step <= 0.0).then(|| {
+                let mut sc = sc.clone();
+                sc.analysis.time_step = 1.0;
+                sc
+            });
+            let mut sim =
+                simulation(stepped.as_ref().unwrap_or(sc), system.clone(), start).map_err(input)?;
             if let Some(forces) = forces {
                 sim.set_start_forces(&forces).map_err(input)?;
             }

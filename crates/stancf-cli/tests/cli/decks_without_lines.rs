@@ -226,6 +226,13 @@ fn a_decks_sinking_rod_is_refused_naming_its_row() {
     let col = |n: &str| header.iter().position(|h| h == n).unwrap();
     assert_eq!(rows.len(), 1);
     assert_eq!((rows[0][col("t")], rows[0][col("z")]), (0.0, -10.0));
+    // A deck without dtM (and no line to take MoorDyn's step from) writes
+    // the same start: the start is never stepped.
+    let no_step = heavy.replace("0.0005    dtM          - time step\n", "");
+    assert_ne!(no_step, heavy);
+    write_scenario(&d, "bad.txt", &no_step);
+    let o = run_quiet(&deck, &d.join("start-no-step"), &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
     // Taken so, it sinks.
     let sc = write_scenario(
         &d,

@@ -101,7 +101,7 @@ pub(super) fn read_wave_settings(lines: &[&str]) -> Result<Option<RecordWaves>, 
             ));
         }
     }
-    let file = word(4)?.trim_matches('"').to_string();
+    let file = quoted_or_first_word(lines.get(4).copied().unwrap_or(""));
     if file.is_empty() {
         return Err("line 5: WaveKinMod 1 needs a WaveKinFile (MoorDyn-F stops without)".into());
     }
@@ -117,6 +117,21 @@ pub(super) fn read_wave_settings(lines: &[&str]) -> Result<Option<RecordWaves>, 
     }))
 }
 
+/// A list-directed string as Fortran reads it: the text between a
+/// leading pair of double or single quotes (spaces kept), else the first
+/// word.
+fn quoted_or_first_word(line: &str) -> String {
+    let line = line.trim_start();
+    for q in ['"', '\''] {
+        if let Some(rest) = line.strip_prefix(q) {
+            if let Some(end) = rest.find(q) {
+                return rest[..end].to_string();
+            }
+        }
+    }
+    line.split_whitespace().next().unwrap_or("").to_string()
+}
+
 /// The elevation samples MoorDyn-F takes from the record `text` every
 /// `dt` over `run_length` (s; without one, over the record: up to its
 /// last time), padded to its transform's size (see the module), and the
@@ -127,7 +142,7 @@ pub(super) fn record_samples(
     run_length: Option<f64>,
 ) -> Result<(Vec<f64>, f64), String> {
     let rows = record_rows(text)?;
-    let t_last = rows.last().expect("two rows at least").1;
+    let t_last = rows.last().expect("a row at least").1;
     let span = run_length.unwrap_or(t_last);
     let count = (span / dt).ceil().max(1.0);
     if count > MOST_SAMPLES || count * count / 2.0 > MOST_WORK {
@@ -159,7 +174,8 @@ pub(super) fn record_samples(
 /// The record's rows (line, t, eta) after its header lines (those whose
 /// first word is not a number, before the first row), blank lines
 /// skipped; words split at blanks and commas, columns after the second
-/// ignored. The first time must be 0 and the times rise.
+/// ignored. The first time must be 0 and the times rise (one row is a
+/// still sea: MoorDyn-F finds no pair of rows about any sample).
 fn record_rows(text: &str) -> Result<Vec<(usize, f64, f64)>, String> {
     let mut rows = Vec::new();
     for (i, line) in text.lines().enumerate() {
@@ -197,9 +213,6 @@ fn record_rows(text: &str) -> Result<Vec<(usize, f64, f64)>, String> {
             ))
         }
         _ => {}
-    }
-    if rows.len() < 2 {
-        return Err("one row; a record needs two at least".into());
     }
     if let Some(p) = rows.windows(2).find(|p| p[1].1 <= p[0].1) {
         return Err(format!(
@@ -285,7 +298,8 @@ pub(super) fn waterkin_waves(
         Sig(t_last),
         samples.len(),
     );
-    if let Some(t) = run_length.filter(|t| (period - t).abs() > 1e-9 * t) {
+    let with_waves = !series.waves.is_empty();
+    if let Some(t) = run_length.filter(|t| with_waves && (period - t).abs() > 1e-9 * t) {
         note += &format!(
             "; MoorDyn-F takes the frequencies 2 pi k / TMax (TMax {} s) where its transform's \
              are 2 pi k / (N dtWave), N dtWave = {} s: its waves away from the origin and its \

@@ -41,6 +41,18 @@ fn the_record_settings_are_read_and_the_hybrid_method_is_refused_by_line() {
     assert!(e.starts_with("line 10: the Y grid's type is 3"), "{e}");
 }
 
+/// WaveKinFile as Fortran's list-directed read takes it: quoted (double
+/// or single, spaces kept) or its first word.
+#[test]
+fn a_quoted_file_name_keeps_its_spaces() {
+    assert_eq!(
+        quoted_or_first_word("\"my eta.txt\" WaveKinFile"),
+        "my eta.txt"
+    );
+    assert_eq!(quoted_or_first_word("  'eta.txt'   WaveKinFile"), "eta.txt");
+    assert_eq!(quoted_or_first_word("eta.txt WaveKinFile"), "eta.txt");
+}
+
 /// MoorDyn-F's transform sizes: the next number whose prime factors are
 /// at most 23.
 #[test]
@@ -67,6 +79,9 @@ fn a_record_is_sampled_as_moordyn_f_samples_it() {
     let late = "0.5 0\n1 1\n";
     let e = record_samples(late, 0.5, None).unwrap_err();
     assert!(e.contains("line 1: the record starts at 0.5 s"), "{e}");
+    // One row: no pair of rows about any sample, a still sea.
+    let (samples, _) = record_samples("t eta\n0 1.5\n", 0.5, Some(2.0)).unwrap();
+    assert_eq!(samples, [0.0; 4]);
     let broken = "0 0\n1 1\nend\n";
     let e = record_samples(broken, 0.5, None).unwrap_err();
     assert!(e.starts_with("line 3: \"end\""), "{e}");

@@ -85,7 +85,7 @@ pub fn static_seed_states(system: &System) -> Vec<State> {
 /// coupled points where they are at t = 0, the free points and the free
 /// bodies' points at the equilibrium (M32a) of the catenary network, or
 /// where the scenario puts them when (M32a) has none that Newton reaches
-/// from there.
+/// from there (a free point its lines hardly pull slid first, (M32e)).
 pub fn balanced_points(system: &System) -> Vec<[f64; 3]> {
     balanced(system).0
 }

@@ -264,13 +264,14 @@ fn add_body_loads(
 const SLACK_PULL: f64 = 1e-2;
 
 /// Slides each free point that its lines hardly pull (every line at it
-/// slack and next to weightless in water, end forces and weights
+/// slack, none straight, and next to weightless in water, end forces and weights
 /// within [`SLACK_PULL`] of the point's imbalance: the network's closed
 /// forms give it next to no stiffness, so Newton on (M32a) has no
 /// direction to move it in) along its imbalance G_p (its load and the bed's push),
 /// within the bed's tangent plane where G_p pushes into the bed it
 /// rests on, to where the first of its lines is straight between its
-/// ends (docs/method.md (M32e)):
+/// ends, stopping on the bed where the slide meets it and sliding on
+/// along it (docs/method.md (M32e)):
 ///
 /// ```text
 ///   P' = P + s d,   s = min over lines j > 0 of |P + s d - A_j| = L_j,   d = G_t / |G_t|
@@ -281,16 +282,20 @@ const SLACK_PULL: f64 = 1e-2;
 /// seafloor.txt: a 10 kg point on a bed of slope 0.2, its neutrally
 /// buoyant 32 m line slack, slides 16.9 m down the slope.
 pub(super) fn slide_slack_points(system: &System, net: &Network, positions: &mut [[f64; 3]]) {
+    // The imbalance at the points as given (its own copy: the network's
+    // start places bodies' points where their poses are not returned).
     let x = net.start(system, positions);
-    let Some((g, _)) = imbalance(system, net, positions, &x) else {
+    let Some((g, _)) = imbalance(system, net, &mut positions.to_vec(), &x) else {
         return;
     };
     for (k, &p) in net.free.iter().enumerate() {
         let load = crate::vec3::norm([g[3 * k], g[3 * k + 1], g[3 * k + 2]]);
         // What the lines at p can pull with: their end forces there and
-        // their weights in water.
+        // their weights in water; a line already straight pulls as its
+        // stretch says, and Newton sees it.
         let mut pull = 0.0;
         let mut others = Vec::new();
+        let mut straight = false;
         for (li, end) in system.attachments(p) {
             let (a, b) = end_positions_at(system, li, positions);
             let shape = seed_shape_capped(system, li, a, b, f64::INFINITY);
@@ -300,39 +305,91 @@ pub(super) fn slide_slack_points(system: &System, net: &Network, positions: &mut
                 * model.cable.length;
             pull += crate::vec3::norm(shape.end_force(end)) + weight.abs();
             let other = if end == 0 { b } else { a };
+            straight |= crate::vec3::norm(crate::vec3::sub(a, b)) >= model.cable.length;
             others.push((other, model.cable.length));
         }
-        if others.is_empty() || pull > SLACK_PULL * load {
+        if others.is_empty() || straight || pull > SLACK_PULL * load {
             continue;
         }
-        let at = positions[p];
-        let mut d = [g[3 * k], g[3 * k + 1], g[3 * k + 2]];
-        if let Some(n) = bed_under(system, p, at) {
-            let into = crate::vec3::dot(d, n);
-            if into < 0.0 {
-                d = crate::vec3::sub(d, crate::vec3::scale(into, n));
+        let imbalance = [g[3 * k], g[3 * k + 1], g[3 * k + 2]];
+        let mut at = positions[p];
+        // Along the imbalance, on the bed where the point rests on it; a
+        // point above the bed that would pass through it stops there and
+        // slides on along it.
+        for _ in 0..2 {
+            let Some(d) = slide_direction(imbalance, bed_under(system, p, at)) else {
+                break;
+            };
+            let s = first_straight(at, d, &others);
+            if !s.is_finite() {
+                break;
+            }
+            match bed_crossing(system, p, at, d, s) {
+                Some(s_bed) => at = crate::vec3::add(at, crate::vec3::scale(s_bed, d)),
+                None => {
+                    at = crate::vec3::add(at, crate::vec3::scale(s, d));
+                    break;
+                }
             }
         }
-        let size = crate::vec3::norm(d);
-        if size == 0.0 {
-            continue;
-        }
-        let d = crate::vec3::scale(1.0 / size, d);
-        let s = others
-            .iter()
-            .filter_map(|&(other, length)| {
-                let r = crate::vec3::sub(at, other);
-                let half_b = crate::vec3::dot(r, d);
-                let c = crate::vec3::dot(r, r) - length * length;
-                let disc = half_b * half_b - c;
-                (disc >= 0.0).then(|| -half_b + disc.sqrt())
-            })
-            .filter(|&s| s > 0.0)
-            .fold(f64::INFINITY, f64::min);
-        if s.is_finite() {
-            positions[p] = crate::vec3::add(at, crate::vec3::scale(s, d));
+        positions[p] = at;
+    }
+}
+
+/// The unit direction a point slides in under `imbalance`: along it, or
+/// along its part in the bed's tangent plane where it pushes into the
+/// bed of normal `bed` the point rests on; None where that is zero.
+fn slide_direction(imbalance: [f64; 3], bed: Option<[f64; 3]>) -> Option<[f64; 3]> {
+    let mut d = imbalance;
+    if let Some(n) = bed {
+        let into = crate::vec3::dot(d, n);
+        if into < 0.0 {
+            d = crate::vec3::sub(d, crate::vec3::scale(into, n));
         }
     }
+    let size = crate::vec3::norm(d);
+    (size > 0.0 && size.is_finite()).then(|| crate::vec3::scale(1.0 / size, d))
+}
+
+/// The distance s > 0 along unit `d` from `at` at which the first of the
+/// lines (their other ends and lengths) is straight, |at + s d - A| = L;
+/// infinite if none.
+fn first_straight(at: [f64; 3], d: [f64; 3], others: &[([f64; 3], f64)]) -> f64 {
+    others
+        .iter()
+        .filter_map(|&(other, length)| {
+            let r = crate::vec3::sub(at, other);
+            let half_b = crate::vec3::dot(r, d);
+            let c = crate::vec3::dot(r, r) - length * length;
+            let disc = half_b * half_b - c;
+            (disc >= 0.0).then(|| -half_b + disc.sqrt())
+        })
+        .filter(|&s| s > 0.0)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Where a point above the bed (of a line at p) sliding from `at` along
+/// `d` meets it before `s_end`: the distance, by bisection of the
+/// penetration (to 1e-12 of the slide); None if the point rests on the
+/// bed already or is above it at `s_end`.
+fn bed_crossing(system: &System, p: usize, at: [f64; 3], d: [f64; 3], s_end: f64) -> Option<f64> {
+    let (li, _) = system.attachments(p).next()?;
+    let model = &system.lines()[li].model;
+    let bed = &model.seabed.as_ref()?.seabed;
+    let depth = |s: f64| bed.penetration(&crate::vec3::add(at, crate::vec3::scale(s, d)));
+    if bed_under(system, p, at).is_some() || depth(s_end) < 0.0 {
+        return None;
+    }
+    let (mut above, mut below) = (0.0, s_end);
+    while below - above > 1e-12 * s_end {
+        let mid = 0.5 * (above + below);
+        if depth(mid) < 0.0 {
+            above = mid;
+        } else {
+            below = mid;
+        }
+    }
+    Some(below)
 }
 
 /// The normal of the bed under free point p at `at` where p rests on it
