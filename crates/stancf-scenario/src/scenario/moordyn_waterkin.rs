@@ -59,12 +59,12 @@ pub(super) fn deck_waterkin(
     let at = path.parent().unwrap_or(Path::new("")).join(named);
     let read = |e: String| refuse(format!("{}: {e}", at.display()));
     let text = crate::input_file::read_text(&at).map_err(read)?;
-    let profile = read_waterkin(&text).map_err(read)?;
+    let (profile, waves) = read_waterkin(&text).map_err(read)?;
     let note = format!(
         "OPTIONS: {name} {named} (line {line}): {} (from the deck's folder, as MoorDyn-F opens \
          it): {}, {}",
         at.display(),
-        if waves_given(&text) {
+        if waves {
             "waves from its elevation record (WaveKinMod 1, noted apart)"
         } else {
             "no waves"
@@ -87,20 +87,14 @@ pub(super) fn deck_waterkin(
     Ok(Some((current, note)))
 }
 
-/// Whether a WaterKin file's text gives waves (`WaveKinMod` 1; read
-/// and checked by `read_waterkin` first).
-fn waves_given(text: &str) -> bool {
-    let lines: Vec<&str> = text.lines().collect();
-    matches!(
-        super::moordyn_waterkin_waves::read_wave_settings(&lines),
-        Ok(Some(_))
-    )
-}
+/// A WaterKin file's steady current profile and whether it gives waves.
+type WaterKin = (Option<(Vec<CurrentRow>, bool)>, bool);
 
 /// The current profile of a WaterKin file's text (None for `CurrentMod`
 /// 0), z increasing, and whether rows beyond MoorDyn-F's 100 were left
-/// out. Errors name the line.
-fn read_waterkin(text: &str) -> Result<Option<(Vec<CurrentRow>, bool)>, String> {
+/// out; and whether it gives waves (`WaveKinMod` 1, read by
+/// `super::moordyn_waterkin_waves`). Errors name the line.
+fn read_waterkin(text: &str) -> Result<WaterKin, String> {
     let lines: Vec<&str> = text.lines().collect();
     let at = |i: usize| -> Result<&str, String> {
         lines.get(i).copied().ok_or_else(|| {
@@ -118,12 +112,12 @@ fn read_waterkin(text: &str) -> Result<Option<(Vec<CurrentRow>, bool)>, String> 
     };
     // Lines 1-2 header, 3 the waves' header, 4 WaveKinMod: its waves are
     // read by super::moordyn_waterkin_waves (here only checked).
-    super::moordyn_waterkin_waves::read_wave_settings(&lines)?;
+    let waves = super::moordyn_waterkin_waves::read_wave_settings(&lines)?.is_some();
     // WaveKinFile, dtWave, WaveDir (lines 5-7), the grid's x, y, z (8-13),
     // the current's header (14), CurrentMod (15).
     match mode(14, "CurrentMod")? {
-        0 => Ok(None),
-        1 => profile(&lines).map(Some),
+        0 => Ok((None, waves)),
+        1 => profile(&lines).map(|p| (Some(p), waves)),
         2 => Err(
             "line 15: CurrentMod 2: a current from OpenFAST's SeaState module is not \
                   read; give it as [water.current] in a scenario that takes the deck"
@@ -193,22 +187,25 @@ mod tests {
     #[test]
     fn a_steady_profile_is_read_to_its_last_row_in_increasing_z() {
         let text = file("1 CurrentMod\nz-depth x y\n(m) (m/s) (m/s)\n0.0 0.3 0.1\n-5 0.2 0\n-11.0 0.1 0\n--- need this line ---\n");
-        let (rows, beyond) = read_waterkin(&text).unwrap().unwrap();
+        let (rows, beyond) = read_waterkin(&text).unwrap().0.unwrap();
         assert!(!beyond);
         let z: Vec<f64> = rows.iter().map(|r| r.z).collect();
         assert_eq!(z, [-11.0, -5.0, 0.0]);
         assert_eq!(rows[2].velocity, [0.3, 0.1, 0.0]);
-        assert_eq!(read_waterkin(&file("0 CurrentMod\n")).unwrap(), None);
+        assert_eq!(
+            read_waterkin(&file("0 CurrentMod\n")).unwrap(),
+            (None, false)
+        );
         // Blank lines are skipped, before the table and in it.
         let gaps = file("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n\n\n-11 0.1 0\n\n0 0.3 0\n");
-        let (rows, _) = read_waterkin(&gaps).unwrap().unwrap();
+        let (rows, _) = read_waterkin(&gaps).unwrap().0.unwrap();
         assert_eq!(rows.len(), 2);
         // MoorDyn-F reads 100 rows at most.
         let many: String = (0..120)
             .map(|k| format!("{} 0.2 0\n", -f64::from(k)))
             .collect();
         let text = file(&format!("1 CurrentMod\nz x y\n(m) (m/s) (m/s)\n{many}"));
-        let (rows, beyond) = read_waterkin(&text).unwrap().unwrap();
+        let (rows, beyond) = read_waterkin(&text).unwrap().0.unwrap();
         assert_eq!((rows.len(), beyond), (100, true));
     }
 

@@ -155,10 +155,12 @@ pub(super) fn record_samples(
     let mut samples: Vec<f64> = (0..count as usize)
         .map(|i| {
             let t = i as f64 * dt;
-            // The first pair of rows with t_(j+1) > t; none: still water.
-            match rows.windows(2).find(|p| p[1].1 > t) {
-                Some(p) => {
-                    let ((_, t0, e0), (_, t1, e1)) = (p[0], p[1]);
+            // The first pair of rows with t_(j+1) > t (j + 1 >= 1: the
+            // first time is 0 <= t); none: still water.
+            let next = rows.partition_point(|r| r.1 <= t);
+            match rows.get(next) {
+                Some(&(_, t1, e1)) => {
+                    let (_, t0, e0) = rows[next - 1];
                     e0 + (t - t0) / (t1 - t0) * (e1 - e0)
                 }
                 None => 0.0,
