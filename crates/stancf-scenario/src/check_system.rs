@@ -96,9 +96,9 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
             (AnalysisKind::Static, _) => match &unbalanced {
                 None => "static equilibrium from the lines' catenaries".into(),
                 Some(why) => format!(
-                    "MoorDyn's start, the lines' catenaries between their points as given (the \
-                     deck's TmaxIC is 0: no initial conditions), written at t = 0: no static \
-                     equilibrium ({why}; docs/method.md §13.7)"
+                    "MoorDyn's start, the lines' catenaries between their points as given ({}), \
+                     written at t = 0: no static equilibrium ({why}; docs/method.md §13.7)",
+                    crate::system_start::relaxation_words(sc.moordyn_relaxation)
                 ),
             },
             (AnalysisKind::Dynamic, InitialShape::Static) => format!(

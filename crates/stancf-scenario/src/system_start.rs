@@ -80,13 +80,15 @@ pub fn prepare(path: &Path, sc: &SystemScenario) -> Result<Prepared, Failure> {
         match solve {
             Ok(statics) => Some(statics),
             Err(Unbalanced::Not(f)) => return Err(f),
-            Err(Unbalanced::Overlong(f, why) | Unbalanced::Sinks(f, why)) => {
-                if !(sc.start_without_equilibrium && sc.analysis.kind == AnalysisKind::Static) {
-                    return Err(f);
-                }
+            Err(Unbalanced::Overlong(_, why)) if writes_moordyns_start(sc, true) => {
                 unbalanced = Some(why);
                 None
             }
+            Err(Unbalanced::Sinks(_, why)) if writes_moordyns_start(sc, false) => {
+                unbalanced = Some(why);
+                None
+            }
+            Err(Unbalanced::Overlong(f, _) | Unbalanced::Sinks(f, _)) => return Err(f),
         }
     } else {
         None
@@ -188,4 +190,37 @@ fn overlong_refusal(path: &Path, sc: &SystemScenario, l: &stancf::system::Overlo
         path.display(),
         sc.lines[l.line].id,
     ))
+}
+
+/// What MoorDyn does from its start for a deck of `TmaxIC` `relaxation`
+/// ([`SystemScenario::moordyn_relaxation`]): nothing (TmaxIC 0), or its
+/// dynamic relaxation for initial conditions, which settles nowhere
+/// where no static equilibrium is (docs/method.md §13.7).
+pub(crate) fn relaxation_words(relaxation: Option<f64>) -> String {
+    match relaxation {
+        None => "the deck's TmaxIC is 0: no initial conditions".into(),
+        Some(t) => {
+            let given = if t.is_nan() {
+                "its default TmaxIC".to_string()
+            } else {
+                format!("TmaxIC {} s", stancf::error::Sig(t))
+            };
+            format!(
+                "MoorDyn relaxes from it for its initial conditions ({given}) and settles \
+                 nowhere either: its Init ends with a remaining error; stancf writes the start"
+            )
+        }
+    }
+}
+
+/// Whether a deck alone without a static equilibrium writes MoorDyn's
+/// start (docs/method.md §13.7): with TmaxIC 0 always (MoorDyn's `Init`
+/// leaves it there); otherwise only for a line longer than its path
+/// (`overlong`), from which MoorDyn's relaxation settles nowhere either
+/// (a sinking rod it relaxes onto the bed, a state stancf's statics would
+/// have to find: refused).
+fn writes_moordyns_start(sc: &SystemScenario, overlong: bool) -> bool {
+    sc.start_without_equilibrium
+        && sc.analysis.kind == AnalysisKind::Static
+        && (sc.moordyn_relaxation.is_none() || overlong)
 }

@@ -90,14 +90,16 @@ fn moordyn_point_force_channels_are_the_net_forces_on_the_points() {
 /// on the bed at 400 m to a fairlead at the surface, in 200 m of water.
 /// Hanging from the fairlead and lying straight to the anchor it needs at
 /// most L_max = XF + V0/W = 600 m (C20); the other 250 m would lie slack
-/// on the bed in no determined shape. Where the deck asks for MoorDyn's
-/// initial conditions (TmaxIC above 0) `check` and `run` refuse it naming
-/// the line, both lengths and (C20) (exit 2, nothing written); MoorDyn's
-/// dynamic relaxation does not settle there either. As the r-test has it,
-/// TmaxIC 0, MoorDyn's `Init` lays it straight and slack between its ends:
-/// the deck alone passes `check` and its run writes that start, the
-/// fairlead holding nothing, with the reason (docs/method.md §13.7). Its
-/// driver runs it on from there (`moordyn_driver::r_test_md_case5_...`).
+/// on the bed in no determined shape. As the r-test has it, TmaxIC 0,
+/// MoorDyn's `Init` lays it straight and slack between its ends: the deck
+/// alone passes `check` and its run writes that start, the fairlead
+/// holding nothing, with the reason (docs/method.md §13.7). Where the
+/// deck asks for MoorDyn's initial conditions (TmaxIC 60), MoorDyn relaxes
+/// from that start and settles nowhere either (MoorPy's case5.dat: its
+/// Init ends with a remaining error, the fairlead at 0 N): the same start
+/// is written, and `check` says what MoorDyn does (before 2026-11-30 it
+/// was refused, a deck MoorDyn accepts). Its driver runs it on from there
+/// (`moordyn_driver::r_test_md_case5_...`).
 #[test]
 fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
     let dir = scratch("overlong_line");
@@ -107,34 +109,33 @@ fn a_line_longer_than_its_path_can_hold_has_no_unique_equilibrium() {
     .unwrap();
     let with_ic = given.replace("0.0      TmaxIC", "60.0     TmaxIC");
     assert_ne!(with_ic, given);
-    let path = write_scenario(&dir, "md_case5.dat", &with_ic);
-    refused_by_check_and_run(
-        &path,
-        &dir.join("out"),
-        &[
-            "md_case5.dat",
-            "line 1",
-            "850 m",
-            "599.96",
-            "(C20)",
-            "no unique equilibrium",
-        ],
-        &[],
-    );
-    let path = write_scenario(&dir, "md_case5.dat", &given);
-    let start = dir.join("start");
-    let o = run_quiet(&path, &start, &[]);
-    assert!(o.status.success(), "{}", text(&o).1);
-    let why = read_json(&start.join("summary.json"))["no_static_equilibrium"]
-        .as_str()
-        .unwrap()
-        .to_string();
-    assert!(
-        why.starts_with("line 1: its 850 m") && why.contains("(C20)"),
-        "{why}"
-    );
-    for row in read_tensions(&start.join("tensions.csv")) {
-        assert_eq!((row[0], row[6]), (0.0, 0.0));
+    for (deck, moordyn) in [
+        (&given, "the deck's TmaxIC is 0: no initial conditions"),
+        (
+            &with_ic,
+            "MoorDyn relaxes from it for its initial conditions (TmaxIC 60 s)",
+        ),
+    ] {
+        let path = write_scenario(&dir, "md_case5.dat", deck);
+        let (stdout, stderr) = text(&stancf(&["check", path.to_str().unwrap()]));
+        assert!(
+            stdout.contains(moordyn) && stdout.contains("no static equilibrium"),
+            "{stdout}\n{stderr}"
+        );
+        let start = dir.join("start");
+        let o = run_quiet(&path, &start, &[]);
+        assert!(o.status.success(), "{}", text(&o).1);
+        let why = read_json(&start.join("summary.json"))["no_static_equilibrium"]
+            .as_str()
+            .unwrap()
+            .to_string();
+        assert!(
+            why.starts_with("line 1: its 850 m") && why.contains("599.96") && why.contains("(C20)"),
+            "{why}"
+        );
+        for row in read_tensions(&start.join("tensions.csv")) {
+            assert_eq!((row[0], row[6]), (0.0, 0.0));
+        }
     }
     // 590 m fit: the same deck runs.
     let dir = scratch("overlong_line_shortened");
@@ -485,5 +486,70 @@ fn a_weight_on_a_slope_slides_until_its_slack_rope_is_straight() {
     assert!(
         (pull - share).abs() < 1e-6 * share,
         "{pull} N down the slope against {share} N"
+    );
+}
+
+/// MoorDyn's seafloor.txt as a scenario: a 10 kg bob at the end of a
+/// neutrally buoyant rope of 32 m (d 0.1 m, EA 1e9 N) from a fixed point
+/// at the surface, set on a frictionless bed of slope 0.2 (z = -30 +
+/// 0.2 x) at x = 10 m. The rope is slack there; the bob slides down the
+/// slope until it is straight, reaching the bed at a steep angle, so its
+/// own Gauss points stay clear of the bed and the bob rests on its own
+/// push (docs/method.md (W42p), k_p = kBot d l / 2 = 2.4e5 N/m). Before
+/// it, nothing held the bob up and the static solve ended in exit 3.
+/// The bob's balance against the closed form: along the slope the rope's
+/// pull carries the weight's share, (F_B + W) . t = 0; across it the
+/// bed pushes N = -(F_B + W) . n, and the bob is in by N / k_p + delta /
+/// 2 ((W41), delta = 1e-4 m): both to 1e-6 of the weight (the rope's
+/// stretch, T / EA = 5e-8, and the bed's give, 0.4 mm, move the
+/// directions by less than 1e-5; these are balances at the solve's
+/// point, not the directions').
+#[test]
+fn a_pendulums_bob_rests_on_a_slope_on_its_own_push() {
+    let d = scratch("bob-on-slope");
+    let (mass, g, k, diameter, elements, length) = (10.0, 9.81, 3e6, 0.1, 20.0, 32.0);
+    let neutral = 1000.0 * std::f64::consts::PI / 4.0 * diameter * diameter;
+    let sc = format!(
+        "title = \"a bob on a slope\"\n\
+         [[line_types]]\nname = \"rope\"\ndiameter = {diameter:?}\nmass_per_length = {neutral:?}\n\
+         ea = 1.0e9\n\
+         {}{}[[lines]]\nid = 1\ntype = \"rope\"\nlength = {length:?}\nelements = {elements}\n\
+         a = 1\nb = 2\n\
+         [water]\ndepth = 30.0\ndensity = 1000.0\n[water.seabed]\nstiffness = {k:?}\n\
+         slope = [0.2, 0.0]\n[analysis]\ntype = \"static\"\n",
+        toml_point(1, "fixed", [0.0, -1.0, 0.0]),
+        toml_point(2, "free", [10.0, -1.0, -28.0]) + &format!("mass = {mass:?}\n"),
+    );
+    let path = write_scenario(&d, "bob.toml", &sc);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(!text(&o).1.contains("pseudo-transient"), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let bob = [rows[1][col("x")], rows[1][col("y")], rows[1][col("z")]];
+    let ends = read_tensions(&out.join("tensions.csv"));
+    let pull = [ends[1][3], ends[1][4], ends[1][5]];
+    let weight = mass * g;
+    let norm = (1.0f64 + 0.04).sqrt();
+    let (t, n) = (
+        [1.0 / norm, 0.0, 0.2 / norm],
+        [-0.2 / norm, 0.0, 1.0 / norm],
+    );
+    let net = [pull[0], pull[1], pull[2] - weight];
+    let along: f64 = (0..3).map(|c| net[c] * t[c]).sum();
+    let push: f64 = -(0..3).map(|c| net[c] * n[c]).sum::<f64>();
+    let depth_in = n[2] * (-30.0 + 0.2 * bob[0] - bob[2]);
+    let stiffness = k * diameter * 0.5 * length / elements;
+    let want = push / stiffness + 0.5e-3 * diameter;
+    eprintln!(
+        "bob at {bob:?}: along the slope {along:.3e} N, push {push:.6} N, in by {depth_in:.9e} m \
+         against {want:.9e} m"
+    );
+    assert!(bob[0] < 0.0, "the bob slid down the slope: {bob:?}");
+    assert!(along.abs() < 1e-6 * weight, "{along} N along the slope");
+    assert!(
+        (depth_in - want).abs() * stiffness < 1e-6 * weight,
+        "in by {depth_in} m against {want} m"
     );
 }

@@ -324,13 +324,21 @@ impl Deck {
     /// absent (MoorDyn's default is positive). With `TmaxIC 0` MoorDyn
     /// starts from the deck's positions, each line in its catenary.
     pub fn generates_initial_conditions(&self) -> bool {
-        self.options
-            .iter()
-            .rev()
-            .find(|o| {
-                o.name.eq_ignore_ascii_case("tmaxic") || o.name.eq_ignore_ascii_case("ictmax")
-            })
-            .is_none_or(|o| !matches!(o.value, OptionValue::Number(v) if v <= 0.0))
+        self.initial_conditions_time().is_some()
+    }
+
+    /// MoorDyn's time for its initial conditions, the last `TmaxIC`
+    /// (`ICTmax`) given: None where it is 0 or below (none generated),
+    /// NaN where it is not given (MoorDyn's default) or not a number.
+    pub fn initial_conditions_time(&self) -> Option<f64> {
+        let given = self.options.iter().rev().find(|o| {
+            o.name.eq_ignore_ascii_case("tmaxic") || o.name.eq_ignore_ascii_case("ictmax")
+        });
+        match given.map(|o| &o.value) {
+            Some(OptionValue::Number(v)) if *v <= 0.0 => None,
+            Some(OptionValue::Number(v)) => Some(*v),
+            _ => Some(f64::NAN),
+        }
     }
 
     /// Whether the deck's waves are a host's: `WaveKin 1`, MoorDyn's

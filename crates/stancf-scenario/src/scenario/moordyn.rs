@@ -161,7 +161,8 @@ pub(super) fn deck_scenario(
         moordyn_out: moordyn_out_file(deck, path, &channels).map(Box::new),
         channels,
         names,
-        start_without_equilibrium: !deck.generates_initial_conditions(),
+        start_without_equilibrium: true,
+        moordyn_relaxation: deck.initial_conditions_time(),
     };
     sc.notes.extend(system_notes(&sc));
     Ok(sc)

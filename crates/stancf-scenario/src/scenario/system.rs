@@ -134,6 +134,7 @@ pub(super) fn system_scenario(
         moordyn_out: None,
         names,
         start_without_equilibrium: false,
+        moordyn_relaxation: None,
     };
     sc.notes.extend(super::sea_limits::static_waves_note(&sc));
     sc.notes

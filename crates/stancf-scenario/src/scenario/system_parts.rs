@@ -214,12 +214,17 @@ pub struct SystemScenario {
     pub names: super::names::Names,
     /// Line failures (docs/method.md §11.16).
     pub failures: Vec<SystemFailure>,
-    /// A deck alone whose `TmaxIC` is 0: MoorDyn generates no initial
-    /// conditions for it and starts from the deck's positions. Where it
-    /// has no static equilibrium (a line longer than its path, (C20); a
-    /// body or rod that floats on no line and sinks) its run writes that
-    /// start, as MoorDyn's `Init` leaves it (docs/method.md §13.7).
+    /// A deck alone: where it has no static equilibrium (a line longer
+    /// than its path, (C20); a body or rod that floats on no line and
+    /// sinks) its run writes MoorDyn's start, the deck's positions with
+    /// each line in its catenary, as MoorDyn's `Init` leaves it with
+    /// `TmaxIC 0`, and as its initial conditions start from otherwise,
+    /// without settling (docs/method.md §13.7).
     pub start_without_equilibrium: bool,
+    /// The deck's `TmaxIC` where MoorDyn generates initial conditions
+    /// for it (None: TmaxIC 0, or a scenario; NaN: not given, MoorDyn's
+    /// default): what the note of a start without equilibrium says.
+    pub moordyn_relaxation: Option<f64>,
 }
 
 /// MoorDyn's output files a deck asks for: `<deck>.out` of its OUTPUTS

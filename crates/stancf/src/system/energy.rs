@@ -80,7 +80,8 @@ impl SystemSimulation {
     /// on the lines, their moving attachments (fixed and coupled points),
     /// drag, axial damping, the seabed and the water
     /// ([`crate::Simulation::external_work`]); on the free points, the
-    /// water's drag and inertia (W34); on the free bodies, their drag
+    /// water's drag and inertia (W34), their damping (B42) and the bed's
+    /// push (W42p); on the free bodies, their drag
     /// (B10). `energies().mechanical() - external_work()` stays at its
     /// start value up to the scheme's error (in a current with added mass
     /// the body's kinetic energy (B9) is not the conserved quantity,
@@ -88,6 +89,7 @@ impl SystemSimulation {
     pub fn external_work(&self) -> f64 {
         self.lines.iter().map(|l| l.external_work()).sum::<f64>()
             + self.point_water_work
+            + self.point_bed_work
             + self.body_water_work()
             + self.pin_work()
     }

@@ -25,8 +25,10 @@
 //! ```
 //!
 //! and in statics - f of the steady current at rest. A free point's
-//! damping (B42) adds its force f(r_dot) the same way (zero at rest).
+//! damping (B42) adds its force f(r_dot) the same way (zero at rest),
+//! and so does the seabed's push on it (W42p), f(r, r_dot).
 
+use super::point_bed::{add_force, steady_point_force, PointBed};
 use crate::assembly::{Kind, SlabLayout};
 use crate::damping::AxisDamping;
 use crate::element::TimeSlab;
@@ -52,6 +54,9 @@ pub struct PointTerms<'a> {
     pub water: Option<&'a PointInWater>,
     /// The point's damping (B42), zero if none.
     pub damping: &'a AxisDamping,
+    /// The seabed's push on the point (W42p), if a line attached there
+    /// has a seabed.
+    pub bed: Option<&'a PointBed>,
     /// The step's start time.
     pub time: f64,
     /// Global index of (slot, component): `index[3 slot + c]`.
@@ -76,6 +81,7 @@ impl<'a> PointTerms<'a> {
             load: system.point_load(p),
             water: system.points()[p].water.as_ref(),
             damping: &system.points()[p].damping,
+            bed: system.point_bed(p),
             time,
             index,
             layout,
@@ -129,37 +135,40 @@ impl<'a> PointTerms<'a> {
         p
     }
 
-    /// The work of the water's drag and inertia (W34) and of the
-    /// damping (B42) on the point over the step, sum_layers sum_g w_g dt
-    /// f_g . r_dot_g, from the expanded time-node values `nodes` (0 in air
-    /// undamped): the same quadrature as its virtual work in the rows.
-    pub fn water_work(&self, nodes: &PointNodes) -> f64 {
+    /// The work of the water's drag and inertia (W34) and of the damping
+    /// (B42) on the point over the step, and that of the bed's push
+    /// (W42p): sum_layers sum_g w_g dt f_g . r_dot_g, from the expanded
+    /// time-node values `nodes` (0 in air undamped off the bed), the same
+    /// quadrature as their virtual work in the rows.
+    pub fn own_work(&self, nodes: &PointNodes) -> (f64, f64) {
+        let (mut water, mut bed) = (0.0, 0.0);
         if !self.has_own_forces() {
-            return 0.0;
+            return (water, bed);
         }
-        let mut work = 0.0;
         for j in 0..self.layout.layers() {
             let y = [nodes.e[j], nodes.v[j], nodes.e[j + 1], nodes.v[j + 1]];
-            for (tp, f) in self.own_forces(j, &y) {
-                let mut rdot = [0.0; 3];
-                for (m, ym) in y.iter().enumerate() {
-                    for c in 0..3 {
-                        rdot[c] += tp.shape.t_dot[m] * ym[c];
-                    }
+            let start = self.time + j as f64 * self.slab.dt;
+            for tp in &self.slab.points {
+                let (r, rdot) = motion_at(tp, &y);
+                let power = |f: &PointForce| tp.w_dt * crate::vec3::dot(f.force, rdot);
+                water += power(&self.water_force(&r, &rdot, start + tp.offset));
+                if let Some(b) = self.bed {
+                    bed += power(&b.force(&r, &rdot));
                 }
-                work += tp.w_dt * (0..3).map(|c| f.force[c] * rdot[c]).sum::<f64>();
             }
         }
-        work
+        (water, bed)
     }
 
-    /// Whether the point has forces of its motion: water or damping.
+    /// Whether the point has forces of its motion: water, damping or the
+    /// bed's push.
     pub fn has_own_forces(&self) -> bool {
-        self.water.is_some() || !self.damping.is_zero()
+        self.water.is_some() || !self.damping.is_zero() || self.bed.is_some()
     }
 
-    /// The water's force (W34) and the damping (B42) at the time points
-    /// of layer j, whose slot values are `y` = [e_j, v_j, e_j+1, v_j+1].
+    /// The water's force (W34), the damping (B42) and the bed's push
+    /// (W42p) at the time points of layer j, whose slot values are `y` =
+    /// [e_j, v_j, e_j+1, v_j+1].
     fn own_forces<'s>(
         &'s self,
         j: usize,
@@ -167,26 +176,29 @@ impl<'a> PointTerms<'a> {
     ) -> impl Iterator<Item = (&'s crate::element::TimePoint, PointForce)> + 's {
         let start = self.time + j as f64 * self.slab.dt;
         self.slab.points.iter().map(move |tp| {
-            let mut r = [0.0; 3];
-            let mut rdot = [0.0; 3];
-            for (m, ym) in y.iter().enumerate() {
-                for c in 0..3 {
-                    r[c] += tp.shape.t[m] * ym[c];
-                    rdot[c] += tp.shape.t_dot[m] * ym[c];
-                }
-            }
-            let mut f = self.water.map_or_else(PointForce::default, |w| {
-                w.force(&r, &rdot, start + tp.offset)
-            });
-            if !self.damping.is_zero() {
-                let (force, slope) = self.damping.force(rdot);
-                for c in 0..3 {
-                    f.force[c] += force[c];
-                    f.d_rdot[c][c] += slope[c];
-                }
+            let (r, rdot) = motion_at(tp, y);
+            let mut f = self.water_force(&r, &rdot, start + tp.offset);
+            if let Some(bed) = self.bed {
+                add_force(&mut f, &bed.force(&r, &rdot));
             }
             (tp, f)
         })
+    }
+
+    /// The water's force (W34) and the damping (B42) on the point at r
+    /// moving at r_dot at time t.
+    fn water_force(&self, r: &[f64; 3], rdot: &[f64; 3], t: f64) -> PointForce {
+        let mut f = self
+            .water
+            .map_or_else(PointForce::default, |w| w.force(r, rdot, t));
+        if !self.damping.is_zero() {
+            let (force, slope) = self.damping.force(*rdot);
+            for c in 0..3 {
+                f.force[c] += force[c];
+                f.d_rdot[c][c] += slope[c];
+            }
+        }
+        f
     }
 
     /// Adds the point's share to the rows and, if given, the Jacobian.
@@ -263,8 +275,8 @@ impl<'a> PointTerms<'a> {
         }
     }
 
-    /// The static rows: - F, and in water - f of the steady current at
-    /// rest with its derivative.
+    /// The static rows: - F, and - f of the steady current at rest in
+    /// water and of the bed's push (W42p), with its derivative.
     fn add_static<J: AddEntries>(
         &self,
         nodes: &PointNodes,
@@ -277,11 +289,13 @@ impl<'a> PointTerms<'a> {
         for c in 0..3 {
             residual[self.index[3 * s + c]] -= self.load[c];
         }
-        let (Some(water), Some(u)) = (self.water, self.layout.unknown_slot(0, Kind::Position))
-        else {
+        let Some(u) = self.layout.unknown_slot(0, Kind::Position) else {
             return;
         };
-        let f = water.static_force(&nodes.e[0]);
+        if self.water.is_none() && self.bed.is_none() {
+            return;
+        }
+        let f = steady_point_force(self.water, self.bed, &nodes.e[0]);
         for c in 0..3 {
             residual[self.index[3 * s + c]] -= f.force[c];
         }
@@ -328,4 +342,18 @@ impl<'a> PointTerms<'a> {
             }
         }
     }
+}
+
+/// The point's position and velocity at time point `tp` of a layer whose
+/// slot values are `y` = [e_j, v_j, e_j+1, v_j+1].
+fn motion_at(tp: &crate::element::TimePoint, y: &[[f64; 3]; 4]) -> ([f64; 3], [f64; 3]) {
+    let mut r = [0.0; 3];
+    let mut rdot = [0.0; 3];
+    for (m, ym) in y.iter().enumerate() {
+        for c in 0..3 {
+            r[c] += tp.shape.t[m] * ym[c];
+            rdot[c] += tp.shape.t_dot[m] * ym[c];
+        }
+    }
+    (r, rdot)
 }

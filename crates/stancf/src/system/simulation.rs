@@ -105,6 +105,8 @@ pub struct SystemSimulation {
     pub(super) point_momentum: Vec<[f64; 3]>,
     /// Work done on the free points by the water's drag and inertia.
     pub(super) point_water_work: f64,
+    /// The bed's work on the free points so far (W42p).
+    pub(super) point_bed_work: f64,
     /// How many times a step that Newton fails is halved (see
     /// [`SystemSimulation::set_step_halvings`]).
     pub(super) step_halvings: u32,
@@ -201,6 +203,7 @@ impl SystemSimulation {
             bodies,
             point_momentum: vec![[0.0; 3]; topology.points().len()],
             point_water_work: 0.0,
+            point_bed_work: 0.0,
             step_halvings: super::halving::DEFAULT_STEP_HALVINGS,
             end_forces: vec![[EndForce::default(); 2]; lines.len()],
             end_forces_at_end: vec![[EndForce::default(); 2]; lines.len()],
@@ -270,9 +273,10 @@ impl SystemSimulation {
         self.lines.iter().map(Simulation::damping_work).sum()
     }
 
-    /// Work done on the lines by the seabed so far (W47).
+    /// Work done by the seabed so far: on the lines (W47) and on the
+    /// free points (W42p).
     pub fn seabed_work(&self) -> f64 {
-        self.lines.iter().map(Simulation::seabed_work).sum()
+        self.lines.iter().map(Simulation::seabed_work).sum::<f64>() + self.point_bed_work
     }
 
     /// Work done by the water so far: on the lines (W24), on the free

@@ -439,11 +439,14 @@ impl StaticEquations for SystemEquations {
             for c in 0..3 {
                 residual[idx[c]] -= load[c];
             }
-            // In water: the steady current's drag at rest (§12.6).
-            let Some(water) = &self.system.points()[p].water else {
+            // In water: the steady current's drag at rest (§12.6); on the
+            // bed: its push (W42p).
+            let (water, bed) = (&self.system.points()[p].water, self.system.point_bed(p));
+            if water.is_none() && bed.is_none() {
                 continue;
-            };
-            let f = water.static_force(&[x[idx[0]], x[idx[1]], x[idx[2]]]);
+            }
+            let r = [x[idx[0]], x[idx[1]], x[idx[2]]];
+            let f = super::point_bed::steady_point_force(water.as_ref(), bed, &r);
             for c in 0..3 {
                 residual[idx[c]] -= f.force[c];
                 if let Some(jac) = jacobian.as_deref_mut() {

@@ -103,18 +103,23 @@ impl SystemSimulation {
         }
     }
 
-    /// Adds the step's work of the water on the free points (W34).
+    /// Adds the step's work of the water (W34), the damping (B42) and
+    /// the bed (W42p) on the free points.
     pub(super) fn add_point_water_work(&mut self) {
         let layout = &self.layout.time;
         for (p, idx) in self.point_index.iter().enumerate() {
-            let point = &self.topology.points()[p];
-            if idx.is_empty() || (point.water.is_none() && point.damping.is_zero()) {
+            if idx.is_empty() {
                 continue;
             }
             let m = &self.points[p];
             let terms = PointTerms::of(&self.topology, p, self.t, idx, layout, &self.slab);
+            if !terms.has_own_forces() {
+                continue;
+            }
             terms.expand(&self.x, m.e, m.v, &mut self.point_nodes[p]);
-            self.point_water_work += terms.water_work(&self.point_nodes[p]);
+            let (water, bed) = terms.own_work(&self.point_nodes[p]);
+            self.point_water_work += water;
+            self.point_bed_work += bed;
         }
     }
 

@@ -27,6 +27,9 @@ pub struct Topology {
     /// MoorDyn's order of the rods, points and bodies a host that sets the
     /// waves is asked at (None: the system's own, [`super::HostOrder`]).
     pub(super) host_order: Option<super::HostOrder>,
+    /// The seabed under each free point, where a line attached there has
+    /// one (docs/method.md (W42p)).
+    pub(super) point_beds: Vec<Option<super::point_bed::PointBed>>,
 }
 
 /// A line end attached to a point: the end (0 = A, 1 = B), the point and
@@ -171,6 +174,12 @@ impl Topology {
             .as_ref()
             .map_or([0.0; 3], |w| w.buoyancy(&self.gravity));
         std::array::from_fn(|i| pt.mass * self.gravity[i] + pt.force[i] + buoyancy[i])
+    }
+
+    /// The seabed's push on free point p (docs/method.md (W42p)); None
+    /// where no line attached there has a seabed, or p is not free.
+    pub fn point_bed(&self, p: usize) -> Option<&super::point_bed::PointBed> {
+        self.point_beds.get(p)?.as_ref()
     }
 
     /// The inertia of free point p: its mass and, in water, its added mass

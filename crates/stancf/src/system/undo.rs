@@ -24,6 +24,7 @@ pub(super) struct SystemUndo {
     end_forces: Vec<[EndForce; 2]>,
     forces_at_time: ForcesAtTime,
     point_water_work: f64,
+    point_bed_work: f64,
     failures: Failures,
     steps: usize,
     t: f64,
@@ -42,6 +43,7 @@ impl SystemSimulation {
             end_forces: self.end_forces.clone(),
             forces_at_time: self.forces_at_time.clone(),
             point_water_work: self.point_water_work,
+            point_bed_work: self.point_bed_work,
             failures: self.failures.clone(),
             steps: self.steps,
             t: self.t,
@@ -70,6 +72,7 @@ impl SystemSimulation {
         self.end_forces = undo.end_forces;
         self.forces_at_time = undo.forces_at_time;
         self.point_water_work = undo.point_water_work;
+        self.point_bed_work = undo.point_bed_work;
         self.failures = undo.failures;
         self.steps = undo.steps;
         self.t = undo.t;

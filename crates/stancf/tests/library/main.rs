@@ -43,6 +43,7 @@ mod parallel_elements;
 mod pinned_bodies;
 mod planar;
 mod points_in_water;
+mod points_on_the_bed;
 mod quadrature_rank;
 mod rigid_bodies;
 mod rods_in_systems;

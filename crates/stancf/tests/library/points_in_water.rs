@@ -229,17 +229,10 @@ fn a_buoy_swinging_with_drag_loses_what_the_water_takes() {
     let balance = |steps_per_period: f64| {
         let system = buoy_system(&water, 0.8, 2.0);
         let seeds = catenary_states(&system);
-        let load = system.point_load(1);
-        let inertia = system.point_inertia(1);
         let dt = 7.0 / steps_per_period;
         let mut sim =
             SystemSimulation::new(system, seeds, settings(dt, TimeScheme::Galerkin)).unwrap();
-        let energy = |sim: &SystemSimulation| {
-            let lines: f64 = sim.lines().iter().map(|l| l.energies().mechanical()).sum();
-            let (x, v) = sim.point_state(1);
-            let kinetic = 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
-            lines + kinetic - (0..3).map(|k| load[k] * x[k]).sum::<f64>()
-        };
+        let energy = |sim: &SystemSimulation| crate::common::line_and_point_energy(sim, 1);
         let e0 = energy(&sim);
         let mut worst = 0.0f64;
         while sim.time() < 7.0 {

@@ -625,3 +625,15 @@ pub fn slab_jacobian_error<const NS: usize, const ND: usize>(
     }
     rel_diff(&exact, &fd)
 }
+
+/// The mechanical energy of a system whose one free point p carries a
+/// constant load: its lines' energies, the point's kinetic energy
+/// (its inertia, with any added mass) and the load's potential.
+pub fn line_and_point_energy(sim: &stancf::system::SystemSimulation, p: usize) -> f64 {
+    let system = sim.topology();
+    let (load, inertia) = (system.point_load(p), system.point_inertia(p));
+    let lines: f64 = sim.lines().iter().map(|l| l.energies().mechanical()).sum();
+    let (x, v) = sim.point_state(p);
+    let kinetic = 0.5 * inertia * v.iter().map(|c| c * c).sum::<f64>();
+    lines + kinetic - (0..3).map(|k| load[k] * x[k]).sum::<f64>()
+}
