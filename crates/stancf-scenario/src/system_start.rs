@@ -20,9 +20,9 @@ pub struct Prepared {
     pub system: System,
     pub statics: Option<SystemStatics>,
     pub dynamics: Option<SystemSimulation>,
-    /// Why a deck alone whose `TmaxIC` is 0 has no static equilibrium:
-    /// its run writes MoorDyn's start, `dynamics` at t = 0, instead
-    /// ([`SystemScenario::start_without_equilibrium`]).
+    /// Why a deck alone has no static equilibrium: its run writes
+    /// MoorDyn's start, `dynamics` at t = 0, instead (where
+    /// `writes_moordyns_start` allows it).
     pub unbalanced: Option<String>,
 }
 

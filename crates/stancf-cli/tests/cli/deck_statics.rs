@@ -458,18 +458,9 @@ fn a_weight_on_a_slope_slides_until_its_slack_rope_is_straight() {
         toml_point(1, "fixed", [0.0, 0.0, -5.0]),
         toml_point(2, "free", [10.0, 0.0, -28.0]) + "mass = 10.0\n",
     );
-    let path = write_scenario(&d, "slope.toml", &sc);
-    let out = d.join("out");
-    let o = run_quiet(&path, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    assert!(!text(&o).1.contains("pseudo-transient"), "{}", text(&o).1);
-    let (h, rows) = read_csv(&out.join("points.csv"));
-    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
-    let weight = &rows[1];
-    let p = [weight[col("x")], weight[col("y")], weight[col("z")]];
+    let (p, ends) = solved_weight_and_ends(&d, "slope.toml", &sc);
     let a = [0.0, 0.0, -5.0];
     let chord = ((p[0] - a[0]).powi(2) + (p[1] - a[1]).powi(2) + (p[2] - a[2]).powi(2)).sqrt();
-    let ends = read_tensions(&out.join("tensions.csv"));
     let tension = ends[0][6];
     assert!(p[0] < -15.0, "the weight is at {p:?}");
     assert!(
@@ -520,15 +511,7 @@ fn a_pendulums_bob_rests_on_a_slope_on_its_own_push() {
         toml_point(1, "fixed", [0.0, -1.0, 0.0]),
         toml_point(2, "free", [10.0, -1.0, -28.0]) + &format!("mass = {mass:?}\n"),
     );
-    let path = write_scenario(&d, "bob.toml", &sc);
-    let out = d.join("out");
-    let o = run_quiet(&path, &out, &[]);
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
-    assert!(!text(&o).1.contains("pseudo-transient"), "{}", text(&o).1);
-    let (h, rows) = read_csv(&out.join("points.csv"));
-    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
-    let bob = [rows[1][col("x")], rows[1][col("y")], rows[1][col("z")]];
-    let ends = read_tensions(&out.join("tensions.csv"));
+    let (bob, ends) = solved_weight_and_ends(&d, "bob.toml", &sc);
     let pull = [ends[1][3], ends[1][4], ends[1][5]];
     let weight = mass * g;
     let norm = (1.0f64 + 0.04).sqrt();
@@ -552,4 +535,20 @@ fn a_pendulums_bob_rests_on_a_slope_on_its_own_push() {
         (depth_in - want).abs() * stiffness < 1e-6 * weight,
         "in by {depth_in} m against {want} m"
     );
+}
+
+/// Runs the static scenario `sc` (written to `file` in `d`), which must
+/// reach its equilibrium by the load path (exit 0, no pseudo-transient
+/// continuation): the position of its second point (the weight) and the
+/// rows of tensions.csv.
+fn solved_weight_and_ends(d: &std::path::Path, file: &str, sc: &str) -> ([f64; 3], Vec<Vec<f64>>) {
+    let path = write_scenario(d, file, sc);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    assert!(!text(&o).1.contains("pseudo-transient"), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let weight = [rows[1][col("x")], rows[1][col("y")], rows[1][col("z")]];
+    (weight, read_tensions(&out.join("tensions.csv")))
 }

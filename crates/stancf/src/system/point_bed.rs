@@ -151,25 +151,10 @@ mod tests {
         for c in 0..3 {
             assert!((f.force[c] - expected * n[c]).abs() <= 1e-9 * expected.abs());
         }
-        let h = 1e-7;
-        for j in 0..3 {
-            let (mut rp, mut rm, mut vp, mut vm) = (r, r, rdot, rdot);
-            rp[j] += h;
-            rm[j] -= h;
-            vp[j] += h;
-            vm[j] -= h;
-            let (fp, fm) = (bed.force(&rp, &rdot), bed.force(&rm, &rdot));
-            let (gp, gm) = (bed.force(&r, &vp), bed.force(&r, &vm));
-            for i in 0..3 {
-                let fd = (fp.force[i] - fm.force[i]) / (2.0 * h);
-                assert!((fd - f.d_r[i][j]).abs() <= 1e-6 * 3e6 * 0.08, "d_r {i}{j}");
-                let fd = (gp.force[i] - gm.force[i]) / (2.0 * h);
-                assert!(
-                    (fd - f.d_rdot[i][j]).abs() <= 1e-6 * 3e5 * 0.08,
-                    "d_rdot {i}{j}"
-                );
-            }
-        }
+        let (dr, dv) =
+            crate::water::point::derivative_errors(|r, v| bed.force(r, v), &r, &rdot, 1e-7);
+        assert!(dr <= 1e-6 * 3e6 * 0.08, "d f / d r off by {dr}");
+        assert!(dv <= 1e-6 * 3e5 * 0.08, "d f / d rdot off by {dv}");
         let s = bed.static_force(&r);
         assert!((s.force[2] - 0.8 * 0.1 * 3e6 * (g - 0.5e-4) * n[2]).abs() < 1e-6);
         assert_eq!(s.d_rdot, [[0.0; 3]; 3]);

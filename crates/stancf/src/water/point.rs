@@ -115,6 +115,37 @@ impl PointInWater {
     }
 }
 
+/// The largest differences between a point force's derivatives d_r and
+/// d_rdot at (r, r_dot) and central differences of its force with step
+/// h (a check of the exact derivatives, shared by the point forces'
+/// tests).
+#[cfg(test)]
+pub(crate) fn derivative_errors(
+    force: impl Fn(&[f64; 3], &[f64; 3]) -> PointForce,
+    r: &[f64; 3],
+    rdot: &[f64; 3],
+    h: f64,
+) -> (f64, f64) {
+    let f = force(r, rdot);
+    let (mut by_r, mut by_rdot) = (0.0f64, 0.0f64);
+    for j in 0..3 {
+        let (mut rp, mut rm, mut vp, mut vm) = (*r, *r, *rdot, *rdot);
+        rp[j] += h;
+        rm[j] -= h;
+        vp[j] += h;
+        vm[j] -= h;
+        let (fr_p, fr_m) = (force(&rp, rdot).force, force(&rm, rdot).force);
+        let (fv_p, fv_m) = (force(r, &vp).force, force(r, &vm).force);
+        for i in 0..3 {
+            let dr = (fr_p[i] - fr_m[i]) / (2.0 * h);
+            let dv = (fv_p[i] - fv_m[i]) / (2.0 * h);
+            by_r = by_r.max((dr - f.d_r[i][j]).abs());
+            by_rdot = by_rdot.max((dv - f.d_rdot[i][j]).abs());
+        }
+    }
+    (by_r, by_rdot)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -161,25 +192,9 @@ mod tests {
         let (r, rdot, t) = ([3.0, -2.0, -6.0], [0.2, -0.5, 0.1], 2.0);
         let f = p.force(&r, &rdot, t);
         let scale = f.force.iter().map(|c| c.abs()).fold(1.0, f64::max);
-        let h = 1e-6;
-        for j in 0..3 {
-            let (mut rp, mut rm, mut vp, mut vm) = (r, r, rdot, rdot);
-            rp[j] += h;
-            rm[j] -= h;
-            vp[j] += h;
-            vm[j] -= h;
-            let (fr_p, fr_m) = (p.force(&rp, &rdot, t).force, p.force(&rm, &rdot, t).force);
-            let (fv_p, fv_m) = (p.force(&r, &vp, t).force, p.force(&r, &vm, t).force);
-            for i in 0..3 {
-                let dr = (fr_p[i] - fr_m[i]) / (2.0 * h);
-                let dv = (fv_p[i] - fv_m[i]) / (2.0 * h);
-                assert!((dr - f.d_r[i][j]).abs() < 1e-6 * scale, "d f{i}/d r{j}");
-                assert!(
-                    (dv - f.d_rdot[i][j]).abs() < 1e-6 * scale,
-                    "d f{i}/d rdot{j}"
-                );
-            }
-        }
+        let (dr, dv) = super::derivative_errors(|r, v| p.force(r, v, t), &r, &rdot, 1e-6);
+        assert!(dr < 1e-6 * scale, "d f / d r off by {dr}");
+        assert!(dv < 1e-6 * scale, "d f / d rdot off by {dv}");
     }
 
     #[test]

@@ -54,8 +54,8 @@ struct Outcome {
     /// The wall time of the time steps and their writing (s), after the
     /// static solve.
     stepping_wall: Option<f64>,
-    /// Why a deck alone whose TmaxIC is 0 has no static equilibrium: its
-    /// run wrote MoorDyn's start instead (`Prepared::unbalanced`).
+    /// Why a deck alone has no static equilibrium: its run wrote
+    /// MoorDyn's start instead (`Prepared::unbalanced`).
     unbalanced: Option<String>,
 }
 
@@ -192,8 +192,8 @@ pub(super) fn run_system(
         }
     }
     if let Some(s) = sim.as_mut().filter(|_| outcome.unbalanced.is_some()) {
-        // A deck alone without an equilibrium, TmaxIC 0: MoorDyn's start,
-        // as its Init leaves it (docs/method.md §13.7), its one row.
+        // A deck alone without an equilibrium: MoorDyn's start, as its
+        // Init leaves it (docs/method.md §13.7), its one row.
         let row = dynamic_row(s, Some(sc.end_forces));
         outcome.record_tensions(&row.ends);
         writers.write(&row).map_err(io_err(place.shown))?;

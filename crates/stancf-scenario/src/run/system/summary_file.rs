@@ -124,7 +124,7 @@ pub(super) fn write_summary(
 }
 
 /// summary.json's `step_control` (where a tolerance chose the steps) and
-/// `no_static_equilibrium` (a deck alone, TmaxIC 0, without an
+/// `no_static_equilibrium` (a deck alone without an
 /// equilibrium: MoorDyn's start was written, its `initial` "catenary").
 fn how_it_started_and_stepped(summary: &mut Value, sc: &SystemScenario, outcome: &Outcome) {
     if let (Some(c), Some(tol)) = (outcome.controlled, sc.analysis.force_tolerance) {
@@ -160,7 +160,7 @@ pub(super) fn report(sc: &SystemScenario, outcome: &Outcome, wall: f64, place: &
         if sc.points.len() == 1 { "" } else { "s" },
         match (sc.analysis.kind, &outcome.unbalanced) {
             (AnalysisKind::Static, Some(_)) => {
-                "no static equilibrium: MoorDyn's start (TmaxIC 0) written at t = 0".to_string()
+                "no static equilibrium: MoorDyn's start written at t = 0".to_string()
             }
             (AnalysisKind::Static, None) => {
                 format!("equilibrium in {} increments", outcome.increments)
