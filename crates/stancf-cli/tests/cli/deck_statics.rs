@@ -552,3 +552,56 @@ fn solved_weight_and_ends(d: &std::path::Path, file: &str, sc: &str) -> ([f64; 3
     let weight = [rows[1][col("x")], rows[1][col("y")], rows[1][col("z")]];
     (weight, read_tensions(&out.join("tensions.csv")))
 }
+
+/// A 500 kg clump weight (no volume) between two chains lying on a flat,
+/// frictionless bed at 100 m, the second chain rising to a point 20 m
+/// under the surface: the clump comes to rest on the bed on its own push
+/// (docs/method.md (W42p)), k_p = kBot d (l_1 + l_2) / 2 over the chains'
+/// end elements (7.75 and 8.5 m). Its balance is exact whatever the
+/// chains' Gauss points carry near it: the push is minus its weight and
+/// its lines' pull, so it is in the bed by (m g + F_z) / k_p + delta / 2
+/// (delta = 1e-3 d), and nothing holds it along the bed, F_x = 0; both
+/// to 1e-6 of its weight (the static solve's residual). Measured: 2.186
+/// mm in. Before (W42p) the same clump sank 17.3 mm, carried through the
+/// chains' Gauss points beside it (their ends lifting it by its whole
+/// weight, 4905 N; 228fc80).
+#[test]
+fn a_clump_weight_rests_on_the_bed_between_two_chains() {
+    let d = scratch("clump-on-bed");
+    let (mass, g, diameter, k) = (500.0, 9.81, 0.1, 3e6);
+    let chain = "[[line_types]]\nname = \"chain\"\ndiameter = 0.1\nmass_per_length = 100.0\n\
+                 ea = 5.0e8\n";
+    let line = |id: u32, length: f64, a: u32, b: u32| {
+        format!(
+            "[[lines]]\nid = {id}\ntype = \"chain\"\nlength = {length:?}\nelements = 20\n\
+             a = {a}\nb = {b}\n"
+        )
+    };
+    let sc = format!(
+        "title = \"a clump on the bed\"\n{chain}{}{}{}{}{}\
+         [water]\ndepth = 100.0\ndensity = 1025.0\n[analysis]\ntype = \"static\"\n",
+        toml_point(1, "fixed", [-120.0, 0.0, -100.0]),
+        toml_point(2, "fixed", [100.0, 0.0, -20.0]),
+        toml_point(3, "free", [0.0, 0.0, -100.0]) + &format!("mass = {mass:?}\n"),
+        line(1, 155.0, 1, 3),
+        line(2, 170.0, 3, 2),
+    );
+    let path = write_scenario(&d, "clump.toml", &sc);
+    let out = d.join("out");
+    let o = run_quiet(&path, &out, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
+    let (h, rows) = read_csv(&out.join("points.csv"));
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let clump = &rows[2];
+    let weight = mass * g;
+    let (pull_x, pull_z) = (clump[col("fx")], clump[col("fz")]);
+    let stiffness = k * diameter * 0.5 * (155.0 + 170.0) / 20.0;
+    let want = (weight - pull_z) / stiffness + 0.5e-3 * diameter;
+    let sunk = -100.0 - clump[col("z")];
+    eprintln!("clump in by {sunk:.9e} m against {want:.9e} m, pull along the bed {pull_x:e} N");
+    assert!(pull_x.abs() < 1e-6 * weight, "{pull_x} N along the bed");
+    assert!(
+        (sunk - want).abs() * stiffness < 1e-6 * weight,
+        "in by {sunk} m against {want} m"
+    );
+}
