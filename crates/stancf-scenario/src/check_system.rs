@@ -49,6 +49,26 @@ fn line_words(sc: &SystemScenario, system: &System, i: usize) -> String {
     )
 }
 
+/// `check`'s words on how the system's constraints are enforced
+/// (docs/interface.md `constraint_method`).
+fn route_words(sc: &SystemScenario) -> String {
+    match sc.analysis.constraint_method {
+        stancf::ConstraintMethod::Elimination => {
+            "eliminated: the fixed coordinates leave the steps' unknowns (a system's default; \
+             docs/method.md §6.4)"
+                .into()
+        }
+        stancf::ConstraintMethod::Multiplier if sc.has_clamps() => {
+            "Lagrange multipliers: a line end is clamped in a direction, which only they \
+             hold (docs/method.md §6.10)"
+                .into()
+        }
+        stancf::ConstraintMethod::Multiplier => {
+            "Lagrange multipliers (analysis.constraint_method; docs/method.md §6.3)".into()
+        }
+    }
+}
+
 /// Validates the system of `sc` as `run` does and returns the report.
 pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure> {
     let Prepared {
@@ -123,6 +143,7 @@ pub fn check_system(path: &Path, sc: &SystemScenario) -> Result<String, Failure>
         "degrees of freedom",
         crate::check_bodies::dof_words(sc, &system),
     );
+    line("constraints", route_words(sc));
     line("work", work_words(sc));
     if sc.analysis.kind == AnalysisKind::Dynamic {
         if let Some(step) = stable_step(sc, &system) {

@@ -12,6 +12,7 @@ mod bodies;
 mod bodies_in_waves;
 mod clamped_lines;
 mod compression;
+mod constraint_routes;
 mod coupled_bodies;
 mod coupled_pinned;
 mod coupled_rods;

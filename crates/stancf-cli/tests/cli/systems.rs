@@ -9,35 +9,7 @@ use stancf::catenary::touchdown::{solve_touchdown, TouchdownLine};
 /// point with a clump weight of `mass` kg; `analysis` is the
 /// `[analysis]` body.
 fn bridle(mass: f64, analysis: &str) -> String {
-    format!(
-        r#"
-title = "bridle"
-{}{}{}[[points]]
-id = 3
-type = "free"
-position = [2.5, 0.0, -2.5]
-mass = {mass}
-[[lines]]
-id = 1
-type = "rope"
-length = 4.0
-elements = 8
-a = 1
-b = 3
-[[lines]]
-id = 2
-type = "rope"
-length = 5.0
-elements = 10
-a = 2
-b = 3
-[analysis]
-{analysis}
-"#,
-        rope_type(""),
-        toml_point(1, "fixed", [0.0; 3]),
-        toml_point(2, "fixed", [6.0, 0.0, 1.0]),
-    )
+    bridle_system(mass, ("fixed", "", ""), &format!("[analysis]\n{analysis}"))
 }
 
 /// The lines' forces on the bridle's free point balance its weight:

@@ -84,8 +84,7 @@ pub(super) fn deck_system(
     let (mut analysis, measures, initial, notes) = analysis_part(
         ctx,
         raw_analysis,
-        InitialShape::Static,
-        sc.has_free_bodies(),
+        (InitialShape::Static, sc.has_free_bodies(), sc.has_clamps()),
     )?;
     if deck_alone {
         // As the deck alone: its step is a coupled run's.

@@ -107,8 +107,9 @@ pub(super) fn deck_scenario(
     // points at rod ends come after them (super::rods).
     let (rods, ends) = super::rods::deck_rods(deck, file, &mut bodies, &mut points)?;
     let free_bodies = bodies.iter().any(SystemBody::is_free);
+    let clamps = ends.iter().any(super::rods::DeckLineEnds::clamped);
     let (mut analysis, measures, initial, mut notes) =
-        analysis_part(&ctx, Some(raw), InitialShape::Static, free_bodies)?;
+        analysis_part(&ctx, Some(raw), (InitialShape::Static, free_bodies, clamps))?;
     notes.extend(deck.bodies.iter().filter_map(free_word_note));
     notes.extend(super::rods::rod_file_notes(deck));
     // A deck alone is static; its dtM (or MoorDyn's step from its CFL) is
@@ -128,14 +129,7 @@ pub(super) fn deck_scenario(
     let names = super::names::Names::of_deck(deck, None)
         .with_rods(&rods, deck.points.len())
         .with_host_pins(&bodies);
-    let lines: Vec<SystemLine> = deck
-        .lines
-        .iter()
-        .zip(ends)
-        .map(deck_line)
-        .zip(&tmax0)
-        .map(|(l, t)| SystemLine { tmax0: *t, ..l })
-        .collect();
+    let lines = deck_lines(deck, ends, &tmax0);
     let (failures, failure_notes) = super::failures::deck_failures(deck, file, &points, &lines);
     notes.extend(failure_notes);
     let mut sc = SystemScenario {
@@ -440,6 +434,23 @@ fn free_word_note(b: &DeckBody) -> Option<String> {
             crate::echo::clip(&b.attachment_word, 60)
         )
     })
+}
+
+/// The deck's LINES rows as lines ([`deck_line`]), their ends' points
+/// and clamps `ends`, each with its Syrope line's largest mean tension
+/// before the run of `tmax0` (a deck's SYROPE IC).
+fn deck_lines(
+    deck: &Deck,
+    ends: Vec<super::rods::DeckLineEnds>,
+    tmax0: &[Option<f64>],
+) -> Vec<SystemLine> {
+    deck.lines
+        .iter()
+        .zip(ends)
+        .map(deck_line)
+        .zip(tmax0)
+        .map(|(l, t)| SystemLine { tmax0: *t, ..l })
+        .collect()
 }
 
 /// A LINES row as a line of SAC-2 elements, one per segment, pinned at

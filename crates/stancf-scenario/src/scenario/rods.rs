@@ -227,6 +227,14 @@ pub(super) struct DeckLineEnds {
     pub clamps: [Option<[f64; 3]>; 2],
 }
 
+impl DeckLineEnds {
+    /// Whether an end is clamped (only multipliers hold it, docs/method.md
+    /// §6.10).
+    pub fn clamped(&self) -> bool {
+        self.clamps.iter().any(Option::is_some)
+    }
+}
+
 /// The axis (global, at t = 0) of a rod with a length, where a line with
 /// bending stiffness is clamped; why not for any other: a rod of zero
 /// length (MoorDyn turns it to balance its lines' bending moments, a

@@ -69,8 +69,12 @@ pub(super) fn system_scenario(
     let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
     super::rod_toml::pin_points(&mut rods, &mut points);
     let free_bodies = bodies.iter().any(SystemBody::is_free);
-    let (analysis, measures, initial, mut notes) =
-        analysis_part(ctx, raw.analysis, InitialShape::Reference, free_bodies)?;
+    let clamps = lines.iter().any(|l| l.clamps.iter().any(Option::is_some));
+    let (analysis, measures, initial, mut notes) = analysis_part(
+        ctx,
+        raw.analysis,
+        (InitialShape::Reference, free_bodies, clamps),
+    )?;
     check_clamp_route(ctx, &lines, &analysis)?;
     let lengths: Vec<f64> = lines.iter().map(|l| l.length).collect();
     motions(ctx, &raw.motions, &mut points, &lengths, path, &analysis)?;

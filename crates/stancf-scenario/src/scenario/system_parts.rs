@@ -267,6 +267,14 @@ impl SystemScenario {
         self.bodies.iter().any(SystemBody::is_free)
     }
 
+    /// Whether a line end is clamped in a direction (docs/method.md
+    /// §6.10): only the multiplier route holds it.
+    pub fn has_clamps(&self) -> bool {
+        self.lines
+            .iter()
+            .any(|l| l.clamps.iter().any(Option::is_some))
+    }
+
     /// Whether point p moves with the system's unknowns: a free point or
     /// a point on a free body.
     pub fn point_moves(&self, p: usize) -> bool {

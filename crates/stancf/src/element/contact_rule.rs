@@ -68,12 +68,12 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             return;
         }
         let mut splits = [0.0; 2 * MAX_COEFFICIENTS];
-        let found = self.touchdowns(contact, q, &mut splits);
+        let (gap, found) = self.touchdowns(contact, q, &mut splits);
         let delta = contact.ramp_width();
         let mut start = 0.0;
         for end in splits[..found].iter().copied().chain([1.0]) {
             let span = end - start;
-            let g = self.penetration_at(contact, q, 0.5 * (start + end));
+            let g = evaluate(&gap[..NS], 0.5 * (start + end));
             if span > 0.0 && g > 0.0 {
                 // Past the ramp the push is of degree 2 (NS - 1): the NS
                 // points of the mass's rule take it exactly; in the ramp,
@@ -100,31 +100,40 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// The penetration g (W40) at xi along the element for coordinates q.
-    fn penetration_at(&self, contact: &SeabedContact, q: &[f64; ND], xi: f64) -> f64 {
-        let r = position(&(self.shape)(xi, self.length), q);
-        contact.seabed.penetration(&r)
-    }
-
-    /// The roots of g(xi) = 0 and of g(xi) = delta (the contact ramp's
-    /// edge, (W41)) in (0, 1), ascending, into `roots` (W47c); returns
-    /// how many. g, on a plane bed, is the polynomial of degree NS - 1
-    /// through its values at NS equally spaced points.
-    fn touchdowns(&self, contact: &SeabedContact, q: &[f64; ND], roots: &mut [f64]) -> usize {
+    /// The penetration g (W40) along the element for coordinates q, the
+    /// polynomial of degree NS - 1 (monomial coefficients) through its
+    /// values at NS equally spaced points (on a plane bed g is affine in
+    /// r, and r a polynomial of that degree in xi), and the roots of
+    /// g(xi) = 0 and of g(xi) = delta (the contact ramp's edge, (W41)) in
+    /// (0, 1), ascending, into `roots` (W47c), with how many.
+    fn touchdowns(
+        &self,
+        contact: &SeabedContact,
+        q: &[f64; ND],
+        roots: &mut [f64],
+    ) -> ([f64; MAX_COEFFICIENTS], usize) {
         let (n, mut g) = (NS, [0.0; MAX_COEFFICIENTS]);
-        for (j, gj) in g.iter_mut().enumerate().take(n) {
-            *gj = self.penetration_at(contact, q, j as f64 / (n - 1) as f64);
+        for (gj, shape) in g.iter_mut().zip(&self.bed_samples) {
+            *gj = contact.seabed.penetration(&position(shape, q));
         }
-        let mut p = monomials(&g[..n]);
+        let gap = monomials(&g[..n]);
+        let delta = contact.ramp_width();
+        if lies_outside(&gap[..n], (0.0, delta)) {
+            // Wholly clear of the bed, or wholly past the ramp: no
+            // root of either (most elements, told apart without a
+            // search).
+            return (gap, 0);
+        }
+        let mut p = gap;
         // p and p - delta turn at the same points: found once.
         let (derivative, mut turns) = (derivative(&p[..n]), [0.0; MAX_COEFFICIENTS]);
         let n_turns = real_roots(&derivative[..n - 1], &mut turns);
         let turns = &turns[..n_turns];
         let mut found = monotone_roots(&p[..n], &derivative[..n - 1], turns, roots);
-        p[0] -= contact.ramp_width();
+        p[0] -= delta;
         found += monotone_roots(&p[..n], &derivative[..n - 1], turns, &mut roots[found..]);
         roots[..found].sort_by(f64::total_cmp);
-        found
+        (gap, found)
     }
 }
 
@@ -244,19 +253,23 @@ fn monotone_roots(p: &[f64], dp: &[f64], turns: &[f64], roots: &mut [f64]) -> us
     found
 }
 
-/// Whether p keeps one sign on [0, 1], by its Bernstein coefficients
-/// b_i = sum_{k <= i} C(i, k) / C(n, k) c_k, between which p lies there
-/// (most elements, clear of the bed or resting on it, are so told apart
-/// without a root's search).
+/// Whether p keeps one sign on [0, 1] ([`lies_outside`] of (0, 0)).
 fn one_signed(p: &[f64]) -> bool {
+    lies_outside(p, (0.0, 0.0))
+}
+
+/// Whether p lies below `low` or above `high` on all of [0, 1], by its
+/// Bernstein coefficients b_i = sum_{k <= i} C(i, k) / C(n, k) c_k,
+/// between which p lies there (the convex hull of its control points).
+fn lies_outside(p: &[f64], (low, high): (f64, f64)) -> bool {
     let n = p.len() - 1;
-    let (mut positive, mut negative) = (true, true);
+    let (mut above, mut below) = (true, true);
     for i in 0..=n {
         let b: f64 = (0..=i).map(|k| BERNSTEIN[n][i][k] * p[k]).sum();
-        positive &= b > 0.0;
-        negative &= b < 0.0;
+        above &= b > high;
+        below &= b < low;
     }
-    positive || negative
+    above || below
 }
 
 /// C(i, k) / C(n, k), the monomials' Bernstein coefficients on [0, 1],

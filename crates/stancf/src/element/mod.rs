@@ -172,6 +172,10 @@ pub struct CableElement<const NS: usize, const ND: usize> {
     /// bed, of degree 3 (NS - 1) along the element (docs/method.md §12.2,
     /// (W47a)), on [0, 1], to be mapped onto a piece in the bed.
     bed_points: Vec<SpacePoint<NS>>,
+    /// The shapes at the NS equally spaced points xi_j = j / (NS - 1)
+    /// through whose penetrations the seabed's gap polynomial is found
+    /// (docs/method.md §12.2, (W47c)).
+    bed_samples: Vec<SpatialShape<NS>>,
     /// Consistent mass matrix per coordinate direction,
     /// `M_kl = int rho A N_k N_l dx` (exact); the element mass matrix is M (x) I_3
     /// (docs/method.md §2.1, (M2)).
@@ -313,6 +317,9 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             bending_points: at(&rules.bending),
             mass_points: at(&exact),
             bed_points: at(&bed_rule),
+            bed_samples: (0..NS)
+                .map(|j| shape(j as f64 / (NS - 1) as f64, length))
+                .collect(),
             mass,
             weight_integrals,
             shape,

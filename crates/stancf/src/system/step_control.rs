@@ -13,7 +13,10 @@
 //!   err = max_ends |R_whole(t_b) - R_halves(t_b)| / max(|R_halves(t_b)|, w L g)   (M23c)
 //! ```
 //!
-//! The halves are kept. No asymptotic constant enters: where the step
+//! and the same at the step's middle, the whole step's force cubic there
+//! (what a run writes between the ends of its steps, docs/method.md
+//! §6.5a) against the first half's force at its end. The halves are
+//! kept. No asymptotic constant enters: where the step
 //! resolves the motion the halves' own error is about err / 15 (M23b is
 //! O(dt^4), the state's error smaller still), and where it does not (a
 //! mode the step carries at a wrong frequency, a force noisy from step to
@@ -31,7 +34,7 @@
 //! from the whole step's cubic (§4.8).
 
 use super::run::{watched_step, RunProgress};
-use super::SystemSimulation;
+use super::{EndForce, SystemSimulation};
 use crate::error::{FailureKind, ModelError, SolverError};
 use crate::integrator::{step_count, step_length, StepReport, StepSettings};
 use std::ops::ControlFlow;
@@ -94,23 +97,39 @@ pub struct ControlledSteps {
 /// ([`FailureKind::NotConverged`] names it).
 pub const MIN_STEP_FRACTION: f64 = 1e-6;
 
-/// The largest relative difference between the end forces at t (M23b)
-/// of `whole`, after one step, and of `halves`, after two steps of half
-/// its length from the same state: each end's difference over the larger
-/// of its force and its line's weight (a slack end is judged against the
-/// weight, not against nothing).
-fn force_difference(whole: &SystemSimulation, halves: &SystemSimulation) -> f64 {
+/// The largest relative difference between the end forces of `whole`,
+/// after one step, and of `halves`, after two steps of half its length
+/// from the same state (M23c): at the step's end, each one's force at t
+/// (M23b); and at its middle, where the whole step kept its record, the
+/// whole step's force cubic there (what a run writes between the ends of
+/// its steps, §6.5a) against the first half's force at its end,
+/// `middle`. Each end's difference is over the larger of its force and
+/// its line's weight (a slack end is judged against the weight, not
+/// against nothing).
+fn force_difference(
+    whole: &SystemSimulation,
+    halves: &SystemSimulation,
+    (t_middle, middle): (f64, &[[EndForce; 2]]),
+) -> f64 {
     let g = crate::vec3::norm(halves.topology.gravity());
     let mut worst = 0.0f64;
+    let mut compare = |a: &EndForce, b: &EndForce, weight: f64| {
+        let scale = b.tension().max(weight);
+        if scale > 0.0 {
+            let d = crate::vec3::norm(crate::vec3::sub(a.force, b.force));
+            worst = worst.max(d / scale);
+        }
+    };
     for (i, line) in halves.lines.iter().enumerate() {
         let model = line.model();
         let weight = model.material.density * model.material.area * model.cable.length * g;
         let (a, b) = (whole.end_forces_at_time(i), halves.end_forces_at_time(i));
         for k in 0..2 {
-            let scale = b[k].tension().max(weight);
-            if scale > 0.0 {
-                let d = crate::vec3::norm(crate::vec3::sub(a[k].force, b[k].force));
-                worst = worst.max(d / scale);
+            compare(&a[k], &b[k], weight);
+        }
+        if let (Ok(a), Some(b)) = (whole.end_forces_within(i, t_middle), middle.get(i)) {
+            for k in 0..2 {
+                compare(&a[k], &b[k], weight);
             }
         }
     }
@@ -177,9 +196,10 @@ where
 /// A doubled step's whole: the copy it was taken on and its report.
 type Whole = Result<(SystemSimulation, StepReport), SolverError>;
 
-/// A doubled step's halves: the second half's report and what the
-/// caller's `half` gave after each.
-type Halves<T> = Result<(StepReport, [T; 2]), SolverError>;
+/// A doubled step's halves: the second half's report, what the
+/// caller's `half` gave after each, and each line's end forces at t
+/// (M23b) after the first.
+type Halves<T> = Result<(StepReport, [T; 2], Vec<[EndForce; 2]>), SolverError>;
 
 /// One kept step of a controlled run: taken whole and as two halves
 /// (M23c), the halves kept.
@@ -272,16 +292,18 @@ impl Stepper {
             let dt = left / n;
             let start = sim.clone();
             let watch = self.watch.clone();
+            let t_middle = sim.time() + 0.5 * dt;
             let (whole, halves) = self.doubled(sim, dt, half);
             let tol = self.control.tolerance;
             let (error, mut report, given) = match (whole, halves) {
-                (Ok((whole, w)), Ok((h, given))) => {
+                (Ok((whole, w)), Ok((h, given, middle))) => {
                     iterations += w.newton.iterations + h.newton.iterations;
                     factorizations += w.newton.factorizations + h.newton.factorizations;
-                    (force_difference(&whole, sim), h, given)
+                    let error = force_difference(&whole, sim, (t_middle, &middle));
+                    (error, h, given)
                 }
                 // The whole step failed where its halves did not: too long.
-                (Err(_), Ok((h, given))) => (f64::INFINITY, h, given),
+                (Err(_), Ok((h, given, _))) => (f64::INFINITY, h, given),
                 (_, Err(e)) => {
                     sim.clone_from(&start);
                     self.watch = watch;
@@ -327,6 +349,10 @@ impl Stepper {
     ) -> (Whole, Halves<T>) {
         let mut whole = sim.clone();
         whole.set_time_step(dt);
+        // Its force cubic is compared with the halves' at the middle
+        // (M23c), where the system's state between the ends of a step is
+        // interpolated (§6.5a; not with a free body or an internal state).
+        let _ = whole.record_steps(true);
         let mut watch = self.watch.clone();
         let halvings = sim.step_halvings();
         let whole = watched_step(&mut whole, &mut watch, halvings).map(|r| (whole, r));
@@ -341,11 +367,14 @@ impl Stepper {
         sim.set_time_step(0.5 * dt);
         let halves = watched_step(sim, &mut self.watch, halvings).and_then(|a| {
             let first = half(sim, 0.5 * dt);
+            let middle = (0..sim.lines.len())
+                .map(|i| sim.end_forces_at_time(i))
+                .collect();
             let mut b = watched_step(sim, &mut self.watch, halvings)?;
             let second = half(sim, 0.5 * dt);
             b.newton.iterations += a.newton.iterations;
             b.newton.factorizations += a.newton.factorizations;
-            Ok((b, [first, second]))
+            Ok((b, [first, second], middle))
         });
         (whole, halves)
     }

@@ -167,6 +167,46 @@ pub fn one_rope(
     )
 }
 
+/// A bridle: two ropes (type [`rope_type`] with `type_keys`), 4 m from
+/// point 1, fixed at the origin, and 5 m from point 2 (of type `point2`,
+/// at [6, 0, 1]), meet at free point 3 with a clump weight of `mass` kg;
+/// `line2_keys` (TOML lines, or "") are added to line 2 and `rest` (the
+/// `[[motions]]`, `[analysis]` and `[output]` sections) appended.
+pub fn bridle_system(
+    mass: f64,
+    (point2, type_keys, line2_keys): (&str, &str, &str),
+    rest: &str,
+) -> String {
+    format!(
+        r#"title = "bridle"
+{}{}{}[[points]]
+id = 3
+type = "free"
+position = [2.5, 0.0, -2.5]
+mass = {mass}
+[[lines]]
+id = 1
+type = "rope"
+length = 4.0
+elements = 8
+a = 1
+b = 3
+[[lines]]
+id = 2
+type = "rope"
+length = 5.0
+elements = 10
+a = 2
+b = 3
+{line2_keys}
+{rest}
+"#,
+        rope_type(type_keys),
+        toml_point(1, "fixed", [0.0; 3]),
+        toml_point(2, point2, [6.0, 0.0, 1.0]),
+    )
+}
+
 /// The paper's free pendulum (4 SAC-2, pinned at A, gravity) with the
 /// given title, step and duration: cheap, smooth, and with reactions.
 pub fn pendulum(title: &str, time_step: f64, duration: f64, every: usize) -> String {
