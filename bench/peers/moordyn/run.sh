@@ -18,7 +18,9 @@
 # the published frequency, out/viv_check.md, minutes);
 # `--check-all` runs check_all.py (`stancf check` over every third-party
 # deck, bodies and rods included: out/check_all.md, a minute, no MoorDyn);
-# `--tables-only` redraws the table and figure from out/moordyn_race.csv.
+# `--tables-only` redraws the table and figure from out/moordyn_race.csv;
+# `--repeat-cheapest [N]` runs race_repeat.py (the last race's cheapest
+# runs at 1 %, each N times: out/race_repeat.md, a few minutes).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
@@ -48,6 +50,12 @@ fi
 if [ "${1:-}" = "--bodies-check" ]; then
   shift
   exec env PYTHONWARNINGS=ignore "$venv/bin/python" bodies_check.py "$@"
+fi
+if [ "${1:-}" = "--repeat-cheapest" ]; then
+  # race_repeat.py: the last race's cheapest runs at 1 % of OC4 and the
+  # steep wave, each run N times in alternation (out/race_repeat.md)
+  shift
+  exec env PYTHONWARNINGS=ignore "$venv/bin/python" race_repeat.py "$@"
 fi
 if [ "${1:-}" = "--coupling-check" ]; then
   "$venv/bin/python" -c "import scipy" 2>/dev/null || "$venv/bin/pip" install --quiet scipy
