@@ -430,11 +430,11 @@ pub(super) fn analysis_part(
 /// (docs/method.md §6.4, §11.3): by elimination, whose step solves the
 /// free coordinates alone. The multipliers of the other route are
 /// unknowns of their own in each node's block: on the OC4 race deck (18
-/// SAC-2 per chain, Galerkin, 2 s steps) a chain's block band is 44 wide
-/// with them and 35 without, and its factorization fills 80 of the 88
-/// super-diagonals its pivoting may reach against 62 of 70. A clamp in a
-/// direction holds a combination of coordinates, which only multipliers
-/// hold (docs/method.md §6.10).
+/// SAC-2 per chain, Galerkin, 2 s steps) a chain's step has half-bandwidths
+/// 44 with them and 35 without, and its factorization fills 79 to 81 of
+/// the 88 super-diagonals its pivoting may reach against 62 to 63 of 70.
+/// A clamp in a direction holds a combination of coordinates, which only
+/// multipliers hold (docs/method.md §6.10).
 fn system_constraint_route(clamps: bool) -> ConstraintMethod {
     if clamps {
         ConstraintMethod::Multiplier

@@ -69,7 +69,7 @@ pub(super) fn system_scenario(
     let lines = lines(ctx, &raw.lines, &line_types, (&points, &bodies))?;
     super::rod_toml::pin_points(&mut rods, &mut points);
     let free_bodies = bodies.iter().any(SystemBody::is_free);
-    let clamps = lines.iter().any(|l| l.clamps.iter().any(Option::is_some));
+    let clamps = lines.iter().any(SystemLine::clamped);
     let (analysis, measures, initial, mut notes) = analysis_part(
         ctx,
         raw.analysis,

@@ -172,6 +172,14 @@ pub struct SystemLine {
     pub tmax0: Option<f64>,
 }
 
+impl SystemLine {
+    /// Whether an end is clamped in a direction (docs/method.md §6.10):
+    /// only the multiplier route holds it.
+    pub fn clamped(&self) -> bool {
+        self.clamps.iter().any(Option::is_some)
+    }
+}
+
 /// A validated system scenario.
 #[derive(Clone, Debug)]
 pub struct SystemScenario {
@@ -270,9 +278,7 @@ impl SystemScenario {
     /// Whether a line end is clamped in a direction (docs/method.md
     /// §6.10): only the multiplier route holds it.
     pub fn has_clamps(&self) -> bool {
-        self.lines
-            .iter()
-            .any(|l| l.clamps.iter().any(Option::is_some))
+        self.lines.iter().any(SystemLine::clamped)
     }
 
     /// Whether point p moves with the system's unknowns: a free point or
