@@ -55,6 +55,9 @@ GRIDS = {
                    moordyn=[(1, 8e-4)]),
         full=dict(stancf=[(r, dt) for r in (0.25, 0.375, 0.5, 0.75, 1, 2)
                           for dt in (0.1, 0.05, 0.025, 0.0125)],
+                  # Steps longer than the 0.1 s output, written between
+                  # them from the steps' cubics (docs/method.md §6.5a).
+                  between=[(r, dt) for r in (0.25, 0.375, 0.5) for dt in (0.2, 0.5, 1.0)],
                   controlled=[(r, 1.0, None, tol) for r in (0.5, 0.75)
                               for tol in (1e-2, 3e-3, 1e-3)],
                   reference=(4, 0.00625, None), check=(2, 0.0125, None),

@@ -239,18 +239,27 @@ impl SystemSimulation {
         Ok(())
     }
 
-    /// The lines' predicted unknowns and the free points' (Taylor
-    /// expansion with the last step's acceleration, docs/method.md §4.8).
+    /// The lines' predicted unknowns, and the free points' (docs/method.md
+    /// §4.8, §11.3): a line end's position coordinates at a free point are
+    /// the point's unknowns, so the line's prediction (its last step's
+    /// cubic extrapolated) is the point's too. A point no line end is at
+    /// takes the Taylor expansion with its last step's acceleration.
     pub(super) fn gather_prediction(&mut self) {
         for (i, line) in self.lines.iter_mut().enumerate() {
             let map = &self.layout.maps[i];
             let xl = line.unknowns();
             map.scatter(xl, &mut self.x);
         }
+        let ends = self.topology.line_ends();
+        let predicted_by_a_line = |p: usize| {
+            ends.iter()
+                .flatten()
+                .any(|e| matches!(e, End::Point(q) if *q == p))
+        };
         let layout = &self.layout.time;
         let h = self.slab.dt;
         for (p, idx) in self.point_index.iter().enumerate() {
-            if idx.is_empty() {
+            if idx.is_empty() || predicted_by_a_line(p) {
                 continue;
             }
             let m = &self.points[p];
