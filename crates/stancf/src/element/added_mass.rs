@@ -138,7 +138,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// Adds the added mass's part of Hessian block (m, n) (W29).
+    /// Adds the added mass's part of Hessian block (m, n) (W29) that the
+    /// time points' C_g and G_g do not carry: `sum_g w_g dt (Tdot_m Tdot_n
+    /// V_g + Tdot_m T_n X_g)` (its `T_m Tdot_n X_g^T` and `T_m T_n Z_g` are
+    /// combined into them, [`super::slab`]'s `combine_at_points`).
     pub(super) fn add_entrained_block(
         &self,
         slab: &TimeSlab,
@@ -151,12 +154,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
             let (t, td) = (&tp.shape.t, &tp.shape.t_dot);
             let a = tp.w_dt * td[m] * td[n];
             let b = tp.w_dt * td[m] * t[n];
-            let c = tp.w_dt * t[m] * td[n];
-            let d = tp.w_dt * t[m] * t[n];
-            let (v, x, z) = (&derivs.vv[gi], &derivs.vq[gi], &derivs.qq[gi]);
-            for i in 0..ND {
-                for j in 0..ND {
-                    out[i][j] += a * v[i][j] + b * x[i][j] + c * x[j][i] + d * z[i][j];
+            let (v, x) = (&derivs.vv[gi], &derivs.vq[gi]);
+            for ((orow, vrow), xrow) in out.iter_mut().zip(v).zip(x) {
+                for ((o, vv), xv) in orow.iter_mut().zip(vrow).zip(xrow) {
+                    *o += a * vv + b * xv;
                 }
             }
         }

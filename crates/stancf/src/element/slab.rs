@@ -168,6 +168,10 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 }
             }
         }
+        out.combined = with_hessian && rates;
+        if out.combined {
+            combine_at_points(out, np);
+        }
     }
 
     /// Hessian block d2A^e / dy_m dy_n (ND x ND) from the derivatives
@@ -183,12 +187,11 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         out: &mut [[f64; ND]; ND],
     ) {
         *out = [[0.0; ND]; ND];
-        if derivs.in_plane {
-            self.elastic_and_kinetic_block::<2>(slab, derivs, m, n, out);
-        } else {
-            self.elastic_and_kinetic_block::<3>(slab, derivs, m, n, out);
-        }
-        if derivs.has_drag || derivs.has_damping {
+        // The strain energy's -w T_m T_n K_g, alone or (combined) in
+        // G_g; then the kinetic part. (In this order a line in water with
+        // zero coefficients, C_g = 0 and G_g = -K_g exactly, gets the
+        // line's blocks in air to the bit.)
+        if derivs.combined {
             for (gi, tp) in slab.points.iter().enumerate() {
                 let a = tp.w_dt * tp.shape.t[m] * tp.shape.t_dot[n];
                 let b = tp.w_dt * tp.shape.t[m] * tp.shape.t[n];
@@ -199,6 +202,15 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                     }
                 }
             }
+        } else if derivs.in_plane {
+            self.elastic_block::<2>(slab, derivs, m, n, out);
+        } else {
+            self.elastic_block::<3>(slab, derivs, m, n, out);
+        }
+        if derivs.in_plane {
+            self.kinetic_block::<2>(slab, m, n, out);
+        } else {
+            self.kinetic_block::<3>(slab, m, n, out);
         }
         if derivs.added_mass.active {
             self.add_entrained_block(slab, &derivs.added_mass, m, n, out);
@@ -211,13 +223,13 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
         }
     }
 
-    /// The strain energy's and the kinetic energy's share of block (m, n)
-    /// of [`Self::slab_hessian_block`], added to `out` in the first D
+    /// The strain energy's share of block (m, n) of
+    /// [`Self::slab_hessian_block`], added to `out` in the first D
     /// components of every node vector (2 for a line held in a plane:
     /// its z rows and columns stay zero, §7.10):
-    /// `C_mn M (x) I_D - sum_g w_g dt phi_m phi_n K_g`.
+    /// `- sum_g w_g dt phi_m phi_n K_g`.
     #[inline(always)]
-    fn elastic_and_kinetic_block<const D: usize>(
+    fn elastic_block<const D: usize>(
         &self,
         slab: &TimeSlab,
         derivs: &SlabDerivatives<ND>,
@@ -239,6 +251,18 @@ impl<const NS: usize, const ND: usize> CableElement<NS, ND> {
                 }
             }
         }
+    }
+
+    /// The kinetic energy's share of block (m, n), `C_mn M (x) I_D`, in
+    /// the first D components as [`Self::elastic_block`].
+    #[inline(always)]
+    fn kinetic_block<const D: usize>(
+        &self,
+        slab: &TimeSlab,
+        m: usize,
+        n: usize,
+        out: &mut [[f64; ND]; ND],
+    ) {
         let cm = slab.kinetic[m][n];
         for k in 0..NS {
             for l in 0..NS {
@@ -281,6 +305,10 @@ pub struct SlabDerivatives<const ND: usize> {
     pub water_work: f64,
     pub c_at_points: Vec<[[f64; ND]; ND]>,
     pub g_at_points: Vec<[[f64; ND]; ND]>,
+    /// Whether the time points' matrices are combined by the time
+    /// shapes' products they take in a block ([`combine_at_points`]):
+    /// then G_g holds `G_g - K_g + Z_g` and C_g holds `C_g + X_g^T`.
+    pub combined: bool,
     /// The entrained water's matrices (W28) at the time points, used
     /// only if the line is in water with added mass (docs/method.md §12.5).
     pub added_mass: super::AddedMassDerivatives<ND>,
@@ -307,9 +335,37 @@ impl<const ND: usize> Default for SlabDerivatives<ND> {
             water_work: 0.0,
             c_at_points: Vec::new(),
             g_at_points: Vec::new(),
+            combined: false,
             added_mass: super::AddedMassDerivatives::default(),
             visco: super::viscoelastic::ViscoDerivatives::default(),
             viv: super::viv::VivDerivatives::default(),
+        }
+    }
+}
+
+/// Combines each time point's matrices by the product of time shapes
+/// they take in a Hessian block (M11), (W29): the strain energy's K_g and
+/// the entrained water's Z_g go with `T_m T_n` as drag's G_g does, X_g^T
+/// with `T_m Tdot_n` as C_g does. A block then sums four matrices a time
+/// point (C, G and the water's V, X) instead of seven.
+fn combine_at_points<const ND: usize>(out: &mut SlabDerivatives<ND>, np: usize) {
+    let added = out.added_mass.active;
+    for gi in 0..np {
+        let (k, g) = (&out.k_at_points[gi], &mut out.g_at_points[gi]);
+        for (grow, krow) in g.iter_mut().zip(k) {
+            for (gv, kv) in grow.iter_mut().zip(krow) {
+                *gv -= kv;
+            }
+        }
+        if added {
+            let (x, z) = (&out.added_mass.vq[gi], &out.added_mass.qq[gi]);
+            let c = &mut out.c_at_points[gi];
+            for i in 0..ND {
+                for j in 0..ND {
+                    g[i][j] += z[i][j];
+                    c[i][j] += x[j][i];
+                }
+            }
         }
     }
 }

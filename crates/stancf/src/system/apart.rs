@@ -16,16 +16,23 @@ use crate::integrator::Simulation;
 use crate::solver::NewtonReport;
 use rayon::prelude::*;
 
-/// The fewest elements in all for which the lines are solved on rayon's
-/// threads: below it waking a thread costs more than it saves. Measured
-/// on this 2-core machine, OC4 deck (3 lines, 300 s at dt 0.1): at 30
-/// elements in all 0.90 s serial against 0.93 s on two threads, at 60
-/// 2.05 s against 1.95 s, at 120 (serial through a one-thread pool)
-/// 5.0 s against 4.0 s.
-pub const PARALLEL_LINES_ELEMENTS: usize = 48;
+/// The least work of a step, elements in all times the Newton iterations
+/// of the last step (at least 2), for which the lines are solved on
+/// rayon's threads: below it waking a thread costs more than it saves
+/// (docs/method.md §11.14). 48 elements at 2 iterations. Measured on this
+/// 2-core machine, the OC4 race deck (3 lines, 300 s; stepping time, one
+/// thread against two): 21 elements in sections at dt 0.1 (2.2
+/// iterations a step) 0.99 s against 1.13 s, at dt 0.5 (4.8) 0.40 s
+/// against 0.36 s, at dt 2 (7 to 10) 0.271 s against 0.207 s; 30
+/// elements at dt 0.1 (2.2) 1.28 s against 1.40 s; before, at dt 0.1,
+/// 60 elements 2.05 s against 1.95 s, 120 elements 5.0 s against 4.0 s.
+pub const PARALLEL_LINES_WORK: usize = 96;
 
-/// Solves every line's step apart (each predicted by its `begin_step`);
-/// on success the lines hold their converged unknowns. The report: the
+/// Solves every line's step apart (each predicted by its `begin_step`),
+/// on rayon's threads if the step's work, its elements times
+/// `last_iterations` (the last step's, 0 before the first), reaches
+/// [`PARALLEL_LINES_WORK`]; on success the lines hold their converged
+/// unknowns. The report: the
 /// most iterations and factorizations of a line (the step's Newton
 /// rounds, as the joint solve counts them) and the largest residual and
 /// increment. On failure, the first failing line's error (in line
@@ -34,13 +41,15 @@ pub const PARALLEL_LINES_ELEMENTS: usize = 48;
 pub(super) fn solve_lines_apart(
     lines: &mut [Simulation],
     dt: f64,
+    last_iterations: usize,
 ) -> Result<NewtonReport, SolverError> {
     for line in lines.iter_mut() {
         line.keep_prediction();
     }
     let solve = |(i, line): (usize, &mut Simulation)| line.solve_slab(dt).map_err(|e| (i, e));
     let elements: usize = lines.iter().map(|l| l.model().nodes() - 1).sum();
-    let step = if lines.len() > 1 && elements >= PARALLEL_LINES_ELEMENTS {
+    let work = elements * last_iterations.max(2);
+    let step = if lines.len() > 1 && work >= PARALLEL_LINES_WORK {
         lines
             .par_iter_mut()
             .enumerate()

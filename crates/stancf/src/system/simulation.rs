@@ -60,6 +60,10 @@ pub struct SystemSimulation {
     pub(super) topology: Topology,
     /// The line simulations, owners of the line models.
     pub(super) lines: Vec<Simulation>,
+    /// The most Newton iterations of a line in the last step its lines
+    /// were solved apart (0 before): the step's work, which decides
+    /// whether they are solved on rayon's threads (§11.14).
+    pub(super) apart_iterations: usize,
     pub(super) layout: SystemLayout,
     pub(super) settings: StepSettings,
     pub(super) slab: TimeSlab,
@@ -194,6 +198,7 @@ impl SystemSimulation {
         } = frame;
         let n = layout.size;
         Ok(SystemSimulation {
+            apart_iterations: 0,
             failures: Default::default(),
             mass,
             body_rows: vec![0.0; n],

@@ -38,7 +38,10 @@ impl SystemSimulation {
             }
             report
         } else {
-            super::apart::solve_lines_apart(&mut self.lines, dt)?
+            let report =
+                super::apart::solve_lines_apart(&mut self.lines, dt, self.apart_iterations)?;
+            self.apart_iterations = report.iterations;
+            report
         };
         self.finish_lines(report)?;
         self.add_point_water_work();

@@ -29,7 +29,8 @@ fn stepped(system: System) -> Vec<stancf::State> {
 
 #[test]
 fn independent_lines_step_each_as_it_would_alone() {
-    // 48 elements in all: on rayon's threads (PARALLEL_LINES_ELEMENTS).
+    // 48 elements in all: on rayon's threads (PARALLEL_LINES_WORK at 2
+    // iterations a step).
     let together = stepped(ropes(&[0, 1, 2, 3], 4));
     for (k, line) in together.iter().enumerate() {
         let alone = stepped(ropes(&[k], 4));

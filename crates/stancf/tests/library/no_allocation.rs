@@ -334,10 +334,11 @@ fn allocations_in_50_steps(
 }
 
 /// A system without free points (docs/method.md §11.14): 2 and 3 lines of
-/// 10 elements (under 48 in all: solved one after the other), each from a
-/// fixed anchor to a swinging fairlead; after the first step, stepping
+/// 10 elements (at 2 Newton iterations a step, a step's work under
+/// `PARALLEL_LINES_WORK`: solved one after the other), each from a fixed
+/// anchor to a swinging fairlead; after the first step, stepping
 /// allocates nothing, with Newton and modified Newton (each line's own
-/// kept factors). From 48 elements the lines go to rayon's threads, whose
+/// kept factors). Above that work the lines go to rayon's threads, whose
 /// job queue allocates a block now and then (once in 50 steps of 4 lines
 /// of 15 elements, measured): rayon's, not the step's.
 fn stepping_lines_apart_allocates_nothing() {
