@@ -278,11 +278,14 @@ mod joined {
         assert!(d[2] <= 1e-9, "{d:?}");
     }
 
-    /// The largest difference over 1 s between the one line and the two
-    /// joined lines (fraction of the length) with n elements per line,
-    /// starting from their equilibria, while end B swings (0.1 m along
-    /// x, 0.05 m along z, 1 s period, ramped in over 0.5 s).
-    fn moving_difference(n: usize, dt: f64, scheme: TimeScheme) -> f64 {
+    /// The one line and the two joined lines (n elements per line) from
+    /// their equilibria, stepping by `dt` with `scheme`, end B swinging
+    /// (0.1 m along x, 0.05 m along z, 1 s period, ramped in over 0.5 s).
+    fn swinging_one_and_two(
+        n: usize,
+        dt: f64,
+        scheme: TimeScheme,
+    ) -> (SystemSimulation, SystemSimulation) {
         let motion = Oscillation {
             amplitude: [0.1, 0.0, 0.05],
             period: 1.0,
@@ -296,8 +299,17 @@ mod joined {
             time_scheme: scheme,
             ..StepSettings::default()
         };
-        let mut a = SystemSimulation::new(one, s1.line_states(), settings.clone()).expect("one");
-        let mut b = SystemSimulation::new(two, s2.line_states(), settings).expect("two");
+        let a = SystemSimulation::new(one, s1.line_states(), settings.clone()).expect("one");
+        let b = SystemSimulation::new(two, s2.line_states(), settings).expect("two");
+        (a, b)
+    }
+
+    /// The largest difference over 1 s between the one line and the two
+    /// joined lines (fraction of the length) with n elements per line,
+    /// starting from their equilibria, while end B swings (0.1 m along
+    /// x, 0.05 m along z, 1 s period, ramped in over 0.5 s).
+    fn moving_difference(n: usize, dt: f64, scheme: TimeScheme) -> f64 {
+        let (mut a, mut b) = swinging_one_and_two(n, dt, scheme);
         let mut worst: f64 = 0.0;
         for _ in 0..(1.0 / dt).round() as usize {
             a.step().expect("one line step");
@@ -318,24 +330,10 @@ mod joined {
     }
 
     /// Newton iterations over 1 s of the one line and of the two joined
-    /// lines, with the Galerkin step `dt` and n elements per line, B
-    /// swinging as in [`moving_difference`].
+    /// lines, with the Galerkin step `dt` and n elements per line
+    /// ([`swinging_one_and_two`]).
     fn iterations_one_and_two(n: usize, dt: f64) -> (usize, usize) {
-        let motion = Oscillation {
-            amplitude: [0.1, 0.0, 0.05],
-            period: 1.0,
-            phase: 0.0,
-            ramp: 0.5,
-        };
-        let (_, s1, s2) = static_difference(n);
-        let (one, two) = one_and_two(n, Some(motion));
-        let settings = StepSettings {
-            time_step: dt,
-            time_scheme: TimeScheme::Galerkin,
-            ..StepSettings::default()
-        };
-        let mut a = SystemSimulation::new(one, s1.line_states(), settings.clone()).expect("one");
-        let mut b = SystemSimulation::new(two, s2.line_states(), settings).expect("two");
+        let (mut a, mut b) = swinging_one_and_two(n, dt, TimeScheme::Galerkin);
         let (mut ia, mut ib) = (0, 0);
         for _ in 0..(1.0 / dt).round() as usize {
             ia += a.step().expect("one line step").newton.iterations;
