@@ -11,11 +11,11 @@ writing), and out/race_repeat.md gives each code's least and median time
 and their ratios.
 """
 import os
-import statistics
 import sys
 
 import exudyn_models as em
 import race
+from repeat_runs import repeat_alternating, table_row, write_table
 
 LEVEL = 0.1
 
@@ -75,22 +75,11 @@ def main():
         if ex is None or st is None:
             lines.append("| %s | none within 0.1 mm | | | | | |" % problem)
             continue
+        name = problem if elements is None else "%s, %d elements" % (problem, elements)
         runs = (rerun(problem, ex), rerun(problem, st))
-        times = ([], [])
-        for k in range(n):
-            for code in (0, 1):
-                times[code].append(runs[code]())
-            print(problem, k, times[0][-1], times[1][-1], flush=True)
-        least = [min(t) for t in times]
-        median = [statistics.median(t) for t in times]
-        lines.append("| %s | %s | %s | %.3f / %.3f | %.3f / %.3f | **%.2f** | %.2f |" % (
-            problem if elements is None else "%s, %d elements" % (problem, elements),
-            text_of(ex), text_of(st), least[0], median[0], least[1], median[1],
-            least[0] / least[1], median[0] / median[1]))
-    text = "\n".join(lines) + "\n"
-    print(text)
-    with open(os.path.join(race.OUT, "race_repeat.md"), "w") as f:
-        f.write(text)
+        least, median = repeat_alternating(name, runs, n)
+        lines.append(table_row(name, (text_of(ex), text_of(st)), least, median))
+    write_table(os.path.join(race.OUT, "race_repeat.md"), lines)
 
 
 if __name__ == "__main__":

@@ -13,10 +13,11 @@ ratios. The riser is left out: MoorDyn's cheapest run at 1 % takes two
 minutes and the ratio was above 50.
 """
 import os
-import statistics
 import sys
 
 import race
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from repeat_runs import repeat_alternating, table_row, write_table  # noqa: E402
 from race_problems import OC4, STEEP, segments
 from race_tables import cheapest, read_rows, run_text
 
@@ -71,20 +72,9 @@ def main():
             lines.append("| %s | none within 1 %% | | | | | |" % pb.name)
             continue
         runs = (rerun(pb, md), rerun(pb, st))
-        times = ([], [])
-        for k in range(n):
-            for code in (0, 1):
-                times[code].append(runs[code]())
-            print(pb.name, k, times[0][-1], times[1][-1], flush=True)
-        least = [min(t) for t in times]
-        median = [statistics.median(t) for t in times]
-        lines.append("| %s | %s | %s | %.3f / %.3f | %.3f / %.3f | **%.2f** | %.2f |" % (
-            pb.name, run_text(md), run_text(st), least[0], median[0], least[1], median[1],
-            least[0] / least[1], median[0] / median[1]))
-    text = "\n".join(lines) + "\n"
-    print(text)
-    with open(os.path.join(race.OUT, "race_repeat.md"), "w") as f:
-        f.write(text)
+        least, median = repeat_alternating(pb.name, runs, n)
+        lines.append(table_row(pb.name, (run_text(md), run_text(st)), least, median))
+    write_table(os.path.join(race.OUT, "race_repeat.md"), lines)
 
 
 if __name__ == "__main__":
