@@ -62,6 +62,7 @@ pub mod solver;
 pub mod stability;
 pub mod statics;
 pub mod system;
+mod threads;
 pub mod vec3;
 pub mod water;
 

@@ -22,7 +22,11 @@ pub const PARALLEL_ELEMENTS: usize = 1024;
 /// Jacobian, the serial loop: the Hessian blocks are added serially and
 /// outweigh the share that would run in parallel (measured, §7.8).
 fn element_batch(elements: usize, with_jacobian: bool) -> usize {
-    if with_jacobian || elements < PARALLEL_ELEMENTS || rayon::current_num_threads() < 2 {
+    if with_jacobian
+        || elements < PARALLEL_ELEMENTS
+        || !crate::threads::usable()
+        || rayon::current_num_threads() < 2
+    {
         1
     } else {
         elements

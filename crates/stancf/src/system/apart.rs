@@ -49,7 +49,7 @@ pub(super) fn solve_lines_apart(
     let solve = |(i, line): (usize, &mut Simulation)| line.solve_slab(dt).map_err(|e| (i, e));
     let elements: usize = lines.iter().map(|l| l.model().nodes() - 1).sum();
     let work = elements * last_iterations.max(2);
-    let step = if lines.len() > 1 && work >= PARALLEL_LINES_WORK {
+    let step = if lines.len() > 1 && work >= PARALLEL_LINES_WORK && crate::threads::usable() {
         lines
             .par_iter_mut()
             .enumerate()
