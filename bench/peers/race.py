@@ -259,6 +259,27 @@ def main():
     write_outputs(rows)
 
 
+def series_key(r):
+    """A run's series: same problem, code, scheme, element and mesh."""
+    return (r["problem"], r["code"], r["scheme"], r["element"], r["elements"])
+
+
+def reaches(rows, r, acc):
+    """The run is within `acc`, and so is every run of its series at a
+    smaller step: a lucky hit of a non-monotone error does not count."""
+    def ok(x):
+        return x["error_mm"] == x["error_mm"] and x["error_mm"] <= acc
+    return ok(r) and all(ok(x) for x in rows if series_key(x) == series_key(r) and x["dt"] < r["dt"])
+
+
+def cheapest(rows, problem, code, acc, elements=None, key="wall_s"):
+    """The cheapest run of `code` on `problem` (on `elements`, if given)
+    that reaches `acc`, by `key`; None if none does."""
+    ok = [r for r in rows if r["problem"] == problem and r["code"] == code
+          and (elements is None or r["elements"] == elements) and reaches(rows, r, acc)]
+    return min(ok, key=lambda r: r[key]) if ok else None
+
+
 def write_outputs(rows):
     with open(os.path.join(OUT, "work_precision.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -275,22 +296,6 @@ def write_outputs(rows):
         return "%s %s %d el, dt %.4g (%.3g mm)" % (
             r["scheme"], r["element"], r["elements"], r["dt"], r["error_mm"])
 
-    def series_key(r):
-        return (r["problem"], r["code"], r["scheme"], r["element"], r["elements"])
-
-    def reaches(r, acc):
-        """The run is within `acc`, and so is every run of its series
-        (same code, scheme, element and mesh) at a smaller step: a lucky
-        hit of a non-monotone error does not count."""
-        def ok(x):
-            return x["error_mm"] == x["error_mm"] and x["error_mm"] <= acc
-        return ok(r) and all(ok(x) for x in rows if series_key(x) == series_key(r) and x["dt"] < r["dt"])
-
-    def cheapest(problem, code, acc, elements=None, key="wall_s"):
-        ok = [r for r in rows if r["problem"] == problem and r["code"] == code
-              and (elements is None or r["elements"] == elements) and reaches(r, acc)]
-        return min(ok, key=lambda r: r[key]) if ok else None
-
     # The pendulum has a mesh-converged solution: any mesh may win. The
     # impact depends on the mesh: the same mesh for both codes.
     groups = [("pendulum", None)] + [
@@ -302,9 +307,9 @@ def write_outputs(rows):
                      "| Exudyn / stancf | stancf's whole process (s) | Exudyn / stancf's process |")
         lines.append("|---|---|---|---|---|---|---|---|")
         for acc in [0.1, 0.01]:
-            e = cheapest(problem, "exudyn", acc, elements)
-            st = cheapest(problem, "stancf", acc, elements)
-            sp = cheapest(problem, "stancf", acc, elements, key="process_s")
+            e = cheapest(rows, problem, "exudyn", acc, elements)
+            st = cheapest(rows, problem, "stancf", acc, elements)
+            sp = cheapest(rows, problem, "stancf", acc, elements, key="process_s")
             ratio = "%.2f" % (e["wall_s"] / st["wall_s"]) if e and st else "-"
             ratio_p = "%.2f" % (e["wall_s"] / sp["process_s"]) if e and sp else "-"
             lines.append("| %g mm | %s | %s | %s | %s | %s | %s | %s |" % (

@@ -20,23 +20,6 @@ from repeat_runs import repeat_alternating, table_row, write_table
 LEVEL = 0.1
 
 
-def cheapest(all_rows, problem, code, elements):
-    """The cheapest run of `code` within 0.1 mm whose series (same scheme,
-    element and mesh) is within it at every smaller step too, as the race's
-    tables judge it; None if there is none."""
-    def series(r):
-        return (r["problem"], r["code"], r["scheme"], r["element"], r["elements"])
-
-    def ok(r):
-        return r["error_mm"] == r["error_mm"] and r["error_mm"] <= LEVEL
-
-    mine = [r for r in all_rows if r["problem"] == problem and r["code"] == code
-            and (elements is None or r["elements"] == elements)]
-    good = [r for r in mine
-            if ok(r) and all(ok(x) for x in mine if series(x) == series(r) and x["dt"] < r["dt"])]
-    return min(good, key=lambda r: r["wall_s"]) if good else None
-
-
 def rerun(problem, row):
     """A callable that runs `row` again and returns its time as the race
     takes it."""
@@ -70,8 +53,8 @@ def main():
              "stancf least / median (s) | Exudyn / stancf, least | of medians |",
              "|---|---|---|---|---|---|---|"]
     for problem, elements in (("pendulum", None), ("impact", 16)):
-        ex = cheapest(all_rows, problem, "exudyn", elements)
-        st = cheapest(all_rows, problem, "stancf", elements)
+        ex = race.cheapest(all_rows, problem, "exudyn", LEVEL, elements)
+        st = race.cheapest(all_rows, problem, "stancf", LEVEL, elements)
         if ex is None or st is None:
             lines.append("| %s | none within 0.1 mm | | | | | |" % problem)
             continue

@@ -253,16 +253,10 @@ impl SystemSimulation {
             let xl = line.unknowns();
             map.scatter(xl, &mut self.x);
         }
-        let ends = self.topology.line_ends();
-        let predicted_by_a_line = |p: usize| {
-            ends.iter()
-                .flatten()
-                .any(|e| matches!(e, End::Point(q) if *q == p))
-        };
         let layout = &self.layout.time;
         let h = self.slab.dt;
         for (p, idx) in self.point_index.iter().enumerate() {
-            if idx.is_empty() || predicted_by_a_line(p) {
+            if idx.is_empty() || self.topology.attachments(p).next().is_some() {
                 continue;
             }
             let m = &self.points[p];
